@@ -1,0 +1,153 @@
+package simpview.geometry;
+
+import java.util.Arrays;
+
+/**
+ * An immutable 4x4 matrix acting on column vectors (p' = M p). SIMP's
+ * transformations compose on the right, {@code ctm = ctm.times(m)}, so the
+ * last transformation named in a file is the first applied to a point.
+ */
+public final class Matrix4 {
+
+    private static final Matrix4 IDENTITY = new Matrix4(new double[] {
+        1, 0, 0, 0,
+        0, 1, 0, 0,
+        0, 0, 1, 0,
+        0, 0, 0, 1});
+
+    /** Row-major: m[4 * row + column]. */
+    private final double[] m;
+
+    private Matrix4(double[] rowMajor) {
+        this.m = rowMajor;
+    }
+
+    public static Matrix4 identity() {
+        return IDENTITY;
+    }
+
+    public static Matrix4 translation(double tx, double ty, double tz) {
+        return new Matrix4(new double[] {
+            1, 0, 0, tx,
+            0, 1, 0, ty,
+            0, 0, 1, tz,
+            0, 0, 0, 1});
+    }
+
+    public static Matrix4 scaling(double sx, double sy, double sz) {
+        return new Matrix4(new double[] {
+            sx, 0, 0, 0,
+            0, sy, 0, 0,
+            0, 0, sz, 0,
+            0, 0, 0, 1});
+    }
+
+    /**
+     * Right-handed rotation: counter-clockwise when looking from +axis toward
+     * the origin. Quarter turns are exact, so an axis-aligned cube stays
+     * axis-aligned to the last bit instead of picking up 6e-17 slivers.
+     */
+    public static Matrix4 rotation(Axis axis, double degrees) {
+        double c = exactCos(degrees);
+        double s = exactSin(degrees);
+        double[] r = switch (axis) {
+            case X -> new double[] {
+                1, 0, 0, 0,
+                0, c, -s, 0,
+                0, s, c, 0,
+                0, 0, 0, 1};
+            case Y -> new double[] {
+                c, 0, s, 0,
+                0, 1, 0, 0,
+                -s, 0, c, 0,
+                0, 0, 0, 1};
+            case Z -> new double[] {
+                c, -s, 0, 0,
+                s, c, 0, 0,
+                0, 0, 1, 0,
+                0, 0, 0, 1};
+        };
+        return new Matrix4(r);
+    }
+
+    private static double exactCos(double degrees) {
+        return exactSin(degrees + 90);
+    }
+
+    private static double exactSin(double degrees) {
+        double d = degrees % 360;
+        if (d < 0) {
+            d += 360;
+        }
+        if (d == 0 || d == 180) {
+            return 0;
+        }
+        if (d == 90) {
+            return 1;
+        }
+        if (d == 270) {
+            return -1;
+        }
+        return Math.sin(Math.toRadians(degrees));
+    }
+
+    /** this * other. */
+    public Matrix4 times(Matrix4 other) {
+        double[] a = m;
+        double[] b = other.m;
+        double[] p = new double[16];
+        for (int row = 0; row < 4; row++) {
+            for (int col = 0; col < 4; col++) {
+                p[4 * row + col] = a[4 * row] * b[col]
+                        + a[4 * row + 1] * b[4 + col]
+                        + a[4 * row + 2] * b[8 + col]
+                        + a[4 * row + 3] * b[12 + col];
+            }
+        }
+        return new Matrix4(p);
+    }
+
+    /** Transforms the point (w = 1) and keeps the vertex's colour. */
+    public Vertex apply(Vertex v) {
+        return v.withPosition(applyX(v.x(), v.y(), v.z()), applyY(v.x(), v.y(), v.z()),
+                applyZ(v.x(), v.y(), v.z()));
+    }
+
+    public double applyX(double x, double y, double z) {
+        return m[0] * x + m[1] * y + m[2] * z + m[3];
+    }
+
+    public double applyY(double x, double y, double z) {
+        return m[4] * x + m[5] * y + m[6] * z + m[7];
+    }
+
+    public double applyZ(double x, double y, double z) {
+        return m[8] * x + m[9] * y + m[10] * z + m[11];
+    }
+
+    public double get(int row, int column) {
+        return m[4 * row + column];
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Matrix4 other && Arrays.equals(m, other.m);
+    }
+
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(m);
+    }
+
+    @Override
+    public String toString() {
+        StringBuilder sb = new StringBuilder("Matrix4[");
+        for (int row = 0; row < 4; row++) {
+            sb.append(row == 0 ? "" : "; ");
+            for (int col = 0; col < 4; col++) {
+                sb.append(col == 0 ? "" : " ").append(m[4 * row + col]);
+            }
+        }
+        return sb.append(']').toString();
+    }
+}

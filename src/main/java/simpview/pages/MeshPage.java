@@ -1,0 +1,47 @@
+package simpview.pages;
+
+import simpview.raster.Drawable;
+import simpview.raster.PageCanvas;
+import simpview.render.DdaLineRenderer;
+import simpview.render.FilledPolygonRenderer;
+import simpview.render.PolygonRenderer;
+import simpview.render.WireframePolygonRenderer;
+
+/** Pages 1 and 2: the perturbed mesh with random vertex colours, as lines or filled. */
+public final class MeshPage implements Page {
+
+    private final boolean filled;
+
+    private MeshPage(boolean filled) {
+        this.filled = filled;
+    }
+
+    /** Page 1: every triangle's edges, colour lerped along each line. */
+    public static MeshPage wireframe() {
+        return new MeshPage(false);
+    }
+
+    /** Page 2: the same mesh filled, colour blerped, no lines. */
+    public static MeshPage filled() {
+        return new MeshPage(true);
+    }
+
+    @Override
+    public String title() {
+        return filled ? "Filled mesh (blerp)" : "Wireframe mesh (lerp)";
+    }
+
+    @Override
+    public boolean usesSeed() {
+        return true;
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        PolygonRenderer renderer = filled
+                ? new FilledPolygonRenderer()
+                : new WireframePolygonRenderer(new DdaLineRenderer());
+        Drawable panel = canvas.panel();
+        new PerturbedMesh(context.seed()).forEachTriangle((a, b, c) -> renderer.drawPolygon(a, b, c, panel));
+    }
+}

@@ -1,0 +1,22 @@
+package simpview.pages;
+
+import simpview.raster.PageCanvas;
+import simpview.simp.SceneException;
+
+/** One of the eight pages. Draws onto a canvas that has just been cleared. */
+public interface Page {
+
+    /** A short name for the title bar, e.g. "Wireframe mesh". */
+    String title();
+
+    /** True for the pages whose picture depends on the seed. */
+    default boolean usesSeed() {
+        return false;
+    }
+
+    /**
+     * Draws the page. On a scene error what was drawn before it stays on the
+     * canvas and the exception says what went wrong.
+     */
+    void draw(PageCanvas canvas, PageContext context) throws SceneException;
+}

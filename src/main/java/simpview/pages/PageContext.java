@@ -1,0 +1,38 @@
+package simpview.pages;
+
+import java.nio.file.Path;
+import simpview.simp.SceneMonitor;
+
+/**
+ * What a page needs besides its canvas.
+ *
+ * @param seed the seed of the random pages (1 to 3)
+ * @param simpDir where page6.simp to page8.simp are looked for
+ * @param ownSimpDir where the project's own scenes (page 4 and 5) live
+ * @param monitor progress, warnings and cancelling of scene pages
+ */
+public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
+
+    public static final long DEFAULT_SEED = 361;
+
+    /** The project's scene folder: -Dsimpview.simpDir (set by the launchers), else ./simp. */
+    public static Path defaultSimpDir() {
+        return Path.of(System.getProperty("simpview.simpDir", "simp"));
+    }
+
+    public static PageContext defaults() {
+        return new PageContext(DEFAULT_SEED, defaultSimpDir(), defaultSimpDir(), SceneMonitor.NONE);
+    }
+
+    public PageContext withSeed(long newSeed) {
+        return new PageContext(newSeed, simpDir, ownSimpDir, monitor);
+    }
+
+    public PageContext withSimpDir(Path dir) {
+        return new PageContext(seed, dir, ownSimpDir, monitor);
+    }
+
+    public PageContext withMonitor(SceneMonitor newMonitor) {
+        return new PageContext(seed, simpDir, ownSimpDir, newMonitor);
+    }
+}

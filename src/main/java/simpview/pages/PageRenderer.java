@@ -1,0 +1,34 @@
+package simpview.pages;
+
+import java.awt.image.BufferedImage;
+import simpview.raster.PageCanvas;
+import simpview.simp.SceneException;
+
+/**
+ * Renders whole pages: clears the canvas (fresh image, z-buffer, CTM, stacks
+ * and style for every page) and draws one. Reuses one canvas; not for two
+ * threads at once.
+ */
+public final class PageRenderer {
+
+    private final PageCanvas canvas = new PageCanvas();
+
+    /**
+     * Draws page n. On a scene error the canvas keeps what was drawn before it
+     * and the exception is thrown on.
+     */
+    public PageCanvas render(int pageNumber, PageContext context) throws SceneException {
+        canvas.clear();
+        Pages.page(pageNumber).draw(canvas, context);
+        return canvas;
+    }
+
+    /** Page n as a new image (a copy, safe to keep). */
+    public BufferedImage renderImage(int pageNumber, PageContext context) throws SceneException {
+        return render(pageNumber, context).snapshot();
+    }
+
+    public PageCanvas canvas() {
+        return canvas;
+    }
+}

@@ -1,0 +1,55 @@
+package simpview.pages;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import simpview.raster.PageCanvas;
+import simpview.raster.Rgb;
+import simpview.simp.SceneException;
+import simpview.simp.SceneRenderer;
+
+/** Pages 4 to 8: a SIMP scene drawn with depth cueing from a near colour to black. */
+public final class ScenePage implements Page {
+
+    private final String title;
+    private final String fileName;
+    private final boolean ownScene;
+    private final Rgb near;
+
+    private ScenePage(String title, String fileName, boolean ownScene, Rgb near) {
+        this.title = title;
+        this.fileName = fileName;
+        this.ownScene = ownScene;
+        this.near = near;
+    }
+
+    /** A scene the project wrote, from the project's own scene folder. */
+    public static ScenePage own(String title, String fileName, Rgb near) {
+        return new ScenePage(title, fileName, true, near);
+    }
+
+    /** A course scene, from the scene folder the user chose, near colour white. */
+    public static ScenePage course(String fileName) {
+        return new ScenePage(fileName, fileName, false, Rgb.WHITE);
+    }
+
+    @Override
+    public String title() {
+        return title;
+    }
+
+    public String fileName() {
+        return fileName;
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) throws SceneException {
+        Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
+        Path file = dir.resolve(fileName);
+        if (!Files.isRegularFile(file)) {
+            throw new SceneException(file, 0, 0, "", fileName + " was not found in "
+                    + dir.toAbsolutePath().normalize()
+                    + (ownScene ? "" : "; put the course's scene files there or pass --simp-dir DIR"));
+        }
+        SceneRenderer.draw(file, canvas.depthCued(near, Rgb.BLACK), context.monitor());
+    }
+}

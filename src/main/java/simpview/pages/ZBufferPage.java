@@ -1,0 +1,61 @@
+package simpview.pages;
+
+import java.util.Random;
+import simpview.geometry.Vertex;
+import simpview.raster.Drawable;
+import simpview.raster.PageCanvas;
+import simpview.render.FilledPolygonRenderer;
+
+/**
+ * Page 3: six grey regular triangles, v = 1, .85, .7, .55, .4, .25 in that
+ * drawing order, vertices on the circle of radius 275 px around the panel
+ * centre, each turned by a random angle in [0, 120) degrees and put at a
+ * random world depth in [-199, -1]. Drawn through the z-buffer, without depth
+ * cueing, so the greys show which triangle is in front.
+ */
+public final class ZBufferPage implements Page {
+
+    public static final double[] GREYS = {1, .85, .7, .55, .4, .25};
+    public static final double RADIUS = 275;
+    public static final double NEAREST_Z = -1;
+    public static final double FARTHEST_Z = -199;
+
+    @Override
+    public String title() {
+        return "Z-buffer";
+    }
+
+    @Override
+    public boolean usesSeed() {
+        return true;
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        Drawable target = canvas.depthTested();
+        FilledPolygonRenderer renderer = new FilledPolygonRenderer();
+        for (Vertex[] triangle : triangles(context.seed())) {
+            renderer.drawPolygon(triangle[0], triangle[1], triangle[2], target);
+        }
+    }
+
+    /** The six triangles in drawing order, in panel coordinates; random draws: angle, then depth. */
+    public static Vertex[][] triangles(long seed) {
+        Random random = new Random(seed);
+        double centre = PageCanvas.PANEL / 2.0;
+        Vertex[][] result = new Vertex[GREYS.length][];
+        for (int t = 0; t < GREYS.length; t++) {
+            double turn = random.nextDouble() * 120;
+            double z = FARTHEST_Z + random.nextDouble() * (NEAREST_Z - FARTHEST_Z);
+            double v = GREYS[t];
+            Vertex[] triangle = new Vertex[3];
+            for (int k = 0; k < 3; k++) {
+                double angle = Math.toRadians(turn + 120 * k + 90);
+                triangle[k] = new Vertex(centre + RADIUS * Math.cos(angle), centre + RADIUS * Math.sin(angle), z,
+                        v, v, v);
+            }
+            result[t] = triangle;
+        }
+        return result;
+    }
+}
