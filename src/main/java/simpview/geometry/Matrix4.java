@@ -45,7 +45,8 @@ public final class Matrix4 {
     /**
      * Right-handed rotation: counter-clockwise when looking from +axis toward
      * the origin. Quarter turns are exact, so an axis-aligned cube stays
-     * axis-aligned to the last bit instead of picking up 6e-17 slivers.
+     * axis-aligned to the last bit instead of picking up 6e-17 slivers; other
+     * angles use StrictMath so a scene renders to the same bits on every JVM.
      */
     public static Matrix4 rotation(Axis axis, double degrees) {
         double c = exactCos(degrees);
@@ -71,10 +72,17 @@ public final class Matrix4 {
     }
 
     private static double exactCos(double degrees) {
-        return exactSin(degrees + 90);
+        double quarter = quarterTurn(degrees + 90);
+        return Double.isNaN(quarter) ? StrictMath.cos(StrictMath.toRadians(degrees)) : quarter;
     }
 
     private static double exactSin(double degrees) {
+        double quarter = quarterTurn(degrees);
+        return Double.isNaN(quarter) ? StrictMath.sin(StrictMath.toRadians(degrees)) : quarter;
+    }
+
+    /** sin of a whole number of quarter turns, exactly; NaN for any other angle. */
+    private static double quarterTurn(double degrees) {
         double d = degrees % 360;
         if (d < 0) {
             d += 360;
@@ -85,10 +93,7 @@ public final class Matrix4 {
         if (d == 90) {
             return 1;
         }
-        if (d == 270) {
-            return -1;
-        }
-        return Math.sin(Math.toRadians(degrees));
+        return d == 270 ? -1 : Double.NaN;
     }
 
     /** this * other. */

@@ -50,8 +50,8 @@ public final class ZBufferPage implements Page {
             double v = GREYS[t];
             Vertex[] triangle = new Vertex[3];
             for (int k = 0; k < 3; k++) {
-                double angle = Math.toRadians(turn + 120 * k + 90);
-                triangle[k] = new Vertex(centre + RADIUS * Math.cos(angle), centre + RADIUS * Math.sin(angle), z,
+                double angle = StrictMath.toRadians(turn + 120 * k + 90);
+                triangle[k] = new Vertex(centre + RADIUS * StrictMath.cos(angle), centre + RADIUS * StrictMath.sin(angle), z,
                         v, v, v);
             }
             result[t] = triangle;
