@@ -328,10 +328,10 @@ public final class SimpReader implements AutoCloseable {
         return after;
     }
 
-    /** Blanks and commas between two numbers: at least one of them. */
+    /** Blanks and commas between two numbers: at least one of them (a ')' is left to the caller). */
     private int separator(int i) throws SceneException {
         int j = skipSeparators(i);
-        if (j == i && i < end) {
+        if (j == i && i < end && b[i] != ')') {
             throw error(i, "expected a blank or ',' between numbers, found '" + token(i) + "'");
         }
         return j;
@@ -389,6 +389,9 @@ public final class SimpReader implements AutoCloseable {
 
     /** The token at i: up to the next blank, comma or parenthesis (at least one character). */
     private String token(int i) {
+        if (b[i] == '(' || b[i] == ')' || b[i] == ',') {
+            return text(i, i + 1);
+        }
         int j = i + 1;
         while (j < end && j - i < 30 && !isBlank(b[j]) && b[j] != ',' && b[j] != ')' && b[j] != '(') {
             j++;
