@@ -56,6 +56,9 @@ final class FileStack implements AutoCloseable {
         } catch (IOException e) {
             throw new SceneException(file, 0, 0, "", "cannot open the file: " + e.getMessage());
         }
+        if (!Files.isRegularFile(real)) {
+            throw new SceneException(file, 0, 0, "", "not a regular file: " + file.toAbsolutePath().normalize());
+        }
         push(open(file, real), real);
     }
 
@@ -87,8 +90,9 @@ final class FileStack implements AutoCloseable {
         } catch (IOException e) {
             throw from.error(c.argumentIndex, "cannot open " + candidate + ": " + e.getMessage());
         }
-        if (Files.isDirectory(real)) {
-            throw from.error(c.argumentIndex, "not a file but a folder: " + candidate.toAbsolutePath().normalize());
+        if (!Files.isRegularFile(real)) {
+            throw from.error(c.argumentIndex, (Files.isDirectory(real) ? "not a file but a folder: "
+                    : "not a regular file: ") + candidate.toAbsolutePath().normalize());
         }
         if (onStack.contains(real)) {
             throw from.error(c.argumentIndex, "file cycle: " + chain(real));

@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.geometry.Vertex;
@@ -77,6 +78,15 @@ class FileStackTest {
         SceneException e = scene.failure("s");
         assertTrue(e.problem().startsWith("not a file but a folder: "), e.problem());
         assertEquals(1, e.line());
+    }
+
+    @Test
+    void deviceIsNoSceneFile() throws Exception {
+        Assumptions.assumeTrue(Files.exists(Path.of("/dev/zero")), "no /dev/zero on this system");
+        Files.createSymbolicLink(dir.resolve("zero.simp"), Path.of("/dev/zero"));
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "file zero");
+        assertTrue(scene.failure("s").problem().startsWith("not a regular file: "));
     }
 
     @Test
