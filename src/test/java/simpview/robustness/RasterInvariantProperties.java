@@ -61,7 +61,7 @@ class RasterInvariantProperties {
         // Rectangle sides on the quarter grid: through pixel centres (.5), corners (.0) and between.
         Arbitrary<Integer> qx = Arbitraries.integers().between(-12, W * 4 + 12);
         Arbitrary<Integer> qy = Arbitraries.integers().between(-12, H * 4 + 12);
-        return Combinators.combine(qx, qx, qy, qy, Arbitraries.integers().between(0, 40),
+        return Combinators.combine(qx, qx, qy, qy, Arbitraries.integers().between(3, 40),
                 Arbitraries.integers().between(0, 60), Arbitraries.longs())
                 .filter((ax, bx, ay, by, n, flips, seed) -> Math.abs(ax - bx) >= 2 && Math.abs(ay - by) >= 2)
                 .as((ax, bx, ay, by, n, flips, seed) -> triangulate(Math.min(ax, bx) / 4.0, Math.min(ay, by) / 4.0,
