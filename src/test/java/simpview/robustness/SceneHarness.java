@@ -83,7 +83,7 @@ final class SceneHarness {
             return;
         }
         assertTrue(readable, "a line number in a file that cannot be read" + where);
-        String[] lines = new String(Files.readAllBytes(e.file()), StandardCharsets.ISO_8859_1).split("\n", -1);
+        String[] lines = new String(Files.readAllBytes(e.file()), StandardCharsets.UTF_8).split("\n", -1);
         assertTrue(e.line() <= lines.length, "line " + e.line() + " of a file with " + lines.length + " lines" + where);
         String raw = lines[e.line() - 1];
         String stripped = raw.endsWith("\r") ? raw.substring(0, raw.length() - 1) : raw;
@@ -91,8 +91,13 @@ final class SceneHarness {
         if (!shown.equals(raw) && !shown.equals(stripped)) {
             assertEquals(stripped, shown, "the line shown is not line " + e.line() + " of the file" + where);
         }
-        assertTrue(e.column() <= stripped.length() + 1,
-                "column " + e.column() + " beyond the end of a line of " + stripped.length() + where);
+        int length = stripped.codePointCount(0, stripped.length());
+        assertTrue(e.column() <= length + 1,
+                "column " + e.column() + " beyond the end of a line of " + length + " characters" + where);
+        if (e.column() >= 1 && e.column() <= length) {
+            int c = stripped.codePointAt(stripped.offsetByCodePoints(0, e.column() - 1));
+            assertTrue(c != ' ' && c != '\t', "the column points at a blank, not at the offending text" + where);
+        }
     }
 
     private void checkMargins() {
