@@ -155,7 +155,7 @@ class SceneFuzzProperties {
     }
 
     /** Random token soup, one file, possibly including the scenes beside it. */
-    @Property(tries = 2500, seed = "1969")
+    @Property(tries = 2000, seed = "1969")
     void randomTokenStreamsRenderOrFailWithALocation(@ForAll("tokenLines") List<List<String>> lines,
             @ForAll boolean commas) throws Exception {
         StringBuilder text = new StringBuilder();
@@ -272,7 +272,7 @@ class SceneFuzzProperties {
     }
 
     /** The project's and the course's scenes (and two small inline ones), each mutated a few times. */
-    @Property(tries = 2000, seed = "4004")
+    @Property(tries = 1800, seed = "4004")
     void mutatedScenesRenderOrFailWithALocation(@ForAll("bases") String base,
             @ForAll("mutations") List<Mutation> mutations) throws Exception {
         Path original = BASES.get(base);
