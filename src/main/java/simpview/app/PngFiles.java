@@ -1,0 +1,61 @@
+package simpview.app;
+
+import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+
+/** Writes finished pages as PNG files, with messages a user can act on. */
+final class PngFiles {
+
+    private PngFiles() {
+    }
+
+    /**
+     * Writes {@code image} to {@code file}, making missing parent folders.
+     *
+     * @throws IOException whose message says which file and why, e.g.
+     *     "cannot write out/x.png: permission denied"
+     */
+    static void write(BufferedImage image, Path file) throws IOException {
+        Path target = file.toAbsolutePath();
+        try {
+            Path parent = target.getParent();
+            if (parent != null) {
+                Files.createDirectories(parent);
+            }
+            // Our own stream, not ImageIO.write(File): its failure says only
+            // "Can't create an ImageOutputStream!".
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(file))) {
+                if (!ImageIO.write(image, "png", out)) {
+                    throw new IOException("this Java has no PNG writer");
+                }
+            }
+        } catch (IOException e) {
+            throw new IOException("cannot write " + file + ": " + reason(e, target), e);
+        }
+    }
+
+    private static String reason(IOException e, Path target) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileAlreadyExistsException already) {
+            return already.getFile() + " is in the way: it is a file, not a folder";
+        }
+        if (e instanceof FileSystemException fs && fs.getReason() != null) {
+            boolean elsewhere = fs.getFile() != null && !Path.of(fs.getFile()).equals(target);
+            return fs.getReason() + (elsewhere ? " (" + fs.getFile() + ")" : "");
+        }
+        if (e instanceof FileSystemException fs) {
+            return "no such file or folder: " + fs.getFile();
+        }
+        return e.getMessage();
+    }
+}
