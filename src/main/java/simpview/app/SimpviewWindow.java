@@ -223,4 +223,9 @@ final class SimpviewWindow {
     boolean busy() {
         return pending != null;
     }
+
+    /** Lines the picture being drawn has read so far, or -1 when nothing is being drawn. */
+    long linesReadSoFar() {
+        return pending == null ? -1 : pending.linesSoFar();
+    }
 }
