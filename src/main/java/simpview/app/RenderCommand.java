@@ -158,7 +158,8 @@ final class RenderCommand implements Callable<Integer> {
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         for (int n = 1; n <= Pages.COUNT; n++) {
             try {
-                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title(), renderer.renderImage(n, context)));
+                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
             } catch (SceneException e) {
                 err().println("page " + n + " left out: " + e.getMessage());
             }

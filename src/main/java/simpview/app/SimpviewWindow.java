@@ -185,7 +185,7 @@ final class SimpviewWindow {
         if (shown != null && shown.view() instanceof View.OfPage page) {
             stepper.jump(page.number());
         }
-        status.say("Cancelled. " + StatusStrip.HINTS);
+        status.say("Cancelled: the page on screen is unchanged.");
     }
 
     private void chooseScene() {

@@ -18,8 +18,8 @@ import simpview.raster.PageCanvas;
  */
 final class StatusStrip {
 
-    static final String HINTS = "Click or → next · ← previous · Home/End · 1–8 jump · R new seed · "
-            + "Ctrl+O open scene (or drop one) · Ctrl+S save PNG";
+    static final String HINTS = "Click/→ next · ← back · Home/End · 1–8 · R new seed · "
+            + "Ctrl+O open (or drop) a scene · Ctrl+S save";
     /** Quick pictures never flash a progress bar. */
     static final int PROGRESS_DELAY_MS = 150;
     private static final String TEXT = "text";
