@@ -1,15 +1,16 @@
 package simpview.app;
 
 import java.awt.image.BufferedImage;
-import java.io.BufferedOutputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
+import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /** Writes finished pages as PNG files, with messages a user can act on. */
 final class PngFiles {
@@ -30,16 +31,22 @@ final class PngFiles {
             if (parent != null) {
                 Files.createDirectories(parent);
             }
-            // Our own stream, not ImageIO.write(File): its failure says only
-            // "Can't create an ImageOutputStream!".
-            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(file))) {
-                if (!ImageIO.write(image, "png", out)) {
-                    throw new IOException("this Java has no PNG writer");
-                }
-            }
+            // Encoded in memory first: ImageIO's own file streams report a full
+            // disk as "I/O error writing PNG file!" and can fail again at exit.
+            Files.write(target, encode(image));
         } catch (IOException e) {
             throw new IOException("cannot write " + file + ": " + reason(e, target), e);
         }
+    }
+
+    private static byte[] encode(BufferedImage image) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ImageOutputStream out = new MemoryCacheImageOutputStream(bytes)) {
+            if (!ImageIO.write(image, "png", out)) {
+                throw new IOException("this Java has no PNG writer");
+            }
+        }
+        return bytes.toByteArray();
     }
 
     private static String reason(IOException e, Path target) {

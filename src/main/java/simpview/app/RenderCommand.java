@@ -100,6 +100,8 @@ final class RenderCommand implements Callable<Integer> {
                 what.all ? "--all needs --out-dir D" : "missing --out F.png");
         usage(what.all ? out == null : outDir == null,
                 what.all ? "--all writes eight files: use --out-dir, not --out" : "--out-dir goes with --all only");
+        usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
+        usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }

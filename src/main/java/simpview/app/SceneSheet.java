@@ -21,8 +21,10 @@ record SceneSheet(Path file, Rgb near, Rgb far) {
     void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer) throws SceneException {
         canvas.clear();
         if (!Files.isRegularFile(file)) {
-            throw new SceneException(file, 0, 0, "", "there is no such scene file ("
-                    + file.toAbsolutePath().normalize() + ")");
+            String where = file.toAbsolutePath().normalize().toString();
+            throw new SceneException(file, 0, 0, "", Files.isDirectory(file)
+                    ? "this is a folder, not a scene file (" + where + ")"
+                    : "there is no such scene file (" + where + ")");
         }
         drawer.draw(file, canvas.depthCued(near, far), monitor);
     }

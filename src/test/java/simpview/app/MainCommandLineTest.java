@@ -116,6 +116,12 @@ class MainCommandLineTest {
     }
 
     @Test
+    void emptyOutputNamesAreUsageErrors() {
+        assertEquals(Main.USAGE_ERROR, CliRun.of("render", "--page", "1", "--out", "").exitCode());
+        assertEquals(Main.USAGE_ERROR, CliRun.of("render", "--all", "--out-dir", "").exitCode());
+    }
+
+    @Test
     void badSceneGivesExitOneWithFileLineAndColumn() throws IOException {
         Path scene = Files.writeString(dir.resolve("bad.simp"), "# a bad scene\nline (0, 0, 0) (10, 10, -5)\nfrobnicate 1 2\n");
         CliRun run = CliRun.of("render", "--scene", scene.toString(), "--out", dir.resolve("bad.png").toString());
@@ -146,6 +152,13 @@ class MainCommandLineTest {
         assertEquals(Main.OK, run.exitCode(), run.err());
         BufferedImage page = new PageRenderer().renderImage(6, TestScenes.courseContext());
         assertEquals(0, Images.differingPixels(page, ImageIO.read(out.toFile())));
+    }
+
+    @Test
+    void aFolderGivenAsSceneIsAClearSceneError() {
+        CliRun run = CliRun.of("render", "--scene", dir.toString(), "--out", dir.resolve("x.png").toString());
+        assertEquals(Main.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("this is a folder, not a scene file"), run.err());
     }
 
     @Test

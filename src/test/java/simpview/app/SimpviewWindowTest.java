@@ -164,4 +164,11 @@ class SimpviewWindowTest {
         driver.clickPage();
         driver.awaitShown(new View.OfPage(2));
     }
+
+    @Test
+    void aSceneGivenAtStartOpensAfterTheFirstPage() throws Exception {
+        Path scene = StandInDrawers.sceneFile(dir, "start.simp");
+        driver = WindowDriver.open(new WindowOptions(SEED, dir, Optional.of(scene)), StandInDrawers.DIAGONAL);
+        assertEquals("simpview — scene: start.simp", driver.onEdt(() -> driver.window().frame().getTitle()));
+    }
 }

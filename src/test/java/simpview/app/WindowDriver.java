@@ -28,14 +28,14 @@ final class WindowDriver {
         this.robot = robot;
     }
 
-    /** Opens the window and waits for its first page. */
+    /** Opens the window and waits for its first page, or for the scene it was given. */
     static WindowDriver open(WindowOptions options, SceneDrawer drawer) throws Exception {
         AtomicReference<SimpviewWindow> opened = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> opened.set(SimpviewWindow.open(options, drawer)));
         Robot robot = new Robot();
         robot.setAutoDelay(20);
         WindowDriver driver = new WindowDriver(opened.get(), robot);
-        driver.awaitShown(new View.OfPage(1));
+        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
         return driver;
     }
 
