@@ -14,6 +14,7 @@ public final class Main {
     public static final int OK = 0;
     public static final int SCENE_ERROR = 1;
     public static final int USAGE_ERROR = 2;
+    static final String VERSION = "simpview 1.0";
 
     private Main() {
     }

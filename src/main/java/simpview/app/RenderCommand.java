@@ -24,7 +24,7 @@ import simpview.simp.SceneMonitor;
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",
         mixinStandardHelpOptions = true,
-        version = "simpview 1.0",
+        version = Main.VERSION,
         description = "Renders pages, or any scene as a page, to PNG files (no display needed).",
         footer = {"", "Examples:",
             "  simpview render --page 3 --seed 7 --out page3.png",
@@ -170,7 +170,7 @@ final class RenderCommand implements Callable<Integer> {
             return Main.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
-        return written != Main.OK || tiles.size() == Pages.COUNT ? written : Main.SCENE_ERROR;
+        return tiles.size() == Pages.COUNT ? written : Main.SCENE_ERROR;
     }
 
     private int write(BufferedImage image, Path file) {

@@ -1,5 +1,6 @@
 package simpview.app;
 
+import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.nio.file.Path;
 import java.util.Optional;
@@ -16,7 +17,7 @@ import simpview.pages.PageContext;
 /** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
-        version = "simpview 1.0",
+        version = Main.VERSION,
         subcommands = RenderCommand.class,
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
@@ -44,8 +45,17 @@ final class SimpviewCommand implements Callable<Integer> {
         this.displayMissing = displayMissing;
     }
 
+    /** No display, or one that cannot be reached (a DISPLAY whose X server is gone). */
     static boolean displayMissing() {
-        return GraphicsEnvironment.isHeadless();
+        if (GraphicsEnvironment.isHeadless()) {
+            return true;
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getDefaultScreenDevice();
+            return false;
+        } catch (AWTError e) {
+            return true;
+        }
     }
 
     /** True once the window was asked to open: then the program lives until it closes. */

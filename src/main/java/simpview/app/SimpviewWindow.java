@@ -30,7 +30,7 @@ final class SimpviewWindow {
     private final StatusStrip status = new StatusStrip(this::cancel);
     private final PageStepper stepper = new PageStepper();
     private final BackgroundRenderer renderer;
-    private final SceneFiles sceneFiles;
+    private final FileDialogs dialogs;
     private WindowOptions options;
     private RenderedView shown;
     private RenderJob pending;
@@ -39,7 +39,7 @@ final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.renderer = new BackgroundRenderer(drawer);
-        this.sceneFiles = new SceneFiles(frame, options.simpDir());
+        this.dialogs = new FileDialogs(frame, options.simpDir());
         sceneAfterFirstPage = options.scene().orElse(null);
     }
 
@@ -189,12 +189,12 @@ final class SimpviewWindow {
     }
 
     private void chooseScene() {
-        sceneFiles.chooseScene().ifPresent(this::openScene);
+        dialogs.chooseScene().ifPresent(this::openScene);
     }
 
     private void save() {
         if (shown != null) {
-            sceneFiles.save(shown).ifPresent(file -> status.say("Saved " + file));
+            dialogs.save(shown).ifPresent(file -> status.say("Saved " + file));
         }
     }
 

@@ -11,13 +11,13 @@ import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
 /** The window's file dialogs: open a scene, save the page as PNG. On the EDT. */
-final class SceneFiles {
+final class FileDialogs {
 
     private final JFrame owner;
     private File sceneFolder;
     private File saveFolder = new File(".");
 
-    SceneFiles(JFrame owner, Path simpDir) {
+    FileDialogs(JFrame owner, Path simpDir) {
         this.owner = owner;
         this.sceneFolder = simpDir.toFile();
     }
