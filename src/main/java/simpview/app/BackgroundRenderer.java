@@ -1,0 +1,39 @@
+package simpview.app;
+
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.BiConsumer;
+import javax.swing.SwingUtilities;
+import simpview.pages.PageRenderer;
+
+/**
+ * Draws pictures one at a time on a thread of its own, so the window keeps
+ * answering while a large scene is read. Only that thread touches the canvas;
+ * the EDT only ever gets copies.
+ */
+final class BackgroundRenderer {
+
+    private final ExecutorService thread = Executors.newSingleThreadExecutor(task -> {
+        Thread t = new Thread(task, "simpview-render");
+        t.setDaemon(true);
+        return t;
+    });
+    private final PageRenderer renderer = new PageRenderer();
+    private final SceneDrawer drawer;
+
+    BackgroundRenderer(SceneDrawer drawer) {
+        this.drawer = drawer;
+    }
+
+    /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
+    void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
+        thread.execute(() -> {
+            RenderedView result = job.run(renderer, drawer);
+            SwingUtilities.invokeLater(() -> done.accept(job, result));
+        });
+    }
+
+    void shutdown() {
+        thread.shutdownNow();
+    }
+}

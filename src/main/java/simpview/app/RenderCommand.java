@@ -1,0 +1,206 @@
+package simpview.app;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.raster.PageCanvas;
+import simpview.raster.Rgb;
+import simpview.simp.SceneException;
+import simpview.simp.SceneMonitor;
+
+/** {@code simpview render ...}: pages or any scene to PNG, without a window. */
+@Command(name = "render",
+        mixinStandardHelpOptions = true,
+        version = Main.VERSION,
+        description = "Renders pages, or any scene as a page, to PNG files (no display needed).",
+        footer = {"", "Examples:",
+            "  simpview render --page 3 --seed 7 --out page3.png",
+            "  simpview render --all --simp-dir course/ --out-dir pages/",
+            "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
+            "  simpview render --contact-sheet --out docs/pages.png"},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
+final class RenderCommand implements Callable<Integer> {
+
+    /** Exactly one of these says what to render. */
+    static final class What {
+        @Option(names = "--page", paramLabel = "N", required = true, description = "one page, 1 to 8")
+        Integer page;
+
+        @Option(names = "--all", required = true, description = "all eight pages, as page1.png ... page8.png")
+        boolean all;
+
+        @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full depth-cued page")
+        Path scene;
+
+        @Option(names = "--contact-sheet", required = true, description = "the pages that render, side by side at half size")
+        boolean contactSheet;
+    }
+
+    @Spec
+    private CommandSpec spec;
+
+    @ArgGroup(exclusive = true, multiplicity = "1")
+    private What what;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    private Path simpDir;
+
+    @Option(names = "--out", paramLabel = "F.png", description = "the PNG to write (--page, --scene, --contact-sheet)")
+    private Path out;
+
+    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write page1.png ... page8.png to (--all)")
+    private Path outDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = 0, channels 0 to 1 (--scene; default: 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = -200 (--scene; default: 0,0,0)")
+    private Rgb far;
+
+    @Override
+    public Integer call() {
+        checkOptions();
+        if (what.page != null) {
+            return renderPage(what.page);
+        }
+        if (what.all) {
+            return renderAll();
+        }
+        if (what.scene != null) {
+            return renderScene();
+        }
+        return renderContactSheet();
+    }
+
+    /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
+    private void checkOptions() {
+        boolean pages = what.scene == null;
+        usage(what.page == null || what.page >= 1 && what.page <= Pages.COUNT,
+                "--page must be 1 to " + Pages.COUNT + ", not " + what.page);
+        usage(what.all ? outDir != null : out != null,
+                what.all ? "--all needs --out-dir D" : "missing --out F.png");
+        usage(what.all ? out == null : outDir == null,
+                what.all ? "--all writes eight files: use --out-dir, not --out" : "--out-dir goes with --all only");
+        usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
+        usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
+        usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
+        usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+    }
+
+    private void usage(boolean fine, String message) {
+        if (!fine) {
+            throw new ParameterException(spec.commandLine(), message);
+        }
+    }
+
+    private int renderPage(int number) {
+        try {
+            return write(new PageRenderer().renderImage(number, context()), out);
+        } catch (SceneException e) {
+            err().println(e.getMessage());
+            return Main.SCENE_ERROR;
+        }
+    }
+
+    private int renderAll() {
+        PageRenderer renderer = new PageRenderer();
+        PageContext context = context();
+        int code = Main.OK;
+        for (int n = 1; n <= Pages.COUNT; n++) {
+            BufferedImage image;
+            try {
+                image = renderer.renderImage(n, context);
+            } catch (SceneException e) {
+                err().println("page " + n + " not written: " + e.getMessage());
+                code = Main.SCENE_ERROR;
+                continue;
+            }
+            if (write(image, outDir.resolve("page" + n + ".png")) != Main.OK) {
+                return Main.SCENE_ERROR; // the folder is unwritable: the other pages would fail alike
+            }
+        }
+        return code;
+    }
+
+    private int renderScene() {
+        SceneSheet sheet = new SceneSheet(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
+        PageCanvas canvas = new PageCanvas();
+        try {
+            sheet.drawOn(canvas, monitor(), SceneDrawer.SIMP);
+        } catch (SceneException e) {
+            err().println(e.getMessage());
+            return Main.SCENE_ERROR;
+        }
+        return write(canvas.image(), out);
+    }
+
+    /** Pages that fail are left out and named on stderr; the sheet shows the rest. */
+    private int renderContactSheet() {
+        PageRenderer renderer = new PageRenderer();
+        PageContext context = context();
+        List<ContactSheet.Tile> tiles = new ArrayList<>();
+        for (int n = 1; n <= Pages.COUNT; n++) {
+            try {
+                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
+            } catch (SceneException e) {
+                err().println("page " + n + " left out: " + e.getMessage());
+            }
+        }
+        if (tiles.isEmpty()) {
+            return Main.SCENE_ERROR;
+        }
+        int written = write(ContactSheet.compose(tiles), out);
+        return tiles.size() == Pages.COUNT ? written : Main.SCENE_ERROR;
+    }
+
+    private int write(BufferedImage image, Path file) {
+        try {
+            PngFiles.write(image, file);
+            return Main.OK;
+        } catch (IOException e) {
+            err().println("simpview: " + e.getMessage());
+            return Main.SCENE_ERROR;
+        }
+    }
+
+    private PageContext context() {
+        PageContext context = PageContext.defaults().withMonitor(monitor());
+        if (seed != null) {
+            context = context.withSeed(seed);
+        }
+        return simpDir == null ? context : context.withSimpDir(simpDir);
+    }
+
+    private SceneMonitor monitor() {
+        return new SceneMonitor() {
+            @Override
+            public void warning(String message) {
+                err().println("warning: " + message);
+            }
+        };
+    }
+
+    private PrintWriter err() {
+        return spec.commandLine().getErr();
+    }
+}

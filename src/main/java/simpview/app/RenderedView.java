@@ -1,0 +1,35 @@
+package simpview.app;
+
+import java.awt.image.BufferedImage;
+import java.util.List;
+import simpview.pages.Pages;
+
+/**
+ * A finished picture, ready for the screen.
+ *
+ * @param view what was drawn
+ * @param seed the seed it was drawn with
+ * @param image a copy of the page, never the canvas being drawn on
+ * @param error the scene error's message, or null; the image then holds what was drawn before it
+ * @param warnings what the scene reported that is not an error
+ */
+record RenderedView(View view, long seed, BufferedImage image, String error, List<String> warnings) {
+
+    /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
+    String title() {
+        if (view instanceof View.OfPage page) {
+            String title = "simpview — page " + page.number() + "/" + Pages.COUNT + ": " + Pages.page(page.number()).title();
+            return Pages.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
+        }
+        return "simpview — scene: " + ((View.OfScene) view).file().getFileName();
+    }
+
+    /** A file name to offer when saving, e.g. "page3-seed361.png" or "house.png". */
+    String suggestedFileName() {
+        if (view instanceof View.OfPage page) {
+            return "page" + page.number() + (Pages.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+        }
+        String name = ((View.OfScene) view).file().getFileName().toString();
+        return name.replaceFirst("\\.simp$", "") + ".png";
+    }
+}

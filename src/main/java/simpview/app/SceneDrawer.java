@@ -1,0 +1,16 @@
+package simpview.app;
+
+import java.nio.file.Path;
+import simpview.raster.Drawable;
+import simpview.simp.SceneException;
+import simpview.simp.SceneMonitor;
+import simpview.simp.SceneRenderer;
+
+/** What draws a SIMP file onto a panel; the real one is {@link SceneRenderer}. Tests may stand in. */
+@FunctionalInterface
+interface SceneDrawer {
+
+    SceneDrawer SIMP = SceneRenderer::draw;
+
+    void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException;
+}

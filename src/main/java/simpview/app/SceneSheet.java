@@ -1,0 +1,31 @@
+package simpview.app;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import simpview.raster.PageCanvas;
+import simpview.raster.Rgb;
+import simpview.simp.SceneException;
+import simpview.simp.SceneMonitor;
+
+/**
+ * Any scene file shown as a whole page, like pages 4 to 8: cleared canvas,
+ * z-buffer, depth cue from {@code near} at z = 0 to {@code far} at z = -200.
+ */
+record SceneSheet(Path file, Rgb near, Rgb far) {
+
+    static SceneSheet of(Path file) {
+        return new SceneSheet(file, Rgb.WHITE, Rgb.BLACK);
+    }
+
+    /** Clears the canvas and draws the scene; on an error what was drawn stays. */
+    void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer) throws SceneException {
+        canvas.clear();
+        if (!Files.isRegularFile(file)) {
+            String where = file.toAbsolutePath().normalize().toString();
+            throw new SceneException(file, 0, 0, "", Files.isDirectory(file)
+                    ? "this is a folder, not a scene file (" + where + ")"
+                    : "there is no such scene file (" + where + ")");
+        }
+        drawer.draw(file, canvas.depthCued(near, far), monitor);
+    }
+}

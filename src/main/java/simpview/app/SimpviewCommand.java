@@ -1,0 +1,80 @@
+package simpview.app;
+
+import java.awt.AWTError;
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Path;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.function.BooleanSupplier;
+import javax.swing.SwingUtilities;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+import simpview.pages.PageContext;
+
+/** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
+@Command(name = "simpview",
+        mixinStandardHelpOptions = true,
+        version = Main.VERSION,
+        subcommands = RenderCommand.class,
+        description = {
+            "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
+            "Use 'simpview render' to write pages as PNG files without a window."},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
+final class SimpviewCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
+    private long seed = PageContext.DEFAULT_SEED;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    private Path simpDir;
+
+    @Parameters(arity = "0..1", paramLabel = "SCENE", description = "a .simp scene to open at start")
+    private Path scene;
+
+    private final BooleanSupplier displayMissing;
+    private boolean openedWindow;
+
+    SimpviewCommand(BooleanSupplier displayMissing) {
+        this.displayMissing = displayMissing;
+    }
+
+    /** No display, or one that cannot be reached (a DISPLAY whose X server is gone). */
+    static boolean displayMissing() {
+        if (GraphicsEnvironment.isHeadless()) {
+            return true;
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getDefaultScreenDevice();
+            return false;
+        } catch (AWTError e) {
+            return true;
+        }
+    }
+
+    /** True once the window was asked to open: then the program lives until it closes. */
+    boolean openedWindow() {
+        return openedWindow;
+    }
+
+    @Override
+    public Integer call() {
+        if (displayMissing.getAsBoolean()) {
+            spec.commandLine().getErr().println(
+                    "simpview: no display to open a window on; write PNG files with 'simpview render --all --out-dir DIR' "
+                    + "(see 'simpview render --help')");
+            return Main.USAGE_ERROR;
+        }
+        WindowOptions options = new WindowOptions(seed,
+                simpDir == null ? PageContext.defaultSimpDir() : simpDir, Optional.ofNullable(scene));
+        SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
+        openedWindow = true;
+        return Main.OK;
+    }
+}

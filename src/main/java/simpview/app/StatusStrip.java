@@ -1,0 +1,94 @@
+package simpview.app;
+
+import java.awt.BorderLayout;
+import java.awt.CardLayout;
+import java.awt.Dimension;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JProgressBar;
+import javax.swing.Timer;
+import simpview.raster.PageCanvas;
+
+/**
+ * The line under the page: key hints and messages, or, while a picture takes
+ * more than a moment, a progress bar (lines read) with a Cancel button.
+ * Everything here runs on the EDT.
+ */
+final class StatusStrip {
+
+    static final String HINTS = "Click/→ next · ← back · Home/End · 1–8 · R new seed · "
+            + "Ctrl+O open (or drop) a scene · Ctrl+S save";
+    /** Quick pictures never flash a progress bar. */
+    static final int PROGRESS_DELAY_MS = 150;
+    private static final String TEXT = "text";
+    private static final String PROGRESS = "progress";
+
+    private final CardLayout cards = new CardLayout();
+    private final JPanel panel = new JPanel(cards);
+    private final JLabel text = new JLabel(HINTS);
+    private final JLabel working = new JLabel();
+    private final JProgressBar bar = new JProgressBar();
+    private final JButton cancel = new JButton("Cancel");
+    private final Timer ticker = new Timer(100, e -> tick());
+    private RenderJob watched;
+
+    StatusStrip(Runnable onCancel) {
+        panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 34));
+        panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
+        bar.setIndeterminate(true);
+        bar.setStringPainted(true);
+        // Keys belong to the page: a focused button would swallow Space.
+        cancel.setFocusable(false);
+        cancel.addActionListener(e -> onCancel.run());
+        JPanel progress = new JPanel(new BorderLayout(8, 0));
+        progress.add(working, BorderLayout.WEST);
+        progress.add(bar, BorderLayout.CENTER);
+        progress.add(cancel, BorderLayout.EAST);
+        panel.add(text, TEXT);
+        panel.add(progress, PROGRESS);
+        cards.show(panel, TEXT);
+    }
+
+    JPanel component() {
+        return panel;
+    }
+
+    /** Follows a job; its progress shows once it has taken longer than a moment. */
+    void watch(RenderJob job) {
+        watched = job;
+        ticker.restart();
+    }
+
+    /** Back to text, e.g. when the job ended or was cancelled. */
+    void say(String message) {
+        watched = null;
+        ticker.stop();
+        text.setText(message);
+        cards.show(panel, TEXT);
+    }
+
+    boolean showingProgress() {
+        return bar.isShowing();
+    }
+
+    JButton cancelButton() {
+        return cancel;
+    }
+
+    private void tick() {
+        if (watched == null || watched.millisSinceCreated() < PROGRESS_DELAY_MS) {
+            return;
+        }
+        working.setText("Drawing " + describe(watched.view()) + "…");
+        bar.setString(String.format("%,d lines read", watched.linesSoFar()));
+        cards.show(panel, PROGRESS);
+    }
+
+    private static String describe(View view) {
+        return view instanceof View.OfPage page
+                ? "page " + page.number()
+                : ((View.OfScene) view).file().getFileName().toString();
+    }
+}

@@ -1,0 +1,174 @@
+package simpview.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.raster.PageCanvas;
+import simpview.simp.SceneException;
+
+/** The real window under a real X server (Xvfb), driven with java.awt.Robot. */
+class SimpviewWindowTest {
+
+    private static final long SEED = 361;
+
+    @TempDir
+    Path dir;
+
+    private WindowDriver driver;
+
+    @BeforeEach
+    void needsADisplay() {
+        Displays.assumeUsable();
+    }
+
+    @AfterEach
+    void closeWindow() throws Exception {
+        if (driver != null) {
+            driver.close();
+        }
+    }
+
+    private WindowDriver open(Path simpDir, SceneDrawer drawer) throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, simpDir, Optional.empty()), drawer);
+        return driver;
+    }
+
+    @Test
+    void pageIsShownAtOneToOne() throws Exception {
+        open(TestScenes.courseSimpDir(), SceneDrawer.SIMP);
+        assertTrue(driver.onEdt(() -> driver.window().frame().getGraphicsConfiguration().getDefaultTransform().isIdentity()),
+                "the screen is scaled: run with -Dsun.java2d.uiScale=1");
+        assertEquals(PageCanvas.SIZE, (int) driver.onEdt(() -> driver.window().pageView().getWidth()));
+        assertEquals(PageCanvas.SIZE, (int) driver.onEdt(() -> driver.window().pageView().getHeight()));
+        assertEquals("simpview — page 1/8: Wireframe mesh (lerp) — seed 361",
+                driver.onEdt(() -> driver.window().frame().getTitle()));
+    }
+
+    @Test
+    void clickingStepsThroughAllPagesAndEachMatchesTheHeadlessRender() throws Exception {
+        PageContext context = PageContext.defaults().withSeed(SEED).withSimpDir(TestScenes.courseSimpDir());
+        open(context.simpDir(), SceneDrawer.SIMP);
+        PageRenderer headless = new PageRenderer();
+        for (int page = 1; page <= Pages.COUNT; page++) {
+            RenderedView shown = driver.awaitShown(new View.OfPage(page));
+            try {
+                BufferedImage expected = headless.renderImage(page, context);
+                assertNull(shown.error(), "page " + page);
+                assertEquals(0, driver.screenDiffersFrom(expected), "pixels differing on page " + page);
+            } catch (SceneException e) {
+                // The page fails headless too: the window must show the same message over the page.
+                assertEquals(e.getMessage(), shown.error(), "page " + page);
+                assertEquals(e.getMessage(), driver.onEdt(() -> driver.window().pageView().error()));
+            }
+            driver.clickPage();
+        }
+        driver.awaitShown(new View.OfPage(1));
+        assertEquals(0, driver.screenDiffersFrom(headless.renderImage(1, context)), "after page 8 comes page 1");
+    }
+
+    @Test
+    void keysStepJumpAndWrapAround() throws Exception {
+        open(TestScenes.courseSimpDir(), SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_END);
+        driver.awaitShown(new View.OfPage(8));
+        driver.press(KeyEvent.VK_RIGHT);
+        driver.awaitShown(new View.OfPage(1));
+        driver.press(KeyEvent.VK_LEFT);
+        driver.awaitShown(new View.OfPage(8));
+        driver.press(KeyEvent.VK_HOME);
+        driver.awaitShown(new View.OfPage(1));
+        driver.press(KeyEvent.VK_5);
+        driver.awaitShown(new View.OfPage(5));
+        driver.press(KeyEvent.VK_SPACE);
+        driver.awaitShown(new View.OfPage(6));
+        driver.press(KeyEvent.VK_PAGE_UP);
+        driver.awaitShown(new View.OfPage(5));
+        driver.press(KeyEvent.VK_PAGE_DOWN);
+        driver.awaitShown(new View.OfPage(6));
+        driver.press(KeyEvent.VK_3);
+        RenderedView three = driver.awaitShown(new View.OfPage(3));
+        assertEquals("simpview — page 3/8: Z-buffer — seed 361", driver.onEdt(() -> driver.window().frame().getTitle()));
+        BufferedImage expected = new PageRenderer().renderImage(3, PageContext.defaults().withSeed(SEED));
+        assertEquals(0, Images.differingPixels(expected, three.image()));
+    }
+
+    @Test
+    void newSeedRedrawsTheSeededPageWithTheSeedInTheTitle() throws Exception {
+        open(TestScenes.courseSimpDir(), SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_R);
+        driver.awaitEdt(() -> !driver.window().busy() && driver.window().shown().seed() != SEED, "a new seed");
+        RenderedView shown = driver.awaitShown(new View.OfPage(2));
+        long seed = shown.seed();
+        assertTrue(driver.onEdt(() -> driver.window().frame().getTitle()).endsWith("— seed " + seed));
+        BufferedImage expected = new PageRenderer().renderImage(2, PageContext.defaults().withSeed(seed));
+        assertEquals(0, driver.screenDiffersFrom(expected), "pixels differing from page 2 with seed " + seed);
+    }
+
+    @Test
+    void sceneErrorsShowOverThePageWhileOtherPagesStillRender() throws Exception {
+        Path bad = Files.writeString(dir.resolve("page6.simp"), "line (-50, -50, -10) (50, 50, -10)\nrotate x 30\n");
+        open(dir, SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+
+        driver.press(KeyEvent.VK_6);
+        RenderedView six = driver.awaitShown(new View.OfPage(6));
+        assertTrue(six.error() != null && six.error().contains(bad.toString()), "names the file: " + six.error());
+        if (!six.error().contains("not yet available")) {
+            assertTrue(six.error().contains(bad + ":2:8"), "file:line:col of the bad axis: " + six.error());
+        }
+        // The overlay is on screen: the capture differs from the page as drawn, at the bottom only.
+        BufferedImage screen = driver.capturePage();
+        assertTrue(Images.differingPixels(six.image(), screen) > 1000, "overlay visible");
+        assertEquals(0, Images.differingPixels(six.image(), screen, 0, PageCanvas.SIZE / 2), "top half as drawn");
+
+        driver.press(KeyEvent.VK_RIGHT);
+        RenderedView seven = driver.awaitShown(new View.OfPage(7));
+        assertTrue(seven.error().contains("page7.simp was not found in " + dir.toAbsolutePath().normalize()),
+                "names the file and the folder: " + seven.error());
+
+        driver.press(KeyEvent.VK_1);
+        RenderedView one = driver.awaitShown(new View.OfPage(1));
+        assertNull(one.error());
+        assertNull(driver.onEdt(() -> driver.window().pageView().error()));
+        BufferedImage expected = new PageRenderer().renderImage(1, PageContext.defaults().withSeed(SEED));
+        assertEquals(0, driver.screenDiffersFrom(expected), "page 1 renders cleanly after the errors");
+    }
+
+    @Test
+    void anOpenedSceneIsAnExtraViewAndSteppingReturnsToThePages() throws Exception {
+        Path scene = StandInDrawers.sceneFile(dir, "diagonal.simp");
+        open(TestScenes.courseSimpDir(), StandInDrawers.DIAGONAL);
+        driver.onEdt(() -> driver.window().openScene(scene));
+        RenderedView shown = driver.awaitShown(new View.OfScene(scene));
+        assertNull(shown.error());
+        assertEquals("simpview — scene: diagonal.simp", driver.onEdt(() -> driver.window().frame().getTitle()));
+        int margin = PageCanvas.MARGIN;
+        assertEquals(0xFFFFFF, shown.image().getRGB(margin + 10, PageCanvas.SIZE - margin - 11) & 0xFFFFFF, "diagonal drawn");
+        assertEquals(0, driver.screenDiffersFrom(shown.image()));
+
+        driver.clickPage();
+        driver.awaitShown(new View.OfPage(2));
+    }
+
+    @Test
+    void aSceneGivenAtStartOpensAfterTheFirstPage() throws Exception {
+        Path scene = StandInDrawers.sceneFile(dir, "start.simp");
+        driver = WindowDriver.open(new WindowOptions(SEED, dir, Optional.of(scene)), StandInDrawers.DIAGONAL);
+        assertEquals("simpview — scene: start.simp", driver.onEdt(() -> driver.window().frame().getTitle()));
+    }
+}

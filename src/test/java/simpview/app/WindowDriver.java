@@ -1,0 +1,157 @@
+package simpview.app;
+
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import javax.swing.JComponent;
+import javax.swing.SwingUtilities;
+import simpview.raster.PageCanvas;
+
+/** Drives the real window the way a person would: java.awt.Robot clicks, keys and screen captures. */
+final class WindowDriver {
+
+    static final long WAIT_MS = 10_000;
+
+    private final SimpviewWindow window;
+    private final Robot robot;
+
+    private WindowDriver(SimpviewWindow window, Robot robot) {
+        this.window = window;
+        this.robot = robot;
+    }
+
+    /** Opens the window and waits for its first page, or for the scene it was given. */
+    static WindowDriver open(WindowOptions options, SceneDrawer drawer) throws Exception {
+        AtomicReference<SimpviewWindow> opened = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> opened.set(SimpviewWindow.open(options, drawer)));
+        Robot robot = new Robot();
+        robot.setAutoDelay(20);
+        WindowDriver driver = new WindowDriver(opened.get(), robot);
+        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
+        return driver;
+    }
+
+    SimpviewWindow window() {
+        return window;
+    }
+
+    <T> T onEdt(Callable<T> question) throws Exception {
+        AtomicReference<T> answer = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                answer.set(question.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw failure.get();
+        }
+        return answer.get();
+    }
+
+    void onEdt(Runnable action) throws Exception {
+        SwingUtilities.invokeAndWait(action);
+    }
+
+    /** Waits until nothing is being drawn and {@code view} is on screen. */
+    RenderedView awaitShown(View view) throws Exception {
+        awaitEdt(() -> !window.busy() && window.shown() != null && window.shown().view().equals(view),
+                "showing " + view);
+        robot.waitForIdle();
+        return onEdt(window::shown);
+    }
+
+    /** Polls a condition on the EDT until it holds; fails with what the window shows if it never does. */
+    void awaitEdt(Callable<Boolean> condition, String what) throws Exception {
+        long deadline = System.currentTimeMillis() + WAIT_MS;
+        while (!onEdt(condition)) {
+            if (System.currentTimeMillis() > deadline) {
+                RenderedView shown = onEdt(window::shown);
+                fail("timed out waiting for " + what + "; showing " + (shown == null ? "nothing" : shown.view())
+                        + ", busy " + onEdt(window::busy));
+            }
+            Thread.sleep(20);
+        }
+    }
+
+    static void await(BooleanSupplier condition, String what) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + WAIT_MS;
+        while (!condition.getAsBoolean()) {
+            if (System.currentTimeMillis() > deadline) {
+                fail("timed out waiting for " + what);
+            }
+            Thread.sleep(20);
+        }
+    }
+
+    /** A left click in the middle of the page, then the pointer moves off the window. */
+    void clickPage() throws Exception {
+        click(window.pageView());
+    }
+
+    void click(JComponent component) throws Exception {
+        Point p = onEdt(() -> {
+            Point corner = component.getLocationOnScreen();
+            return new Point(corner.x + component.getWidth() / 2, corner.y + component.getHeight() / 2);
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseMove(1, 1);
+        robot.waitForIdle();
+    }
+
+    /** Clicks the page once to give the window the keyboard, and waits for the step that click makes. */
+    void focusByClicking(View afterClick) throws Exception {
+        clickPage();
+        awaitShown(afterClick);
+        awaitEdt(() -> window.frame().isFocused(), "the window to have the keyboard");
+    }
+
+    void press(int keyCode) {
+        robot.keyPress(keyCode);
+        robot.keyRelease(keyCode);
+        robot.waitForIdle();
+    }
+
+    void pressWithControl(int keyCode) {
+        robot.keyPress(KeyEvent.VK_CONTROL);
+        press(keyCode);
+        robot.keyRelease(KeyEvent.VK_CONTROL);
+    }
+
+    /** The page area as the X server shows it. */
+    BufferedImage capturePage() throws Exception {
+        robot.waitForIdle();
+        Point corner = onEdt(() -> window.pageView().getLocationOnScreen());
+        return robot.createScreenCapture(new Rectangle(corner.x, corner.y, PageCanvas.SIZE, PageCanvas.SIZE));
+    }
+
+    /**
+     * Pixels by which the screen differs from {@code expected}; retries briefly,
+     * since the X server may show the repaint a moment after the EDT is idle.
+     */
+    long screenDiffersFrom(BufferedImage expected) throws Exception {
+        long differing = Images.differingPixels(expected, capturePage());
+        for (int attempt = 0; attempt < 20 && differing != 0; attempt++) {
+            Thread.sleep(50);
+            differing = Images.differingPixels(expected, capturePage());
+        }
+        return differing;
+    }
+
+    void close() throws Exception {
+        onEdt(window::close);
+        robot.waitForIdle();
+    }
+}
