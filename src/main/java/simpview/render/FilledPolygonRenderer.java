@@ -40,12 +40,17 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     private final double[] edgePy = new double[3];
     private final double[] edgeDx = new double[3];
     private final double[] edgeDy = new double[3];
+    private final double[] edgeXPerY = new double[3];
     private final double[] edgeSign = new double[3];
     private final boolean[] edgeTopLeft = new boolean[3];
     private final double[] crossX0 = new double[3];
     private final double[] crossX1 = new double[3];
     private final double[] crossY0 = new double[3];
     private final double[] crossY1 = new double[3];
+    // The edge function on the current row: f(px) = edgeSign * (rowTerm - crossEy * (px - crossX0)).
+    private final double[] crossEx = new double[3];
+    private final double[] crossEy = new double[3];
+    private final double[] rowTerm = new double[3];
 
     // Attribute planes: value(px, py) = base + slopeX * (px - originX) + slopeY * (py - originY).
     private final double[] base = new double[ATTRIBUTES];
@@ -85,20 +90,24 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
 
     private void drawRow(int row, int width, Drawable drawable) {
         double py = row + 0.5;
+        for (int e = 0; e < 3; e++) {
+            rowTerm[e] = crossEx[e] * (py - crossY0[e]);
+        }
         int from = 0;
         int to = width;
         for (int e = 0; e < 3 && from < to; e++) {
             double dy = edgeDy[e];
             if (dy == 0) {
-                if (!inside(e, 0.5, py)) {
+                if (!inside(e, 0.5)) {
                     return; // a horizontal edge excludes or admits the whole row
                 }
             } else {
-                double crossing = edgePx[e] + edgeDx[e] * (py - edgePy[e]) / dy;
+                // Only an estimate: the exact test settles the run's ends.
+                double crossing = edgePx[e] + (py - edgePy[e]) * edgeXPerY[e];
                 if (dy < 0) {
-                    from = Math.max(from, firstInside(e, py, crossing, width));
+                    from = Math.max(from, firstInside(e, crossing, width));
                 } else {
-                    to = Math.min(to, endOfInside(e, py, crossing, width));
+                    to = Math.min(to, endOfInside(e, crossing, width));
                 }
             }
         }
@@ -108,24 +117,24 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     }
 
     /** For an edge whose inside is to the right: the first pixel on the row inside it, or width. */
-    private int firstInside(int e, double py, double crossing, int width) {
+    private int firstInside(int e, double crossing, int width) {
         int i = clampIndex(Math.ceil(crossing - 0.5), width);
-        while (i > 0 && inside(e, i - 0.5, py)) {
+        while (i > 0 && inside(e, i - 0.5)) {
             i--;
         }
-        while (i < width && !inside(e, i + 0.5, py)) {
+        while (i < width && !inside(e, i + 0.5)) {
             i++;
         }
         return i;
     }
 
     /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
-    private int endOfInside(int e, double py, double crossing, int width) {
+    private int endOfInside(int e, double crossing, int width) {
         int i = clampIndex(Math.floor(crossing - 0.5) + 1, width);
-        while (i < width && inside(e, i + 0.5, py)) {
+        while (i < width && inside(e, i + 0.5)) {
             i++;
         }
-        while (i > 0 && !inside(e, i - 0.5, py)) {
+        while (i > 0 && !inside(e, i - 0.5)) {
             i--;
         }
         return i;
@@ -135,10 +144,13 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         return (int) Math.max(0, Math.min(width, estimate));
     }
 
-    /** The exact coverage test of one edge at one sample point. */
-    private boolean inside(int e, double px, double py) {
-        double f = edgeSign[e] * ((crossX1[e] - crossX0[e]) * (py - crossY0[e])
-                - (crossY1[e] - crossY0[e]) * (px - crossX0[e]));
+    /**
+     * The exact coverage test of one edge at sample (px, row centre):
+     * {@code sign * ((x1 - x0) * (py - y0) - (y1 - y0) * (px - x0))} over the
+     * canonical endpoints, its first product taken from {@link #rowTerm}.
+     */
+    private boolean inside(int e, double px) {
+        double f = edgeSign[e] * (rowTerm[e] - crossEy[e] * (px - crossX0[e]));
         return f > 0 || (f == 0 && edgeTopLeft[e]);
     }
 
@@ -155,6 +167,9 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         crossY0[e] = first.y();
         crossX1[e] = second.x();
         crossY1[e] = second.y();
+        crossEx[e] = second.x() - first.x();
+        crossEy[e] = second.y() - first.y();
+        edgeXPerY[e] = edgeDx[e] / edgeDy[e];
         edgeSign[e] = forward ? 1 : -1;
         // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
         edgeTopLeft[e] = edgeDy[e] < 0 || (edgeDy[e] == 0 && edgeDx[e] < 0);
