@@ -34,22 +34,30 @@ public final class DdaLineRenderer implements LineRenderer {
         int majorLimit = xMajor ? drawable.width() : drawable.height();
         int minorLimit = xMajor ? drawable.height() : drawable.width();
 
-        double steps = Math.abs(major1 - major0);
-        double direction = major1 >= major0 ? 1 : -1;
-        // Steps k in [0, steps] whose major coordinate major0 + k * direction is on the drawable.
-        double kFirst = direction > 0 ? -major0 : major0 - (majorLimit - 1);
-        double kLast = direction > 0 ? (majorLimit - 1) - major0 : major0;
-        kFirst = Math.max(kFirst, 0);
-        kLast = Math.min(kLast, steps);
-
-        for (double k = kFirst; k <= kLast; k++) {
-            double t = steps == 0 ? 0 : k / steps;
+        // Visit only the major coordinates on the drawable, with an int counter:
+        // a double counter stops counting past 2^53 and would never end.
+        double lo = Math.max(Math.min(major0, major1), 0);
+        double hi = Math.min(Math.max(major0, major1), majorLimit - 1);
+        if (lo > hi) {
+            return;
+        }
+        int step = major1 >= major0 ? 1 : -1;
+        int first = (int) (step > 0 ? lo : hi);
+        int count = (int) (hi - lo) + 1;
+        // Halves keep end - start finite for any finite ends; scaling by a
+        // power of two is exact, so t and the minor lerp are the same bits as
+        // the unscaled (m - major0) / (major1 - major0).
+        double halfStart = 0.5 * major0;
+        double halfSpan = 0.5 * major1 - 0.5 * major0;
+        double halfMinor0 = 0.5 * minor0;
+        double halfMinorSpan = 0.5 * minor1 - 0.5 * minor0;
+        for (int n = 0, major = first; n < count; n++, major += step) {
+            double t = halfSpan == 0 ? 0 : (0.5 * major - halfStart) / halfSpan;
             double s = 1 - t;
-            double minor = Math.floor(minor0 + (minor1 - minor0) * t + 0.5);
+            double minor = Math.floor(2 * (halfMinor0 + halfMinorSpan * t) + 0.5);
             if (minor < 0 || minor >= minorLimit) {
                 continue;
             }
-            int major = (int) (major0 + k * direction);
             int x = xMajor ? major : (int) minor;
             int y = xMajor ? (int) minor : major;
             double z = s * p.z() + t * q.z();

@@ -3,7 +3,7 @@ package simpview.simp;
 import java.nio.file.Path;
 import simpview.raster.Drawable;
 
-/** Reads a SIMP file and draws it. (Placeholder until the interpreter lands.) */
+/** Reads a SIMP file and draws it. */
 public final class SceneRenderer {
 
     private SceneRenderer() {
@@ -12,9 +12,10 @@ public final class SceneRenderer {
     /**
      * Draws the scene in {@code file} onto {@code panel}, a drawable in panel
      * coordinates (650x650, y up) that already does whatever the page wants
-     * done per pixel (scissor, z-buffer, depth cue).
+     * done per pixel (scissor, z-buffer, depth cue). Starts from a fresh
+     * state: identity CTM, empty stacks, style filled.
      */
     public static void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException {
-        throw new SceneException(file, 0, 0, "", "SIMP scenes are not yet available");
+        new SimpInterpreter(new SimpClient(panel), monitor).run(file);
     }
 }

@@ -2,12 +2,14 @@ package simpview.pages;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 import simpview.simp.SceneException;
 import simpview.testing.GoldenCase;
 import simpview.testing.Goldens;
@@ -24,6 +26,25 @@ class PageGoldenTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("seededPages")
     void seededPagesMatchTheirGoldens(GoldenCase c) throws SceneException {
+        Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
+    }
+
+    static Stream<GoldenCase> ownScenePages() {
+        return GoldenCase.ownScenePages().stream();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("ownScenePages")
+    void theProjectsOwnScenesMatchTheirGoldens(GoldenCase c) throws SceneException {
+        Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
+    }
+
+    @ParameterizedTest(name = "page {0}")
+    @ValueSource(ints = {6, 7, 8})
+    void theCourseScenesMatchTheirGoldens(int page) throws SceneException {
+        assumeTrue(GoldenCase.courseSimpDir() != null,
+                "the course's scene files are not beside the project (../shared/course-simp): pages 6-8 not checked");
+        GoldenCase c = GoldenCase.coursePages().get(page - 6);
         Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
     }
 

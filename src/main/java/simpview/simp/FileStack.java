@@ -1,0 +1,201 @@
+package simpview.simp;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The files being read, innermost on top: {@code file} pushes, the end of a
+ * file pops, and commands always come from the top. An explicit stack, so an
+ * include chain of any depth costs heap, never Java call stack.
+ *
+ * <p>File descriptors: only the top {@link #MAX_OPEN} readers keep their file
+ * open; a deeper one is suspended (closed, its offset remembered) and reopens
+ * where it was when it is on top again. Small files, which scenes include
+ * over and over (a cube, a sphere), are read whole once and kept in memory
+ * for the rest of the scene, up to a fixed budget.
+ */
+final class FileStack implements AutoCloseable {
+
+    static final int MAX_OPEN = 8;
+    static final int SMALL_FILE = LineSource.CHUNK;
+    private static final long CACHE_BUDGET = 8L << 20;
+
+    private final List<SimpReader> readers = new ArrayList<>();
+    private final List<Path> realPaths = new ArrayList<>();
+    private final Set<Path> onStack = new HashSet<>();
+    private final Map<Path, byte[]> smallFiles = new HashMap<>();
+    private final long smallFileLimit;
+    private long cachedBytes;
+    private long linesOfFinishedFiles;
+
+    FileStack() {
+        this(SMALL_FILE);
+    }
+
+    /** @param smallFileLimit files up to this many bytes are read whole and kept; -1 streams every file */
+    FileStack(long smallFileLimit) {
+        this.smallFileLimit = smallFileLimit;
+    }
+
+    /** Starts with the scene's top file. */
+    void openTop(Path file) throws SceneException {
+        Path real;
+        try {
+            real = file.toRealPath();
+        } catch (NoSuchFileException e) {
+            throw new SceneException(file, 0, 0, "", "file not found: " + file.toAbsolutePath().normalize());
+        } catch (IOException e) {
+            throw new SceneException(file, 0, 0, "", "cannot open the file: " + e.getMessage());
+        }
+        if (!Files.isRegularFile(real)) {
+            throw new SceneException(file, 0, 0, "", "not a regular file: " + file.toAbsolutePath().normalize());
+        }
+        push(open(file, real), real);
+    }
+
+    /**
+     * Reads the next command of the innermost file, going back to the file
+     * that included it at each end of file.
+     *
+     * @return false when the top file is finished
+     */
+    boolean next(Command c) throws SceneException {
+        while (!readers.isEmpty()) {
+            if (top().next(c)) {
+                return true;
+            }
+            pop();
+        }
+        return false;
+    }
+
+    /** Acts on a {@code file} command just read from the top file. */
+    void include(Command c) throws SceneException {
+        SimpReader from = top();
+        Path candidate = resolve(from, c);
+        Path real;
+        try {
+            real = candidate.toRealPath();
+        } catch (NoSuchFileException e) {
+            throw from.error(c.argumentIndex, "file not found: " + candidate.toAbsolutePath().normalize());
+        } catch (IOException e) {
+            throw from.error(c.argumentIndex, "cannot open " + candidate + ": " + e.getMessage());
+        }
+        if (!Files.isRegularFile(real)) {
+            throw from.error(c.argumentIndex, (Files.isDirectory(real) ? "not a file but a folder: "
+                    : "not a regular file: ") + candidate.toAbsolutePath().normalize());
+        }
+        if (onStack.contains(real)) {
+            throw from.error(c.argumentIndex, "file cycle: " + chain(real));
+        }
+        SimpReader reader;
+        try {
+            reader = open(candidate, real);
+        } catch (SceneException e) {
+            throw from.error(c.argumentIndex, e.problem());
+        }
+        push(reader, real);
+    }
+
+    private static Path resolve(SimpReader from, Command c) throws SceneException {
+        String name = c.fileName + ".simp";
+        try {
+            Path dir = from.file().getParent();
+            return dir == null ? Path.of(name) : dir.resolve(name);
+        } catch (InvalidPathException e) {
+            throw from.error(c.argumentIndex, "not a valid file name: '" + c.fileName + "'");
+        }
+    }
+
+    /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */
+    private String chain(Path real) {
+        StringBuilder sb = new StringBuilder();
+        for (int k = realPaths.indexOf(real); k < readers.size(); k++) {
+            sb.append(readers.get(k).file().getFileName()).append(" → ");
+        }
+        return sb.append(real.getFileName()).toString();
+    }
+
+    private SimpReader open(Path file, Path real) throws SceneException {
+        byte[] cached = smallFiles.get(real);
+        if (cached != null) {
+            return SimpReader.of(file, cached);
+        }
+        try {
+            long size = Files.size(real);
+            if (size <= smallFileLimit && cachedBytes + size <= CACHE_BUDGET) {
+                byte[] content = Files.readAllBytes(real);
+                smallFiles.put(real, content);
+                cachedBytes += content.length;
+                return SimpReader.of(file, content);
+            }
+        } catch (IOException e) {
+            throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + e.getMessage());
+        }
+        return SimpReader.open(file);
+    }
+
+    private void push(SimpReader reader, Path real) throws SceneException {
+        readers.add(reader);
+        realPaths.add(real);
+        onStack.add(real);
+        int deepestOpen = readers.size() - 1 - MAX_OPEN;
+        if (deepestOpen >= 0) {
+            readers.get(deepestOpen).suspend();
+        }
+    }
+
+    private void pop() {
+        SimpReader done = readers.remove(readers.size() - 1);
+        done.close();
+        linesOfFinishedFiles += done.linesRead();
+        onStack.remove(realPaths.remove(realPaths.size() - 1));
+    }
+
+    private SimpReader top() {
+        return readers.get(readers.size() - 1);
+    }
+
+    /** The file the last command came from. */
+    SimpReader current() {
+        return top();
+    }
+
+    int depth() {
+        return readers.size();
+    }
+
+    /** How many of the readers hold an open file now (for tests). */
+    int openFiles() {
+        int open = 0;
+        for (SimpReader r : readers) {
+            open += r.holdsFile() ? 1 : 0;
+        }
+        return open;
+    }
+
+    /** Physical lines read so far over all files. */
+    long linesRead() {
+        long n = linesOfFinishedFiles;
+        for (SimpReader r : readers) {
+            n += r.linesRead();
+        }
+        return n;
+    }
+
+    @Override
+    public void close() {
+        while (!readers.isEmpty()) {
+            pop();
+        }
+    }
+}
