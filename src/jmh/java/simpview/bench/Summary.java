@@ -52,6 +52,10 @@ public final class Summary {
     public static void main(String[] args) throws IOException {
         Path in = Path.of(args.length > 0 ? args[0] : "build/jmh/results.json");
         Path out = Path.of(args.length > 1 ? args[1] : "build/jmh/results.md");
+        if (!Files.isRegularFile(in)) {
+            System.out.println("No " + in + " (nothing was benchmarked), so no summary.");
+            return;
+        }
         String table = table(in);
         System.out.print(table);
         Files.writeString(out, table, StandardCharsets.UTF_8);
