@@ -139,7 +139,8 @@ public final class Summary {
                 if (e.getKey().endsWith("gc.alloc.rate.norm")) {
                     Object score = ((Map<String, Object>) e.getValue()).get("score");
                     if (score instanceof Double) {
-                        return String.format(Locale.ROOT, "%.3g", (Double) score);
+                        double bytes = (Double) score;
+                        return String.format(Locale.ROOT, bytes >= 100 ? "%,.0f" : "%.2g", bytes);
                     }
                 }
             }
