@@ -54,6 +54,13 @@ public final class ImageDrawable implements Drawable {
         return 0;
     }
 
+    /**
+     * Each pixel gets {@code Colors.packLevels(c + k * dc, ...)} with
+     * {@code k = x - xBase}, as {@link Span#argbAt} computes it. Every step of
+     * that evaluation (k * dc, + c, + 0.5, the cast to int) is monotone in k,
+     * so a channel whose two end pixels need no clamp needs none in between:
+     * then the loop packs without clamping, and a span of one colour is a fill.
+     */
     @Override
     public void fillSpan(Span s) {
         if (s.y < 0 || s.y >= height) {
@@ -61,16 +68,47 @@ public final class ImageDrawable implements Drawable {
         }
         int from = Math.max(s.x0, 0);
         int to = Math.min(s.x1, width);
+        if (from >= to) {
+            return;
+        }
         int row = s.y * width;
+        if (s.dr == 0 && s.dg == 0 && s.db == 0) {
+            java.util.Arrays.fill(pixels, row + from, row + to, s.argbAt(from));
+        } else if (inByteRange(s.r, s.dr, from - s.xBase, to - 1 - s.xBase)
+                && inByteRange(s.g, s.dg, from - s.xBase, to - 1 - s.xBase)
+                && inByteRange(s.b, s.db, from - s.xBase, to - 1 - s.xBase)) {
+            packUnclamped(s, row, from, to);
+        } else {
+            packClamped(s, row, from, to);
+        }
+    }
+
+    /** True when c + k * dc rounds into [0, 255] without clamping at both k = k0 and k = k1. */
+    private static boolean inByteRange(double c, double dc, int k0, int k1) {
+        int first = (int) (c + k0 * dc + 0.5);
+        int last = (int) (c + k1 * dc + 0.5);
+        return first >= 0 && first <= 255 && last >= 0 && last <= 255;
+    }
+
+    /** Colors.packLevels without the clamp: every channel is known to stay in [0, 255]. */
+    private void packUnclamped(Span s, int row, int from, int to) {
+        int[] p = pixels;
         double r = s.r;
         double dr = s.dr;
         double g = s.g;
         double dg = s.dg;
         double b = s.b;
         double db = s.db;
+        int k = from - s.xBase;
+        for (int i = row + from; i < row + to; i++, k++) {
+            p[i] = 0xFF000000 | (int) (r + k * dr + 0.5) << 16 | (int) (g + k * dg + 0.5) << 8
+                    | (int) (b + k * db + 0.5);
+        }
+    }
+
+    private void packClamped(Span s, int row, int from, int to) {
         for (int x = from; x < to; x++) {
-            int k = x - s.xBase;
-            pixels[row + x] = Colors.packLevels(r + k * dr, g + k * dg, b + k * db);
+            pixels[row + x] = s.argbAt(x);
         }
     }
 

@@ -27,9 +27,12 @@ public final class PageCanvas {
         clear();
     }
 
-    /** White margins, black panel, z-buffer at the far plane. */
+    /** White margins, black panel, z-buffer at the far plane. Each pixel is written once. */
     public void clear() {
-        imageDrawable.fillRect(0, 0, SIZE, SIZE, Colors.WHITE);
+        imageDrawable.fillRect(0, 0, SIZE, MARGIN, Colors.WHITE);
+        imageDrawable.fillRect(0, MARGIN + PANEL, SIZE, SIZE, Colors.WHITE);
+        imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
+        imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
         zbuffer.reset();
     }

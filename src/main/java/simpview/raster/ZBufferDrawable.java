@@ -40,7 +40,11 @@ public final class ZBufferDrawable extends DrawableDecorator {
         }
     }
 
-    /** Passes on the longest runs of pixels that win the depth test, each as one span. */
+    /**
+     * Passes on the longest runs of pixels that win the depth test, each as
+     * one span. Depth at pixel x is {@code z + (x - xBase) * dz}, as
+     * {@link Span#zAt}; a NaN depth never wins.
+     */
     @Override
     public void fillSpan(Span s) {
         if (s.y < 0 || s.y >= height) {
@@ -48,27 +52,29 @@ public final class ZBufferDrawable extends DrawableDecorator {
         }
         int x0 = s.x0;
         int x1 = s.x1;
-        int from = Math.max(x0, 0);
         int to = Math.min(x1, width);
         int row = s.y * width;
+        double[] d = depth;
         double z = s.z;
         double dz = s.dz;
         int xBase = s.xBase;
-        int runStart = -1;
-        for (int x = from; x < to; x++) {
-            double zx = z + (x - xBase) * dz;
-            if (zx > depth[row + x]) {
-                depth[row + x] = zx;
-                if (runStart < 0) {
-                    runStart = x;
-                }
-            } else if (runStart >= 0) {
-                emit(s, runStart, x);
-                runStart = -1;
+        int x = Math.max(x0, 0);
+        while (x < to) {
+            while (x < to && !(z + (x - xBase) * dz > d[row + x])) {
+                x++; // hidden
             }
-        }
-        if (runStart >= 0) {
-            emit(s, runStart, to);
+            int runStart = x;
+            while (x < to) {
+                double zx = z + (x - xBase) * dz;
+                if (!(zx > d[row + x])) {
+                    break;
+                }
+                d[row + x] = zx;
+                x++;
+            }
+            if (runStart < x) {
+                emit(s, runStart, x);
+            }
         }
         s.x0 = x0;
         s.x1 = x1;

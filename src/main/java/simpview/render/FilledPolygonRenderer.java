@@ -40,12 +40,21 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     private final double[] edgePy = new double[3];
     private final double[] edgeDx = new double[3];
     private final double[] edgeDy = new double[3];
+    private final double[] edgeXPerY = new double[3];
+    // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
+    // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or left edge.
     private final double[] edgeSign = new double[3];
     private final boolean[] edgeTopLeft = new boolean[3];
     private final double[] crossX0 = new double[3];
-    private final double[] crossX1 = new double[3];
     private final double[] crossY0 = new double[3];
-    private final double[] crossY1 = new double[3];
+    private final double[] crossEx = new double[3];
+    private final double[] crossEy = new double[3];
+    // Edges by role: inside to the right (dy < 0), to the left (dy > 0), horizontal (at most one).
+    private final int[] leftEdges = new int[2];
+    private final int[] rightEdges = new int[2];
+    private int leftCount;
+    private int rightCount;
+    private int flatEdge;
 
     // Attribute planes: value(px, py) = base + slopeX * (px - originX) + slopeY * (py - originY).
     private final double[] base = new double[ATTRIBUTES];
@@ -67,6 +76,9 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         Vertex b = area > 0 ? p2 : p3;
         Vertex c = area > 0 ? p3 : p2;
         area = Math.abs(area);
+        leftCount = 0;
+        rightCount = 0;
+        flatEdge = -1;
         setUpEdge(0, a, b);
         setUpEdge(1, b, c);
         setUpEdge(2, c, a);
@@ -83,62 +95,74 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         }
     }
 
+    /** The covered run of a row is the intersection of one half-row per edge. */
     private void drawRow(int row, int width, Drawable drawable) {
         double py = row + 0.5;
+        if (flatEdge >= 0 && !inside(flatEdge, rowTerm(flatEdge, py), 0.5)) {
+            return; // a horizontal edge excludes or admits the whole row
+        }
         int from = 0;
+        for (int k = 0; k < leftCount; k++) {
+            from = Math.max(from, firstInside(leftEdges[k], py, width));
+        }
         int to = width;
-        for (int e = 0; e < 3 && from < to; e++) {
-            double dy = edgeDy[e];
-            if (dy == 0) {
-                if (!inside(e, 0.5, py)) {
-                    return; // a horizontal edge excludes or admits the whole row
-                }
-            } else {
-                double crossing = edgePx[e] + edgeDx[e] * (py - edgePy[e]) / dy;
-                if (dy < 0) {
-                    from = Math.max(from, firstInside(e, py, crossing, width));
-                } else {
-                    to = Math.min(to, endOfInside(e, py, crossing, width));
-                }
-            }
+        for (int k = 0; k < rightCount && from < to; k++) {
+            to = Math.min(to, endOfInside(rightEdges[k], py, width));
         }
         if (from < to) {
             emitSpan(row, from, to, drawable);
         }
     }
 
-    /** For an edge whose inside is to the right: the first pixel on the row inside it, or width. */
-    private int firstInside(int e, double py, double crossing, int width) {
-        int i = clampIndex(Math.ceil(crossing - 0.5), width);
-        while (i > 0 && inside(e, i - 0.5, py)) {
+    /**
+     * For an edge whose inside is to the right: the first pixel on the row
+     * inside it, or width. Along a row the test is monotone in x, so the
+     * crossing only gives a first guess; the exact test moves it to the
+     * boundary. Pixel indices are kept as (exact) doubles.
+     */
+    private int firstInside(int e, double py, int width) {
+        double term = rowTerm(e, py);
+        double i = clampIndex(Math.ceil(crossing(e, py) - 0.5), width);
+        while (i > 0 && inside(e, term, i - 0.5)) {
             i--;
         }
-        while (i < width && !inside(e, i + 0.5, py)) {
+        while (i < width && !inside(e, term, i + 0.5)) {
             i++;
         }
-        return i;
+        return (int) i;
     }
 
     /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
-    private int endOfInside(int e, double py, double crossing, int width) {
-        int i = clampIndex(Math.floor(crossing - 0.5) + 1, width);
-        while (i < width && inside(e, i + 0.5, py)) {
+    private int endOfInside(int e, double py, int width) {
+        double term = rowTerm(e, py);
+        double i = clampIndex(Math.floor(crossing(e, py) - 0.5) + 1, width);
+        while (i < width && inside(e, term, i + 0.5)) {
             i++;
         }
-        while (i > 0 && !inside(e, i - 0.5, py)) {
+        while (i > 0 && !inside(e, term, i - 0.5)) {
             i--;
         }
-        return i;
+        return (int) i;
     }
 
-    private static int clampIndex(double estimate, int width) {
-        return (int) Math.max(0, Math.min(width, estimate));
+    /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
+    private double crossing(int e, double py) {
+        return edgePx[e] + (py - edgePy[e]) * edgeXPerY[e];
     }
 
-    /** The exact coverage test of one edge at one sample point. */
-    private boolean inside(int e, double px, double py) {
-        double f = edgeSign[e] * ((crossX1[e] - crossX0[e]) * (py - crossY0[e])
-                - (crossY1[e] - crossY0[e]) * (px - crossX0[e]));
+    /** A guess clamped to [0, width]; NaN becomes 0. */
+    private static double clampIndex(double estimate, int width) {
+        return estimate >= 0 ? Math.min(estimate, width) : 0;
+    }
+
+    /** The part of the edge function that depends only on the row: ex * (py - y0). */
+    private double rowTerm(int e, double py) {
+        return crossEx[e] * (py - crossY0[e]);
+    }
+
+    /** The exact coverage test of one edge at (px, py), given rowTerm(e, py). */
+    private boolean inside(int e, double rowTerm, double px) {
+        double f = edgeSign[e] * (rowTerm - crossEy[e] * (px - crossX0[e]));
         return f > 0 || (f == 0 && edgeTopLeft[e]);
     }
 
@@ -147,17 +171,25 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         edgePy[e] = from.y();
         edgeDx[e] = to.x() - from.x();
         edgeDy[e] = to.y() - from.y();
+        edgeXPerY[e] = edgeDx[e] / edgeDy[e];
         // Canonical order: the lexicographically smaller endpoint first.
         boolean forward = from.x() < to.x() || (from.x() == to.x() && from.y() < to.y());
         Vertex first = forward ? from : to;
         Vertex second = forward ? to : from;
         crossX0[e] = first.x();
         crossY0[e] = first.y();
-        crossX1[e] = second.x();
-        crossY1[e] = second.y();
+        crossEx[e] = second.x() - first.x();
+        crossEy[e] = second.y() - first.y();
         edgeSign[e] = forward ? 1 : -1;
         // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
         edgeTopLeft[e] = edgeDy[e] < 0 || (edgeDy[e] == 0 && edgeDx[e] < 0);
+        if (edgeDy[e] < 0) {
+            leftEdges[leftCount++] = e;
+        } else if (edgeDy[e] > 0) {
+            rightEdges[rightCount++] = e;
+        } else {
+            flatEdge = e;
+        }
     }
 
     private void setUpPlanes(Vertex a, Vertex b, Vertex c, double area) {

@@ -1,0 +1,105 @@
+package simpview.raster;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.Random;
+import java.util.zip.CRC32;
+import org.junit.jupiter.api.Test;
+import simpview.geometry.Vertex;
+import simpview.render.DdaLineRenderer;
+import simpview.render.FilledPolygonRenderer;
+
+/**
+ * Guards the raster fast paths against any change of output while they are
+ * optimised: many random triangles and lines (on and off the panel, in and
+ * out of the depth range, large and tiny) through each drawable chain, and a
+ * checksum of every pixel and every depth. The expected checksums were
+ * recorded from the unoptimised code (commit 86fd575); the pixels must never
+ * change, so neither may they.
+ */
+class RasterFingerprintTest {
+
+    private static final Rgb NEAR = new Rgb(1, 0.8, 0.3);
+    private static final Rgb FAR = new Rgb(0.1, 0, 0.2);
+
+    @Test
+    void panelChain() {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.panel(), 11);
+        assertEquals(1295666995L, checksum(canvas), "panel");
+    }
+
+    @Test
+    void depthTestedChain() {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthTested(), 12);
+        assertEquals(906329787L, checksum(canvas), "depth tested");
+    }
+
+    @Test
+    void depthCuedChain() {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthCued(NEAR, FAR), 13);
+        assertEquals(3005972452L, checksum(canvas), "depth cued");
+    }
+
+    @Test
+    void depthCuedWhiteToBlackChain() {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), 14);
+        assertEquals(3748001353L, checksum(canvas), "depth cued white to black");
+    }
+
+    private static void draw(PageCanvas canvas, Drawable target, long seed) {
+        Random random = new Random(seed);
+        FilledPolygonRenderer filled = new FilledPolygonRenderer();
+        DdaLineRenderer lines = new DdaLineRenderer();
+        for (int i = 0; i < 3000; i++) {
+            double size = i % 3 == 0 ? 900 : i % 3 == 1 ? 60 : 4;
+            double cx = random.nextDouble() * 800 - 75;
+            double cy = random.nextDouble() * 800 - 75;
+            Vertex a = vertex(random, cx, cy, size);
+            Vertex b = vertex(random, cx, cy, size);
+            Vertex c = vertex(random, cx, cy, size);
+            if (i % 4 == 3) {
+                lines.drawLine(a, b, target);
+            } else {
+                filled.drawPolygon(a, b, c, target);
+            }
+        }
+        // A shared-edge pair and an axis-aligned pair on pixel centres.
+        filled.drawPolygon(Vertex.of(10.5, 10.5, -50), Vertex.of(300.5, 10.5, -60), Vertex.of(300.5, 200.5, -70), target);
+        filled.drawPolygon(Vertex.of(10.5, 10.5, -50), Vertex.of(300.5, 200.5, -70), Vertex.of(10.5, 200.5, -40), target);
+    }
+
+    private static Vertex vertex(Random random, double cx, double cy, double size) {
+        return new Vertex(cx + (random.nextDouble() - 0.5) * size, cy + (random.nextDouble() - 0.5) * size,
+                random.nextDouble() * 240 - 220, random.nextDouble() * 1.2 - 0.1,
+                random.nextDouble(), random.nextDouble());
+    }
+
+    private static long checksum(PageCanvas canvas) {
+        CRC32 crc = new CRC32();
+        for (int y = 0; y < PageCanvas.SIZE; y++) {
+            for (int x = 0; x < PageCanvas.SIZE; x++) {
+                update(crc, canvas.image().getRGB(x, y));
+            }
+        }
+        ZBuffer z = canvas.zbuffer();
+        for (int y = 0; y < z.height(); y++) {
+            for (int x = 0; x < z.width(); x++) {
+                long bits = Double.doubleToLongBits(z.depthAt(x, y));
+                update(crc, (int) bits);
+                update(crc, (int) (bits >>> 32));
+            }
+        }
+        return crc.getValue();
+    }
+
+    private static void update(CRC32 crc, int v) {
+        crc.update(v >>> 24);
+        crc.update(v >>> 16);
+        crc.update(v >>> 8);
+        crc.update(v);
+    }
+}
