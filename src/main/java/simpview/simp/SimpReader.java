@@ -27,6 +27,11 @@ public final class SimpReader implements AutoCloseable {
     /** The tuples of a line command: up to a point and a colour per vertex. */
     private final double[] tuples = new double[6 * Command.MAX_VERTICES];
     private final int[] tupleStarts = new int[2 * Command.MAX_VERTICES];
+    /** The commands read so far, kept to be replayed (small files only), or those being replayed. */
+    private Recording recording;
+    private boolean replaying;
+    /** Commands replayed so far. */
+    private int replayed;
     /** False only in tests that check the quick path against the careful one. */
     private boolean quick = true;
     private byte[] b;
@@ -57,6 +62,26 @@ public final class SimpReader implements AutoCloseable {
         return this;
     }
 
+    /** Reads a small file's text and records its commands, to be replayed on later includes. */
+    static SimpReader recording(Path file, byte[] content) {
+        SimpReader r = of(file, content);
+        r.recording = new Recording();
+        return r;
+    }
+
+    /** Replays the commands of {@code content}, recorded from a full reading of it. */
+    static SimpReader replaying(Path file, byte[] content, Recording recording) {
+        SimpReader r = of(file, content);
+        r.recording = recording;
+        r.replaying = true;
+        return r;
+    }
+
+    /** The recording of this file, once it has been read to its end without an error; else null. */
+    Recording finishedRecording() {
+        return recording != null && recording.finished() ? recording : null;
+    }
+
     public Path file() {
         return source.path();
     }
@@ -77,16 +102,42 @@ public final class SimpReader implements AutoCloseable {
      * @return false at the end of the file
      */
     public boolean next(Command into) throws SceneException {
+        if (replaying) {
+            return replay(into);
+        }
         while (true) {
             if (!readLine()) {
+                if (recording != null) {
+                    recording.finish(source.lineNumber);
+                }
                 return false;
             }
             int i = skipBlanks(source.lineStart);
             if (i < end && b[i] != '#') {
                 parse(i, into);
+                if (recording != null) {
+                    recording.add(into, source.lineNumber, source.lineStart, end);
+                }
                 return true;
             }
         }
+    }
+
+    /** The next recorded command, standing where it stood: line number, line text and columns as when read. */
+    private boolean replay(Command into) {
+        if (replayed == recording.size()) {
+            source.lineNumber = recording.lines();
+            linesRead = recording.lines();
+            return false;
+        }
+        int k = replayed++;
+        recording.get(k, into);
+        source.lineNumber = recording.place(k, 0);
+        source.lineStart = recording.place(k, 1);
+        end = recording.place(k, 2);
+        b = source.buffer();
+        linesRead = source.lineNumber;
+        return true;
     }
 
     private boolean readLine() throws SceneException {
