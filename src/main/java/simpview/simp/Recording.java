@@ -19,13 +19,25 @@ final class Recording {
     /** Per command: line number, line start, line end, command index, argument index, first number. */
     private static final int PLACE = 6;
 
-    private byte[] kinds = new byte[64];
-    private int[] places = new int[64 * PLACE];
-    private double[] numbers = new double[256];
-    private String[] names = new String[64];
+    /** Numbers a plain polygon takes: room for these per line at first. */
+    private static final int TYPICAL_NUMBERS = 10;
+
+    private byte[] kinds;
+    private int[] places;
+    private double[] numbers;
+    private String[] names;
     private int size;
     private int numberCount;
     private int lines = -1;
+
+    /** @param lines the file's line count: no more commands than that, so the arrays rarely need to grow */
+    Recording(int lines) {
+        int capacity = Math.max(1, lines);
+        kinds = new byte[capacity];
+        places = new int[capacity * PLACE];
+        names = new String[capacity];
+        numbers = new double[capacity * TYPICAL_NUMBERS];
+    }
 
     /** Appends c, read from the line b[lineStart, lineEnd), line number {@code line}. */
     void add(Command c, int line, int lineStart, int lineEnd) {

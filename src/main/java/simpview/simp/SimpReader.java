@@ -65,8 +65,17 @@ public final class SimpReader implements AutoCloseable {
     /** Reads a small file's text and records its commands, to be replayed on later includes. */
     static SimpReader recording(Path file, byte[] content) {
         SimpReader r = of(file, content);
-        r.recording = new Recording();
+        r.recording = new Recording(lineCount(content));
         return r;
+    }
+
+    private static int lineCount(byte[] content) {
+        int lines = 1;
+        for (int i = LineSource.indexOfNewline(content, 0, content.length); i >= 0;
+                i = LineSource.indexOfNewline(content, i + 1, content.length)) {
+            lines++;
+        }
+        return lines;
     }
 
     /** Replays the commands of {@code content}, recorded from a full reading of it. */
