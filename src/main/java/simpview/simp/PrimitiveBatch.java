@@ -38,10 +38,6 @@ final class PrimitiveBatch implements PrimitiveSink {
         }
     }
 
-    int size() {
-        return size;
-    }
-
     void clear() {
         size = 0;
         linesRead = 0;
