@@ -21,7 +21,9 @@ import java.util.Set;
  * open; a deeper one is suspended (closed, its offset remembered) and reopens
  * where it was when it is on top again. Small files, which scenes include
  * over and over (a cube, a sphere), are read whole once and kept in memory
- * for the rest of the scene, up to a fixed budget.
+ * for the rest of the scene, up to a fixed budget: their bytes, and once
+ * read to the end, their commands, which later includes replay without
+ * scanning the bytes again. Where a name leads is also looked up only once.
  */
 final class FileStack implements AutoCloseable {
 
@@ -33,6 +35,8 @@ final class FileStack implements AutoCloseable {
     private final List<Path> realPaths = new ArrayList<>();
     private final Set<Path> onStack = new HashSet<>();
     private final Map<Path, byte[]> smallFiles = new HashMap<>();
+    private final Map<Name, Found> found = new HashMap<>();
+    private final Map<Path, Recording> recordings = new HashMap<>();
     private final long smallFileLimit;
     private long cachedBytes;
     private long linesOfFinishedFiles;
@@ -81,6 +85,31 @@ final class FileStack implements AutoCloseable {
     /** Acts on a {@code file} command just read from the top file. */
     void include(Command c) throws SceneException {
         SimpReader from = top();
+        Name name = new Name(from.file().getParent(), c.fileName);
+        Found found = found(name, from, c);
+        if (onStack.contains(found.real)) {
+            throw from.error(c.argumentIndex, "file cycle: " + chain(found.real));
+        }
+        SimpReader reader;
+        try {
+            reader = open(found.path, found.real);
+        } catch (SceneException e) {
+            throw from.error(c.argumentIndex, e.problem());
+        }
+        push(reader, found.real);
+    }
+
+    /**
+     * Where a name leads, looked up on the file system once per scene: finding
+     * the real path costs a system call per folder, and scenes name the same
+     * small files hundreds of times. A lookup that fails ends the scene, so
+     * only successes are kept.
+     */
+    private Found found(Name name, SimpReader from, Command c) throws SceneException {
+        Found known = found.get(name);
+        if (known != null) {
+            return known;
+        }
         Path candidate = resolve(from, c);
         Path real;
         try {
@@ -94,16 +123,17 @@ final class FileStack implements AutoCloseable {
             throw from.error(c.argumentIndex, (Files.isDirectory(real) ? "not a file but a folder: "
                     : "not a regular file: ") + candidate.toAbsolutePath().normalize());
         }
-        if (onStack.contains(real)) {
-            throw from.error(c.argumentIndex, "file cycle: " + chain(real));
-        }
-        SimpReader reader;
-        try {
-            reader = open(candidate, real);
-        } catch (SceneException e) {
-            throw from.error(c.argumentIndex, e.problem());
-        }
-        push(reader, real);
+        Found result = new Found(candidate, real);
+        found.put(name, result);
+        return result;
+    }
+
+    /** A file name as a {@code file} command in a file of folder {@code dir} gives it (dir may be null). */
+    private record Name(Path dir, String name) {
+    }
+
+    /** The path to show in messages, and the real path that identifies the file. */
+    private record Found(Path path, Path real) {
     }
 
     private static Path resolve(SimpReader from, Command c) throws SceneException {
@@ -128,7 +158,9 @@ final class FileStack implements AutoCloseable {
     private SimpReader open(Path file, Path real) throws SceneException {
         byte[] cached = smallFiles.get(real);
         if (cached != null) {
-            return SimpReader.of(file, cached);
+            Recording recording = recordings.get(real);
+            return recording != null ? SimpReader.replaying(file, cached, recording)
+                    : SimpReader.recording(file, cached);
         }
         try {
             long size = Files.size(real);
@@ -136,7 +168,7 @@ final class FileStack implements AutoCloseable {
                 byte[] content = Files.readAllBytes(real);
                 smallFiles.put(real, content);
                 cachedBytes += content.length;
-                return SimpReader.of(file, content);
+                return SimpReader.recording(file, content);
             }
         } catch (IOException e) {
             throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + e.getMessage());
@@ -158,7 +190,17 @@ final class FileStack implements AutoCloseable {
         SimpReader done = readers.remove(readers.size() - 1);
         done.close();
         linesOfFinishedFiles += done.linesRead();
-        onStack.remove(realPaths.remove(realPaths.size() - 1));
+        Path real = realPaths.remove(realPaths.size() - 1);
+        onStack.remove(real);
+        keep(real, done.finishedRecording());
+    }
+
+    /** Keeps a small file's commands, once read to the end without an error, while the budget lasts. */
+    private void keep(Path real, Recording recording) {
+        if (recording != null && !recordings.containsKey(real) && cachedBytes + recording.bytes() <= CACHE_BUDGET) {
+            recordings.put(real, recording);
+            cachedBytes += recording.bytes();
+        }
     }
 
     private SimpReader top() {

@@ -5,8 +5,9 @@ import simpview.simp.Command.Kind;
 /** The command words, matched against bytes without making a String. */
 final class Keywords {
 
+    /** Most frequent first: a scene is mostly polygons and lines. */
     private static final Kind[] KINDS = {
-        Kind.SCALE, Kind.TRANSLATE, Kind.ROTATE, Kind.LINE, Kind.POLYGON, Kind.FILE, Kind.WIRE, Kind.FILLED};
+        Kind.POLYGON, Kind.LINE, Kind.TRANSLATE, Kind.ROTATE, Kind.SCALE, Kind.FILE, Kind.WIRE, Kind.FILLED};
     private static final byte[][] WORDS = new byte[KINDS.length][];
 
     static {

@@ -1,7 +1,10 @@
 package simpview.simp;
 
 import java.io.IOException;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -19,6 +22,11 @@ import java.nio.file.StandardOpenOption;
 final class LineSource {
 
     static final int CHUNK = 64 * 1024;
+    /** Eight bytes of a byte[] read as one long, so the line break is looked for eight bytes at a time. */
+    private static final VarHandle LONGS = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.LITTLE_ENDIAN);
+    private static final long NEWLINES = 0x0A0A0A0A0A0A0A0AL;
+    private static final long ONES = 0x0101010101010101L;
+    private static final long HIGH_BITS = 0x8080808080808080L;
     /** Longer lines are refused: a line must fit in memory, and no real scene comes close. */
     static final int MAX_LINE = 1 << 20;
 
@@ -78,13 +86,11 @@ final class LineSource {
             resume();
         }
         while (true) {
-            byte[] b = buf;
-            for (int i = pos; i < limit; i++) {
-                if (b[i] == '\n') {
-                    setLine(pos, i);
-                    pos = i + 1;
-                    return true;
-                }
+            int i = indexOfNewline(buf, pos, limit);
+            if (i >= 0) {
+                setLine(pos, i);
+                pos = i + 1;
+                return true;
             }
             if (eof) {
                 if (pos < limit) {
@@ -96,6 +102,28 @@ final class LineSource {
             }
             fill();
         }
+    }
+
+    /**
+     * The index of the first '\n' in b[from, to), or -1. Per long: x has a
+     * zero byte where b has '\n'; (x - ONES) & ~x sets the high bit of the
+     * first zero byte (later bytes may get false ones, the first is exact).
+     */
+    static int indexOfNewline(byte[] b, int from, int to) {
+        int i = from;
+        for (; i + Long.BYTES <= to; i += Long.BYTES) {
+            long x = (long) LONGS.get(b, i) ^ NEWLINES;
+            long found = (x - ONES) & ~x & HIGH_BITS;
+            if (found != 0) {
+                return i + (Long.numberOfTrailingZeros(found) >>> 3);
+            }
+        }
+        for (; i < to; i++) {
+            if (b[i] == '\n') {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private void setLine(int start, int end) {

@@ -1,7 +1,6 @@
 package simpview.simp;
 
 import simpview.geometry.Matrix4;
-import simpview.geometry.Vertex;
 import simpview.geometry.ViewVolume;
 import simpview.raster.Drawable;
 import simpview.render.DdaLineRenderer;
@@ -21,16 +20,17 @@ public final class SimpClient {
     /** How polygons are drawn; global, not saved by '{' '}', kept across files. */
     public enum Style { FILLED, WIRE }
 
-    private final Drawable panel;
-    private final LineRenderer lines;
-    private final PolygonRenderer filled;
-    private final PolygonRenderer wire;
+    private final Painter painter;
+    /** Where primitives go: the painter, or a batch for the drawing thread. */
+    private PrimitiveSink sink;
     private final MatrixStack matrices = new MatrixStack();
     private final FileStack files;
     private Matrix4 ctm = Matrix4.identity();
     private Style style = Style.FILLED;
     /** World-space vertices of the primitive at hand, reused. */
     private final double[] world = new double[3 * Command.MAX_VERTICES];
+    /** The same in panel space with colours, as the painter takes them, reused. */
+    private final double[] primitive = new double[Painter.STRIDE];
     private long culled;
 
     /** Draws on a panel-coordinate drawable with the project's renderers. */
@@ -44,14 +44,16 @@ public final class SimpClient {
     }
 
     SimpClient(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire, FileStack files) {
-        this.panel = panel;
-        this.lines = lines;
-        this.filled = filled;
-        this.wire = wire;
+        this.painter = new Painter(panel, lines, filled, wire);
+        this.sink = painter;
         this.files = files;
     }
 
-    /** Carries out one command read from the top of {@link #files()}. */
+    /**
+     * Carries out one command read from the top of {@link #files()}. Lines and
+     * polygons are drawn at once, unless the interpreter has the client send
+     * them to the drawing thread.
+     */
     public void execute(Command c) throws SceneException {
         switch (c.kind) {
             case PUSH -> matrices.push(ctm);
@@ -81,7 +83,8 @@ public final class SimpClient {
             culled++;
             return;
         }
-        lines.drawLine(panelVertex(c, 0), panelVertex(c, 1), panel);
+        toPanel(c, 2);
+        sink.add(Painter.LINE, primitive);
     }
 
     private void polygon(Command c) {
@@ -90,8 +93,8 @@ public final class SimpClient {
             culled++;
             return;
         }
-        PolygonRenderer renderer = style == Style.FILLED ? filled : wire;
-        renderer.drawPolygon(panelVertex(c, 0), panelVertex(c, 1), panelVertex(c, 2), panel);
+        toPanel(c, 3);
+        sink.add(style == Style.FILLED ? Painter.FILLED : Painter.WIRE, primitive);
     }
 
     private void toWorld(Command c, int count) {
@@ -107,11 +110,27 @@ public final class SimpClient {
         }
     }
 
-    /** Vertex k in panel space, with its own colour or white. */
-    private Vertex panelVertex(Command c, int k) {
-        int i = 3 * k;
-        return new Vertex(ViewVolume.toPanel(world[i]), ViewVolume.toPanel(world[i + 1]), world[i + 2],
-                c.color(k, 0), c.color(k, 1), c.color(k, 2));
+    /** The first count world vertices in panel space, each with its own colour or white. */
+    private void toPanel(Command c, int count) {
+        for (int k = 0; k < count; k++) {
+            int i = 3 * k;
+            int o = Painter.VERTEX * k;
+            primitive[o] = ViewVolume.toPanel(world[i]);
+            primitive[o + 1] = ViewVolume.toPanel(world[i + 1]);
+            primitive[o + 2] = world[i + 2];
+            primitive[o + 3] = c.color(k, 0);
+            primitive[o + 4] = c.color(k, 1);
+            primitive[o + 5] = c.color(k, 2);
+        }
+    }
+
+    Painter painter() {
+        return painter;
+    }
+
+    /** From now on primitives go to {@code to} instead of being drawn at once. */
+    void sendTo(PrimitiveSink to) {
+        sink = to;
     }
 
     FileStack files() {

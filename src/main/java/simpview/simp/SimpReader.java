@@ -19,11 +19,21 @@ import simpview.simp.Command.Kind;
  */
 public final class SimpReader implements AutoCloseable {
 
+    /** Axis.values() copies its array on every call; this copy is made once. */
+    private static final Axis[] AXES = Axis.values();
+
     private final LineSource source;
     private final DecimalParser decimal = new DecimalParser();
     /** The tuples of a line command: up to a point and a colour per vertex. */
     private final double[] tuples = new double[6 * Command.MAX_VERTICES];
     private final int[] tupleStarts = new int[2 * Command.MAX_VERTICES];
+    /** The commands read so far, kept to be replayed (small files only), or those being replayed. */
+    private Recording recording;
+    private boolean replaying;
+    /** Commands replayed so far. */
+    private int replayed;
+    /** False only in tests that check the quick path against the careful one. */
+    private boolean quick = true;
     private byte[] b;
     private int end;
     private long linesRead;
@@ -46,6 +56,41 @@ public final class SimpReader implements AutoCloseable {
         return new SimpReader(LineSource.of(file, content));
     }
 
+    /** This reader, reading every line the careful way (for tests of the quick path). */
+    SimpReader carefulOnly() {
+        quick = false;
+        return this;
+    }
+
+    /** Reads a small file's text and records its commands, to be replayed on later includes. */
+    static SimpReader recording(Path file, byte[] content) {
+        SimpReader r = of(file, content);
+        r.recording = new Recording(lineCount(content));
+        return r;
+    }
+
+    private static int lineCount(byte[] content) {
+        int lines = 1;
+        for (int i = LineSource.indexOfNewline(content, 0, content.length); i >= 0;
+                i = LineSource.indexOfNewline(content, i + 1, content.length)) {
+            lines++;
+        }
+        return lines;
+    }
+
+    /** Replays the commands of {@code content}, recorded from a full reading of it. */
+    static SimpReader replaying(Path file, byte[] content, Recording recording) {
+        SimpReader r = of(file, content);
+        r.recording = recording;
+        r.replaying = true;
+        return r;
+    }
+
+    /** The recording of this file, once it has been read to its end without an error; else null. */
+    Recording finishedRecording() {
+        return recording != null && recording.finished() ? recording : null;
+    }
+
     public Path file() {
         return source.path();
     }
@@ -66,16 +111,42 @@ public final class SimpReader implements AutoCloseable {
      * @return false at the end of the file
      */
     public boolean next(Command into) throws SceneException {
+        if (replaying) {
+            return replay(into);
+        }
         while (true) {
             if (!readLine()) {
+                if (recording != null) {
+                    recording.finish(source.lineNumber);
+                }
                 return false;
             }
             int i = skipBlanks(source.lineStart);
             if (i < end && b[i] != '#') {
                 parse(i, into);
+                if (recording != null) {
+                    recording.add(into, source.lineNumber, source.lineStart, end);
+                }
                 return true;
             }
         }
+    }
+
+    /** The next recorded command, standing where it stood: line number, line text and columns as when read. */
+    private boolean replay(Command into) {
+        if (replayed == recording.size()) {
+            source.lineNumber = recording.lines();
+            linesRead = recording.lines();
+            return false;
+        }
+        int k = replayed++;
+        recording.get(k, into);
+        source.lineNumber = recording.place(k, 0);
+        source.lineStart = recording.place(k, 1);
+        end = recording.place(k, 2);
+        b = source.buffer();
+        linesRead = source.lineNumber;
+        return true;
     }
 
     private boolean readLine() throws SceneException {
@@ -156,8 +227,8 @@ public final class SimpReader implements AutoCloseable {
             case WIRE, FILLED -> expectEnd(wordEnd);
             case SCALE, TRANSLATE -> expectEnd(numbers(arguments(wordEnd, c), c, 3));
             case ROTATE -> expectEnd(rotation(arguments(wordEnd, c), c));
-            case LINE -> expectEnd(vertices(arguments(wordEnd, c), c, 2));
-            case POLYGON -> expectEnd(vertices(arguments(wordEnd, c), c, 3));
+            case LINE -> points(wordEnd, c, 2);
+            case POLYGON -> points(wordEnd, c, 3);
             case FILE -> expectEnd(fileName(arguments(wordEnd, c), c));
             default -> throw new IllegalStateException(kind.name());
         }
@@ -205,7 +276,7 @@ public final class SimpReader implements AutoCloseable {
         if (axisEnd - from != 1 || b[from] < 'X' || b[from] > 'Z') {
             throw error(from, "expected an axis X, Y or Z (upper case), found '" + text(from, axisEnd) + "'");
         }
-        c.axis = Axis.values()[b[from] - 'X'];
+        c.axis = AXES[b[from] - 'X'];
         int i = separator(axisEnd);
         if (i == end) {
             throw error(i, "rotate takes an axis and an angle in degrees, found no angle");
@@ -217,6 +288,74 @@ public final class SimpReader implements AutoCloseable {
             throw error(next, "rotate takes an axis and one angle, found more: '" + token(next) + "'");
         }
         return i;
+    }
+
+    /**
+     * The points of a line or polygon, nearly every line of a real file: first
+     * a quick reading that only accepts well-formed points; when it meets
+     * anything else it has decided nothing, and the careful reading below goes
+     * over the arguments again and words the error, if there is one.
+     */
+    private void points(int wordEnd, Command c, int n) throws SceneException {
+        if (!quick || !quickVertices(wordEnd, c, n)) {
+            expectEnd(vertices(arguments(wordEnd, c), c, n));
+        }
+    }
+
+    /**
+     * Accepts exactly what {@link #vertices} followed by {@link #expectEnd}
+     * accepts without an error, or a part of it; false for anything it does
+     * not accept, before any of its findings reach the command.
+     */
+    private boolean quickVertices(int wordEnd, Command c, int n) {
+        if (wordEnd == end || !isBlank(b[wordEnd])) {
+            return false;
+        }
+        int i = skipBlanks(wordEnd);
+        int argumentStart = i;
+        int count = 0;
+        while (true) {
+            if (i == end || b[i] != '(' || count == 2 * n) {
+                return false;
+            }
+            i = quickTuple(i, 3 * count++);
+            if (i < 0) {
+                return false;
+            }
+            int next = skipSeparators(i);
+            if (next == end) {
+                break;
+            }
+            i = next;
+        }
+        if (skipBlanks(i) != end || (count != n && count != 2 * n)) {
+            return false;
+        }
+        c.argumentIndex = argumentStart;
+        store(c, n, count);
+        return true;
+    }
+
+    /** "(a, b, c)" at open into tuples[at..at+3), as {@link #tuple} reads it; -1 where that would fail. */
+    private int quickTuple(int open, int at) {
+        int i = skipBlanks(open + 1);
+        for (int k = 0; k < 3; k++) {
+            if (k > 0) {
+                int j = skipSeparators(i);
+                if (j == i) {
+                    return -1;
+                }
+                i = j;
+            }
+            int after = decimal.scan(b, i, end);
+            if (after < 0 || !endsNumber(after) || !Double.isFinite(decimal.value())) {
+                return -1;
+            }
+            tuples[at + k] = decimal.value();
+            i = after;
+        }
+        i = skipBlanks(i);
+        return i < end && b[i] == ')' ? i + 1 : -1;
     }
 
     /**
@@ -248,6 +387,12 @@ public final class SimpReader implements AutoCloseable {
             throw error(tupleStarts[n], "points with and without colours: give every vertex of '"
                     + keyword(c.kind) + "' a colour (r, g, b) after its point, or none");
         }
+        store(c, n, count);
+        return i;
+    }
+
+    /** Moves the tuples read into the command: n points, each followed by its colour when there are 2n. */
+    private void store(Command c, int n, int count) {
         c.colored = count == 2 * n;
         int stride = c.colored ? 6 : 3;
         for (int k = 0; k < n; k++) {
@@ -256,7 +401,6 @@ public final class SimpReader implements AutoCloseable {
                 System.arraycopy(tuples, stride * k + 3, c.rgb, 3 * k, 3);
             }
         }
-        return i;
     }
 
     /** Reads "(a, b, c)" into tuples[at..at+3). */
@@ -319,7 +463,7 @@ public final class SimpReader implements AutoCloseable {
     /** A number ending at a blank, comma, ')' or the end of the line. */
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
-        if (after < 0 || (after < end && !isBlank(b[after]) && b[after] != ',' && b[after] != ')')) {
+        if (after < 0 || !endsNumber(after)) {
             throw error(i, "expected a number, found " + found(i));
         }
         if (!Double.isFinite(decimal.value())) {
@@ -335,6 +479,11 @@ public final class SimpReader implements AutoCloseable {
             throw error(i, "expected a blank or ',' between numbers, found '" + token(i) + "'");
         }
         return j;
+    }
+
+    /** A number ends at a blank, comma, ')' or the end of the line. */
+    private boolean endsNumber(int after) {
+        return after == end || isBlank(b[after]) || b[after] == ',' || b[after] == ')';
     }
 
     private int skipBlanks(int i) {

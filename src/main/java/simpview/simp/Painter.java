@@ -1,0 +1,53 @@
+package simpview.simp;
+
+import simpview.geometry.Vertex;
+import simpview.raster.Drawable;
+import simpview.render.LineRenderer;
+import simpview.render.PolygonRenderer;
+
+/**
+ * Draws primitives given as plain numbers in panel space with the scene's
+ * renderers. Everything it touches (renderers, panel) belongs to the thread
+ * that draws, so it is the only part of a scene that runs there.
+ */
+final class Painter implements PrimitiveSink {
+
+    static final int LINE = 0;
+    static final int FILLED = 1;
+    static final int WIRE = 2;
+    /** Numbers per vertex: panel x, panel y, world z, r, g, b. */
+    static final int VERTEX = 6;
+    /** Numbers per primitive: room for a polygon's three vertices. */
+    static final int STRIDE = 3 * VERTEX;
+
+    private final Drawable panel;
+    private final LineRenderer lines;
+    private final PolygonRenderer filled;
+    private final PolygonRenderer wire;
+
+    Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
+        this.panel = panel;
+        this.lines = lines;
+        this.filled = filled;
+        this.wire = wire;
+    }
+
+    @Override
+    public void add(int kind, double[] p) {
+        draw(kind, p, 0);
+    }
+
+    /** Draws the primitive whose numbers start at p[at]. */
+    void draw(int kind, double[] p, int at) {
+        switch (kind) {
+            case LINE -> lines.drawLine(vertex(p, at), vertex(p, at + VERTEX), panel);
+            case FILLED -> filled.drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
+            case WIRE -> wire.drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
+            default -> throw new IllegalArgumentException("primitive kind " + kind);
+        }
+    }
+
+    private static Vertex vertex(double[] p, int at) {
+        return new Vertex(p[at], p[at + 1], p[at + 2], p[at + 3], p[at + 4], p[at + 5]);
+    }
+}
