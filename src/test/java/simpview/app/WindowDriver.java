@@ -2,15 +2,20 @@ package simpview.app;
 
 import static org.junit.jupiter.api.Assertions.fail;
 
+import java.awt.Component;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
+import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
+import javax.imageio.ImageIO;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
 import simpview.raster.PageCanvas;
@@ -99,16 +104,34 @@ final class WindowDriver {
         click(window.pageView());
     }
 
+    /**
+     * Clicks the middle of {@code component}, once it is laid out and really is
+     * what lies under that point: a button just made visible can still have no
+     * size, and a click at its "middle" would land on whatever is next to it.
+     */
     void click(JComponent component) throws Exception {
-        Point p = onEdt(() -> {
-            Point corner = component.getLocationOnScreen();
-            return new Point(corner.x + component.getWidth() / 2, corner.y + component.getHeight() / 2);
-        });
+        awaitEdt(() -> component.isShowing() && component.getWidth() > 0 && component.getHeight() > 0
+                && hits(component), "the component to click to be laid out and on top");
+        Point p = onEdt(() -> middleOnScreen(component));
         robot.mouseMove(p.x, p.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseMove(1, 1);
         robot.waitForIdle();
+    }
+
+    private static Point middleOnScreen(JComponent component) {
+        Point corner = component.getLocationOnScreen();
+        return new Point(corner.x + component.getWidth() / 2, corner.y + component.getHeight() / 2);
+    }
+
+    /** Whether the middle of the component is the component itself (or a child of it) in its window. */
+    private static boolean hits(JComponent component) {
+        Window frame = SwingUtilities.getWindowAncestor(component);
+        Point p = middleOnScreen(component);
+        SwingUtilities.convertPointFromScreen(p, frame);
+        Component under = SwingUtilities.getDeepestComponentAt(frame, p.x, p.y);
+        return under != null && (under == component || SwingUtilities.isDescendingFrom(under, component));
     }
 
     /** Clicks the page once to give the window the keyboard, and waits for the step that click makes. */
@@ -141,11 +164,26 @@ final class WindowDriver {
      * Pixels by which the screen differs from {@code expected}; retries briefly,
      * since the X server may show the repaint a moment after the EDT is idle.
      */
+    /**
+     * How many pixels of the page on screen differ from {@code expected}, once
+     * the screen has had up to three seconds to settle (a busy machine may be
+     * slow to repaint). When some still differ, the last capture is kept under
+     * build/window-failures for a look.
+     */
     long screenDiffersFrom(BufferedImage expected) throws Exception {
-        long differing = Images.differingPixels(expected, capturePage());
-        for (int attempt = 0; attempt < 20 && differing != 0; attempt++) {
+        BufferedImage screen = capturePage();
+        long differing = Images.differingPixels(expected, screen);
+        for (int attempt = 0; attempt < 60 && differing != 0; attempt++) {
             Thread.sleep(50);
-            differing = Images.differingPixels(expected, capturePage());
+            screen = capturePage();
+            differing = Images.differingPixels(expected, screen);
+        }
+        if (differing != 0) {
+            Path dir = Path.of(System.getProperty("simpview.projectDir", "."), "build", "window-failures");
+            Files.createDirectories(dir);
+            Path file = dir.resolve("screen-" + System.nanoTime() + ".png");
+            ImageIO.write(screen, "png", file.toFile());
+            System.err.println("window capture that differs (" + differing + " pixels): " + file);
         }
         return differing;
     }
