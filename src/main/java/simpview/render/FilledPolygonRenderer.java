@@ -154,12 +154,13 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
      */
     private static final class Edge {
         // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
-        // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or left edge.
+        // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or
+        // left edge. sign is +-1 and IEEE rounding is symmetric under negation, so f has the same sign
+        // (and zeros) as (sign * ex) * (py - y0) - (sign * ey) * (px - x0): the sign is folded in.
         private double x0;
         private double y0;
-        private double ex;
-        private double ey;
-        private double sign;
+        private double signedEx;
+        private double signedEy;
         private boolean topLeft;
         // The crossing guess, in the edge's own direction.
         private double fromX;
@@ -179,22 +180,37 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
             Vertex second = forward ? to : from;
             x0 = first.x();
             y0 = first.y();
-            ex = second.x() - first.x();
-            ey = second.y() - first.y();
-            sign = forward ? 1 : -1;
+            double sign = forward ? 1 : -1;
+            signedEx = sign * (second.x() - first.x());
+            signedEy = sign * (second.y() - first.y());
             // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
             topLeft = dy < 0 || (dy == 0 && dx < 0);
         }
 
-        /** The part of the edge function that depends only on the row: ex * (py - y0). */
+        /** The part of the edge function that depends only on the row: sign * ex * (py - y0). */
         double rowTerm(double py) {
-            return ex * (py - y0);
+            return signedEx * (py - y0);
+        }
+
+        /** The edge function at (px, py), given rowTerm(py). */
+        private double f(double rowTerm, double px) {
+            return rowTerm - signedEy * (px - x0);
         }
 
         /** The exact coverage test at (px, py), given rowTerm(py). */
         boolean inside(double rowTerm, double px) {
-            double f = sign * (rowTerm - ey * (px - x0));
+            double f = f(rowTerm, px);
             return f > 0 || (f == 0 && topLeft);
+        }
+
+        /** inside() for an edge running downward, always a left edge: f == 0 is in. */
+        private boolean insideLeft(double rowTerm, double px) {
+            return f(rowTerm, px) >= 0;
+        }
+
+        /** inside() for an edge running upward, never top or left: f == 0 is out. */
+        private boolean insideRight(double rowTerm, double px) {
+            return f(rowTerm, px) > 0;
         }
 
         /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
@@ -213,13 +229,13 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         int firstInside(double py, int width) {
             double term = rowTerm(py);
             double i = clampIndex(Math.ceil(crossing(py) - 0.5), width);
-            if (!inside(term, i - 0.5) & inside(term, i + 0.5)) {
+            if (!insideLeft(term, i - 0.5) & insideLeft(term, i + 0.5)) {
                 return (int) i;
             }
-            while (i > 0 && inside(term, i - 0.5)) {
+            while (i > 0 && insideLeft(term, i - 0.5)) {
                 i--;
             }
-            while (i < width && !inside(term, i + 0.5)) {
+            while (i < width && !insideLeft(term, i + 0.5)) {
                 i++;
             }
             return (int) i;
@@ -229,13 +245,13 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         int endOfInside(double py, int width) {
             double term = rowTerm(py);
             double i = clampIndex(Math.floor(crossing(py) - 0.5) + 1, width);
-            if (inside(term, i - 0.5) & !inside(term, i + 0.5)) {
+            if (insideRight(term, i - 0.5) & !insideRight(term, i + 0.5)) {
                 return (int) i;
             }
-            while (i < width && inside(term, i + 0.5)) {
+            while (i < width && insideRight(term, i + 0.5)) {
                 i++;
             }
-            while (i > 0 && !inside(term, i - 0.5)) {
+            while (i > 0 && !insideRight(term, i - 0.5)) {
                 i--;
             }
             return (int) i;
