@@ -9,6 +9,9 @@ package simpview.raster;
  * pixel, {@link #fillSpan} for a run of pixels on one row whose depth and
  * colour vary linearly. A decorator overrides both so that the fast path and
  * the pixel path draw the same picture.
+ *
+ * <p>A drawable's size never changes: a decorator may read its delegate's
+ * width and height once, when it is made.
  */
 public interface Drawable {
 

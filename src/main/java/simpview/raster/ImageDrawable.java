@@ -9,6 +9,9 @@ import java.awt.image.DataBufferInt;
  */
 public final class ImageDrawable implements Drawable {
 
+    /** Spans shorter than this skip the clamp-free path: 6 conversions to check it, 3 per pixel to clamp. */
+    private static final int SHORT_SPAN = 3;
+
     private final BufferedImage image;
     private final int[] pixels;
     private final int width;
@@ -60,6 +63,8 @@ public final class ImageDrawable implements Drawable {
      * that evaluation (k * dc, + c, + 0.5, the cast to int) is monotone in k,
      * so a channel whose two end pixels need no clamp needs none in between:
      * then the loop packs without clamping, and a span of one colour is a fill.
+     * Spans of a few pixels are packed directly: checking their ends would
+     * cost more than the clamps it saves.
      */
     @Override
     public void fillSpan(Span s) {
@@ -72,12 +77,15 @@ public final class ImageDrawable implements Drawable {
             return;
         }
         int row = s.y * width;
+        int k0 = from - s.xBase;
+        int k1 = to - 1 - s.xBase;
         if (s.dr == 0 && s.dg == 0 && s.db == 0) {
             java.util.Arrays.fill(pixels, row + from, row + to, s.argbAt(from));
-        } else if (inByteRange(s.r, s.dr, from - s.xBase, to - 1 - s.xBase)
-                && inByteRange(s.g, s.dg, from - s.xBase, to - 1 - s.xBase)
-                && inByteRange(s.b, s.db, from - s.xBase, to - 1 - s.xBase)) {
-            packUnclamped(s, row, from, to);
+        } else if (to - from >= SHORT_SPAN && inByteRange(s.r, s.dr, k0, k1)
+                && inByteRange(s.g, s.dg, k0, k1) && inByteRange(s.b, s.db, k0, k1)) {
+            if (!packOneShade(s, row, from, to)) {
+                packUnclamped(s, row, from, to);
+            }
         } else {
             packClamped(s, row, from, to);
         }
@@ -104,6 +112,47 @@ public final class ImageDrawable implements Drawable {
             p[i] = 0xFF000000 | (int) (r + k * dr + 0.5) << 16 | (int) (g + k * dg + 0.5) << 8
                     | (int) (b + k * db + 0.5);
         }
+    }
+
+    /**
+     * Packs a span whose varying channels all share one value and slope, as
+     * depth cueing towards white or a primary colour makes them: one
+     * conversion per pixel, the level copied into each varying channel. A
+     * channel of slope 0 keeps one level (c + k * 0 is c). Returns false,
+     * packing nothing, for any other span. Channels are known to need no clamp.
+     */
+    private boolean packOneShade(Span s, int row, int from, int to) {
+        double c = s.dr != 0 ? s.r : s.dg != 0 ? s.g : s.b;
+        double dc = s.dr != 0 ? s.dr : s.dg != 0 ? s.dg : s.db;
+        int fixed = 0xFF000000;
+        int copies = 0; // the level times copies sets the level in every varying channel
+        if (s.dr == 0) {
+            fixed |= Colors.level(s.r) << 16;
+        } else if (s.r == c && s.dr == dc) {
+            copies |= 1 << 16;
+        } else {
+            return false;
+        }
+        if (s.dg == 0) {
+            fixed |= Colors.level(s.g) << 8;
+        } else if (s.g == c && s.dg == dc) {
+            copies |= 1 << 8;
+        } else {
+            return false;
+        }
+        if (s.db == 0) {
+            fixed |= Colors.level(s.b);
+        } else if (s.b == c && s.db == dc) {
+            copies |= 1;
+        } else {
+            return false;
+        }
+        int[] p = pixels;
+        int k = from - s.xBase;
+        for (int i = row + from; i < row + to; i++, k++) {
+            p[i] = fixed | (int) (c + k * dc + 0.5) * copies;
+        }
+        return true;
     }
 
     private void packClamped(Span s, int row, int from, int to) {

@@ -8,8 +8,25 @@ import simpview.geometry.ViewVolume;
  */
 public final class ScissorDrawable extends DrawableDecorator {
 
+    // The bounds, read once: width() and height() would otherwise be a call
+    // down the whole chain for every span.
+    private final int width;
+    private final int height;
+
     public ScissorDrawable(Drawable delegate) {
         super(delegate);
+        width = delegate.width();
+        height = delegate.height();
+    }
+
+    @Override
+    public int width() {
+        return width;
+    }
+
+    @Override
+    public int height() {
+        return height;
     }
 
     private static boolean inDepth(double z) {
@@ -18,7 +35,7 @@ public final class ScissorDrawable extends DrawableDecorator {
 
     @Override
     public void setPixel(int x, int y, double z, int argb) {
-        if (x >= 0 && x < width() && y >= 0 && y < height() && inDepth(z)) {
+        if (x >= 0 && x < width && y >= 0 && y < height && inDepth(z)) {
             delegate.setPixel(x, y, z, argb);
         }
     }
@@ -29,13 +46,13 @@ public final class ScissorDrawable extends DrawableDecorator {
      */
     @Override
     public void fillSpan(Span s) {
-        if (s.y < 0 || s.y >= height()) {
+        if (s.y < 0 || s.y >= height) {
             return;
         }
         int x0 = s.x0;
         int x1 = s.x1;
         int from = Math.max(x0, 0);
-        int to = Math.min(x1, width());
+        int to = Math.min(x1, width);
         while (from < to && !inDepth(s.zAt(from))) {
             from++;
         }

@@ -24,6 +24,16 @@ public final class ZBufferDrawable extends DrawableDecorator {
         this.height = zbuffer.height();
     }
 
+    @Override
+    public int width() {
+        return width;
+    }
+
+    @Override
+    public int height() {
+        return height;
+    }
+
     public ZBuffer zbuffer() {
         return zbuffer;
     }

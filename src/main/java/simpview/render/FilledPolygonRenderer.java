@@ -27,39 +27,21 @@ import simpview.raster.Span;
  */
 public final class FilledPolygonRenderer implements PolygonRenderer {
 
-    private static final int RED = 0;
-    private static final int GREEN = 1;
-    private static final int BLUE = 2;
-    private static final int DEPTH = 3;
-    private static final int ATTRIBUTES = 4;
-
     private final Span span = new Span();
+    private final Edge[] edges = {new Edge(), new Edge(), new Edge()};
+    // Edges by role: inside to the right (dy < 0), to the left (dy > 0),
+    // horizontal (at most one); null where the triangle has none.
+    private Edge left0;
+    private Edge left1;
+    private Edge right0;
+    private Edge right1;
+    private Edge flat;
 
-    // Edge e runs from vertex e to vertex (e + 1) % 3 of the counter-clockwise triangle.
-    private final double[] edgePx = new double[3];
-    private final double[] edgePy = new double[3];
-    private final double[] edgeDx = new double[3];
-    private final double[] edgeDy = new double[3];
-    private final double[] edgeXPerY = new double[3];
-    // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
-    // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or left edge.
-    private final double[] edgeSign = new double[3];
-    private final boolean[] edgeTopLeft = new boolean[3];
-    private final double[] crossX0 = new double[3];
-    private final double[] crossY0 = new double[3];
-    private final double[] crossEx = new double[3];
-    private final double[] crossEy = new double[3];
-    // Edges by role: inside to the right (dy < 0), to the left (dy > 0), horizontal (at most one).
-    private final int[] leftEdges = new int[2];
-    private final int[] rightEdges = new int[2];
-    private int leftCount;
-    private int rightCount;
-    private int flatEdge;
-
-    // Attribute planes: value(px, py) = base + slopeX * (px - originX) + slopeY * (py - originY).
-    private final double[] base = new double[ATTRIBUTES];
-    private final double[] slopeX = new double[ATTRIBUTES];
-    private final double[] slopeY = new double[ATTRIBUTES];
+    private final Plane red = new Plane();
+    private final Plane green = new Plane();
+    private final Plane blue = new Plane();
+    private final Plane depth = new Plane();
+    // Every plane is given relative to vertex a: (originX, originY).
     private double originX;
     private double originY;
 
@@ -76,12 +58,10 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         Vertex b = area > 0 ? p2 : p3;
         Vertex c = area > 0 ? p3 : p2;
         area = Math.abs(area);
-        leftCount = 0;
-        rightCount = 0;
-        flatEdge = -1;
-        setUpEdge(0, a, b);
-        setUpEdge(1, b, c);
-        setUpEdge(2, c, a);
+        left0 = left1 = right0 = right1 = flat = null;
+        setUpEdge(edges[0], a, b);
+        setUpEdge(edges[1], b, c);
+        setUpEdge(edges[2], c, a);
         setUpPlanes(a, b, c, area);
 
         int width = drawable.width();
@@ -98,97 +78,41 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     /** The covered run of a row is the intersection of one half-row per edge. */
     private void drawRow(int row, int width, Drawable drawable) {
         double py = row + 0.5;
-        if (flatEdge >= 0 && !inside(flatEdge, rowTerm(flatEdge, py), 0.5)) {
+        if (flat != null && !flat.inside(flat.rowTerm(py), 0.5)) {
             return; // a horizontal edge excludes or admits the whole row
         }
-        int from = 0;
-        for (int k = 0; k < leftCount; k++) {
-            from = Math.max(from, firstInside(leftEdges[k], py, width));
+        int from = left0.firstInside(py, width);
+        if (left1 != null) {
+            from = Math.max(from, left1.firstInside(py, width));
         }
         int to = width;
-        for (int k = 0; k < rightCount && from < to; k++) {
-            to = Math.min(to, endOfInside(rightEdges[k], py, width));
+        if (from < to) {
+            to = right0.endOfInside(py, width);
+        }
+        if (right1 != null && from < to) {
+            to = Math.min(to, right1.endOfInside(py, width));
         }
         if (from < to) {
             emitSpan(row, from, to, drawable);
         }
     }
 
-    /**
-     * For an edge whose inside is to the right: the first pixel on the row
-     * inside it, or width. Along a row the test is monotone in x, so the
-     * crossing only gives a first guess; the exact test moves it to the
-     * boundary. Pixel indices are kept as (exact) doubles.
-     */
-    private int firstInside(int e, double py, int width) {
-        double term = rowTerm(e, py);
-        double i = clampIndex(Math.ceil(crossing(e, py) - 0.5), width);
-        while (i > 0 && inside(e, term, i - 0.5)) {
-            i--;
-        }
-        while (i < width && !inside(e, term, i + 0.5)) {
-            i++;
-        }
-        return (int) i;
-    }
-
-    /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
-    private int endOfInside(int e, double py, int width) {
-        double term = rowTerm(e, py);
-        double i = clampIndex(Math.floor(crossing(e, py) - 0.5) + 1, width);
-        while (i < width && inside(e, term, i + 0.5)) {
-            i++;
-        }
-        while (i > 0 && !inside(e, term, i - 0.5)) {
-            i--;
-        }
-        return (int) i;
-    }
-
-    /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
-    private double crossing(int e, double py) {
-        return edgePx[e] + (py - edgePy[e]) * edgeXPerY[e];
-    }
-
-    /** A guess clamped to [0, width]; NaN becomes 0. */
-    private static double clampIndex(double estimate, int width) {
-        return estimate >= 0 ? Math.min(estimate, width) : 0;
-    }
-
-    /** The part of the edge function that depends only on the row: ex * (py - y0). */
-    private double rowTerm(int e, double py) {
-        return crossEx[e] * (py - crossY0[e]);
-    }
-
-    /** The exact coverage test of one edge at (px, py), given rowTerm(e, py). */
-    private boolean inside(int e, double rowTerm, double px) {
-        double f = edgeSign[e] * (rowTerm - crossEy[e] * (px - crossX0[e]));
-        return f > 0 || (f == 0 && edgeTopLeft[e]);
-    }
-
-    private void setUpEdge(int e, Vertex from, Vertex to) {
-        edgePx[e] = from.x();
-        edgePy[e] = from.y();
-        edgeDx[e] = to.x() - from.x();
-        edgeDy[e] = to.y() - from.y();
-        edgeXPerY[e] = edgeDx[e] / edgeDy[e];
-        // Canonical order: the lexicographically smaller endpoint first.
-        boolean forward = from.x() < to.x() || (from.x() == to.x() && from.y() < to.y());
-        Vertex first = forward ? from : to;
-        Vertex second = forward ? to : from;
-        crossX0[e] = first.x();
-        crossY0[e] = first.y();
-        crossEx[e] = second.x() - first.x();
-        crossEy[e] = second.y() - first.y();
-        edgeSign[e] = forward ? 1 : -1;
-        // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
-        edgeTopLeft[e] = edgeDy[e] < 0 || (edgeDy[e] == 0 && edgeDx[e] < 0);
-        if (edgeDy[e] < 0) {
-            leftEdges[leftCount++] = e;
-        } else if (edgeDy[e] > 0) {
-            rightEdges[rightCount++] = e;
+    private void setUpEdge(Edge e, Vertex from, Vertex to) {
+        e.set(from, to);
+        if (e.dy < 0) {
+            if (left0 == null) {
+                left0 = e;
+            } else {
+                left1 = e;
+            }
+        } else if (e.dy > 0) {
+            if (right0 == null) {
+                right0 = e;
+            } else {
+                right1 = e;
+            }
         } else {
-            flatEdge = e;
+            flat = e;
         }
     }
 
@@ -199,41 +123,162 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         double e1y = b.y() - a.y();
         double e2x = c.x() - a.x();
         double e2y = c.y() - a.y();
-        plane(RED, 255 * a.r(), 255 * b.r(), 255 * c.r(), e1x, e1y, e2x, e2y, area);
-        plane(GREEN, 255 * a.g(), 255 * b.g(), 255 * c.g(), e1x, e1y, e2x, e2y, area);
-        plane(BLUE, 255 * a.b(), 255 * b.b(), 255 * c.b(), e1x, e1y, e2x, e2y, area);
-        plane(DEPTH, a.z(), b.z(), c.z(), e1x, e1y, e2x, e2y, area);
-    }
-
-    private void plane(int attr, double va, double vb, double vc,
-                       double e1x, double e1y, double e2x, double e2y, double area) {
-        double d1 = vb - va;
-        double d2 = vc - va;
-        base[attr] = va;
-        slopeX[attr] = (d1 * e2y - d2 * e1y) / area;
-        slopeY[attr] = (d2 * e1x - d1 * e2x) / area;
-    }
-
-    private double valueAt(int attr, double px, double py) {
-        return base[attr] + slopeX[attr] * (px - originX) + slopeY[attr] * (py - originY);
+        red.set(255 * a.r(), 255 * b.r(), 255 * c.r(), e1x, e1y, e2x, e2y, area);
+        green.set(255 * a.g(), 255 * b.g(), 255 * c.g(), e1x, e1y, e2x, e2y, area);
+        blue.set(255 * a.b(), 255 * b.b(), 255 * c.b(), e1x, e1y, e2x, e2y, area);
+        depth.set(a.z(), b.z(), c.z(), e1x, e1y, e2x, e2y, area);
     }
 
     private void emitSpan(int row, int from, int to, Drawable drawable) {
         Span s = span;
-        double px = from + 0.5;
-        double py = row + 0.5;
+        double dx = from + 0.5 - originX;
+        double dy = row + 0.5 - originY;
         s.y = row;
         s.x0 = from;
         s.x1 = to;
         s.xBase = from;
-        s.r = valueAt(RED, px, py);
-        s.dr = slopeX[RED];
-        s.g = valueAt(GREEN, px, py);
-        s.dg = slopeX[GREEN];
-        s.b = valueAt(BLUE, px, py);
-        s.db = slopeX[BLUE];
-        s.z = valueAt(DEPTH, px, py);
-        s.dz = slopeX[DEPTH];
+        s.r = red.valueAt(dx, dy);
+        s.dr = red.slopeX;
+        s.g = green.valueAt(dx, dy);
+        s.dg = green.slopeX;
+        s.b = blue.valueAt(dx, dy);
+        s.db = blue.slopeX;
+        s.z = depth.valueAt(dx, dy);
+        s.dz = depth.slopeX;
         drawable.fillSpan(s);
+    }
+
+    /**
+     * One edge of the counter-clockwise triangle, from vertex {@code from} to
+     * {@code to}: its exact coverage test and a guess of where it crosses a row.
+     */
+    private static final class Edge {
+        // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
+        // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or
+        // left edge. sign is +-1 and IEEE rounding is symmetric under negation, so f has the same sign
+        // (and zeros) as (sign * ex) * (py - y0) - (sign * ey) * (px - x0): the sign is folded in.
+        private double x0;
+        private double y0;
+        private double signedEx;
+        private double signedEy;
+        private boolean topLeft;
+        // The crossing guess, in the edge's own direction.
+        private double fromX;
+        private double fromY;
+        private double xPerY;
+        double dy;
+
+        void set(Vertex from, Vertex to) {
+            double dx = to.x() - from.x();
+            dy = to.y() - from.y();
+            fromX = from.x();
+            fromY = from.y();
+            xPerY = dx / dy;
+            // Canonical order: the lexicographically smaller endpoint first.
+            boolean forward = from.x() < to.x() || (from.x() == to.x() && from.y() < to.y());
+            Vertex first = forward ? from : to;
+            Vertex second = forward ? to : from;
+            x0 = first.x();
+            y0 = first.y();
+            double sign = forward ? 1 : -1;
+            signedEx = sign * (second.x() - first.x());
+            signedEy = sign * (second.y() - first.y());
+            // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
+            topLeft = dy < 0 || (dy == 0 && dx < 0);
+        }
+
+        /** The part of the edge function that depends only on the row: sign * ex * (py - y0). */
+        double rowTerm(double py) {
+            return signedEx * (py - y0);
+        }
+
+        /** The edge function at (px, py), given rowTerm(py). */
+        private double f(double rowTerm, double px) {
+            return rowTerm - signedEy * (px - x0);
+        }
+
+        /** The exact coverage test at (px, py), given rowTerm(py). */
+        boolean inside(double rowTerm, double px) {
+            double f = f(rowTerm, px);
+            return f > 0 || (f == 0 && topLeft);
+        }
+
+        /** inside() for an edge running downward, always a left edge: f == 0 is in. */
+        private boolean insideLeft(double rowTerm, double px) {
+            return f(rowTerm, px) >= 0;
+        }
+
+        /** inside() for an edge running upward, never top or left: f == 0 is out. */
+        private boolean insideRight(double rowTerm, double px) {
+            return f(rowTerm, px) > 0;
+        }
+
+        /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
+        private double crossing(double py) {
+            return fromX + (py - fromY) * xPerY;
+        }
+
+        /**
+         * For an edge whose inside is to the right: the first pixel on the row
+         * inside it, or width. Along a row the test is monotone in x, so the
+         * crossing only gives a first guess; the exact test moves it to the
+         * boundary. Pixel indices are kept as (exact) doubles. The common
+         * case, the guess already on the boundary, is told by two independent
+         * tests and one branch; the loops then would not move.
+         */
+        int firstInside(double py, int width) {
+            double term = rowTerm(py);
+            double i = clampIndex(Math.ceil(crossing(py) - 0.5), width);
+            if (!insideLeft(term, i - 0.5) & insideLeft(term, i + 0.5)) {
+                return (int) i;
+            }
+            while (i > 0 && insideLeft(term, i - 0.5)) {
+                i--;
+            }
+            while (i < width && !insideLeft(term, i + 0.5)) {
+                i++;
+            }
+            return (int) i;
+        }
+
+        /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
+        int endOfInside(double py, int width) {
+            double term = rowTerm(py);
+            double i = clampIndex(Math.floor(crossing(py) - 0.5) + 1, width);
+            if (insideRight(term, i - 0.5) & !insideRight(term, i + 0.5)) {
+                return (int) i;
+            }
+            while (i < width && insideRight(term, i + 0.5)) {
+                i++;
+            }
+            while (i > 0 && !insideRight(term, i - 0.5)) {
+                i--;
+            }
+            return (int) i;
+        }
+
+        /** A guess clamped to [0, width]; NaN becomes 0. */
+        private static double clampIndex(double estimate, int width) {
+            return estimate >= 0 ? Math.min(estimate, width) : 0;
+        }
+    }
+
+    /** One attribute over the triangle: value = base + slopeX * dx + slopeY * dy, d relative to vertex a. */
+    private static final class Plane {
+        private double base;
+        double slopeX;
+        private double slopeY;
+
+        void set(double va, double vb, double vc, double e1x, double e1y, double e2x, double e2y, double area) {
+            double d1 = vb - va;
+            double d2 = vc - va;
+            base = va;
+            slopeX = (d1 * e2y - d2 * e1y) / area;
+            slopeY = (d2 * e1x - d1 * e2x) / area;
+        }
+
+        double valueAt(double dx, double dy) {
+            return base + slopeX * dx + slopeY * dy;
+        }
     }
 }
