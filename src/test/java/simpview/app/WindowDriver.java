@@ -6,6 +6,7 @@ import java.awt.Component;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
+import java.awt.Toolkit;
 import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -15,6 +16,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
+import java.util.function.Predicate;
 import javax.imageio.ImageIO;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
@@ -41,7 +43,45 @@ final class WindowDriver {
         robot.setAutoDelay(20);
         WindowDriver driver = new WindowDriver(opened.get(), robot);
         driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
+        driver.pinWindow();
         return driver;
+    }
+
+    /**
+     * Puts the frame at a place of our choosing and checks on the screen that
+     * it is really there. Under Xvfb there is no window manager, and the AWT
+     * toolkit sometimes keeps a stale location for a newly shown frame (it
+     * says (0, 0) while the X server shows it centred): every click and
+     * capture would then miss. An explicit move makes the two agree.
+     */
+    private void pinWindow() throws Exception {
+        for (int attempt = 0; attempt < 10; attempt++) {
+            int x = PIN_X + attempt;
+            onEdt(() -> window.frame().setLocation(x, PIN_Y));
+            robot.waitForIdle();
+            if (pageIsWhereTheToolkitSaysItIs()) {
+                return;
+            }
+            Thread.sleep(100);
+        }
+        keepEvidence("misplaced", capturePage());
+        fail("the window is not where the AWT toolkit says it is, even after moving it");
+    }
+
+    private static final int PIN_X = 40;
+    private static final int PIN_Y = 40;
+
+    /** The capture at the page view's reported place shows the page's white top and left margins. */
+    private boolean pageIsWhereTheToolkitSaysItIs() throws Exception {
+        BufferedImage screen = capturePage();
+        for (int i = 0; i < PageCanvas.SIZE; i++) {
+            for (int m = 0; m < PageCanvas.MARGIN; m++) {
+                if ((screen.getRGB(i, m) & 0xFFFFFF) != 0xFFFFFF || (screen.getRGB(m, i) & 0xFFFFFF) != 0xFFFFFF) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     SimpviewWindow window() {
@@ -165,6 +205,19 @@ final class WindowDriver {
      * since the X server may show the repaint a moment after the EDT is idle.
      */
     /**
+     * The page as captured once {@code settled} holds for it, or the last
+     * capture after three seconds (a busy machine may be slow to repaint).
+     */
+    BufferedImage captureWhen(Predicate<BufferedImage> settled) throws Exception {
+        BufferedImage screen = capturePage();
+        for (int attempt = 0; attempt < 60 && !settled.test(screen); attempt++) {
+            Thread.sleep(50);
+            screen = capturePage();
+        }
+        return screen;
+    }
+
+    /**
      * How many pixels of the page on screen differ from {@code expected}, once
      * the screen has had up to three seconds to settle (a busy machine may be
      * slow to repaint). When some still differ, the last capture is kept under
@@ -179,13 +232,35 @@ final class WindowDriver {
             differing = Images.differingPixels(expected, screen);
         }
         if (differing != 0) {
-            Path dir = Path.of(System.getProperty("simpview.projectDir", "."), "build", "window-failures");
-            Files.createDirectories(dir);
-            Path file = dir.resolve("screen-" + System.nanoTime() + ".png");
-            ImageIO.write(screen, "png", file.toFile());
-            System.err.println("window capture that differs (" + differing + " pixels): " + file);
+            keepEvidence("differs-" + differing, screen);
         }
         return differing;
+    }
+
+    /**
+     * Keeps what the screen showed when a window test saw something
+     * unexpected, under build/window-failures: the page capture, the whole
+     * screen, and every showing window with its place, for a later look.
+     */
+    void keepEvidence(String what, BufferedImage pageCapture) throws Exception {
+        Path dir = Path.of(System.getProperty("simpview.projectDir", "."), "build", "window-failures");
+        Files.createDirectories(dir);
+        String stem = what + "-" + System.nanoTime();
+        ImageIO.write(pageCapture, "png", dir.resolve(stem + "-page.png").toFile());
+        Rectangle screen = new Rectangle(Toolkit.getDefaultToolkit().getScreenSize());
+        ImageIO.write(robot.createScreenCapture(screen), "png", dir.resolve(stem + "-screen.png").toFile());
+        StringBuilder windows = new StringBuilder();
+        onEdt(() -> {
+            for (Window w : Window.getWindows()) {
+                windows.append(w.getClass().getSimpleName()).append(' ').append(w.getName())
+                        .append(" showing=").append(w.isShowing()).append(' ').append(w.getBounds())
+                        .append(w == SwingUtilities.getWindowAncestor(window.pageView()) ? " (this test's)" : "")
+                        .append('\n');
+            }
+            windows.append("page view on screen at ").append(window.pageView().getLocationOnScreen()).append('\n');
+        });
+        Files.writeString(dir.resolve(stem + "-windows.txt"), windows);
+        System.err.println("window test evidence kept: " + dir.resolve(stem + "-*"));
     }
 
     void close() throws Exception {
