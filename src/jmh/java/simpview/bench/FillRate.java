@@ -5,15 +5,10 @@ import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
-import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
-import org.openjdk.jmh.annotations.Scope;
-import org.openjdk.jmh.annotations.Setup;
-import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
 import simpview.raster.Drawable;
@@ -28,36 +23,21 @@ import simpview.render.FilledPolygonRenderer;
  * score in ops/us is Mpixels/s. The z-buffer is reset before each invocation,
  * outside the timing, so every pixel passes the depth test and is written.
  */
-@State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.MICROSECONDS)
 @Warmup(iterations = 3, time = 1)
 @Measurement(iterations = 5, time = 1)
 @Fork(1)
-public class FillRate {
+public class FillRate extends AgainstJava2D {
 
-    private PageCanvas canvas;
     private Drawable target;
     private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
     private Geometry.Triangles triangles;
-    private Java2DPage java2d;
 
-    @Setup(Level.Trial)
-    public void setUp() {
-        canvas = new PageCanvas();
+    @Override
+    protected void prepare() {
         target = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
         triangles = Geometry.fullPanel();
-        java2d = new Java2DPage();
-    }
-
-    @Setup(Level.Invocation)
-    public void resetDepth() {
-        canvas.zbuffer().reset();
-    }
-
-    @TearDown(Level.Trial)
-    public void tearDown() {
-        java2d.dispose();
     }
 
     @Benchmark

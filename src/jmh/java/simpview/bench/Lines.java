@@ -5,15 +5,10 @@ import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
-import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
-import org.openjdk.jmh.annotations.Scope;
-import org.openjdk.jmh.annotations.Setup;
-import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
 import simpview.raster.Drawable;
@@ -29,38 +24,23 @@ import simpview.render.DdaLineRenderer;
  * timing). Java2D: drawLine between the same end pixels, flat colour per
  * line. One op is one line: the score is lines/s.
  */
-@State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
 @Warmup(iterations = 3, time = 1)
 @Measurement(iterations = 5, time = 1)
 @Fork(1)
-public class Lines {
+public class Lines extends AgainstJava2D {
 
-    private PageCanvas canvas;
     private Drawable panel;
     private Drawable depthCued;
     private final DdaLineRenderer renderer = new DdaLineRenderer();
     private Geometry.Lines lines;
-    private Java2DPage java2d;
 
-    @Setup(Level.Trial)
-    public void setUp() {
-        canvas = new PageCanvas();
+    @Override
+    protected void prepare() {
         panel = canvas.panel();
         depthCued = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
         lines = Geometry.randomLines();
-        java2d = new Java2DPage();
-    }
-
-    @Setup(Level.Invocation)
-    public void resetDepth() {
-        canvas.zbuffer().reset();
-    }
-
-    @TearDown(Level.Trial)
-    public void tearDown() {
-        java2d.dispose();
     }
 
     @Benchmark

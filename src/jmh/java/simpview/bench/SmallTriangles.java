@@ -5,15 +5,10 @@ import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
-import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
-import org.openjdk.jmh.annotations.Scope;
-import org.openjdk.jmh.annotations.Setup;
-import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
 import simpview.raster.Drawable;
@@ -28,36 +23,21 @@ import simpview.render.FilledPolygonRenderer;
  * colour each. One op is one triangle: the score is triangles/s. The
  * z-buffer is reset before each invocation, outside the timing.
  */
-@State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
 @Warmup(iterations = 3, time = 1)
 @Measurement(iterations = 5, time = 1)
 @Fork(1)
-public class SmallTriangles {
+public class SmallTriangles extends AgainstJava2D {
 
-    private PageCanvas canvas;
     private Drawable target;
     private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
     private Geometry.Triangles mesh;
-    private Java2DPage java2d;
 
-    @Setup(Level.Trial)
-    public void setUp() {
-        canvas = new PageCanvas();
+    @Override
+    protected void prepare() {
         target = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
         mesh = Geometry.mesh();
-        java2d = new Java2DPage();
-    }
-
-    @Setup(Level.Invocation)
-    public void resetDepth() {
-        canvas.zbuffer().reset();
-    }
-
-    @TearDown(Level.Trial)
-    public void tearDown() {
-        java2d.dispose();
     }
 
     @Benchmark
