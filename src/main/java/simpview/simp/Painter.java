@@ -41,8 +41,8 @@ final class Painter implements PrimitiveSink {
     void draw(int kind, double[] p, int at) {
         switch (kind) {
             case LINE -> lines.drawLine(vertex(p, at), vertex(p, at + VERTEX), panel);
-            case FILLED -> filled.drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
-            case WIRE -> wire.drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
+            case FILLED, WIRE -> (kind == FILLED ? filled : wire)
+                    .drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
             default -> throw new IllegalArgumentException("primitive kind " + kind);
         }
     }

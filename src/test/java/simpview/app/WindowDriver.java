@@ -26,6 +26,9 @@ import simpview.raster.PageCanvas;
 final class WindowDriver {
 
     static final long WAIT_MS = 10_000;
+    /** Where pinWindow puts the frame: well inside Xvfb's 1280x1024 screen. */
+    private static final int PIN_X = 40;
+    private static final int PIN_Y = 40;
 
     private final SimpviewWindow window;
     private final Robot robot;
@@ -67,9 +70,6 @@ final class WindowDriver {
         keepEvidence("misplaced", capturePage());
         fail("the window is not where the AWT toolkit says it is, even after moving it");
     }
-
-    private static final int PIN_X = 40;
-    private static final int PIN_Y = 40;
 
     /** The capture at the page view's reported place shows the page's white top and left margins. */
     private boolean pageIsWhereTheToolkitSaysItIs() throws Exception {
@@ -224,13 +224,8 @@ final class WindowDriver {
      * build/window-failures for a look.
      */
     long screenDiffersFrom(BufferedImage expected) throws Exception {
-        BufferedImage screen = capturePage();
+        BufferedImage screen = captureWhen(capture -> Images.differingPixels(expected, capture) == 0);
         long differing = Images.differingPixels(expected, screen);
-        for (int attempt = 0; attempt < 60 && differing != 0; attempt++) {
-            Thread.sleep(50);
-            screen = capturePage();
-            differing = Images.differingPixels(expected, screen);
-        }
         if (differing != 0) {
             keepEvidence("differs-" + differing, screen);
         }
