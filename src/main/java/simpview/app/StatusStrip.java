@@ -37,7 +37,6 @@ final class StatusStrip {
     StatusStrip(Runnable onCancel) {
         panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 34));
         panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
-        bar.setIndeterminate(true);
         bar.setStringPainted(true);
         // Keys belong to the page: a focused button would swallow Space.
         cancel.setFocusable(false);
@@ -65,12 +64,20 @@ final class StatusStrip {
     void say(String message) {
         watched = null;
         ticker.stop();
+        // An indeterminate bar animates for as long as its window is open,
+        // shown or not: only while a job is showing may it move.
+        bar.setIndeterminate(false);
         text.setText(message);
         cards.show(panel, TEXT);
     }
 
     boolean showingProgress() {
         return bar.isShowing();
+    }
+
+    /** Whether the progress bar is animating (it should only while a job shows). */
+    boolean animating() {
+        return bar.isIndeterminate();
     }
 
     JButton cancelButton() {
@@ -83,6 +90,7 @@ final class StatusStrip {
         }
         working.setText("Drawing " + describe(watched.view()) + "…");
         bar.setString(String.format("%,d lines read", watched.linesSoFar()));
+        bar.setIndeterminate(true);
         cards.show(panel, PROGRESS);
     }
 

@@ -1,6 +1,7 @@
 package simpview.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.abort;
@@ -92,6 +93,8 @@ class LargeSceneWindowTest {
         driver.click(window.status().cancelButton());
         driver.awaitEdt(() -> !window.busy(), "the cancel to take");
         assertTrue(stall < MAX_STALL_MS, "the EDT stalled for " + stall + " ms, " + when);
+        // A bar left animating would wake the EDT every few milliseconds for as long as the window is open.
+        assertFalse(driver.onEdt(() -> window.status().animating()), "the progress bar still animating after cancel");
 
         RenderedView shown = driver.onEdt(window::shown);
         assertEquals(new View.OfPage(1), shown.view(), "cancel leaves the page that was showing");

@@ -201,10 +201,6 @@ final class WindowDriver {
     }
 
     /**
-     * Pixels by which the screen differs from {@code expected}; retries briefly,
-     * since the X server may show the repaint a moment after the EDT is idle.
-     */
-    /**
      * The page as captured once {@code settled} holds for it, or the last
      * capture after three seconds (a busy machine may be slow to repaint).
      */
