@@ -8,6 +8,13 @@ package simpview.geometry;
  */
 public record Vertex(double x, double y, double z, double r, double g, double b) {
 
+    /**
+     * Numbers per vertex where vertices are kept in a double[] (x, y, z, r,
+     * g, b, in that order): how the renderers take primitives without an
+     * object per vertex.
+     */
+    public static final int NUMBERS = 6;
+
     public static Vertex of(double x, double y, double z) {
         return new Vertex(x, y, z, 1, 1, 1);
     }
@@ -18,6 +25,21 @@ public record Vertex(double x, double y, double z, double r, double g, double b)
 
     public Vertex withColor(double nr, double ng, double nb) {
         return new Vertex(x, y, z, nr, ng, nb);
+    }
+
+    /** The vertex whose {@link #NUMBERS} numbers start at p[at]. */
+    public static Vertex readFrom(double[] p, int at) {
+        return new Vertex(p[at], p[at + 1], p[at + 2], p[at + 3], p[at + 4], p[at + 5]);
+    }
+
+    /** Writes this vertex's {@link #NUMBERS} numbers to p from p[at]. */
+    public void writeTo(double[] p, int at) {
+        p[at] = x;
+        p[at + 1] = y;
+        p[at + 2] = z;
+        p[at + 3] = r;
+        p[at + 4] = g;
+        p[at + 5] = b;
     }
 
     /** True when every coordinate is a finite number. */

@@ -29,6 +29,12 @@ public final class DepthCueDrawable extends DrawableDecorator {
         slopeB = 255 * (near.b() - far.b()) / depthRange;
     }
 
+    /** The colour of every write is replaced, so none is needed from above. */
+    @Override
+    public boolean usesColour() {
+        return false;
+    }
+
     @Override
     public void setPixel(int x, int y, double z, int argb) {
         double depth = z - ViewVolume.FAR_Z;

@@ -25,6 +25,15 @@ public interface Drawable {
      */
     void setPixel(int x, int y, double z, int argb);
 
+    /**
+     * False when the colour a write carries can never reach the surface,
+     * because a decorator on the way replaces it (depth cueing does): a
+     * renderer may then leave colour out. Like the size, it never changes.
+     */
+    default boolean usesColour() {
+        return true;
+    }
+
     /** The colour now at (x, y), 0xAARRGGBB; 0 outside the surface. */
     int getPixel(int x, int y);
 

@@ -20,6 +20,11 @@ public abstract class DrawableDecorator implements Drawable {
     }
 
     @Override
+    public boolean usesColour() {
+        return delegate.usesColour();
+    }
+
+    @Override
     public void setPixel(int x, int y, double z, int argb) {
         delegate.setPixel(x, y, z, argb);
     }

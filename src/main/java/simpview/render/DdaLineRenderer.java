@@ -13,19 +13,38 @@ import simpview.raster.Drawable;
  *
  * <p>Only the steps whose major coordinate lies on the drawable are visited:
  * a line a billion pixels long costs no more than one across the panel.
+ * One instance reuses its scratch state and is not for use by two threads at once.
  */
 public final class DdaLineRenderer implements LineRenderer {
 
+    /** Room for a line given as vertices, so that both entries share one path. */
+    private final double[] ends = new double[2 * Vertex.NUMBERS];
+
     @Override
     public void drawLine(Vertex p, Vertex q, Drawable drawable) {
-        if (!p.isFinite() || !q.isFinite()) {
+        p.writeTo(ends, 0);
+        q.writeTo(ends, Vertex.NUMBERS);
+        drawLine(ends, 0, Vertex.NUMBERS, drawable);
+    }
+
+    @Override
+    public void drawLine(double[] v, int from, int to, Drawable drawable) {
+        // Each end is x, y, z, r, g, b, as Vertex.writeTo lays it out.
+        double px = v[from];
+        double py = v[from + 1];
+        double pz = v[from + 2];
+        double qx = v[to];
+        double qy = v[to + 1];
+        double qz = v[to + 2];
+        if (!Double.isFinite(px) || !Double.isFinite(py) || !Double.isFinite(pz)
+                || !Double.isFinite(qx) || !Double.isFinite(qy) || !Double.isFinite(qz)) {
             return;
         }
         // Pixel indices as doubles: endpoints may lie far beyond int range.
-        double x0 = Math.floor(p.x());
-        double y0 = Math.floor(p.y());
-        double x1 = Math.floor(q.x());
-        double y1 = Math.floor(q.y());
+        double x0 = Math.floor(px);
+        double y0 = Math.floor(py);
+        double x1 = Math.floor(qx);
+        double y1 = Math.floor(qy);
         boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
         double major0 = xMajor ? x0 : y0;
         double major1 = xMajor ? x1 : y1;
@@ -51,6 +70,14 @@ public final class DdaLineRenderer implements LineRenderer {
         double halfSpan = 0.5 * major1 - 0.5 * major0;
         double halfMinor0 = 0.5 * minor0;
         double halfMinorSpan = 0.5 * minor1 - 0.5 * minor0;
+        // Colour is left out (black) where the drawable replaces it anyway.
+        boolean shaded = drawable.usesColour();
+        double pr = v[from + 3];
+        double pg = v[from + 4];
+        double pb = v[from + 5];
+        double qr = v[to + 3];
+        double qg = v[to + 4];
+        double qb = v[to + 5];
         for (int n = 0, major = first; n < count; n++, major += step) {
             double t = halfSpan == 0 ? 0 : (0.5 * major - halfStart) / halfSpan;
             double s = 1 - t;
@@ -60,8 +87,8 @@ public final class DdaLineRenderer implements LineRenderer {
             }
             int x = xMajor ? major : (int) minor;
             int y = xMajor ? (int) minor : major;
-            double z = s * p.z() + t * q.z();
-            int argb = Colors.pack(s * p.r() + t * q.r(), s * p.g() + t * q.g(), s * p.b() + t * q.b());
+            double z = s * pz + t * qz;
+            int argb = shaded ? Colors.pack(s * pr + t * qr, s * pg + t * qg, s * pb + t * qb) : Colors.BLACK;
             drawable.setPixel(x, y, z, argb);
         }
     }

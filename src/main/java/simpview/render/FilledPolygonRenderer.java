@@ -19,7 +19,8 @@ import simpview.raster.Span;
  *
  * <p>Attributes. Colour (in byte levels) and z are planes over the triangle,
  * evaluated at the first pixel centre of each span with their x slopes;
- * that is barycentric interpolation at every pixel centre.
+ * that is barycentric interpolation at every pixel centre. A drawable that
+ * replaces colour (depth cueing) gets the depth plane only.
  *
  * <p>Work is bounded by the drawable: rows and spans are clipped to it
  * before any pixel is visited. One instance reuses its scratch state and is
@@ -27,7 +28,16 @@ import simpview.raster.Span;
  */
 public final class FilledPolygonRenderer implements PolygonRenderer {
 
+    private static final int X = 0;
+    private static final int Y = 1;
+    private static final int Z = 2;
+    private static final int R = 3;
+    private static final int G = 4;
+    private static final int B = 5;
+
     private final Span span = new Span();
+    /** Room for a triangle given as vertices, so that both entries share one path. */
+    private final double[] corners = new double[3 * Vertex.NUMBERS];
     private final Edge[] edges = {new Edge(), new Edge(), new Edge()};
     // Edges by role: inside to the right (dy < 0), to the left (dy > 0),
     // horizontal (at most one); null where the triangle has none.
@@ -44,35 +54,66 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     // Every plane is given relative to vertex a: (originX, originY).
     private double originX;
     private double originY;
+    /** False when the drawable replaces colour: then no colour plane is set up or evaluated. */
+    private boolean shaded;
+    // The last drawable asked: a drawable's answer never changes.
+    private Drawable asked;
+    private boolean askedUsesColour;
 
     @Override
     public void drawPolygon(Vertex p1, Vertex p2, Vertex p3, Drawable drawable) {
-        if (!p1.isFinite() || !p2.isFinite() || !p3.isFinite()) {
+        p1.writeTo(corners, 0);
+        p2.writeTo(corners, Vertex.NUMBERS);
+        p3.writeTo(corners, 2 * Vertex.NUMBERS);
+        drawPolygon(corners, 0, drawable);
+    }
+
+    @Override
+    public void drawPolygon(double[] p, int at, Drawable drawable) {
+        int i1 = at;
+        int i2 = at + Vertex.NUMBERS;
+        int i3 = at + 2 * Vertex.NUMBERS;
+        if (!isFinite(p, i1) || !isFinite(p, i2) || !isFinite(p, i3)) {
             return;
         }
-        double area = (p2.x() - p1.x()) * (p3.y() - p1.y()) - (p2.y() - p1.y()) * (p3.x() - p1.x());
+        double area = (p[i2 + X] - p[i1 + X]) * (p[i3 + Y] - p[i1 + Y])
+                - (p[i2 + Y] - p[i1 + Y]) * (p[i3 + X] - p[i1 + X]);
         if (!(area != 0) || !Double.isFinite(area)) {
             return; // degenerate: no pixel centre lies strictly inside
         }
-        Vertex a = p1;
-        Vertex b = area > 0 ? p2 : p3;
-        Vertex c = area > 0 ? p3 : p2;
+        // Counter-clockwise a, b, c.
+        int a = i1;
+        int b = area > 0 ? i2 : i3;
+        int c = area > 0 ? i3 : i2;
         area = Math.abs(area);
         left0 = left1 = right0 = right1 = flat = null;
-        setUpEdge(edges[0], a, b);
-        setUpEdge(edges[1], b, c);
-        setUpEdge(edges[2], c, a);
-        setUpPlanes(a, b, c, area);
+        setUpEdge(edges[0], p, a, b);
+        setUpEdge(edges[1], p, b, c);
+        setUpEdge(edges[2], p, c, a);
+        shaded = usesColour(drawable);
+        setUpPlanes(p, a, b, c, area);
 
         int width = drawable.width();
         int height = drawable.height();
-        double minY = Math.min(a.y(), Math.min(b.y(), c.y()));
-        double maxY = Math.max(a.y(), Math.max(b.y(), c.y()));
+        double minY = Math.min(p[a + Y], Math.min(p[b + Y], p[c + Y]));
+        double maxY = Math.max(p[a + Y], Math.max(p[b + Y], p[c + Y]));
         int firstRow = (int) Math.max(0, Math.min(height, Math.ceil(minY - 0.5)));
         int lastRow = (int) Math.max(-1, Math.min(height - 1, Math.floor(maxY - 0.5)));
         for (int row = firstRow; row <= lastRow; row++) {
             drawRow(row, width, drawable);
         }
+    }
+
+    private static boolean isFinite(double[] p, int v) {
+        return Double.isFinite(p[v + X]) && Double.isFinite(p[v + Y]) && Double.isFinite(p[v + Z]);
+    }
+
+    private boolean usesColour(Drawable drawable) {
+        if (drawable != asked) {
+            asked = drawable;
+            askedUsesColour = drawable.usesColour();
+        }
+        return askedUsesColour;
     }
 
     /** The covered run of a row is the intersection of one half-row per edge. */
@@ -97,8 +138,8 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         }
     }
 
-    private void setUpEdge(Edge e, Vertex from, Vertex to) {
-        e.set(from, to);
+    private void setUpEdge(Edge e, double[] p, int from, int to) {
+        e.set(p[from + X], p[from + Y], p[to + X], p[to + Y]);
         if (e.dy < 0) {
             if (left0 == null) {
                 left0 = e;
@@ -116,17 +157,19 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         }
     }
 
-    private void setUpPlanes(Vertex a, Vertex b, Vertex c, double area) {
-        originX = a.x();
-        originY = a.y();
-        double e1x = b.x() - a.x();
-        double e1y = b.y() - a.y();
-        double e2x = c.x() - a.x();
-        double e2y = c.y() - a.y();
-        red.set(255 * a.r(), 255 * b.r(), 255 * c.r(), e1x, e1y, e2x, e2y, area);
-        green.set(255 * a.g(), 255 * b.g(), 255 * c.g(), e1x, e1y, e2x, e2y, area);
-        blue.set(255 * a.b(), 255 * b.b(), 255 * c.b(), e1x, e1y, e2x, e2y, area);
-        depth.set(a.z(), b.z(), c.z(), e1x, e1y, e2x, e2y, area);
+    private void setUpPlanes(double[] p, int a, int b, int c, double area) {
+        originX = p[a + X];
+        originY = p[a + Y];
+        double e1x = p[b + X] - p[a + X];
+        double e1y = p[b + Y] - p[a + Y];
+        double e2x = p[c + X] - p[a + X];
+        double e2y = p[c + Y] - p[a + Y];
+        depth.set(p[a + Z], p[b + Z], p[c + Z], e1x, e1y, e2x, e2y, area);
+        if (shaded) {
+            red.set(255 * p[a + R], 255 * p[b + R], 255 * p[c + R], e1x, e1y, e2x, e2y, area);
+            green.set(255 * p[a + G], 255 * p[b + G], 255 * p[c + G], e1x, e1y, e2x, e2y, area);
+            blue.set(255 * p[a + B], 255 * p[b + B], 255 * p[c + B], e1x, e1y, e2x, e2y, area);
+        }
     }
 
     private void emitSpan(int row, int from, int to, Drawable drawable) {
@@ -137,20 +180,24 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         s.x0 = from;
         s.x1 = to;
         s.xBase = from;
-        s.r = red.valueAt(dx, dy);
-        s.dr = red.slopeX;
-        s.g = green.valueAt(dx, dy);
-        s.dg = green.slopeX;
-        s.b = blue.valueAt(dx, dy);
-        s.db = blue.slopeX;
         s.z = depth.valueAt(dx, dy);
         s.dz = depth.slopeX;
+        if (shaded) {
+            s.r = red.valueAt(dx, dy);
+            s.dr = red.slopeX;
+            s.g = green.valueAt(dx, dy);
+            s.dg = green.slopeX;
+            s.b = blue.valueAt(dx, dy);
+            s.db = blue.slopeX;
+        } else {
+            s.r = s.dr = s.g = s.dg = s.b = s.db = 0;
+        }
         drawable.fillSpan(s);
     }
 
     /**
-     * One edge of the counter-clockwise triangle, from vertex {@code from} to
-     * {@code to}: its exact coverage test and a guess of where it crosses a row.
+     * One edge of the counter-clockwise triangle, from (ax, ay) to (bx, by):
+     * its exact coverage test and a guess of where it crosses a row.
      */
     private static final class Edge {
         // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
@@ -168,21 +215,19 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         private double xPerY;
         double dy;
 
-        void set(Vertex from, Vertex to) {
-            double dx = to.x() - from.x();
-            dy = to.y() - from.y();
-            fromX = from.x();
-            fromY = from.y();
+        void set(double ax, double ay, double bx, double by) {
+            double dx = bx - ax;
+            dy = by - ay;
+            fromX = ax;
+            fromY = ay;
             xPerY = dx / dy;
             // Canonical order: the lexicographically smaller endpoint first.
-            boolean forward = from.x() < to.x() || (from.x() == to.x() && from.y() < to.y());
-            Vertex first = forward ? from : to;
-            Vertex second = forward ? to : from;
-            x0 = first.x();
-            y0 = first.y();
+            boolean forward = ax < bx || (ax == bx && ay < by);
+            x0 = forward ? ax : bx;
+            y0 = forward ? ay : by;
             double sign = forward ? 1 : -1;
-            signedEx = sign * (second.x() - first.x());
-            signedEy = sign * (second.y() - first.y());
+            signedEx = sign * (forward ? bx - ax : ax - bx);
+            signedEy = sign * (forward ? by - ay : ay - by);
             // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
             topLeft = dy < 0 || (dy == 0 && dx < 0);
         }

@@ -18,4 +18,13 @@ public final class WireframePolygonRenderer implements PolygonRenderer {
         lines.drawLine(p2, p3, drawable);
         lines.drawLine(p3, p1, drawable);
     }
+
+    @Override
+    public void drawPolygon(double[] p, int at, Drawable drawable) {
+        int second = at + Vertex.NUMBERS;
+        int third = at + 2 * Vertex.NUMBERS;
+        lines.drawLine(p, at, second, drawable);
+        lines.drawLine(p, second, third, drawable);
+        lines.drawLine(p, third, at, drawable);
+    }
 }

@@ -16,7 +16,7 @@ final class Painter implements PrimitiveSink {
     static final int FILLED = 1;
     static final int WIRE = 2;
     /** Numbers per vertex: panel x, panel y, world z, r, g, b. */
-    static final int VERTEX = 6;
+    static final int VERTEX = Vertex.NUMBERS;
     /** Numbers per primitive: room for a polygon's three vertices. */
     static final int STRIDE = 3 * VERTEX;
 
@@ -37,17 +37,13 @@ final class Painter implements PrimitiveSink {
         draw(kind, p, 0);
     }
 
-    /** Draws the primitive whose numbers start at p[at]. */
+    /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
     void draw(int kind, double[] p, int at) {
         switch (kind) {
-            case LINE -> lines.drawLine(vertex(p, at), vertex(p, at + VERTEX), panel);
-            case FILLED, WIRE -> (kind == FILLED ? filled : wire)
-                    .drawPolygon(vertex(p, at), vertex(p, at + VERTEX), vertex(p, at + 2 * VERTEX), panel);
+            case LINE -> lines.drawLine(p, at, at + VERTEX, panel);
+            case FILLED -> filled.drawPolygon(p, at, panel);
+            case WIRE -> wire.drawPolygon(p, at, panel);
             default -> throw new IllegalArgumentException("primitive kind " + kind);
         }
-    }
-
-    private static Vertex vertex(double[] p, int at) {
-        return new Vertex(p[at], p[at + 1], p[at + 2], p[at + 3], p[at + 4], p[at + 5]);
     }
 }
