@@ -34,16 +34,17 @@ final class SimpviewWindow {
     private WindowOptions options;
     private RenderedView shown;
     private RenderJob pending;
-    private Path sceneAfterFirstPage;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.renderer = new BackgroundRenderer(drawer);
         this.dialogs = new FileDialogs(frame, options.simpDir());
-        sceneAfterFirstPage = options.scene().orElse(null);
     }
 
-    /** Opens the window on page 1 (then the scene, if one was given). Call on the EDT. */
+    /**
+     * Opens the window on the scene given, or else on page 1. Call on the EDT.
+     * A scene is an extra view: stepping from it goes to the pages, from page 1.
+     */
     static SimpviewWindow open(WindowOptions options) {
         return open(options, SceneDrawer.SIMP);
     }
@@ -51,7 +52,7 @@ final class SimpviewWindow {
     static SimpviewWindow open(WindowOptions options, SceneDrawer drawer) {
         SimpviewWindow window = new SimpviewWindow(options, drawer);
         window.build();
-        window.show(new View.OfPage(window.stepper.current()));
+        window.show(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(window.stepper.current())));
         return window;
     }
 
@@ -168,11 +169,6 @@ final class SimpviewWindow {
         pageView.show(result.image(), result.error());
         frame.setTitle(result.title());
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
-        if (sceneAfterFirstPage != null) {
-            Path scene = sceneAfterFirstPage;
-            sceneAfterFirstPage = null;
-            openScene(scene);
-        }
     }
 
     /** Stops the picture being drawn; the one on screen stays, and so does its place among the pages. */

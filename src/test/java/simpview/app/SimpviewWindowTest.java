@@ -170,7 +170,7 @@ class SimpviewWindowTest {
     }
 
     @Test
-    void aSceneGivenAtStartOpensAfterTheFirstPage() throws Exception {
+    void aSceneGivenAtStartIsWhatTheWindowShowsFirst() throws Exception {
         Path scene = StandInDrawers.sceneFile(dir, "start.simp");
         driver = WindowDriver.open(new WindowOptions(SEED, dir, Optional.of(scene)), StandInDrawers.DIAGONAL);
         assertEquals("simpview — scene: start.simp", driver.onEdt(() -> driver.window().frame().getTitle()));
