@@ -43,9 +43,9 @@ public class FillRate extends AgainstJava2D {
     @Benchmark
     @OperationsPerInvocation(Geometry.PANEL_PIXELS)
     public PageCanvas simpview() {
-        Vertex[] v = triangles.vertices;
-        renderer.drawPolygon(v[0], v[1], v[2], target);
-        renderer.drawPolygon(v[3], v[4], v[5], target);
+        double[] p = triangles.numbers;
+        renderer.drawPolygon(p, 0, target);
+        renderer.drawPolygon(p, 3 * Vertex.NUMBERS, target);
         return canvas;
     }
 

@@ -43,15 +43,24 @@ final class Geometry {
                 random.nextDouble(), random.nextDouble(), random.nextDouble());
     }
 
-    /** Triangles as flat vertex triples: triangle t is vertices 3t, 3t+1, 3t+2. */
+    /**
+     * Triangles as flat vertex triples: triangle t is vertices 3t, 3t+1, 3t+2;
+     * the same as plain numbers ({@link Vertex#NUMBERS} per vertex), which is
+     * how scenes hand them to the renderer.
+     */
     static final class Triangles {
         final Vertex[] vertices;
+        final double[] numbers;
         final int[][] imageXs;
         final int[][] imageYs;
         final Color[] colors;
 
         Triangles(Vertex[] vertices) {
             this.vertices = vertices;
+            numbers = new double[vertices.length * Vertex.NUMBERS];
+            for (int i = 0; i < vertices.length; i++) {
+                vertices[i].writeTo(numbers, i * Vertex.NUMBERS);
+            }
             int n = vertices.length / 3;
             imageXs = new int[n][3];
             imageYs = new int[n][3];
