@@ -174,5 +174,8 @@ class SimpviewWindowTest {
         Path scene = StandInDrawers.sceneFile(dir, "start.simp");
         driver = WindowDriver.open(new WindowOptions(SEED, dir, Optional.of(scene)), StandInDrawers.DIAGONAL);
         assertEquals("simpview — scene: start.simp", driver.onEdt(() -> driver.window().frame().getTitle()));
+        // A scene is an extra view: stepping on from it goes to the pages, from page 1.
+        driver.clickPage();
+        driver.awaitShown(new View.OfPage(2));
     }
 }
