@@ -44,19 +44,18 @@ final class Geometry {
     }
 
     /**
-     * Triangles as flat vertex triples: triangle t is vertices 3t, 3t+1, 3t+2;
-     * the same as plain numbers ({@link Vertex#NUMBERS} per vertex), which is
-     * how scenes hand them to the renderer.
+     * Triangles as plain numbers ({@link Vertex#NUMBERS} per vertex, triangle t
+     * from 3t * NUMBERS), which is how scenes hand them to the renderer, and
+     * as Java2D's int coordinates with one flat colour each.
      */
     static final class Triangles {
-        final Vertex[] vertices;
         final double[] numbers;
         final int[][] imageXs;
         final int[][] imageYs;
         final Color[] colors;
 
+        /** @param vertices flat triples: triangle t is vertices 3t, 3t+1, 3t+2 */
         Triangles(Vertex[] vertices) {
-            this.vertices = vertices;
             numbers = new double[vertices.length * Vertex.NUMBERS];
             for (int i = 0; i < vertices.length; i++) {
                 vertices[i].writeTo(numbers, i * Vertex.NUMBERS);
