@@ -14,6 +14,13 @@ public record Vertex(double x, double y, double z, double r, double g, double b)
      * object per vertex.
      */
     public static final int NUMBERS = 6;
+    // Where each number stands among a vertex's NUMBERS.
+    public static final int X = 0;
+    public static final int Y = 1;
+    public static final int Z = 2;
+    public static final int R = 3;
+    public static final int G = 4;
+    public static final int B = 5;
 
     public static Vertex of(double x, double y, double z) {
         return new Vertex(x, y, z, 1, 1, 1);
@@ -29,17 +36,17 @@ public record Vertex(double x, double y, double z, double r, double g, double b)
 
     /** The vertex whose {@link #NUMBERS} numbers start at p[at]. */
     public static Vertex readFrom(double[] p, int at) {
-        return new Vertex(p[at], p[at + 1], p[at + 2], p[at + 3], p[at + 4], p[at + 5]);
+        return new Vertex(p[at + X], p[at + Y], p[at + Z], p[at + R], p[at + G], p[at + B]);
     }
 
     /** Writes this vertex's {@link #NUMBERS} numbers to p from p[at]. */
     public void writeTo(double[] p, int at) {
-        p[at] = x;
-        p[at + 1] = y;
-        p[at + 2] = z;
-        p[at + 3] = r;
-        p[at + 4] = g;
-        p[at + 5] = b;
+        p[at + X] = x;
+        p[at + Y] = y;
+        p[at + Z] = z;
+        p[at + R] = r;
+        p[at + G] = g;
+        p[at + B] = b;
     }
 
     /** True when every coordinate is a finite number. */

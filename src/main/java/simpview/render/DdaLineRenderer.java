@@ -1,5 +1,12 @@
 package simpview.render;
 
+import static simpview.geometry.Vertex.B;
+import static simpview.geometry.Vertex.G;
+import static simpview.geometry.Vertex.R;
+import static simpview.geometry.Vertex.X;
+import static simpview.geometry.Vertex.Y;
+import static simpview.geometry.Vertex.Z;
+
 import simpview.geometry.Vertex;
 import simpview.raster.Colors;
 import simpview.raster.Drawable;
@@ -29,13 +36,12 @@ public final class DdaLineRenderer implements LineRenderer {
 
     @Override
     public void drawLine(double[] v, int from, int to, Drawable drawable) {
-        // Each end is x, y, z, r, g, b, as Vertex.writeTo lays it out.
-        double px = v[from];
-        double py = v[from + 1];
-        double pz = v[from + 2];
-        double qx = v[to];
-        double qy = v[to + 1];
-        double qz = v[to + 2];
+        double px = v[from + X];
+        double py = v[from + Y];
+        double pz = v[from + Z];
+        double qx = v[to + X];
+        double qy = v[to + Y];
+        double qz = v[to + Z];
         if (!Double.isFinite(px) || !Double.isFinite(py) || !Double.isFinite(pz)
                 || !Double.isFinite(qx) || !Double.isFinite(qy) || !Double.isFinite(qz)) {
             return;
@@ -72,12 +78,12 @@ public final class DdaLineRenderer implements LineRenderer {
         double halfMinorSpan = 0.5 * minor1 - 0.5 * minor0;
         // Colour is left out (black) where the drawable replaces it anyway.
         boolean shaded = drawable.usesColour();
-        double pr = v[from + 3];
-        double pg = v[from + 4];
-        double pb = v[from + 5];
-        double qr = v[to + 3];
-        double qg = v[to + 4];
-        double qb = v[to + 5];
+        double pr = v[from + R];
+        double pg = v[from + G];
+        double pb = v[from + B];
+        double qr = v[to + R];
+        double qg = v[to + G];
+        double qb = v[to + B];
         for (int n = 0, major = first; n < count; n++, major += step) {
             double t = halfSpan == 0 ? 0 : (0.5 * major - halfStart) / halfSpan;
             double s = 1 - t;

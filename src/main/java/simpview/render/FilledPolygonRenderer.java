@@ -1,5 +1,12 @@
 package simpview.render;
 
+import static simpview.geometry.Vertex.B;
+import static simpview.geometry.Vertex.G;
+import static simpview.geometry.Vertex.R;
+import static simpview.geometry.Vertex.X;
+import static simpview.geometry.Vertex.Y;
+import static simpview.geometry.Vertex.Z;
+
 import simpview.geometry.Vertex;
 import simpview.raster.Drawable;
 import simpview.raster.Span;
@@ -27,13 +34,6 @@ import simpview.raster.Span;
  * not for use by two threads at once.
  */
 public final class FilledPolygonRenderer implements PolygonRenderer {
-
-    private static final int X = 0;
-    private static final int Y = 1;
-    private static final int Z = 2;
-    private static final int R = 3;
-    private static final int G = 4;
-    private static final int B = 5;
 
     private final Span span = new Span();
     /** Room for a triangle given as vertices, so that both entries share one path. */

@@ -1,6 +1,7 @@
 package simpview.simp;
 
 import simpview.geometry.Matrix4;
+import simpview.geometry.Vertex;
 import simpview.geometry.ViewVolume;
 import simpview.raster.Drawable;
 import simpview.render.DdaLineRenderer;
@@ -115,12 +116,12 @@ public final class SimpClient {
         for (int k = 0; k < count; k++) {
             int i = 3 * k;
             int o = Painter.VERTEX * k;
-            primitive[o] = ViewVolume.toPanel(world[i]);
-            primitive[o + 1] = ViewVolume.toPanel(world[i + 1]);
-            primitive[o + 2] = world[i + 2];
-            primitive[o + 3] = c.color(k, 0);
-            primitive[o + 4] = c.color(k, 1);
-            primitive[o + 5] = c.color(k, 2);
+            primitive[o + Vertex.X] = ViewVolume.toPanel(world[i]);
+            primitive[o + Vertex.Y] = ViewVolume.toPanel(world[i + 1]);
+            primitive[o + Vertex.Z] = world[i + 2];
+            primitive[o + Vertex.R] = c.color(k, 0);
+            primitive[o + Vertex.G] = c.color(k, 1);
+            primitive[o + Vertex.B] = c.color(k, 2);
         }
     }
 
