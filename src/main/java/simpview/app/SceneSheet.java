@@ -1,6 +1,5 @@
 package simpview.app;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.raster.PageCanvas;
 import simpview.raster.Rgb;
@@ -20,12 +19,6 @@ record SceneSheet(Path file, Rgb near, Rgb far) {
     /** Clears the canvas and draws the scene; on an error what was drawn stays. */
     void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer) throws SceneException {
         canvas.clear();
-        if (!Files.isRegularFile(file)) {
-            String where = file.toAbsolutePath().normalize().toString();
-            throw new SceneException(file, 0, 0, "", Files.isDirectory(file)
-                    ? "this is a folder, not a scene file (" + where + ")"
-                    : "there is no such scene file (" + where + ")");
-        }
         drawer.draw(file, canvas.depthCued(near, far), monitor);
     }
 }

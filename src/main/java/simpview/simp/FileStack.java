@@ -11,6 +11,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 
 /**
  * The files being read, innermost on top: {@code file} pushes, the end of a
@@ -52,17 +53,7 @@ final class FileStack implements AutoCloseable {
 
     /** Starts with the scene's top file. */
     void openTop(Path file) throws SceneException {
-        Path real;
-        try {
-            real = file.toRealPath();
-        } catch (NoSuchFileException e) {
-            throw new SceneException(file, 0, 0, "", "file not found: " + file.toAbsolutePath().normalize());
-        } catch (IOException e) {
-            throw new SceneException(file, 0, 0, "", "cannot open the file: " + e.getMessage());
-        }
-        if (!Files.isRegularFile(real)) {
-            throw new SceneException(file, 0, 0, "", "not a regular file: " + file.toAbsolutePath().normalize());
-        }
+        Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
         push(open(file, real), real);
     }
 
@@ -111,18 +102,7 @@ final class FileStack implements AutoCloseable {
             return known;
         }
         Path candidate = resolve(from, c);
-        Path real;
-        try {
-            real = candidate.toRealPath();
-        } catch (NoSuchFileException e) {
-            throw from.error(c.argumentIndex, "file not found: " + candidate.toAbsolutePath().normalize());
-        } catch (IOException e) {
-            throw from.error(c.argumentIndex, "cannot open " + candidate + ": " + e.getMessage());
-        }
-        if (!Files.isRegularFile(real)) {
-            throw from.error(c.argumentIndex, (Files.isDirectory(real) ? "not a file but a folder: "
-                    : "not a regular file: ") + candidate.toAbsolutePath().normalize());
-        }
+        Path real = realFile(candidate, problem -> from.error(c.argumentIndex, problem));
         Found result = new Found(candidate, real);
         found.put(name, result);
         return result;
@@ -144,6 +124,28 @@ final class FileStack implements AutoCloseable {
         } catch (InvalidPathException e) {
             throw from.error(c.argumentIndex, "not a valid file name: '" + c.fileName + "'");
         }
+    }
+
+    /**
+     * Where {@code candidate} really leads, if that is a file to read. The top
+     * file and an included one are checked here alike, so a missing file or a
+     * folder gets the same words wherever it is named; {@code error} places
+     * the problem (a top file has no line, an include its command's column).
+     */
+    private static Path realFile(Path candidate, Function<String, SceneException> error) throws SceneException {
+        String shown = candidate.toAbsolutePath().normalize().toString();
+        Path real;
+        try {
+            real = candidate.toRealPath();
+        } catch (NoSuchFileException e) {
+            throw error.apply("file not found: " + shown);
+        } catch (IOException e) {
+            throw error.apply("cannot open " + shown + ": " + e.getMessage());
+        }
+        if (!Files.isRegularFile(real)) {
+            throw error.apply((Files.isDirectory(real) ? "not a file but a folder: " : "not a regular file: ") + shown);
+        }
+        return real;
     }
 
     /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */

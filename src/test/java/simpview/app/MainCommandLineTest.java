@@ -137,7 +137,7 @@ class MainCommandLineTest {
         Path missing = dir.resolve("nowhere.simp");
         CliRun run = CliRun.of("render", "--scene", missing.toString(), "--out", dir.resolve("x.png").toString());
         assertEquals(Main.SCENE_ERROR, run.exitCode());
-        assertTrue(run.err().contains("nowhere.simp"), run.err());
+        assertTrue(run.err().contains("file not found: " + missing.toAbsolutePath().normalize()), run.err());
         assertFalse(Files.exists(dir.resolve("x.png")));
         assertFalse(run.showsStackTrace(), run.err());
     }
@@ -158,7 +158,7 @@ class MainCommandLineTest {
     void aFolderGivenAsSceneIsAClearSceneError() {
         CliRun run = CliRun.of("render", "--scene", dir.toString(), "--out", dir.resolve("x.png").toString());
         assertEquals(Main.SCENE_ERROR, run.exitCode());
-        assertTrue(run.err().contains("this is a folder, not a scene file"), run.err());
+        assertTrue(run.err().contains("not a file but a folder: " + dir.toAbsolutePath().normalize()), run.err());
     }
 
     @Test
