@@ -40,12 +40,18 @@ final class WindowDriver {
 
     /** Opens the window and waits for its first page, or for the scene it was given. */
     static WindowDriver open(WindowOptions options, SceneDrawer drawer) throws Exception {
+        WindowDriver driver = openWhileDrawing(options, drawer);
+        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
+        return driver;
+    }
+
+    /** Opens the window and returns at once, its first view perhaps still being drawn. */
+    static WindowDriver openWhileDrawing(WindowOptions options, SceneDrawer drawer) throws Exception {
         AtomicReference<SimpviewWindow> opened = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> opened.set(SimpviewWindow.open(options, drawer)));
         Robot robot = new Robot();
         robot.setAutoDelay(20);
         WindowDriver driver = new WindowDriver(opened.get(), robot);
-        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
         driver.pinWindow();
         return driver;
     }
