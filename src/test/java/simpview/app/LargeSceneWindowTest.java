@@ -108,31 +108,6 @@ class LargeSceneWindowTest {
     }
 
     /**
-     * A scene given at start is what the window draws first; a step asked for
-     * while it is still drawing overtakes it, as any newer request does.
-     */
-    @Test
-    void aStepWhileTheSceneGivenAtStartDrawsOvertakesIt() throws Exception {
-        driver = WindowDriver.openWhileDrawing(
-                new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.of(bigScene)), StandInDrawers.SLOW_READER);
-        SimpviewWindow window = driver.window();
-        driver.awaitEdt(() -> !window.busy() || window.status().showingProgress() && window.linesReadSoFar() > 0,
-                "progress or the end of the scene");
-        if (!driver.onEdt(window::busy)) {
-            abort("the stand-in drew the scene before any progress showed: nothing left to overtake");
-        }
-        assertNull(driver.onEdt(window::shown), "nothing shown before the scene is drawn");
-
-        driver.clickPage();
-        driver.awaitShown(new View.OfPage(2));
-        assertFalse(driver.onEdt(window::busy), "still drawing after page 2 was shown");
-        assertFalse(driver.onEdt(() -> window.status().animating()), "the progress bar still animating");
-        assertNull(driver.onEdt(window::shown).error());
-        BufferedImage page2 = new PageRenderer().renderImage(2, PageContext.defaults().withSeed(SEED));
-        assertEquals(0, driver.screenDiffersFrom(page2), "pixels differing from page 2");
-    }
-
-    /**
      * Other builds may keep both cores busy; then even an idle EDT runs late
      * and a stall says nothing about our window.
      */

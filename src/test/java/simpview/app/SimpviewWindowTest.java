@@ -1,6 +1,7 @@
 package simpview.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -177,5 +178,24 @@ class SimpviewWindowTest {
         // A scene is an extra view: stepping on from it goes to the pages, from page 1.
         driver.clickPage();
         driver.awaitShown(new View.OfPage(2));
+    }
+
+    /** A step asked for while the scene given at start is still drawing overtakes it, as any newer request does. */
+    @Test
+    void aStepWhileTheSceneGivenAtStartDrawsOvertakesIt() throws Exception {
+        Path scene = StandInDrawers.sceneFile(dir, "endless.simp");
+        driver = WindowDriver.openWhileDrawing(new WindowOptions(SEED, dir, Optional.of(scene)),
+                StandInDrawers.UNTIL_CANCELLED);
+        SimpviewWindow window = driver.window();
+        driver.awaitEdt(() -> window.status().showingProgress() && window.linesReadSoFar() > 0, "the scene's progress");
+        assertNull(driver.onEdt(window::shown), "nothing shown while the scene draws");
+
+        driver.clickPage();
+        driver.awaitShown(new View.OfPage(2));
+        assertFalse(driver.onEdt(window::busy), "still drawing after page 2 was shown");
+        assertFalse(driver.onEdt(() -> window.status().animating()), "the progress bar still animating");
+        assertNull(driver.onEdt(window::shown).error());
+        BufferedImage page2 = new PageRenderer().renderImage(2, PageContext.defaults().withSeed(SEED));
+        assertEquals(0, driver.screenDiffersFrom(page2), "pixels differing from page 2");
     }
 }

@@ -40,6 +40,15 @@ final class StandInDrawers {
         monitor.linesRead(lines);
     };
 
+    /** Reports progress every few milliseconds and never finishes: only a cancel ends it. */
+    static final SceneDrawer UNTIL_CANCELLED = (file, panel, monitor) -> {
+        for (long lines = REPORT_EVERY; !monitor.cancelled(); lines += REPORT_EVERY) {
+            monitor.linesRead(lines);
+            pause();
+        }
+        throw new SceneCancelledException();
+    };
+
     /** Draws a white diagonal at the near plane, whatever the file says. */
     static final SceneDrawer DIAGONAL = (file, panel, monitor) -> {
         for (int i = 0; i < panel.width(); i++) {
