@@ -25,6 +25,8 @@ import simpview.render.DdaLineRenderer;
 import simpview.render.FilledPolygonRenderer;
 import simpview.render.WireframePolygonRenderer;
 import simpview.testing.CountingDrawable;
+import simpview.testing.RecordingDrawable;
+import simpview.testing.RecordingDrawable.Write;
 
 /**
  * Hostile geometry straight into the renderers: coordinates up to +-1e12,
@@ -136,11 +138,12 @@ class GeometryFuzzProperties {
             dda.drawLine(p, q, d);
             return null;
         });
-        assertEquals(0, d.strays, "writes outside the drawable");
-        assertTrue(d.writes.size() <= Math.max(W, H), "more writes than the major axis is long: " + d.writes.size());
-        assertDistinct(d.writes);
+        List<Write> w = d.writes();
+        assertEquals(0, d.strays(), "writes outside the drawable");
+        assertTrue(w.size() <= Math.max(W, H), "more writes than the major axis is long: " + w.size());
+        assertDistinct(w);
         if (!Hostile.finite(p, q)) {
-            assertEquals(0, d.writes.size(), "a line with a non-finite end draws nothing");
+            assertEquals(0, w.size(), "a line with a non-finite end draws nothing");
             return;
         }
         int px = (int) Math.floor(p.x());
@@ -149,14 +152,13 @@ class GeometryFuzzProperties {
         int qy = (int) Math.floor(q.y());
         boolean bothOn = inside(p) && inside(q);
         if (bothOn) {
-            List<int[]> w = d.writes;
             assertEquals(Math.max(Math.abs(qx - px), Math.abs(qy - py)) + 1, w.size(), "pixels on the line");
-            assertEquals(px + "," + py, w.get(0)[0] + "," + w.get(0)[1], "first pixel holds the first end");
-            assertEquals(qx + "," + qy, w.get(w.size() - 1)[0] + "," + w.get(w.size() - 1)[1],
+            assertEquals(px + "," + py, w.get(0).x() + "," + w.get(0).y(), "first pixel holds the first end");
+            assertEquals(qx + "," + qy, w.get(w.size() - 1).x() + "," + w.get(w.size() - 1).y(),
                     "last pixel holds the last end");
             for (int i = 1; i < w.size(); i++) {
-                int dx = Math.abs(w.get(i)[0] - w.get(i - 1)[0]);
-                int dy = Math.abs(w.get(i)[1] - w.get(i - 1)[1]);
+                int dx = Math.abs(w.get(i).x() - w.get(i - 1).x());
+                int dy = Math.abs(w.get(i).y() - w.get(i - 1).y());
                 assertTrue(dx <= 1 && dy <= 1 && dx + dy >= 1, "the line is not 8-connected at step " + i);
             }
         }
@@ -166,11 +168,11 @@ class GeometryFuzzProperties {
         return v.x() >= 0 && v.x() < W && v.y() >= 0 && v.y() < H;
     }
 
-    private static void assertDistinct(List<int[]> writes) {
+    private static void assertDistinct(List<Write> writes) {
         boolean[] seen = new boolean[W * H];
-        for (int[] w : writes) {
-            int i = w[1] * W + w[0];
-            assertTrue(!seen[i], "pixel " + w[0] + "," + w[1] + " written twice by one line");
+        for (Write w : writes) {
+            int i = w.y() * W + w.x();
+            assertTrue(!seen[i], "pixel " + w.x() + "," + w.y() + " written twice by one line");
             seen[i] = true;
         }
     }

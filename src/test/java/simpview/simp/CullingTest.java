@@ -5,14 +5,14 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.raster.Drawable;
 import simpview.raster.ScissorDrawable;
+import simpview.testing.RecordingDrawable;
+import simpview.testing.RecordingDrawable.Write;
 
 class CullingTest {
 
@@ -71,44 +71,20 @@ class CullingTest {
         assertFalse(Culling.isCulled(new double[] {-101, 0, -1, 101, 0, -1}, 2));
     }
 
-    /** A drawable that records every pixel write it gets. */
-    private static final class Recorder implements Drawable {
-        final List<double[]> writes = new ArrayList<>();
-
-        @Override
-        public int width() {
-            return 650;
-        }
-
-        @Override
-        public int height() {
-            return 650;
-        }
-
-        @Override
-        public void setPixel(int x, int y, double z, int argb) {
-            writes.add(new double[] {x, y, z});
-        }
-
-        @Override
-        public int getPixel(int x, int y) {
-            return 0;
-        }
-    }
-
     @Test
     void partlyVisiblePrimitivesAreScissored() throws Exception {
-        Recorder recorder = new Recorder();
+        RecordingDrawable recorder = new RecordingDrawable(650, 650);
         SceneFixture scene = new SceneFixture(dir);
         // Sticks out of the left, the top and the near plane.
         scene.write("s", "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "wire",
                 "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "line (-300, -10, 100) (300, 10, -300)");
         SceneRenderer.draw(dir.resolve("s.simp"), new ScissorDrawable(recorder), SceneMonitor.NONE);
-        assertTrue(recorder.writes.size() > 1000, "the visible part is drawn: " + recorder.writes.size());
-        for (double[] w : recorder.writes) {
-            assertTrue(w[0] >= 0 && w[0] < 650 && w[1] >= 0 && w[1] < 650, "inside the panel");
-            assertTrue(w[2] <= 0 && w[2] >= -200, "inside the depth range");
+        List<Write> writes = recorder.writes();
+        assertTrue(writes.size() > 1000, "the visible part is drawn: " + writes.size());
+        assertEquals(0, recorder.strays(), "writes outside the panel");
+        for (Write w : writes) {
+            assertTrue(w.z() <= 0 && w.z() >= -200, "inside the depth range");
         }
-        assertTrue(recorder.writes.stream().anyMatch(w -> w[0] == 0), "reaches the left edge");
+        assertTrue(writes.stream().anyMatch(w -> w.x() == 0), "reaches the left edge");
     }
 }
