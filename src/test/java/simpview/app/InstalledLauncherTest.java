@@ -1,0 +1,89 @@
+package simpview.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.simp.SceneMonitor;
+
+/**
+ * The start script of an installed simpview ({@code gradle installDist},
+ * which the build runs before the tests), run in a folder of its own as a
+ * user runs it: it prints only what simpview prints, and the installed copy
+ * finds its own scenes.
+ */
+class InstalledLauncherTest {
+
+    private static final long LIMIT_SECONDS = 60;
+    private static Path launcher;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void findLauncher() {
+        String home = System.getProperty("simpview.installDir");
+        assumeTrue(home != null, "simpview.installDir is not set: run the tests through Gradle, which installs simpview first");
+        launcher = Path.of(home, "bin", "simpview");
+        assertTrue(Files.isExecutable(launcher), "no start script at " + launcher);
+    }
+
+    private record Run(int exitCode, String out, String err) {
+    }
+
+    private Run run(String... args) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(launcher.toString()));
+        command.addAll(List.of(args));
+        Path out = dir.resolve("stdout.txt");
+        Path err = dir.resolve("stderr.txt");
+        Process process = new ProcessBuilder(command).directory(dir.toFile())
+                .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+        if (!process.waitFor(LIMIT_SECONDS, TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+            throw new AssertionError(String.join(" ", command) + " did not end within " + LIMIT_SECONDS + " s");
+        }
+        return new Run(process.exitValue(), Files.readString(out), Files.readString(err));
+    }
+
+    @Test
+    void versionIsAllItPrints() throws Exception {
+        Run run = run("--version");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.out().startsWith("simpview "), run.out());
+        assertEquals("", run.err(), "the launcher printed on stderr");
+    }
+
+    @Test
+    void theInstalledCopyDrawsItsOwnScenePage() throws Exception {
+        Path png = dir.resolve("page4.png");
+        Run run = run("render", "--page", "4", "--out", png.toString());
+        assertEquals(0, run.exitCode(), run.err());
+        assertEquals("", run.err(), "the launcher printed on stderr");
+        // The same scene file, read here from the source tree and there from the installation.
+        Path ownScenes = Path.of(System.getProperty("simpview.projectDir", ".")).resolve("simp");
+        PageContext here = new PageContext(PageContext.DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
+        assertEquals(0, Images.differingPixels(new PageRenderer().renderImage(4, here), ImageIO.read(png.toFile())));
+    }
+
+    @Test
+    void aSceneErrorIsItsMessageAlone() throws Exception {
+        Path bad = Files.writeString(dir.resolve("bad.simp"), "rotate W 5\n");
+        Run run = run("render", "--scene", bad.toString(), "--out", dir.resolve("bad.png").toString());
+        assertEquals(Main.SCENE_ERROR, run.exitCode());
+        assertEquals(List.of(bad + ":1:8: expected an axis X, Y or Z (upper case), found 'W'", "    rotate W 5", "           ^"),
+                run.err().lines().toList());
+        assertEquals("", run.out());
+    }
+}
