@@ -46,6 +46,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
         int i = y * width + x;
         if (z > depth[i]) {
             depth[i] = z;
+            zbuffer.written();
             delegate.setPixel(x, y, z, argb);
         }
     }
@@ -91,6 +92,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
     }
 
     private void emit(Span s, int from, int to) {
+        zbuffer.written();
         s.x0 = from;
         s.x1 = to;
         delegate.fillSpan(s);

@@ -1,7 +1,9 @@
 package simpview.raster;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.util.Random;
@@ -53,6 +55,32 @@ class DecoratorTest {
         assertEquals(-200, canvas.zbuffer().depthAt(649, 649));
         draw(triangle(-200, 1), canvas.depthTested());
         assertEquals(Colors.BLACK, canvas.panel().getPixel(300, 250));
+    }
+
+    /** A reset skips the fill while nothing was written: each way of writing a depth must say it wrote. */
+    @Test
+    void aResetAfterWritingAnyWayBringsBackTheFarPlane() {
+        PageCanvas canvas = new PageCanvas();
+        ZBuffer z = canvas.zbuffer();
+        canvas.depthTested().setPixel(10, 10, -50, Colors.WHITE);
+        assertFalse(z.atFarPlane());
+        canvas.clear();
+        assertEquals(-200, z.depthAt(10, 10));
+        assertTrue(z.atFarPlane());
+
+        draw(triangle(-50, 1), canvas.depthCued(Rgb.WHITE, Rgb.BLACK));
+        assertEquals(-50, z.depthAt(300, 250));
+        canvas.clear();
+        assertEquals(-200, z.depthAt(300, 250));
+    }
+
+    @Test
+    void drawingWithoutDepthOrBehindEverythingLeavesTheResetNothingToDo() {
+        PageCanvas canvas = new PageCanvas();
+        draw(triangle(-50, 1), canvas.panel());
+        draw(triangle(-200, 1), canvas.depthTested()); // at the far plane: every pixel loses
+        canvas.depthTested().setPixel(10, 10, -250, Colors.WHITE);
+        assertTrue(canvas.zbuffer().atFarPlane());
     }
 
     @Test
