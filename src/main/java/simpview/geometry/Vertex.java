@@ -53,4 +53,9 @@ public record Vertex(double x, double y, double z, double r, double g, double b)
     public boolean isFinite() {
         return Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z);
     }
+
+    /** {@link #isFinite()} for the vertex whose numbers start at p[at]. */
+    public static boolean isFinite(double[] p, int at) {
+        return Double.isFinite(p[at + X]) && Double.isFinite(p[at + Y]) && Double.isFinite(p[at + Z]);
+    }
 }

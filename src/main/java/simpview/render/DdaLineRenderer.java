@@ -36,16 +36,15 @@ public final class DdaLineRenderer implements LineRenderer {
 
     @Override
     public void drawLine(double[] v, int from, int to, Drawable drawable) {
+        if (!Vertex.isFinite(v, from) || !Vertex.isFinite(v, to)) {
+            return;
+        }
         double px = v[from + X];
         double py = v[from + Y];
         double pz = v[from + Z];
         double qx = v[to + X];
         double qy = v[to + Y];
         double qz = v[to + Z];
-        if (!Double.isFinite(px) || !Double.isFinite(py) || !Double.isFinite(pz)
-                || !Double.isFinite(qx) || !Double.isFinite(qy) || !Double.isFinite(qz)) {
-            return;
-        }
         // Pixel indices as doubles: endpoints may lie far beyond int range.
         double x0 = Math.floor(px);
         double y0 = Math.floor(py);

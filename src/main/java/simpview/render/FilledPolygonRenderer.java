@@ -73,7 +73,7 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         int i1 = at;
         int i2 = at + Vertex.NUMBERS;
         int i3 = at + 2 * Vertex.NUMBERS;
-        if (!isFinite(p, i1) || !isFinite(p, i2) || !isFinite(p, i3)) {
+        if (!Vertex.isFinite(p, i1) || !Vertex.isFinite(p, i2) || !Vertex.isFinite(p, i3)) {
             return;
         }
         double area = (p[i2 + X] - p[i1 + X]) * (p[i3 + Y] - p[i1 + Y])
@@ -102,10 +102,6 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         for (int row = firstRow; row <= lastRow; row++) {
             drawRow(row, width, drawable);
         }
-    }
-
-    private static boolean isFinite(double[] p, int v) {
-        return Double.isFinite(p[v + X]) && Double.isFinite(p[v + Y]) && Double.isFinite(p[v + Z]);
     }
 
     private boolean usesColour(Drawable drawable) {

@@ -15,10 +15,8 @@ final class Painter implements PrimitiveSink {
     static final int LINE = 0;
     static final int FILLED = 1;
     static final int WIRE = 2;
-    /** Numbers per vertex: panel x, panel y, world z, r, g, b. */
-    static final int VERTEX = Vertex.NUMBERS;
-    /** Numbers per primitive: room for a polygon's three vertices. */
-    static final int STRIDE = 3 * VERTEX;
+    /** Numbers per primitive: room for a polygon's three vertices (panel x, panel y, world z, r, g, b each). */
+    static final int STRIDE = 3 * Vertex.NUMBERS;
 
     private final Drawable panel;
     private final LineRenderer lines;
@@ -40,7 +38,7 @@ final class Painter implements PrimitiveSink {
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
     void draw(int kind, double[] p, int at) {
         switch (kind) {
-            case LINE -> lines.drawLine(p, at, at + VERTEX, panel);
+            case LINE -> lines.drawLine(p, at, at + Vertex.NUMBERS, panel);
             case FILLED -> filled.drawPolygon(p, at, panel);
             case WIRE -> wire.drawPolygon(p, at, panel);
             default -> throw new IllegalArgumentException("primitive kind " + kind);

@@ -9,7 +9,7 @@ interface PrimitiveSink {
 
     /**
      * @param kind {@link Painter#LINE}, {@link Painter#FILLED} or {@link Painter#WIRE}
-     * @param p the vertices in panel space, {@link Painter#VERTEX} numbers each
+     * @param p the vertices in panel space, {@link simpview.geometry.Vertex#NUMBERS} numbers each
      *     (x, y, z, r, g, b); read before the call returns, never kept
      */
     void add(int kind, double[] p);

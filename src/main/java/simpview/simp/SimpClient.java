@@ -115,7 +115,7 @@ public final class SimpClient {
     private void toPanel(Command c, int count) {
         for (int k = 0; k < count; k++) {
             int i = 3 * k;
-            int o = Painter.VERTEX * k;
+            int o = Vertex.NUMBERS * k;
             primitive[o + Vertex.X] = ViewVolume.toPanel(world[i]);
             primitive[o + Vertex.Y] = ViewVolume.toPanel(world[i + 1]);
             primitive[o + Vertex.Z] = world[i + 2];
