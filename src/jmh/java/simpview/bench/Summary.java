@@ -88,7 +88,57 @@ public final class Summary {
             }
             sb.append(" | ").append(verdict(row, our, ratio)).append(" | ").append(allocation(ours)).append(" |\n");
         }
-        return sb.toString();
+        return sb.append(stages(results)).toString();
+    }
+
+    private static final String[] SCENES = {"mesh", "page7"};
+    private static final String[] STAGES = {"renderer", "scissor", "zbuffer", "depthcue", "panel", "image"};
+
+    /**
+     * The ChainStages profile, when the run had it: each cut's time and what
+     * the stage added to the one before.
+     */
+    @SuppressWarnings("unchecked")
+    private static String stages(List<Object> results) {
+        StringBuilder sb = new StringBuilder();
+        double[] before = new double[SCENES.length];
+        for (String stage : STAGES) {
+            StringBuilder line = new StringBuilder("| ").append(stage);
+            boolean any = false;
+            for (int i = 0; i < SCENES.length; i++) {
+                Map<String, Object> r = findStage(results, SCENES[i], stage);
+                if (r == null) {
+                    line.append(" | | ");
+                    continue;
+                }
+                any = true;
+                double ms = ((Number) ((Map<String, Object>) r.get("primaryMetric")).get("score")).doubleValue();
+                line.append(String.format(Locale.ROOT, " | %.2f ms | %+.2f ms", ms, ms - before[i]));
+                before[i] = ms;
+            }
+            if (any) {
+                sb.append(line).append(" |\n");
+            }
+        }
+        if (sb.length() == 0) {
+            return "";
+        }
+        return "\nChainStages (the chain cut after each stage; mean of the iterations):\n\n"
+                + "| cut after | 100,000-triangle mesh | stage adds | page 7 | stage adds |\n"
+                + "|---|---:|---:|---:|---:|\n" + sb;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Map<String, Object> findStage(List<Object> results, String scene, String stage) {
+        for (Object o : results) {
+            Map<String, Object> r = (Map<String, Object>) o;
+            Map<String, Object> params = (Map<String, Object>) r.get("params");
+            if (r.get("benchmark").equals(B + "ChainStages.draw") && params != null
+                    && scene.equals(params.get("scene")) && stage.equals(params.get("stage"))) {
+                return r;
+            }
+        }
+        return null;
     }
 
     private static String verdict(Row row, double our, double ratio) {

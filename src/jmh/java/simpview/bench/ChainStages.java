@@ -1,0 +1,148 @@
+package simpview.bench;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import simpview.geometry.Vertex;
+import simpview.raster.DepthCueDrawable;
+import simpview.raster.Drawable;
+import simpview.raster.ImageDrawable;
+import simpview.raster.PageCanvas;
+import simpview.raster.PanelDrawable;
+import simpview.raster.Rgb;
+import simpview.raster.ScissorDrawable;
+import simpview.raster.Span;
+import simpview.raster.ZBuffer;
+import simpview.raster.ZBufferDrawable;
+import simpview.render.FilledPolygonRenderer;
+import simpview.simp.SceneException;
+import simpview.simp.SceneMonitor;
+import simpview.simp.SceneRenderer;
+
+/**
+ * Where the time goes: the small-triangle mesh, or page 7's scene, drawn
+ * through the SIMP pages' chain (scissor, z-buffer, depth cue, panel, image)
+ * cut after one stage, the rest replaced by a sink that takes each span and
+ * does nothing with it. One stage's time minus the one before is what that
+ * stage costs. The sink says it needs no colour, as the depth cue does, so
+ * the renderer does the same work at every cut. One op is one drawing of the
+ * whole mesh or scene; the z-buffer is reset before each, outside the timing.
+ * Not part of the default {@code gradle jmh} (it takes another 90 s): run it
+ * with {@code gradle jmh -PjmhArgs=ChainStages}.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 3, time = 1)
+@Fork(1)
+public class ChainStages {
+
+    @Param({"mesh", "page7"})
+    public String scene;
+
+    @Param({"renderer", "scissor", "zbuffer", "depthcue", "panel", "image"})
+    public String stage;
+
+    private final ZBuffer zbuffer = new ZBuffer(PageCanvas.PANEL, PageCanvas.PANEL);
+    private final BufferedImage surface = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE, BufferedImage.TYPE_INT_RGB);
+    private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
+    private Drawable chain;
+    private double[] mesh;
+    private Path page7;
+
+    @Setup(Level.Trial)
+    public void setUp() throws SceneException {
+        chain = cutAfter(stage);
+        if (scene.equals("mesh")) {
+            mesh = Geometry.mesh().numbers;
+        } else {
+            page7 = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"), "page7.simp");
+            draw(); // fails the trial at once if the scene cannot be drawn
+        }
+    }
+
+    private Drawable cutAfter(String last) {
+        Drawable image = last.equals("image") ? new ImageDrawable(surface) : new Sink(PageCanvas.SIZE);
+        Drawable panel = last.equals("panel") || last.equals("image")
+                ? new PanelDrawable(image, PageCanvas.MARGIN, PageCanvas.MARGIN, PageCanvas.PANEL)
+                : new Sink(PageCanvas.PANEL);
+        Drawable cue = switch (last) {
+            case "renderer", "scissor", "zbuffer" -> new Sink(PageCanvas.PANEL);
+            default -> new DepthCueDrawable(Rgb.WHITE, Rgb.BLACK, panel);
+        };
+        Drawable depth = last.equals("renderer") || last.equals("scissor") ? cue : new ZBufferDrawable(zbuffer, cue);
+        return last.equals("renderer") ? depth : new ScissorDrawable(depth);
+    }
+
+    @Setup(Level.Invocation)
+    public void resetDepth() {
+        zbuffer.reset();
+    }
+
+    @Benchmark
+    public Drawable draw() throws SceneException {
+        if (mesh != null) {
+            double[] p = mesh;
+            for (int at = 0; at < p.length; at += 3 * Vertex.NUMBERS) {
+                renderer.drawPolygon(p, at, chain);
+            }
+        } else {
+            SceneRenderer.draw(page7, chain, SceneMonitor.NONE);
+        }
+        return chain;
+    }
+
+    /** Takes spans and pixels and keeps only their count; needs no colour. */
+    private static final class Sink implements Drawable {
+
+        private final int size;
+        long pixels;
+
+        Sink(int size) {
+            this.size = size;
+        }
+
+        @Override
+        public int width() {
+            return size;
+        }
+
+        @Override
+        public int height() {
+            return size;
+        }
+
+        @Override
+        public boolean usesColour() {
+            return false;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            pixels++;
+        }
+
+        @Override
+        public int getPixel(int x, int y) {
+            return 0;
+        }
+
+        @Override
+        public void fillSpan(Span span) {
+            pixels += span.x1 - span.x0;
+        }
+    }
+}
