@@ -16,6 +16,8 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
+import simpview.pages.PageContext;
+import simpview.pages.Pages;
 import simpview.raster.DepthCueDrawable;
 import simpview.raster.Drawable;
 import simpview.raster.ImageDrawable;
@@ -32,15 +34,16 @@ import simpview.simp.SceneMonitor;
 import simpview.simp.SceneRenderer;
 
 /**
- * Where the time goes: the small-triangle mesh, or page 7's scene, drawn
- * through the SIMP pages' chain (scissor, z-buffer, depth cue, panel, image)
+ * Where the time goes: the small-triangle mesh, or page 5's or page 7's
+ * scene, drawn through the SIMP pages' chain (scissor, z-buffer, depth cue, panel, image)
  * cut after one stage, the rest replaced by a sink that takes each span and
  * does nothing with it. One stage's time minus the one before is what that
  * stage costs. The sink says it needs no colour, as the depth cue does, so
  * the renderer does the same work at every cut. One op is one drawing of the
  * whole mesh or scene; the z-buffer is reset before each, outside the timing.
- * Not part of the default {@code gradle jmh} (it takes another 90 s): run it
- * with {@code gradle jmh -PjmhArgs=ChainStages}.
+ * Not part of the default {@code gradle jmh} (it takes another 2.5 minutes): run it
+ * with {@code gradle jmh -PjmhArgs=ChainStages}. (The interpreter draws lines
+ * pixel by pixel; the sink counts those too.)
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -50,7 +53,8 @@ import simpview.simp.SceneRenderer;
 @Fork(1)
 public class ChainStages {
 
-    @Param({"mesh", "page7"})
+    /** The mesh of SmallTriangles, page 5 (the project's, amber depth cue) or page 7 (the course's, white). */
+    @Param({"mesh", "page5", "page7"})
     public String scene;
 
     @Param({"renderer", "scissor", "zbuffer", "depthcue", "panel", "image"})
@@ -61,27 +65,28 @@ public class ChainStages {
     private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
     private Drawable chain;
     private double[] mesh;
-    private Path page7;
+    private Path file;
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
-        chain = cutAfter(stage);
-        if (scene.equals("mesh")) {
-            mesh = Geometry.mesh().numbers;
-        } else {
-            page7 = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"), "page7.simp");
-            draw(); // fails the trial at once if the scene cannot be drawn
+        switch (scene) {
+            case "mesh" -> mesh = Geometry.mesh().numbers;
+            case "page5" -> file = PageContext.defaultSimpDir().resolve("page5.simp");
+            case "page7" -> file = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"), "page7.simp");
+            default -> throw new IllegalArgumentException("no scene " + scene);
         }
+        chain = cutAfter(stage, scene.equals("page5") ? Pages.PAGE5_NEAR : Rgb.WHITE);
+        draw(); // fails the trial at once if the scene cannot be drawn
     }
 
-    private Drawable cutAfter(String last) {
+    private Drawable cutAfter(String last, Rgb near) {
         Drawable image = last.equals("image") ? new ImageDrawable(surface) : new Sink(PageCanvas.SIZE);
         Drawable panel = last.equals("panel") || last.equals("image")
                 ? new PanelDrawable(image, PageCanvas.MARGIN, PageCanvas.MARGIN, PageCanvas.PANEL)
                 : new Sink(PageCanvas.PANEL);
         Drawable cue = switch (last) {
             case "renderer", "scissor", "zbuffer" -> new Sink(PageCanvas.PANEL);
-            default -> new DepthCueDrawable(Rgb.WHITE, Rgb.BLACK, panel);
+            default -> new DepthCueDrawable(near, Rgb.BLACK, panel);
         };
         Drawable depth = last.equals("renderer") || last.equals("scissor") ? cue : new ZBufferDrawable(zbuffer, cue);
         return last.equals("renderer") ? depth : new ScissorDrawable(depth);
@@ -100,7 +105,7 @@ public class ChainStages {
                 renderer.drawPolygon(p, at, chain);
             }
         } else {
-            SceneRenderer.draw(page7, chain, SceneMonitor.NONE);
+            SceneRenderer.draw(file, chain, SceneMonitor.NONE);
         }
         return chain;
     }
