@@ -35,15 +35,16 @@ import simpview.simp.SceneRenderer;
 
 /**
  * Where the time goes: the small-triangle mesh, or page 5's or page 7's
- * scene, drawn through the SIMP pages' chain (scissor, z-buffer, depth cue, panel, image)
- * cut after one stage, the rest replaced by a sink that takes each span and
- * does nothing with it. One stage's time minus the one before is what that
- * stage costs. The sink says it needs no colour, as the depth cue does, so
- * the renderer does the same work at every cut. One op is one drawing of the
- * whole mesh or scene; the z-buffer is reset before each, outside the timing.
- * Not part of the default {@code gradle jmh} (it takes another 2.5 minutes): run it
- * with {@code gradle jmh -PjmhArgs=ChainStages}. (The interpreter draws lines
- * pixel by pixel; the sink counts those too.)
+ * scene, drawn through the SIMP pages' chain (scissor, z-buffer, depth cue,
+ * panel, image) cut after one stage, the rest replaced by a sink that takes
+ * each span (and each line pixel) and does nothing with it. One stage's time
+ * minus the one before is what that stage costs. The sink says it needs no
+ * colour, as the depth cue does, so the renderer does the same work at every
+ * cut. One op is one drawing of the whole mesh or scene; the z-buffer is
+ * reset before each, outside the timing.
+ *
+ * <p>Not part of the default {@code gradle jmh}, which it would make 2.5
+ * minutes longer: run it with {@code gradle jmh -PjmhArgs=ChainStages}.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
