@@ -111,11 +111,10 @@ public class ChainStages {
         return chain;
     }
 
-    /** Takes spans and pixels and keeps only their count; needs no colour. */
+    /** Takes spans and pixels and drops them; needs no colour. */
     private static final class Sink implements Drawable {
 
         private final int size;
-        long pixels;
 
         Sink(int size) {
             this.size = size;
@@ -138,7 +137,7 @@ public class ChainStages {
 
         @Override
         public void setPixel(int x, int y, double z, int argb) {
-            pixels++;
+            // dropped
         }
 
         @Override
@@ -148,7 +147,7 @@ public class ChainStages {
 
         @Override
         public void fillSpan(Span span) {
-            pixels += span.x1 - span.x0;
+            // dropped
         }
     }
 }

@@ -70,8 +70,9 @@ public final class Summary {
         sb.append("| benchmark | simpview (median) | Java2D (median) | simpview / Java2D | target | B/op (simpview) |\n");
         sb.append("|---|---:|---:|---:|---|---:|\n");
         for (Row row : rows()) {
-            Map<String, Object> ours = find(results, row.benchmark(), row.page());
-            Map<String, Object> theirs = row.baseline() == null ? null : find(results, row.baseline(), null);
+            Map<String, Object> ours = find(results, row.benchmark(),
+                    row.page() == null ? Map.of() : Map.of("page", row.page()));
+            Map<String, Object> theirs = row.baseline() == null ? null : find(results, row.baseline(), Map.of());
             sb.append("| ").append(row.label()).append(" | ");
             if (ours == null) {
                 sb.append("not measured (failed or not run) | | | ").append(row.target()).append(" | |\n");
@@ -108,7 +109,7 @@ public final class Summary {
             StringBuilder line = new StringBuilder("| ").append(stage);
             boolean any = false;
             for (int i = 0; i < SCENES.length; i++) {
-                Map<String, Object> r = findStage(results, SCENES[i], stage);
+                Map<String, Object> r = find(results, B + "ChainStages.draw", Map.of("scene", SCENES[i], "stage", stage));
                 if (r == null) {
                     line.append(" | | ");
                     before[i] = Double.NaN;
@@ -133,19 +134,6 @@ public final class Summary {
                 + "|---|---:|---:|---:|---:|---:|---:|\n" + sb;
     }
 
-    @SuppressWarnings("unchecked")
-    private static Map<String, Object> findStage(List<Object> results, String scene, String stage) {
-        for (Object o : results) {
-            Map<String, Object> r = (Map<String, Object>) o;
-            Map<String, Object> params = (Map<String, Object>) r.get("params");
-            if (r.get("benchmark").equals(B + "ChainStages.draw") && params != null
-                    && scene.equals(params.get("scene")) && stage.equals(params.get("stage"))) {
-                return r;
-            }
-        }
-        return null;
-    }
-
     private static String verdict(Row row, double our, double ratio) {
         if (row.target().isEmpty()) {
             return "";
@@ -163,15 +151,16 @@ public final class Summary {
         return row.target() + (met ? ": met" : ": MISSED");
     }
 
+    /** The result of {@code benchmark} run with every parameter in {@code params} (none: the first run). */
     @SuppressWarnings("unchecked")
-    private static Map<String, Object> find(List<Object> results, String benchmark, String page) {
+    private static Map<String, Object> find(List<Object> results, String benchmark, Map<String, String> params) {
         for (Object o : results) {
             Map<String, Object> r = (Map<String, Object>) o;
             if (!benchmark.equals(r.get("benchmark"))) {
                 continue;
             }
-            Map<String, Object> params = (Map<String, Object>) r.get("params");
-            if (page == null || params != null && page.equals(params.get("page"))) {
+            Map<String, Object> had = (Map<String, Object>) r.get("params");
+            if (params.entrySet().stream().allMatch(p -> had != null && p.getValue().equals(had.get(p.getKey())))) {
                 return r;
             }
         }
