@@ -5,7 +5,7 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /**
  * The two surfaces a raster benchmark compares: our page canvas and a Java2D

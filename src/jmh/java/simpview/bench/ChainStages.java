@@ -18,20 +18,20 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
 import simpview.pages.PageContext;
 import simpview.pages.Pages;
-import simpview.raster.DepthCueDrawable;
-import simpview.raster.Drawable;
-import simpview.raster.ImageDrawable;
-import simpview.raster.PageCanvas;
-import simpview.raster.PanelDrawable;
-import simpview.raster.Rgb;
-import simpview.raster.ScissorDrawable;
-import simpview.raster.Span;
-import simpview.raster.ZBuffer;
-import simpview.raster.ZBufferDrawable;
-import simpview.render.FilledPolygonRenderer;
-import simpview.simp.SceneException;
-import simpview.simp.SceneMonitor;
-import simpview.simp.SceneRenderer;
+import simpview.surface.DepthCueDrawable;
+import simpview.surface.Drawable;
+import simpview.surface.ImageDrawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.PanelDrawable;
+import simpview.surface.Rgb;
+import simpview.surface.ScissorDrawable;
+import simpview.surface.Span;
+import simpview.surface.ZBuffer;
+import simpview.surface.ZBufferDrawable;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.scene.simp.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
 
 /**
  * Where the time goes: the small-triangle mesh, or page 5's or page 7's

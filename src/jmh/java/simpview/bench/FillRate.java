@@ -11,10 +11,10 @@ import org.openjdk.jmh.annotations.OperationsPerInvocation;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
-import simpview.raster.Drawable;
-import simpview.raster.PageCanvas;
-import simpview.raster.Rgb;
-import simpview.render.FilledPolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+import simpview.raster.FilledPolygonRenderer;
 
 /**
  * Fill rate: two triangles covering the whole 650x650 panel. Ours blerps,

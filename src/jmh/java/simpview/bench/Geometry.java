@@ -3,7 +3,7 @@ package simpview.bench;
 import java.awt.Color;
 import java.util.Random;
 import simpview.geometry.Vertex;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /**
  * The geometry the raster benchmarks share with their Java2D baselines, made

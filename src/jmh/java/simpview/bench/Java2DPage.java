@@ -4,7 +4,7 @@ import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /** The Java2D baseline's page: the same image type and size as ours, antialiasing off. */
 final class Java2DPage {

@@ -11,10 +11,10 @@ import org.openjdk.jmh.annotations.OperationsPerInvocation;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Vertex;
-import simpview.raster.Drawable;
-import simpview.raster.PageCanvas;
-import simpview.raster.Rgb;
-import simpview.render.DdaLineRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+import simpview.raster.DdaLineRenderer;
 
 /**
  * 100,000 random lines between pixel centres of the panel (seed 7, about 340

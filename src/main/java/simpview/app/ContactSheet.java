@@ -6,7 +6,7 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.util.List;
-import simpview.raster.Colors;
+import simpview.surface.Colors;
 
 /**
  * Several finished pages side by side at half size, each with its label:

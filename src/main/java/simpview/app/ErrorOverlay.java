@@ -7,7 +7,7 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.util.ArrayList;
 import java.util.List;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /**
  * A scene error drawn over the bottom of the page: a box with the message in

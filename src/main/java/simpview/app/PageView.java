@@ -5,7 +5,7 @@ import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import javax.swing.JComponent;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /**
  * The page at 1:1: the finished image is blitted unscaled, and a scene

@@ -2,7 +2,7 @@ package simpview.app;
 
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
-import simpview.raster.Rgb;
+import simpview.surface.Rgb;
 
 /** Reads a colour option written {@code r,g,b}, each channel from 0 to 1 as in SIMP files. */
 final class RgbConverter implements ITypeConverter<Rgb> {

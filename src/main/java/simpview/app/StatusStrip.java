@@ -9,7 +9,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
 import javax.swing.Timer;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /**
  * The line under the page: key hints and messages, or, while a picture takes

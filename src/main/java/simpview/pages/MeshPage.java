@@ -1,11 +1,11 @@
 package simpview.pages;
 
-import simpview.raster.Drawable;
-import simpview.raster.PageCanvas;
-import simpview.render.DdaLineRenderer;
-import simpview.render.FilledPolygonRenderer;
-import simpview.render.PolygonRenderer;
-import simpview.render.WireframePolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.raster.DdaLineRenderer;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.raster.PolygonRenderer;
+import simpview.raster.WireframePolygonRenderer;
 
 /** Pages 1 and 2: the perturbed mesh with random vertex colours, as lines or filled. */
 public final class MeshPage implements Page {

@@ -1,7 +1,7 @@
 package simpview.pages;
 
 import java.nio.file.Path;
-import simpview.simp.SceneMonitor;
+import simpview.scene.simp.SceneMonitor;
 
 /**
  * What a page needs besides its canvas.

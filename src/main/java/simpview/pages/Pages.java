@@ -1,7 +1,7 @@
 package simpview.pages;
 
 import java.util.List;
-import simpview.raster.Rgb;
+import simpview.surface.Rgb;
 
 /** The eight pages, in order. Page n is {@code all().get(n - 1)}. */
 public final class Pages {

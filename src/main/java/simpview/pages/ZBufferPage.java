@@ -2,9 +2,9 @@ package simpview.pages;
 
 import java.util.Random;
 import simpview.geometry.Vertex;
-import simpview.raster.Drawable;
-import simpview.raster.PageCanvas;
-import simpview.render.FilledPolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.raster.FilledPolygonRenderer;
 
 /**
  * Page 3: six grey regular triangles, v = 1, .85, .7, .55, .4, .25 in that

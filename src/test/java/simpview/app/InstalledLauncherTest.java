@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.simp.SceneMonitor;
+import simpview.scene.simp.SceneMonitor;
 
 /**
  * The start script of an installed simpview ({@code gradle installDist},

@@ -19,7 +19,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 class MainCommandLineTest {
 

@@ -5,7 +5,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import simpview.simp.SceneCancelledException;
+import simpview.scene.simp.SceneCancelledException;
 
 /**
  * Stand-ins for the SIMP interpreter, so the window's own machinery

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.simp.SceneException;
+import simpview.scene.simp.SceneException;
 
 /** Scene folders and files the tests use. */
 final class TestScenes {

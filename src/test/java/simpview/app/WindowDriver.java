@@ -20,7 +20,7 @@ import java.util.function.Predicate;
 import javax.imageio.ImageIO;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
-import simpview.raster.PageCanvas;
+import simpview.surface.PageCanvas;
 
 /** Drives the real window the way a person would: java.awt.Robot clicks, keys and screen captures. */
 final class WindowDriver {

@@ -16,10 +16,10 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.statistics.Statistics;
 import simpview.geometry.Vertex;
-import simpview.raster.Drawable;
-import simpview.raster.PageCanvas;
-import simpview.raster.Rgb;
-import simpview.render.FilledPolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+import simpview.raster.FilledPolygonRenderer;
 import simpview.testing.CountingDrawable;
 
 /**

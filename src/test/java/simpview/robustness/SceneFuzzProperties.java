@@ -32,7 +32,7 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 import net.jqwik.api.lifecycle.BeforeTry;
 import net.jqwik.api.statistics.Statistics;
-import simpview.simp.SceneException;
+import simpview.scene.simp.SceneException;
 
 /**
  * Scene fuzzing: random token streams, mutated real scenes, webs of `file`

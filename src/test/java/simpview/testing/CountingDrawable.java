@@ -1,6 +1,6 @@
 package simpview.testing;
 
-import simpview.raster.Drawable;
+import simpview.surface.Drawable;
 
 /**
  * A test surface that counts writes per pixel and remembers the last colour

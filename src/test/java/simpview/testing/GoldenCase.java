@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import simpview.pages.PageContext;
-import simpview.simp.SceneMonitor;
+import simpview.scene.simp.SceneMonitor;
 
 /**
  * One golden image: a page rendered with a given seed and scene folder.

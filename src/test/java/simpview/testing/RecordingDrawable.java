@@ -2,7 +2,7 @@ package simpview.testing;
 
 import java.util.ArrayList;
 import java.util.List;
-import simpview.raster.Drawable;
+import simpview.surface.Drawable;
 
 /**
  * A test surface that keeps every write in the order it came, for tests

@@ -1,0 +1,245 @@
+package simpview.scene.simp;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.function.Function;
+
+/**
+ * The files being read, innermost on top: {@code file} pushes, the end of a
+ * file pops, and commands always come from the top. An explicit stack, so an
+ * include chain of any depth costs heap, never Java call stack.
+ *
+ * <p>File descriptors: only the top {@link #MAX_OPEN} readers keep their file
+ * open; a deeper one is suspended (closed, its offset remembered) and reopens
+ * where it was when it is on top again. Small files, which scenes include
+ * over and over (a cube, a sphere), are read whole once and kept in memory
+ * for the rest of the scene, up to a fixed budget: their bytes, and once
+ * read to the end, their commands, which later includes replay without
+ * scanning the bytes again. Where a name leads is also looked up only once.
+ */
+final class FileStack implements AutoCloseable {
+
+    static final int MAX_OPEN = 8;
+    static final int SMALL_FILE = LineSource.CHUNK;
+    private static final long CACHE_BUDGET = 8L << 20;
+
+    private final List<SimpReader> readers = new ArrayList<>();
+    private final List<Path> realPaths = new ArrayList<>();
+    private final Set<Path> onStack = new HashSet<>();
+    private final Map<Path, byte[]> smallFiles = new HashMap<>();
+    private final Map<Name, Found> found = new HashMap<>();
+    private final Map<Path, Recording> recordings = new HashMap<>();
+    private final long smallFileLimit;
+    private long cachedBytes;
+    private long linesOfFinishedFiles;
+
+    FileStack() {
+        this(SMALL_FILE);
+    }
+
+    /** @param smallFileLimit files up to this many bytes are read whole and kept; -1 streams every file */
+    FileStack(long smallFileLimit) {
+        this.smallFileLimit = smallFileLimit;
+    }
+
+    /** Starts with the scene's top file. */
+    void openTop(Path file) throws SceneException {
+        Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
+        push(open(file, real), real);
+    }
+
+    /**
+     * Reads the next command of the innermost file, going back to the file
+     * that included it at each end of file.
+     *
+     * @return false when the top file is finished
+     */
+    boolean next(Command c) throws SceneException {
+        while (!readers.isEmpty()) {
+            if (top().next(c)) {
+                return true;
+            }
+            pop();
+        }
+        return false;
+    }
+
+    /** Acts on a {@code file} command just read from the top file. */
+    void include(Command c) throws SceneException {
+        SimpReader from = top();
+        Name name = new Name(from.file().getParent(), c.fileName);
+        Found found = found(name, from, c);
+        if (onStack.contains(found.real)) {
+            throw from.error(c.argumentIndex, "file cycle: " + chain(found.real));
+        }
+        SimpReader reader;
+        try {
+            reader = open(found.path, found.real);
+        } catch (SceneException e) {
+            throw from.error(c.argumentIndex, e.problem());
+        }
+        push(reader, found.real);
+    }
+
+    /**
+     * Where a name leads, looked up on the file system once per scene: finding
+     * the real path costs a system call per folder, and scenes name the same
+     * small files hundreds of times. A lookup that fails ends the scene, so
+     * only successes are kept.
+     */
+    private Found found(Name name, SimpReader from, Command c) throws SceneException {
+        Found known = found.get(name);
+        if (known != null) {
+            return known;
+        }
+        Path candidate = resolve(from, c);
+        Path real = realFile(candidate, problem -> from.error(c.argumentIndex, problem));
+        Found result = new Found(candidate, real);
+        found.put(name, result);
+        return result;
+    }
+
+    /** A file name as a {@code file} command in a file of folder {@code dir} gives it (dir may be null). */
+    private record Name(Path dir, String name) {
+    }
+
+    /** The path to show in messages, and the real path that identifies the file. */
+    private record Found(Path path, Path real) {
+    }
+
+    private static Path resolve(SimpReader from, Command c) throws SceneException {
+        String name = c.fileName + ".simp";
+        try {
+            Path dir = from.file().getParent();
+            return dir == null ? Path.of(name) : dir.resolve(name);
+        } catch (InvalidPathException e) {
+            throw from.error(c.argumentIndex, "not a valid file name: '" + c.fileName + "'");
+        }
+    }
+
+    /**
+     * Where {@code candidate} really leads, if that is a file to read. The top
+     * file and an included one are checked here alike, so a missing file or a
+     * folder gets the same words wherever it is named; {@code error} places
+     * the problem (a top file has no line, an include its command's column).
+     */
+    private static Path realFile(Path candidate, Function<String, SceneException> error) throws SceneException {
+        String shown = candidate.toAbsolutePath().normalize().toString();
+        Path real;
+        try {
+            real = candidate.toRealPath();
+        } catch (NoSuchFileException e) {
+            throw error.apply("file not found: " + shown);
+        } catch (IOException e) {
+            throw error.apply("cannot open " + shown + ": " + e.getMessage());
+        }
+        if (!Files.isRegularFile(real)) {
+            throw error.apply((Files.isDirectory(real) ? "not a file but a folder: " : "not a regular file: ") + shown);
+        }
+        return real;
+    }
+
+    /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */
+    private String chain(Path real) {
+        StringBuilder sb = new StringBuilder();
+        for (int k = realPaths.indexOf(real); k < readers.size(); k++) {
+            sb.append(readers.get(k).file().getFileName()).append(" → ");
+        }
+        return sb.append(real.getFileName()).toString();
+    }
+
+    private SimpReader open(Path file, Path real) throws SceneException {
+        byte[] cached = smallFiles.get(real);
+        if (cached != null) {
+            Recording recording = recordings.get(real);
+            return recording != null ? SimpReader.replaying(file, cached, recording)
+                    : SimpReader.recording(file, cached);
+        }
+        try {
+            long size = Files.size(real);
+            if (size <= smallFileLimit && cachedBytes + size <= CACHE_BUDGET) {
+                byte[] content = Files.readAllBytes(real);
+                smallFiles.put(real, content);
+                cachedBytes += content.length;
+                return SimpReader.recording(file, content);
+            }
+        } catch (IOException e) {
+            throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + e.getMessage());
+        }
+        return SimpReader.open(file);
+    }
+
+    private void push(SimpReader reader, Path real) throws SceneException {
+        readers.add(reader);
+        realPaths.add(real);
+        onStack.add(real);
+        int deepestOpen = readers.size() - 1 - MAX_OPEN;
+        if (deepestOpen >= 0) {
+            readers.get(deepestOpen).suspend();
+        }
+    }
+
+    private void pop() {
+        SimpReader done = readers.remove(readers.size() - 1);
+        done.close();
+        linesOfFinishedFiles += done.linesRead();
+        Path real = realPaths.remove(realPaths.size() - 1);
+        onStack.remove(real);
+        keep(real, done.finishedRecording());
+    }
+
+    /** Keeps a small file's commands, once read to the end without an error, while the budget lasts. */
+    private void keep(Path real, Recording recording) {
+        if (recording != null && !recordings.containsKey(real) && cachedBytes + recording.bytes() <= CACHE_BUDGET) {
+            recordings.put(real, recording);
+            cachedBytes += recording.bytes();
+        }
+    }
+
+    private SimpReader top() {
+        return readers.get(readers.size() - 1);
+    }
+
+    /** The file the last command came from. */
+    SimpReader current() {
+        return top();
+    }
+
+    int depth() {
+        return readers.size();
+    }
+
+    /** How many of the readers hold an open file now (for tests). */
+    int openFiles() {
+        int open = 0;
+        for (SimpReader r : readers) {
+            open += r.holdsFile() ? 1 : 0;
+        }
+        return open;
+    }
+
+    /** Physical lines read so far over all files. */
+    long linesRead() {
+        long n = linesOfFinishedFiles;
+        for (SimpReader r : readers) {
+            n += r.linesRead();
+        }
+        return n;
+    }
+
+    @Override
+    public void close() {
+        while (!readers.isEmpty()) {
+            pop();
+        }
+    }
+}

@@ -1,0 +1,76 @@
+package simpview.scene.simp;
+
+import java.nio.file.Path;
+
+/**
+ * Bad input in a SIMP scene: where it is (file, 1-based line and column), the
+ * line as written, and what was expected there. Its message is meant for a
+ * person and is complete on its own; no stack trace is ever shown for it.
+ */
+public final class SceneException extends Exception {
+
+    private static final long serialVersionUID = 1L;
+
+    private final Path file;
+    private final int line;
+    private final int column;
+    private final String lineText;
+    private final String problem;
+
+    /**
+     * @param file the file at fault (may be null when there is none)
+     * @param line 1-based; 0 when the problem is the file as a whole
+     * @param column 1-based; 0 when the problem is the line as a whole
+     * @param lineText the line as written, or "" when there is none
+     * @param problem what is wrong and what was expected, e.g. "expected a number, found 'x'"
+     */
+    public SceneException(Path file, int line, int column, String lineText, String problem) {
+        super(format(file, line, column, lineText, problem));
+        this.file = file;
+        this.line = line;
+        this.column = column;
+        this.lineText = lineText == null ? "" : lineText;
+        this.problem = problem;
+    }
+
+    private static String format(Path file, int line, int column, String lineText, String problem) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(file == null ? "<scene>" : file.toString());
+        if (line > 0) {
+            sb.append(':').append(line);
+            if (column > 0) {
+                sb.append(':').append(column);
+            }
+        }
+        sb.append(": ").append(problem);
+        if (line > 0 && lineText != null && !lineText.isEmpty()) {
+            String shown = lineText.replace('\t', ' ');
+            sb.append('\n').append("    ").append(shown);
+            if (column > 0) {
+                sb.append('\n').append("    ").append(" ".repeat(Math.min(column - 1, shown.length()))).append('^');
+            }
+        }
+        return sb.toString();
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    public int line() {
+        return line;
+    }
+
+    public int column() {
+        return column;
+    }
+
+    public String lineText() {
+        return lineText;
+    }
+
+    /** What is wrong, without the location: "expected a number, found 'x'". */
+    public String problem() {
+        return problem;
+    }
+}

@@ -1,0 +1,24 @@
+package simpview.scene.simp;
+
+/**
+ * What a scene being drawn tells the outside, and how it can be stopped.
+ * Called on the thread that draws the scene.
+ */
+public interface SceneMonitor {
+
+    /** Nothing watches and nothing cancels. */
+    SceneMonitor NONE = new SceneMonitor() { };
+
+    /** Called now and then with the number of lines read so far, over all files. */
+    default void linesRead(long lines) {
+    }
+
+    /** Polled now and then; true stops the scene with a {@link SceneCancelledException}. */
+    default boolean cancelled() {
+        return false;
+    }
+
+    /** Something worth telling that is not an error, e.g. a '{' never closed. */
+    default void warning(String message) {
+    }
+}

@@ -1,0 +1,109 @@
+package simpview.scene.simp;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * The reading loop: takes commands from the client's file stack, one at a
+ * time, and has the client carry them out. It tells the monitor how far it
+ * got and stops when the monitor asks it to.
+ *
+ * <p>A big scene is read on a second thread ({@link ReadAhead}) while this
+ * one draws; the monitor sees the same calls, in the same places, either way.
+ */
+public final class SimpInterpreter {
+
+    /** Commands between two progress reports and cancel polls (a power of two). */
+    static final int COMMANDS_PER_POLL = 1024;
+    private static final long POLL_MASK = COMMANDS_PER_POLL - 1;
+    /**
+     * Top files from this size on are read ahead on a second thread. Smaller
+     * scenes take a few milliseconds at most, less than starting a thread saves.
+     */
+    static final long READ_AHEAD_FROM = 1 << 20;
+
+    private final SimpClient client;
+    private final SceneMonitor monitor;
+    private final long readAheadFrom;
+
+    public SimpInterpreter(SimpClient client, SceneMonitor monitor) {
+        this(client, monitor, READ_AHEAD_FROM);
+    }
+
+    /** @param readAheadFrom top-file size from which to read on a second thread; Long.MAX_VALUE never */
+    SimpInterpreter(SimpClient client, SceneMonitor monitor, long readAheadFrom) {
+        this.client = client;
+        this.monitor = monitor;
+        this.readAheadFrom = readAheadFrom;
+    }
+
+    /** Reads {@code file} and everything it includes, to the end. */
+    public void run(Path file) throws SceneException {
+        if (readAhead(file)) {
+            runReadingAhead(file);
+        } else {
+            runHere(file);
+        }
+    }
+
+    private boolean readAhead(Path file) {
+        try {
+            return Runtime.getRuntime().availableProcessors() > 1 && Files.size(file) >= readAheadFrom;
+        } catch (IOException | SecurityException e) {
+            return false; // reading here reports the problem properly
+        }
+    }
+
+    private void runHere(Path file) throws SceneException {
+        FileStack files = client.files();
+        try {
+            files.openTop(file);
+            Command c = new Command();
+            long commands = 0;
+            while (files.next(c)) {
+                client.execute(c);
+                if ((++commands & POLL_MASK) == 0) {
+                    report(files.linesRead());
+                }
+            }
+            finish(file, files.linesRead(), client.openBraces());
+        } finally {
+            files.close();
+        }
+    }
+
+    /** Draws the batches the reading thread fills; each ends where runHere would report. */
+    private void runReadingAhead(Path file) throws SceneException {
+        Painter painter = client.painter();
+        try (ReadAhead ahead = ReadAhead.start(client, file)) {
+            while (true) {
+                PrimitiveBatch batch = ahead.next();
+                batch.drawAll(painter);
+                if (batch.failure != null) {
+                    ReadAhead.rethrow(batch.failure);
+                }
+                if (batch.last) {
+                    finish(file, batch.linesRead, batch.openBraces);
+                    return;
+                }
+                report(batch.linesRead);
+                ahead.recycle(batch);
+            }
+        }
+    }
+
+    private void report(long linesRead) {
+        monitor.linesRead(linesRead);
+        if (monitor.cancelled()) {
+            throw new SceneCancelledException();
+        }
+    }
+
+    private void finish(Path file, long linesRead, int openBraces) {
+        monitor.linesRead(linesRead);
+        if (openBraces > 0) {
+            monitor.warning(file.getFileName() + ": " + openBraces + " '{' never closed by the end of the file");
+        }
+    }
+}

@@ -1,0 +1,46 @@
+package simpview.surface;
+
+/**
+ * A surface of pixels that a renderer writes to. Decorators wrap one and
+ * change what a write does (test depth, replace colour, drop writes, move the
+ * origin); the chain ends at an {@link ImageDrawable}.
+ *
+ * <p>Two ways to write, with the same meaning: {@link #setPixel} for one
+ * pixel, {@link #fillSpan} for a run of pixels on one row whose depth and
+ * colour vary linearly. A decorator overrides both so that the fast path and
+ * the pixel path draw the same picture.
+ *
+ * <p>A drawable's size never changes: a decorator may read its delegate's
+ * width and height once, when it is made.
+ */
+public interface Drawable {
+
+    int width();
+
+    int height();
+
+    /**
+     * Writes one pixel. {@code z} is the world-space depth of the sample;
+     * {@code argb} its colour, 0xAARRGGBB.
+     */
+    void setPixel(int x, int y, double z, int argb);
+
+    /**
+     * False when the colour a write carries can never reach the surface,
+     * because a decorator on the way replaces it (depth cueing does): a
+     * renderer may then leave colour out. Like the size, it never changes.
+     */
+    default boolean usesColour() {
+        return true;
+    }
+
+    /** The colour now at (x, y), 0xAARRGGBB; 0 outside the surface. */
+    int getPixel(int x, int y);
+
+    /** Writes every pixel of the span; the default goes pixel by pixel. */
+    default void fillSpan(Span span) {
+        for (int x = span.x0; x < span.x1; x++) {
+            setPixel(x, span.y, span.zAt(x), span.argbAt(x));
+        }
+    }
+}

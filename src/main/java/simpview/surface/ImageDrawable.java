@@ -1,0 +1,170 @@
+package simpview.surface;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+
+/**
+ * The end of every chain: a BufferedImage written through its int[] raster.
+ * Image coordinates: origin top-left, y down. Writes outside are dropped.
+ */
+public final class ImageDrawable implements Drawable {
+
+    /** Spans shorter than this skip the clamp-free path: 6 conversions to check it, 3 per pixel to clamp. */
+    private static final int SHORT_SPAN = 3;
+
+    private final BufferedImage image;
+    private final int[] pixels;
+    private final int width;
+    private final int height;
+
+    public ImageDrawable(BufferedImage image) {
+        int type = image.getType();
+        if (type != BufferedImage.TYPE_INT_RGB && type != BufferedImage.TYPE_INT_ARGB) {
+            throw new IllegalArgumentException("needs an INT_RGB or INT_ARGB image, got type " + type);
+        }
+        this.image = image;
+        this.pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        this.width = image.getWidth();
+        this.height = image.getHeight();
+    }
+
+    public BufferedImage image() {
+        return image;
+    }
+
+    @Override
+    public int width() {
+        return width;
+    }
+
+    @Override
+    public int height() {
+        return height;
+    }
+
+    @Override
+    public void setPixel(int x, int y, double z, int argb) {
+        if (x >= 0 && x < width && y >= 0 && y < height) {
+            pixels[y * width + x] = argb;
+        }
+    }
+
+    @Override
+    public int getPixel(int x, int y) {
+        if (x >= 0 && x < width && y >= 0 && y < height) {
+            return pixels[y * width + x] | 0xFF000000;
+        }
+        return 0;
+    }
+
+    /**
+     * Each pixel gets {@code Colors.packLevels(c + k * dc, ...)} with
+     * {@code k = x - xBase}, as {@link Span#argbAt} computes it. Every step of
+     * that evaluation (k * dc, + c, + 0.5, the cast to int) is monotone in k,
+     * so a channel whose two end pixels need no clamp needs none in between:
+     * then the loop packs without clamping, and a span of one colour is a fill.
+     * Spans of a few pixels are packed directly: checking their ends would
+     * cost more than the clamps it saves.
+     */
+    @Override
+    public void fillSpan(Span s) {
+        if (s.y < 0 || s.y >= height) {
+            return;
+        }
+        int from = Math.max(s.x0, 0);
+        int to = Math.min(s.x1, width);
+        if (from >= to) {
+            return;
+        }
+        int row = s.y * width;
+        int k0 = from - s.xBase;
+        int k1 = to - 1 - s.xBase;
+        if (s.dr == 0 && s.dg == 0 && s.db == 0) {
+            java.util.Arrays.fill(pixels, row + from, row + to, s.argbAt(from));
+        } else if (to - from >= SHORT_SPAN && inByteRange(s.r, s.dr, k0, k1)
+                && inByteRange(s.g, s.dg, k0, k1) && inByteRange(s.b, s.db, k0, k1)) {
+            if (!packOneShade(s, row, from, to)) {
+                packUnclamped(s, row, from, to);
+            }
+        } else {
+            packClamped(s, row, from, to);
+        }
+    }
+
+    /** True when c + k * dc rounds into [0, 255] without clamping at both k = k0 and k = k1. */
+    private static boolean inByteRange(double c, double dc, int k0, int k1) {
+        int first = (int) (c + k0 * dc + 0.5);
+        int last = (int) (c + k1 * dc + 0.5);
+        return first >= 0 && first <= 255 && last >= 0 && last <= 255;
+    }
+
+    /** Colors.packLevels without the clamp: every channel is known to stay in [0, 255]. */
+    private void packUnclamped(Span s, int row, int from, int to) {
+        int[] p = pixels;
+        double r = s.r;
+        double dr = s.dr;
+        double g = s.g;
+        double dg = s.dg;
+        double b = s.b;
+        double db = s.db;
+        int k = from - s.xBase;
+        for (int i = row + from; i < row + to; i++, k++) {
+            p[i] = 0xFF000000 | (int) (r + k * dr + 0.5) << 16 | (int) (g + k * dg + 0.5) << 8
+                    | (int) (b + k * db + 0.5);
+        }
+    }
+
+    /**
+     * Packs a span whose varying channels all share one value and slope, as
+     * depth cueing towards white or a primary colour makes them: one
+     * conversion per pixel, the level copied into each varying channel. A
+     * channel of slope 0 keeps one level (c + k * 0 is c). Returns false,
+     * packing nothing, for any other span. Channels are known to need no clamp.
+     */
+    private boolean packOneShade(Span s, int row, int from, int to) {
+        double c = s.dr != 0 ? s.r : s.dg != 0 ? s.g : s.b;
+        double dc = s.dr != 0 ? s.dr : s.dg != 0 ? s.dg : s.db;
+        int fixed = 0xFF000000;
+        int copies = 0; // the level times copies sets the level in every varying channel
+        if (s.dr == 0) {
+            fixed |= Colors.level(s.r) << 16;
+        } else if (s.r == c && s.dr == dc) {
+            copies |= 1 << 16;
+        } else {
+            return false;
+        }
+        if (s.dg == 0) {
+            fixed |= Colors.level(s.g) << 8;
+        } else if (s.g == c && s.dg == dc) {
+            copies |= 1 << 8;
+        } else {
+            return false;
+        }
+        if (s.db == 0) {
+            fixed |= Colors.level(s.b);
+        } else if (s.b == c && s.db == dc) {
+            copies |= 1;
+        } else {
+            return false;
+        }
+        int[] p = pixels;
+        int k = from - s.xBase;
+        for (int i = row + from; i < row + to; i++, k++) {
+            p[i] = fixed | (int) (c + k * dc + 0.5) * copies;
+        }
+        return true;
+    }
+
+    private void packClamped(Span s, int row, int from, int to) {
+        for (int x = from; x < to; x++) {
+            pixels[row + x] = s.argbAt(x);
+        }
+    }
+
+    /** Fills the rectangle [x0, x1) x [y0, y1) with one colour. */
+    public void fillRect(int x0, int y0, int x1, int y1, int argb) {
+        for (int y = Math.max(y0, 0); y < Math.min(y1, height); y++) {
+            java.util.Arrays.fill(pixels, y * width + Math.max(x0, 0), y * width + Math.min(x1, width), argb);
+        }
+    }
+}

@@ -1,0 +1,69 @@
+package simpview.surface;
+
+import java.awt.image.BufferedImage;
+import simpview.geometry.ViewVolume;
+
+/**
+ * One page: a 750x750 image with 50-pixel white margins around the 650x650
+ * panel, the panel's drawable (y up) and its z-buffer. A canvas is reused from
+ * page to page; {@link #clear()} gives each page a fresh start.
+ */
+public final class PageCanvas {
+
+    public static final int MARGIN = 50;
+    public static final int PANEL = ViewVolume.PANEL_SIZE;
+    public static final int SIZE = PANEL + 2 * MARGIN;
+
+    private final BufferedImage image;
+    private final ImageDrawable imageDrawable;
+    private final PanelDrawable panel;
+    private final ZBuffer zbuffer;
+
+    public PageCanvas() {
+        image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        imageDrawable = new ImageDrawable(image);
+        panel = new PanelDrawable(imageDrawable, MARGIN, MARGIN, PANEL);
+        zbuffer = new ZBuffer(PANEL, PANEL);
+        clear();
+    }
+
+    /** White margins, black panel, z-buffer at the far plane. Each pixel is written once. */
+    public void clear() {
+        imageDrawable.fillRect(0, 0, SIZE, MARGIN, Colors.WHITE);
+        imageDrawable.fillRect(0, MARGIN + PANEL, SIZE, SIZE, Colors.WHITE);
+        imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
+        imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
+        imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
+        zbuffer.reset();
+    }
+
+    public BufferedImage image() {
+        return image;
+    }
+
+    /** The panel, in panel coordinates: origin bottom-left, y up. */
+    public Drawable panel() {
+        return panel;
+    }
+
+    public ZBuffer zbuffer() {
+        return zbuffer;
+    }
+
+    /** The panel behind the z-buffer and the scissor: what pages 3 and up draw on. */
+    public Drawable depthTested() {
+        return new ScissorDrawable(new ZBufferDrawable(zbuffer, panel));
+    }
+
+    /** The panel behind scissor, z-buffer and depth cue: what a SIMP scene draws on. */
+    public Drawable depthCued(Rgb near, Rgb far) {
+        return new ScissorDrawable(new ZBufferDrawable(zbuffer, new DepthCueDrawable(near, far, panel)));
+    }
+
+    /** A copy of the page as it is now. */
+    public BufferedImage snapshot() {
+        BufferedImage copy = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        copy.setData(image.getRaster());
+        return copy;
+    }
+}

@@ -1,0 +1,212 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.geometry.Vertex;
+import simpview.raster.LineRenderer;
+import simpview.raster.PolygonRenderer;
+
+/** The stack of files: includes, their errors, depth and file descriptors. */
+class FileStackTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void missingFileNamesThePathLookedFor() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "# top", "\tfile \"nothere\"");
+        SceneException e = scene.failure("s");
+        assertEquals(dir.resolve("s.simp"), e.file());
+        assertEquals(2, e.line());
+        assertEquals(7, e.column());
+        assertEquals("\tfile \"nothere\"", e.lineText());
+        assertEquals("file not found: " + dir.resolve("nothere.simp").toAbsolutePath().normalize(), e.problem());
+    }
+
+    @Test
+    void missingTopFileIsAnError() {
+        SceneException e = assertThrows(SceneException.class,
+                () -> SceneRenderer.draw(dir.resolve("absent.simp"), SceneFixture.NOWHERE, SceneMonitor.NONE));
+        assertEquals(0, e.line());
+        assertTrue(e.problem().startsWith("file not found: ") && e.problem().endsWith("absent.simp"), e.problem());
+    }
+
+    @Test
+    void fileCycleNamesTheChain() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("a", "file \"b\"");
+        scene.write("b", "line (0,0,-1) (1,1,-1)", "file a");
+        SceneException e = scene.failure("a");
+        assertEquals(dir.resolve("b.simp"), e.file());
+        assertEquals(2, e.line());
+        assertEquals(6, e.column());
+        assertEquals("file cycle: a.simp → b.simp → a.simp", e.problem());
+        assertEquals(1, scene.lines.size(), "what came before the error was drawn");
+    }
+
+    @Test
+    void fileIncludingItselfIsACycle() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("self", "{", "file self", "}");
+        assertEquals("file cycle: self.simp → self.simp", scene.failure("self").problem());
+    }
+
+    @Test
+    void includingTheSameFileTwiceInARowIsNoCycle() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("leaf", "line (0,0,-1) (1,1,-1)");
+        scene.write("s", "file leaf", "file leaf", "{", "file leaf", "}");
+        scene.run("s");
+        assertEquals(3, scene.lines.size());
+    }
+
+    @Test
+    void folderIsNoSceneFile() throws Exception {
+        Files.createDirectories(dir.resolve("box.simp"));
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "file box");
+        SceneException e = scene.failure("s");
+        assertTrue(e.problem().startsWith("not a file but a folder: "), e.problem());
+        assertEquals(1, e.line());
+    }
+
+    @Test
+    void deviceIsNoSceneFile() throws Exception {
+        Assumptions.assumeTrue(Files.exists(Path.of("/dev/zero")), "no /dev/zero on this system");
+        Files.createSymbolicLink(dir.resolve("zero.simp"), Path.of("/dev/zero"));
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "file zero");
+        assertTrue(scene.failure("s").problem().startsWith("not a regular file: "));
+    }
+
+    @Test
+    void errorsInIncludedFilesNameThatFile() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("bad", "wire", "rotate Q 5");
+        scene.write("s", "{", "file bad", "}");
+        SceneException e = scene.failure("s");
+        assertEquals(dir.resolve("bad.simp"), e.file());
+        assertEquals(2, e.line());
+        assertEquals(8, e.column());
+    }
+
+    /** f0 includes f1 ... includes f(depth-1); each draws a line after its include. */
+    private void writeChain(int depth) throws Exception {
+        for (int i = 0; i < depth; i++) {
+            List<String> lines = new ArrayList<>();
+            lines.add("# level " + i);
+            if (i + 1 < depth) {
+                lines.add("file \"f" + (i + 1) + "\"");
+            }
+            lines.add("line (0, " + i / 10.0 + ", -1) (1, " + i / 10.0 + ", -1)");
+            Files.write(dir.resolve("f" + i + ".simp"), lines);
+        }
+    }
+
+    @Test
+    void includeChainThousandDeepKeepsFewFilesOpen() throws Exception {
+        int depth = 1000;
+        writeChain(depth);
+        FileStack files = new FileStack(-1); // stream every file, as a large one would be
+        int[] mostOpen = {0};
+        int[] deepest = {0};
+        List<Double> order = new ArrayList<>();
+        LineRenderer lines = (p, q, d) -> {
+            order.add(p.y());
+            mostOpen[0] = Math.max(mostOpen[0], files.openFiles());
+            deepest[0] = Math.max(deepest[0], files.depth());
+        };
+        PolygonRenderer none = (p, q, r, d) -> { };
+        SimpClient client = new SimpClient(SceneFixture.NOWHERE, lines, none, none, files);
+        new SimpInterpreter(client, SceneMonitor.NONE).run(dir.resolve("f0.simp"));
+        assertEquals(depth, order.size());
+        assertEquals(depth, deepest[0]);
+        assertTrue(mostOpen[0] <= FileStack.MAX_OPEN, "open files: " + mostOpen[0]);
+        // The innermost file draws first, then each level on the way back out.
+        assertEquals(simpview.geometry.ViewVolume.toPanel((depth - 1) / 10.0), order.get(0));
+        assertEquals(simpview.geometry.ViewVolume.toPanel(0), order.get(depth - 1));
+        assertEquals(0, files.depth());
+    }
+
+    @Test
+    void includeChainThousandDeepFromMemoryToo() throws Exception {
+        writeChain(1000);
+        SceneFixture scene = new SceneFixture(dir);
+        scene.run("f0");
+        assertEquals(1000, scene.lines.size());
+    }
+
+    @Test
+    void suspendedFileGoesOnWhereItLeftOff() throws Exception {
+        // A file longer than one read chunk, suspended in the middle by a deep include.
+        StringBuilder big = new StringBuilder();
+        for (int i = 0; i < 3000; i++) {
+            big.append("line (").append(i / 100.0).append(", 0, -1) (0, 0, -1)").append(" ".repeat(40)).append('\n');
+            if (i == 1500) {
+                big.append("file \"f0\"\n");
+            }
+        }
+        Files.writeString(dir.resolve("big.simp"), big);
+        writeChain(2 * FileStack.MAX_OPEN);
+        SceneFixture scene = new SceneFixture(dir);
+        scene.run("big", new FileStack(-1));
+        assertEquals(3000 + 2 * FileStack.MAX_OPEN, scene.lines.size());
+        List<Double> xs = new ArrayList<>();
+        for (Vertex[] l : scene.lines) {
+            xs.add(l[0].x());
+        }
+        assertEquals(simpview.geometry.ViewVolume.toPanel(15.01), xs.get(1501 + 2 * FileStack.MAX_OPEN));
+        assertEquals(simpview.geometry.ViewVolume.toPanel(29.99), xs.get(xs.size() - 1));
+    }
+
+    @Test
+    void monitorHearsLinesAndCanCancel() throws Exception {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < 10_000; i++) {
+            sb.append("translate 0 0 0\n");
+        }
+        Files.writeString(dir.resolve("long.simp"), sb);
+        List<Long> reports = new ArrayList<>();
+        SceneMonitor cancelLater = new SceneMonitor() {
+            @Override
+            public void linesRead(long lines) {
+                reports.add(lines);
+            }
+
+            @Override
+            public boolean cancelled() {
+                return reports.size() >= 3;
+            }
+        };
+        assertThrows(SceneCancelledException.class,
+                () -> SceneRenderer.draw(dir.resolve("long.simp"), SceneFixture.NOWHERE, cancelLater));
+        assertEquals(3, reports.size());
+        assertTrue(reports.get(0) > 0 && reports.get(2) > reports.get(0), reports.toString());
+        assertTrue(reports.get(2) < 10_000);
+    }
+
+    @Test
+    void monitorHearsTheFinalLineCount() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("leaf", "# one", "wire");
+        scene.write("s", "file leaf", "", "file leaf");
+        long[] last = {0};
+        SceneRenderer.draw(dir.resolve("s.simp"), SceneFixture.NOWHERE, new SceneMonitor() {
+            @Override
+            public void linesRead(long lines) {
+                last[0] = lines;
+            }
+        });
+        assertEquals(3 + 2 + 2, last[0]);
+    }
+}

@@ -1,0 +1,179 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.geometry.Matrix4;
+import simpview.geometry.Vertex;
+import simpview.geometry.ViewVolume;
+
+/** Transforms, the matrix stack and the style, through the real reader and client. */
+class SimpClientTest {
+
+    @TempDir
+    Path dir;
+    private SceneFixture scene;
+
+    @BeforeEach
+    void setUp() {
+        scene = new SceneFixture(dir);
+    }
+
+    private static void assertPanelVertex(double wx, double wy, double wz, Vertex v) {
+        assertEquals(ViewVolume.toPanel(wx), v.x(), 1e-12, "x");
+        assertEquals(ViewVolume.toPanel(wy), v.y(), 1e-12, "y");
+        assertEquals(wz, v.z(), 1e-12, "z");
+    }
+
+    private Matrix4 ctmAfter(String... lines) throws Exception {
+        scene.write("s", lines);
+        return scene.run("s").client.ctm();
+    }
+
+    @Test
+    void rotateZQuarterTurnTakesXToY() throws Exception {
+        Matrix4 m = ctmAfter("rotate Z 90");
+        assertEquals(Vertex.of(0, 1, 0), m.apply(Vertex.of(1, 0, 0)));
+    }
+
+    @Test
+    void rotateXQuarterTurnTakesYToZ() throws Exception {
+        Matrix4 m = ctmAfter("rotate X 90");
+        assertEquals(Vertex.of(0, 0, 1), m.apply(Vertex.of(0, 1, 0)));
+    }
+
+    @Test
+    void rotateYQuarterTurnTakesZToX() throws Exception {
+        Matrix4 m = ctmAfter("rotate Y 90");
+        assertEquals(Vertex.of(1, 0, 0), m.apply(Vertex.of(0, 0, 1)));
+    }
+
+    @Test
+    void transformsComposeOnTheRight() throws Exception {
+        // CTM = T * S: the scale acts on the point first, then the translation.
+        scene.write("s", "translate 10 0 -5", "scale 2 3 4", "line (1, 1, -1) (0, 0, 0)");
+        scene.run("s");
+        assertEquals(1, scene.lines.size());
+        assertPanelVertex(12, 3, -9, scene.lines.get(0)[0]);
+        assertPanelVertex(10, 0, -5, scene.lines.get(0)[1]);
+    }
+
+    @Test
+    void braceRestoresTheCtm() throws Exception {
+        scene.write("s", "translate 0 0 -10", "{", "\ttranslate 50 0 0", "\tscale 2 2 2", "\tline (1,0,0) (0,1,0)",
+                "}", "line (1,0,0) (0,1,0)");
+        scene.run("s");
+        assertPanelVertex(52, 0, -10, scene.lines.get(0)[0]);
+        assertPanelVertex(1, 0, -10, scene.lines.get(1)[0]);
+        assertEquals(Matrix4.translation(0, 0, -10), scene.client.ctm());
+    }
+
+    @Test
+    void unmatchedCloseBraceIsAnError() throws Exception {
+        scene.write("s", "{", "}", "  }");
+        SceneException e = scene.failure("s");
+        assertEquals(3, e.line());
+        assertEquals(3, e.column());
+        assertEquals("'}' has no '{' to match: the matrix stack is empty", e.problem());
+        assertEquals("  }", e.lineText());
+    }
+
+    @Test
+    void unclosedBraceIsOnlyAWarning() throws Exception {
+        scene.write("s", "{", "{", "}", "line (0,0,-1) (1,1,-1)");
+        scene.run("s");
+        assertEquals(1, scene.lines.size());
+        assertEquals(1, scene.warnings.size());
+        assertTrue(scene.warnings.get(0).contains("1 '{' never closed"), scene.warnings.get(0));
+    }
+
+    @Test
+    void styleStartsFilledAndIsNotSavedByBraces() throws Exception {
+        scene.write("s", "polygon (0,0,-1) (1,0,-1) (0,1,-1)", "{", "wire", "}", "polygon (0,0,-1) (1,0,-1) (0,1,-1)");
+        scene.run("s");
+        assertEquals(1, scene.filled.size());
+        assertEquals(1, scene.wire.size());
+        assertEquals(SimpClient.Style.WIRE, scene.client.style());
+    }
+
+    @Test
+    void styleCrossesFileBoundariesBothWays() throws Exception {
+        scene.write("setwire", "wire");
+        scene.write("draw", "polygon (0,0,-1) (1,0,-1) (0,1,-1)", "filled");
+        scene.write("s", "file \"setwire\"", "polygon (0,0,-1) (1,0,-1) (0,1,-1)", "wire", "file draw",
+                "polygon (0,0,-1) (1,0,-1) (0,1,-1)");
+        scene.run("s");
+        assertEquals(2, scene.wire.size(), "the style set inside setwire.simp holds after it; draw.simp inherits wire");
+        assertEquals(1, scene.filled.size(), "the 'filled' at the end of draw.simp holds after it");
+    }
+
+    @Test
+    void includedFileDrawsWithTheCtmOfTheIncludingLine() throws Exception {
+        scene.write("unit", "line (1,0,0) (0,0,0)");
+        scene.write("s", "translate 0 0 -20", "{", "scale 5 5 5", "file \"unit\"", "}", "file unit");
+        scene.run("s");
+        assertPanelVertex(5, 0, -20, scene.lines.get(0)[0]);
+        assertPanelVertex(1, 0, -20, scene.lines.get(1)[0]);
+    }
+
+    @Test
+    void includedFileIsFoundBesideTheIncludingFile() throws Exception {
+        java.nio.file.Files.createDirectories(dir.resolve("parts/deeper"));
+        scene.write("parts/deeper/leaf", "line (0,0,-1) (1,1,-1)");
+        scene.write("parts/mid", "file \"deeper/leaf\"");
+        scene.write("s", "file \"parts/mid\"");
+        scene.run("s");
+        assertEquals(1, scene.lines.size());
+    }
+
+    @Test
+    void coloursTravelWithTheirVertices() throws Exception {
+        scene.write("s", "line (0,0,-1) (1,0,0) (10,0,-1) (0,0.5,1)", "line (0,0,-1) (10,0,-1)");
+        scene.run("s");
+        Vertex[] coloured = scene.lines.get(0);
+        assertEquals(1, coloured[0].r());
+        assertEquals(0, coloured[0].g());
+        assertEquals(0.5, coloured[1].g());
+        Vertex plain = scene.lines.get(1)[1];
+        assertEquals(1, plain.r());
+        assertEquals(1, plain.g());
+        assertEquals(1, plain.b());
+    }
+
+    @Test
+    void tenThousandNestedBracesWork() throws Exception {
+        int depth = 10_000;
+        String[] lines = new String[2 * depth + 2];
+        for (int i = 0; i < depth; i++) {
+            lines[i] = "{";
+            lines[depth + 2 + i] = "}";
+        }
+        lines[depth] = "translate 1 0 0";
+        lines[depth + 1] = "line (0,0,-1) (1,0,-1)";
+        scene.write("s", lines);
+        scene.run("s");
+        assertEquals(1, scene.lines.size());
+        assertEquals(Matrix4.identity(), scene.client.ctm());
+        assertEquals(0, scene.client.openBraces());
+        assertTrue(scene.warnings.isEmpty());
+    }
+
+    @Test
+    void bracesNestAcrossTenThousandTranslations() throws IOException, SceneException {
+        StringBuilder body = new StringBuilder();
+        for (int i = 0; i < 10_000; i++) {
+            body.append("{\ntranslate 0.001 0 0\n");
+        }
+        body.append("line (0,0,-1) (0,0,-2)\n");
+        body.append("}\n".repeat(10_000));
+        java.nio.file.Files.writeString(dir.resolve("s.simp"), body);
+        scene.run("s");
+        assertPanelVertex(10, 0, -1, scene.lines.get(0)[0]);
+        assertEquals(Matrix4.identity(), scene.client.ctm());
+    }
+}

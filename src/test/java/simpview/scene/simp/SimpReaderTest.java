@@ -1,0 +1,351 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import simpview.geometry.Axis;
+import simpview.scene.simp.Command.Kind;
+
+class SimpReaderTest {
+
+    private static final Path FILE = Path.of("scene.simp");
+
+    private static SimpReader reader(String text) {
+        return SimpReader.of(FILE, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** The one command in the text. */
+    private static Command parse(String text) throws SceneException {
+        SimpReader r = reader(text);
+        Command c = new Command();
+        assertTrue(r.next(c), "expected a command in: " + text);
+        assertFalse(r.next(new Command()), "expected only one command in: " + text);
+        return c;
+    }
+
+    private static SceneException error(String text) {
+        return assertThrows(SceneException.class, () -> {
+            SimpReader r = reader(text);
+            Command c = new Command();
+            while (r.next(c)) {
+                // read to the error
+            }
+        });
+    }
+
+    private static void assertError(String text, int line, int column, String problem) {
+        SceneException e = error(text);
+        assertEquals(FILE, e.file());
+        assertEquals(line, e.line(), "line of: " + e.getMessage());
+        assertEquals(column, e.column(), "column of: " + e.getMessage());
+        assertEquals(problem, e.problem());
+        String[] lines = text.split("\n", -1);
+        assertEquals(lines[line - 1], e.lineText());
+        assertTrue(e.getMessage().startsWith("scene.simp:" + line + ":" + column + ": " + problem), e.getMessage());
+    }
+
+    private static double[] triple(Command c) {
+        return new double[] {c.coordinate(0, 0), c.coordinate(0, 1), c.coordinate(0, 2)};
+    }
+
+    // ---- accepted forms ------------------------------------------------------------------------
+
+    @Test
+    void bracesPushAndPop() throws SceneException {
+        assertEquals(Kind.PUSH, parse("{").kind());
+        assertEquals(Kind.POP, parse("}").kind());
+        assertEquals(Kind.PUSH, parse("\t  {  \t").kind());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"translate 1 -2 3", "translate 1, -2, 3", "translate 1,-2,3", "translate\t1 ,\t-2,  3 \t",
+        "translate 1.0 -2e0 +3", "translate 1 -2 3\r", "  translate 1 -2 3"})
+    void translateAcceptsBlanksAndCommasMixed(String line) throws SceneException {
+        Command c = parse(line);
+        assertEquals(Kind.TRANSLATE, c.kind());
+        assertArrayEquals(new double[] {1, -2, 3}, triple(c));
+    }
+
+    @Test
+    void scaleReadsEveryNumberSpelling() throws SceneException {
+        Command c = parse("scale -1.5 .3 2e3");
+        assertEquals(Kind.SCALE, c.kind());
+        assertArrayEquals(new double[] {-1.5, 0.3, 2000}, triple(c));
+        assertArrayEquals(new double[] {4, 5, 120}, triple(parse("scale +4 5. 1.2E2")));
+        assertArrayEquals(new double[] {0, -0.25, 1e-3}, triple(parse("scale 00 -.25e0 1e-3")));
+    }
+
+    @Test
+    void rotateReadsAxisAndAngle() throws SceneException {
+        Command c = parse("rotate Y -22.5");
+        assertEquals(Kind.ROTATE, c.kind());
+        assertEquals(Axis.Y, c.axis());
+        assertEquals(-22.5, c.angle());
+        assertEquals(Axis.X, parse("rotate X, 90").axis());
+        assertEquals(Axis.Z, parse("\trotate\tZ\t45").axis());
+    }
+
+    @Test
+    void lineReadsTwoPoints() throws SceneException {
+        Command c = parse("line (1, 2, 3) (4, 5, 6)");
+        assertEquals(Kind.LINE, c.kind());
+        assertEquals(2, c.vertexCount());
+        assertFalse(c.colored());
+        assertEquals(3, c.coordinate(0, 2));
+        assertEquals(4, c.coordinate(1, 0));
+        assertEquals(1, c.color(1, 1), "a vertex without colour is white");
+    }
+
+    @Test
+    void pointsMayBeSpacedOrPacked() throws SceneException {
+        Command c = parse("polygon ( 1 , 2 , 3 )(4 5 6),(7,8,9)");
+        assertEquals(Kind.POLYGON, c.kind());
+        assertEquals(9, c.coordinate(2, 2));
+        assertEquals(5, c.coordinate(1, 1));
+    }
+
+    @Test
+    void polygonReadsThreePoints() throws SceneException {
+        Command c = parse("polygon (0.0, 0.0, 1.0) (1.0, 1.0, 1.0) (0.0, 1.0, 1.0) ");
+        assertEquals(3, c.vertexCount());
+        assertEquals(1, c.coordinate(1, 0));
+        assertEquals(1, c.coordinate(2, 1));
+    }
+
+    @Test
+    void verticesMayCarryColours() throws SceneException {
+        Command c = parse("polygon (0,0,0) (1,0,0) (1,0,0) (0,1,0) (0,1,0) (0,0,1)");
+        assertTrue(c.colored());
+        assertEquals(1, c.coordinate(1, 0));
+        assertEquals(1, c.color(0, 0));
+        assertEquals(1, c.color(1, 1));
+        assertEquals(1, c.color(2, 2));
+        assertEquals(0, c.color(2, 0));
+        Command line = parse("line (0,0,0) (0.5,0.25,1) (1,1,1) (0,0,0)");
+        assertEquals(0.25, line.color(0, 1));
+        assertEquals(1, line.coordinate(1, 0));
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"file \"cube\"", "file cube", "file \t\"cube\"  ", "file\tcube\t"})
+    void fileTakesQuotedOrBareName(String line) throws SceneException {
+        Command c = parse(line);
+        assertEquals(Kind.FILE, c.kind());
+        assertEquals("cube", c.fileName());
+    }
+
+    @Test
+    void quotedFileNameMayHoldBlanks() throws SceneException {
+        assertEquals("my cube", parse("file \"my cube\"").fileName());
+    }
+
+    @Test
+    void styleCommands() throws SceneException {
+        assertEquals(Kind.WIRE, parse("wire").kind());
+        assertEquals(Kind.FILLED, parse("  filled \t").kind());
+    }
+
+    @Test
+    void blankAndCommentLinesAreSkippedButCounted() throws SceneException {
+        SimpReader r = reader("# comment\n\n   \t\n\t# indented comment\r\nwire\r\n\n");
+        Command c = new Command();
+        assertTrue(r.next(c));
+        assertEquals(Kind.WIRE, c.kind());
+        assertEquals(5, r.lineNumber());
+        assertFalse(r.next(c));
+        assertEquals(6, r.linesRead());
+    }
+
+    @Test
+    void lastLineNeedsNoLineBreak() throws SceneException {
+        SimpReader r = reader("{\n}");
+        Command c = new Command();
+        assertTrue(r.next(c));
+        assertTrue(r.next(c));
+        assertEquals(Kind.POP, c.kind());
+        assertFalse(r.next(c));
+    }
+
+    @Test
+    void byteOrderMarkIsIgnored() throws SceneException {
+        byte[] text = "\uFEFFwire\n".getBytes(StandardCharsets.UTF_8);
+        Command c = new Command();
+        assertTrue(SimpReader.of(FILE, text).next(c));
+        assertEquals(Kind.WIRE, c.kind());
+    }
+
+    @Test
+    void readsEveryCommandOfALongFileInOrder() throws SceneException {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < 5000; i++) {
+            sb.append("translate ").append(i).append(" 0 0\n");
+        }
+        SimpReader r = reader(sb.toString());
+        Command c = new Command();
+        List<Double> seen = new ArrayList<>();
+        while (r.next(c)) {
+            seen.add(c.coordinate(0, 0));
+        }
+        assertEquals(5000, seen.size());
+        assertEquals(4999.0, seen.get(4999));
+    }
+
+    // ---- errors: each names file, line, column, the line and what was expected -------------------
+
+    @Test
+    void unknownCommand() {
+        assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal'; expected {, }, scale, translate, "
+                + "rotate, line, polygon, file, wire or filled");
+    }
+
+    @Test
+    void commandsAreCaseSensitive() {
+        assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale'; expected {, }, scale, translate, "
+                + "rotate, line, polygon, file, wire or filled");
+    }
+
+    @Test
+    void tooFewNumbers() {
+        assertError("translate 1 2", 1, 14, "wrong number of arguments: translate takes 3 numbers, found 2 numbers");
+    }
+
+    @Test
+    void tooManyNumbers() {
+        assertError("scale 1 2 3 4", 1, 13, "wrong number of arguments: scale takes 3 numbers, found more");
+    }
+
+    @Test
+    void noArguments() {
+        assertError("scale   ", 1, 9, "wrong number of arguments: scale takes 3 numbers, found none");
+    }
+
+    @Test
+    void tooFewPoints() {
+        assertError("polygon (0,0,0) (1,0,0)", 1, 24, "wrong number of arguments: polygon takes 3 points, found 2 points");
+    }
+
+    @Test
+    void tooManyPoints() {
+        assertError("line (0,0,0) (1,0,0) (1,1,1) (0,1,0) (2,2,2)", 1, 38,
+                "wrong number of arguments: line takes 2 points, found more");
+    }
+
+    @Test
+    void pointWithTwoNumbers() {
+        assertError("line (0, 0) (1, 1, 1)", 1, 11, "expected a number, found ')'");
+    }
+
+    @Test
+    void pointWithFourNumbers() {
+        assertError("line (0 0 0 0) (1 1 1)", 1, 13, "expected ')' closing the point after three numbers, found '0'");
+    }
+
+    @Test
+    void colourOnSomeVerticesOnly() {
+        assertError("line (0,0,0) (1,0,0) (1,1,1)", 1, 22,
+                "points with and without colours: give every vertex of 'line' a colour (r, g, b) after its point, or none");
+    }
+
+    @Test
+    void numberThatDoesNotParse() {
+        assertError("translate 1 x 3", 1, 13, "expected a number, found 'x'");
+    }
+
+    @Test
+    void numberWithTwoPoints() {
+        assertError("\ttranslate 1 2.3.4 3", 1, 14, "expected a number, found '2.3.4'");
+    }
+
+    @Test
+    void notANumberIsRefused() {
+        assertError("scale NaN 1 1", 1, 7, "expected a number, found 'NaN'");
+    }
+
+    @Test
+    void infinityIsRefused() {
+        assertError("scale 1 Infinity 1", 1, 9, "expected a number, found 'Infinity'");
+    }
+
+    @Test
+    void overflowIsRefused() {
+        assertError("scale 1e999 1 1", 1, 7, "number out of range: '1e999'");
+    }
+
+    @Test
+    void numbersNeedSeparators() {
+        assertError("translate 1 2-3", 1, 13, "expected a number, found '2-3'");
+    }
+
+    @Test
+    void lowerCaseAxis() {
+        assertError("rotate x 30", 1, 8, "expected an axis X, Y or Z (upper case), found 'x'");
+    }
+
+    @Test
+    void unknownAxis() {
+        assertError("rotate W 30", 1, 8, "expected an axis X, Y or Z (upper case), found 'W'");
+    }
+
+    @Test
+    void rotateWithoutAngle() {
+        assertError("rotate X", 1, 9, "rotate takes an axis and an angle in degrees, found no angle");
+    }
+
+    @Test
+    void trailingTextAfterStyle() {
+        assertError("wire x", 1, 6, "expected the end of the line, found 'x'");
+    }
+
+    @Test
+    void trailingTextAfterPolygon() {
+        assertError("polygon (0,0,0) (1,0,0) (0,1,0) junk", 1, 33, "expected the end of the line, found 'junk'");
+    }
+
+    @Test
+    void trailingTextAfterBrace() {
+        assertError("{ x", 1, 3, "expected the end of the line, found 'x'");
+    }
+
+    @Test
+    void trailingCommaIsTrailingText() {
+        assertError("translate 1 2 3,", 1, 16, "expected the end of the line, found ','");
+    }
+
+    @Test
+    void commandWordMustBeFollowedByBlank() {
+        assertError("translate(1,2,3)", 1, 10, "expected a blank after 'translate', found '('");
+    }
+
+    @Test
+    void unclosedQuote() {
+        assertError("file \"cube", 1, 6, "the file name has no closing '\"'");
+    }
+
+    @Test
+    void emptyFileName() {
+        assertError("file \"\"", 1, 6, "expected a file name, found an empty one");
+    }
+
+    @Test
+    void garbageInsteadOfAPoint() {
+        assertError("line (0,0,0) x", 1, 14, "expected '(' starting a point, found 'x'");
+    }
+
+    @Test
+    void messageShowsTheLineAndACaret() {
+        SceneException e = error("wire\n\ttranslate 1 x 3");
+        assertEquals("scene.simp:2:14: expected a number, found 'x'\n"
+                + "     translate 1 x 3\n"
+                + "                 ^", e.getMessage());
+    }
+}

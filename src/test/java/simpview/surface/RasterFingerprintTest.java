@@ -1,0 +1,149 @@
+package simpview.surface;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.Random;
+import java.util.zip.CRC32;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import simpview.geometry.Vertex;
+import simpview.raster.DdaLineRenderer;
+import simpview.raster.FilledPolygonRenderer;
+
+/**
+ * Guards the raster fast paths against any change of output while they are
+ * optimised: many random triangles and lines (on and off the panel, in and
+ * out of the depth range, large and tiny) through each drawable chain, and a
+ * checksum of every pixel and every depth. The expected checksums were
+ * recorded from the unoptimised code (commit 86fd575); the pixels must never
+ * change, so neither may they. The same primitives given as plain numbers
+ * (the renderers' array entries, as scenes use them) must match the same
+ * checksums.
+ */
+class RasterFingerprintTest {
+
+    private static final Rgb NEAR = new Rgb(1, 0.8, 0.3);
+    private static final Rgb FAR = new Rgb(0.1, 0, 0.2);
+
+    @ParameterizedTest(name = "{0}")
+    @EnumSource(Entry.class)
+    void panelChain(Entry entry) {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.panel(), 11, entry);
+        assertEquals(1295666995L, checksum(canvas), "panel");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @EnumSource(Entry.class)
+    void depthTestedChain(Entry entry) {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthTested(), 12, entry);
+        assertEquals(906329787L, checksum(canvas), "depth tested");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @EnumSource(Entry.class)
+    void depthCuedChain(Entry entry) {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthCued(NEAR, FAR), 13, entry);
+        assertEquals(3005972452L, checksum(canvas), "depth cued");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @EnumSource(Entry.class)
+    void depthCuedWhiteToBlackChain(Entry entry) {
+        PageCanvas canvas = new PageCanvas();
+        draw(canvas, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), 14, entry);
+        assertEquals(3748001353L, checksum(canvas), "depth cued white to black");
+    }
+
+    /** How the primitives reach the renderers. */
+    enum Entry { VERTICES, NUMBERS }
+
+    private static void draw(PageCanvas canvas, Drawable target, long seed, Entry entry) {
+        Random random = new Random(seed);
+        Renderers r = new Renderers(entry);
+        for (int i = 0; i < 3000; i++) {
+            double size = i % 3 == 0 ? 900 : i % 3 == 1 ? 60 : 4;
+            double cx = random.nextDouble() * 800 - 75;
+            double cy = random.nextDouble() * 800 - 75;
+            Vertex a = vertex(random, cx, cy, size);
+            Vertex b = vertex(random, cx, cy, size);
+            Vertex c = vertex(random, cx, cy, size);
+            if (i % 4 == 3) {
+                r.line(a, b, target);
+            } else {
+                r.triangle(a, b, c, target);
+            }
+        }
+        // A shared-edge pair and an axis-aligned pair on pixel centres.
+        r.triangle(Vertex.of(10.5, 10.5, -50), Vertex.of(300.5, 10.5, -60), Vertex.of(300.5, 200.5, -70), target);
+        r.triangle(Vertex.of(10.5, 10.5, -50), Vertex.of(300.5, 200.5, -70), Vertex.of(10.5, 200.5, -40), target);
+    }
+
+    /** The renderers, fed vertices or the same vertices as numbers at an offset in a larger array. */
+    private static final class Renderers {
+        private static final int AT = 5;
+        private final FilledPolygonRenderer filled = new FilledPolygonRenderer();
+        private final DdaLineRenderer lines = new DdaLineRenderer();
+        private final double[] numbers = new double[AT + 3 * Vertex.NUMBERS + 1];
+        private final Entry entry;
+
+        Renderers(Entry entry) {
+            this.entry = entry;
+        }
+
+        void triangle(Vertex a, Vertex b, Vertex c, Drawable target) {
+            if (entry == Entry.VERTICES) {
+                filled.drawPolygon(a, b, c, target);
+                return;
+            }
+            a.writeTo(numbers, AT);
+            b.writeTo(numbers, AT + Vertex.NUMBERS);
+            c.writeTo(numbers, AT + 2 * Vertex.NUMBERS);
+            filled.drawPolygon(numbers, AT, target);
+        }
+
+        void line(Vertex a, Vertex b, Drawable target) {
+            if (entry == Entry.VERTICES) {
+                lines.drawLine(a, b, target);
+                return;
+            }
+            // The second end first in the array: the entry takes any two offsets.
+            b.writeTo(numbers, AT);
+            a.writeTo(numbers, AT + 2 * Vertex.NUMBERS);
+            lines.drawLine(numbers, AT + 2 * Vertex.NUMBERS, AT, target);
+        }
+    }
+
+    private static Vertex vertex(Random random, double cx, double cy, double size) {
+        return new Vertex(cx + (random.nextDouble() - 0.5) * size, cy + (random.nextDouble() - 0.5) * size,
+                random.nextDouble() * 240 - 220, random.nextDouble() * 1.2 - 0.1,
+                random.nextDouble(), random.nextDouble());
+    }
+
+    private static long checksum(PageCanvas canvas) {
+        CRC32 crc = new CRC32();
+        for (int y = 0; y < PageCanvas.SIZE; y++) {
+            for (int x = 0; x < PageCanvas.SIZE; x++) {
+                update(crc, canvas.image().getRGB(x, y));
+            }
+        }
+        ZBuffer z = canvas.zbuffer();
+        for (int y = 0; y < z.height(); y++) {
+            for (int x = 0; x < z.width(); x++) {
+                long bits = Double.doubleToLongBits(z.depthAt(x, y));
+                update(crc, (int) bits);
+                update(crc, (int) (bits >>> 32));
+            }
+        }
+        return crc.getValue();
+    }
+
+    private static void update(CRC32 crc, int v) {
+        crc.update(v >>> 24);
+        crc.update(v >>> 16);
+        crc.update(v >>> 8);
+        crc.update(v);
+    }
+}
