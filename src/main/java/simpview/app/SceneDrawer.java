@@ -1,10 +1,10 @@
 package simpview.app;
 
 import java.nio.file.Path;
-import simpview.surface.Drawable;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.Drawable;
 
 /** What draws a SIMP file onto a panel; the real one is {@link SceneRenderer}. Tests may stand in. */
 @FunctionalInterface

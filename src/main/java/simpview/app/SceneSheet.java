@@ -1,10 +1,10 @@
 package simpview.app;
 
 import java.nio.file.Path;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
-import simpview.scene.simp.SceneMonitor;
 
 /**
  * Any scene file shown as a whole page, like pages 4 to 8: cleared canvas,

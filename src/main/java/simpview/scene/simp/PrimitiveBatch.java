@@ -1,5 +1,8 @@
 package simpview.scene.simp;
 
+import simpview.scene.Painter;
+import simpview.scene.PrimitiveSink;
+
 /**
  * The primitives of one stretch of a scene, at most {@link #CAPACITY}
  * commands long, in primitive arrays, with what the drawing thread must do

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
+import simpview.scene.SceneException;
 
 /**
  * Reads and interprets a scene on a thread of its own, into a ring of

@@ -1,6 +1,7 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
+import simpview.scene.SceneException;
 import simpview.surface.Drawable;
 
 /** Reads a SIMP file and draws it. */

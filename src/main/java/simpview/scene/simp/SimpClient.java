@@ -1,20 +1,22 @@
 package simpview.scene.simp;
 
 import simpview.geometry.Matrix4;
-import simpview.geometry.Vertex;
-import simpview.geometry.ViewVolume;
-import simpview.surface.Drawable;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.scene.DepthCuedGeometry;
+import simpview.scene.Painter;
+import simpview.scene.PrimitiveSink;
+import simpview.scene.SceneException;
+import simpview.surface.Drawable;
 
 /**
  * What the commands of a scene act on: the CTM, the matrix stack, the stack
- * of files being read and the polygon style, and the renderers that draw on
- * the panel. One client draws one scene, from a fresh state: identity CTM,
- * empty stacks, style filled.
+ * of files being read and the polygon style; lines and polygons go on to the
+ * scene's geometry stage. One client draws one scene, from a fresh state:
+ * identity CTM, empty stacks, style filled.
  */
 public final class SimpClient {
 
@@ -22,17 +24,13 @@ public final class SimpClient {
     public enum Style { FILLED, WIRE }
 
     private final Painter painter;
-    /** Where primitives go: the painter, or a batch for the drawing thread. */
-    private PrimitiveSink sink;
+    private final DepthCuedGeometry geometry;
     private final MatrixStack matrices = new MatrixStack();
     private final FileStack files;
     private Matrix4 ctm = Matrix4.identity();
     private Style style = Style.FILLED;
-    /** World-space vertices of the primitive at hand, reused. */
-    private final double[] world = new double[3 * Command.MAX_VERTICES];
-    /** The same in panel space with colours, as the painter takes them, reused. */
-    private final double[] primitive = new double[Painter.STRIDE];
-    private long culled;
+    /** Where the first colour outside [0, 1] was clamped ("file:line"), or null. */
+    private String firstClamped;
 
     /** Draws on a panel-coordinate drawable with the project's renderers. */
     public SimpClient(Drawable panel) {
@@ -46,7 +44,7 @@ public final class SimpClient {
 
     SimpClient(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire, FileStack files) {
         this.painter = new Painter(panel, lines, filled, wire);
-        this.sink = painter;
+        this.geometry = new DepthCuedGeometry(painter);
         this.files = files;
     }
 
@@ -59,16 +57,25 @@ public final class SimpClient {
         switch (c.kind) {
             case PUSH -> matrices.push(ctm);
             case POP -> pop(c);
-            case SCALE -> ctm = ctm.times(Matrix4.scaling(c.xyz[0], c.xyz[1], c.xyz[2]));
-            case TRANSLATE -> ctm = ctm.times(Matrix4.translation(c.xyz[0], c.xyz[1], c.xyz[2]));
+            case SCALE -> ctm = ctm.times(Matrix4.scaling(c.numbers[0], c.numbers[1], c.numbers[2]));
+            case TRANSLATE -> ctm = ctm.times(Matrix4.translation(c.numbers[0], c.numbers[1], c.numbers[2]));
             case ROTATE -> ctm = ctm.times(Matrix4.rotation(c.axis, c.angle));
-            case LINE -> line(c);
-            case POLYGON -> polygon(c);
+            case LINE -> geometry.line(ctm, c.xyz, colours(c));
+            case POLYGON -> geometry.polygon(ctm, c.xyz, colours(c), style == Style.WIRE);
             case FILE -> files.include(c);
             case WIRE -> style = Style.WIRE;
             case FILLED -> style = Style.FILLED;
-            default -> throw new IllegalStateException(String.valueOf(c.kind));
+            default -> throw files.current().error(c.commandIndex, "'" + c.kind.spelling
+                    + "' belongs to lit scenes, and this scene is drawn depth-cued");
         }
+    }
+
+    /** The command's own colours, or null; notes the first line whose colours were clamped. */
+    private double[] colours(Command c) {
+        if (c.clamped && firstClamped == null) {
+            firstClamped = files.current().file().getFileName() + ":" + files.current().lineNumber();
+        }
+        return c.colored ? c.rgb : null;
     }
 
     private void pop(Command c) throws SceneException {
@@ -78,60 +85,13 @@ public final class SimpClient {
         ctm = matrices.pop();
     }
 
-    private void line(Command c) {
-        toWorld(c, 2);
-        if (Culling.isCulled(world, 2)) {
-            culled++;
-            return;
-        }
-        toPanel(c, 2);
-        sink.add(Painter.LINE, primitive);
-    }
-
-    private void polygon(Command c) {
-        toWorld(c, 3);
-        if (Culling.isCulled(world, 3)) {
-            culled++;
-            return;
-        }
-        toPanel(c, 3);
-        sink.add(style == Style.FILLED ? Painter.FILLED : Painter.WIRE, primitive);
-    }
-
-    private void toWorld(Command c, int count) {
-        Matrix4 m = ctm;
-        double[] p = c.xyz;
-        for (int k = 0; k < 3 * count; k += 3) {
-            double x = p[k];
-            double y = p[k + 1];
-            double z = p[k + 2];
-            world[k] = m.applyX(x, y, z);
-            world[k + 1] = m.applyY(x, y, z);
-            world[k + 2] = m.applyZ(x, y, z);
-        }
-    }
-
-    /** The first count world vertices in panel space, each with its own colour or white. */
-    private void toPanel(Command c, int count) {
-        for (int k = 0; k < count; k++) {
-            int i = 3 * k;
-            int o = Vertex.NUMBERS * k;
-            primitive[o + Vertex.X] = ViewVolume.toPanel(world[i]);
-            primitive[o + Vertex.Y] = ViewVolume.toPanel(world[i + 1]);
-            primitive[o + Vertex.Z] = world[i + 2];
-            primitive[o + Vertex.R] = c.color(k, 0);
-            primitive[o + Vertex.G] = c.color(k, 1);
-            primitive[o + Vertex.B] = c.color(k, 2);
-        }
-    }
-
     Painter painter() {
         return painter;
     }
 
     /** From now on primitives go to {@code to} instead of being drawn at once. */
     void sendTo(PrimitiveSink to) {
-        sink = to;
+        geometry.sendTo(to);
     }
 
     FileStack files() {
@@ -151,8 +111,13 @@ public final class SimpClient {
         return matrices.depth();
     }
 
+    /** Where a vertex colour outside [0, 1] was first clamped, as "file:line"; null when none was. */
+    public String firstClamped() {
+        return firstClamped;
+    }
+
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     public long culledCount() {
-        return culled;
+        return geometry.culledCount();
     }
 }

@@ -3,6 +3,8 @@ package simpview.scene.simp;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import simpview.scene.Painter;
+import simpview.scene.SceneException;
 
 /**
  * The reading loop: takes commands from the client's file stack, one at a
