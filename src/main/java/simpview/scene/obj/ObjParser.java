@@ -245,21 +245,23 @@ final class ObjParser {
     private int reference(int i, int n) throws SceneException {
         int start = i;
         i = index(i, start);
-        vertexRefs[n] = resolve(start, i, vertices.vertexCount, "vertex", "vertices (v lines)");
+        vertexRefs[n] = resolve(start, i, vertices.vertexCount, "vertex", "vertices (v lines)", "vertex (v line)");
         normalRefs[n] = -1;
         if (i < end && b[i] == '/') {
             i++;
             if (i >= end || b[i] != '/') {
                 int t = i;
                 i = index(i, start);
-                resolve(t, i, textureCount, "texture coordinate", "texture coordinates (vt lines)");
+                resolve(t, i, textureCount, "texture coordinate", "texture coordinates (vt lines)",
+                        "texture coordinate (vt line)");
                 if (i >= end || b[i] != '/') {
                     return i;
                 }
             }
             int vn = ++i;
             i = index(i, start);
-            normalRefs[n] = resolve(vn, i, vertices.normalCount, "normal", "normals (vn lines)");
+            normalRefs[n] = resolve(vn, i, vertices.normalCount, "normal", "normals (vn lines)",
+                    "normal (vn line)");
         }
         return i;
     }
@@ -283,14 +285,15 @@ final class ObjParser {
     }
 
     /** The 0-based element that {@link #index}, written at b[from, to), names among {@code count} defined so far. */
-    private int resolve(int from, int to, int count, String what, String defined) throws SceneException {
+    private int resolve(int from, int to, int count, String what, String defined, String one)
+            throws SceneException {
         if (index == 0) {
             throw error(from, what + " index 0: indices start at 1 (or count back from -1)");
         }
         long zeroBased = index > 0 ? index - 1 : count + index;
         if (zeroBased < 0 || zeroBased >= count) {
             throw error(from, what + " index " + text(from, to) + " names nothing: " + count + " "
-                    + defined + " defined so far");
+                    + (count == 1 ? one : defined) + " defined so far");
         }
         return (int) zeroBased;
     }
