@@ -9,8 +9,9 @@ import java.util.Arrays;
  * array is made at the first normal) and the line it came from.
  *
  * <p>Recording stops for good, and lets go of its arrays, as soon as the
- * arrays (with the file's vertices) would pass the budget: such a file is
- * then only streamed.
+ * model (its arrays cut to length, as {@link ObjModel#bytes()} counts them,
+ * vertices included) would pass the budget: such a file is then only
+ * streamed. While recording, the arrays as grown hold up to twice that.
  */
 final class ObjFaceList {
 
@@ -27,15 +28,18 @@ final class ObjFaceList {
         this.budget = budget;
     }
 
-    /** Records refs[0, n) of the face on {@code line}; vertexBytes are what the vertices already hold. */
+    /** Records refs[0, n) of the face on {@code line}; vertexBytes are what the vertices' model would hold. */
     void add(int[] refs, int[] normals, int n, boolean anyNormal, int line, long vertexBytes) {
         if (dropped) {
             return;
         }
-        if (!makeRoom(n, anyNormal, vertexBytes)) {
+        boolean normalsNeeded = normalRefs != null || anyNormal;
+        long ints = 2L * (faceCount + 1) + 1 + (normalsNeeded ? 2L : 1L) * (refCount + n);
+        if (vertexBytes + 4 * ints > budget) {
             drop();
             return;
         }
+        makeRoom(n, normalsNeeded);
         System.arraycopy(refs, 0, vertexRefs, refCount, n);
         if (normalRefs != null) {
             System.arraycopy(normals, 0, normalRefs, refCount, n);
@@ -45,30 +49,22 @@ final class ObjFaceList {
         starts[++faceCount] = refCount;
     }
 
-    /** Grows the arrays for one more face of n references; false when that passes the budget. */
-    private boolean makeRoom(int n, boolean anyNormal, long vertexBytes) {
-        int faceCapacity = faceCount == lines.length ? grown(lines.length, 1) : lines.length;
-        int refCapacity = refCount + n > vertexRefs.length ? grown(vertexRefs.length, refCount + n) : vertexRefs.length;
-        boolean normalsNeeded = normalRefs != null || anyNormal;
-        long ints = 2L * faceCapacity + 1 + (normalsNeeded ? 2L : 1L) * refCapacity;
-        if (vertexBytes + 4 * ints > budget) {
-            return false;
+    /** Grows the arrays for one more face of n references. */
+    private void makeRoom(int n, boolean normalsNeeded) {
+        if (faceCount == lines.length) {
+            lines = Arrays.copyOf(lines, grown(lines.length, 1));
+            starts = Arrays.copyOf(starts, lines.length + 1);
         }
-        if (faceCapacity != lines.length) {
-            lines = Arrays.copyOf(lines, faceCapacity);
-            starts = Arrays.copyOf(starts, faceCapacity + 1);
-        }
-        if (refCapacity != vertexRefs.length) {
-            vertexRefs = Arrays.copyOf(vertexRefs, refCapacity);
+        if (refCount + n > vertexRefs.length) {
+            vertexRefs = Arrays.copyOf(vertexRefs, grown(vertexRefs.length, refCount + n));
             if (normalRefs != null) {
-                normalRefs = Arrays.copyOf(normalRefs, refCapacity);
+                normalRefs = Arrays.copyOf(normalRefs, vertexRefs.length);
             }
         }
         if (normalsNeeded && normalRefs == null) {
-            normalRefs = new int[refCapacity];
+            normalRefs = new int[vertexRefs.length];
             Arrays.fill(normalRefs, 0, refCount, -1);
         }
-        return true;
     }
 
     /** At least twice the length, and at least {@code needed}. */

@@ -234,7 +234,7 @@ final class ObjParser {
         faceCount++;
         int line = source.lineNumber();
         if (recorder != null) {
-            recorder.add(vertexRefs, normalRefs, n, anyNormal, line, vertices.bytes());
+            recorder.add(vertexRefs, normalRefs, n, anyNormal, line, vertices.modelBytes());
         }
         face.bind(vertices.positions, vertices.colours, vertices.normals, vertexRefs, normalRefs);
         face.select(0, n, line);

@@ -72,9 +72,9 @@ final class ObjVertices {
         return (int) Math.min(most, wanted);
     }
 
-    /** Bytes held by the arrays as allocated. */
-    long bytes() {
-        long doubles = positions.length + normals.length + (colours == null ? 0 : colours.length);
+    /** The bytes these vertices and normals take in a model (arrays cut to length). */
+    long modelBytes() {
+        long doubles = 3L * (vertexCount * (colours == null ? 1L : 2L) + normalCount);
         return 8 * doubles;
     }
 }
