@@ -24,6 +24,8 @@ final class ObjParser {
             + " or x y z w r g b)";
     private static final String REFERENCE_FORMS = "a vertex reference (v, v/vt, v//vn or v/vt/vn)";
     private static final ObjSink NOWHERE = face -> { };
+    /** More digits than this name nothing (an array holds fewer than 10^10 elements). */
+    private static final int MOST_INDEX_DIGITS = 12;
 
     private final LineSource source;
     private final DecimalParser decimal = new DecimalParser();
@@ -274,11 +276,14 @@ final class ObjParser {
         }
         int digits = i;
         long value = 0;
-        for (; i < end && b[i] >= '0' && b[i] <= '9'; i++) {
-            value = Math.min(10 * value + (b[i] - '0'), 1L << 40);
+        for (int d; i < end && (d = b[i] - '0') >= 0 && d <= 9; i++) {
+            value = 10 * value + d;
         }
         if (i == digits) {
             throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+        }
+        if (i - digits > MOST_INDEX_DIGITS) {
+            value = Long.MAX_VALUE; // names nothing in any file; and 19 digits could overflow
         }
         index = negative ? -value : value;
         return i;
@@ -314,9 +319,9 @@ final class ObjParser {
         return i;
     }
 
-    /** Blanks, commas and parentheses separate numbers and references. */
+    /** Blanks, commas and parentheses separate numbers and references (digits fail the first test). */
     private static boolean isSeparator(byte c) {
-        return c == ' ' || c == ',' || c == '\t' || c == '(' || c == ')';
+        return c <= ',' && (c == ' ' || c == ',' || c == '\t' || c == '(' || c == ')');
     }
 
     /** The token at i: up to the next separator, at most 30 bytes. */
