@@ -3,9 +3,9 @@ package simpview.scene.obj;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import simpview.scene.SceneException;
 import simpview.scene.simp.DecimalParser;
 import simpview.scene.simp.LineSource;
-import simpview.scene.simp.SceneException;
 
 /**
  * Reads the lines of one .obj file straight from the bytes of its buffer (no

@@ -67,6 +67,7 @@ final class ReadAhead implements AutoCloseable {
             }
             batch.linesRead = files.linesRead();
             batch.openBraces = client.openBraces();
+            batch.warnings = client.warnings();
             batch.last = true;
         } catch (InterruptedException e) {
             return; // close() asked: nobody waits for more
