@@ -1,6 +1,5 @@
 package simpview.bench;
 
-import java.util.Random;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -20,9 +19,9 @@ import simpview.shading.Lights;
 
 /**
  * One phong pixel's lighting: {@link Lighting#shade} with two lights (one in
- * front, one off to the side), perspective view, at points that vary as
- * along a span: P across a tilted square 100 to 150 units in front of the
- * eye, N a little off its normal and not unit length, kd varying. Each shaded
+ * front, one off to the side), perspective view, at the points of a 64 x 64
+ * patch in raster order, as phong shading meets them: P across a tilted
+ * square 100 to 150 units in front of the eye, N and kd varying smoothly. Each shaded
  * colour is fogged and summed, so none of the work can be dropped. One op is
  * one shade call; the score is ns per call. {@code exponent} is the surface's
  * p: 8 and 128 take the repeated-squaring path, 7.5 Math.pow.
@@ -35,7 +34,8 @@ import simpview.shading.Lights;
 @State(Scope.Thread)
 public class Shade {
 
-    private static final int POINTS = 4096;
+    private static final int SIDE = 64;
+    private static final int POINTS = SIDE * SIDE;
 
     @Param({"8", "128", "7.5"})
     public double exponent;
@@ -52,20 +52,21 @@ public class Shade {
         lights.add(-80, 60, -60, 0.8, 0.6, 0.5, 1, 0.01);
         lighting = new Lighting(lights);
         lighting.prepare(0.1, 0.1, 0.1, 0.8, exponent, 2, true);
-        Random random = new Random(12);
+        // A 64 x 64 patch in raster order, as a span walks it: P on a tilted square, N and kd
+        // varying smoothly across it (N not unit length, as interpolated normals are).
         for (int i = 0; i < POINTS; i++) {
             int at = 9 * i;
-            double u = random.nextDouble() * 2 - 1;
-            double v = random.nextDouble() * 2 - 1;
+            double u = (i % SIDE) / (SIDE / 2.0) - 1;
+            double v = (i / SIDE) / (SIDE / 2.0) - 1;
             points[at] = 50 * u;
             points[at + 1] = 50 * v;
             points[at + 2] = -125 + 25 * v;
-            points[at + 3] = 0.2 * random.nextDouble() - 0.1;
-            points[at + 4] = 0.5 + 0.2 * random.nextDouble();
-            points[at + 5] = 1.5 + 0.2 * random.nextDouble();
-            points[at + 6] = random.nextDouble();
-            points[at + 7] = random.nextDouble();
-            points[at + 8] = random.nextDouble();
+            points[at + 3] = 0.3 * u;
+            points[at + 4] = 0.5 + 0.2 * v;
+            points[at + 5] = 1.5 + 0.1 * u * v;
+            points[at + 6] = 0.5 + 0.5 * u;
+            points[at + 7] = 0.5 + 0.5 * v;
+            points[at + 8] = 0.5;
         }
     }
 

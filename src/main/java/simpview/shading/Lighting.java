@@ -91,6 +91,12 @@ public final class Lighting {
         double r = kdRed * ambientRed;
         double g = kdGreen * ambientGreen;
         double b = kdBlue * ambientBlue;
+        if (lightCount == 0) {
+            out[at] = clamp(r);
+            out[at + 1] = clamp(g);
+            out[at + 2] = clamp(b);
+            return;
+        }
         double n2 = nx * nx + ny * ny + nz * nz;
         if (!(n2 >= LOW && n2 <= HIGH)) {
             // Tiny, huge or zero: rescale so the largest component is 1 (zero: ambient only).
@@ -150,7 +156,9 @@ public final class Lighting {
             double cos = nl * (in * is);
             double vl = (ex * lx + ey * ly + ez * lz) * (ie * is);
             double specular = ks * power(2 * cos * vn - vl);
-            double f = 1 / (data[o + Lights.A] + data[o + Lights.B] * (s * scale));
+            // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
+            double lb = data[o + Lights.B];
+            double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
             r += contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
             g += contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
             b += contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);

@@ -15,9 +15,12 @@ import java.util.Arrays;
  */
 public final class Lights {
 
-    /** Numbers per light in {@link #data}: x, y, z, red, green, blue, a, b. */
-    static final int STRIDE = 8;
-    static final int X = 0, Y = 1, Z = 2, RED = 3, GREEN = 4, BLUE = 5, A = 6, B = 7;
+    /**
+     * Numbers per light in {@link #data}: x, y, z, red, green, blue, a, b, and
+     * 1 / a, which is the attenuation of a light with b = 0 at every distance.
+     */
+    static final int STRIDE = 9;
+    static final int X = 0, Y = 1, Z = 2, RED = 3, GREEN = 4, BLUE = 5, A = 6, B = 7, INVERSE_A = 8;
 
     private double[] data = new double[4 * STRIDE];
     private int count;
@@ -36,6 +39,7 @@ public final class Lights {
         data[at + BLUE] = blue;
         data[at + A] = a;
         data[at + B] = b;
+        data[at + INVERSE_A] = 1 / a;
         count++;
     }
 

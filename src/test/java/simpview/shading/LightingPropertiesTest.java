@@ -28,7 +28,7 @@ class LightingPropertiesTest {
         return any.array(double[].class).ofSize(SCENE + 4 * LIGHT);
     }
 
-    @Property(tries = 3000)
+    @Property(tries = 1500)
     void noInputGivesNaNOrAChannelOutsideZeroToOne(@ForAll("hostile") double[] x,
             @ForAll @IntRange(min = 0, max = 4) int lightCount, @ForAll boolean perspective) {
         Lights lights = new Lights();
