@@ -48,6 +48,18 @@ public final class Lighting {
     private int lightCount;
     private boolean perspective;
 
+    // The point being shaded, set by aim: N and E (P to the eye) as given or
+    // rescaled, their inverse lengths, and V . N.
+    private double normalX;
+    private double normalY;
+    private double normalZ;
+    private double inverseNormal;
+    private double eyeX;
+    private double eyeY;
+    private double eyeZ;
+    private double inverseEye;
+    private double vn;
+
     public Lighting(Lights lights) {
         this.lights = lights;
         prepare(0, 0, 0, Material.START.ks(), Material.START.p(), 0, false);
@@ -91,23 +103,66 @@ public final class Lighting {
         double r = kdRed * ambientRed;
         double g = kdGreen * ambientGreen;
         double b = kdBlue * ambientBlue;
-        if (lightCount == 0) {
-            out[at] = clamp(r);
-            out[at + 1] = clamp(g);
-            out[at + 2] = clamp(b);
-            return;
+        if (lightCount > 0 && aim(px, py, pz, nx, ny, nz)) {
+            double[] data = lights.data();
+            int end = lightCount * Lights.STRIDE;
+            for (int o = 0; o < end; o += Lights.STRIDE) {
+                double lx = data[o + Lights.X] - px;
+                double ly = data[o + Lights.Y] - py;
+                double lz = data[o + Lights.Z] - pz;
+                double nl = normalX * lx + normalY * ly + normalZ * lz;
+                if (!(nl > 0)) {
+                    continue; // behind the surface, edge on, or at the lit point
+                }
+                double d2 = lx * lx + ly * ly + lz * lz;
+                double scale = 1;
+                if (!(d2 >= LOW && d2 <= HIGH)) {
+                    scale = largest(lx, ly, lz);
+                    if (!(scale <= Double.MAX_VALUE)) {
+                        continue; // infinitely far
+                    }
+                    lx /= scale;
+                    ly /= scale;
+                    lz /= scale;
+                    nl = normalX * lx + normalY * ly + normalZ * lz;
+                    d2 = lx * lx + ly * ly + lz * lz;
+                }
+                double s = Math.sqrt(d2);
+                double is = 1 / s;
+                double cos = nl * (inverseNormal * is);
+                double vl = (eyeX * lx + eyeY * ly + eyeZ * lz) * (inverseEye * is);
+                double specular = ks * power(2 * cos * vn - vl);
+                // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
+                double lb = data[o + Lights.B];
+                double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
+                r += contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
+                g += contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
+                b += contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
+            }
         }
+        out[at] = clamp(r);
+        out[at + 1] = clamp(g);
+        out[at + 2] = clamp(b);
+    }
+
+    /**
+     * Sets the point's normal and eye vectors (each rescaled when its length
+     * is tiny or huge, with its inverse length) and V . N; false for a zero
+     * or non-finite normal, which gets the ambient term only.
+     */
+    private boolean aim(double px, double py, double pz, double nx, double ny, double nz) {
         double n2 = nx * nx + ny * ny + nz * nz;
         if (!(n2 >= LOW && n2 <= HIGH)) {
-            // Tiny, huge or zero: rescale so the largest component is 1 (zero: ambient only).
             double m = largest(nx, ny, nz);
-            boolean usable = m > 0 && m <= Double.MAX_VALUE;
-            nx = usable ? nx / m : 0;
-            ny = usable ? ny / m : 0;
-            nz = usable ? nz / m : 0;
-            n2 = usable ? nx * nx + ny * ny + nz * nz : 1;
+            if (!(m > 0 && m <= Double.MAX_VALUE)) {
+                return false;
+            }
+            nx /= m;
+            ny /= m;
+            nz /= m;
+            n2 = nx * nx + ny * ny + nz * nz;
         }
-        // E points from P to the eye; |E| need not be 1 (rescaled as N is).
+        // E points from P to the eye; V = E / |E|.
         double ex = perspective ? -px : 0;
         double ey = perspective ? -py : 0;
         double ez = perspective ? -pz : 1;
@@ -121,51 +176,20 @@ public final class Lighting {
             ez = usable ? ez / m : 0;
             e2 = usable ? ex * ex + ey * ey + ez * ez : 1;
         }
-        // 1/|N| and 1/|E| from one division; V . N.
+        // 1/|N| and 1/|E| from one division.
         double sn = Math.sqrt(n2);
         double se = Math.sqrt(e2);
         double q = 1 / (sn * se);
-        double in = se * q;
-        double ie = sn * q;
-        double vn = (ex * nx + ey * ny + ez * nz) * (ie * in);
-        double[] data = lights.data();
-        int end = lightCount * Lights.STRIDE;
-        for (int o = 0; o < end; o += Lights.STRIDE) {
-            double lx = data[o + Lights.X] - px;
-            double ly = data[o + Lights.Y] - py;
-            double lz = data[o + Lights.Z] - pz;
-            double nl = nx * lx + ny * ly + nz * lz;
-            if (!(nl > 0)) {
-                continue; // behind the surface, edge on, at the lit point, or N = 0
-            }
-            double d2 = lx * lx + ly * ly + lz * lz;
-            double scale = 1;
-            if (!(d2 >= LOW && d2 <= HIGH)) {
-                scale = largest(lx, ly, lz);
-                if (!(scale <= Double.MAX_VALUE)) {
-                    continue; // infinitely far
-                }
-                lx /= scale;
-                ly /= scale;
-                lz /= scale;
-                nl = nx * lx + ny * ly + nz * lz;
-                d2 = lx * lx + ly * ly + lz * lz;
-            }
-            double s = Math.sqrt(d2);
-            double is = 1 / s;
-            double cos = nl * (in * is);
-            double vl = (ex * lx + ey * ly + ez * lz) * (ie * is);
-            double specular = ks * power(2 * cos * vn - vl);
-            // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
-            double lb = data[o + Lights.B];
-            double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
-            r += contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
-            g += contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
-            b += contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
-        }
-        out[at] = clamp(r);
-        out[at + 1] = clamp(g);
-        out[at + 2] = clamp(b);
+        normalX = nx;
+        normalY = ny;
+        normalZ = nz;
+        inverseNormal = se * q;
+        eyeX = ex;
+        eyeY = ey;
+        eyeZ = ez;
+        inverseEye = sn * q;
+        vn = (ex * nx + ey * ny + ez * nz) * q;
+        return true;
     }
 
     /** max(0, x)^p, x taken as at most 1 (so 0^0 = 1, and NaN counts as 0). */
