@@ -53,9 +53,9 @@ final class CoursePictures {
             System.out.printf(Locale.ROOT, "| %s | %.2f %% | %.2f %% | %.2f %% | %.2f %% |%n", page.scene(),
                     100 * PanelAgreement.share(ours, theirs, 8, false), 100 * PanelAgreement.share(ours, theirs, 8, true),
                     100 * PanelAgreement.share(ours, theirs, 3, false), 100 * PanelAgreement.share(ours, theirs, 3, true));
-            ImageIO.write(sideBySide(ours, theirs), "png", out.resolve(page.scene() + ".png").toFile());
+            ImageIO.write(sideBySide(ours, theirs), "png", out.resolve("a3-" + page.scene() + ".png").toFile());
             if (args.length > 2) {
-                ImageIO.write(differences(ours, theirs), "png", out.resolve(page.scene() + "-diff.png").toFile());
+                ImageIO.write(differences(ours, theirs), "png", out.resolve("a3-" + page.scene() + "-diff.png").toFile());
             }
         }
     }
