@@ -8,7 +8,9 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Deque;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A second, deliberately plain renderer of lit SIMP scenes (SPEC Part 2),
@@ -39,6 +41,8 @@ final class LitReferenceRenderer {
     private final RefRaster raster = new RefRaster();
     private final Deque<double[][]> stack = new ArrayDeque<>();
     private final List<WorldLight> lights = new ArrayList<>();
+    /** Models read in this scene, so a page that draws one twice (pageI) reads it once. */
+    private final Map<Path, RefObj> models = new HashMap<>();
     private double[][] ctm = RefMatrix.identity();
     private double[][] worldToCamera = RefMatrix.identity();
     private RefView view = RefView.parallel();
@@ -81,7 +85,7 @@ final class LitReferenceRenderer {
     }
 
     private void command(Path file, String line) throws IOException {
-        String[] tokens = line.split("[\\s,()]+");
+        String[] tokens = RefObj.SEPARATORS.split(line);
         String word = tokens[0];
         switch (word) {
             case "{" -> stack.push(ctm);
@@ -102,9 +106,19 @@ final class LitReferenceRenderer {
             case "camera" -> camera(numbers(tokens, 6));
             case "line", "polygon" -> simpPrimitive(word.equals("line") ? 2 : 3, numbers(tokens, -1));
             case "file" -> run(find(file, name(line, word), ".simp"));
-            case "obj" -> obj(RefObj.read(find(file, name(line, word), ".obj")));
+            case "obj" -> obj(model(find(file, name(line, word), ".obj")));
             default -> throw new IllegalArgumentException("unknown command");
         }
+    }
+
+    private RefObj model(Path file) throws IOException {
+        Path key = file.toAbsolutePath().normalize();
+        RefObj model = models.get(key);
+        if (model == null) {
+            model = RefObj.read(file);
+            models.put(key, model);
+        }
+        return model;
     }
 
     private static double num(String[] tokens, int i) {
@@ -322,10 +336,13 @@ final class LitReferenceRenderer {
 
     /** Lit at the pixel: P, N (made unit again) and kd interpolated. */
     private static RefRaster.Fragment phong(RefLighting lighting, Fog fog) {
+        double[] p = new double[3];
+        double[] kd = new double[3];
+        double[] n = new double[3];
         return attributes -> {
-            double[] p = Arrays.copyOfRange(attributes, 0, 3);
-            double[] kd = Arrays.copyOfRange(attributes, R, R + 3);
-            double[] n = Arrays.copyOfRange(attributes, NX, NX + 3);
+            System.arraycopy(attributes, 0, p, 0, 3);
+            System.arraycopy(attributes, R, kd, 0, 3);
+            System.arraycopy(attributes, NX, n, 0, 3);
             return pack(fogged(fog, attributes[2], lighting.colour(p, n, kd)));
         };
     }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.regex.Pattern;
 
 /**
  * The .obj subset of SPEC, read the plain way: `v x y z [w] [r g b]`,
@@ -18,6 +19,9 @@ import java.util.Locale;
  */
 record RefObj(List<double[]> positions, List<double[]> colours, List<double[]> normals, List<int[][]> faces) {
 
+    /** Blanks, commas and parentheses separate, as in simp lines. */
+    static final Pattern SEPARATORS = Pattern.compile("[\\s,()]+");
+
     static RefObj read(Path file) throws IOException {
         RefObj obj = new RefObj(new ArrayList<>(), new ArrayList<>(), new ArrayList<>(), new ArrayList<>());
         int lineNumber = 0;
@@ -27,7 +31,7 @@ record RefObj(List<double[]> positions, List<double[]> colours, List<double[]> n
             if (line.isEmpty() || line.startsWith("#")) {
                 continue;
             }
-            String[] tokens = line.split("[\\s,()]+");
+            String[] tokens = SEPARATORS.split(line);
             String where = file + ":" + lineNumber + ": ";
             switch (tokens[0].toLowerCase(Locale.ROOT)) {
                 case "v" -> obj.vertex(numbers(tokens, where), where);
