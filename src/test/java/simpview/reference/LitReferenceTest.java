@@ -86,6 +86,26 @@ class LitReferenceTest {
         }
     }
 
+    /**
+     * Only a sharp specular term (kd = 0, p = 1000): the brightest pixel is where
+     * the eye sees the light mirrored in the plane z = -50, (50/70) (20, 10, -70)
+     * for a light at (20, 10, -30): panel (417.9, 371.4).
+     */
+    @Test
+    void theSpecularPeakIsAtTheMirrorDirection() throws IOException {
+        int[] panel = render("camera -1 -1 1 1 -0.1 -200\n{\ntranslate 20 10 -30\nlight 1 1 1 1 0\n}\n"
+                + "surface 0 0 0 1 1000\n" + SQUARE_AT_MINUS_50);
+        int best = 0;
+        for (int i = 1; i < N * N; i++) {
+            if ((panel[i] & 0xFF) > (panel[best] & 0xFF)) {
+                best = i;
+            }
+        }
+        assertEquals(417, best % N, 1, "column of the peak");
+        assertEquals(371, best / N, 1, "row of the peak");
+        assertTrue((panel[best] & 0xFF) > 250, "the peak is white");
+    }
+
     private static final String SQUARE_AT_MINUS_100 = """
             polygon (-90, -90, -100) (90, -90, -100) (90, 90, -100)
             polygon (-90, -90, -100) (90, 90, -100) (-90, 90, -100)
