@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * agrees within 8/255 per channel (the course's pictures differ from SPEC's
  * rounding by up to 1/255 nearly everywhere and by a few where the fog ramps;
  * 8 keeps those and still counts every wrong colour, edge or line as a
- * miss), with and without one pixel of slack. Each page is held at the share
+ * miss; 3/255 is held too), with and without one pixel of slack. Each page is held at the share
  * measured on 2026-12-01 (docs/course-pictures.md) minus a margin: 0.5
  * percentage points without slack, 0.1 with it.
  */
@@ -23,35 +23,42 @@ class CoursePicturesTest {
 
     private static final int TOLERANCE = 8;
 
-    /** Page, then the measured shares in % within 8/255: without slack, with 1 px of slack. */
+    /** Page, then the measured shares in %: within 8/255 without and with slack, within 3/255 without and with. */
     static Stream<Arguments> pages() {
         return Stream.of(
-                Arguments.of("pageA", 97.36, 99.99),
-                Arguments.of("pageB", 98.02, 99.98),
-                Arguments.of("pageC", 99.57, 99.93),
-                Arguments.of("pageD", 99.84, 99.99),
-                Arguments.of("pageE", 99.30, 100.00),
-                Arguments.of("pageF", 99.10, 100.00),
-                Arguments.of("pageG", 99.62, 100.00),
-                Arguments.of("pageH", 99.67, 100.00),
-                Arguments.of("pageI", 98.25, 99.97),
-                Arguments.of("tomsPageJ", 99.91, 100.00));
+                Arguments.of("pageA", 97.36, 99.99, 97.36, 99.99),
+                Arguments.of("pageB", 98.02, 99.98, 98.02, 99.98),
+                Arguments.of("pageC", 99.57, 99.93, 99.45, 99.88),
+                Arguments.of("pageD", 99.84, 99.99, 99.81, 99.97),
+                Arguments.of("pageE", 99.30, 100.00, 99.19, 99.97),
+                Arguments.of("pageF", 99.10, 100.00, 99.06, 99.99),
+                Arguments.of("pageG", 99.62, 100.00, 99.62, 100.00),
+                Arguments.of("pageH", 99.67, 100.00, 99.67, 100.00),
+                Arguments.of("pageI", 98.25, 99.97, 98.12, 99.95),
+                Arguments.of("tomsPageJ", 99.91, 100.00, 99.91, 100.00));
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("pages")
-    void agreesWithTheCoursesPicture(String scene, double measured, double measuredWithSlack) throws IOException {
+    void agreesWithTheCoursesPicture(String scene, double within8, double within8Slack, double within3,
+            double within3Slack) throws IOException {
         CourseFiles.require("course-simp-a3");
         CoursePictures.Page page = page(scene);
         int[] ours = CoursePictures.ourPanel(CourseFiles.shared(), page);
         int[] theirs = CoursePictures.coursePanel(CourseFiles.shared(), page);
-        double exact = 100 * PanelAgreement.share(ours, theirs, TOLERANCE, false);
-        double slack = 100 * PanelAgreement.share(ours, theirs, TOLERANCE, true);
-        System.out.printf(Locale.ROOT, "%s: %.2f %% within %d/255, %.2f %% with 1 px of slack%n", scene, exact,
-                TOLERANCE, slack);
-        assertTrue(exact >= measured - 0.5, scene + ": " + exact + " % agree, measured " + measured + " %");
-        assertTrue(slack >= measuredWithSlack - 0.1, scene + ": " + slack + " % agree with slack, measured "
-                + measuredWithSlack + " %");
+        assertShare(scene, ours, theirs, TOLERANCE, false, within8);
+        assertShare(scene, ours, theirs, TOLERANCE, true, within8Slack);
+        assertShare(scene, ours, theirs, 3, false, within3);
+        assertShare(scene, ours, theirs, 3, true, within3Slack);
+    }
+
+    private static void assertShare(String scene, int[] ours, int[] theirs, int tolerance, boolean slack,
+            double measured) {
+        double share = 100 * PanelAgreement.share(ours, theirs, tolerance, slack);
+        String what = String.format(Locale.ROOT, "%s: %.2f %% within %d/255%s (measured %.2f %%)", scene, share,
+                tolerance, slack ? " with 1 px of slack" : "", measured);
+        System.out.println(what);
+        assertTrue(share >= measured - (slack ? 0.1 : 0.5), what);
     }
 
     /** A negative control: the measure tells two different pages apart. */

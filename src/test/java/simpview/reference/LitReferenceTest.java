@@ -3,6 +3,7 @@ package simpview.reference;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -260,6 +261,28 @@ class LitReferenceTest {
         Files.writeString(depthCued, "# camera in a comment does not count\nfile \"plain\"\n");
         assertTrue(ReferencePage.isLit(lit));
         assertFalse(ReferencePage.isLit(depthCued));
+    }
+
+    /** `file` looks beside the including file first, then in the working directory (the project, under Gradle). */
+    @Test
+    void fileLooksBesideTheSceneThenInTheWorkingDirectory() throws IOException {
+        assumeTrue(Files.exists(Path.of("simp/cube.simp")), "not run from the project folder");
+        Files.createDirectories(dir.resolve("simp"));
+        Files.writeString(dir.resolve("simp/cube.simp"), "polygon (0 0 0) (1 0 0) (0 1 0)\n");
+        String scene = "ambient 1 1 1\ntranslate -50 -50 -150\nscale 100 100 100\nfile \"simp/cube\"\n";
+        int[] beside = render(scene);
+        int drawnBeside = 0;
+        for (int rgb : beside) {
+            drawnBeside += rgb != 0 ? 1 : 0;
+        }
+        Files.delete(dir.resolve("simp/cube.simp"));
+        int[] working = render(scene);
+        int drawnWorking = 0;
+        for (int rgb : working) {
+            drawnWorking += rgb != 0 ? 1 : 0;
+        }
+        assertEquals(325 * 325 / 2, drawnBeside, 400, "the one triangle beside the scene");
+        assertEquals(325 * 325, drawnWorking, 1000, "the project's whole cube from the working directory");
     }
 
     /** The biggest course page (dummy.obj twice, about 29,000 filled triangles) renders in a few seconds. */
