@@ -23,6 +23,12 @@ import java.util.Map;
  * camera-space position (x, y, z), a colour (r, g, b) and a camera-space
  * normal (nx, ny, nz). The colour is what shows for unlit primitives, flat
  * and gouraud (already lit), and kd for phong, which lights every pixel.
+ *
+ * <p>Where SPEC leaves a reading open, this reference takes: a gouraud
+ * vertex's lit colour is clamped to [0, 1] at the vertex, before it is
+ * interpolated (SPEC's "Order": the lit colour is clamped, then fogged); a lit
+ * point exactly at the eye (possible only for flat and gouraud, which light
+ * before clipping) has no eye direction and so no specular term.
  */
 final class LitReferenceRenderer {
 
