@@ -44,6 +44,21 @@ class LitHarnessTest {
         assertTrue(share < LitReferenceComparisonTest.REQUIRED, "two different scenes agree on " + share);
     }
 
+    /** The threshold is fine enough to tell the shading modes apart on the course's page-b (a specular cube row). */
+    @Test
+    void theMeasureTellsTheShadingModesApart() throws Exception {
+        Path a4 = CourseFiles.require("course-simp-a4");
+        java.awt.image.BufferedImage flat = ReferencePage.render(a4.resolve("page-b1.simp"));
+        java.awt.image.BufferedImage gouraud = ReferencePage.render(a4.resolve("page-b2.simp"));
+        java.awt.image.BufferedImage phong = ReferencePage.render(a4.resolve("page-b3.simp"));
+        double flatGouraud = LitReferenceComparisonTest.agreement(flat, gouraud);
+        double gouraudPhong = LitReferenceComparisonTest.agreement(gouraud, phong);
+        System.out.printf(Locale.ROOT, "page-b flat/gouraud %.4f %%, gouraud/phong %.4f %%%n", 100 * flatGouraud,
+                100 * gouraudPhong);
+        assertTrue(flatGouraud < LitReferenceComparisonTest.REQUIRED, "flat passes for gouraud: " + flatGouraud);
+        assertTrue(gouraudPhong < LitReferenceComparisonTest.REQUIRED, "gouraud passes for phong: " + gouraudPhong);
+    }
+
     @ParameterizedTest(name = "seed {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24})
     void everyRandomLitSceneIsDrawnByTheReference(long seed) throws IOException {
