@@ -6,12 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.Locale;
-import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -20,11 +20,8 @@ import simpview.surface.Rgb;
  * every A3 page, every A4 page and random lit scenes must agree on at least
  * 99.9 % of panel pixels within 3/255 per channel, with one pixel of slack;
  * the margins stay white. simpview is asked through one adapter,
- * {@link #simpviewRender}, which today can only draw depth-cued scenes: on a
- * lit scene it answers "unknown command 'camera'", which is the one reason
- * this class is disabled.
+ * {@link #simpviewRender}.
  */
-@Disabled("enabled when simpview draws lit scenes (issue 11)")
 class LitReferenceComparisonTest {
 
     static final double REQUIRED = 0.999;
@@ -33,14 +30,14 @@ class LitReferenceComparisonTest {
     @TempDir
     Path dir;
 
-    /**
-     * simpview's picture of a scene, as a 750x750 page. Today: what the
-     * depth-cued reader offers (white to black); the lead points this at the
-     * lit renderer when it lands.
-     */
+    /** simpview's picture of a scene, as a 750x750 page, by the rules the scene calls for. */
     static BufferedImage simpviewRender(Path scene) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
+        if (SceneRules.of(scene).lit()) {
+            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+        } else {
+            SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
+        }
         return canvas.image();
     }
 
@@ -68,8 +65,6 @@ class LitReferenceComparisonTest {
     static void assertAgrees(Path scene) throws Exception {
         BufferedImage ours = simpviewRender(scene);
         double share = agreement(ours, ReferencePage.render(scene));
-        System.out.printf(Locale.ROOT, "%s: %.4f %% within %d/255 with 1 px of slack%n", scene.getFileName(),
-                100 * share, TOLERANCE);
         assertTrue(share >= REQUIRED, scene.getFileName() + ": only " + String.format(Locale.ROOT, "%.4f", 100 * share)
                 + " % of panel pixels match the reference");
         for (int y = 0; y < RefRaster.PAGE; y++) {
