@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.abort;
+import static org.junit.jupiter.api.Assertions.fail;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
@@ -26,6 +26,7 @@ class LargeSceneWindowTest {
 
     static final int POLYGONS = 1_000_000;
     static final long MAX_STALL_MS = 100;
+    private static final int IDLE_PROBES = 20;
     private static final long SEED = 361;
 
     @TempDir
@@ -79,7 +80,7 @@ class LargeSceneWindowTest {
             driver.awaitEdt(() -> !window.busy() || window.status().showingProgress() && window.linesReadSoFar() > 0,
                     "progress or the end of the scene");
             if (!driver.onEdt(window::busy)) {
-                skipBecauseNothingWasLeftToCancel(driver.onEdt(window::shown), (System.nanoTime() - opened) / 1_000_000);
+                failBecauseNothingWasLeftToCancel(driver.onEdt(window::shown), (System.nanoTime() - opened) / 1_000_000);
             }
             long progressAt = (System.nanoTime() - opened) / 1_000_000;
             Thread.sleep(800); // let it draw for a while, under the probe's watch
@@ -109,25 +110,29 @@ class LargeSceneWindowTest {
 
     /**
      * Other builds may keep both cores busy; then even an idle EDT runs late
-     * and a stall says nothing about our window.
+     * and a stall says nothing about our window. The idle EDT is probed up to
+     * {@link #IDLE_PROBES} times for a quiet half second; a machine that never
+     * gives one fails the test rather than skipping it, since a skip could
+     * hide a window that stalls.
      */
     private static void assumeMachineCanMeasureStalls() throws InterruptedException {
-        try (EdtProbe idle = EdtProbe.start()) {
-            Thread.sleep(500);
-            if (idle.maxStallMillis() >= MAX_STALL_MS / 2) {
-                abort("the machine is too busy to measure stalls: the idle EDT already ran "
-                        + idle.maxStallMillis() + " ms late");
+        long worst = 0;
+        for (int probe = 0; probe < IDLE_PROBES; probe++) {
+            try (EdtProbe idle = EdtProbe.start()) {
+                Thread.sleep(500);
+                if (idle.maxStallMillis() < MAX_STALL_MS / 2) {
+                    return;
+                }
+                worst = Math.max(worst, idle.maxStallMillis());
             }
         }
+        fail("the machine is too busy to measure stalls: in " + IDLE_PROBES + " half-second probes the idle EDT "
+                + "always ran at least " + MAX_STALL_MS / 2 + " ms late (up to " + worst + " ms)");
     }
 
-    private static void skipBecauseNothingWasLeftToCancel(RenderedView shown, long millis) {
+    private static void failBecauseNothingWasLeftToCancel(RenderedView shown, long millis) {
         String error = shown.error();
-        if (error != null && error.contains("not yet available")) {
-            abort("the SIMP interpreter is still a placeholder (" + error.lines().findFirst().orElse("")
-                    + "); this test becomes meaningful once it lands");
-        }
-        abort("the scene was drawn in " + millis + " ms, before any progress showed: nothing left to cancel"
+        fail("the scene was drawn in " + millis + " ms, before any progress showed: nothing left to cancel"
                 + (error == null ? "" : "; it ended with: " + error));
     }
 }
