@@ -88,8 +88,8 @@ public final class Main {
         List<String> footer = new ArrayList<>(List.of(commandLine.getCommandSpec().usageMessage().footer()));
         footer.add("");
         footer.add("Scene folder: " + folder);
-        footer.add("  pages 4 and 5 are read from there, and pages 6 to 8 too unless --simp-dir D names");
-        footer.add("  the folder of the course's page6.simp to page8.simp.");
+        footer.add("  pages 4 and 5 come from there; pages 6 to 8 too, unless --simp-dir D");
+        footer.add("  names the folder of the course's page6.simp to page8.simp.");
         commandLine.getCommandSpec().usageMessage().footer(footer.toArray(String[]::new));
     }
 
