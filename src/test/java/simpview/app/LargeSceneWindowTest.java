@@ -26,7 +26,6 @@ class LargeSceneWindowTest {
 
     static final int POLYGONS = 1_000_000;
     static final long MAX_STALL_MS = 100;
-    private static final int IDLE_PROBES = 20;
     private static final long SEED = 361;
 
     @TempDir
@@ -70,8 +69,8 @@ class LargeSceneWindowTest {
         BufferedImage page1 = new PageRenderer().renderImage(1, PageContext.defaults().withSeed(SEED));
         String title = driver.onEdt(() -> window.frame().getTitle());
 
-        assumeMachineCanMeasureStalls();
         long stall;
+        long machine;
         String when;
         try (EdtProbe probe = EdtProbe.start()) {
             long probeStart = System.nanoTime();
@@ -87,13 +86,16 @@ class LargeSceneWindowTest {
             assertTrue(driver.onEdt(window::busy), "still drawing when Cancel is pressed");
             // Measured before the click: Robot.waitForIdle holds up the EDT itself while it syncs with the X server.
             stall = probe.maxStallMillis();
+            machine = probe.maxSchedulingLateMillis();
             when = "starting " + probe.maxStallStartMillis() + " ms after the probe started; scene opened at "
                     + (opened - probeStart) / 1_000_000 + " ms, progress seen " + progressAt + " ms later";
             assertTrue(probe.samples() > 50, "the probe ran: " + probe.samples() + " samples");
         }
         driver.click(window.status().cancelButton());
         driver.awaitEdt(() -> !window.busy(), "the cancel to take");
-        assertTrue(stall < MAX_STALL_MS, "the EDT stalled for " + stall + " ms, " + when);
+        // A machine that keeps every thread waiting excuses that much of the stall, no more.
+        assertTrue(stall < MAX_STALL_MS + machine, "the EDT stalled for " + stall + " ms while a plain thread was"
+                + " at most " + machine + " ms late, " + when);
         // A bar left animating would wake the EDT every few milliseconds for as long as the window is open.
         assertFalse(driver.onEdt(() -> window.status().animating()), "the progress bar still animating after cancel");
 
@@ -106,28 +108,6 @@ class LargeSceneWindowTest {
         // The render thread let go of the scene: the next page comes promptly.
         driver.clickPage();
         driver.awaitShown(new View.OfPage(2));
-    }
-
-    /**
-     * Other builds may keep both cores busy; then even an idle EDT runs late
-     * and a stall says nothing about our window. The idle EDT is probed up to
-     * {@link #IDLE_PROBES} times for a quiet half second; a machine that never
-     * gives one fails the test rather than skipping it, since a skip could
-     * hide a window that stalls.
-     */
-    private static void assumeMachineCanMeasureStalls() throws InterruptedException {
-        long worst = 0;
-        for (int probe = 0; probe < IDLE_PROBES; probe++) {
-            try (EdtProbe idle = EdtProbe.start()) {
-                Thread.sleep(500);
-                if (idle.maxStallMillis() < MAX_STALL_MS / 2) {
-                    return;
-                }
-                worst = Math.max(worst, idle.maxStallMillis());
-            }
-        }
-        fail("the machine is too busy to measure stalls: in " + IDLE_PROBES + " half-second probes the idle EDT "
-                + "always ran at least " + MAX_STALL_MS / 2 + " ms late (up to " + worst + " ms)");
     }
 
     private static void failBecauseNothingWasLeftToCancel(RenderedView shown, long millis) {
