@@ -59,6 +59,16 @@ class TestSummaryTest {
     }
 
     @Test
+    void aSkipsReasonIsShownWithoutTheExceptionThatCarriedIt() {
+        assertEquals("the course's files are not at /x",
+                TestSummary.firstLine("org.opentest4j.TestAbortedException: Assumption failed: the course's files are not at /x\n"
+                        + "\tat org.junit.jupiter.api.Assumptions.throwAssumptionFailed(Assumptions.java:340)"));
+        assertEquals("expected: <1> but was: <2>",
+                TestSummary.firstLine("org.opentest4j.AssertionFailedError: expected: <1> but was: <2>"));
+        assertEquals("Tests: kept as they are", TestSummary.firstLine("Tests: kept as they are"));
+    }
+
+    @Test
     void noResultsIsSaidPlainly() throws IOException {
         assertEquals("Tests: no results were written (did the test task run?)",
                 TestSummary.countsLine(TestResults.read(dir.resolve("missing"))));

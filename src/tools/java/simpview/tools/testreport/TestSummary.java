@@ -3,6 +3,7 @@ package simpview.tools.testreport;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
+import java.util.regex.Pattern;
 
 /**
  * Run by the build after the tests: {@code TestSummary RESULTS [REPORTS]}
@@ -11,6 +12,10 @@ import java.nio.file.Path;
  * writes the HTML report there. Exits 0: the test task itself fails the build.
  */
 public final class TestSummary {
+
+    /** "org.opentest4j.TestAbortedException: " and the like, at the start of a trace's first line. */
+    private static final Pattern THROWN = Pattern.compile("^(?:[a-z_][\\w$]*\\.)+[A-Z][\\w$]*(?:Exception|Error): ");
+    private static final String ASSUMPTION = "Assumption failed: ";
 
     private TestSummary() {
     }
@@ -49,8 +54,13 @@ public final class TestSummary {
                 + results.count(TestCase.Outcome.SKIPPED) + " skipped";
     }
 
-    private static String firstLine(String text) {
+    /** The first line of a message, without the exception class a stack trace starts with. */
+    static String firstLine(String text) {
         String line = text.lines().findFirst().orElse("").strip();
+        line = THROWN.matcher(line).replaceFirst("");
+        if (line.startsWith(ASSUMPTION)) {
+            line = line.substring(ASSUMPTION.length());
+        }
         return line.isEmpty() ? "(no reason given)" : line;
     }
 }
