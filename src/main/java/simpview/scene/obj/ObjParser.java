@@ -3,6 +3,7 @@ package simpview.scene.obj;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Arrays;
 import simpview.scene.simp.DecimalParser;
 import simpview.scene.simp.LineSource;
 import simpview.scene.simp.SceneException;
@@ -219,8 +220,8 @@ final class ObjParser {
         boolean anyNormal = false;
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == vertexRefs.length) {
-                vertexRefs = java.util.Arrays.copyOf(vertexRefs, 2 * n);
-                normalRefs = java.util.Arrays.copyOf(normalRefs, 2 * n);
+                vertexRefs = Arrays.copyOf(vertexRefs, 2 * n);
+                normalRefs = Arrays.copyOf(normalRefs, 2 * n);
             }
             int start = i;
             i = reference(i, n);
