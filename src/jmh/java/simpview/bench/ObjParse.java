@@ -14,11 +14,11 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
+import simpview.scene.SceneException;
 import simpview.scene.obj.ObjFace;
 import simpview.scene.obj.ObjModel;
 import simpview.scene.obj.ObjReader;
 import simpview.scene.obj.ObjSink;
-import simpview.scene.simp.SceneException;
 
 /**
  * The course's dummy.obj (2.2 MB: 14,652 vertices, 16,119 normals, 16,026

@@ -4,10 +4,10 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.surface.PageCanvas;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneCancelledException;
-import simpview.scene.simp.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
 
 /**
  * One picture to draw on the render thread. It is also the scene's monitor:

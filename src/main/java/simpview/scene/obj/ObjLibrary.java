@@ -9,7 +9,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * The .obj models of the scenes drawn so far, kept while their files are

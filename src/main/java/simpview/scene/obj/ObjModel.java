@@ -1,7 +1,7 @@
 package simpview.scene.obj;
 
 import java.nio.file.Path;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * A parsed .obj file kept in memory, to be drawn again without reading it:

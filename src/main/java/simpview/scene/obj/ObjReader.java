@@ -1,7 +1,7 @@
 package simpview.scene.obj;
 
 import java.nio.file.Path;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * Streams an .obj file: reads it line by line in chunks and hands each face

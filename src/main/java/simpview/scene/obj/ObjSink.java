@@ -1,6 +1,6 @@
 package simpview.scene.obj;
 
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * Takes the faces of an .obj model one at a time, in file order, as they are

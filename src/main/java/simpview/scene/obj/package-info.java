@@ -22,7 +22,7 @@
  * <p>A sink sees positions already divided by w, colours and normals as
  * written (the caller clamps colours and normalizes normals), the 0-based
  * vertex and normal indices (to do per-vertex work once per vertex), and the
- * face's line. Errors are {@link simpview.scene.simp.SceneException}s with the
+ * face's line. Errors are {@link simpview.scene.SceneException}s with the
  * obj file, line and column; the faces before an error have been handed over.
  * Finding the file (the folder of the scene, then the working directory) is
  * the caller's part.

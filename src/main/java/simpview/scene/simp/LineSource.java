@@ -8,6 +8,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import simpview.scene.SceneException;
 
 /**
  * The lines of one file as byte ranges in a buffer, read in chunks so that a

@@ -13,7 +13,7 @@ import java.util.Locale;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * The course's own .obj files (read from ../shared, never copied here) read

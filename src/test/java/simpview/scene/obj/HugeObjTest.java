@@ -15,7 +15,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * A generated .obj of 5,000,000 faces over 1,000,000 vertices (about 125 MB)

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * Every error of the .obj subset: the obj file, line and column, the line as

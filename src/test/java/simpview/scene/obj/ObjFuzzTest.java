@@ -12,7 +12,7 @@ import net.jqwik.api.Property;
 import net.jqwik.api.statistics.Statistics;
 import simpview.scene.obj.CollectedFaces.Corner;
 import simpview.scene.obj.CollectedFaces.Face;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * Random models written every way the subset allows (any case, any

@@ -16,7 +16,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /** The cache of parsed models: kept while the file is unchanged, within its budget, shared safely. */
 class ObjLibraryTest {

@@ -14,9 +14,9 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import simpview.scene.SceneException;
 import simpview.scene.obj.CollectedFaces.Corner;
 import simpview.scene.obj.CollectedFaces.Face;
-import simpview.scene.simp.SceneException;
 
 /** Every form of the .obj subset, read from text in memory; each also replayed from a model, which must agree. */
 class ObjReaderTest {

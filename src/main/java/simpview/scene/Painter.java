@@ -1,29 +1,29 @@
-package simpview.scene.simp;
+package simpview.scene;
 
 import simpview.geometry.Vertex;
-import simpview.surface.Drawable;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
+import simpview.surface.Drawable;
 
 /**
  * Draws primitives given as plain numbers in panel space with the scene's
  * renderers. Everything it touches (renderers, panel) belongs to the thread
  * that draws, so it is the only part of a scene that runs there.
  */
-final class Painter implements PrimitiveSink {
+public final class Painter implements PrimitiveSink {
 
-    static final int LINE = 0;
-    static final int FILLED = 1;
-    static final int WIRE = 2;
+    public static final int LINE = 0;
+    public static final int FILLED = 1;
+    public static final int WIRE = 2;
     /** Numbers per primitive: room for a polygon's three vertices (panel x, panel y, world z, r, g, b each). */
-    static final int STRIDE = 3 * Vertex.NUMBERS;
+    public static final int STRIDE = 3 * Vertex.NUMBERS;
 
     private final Drawable panel;
     private final LineRenderer lines;
     private final PolygonRenderer filled;
     private final PolygonRenderer wire;
 
-    Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
+    public Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
         this.panel = panel;
         this.lines = lines;
         this.filled = filled;
@@ -36,7 +36,7 @@ final class Painter implements PrimitiveSink {
     }
 
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
-    void draw(int kind, double[] p, int at) {
+    public void draw(int kind, double[] p, int at) {
         switch (kind) {
             case LINE -> lines.drawLine(p, at, at + Vertex.NUMBERS, panel);
             case FILLED -> filled.drawPolygon(p, at, panel);
