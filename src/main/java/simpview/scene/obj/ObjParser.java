@@ -37,7 +37,6 @@ final class ObjParser {
     private ObjFaceList recorder;
     private int[] vertexRefs = new int[16];
     private int[] normalRefs = new int[16];
-    private int textureCount;
     private int faceCount;
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
@@ -139,8 +138,6 @@ final class ObjParser {
             int second = b[i + 1] | 0x20;
             if (second == 'n') {
                 normal(wordEnd);
-            } else if (second == 't') {
-                textureCount++;
             }
         }
     }
@@ -253,10 +250,7 @@ final class ObjParser {
         if (i < end && b[i] == '/') {
             i++;
             if (i >= end || b[i] != '/') {
-                int t = i;
-                i = index(i, start);
-                resolve(t, i, textureCount, "texture coordinate", "texture coordinates (vt lines)",
-                        "texture coordinate (vt line)");
+                i = index(i, start); // a texture index: vt lines are ignored, so it names nothing to check
                 if (i >= end || b[i] != '/') {
                     return i;
                 }
