@@ -15,8 +15,9 @@ import simpview.scene.simp.LineSource;
  *
  * <p>Lines are split as SIMP lines are: blanks (spaces, tabs), commas and
  * parentheses all separate. The keyword (the first word, any case) decides:
- * {@code v}, {@code vn} and {@code f} are read, {@code vt} lines are only
- * counted (a face may name them), every other line is ignored.
+ * {@code v}, {@code vn} and {@code f} are read, every other line ({@code vt}
+ * included) is ignored; a face's texture index is read but names nothing to
+ * check.
  */
 final class ObjParser {
 
