@@ -30,14 +30,6 @@ import simpview.surface.PageCanvas;
  */
 class SimpDocExamplesTest {
 
-    /**
-     * Blocks of features simpview does not draw yet; each is only counted
-     * today. TODO(lead): remove "simp-lit" once lit scenes are merged, and
-     * "simp-colour" once the reader takes vertex colours: their examples are
-     * then rendered like every ```simp block.
-     */
-    static final Set<String> NOT_YET_DRAWN = Set.of("simp-lit", "simp-colour");
-
     private static final Pattern BLOCK = Pattern.compile("(?m)^```(simp[a-z-]*)\\n(.*?)^```$", Pattern.DOTALL);
     private static final Pattern FILE_NAME = Pattern.compile("\\A# file: (\\S+\\.simp)\\n");
 
@@ -76,8 +68,7 @@ class SimpDocExamplesTest {
         for (Example e : all) {
             Files.writeString(dir.resolve(e.fileName()), e.text()); // before any runs: examples include others
         }
-        return all.stream().filter(e -> !NOT_YET_DRAWN.contains(e.kind()))
-                .map(e -> DynamicTest.dynamicTest("example " + e.number() + " (" + e.kind() + ", " + e.fileName() + ")",
+        return all.stream().map(e -> DynamicTest.dynamicTest("example " + e.number() + " (" + e.kind() + ", " + e.fileName() + ")",
                         () -> check(e)));
     }
 
