@@ -18,7 +18,7 @@ import simpview.pages.PageContext;
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = Main.VERSION,
-        subcommands = RenderCommand.class,
+        subcommands = {RenderCommand.class, CompareCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
             "Use 'simpview render' to write pages as PNG files without a window."},
