@@ -7,7 +7,7 @@ import java.awt.image.BufferedImage;
  * pixel on two panels given by their top-left corners, nested loops over the
  * 3x3 neighbours. Written apart from {@link Comparison}, sharing no code.
  */
-final class IndependentShares {
+public final class IndependentShares {
 
     static final int N = 650;
 
@@ -15,7 +15,7 @@ final class IndependentShares {
     }
 
     /** The share of pixels whose every channel is within {@code tolerance}, without slack. */
-    static double direct(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
+    public static double direct(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
         long count = 0;
         for (int y = 0; y < N; y++) {
             for (int x = 0; x < N; x++) {
@@ -28,7 +28,7 @@ final class IndependentShares {
     }
 
     /** The share with slack: a's colour found near the pixel in b, and b's found near it in a. */
-    static double withSlack(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
+    public static double withSlack(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
         long count = 0;
         for (int y = 0; y < N; y++) {
             for (int x = 0; x < N; x++) {
