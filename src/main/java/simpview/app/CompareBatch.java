@@ -139,7 +139,7 @@ final class CompareBatch {
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
         String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "") + "-diff.png";
         try {
-            PngFiles.writeFast(HeatMap.diffImage(comparison, tolerance), outDir.resolve(diff));
+            PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), outDir.resolve(diff));
         } catch (IOException e) {
             BatchRow row = BatchRow.compared(relative, label, report, "");
             return new BatchRow(row.file(), row.target(), row.exact(), row.slack(), row.verdict(), row.result(),

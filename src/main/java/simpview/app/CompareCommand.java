@@ -145,7 +145,7 @@ final class CompareCommand implements Callable<Integer> {
         out.print(report.text());
         if (diff != null) {
             try {
-                PngFiles.writeFast(HeatMap.diffImage(comparison, tolerance), diff);
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
                 out.println("diff:    " + diff + " (ours | theirs | heat map: grey identical, blue within "
                         + tolerance + "/255, yellow one pixel off, red different)");
             } catch (IOException e) {

@@ -20,6 +20,7 @@ public final class HeatMap {
     /** Gap between the three panels of a diff image, in mid grey. */
     public static final int GAP = 10;
     public static final int GAP_COLOUR = 0x808080;
+    public static final int DIFF_WIDTH = 3 * Comparison.N + 2 * GAP;
 
     private HeatMap() {
     }
@@ -51,10 +52,21 @@ public final class HeatMap {
 
     /** Ours | theirs | heat map, each panel at 1:1, with a grey gap of 10 pixels between them. */
     public static BufferedImage diffImage(Comparison c, int tolerance) {
+        BufferedImage image = new BufferedImage(DIFF_WIDTH, Comparison.N, BufferedImage.TYPE_INT_RGB);
+        fillDiff(c, tolerance, ((DataBufferInt) image.getRaster().getDataBuffer()).getData());
+        return image;
+    }
+
+    /** The diff image as PNG file bytes, made without ImageIO (fast to start, fast to deflate). */
+    public static byte[] diffPng(Comparison c, int tolerance) {
+        int[] pixels = new int[DIFF_WIDTH * Comparison.N];
+        fillDiff(c, tolerance, pixels);
+        return PngCodec.encode(DIFF_WIDTH, Comparison.N, pixels);
+    }
+
+    private static void fillDiff(Comparison c, int tolerance, int[] out) {
         int n = Comparison.N;
-        int width = 3 * n + 2 * GAP;
-        BufferedImage image = new BufferedImage(width, n, BufferedImage.TYPE_INT_RGB);
-        int[] out = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        int width = DIFF_WIDTH;
         int[] heat = new int[n * n];
         fill(c, tolerance, heat);
         for (int y = 0; y < n; y++) {
@@ -65,7 +77,6 @@ public final class HeatMap {
             Arrays.fill(out, row + 2 * n + GAP, row + 2 * n + 2 * GAP, GAP_COLOUR);
             System.arraycopy(heat, y * n, out, row + 2 * n + 2 * GAP, n);
         }
-        return image;
     }
 
     /** A 650x650 panel as a 750x750 page with white margins, for showing in place of a page. */

@@ -1,7 +1,9 @@
 package simpview.compare;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
@@ -33,7 +35,10 @@ public final class Picture {
 
     /** Reads a picture file and finds its panel; every way this can fail is a clear CompareException. */
     public static Picture read(Path file) throws CompareException {
-        return of(readImage(file), file.toString());
+        PngCodec.Pixels pixels = readPixels(file);
+        String name = file.toString();
+        PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
+        return new Picture(name, pixels.rgb(), pixels.width(), pixels.height(), place);
     }
 
     /** A picture in memory (a page, a capture), its panel found as in a file. */
@@ -52,28 +57,49 @@ public final class Picture {
         return new Picture(name, Rasters.rgb(page), page.getWidth(), page.getHeight(), place);
     }
 
-    static BufferedImage readImage(Path file) throws CompareException {
+    /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
+    static PngCodec.Pixels readPixels(Path file) throws CompareException {
+        byte[] bytes = readBytes(file);
+        if (PngCodec.isPng(bytes)) {
+            try {
+                return PngCodec.decode(bytes);
+            } catch (CompareException e) {
+                throw damaged(file, e.getMessage(), e);
+            } catch (PngCodec.Unsupported e) {
+                // a kind of PNG ImageIO reads
+            }
+        }
+        BufferedImage image;
+        try {
+            image = ImageIO.read(new ByteArrayInputStream(bytes));
+        } catch (IOException | RuntimeException e) {
+            // Decoders throw all sorts on damaged data; the cause is for the curious.
+            throw damaged(file, e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage(), e);
+        }
+        if (image == null) {
+            throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
+        }
+        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.rgb(image));
+    }
+
+    private static CompareException damaged(Path file, String why, Exception cause) {
+        return new CompareException(file + ": cannot be read as a picture, it is damaged or cut short (" + why + ")", cause);
+    }
+
+    private static byte[] readBytes(Path file) throws CompareException {
         if (!Files.exists(file)) {
             throw new CompareException(file + ": no such file");
         }
         if (Files.isDirectory(file)) {
             throw new CompareException(file + " is a folder, not a picture");
         }
-        if (!Files.isReadable(file)) {
-            throw new CompareException(file + ": permission denied");
-        }
-        BufferedImage image;
         try {
-            image = ImageIO.read(file.toFile());
-        } catch (IOException | RuntimeException e) {
-            // Decoders throw all sorts on damaged data; the cause is for the curious.
-            throw new CompareException(file + ": cannot be read as a picture, it is damaged or cut short ("
-                    + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()) + ")", e);
+            return Files.readAllBytes(file);
+        } catch (AccessDeniedException e) {
+            throw new CompareException(file + ": permission denied", e);
+        } catch (IOException e) {
+            throw new CompareException(file + ": cannot be read (" + e.getMessage() + ")", e);
         }
-        if (image == null) {
-            throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
-        }
-        return image;
     }
 
     public String name() {
