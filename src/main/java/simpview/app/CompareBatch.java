@@ -7,12 +7,18 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.TreeMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
 import java.util.stream.Stream;
 import simpview.app.CompareOptions.PageRange;
@@ -100,18 +106,65 @@ final class CompareBatch {
             err.println("simpview compare: --dir " + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return Main.USAGE_ERROR;
         }
-        List<BatchRow> rows = new ArrayList<>();
         long start = System.nanoTime();
-        for (int i = 0; i < pictures.size(); i++) {
-            String relative = dir.relativize(pictures.get(i)).toString();
-            Match match = matcher.apply(pictures.get(i).getFileName().toString());
-            BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
-                    : compare(pictures.get(i), relative, match.target(), outDir);
-            rows.add(row);
-            err.printf("[%d/%d] %s: %s%n", i + 1, pictures.size(), relative, progress(row));
+        List<Match> matches = new ArrayList<>();
+        for (Path picture : pictures) {
+            matches.add(matcher.apply(picture.getFileName().toString()));
         }
+        Map<CompareTarget, Object> drawn = drawAll(matches);
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, outDir);
         err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), (System.nanoTime() - start) / 1e9);
         return writeTables(rows, outDir);
+    }
+
+    /** Each page or scene the pictures need, drawn once, in order (the canvas is one): its Picture or its error. */
+    private Map<CompareTarget, Object> drawAll(List<Match> matches) {
+        Map<CompareTarget, Object> drawn = new HashMap<>();
+        for (Match match : matches) {
+            if (match.target() != null && !drawn.containsKey(match.target())) {
+                try {
+                    drawn.put(match.target(), own.of(match.target()));
+                } catch (SceneException e) {
+                    drawn.put(match.target(), "simpview cannot draw it: " + e.getMessage());
+                }
+            }
+        }
+        return drawn;
+    }
+
+    /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
+    private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
+            Map<CompareTarget, Object> drawn, Path outDir) {
+        ExecutorService workers = Executors.newFixedThreadPool(Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())));
+        AtomicInteger finished = new AtomicInteger();
+        try {
+            List<Future<BatchRow>> rows = new ArrayList<>();
+            for (int i = 0; i < pictures.size(); i++) {
+                Path picture = pictures.get(i);
+                Match match = matches.get(i);
+                rows.add(workers.submit(() -> {
+                    String relative = dir.relativize(picture).toString();
+                    BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
+                            : compare(picture, relative, match.target(), drawn.get(match.target()), outDir);
+                    synchronized (err) {
+                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(row));
+                    }
+                    return row;
+                }));
+            }
+            List<BatchRow> done = new ArrayList<>();
+            for (Future<BatchRow> row : rows) {
+                done.add(row.get());
+            }
+            return done;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while comparing", e);
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("a comparison failed", e.getCause());
+        } finally {
+            workers.shutdownNow();
+        }
     }
 
     private static String progress(BatchRow row) {
@@ -121,21 +174,19 @@ final class CompareBatch {
         };
     }
 
-    private BatchRow compare(Path file, String relative, CompareTarget target, Path outDir) {
+    /** One picture against simpview's (a Picture, or the error that kept it from being drawn). Thread-safe. */
+    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, Path outDir) {
         String label = target.label(own.context());
-        Picture theirs;
-        Picture ours;
-        try {
-            ours = own.of(target);
-        } catch (SceneException e) {
-            return BatchRow.broken(relative, label, "simpview cannot draw it: " + e.getMessage());
+        if (ours instanceof String problem) {
+            return BatchRow.broken(relative, label, problem);
         }
+        Picture theirs;
         try {
             theirs = Picture.read(file);
         } catch (CompareException e) {
             return BatchRow.broken(relative, label, e.getMessage());
         }
-        Comparison comparison = Comparison.of(ours.panel(), theirs.panel());
+        Comparison comparison = Comparison.of(((Picture) ours).panel(), theirs.panel());
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
         String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "") + "-diff.png";
         try {

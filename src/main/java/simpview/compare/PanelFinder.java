@@ -19,23 +19,29 @@ final class PanelFinder {
     /** The panel's own outermost pixels must be at least this much not white. */
     private static final double BORDER_DARK = 0.25;
 
+    private final int[] rgb;
     private final int width;
     private final int height;
-    /** rowWhite[y * (width + 1) + x]: white pixels in row y left of column x. */
-    private final int[] rowWhite;
-    /** colWhite[x * (height + 1) + y]: white pixels in column x above row y. */
-    private final int[] colWhite;
+    /** rowWhite[y * (width + 1) + x]: white pixels in row y left of column x; null until a search needs it. */
+    private int[] rowWhite;
+    /** colWhite[y * width + x]: white pixels in column x above row y (row-major, so it fills in order). */
+    private int[] colWhite;
 
     private PanelFinder(int[] rgb, int width, int height) {
+        this.rgb = rgb;
         this.width = width;
         this.height = height;
+    }
+
+    /** Counts of white pixels along every row and column, so that a search tries each place in constant time. */
+    private void countWhite() {
         rowWhite = new int[height * (width + 1)];
-        colWhite = new int[width * (height + 1)];
+        colWhite = new int[(height + 1) * width];
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
                 int white = isWhite(rgb[y * width + x]) ? 1 : 0;
                 rowWhite[y * (width + 1) + x + 1] = rowWhite[y * (width + 1) + x] + white;
-                colWhite[x * (height + 1) + y + 1] = colWhite[x * (height + 1) + y] + white;
+                colWhite[(y + 1) * width + x] = colWhite[y * width + x] + white;
             }
         }
     }
@@ -70,6 +76,7 @@ final class PanelFinder {
 
     /** The best place that qualifies, or null. */
     private PanelPlace search() {
+        countWhite();
         int size = PanelPlace.SIZE;
         int bestScore = -1;
         PanelPlace best = null;
@@ -116,11 +123,25 @@ final class PanelFinder {
     }
 
     private int row(int y, int from, int to) {
-        return rowWhite[y * (width + 1) + to] - rowWhite[y * (width + 1) + from];
+        if (rowWhite != null) {
+            return rowWhite[y * (width + 1) + to] - rowWhite[y * (width + 1) + from];
+        }
+        int white = 0;
+        for (int x = from; x < to; x++) {
+            white += isWhite(rgb[y * width + x]) ? 1 : 0;
+        }
+        return white;
     }
 
     private int column(int x, int from, int to) {
-        return colWhite[x * (height + 1) + to] - colWhite[x * (height + 1) + from];
+        if (colWhite != null) {
+            return colWhite[to * width + x] - colWhite[from * width + x];
+        }
+        int white = 0;
+        for (int y = from; y < to; y++) {
+            white += isWhite(rgb[y * width + x]) ? 1 : 0;
+        }
+        return white;
     }
 
     static boolean isWhite(int rgb) {
