@@ -21,7 +21,8 @@ import simpview.pages.PageContext;
         subcommands = {RenderCommand.class, CompareCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
-            "Use 'simpview render' to write pages as PNG files without a window."},
+            "Use 'simpview render' to write pages as PNG files without a window,",
+            "and 'simpview compare' to see how close a picture is to simpview's."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 final class SimpviewCommand implements Callable<Integer> {

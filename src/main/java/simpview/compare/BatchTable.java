@@ -55,7 +55,7 @@ public final class BatchTable {
         for (BatchRow row : rows) {
             counts[row.result().ordinal()]++;
         }
-        return String.format("%d pictures: %d pass, %d fail, %d could not be compared, %d skipped (no page matches)",
+        return String.format("%d pictures: %d pass, %d fail, %d could not be compared, %d skipped",
                 rows.size(), counts[0], counts[1], counts[2], counts[3]);
     }
 
