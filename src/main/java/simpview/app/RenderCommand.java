@@ -18,7 +18,6 @@ import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
@@ -114,7 +113,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private int renderPage(int number) {
         try {
-            return write(new PageRenderer().renderImage(number, context()), out);
+            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;
@@ -122,13 +121,13 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderAll() {
-        PageRenderer renderer = new PageRenderer();
+        PageDrawing drawing = new PageDrawing(monitor());
         PageContext context = context();
         int code = Main.OK;
         for (int n = 1; n <= Pages.COUNT; n++) {
             BufferedImage image;
             try {
-                image = renderer.renderImage(n, context);
+                image = drawing.page(n, context).image();
             } catch (SceneException e) {
                 err().println("page " + n + " not written: " + e.getMessage());
                 code = Main.SCENE_ERROR;
@@ -142,15 +141,12 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderScene() {
-        SceneSheet sheet = new SceneSheet(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
-        PageCanvas canvas = new PageCanvas();
         try {
-            sheet.drawOn(canvas, monitor(), SceneDrawer.SIMP);
+            return write(new PageDrawing(monitor()).scene(what.scene, near, far).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;
         }
-        return write(canvas.image(), out);
     }
 
     /** Pages that fail are left out and named on stderr; the sheet shows the rest. */

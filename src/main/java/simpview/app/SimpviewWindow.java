@@ -34,6 +34,8 @@ final class SimpviewWindow {
     private WindowOptions options;
     private RenderedView shown;
     private RenderJob pending;
+    // compare (issue 15): a picture dropped or opened, compared with the view on screen
+    private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView, status::say);
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -62,7 +64,7 @@ final class SimpviewWindow {
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         // The page stays at 1:1; a larger window would only add grey.
         frame.setResizable(false);
-        frame.setTransferHandler(new SceneDrop(this::openScene, status::say));
+        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, status::say)); // compare (issue 15)
         pageView.addMouseListener(new MouseAdapter() {
             @Override
             public void mousePressed(MouseEvent e) {
@@ -97,6 +99,7 @@ final class SimpviewWindow {
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
         bindStroke("open", this::chooseScene, KeyStroke.getKeyStroke(KeyEvent.VK_O, menu));
+        comparison.bindKeys((name, action, stroke) -> bindStroke(name, action, KeyStroke.getKeyStroke(stroke))); // compare (issue 15)
     }
 
     private void bind(String name, Runnable action, String... keys) {
@@ -169,6 +172,7 @@ final class SimpviewWindow {
         pageView.show(result.image(), result.error());
         frame.setTitle(result.title());
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
+        comparison.viewShown(result); // compare (issue 15)
     }
 
     /** Stops the picture being drawn; the one on screen stays, and so does its place among the pages. */
@@ -210,6 +214,11 @@ final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    // compare (issue 15)
+    ComparisonLayer comparison() {
+        return comparison;
     }
 
     RenderedView shown() {

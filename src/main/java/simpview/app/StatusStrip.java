@@ -71,6 +71,11 @@ final class StatusStrip {
         cards.show(panel, TEXT);
     }
 
+    /** The text shown (when no progress is). */
+    String text() {
+        return text.getText();
+    }
+
     boolean showingProgress() {
         return bar.isShowing();
     }
