@@ -120,6 +120,8 @@ final class CompareCommand implements Callable<Integer> {
         }
         usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
+        String cue = scene == null ? null : SceneSheet.cueColoursProblem(scene, near, far);
+        usage(cue == null, cue);
         usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }
 
