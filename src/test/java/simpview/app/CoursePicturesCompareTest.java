@@ -36,7 +36,6 @@ class CoursePicturesCompareTest {
         Path course = CourseFiles.require("course-simp");
         Path picture = CourseFiles.require("reference/images/a2/page" + page + ".png");
         CliRun run = CliRun.of("compare", picture.toString(), "--page", String.valueOf(page), "--simp-dir", course.toString());
-        System.out.println(run.out());
 
         double[] printed8 = CompareCommandTest.printed(run.out(), "within 8/255");
         double[] printedIdentical = CompareCommandTest.printed(run.out(), "identical");
