@@ -129,9 +129,7 @@ class SimpviewWindowTest {
         driver.press(KeyEvent.VK_6);
         RenderedView six = driver.awaitShown(new View.OfPage(6));
         assertTrue(six.error() != null && six.error().contains(bad.toString()), "names the file: " + six.error());
-        if (!six.error().contains("not yet available")) {
-            assertTrue(six.error().contains(bad + ":2:8"), "file:line:col of the bad axis: " + six.error());
-        }
+        assertTrue(six.error().contains(bad + ":2:8"), "file:line:col of the bad axis: " + six.error());
         // The overlay is on screen: the capture differs from the page as drawn, at the bottom only.
         BufferedImage screen = driver.captureWhen(
                 capture -> Images.differingPixels(six.image(), capture, 0, PageCanvas.SIZE / 2) == 0);

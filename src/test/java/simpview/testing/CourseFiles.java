@@ -7,34 +7,55 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
- * The course's scene folders beside the project (../shared/course-simp,
- * course-simp-a3, course-simp-a4), which the project never holds. A test that
- * needs one skips, saying why, when it is absent; under CI=true the absence
- * is a failure instead, so a CI run can never pass by skipping.
+ * The course's scene files, which never come with the project: the build
+ * passes the depth-cued folder as -Dsimpview.courseSimp (../shared/course-simp
+ * beside the project), and the lit ones (course-simp-a3, course-simp-a4) are
+ * its siblings. A test that needs them skips, saying so, when they are not
+ * there; under CI=true their absence fails the test instead, so that a CI
+ * without them cannot turn green by skipping.
  */
 public final class CourseFiles {
 
     private CourseFiles() {
     }
 
-    /** The folder ../shared/NAME beside the project, e.g. "course-simp-a3"; it may be absent. */
+    /** Where the course's depth-cued scenes are looked for (whether or not they are there). */
+    public static Path simpDir() {
+        return Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+    }
+
+    public static boolean present() {
+        return Files.isRegularFile(simpDir().resolve("page6.simp"));
+    }
+
+    /** The course's scene folder; skips the test (fails it under CI=true) when it is absent. */
+    public static Path requireSimpDir() {
+        if (!present()) {
+            absent("the course's scene files are not at " + simpDir().toAbsolutePath().normalize()
+                    + " (../shared/course-simp beside the project)");
+        }
+        return simpDir();
+    }
+
+    /** The course folder NAME beside the depth-cued one, e.g. "course-simp-a3"; it may be absent. */
     public static Path folder(String name) {
-        String depthCued = System.getProperty("simpview.courseSimp");
-        Path shared = depthCued != null ? Path.of(depthCued).getParent()
-                : Goldens.projectDir().resolve("../shared").normalize();
+        Path shared = simpDir().toAbsolutePath().normalize().getParent();
         return shared == null ? Path.of(name) : shared.resolve(name);
     }
 
-    /** The folder, when it is there; else the test skips (or fails under CI=true). */
+    /** {@link #folder}, when it is there; else the test skips (or fails under CI=true). */
     public static Path require(String name) {
         Path dir = folder(name);
-        boolean present = Files.isDirectory(dir);
-        if (!present && "true".equals(System.getenv("CI"))) {
-            fail("the course's files are missing: " + dir.toAbsolutePath().normalize()
-                    + " (CI must have ../shared beside the project)");
+        if (!Files.isDirectory(dir)) {
+            absent("the course's files are not at " + dir + " (../shared/" + name + " beside the project)");
         }
-        assumeTrue(present, "the course's files are not beside the project (" + dir.toAbsolutePath().normalize()
-                + "): skipped");
         return dir;
+    }
+
+    private static void absent(String why) {
+        if ("true".equalsIgnoreCase(System.getenv("CI"))) {
+            fail(why + ", and CI=true: they must be there on CI");
+        }
+        assumeTrue(false, why + ": this test needs them and is skipped");
     }
 }

@@ -3,6 +3,7 @@ package simpview.scene.obj;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Arrays;
 import simpview.scene.SceneException;
 import simpview.scene.simp.DecimalParser;
 import simpview.scene.simp.LineSource;
@@ -14,8 +15,9 @@ import simpview.scene.simp.LineSource;
  *
  * <p>Lines are split as SIMP lines are: blanks (spaces, tabs), commas and
  * parentheses all separate. The keyword (the first word, any case) decides:
- * {@code v}, {@code vn} and {@code f} are read, {@code vt} lines are only
- * counted (a face may name them), every other line is ignored.
+ * {@code v}, {@code vn} and {@code f} are read, every other line ({@code vt}
+ * included) is ignored; a face's texture index is read but names nothing to
+ * check.
  */
 final class ObjParser {
 
@@ -216,8 +218,8 @@ final class ObjParser {
         boolean anyNormal = false;
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == vertexRefs.length) {
-                vertexRefs = java.util.Arrays.copyOf(vertexRefs, 2 * n);
-                normalRefs = java.util.Arrays.copyOf(normalRefs, 2 * n);
+                vertexRefs = Arrays.copyOf(vertexRefs, 2 * n);
+                normalRefs = Arrays.copyOf(normalRefs, 2 * n);
             }
             int start = i;
             i = reference(i, n);
