@@ -11,6 +11,7 @@ import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
@@ -30,7 +31,8 @@ import simpview.surface.Rgb;
             "  simpview render --page 3 --seed 7 --out page3.png",
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
-            "  simpview render --contact-sheet --out docs/pages.png"},
+            "  simpview render --contact-sheet --out docs/pages.png",
+            "  simpview render --contact-sheet --out docs/lit-scenes.png simp/lit-*.simp"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 final class RenderCommand implements Callable<Integer> {
@@ -46,7 +48,8 @@ final class RenderCommand implements Callable<Integer> {
         @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full depth-cued page")
         Path scene;
 
-        @Option(names = "--contact-sheet", required = true, description = "the pages that render, side by side at half size")
+        @Option(names = "--contact-sheet", required = true,
+                description = "the pages that render (or the SCENE files given), side by side at half size")
         boolean contactSheet;
     }
 
@@ -76,6 +79,10 @@ final class RenderCommand implements Callable<Integer> {
             description = "colour at z = -200 (--scene; default: 0,0,0)")
     private Rgb far;
 
+    @Parameters(paramLabel = "SCENE", arity = "0..*",
+            description = "--contact-sheet: scenes to tile instead of the pages, each drawn as --scene draws it")
+    private List<Path> scenes = new ArrayList<>();
+
     @Override
     public Integer call() {
         checkOptions();
@@ -88,7 +95,7 @@ final class RenderCommand implements Callable<Integer> {
         if (what.scene != null) {
             return renderScene();
         }
-        return renderContactSheet();
+        return scenes.isEmpty() ? renderContactSheet() : renderSceneSheet();
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
@@ -104,6 +111,9 @@ final class RenderCommand implements Callable<Integer> {
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+        usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
+        usage(scenes.isEmpty() || seed == null && simpDir == null,
+                "--seed and --simp-dir go with the pages, not with a sheet of scenes");
     }
 
     private void usage(boolean fine, String message) {
@@ -171,6 +181,25 @@ final class RenderCommand implements Callable<Integer> {
         }
         int written = write(ContactSheet.compose(tiles), out);
         return tiles.size() == Pages.COUNT ? written : Main.SCENE_ERROR;
+    }
+
+    /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
+    private int renderSceneSheet() {
+        List<ContactSheet.Tile> tiles = new ArrayList<>();
+        for (Path scene : scenes) {
+            PageCanvas canvas = new PageCanvas();
+            try {
+                SceneSheet.of(scene).drawOn(canvas, monitor(), SceneDrawer.SIMP);
+                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()), canvas.image()));
+            } catch (SceneException e) {
+                err().println(scene + " left out: " + e.getMessage());
+            }
+        }
+        if (tiles.isEmpty()) {
+            return Main.SCENE_ERROR;
+        }
+        int written = write(ContactSheet.compose(tiles), out);
+        return tiles.size() == scenes.size() ? written : Main.SCENE_ERROR;
     }
 
     private int write(BufferedImage image, Path file) {
