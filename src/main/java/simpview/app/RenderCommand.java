@@ -19,6 +19,7 @@ import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -152,6 +153,11 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderScene() {
+        if (near != null || far != null) {
+            SceneRules rules = SceneRules.of(what.scene);
+            usage(!rules.lit(), "--near-color and --far-color go with depth-cued scenes; " + what.scene
+                    + " is lit (" + rules.reason() + "): it brings its own lights and fog");
+        }
         SceneSheet sheet = new SceneSheet(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
         PageCanvas canvas = new PageCanvas();
         try {

@@ -238,4 +238,22 @@ class MainCommandLineTest {
         assertTrue(run.err().startsWith("scene files [x.simp] go with --contact-sheet only"), run.err());
         assertFalse(Files.exists(dir.resolve("p.png")));
     }
+
+    @Test
+    void depthCueColoursOnALitSceneAreAUsageErrorNamingTheLitCommand() throws Exception {
+        Files.writeString(dir.resolve("part.simp"), "# lit\nambient 1 1 1\n");
+        Path lit = Files.writeString(dir.resolve("lit.simp"), "file \"part\"\npolygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        Path out = dir.resolve("lit.png");
+        for (String option : new String[] {"--near-color", "--far-color"}) {
+            CliRun run = CliRun.of("render", "--scene", lit.toString(), option, "1,0,0", "--out", out.toString());
+            assertEquals(Main.USAGE_ERROR, run.exitCode(), option);
+            assertTrue(run.err().startsWith("--near-color and --far-color go with depth-cued scenes; " + lit
+                    + " is lit (part.simp:2 ambient)"), run.err());
+            assertFalse(Files.exists(out));
+        }
+        assertEquals(Main.OK, CliRun.of("render", "--scene", lit.toString(), "--out", out.toString()).exitCode());
+        Path cued = Files.writeString(dir.resolve("cued.simp"), "polygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        assertEquals(Main.OK, CliRun.of("render", "--scene", cued.toString(), "--near-color", "1,0,0", "--out",
+                out.toString()).exitCode());
+    }
 }
