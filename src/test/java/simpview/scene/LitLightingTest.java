@@ -251,6 +251,26 @@ class LitLightingTest {
         return colours;
     }
 
+    @Test
+    void inPerspectiveVPointsFromTheLitPointToTheEye() throws Exception {
+        // The eye at the origin, a square at z = -10 facing it, a light at the eye. A panel pixel's centre
+        // (i + 0.5, j + 0.5) looks along (x', y', -1) with x' = (i + 0.5) / 325 - 1, so it sees the point
+        // 10 (x', y', -1). There L = V, so V . R = 2 (N . L)^2 - 1, not N . L as with a parallel V.
+        PageCanvas canvas = draw("camera -1 -1 1 1 -1 -100", surroundings(0.6, 4), "light 0.7 0.7 0.7 0 0.1",
+                square(-20, -20, 20, 20, -10));
+        Light eye = new Light(0, 0, 0, 0.7, 0.7, 0.7, 0, 0.1);
+        int checked = 0;
+        for (int[] pixel : new int[][] {{325, 325}, {500, 325}, {150, 480}, {600, 60}}) {
+            double[] p = {10 * ((pixel[0] + 0.5) / 325 - 1), 10 * ((pixel[1] + 0.5) / 325 - 1), -10};
+            double[] toEye = {-p[0], -p[1], -p[2]};
+            double[] expected = formula(p, UP, toEye, KD, IA, 0.6, 4, List.of(eye));
+            assertArrayEquals(bytes(expected), rgb(canvas, pixel[0], pixel[1]), Arrays.toString(pixel));
+            double[] parallel = formula(p, UP, UP, KD, IA, 0.6, 4, List.of(eye));
+            checked += Arrays.equals(round(parallel), round(expected)) ? 0 : 1;
+        }
+        assertTrue(checked >= 2, "V = (0, 0, 1) would have given other colours off the axis");
+    }
+
     // ---------------------------------------------------------------- shading modes
 
     @Test
