@@ -11,6 +11,7 @@ import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
@@ -31,7 +32,8 @@ import simpview.surface.Rgb;
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
             "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
-            "  simpview render --contact-sheet --out docs/pages.png"},
+            "  simpview render --contact-sheet --out docs/pages.png",
+            "  simpview render --contact-sheet --out lit.png simp/lit-shading.simp simp/lit-lights.simp"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 final class RenderCommand implements Callable<Integer> {
@@ -51,7 +53,8 @@ final class RenderCommand implements Callable<Integer> {
                 description = "every scene named (a folder: its .simp files), each as NAME.png in --out-dir")
         List<Path> scenes;
 
-        @Option(names = "--contact-sheet", required = true, description = "the pages that render, side by side at half size")
+        @Option(names = "--contact-sheet", required = true,
+                description = "the pages that render (or the SCENE files given), side by side at half size")
         boolean contactSheet;
     }
 
@@ -81,6 +84,10 @@ final class RenderCommand implements Callable<Integer> {
             description = "depth cue colour at z = -200 (depth-cued scenes; default: 0,0,0)")
     private Rgb far;
 
+    @Parameters(paramLabel = "SCENE", arity = "0..*",
+            description = "--contact-sheet: scenes to tile instead of the pages, each drawn as --scene draws it")
+    private List<Path> scenes = new ArrayList<>();
+
     @Override
     public Integer call() {
         checkOptions();
@@ -96,7 +103,7 @@ final class RenderCommand implements Callable<Integer> {
         if (what.scenes != null) {
             return renderScenes();
         }
-        return renderContactSheet();
+        return scenes.isEmpty() ? renderContactSheet() : renderSceneSheet();
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
@@ -118,6 +125,9 @@ final class RenderCommand implements Callable<Integer> {
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
         String cue = pages ? null : SceneSheet.cueColoursProblem(what.scene, near, far);
         usage(cue == null, cue);
+        usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
+        usage(scenes.isEmpty() || seed == null && simpDir == null,
+                "--seed and --simp-dir go with the pages, not with a sheet of scenes");
     }
 
     /** --scenes: the list must name scenes, and the pictures go to a folder. */
@@ -221,6 +231,25 @@ final class RenderCommand implements Callable<Integer> {
         }
         int written = write(ContactSheet.compose(tiles), out);
         return tiles.size() == Pages.COUNT ? written : Main.SCENE_ERROR;
+    }
+
+    /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
+    private int renderSceneSheet() {
+        List<ContactSheet.Tile> tiles = new ArrayList<>();
+        PageDrawing drawing = new PageDrawing(monitor());
+        for (Path scene : scenes) {
+            try {
+                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()),
+                        drawing.scene(scene, null, null).snapshot()));
+            } catch (SceneException e) {
+                err().println(scene + " left out: " + e.getMessage());
+            }
+        }
+        if (tiles.isEmpty()) {
+            return Main.SCENE_ERROR;
+        }
+        int written = write(ContactSheet.compose(tiles), out);
+        return tiles.size() == scenes.size() ? written : Main.SCENE_ERROR;
     }
 
     private int write(BufferedImage image, Path file) {

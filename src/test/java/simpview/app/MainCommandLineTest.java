@@ -17,6 +17,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
+import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 
 class MainCommandLineTest {
@@ -194,5 +195,65 @@ class MainCommandLineTest {
         BufferedImage page1 = ContactSheet.halved(new PageRenderer().renderImage(1, PageContext.defaults()));
         BufferedImage tile = sheet.getSubimage(ContactSheet.GAP, ContactSheet.GAP, ContactSheet.TILE, ContactSheet.TILE);
         assertEquals(0, Images.differingPixels(page1, tile));
+    }
+
+    @Test
+    void aContactSheetOfScenesTilesThemInTheOrderGiven() throws Exception {
+        Path lit = Files.writeString(dir.resolve("lit.simp"), "ambient 1 1 1\nsurface 0 0 1\n"
+                + "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)\n");
+        Path cued = Files.writeString(dir.resolve("cued.simp"), "polygon (-50, -50, -50) (50, -50, -50) (0, 50, -50)\n");
+        Path out = dir.resolve("scenes.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), lit.toString(), cued.toString());
+        assertEquals(Main.OK, run.exitCode(), run.err());
+        BufferedImage sheet = ImageIO.read(out.toFile());
+        assertEquals(ContactSheet.GAP + 2 * (ContactSheet.TILE + ContactSheet.GAP), sheet.getWidth());
+        int cell = ContactSheet.TILE + ContactSheet.GAP;
+        for (int k = 0; k < 2; k++) {
+            PageCanvas canvas = new PageCanvas();
+            SceneSheet.of(k == 0 ? lit : cued).drawOn(canvas, SceneMonitor.NONE, SceneDrawer.SIMP);
+            BufferedImage tile = sheet.getSubimage(ContactSheet.GAP + k * cell, ContactSheet.GAP, ContactSheet.TILE,
+                    ContactSheet.TILE);
+            assertEquals(0, Images.differingPixels(ContactSheet.halved(canvas.image()), tile), "tile " + k);
+        }
+        // The lit scene is blue (kd * Ia), the depth-cued one 3/4 white at z = -50: round(0.75 * 255) = 191.
+        assertEquals(0x0000FF, sheet.getRGB(ContactSheet.GAP + 187, ContactSheet.GAP + 187) & 0xFFFFFF);
+        assertEquals(0xBFBFBF, sheet.getRGB(ContactSheet.GAP + cell + 187, ContactSheet.GAP + 187) & 0xFFFFFF);
+    }
+
+    @Test
+    void aSceneThatFailsIsLeftOutOfTheSheetAndNamed() throws Exception {
+        Path good = Files.writeString(dir.resolve("good.simp"), "ambient 1 1 1\n");
+        Path bad = Files.writeString(dir.resolve("bad.simp"), "rotate W 5\n");
+        Path out = dir.resolve("scenes.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), bad.toString(), good.toString());
+        assertEquals(Main.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith(bad + " left out: "), run.err());
+        assertEquals(ContactSheet.GAP + ContactSheet.TILE + ContactSheet.GAP, ImageIO.read(out.toFile()).getWidth());
+    }
+
+    @Test
+    void sceneFilesGoWithTheContactSheetOnly() {
+        CliRun run = CliRun.of("render", "--page", "2", "--out", dir.resolve("p.png").toString(), "x.simp");
+        assertEquals(Main.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith("scene files [x.simp] go with --contact-sheet only"), run.err());
+        assertFalse(Files.exists(dir.resolve("p.png")));
+    }
+
+    @Test
+    void depthCueColoursOnALitSceneAreAUsageErrorNamingTheLitCommand() throws Exception {
+        Files.writeString(dir.resolve("part.simp"), "# lit\nambient 1 1 1\n");
+        Path lit = Files.writeString(dir.resolve("lit.simp"), "file \"part\"\npolygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        Path out = dir.resolve("lit.png");
+        for (String option : new String[] {"--near-color", "--far-color"}) {
+            CliRun run = CliRun.of("render", "--scene", lit.toString(), option, "1,0,0", "--out", out.toString());
+            assertEquals(Main.USAGE_ERROR, run.exitCode(), option);
+            assertTrue(run.err().startsWith("--near-color and --far-color are for depth-cued scenes, and lit.simp"
+                    + " is lit (part.simp:2 ambient)"), run.err());
+            assertFalse(Files.exists(out));
+        }
+        assertEquals(Main.OK, CliRun.of("render", "--scene", lit.toString(), "--out", out.toString()).exitCode());
+        Path cued = Files.writeString(dir.resolve("cued.simp"), "polygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        assertEquals(Main.OK, CliRun.of("render", "--scene", cued.toString(), "--near-color", "1,0,0", "--out",
+                out.toString()).exitCode());
     }
 }

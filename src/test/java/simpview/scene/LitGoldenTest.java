@@ -12,8 +12,19 @@ import simpview.testing.CourseFiles;
 import simpview.testing.Goldens;
 import simpview.testing.LitGoldens;
 
-/** Every page of the course's third and fourth assignments against its golden PNG, exactly. */
+/** The project's own lit scenes and every page of the course's third and fourth assignments against its golden PNG, exactly. */
 class LitGoldenTest {
+
+    static Stream<LitGoldens.Case> own() {
+        return LitGoldens.own().stream();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("own")
+    void theProjectsOwnLitScenesMatchTheirGoldens(LitGoldens.Case c) throws Exception {
+        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        Goldens.assertMatches(c.name(), c.render());
+    }
 
     static Stream<LitGoldens.Case> a3() {
         CourseFiles.require("course-simp-a3");
@@ -40,7 +51,7 @@ class LitGoldenTest {
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("a3")
+    @MethodSource({"own", "a3"})
     void aRedrawIsTheSamePictureBitForBit(LitGoldens.Case c) throws Exception {
         BufferedImage first = c.render();
         BufferedImage second = c.render();

@@ -11,9 +11,11 @@ import simpview.scene.simp.SceneRenderer;
 import simpview.surface.PageCanvas;
 
 /**
- * The golden images of the course's lit scenes: every page of the third
- * assignment (a3-pageA ... a3-tomsPageJ) and of the fourth (a4-page-a1 ...
- * a4-page-h), drawn from ../shared/course-simp-a3 and course-simp-a4.
+ * The golden images of lit scenes: the project's own (own-lit-shading,
+ * own-lit-corridor, own-lit-lights, from simp/), every page of the course's
+ * third assignment (a3-pageA ... a3-tomsPageJ) and of its fourth
+ * (a4-page-a1 ... a4-page-h), drawn from ../shared/course-simp-a3 and
+ * course-simp-a4.
  */
 public final class LitGoldens {
 
@@ -22,6 +24,9 @@ public final class LitGoldens {
             "pageH", "pageI", "tomsPageJ");
     public static final List<String> A4 = List.of("page-a1", "page-a2", "page-a3", "page-b1", "page-b2", "page-b3",
             "page-c1", "page-c2", "page-c3", "page-d", "page-e", "page-f1", "page-f2", "page-g", "page-h");
+
+    /** The project's own lit scenes under simp/, which come with every clone. */
+    public static final List<String> OWN = List.of("lit-shading", "lit-corridor", "lit-lights");
 
     private LitGoldens() {
     }
@@ -52,8 +57,19 @@ public final class LitGoldens {
         return cases;
     }
 
+    /** The project's own lit scenes, as own-lit-shading and so on. */
+    public static List<Case> own() {
+        Path dir = Goldens.projectDir().resolve("simp");
+        List<Case> cases = new ArrayList<>();
+        for (String s : OWN) {
+            cases.add(new Case("own-" + s, dir.resolve(s + ".simp")));
+        }
+        return cases;
+    }
+
     public static List<Case> all() {
-        List<Case> all = new ArrayList<>(cases("course-simp-a3", "a3", A3));
+        List<Case> all = new ArrayList<>(own());
+        all.addAll(cases("course-simp-a3", "a3", A3));
         all.addAll(cases("course-simp-a4", "a4", A4));
         return all;
     }

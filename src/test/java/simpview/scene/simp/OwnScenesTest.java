@@ -25,11 +25,53 @@ class OwnScenesTest {
     void generatedShapesAreCommittedAsGenerated(@TempDir Path out) throws Exception {
         ShapeGenerator.writeAll(out);
         Map<String, String> shapes = ShapeGenerator.shapes();
-        assertTrue(shapes.keySet().containsAll(List.of("cube.simp", "sphere.simp", "cone.simp", "letters.simp")));
+        assertTrue(shapes.keySet().containsAll(List.of("cube.simp", "sphere.simp", "cone.simp", "letters.simp",
+                "torus.obj", "crystal.obj")));
         for (String name : shapes.keySet()) {
             assertArrayEquals(Files.readAllBytes(out.resolve(name)), Files.readAllBytes(simpDir().resolve(name)),
                     name + " differs from a fresh run of ShapeGenerator: regenerate it");
         }
+    }
+
+    @Test
+    void everyGeneratedFileUnderSimpIsOneTheGeneratorWrites() throws Exception {
+        // A file under simp/ that says it was generated must still come out of the generator.
+        java.util.Set<String> generated = new java.util.TreeSet<>();
+        try (java.util.stream.Stream<Path> files = Files.list(simpDir())) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                if (Files.readString(f).contains("written by simpview.tools.shapes.ShapeGenerator")) {
+                    generated.add(f.getFileName().toString());
+                }
+            }
+        }
+        assertEquals(new java.util.TreeSet<>(ShapeGenerator.shapes().keySet()), generated);
+    }
+
+    @Test
+    void theTorusHasItsOwnNormalsAndTheCrystalNone() throws Exception {
+        List<String> torus = Files.readAllLines(simpDir().resolve("torus.obj"));
+        long vertices = torus.stream().filter(l -> l.startsWith("v ")).count();
+        assertEquals(vertices, torus.stream().filter(l -> l.startsWith("vn ")).count(), "a normal per vertex");
+        assertTrue(torus.stream().filter(l -> l.startsWith("f ")).allMatch(l -> l.matches("f( \\d+//\\d+){4}")),
+                "quads, every vertex with its normal");
+        List<String> crystal = Files.readAllLines(simpDir().resolve("crystal.obj"));
+        assertTrue(crystal.stream().noneMatch(l -> l.startsWith("vn") || l.contains("/")), "faceted: no normals");
+        assertTrue(crystal.stream().anyMatch(l -> l.matches("f( \\d+){4}")), "quads on the sides");
+    }
+
+    @Test
+    void theOwnLitScenesAreLitAndUseTheGeneratedModels() throws Exception {
+        for (String name : List.of("lit-shading", "lit-corridor", "lit-lights")) {
+            Path scene = simpDir().resolve(name + ".simp");
+            assertTrue(SceneRules.of(scene).lit(), name);
+            String text = Files.readString(scene);
+            assertTrue(text.contains("camera ") && text.contains("obj \"") && text.contains("light "), name);
+        }
+        String shading = Files.readString(simpDir().resolve("lit-shading.simp"));
+        assertTrue(shading.contains("\nflat\n") && shading.contains("\ngouraud\n") && shading.contains("\nphong\n"));
+        assertTrue(Files.readString(simpDir().resolve("lit-corridor.simp")).contains("\ndepth "), "fog");
+        String lights = Files.readString(simpDir().resolve("lit-lights.simp"));
+        assertTrue(lights.indexOf("light ") < lights.indexOf("camera "), "a light before the camera");
     }
 
     @Test

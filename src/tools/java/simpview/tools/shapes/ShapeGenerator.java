@@ -9,7 +9,8 @@ import java.util.Map;
 
 /**
  * Writes the project's generated SIMP shapes (cube, sphere, cylinder, cone,
- * pyramid, block letters) into a folder. Their output is committed under
+ * pyramid, block letters) and .obj models (a torus with vertex normals, a
+ * faceted crystal without) into a folder. Their output is committed under
  * simp/ and a test checks that regenerating gives the same bytes.
  *
  * <p>Usage: {@code java simpview.tools.shapes.ShapeGenerator [folder]} (default simp).
@@ -28,6 +29,8 @@ public final class ShapeGenerator {
         files.put("cone.simp", Shapes.cone(24));
         files.put("pyramid.simp", Shapes.pyramid());
         files.put("letters.simp", BlockLetters.word("SIMP"));
+        files.put("torus.obj", Models.torus(1, 0.4, 40, 20));
+        files.put("crystal.obj", Models.crystal(6));
         return files;
     }
 
