@@ -2,7 +2,10 @@ package simpview.app;
 
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.function.BooleanSupplier;
@@ -10,9 +13,11 @@ import javax.swing.SwingUtilities;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
+import simpview.pages.SceneList;
 
 /** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
 @Command(name = "simpview",
@@ -36,8 +41,10 @@ final class SimpviewCommand implements Callable<Integer> {
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
     private Path simpDir;
 
-    @Parameters(arity = "0..1", paramLabel = "SCENE", description = "a .simp scene to open at start")
-    private Path scene;
+    @Parameters(arity = "0..*", paramLabel = "SCENE",
+            description = "a .simp scene to open at start (stepping goes on to the pages); several scenes, or a "
+                    + "folder of them, become the window's first pages, in the order given (a folder: natural name order)")
+    private List<Path> scenes = new ArrayList<>();
 
     private final BooleanSupplier displayMissing;
     private boolean openedWindow;
@@ -59,6 +66,23 @@ final class SimpviewCommand implements Callable<Integer> {
         }
     }
 
+    /** One scene file named alone: the window opens on it as an extra view, as before. */
+    private Optional<Path> openAtStart() {
+        return scenes.size() == 1 && !Files.isDirectory(scenes.get(0)) ? Optional.of(scenes.get(0)) : Optional.empty();
+    }
+
+    /** Several scenes or a folder: the window's first pages; a usage error when one names no scene. */
+    private List<Path> sceneList() {
+        if (openAtStart().isPresent() || scenes.isEmpty()) {
+            return List.of();
+        }
+        try {
+            return SceneList.of(scenes);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+    }
+
     /** True once the window was asked to open: then the program lives until it closes. */
     boolean openedWindow() {
         return openedWindow;
@@ -73,7 +97,7 @@ final class SimpviewCommand implements Callable<Integer> {
             return Main.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed,
-                simpDir == null ? PageContext.defaultSimpDir() : simpDir, Optional.ofNullable(scene));
+                simpDir == null ? PageContext.defaultSimpDir() : simpDir, openAtStart(), sceneList());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
         openedWindow = true;
         return Main.OK;

@@ -1,6 +1,7 @@
 package simpview.app;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Optional;
 import simpview.pages.PageContext;
 
@@ -9,12 +10,26 @@ import simpview.pages.PageContext;
  *
  * @param seed seed of the random pages
  * @param simpDir where the course's page6.simp to page8.simp are looked for
- * @param scene a scene to open once the first page is up
+ * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
+ * @param sceneList scenes that are the window's first pages, before the eight; empty for none
  */
-record WindowOptions(long seed, Path simpDir, Optional<Path> scene) {
+record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
+
+    WindowOptions {
+        sceneList = List.copyOf(sceneList);
+    }
+
+    /** The eight pages, and perhaps a scene to open at start. */
+    WindowOptions(long seed, Path simpDir, Optional<Path> scene) {
+        this(seed, simpDir, scene, List.of());
+    }
 
     static WindowOptions defaults() {
         return new WindowOptions(PageContext.DEFAULT_SEED, PageContext.defaultSimpDir(), Optional.empty());
+    }
+
+    WindowOptions withSeed(long newSeed) {
+        return new WindowOptions(newSeed, simpDir, scene, sceneList);
     }
 
     PageContext pageContext() {
