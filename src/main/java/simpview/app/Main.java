@@ -20,10 +20,6 @@ public final class Main {
     }
 
     public static void main(String[] args) {
-        // Pages are meant to be seen pixel for pixel; must be set before AWT starts.
-        if (System.getProperty("sun.java2d.uiScale") == null) {
-            System.setProperty("sun.java2d.uiScale", "1");
-        }
         PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
         PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
         SimpviewCommand command = new SimpviewCommand(SimpviewCommand::displayMissing);

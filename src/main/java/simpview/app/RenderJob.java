@@ -1,9 +1,13 @@
 package simpview.app;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.pages.ScenePage;
+import simpview.surface.Provenance;
 import simpview.surface.PageCanvas;
 import simpview.scene.simp.SceneCancelledException;
 import simpview.scene.simp.SceneException;
@@ -18,14 +22,24 @@ final class RenderJob implements SceneMonitor {
 
     private final View view;
     private final PageContext context;
+    private final DrawSettings settings;
     private final long createdNanos = System.nanoTime();
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private volatile long linesRead;
     private volatile boolean cancelled;
 
     RenderJob(View view, PageContext context) {
+        this(view, context, DrawSettings.PLAIN);
+    }
+
+    RenderJob(View view, PageContext context, DrawSettings settings) {
         this.view = view;
-        this.context = context.withMonitor(this);
+        this.context = context.withMonitor(this).withOwnColours(settings.ownColours());
+        this.settings = settings;
+    }
+
+    DrawSettings settings() {
+        return settings;
     }
 
     View view() {
@@ -67,20 +81,23 @@ final class RenderJob implements SceneMonitor {
      * Draws on the render thread's canvas and returns a copy of the result,
      * or null when the job was cancelled.
      */
-    RenderedView run(PageRenderer renderer, SceneDrawer drawer) {
+    RenderedView run(PageRenderer renderer, SceneDrawer drawer, Provenance provenance) {
         if (cancelled) {
             return null;
         }
         PageCanvas canvas = renderer.canvas();
+        canvas.recordProvenance(settings.record() ? provenance : null);
         String error = null;
+        boolean drewSomething = true;
         try {
             if (view instanceof View.OfPage page) {
                 renderer.render(page.number(), context);
             } else {
-                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer);
+                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer, settings.ownColours());
             }
         } catch (SceneException e) {
             error = e.getMessage();
+            drewSomething = e.line() > 0;
         } catch (SceneCancelledException e) {
             return null;
         } catch (RuntimeException e) {
@@ -88,6 +105,22 @@ final class RenderJob implements SceneMonitor {
             e.printStackTrace();
             error = "internal error while drawing: " + e;
         }
-        return cancelled ? null : new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings));
+        if (cancelled) {
+            return null;
+        }
+        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(),
+                canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
+                List.of(), filesRead(), drewSomething);
+        canvas.recordProvenance(null);
+        return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+    }
+
+    /** The scene files this picture read: what to watch for a save. */
+    private List<Path> filesRead() {
+        if (view instanceof View.OfScene scene) {
+            return List.of(scene.file());
+        }
+        int number = ((View.OfPage) view).number();
+        return Pages.page(number) instanceof ScenePage page ? List.of(page.file(context)) : List.of();
     }
 }

@@ -1,11 +1,14 @@
 package simpview.app;
 
 import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GraphicsConfiguration;
+import java.awt.Insets;
+import java.awt.Rectangle;
 import java.awt.Toolkit;
+import java.awt.datatransfer.StringSelection;
 import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
-import java.awt.event.MouseAdapter;
-import java.awt.event.MouseEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
@@ -15,7 +18,9 @@ import javax.swing.InputMap;
 import javax.swing.JComponent;
 import javax.swing.JFrame;
 import javax.swing.KeyStroke;
-import javax.swing.SwingUtilities;
+import simpview.app.view.PointerGestures;
+import simpview.app.view.WindowPlacement;
+import simpview.app.view.ZoomPan;
 import simpview.pages.PageStepper;
 import simpview.pages.Pages;
 
@@ -27,6 +32,14 @@ final class SimpviewWindow {
 
     private final JFrame frame = new JFrame("simpview");
     private final PageView pageView = new PageView();
+    private final SceneWatcher watcher = new SceneWatcher(this::reload);
+    private DrawSettings settings = new DrawSettings(false, true);
+    private boolean depthView;
+    /** The image pixel under the pointer, and the pinned one (x = -1: none). */
+    private int hoverX = -1;
+    private int hoverY = -1;
+    private int pinnedX = -1;
+    private int pinnedY = -1;
     private final StatusStrip status = new StatusStrip(this::cancel);
     private final PageStepper stepper = new PageStepper();
     private final BackgroundRenderer renderer;
@@ -57,30 +70,62 @@ final class SimpviewWindow {
     }
 
     private void build() {
+        frame.setName("simpview");
+        frame.setIconImages(AppIcon.images());
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
-        // The page stays at 1:1; a larger window would only add grey.
-        frame.setResizable(false);
+        frame.setResizable(true);
         frame.setTransferHandler(new SceneDrop(this::openScene, status::say));
-        pageView.addMouseListener(new MouseAdapter() {
-            @Override
-            public void mousePressed(MouseEvent e) {
-                if (SwingUtilities.isLeftMouseButton(e)) {
-                    stepTo(stepper.next());
-                }
-            }
-        });
+        new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
         bindKeys();
         frame.addWindowListener(new WindowAdapter() {
             @Override
             public void windowClosed(WindowEvent e) {
+                watcher.stop();
                 renderer.shutdown();
             }
         });
         frame.pack();
-        frame.setLocationRelativeTo(null);
+        frame.setMinimumSize(new Dimension(320, 240));
+        frame.setBounds(WindowPlacement.within(frame.getSize(), usableScreen()));
         frame.setVisible(true);
+    }
+
+    /** The screen's area for windows: without taskbars and docks. */
+    private Rectangle usableScreen() {
+        GraphicsConfiguration screen = frame.getGraphicsConfiguration();
+        Rectangle bounds = screen.getBounds();
+        Insets taken = Toolkit.getDefaultToolkit().getScreenInsets(screen);
+        return new Rectangle(bounds.x + taken.left, bounds.y + taken.top,
+                bounds.width - taken.left - taken.right, bounds.height - taken.top - taken.bottom);
+    }
+
+    /** What the pointer does over the page. */
+    private final class Gestures implements PointerGestures.Actions {
+        @Override
+        public void click() {
+            stepTo(stepper.next());
+        }
+
+        @Override
+        public void zoomPanChanged() {
+            pageView.repaint();
+            inspect();
+        }
+
+        @Override
+        public void orbit(int dx, int dy) {
+            status.say("Turning the view works on scenes (pages 4–8 and opened scenes).");
+        }
+
+        @Override
+        public void hover(int x, int y) {
+            ZoomPan zoomPan = pageView.zoomPan();
+            hoverX = x < 0 ? -1 : zoomPan.imageX(x);
+            hoverY = y < 0 ? -1 : zoomPan.imageY(y);
+            inspect();
+        }
     }
 
     private void bindKeys() {
@@ -94,9 +139,87 @@ final class SimpviewWindow {
         }
         bind("seed", this::newSeed, "R");
         bind("cancel", this::cancel, "ESCAPE");
+        bind("fit", () -> zoom(ZoomPan::fit), "F");
+        bind("actual size", () -> zoom(ZoomPan::actualSize), "Z");
+        bind("zoom in", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1)),
+                "typed +", "typed =", "ADD");
+        bind("zoom out", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1)),
+                "typed -", "SUBTRACT");
+        bind("depth view", this::toggleDepthView, "D");
+        bind("pin", this::togglePin, "P");
+        bind("own colours", this::toggleOwnColours, "C");
+        bind("hide error", () -> pageView.toggleErrorHidden(), "H");
+        bind("help", () -> pageView.toggleHelp(), "F1");
+        bind("redraw", this::reload, "F5");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
         bindStroke("open", this::chooseScene, KeyStroke.getKeyStroke(KeyEvent.VK_O, menu));
+        bindStroke("copy", this::copyInspected, KeyStroke.getKeyStroke(KeyEvent.VK_C, menu));
+        bindStroke("quit", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_Q, menu));
+        bindStroke("close", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_W, menu));
+    }
+
+    private void zoom(java.util.function.Consumer<ZoomPan> change) {
+        change.accept(pageView.zoomPan());
+        pageView.repaint();
+        inspect();
+    }
+
+    /** The status line's inspector: the pinned pixel, else the one under the pointer, and the zoom. */
+    private void inspect() {
+        int x = pinnedX >= 0 ? pinnedX : hoverX;
+        int y = pinnedX >= 0 ? pinnedY : hoverY;
+        String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
+        String zoom = pageView.zoomPan().describe() + (depthView ? " · depth view" : "")
+                + (settings.ownColours() ? " · own colours" : "");
+        status.inspect(pixel == null ? zoom : (pinnedX >= 0 ? "pinned · " : "") + pixel + " · " + zoom);
+    }
+
+    private void togglePin() {
+        if (pinnedX >= 0) {
+            pinnedX = pinnedY = -1;
+        } else if (hoverX >= 0 && hoverY >= 0) {
+            pinnedX = hoverX;
+            pinnedY = hoverY;
+        } else {
+            status.say("Move the pointer over a pixel, then press P to pin it.");
+        }
+        pageView.pin(pinnedX, pinnedY);
+        inspect();
+    }
+
+    /** Puts the inspector's line on the clipboard. */
+    private void copyInspected() {
+        String line = status.inspectorText();
+        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(line), null);
+        status.say("Copied: " + line);
+    }
+
+    private void toggleDepthView() {
+        depthView = !depthView;
+        showPicture();
+        inspect();
+    }
+
+    private void toggleOwnColours() {
+        settings = settings.withOwnColours(!settings.ownColours());
+        status.say(settings.ownColours()
+                ? "Own colours: scenes show their vertices' colours (white where none), without the depth cue."
+                : "Depth cue: scenes are coloured by depth again.");
+        reload();
+    }
+
+    /** Shows the picture, or its depths, of the finished view. */
+    private void showPicture() {
+        if (shown != null) {
+            pageView.show(depthView && shown.facts().depths() != null ? DepthPicture.of(shown.facts().depths())
+                    : shown.image(), shown.error(), shown.facts().drewSomething());
+        }
+    }
+
+    /** Draws what is on screen again (F5, a save of one of its files), keeping zoom and pan. */
+    void reload() {
+        show(requested());
     }
 
     private void bind(String name, Runnable action, String... keys) {
@@ -138,7 +261,7 @@ final class SimpviewWindow {
         if (requested() instanceof View.OfPage page && Pages.page(page.number()).usesSeed()) {
             show(page);
         } else {
-            status.say("Seed is now " + seed + " (pages 1–3).");
+            status.say("Seed is now " + seed + ": it changes pages 1–3 only, not this one.");
         }
     }
 
@@ -151,7 +274,7 @@ final class SimpviewWindow {
         if (pending != null) {
             pending.cancel();
         }
-        pending = new RenderJob(view, options.pageContext());
+        pending = new RenderJob(view, options.pageContext(), settings);
         status.watch(pending);
         renderer.submit(pending, this::finished);
     }
@@ -166,8 +289,10 @@ final class SimpviewWindow {
             return;
         }
         shown = result;
-        pageView.show(result.image(), result.error());
+        showPicture();
         frame.setTitle(result.title());
+        watcher.watch(result.facts().files());
+        inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
     }
 
@@ -195,6 +320,7 @@ final class SimpviewWindow {
     }
 
     void close() {
+        watcher.stop();
         frame.dispose();
     }
 
@@ -202,6 +328,10 @@ final class SimpviewWindow {
 
     JFrame frame() {
         return frame;
+    }
+
+    SceneWatcher watcher() {
+        return watcher;
     }
 
     PageView pageView() {

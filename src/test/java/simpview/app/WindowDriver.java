@@ -77,11 +77,14 @@ final class WindowDriver {
         fail("the window is not where the AWT toolkit says it is, even after moving it");
     }
 
-    /** The capture at the page view's reported place shows the page's white top and left margins. */
+    /** The capture at the page's reported place shows the page's white top and left margins (as zoomed). */
     private boolean pageIsWhereTheToolkitSaysItIs() throws Exception {
         BufferedImage screen = capturePage();
-        for (int i = 0; i < PageCanvas.SIZE; i++) {
-            for (int m = 0; m < PageCanvas.MARGIN; m++) {
+        double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        int shown = Math.min(screen.getWidth(), screen.getHeight());
+        int margin = (int) Math.floor(PageCanvas.MARGIN * Math.min(1, zoom));
+        for (int i = 0; i < shown; i++) {
+            for (int m = 0; m < margin; m++) {
                 if ((screen.getRGB(i, m) & 0xFFFFFF) != 0xFFFFFF || (screen.getRGB(m, i) & 0xFFFFFF) != 0xFFFFFF) {
                     return false;
                 }
@@ -199,11 +202,35 @@ final class WindowDriver {
         robot.keyRelease(KeyEvent.VK_CONTROL);
     }
 
-    /** The page area as the X server shows it. */
+    /** The page as the X server shows it: at 1:1 the 750x750 image, else the square it is zoomed into (what shows of it). */
     BufferedImage capturePage() throws Exception {
         robot.waitForIdle();
-        Point corner = onEdt(() -> window.pageView().getLocationOnScreen());
-        return robot.createScreenCapture(new Rectangle(corner.x, corner.y, PageCanvas.SIZE, PageCanvas.SIZE));
+        Rectangle page = onEdt(this::pageOnScreen);
+        return robot.createScreenCapture(page);
+    }
+
+    /** Where the page image is on screen, cut to the page view. */
+    Rectangle pageOnScreen() {
+        PageView view = window.pageView();
+        Point corner = view.getLocationOnScreen();
+        Point origin = view.imageOrigin();
+        int size = (int) Math.round(view.zoomPan().shownSize());
+        Rectangle image = new Rectangle(corner.x + origin.x, corner.y + origin.y, size, size);
+        return image.intersection(new Rectangle(corner, view.getSize()));
+    }
+
+    /** The screen point at the centre of image pixel (ix, iy) as now zoomed and panned. */
+    Point onScreen(int ix, int iy) throws Exception {
+        return onEdt(() -> {
+            PageView view = window.pageView();
+            Point corner = view.getLocationOnScreen();
+            return new Point(corner.x + (int) Math.floor(view.zoomPan().screenX(ix + 0.5)),
+                    corner.y + (int) Math.floor(view.zoomPan().screenY(iy + 0.5)));
+        });
+    }
+
+    Robot robot() {
+        return robot;
     }
 
     /**
