@@ -39,12 +39,30 @@ public final class Main {
         CommandLine commandLine = new CommandLine(command)
                 .setOut(out)
                 .setErr(err)
-                .setExecutionExceptionHandler(Main::reportUnexpected);
+                .setExecutionExceptionHandler(Main::reportUnexpected)
+                .setParameterExceptionHandler(Main::reportUsageError);
         // picocli's own exit code for invalid input is already USAGE_ERROR (2).
         int code = commandLine.execute(args);
         out.flush();
         err.flush();
         return code;
+    }
+
+    /** A usage error: the problem, a suggestion when a word was mistyped, and one line pointing at --help. */
+    private static int reportUsageError(CommandLine.ParameterException e, String[] args) {
+        CommandLine commandLine = e.getCommandLine();
+        PrintWriter err = commandLine.getErr();
+        err.println("simpview: " + e.getMessage());
+        if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+            for (String word : unmatched.getUnmatched()) {
+                java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
+                known.addAll(commandLine.getSubcommands().keySet());
+                Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
+            }
+        }
+        err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");
+        err.flush();
+        return USAGE_ERROR;
     }
 
     /**

@@ -30,6 +30,7 @@ import simpview.scene.simp.SceneMonitor;
             "  simpview render --page 3 --seed 7 --out page3.png",
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
+            "  simpview render --scene house.simp --own-colors --out house.png",
             "  simpview render --contact-sheet --out docs/pages.png"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
@@ -76,6 +77,10 @@ final class RenderCommand implements Callable<Integer> {
             description = "colour at z = -200 (--scene; default: 0,0,0)")
     private Rgb far;
 
+    @Option(names = {"--own-colors", "--own-colours"},
+            description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
+    private boolean ownColours;
+
     @Override
     public Integer call() {
         checkOptions();
@@ -104,6 +109,10 @@ final class RenderCommand implements Callable<Integer> {
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+        usage(!ownColours || !pages, "--own-colors goes with --scene only");
+        usage(!ownColours || near == null && far == null,
+                "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
+        usage(out == null || PngFiles.isPngName(out), "--out " + out + ": simpview writes PNG files only; name it .png");
     }
 
     private void usage(boolean fine, String message) {
@@ -145,7 +154,7 @@ final class RenderCommand implements Callable<Integer> {
         SceneSheet sheet = new SceneSheet(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
         PageCanvas canvas = new PageCanvas();
         try {
-            sheet.drawOn(canvas, monitor(), SceneDrawer.SIMP);
+            sheet.drawOn(canvas, monitor(), SceneDrawer.SIMP, ownColours);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;

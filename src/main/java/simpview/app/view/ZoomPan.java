@@ -25,8 +25,9 @@ public final class ZoomPan {
     private int viewHeight;
     private boolean fitting = true;
     private double zoom = 1;
-    private double originX;
-    private double originY;
+    /** The image's top-left corner on screen, unrounded: zooming about a point keeps that point exactly. */
+    private double exactX;
+    private double exactY;
 
     public ZoomPan(int imageSize) {
         this.imageSize = imageSize;
@@ -94,41 +95,33 @@ public final class ZoomPan {
 
     /** Sets the zoom, keeping the image point under screen point (x, y) under it. */
     public void zoomAbout(double x, double y, double newZoom) {
-        double imageX = (x - originX) / zoom;
-        double imageY = (y - originY) / zoom;
+        double imageX = (x - exactX) / zoom;
+        double imageY = (y - exactY) / zoom;
         fitting = false;
         zoom = Math.max(Math.min(1, fitZoom()), Math.min(MAX_ZOOM, newZoom));
-        originX = x - imageX * zoom;
-        originY = y - imageY * zoom;
+        exactX = x - imageX * zoom;
+        exactY = y - imageY * zoom;
         clampOrigin();
     }
 
     /** Moves the image by (dx, dy) screen pixels; some of it always stays in view. */
     public void pan(double dx, double dy) {
         fitting = false;
-        originX += dx;
-        originY += dy;
+        exactX += dx;
+        exactY += dy;
         clampOrigin();
     }
 
     private void centre() {
-        originX = (viewWidth - shownSize()) / 2.0;
-        originY = (viewHeight - shownSize()) / 2.0;
-        snap();
+        exactX = Math.floor((viewWidth - shownSize()) / 2.0);
+        exactY = Math.floor((viewHeight - shownSize()) / 2.0);
     }
 
     private void clampOrigin() {
         double size = shownSize();
         double keep = Math.min(KEEP_VISIBLE, size);
-        originX = Math.max(keep - size, Math.min(viewWidth - keep, originX));
-        originY = Math.max(keep - size, Math.min(viewHeight - keep, originY));
-        snap();
-    }
-
-    /** At an integer zoom the image starts on a whole screen pixel, so pixel edges are exact. */
-    private void snap() {
-        originX = Math.floor(originX);
-        originY = Math.floor(originY);
+        exactX = Math.max(keep - size, Math.min(viewWidth - keep, exactX));
+        exactY = Math.max(keep - size, Math.min(viewHeight - keep, exactY));
     }
 
     /** Width (and height) of the image on screen. */
@@ -148,22 +141,23 @@ public final class ZoomPan {
         return fitting;
     }
 
+    /** The screen x of the image's left edge: a whole pixel, so that at an integer zoom pixel edges are exact. */
     public double originX() {
-        return originX;
+        return Math.floor(exactX);
     }
 
     public double originY() {
-        return originY;
+        return Math.floor(exactY);
     }
 
     /** The image column under screen x, or -1 when it is off the image. */
     public int imageX(double x) {
-        return toImage(x, originX);
+        return toImage(x, originX());
     }
 
     /** The image row under screen y, or -1 when it is off the image. */
     public int imageY(double y) {
-        return toImage(y, originY);
+        return toImage(y, originY());
     }
 
     private int toImage(double screen, double origin) {
@@ -173,11 +167,11 @@ public final class ZoomPan {
 
     /** The screen coordinate where image column (or row) i begins, on the x axis. */
     public double screenX(double imageX) {
-        return originX + imageX * zoom;
+        return originX() + imageX * zoom;
     }
 
     public double screenY(double imageY) {
-        return originY + imageY * zoom;
+        return originY() + imageY * zoom;
     }
 
     /** "1:1", "8x", or "scaled to fit (96%)". */
