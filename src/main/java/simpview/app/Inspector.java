@@ -68,12 +68,12 @@ final class Inspector {
         }
         int owner = facts.owners()[index];
         if (owner < 0) {
-            return "background";
+            return "background (no primitive drew it)";
         }
-        String order = "primitive " + (owner + 1) + " of " + facts.primitives().size();
+        String order = "drawn by primitive " + (owner + 1) + " of " + facts.primitives().size();
         return owner < facts.primitives().size()
                 ? order + ": " + facts.primitives().get(owner).describe()
-                : "primitive " + (owner + 1);
+                : "drawn by primitive " + (owner + 1);
     }
 
     /** A depth as the z-buffer holds it, to 4 decimals, without trailing zeros. */

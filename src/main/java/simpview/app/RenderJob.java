@@ -110,9 +110,18 @@ final class RenderJob implements SceneMonitor {
         }
         PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(),
                 canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
-                List.of(), filesRead(), drewSomething);
+                primitives(), filesRead(), drewSomething);
         canvas.recordProvenance(null);
         return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+    }
+
+    /** What each primitive drawn was, in drawing order. */
+    private List<PrimitiveSource> primitives() {
+        if (view instanceof View.OfPage page) {
+            return Pages.page(page.number()).primitiveNames(context).stream()
+                    .map(name -> new PrimitiveSource(null, 0, name, null)).toList();
+        }
+        return List.of();
     }
 
     /** The scene files this picture read: what to watch for a save. */

@@ -8,6 +8,8 @@ import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
 import java.awt.event.ActionEvent;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -78,6 +80,12 @@ final class SimpviewWindow {
         frame.setResizable(true);
         frame.setTransferHandler(new SceneDrop(this::openScene, status::say));
         new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
+        pageView.addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                inspect();
+            }
+        });
         bindKeys();
         frame.addWindowListener(new WindowAdapter() {
             @Override
