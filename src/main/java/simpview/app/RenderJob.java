@@ -3,7 +3,9 @@ package simpview.app;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import simpview.geometry.Matrix4;
 import simpview.pages.PageContext;
+import simpview.scene.PrimitiveTrace;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
 import simpview.pages.ScenePage;
@@ -27,6 +29,8 @@ final class RenderJob implements SceneMonitor {
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private volatile long linesRead;
     private volatile boolean cancelled;
+    /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
+    private DrawingTrace trace;
 
     RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -77,6 +81,16 @@ final class RenderJob implements SceneMonitor {
         warnings.add(message);
     }
 
+    @Override
+    public PrimitiveTrace trace() {
+        return trace;
+    }
+
+    @Override
+    public Matrix4 worldTurn() {
+        return settings.worldTurn();
+    }
+
     /**
      * Draws on the render thread's canvas and returns a copy of the result,
      * or null when the job was cancelled.
@@ -87,6 +101,8 @@ final class RenderJob implements SceneMonitor {
         }
         PageCanvas canvas = renderer.canvas();
         canvas.recordProvenance(settings.record() ? provenance : null);
+        trace = settings.record() || settings.stepLimit() >= 0
+                ? new DrawingTrace(settings.record() ? provenance : null, settings.stepLimit()) : null;
         String error = null;
         boolean drewSomething = true;
         try {
@@ -118,10 +134,12 @@ final class RenderJob implements SceneMonitor {
     /** What each primitive drawn was, in drawing order. */
     private List<PrimitiveSource> primitives() {
         if (view instanceof View.OfPage page) {
-            return Pages.page(page.number()).primitiveNames(context).stream()
-                    .map(name -> new PrimitiveSource(null, 0, name, null)).toList();
+            List<String> names = Pages.page(page.number()).primitiveNames(context);
+            if (!names.isEmpty()) {
+                return names.stream().map(name -> new PrimitiveSource(null, 0, name, null)).toList();
+            }
         }
-        return List.of();
+        return trace == null ? List.of() : trace.sources();
     }
 
     /** The scene files this picture read: what to watch for a save. */

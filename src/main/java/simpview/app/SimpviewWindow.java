@@ -20,11 +20,14 @@ import javax.swing.InputMap;
 import javax.swing.JComponent;
 import javax.swing.JFrame;
 import javax.swing.KeyStroke;
+import simpview.app.view.Orbit;
 import simpview.app.view.PointerGestures;
 import simpview.app.view.WindowPlacement;
 import simpview.app.view.ZoomPan;
 import simpview.pages.PageStepper;
 import simpview.pages.Pages;
+import simpview.pages.ScenePage;
+import simpview.surface.PageCanvas;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
@@ -35,7 +38,8 @@ final class SimpviewWindow {
     private final JFrame frame = new JFrame("simpview");
     private final PageView pageView = new PageView();
     private final SceneWatcher watcher = new SceneWatcher(this::reload);
-    private DrawSettings settings = new DrawSettings(false, true);
+    private DrawSettings settings = DrawSettings.WINDOW;
+    private final Orbit orbit = new Orbit();
     private boolean depthView;
     /** The image pixel under the pointer, and the pinned one (x = -1: none). */
     private int hoverX = -1;
@@ -124,7 +128,7 @@ final class SimpviewWindow {
 
         @Override
         public void orbit(int dx, int dy) {
-            status.say("Turning the view works on scenes (pages 4–8 and opened scenes).");
+            turn(dx, dy);
         }
 
         @Override
@@ -150,15 +154,21 @@ final class SimpviewWindow {
         bind("fit", () -> zoom(ZoomPan::fit), "F");
         bind("actual size", () -> zoom(ZoomPan::actualSize), "Z");
         bind("zoom in", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1)),
-                "typed +", "typed =", "ADD");
+                "typed +", "typed =");
         bind("zoom out", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1)),
-                "typed -", "SUBTRACT");
+                "typed -");
         bind("depth view", this::toggleDepthView, "D");
         bind("pin", this::togglePin, "P");
         bind("own colours", this::toggleOwnColours, "C");
         bind("hide error", () -> pageView.toggleErrorHidden(), "H");
         bind("help", () -> pageView.toggleHelp(), "F1");
         bind("redraw", this::reload, "F5");
+        bind("step on", () -> step(1), "CLOSE_BRACKET");
+        bind("step back", () -> step(-1), "OPEN_BRACKET");
+        bind("step on ten", () -> step(10), "shift CLOSE_BRACKET");
+        bind("step back ten", () -> step(-10), "shift OPEN_BRACKET");
+        bind("step off", this::stepOff, "BACK_SLASH");
+        bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
         bindStroke("open", this::chooseScene, KeyStroke.getKeyStroke(KeyEvent.VK_O, menu));
@@ -217,6 +227,80 @@ final class SimpviewWindow {
         reload();
     }
 
+    /** Whether the view is drawn from a scene file (pages 4 to 8, an opened scene): what stepping and turning work on. */
+    private boolean isScene(View view) {
+        return view instanceof View.OfScene
+                || view instanceof View.OfPage page && Pages.page(page.number()) instanceof ScenePage;
+    }
+
+    /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
+    private void step(int by) {
+        if (!isScene(requested())) {
+            status.say("Stepping through the drawing works on scenes: pages 4–8 and opened scenes.");
+            return;
+        }
+        int total = shown == null ? 0 : shown.facts().primitives().size();
+        int from = settings.stepLimit() >= 0 ? settings.stepLimit() : by > 0 ? 0 : total + 1;
+        int limit = Math.max(1, Math.min(Math.max(total, 1), from + by));
+        settings = settings.withStepLimit(limit);
+        reload();
+    }
+
+    private void stepOff() {
+        if (settings.stepLimit() >= 0) {
+            settings = settings.withStepLimit(-1);
+            reload();
+        }
+    }
+
+    /** A turning drag: the world turns about the view volume's centre, before the depth cue. */
+    private void turn(int dx, int dy) {
+        if (!isScene(requested())) {
+            status.say("Turning works on scenes: pages 4–8 and opened scenes.");
+            return;
+        }
+        orbit.drag(dx, dy);
+        settings = settings.withWorldTurn(orbit.matrix());
+        reload();
+    }
+
+    private void unturn() {
+        orbit.reset();
+        if (settings.worldTurn() != null) {
+            settings = settings.withWorldTurn(null);
+            reload();
+        }
+    }
+
+    /** Leaving a view leaves its stepping and its turn. */
+    private void forgetViewState() {
+        orbit.reset();
+        settings = settings.withStepLimit(-1).withWorldTurn(null);
+        pinnedX = pinnedY = -1;
+        pageView.pin(-1, -1);
+    }
+
+    /** The line under the page while stepping: which primitive, from where; and its outline on the page. */
+    private void showStep(RenderedView result) {
+        int limit = settings.stepLimit();
+        java.util.List<PrimitiveSource> primitives = result.facts().primitives();
+        if (limit < 0 || limit > primitives.size() || limit == 0) {
+            pageView.outline(null);
+            return;
+        }
+        PrimitiveSource last = primitives.get(limit - 1);
+        status.say("primitive " + limit + " of " + primitives.size() + ", " + last.describe()
+                + "   (] next · [ back · Shift: ten · \\ all)");
+        double[] outline = last.outline() == null ? null : last.outline().clone();
+        if (outline != null) {
+            for (int k = 0; k < outline.length; k += 2) {
+                outline[k] = PageCanvas.MARGIN + outline[k];
+                outline[k + 1] = PageCanvas.MARGIN + PageCanvas.PANEL - outline[k + 1];
+            }
+        }
+        pageView.outline(outline);
+    }
+
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
         if (shown != null) {
@@ -251,11 +335,13 @@ final class SimpviewWindow {
     }
 
     private void stepTo(int page) {
+        forgetViewState();
         show(new View.OfPage(page));
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */
     void openScene(Path file) {
+        forgetViewState();
         show(new View.OfScene(file));
     }
 
@@ -302,6 +388,10 @@ final class SimpviewWindow {
         watcher.watch(result.facts().files());
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
+        if (orbit.turned()) {
+            status.say(orbit.describe());
+        }
+        showStep(result);
     }
 
     /** Stops the picture being drawn; the one on screen stays, and so does its place among the pages. */

@@ -212,6 +212,58 @@ class InstrumentsWindowTest {
                 "the scene in its own red");
     }
 
+    @Test
+    void aRightDragTurnsTheSceneAndTheResetKeyRestoresItBitForBit() throws Exception {
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_4);
+        RenderedView four = driver.awaitShown(new View.OfPage(4));
+        assertEquals(0, driver.screenDiffersFrom(four.image()), "page 4 as drawn");
+        Point from = driver.onScreen(375, 375);
+        var robot = driver.robot();
+        robot.mouseMove(from.x, from.y);
+        robot.mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        for (int k = 1; k <= 6; k++) {
+            robot.mouseMove(from.x + 10 * k, from.y + 4 * k);
+        }
+        robot.mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        robot.mouseMove(1, 1);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) > 1000,
+                "a turned picture");
+        assertEquals(new View.OfPage(4), driver.onEdt(() -> window().shown()).view(), "a right-drag does not step");
+        assertTrue(driver.screenDiffersFrom(four.image()) > 1000, "the turned page on screen");
+        driver.press(KeyEvent.VK_O);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) == 0,
+                "the unturned picture");
+        assertEquals(0, driver.screenDiffersFrom(four.image()), "back bit for bit");
+    }
+
+    @Test
+    void stepKeysShowTheDrawingPrimitiveByPrimitive() throws Exception {
+        Path scene = Files.writeString(dir.resolve("three.simp"), "# three\n" + triangleAt(-150) + "\n"
+                + "polygon (-90, -90, -50) (-20, -90, -50) (-55, -20, -50)\n" + "line (60, 60, -10) (90, 90, -10)\n");
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView all = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(3, all.facts().primitives().size());
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 1 of 3, three.simp:2"),
+                "stepping at primitive 1: " + driver.onEdt(() -> window().status().messageText()));
+        RenderedView first = driver.onEdt(() -> window().shown());
+        int centre = PageCanvas.SIZE / 2;
+        assertEquals(all.image().getRGB(centre, centre), first.image().getRGB(centre, centre), "the first triangle drawn");
+        Point corner = new Point(PageCanvas.MARGIN + 65, PageCanvas.MARGIN + PageCanvas.PANEL - 65);
+        assertEquals(0xFF000000, first.image().getRGB(corner.x, corner.y), "the second not yet");
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 2 of 3, three.simp:4"),
+                "stepping at primitive 2");
+        assertEquals(all.image().getRGB(corner.x, corner.y), driver.onEdt(() -> window().shown()).image().getRGB(corner.x, corner.y));
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the whole picture again");
+    }
+
     private static String triangleAt(int z) {
         return "polygon (-60, -60, " + z + ") (60, -60, " + z + ") (0, 60, " + z + ")\n";
     }
