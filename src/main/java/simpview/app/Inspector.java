@@ -72,7 +72,7 @@ final class Inspector {
         }
         String order = "drawn by primitive " + (owner + 1) + " of " + facts.primitives().size();
         return owner < facts.primitives().size()
-                ? order + ": " + facts.primitives().get(owner).describe()
+                ? order + ": " + facts.primitives().describe(owner)
                 : "drawn by primitive " + (owner + 1);
     }
 

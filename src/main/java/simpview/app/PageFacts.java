@@ -8,12 +8,12 @@ import java.util.List;
  *
  * @param depths the panel's z-buffer when the picture was done (row y at y * 650, panel y up), or null
  * @param owners which primitive drew each panel pixel, laid out like depths, or null when not recorded
- * @param primitives the primitives drawn, in drawing order (owners index into it), or an empty list
+ * @param primitives the primitives read, in drawing order (owners index into them)
  * @param files the scene files the picture read, for reloading on save; empty for pages without a file
  * @param drewSomething false when an error stopped the picture before anything of it was drawn
  */
-record PageFacts(double[] depths, int[] owners, List<PrimitiveSource> primitives, List<Path> files,
+record PageFacts(double[] depths, int[] owners, Primitives primitives, List<Path> files,
         boolean drewSomething) {
 
-    static final PageFacts NONE = new PageFacts(null, null, List.of(), List.of(), true);
+    static final PageFacts NONE = new PageFacts(null, null, Primitives.NONE, List.of(), true);
 }

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import simpview.geometry.Matrix4;
 import simpview.pages.PageContext;
+import simpview.scene.PrimitiveLog;
 import simpview.scene.PrimitiveTrace;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
@@ -30,7 +31,7 @@ final class RenderJob implements SceneMonitor {
     private volatile long linesRead;
     private volatile boolean cancelled;
     /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
-    private DrawingTrace trace;
+    private PrimitiveLog trace;
 
     RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -102,7 +103,7 @@ final class RenderJob implements SceneMonitor {
         PageCanvas canvas = renderer.canvas();
         canvas.recordProvenance(settings.record() ? provenance : null);
         trace = settings.record() || settings.stepLimit() >= 0
-                ? new DrawingTrace(settings.record() ? provenance : null, settings.stepLimit()) : null;
+                ? new PrimitiveLog(settings.record() ? provenance : null, settings.stepLimit()) : null;
         String error = null;
         boolean drewSomething = true;
         try {
@@ -132,14 +133,14 @@ final class RenderJob implements SceneMonitor {
     }
 
     /** What each primitive drawn was, in drawing order. */
-    private List<PrimitiveSource> primitives() {
+    private Primitives primitives() {
         if (view instanceof View.OfPage page) {
             List<String> names = Pages.page(page.number()).primitiveNames(context);
             if (!names.isEmpty()) {
-                return names.stream().map(name -> new PrimitiveSource(null, 0, name, null)).toList();
+                return Primitives.named(names);
             }
         }
-        return trace == null ? List.of() : trace.sources();
+        return trace == null ? Primitives.NONE : Primitives.logged(trace);
     }
 
     /** The scene files this picture read: what to watch for a save. */

@@ -283,15 +283,14 @@ final class SimpviewWindow {
     /** The line under the page while stepping: which primitive, from where; and its outline on the page. */
     private void showStep(RenderedView result) {
         int limit = settings.stepLimit();
-        java.util.List<PrimitiveSource> primitives = result.facts().primitives();
+        Primitives primitives = result.facts().primitives();
         if (limit < 0 || limit > primitives.size() || limit == 0) {
             pageView.outline(null);
             return;
         }
-        PrimitiveSource last = primitives.get(limit - 1);
-        status.say("primitive " + limit + " of " + primitives.size() + ", " + last.describe()
+        status.say("primitive " + limit + " of " + primitives.size() + ", " + primitives.describe(limit - 1)
                 + "   (] next · [ back · Shift: ten · \\ all)");
-        double[] outline = last.outline() == null ? null : last.outline().clone();
+        double[] outline = primitives.outline(limit - 1);
         if (outline != null) {
             for (int k = 0; k < outline.length; k += 2) {
                 outline[k] = PageCanvas.MARGIN + outline[k];

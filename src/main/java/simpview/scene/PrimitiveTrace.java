@@ -20,11 +20,10 @@ public interface PrimitiveTrace {
      *
      * @param file the file holding the command
      * @param line its 1-based line
-     * @param text the line as written
      * @param kind {@link Painter#LINE}, {@link Painter#FILLED} or {@link Painter#WIRE}
      * @param p its vertices in panel space, {@link simpview.geometry.Vertex#NUMBERS} numbers each; read, never kept
      */
-    void read(int index, Path file, int line, String text, int kind, double[] p);
+    void read(int index, Path file, int line, int kind, double[] p);
 
     /** Primitive {@code index} is about to be drawn; false leaves it out (the picture stops before it). */
     boolean drawing(int index);

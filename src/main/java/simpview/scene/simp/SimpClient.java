@@ -3,6 +3,7 @@ package simpview.scene.simp;
 import simpview.geometry.Matrix4;
 import simpview.geometry.Vertex;
 import simpview.geometry.ViewVolume;
+import simpview.scene.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
@@ -33,6 +34,9 @@ public final class SimpClient {
     /** The same in panel space with colours, as the painter takes them, reused. */
     private final double[] primitive = new double[Painter.STRIDE];
     private long culled;
+    /** Who follows the primitives (the window's instruments), or null. */
+    private PrimitiveTrace trace;
+    private int traced;
 
     /** Draws on a panel-coordinate drawable with the project's renderers. */
     public SimpClient(Drawable panel) {
@@ -85,7 +89,7 @@ public final class SimpClient {
             return;
         }
         toPanel(c, 2);
-        sink.add(Painter.LINE, primitive);
+        emit(Painter.LINE);
     }
 
     private void polygon(Command c) {
@@ -95,7 +99,29 @@ public final class SimpClient {
             return;
         }
         toPanel(c, 3);
-        sink.add(style == Style.FILLED ? Painter.FILLED : Painter.WIRE, primitive);
+        emit(style == Style.FILLED ? Painter.FILLED : Painter.WIRE);
+    }
+
+    /** Hands the primitive on; a trace, if any, learns which line it came from. */
+    private void emit(int kind) {
+        if (trace != null) {
+            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, primitive);
+        }
+        sink.add(kind, primitive);
+    }
+
+    /**
+     * Has {@code follower} told of every primitive: where it came from as it
+     * is read, and before it is drawn; null for nobody (the default, free).
+     */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
+        painter.follow(follower);
+    }
+
+    /** Starts the CTM at {@code turn} (a turn of the whole world before the scene's own transforms); null: identity. */
+    public void turnWorld(Matrix4 turn) {
+        ctm = turn == null ? Matrix4.identity() : turn;
     }
 
     private void toWorld(Command c, int count) {
