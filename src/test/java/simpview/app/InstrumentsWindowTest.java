@@ -142,9 +142,14 @@ class InstrumentsWindowTest {
         driver.robot().waitForIdle();
         int grey = (int) Math.round(ZBufferPage.GREYS[nearest] * 255);
         String z = Inspector.number(triangles[nearest][0].z());
-        String expected = "x " + px + ", y " + py + " · rgb " + grey + " " + grey + " " + grey;
-        driver.awaitEdt(() -> window().status().inspectorText().startsWith(expected), "the inspector on the centre");
+        // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
+        java.util.regex.Pattern expected = java.util.regex.Pattern.compile(
+                "x (\\d+), y (\\d+) · rgb " + grey + " " + grey + " " + grey + " = .*");
+        driver.awaitEdt(() -> expected.matcher(window().status().inspectorText()).matches(), "the inspector on the centre");
         String line = driver.onEdt(() -> window().status().inspectorText());
+        java.util.regex.Matcher at = expected.matcher(line);
+        assertTrue(at.matches(), line);
+        assertTrue(Math.abs(Integer.parseInt(at.group(1)) - px) <= 2 && Math.abs(Integer.parseInt(at.group(2)) - py) <= 2, line);
         assertTrue(line.contains("depth " + z), line);
         assertTrue(line.contains("drawn by primitive " + (nearest + 1) + " of 6"), line);
         assertTrue(line.contains("triangle " + (nearest + 1) + " of 6"), line);
@@ -154,8 +159,8 @@ class InstrumentsWindowTest {
         driver.press(KeyEvent.VK_P);
         driver.robot().mouseMove(p.x + 200, p.y + 200);
         driver.robot().waitForIdle();
-        assertTrue(driver.onEdt(() -> window().status().inspectorText()).startsWith("pinned · " + expected),
-                driver.onEdt(() -> window().status().inspectorText()));
+        String pinned = driver.onEdt(() -> window().status().inspectorText());
+        assertEquals("pinned · " + line, pinned);
     }
 
     @Test

@@ -64,9 +64,14 @@ final class WindowDriver {
      * capture would then miss. An explicit move makes the two agree.
      */
     private void pinWindow() throws Exception {
+        // Near the top-left corner, but wholly on a screen that has little room (1366x768).
+        Rectangle screen = onEdt(() -> window.frame().getGraphicsConfiguration().getBounds());
+        java.awt.Dimension size = onEdt(() -> window.frame().getSize());
+        int left = Math.max(0, Math.min(PIN_X, screen.width - size.width - 10));
+        int top = Math.max(0, Math.min(PIN_Y, screen.height - size.height));
         for (int attempt = 0; attempt < 10; attempt++) {
-            int x = PIN_X + attempt;
-            onEdt(() -> window.frame().setLocation(x, PIN_Y));
+            int x = left + attempt;
+            onEdt(() -> window.frame().setLocation(x, top));
             robot.waitForIdle();
             if (pageIsWhereTheToolkitSaysItIs()) {
                 return;
@@ -252,13 +257,56 @@ final class WindowDriver {
      * slow to repaint). When some still differ, the last capture is kept under
      * build/window-failures for a look.
      */
-    long screenDiffersFrom(BufferedImage expected) throws Exception {
-        BufferedImage screen = captureWhen(capture -> Images.differingPixels(expected, capture) == 0);
-        long differing = Images.differingPixels(expected, screen);
+    long screenDiffersFrom(BufferedImage page) throws Exception {
+        double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        if (zoom != 1) {
+            return scaledScreenDiffersFrom(page, zoom);
+        }
+        BufferedImage screen = captureWhen(capture -> Images.differingPixels(page, capture) == 0);
+        long differing = Images.differingPixels(page, screen);
         if (differing != 0) {
             keepEvidence("differs-" + differing, screen);
         }
         return differing;
+    }
+
+    /**
+     * The same for a page scaled to fit (a screen too small for 1:1): a
+     * screen pixel matches when it shows the page pixel it falls on, or,
+     * where rounding can pick either, one of that pixel's neighbours.
+     */
+    private long scaledScreenDiffersFrom(BufferedImage page, double zoom) throws Exception {
+        java.util.function.ToLongFunction<BufferedImage> count = screen -> {
+            long differing = 0;
+            for (int sy = 0; sy < screen.getHeight(); sy++) {
+                for (int sx = 0; sx < screen.getWidth(); sx++) {
+                    if (!nearMatch(page, screen.getRGB(sx, sy), (int) (sx / zoom), (int) (sy / zoom))) {
+                        differing++;
+                    }
+                }
+            }
+            return differing;
+        };
+        BufferedImage screen = captureWhen(capture -> count.applyAsLong(capture) == 0);
+        long differing = count.applyAsLong(screen);
+        if (differing != 0) {
+            keepEvidence("differs-scaled-" + differing, screen);
+        }
+        return differing;
+    }
+
+    private static boolean nearMatch(BufferedImage page, int rgb, int ix, int iy) {
+        for (int dy = -1; dy <= 1; dy++) {
+            for (int dx = -1; dx <= 1; dx++) {
+                int x = ix + dx;
+                int y = iy + dy;
+                if (x >= 0 && y >= 0 && x < page.getWidth() && y < page.getHeight()
+                        && ((page.getRGB(x, y) ^ rgb) & 0xFFFFFF) == 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**
