@@ -31,7 +31,7 @@ public abstract class AgainstJava2D {
 
     @Setup(Level.Invocation)
     public final void resetDepth() {
-        canvas.zbuffer().reset();
+        canvas.zbuffer().reset(-200);
     }
 
     @TearDown(Level.Trial)

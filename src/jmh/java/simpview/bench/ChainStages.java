@@ -15,9 +15,14 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
+import simpview.geometry.Camera;
 import simpview.geometry.Vertex;
 import simpview.pages.PageContext;
 import simpview.pages.Pages;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
 import simpview.surface.DepthCueDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
@@ -28,10 +33,6 @@ import simpview.surface.ScissorDrawable;
 import simpview.surface.Span;
 import simpview.surface.ZBuffer;
 import simpview.surface.ZBufferDrawable;
-import simpview.raster.FilledPolygonRenderer;
-import simpview.scene.simp.SceneException;
-import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
 
 /**
  * Where the time goes: the small-triangle mesh, or page 5's or page 7's
@@ -87,15 +88,15 @@ public class ChainStages {
                 : new Sink(PageCanvas.PANEL);
         Drawable cue = switch (last) {
             case "renderer", "scissor", "zbuffer" -> new Sink(PageCanvas.PANEL);
-            default -> new DepthCueDrawable(near, Rgb.BLACK, panel);
+            default -> new DepthCueDrawable(near, Rgb.BLACK, Camera.PARALLEL, panel);
         };
         Drawable depth = last.equals("renderer") || last.equals("scissor") ? cue : new ZBufferDrawable(zbuffer, cue);
-        return last.equals("renderer") ? depth : new ScissorDrawable(depth);
+        return last.equals("renderer") ? depth : new ScissorDrawable(Camera.PARALLEL, depth);
     }
 
     @Setup(Level.Invocation)
     public void resetDepth() {
-        zbuffer.reset();
+        zbuffer.reset(-200);
     }
 
     @Benchmark

@@ -18,7 +18,7 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.PrimitiveLog;
 import simpview.scene.PrimitiveTrace;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;

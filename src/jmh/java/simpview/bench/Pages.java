@@ -16,9 +16,9 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.surface.PageCanvas;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
 
 /**
  * One whole page, as the window shows it: clear (image and z-buffer) and

@@ -20,11 +20,11 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
-import simpview.surface.PageCanvas;
-import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 
 /**
  * End to end: a generated SIMP file of 1,000,000 polygons read, interpreted

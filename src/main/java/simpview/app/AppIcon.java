@@ -8,7 +8,6 @@ import simpview.raster.FilledPolygonRenderer;
 import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
 import simpview.surface.PanelDrawable;
-import simpview.surface.ScissorDrawable;
 import simpview.surface.ZBuffer;
 import simpview.surface.ZBufferDrawable;
 
@@ -39,7 +38,7 @@ final class AppIcon {
             }
         }
         Drawable panel = new PanelDrawable(pixels, 0, 0, size);
-        Drawable target = new ScissorDrawable(new ZBufferDrawable(new ZBuffer(size, size), panel));
+        Drawable target = new ZBufferDrawable(new ZBuffer(size, size), panel);
         FilledPolygonRenderer renderer = new FilledPolygonRenderer();
         double s = size;
         renderer.drawPolygon(new Vertex(.08 * s, .10 * s, -150, 1, .2, .2), new Vertex(.92 * s, .30 * s, -20, 1, .8, .2),

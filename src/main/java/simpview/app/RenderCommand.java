@@ -16,10 +16,10 @@ import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
-import simpview.scene.simp.SceneMonitor;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",

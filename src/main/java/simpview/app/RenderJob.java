@@ -10,11 +10,11 @@ import simpview.scene.PrimitiveTrace;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
 import simpview.pages.ScenePage;
+import simpview.scene.SceneException;
 import simpview.surface.Provenance;
-import simpview.surface.PageCanvas;
 import simpview.scene.simp.SceneCancelledException;
-import simpview.scene.simp.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
 
 /**
  * One picture to draw on the render thread. It is also the scene's monitor:

@@ -1,10 +1,11 @@
 package simpview.app;
 
 import java.nio.file.Path;
-import simpview.surface.Drawable;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
 
 /** What draws a SIMP file onto a panel; the real one is {@link SceneRenderer}. Tests may stand in. */
 @FunctionalInterface
@@ -13,4 +14,9 @@ interface SceneDrawer {
     SceneDrawer SIMP = SceneRenderer::draw;
 
     void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException;
+
+    /** Draws a lit scene onto a cleared canvas. */
+    default void drawLit(Path file, PageCanvas canvas, SceneMonitor monitor) throws SceneException {
+        SceneRenderer.drawLit(file, canvas, monitor);
+    }
 }

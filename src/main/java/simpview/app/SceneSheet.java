@@ -1,14 +1,17 @@
 package simpview.app;
 
 import java.nio.file.Path;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
-import simpview.scene.simp.SceneMonitor;
 
 /**
- * Any scene file shown as a whole page, like pages 4 to 8: cleared canvas,
- * z-buffer, depth cue from {@code near} at z = 0 to {@code far} at z = -200.
+ * Any scene file shown as a whole page, like pages 4 to 8. A depth-cued scene
+ * is cued from {@code near} at z = 0 to {@code far} at z = -200; a lit scene
+ * (SPEC Part 2, decided by {@link SceneRules}) is drawn by its own camera,
+ * lights and fog.
  */
 record SceneSheet(Path file, Rgb near, Rgb far) {
 
@@ -27,6 +30,10 @@ record SceneSheet(Path file, Rgb near, Rgb far) {
      */
     void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer, boolean ownColours) throws SceneException {
         canvas.clear();
-        drawer.draw(file, ownColours ? canvas.depthTested() : canvas.depthCued(near, far), monitor);
+        if (SceneRules.of(file).lit()) {
+            drawer.drawLit(file, canvas, monitor);
+        } else {
+            drawer.draw(file, ownColours ? canvas.depthTested() : canvas.depthCued(near, far), monitor);
+        }
     }
 }

@@ -112,6 +112,82 @@ public final class Matrix4 {
         return new Matrix4(p);
     }
 
+    /**
+     * The inverse, by Gauss-Jordan elimination with partial pivoting; null
+     * when this matrix cannot be inverted (a zero pivot, or a result that is
+     * not finite).
+     */
+    public Matrix4 inverse() {
+        double[] a = m.clone();
+        double[] inv = IDENTITY.m.clone();
+        for (int col = 0; col < 4; col++) {
+            int pivot = col;
+            for (int row = col + 1; row < 4; row++) {
+                if (Math.abs(a[4 * row + col]) > Math.abs(a[4 * pivot + col])) {
+                    pivot = row;
+                }
+            }
+            double p = a[4 * pivot + col];
+            if (p == 0 || !Double.isFinite(p)) {
+                return null;
+            }
+            swapRows(a, col, pivot);
+            swapRows(inv, col, pivot);
+            for (int k = 0; k < 4; k++) {
+                a[4 * col + k] /= p;
+                inv[4 * col + k] /= p;
+            }
+            for (int row = 0; row < 4; row++) {
+                double f = a[4 * row + col];
+                if (row != col && f != 0) {
+                    for (int k = 0; k < 4; k++) {
+                        a[4 * row + k] -= f * a[4 * col + k];
+                        inv[4 * row + k] -= f * inv[4 * col + k];
+                    }
+                }
+            }
+        }
+        for (double v : inv) {
+            if (!Double.isFinite(v)) {
+                return null;
+            }
+        }
+        return new Matrix4(inv);
+    }
+
+    private static void swapRows(double[] a, int r, int s) {
+        if (r != s) {
+            for (int k = 0; k < 4; k++) {
+                double t = a[4 * r + k];
+                a[4 * r + k] = a[4 * s + k];
+                a[4 * s + k] = t;
+            }
+        }
+    }
+
+    /**
+     * The matrix that takes normals along with this one's points: the inverse
+     * transpose of the upper-left 3x3 part, with no translation. Where that
+     * part is singular (a scale of 0 flattened the object) the cofactor
+     * matrix stands in: the same directions wherever they are defined.
+     */
+    public Matrix4 normalTransform() {
+        double a = m[0], b = m[1], c = m[2];
+        double d = m[4], e = m[5], f = m[6];
+        double g = m[8], h = m[9], i = m[10];
+        // Cofactors: the inverse transpose is cof / det.
+        double c00 = e * i - f * h, c01 = f * g - d * i, c02 = d * h - e * g;
+        double c10 = c * h - b * i, c11 = a * i - c * g, c12 = b * g - a * h;
+        double c20 = b * f - c * e, c21 = c * d - a * f, c22 = a * e - b * d;
+        double det = a * c00 + b * c01 + c * c02;
+        double s = det != 0 && Double.isFinite(1 / det) ? 1 / det : 1;
+        return new Matrix4(new double[] {
+            s * c00, s * c01, s * c02, 0,
+            s * c10, s * c11, s * c12, 0,
+            s * c20, s * c21, s * c22, 0,
+            0, 0, 0, 1});
+    }
+
     /** Transforms the point (w = 1) and keeps the vertex's colour. */
     public Vertex apply(Vertex v) {
         return v.withPosition(applyX(v.x(), v.y(), v.z()), applyY(v.x(), v.y(), v.z()),

@@ -1,7 +1,7 @@
 package simpview.pages;
 
+import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
-import simpview.scene.simp.SceneException;
 
 /** One of the eight pages. Draws onto a canvas that has just been cleared. */
 public interface Page {

@@ -1,8 +1,8 @@
 package simpview.pages;
 
 import java.awt.image.BufferedImage;
+import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
-import simpview.scene.simp.SceneException;
 
 /**
  * Renders whole pages: clears the canvas (fresh image, z-buffer, CTM, stacks

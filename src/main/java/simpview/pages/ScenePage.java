@@ -2,11 +2,11 @@ package simpview.pages;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneRenderer;
 import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
-import simpview.scene.simp.SceneRenderer;
 
 /** Pages 4 to 8: a SIMP scene drawn with depth cueing from a near colour to black. */
 public final class ScenePage implements Page {

@@ -12,41 +12,23 @@ import simpview.surface.Drawable;
 import simpview.surface.Span;
 
 /**
- * The filled triangle, one span per pixel row.
- *
- * <p>Coverage. Pixel (i, j) is drawn iff its centre (i + 0.5, j + 0.5) is
- * inside the triangle, a centre exactly on an edge only for a top or left
- * edge. The test is the sign of each edge function, evaluated with the edge's
- * endpoints in a canonical order: two triangles sharing an edge compute
- * bit-identical values there and differ only in sign, and the top-left rule
- * gives the tie to exactly one of them. Along a row each edge function is
- * monotone in x even in floating point (every operation in it rounds
- * monotonically), so the covered pixels form one run whose ends are found
- * from the edge crossings and then settled by that same exact test.
+ * The filled triangle, one span per pixel row: which pixels, by
+ * {@link TriangleCoverage} (centres, the top-left rule); what they carry, by
+ * one {@link Plane} per attribute.
  *
  * <p>Attributes. Colour (in byte levels) and z are planes over the triangle,
  * evaluated at the first pixel centre of each span with their x slopes;
  * that is barycentric interpolation at every pixel centre. A drawable that
  * replaces colour (depth cueing) gets the depth plane only.
  *
- * <p>Work is bounded by the drawable: rows and spans are clipped to it
- * before any pixel is visited. One instance reuses its scratch state and is
- * not for use by two threads at once.
+ * <p>One instance reuses its scratch state and is not for use by two threads at once.
  */
 public final class FilledPolygonRenderer implements PolygonRenderer {
 
     private final Span span = new Span();
     /** Room for a triangle given as vertices, so that both entries share one path. */
     private final double[] corners = new double[3 * Vertex.NUMBERS];
-    private final Edge[] edges = {new Edge(), new Edge(), new Edge()};
-    // Edges by role: inside to the right (dy < 0), to the left (dy > 0),
-    // horizontal (at most one); null where the triangle has none.
-    private Edge left0;
-    private Edge left1;
-    private Edge right0;
-    private Edge right1;
-    private Edge flat;
-
+    private final TriangleCoverage coverage = new TriangleCoverage();
     private final Plane red = new Plane();
     private final Plane green = new Plane();
     private final Plane blue = new Plane();
@@ -76,31 +58,23 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         if (!Vertex.isFinite(p, i1) || !Vertex.isFinite(p, i2) || !Vertex.isFinite(p, i3)) {
             return;
         }
-        double area = (p[i2 + X] - p[i1 + X]) * (p[i3 + Y] - p[i1 + Y])
-                - (p[i2 + Y] - p[i1 + Y]) * (p[i3 + X] - p[i1 + X]);
-        if (!(area != 0) || !Double.isFinite(area)) {
-            return; // degenerate: no pixel centre lies strictly inside
+        TriangleCoverage t = coverage;
+        if (!t.set(p[i1 + X], p[i1 + Y], p[i2 + X], p[i2 + Y], p[i3 + X], p[i3 + Y])) {
+            return;
         }
         // Counter-clockwise a, b, c.
         int a = i1;
-        int b = area > 0 ? i2 : i3;
-        int c = area > 0 ? i3 : i2;
-        area = Math.abs(area);
-        left0 = left1 = right0 = right1 = flat = null;
-        setUpEdge(edges[0], p, a, b);
-        setUpEdge(edges[1], p, b, c);
-        setUpEdge(edges[2], p, c, a);
+        int b = t.clockwise ? i3 : i2;
+        int c = t.clockwise ? i2 : i3;
         shaded = usesColour(drawable);
-        setUpPlanes(p, a, b, c, area);
-
+        setUpPlanes(p, a, b, c, t.area);
         int width = drawable.width();
         int height = drawable.height();
-        double minY = Math.min(p[a + Y], Math.min(p[b + Y], p[c + Y]));
-        double maxY = Math.max(p[a + Y], Math.max(p[b + Y], p[c + Y]));
-        int firstRow = (int) Math.max(0, Math.min(height, Math.ceil(minY - 0.5)));
-        int lastRow = (int) Math.max(-1, Math.min(height - 1, Math.floor(maxY - 0.5)));
-        for (int row = firstRow; row <= lastRow; row++) {
-            drawRow(row, width, drawable);
+        int lastRow = t.lastRow(height);
+        for (int row = t.firstRow(height); row <= lastRow; row++) {
+            if (t.row(row, width)) {
+                emitSpan(row, t.from, t.to, drawable);
+            }
         }
     }
 
@@ -110,47 +84,6 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
             askedUsesColour = drawable.usesColour();
         }
         return askedUsesColour;
-    }
-
-    /** The covered run of a row is the intersection of one half-row per edge. */
-    private void drawRow(int row, int width, Drawable drawable) {
-        double py = row + 0.5;
-        if (flat != null && !flat.inside(flat.rowTerm(py), 0.5)) {
-            return; // a horizontal edge excludes or admits the whole row
-        }
-        int from = left0.firstInside(py, width);
-        if (left1 != null) {
-            from = Math.max(from, left1.firstInside(py, width));
-        }
-        int to = width;
-        if (from < to) {
-            to = right0.endOfInside(py, width);
-        }
-        if (right1 != null && from < to) {
-            to = Math.min(to, right1.endOfInside(py, width));
-        }
-        if (from < to) {
-            emitSpan(row, from, to, drawable);
-        }
-    }
-
-    private void setUpEdge(Edge e, double[] p, int from, int to) {
-        e.set(p[from + X], p[from + Y], p[to + X], p[to + Y]);
-        if (e.dy < 0) {
-            if (left0 == null) {
-                left0 = e;
-            } else {
-                left1 = e;
-            }
-        } else if (e.dy > 0) {
-            if (right0 == null) {
-                right0 = e;
-            } else {
-                right1 = e;
-            }
-        } else {
-            flat = e;
-        }
     }
 
     private void setUpPlanes(double[] p, int a, int b, int c, double area) {
@@ -189,137 +122,5 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
             s.r = s.dr = s.g = s.dg = s.b = s.db = 0;
         }
         drawable.fillSpan(s);
-    }
-
-    /**
-     * One edge of the counter-clockwise triangle, from (ax, ay) to (bx, by):
-     * its exact coverage test and a guess of where it crosses a row.
-     */
-    private static final class Edge {
-        // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
-        // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or
-        // left edge. sign is +-1 and IEEE rounding is symmetric under negation, so f has the same sign
-        // (and zeros) as (sign * ex) * (py - y0) - (sign * ey) * (px - x0): the sign is folded in.
-        private double x0;
-        private double y0;
-        private double signedEx;
-        private double signedEy;
-        private boolean topLeft;
-        // The crossing guess, in the edge's own direction.
-        private double fromX;
-        private double fromY;
-        private double xPerY;
-        double dy;
-
-        void set(double ax, double ay, double bx, double by) {
-            double dx = bx - ax;
-            dy = by - ay;
-            fromX = ax;
-            fromY = ay;
-            xPerY = dx / dy;
-            // Canonical order: the lexicographically smaller endpoint first.
-            boolean forward = ax < bx || (ax == bx && ay < by);
-            x0 = forward ? ax : bx;
-            y0 = forward ? ay : by;
-            double sign = forward ? 1 : -1;
-            signedEx = sign * (forward ? bx - ax : ax - bx);
-            signedEy = sign * (forward ? by - ay : ay - by);
-            // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
-            topLeft = dy < 0 || (dy == 0 && dx < 0);
-        }
-
-        /** The part of the edge function that depends only on the row: sign * ex * (py - y0). */
-        double rowTerm(double py) {
-            return signedEx * (py - y0);
-        }
-
-        /** The edge function at (px, py), given rowTerm(py). */
-        private double f(double rowTerm, double px) {
-            return rowTerm - signedEy * (px - x0);
-        }
-
-        /** The exact coverage test at (px, py), given rowTerm(py). */
-        boolean inside(double rowTerm, double px) {
-            double f = f(rowTerm, px);
-            return f > 0 || (f == 0 && topLeft);
-        }
-
-        /** inside() for an edge running downward, always a left edge: f == 0 is in. */
-        private boolean insideLeft(double rowTerm, double px) {
-            return f(rowTerm, px) >= 0;
-        }
-
-        /** inside() for an edge running upward, never top or left: f == 0 is out. */
-        private boolean insideRight(double rowTerm, double px) {
-            return f(rowTerm, px) > 0;
-        }
-
-        /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
-        private double crossing(double py) {
-            return fromX + (py - fromY) * xPerY;
-        }
-
-        /**
-         * For an edge whose inside is to the right: the first pixel on the row
-         * inside it, or width. Along a row the test is monotone in x, so the
-         * crossing only gives a first guess; the exact test moves it to the
-         * boundary. Pixel indices are kept as (exact) doubles. The common
-         * case, the guess already on the boundary, is told by two independent
-         * tests and one branch; the loops then would not move.
-         */
-        int firstInside(double py, int width) {
-            double term = rowTerm(py);
-            double i = clampIndex(Math.ceil(crossing(py) - 0.5), width);
-            if (!insideLeft(term, i - 0.5) & insideLeft(term, i + 0.5)) {
-                return (int) i;
-            }
-            while (i > 0 && insideLeft(term, i - 0.5)) {
-                i--;
-            }
-            while (i < width && !insideLeft(term, i + 0.5)) {
-                i++;
-            }
-            return (int) i;
-        }
-
-        /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
-        int endOfInside(double py, int width) {
-            double term = rowTerm(py);
-            double i = clampIndex(Math.floor(crossing(py) - 0.5) + 1, width);
-            if (insideRight(term, i - 0.5) & !insideRight(term, i + 0.5)) {
-                return (int) i;
-            }
-            while (i < width && insideRight(term, i + 0.5)) {
-                i++;
-            }
-            while (i > 0 && !insideRight(term, i - 0.5)) {
-                i--;
-            }
-            return (int) i;
-        }
-
-        /** A guess clamped to [0, width]; NaN becomes 0. */
-        private static double clampIndex(double estimate, int width) {
-            return estimate >= 0 ? Math.min(estimate, width) : 0;
-        }
-    }
-
-    /** One attribute over the triangle: value = base + slopeX * dx + slopeY * dy, d relative to vertex a. */
-    private static final class Plane {
-        private double base;
-        double slopeX;
-        private double slopeY;
-
-        void set(double va, double vb, double vc, double e1x, double e1y, double e2x, double e2y, double area) {
-            double d1 = vb - va;
-            double d2 = vc - va;
-            base = va;
-            slopeX = (d1 * e2y - d2 * e1y) / area;
-            slopeY = (d2 * e1x - d1 * e2x) / area;
-        }
-
-        double valueAt(double dx, double dy) {
-            return base + slopeX * dx + slopeY * dy;
-        }
     }
 }

@@ -1,26 +1,28 @@
 package simpview.surface;
 
-import simpview.geometry.ViewVolume;
+import simpview.geometry.Camera;
 
 /**
  * Depth cueing: each write's colour is replaced by the colour of its depth,
- * {@code far + (near - far) * (z + 200) / 200} per channel, near at z = 0 and
- * far at z = -200. The map is linear in z, so on a span whose z is linear the
+ * {@code far + (near - far) * (z + 200) / 200} per channel, near at the
+ * camera's near plane (z = 0 in Part 1) and far at its far plane (z = -200). The map is linear in z, so on a span whose z is linear the
  * colour stays linear and only the span's colour coefficients change.
  */
 public final class DepthCueDrawable extends DrawableDecorator {
 
-    // Per channel, in byte levels: colour(z) = far + slope * (z - FAR_Z).
+    // Per channel, in byte levels: colour(z) = far + slope * (z - farZ).
     private final double farR;
     private final double farG;
     private final double farB;
     private final double slopeR;
     private final double slopeG;
     private final double slopeB;
+    private final double farZ;
 
-    public DepthCueDrawable(Rgb near, Rgb far, Drawable delegate) {
+    public DepthCueDrawable(Rgb near, Rgb far, Camera camera, Drawable delegate) {
         super(delegate);
-        double depthRange = ViewVolume.NEAR_Z - ViewVolume.FAR_Z;
+        farZ = camera.yon();
+        double depthRange = camera.hither() - farZ;
         farR = 255 * far.r();
         farG = 255 * far.g();
         farB = 255 * far.b();
@@ -37,14 +39,14 @@ public final class DepthCueDrawable extends DrawableDecorator {
 
     @Override
     public void setPixel(int x, int y, double z, int argb) {
-        double depth = z - ViewVolume.FAR_Z;
+        double depth = z - farZ;
         delegate.setPixel(x, y, z, Colors.packLevels(farR + slopeR * depth,
                 farG + slopeG * depth, farB + slopeB * depth));
     }
 
     @Override
     public void fillSpan(Span s) {
-        double depth = s.z - ViewVolume.FAR_Z;
+        double depth = s.z - farZ;
         s.r = farR + slopeR * depth;
         s.g = farG + slopeG * depth;
         s.b = farB + slopeB * depth;

@@ -1,7 +1,7 @@
 package simpview.surface;
 
 import java.awt.image.BufferedImage;
-import simpview.geometry.ViewVolume;
+import simpview.geometry.Camera;
 
 /**
  * One page: a 750x750 image with 50-pixel white margins around the 650x650
@@ -11,7 +11,7 @@ import simpview.geometry.ViewVolume;
 public final class PageCanvas {
 
     public static final int MARGIN = 50;
-    public static final int PANEL = ViewVolume.PANEL_SIZE;
+    public static final int PANEL = Camera.PANEL_SIZE;
     public static final int SIZE = PANEL + 2 * MARGIN;
 
     private final BufferedImage image;
@@ -36,7 +36,7 @@ public final class PageCanvas {
         imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
-        zbuffer.reset();
+        zbuffer.reset(Camera.PARALLEL.yon());
         if (provenance != null) {
             provenance.reset();
         }
@@ -82,12 +82,13 @@ public final class PageCanvas {
 
     /** The panel behind the z-buffer and the scissor: what pages 3 and up draw on. */
     public Drawable depthTested() {
-        return new ScissorDrawable(new ZBufferDrawable(zbuffer, afterZBuffer(panel)));
+        return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer, afterZBuffer(panel)));
     }
 
     /** The panel behind scissor, z-buffer and depth cue: what a SIMP scene draws on. */
     public Drawable depthCued(Rgb near, Rgb far) {
-        return new ScissorDrawable(new ZBufferDrawable(zbuffer, afterZBuffer(new DepthCueDrawable(near, far, panel))));
+        return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer,
+                afterZBuffer(new DepthCueDrawable(near, far, Camera.PARALLEL, panel))));
     }
 
     /** A copy of the page as it is now. */

@@ -1,10 +1,11 @@
 package simpview.surface;
 
-import simpview.geometry.ViewVolume;
+import simpview.geometry.Camera;
 
 /**
  * Pixel clipping to the view volume: writes outside the drawable's bounds, or
- * nearer than z = 0 or farther than z = -200, are dropped.
+ * nearer than the camera's near plane or farther than its far plane (z = 0
+ * and z = -200 for Part 1's view), are dropped.
  */
 public final class ScissorDrawable extends DrawableDecorator {
 
@@ -12,9 +13,13 @@ public final class ScissorDrawable extends DrawableDecorator {
     // down the whole chain for every span.
     private final int width;
     private final int height;
+    private final double near;
+    private final double far;
 
-    public ScissorDrawable(Drawable delegate) {
+    public ScissorDrawable(Camera camera, Drawable delegate) {
         super(delegate);
+        near = camera.hither();
+        far = camera.yon();
         width = delegate.width();
         height = delegate.height();
     }
@@ -29,8 +34,8 @@ public final class ScissorDrawable extends DrawableDecorator {
         return height;
     }
 
-    private static boolean inDepth(double z) {
-        return z <= ViewVolume.NEAR_Z && z >= ViewVolume.FAR_Z;
+    private boolean inDepth(double z) {
+        return z <= near && z >= far;
     }
 
     @Override

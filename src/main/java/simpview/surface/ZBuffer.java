@@ -1,10 +1,11 @@
 package simpview.surface;
 
 import java.util.Arrays;
-import simpview.geometry.ViewVolume;
 
 /**
- * One world-space depth per pixel; larger z is nearer. Reset to the far plane.
+ * One depth per pixel (world space for depth-cued scenes, camera space for lit
+ * ones); larger z is nearer. Reset to the farthest depth of the picture: the
+ * far plane, z = -200, for depth-cued scenes; -infinity for lit ones.
  *
  * <p>Only a {@link ZBufferDrawable} writes the depths, and it says so
  * ({@link #written}) before it returns from a write. So the buffer knows when
@@ -16,14 +17,15 @@ public final class ZBuffer {
     private final int width;
     private final int height;
     final double[] depth;
-    /** True only while every entry is FAR_Z. */
+    /** True only while every entry is {@link #resetTo}. */
     private boolean atFarPlane;
+    private double resetTo = Double.NaN;
 
     public ZBuffer(int width, int height) {
         this.width = width;
         this.height = height;
         this.depth = new double[width * height];
-        reset();
+        reset(-200);
     }
 
     public int width() {
@@ -34,17 +36,28 @@ public final class ZBuffer {
         return height;
     }
 
-    /** Every entry back to the far plane, z = -200. */
-    public void reset() {
-        if (!atFarPlane) {
-            Arrays.fill(depth, ViewVolume.FAR_Z);
+    /** Every entry back to {@code farthest}: -200 for depth-cued pictures, -infinity for lit ones. */
+    public void reset(double farthest) {
+        if (!atFarPlane || Double.doubleToLongBits(farthest) != Double.doubleToLongBits(resetTo)) {
+            Arrays.fill(depth, farthest);
+            resetTo = farthest;
             atFarPlane = true;
         }
     }
 
+    /** The depth every entry had after the last reset. */
+    public double farthest() {
+        return resetTo;
+    }
+
     /** Some entry may now differ from the far plane. */
-    void written() {
+    public void written() {
         atFarPlane = false;
+    }
+
+    /** The raw depths, row by row from the bottom, for a stage that tests and writes them itself. */
+    public double[] depths() {
+        return depth;
     }
 
     /** True when no depth has been written since the last reset. */

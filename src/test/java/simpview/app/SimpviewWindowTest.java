@@ -17,8 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
+import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
-import simpview.scene.simp.SceneException;
 
 /** The real window under a real X server (Xvfb), driven with java.awt.Robot. */
 class SimpviewWindowTest {

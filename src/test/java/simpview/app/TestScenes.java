@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /** Scene folders and files the tests use. */
 final class TestScenes {

@@ -46,9 +46,12 @@ class Matrix4Test {
 
     @Test
     void worldMapsOntoThePanelAsSpecWritesIt() {
-        assertEquals(0, ViewVolume.toPanel(-100));
-        assertEquals(325, ViewVolume.toPanel(0));
-        assertEquals(650, ViewVolume.toPanel(100));
-        assertEquals(0.25, ViewVolume.nearness(-150));
+        assertEquals(0, Camera.PARALLEL.panelX(-100, -1));
+        assertEquals(325, Camera.PARALLEL.panelY(0, -1));
+        assertEquals(650, Camera.PARALLEL.panelX(100, -1));
+        for (double x = -100; x <= 100; x += 0.37) {
+            assertEquals((x + 100) * 650 / 200, Camera.PARALLEL.panelX(x, -5), "bit for bit as SPEC writes it");
+        }
+        assertEquals(0.25, Camera.PARALLEL.nearness(-150));
     }
 }

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.testing.GoldenCase;
 import simpview.testing.Goldens;
 

@@ -16,11 +16,11 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.Pages;
-import simpview.surface.PageCanvas;
-import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 import simpview.testing.GoldenCase;
 
 /**

@@ -32,7 +32,7 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 import net.jqwik.api.lifecycle.BeforeTry;
 import net.jqwik.api.statistics.Statistics;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /**
  * Scene fuzzing: random token streams, mutated real scenes, webs of `file`
@@ -481,7 +481,8 @@ class SceneFuzzProperties {
         "translate 1 2 abc",
         "line (0,0,0)",
         "polygon (0,0,0) (1,0,0) (0,1,0) extra",
-        "polygon (0,0,0) (1,0,0) (0,1,0",
+        "polygon (0,0,0) (1,0,0) (0,1",
+        "polygon (0,0,0,1,1,1) (1,0,0) (0,1,0)",
         "polygon (0,0,0) (1,0,0) (0,1,0) (1,1,1)",
         "polygon (0,0,0) (1,0,0) (0,1,NaN)",
         "file \"no_such_scene\"",

@@ -14,11 +14,11 @@ import java.util.Comparator;
 import java.util.stream.Stream;
 import net.jqwik.api.lifecycle.LifecycleContext;
 import net.jqwik.api.lifecycle.SkipExecutionHook;
-import simpview.surface.PageCanvas;
-import simpview.surface.Rgb;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 
 /**
  * Runs SIMP scenes the way a page does (a 750x750 canvas, scissor, z-buffer

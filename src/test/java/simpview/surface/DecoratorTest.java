@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.image.BufferedImage;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import simpview.geometry.Camera;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
@@ -97,7 +98,7 @@ class DecoratorTest {
 
     @Test
     void depthCueAtTheNearAndFarPlanes() {
-        DepthCueDrawable cue = new DepthCueDrawable(new Rgb(1, 0.5, 0.2), new Rgb(0.2, 0.1, 0), new ImageDrawable(
+        DepthCueDrawable cue = new DepthCueDrawable(new Rgb(1, 0.5, 0.2), new Rgb(0.2, 0.1, 0), Camera.PARALLEL, new ImageDrawable(
                 new BufferedImage(4, 1, BufferedImage.TYPE_INT_RGB)));
         cue.setPixel(0, 0, 0, 0);
         cue.setPixel(1, 0, -200, 0);

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Random;
+import simpview.geometry.Camera;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import org.junit.jupiter.api.Test;
@@ -29,10 +30,10 @@ class ProvenanceDrawableTest {
         Random random = new Random(seed);
         Provenance provenance = new Provenance(SIZE, SIZE);
         BufferedSink sink = new BufferedSink();
-        Drawable recorded = new ScissorDrawable(new ZBufferDrawable(new ZBuffer(SIZE, SIZE),
+        Drawable recorded = new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(new ZBuffer(SIZE, SIZE),
                 new ProvenanceDrawable(provenance, sink)));
         RecordingDrawable writes = new RecordingDrawable(SIZE, SIZE);
-        Drawable reference = new ScissorDrawable(new ZBufferDrawable(new ZBuffer(SIZE, SIZE), writes));
+        Drawable reference = new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(new ZBuffer(SIZE, SIZE), writes));
         int[] expected = new int[SIZE * SIZE];
         java.util.Arrays.fill(expected, Provenance.BACKGROUND);
         int primitives = 1 + random.nextInt(40);

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import javax.imageio.ImageIO;
 import simpview.pages.PageRenderer;
-import simpview.scene.simp.SceneException;
+import simpview.scene.SceneException;
 
 /** `gradle updateGoldens`: re-renders every golden image on purpose. */
 public final class GoldenUpdater {

@@ -6,21 +6,115 @@ import simpview.geometry.Axis;
  * One SIMP command as read from a line. The reader refills the same instance
  * for every line, so nothing is allocated per command; whoever acts on it
  * reads it before asking for the next line.
+ *
+ * <p>Every command is described once, in {@link Kind}: its spelling, the
+ * shape of its arguments, and whether it belongs to the lit rules. The reader
+ * parses by shape, the recording stores by shape, and the messages say what a
+ * command takes from the same entry; the client gives each kind its action.
  */
 public final class Command {
 
-    /** What a line can say. */
-    public enum Kind { PUSH, POP, SCALE, TRANSLATE, ROTATE, LINE, POLYGON, FILE, WIRE, FILLED }
+    /** How a command's arguments are written. */
+    public enum Shape {
+        /** Nothing after the word. */
+        NONE,
+        /** Numbers, any mix of blanks, commas and parentheses between them; the kind lists the counts it takes. */
+        NUMBERS,
+        /** An axis letter X, Y or Z and an angle in degrees. */
+        AXIS_ANGLE,
+        /** A file name, quoted or bare. */
+        NAME
+    }
 
+    /**
+     * Every command a SIMP file can hold. {@code counts} are the numbers a
+     * NUMBERS command takes; for a line or polygon they are a point (3) per
+     * vertex, or a point and a colour (6) per vertex.
+     */
+    public enum Kind {
+        PUSH("{", Shape.NONE, false),
+        POP("}", Shape.NONE, false),
+        SCALE("scale", Shape.NUMBERS, false, 3),
+        TRANSLATE("translate", Shape.NUMBERS, false, 3),
+        ROTATE("rotate", Shape.AXIS_ANGLE, false),
+        LINE("line", Shape.NUMBERS, false, 6, 12),
+        POLYGON("polygon", Shape.NUMBERS, false, 9, 18),
+        FILE("file", Shape.NAME, false),
+        WIRE("wire", Shape.NONE, false),
+        FILLED("filled", Shape.NONE, false),
+        CAMERA("camera", Shape.NUMBERS, true, 6),
+        OBJ("obj", Shape.NAME, true),
+        AMBIENT("ambient", Shape.NUMBERS, true, 3),
+        SURFACE("surface", Shape.NUMBERS, true, 3, 5),
+        DEPTH("depth", Shape.NUMBERS, true, 5),
+        LIGHT("light", Shape.NUMBERS, true, 5),
+        FLAT("flat", Shape.NONE, true),
+        GOURAUD("gouraud", Shape.NONE, true),
+        PHONG("phong", Shape.NONE, true);
+
+        public final String spelling;
+        public final Shape shape;
+        /** True for the commands that make a scene lit (SPEC Part 2). */
+        public final boolean lit;
+        private final int[] counts;
+
+        Kind(String spelling, Shape shape, boolean lit, int... counts) {
+            this.spelling = spelling;
+            this.shape = shape;
+            this.lit = lit;
+            this.counts = counts;
+        }
+
+        /** Vertices of a line (2) or polygon (3); 0 for every other command. */
+        public int vertices() {
+            return this == LINE ? 2 : this == POLYGON ? 3 : 0;
+        }
+
+        /** True when a NUMBERS command may take {@code n} numbers. */
+        public boolean takes(int n) {
+            for (int c : counts) {
+                if (c == n) {
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /** The most numbers it takes. */
+        public int mostNumbers() {
+            return counts.length == 0 ? 0 : counts[counts.length - 1];
+        }
+
+        /** What it takes, for messages: "3 numbers", "9 numbers (3 points) or 18 (with colours)". */
+        public String takesText() {
+            return switch (shape) {
+                case NONE -> "no arguments";
+                case AXIS_ANGLE -> "an axis and an angle";
+                case NAME -> "a file name";
+                case NUMBERS -> vertices() > 0
+                        ? counts[0] + " numbers (" + vertices() + " points) or " + counts[1]
+                                + " (" + vertices() + " points, each followed by its colour)"
+                        : counts.length == 1 ? counts[0] + " numbers" : counts[0] + " or " + counts[1] + " numbers";
+            };
+        }
+    }
+
+    /** Most numbers a command carries (a coloured polygon's 18). */
+    public static final int MAX_NUMBERS = 18;
     /** Most vertices a command has (a polygon's three). */
     public static final int MAX_VERTICES = 3;
 
     Kind kind;
-    /** Vertex k is (xyz[3k], xyz[3k+1], xyz[3k+2]); scale and translate keep their three numbers in xyz[0..2]. */
+    /** The numbers as written, count of them. */
+    final double[] numbers = new double[MAX_NUMBERS];
+    int count;
+    /** Vertex k is (xyz[3k], xyz[3k+1], xyz[3k+2]) for a line or polygon. */
     final double[] xyz = new double[3 * MAX_VERTICES];
-    /** Vertex k's colour, when {@link #colored}. */
+    /** Vertex k's colour, clamped to [0, 1], when {@link #colored}. */
     final double[] rgb = new double[3 * MAX_VERTICES];
     boolean colored;
+    /** True when some colour channel of this line or polygon was outside [0, 1] and was clamped. */
+    boolean clamped;
     Axis axis;
     double angle;
     String fileName;
@@ -35,10 +129,20 @@ public final class Command {
 
     /** Number of vertices: 2 for a line, 3 for a polygon, else 0. */
     public int vertexCount() {
-        return kind == Kind.LINE ? 2 : kind == Kind.POLYGON ? 3 : 0;
+        return kind.vertices();
     }
 
-    /** Coordinate c (0 = x, 1 = y, 2 = z) of vertex k, or of the scale/translate triple for k = 0. */
+    /** Number i of a NUMBERS command, as written. */
+    public double number(int i) {
+        return numbers[i];
+    }
+
+    /** How many numbers a NUMBERS command carries. */
+    public int numberCount() {
+        return count;
+    }
+
+    /** Coordinate c (0 = x, 1 = y, 2 = z) of vertex k of a line or polygon. */
     public double coordinate(int k, int c) {
         return xyz[3 * k + c];
     }
@@ -60,8 +164,31 @@ public final class Command {
         return angle;
     }
 
-    /** The name after {@code file}, without quotes and without ".simp". */
+    /** The name after {@code file} or {@code obj}, without quotes. */
     public String fileName() {
         return fileName;
+    }
+
+    /**
+     * Splits a line's or polygon's numbers into points and colours: a point
+     * per vertex, each followed by its colour when there are twice as many
+     * numbers. Colour channels outside [0, 1] are clamped.
+     */
+    void splitVertices() {
+        int n = kind.vertices();
+        int stride = count / n;
+        colored = stride == 6;
+        clamped = false;
+        for (int k = 0; k < n; k++) {
+            System.arraycopy(numbers, stride * k, xyz, 3 * k, 3);
+            if (colored) {
+                for (int c = 0; c < 3; c++) {
+                    double v = numbers[stride * k + 3 + c];
+                    double kept = v < 0 ? 0 : v > 1 ? 1 : v;
+                    clamped |= kept != v;
+                    rgb[3 * k + c] = kept;
+                }
+            }
+        }
     }
 }

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import simpview.scene.SceneException;
 
 /**
  * The files being read, innermost on top: {@code file} pushes, the end of a
@@ -101,7 +102,7 @@ final class FileStack implements AutoCloseable {
         if (known != null) {
             return known;
         }
-        Path candidate = resolve(from, c);
+        Path candidate = locate(c.fileName, ".simp", from, c);
         Path real = realFile(candidate, problem -> from.error(c.argumentIndex, problem));
         Found result = new Found(candidate, real);
         found.put(name, result);
@@ -116,14 +117,33 @@ final class FileStack implements AutoCloseable {
     private record Found(Path path, Path real) {
     }
 
-    private static Path resolve(SimpReader from, Command c) throws SceneException {
-        String name = c.fileName + ".simp";
+    /**
+     * The file that {@code name} + {@code extension}, named by command c of
+     * the file {@code from}, stands for: looked for in the folder of the file
+     * holding the command, then in the working directory (where the course's
+     * programs looked). When it is in neither, the error names every place
+     * looked.
+     */
+    static Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
+        String fileName = name + extension;
+        Path here;
+        Path working;
         try {
             Path dir = from.file().getParent();
-            return dir == null ? Path.of(name) : dir.resolve(name);
+            here = dir == null ? Path.of(fileName) : dir.resolve(fileName);
+            working = Path.of(fileName).toAbsolutePath();
         } catch (InvalidPathException e) {
-            throw from.error(c.argumentIndex, "not a valid file name: '" + c.fileName + "'");
+            throw from.error(c.argumentIndex, "not a valid file name: '" + name + "'");
         }
+        if (Files.exists(here) || here.toAbsolutePath().normalize().equals(working.normalize())) {
+            return here;
+        }
+        if (Files.exists(working)) {
+            return working;
+        }
+        String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
+        throw from.error(c.argumentIndex, "file not found: " + fileName + hint + "; looked for "
+                + here.toAbsolutePath().normalize() + " and " + working.normalize());
     }
 
     /**

@@ -1,31 +1,32 @@
 package simpview.scene.simp;
 
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import simpview.scene.simp.Command.Kind;
 
-/** The command words, matched against bytes without making a String. */
+/** The command words of {@link Kind}, matched against bytes without making a String. */
 final class Keywords {
 
-    /** Most frequent first: a scene is mostly polygons and lines. */
-    private static final Kind[] KINDS = {
-        Kind.POLYGON, Kind.LINE, Kind.TRANSLATE, Kind.ROTATE, Kind.SCALE, Kind.FILE, Kind.WIRE, Kind.FILLED};
-    private static final byte[][] WORDS = new byte[KINDS.length][];
+    /** Every word-spelled kind, most frequent first: a scene is mostly polygons and lines. */
+    private static final Kind[] KINDS;
+    private static final byte[][] WORDS;
 
     static {
+        List<Kind> kinds = new ArrayList<>(List.of(Kind.POLYGON, Kind.LINE));
+        for (Kind k : Kind.values()) {
+            if (!kinds.contains(k) && k != Kind.PUSH && k != Kind.POP) {
+                kinds.add(k);
+            }
+        }
+        KINDS = kinds.toArray(new Kind[0]);
+        WORDS = new byte[KINDS.length][];
         for (int k = 0; k < KINDS.length; k++) {
-            WORDS[k] = spelling(KINDS[k]).getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+            WORDS[k] = KINDS[k].spelling.getBytes(StandardCharsets.US_ASCII);
         }
     }
 
     private Keywords() {
-    }
-
-    /** How a file spells the command. */
-    static String spelling(Kind kind) {
-        return switch (kind) {
-            case PUSH -> "{";
-            case POP -> "}";
-            default -> kind.name().toLowerCase(java.util.Locale.ROOT);
-        };
     }
 
     /** The command spelled by b[from, to), case-sensitively; null when there is none. */
@@ -38,6 +39,16 @@ final class Keywords {
             }
         }
         return null;
+    }
+
+    /** Every command's spelling, for "expected ..." messages: "{, }, scale, ..., phong". */
+    static String all() {
+        StringBuilder sb = new StringBuilder();
+        Kind[] all = Kind.values();
+        for (int k = 0; k < all.length; k++) {
+            sb.append(k == 0 ? "" : k == all.length - 1 ? " or " : ", ").append(all[k].spelling);
+        }
+        return sb.toString();
     }
 
     private static boolean matches(byte[] word, byte[] b, int from) {

@@ -8,6 +8,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import simpview.scene.SceneException;
 
 /**
  * The lines of one file as byte ranges in a buffer, read in chunks so that a
@@ -18,8 +19,12 @@ import java.nio.file.StandardOpenOption;
  * drops its buffer, remembering the offset of the next line, and reopens the
  * file there when asked for another line. That keeps a deep include chain
  * from holding a file descriptor per level.
+ *
+ * <p>Public for the other readers of line-oriented text (the .obj reader):
+ * they read lines through {@link #nextLine()}, {@link #buffer()},
+ * {@link #lineStart()}, {@link #lineEnd()} and {@link #lineNumber()}.
  */
-final class LineSource {
+public final class LineSource {
 
     static final int CHUNK = 64 * 1024;
     /** Eight bytes of a byte[] read as one long, so the line break is looked for eight bytes at a time. */
@@ -28,7 +33,7 @@ final class LineSource {
     private static final long ONES = 0x0101010101010101L;
     private static final long HIGH_BITS = 0x8080808080808080L;
     /** Longer lines are refused: a line must fit in memory, and no real scene comes close. */
-    static final int MAX_LINE = 1 << 20;
+    public static final int MAX_LINE = 1 << 20;
 
     private final Path path;
     private FileChannel channel;
@@ -50,7 +55,7 @@ final class LineSource {
         this.path = path;
     }
 
-    static LineSource open(Path path) throws IOException {
+    public static LineSource open(Path path) throws IOException {
         LineSource s = new LineSource(path);
         s.fileBacked = true;
         s.channel = FileChannel.open(path, StandardOpenOption.READ);
@@ -59,7 +64,7 @@ final class LineSource {
     }
 
     /** A source over bytes already in memory (a small file read whole, or a test's text). */
-    static LineSource of(Path path, byte[] content) {
+    public static LineSource of(Path path, byte[] content) {
         LineSource s = new LineSource(path);
         s.buf = content;
         s.limit = content.length;
@@ -67,12 +72,28 @@ final class LineSource {
         return s;
     }
 
-    Path path() {
+    public Path path() {
         return path;
     }
 
-    byte[] buffer() {
+    /** The buffer holding the current line; it may change at every {@link #nextLine()}. */
+    public byte[] buffer() {
         return buf;
+    }
+
+    /** Where the current line starts in {@link #buffer()}. */
+    public int lineStart() {
+        return lineStart;
+    }
+
+    /** Just past the current line's last byte in {@link #buffer()} (line break and trailing CRs excluded). */
+    public int lineEnd() {
+        return lineEnd;
+    }
+
+    /** The 1-based number of the current line. */
+    public int lineNumber() {
+        return lineNumber;
     }
 
     /**
@@ -81,7 +102,7 @@ final class LineSource {
      *
      * @return false at the end of the file
      */
-    boolean nextLine() throws IOException {
+    public boolean nextLine() throws IOException {
         if (buf == null) {
             resume();
         }
@@ -188,7 +209,7 @@ final class LineSource {
         eof = false;
     }
 
-    void close() throws IOException {
+    public void close() throws IOException {
         closeChannel();
     }
 
@@ -201,7 +222,7 @@ final class LineSource {
     }
 
     /** A line longer than {@link #MAX_LINE}; the reader turns it into a SceneException. */
-    static final class LineTooLongException extends IOException {
+    public static final class LineTooLongException extends IOException {
         private static final long serialVersionUID = 1L;
 
         LineTooLongException() {

@@ -1,5 +1,9 @@
 package simpview.scene.simp;
 
+import java.util.List;
+import simpview.scene.Painter;
+import simpview.scene.PrimitiveSink;
+
 /**
  * The primitives of one stretch of a scene, at most {@link #CAPACITY}
  * commands long, in primitive arrays, with what the drawing thread must do
@@ -21,6 +25,8 @@ final class PrimitiveBatch implements PrimitiveSink {
     boolean last;
     /** '{' left open at the end of the scene (when {@link #last}). */
     int openBraces;
+    /** The client's warnings at the end of the scene (when {@link #last}). */
+    List<String> warnings = List.of();
     /** What ended the reading after this batch's primitives, or null. */
     Throwable failure;
 
@@ -43,6 +49,7 @@ final class PrimitiveBatch implements PrimitiveSink {
         linesRead = 0;
         last = false;
         openBraces = 0;
+        warnings = List.of();
         failure = null;
     }
 }

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
+import simpview.scene.SceneException;
 
 /**
  * Reads and interprets a scene on a thread of its own, into a ring of
@@ -66,6 +67,7 @@ final class ReadAhead implements AutoCloseable {
             }
             batch.linesRead = files.linesRead();
             batch.openBraces = client.openBraces();
+            batch.warnings = client.warnings();
             batch.last = true;
         } catch (InterruptedException e) {
             return; // close() asked: nobody waits for more

@@ -63,32 +63,26 @@ final class Recording {
         size++;
     }
 
-    /** How many numbers c carries: its coordinates, colours, and for rotate the axis and the angle. */
+    /** How many numbers c carries: a count and the numbers as written, or the axis and the angle. */
     private static int numbersOf(Command c) {
-        return switch (c.kind) {
-            case SCALE, TRANSLATE -> 3;
-            case ROTATE -> 2;
-            case LINE, POLYGON -> 1 + 3 * c.vertexCount() * (c.colored ? 2 : 1);
-            default -> 0;
+        return switch (c.kind.shape) {
+            case NUMBERS -> 1 + c.count;
+            case AXIS_ANGLE -> 2;
+            case NONE, NAME -> 0;
         };
     }
 
     private static int copy(Command c, double[] to, int at) {
-        switch (c.kind) {
-            case SCALE, TRANSLATE -> System.arraycopy(c.xyz, 0, to, at, 3);
-            case ROTATE -> {
+        switch (c.kind.shape) {
+            case NUMBERS -> {
+                to[at] = c.count;
+                System.arraycopy(c.numbers, 0, to, at + 1, c.count);
+            }
+            case AXIS_ANGLE -> {
                 to[at] = c.axis.ordinal();
                 to[at + 1] = c.angle;
             }
-            case LINE, POLYGON -> {
-                int n = 3 * c.vertexCount();
-                to[at] = c.colored ? 1 : 0;
-                System.arraycopy(c.xyz, 0, to, at + 1, n);
-                if (c.colored) {
-                    System.arraycopy(c.rgb, 0, to, at + 1 + n, n);
-                }
-            }
-            default -> {
+            case NONE, NAME -> {
                 return at;
             }
         }
@@ -126,23 +120,22 @@ final class Recording {
         c.argumentIndex = places[p + 4];
         c.fileName = names[k];
         c.colored = false;
+        c.clamped = false;
         int at = places[p + 5];
-        switch (c.kind) {
-            case SCALE, TRANSLATE -> System.arraycopy(numbers, at, c.xyz, 0, 3);
-            case ROTATE -> {
+        switch (c.kind.shape) {
+            case NUMBERS -> {
+                c.count = (int) numbers[at];
+                System.arraycopy(numbers, at + 1, c.numbers, 0, c.count);
+                if (c.kind.vertices() > 0) {
+                    c.splitVertices();
+                }
+            }
+            case AXIS_ANGLE -> {
                 c.axis = AXES[(int) numbers[at]];
                 c.angle = numbers[at + 1];
             }
-            case LINE, POLYGON -> {
-                int n = 3 * c.vertexCount();
-                c.colored = numbers[at] != 0;
-                System.arraycopy(numbers, at + 1, c.xyz, 0, n);
-                if (c.colored) {
-                    System.arraycopy(numbers, at + 1 + n, c.rgb, 0, n);
-                }
-            }
-            default -> {
-                // nothing more to a brace, a style or a file command
+            case NONE, NAME -> {
+                // nothing more to a brace, a style word or a file name
             }
         }
     }

@@ -1,21 +1,33 @@
 package simpview.scene.simp;
 
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
-import simpview.geometry.Vertex;
-import simpview.geometry.ViewVolume;
-import simpview.scene.PrimitiveTrace;
-import simpview.surface.Drawable;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.scene.DepthCuedGeometry;
+import simpview.scene.GeometryStage;
+import simpview.scene.LitGeometry;
+import simpview.scene.Painter;
+import simpview.scene.PrimitiveSink;
+import simpview.scene.PrimitiveTrace;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.shading.Fog;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.surface.Drawable;
 
 /**
  * What the commands of a scene act on: the CTM, the matrix stack, the stack
- * of files being read and the polygon style, and the renderers that draw on
- * the panel. One client draws one scene, from a fresh state: identity CTM,
- * empty stacks, style filled.
+ * of files being read and the polygon style; lines and polygons go on to the
+ * scene's geometry stage. One client draws one scene, from a fresh state:
+ * identity CTM, empty stacks, style filled.
  */
 public final class SimpClient {
 
@@ -23,22 +35,29 @@ public final class SimpClient {
     public enum Style { FILLED, WIRE }
 
     private final Painter painter;
-    /** Where primitives go: the painter, or a batch for the drawing thread. */
-    private PrimitiveSink sink;
+    /** The depth-cued stage; null for a lit scene. */
+    private final DepthCuedGeometry cued;
+    /** The lit stage and its state; null for a depth-cued scene. */
+    private final LitGeometry lit;
+    private final LitState state;
+    private final ObjLibrary models;
+    private final GeometryStage geometry;
     private final MatrixStack matrices = new MatrixStack();
     private final FileStack files;
     private Matrix4 ctm = Matrix4.identity();
     private Style style = Style.FILLED;
-    /** World-space vertices of the primitive at hand, reused. */
-    private final double[] world = new double[3 * Command.MAX_VERTICES];
-    /** The same in panel space with colours, as the painter takes them, reused. */
-    private final double[] primitive = new double[Painter.STRIDE];
-    private long culled;
-    /** Who follows the primitives (the window's instruments), or null. */
+    /** Where the first colour outside [0, 1] was clamped ("file:line"), or null. */
+    private String firstClamped;
+    /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
+    private String cameraAt;
+    private String firstPrimitiveAt;
+    /** A lit command met in a scene drawn depth-cued on request: where the first stood, or null. */
+    private String firstIgnored;
+    /** Who follows the primitives (the window's instruments), or null: nobody, and nothing is spent on it. */
     private PrimitiveTrace trace;
     private int traced;
 
-    /** Draws on a panel-coordinate drawable with the project's renderers. */
+    /** Draws a depth-cued scene on a panel-coordinate drawable with the project's renderers. */
     public SimpClient(Drawable panel) {
         this(panel, new DdaLineRenderer(), new FilledPolygonRenderer(),
                 new WireframePolygonRenderer(new DdaLineRenderer()));
@@ -50,8 +69,32 @@ public final class SimpClient {
 
     SimpClient(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire, FileStack files) {
         this.painter = new Painter(panel, lines, filled, wire);
-        this.sink = painter;
+        this.cued = new DepthCuedGeometry(painter);
+        this.geometry = cued;
+        this.lit = null;
+        this.state = null;
+        this.models = null;
         this.files = files;
+    }
+
+    private SimpClient(FragmentStage fragments, ObjLibrary models, FileStack files) {
+        this.painter = null;
+        this.cued = null;
+        this.state = new LitState();
+        this.lit = new LitGeometry(state, fragments);
+        this.geometry = lit;
+        this.models = models;
+        this.files = files;
+    }
+
+    /** A client for a lit scene: its fragments go through {@code fragments}; .obj models come from {@code models}. */
+    public static SimpClient lit(FragmentStage fragments, ObjLibrary models) {
+        return new SimpClient(fragments, models, new FileStack());
+    }
+
+    /** True for a client that draws by the lit rules. */
+    public boolean isLit() {
+        return lit != null;
     }
 
     /**
@@ -63,16 +106,138 @@ public final class SimpClient {
         switch (c.kind) {
             case PUSH -> matrices.push(ctm);
             case POP -> pop(c);
-            case SCALE -> ctm = ctm.times(Matrix4.scaling(c.xyz[0], c.xyz[1], c.xyz[2]));
-            case TRANSLATE -> ctm = ctm.times(Matrix4.translation(c.xyz[0], c.xyz[1], c.xyz[2]));
+            case SCALE -> ctm = ctm.times(Matrix4.scaling(c.numbers[0], c.numbers[1], c.numbers[2]));
+            case TRANSLATE -> ctm = ctm.times(Matrix4.translation(c.numbers[0], c.numbers[1], c.numbers[2]));
             case ROTATE -> ctm = ctm.times(Matrix4.rotation(c.axis, c.angle));
-            case LINE -> line(c);
-            case POLYGON -> polygon(c);
+            case LINE -> {
+                primitive();
+                geometry.line(ctm, c.xyz, colours(c));
+            }
+            case POLYGON -> {
+                primitive();
+                geometry.polygon(ctm, c.xyz, colours(c), style == Style.WIRE);
+            }
             case FILE -> files.include(c);
             case WIRE -> style = Style.WIRE;
             case FILLED -> style = Style.FILLED;
+            default -> litCommand(c);
+        }
+    }
+
+    /** The commands of the lit rules (SPEC Part 2); each checks its numbers first. */
+    private void litCommand(Command c) throws SceneException {
+        if (lit == null) {
+            if (firstIgnored == null) {
+                firstIgnored = place() + " " + c.kind.spelling;
+            }
+            return;
+        }
+        switch (c.kind) {
+            case CAMERA -> camera(c);
+            case OBJ -> obj(c);
+            case AMBIENT -> {
+                notNegative(c, 0, 3, "ambient light");
+                state.setAmbient(c.numbers[0], c.numbers[1], c.numbers[2]);
+            }
+            case SURFACE -> surface(c);
+            case DEPTH -> depth(c);
+            case LIGHT -> light(c);
+            case FLAT -> state.setShading(LitState.Shading.FLAT);
+            case GOURAUD -> state.setShading(LitState.Shading.GOURAUD);
+            case PHONG -> state.setShading(LitState.Shading.PHONG);
             default -> throw new IllegalStateException(String.valueOf(c.kind));
         }
+    }
+
+    private void camera(Command c) throws SceneException {
+        if (cameraAt != null) {
+            throw error(c, c.commandIndex, "a second camera: a scene has one, and the first is at " + cameraAt);
+        }
+        if (firstPrimitiveAt != null) {
+            throw error(c, c.commandIndex, "the camera must come before every line, polygon and obj; "
+                    + firstPrimitiveAt + " drew one before it");
+        }
+        double[] n = c.numbers;
+        String problem = Camera.problem(n[0], n[1], n[2], n[3], n[4], n[5]);
+        if (problem != null) {
+            throw error(c, c.argumentIndex, problem);
+        }
+        Matrix4 w = ctm.inverse();
+        if (w == null) {
+            throw error(c, c.commandIndex, "the CTM at the camera cannot be inverted (a scale of 0?): "
+                    + "there is no way from the world to the camera");
+        }
+        cameraAt = place();
+        state.setCamera(Camera.perspective(n[0], n[1], n[2], n[3], n[4], n[5]), w);
+    }
+
+    private void obj(Command c) throws SceneException {
+        primitive();
+        Path file = FileStack.locate(c.fileName, ".obj", files.current(), c);
+        lit.beginObj(ctm, style == Style.WIRE);
+        models.draw(file, lit);
+    }
+
+    private void surface(Command c) throws SceneException {
+        notNegative(c, 0, c.count, c.count == 3 ? "surface colour" : "surface colour, ks and p");
+        double[] n = c.numbers;
+        if (c.count == 3) {
+            state.setSurface(n[0], n[1], n[2]);
+        } else {
+            state.setSurface(n[0], n[1], n[2], n[3], n[4]);
+        }
+    }
+
+    private void depth(Command c) throws SceneException {
+        double[] n = c.numbers;
+        if (!(n[0] > n[1])) {
+            throw error(c, c.argumentIndex, "fog needs near > far (camera-space z, far more negative), found near "
+                    + n[0] + " and far " + n[1]);
+        }
+        notNegative(c, 2, 5, "fog colour");
+        state.setFog(new Fog(n[0], n[1], n[2], n[3], n[4]));
+    }
+
+    private void light(Command c) throws SceneException {
+        notNegative(c, 0, 5, "light intensity and attenuation");
+        double[] n = c.numbers;
+        if (n[3] == 0 && n[4] == 0) {
+            throw error(c, c.argumentIndex, "attenuation A and B are both 0: the light would be infinitely bright");
+        }
+        state.addLight(ctm.get(0, 3), ctm.get(1, 3), ctm.get(2, 3), n[0], n[1], n[2], n[3], n[4]);
+    }
+
+    private void notNegative(Command c, int from, int to, String what) throws SceneException {
+        for (int i = from; i < to; i++) {
+            if (c.numbers[i] < 0) {
+                throw error(c, c.argumentIndex, what + " may not be negative, found " + c.numbers[i]);
+            }
+        }
+    }
+
+    private SceneException error(Command c, int at, String problem) {
+        return files.current().error(at, problem);
+    }
+
+    /** "file:line" of the command being carried out. */
+    private String place() {
+        SimpReader r = files.current();
+        return r.file().getFileName() + ":" + r.lineNumber();
+    }
+
+    /** Notes the first primitive, which no camera may follow. */
+    private void primitive() {
+        if (firstPrimitiveAt == null && lit != null) {
+            firstPrimitiveAt = place();
+        }
+    }
+
+    /** The command's own colours, or null; notes the first line whose colours were clamped. */
+    private double[] colours(Command c) {
+        if (c.clamped && firstClamped == null) {
+            firstClamped = place();
+        }
+        return c.colored ? c.rgb : null;
     }
 
     private void pop(Command c) throws SceneException {
@@ -82,82 +247,49 @@ public final class SimpClient {
         ctm = matrices.pop();
     }
 
-    private void line(Command c) {
-        toWorld(c, 2);
-        if (Culling.isCulled(world, 2)) {
-            culled++;
-            return;
-        }
-        toPanel(c, 2);
-        emit(Painter.LINE);
-    }
-
-    private void polygon(Command c) {
-        toWorld(c, 3);
-        if (Culling.isCulled(world, 3)) {
-            culled++;
-            return;
-        }
-        toPanel(c, 3);
-        emit(style == Style.FILLED ? Painter.FILLED : Painter.WIRE);
-    }
-
-    /** Hands the primitive on; a trace, if any, learns which line it came from. */
-    private void emit(int kind) {
-        if (trace != null) {
-            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, primitive);
-        }
-        sink.add(kind, primitive);
-    }
-
-    /**
-     * Has {@code follower} told of every primitive: where it came from as it
-     * is read, and before it is drawn; null for nobody (the default, free).
-     */
-    public void follow(PrimitiveTrace follower) {
-        trace = follower;
-        painter.follow(follower);
-    }
-
-    /** Starts the CTM at {@code turn} (a turn of the whole world before the scene's own transforms); null: identity. */
-    public void turnWorld(Matrix4 turn) {
-        ctm = turn == null ? Matrix4.identity() : turn;
-    }
-
-    private void toWorld(Command c, int count) {
-        Matrix4 m = ctm;
-        double[] p = c.xyz;
-        for (int k = 0; k < 3 * count; k += 3) {
-            double x = p[k];
-            double y = p[k + 1];
-            double z = p[k + 2];
-            world[k] = m.applyX(x, y, z);
-            world[k + 1] = m.applyY(x, y, z);
-            world[k + 2] = m.applyZ(x, y, z);
-        }
-    }
-
-    /** The first count world vertices in panel space, each with its own colour or white. */
-    private void toPanel(Command c, int count) {
-        for (int k = 0; k < count; k++) {
-            int i = 3 * k;
-            int o = Vertex.NUMBERS * k;
-            primitive[o + Vertex.X] = ViewVolume.toPanel(world[i]);
-            primitive[o + Vertex.Y] = ViewVolume.toPanel(world[i + 1]);
-            primitive[o + Vertex.Z] = world[i + 2];
-            primitive[o + Vertex.R] = c.color(k, 0);
-            primitive[o + Vertex.G] = c.color(k, 1);
-            primitive[o + Vertex.B] = c.color(k, 2);
-        }
-    }
-
     Painter painter() {
         return painter;
     }
 
-    /** From now on primitives go to {@code to} instead of being drawn at once. */
+    /**
+     * The window's instruments' hook, one place on each side: {@code follower}
+     * learns each primitive's file and line as the geometry hands it on (the
+     * reading thread), and is asked before the painter draws it (the drawing
+     * thread). Null for nobody, the default. Depth-cued scenes only; call
+     * before the scene is read.
+     */
+    public void follow(PrimitiveTrace follower) {
+        if (cued == null) {
+            return;
+        }
+        trace = follower;
+        painter.follow(follower);
+        cued.sendTo(follower == null ? painter : new Traced(painter));
+    }
+
+    /** Starts the CTM at {@code turn}, a turn of the whole world before the scene's own transforms; null: identity. */
+    public void turnWorld(Matrix4 turn) {
+        ctm = turn == null ? Matrix4.identity() : turn;
+    }
+
+    /** A sink that tells the trace where each primitive came from, then hands it on. */
+    private final class Traced implements PrimitiveSink {
+        private final PrimitiveSink next;
+
+        Traced(PrimitiveSink next) {
+            this.next = next;
+        }
+
+        @Override
+        public void add(int kind, double[] p) {
+            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, p);
+            next.add(kind, p);
+        }
+    }
+
+    /** From now on primitives go to {@code to} instead of being drawn at once (depth-cued scenes only). */
     void sendTo(PrimitiveSink to) {
-        sink = to;
+        cued.sendTo(trace == null ? to : new Traced(to));
     }
 
     FileStack files() {
@@ -177,8 +309,20 @@ public final class SimpClient {
         return matrices.depth();
     }
 
+    /** What the scene should be told once it is drawn: clamped colours, ignored lit commands. */
+    public List<String> warnings() {
+        List<String> w = new ArrayList<>();
+        if (firstClamped != null) {
+            w.add("colour channels outside 0 to 1 were clamped, first at " + firstClamped);
+        }
+        if (firstIgnored != null) {
+            w.add("lit-scene commands were ignored in this depth-cued drawing, first at " + firstIgnored);
+        }
+        return w;
+    }
+
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     public long culledCount() {
-        return culled;
+        return geometry.culledCount();
     }
 }

@@ -3,6 +3,9 @@ package simpview.scene.simp;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import simpview.scene.Painter;
+import simpview.scene.SceneException;
 
 /**
  * The reading loop: takes commands from the client's file stack, one at a
@@ -47,7 +50,11 @@ public final class SimpInterpreter {
         }
     }
 
+    /** Big depth-cued scenes only: a lit scene draws as it reads, with the state at each command. */
     private boolean readAhead(Path file) {
+        if (client.isLit()) {
+            return false;
+        }
         try {
             return Runtime.getRuntime().availableProcessors() > 1 && Files.size(file) >= readAheadFrom;
         } catch (IOException | SecurityException e) {
@@ -67,7 +74,7 @@ public final class SimpInterpreter {
                     report(files.linesRead());
                 }
             }
-            finish(file, files.linesRead(), client.openBraces());
+            finish(file, files.linesRead(), client.openBraces(), client.warnings());
         } finally {
             files.close();
         }
@@ -84,7 +91,7 @@ public final class SimpInterpreter {
                     ReadAhead.rethrow(batch.failure);
                 }
                 if (batch.last) {
-                    finish(file, batch.linesRead, batch.openBraces);
+                    finish(file, batch.linesRead, batch.openBraces, batch.warnings);
                     return;
                 }
                 report(batch.linesRead);
@@ -100,10 +107,13 @@ public final class SimpInterpreter {
         }
     }
 
-    private void finish(Path file, long linesRead, int openBraces) {
+    private void finish(Path file, long linesRead, int openBraces, List<String> warnings) {
         monitor.linesRead(linesRead);
         if (openBraces > 0) {
             monitor.warning(file.getFileName() + ": " + openBraces + " '{' never closed by the end of the file");
+        }
+        for (String w : warnings) {
+            monitor.warning(w);
         }
     }
 }

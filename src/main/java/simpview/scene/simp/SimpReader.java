@@ -4,17 +4,21 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import simpview.geometry.Axis;
+import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
+import simpview.scene.simp.Command.Shape;
 
 /**
  * Reads the commands of one SIMP file, line by line, straight from the bytes
  * of its buffer: no regular expressions, no splitting, no String per number.
  *
  * <p>Blank lines and comment lines (first non-blank character '#') are
- * skipped. Blanks are spaces and tabs. Between numbers, in points and in
- * command arguments alike, any mix of blanks and commas separates. A vertex
- * may be followed by a colour tuple, and then every vertex of the command
- * must be. Anything else is a {@link SceneException} that points at the
+ * skipped. Blanks are spaces and tabs. What follows the command word is read
+ * by the shape its {@link Kind} gives. Between numbers, in points and in
+ * command arguments alike, any mix of blanks, commas and parentheses
+ * separates, as in the course's own reader: {@code (x, y, z, r, g, b)},
+ * {@code (x, y, z) (r, g, b)} and {@code (x, y, z, (r, g, b))} are the same
+ * six numbers. Anything else is a {@link SceneException} that points at the
  * offending token.
  */
 public final class SimpReader implements AutoCloseable {
@@ -24,16 +28,11 @@ public final class SimpReader implements AutoCloseable {
 
     private final LineSource source;
     private final DecimalParser decimal = new DecimalParser();
-    /** The tuples of a line command: up to a point and a colour per vertex. */
-    private final double[] tuples = new double[6 * Command.MAX_VERTICES];
-    private final int[] tupleStarts = new int[2 * Command.MAX_VERTICES];
     /** The commands read so far, kept to be replayed (small files only), or those being replayed. */
     private Recording recording;
     private boolean replaying;
     /** Commands replayed so far. */
     private int replayed;
-    /** False only in tests that check the quick path against the careful one. */
-    private boolean quick = true;
     private byte[] b;
     private int end;
     private long linesRead;
@@ -54,12 +53,6 @@ public final class SimpReader implements AutoCloseable {
     /** Reads a SIMP text held in memory, named {@code file} in messages. */
     public static SimpReader of(Path file, byte[] content) {
         return new SimpReader(LineSource.of(file, content));
-    }
-
-    /** This reader, reading every line the careful way (for tests of the quick path). */
-    SimpReader carefulOnly() {
-        quick = false;
-        return this;
     }
 
     /** Reads a small file's text and records its commands, to be replayed on later includes. */
@@ -208,6 +201,8 @@ public final class SimpReader implements AutoCloseable {
     private void parse(int start, Command c) throws SceneException {
         c.commandIndex = start;
         c.colored = false;
+        c.clamped = false;
+        c.count = 0;
         if (b[start] == '{' || b[start] == '}') {
             c.kind = b[start] == '{' ? Kind.PUSH : Kind.POP;
             expectEnd(start + 1);
@@ -220,52 +215,63 @@ public final class SimpReader implements AutoCloseable {
         Kind kind = Keywords.kind(b, start, wordEnd);
         if (kind == null) {
             throw error(start, "unknown command '" + (wordEnd > start ? text(start, wordEnd) : token(start))
-                    + "'; expected {, }, scale, translate, rotate, line, polygon, file, wire or filled");
+                    + "'; expected " + Keywords.all());
         }
         c.kind = kind;
-        switch (kind) {
-            case WIRE, FILLED -> expectEnd(wordEnd);
-            case SCALE, TRANSLATE -> expectEnd(numbers(arguments(wordEnd, c), c, 3));
-            case ROTATE -> expectEnd(rotation(arguments(wordEnd, c), c));
-            case LINE -> points(wordEnd, c, 2);
-            case POLYGON -> points(wordEnd, c, 3);
-            case FILE -> expectEnd(fileName(arguments(wordEnd, c), c));
-            default -> throw new IllegalStateException(kind.name());
+        switch (kind.shape) {
+            case NONE -> expectEnd(wordEnd);
+            case NUMBERS -> numbers(arguments(wordEnd, c), c);
+            case AXIS_ANGLE -> expectEnd(rotation(arguments(wordEnd, c), c));
+            case NAME -> expectEnd(fileName(arguments(wordEnd, c), c));
+        }
+        if (kind.vertices() > 0) {
+            c.splitVertices();
         }
     }
 
-    /** A command word with arguments is followed by at least one blank. */
+    /**
+     * Where the arguments start: after the word, past blanks; a number list
+     * may also open with '(' straight after the word.
+     */
     private int arguments(int wordEnd, Command c) throws SceneException {
-        int i = skipBlanks(wordEnd);
+        int i = c.kind.shape == Shape.NUMBERS ? skipSeparators(wordEnd) : skipBlanks(wordEnd);
         if (i == end) {
-            throw error(i, "wrong number of arguments: " + keyword(c.kind) + " takes " + takes(c.kind)
+            throw error(i, "wrong number of arguments: " + c.kind.spelling + " takes " + c.kind.takesText()
                     + ", found none");
         }
         if (i == wordEnd) {
-            throw error(i, "expected a blank after '" + keyword(c.kind) + "', found '" + token(i) + "'");
+            throw error(i, "expected a blank after '" + c.kind.spelling + "', found '" + token(i) + "'");
         }
         c.argumentIndex = i;
         return i;
     }
 
-    /** Reads n numbers into c.xyz[0..n), separated by blanks and commas. */
-    private int numbers(int from, Command c, int n) throws SceneException {
+    /**
+     * The numbers of the line to its end: blanks, commas and parentheses only
+     * separate them, however they are grouped. Their count must be one the
+     * command takes.
+     */
+    private void numbers(int from, Command c) throws SceneException {
+        Kind kind = c.kind;
+        int most = kind.mostNumbers();
+        int n = 0;
         int i = from;
-        for (int k = 0; k < n; k++) {
-            if (k > 0) {
-                i = separator(i);
-                if (i == end) {
-                    throw error(i, wrongCount(c.kind, k));
-                }
+        while (i < end) {
+            if (!startsNumber(b[i])) {
+                throw error(i, kind.takes(n) ? "expected the end of the line, found '" + text(i, Math.min(end, i + 30))
+                        + "'" : "expected a number, found " + found(i));
+            }
+            if (n == most) {
+                throw error(i, wrongCount(kind, n + 1));
             }
             i = number(i);
-            c.xyz[k] = decimal.value();
+            c.numbers[n++] = decimal.value();
+            i = skipSeparators(i);
         }
-        int next = skipSeparators(i);
-        if (next < end && startsArgument(b[next])) {
-            throw error(next, wrongCount(c.kind, n + 1));
+        if (!kind.takes(n)) {
+            throw error(end, wrongCount(kind, n));
         }
-        return i;
+        c.count = n;
     }
 
     private int rotation(int from, Command c) throws SceneException {
@@ -277,150 +283,17 @@ public final class SimpReader implements AutoCloseable {
             throw error(from, "expected an axis X, Y or Z (upper case), found '" + text(from, axisEnd) + "'");
         }
         c.axis = AXES[b[from] - 'X'];
-        int i = separator(axisEnd);
+        int i = skipSeparators(axisEnd);
         if (i == end) {
             throw error(i, "rotate takes an axis and an angle in degrees, found no angle");
         }
         i = number(i);
         c.angle = decimal.value();
         int next = skipSeparators(i);
-        if (next < end && startsArgument(b[next])) {
+        if (next < end && startsNumber(b[next])) {
             throw error(next, "rotate takes an axis and one angle, found more: '" + token(next) + "'");
         }
         return i;
-    }
-
-    /**
-     * The points of a line or polygon, nearly every line of a real file: first
-     * a quick reading that only accepts well-formed points; when it meets
-     * anything else it has decided nothing, and the careful reading below goes
-     * over the arguments again and words the error, if there is one.
-     */
-    private void points(int wordEnd, Command c, int n) throws SceneException {
-        if (!quick || !quickVertices(wordEnd, c, n)) {
-            expectEnd(vertices(arguments(wordEnd, c), c, n));
-        }
-    }
-
-    /**
-     * Accepts exactly what {@link #vertices} followed by {@link #expectEnd}
-     * accepts without an error, or a part of it; false for anything it does
-     * not accept, before any of its findings reach the command.
-     */
-    private boolean quickVertices(int wordEnd, Command c, int n) {
-        if (wordEnd == end || !isBlank(b[wordEnd])) {
-            return false;
-        }
-        int i = skipBlanks(wordEnd);
-        int argumentStart = i;
-        int count = 0;
-        while (true) {
-            if (i == end || b[i] != '(' || count == 2 * n) {
-                return false;
-            }
-            i = quickTuple(i, 3 * count++);
-            if (i < 0) {
-                return false;
-            }
-            int next = skipSeparators(i);
-            if (next == end) {
-                break;
-            }
-            i = next;
-        }
-        if (skipBlanks(i) != end || (count != n && count != 2 * n)) {
-            return false;
-        }
-        c.argumentIndex = argumentStart;
-        store(c, n, count);
-        return true;
-    }
-
-    /** "(a, b, c)" at open into tuples[at..at+3), as {@link #tuple} reads it; -1 where that would fail. */
-    private int quickTuple(int open, int at) {
-        int i = skipBlanks(open + 1);
-        for (int k = 0; k < 3; k++) {
-            if (k > 0) {
-                int j = skipSeparators(i);
-                if (j == i) {
-                    return -1;
-                }
-                i = j;
-            }
-            int after = decimal.scan(b, i, end);
-            if (after < 0 || !endsNumber(after) || !Double.isFinite(decimal.value())) {
-                return -1;
-            }
-            tuples[at + k] = decimal.value();
-            i = after;
-        }
-        i = skipBlanks(i);
-        return i < end && b[i] == ')' ? i + 1 : -1;
-    }
-
-    /**
-     * Reads the points of a line or polygon: n tuples, or 2n when each point
-     * is followed by its colour.
-     */
-    private int vertices(int from, Command c, int n) throws SceneException {
-        int count = 0;
-        int i = from;
-        while (true) {
-            int next = count == 0 ? i : skipSeparators(i);
-            if (next == end || b[next] != '(') {
-                if (next < end && count < n) {
-                    throw error(next, "expected '(' starting a point, found '" + token(next) + "'");
-                }
-                break;
-            }
-            if (count == 2 * n) {
-                throw error(next, wrongCount(c.kind, count + 1));
-            }
-            tupleStarts[count] = next;
-            i = tuple(next, 3 * count);
-            count++;
-        }
-        if (count < n) {
-            throw error(i, wrongCount(c.kind, count));
-        }
-        if (count != n && count != 2 * n) {
-            throw error(tupleStarts[n], "points with and without colours: give every vertex of '"
-                    + keyword(c.kind) + "' a colour (r, g, b) after its point, or none");
-        }
-        store(c, n, count);
-        return i;
-    }
-
-    /** Moves the tuples read into the command: n points, each followed by its colour when there are 2n. */
-    private void store(Command c, int n, int count) {
-        c.colored = count == 2 * n;
-        int stride = c.colored ? 6 : 3;
-        for (int k = 0; k < n; k++) {
-            System.arraycopy(tuples, stride * k, c.xyz, 3 * k, 3);
-            if (c.colored) {
-                System.arraycopy(tuples, stride * k + 3, c.rgb, 3 * k, 3);
-            }
-        }
-    }
-
-    /** Reads "(a, b, c)" into tuples[at..at+3). */
-    private int tuple(int open, int at) throws SceneException {
-        int i = skipBlanks(open + 1);
-        for (int k = 0; k < 3; k++) {
-            if (k > 0) {
-                i = separator(i);
-            }
-            if (i == end) {
-                throw error(i, "expected a number, found the end of the line");
-            }
-            i = number(i);
-            tuples[at + k] = decimal.value();
-        }
-        i = skipBlanks(i);
-        if (i == end || b[i] != ')') {
-            throw error(i, "expected ')' closing the point after three numbers, found " + found(i));
-        }
-        return i + 1;
     }
 
     private int fileName(int from, Command c) throws SceneException {
@@ -460,7 +333,7 @@ public final class SimpReader implements AutoCloseable {
         }
     }
 
-    /** A number ending at a blank, comma, ')' or the end of the line. */
+    /** A number ending at a blank, comma, parenthesis or the end of the line. */
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
         if (after < 0 || !endsNumber(after)) {
@@ -472,18 +345,9 @@ public final class SimpReader implements AutoCloseable {
         return after;
     }
 
-    /** Blanks and commas between two numbers: at least one of them (a ')' is left to the caller). */
-    private int separator(int i) throws SceneException {
-        int j = skipSeparators(i);
-        if (j == i && i < end && b[i] != ')') {
-            throw error(i, "expected a blank or ',' between numbers, found '" + token(i) + "'");
-        }
-        return j;
-    }
-
-    /** A number ends at a blank, comma, ')' or the end of the line. */
+    /** A number ends at a blank, comma, parenthesis or the end of the line. */
     private boolean endsNumber(int after) {
-        return after == end || isBlank(b[after]) || b[after] == ',' || b[after] == ')';
+        return after == end || isSeparator(b[after]);
     }
 
     private int skipBlanks(int i) {
@@ -493,8 +357,9 @@ public final class SimpReader implements AutoCloseable {
         return i;
     }
 
+    /** Blanks, commas and parentheses: what stands between numbers. */
     private int skipSeparators(int i) {
-        while (i < end && (isBlank(b[i]) || b[i] == ',')) {
+        while (i < end && isSeparator(b[i])) {
             i++;
         }
         return i;
@@ -504,32 +369,19 @@ public final class SimpReader implements AutoCloseable {
         return c == ' ' || c == '\t';
     }
 
-    private static boolean startsArgument(byte c) {
-        return (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == '(';
+    private static boolean isSeparator(byte c) {
+        return c == ' ' || c == '\t' || c == ',' || c == '(' || c == ')';
+    }
+
+    private static boolean startsNumber(byte c) {
+        return (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+';
     }
 
     // ---- messages ----------------------------------------------------------------------------
 
-    private static String takes(Kind kind) {
-        return switch (kind) {
-            case SCALE, TRANSLATE -> "3 numbers";
-            case ROTATE -> "an axis and an angle";
-            case LINE -> "2 points";
-            case POLYGON -> "3 points";
-            case FILE -> "a file name";
-            default -> "no arguments";
-        };
-    }
-
     private static String wrongCount(Kind kind, int found) {
-        String unit = kind == Kind.LINE || kind == Kind.POLYGON ? "point" : "number";
-        int most = kind == Kind.LINE ? 4 : kind == Kind.POLYGON ? 6 : 3;
-        String got = found > most ? "more" : found + " " + unit + (found == 1 ? "" : "s");
-        return "wrong number of arguments: " + keyword(kind) + " takes " + takes(kind) + ", found " + got;
-    }
-
-    private static String keyword(Kind kind) {
-        return Keywords.spelling(kind);
+        String got = found > kind.mostNumbers() ? "more" : found == 0 ? "none" : found + (found == 1 ? " number" : " numbers");
+        return "wrong number of arguments: " + kind.spelling + " takes " + kind.takesText() + ", found " + got;
     }
 
     private String found(int i) {

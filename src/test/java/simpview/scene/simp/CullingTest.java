@@ -10,9 +10,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import simpview.geometry.Camera;
 import simpview.surface.ScissorDrawable;
-import simpview.testing.RecordingDrawable;
 import simpview.testing.RecordingDrawable.Write;
+import simpview.testing.RecordingDrawable;
 
 class CullingTest {
 
@@ -64,11 +65,15 @@ class CullingTest {
 
     @Test
     void outcodesMarkEachPlane() {
-        assertEquals(0, Culling.outcode(0, 0, -100));
-        assertEquals(0, Culling.outcode(100, -100, 0));
-        assertEquals(0, Culling.outcode(Double.NaN, 0, -1));
-        assertTrue(Culling.isCulled(new double[] {-101, 0, -1, -102, 500, -1}, 2));
-        assertFalse(Culling.isCulled(new double[] {-101, 0, -1, 101, 0, -1}, 2));
+        Camera view = Camera.PARALLEL;
+        assertEquals(0, view.outcode(0, 0, -100));
+        assertEquals(0, view.outcode(100, -100, 0));
+        assertEquals(0, view.outcode(Double.NaN, 0, -1));
+        assertEquals(1 << Camera.LEFT, view.outcode(-101, 0, -1));
+        assertEquals(1 << Camera.RIGHT | 1 << Camera.TOP | 1 << Camera.HITHER, view.outcode(101, 101, 1));
+        assertEquals(1 << Camera.BOTTOM | 1 << Camera.YON, view.outcode(0, -101, -201));
+        assertTrue(view.culls(new double[] {-101, 0, -1, -102, 500, -1}, 3, 2));
+        assertFalse(view.culls(new double[] {-101, 0, -1, 101, 0, -1}, 3, 2));
     }
 
     @Test
@@ -78,7 +83,7 @@ class CullingTest {
         // Sticks out of the left, the top and the near plane.
         scene.write("s", "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "wire",
                 "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "line (-300, -10, 100) (300, 10, -300)");
-        SceneRenderer.draw(dir.resolve("s.simp"), new ScissorDrawable(recorder), SceneMonitor.NONE);
+        SceneRenderer.draw(dir.resolve("s.simp"), new ScissorDrawable(Camera.PARALLEL, recorder), SceneMonitor.NONE);
         List<Write> writes = recorder.writes();
         assertTrue(writes.size() > 1000, "the visible part is drawn: " + writes.size());
         assertEquals(0, recorder.strays(), "writes outside the panel");

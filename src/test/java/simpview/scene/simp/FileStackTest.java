@@ -11,9 +11,11 @@ import java.util.List;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.geometry.Camera;
 import simpview.geometry.Vertex;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
+import simpview.scene.SceneException;
 
 /** The stack of files: includes, their errors, depth and file descriptors. */
 class FileStackTest {
@@ -30,7 +32,8 @@ class FileStackTest {
         assertEquals(2, e.line());
         assertEquals(7, e.column());
         assertEquals("\tfile \"nothere\"", e.lineText());
-        assertEquals("file not found: " + dir.resolve("nothere.simp").toAbsolutePath().normalize(), e.problem());
+        assertEquals("file not found: nothere.simp; looked for " + dir.resolve("nothere.simp").toAbsolutePath().normalize()
+                + " and " + Path.of("nothere.simp").toAbsolutePath().normalize(), e.problem());
     }
 
     @Test
@@ -133,8 +136,8 @@ class FileStackTest {
         assertEquals(depth, deepest[0]);
         assertTrue(mostOpen[0] <= FileStack.MAX_OPEN, "open files: " + mostOpen[0]);
         // The innermost file draws first, then each level on the way back out.
-        assertEquals(simpview.geometry.ViewVolume.toPanel((depth - 1) / 10.0), order.get(0));
-        assertEquals(simpview.geometry.ViewVolume.toPanel(0), order.get(depth - 1));
+        assertEquals(simpview.geometry.Camera.PARALLEL.panelX((depth - 1) / 10.0, 0), order.get(0));
+        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(0, 0), order.get(depth - 1));
         assertEquals(0, files.depth());
     }
 
@@ -165,8 +168,8 @@ class FileStackTest {
         for (Vertex[] l : scene.lines) {
             xs.add(l[0].x());
         }
-        assertEquals(simpview.geometry.ViewVolume.toPanel(15.01), xs.get(1501 + 2 * FileStack.MAX_OPEN));
-        assertEquals(simpview.geometry.ViewVolume.toPanel(29.99), xs.get(xs.size() - 1));
+        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(15.01, 0), xs.get(1501 + 2 * FileStack.MAX_OPEN));
+        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(29.99, 0), xs.get(xs.size() - 1));
     }
 
     @Test

@@ -11,6 +11,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
+import simpview.geometry.Camera;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -51,7 +52,7 @@ class ProvenanceSceneTest {
         int panel = PageCanvas.PANEL;
         Provenance provenance = new Provenance(panel, panel);
         PrimitiveLog log = new PrimitiveLog(provenance, -1);
-        Drawable recorded = new ScissorDrawable(new ZBufferDrawable(new ZBuffer(panel, panel),
+        Drawable recorded = new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(new ZBuffer(panel, panel),
                 new ProvenanceDrawable(provenance, new RecordingDrawable(panel, panel))));
         run(scene, recorded, log, readAheadFrom);
 
@@ -68,7 +69,7 @@ class ProvenanceSceneTest {
                 return true;
             }
         };
-        run(scene, new ScissorDrawable(new ZBufferDrawable(new ZBuffer(panel, panel), writes)), boundaries, readAheadFrom);
+        run(scene, new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(new ZBuffer(panel, panel), writes)), boundaries, readAheadFrom);
 
         int[] expected = new int[panel * panel];
         Arrays.fill(expected, Provenance.BACKGROUND);

@@ -19,13 +19,14 @@ import java.util.function.IntPredicate;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.geometry.Vertex;
-import simpview.surface.PageCanvas;
-import simpview.surface.Rgb;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.scene.SceneException;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 
 /**
  * Reading ahead on a second thread changes nothing that can be seen: the

@@ -7,6 +7,7 @@ import net.jqwik.api.Arbitrary;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
+import simpview.scene.SceneException;
 
 /** Whatever the bytes, reading them ends normally or with a SceneException: nothing else escapes. */
 class ReaderFuzzTest {

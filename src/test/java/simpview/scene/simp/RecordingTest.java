@@ -16,6 +16,7 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.SceneException;
 
 /** Replaying a small file's recorded commands is indistinguishable from reading its bytes again. */
 class RecordingTest {

@@ -7,9 +7,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import simpview.geometry.Vertex;
-import simpview.surface.Drawable;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
+import simpview.scene.SceneException;
+import simpview.surface.Drawable;
 
 /**
  * Runs scenes written into a folder through the real reader and client, with

@@ -8,9 +8,10 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.geometry.Vertex;
-import simpview.geometry.ViewVolume;
+import simpview.scene.SceneException;
 
 /** Transforms, the matrix stack and the style, through the real reader and client. */
 class SimpClientTest {
@@ -25,8 +26,8 @@ class SimpClientTest {
     }
 
     private static void assertPanelVertex(double wx, double wy, double wz, Vertex v) {
-        assertEquals(ViewVolume.toPanel(wx), v.x(), 1e-12, "x");
-        assertEquals(ViewVolume.toPanel(wy), v.y(), 1e-12, "y");
+        assertEquals(Camera.PARALLEL.panelX(wx, wz), v.x(), 1e-12, "x");
+        assertEquals(Camera.PARALLEL.panelY(wy, wz), v.y(), 1e-12, "y");
         assertEquals(wz, v.z(), 1e-12, "z");
     }
 

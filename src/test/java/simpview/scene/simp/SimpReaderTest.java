@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.geometry.Axis;
+import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
 
 class SimpReaderTest {
@@ -55,7 +56,7 @@ class SimpReaderTest {
     }
 
     private static double[] triple(Command c) {
-        return new double[] {c.coordinate(0, 0), c.coordinate(0, 1), c.coordinate(0, 2)};
+        return new double[] {c.number(0), c.number(1), c.number(2)};
     }
 
     // ---- accepted forms ------------------------------------------------------------------------
@@ -194,7 +195,7 @@ class SimpReaderTest {
         Command c = new Command();
         List<Double> seen = new ArrayList<>();
         while (r.next(c)) {
-            seen.add(c.coordinate(0, 0));
+            seen.add(c.number(0));
         }
         assertEquals(5000, seen.size());
         assertEquals(4999.0, seen.get(4999));
@@ -205,13 +206,13 @@ class SimpReaderTest {
     @Test
     void unknownCommand() {
         assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal'; expected {, }, scale, translate, "
-                + "rotate, line, polygon, file, wire or filled");
+                + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
     @Test
     void commandsAreCaseSensitive() {
         assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale'; expected {, }, scale, translate, "
-                + "rotate, line, polygon, file, wire or filled");
+                + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
     @Test
@@ -231,29 +232,27 @@ class SimpReaderTest {
 
     @Test
     void tooFewPoints() {
-        assertError("polygon (0,0,0) (1,0,0)", 1, 24, "wrong number of arguments: polygon takes 3 points, found 2 points");
+        assertError("polygon (0,0,0) (1,0,0)", 1, 24, "wrong number of arguments: polygon takes 9 numbers (3 points) or 18 (3 points, each followed by its colour), found 6 numbers");
     }
 
     @Test
     void tooManyPoints() {
-        assertError("line (0,0,0) (1,0,0) (1,1,1) (0,1,0) (2,2,2)", 1, 38,
-                "wrong number of arguments: line takes 2 points, found more");
+        assertError("line (0,0,0) (1,0,0) (1,1,1) (0,1,0) (2,2,2)", 1, 39, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found more");
     }
 
     @Test
     void pointWithTwoNumbers() {
-        assertError("line (0, 0) (1, 1, 1)", 1, 11, "expected a number, found ')'");
+        assertError("line (0, 0) (1, 1, 1)", 1, 22, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 5 numbers");
     }
 
     @Test
     void pointWithFourNumbers() {
-        assertError("line (0 0 0 0) (1 1 1)", 1, 13, "expected ')' closing the point after three numbers, found '0'");
+        assertError("line (0 0 0 0) (1 1 1)", 1, 23, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 7 numbers");
     }
 
     @Test
     void colourOnSomeVerticesOnly() {
-        assertError("line (0,0,0) (1,0,0) (1,1,1)", 1, 22,
-                "points with and without colours: give every vertex of 'line' a colour (r, g, b) after its point, or none");
+        assertError("line (0,0,0) (1,0,0) (1,1,1)", 1, 29, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 9 numbers");
     }
 
     @Test
@@ -317,13 +316,58 @@ class SimpReaderTest {
     }
 
     @Test
-    void trailingCommaIsTrailingText() {
-        assertError("translate 1 2 3,", 1, 16, "expected the end of the line, found ','");
+    void commasAndParenthesesOnlySeparate() throws SceneException {
+        assertArrayEquals(new double[] {1, 2, 3}, triple(parse("translate 1 2 3,")));
+        assertArrayEquals(new double[] {1, 2, 3}, triple(parse("translate (1, 2, 3)")));
+        assertArrayEquals(new double[] {1, 2, 3}, triple(parse("translate(1,2,3)")));
+    }
+
+    @Test
+    void theCourseWritesAColourInsideThePoint() throws SceneException {
+        for (String line : new String[] {"polygon (0, 0, 0, 1, 0, 0) (1, 0, 0, 0, 1, 0) (0, 1, 0, 0, 0, 1)",
+            "polygon (0, 0, 0, (1, 0, 0)) (1, 0, 0, (0, 1, 0)) (0, 1, 0, (0, 0, 1))",
+            "polygon (0 0 0) (1 0 0) (1 0 0) (0 1 0) (0 1 0) (0 0 1)",
+            "polygon 0 0 0 1 0 0 1 0 0 0 1 0 0 1 0 0 0 1"}) {
+            Command c = parse(line);
+            assertTrue(c.colored(), line);
+            assertEquals(1, c.coordinate(1, 0), line);
+            assertEquals(1, c.coordinate(2, 1), line);
+            assertEquals(1, c.color(0, 0), line);
+            assertEquals(1, c.color(1, 1), line);
+            assertEquals(1, c.color(2, 2), line);
+            assertEquals(0, c.color(2, 0), line);
+        }
+    }
+
+    @Test
+    void coloursOutsideZeroToOneAreClampedAndMarked() throws SceneException {
+        Command c = parse("line (0, 0, 0, 2, -1, 0.5) (1, 1, 1, 0, 0, 0)");
+        assertTrue(c.clamped);
+        assertEquals(1, c.color(0, 0));
+        assertEquals(0, c.color(0, 1));
+        assertEquals(0.5, c.color(0, 2));
+        assertFalse(parse("line (0, 0, 0, 1, 0, 0.5) (1, 1, 1, 0, 0, 0)").clamped);
+    }
+
+    @Test
+    void litCommandsReadTheirNumbers() throws SceneException {
+        Command camera = parse("camera -1 -1 1 1 -0.1 -200");
+        assertEquals(Kind.CAMERA, camera.kind());
+        assertEquals(6, camera.numberCount());
+        assertEquals(-0.1, camera.number(4));
+        assertEquals(5, parse("light 1, 1, 1, 1, 0").numberCount());
+        assertEquals(0, parse("depth 0 -200 (0 0 0)").number(4));
+        assertEquals(3, parse("surface 1 0.5 0.5").numberCount());
+        assertEquals(5, parse("surface 1 0.5 0.5 0.4 16").numberCount());
+        assertEquals("dummy", parse("obj \"dummy\"").fileName());
+        assertEquals(Kind.GOURAUD, parse("gouraud").kind());
+        assertError("surface 1 1 1 1", 1, 16, "wrong number of arguments: surface takes 3 or 5 numbers, found 4 numbers");
+        assertError("camera -1 -1 1 1 -0.1", 1, 22, "wrong number of arguments: camera takes 6 numbers, found 5 numbers");
     }
 
     @Test
     void commandWordMustBeFollowedByBlank() {
-        assertError("translate(1,2,3)", 1, 10, "expected a blank after 'translate', found '('");
+        assertError("rotate(X 3)", 1, 7, "expected a blank after 'rotate', found '('");
     }
 
     @Test
@@ -338,7 +382,7 @@ class SimpReaderTest {
 
     @Test
     void garbageInsteadOfAPoint() {
-        assertError("line (0,0,0) x", 1, 14, "expected '(' starting a point, found 'x'");
+        assertError("line (0,0,0) x", 1, 14, "expected a number, found 'x'");
     }
 
     @Test

@@ -1,23 +1,22 @@
-package simpview.scene.simp;
+package simpview.scene;
 
 import simpview.geometry.Vertex;
-import simpview.scene.PrimitiveTrace;
-import simpview.surface.Drawable;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
+import simpview.surface.Drawable;
 
 /**
  * Draws primitives given as plain numbers in panel space with the scene's
  * renderers. Everything it touches (renderers, panel) belongs to the thread
  * that draws, so it is the only part of a scene that runs there.
  */
-final class Painter implements PrimitiveSink {
+public final class Painter implements PrimitiveSink {
 
-    static final int LINE = 0;
-    static final int FILLED = 1;
-    static final int WIRE = 2;
+    public static final int LINE = 0;
+    public static final int FILLED = 1;
+    public static final int WIRE = 2;
     /** Numbers per primitive: room for a polygon's three vertices (panel x, panel y, world z, r, g, b each). */
-    static final int STRIDE = 3 * Vertex.NUMBERS;
+    public static final int STRIDE = 3 * Vertex.NUMBERS;
 
     private final Drawable panel;
     private final LineRenderer lines;
@@ -27,7 +26,7 @@ final class Painter implements PrimitiveSink {
     private PrimitiveTrace trace;
     private int drawn;
 
-    Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
+    public Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
         this.panel = panel;
         this.lines = lines;
         this.filled = filled;
@@ -39,13 +38,13 @@ final class Painter implements PrimitiveSink {
         draw(kind, p, 0);
     }
 
-    /** From now on tells {@code follower} of every primitive before drawing it. */
-    void follow(PrimitiveTrace follower) {
+    /** From now on tells {@code follower} of every primitive before drawing it (null: nobody). */
+    public void follow(PrimitiveTrace follower) {
         trace = follower;
     }
 
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
-    void draw(int kind, double[] p, int at) {
+    public void draw(int kind, double[] p, int at) {
         if (trace != null && !trace.drawing(drawn++)) {
             return;
         }

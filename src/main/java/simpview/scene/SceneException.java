@@ -1,4 +1,4 @@
-package simpview.scene.simp;
+package simpview.scene;
 
 import java.nio.file.Path;
 

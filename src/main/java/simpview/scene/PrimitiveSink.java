@@ -1,11 +1,11 @@
-package simpview.scene.simp;
+package simpview.scene;
 
 /**
- * Where the client puts each primitive it has transformed and not culled:
- * straight to the renderers ({@link Painter}), or into a batch that the
- * drawing thread draws later ({@link PrimitiveBatch}).
+ * Where the depth-cued geometry stage puts each primitive it has transformed,
+ * culled and projected: straight to the renderers ({@link Painter}), or into a
+ * batch that the drawing thread draws later.
  */
-interface PrimitiveSink {
+public interface PrimitiveSink {
 
     /**
      * @param kind {@link Painter#LINE}, {@link Painter#FILLED} or {@link Painter#WIRE}

@@ -1,0 +1,197 @@
+package simpview.geometry;
+
+/**
+ * The view: which camera-space points are seen, and where on the 650x650
+ * panel each lands. Two kinds:
+ * <ul>
+ * <li>{@link #PARALLEL}, Part 1's view volume: -100 &lt;= x, y &lt;= 100,
+ *     -200 &lt;= z &lt;= 0, x and y mapped linearly onto the panel, z kept for
+ *     depth only;</li>
+ * <li>{@link #perspective}: the SIMP {@code camera} command. The eye at the
+ *     origin looks down -z; the window [xlow, xhigh] x [ylow, yhigh] lies on
+ *     the plane z = -1; the near plane is z = hither, the far plane z = yon.
+ *     A point lands on the window at (x / -z, y / -z).</li>
+ * </ul>
+ * Both map window coordinates to panel pixels with one rule: the window
+ * becomes a rectangle of its own aspect, as large as fits, centred:
+ * {@code px = offsetX + (x' - xlow) * 650 / extent}, extent the larger side.
+ * For the parallel view the offset is 0 and the expression is Part 1's
+ * {@code (x + 100) * 650 / 200} to the bit.
+ *
+ * <p>The six planes, each with a signed distance that is {@code >= 0} inside,
+ * are numbered in clipping order: {@link #HITHER}, {@link #YON}, {@link #LEFT},
+ * {@link #RIGHT}, {@link #BOTTOM}, {@link #TOP}.
+ */
+public final class Camera {
+
+    public static final int PANEL_SIZE = 650;
+    public static final int HITHER = 0;
+    public static final int YON = 1;
+    public static final int LEFT = 2;
+    public static final int RIGHT = 3;
+    public static final int BOTTOM = 4;
+    public static final int TOP = 5;
+    public static final int PLANES = 6;
+
+    /** Part 1's view: the box -100..100 x -100..100 x -200..0, parallel projection. */
+    public static final Camera PARALLEL = new Camera(false, -100, -100, 100, 100, 0, -200);
+
+    private final boolean perspective;
+    private final double xlow;
+    private final double ylow;
+    private final double xhigh;
+    private final double yhigh;
+    private final double hither;
+    private final double yon;
+    private final double extent;
+    private final double offsetX;
+    private final double offsetY;
+
+    private Camera(boolean perspective, double xlow, double ylow, double xhigh, double yhigh,
+            double hither, double yon) {
+        this.perspective = perspective;
+        this.xlow = xlow;
+        this.ylow = ylow;
+        this.xhigh = xhigh;
+        this.yhigh = yhigh;
+        this.hither = hither;
+        this.yon = yon;
+        double width = xhigh - xlow;
+        double height = yhigh - ylow;
+        extent = Math.max(width, height);
+        double s = PANEL_SIZE / extent;
+        offsetX = (PANEL_SIZE - s * width) / 2;
+        offsetY = (PANEL_SIZE - s * height) / 2;
+    }
+
+    /**
+     * The camera of a {@code camera xlow ylow xhigh yhigh hither yon} command.
+     *
+     * @throws IllegalArgumentException unless xlow &lt; xhigh, ylow &lt; yhigh and 0 &gt; hither &gt; yon
+     */
+    public static Camera perspective(double xlow, double ylow, double xhigh, double yhigh,
+            double hither, double yon) {
+        String problem = problem(xlow, ylow, xhigh, yhigh, hither, yon);
+        if (problem != null) {
+            throw new IllegalArgumentException(problem);
+        }
+        return new Camera(true, xlow, ylow, xhigh, yhigh, hither, yon);
+    }
+
+    /** What is wrong with these camera numbers, or null when they make a camera. */
+    public static String problem(double xlow, double ylow, double xhigh, double yhigh, double hither,
+            double yon) {
+        if (!(xlow < xhigh)) {
+            return "the window needs xlow < xhigh, found " + xlow + " and " + xhigh;
+        }
+        if (!(ylow < yhigh)) {
+            return "the window needs ylow < yhigh, found " + ylow + " and " + yhigh;
+        }
+        if (!(0 > hither && hither > yon)) {
+            return "the planes need 0 > hither > yon, found hither " + hither + " and yon " + yon;
+        }
+        if (!Double.isFinite(PANEL_SIZE / Math.max(xhigh - xlow, yhigh - ylow))) {
+            return "the window is too small or too large to map onto the panel";
+        }
+        return null;
+    }
+
+    public boolean isPerspective() {
+        return perspective;
+    }
+
+    /** The near plane's z: nothing nearer (greater z) is seen. */
+    public double hither() {
+        return hither;
+    }
+
+    /** The far plane's z: nothing farther (smaller z) is seen. */
+    public double yon() {
+        return yon;
+    }
+
+    /** Panel x of the camera-space point (x, ?, z); z matters only in perspective. */
+    public double panelX(double x, double z) {
+        double onWindow = perspective ? x / -z : x;
+        return offsetX + (onWindow - xlow) * PANEL_SIZE / extent;
+    }
+
+    /** Panel y of the camera-space point (?, y, z). */
+    public double panelY(double y, double z) {
+        double onWindow = perspective ? y / -z : y;
+        return offsetY + (onWindow - ylow) * PANEL_SIZE / extent;
+    }
+
+    /**
+     * 1/w of a camera-space depth: the quantity that is affine in screen space,
+     * 1 / -z in perspective and 1 in the parallel view. Attributes are
+     * interpolated as a * q and divided by q at each pixel.
+     */
+    public double q(double z) {
+        return perspective ? 1 / -z : 1;
+    }
+
+    /** The signed distance of (x, y, z) to plane {@code plane}: {@code >= 0} inside the view. */
+    public double distance(int plane, double x, double y, double z) {
+        double w = perspective ? -z : 1;
+        return switch (plane) {
+            case HITHER -> hither - z;
+            case YON -> z - yon;
+            case LEFT -> x - xlow * w;
+            case RIGHT -> xhigh * w - x;
+            case BOTTOM -> y - ylow * w;
+            case TOP -> yhigh * w - y;
+            default -> throw new IllegalArgumentException("plane " + plane);
+        };
+    }
+
+    /**
+     * The planes (x, y, z) is outside of, one bit per plane ({@code 1 << plane});
+     * NaN is outside none. For the parallel view these are Part 1's tests.
+     */
+    public int outcode(double x, double y, double z) {
+        double w = perspective ? -z : 1;
+        int code = 0;
+        if (z > hither) {
+            code |= 1 << HITHER;
+        } else if (z < yon) {
+            code |= 1 << YON;
+        }
+        if (x < xlow * w) {
+            code |= 1 << LEFT;
+        } else if (x > xhigh * w) {
+            code |= 1 << RIGHT;
+        }
+        if (y < ylow * w) {
+            code |= 1 << BOTTOM;
+        } else if (y > yhigh * w) {
+            code |= 1 << TOP;
+        }
+        return code;
+    }
+
+    /**
+     * Culling: true when the first {@code count} vertices of {@code p} (camera
+     * space, {@code stride} numbers each, x, y, z first) are all outside one and
+     * the same plane, so that the primitive cannot touch the view.
+     */
+    public boolean culls(double[] p, int stride, int count) {
+        int common = ~0;
+        for (int k = 0; k < count && common != 0; k++) {
+            int o = k * stride;
+            common &= outcode(p[o], p[o + 1], p[o + 2]);
+        }
+        return common != 0;
+    }
+
+    /** The depth cue's weight of the near colour: 0 at the far plane, 1 at the near plane. */
+    public double nearness(double z) {
+        return (z - yon) / (hither - yon);
+    }
+
+    @Override
+    public String toString() {
+        return (perspective ? "perspective" : "parallel") + " camera [" + xlow + ", " + xhigh + "] x ["
+                + ylow + ", " + yhigh + "], z from " + hither + " to " + yon;
+    }
+}

@@ -1,0 +1,161 @@
+package simpview.geometry;
+
+import java.util.Arrays;
+
+/**
+ * Clips polygons and lines against the six planes of a {@link Camera}, in
+ * camera space. A vertex is {@code stride} numbers whose first three are its
+ * camera-space x, y, z; every number of a new vertex (position, colour,
+ * normal, whatever follows) is interpolated linearly at the crossing.
+ *
+ * <p>Polygons: Sutherland-Hodgman, one pass per plane in the order hither,
+ * yon, left, right, bottom, top. Each pass walks the edges from the last
+ * vertex to the first, then on, and keeps a vertex when its distance to the
+ * plane is {@code >= 0}. The result is convex when the input is (a triangle
+ * always is) and has at most n + 6 vertices. Lines: the parametric
+ * (Liang-Barsky) form, both ends moved along the original segment.
+ *
+ * <p>One instance reuses two buffers that grow only for polygons larger than
+ * any seen before; not for use by two threads at once.
+ */
+public final class Clipper {
+
+    private final int stride;
+    private double[] front;
+    private double[] back;
+    private double[] distances;
+    private int count;
+
+    /** @param stride numbers per vertex, at least 3 (x, y, z first) */
+    public Clipper(int stride) {
+        if (stride < 3) {
+            throw new IllegalArgumentException("a vertex has at least x, y and z: stride " + stride);
+        }
+        this.stride = stride;
+        front = new double[stride * 16];
+        back = new double[stride * 16];
+        distances = new double[16];
+    }
+
+    /**
+     * Clips the polygon of {@code n} vertices in {@code p} from {@code at}.
+     *
+     * @return the number of vertices left (0 when nothing of it is in view);
+     *     they are in {@link #vertices()}, from index 0
+     */
+    public int clipPolygon(Camera camera, double[] p, int at, int n) {
+        ensure(n + Camera.PLANES);
+        System.arraycopy(p, at, front, 0, n * stride);
+        count = n;
+        for (int plane = 0; plane < Camera.PLANES && count > 0; plane++) {
+            if (anyOutside(camera, plane)) {
+                clipAgainst(plane);
+            }
+        }
+        return count;
+    }
+
+    /** The vertices of the last clipped polygon or line, stride numbers each. */
+    public double[] vertices() {
+        return front;
+    }
+
+    public int stride() {
+        return stride;
+    }
+
+    /** Fills {@link #distances} for the current polygon; true when some vertex is outside. */
+    private boolean anyOutside(Camera camera, int plane) {
+        boolean outside = false;
+        double[] v = front;
+        for (int k = 0; k < count; k++) {
+            int o = k * stride;
+            double d = camera.distance(plane, v[o], v[o + 1], v[o + 2]);
+            distances[k] = d;
+            outside |= !(d >= 0);
+        }
+        return outside;
+    }
+
+    private void clipAgainst(int plane) {
+        double[] in = front;
+        double[] out = back;
+        int kept = 0;
+        int previous = count - 1;
+        double dPrevious = distances[previous];
+        for (int k = 0; k < count; k++) {
+            double d = distances[k];
+            boolean inside = d >= 0;
+            if (inside != (dPrevious >= 0)) {
+                lerp(in, previous, k, dPrevious / (dPrevious - d), out, kept++);
+            }
+            if (inside) {
+                System.arraycopy(in, k * stride, out, kept++ * stride, stride);
+            }
+            previous = k;
+            dPrevious = d;
+        }
+        front = out;
+        back = in;
+        count = kept;
+    }
+
+    /** out[at] = a + t (b - a), every number of the vertex. */
+    private void lerp(double[] v, int a, int b, double t, double[] out, int at) {
+        int oa = a * stride;
+        int ob = b * stride;
+        int o = at * stride;
+        for (int i = 0; i < stride; i++) {
+            out[o + i] = v[oa + i] + t * (v[ob + i] - v[oa + i]);
+        }
+    }
+
+    /**
+     * Clips the line from vertex {@code from} to vertex {@code to} of {@code p}
+     * (offsets of their first numbers).
+     *
+     * @return false when no part of it is in view; else its two new ends are
+     *     vertices 0 and 1 of {@link #vertices()}
+     */
+    public boolean clipLine(Camera camera, double[] p, int from, int to) {
+        ensure(2);
+        double t0 = 0;
+        double t1 = 1;
+        for (int plane = 0; plane < Camera.PLANES; plane++) {
+            double d0 = camera.distance(plane, p[from], p[from + 1], p[from + 2]);
+            double d1 = camera.distance(plane, p[to], p[to + 1], p[to + 2]);
+            boolean in0 = d0 >= 0;
+            boolean in1 = d1 >= 0;
+            if (!in0 && !in1) {
+                return false;
+            }
+            if (!in0) {
+                t0 = Math.max(t0, d0 / (d0 - d1));
+            } else if (!in1) {
+                t1 = Math.min(t1, d0 / (d0 - d1));
+            }
+        }
+        if (!(t0 <= t1)) {
+            return false;
+        }
+        for (int i = 0; i < stride; i++) {
+            double a = p[from + i];
+            double b = p[to + i];
+            front[i] = t0 == 0 ? a : a + t0 * (b - a);
+            front[stride + i] = t1 == 1 ? b : a + t1 * (b - a);
+        }
+        count = 2;
+        return true;
+    }
+
+    private void ensure(int vertices) {
+        if (front.length < vertices * stride) {
+            int size = Math.max(vertices, 2 * front.length / stride) * stride;
+            front = Arrays.copyOf(front, size);
+            back = Arrays.copyOf(back, size);
+        }
+        if (distances.length < vertices) {
+            distances = new double[Math.max(vertices, 2 * distances.length)];
+        }
+    }
+}

@@ -1,0 +1,22 @@
+package simpview.raster;
+
+/**
+ * Where the lit rasterizers hand their pixels: the fragment stage that tests
+ * depth, resolves the attributes, shades, fogs and writes. Each fragment
+ * carries q (1/w, see {@link simpview.geometry.Camera#q}) and a number of
+ * channels, each an attribute multiplied by q; all of them are affine in
+ * screen space, so a span gives their values at its first pixel and their
+ * change per pixel. The sink divides by q at each pixel.
+ */
+public interface FragmentSink {
+
+    /**
+     * Pixels {@code from <= x < to} of row y; at pixel x, q is
+     * {@code q0 + (x - from) * dq} and channel c is {@code v0[c] + (x - from) * dv[c]}.
+     * The arrays are read before the call returns, never kept.
+     */
+    void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv);
+
+    /** One pixel with its q and channels. */
+    void pixel(int x, int y, double q, double[] v);
+}

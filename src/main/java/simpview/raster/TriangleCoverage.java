@@ -1,0 +1,228 @@
+package simpview.raster;
+
+/**
+ * Which pixels of each row a triangle covers, for every filled renderer.
+ *
+ * <p>Pixel (i, j) is covered iff its centre (i + 0.5, j + 0.5) is inside the
+ * triangle, a centre exactly on an edge only for a top or left edge. The test
+ * is the sign of each edge function, evaluated with the edge's endpoints in a
+ * canonical order: two triangles sharing an edge compute bit-identical values
+ * there and differ only in sign, and the top-left rule gives the tie to
+ * exactly one of them. Along a row each edge function is monotone in x even
+ * in floating point (every operation in it rounds monotonically), so the
+ * covered pixels form one run whose ends are found from the edge crossings
+ * and then settled by that same exact test.
+ *
+ * <p>Work is bounded by the surface: rows and runs are clipped to [0, width)
+ * x [0, height) before any pixel is visited. One instance reuses its state.
+ */
+final class TriangleCoverage {
+
+    private final Edge[] edges = {new Edge(), new Edge(), new Edge()};
+    // Edges by role: inside to the right (dy < 0), to the left (dy > 0),
+    // horizontal (at most one); null where the triangle has none.
+    private Edge left0;
+    private Edge left1;
+    private Edge right0;
+    private Edge right1;
+    private Edge flat;
+    private double minY;
+    private double maxY;
+    /** Twice the triangle's area, positive. */
+    double area;
+    /** True when the vertices were given clockwise: the counter-clockwise order is 1, 3, 2. */
+    boolean clockwise;
+    /** The covered run of the last row asked for: from <= x < to. */
+    int from;
+    int to;
+
+    /**
+     * Sets up the triangle (x1, y1), (x2, y2), (x3, y3), in either orientation.
+     *
+     * @return false when it is degenerate (zero or non-finite area): no pixel centre lies strictly inside
+     */
+    boolean set(double x1, double y1, double x2, double y2, double x3, double y3) {
+        double a = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1);
+        if (!(a != 0) || !Double.isFinite(a)) {
+            return false;
+        }
+        clockwise = a < 0;
+        area = Math.abs(a);
+        double bx = clockwise ? x3 : x2;
+        double by = clockwise ? y3 : y2;
+        double cx = clockwise ? x2 : x3;
+        double cy = clockwise ? y2 : y3;
+        left0 = left1 = right0 = right1 = flat = null;
+        setUpEdge(edges[0], x1, y1, bx, by);
+        setUpEdge(edges[1], bx, by, cx, cy);
+        setUpEdge(edges[2], cx, cy, x1, y1);
+        minY = Math.min(y1, Math.min(y2, y3));
+        maxY = Math.max(y1, Math.max(y2, y3));
+        return true;
+    }
+
+    /** The lowest row whose centre line the triangle may reach, within [0, height]. */
+    int firstRow(int height) {
+        return (int) Math.max(0, Math.min(height, Math.ceil(minY - 0.5)));
+    }
+
+    /** The highest such row, within [-1, height - 1]. */
+    int lastRow(int height) {
+        return (int) Math.max(-1, Math.min(height - 1, Math.floor(maxY - 0.5)));
+    }
+
+    /** The covered run of a row, the intersection of one half-row per edge, into from and to; false when empty. */
+    boolean row(int row, int width) {
+        double py = row + 0.5;
+        if (flat != null && !flat.inside(flat.rowTerm(py), 0.5)) {
+            return false; // a horizontal edge excludes or admits the whole row
+        }
+        int start = left0.firstInside(py, width);
+        if (left1 != null) {
+            start = Math.max(start, left1.firstInside(py, width));
+        }
+        int end = width;
+        if (start < end) {
+            end = right0.endOfInside(py, width);
+        }
+        if (right1 != null && start < end) {
+            end = Math.min(end, right1.endOfInside(py, width));
+        }
+        from = start;
+        to = end;
+        return start < end;
+    }
+
+    private void setUpEdge(Edge e, double ax, double ay, double bx, double by) {
+        e.set(ax, ay, bx, by);
+        if (e.dy < 0) {
+            if (left0 == null) {
+                left0 = e;
+            } else {
+                left1 = e;
+            }
+        } else if (e.dy > 0) {
+            if (right0 == null) {
+                right0 = e;
+            } else {
+                right1 = e;
+            }
+        } else {
+            flat = e;
+        }
+    }
+
+    /**
+     * One edge of the counter-clockwise triangle, from (ax, ay) to (bx, by):
+     * its exact coverage test and a guess of where it crosses a row.
+     */
+    private static final class Edge {
+        // The exact test over the canonical endpoints (x0, y0), (x1, y1), ex = x1 - x0, ey = y1 - y0:
+        // f(px, py) = sign * (ex * (py - y0) - ey * (px - x0)); inside iff f > 0, or f == 0 on a top or
+        // left edge. sign is +-1 and IEEE rounding is symmetric under negation, so f has the same sign
+        // (and zeros) as (sign * ex) * (py - y0) - (sign * ey) * (px - x0): the sign is folded in.
+        private double x0;
+        private double y0;
+        private double signedEx;
+        private double signedEy;
+        private boolean topLeft;
+        // The crossing guess, in the edge's own direction.
+        private double fromX;
+        private double fromY;
+        private double xPerY;
+        double dy;
+
+        void set(double ax, double ay, double bx, double by) {
+            double dx = bx - ax;
+            dy = by - ay;
+            fromX = ax;
+            fromY = ay;
+            xPerY = dx / dy;
+            // Canonical order: the lexicographically smaller endpoint first.
+            boolean forward = ax < bx || (ax == bx && ay < by);
+            x0 = forward ? ax : bx;
+            y0 = forward ? ay : by;
+            double sign = forward ? 1 : -1;
+            signedEx = sign * (forward ? bx - ax : ax - bx);
+            signedEy = sign * (forward ? by - ay : ay - by);
+            // Counter-clockwise with y up: a left edge runs downward, a top edge runs in -x.
+            topLeft = dy < 0 || (dy == 0 && dx < 0);
+        }
+
+        /** The part of the edge function that depends only on the row: sign * ex * (py - y0). */
+        double rowTerm(double py) {
+            return signedEx * (py - y0);
+        }
+
+        /** The edge function at (px, py), given rowTerm(py). */
+        private double f(double rowTerm, double px) {
+            return rowTerm - signedEy * (px - x0);
+        }
+
+        /** The exact coverage test at (px, py), given rowTerm(py). */
+        boolean inside(double rowTerm, double px) {
+            double f = f(rowTerm, px);
+            return f > 0 || (f == 0 && topLeft);
+        }
+
+        /** inside() for an edge running downward, always a left edge: f == 0 is in. */
+        private boolean insideLeft(double rowTerm, double px) {
+            return f(rowTerm, px) >= 0;
+        }
+
+        /** inside() for an edge running upward, never top or left: f == 0 is out. */
+        private boolean insideRight(double rowTerm, double px) {
+            return f(rowTerm, px) > 0;
+        }
+
+        /** Where the edge crosses the row's centre line, roughly (rounding here only costs steps). */
+        private double crossing(double py) {
+            return fromX + (py - fromY) * xPerY;
+        }
+
+        /**
+         * For an edge whose inside is to the right: the first pixel on the row
+         * inside it, or width. Along a row the test is monotone in x, so the
+         * crossing only gives a first guess; the exact test moves it to the
+         * boundary. Pixel indices are kept as (exact) doubles. The common
+         * case, the guess already on the boundary, is told by two independent
+         * tests and one branch; the loops then would not move.
+         */
+        int firstInside(double py, int width) {
+            double term = rowTerm(py);
+            double i = clampIndex(Math.ceil(crossing(py) - 0.5), width);
+            if (!insideLeft(term, i - 0.5) & insideLeft(term, i + 0.5)) {
+                return (int) i;
+            }
+            while (i > 0 && insideLeft(term, i - 0.5)) {
+                i--;
+            }
+            while (i < width && !insideLeft(term, i + 0.5)) {
+                i++;
+            }
+            return (int) i;
+        }
+
+        /** For an edge whose inside is to the left: one past the last pixel on the row inside it. */
+        int endOfInside(double py, int width) {
+            double term = rowTerm(py);
+            double i = clampIndex(Math.floor(crossing(py) - 0.5) + 1, width);
+            if (insideRight(term, i - 0.5) & !insideRight(term, i + 0.5)) {
+                return (int) i;
+            }
+            while (i < width && insideRight(term, i + 0.5)) {
+                i++;
+            }
+            while (i > 0 && !insideRight(term, i - 0.5)) {
+                i--;
+            }
+            return (int) i;
+        }
+
+        /** A guess clamped to [0, width]; NaN becomes 0. */
+        private static double clampIndex(double estimate, int width) {
+            return estimate >= 0 ? Math.min(estimate, width) : 0;
+        }
+    }
+
+}

@@ -1,0 +1,350 @@
+package simpview.scene.obj;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import simpview.scene.SceneException;
+import simpview.scene.simp.DecimalParser;
+import simpview.scene.simp.LineSource;
+
+/**
+ * Reads the lines of one .obj file straight from the bytes of its buffer (no
+ * regular expressions, no String per number) and hands each face to a sink
+ * as soon as its line is read; optionally records the faces for a model.
+ *
+ * <p>Lines are split as SIMP lines are: blanks (spaces, tabs), commas and
+ * parentheses all separate. The keyword (the first word, any case) decides:
+ * {@code v}, {@code vn} and {@code f} are read, {@code vt} lines are only
+ * counted (a face may name them), every other line is ignored.
+ */
+final class ObjParser {
+
+    private static final int MOST_NUMBERS = 7;
+    private static final String VERTEX_FORMS = "v takes 3, 4, 6 or 7 numbers (x y z, x y z w, x y z r g b"
+            + " or x y z w r g b)";
+    private static final String REFERENCE_FORMS = "a vertex reference (v, v/vt, v//vn or v/vt/vn)";
+    private static final ObjSink NOWHERE = face -> { };
+    /** More digits than this name nothing (an array holds fewer than 10^10 elements). */
+    private static final int MOST_INDEX_DIGITS = 12;
+
+    private final LineSource source;
+    private final DecimalParser decimal = new DecimalParser();
+    private final ObjVertices vertices = new ObjVertices();
+    private final ObjFace face = new ObjFace();
+    private final double[] numbers = new double[MOST_NUMBERS];
+    private final int[] numberStarts = new int[MOST_NUMBERS];
+    private ObjFaceList recorder;
+    private int[] vertexRefs = new int[16];
+    private int[] normalRefs = new int[16];
+    private int textureCount;
+    private int faceCount;
+    /** The value of the index just read (capped, so that it never overflows). */
+    private long index;
+    private byte[] b;
+    private int lineStart;
+    private int end;
+
+    private ObjParser(LineSource source) {
+        this.source = source;
+    }
+
+    static ObjParser open(Path file) throws SceneException {
+        try {
+            return new ObjParser(LineSource.open(file));
+        } catch (IOException e) {
+            throw new SceneException(file, 0, 0, "", "cannot open the obj file: " + describe(e));
+        }
+    }
+
+    static ObjParser of(Path file, byte[] content) {
+        return new ObjParser(LineSource.of(file, content));
+    }
+
+    /** Reads a whole file into a model, with no budget. */
+    static ObjModel model(ObjParser parser) throws SceneException {
+        parser.record(Long.MAX_VALUE).run(NOWHERE);
+        return parser.model();
+    }
+
+    /** Records the faces too, up to {@code budget} bytes of arrays with the vertices. */
+    ObjParser record(long budget) {
+        recorder = new ObjFaceList(budget);
+        return this;
+    }
+
+    /** The recorded model after a {@link #run}; null when not recording or over the budget. */
+    ObjModel model() {
+        return recorder != null && recorder.kept() ? recorder.model(vertices) : null;
+    }
+
+    /** Reads every line, handing each face to the sink; closes the file. */
+    ObjCounts run(ObjSink sink) throws SceneException {
+        try {
+            while (source.nextLine()) {
+                b = source.buffer();
+                lineStart = source.lineStart();
+                end = source.lineEnd();
+                line(sink);
+                if (source.lineNumber() % ObjReader.PROGRESS_LINES == 0) {
+                    sink.progress(source.lineNumber());
+                }
+            }
+        } catch (LineSource.LineTooLongException e) {
+            throw new SceneException(file(), source.lineNumber() + 1, 0, "",
+                    "a line is longer than " + LineSource.MAX_LINE + " bytes");
+        } catch (IOException e) {
+            throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + describe(e));
+        } finally {
+            close();
+        }
+        return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount);
+    }
+
+    private void close() {
+        try {
+            source.close();
+        } catch (IOException e) {
+            // Read only: nothing is lost.
+        }
+    }
+
+    private Path file() {
+        return source.path();
+    }
+
+    // ---- one line ------------------------------------------------------------------------------
+
+    private void line(ObjSink sink) throws SceneException {
+        int i = skipBlanks(lineStart);
+        if (i == end) {
+            return;
+        }
+        int first = b[i] | 0x20; // lower case for letters
+        if (first != 'v' && first != 'f') {
+            return;
+        }
+        int wordEnd = i + 1;
+        while (wordEnd < end && !isSeparator(b[wordEnd])) {
+            wordEnd++;
+        }
+        int length = wordEnd - i;
+        if (length == 1) {
+            if (first == 'v') {
+                vertex(wordEnd);
+            } else {
+                face(wordEnd, sink);
+            }
+        } else if (length == 2 && first == 'v') {
+            int second = b[i + 1] | 0x20;
+            if (second == 'n') {
+                normal(wordEnd);
+            } else if (second == 't') {
+                textureCount++;
+            }
+        }
+    }
+
+    private void vertex(int from) throws SceneException {
+        int n = numbers(from, VERTEX_FORMS);
+        double w = 1;
+        int colour = 3;
+        switch (n) {
+            case 3, 6 -> { }
+            case 4, 7 -> {
+                w = numbers[3];
+                colour = 4;
+            }
+            default -> throw error(end, "wrong count of numbers: " + VERTEX_FORMS + ", found " + n);
+        }
+        double x = numbers[0];
+        double y = numbers[1];
+        double z = numbers[2];
+        if (w != 1) {
+            if (w == 0) {
+                throw error(numberStarts[3], "w is 0: the point (x/w, y/w, z/w) is undefined");
+            }
+            x /= w;
+            y /= w;
+            z /= w;
+            if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
+                throw error(numberStarts[3], "the point (x/w, y/w, z/w) is out of range");
+            }
+        }
+        if (n > 4) {
+            vertices.addVertex(x, y, z, numbers[colour], numbers[colour + 1], numbers[colour + 2]);
+        } else {
+            vertices.addVertex(x, y, z);
+        }
+    }
+
+    private void normal(int from) throws SceneException {
+        String takes = "vn takes 3 numbers (x y z)";
+        int n = numbers(from, takes);
+        if (n != 3) {
+            throw error(n < 3 ? end : numberStarts[3], "wrong count of numbers: " + takes + ", found " + n);
+        }
+        vertices.addNormal(numbers[0], numbers[1], numbers[2]);
+    }
+
+    /** Reads the numbers up to the end of the line into {@link #numbers}; more than 7 is an error. */
+    private int numbers(int from, String takes) throws SceneException {
+        int n = 0;
+        for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
+            if (n == MOST_NUMBERS) {
+                throw error(i, "wrong count of numbers: " + takes + ", found more than " + MOST_NUMBERS);
+            }
+            numberStarts[n] = i;
+            i = number(i);
+            numbers[n++] = decimal.value();
+        }
+        return n;
+    }
+
+    /** A number ending at a separator or the end of the line. */
+    private int number(int i) throws SceneException {
+        int after = decimal.scan(b, i, end);
+        if (after < 0 || (after < end && !isSeparator(b[after]))) {
+            throw error(i, "expected a number, found '" + token(i) + "'");
+        }
+        if (!Double.isFinite(decimal.value())) {
+            throw error(i, "number out of range: '" + token(i) + "'");
+        }
+        return after;
+    }
+
+    // ---- faces ---------------------------------------------------------------------------------
+
+    private void face(int from, ObjSink sink) throws SceneException {
+        int n = 0;
+        boolean anyNormal = false;
+        for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
+            if (n == vertexRefs.length) {
+                vertexRefs = java.util.Arrays.copyOf(vertexRefs, 2 * n);
+                normalRefs = java.util.Arrays.copyOf(normalRefs, 2 * n);
+            }
+            int start = i;
+            i = reference(i, n);
+            if (i < end && !isSeparator(b[i])) {
+                throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+            }
+            anyNormal |= normalRefs[n] >= 0;
+            n++;
+        }
+        if (n < 3) {
+            throw error(end, "a face takes at least 3 vertices, found " + n);
+        }
+        faceCount++;
+        int line = source.lineNumber();
+        if (recorder != null) {
+            recorder.add(vertexRefs, normalRefs, n, anyNormal, line, vertices.modelBytes());
+        }
+        face.bind(vertices.positions, vertices.colours, vertices.normals, vertexRefs, normalRefs);
+        face.select(0, n, line);
+        sink.face(face);
+    }
+
+    /** Reads v, v/vt, v//vn or v/vt/vn at i into the n-th reference; returns the index just past it. */
+    private int reference(int i, int n) throws SceneException {
+        int start = i;
+        i = index(i, start);
+        vertexRefs[n] = resolve(start, i, vertices.vertexCount, "vertex", "vertices (v lines)", "vertex (v line)");
+        normalRefs[n] = -1;
+        if (i < end && b[i] == '/') {
+            i++;
+            if (i >= end || b[i] != '/') {
+                int t = i;
+                i = index(i, start);
+                resolve(t, i, textureCount, "texture coordinate", "texture coordinates (vt lines)",
+                        "texture coordinate (vt line)");
+                if (i >= end || b[i] != '/') {
+                    return i;
+                }
+            }
+            int vn = ++i;
+            i = index(i, start);
+            normalRefs[n] = resolve(vn, i, vertices.normalCount, "normal", "normals (vn lines)",
+                    "normal (vn line)");
+        }
+        return i;
+    }
+
+    /** Reads [+-]digits at i into {@link #index}; a reference starting at {@code start} without one is an error. */
+    private int index(int i, int start) throws SceneException {
+        boolean negative = i < end && b[i] == '-';
+        if (i < end && (b[i] == '-' || b[i] == '+')) {
+            i++;
+        }
+        int digits = i;
+        long value = 0;
+        for (int d; i < end && (d = b[i] - '0') >= 0 && d <= 9; i++) {
+            value = 10 * value + d;
+        }
+        if (i == digits) {
+            throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+        }
+        if (i - digits > MOST_INDEX_DIGITS) {
+            value = Long.MAX_VALUE; // names nothing in any file; and 19 digits could overflow
+        }
+        index = negative ? -value : value;
+        return i;
+    }
+
+    /** The 0-based element that {@link #index}, written at b[from, to), names among {@code count} defined so far. */
+    private int resolve(int from, int to, int count, String what, String defined, String one)
+            throws SceneException {
+        if (index == 0) {
+            throw error(from, what + " index 0: indices start at 1 (or count back from -1)");
+        }
+        long zeroBased = index > 0 ? index - 1 : count + index;
+        if (zeroBased < 0 || zeroBased >= count) {
+            throw error(from, what + " index " + text(from, to) + " names nothing: " + count + " "
+                    + (count == 1 ? one : defined) + " defined so far");
+        }
+        return (int) zeroBased;
+    }
+
+    // ---- bytes and messages --------------------------------------------------------------------
+
+    private int skipBlanks(int i) {
+        while (i < end && (b[i] == ' ' || b[i] == '\t')) {
+            i++;
+        }
+        return i;
+    }
+
+    private int skipSeparators(int i) {
+        while (i < end && isSeparator(b[i])) {
+            i++;
+        }
+        return i;
+    }
+
+    /** Blanks, commas and parentheses separate numbers and references (digits fail the first test). */
+    private static boolean isSeparator(byte c) {
+        return c <= ',' && (c == ' ' || c == ',' || c == '\t' || c == '(' || c == ')');
+    }
+
+    /** The token at i: up to the next separator, at most 30 bytes. */
+    private String token(int i) {
+        int j = i;
+        while (j < end && j - i < 30 && !isSeparator(b[j])) {
+            j++;
+        }
+        return text(i, j);
+    }
+
+    private String text(int from, int to) {
+        return new String(b, from, to - from, StandardCharsets.UTF_8);
+    }
+
+    /** An error at byte index i of the current line. */
+    private SceneException error(int i, String problem) {
+        int column = text(lineStart, Math.min(i, end)).length() + 1;
+        return new SceneException(file(), source.lineNumber(), column, text(lineStart, end), problem);
+    }
+
+    private static String describe(IOException e) {
+        String m = e.getMessage();
+        return e.getClass().getSimpleName() + (m == null ? "" : ": " + m);
+    }
+}

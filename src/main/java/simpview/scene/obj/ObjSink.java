@@ -1,0 +1,25 @@
+package simpview.scene.obj;
+
+import simpview.scene.SceneException;
+
+/**
+ * Takes the faces of an .obj model one at a time, in file order, as they are
+ * read (or replayed from a kept {@link ObjModel}).
+ *
+ * <p>The {@link ObjFace} handed over is one reused view: it is valid only
+ * during the call and changes at the next face, so a sink copies out what it
+ * needs and never keeps the face itself.
+ */
+public interface ObjSink {
+
+    /** One face of three or more counter-clockwise vertices. */
+    void face(ObjFace face) throws SceneException;
+
+    /**
+     * Called now and then (every {@link ObjReader#PROGRESS_LINES} lines read,
+     * or as many faces replayed) with the obj line reached, so a sink can show
+     * progress or stop a long model by throwing.
+     */
+    default void progress(int line) throws SceneException {
+    }
+}

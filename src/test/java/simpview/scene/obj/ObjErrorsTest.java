@@ -1,0 +1,190 @@
+package simpview.scene.obj;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import simpview.scene.SceneException;
+
+/**
+ * Every error of the .obj subset: the obj file, line and column, the line as
+ * written and the problem. The model's last line is the bad one; a column is
+ * 1-based, and one past the line's end when something is missing there.
+ */
+class ObjErrorsTest {
+
+    private static final String TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+    private static SceneException fails(String text) {
+        byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
+        SceneException streamed = assertThrows(SceneException.class,
+                () -> ObjReader.stream(ObjReaderTest.NAME, bytes, face -> { }));
+        SceneException modelled = assertThrows(SceneException.class, () -> ObjModel.of(ObjReaderTest.NAME, bytes));
+        assertEquals(streamed.getMessage(), modelled.getMessage());
+        assertEquals(ObjReaderTest.NAME, streamed.file());
+        return streamed;
+    }
+
+    private static void assertError(String model, int line, int column, String problem) {
+        SceneException e = fails(model);
+        assertEquals(problem, e.problem(), "problem");
+        assertEquals(line, e.line(), "line");
+        assertEquals(column, e.column(), "column");
+        String[] lines = model.split("\n", -1);
+        assertEquals(lines[line - 1], e.lineText(), "line text");
+        assertTrue(e.getMessage().startsWith("model.obj:" + line + ":" + column + ": " + problem), e.getMessage());
+    }
+
+    private static final String V_TAKES = "wrong count of numbers: v takes 3, 4, 6 or 7 numbers"
+            + " (x y z, x y z w, x y z r g b or x y z w r g b), found ";
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "v|2|0",
+        "v 1|4|1",
+        "v 1 2|6|2",
+        "v 1 2 3 4 5|12|5",
+        "v (1, 2, 3, 4, 5)|18|5",
+    })
+    void aVertexOfAWrongCount(String line, int column, int found) {
+        assertError("v 0 0 0\n" + line, 2, column, V_TAKES + found);
+    }
+
+    @Test
+    void aVertexOfMoreThanSevenNumbers() {
+        assertError("v 1 2 3 4 5 6 7 8 9", 1, 17, V_TAKES + "more than 7");
+    }
+
+    @Test
+    void aNormalOfAWrongCount() {
+        assertError("vn 1 2", 1, 7, "wrong count of numbers: vn takes 3 numbers (x y z), found 2");
+        assertError("vn 1 2 3 4 5", 1, 10, "wrong count of numbers: vn takes 3 numbers (x y z), found 5");
+        assertError("VN", 1, 3, "wrong count of numbers: vn takes 3 numbers (x y z), found 0");
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "v 1 2 x|7|x",
+        "v 1 2 3.4.5|7|3.4.5",
+        "v 1 2 3x|7|3x",
+        "v NaN 1 2|3|NaN",
+        "v 1 Infinity 2|5|Infinity",
+        "v 1 2 0x10|7|0x10",
+        "vn 1 - 2|6|-",
+        "v 1 2 3 1 e 0 0|11|e",
+        "v 1 2 3 # a comment|9|#",
+    })
+    void aNumberThatDoesNotParse(String line, int column, String token) {
+        assertError(line, 1, column, "expected a number, found '" + token + "'");
+    }
+
+    @Test
+    void aNumberOutOfRange() {
+        assertError("v 1 2 1e999", 1, 7, "number out of range: '1e999'");
+        assertError("vn -1e400 0 0", 1, 4, "number out of range: '-1e400'");
+    }
+
+    @Test
+    void wOfZero() {
+        assertError("v 1 2 3 0", 1, 9, "w is 0: the point (x/w, y/w, z/w) is undefined");
+        assertError("v 1 2 3 -0.0 1 1 1", 1, 9, "w is 0: the point (x/w, y/w, z/w) is undefined");
+    }
+
+    @Test
+    void aPointThatWOverflows() {
+        assertError("v 1e300 1 1 1e-300", 1, 13, "the point (x/w, y/w, z/w) is out of range");
+    }
+
+    @Test
+    void aFaceOfFewerThanThreeVertices() {
+        assertError(TRIANGLE + "f 1 2", 4, 6, "a face takes at least 3 vertices, found 2");
+        assertError(TRIANGLE + "f 1", 4, 4, "a face takes at least 3 vertices, found 1");
+        assertError(TRIANGLE + "F", 4, 2, "a face takes at least 3 vertices, found 0");
+        assertError(TRIANGLE + "f (1, 2)  ", 4, 11, "a face takes at least 3 vertices, found 2");
+    }
+
+    @Test
+    void anIndexOfZero() {
+        assertError(TRIANGLE + "f 1 0 2", 4, 5, "vertex index 0: indices start at 1 (or count back from -1)");
+        assertError(TRIANGLE + "vn 0 0 1\nf 1//1 2//0 3//1", 5, 11,
+                "normal index 0: indices start at 1 (or count back from -1)");
+        assertError(TRIANGLE + "vt 0 0\nf 1/1 2/0 3/1", 5, 9,
+                "texture coordinate index 0: indices start at 1 (or count back from -1)");
+    }
+
+    @Test
+    void anIndexBeyondWhatIsDefinedSoFar() {
+        assertError(TRIANGLE + "f 1 2 4", 4, 7, "vertex index 4 names nothing: 3 vertices (v lines) defined so far");
+        assertError(TRIANGLE + "f 1 2 -4", 4, 7,
+                "vertex index -4 names nothing: 3 vertices (v lines) defined so far");
+        assertError("f 1 2 3\n" + TRIANGLE, 1, 3, "vertex index 1 names nothing: 0 vertices (v lines) defined so far");
+        assertError(TRIANGLE + "vn 0 0 1\nf 1//1 2//2 3//1", 5, 11,
+                "normal index 2 names nothing: 1 normal (vn line) defined so far");
+        assertError(TRIANGLE + "vn 0 0 1\nf 1//-2 2//1 3//1", 5, 6,
+                "normal index -2 names nothing: 1 normal (vn line) defined so far");
+        assertError(TRIANGLE + "f 1/1 2/1 3/1", 4, 5,
+                "texture coordinate index 1 names nothing: 0 texture coordinates (vt lines) defined so far");
+        assertError(TRIANGLE + "f 1 2 99999999999999999999", 4, 7,
+                "vertex index 99999999999999999999 names nothing: 3 vertices (v lines) defined so far");
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "f 1 2 x|7|x",
+        "f 1.5 2 3|3|1.5",
+        "f 1/ 2 3|3|1/",
+        "f 1// 2 3|3|1//",
+        "f 1/1/ 2 3|3|1/1/",
+        "f 1/1/1/1 2 3|3|1/1/1/1",
+        "f /1 2 3|3|/1",
+        "f 1 2 --3|7|--3",
+        "f 1 2 3a|7|3a",
+    })
+    void aReferenceThatDoesNotParse(String line, int column, String token) {
+        assertError(TRIANGLE + "vt 0 0\nvn 0 0 1\n" + line, 6, column,
+                "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found '" + token + "'");
+    }
+
+    @Test
+    void theColumnCountsCharactersNotBytes() {
+        assertError("vn \u00e9 1 2", 1, 4, "expected a number, found '\u00e9'");
+        assertError("# caf\u00e9\nv 1 \u00e9 2", 2, 5, "expected a number, found '\u00e9'");
+    }
+
+    @Test
+    void theMessageShowsTheLineAndPointsAtTheColumn() {
+        SceneException e = fails(TRIANGLE + "f 1 2 7");
+        assertEquals("model.obj:4:7: vertex index 7 names nothing: 3 vertices (v lines) defined so far\n"
+                + "    f 1 2 7\n"
+                + "          ^", e.getMessage());
+    }
+
+    @Test
+    void aMissingFileIsNamed(@TempDir Path dir) {
+        Path missing = dir.resolve("gone.obj");
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(missing, face -> { }));
+        assertEquals(missing, e.file());
+        assertTrue(e.problem().startsWith("cannot open the obj file: NoSuchFileException"), e.problem());
+    }
+
+    @Test
+    void aLineTooLongForMemoryIsAnError(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("long.obj");
+        StringBuilder text = new StringBuilder(TRIANGLE).append("f");
+        while (text.length() < (1 << 21)) {
+            text.append(" 1 2 3");
+        }
+        Files.writeString(file, text.append('\n'));
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(file, face -> { }));
+        assertEquals(4, e.line());
+        assertEquals("a line is longer than 1048576 bytes", e.problem());
+    }
+}
