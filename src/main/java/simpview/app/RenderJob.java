@@ -1,6 +1,7 @@
 package simpview.app;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import simpview.geometry.Matrix4;
@@ -14,6 +15,7 @@ import simpview.scene.SceneException;
 import simpview.surface.Provenance;
 import simpview.scene.simp.SceneCancelledException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 
 /**
@@ -145,10 +147,18 @@ final class RenderJob implements SceneMonitor {
 
     /** The scene files this picture read: what to watch for a save. */
     private List<Path> filesRead() {
+        Path top;
         if (view instanceof View.OfScene scene) {
-            return List.of(scene.file());
+            top = scene.file();
+        } else if (Pages.page(((View.OfPage) view).number()) instanceof ScenePage page) {
+            top = page.file(context);
+        } else {
+            return List.of();
         }
-        int number = ((View.OfPage) view).number();
-        return Pages.page(number) instanceof ScenePage page ? List.of(page.file(context)) : List.of();
+        List<Path> reached = new ArrayList<>(SceneRules.reached(top));
+        if (reached.isEmpty()) {
+            reached.add(top); // not there yet: watch for it to appear
+        }
+        return reached;
     }
 }

@@ -204,6 +204,22 @@ class InstrumentsWindowTest {
     }
 
     @Test
+    void editingAFileTheSceneIncludesRedrawsItToo() throws Exception {
+        Path part = dir.resolve("part.simp");
+        Files.writeString(part, triangleAt(-150));
+        Path scene = Files.writeString(dir.resolve("whole.simp"), "# includes part\nfile \"part\"\n");
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView before = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(java.util.List.of(scene, part), driver.onEdt(() -> window().watcher().watched()));
+        Files.writeString(part, triangleAt(-50));
+        long saved = System.nanoTime();
+        driver.awaitEdt(() -> window().shown().image().getRGB(375, 375) != before.image().getRGB(375, 375),
+                "the picture to change after the included file's save");
+        assertTrue((System.nanoTime() - saved) / 1_000_000 < 2000, "within 2 s");
+    }
+
+    @Test
     void ownColoursShowAScenesVertexColours() throws Exception {
         Path scene = Files.writeString(dir.resolve("red.simp"),
                 "polygon (-50, -50, -150) (1, 0, 0) (50, -50, -150) (1, 0, 0) (0, 50, -150) (1, 0, 0)\n");
