@@ -57,7 +57,7 @@ public final class Main {
             for (String word : unmatched.getUnmatched()) {
                 java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
                 known.addAll(commandLine.getSubcommands().keySet());
-                Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
+                simpview.scene.Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
             }
         }
         err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");

@@ -1,4 +1,4 @@
-package simpview.app;
+package simpview.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,16 +1,16 @@
-package simpview.app;
+package simpview.scene;
 
 import java.util.Collection;
 import java.util.Optional;
 
 /** The known word nearest to a mistyped one, for "did you mean ...?". */
-final class Nearest {
+public final class Nearest {
 
     private Nearest() {
     }
 
     /** The candidate within a few edits of {@code word} (fewest first; ignoring case counts as nearest), if any. */
-    static Optional<String> to(String word, Collection<String> candidates) {
+    public static Optional<String> to(String word, Collection<String> candidates) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         for (String candidate : candidates) {
@@ -25,7 +25,7 @@ final class Nearest {
     }
 
     /** Edits (insert, delete, replace, swap of neighbours) from a to b. */
-    static int distance(String a, String b) {
+    public static int distance(String a, String b) {
         int[][] d = new int[a.length() + 1][b.length() + 1];
         for (int i = 0; i <= a.length(); i++) {
             d[i][0] = i;
