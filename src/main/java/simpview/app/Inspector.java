@@ -82,4 +82,31 @@ final class Inspector {
         s = s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
         return s.equals("-0") ? "0" : s;
     }
+
+    /**
+     * The projected outline, in image coordinates, of the primitive that drew
+     * image pixel (ix, iy): what the magnifier draws over the pixels so the
+     * top-left rule and the DDA steps can be seen; null when none did.
+     */
+    static double[] outlineAt(RenderedView view, int ix, int iy) {
+        if (view == null || view.facts().owners() == null || !inPanel(ix, iy)) {
+            return null;
+        }
+        int owner = view.facts().owners()[panelY(iy) * PageCanvas.PANEL + panelX(ix)];
+        return owner < 0 || owner >= view.facts().primitives().size()
+                ? null : toImage(view.facts().primitives().outline(owner));
+    }
+
+    /** Panel points (x, y up) as image points (x, y down): a pixel centre stays a pixel centre. */
+    static double[] toImage(double[] panelPoints) {
+        if (panelPoints == null) {
+            return null;
+        }
+        double[] image = panelPoints.clone();
+        for (int k = 0; k + 1 < image.length; k += 2) {
+            image[k] = PageCanvas.MARGIN + image[k];
+            image[k + 1] = PageCanvas.MARGIN + PageCanvas.PANEL - image[k + 1];
+        }
+        return image;
+    }
 }

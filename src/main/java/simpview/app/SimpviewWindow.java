@@ -21,6 +21,7 @@ import javax.swing.JComponent;
 import javax.swing.JFrame;
 import javax.swing.KeyStroke;
 import simpview.app.view.Orbit;
+import simpview.app.view.PixelGrid;
 import simpview.app.view.PointerGestures;
 import simpview.app.view.WindowPlacement;
 import simpview.app.view.ZoomPan;
@@ -191,6 +192,9 @@ final class SimpviewWindow {
         String zoom = pageView.zoomPan().describe() + (depthView ? " · depth view" : "")
                 + (settings.ownColours() ? " · own colours" : "");
         status.inspect(pixel == null ? zoom : (pinnedX >= 0 ? "pinned · " : "") + pixel + " · " + zoom);
+        if (settings.stepLimit() < 0) {
+            pageView.outline(PixelGrid.shows(pageView.zoomPan()) ? Inspector.outlineAt(shown, x, y) : null);
+        }
     }
 
     private void togglePin() {
@@ -290,14 +294,7 @@ final class SimpviewWindow {
         }
         status.say("primitive " + limit + " of " + primitives.size() + ", " + primitives.describe(limit - 1)
                 + "   (] next · [ back · Shift: ten · \\ all)");
-        double[] outline = primitives.outline(limit - 1);
-        if (outline != null) {
-            for (int k = 0; k < outline.length; k += 2) {
-                outline[k] = PageCanvas.MARGIN + outline[k];
-                outline[k + 1] = PageCanvas.MARGIN + PageCanvas.PANEL - outline[k + 1];
-            }
-        }
-        pageView.outline(outline);
+        pageView.outline(Inspector.toImage(primitives.outline(limit - 1)));
     }
 
     /** Shows the picture, or its depths, of the finished view. */
