@@ -28,7 +28,6 @@ import simpview.app.view.ZoomPan;
 import simpview.pages.PageStepper;
 import simpview.pages.Pages;
 import simpview.pages.ScenePage;
-import simpview.surface.PageCanvas;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
