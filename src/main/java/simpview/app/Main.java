@@ -2,7 +2,10 @@ package simpview.app;
 
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import picocli.CommandLine;
+import simpview.pages.PageContext;
 
 /**
  * Entry point: {@code simpview} opens the window, {@code simpview render ...}
@@ -15,6 +18,8 @@ public final class Main {
     public static final int SCENE_ERROR = 1;
     public static final int USAGE_ERROR = 2;
     static final String VERSION = "simpview 1.0";
+    /** The whole argument line of {@code gradle run -PappArgs="..."}, split here as a shell would. */
+    static final String APP_ARGS = "simpview.appArgs";
 
     private Main() {
     }
@@ -22,8 +27,17 @@ public final class Main {
     public static void main(String[] args) {
         PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
         PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
+        OwnScenes.locate();
+        String[] line;
+        try {
+            line = withAppArgs(System.getProperty(APP_ARGS), args);
+        } catch (IllegalArgumentException e) {
+            err.println("simpview: -PappArgs: " + e.getMessage());
+            System.exit(USAGE_ERROR);
+            return;
+        }
         SimpviewCommand command = new SimpviewCommand(SimpviewCommand::displayMissing);
-        int code = execute(command, args, out, err);
+        int code = execute(command, line, out, err);
         // An open window keeps the program alive; it ends when the window closes.
         if (!command.openedWindow()) {
             System.exit(code);
@@ -35,12 +49,29 @@ public final class Main {
         return execute(new SimpviewCommand(SimpviewCommand::displayMissing), args, out, err);
     }
 
+    /**
+     * The arguments simpview runs with: those of -Dsimpview.appArgs (one line,
+     * split as a shell would, so quoted paths stay whole), then the program's own.
+     *
+     * @throws IllegalArgumentException when a quote of the line is never closed
+     */
+    static String[] withAppArgs(String appArgs, String[] args) {
+        if (appArgs == null) {
+            return args;
+        }
+        List<String> all = new ArrayList<>(ArgumentLine.split(appArgs));
+        all.addAll(List.of(args));
+        return all.toArray(String[]::new);
+    }
+
     static int execute(SimpviewCommand command, String[] args, PrintWriter out, PrintWriter err) {
         CommandLine commandLine = new CommandLine(command)
                 .setOut(out)
                 .setErr(err)
                 .setExecutionExceptionHandler(Main::reportUnexpected)
                 .setParameterExceptionHandler(Main::reportUsageError);
+        sayWhereTheScenesAre(commandLine);
+        sayWhereTheScenesAre(commandLine.getSubcommands().get("render"));
         // picocli's own exit code for invalid input is already USAGE_ERROR (2).
         int code = commandLine.execute(args);
         out.flush();
@@ -63,6 +94,17 @@ public final class Main {
         err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");
         err.flush();
         return USAGE_ERROR;
+    }
+
+    /** Ends --help with the scene folder the defaults really read, as an absolute path. */
+    private static void sayWhereTheScenesAre(CommandLine commandLine) {
+        String folder = PageContext.defaultSimpDir().toAbsolutePath().normalize().toString().replace("%", "%%");
+        List<String> footer = new ArrayList<>(List.of(commandLine.getCommandSpec().usageMessage().footer()));
+        footer.add("");
+        footer.add("Scene folder: " + folder);
+        footer.add("  pages 4 and 5 come from there; pages 6 to 8 too, unless --simp-dir D");
+        footer.add("  names the folder of the course's page6.simp to page8.simp.");
+        commandLine.getCommandSpec().usageMessage().footer(footer.toArray(String[]::new));
     }
 
     /**

@@ -60,7 +60,7 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
     private Long seed;
 
-    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
     private Path simpDir;
 
     @Option(names = "--out", paramLabel = "F.png", description = "the PNG to write (--page, --scene, --contact-sheet)")

@@ -32,7 +32,7 @@ final class SimpviewCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
     private long seed = PageContext.DEFAULT_SEED;
 
-    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
     private Path simpDir;
 
     @Parameters(arity = "0..1", paramLabel = "SCENE", description = "a .simp scene to open at start")

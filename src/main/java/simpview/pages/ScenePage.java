@@ -54,7 +54,7 @@ public final class ScenePage implements Page {
         if (!Files.isRegularFile(file)) {
             throw new SceneException(file, 0, 0, "", fileName + " was not found in "
                     + dir.toAbsolutePath().normalize()
-                    + (ownScene ? "" : "; put the course's scene files there or pass --simp-dir DIR"));
+                    + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
         Drawable target = context.ownColours() ? canvas.depthTested() : canvas.depthCued(near, Rgb.BLACK);
         SceneRenderer.draw(file, target, context.monitor());

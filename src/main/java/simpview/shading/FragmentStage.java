@@ -103,11 +103,12 @@ public final class FragmentStage implements FragmentSink {
                 shader.shade((v0[PX] + k * dv[PX]) * inv, (v0[PY] + k * dv[PY]) * inv, z,
                         (v0[NX] + k * dv[NX]) * inv, (v0[NY] + k * dv[NY]) * inv, (v0[NZ] + k * dv[NZ]) * inv,
                         r, g, b, lit);
-                r = lit[0];
-                g = lit[1];
-                b = lit[2];
+            } else {
+                lit[0] = r;
+                lit[1] = g;
+                lit[2] = b;
             }
-            panel.setPixel(x, y, z, fog.argb(z, r, g, b));
+            panel.setPixel(x, y, z, fogged(z));
         }
         if (wrote) {
             zbuffer.written();
@@ -132,15 +133,17 @@ public final class FragmentStage implements FragmentSink {
         double b = v[B] * inv;
         if (shader != null) {
             shader.shade(v[PX] * inv, v[PY] * inv, z, v[NX] * inv, v[NY] * inv, v[NZ] * inv, r, g, b, lit);
-            r = lit[0];
-            g = lit[1];
-            b = lit[2];
+        } else {
+            lit[0] = r;
+            lit[1] = g;
+            lit[2] = b;
         }
-        panel.setPixel(x, y, z, fog.argb(z, r, g, b));
+        panel.setPixel(x, y, z, fogged(z));
     }
 
-    /** Packs an unfogged colour, each channel in [0, 1]: used where fog is off. */
-    static int pack(double r, double g, double b) {
-        return Colors.pack(r, g, b);
+    /** The colour in {@link #lit}, fogged at depth z and packed: round(c * 255), once. */
+    private int fogged(double z) {
+        fog.apply(z, lit, 0);
+        return Colors.pack(lit[0], lit[1], lit[2]);
     }
 }

@@ -1,5 +1,6 @@
 package simpview.app;
 
+import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeFalse;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -11,8 +12,14 @@ final class Displays {
     private Displays() {
     }
 
-    /** Skips the test, saying why, unless there is an X server to open windows on. */
+    /**
+     * Skips the test, saying why, unless there is an X server to open windows
+     * on; under CI=true, where the tests run under xvfb-run, fails instead.
+     */
     static void assumeUsable() {
+        if ("true".equalsIgnoreCase(System.getenv("CI")) && GraphicsEnvironment.isHeadless()) {
+            fail("no display although CI=true: CI runs the tests under xvfb-run");
+        }
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
         String failure = null;
         try {

@@ -8,7 +8,9 @@ import javax.swing.SwingUtilities;
 /**
  * Measures how long the EDT keeps the window from answering: every 10 ms it
  * posts a task and records how late the EDT ran it. The largest delay is the
- * longest stall a user would have felt.
+ * longest stall a user would have felt. Beside it a control thread measures
+ * how late the machine itself runs a waiting thread, so that a test can tell
+ * a window that stalls from a machine that other builds keep busy.
  */
 final class EdtProbe implements AutoCloseable {
 
@@ -17,7 +19,10 @@ final class EdtProbe implements AutoCloseable {
         t.setDaemon(true);
         return t;
     });
+    /** A plain thread that sleeps 5 ms at a time: how late it wakes is how busy the machine is. */
+    private final Thread control = new Thread(this::measureScheduling, "edt-probe-control");
     private final long startNanos = System.nanoTime();
+    private volatile long maxLateNanos;
     private volatile long maxDelayNanos;
     private volatile long maxDelayAtNanos;
     private volatile long samples;
@@ -28,7 +33,32 @@ final class EdtProbe implements AutoCloseable {
     static EdtProbe start() {
         EdtProbe probe = new EdtProbe();
         probe.ticker.scheduleAtFixedRate(probe::post, 0, 10, TimeUnit.MILLISECONDS);
+        probe.control.setDaemon(true);
+        probe.control.start();
         return probe;
+    }
+
+    private void measureScheduling() {
+        while (true) {
+            long before = System.nanoTime();
+            try {
+                Thread.sleep(5);
+            } catch (InterruptedException e) {
+                return;
+            }
+            long late = System.nanoTime() - before - 5_000_000;
+            if (late > maxLateNanos) {
+                maxLateNanos = late; // only this thread writes it
+            }
+        }
+    }
+
+    /**
+     * The longest a plain thread of this process overslept while the probe ran:
+     * the part of an EDT stall that a busy machine, not the window, accounts for.
+     */
+    long maxSchedulingLateMillis() {
+        return maxLateNanos / 1_000_000;
     }
 
     private void post() {
@@ -61,5 +91,6 @@ final class EdtProbe implements AutoCloseable {
     @Override
     public void close() {
         ticker.shutdownNow();
+        control.interrupt();
     }
 }

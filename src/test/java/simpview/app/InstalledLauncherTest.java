@@ -2,7 +2,7 @@ package simpview.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -35,7 +35,7 @@ class InstalledLauncherTest {
     @BeforeAll
     static void findLauncher() {
         String home = System.getProperty("simpview.installDir");
-        assumeTrue(home != null, "simpview.installDir is not set: run the tests through Gradle, which installs simpview first");
+        assertNotNull(home, "simpview.installDir is not set: run the tests through Gradle, which installs simpview first");
         launcher = Path.of(home, "bin", "simpview");
         assertTrue(Files.isExecutable(launcher), "no start script at " + launcher);
     }

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.abort;
+import static org.junit.jupiter.api.Assertions.fail;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
@@ -69,8 +69,8 @@ class LargeSceneWindowTest {
         BufferedImage page1 = new PageRenderer().renderImage(1, PageContext.defaults().withSeed(SEED));
         String title = driver.onEdt(() -> window.frame().getTitle());
 
-        assumeMachineCanMeasureStalls();
         long stall;
+        long machine;
         String when;
         try (EdtProbe probe = EdtProbe.start()) {
             long probeStart = System.nanoTime();
@@ -79,20 +79,23 @@ class LargeSceneWindowTest {
             driver.awaitEdt(() -> !window.busy() || window.status().showingProgress() && window.linesReadSoFar() > 0,
                     "progress or the end of the scene");
             if (!driver.onEdt(window::busy)) {
-                skipBecauseNothingWasLeftToCancel(driver.onEdt(window::shown), (System.nanoTime() - opened) / 1_000_000);
+                failBecauseNothingWasLeftToCancel(driver.onEdt(window::shown), (System.nanoTime() - opened) / 1_000_000);
             }
             long progressAt = (System.nanoTime() - opened) / 1_000_000;
             Thread.sleep(800); // let it draw for a while, under the probe's watch
             assertTrue(driver.onEdt(window::busy), "still drawing when Cancel is pressed");
             // Measured before the click: Robot.waitForIdle holds up the EDT itself while it syncs with the X server.
             stall = probe.maxStallMillis();
+            machine = probe.maxSchedulingLateMillis();
             when = "starting " + probe.maxStallStartMillis() + " ms after the probe started; scene opened at "
                     + (opened - probeStart) / 1_000_000 + " ms, progress seen " + progressAt + " ms later";
             assertTrue(probe.samples() > 50, "the probe ran: " + probe.samples() + " samples");
         }
         driver.click(window.status().cancelButton());
         driver.awaitEdt(() -> !window.busy(), "the cancel to take");
-        assertTrue(stall < MAX_STALL_MS, "the EDT stalled for " + stall + " ms, " + when);
+        // A machine that keeps every thread waiting excuses that much of the stall, no more.
+        assertTrue(stall < MAX_STALL_MS + machine, "the EDT stalled for " + stall + " ms while a plain thread was"
+                + " at most " + machine + " ms late, " + when);
         // A bar left animating would wake the EDT every few milliseconds for as long as the window is open.
         assertFalse(driver.onEdt(() -> window.status().animating()), "the progress bar still animating after cancel");
 
@@ -107,27 +110,9 @@ class LargeSceneWindowTest {
         driver.awaitShown(new View.OfPage(2));
     }
 
-    /**
-     * Other builds may keep both cores busy; then even an idle EDT runs late
-     * and a stall says nothing about our window.
-     */
-    private static void assumeMachineCanMeasureStalls() throws InterruptedException {
-        try (EdtProbe idle = EdtProbe.start()) {
-            Thread.sleep(500);
-            if (idle.maxStallMillis() >= MAX_STALL_MS / 2) {
-                abort("the machine is too busy to measure stalls: the idle EDT already ran "
-                        + idle.maxStallMillis() + " ms late");
-            }
-        }
-    }
-
-    private static void skipBecauseNothingWasLeftToCancel(RenderedView shown, long millis) {
+    private static void failBecauseNothingWasLeftToCancel(RenderedView shown, long millis) {
         String error = shown.error();
-        if (error != null && error.contains("not yet available")) {
-            abort("the SIMP interpreter is still a placeholder (" + error.lines().findFirst().orElse("")
-                    + "); this test becomes meaningful once it lands");
-        }
-        abort("the scene was drawn in " + millis + " ms, before any progress showed: nothing left to cancel"
+        fail("the scene was drawn in " + millis + " ms, before any progress showed: nothing left to cancel"
                 + (error == null ? "" : "; it ended with: " + error));
     }
 }

@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -60,11 +58,8 @@ class MainCommandLineTest {
 
     @Test
     void allWritesEightFilesWhenEveryPageRenders() throws Exception {
+        TestScenes.requireCourseSimpDir();
         PageContext context = TestScenes.courseContext();
-        for (int n = 1; n <= Pages.COUNT; n++) {
-            String why = TestScenes.whyPageFails(n, context);
-            assumeTrue(why == null, "page " + n + " cannot render here yet: " + why);
-        }
         Path outDir = dir.resolve("pages");
         CliRun run = CliRun.of("render", "--all", "--simp-dir", TestScenes.courseSimpDir().toString(),
                 "--out-dir", outDir.toString());
@@ -163,7 +158,6 @@ class MainCommandLineTest {
         assertEquals(Main.SCENE_ERROR, run.exitCode());
         assertFalse(run.showsStackTrace(), run.err());
         assertTrue(run.err().contains("bad.simp"), run.err());
-        assumeFalse(run.err().contains("not yet available"), "the SIMP interpreter has not landed yet: " + run.err());
         assertTrue(run.err().contains(scene + ":3:1"), "file:line:col in " + run.err());
     }
 
@@ -179,9 +173,7 @@ class MainCommandLineTest {
 
     @Test
     void sceneOptionDrawsACourseSceneLikeItsPage() throws Exception {
-        Path course = TestScenes.courseSimpDir();
-        String why = TestScenes.whyPageFails(6, TestScenes.courseContext());
-        assumeTrue(why == null, "page 6 cannot render here yet: " + why);
+        Path course = TestScenes.requireCourseSimpDir();
         Path out = dir.resolve("scene.png");
         CliRun run = CliRun.of("render", "--scene", course.resolve("page6.simp").toString(), "--out", out.toString());
         assertEquals(Main.OK, run.exitCode(), run.err());

@@ -138,9 +138,7 @@ class SimpviewWindowTest {
         driver.press(KeyEvent.VK_6);
         RenderedView six = driver.awaitShown(new View.OfPage(6));
         assertTrue(six.error() != null && six.error().contains(bad.toString()), "names the file: " + six.error());
-        if (!six.error().contains("not yet available")) {
-            assertTrue(six.error().contains(bad + ":2:8"), "file:line:col of the bad axis: " + six.error());
-        }
+        assertTrue(six.error().contains(bad + ":2:8"), "file:line:col of the bad axis: " + six.error());
         // The overlay is on screen: the capture differs from the page as drawn, at the bottom only
         // (compared at 1:1; on a screen too small for it, the page is scaled and the overlay only checked to show).
         if (driver.onEdt(() -> driver.window().pageView().zoomPan().zoom()) == 1) {

@@ -8,6 +8,7 @@ import java.util.Locale;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
+import simpview.testing.CourseFiles;
 
 /** Scene folders and files the tests use. */
 final class TestScenes {
@@ -17,22 +18,17 @@ final class TestScenes {
 
     /** The course's page6.simp to page8.simp, as build.gradle passes them to the tests. */
     static Path courseSimpDir() {
-        return Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+        return CourseFiles.simpDir();
+    }
+
+    /** The course's scene folder; skips the test (fails it under CI=true) when it is absent. */
+    static Path requireCourseSimpDir() {
+        return CourseFiles.requireSimpDir();
     }
 
     /** A context with the default seed and the course's scenes. */
     static PageContext courseContext() {
         return PageContext.defaults().withSimpDir(courseSimpDir());
-    }
-
-    /** Why page n cannot render headless with this context, or null when it can. */
-    static String whyPageFails(int page, PageContext context) {
-        try {
-            new PageRenderer().render(page, context);
-            return null;
-        } catch (SceneException e) {
-            return e.getMessage();
-        }
     }
 
     /**

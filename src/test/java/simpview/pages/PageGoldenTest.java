@@ -2,7 +2,6 @@ package simpview.pages;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
 import java.util.stream.Stream;
@@ -11,6 +10,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.SceneException;
+import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
 import simpview.testing.Goldens;
 
@@ -42,8 +42,7 @@ class PageGoldenTest {
     @ParameterizedTest(name = "page {0}")
     @ValueSource(ints = {6, 7, 8})
     void theCourseScenesMatchTheirGoldens(int page) throws SceneException {
-        assumeTrue(GoldenCase.courseSimpDir() != null,
-                "the course's scene files are not beside the project (../shared/course-simp): pages 6-8 not checked");
+        CourseFiles.requireSimpDir();
         GoldenCase c = GoldenCase.coursePages().get(page - 6);
         Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
     }

@@ -27,7 +27,6 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.ShrinkingMode;
 import net.jqwik.api.Tuple;
-import net.jqwik.api.lifecycle.AddLifecycleHook;
 import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 import net.jqwik.api.lifecycle.BeforeTry;
@@ -41,7 +40,6 @@ import simpview.scene.SceneException;
  * Whatever the input, SceneRenderer.draw returns or throws a SceneException
  * with a sound location, within 2 seconds, without touching the margins.
  */
-@AddLifecycleHook(SceneHarness.InterpreterMerged.class)
 class SceneFuzzProperties {
 
     private static Path root;

@@ -134,32 +134,4 @@ final class SceneHarness {
             throw new UncheckedIOException(e);
         }
     }
-
-    /**
-     * Skips scene fuzzing while this branch still has the placeholder
-     * SceneRenderer (it fails every scene with "not yet available"): until the
-     * SIMP interpreter is merged there is nothing to fuzz.
-     */
-    public static final class InterpreterMerged implements SkipExecutionHook {
-        @Override
-        public SkipResult shouldBeSkipped(LifecycleContext context) {
-            Path dir = null;
-            try {
-                dir = Files.createTempDirectory("simp-probe");
-                Path empty = write(dir.resolve("empty.simp"), "# nothing\n");
-                SceneRenderer.draw(empty, new PageCanvas().panel(), SceneMonitor.NONE);
-                return SkipResult.doNotSkip();
-            } catch (SceneException e) {
-                if (e.problem() != null && e.problem().contains("not yet available")) {
-                    return SkipResult.skip("the SIMP interpreter is not merged into this branch yet: "
-                            + "SceneRenderer is still the placeholder (" + e.problem() + ")");
-                }
-                return SkipResult.doNotSkip();
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            } finally {
-                deleteTree(dir);
-            }
-        }
-    }
 }

@@ -1,6 +1,5 @@
 package simpview.testing;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -25,8 +24,7 @@ public record GoldenCase(String name, int page, long seed, Path simpDir) {
 
     /** The course's scene folder, or null when it is not beside the project. */
     public static Path courseSimpDir() {
-        String dir = System.getProperty("simpview.courseSimp");
-        return dir != null && Files.isDirectory(Path.of(dir)) ? Path.of(dir) : null;
+        return CourseFiles.present() ? CourseFiles.simpDir() : null;
     }
 
     /** Pages 1 to 3 at each seed. */

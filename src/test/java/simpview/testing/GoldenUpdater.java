@@ -33,6 +33,16 @@ public final class GoldenUpdater {
                 System.err.println("not remade, " + c.name() + ": " + e.getMessage());
             }
         }
+        for (LitGoldens.Case c : LitGoldens.all()) {
+            Path file = dir.resolve(c.name() + ".png");
+            try {
+                ImageIO.write(c.render(), "png", file.toFile());
+                System.out.println("wrote " + file);
+            } catch (SceneException e) {
+                failed++;
+                System.err.println("not remade, " + c.name() + ": " + e.getMessage());
+            }
+        }
         if (GoldenCase.courseSimpDir() == null) {
             System.out.println("course scenes not found beside the project: pages 6-8 were not remade");
         }

@@ -27,8 +27,10 @@ import simpview.scene.SceneException;
  * <p>Thread safe: one library may serve several drawing threads. The map is
  * guarded by this object's lock, held only to look up and to store; parsing
  * and replaying run outside it (two threads drawing the same new file may
- * both parse it). A change that keeps a file's size and its last-modified
- * time to the file system's resolution is not seen.
+ * both parse it). The file is looked at before it is read, so a change made
+ * while it is read is seen at the next draw; a change that keeps its size,
+ * its inode and its last-modified time (to the file system's resolution) is
+ * not seen.
  */
 public final class ObjLibrary {
 

@@ -3,6 +3,7 @@ package simpview.scene.obj;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Arrays;
 import simpview.scene.SceneException;
 import simpview.scene.simp.DecimalParser;
 import simpview.scene.simp.LineSource;
@@ -14,8 +15,9 @@ import simpview.scene.simp.LineSource;
  *
  * <p>Lines are split as SIMP lines are: blanks (spaces, tabs), commas and
  * parentheses all separate. The keyword (the first word, any case) decides:
- * {@code v}, {@code vn} and {@code f} are read, {@code vt} lines are only
- * counted (a face may name them), every other line is ignored.
+ * {@code v}, {@code vn} and {@code f} are read, every other line ({@code vt}
+ * included) is ignored; a face's texture index is read but names nothing to
+ * check.
  */
 final class ObjParser {
 
@@ -36,7 +38,6 @@ final class ObjParser {
     private ObjFaceList recorder;
     private int[] vertexRefs = new int[16];
     private int[] normalRefs = new int[16];
-    private int textureCount;
     private int faceCount;
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
@@ -138,8 +139,6 @@ final class ObjParser {
             int second = b[i + 1] | 0x20;
             if (second == 'n') {
                 normal(wordEnd);
-            } else if (second == 't') {
-                textureCount++;
             }
         }
     }
@@ -219,8 +218,8 @@ final class ObjParser {
         boolean anyNormal = false;
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == vertexRefs.length) {
-                vertexRefs = java.util.Arrays.copyOf(vertexRefs, 2 * n);
-                normalRefs = java.util.Arrays.copyOf(normalRefs, 2 * n);
+                vertexRefs = Arrays.copyOf(vertexRefs, 2 * n);
+                normalRefs = Arrays.copyOf(normalRefs, 2 * n);
             }
             int start = i;
             i = reference(i, n);
@@ -252,10 +251,7 @@ final class ObjParser {
         if (i < end && b[i] == '/') {
             i++;
             if (i >= end || b[i] != '/') {
-                int t = i;
-                i = index(i, start);
-                resolve(t, i, textureCount, "texture coordinate", "texture coordinates (vt lines)",
-                        "texture coordinate (vt line)");
+                i = index(i, start); // a texture index: vt lines are ignored, so it names nothing to check
                 if (i >= end || b[i] != '/') {
                     return i;
                 }

@@ -24,8 +24,10 @@ import simpview.scene.SceneException;
  * Blanks, commas and parentheses all separate numbers, as in SIMP files.
  * Any error is a {@link SceneException} naming the obj file, the line and
  * column, the line and what was expected: a wrong count of numbers, a number
- * that does not parse or is out of range, w = 0, an index that is 0 or names
- * nothing defined so far, a face of fewer than three vertices. Faces read
+ * that does not parse or is out of range, w = 0, a vertex or normal index
+ * that is 0 or names nothing defined so far (a texture index must be an
+ * integer, nothing more: vt lines are ignored), a face of fewer than three
+ * vertices. Faces read
  * before an error have already gone to the sink.
  */
 public final class ObjReader {

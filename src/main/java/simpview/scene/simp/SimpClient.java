@@ -313,10 +313,10 @@ public final class SimpClient {
     public List<String> warnings() {
         List<String> w = new ArrayList<>();
         if (firstClamped != null) {
-            w.add("colour channels outside 0 to 1 were clamped, first at " + firstClamped);
+            w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }
         if (firstIgnored != null) {
-            w.add("lit-scene commands were ignored in this depth-cued drawing, first at " + firstIgnored);
+            w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");
         }
         return w;
     }

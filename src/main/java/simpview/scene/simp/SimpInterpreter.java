@@ -121,11 +121,11 @@ public final class SimpInterpreter {
 
     private void finish(Path file, long linesRead, int openBraces, List<String> warnings) {
         monitor.linesRead(linesRead);
-        if (openBraces > 0) {
-            monitor.warning(file.getFileName() + ": " + openBraces + " '{' never closed by the end of the file");
-        }
         for (String w : warnings) {
             monitor.warning(w);
+        }
+        if (openBraces > 0) {
+            monitor.warning(file.getFileName() + ": " + openBraces + " '{' never closed by the end of the file");
         }
     }
 }

@@ -116,8 +116,16 @@ class ObjErrorsTest {
         assertError(TRIANGLE + "f 1 0 2", 4, 5, "vertex index 0: indices start at 1 (or count back from -1)");
         assertError(TRIANGLE + "vn 0 0 1\nf 1//1 2//0 3//1", 5, 11,
                 "normal index 0: indices start at 1 (or count back from -1)");
-        assertError(TRIANGLE + "vt 0 0\nf 1/1 2/0 3/1", 5, 9,
-                "texture coordinate index 0: indices start at 1 (or count back from -1)");
+    }
+
+    @Test
+    void textureIndicesNameNothingToCheck() throws SceneException {
+        // vt lines are ignored (SPEC), so the index between the slashes is read and passed over.
+        int[] faces = {0};
+        ObjReader.stream(ObjReaderTest.NAME, (TRIANGLE + "f 1/1 2/0 3/7\nvn 0 0 1\nf 1/9/1 2/-3/1 3//1\n")
+                .getBytes(StandardCharsets.UTF_8), face -> faces[0]++);
+        assertEquals(2, faces[0]);
+        assertError(TRIANGLE + "f 1/x 2 3", 4, 3, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found '1/x'");
     }
 
     @Test
@@ -130,8 +138,6 @@ class ObjErrorsTest {
                 "normal index 2 names nothing: 1 normal (vn line) defined so far");
         assertError(TRIANGLE + "vn 0 0 1\nf 1//-2 2//1 3//1", 5, 6,
                 "normal index -2 names nothing: 1 normal (vn line) defined so far");
-        assertError(TRIANGLE + "f 1/1 2/1 3/1", 4, 5,
-                "texture coordinate index 1 names nothing: 0 texture coordinates (vt lines) defined so far");
         assertError(TRIANGLE + "f 1 2 99999999999999999999", 4, 7,
                 "vertex index 99999999999999999999 names nothing: 3 vertices (v lines) defined so far");
     }

@@ -3,11 +3,10 @@ package simpview.scene.simp;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.Assumptions;
+import simpview.testing.CourseFiles;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.surface.PageCanvas;
@@ -17,10 +16,7 @@ import simpview.surface.Rgb;
 class CourseScenesTest {
 
     private static Path courseDir() {
-        String dir = System.getProperty("simpview.courseSimp");
-        Assumptions.assumeTrue(dir != null && Files.isDirectory(Path.of(dir)),
-                "the course's scene folder (system property simpview.courseSimp) is not here");
-        return Path.of(dir);
+        return CourseFiles.requireSimpDir();
     }
 
     @ParameterizedTest

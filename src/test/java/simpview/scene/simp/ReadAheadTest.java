@@ -48,6 +48,8 @@ class ReadAheadTest {
         final List<String> monitor = new ArrayList<>();
         Throwable ended;
         FileStack files = new FileStack();
+        /** Whether a reader thread was alive when the first primitive was drawn. */
+        boolean readerAtFirstPrimitive;
     }
 
     private Run run(Path top, long readAheadFrom, int cancelAtReport, IntPredicate throwAtPrimitive) {
@@ -86,11 +88,19 @@ class ReadAheadTest {
         if (throwAt.test(run.drawn.size())) {
             throw new IllegalStateException("renderer failed at " + run.drawn.size());
         }
+        if (run.drawn.isEmpty()) {
+            run.readerAtFirstPrimitive = readerThreadAlive();
+        }
         StringBuilder sb = new StringBuilder(kind);
         for (Vertex x : v) {
             sb.append(' ').append(x); // a record's toString shows every double exactly
         }
         run.drawn.add(sb.toString());
+    }
+
+    private static boolean readerThreadAlive() {
+        return Thread.getAllStackTraces().keySet().stream()
+                .anyMatch(t -> t.getName().startsWith("simp reader") && t.isAlive() && t != Thread.currentThread());
     }
 
     private static void assertNoReaderThread() {
@@ -147,6 +157,12 @@ class ReadAheadTest {
         Run ahead = run(top, ALWAYS, Integer.MAX_VALUE, k -> false);
         assertSameRun(serial, ahead);
         assertTrue(serial.drawn.size() > 2000, "drew " + serial.drawn.size());
+        // The scene has more commands than the reader's batches hold, so the
+        // reader cannot have finished before the first batch was drawn: it
+        // must be seen alive then, on its own thread, and only when reading ahead.
+        assertTrue(5000 > ReadAhead.BATCHES * PrimitiveBatch.CAPACITY);
+        assertTrue(ahead.readerAtFirstPrimitive, "no reader thread was running while the scene was drawn");
+        assertFalse(serial.readerAtFirstPrimitive, "a reader thread ran although reading ahead was off");
         assertTrue(serial.monitor.get(serial.monitor.size() - 1).startsWith("warning top.simp: "));
     }
 

@@ -1,0 +1,146 @@
+package simpview.geometry;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+/** The clipper against each plane of a camera, worked out by hand. */
+class ClipperTest {
+
+    private static final Camera EYE = Camera.perspective(-1, -1, 1, 1, -1, -100);
+    private final Clipper clipper = new Clipper(4);
+
+    /** A polygon of (x, y, z, a) vertices. */
+    private static double[] polygon(double... xyza) {
+        return xyza;
+    }
+
+    private int clip(Camera camera, double[] p) {
+        return clipper.clipPolygon(camera, p, 0, p.length / 4);
+    }
+
+    private double at(int vertex, int number) {
+        return clipper.vertices()[vertex * 4 + number];
+    }
+
+    /** Every vertex of the result lies inside every plane, up to rounding. */
+    private void assertInside(Camera camera, int n) {
+        for (int k = 0; k < n; k++) {
+            for (int plane = 0; plane < Camera.PLANES; plane++) {
+                double d = camera.distance(plane, at(k, 0), at(k, 1), at(k, 2));
+                assertTrue(d >= -1e-9, "vertex " + k + " outside plane " + plane + " by " + d);
+            }
+        }
+    }
+
+    @Test
+    void aTriangleInsideIsKeptAsItIs() {
+        double[] p = polygon(0, 0, -10, 1, 1, 0, -10, 2, 0, 1, -10, 3);
+        assertEquals(3, clip(EYE, p));
+        for (int i = 0; i < p.length; i++) {
+            assertEquals(p[i], clipper.vertices()[i]);
+        }
+    }
+
+    @Test
+    void theHitherPlaneCutsWithTheAttributeLerped() {
+        // One vertex in front of the near plane z = -1: the edges to it are cut at z = -1.
+        double[] p = polygon(0, 0, 1, 10, 0, 0, -3, 30, 0.5, 0, -3, 30);
+        int n = clip(EYE, p);
+        assertEquals(4, n);
+        assertInside(EYE, n);
+        // The walk starts from the last vertex: the first vertex out is replaced by two crossings.
+        assertEquals(-1, at(0, 2), 1e-12);
+        assertEquals(20, at(0, 3), 1e-12, "half way from 10 to 30, as z is half way from 1 to -3");
+    }
+
+    @Test
+    void theYonPlaneCuts() {
+        double[] p = polygon(0, 0, -50, 0, 0, 0, -150, 100, 1, 0, -50, 0);
+        int n = clip(EYE, p);
+        assertEquals(4, n);
+        for (int k = 0; k < n; k++) {
+            assertTrue(at(k, 2) >= -100 - 1e-9);
+        }
+        assertInside(EYE, n);
+    }
+
+    @Test
+    void eachSidePlaneCutsThroughTheEye() {
+        // A triangle at z = -10 whose one corner is beyond each side in turn: the window at z = -10 is +-10.
+        double[][] corners = {{-30, 0}, {30, 0}, {0, -30}, {0, 30}};
+        for (double[] c : corners) {
+            double[] p = polygon(c[0], c[1], -10, 0, 0.5, 0.5, -10, 0, -0.5, 0.5, -10, 0);
+            int n = clip(EYE, p);
+            assertEquals(4, n, "corner " + c[0] + "," + c[1]);
+            assertInside(EYE, n);
+        }
+    }
+
+    @Test
+    void aTriangleBehindTheEyeIsGone() {
+        double[] p = polygon(0, 0, 5, 0, 1, 0, 5, 0, 0, 1, 5, 0);
+        assertEquals(0, clip(EYE, p));
+    }
+
+    @Test
+    void aPolygonEnclosingTheEyeKeepsTheWholeNearWindow() {
+        // A huge square around the eye in the plane z = -1 - 1e-9 ... cut to the window's square.
+        double z = -2;
+        double[] p = polygon(-1000, -1000, z, 0, 1000, -1000, z, 0, 1000, 1000, z, 0, -1000, 1000, z, 0);
+        int n = clip(EYE, p);
+        assertEquals(4, n);
+        assertInside(EYE, n);
+        for (int k = 0; k < n; k++) {
+            assertEquals(2, Math.abs(at(k, 0)), 1e-9, "x on the window's side at z = -2");
+            assertEquals(2, Math.abs(at(k, 1)), 1e-9, "y on the window's side at z = -2");
+        }
+    }
+
+    @Test
+    void aTriangleThroughTheEyePlaneAndBothDepthPlanes() {
+        // pageB's kind: from in front of the eye to beyond the far plane.
+        double[] p = polygon(0.02, 0, 1, 0, 80, -40, -201, 0, 0, 80, -290, 0);
+        Camera wide = Camera.perspective(-1, -1, 1, 1, -0.1, -200);
+        int n = clipper.clipPolygon(wide, p, 0, 3);
+        assertTrue(n >= 3);
+        assertInside(wide, n);
+    }
+
+    @Test
+    void theParallelViewClipsToItsBox() {
+        double[] p = polygon(-150, 0, -100, 0, 150, 0, -100, 0, 0, 150, -100, 0);
+        int n = clip(Camera.PARALLEL, p);
+        assertInside(Camera.PARALLEL, n);
+        assertEquals(6, n, "cut by the left, the right and the top side: a hexagon");
+    }
+
+    @Test
+    void linesAreCutParametrically() {
+        double[] p = {0, 0, 1, 0, 0, 0, -3, 40};
+        assertTrue(clipper.clipLine(EYE, p, 0, 4));
+        assertEquals(-1, at(0, 2), 1e-12);
+        assertEquals(20, at(0, 3), 1e-12);
+        assertEquals(-3, at(1, 2));
+        assertEquals(40, at(1, 3));
+        assertFalse(clipper.clipLine(EYE, new double[] {0, 0, 1, 0, 0, 0, 2, 0}, 0, 4), "wholly behind the eye");
+        assertFalse(clipper.clipLine(EYE, new double[] {-50, 0, -10, 0, -20, 0, -10, 0}, 0, 4), "wholly left");
+    }
+
+    @Test
+    void aBigPolygonGrowsTheBuffers() {
+        int n = 40;
+        double[] p = new double[4 * n];
+        for (int k = 0; k < n; k++) {
+            double t = 2 * Math.PI * k / n;
+            p[4 * k] = 25 * Math.cos(t);
+            p[4 * k + 1] = 25 * Math.sin(t);
+            p[4 * k + 2] = -20;
+        }
+        int kept = clipper.clipPolygon(EYE, p, 0, n);
+        assertTrue(kept > 8, "the circle of radius 25 at z = -20 crosses the +-20 window on every side: " + kept);
+        assertInside(EYE, kept);
+    }
+}

@@ -1,0 +1,179 @@
+package simpview.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.SceneRules;
+import simpview.surface.PageCanvas;
+
+/** Lit scenes drawn end to end, checked against what the rules say by hand. */
+class LitScenesTest {
+
+    @TempDir
+    Path dir;
+
+    private Path write(String name, String... lines) throws IOException {
+        Path file = dir.resolve(name + ".simp");
+        Files.write(file, String.join("\n", lines).getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        return file;
+    }
+
+    private PageCanvas draw(String... lines) throws Exception {
+        PageCanvas canvas = new PageCanvas();
+        SceneRenderer.drawLit(write("s", lines), canvas, SceneMonitor.NONE);
+        return canvas;
+    }
+
+    private SceneException failure(String... lines) throws Exception {
+        Path file = write("bad", lines);
+        return assertThrows(SceneException.class,
+                () -> SceneRenderer.drawLit(file, new PageCanvas(), SceneMonitor.NONE));
+    }
+
+    private static int[] rgb(PageCanvas canvas, int x, int y) {
+        int p = canvas.panel().getPixel(x, y);
+        return new int[] {p >> 16 & 0xFF, p >> 8 & 0xFF, p & 0xFF};
+    }
+
+    @Test
+    void aRecedingQuadsColourMidpointIsWherePerspectivePutsIt() throws Exception {
+        // A floor at y = -1 from z = -2 (red) to z = -10 (blue), seen from the origin.
+        PageCanvas canvas = draw("ambient 1 1 1", "camera -1 -1 1 1 -1 -100",
+                "polygon (-1, -1, -2, 1, 0, 0) (1, -1, -2, 1, 0, 0) (1, -1, -10, 0, 0, 1)",
+                "polygon (-1, -1, -2, 1, 0, 0) (1, -1, -10, 0, 0, 1) (-1, -1, -10, 0, 0, 1)");
+        int best = -1;
+        int bestGap = 256;
+        for (int row = 0; row < 650; row++) {
+            int[] c = rgb(canvas, 325, row);
+            if (c[0] + c[2] > 0 && Math.abs(c[0] - c[2]) < bestGap) {
+                bestGap = Math.abs(c[0] - c[2]);
+                best = row;
+            }
+        }
+        // Half way in colour is half way in camera space: z = -6, y' = -1/6, panel y = (y' + 1) * 325.
+        double perspective = (-1.0 / 6 + 1) * 325;
+        double screenMidpoint = ((-0.5 + -0.1) / 2 + 1) * 325;
+        assertTrue(Math.abs(best + 0.5 - perspective) <= 1.5, "colour midpoint at row " + best + ", expected "
+                + perspective);
+        assertTrue(Math.abs(best - screenMidpoint) > 30, "not at the screen midpoint " + screenMidpoint);
+    }
+
+    @Test
+    void aWideWindowIsACentredBandOfItsAspect() throws Exception {
+        // pageH's window: twice as wide as high, so a 650x325 band in the middle of the panel.
+        PageCanvas canvas = draw("ambient 1 1 1", "camera -2 -1 2 1 -1 -100",
+                "polygon (-1000, -1000, -10) (1000, -1000, -10) (0, 1000, -10)",
+                "polygon (-1000, -1000, -10) (1000, 1000, -10) (-1000, 1000, -10)",
+                "polygon (1000, -1000, -10) (1000, 1000, -10) (-1000, 1000, -10)");
+        int lowest = 650;
+        int highest = -1;
+        for (int y = 0; y < 650; y++) {
+            for (int x = 0; x < 650; x++) {
+                if (rgb(canvas, x, y)[0] != 0) {
+                    lowest = Math.min(lowest, y);
+                    highest = Math.max(highest, y);
+                }
+            }
+            if (y > 170 && y < 480) {
+                assertEquals(255, rgb(canvas, 0, y)[0], "left column, row " + y);
+                assertEquals(255, rgb(canvas, 649, y)[0], "right column, row " + y);
+            }
+        }
+        // The band is y in [162.5, 487.5]: the rows whose centres are inside it, give or take its edges.
+        assertTrue(lowest >= 162 && lowest <= 163, "lowest row " + lowest);
+        assertTrue(highest >= 486 && highest <= 487, "highest row " + highest);
+    }
+
+    @Test
+    void fogAtNearFarAndHalfWay() throws Exception {
+        // Parallel view (no camera): red squares at z = -40, -100 and -160 in a blue fog from -50 to -150.
+        PageCanvas canvas = draw("ambient 1 1 1", "surface 1 0 0", "depth -50 -150 0 0 1",
+                "polygon (-90, -10, -40) (-70, -10, -40) (-70, 10, -40)",
+                "polygon (-10, -10, -100) (10, -10, -100) (10, 10, -100)",
+                "polygon (70, -10, -160) (90, -10, -160) (90, 10, -160)");
+        int y = 325 - 10;
+        assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, (int) ((-72 + 100) * 3.25), y)), "nearer than near");
+        assertEquals(java.util.List.of(128, 0, 128), list(rgb(canvas, (int) ((8 + 100) * 3.25), y)), "half way");
+        assertEquals(java.util.List.of(0, 0, 255), list(rgb(canvas, (int) ((88 + 100) * 3.25), y)), "farther than far");
+    }
+
+    private static java.util.List<Integer> list(int[] c) {
+        return java.util.List.of(c[0], c[1], c[2]);
+    }
+
+    @Test
+    void withoutLightsAFilledPolygonIsKdTimesAmbient() throws Exception {
+        PageCanvas canvas = draw("ambient 0.5 1 0.25", "surface 1 0.5 1",
+                "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)");
+        assertEquals(java.util.List.of(128, 128, 64), list(rgb(canvas, 325, 325)));
+    }
+
+    @Test
+    void wirePolygonsAndLinesCarryKdUnlit() throws Exception {
+        PageCanvas canvas = draw("ambient 0 0 0", "surface 0 1 0", "wire",
+                "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)", "line (-80, 80, -100) (80, 80, -100)");
+        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, 325, (int) (180 * 3.25))));
+        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, (int) (50 * 3.25), (int) (50 * 3.25))));
+    }
+
+    @Test
+    void aCameraInsideAClosedBoxSeesItsInside() throws Exception {
+        Files.copy(Path.of("simp/cube.simp"), dir.resolve("cube.simp"));
+        PageCanvas canvas = draw("ambient 1 1 1", "camera -1 -1 1 1 -0.1 -200",
+                "{", "scale 20 20 20", "translate -0.5 -0.5 -0.5", "file \"cube\"", "}");
+        int lit = 0;
+        for (int y = 0; y < 650; y += 13) {
+            for (int x = 0; x < 650; x += 13) {
+                lit += rgb(canvas, x, y)[0] > 0 ? 1 : 0;
+            }
+        }
+        assertEquals(50 * 50, lit, "every direction looks at a wall of the box");
+    }
+
+    @Test
+    void theCameraIsCheckedAtItsLine() throws Exception {
+        assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0",
+                failure("camera -1 -1 1 1 0 -200").problem());
+        assertTrue(failure("camera 1 -1 -1 1 -1 -200").problem().contains("xlow < xhigh"));
+        SceneException singular = failure("scale 1 0 1", "camera -1 -1 1 1 -1 -200");
+        assertEquals(2, singular.line());
+        assertTrue(singular.problem().contains("cannot be inverted"), singular.problem());
+        SceneException second = failure("camera -1 -1 1 1 -1 -200", "camera -1 -1 1 1 -1 -200");
+        assertEquals(2, second.line());
+        assertTrue(second.problem().contains("the first is at bad.simp:1"), second.problem());
+        SceneException late = failure("line (0 0 -5) (1 1 -5)", "camera -1 -1 1 1 -1 -200");
+        assertEquals(2, late.line());
+        assertTrue(late.problem().contains("bad.simp:1 drew one before it"), late.problem());
+    }
+
+    @Test
+    void litNumbersAreChecked() throws Exception {
+        assertTrue(failure("depth -100 -50 0 0 0").problem().contains("near > far"));
+        assertTrue(failure("depth -50 -50 0 0 0").problem().contains("near > far"));
+        assertTrue(failure("light 1 1 1 0 0").problem().contains("both 0"));
+        assertTrue(failure("light 1 -1 1 1 0").problem().contains("may not be negative"));
+        assertTrue(failure("ambient 0 0 -0.5").problem().contains("may not be negative"));
+        assertTrue(failure("surface 1 1 1 0.3 -8").problem().contains("may not be negative"));
+        SceneException e = failure("obj \"nothing\"");
+        assertTrue(e.problem().startsWith("file not found: nothing.obj; looked for "), e.problem());
+    }
+
+    @Test
+    void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
+        write("part", "ambient 1 1 1");
+        Path top = write("top", "# includes a lit part", "{", "file \"part\"", "}");
+        assertEquals(new SceneRules(true, "part.simp:1 ambient"), SceneRules.of(top));
+        Path plain = write("plain", "polygon (0 0 0) (1 0 0) (0 1 0)");
+        assertEquals(SceneRules.DEPTH_CUED, SceneRules.of(plain));
+        Path cycle = write("cycle", "file \"cycle\"");
+        assertEquals(SceneRules.DEPTH_CUED, SceneRules.of(cycle), "a cycle is left for the reader to report");
+    }
+}

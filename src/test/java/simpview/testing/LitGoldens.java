@@ -1,0 +1,60 @@
+package simpview.testing;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+
+/**
+ * The golden images of the course's lit scenes: every page of the third
+ * assignment (a3-pageA ... a3-tomsPageJ) and of the fourth (a4-page-a1 ...
+ * a4-page-h), drawn from ../shared/course-simp-a3 and course-simp-a4.
+ */
+public final class LitGoldens {
+
+    /** The scenes of each assignment that are pages (the others are parts they include). */
+    public static final List<String> A3 = List.of("pageA", "pageB", "pageC", "pageD", "pageE", "pageF", "pageG",
+            "pageH", "pageI", "tomsPageJ");
+    public static final List<String> A4 = List.of("page-a1", "page-a2", "page-a3", "page-b1", "page-b2", "page-b3",
+            "page-c1", "page-c2", "page-c3", "page-d", "page-e", "page-f1", "page-f2", "page-g", "page-h");
+
+    private LitGoldens() {
+    }
+
+    /** One golden: its name and its scene file. */
+    public record Case(String name, Path scene) {
+        @Override
+        public String toString() {
+            return name;
+        }
+
+        public BufferedImage render() throws SceneException {
+            PageCanvas canvas = new PageCanvas();
+            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+            return canvas.snapshot();
+        }
+    }
+
+    /** The cases of one folder ("course-simp-a3" with prefix "a3"), or none when it is absent. */
+    public static List<Case> cases(String folder, String prefix, List<String> scenes) {
+        Path dir = CourseFiles.folder(folder);
+        List<Case> cases = new ArrayList<>();
+        if (Files.isDirectory(dir)) {
+            for (String s : scenes) {
+                cases.add(new Case(prefix + "-" + s, dir.resolve(s + ".simp")));
+            }
+        }
+        return cases;
+    }
+
+    public static List<Case> all() {
+        List<Case> all = new ArrayList<>(cases("course-simp-a3", "a3", A3));
+        all.addAll(cases("course-simp-a4", "a4", A4));
+        return all;
+    }
+}
