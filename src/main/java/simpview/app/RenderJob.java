@@ -1,5 +1,7 @@
 package simpview.app;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -32,6 +34,9 @@ final class RenderJob implements SceneMonitor {
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private volatile long linesRead;
     private volatile boolean cancelled;
+    /** Files smaller than this are read before a progress bar shows: not counted. */
+    private static final long COUNT_FROM_BYTES = 1 << 20;
+    private volatile long topFileLines = -1;
     /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
     private PrimitiveLog trace;
 
@@ -63,6 +68,33 @@ final class RenderJob implements SceneMonitor {
 
     long linesSoFar() {
         return linesRead;
+    }
+
+    /** Lines of the scene's top file, once counted (for the progress bar's fraction), or -1. */
+    long linesInTopFile() {
+        return topFileLines;
+    }
+
+    /**
+     * Counts the top file's lines on a thread of its own, so that the
+     * progress bar can show a fraction; the drawing does not wait for it.
+     * Only for files big enough to show a progress bar at all.
+     */
+    void countLinesAhead() {
+        Path top = topFile();
+        if (top == null) {
+            return;
+        }
+        try {
+            if (Files.size(top) < COUNT_FROM_BYTES) {
+                return;
+            }
+        } catch (IOException | SecurityException e) {
+            return;
+        }
+        Thread counter = new Thread(() -> topFileLines = LineCount.of(top, () -> cancelled), "simpview-line-count");
+        counter.setDaemon(true);
+        counter.start();
     }
 
     void cancel() {
@@ -145,14 +177,18 @@ final class RenderJob implements SceneMonitor {
         return trace == null ? Primitives.NONE : Primitives.logged(trace);
     }
 
+    /** The scene file the view reads, or null for a page that is not a scene. */
+    private Path topFile() {
+        if (view instanceof View.OfScene scene) {
+            return scene.file();
+        }
+        return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
+    }
+
     /** The scene files this picture read: what to watch for a save. */
     private List<Path> filesRead() {
-        Path top;
-        if (view instanceof View.OfScene scene) {
-            top = scene.file();
-        } else if (Pages.page(((View.OfPage) view).number()) instanceof ScenePage page) {
-            top = page.file(context);
-        } else {
+        Path top = topFile();
+        if (top == null) {
             return List.of();
         }
         List<Path> reached = new ArrayList<>(SceneRules.reached(top));

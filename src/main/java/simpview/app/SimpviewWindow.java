@@ -365,6 +365,7 @@ final class SimpviewWindow {
         }
         pending = new RenderJob(view, options.pageContext(), settings);
         status.watch(pending);
+        pending.countLinesAhead();
         renderer.submit(pending, this::finished);
     }
 

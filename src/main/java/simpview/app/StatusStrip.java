@@ -88,6 +88,11 @@ final class StatusStrip {
         return text.getText();
     }
 
+    /** What the progress bar says, e.g. "12,000 of about 40,000 lines read (30 %)". */
+    String progressText() {
+        return bar.getString();
+    }
+
     boolean showingProgress() {
         return bar.isShowing();
     }
@@ -106,8 +111,18 @@ final class StatusStrip {
             return;
         }
         working.setText("Drawing " + describe(watched.view()) + "…");
-        bar.setString(String.format("%,d lines read", watched.linesSoFar()));
-        bar.setIndeterminate(true);
+        long lines = watched.linesSoFar();
+        long total = watched.linesInTopFile();
+        if (total > 0) {
+            // Lines of included files count too: a scene full of them can pass its top file's count.
+            int percent = (int) Math.min(99, 100 * lines / total);
+            bar.setIndeterminate(false);
+            bar.setValue(percent);
+            bar.setString(String.format("%,d of about %,d lines read (%d %%)", lines, total, percent));
+        } else {
+            bar.setString(String.format("%,d lines read", lines));
+            bar.setIndeterminate(true);
+        }
         cards.show(panel, PROGRESS);
     }
 

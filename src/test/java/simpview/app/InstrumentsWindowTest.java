@@ -285,6 +285,26 @@ class InstrumentsWindowTest {
                 "the whole picture again");
     }
 
+    @Test
+    void theProgressBarShowsAFractionOfAFileWhoseSizeIsKnown() throws Exception {
+        int lines = 40_000;
+        StringBuilder text = new StringBuilder();
+        for (int k = 0; k < lines; k++) {
+            text.append("line (-50, -50, -10) (50, 50, -10)\n");
+        }
+        Path scene = Files.writeString(dir.resolve("long.simp"), text);
+        assertTrue(Files.size(scene) > (1 << 20));
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()),
+                StandInDrawers.SLOW_READER);
+        driver.onEdt(() -> window().openScene(scene));
+        driver.awaitEdt(() -> window().status().showingProgress()
+                && window().status().progressText().contains("of about 40,000 lines read"),
+                "a fraction on the progress bar");
+        String said = driver.onEdt(() -> window().status().progressText());
+        assertTrue(said.matches("[0-9,]+ of about 40,000 lines read \\(\\d+ %\\)"), said);
+        driver.awaitShown(new View.OfScene(scene));
+    }
+
     private static String triangleAt(int z) {
         return "polygon (-60, -60, " + z + ") (60, -60, " + z + ") (0, 60, " + z + ")\n";
     }
