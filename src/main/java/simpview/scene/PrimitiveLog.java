@@ -12,8 +12,10 @@ import simpview.surface.Provenance;
  * line and projected outline, in primitive arrays (nothing allocated per
  * primitive but the arrays' growth); who drew each pixel, through the
  * canvas's {@link Provenance} record; and, when stepping, where the drawing
- * stops. Reads and drawings may come from two threads: the arrays are
- * guarded by the log's lock, and read by others only once the picture is done.
+ * stops. Reads and drawings may come from two threads: only the reading
+ * thread writes the arrays, and they are read by others once the picture is
+ * done (the hand-over of the finished picture orders the two), so no lock
+ * is taken per primitive.
  */
 public final class PrimitiveLog implements PrimitiveTrace {
 
@@ -41,12 +43,12 @@ public final class PrimitiveLog implements PrimitiveTrace {
     }
 
     @Override
-    public synchronized void read(int index, Path file, int line, int kind, double[] p) {
+    public void read(int index, Path file, int line, int kind, double[] p) {
         if (size == fileOf.length) {
             grow();
         }
         int last = files.size() - 1;
-        if (last < 0 || !files.get(last).equals(file)) {
+        if (last < 0 || files.get(last) != file && !files.get(last).equals(file)) {
             last = files.indexOf(file);
             if (last < 0) {
                 files.add(file);
@@ -85,24 +87,24 @@ public final class PrimitiveLog implements PrimitiveTrace {
     }
 
     /** Primitives read. */
-    public synchronized int size() {
+    public int size() {
         return size;
     }
 
-    public synchronized Path file(int primitive) {
+    public Path file(int primitive) {
         return files.get(fileOf[primitive]);
     }
 
-    public synchronized int line(int primitive) {
+    public int line(int primitive) {
         return lineOf[primitive];
     }
 
-    public synchronized int kind(int primitive) {
+    public int kind(int primitive) {
         return kindOf[primitive];
     }
 
     /** The primitive's projected vertices, panel x and y in turn (2 for a line, 3 for a triangle). */
-    public synchronized double[] outline(int primitive) {
+    public double[] outline(int primitive) {
         int vertices = kindOf[primitive] == LINE ? 2 : 3;
         return Arrays.copyOfRange(outlines, primitive * OUTLINE, primitive * OUTLINE + 2 * vertices);
     }
