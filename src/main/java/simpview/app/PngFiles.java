@@ -25,15 +25,20 @@ final class PngFiles {
      *     "cannot write out/x.png: permission denied"
      */
     static void write(BufferedImage image, Path file) throws IOException {
+        // Encoded in memory first: ImageIO's own file streams report a full
+        // disk as "I/O error writing PNG file!" and can fail again at exit.
+        writeEncoded(encode(image), file);
+    }
+
+    /** Writes a PNG already encoded (compare's diff images), with the same messages. */
+    static void writeEncoded(byte[] png, Path file) throws IOException {
         Path target = file.toAbsolutePath();
         try {
             Path parent = target.getParent();
             if (parent != null) {
                 Files.createDirectories(parent);
             }
-            // Encoded in memory first: ImageIO's own file streams report a full
-            // disk as "I/O error writing PNG file!" and can fail again at exit.
-            Files.write(target, encode(image));
+            Files.write(target, png);
         } catch (IOException e) {
             throw new IOException("cannot write " + file + ": " + reason(e, target), e);
         }

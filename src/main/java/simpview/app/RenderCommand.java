@@ -16,9 +16,9 @@ import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
+import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
@@ -31,6 +31,7 @@ import simpview.surface.Rgb;
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
             "  simpview render --scene house.simp --own-colors --out house.png",
+            "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
             "  simpview render --contact-sheet --out docs/pages.png"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
@@ -44,8 +45,12 @@ final class RenderCommand implements Callable<Integer> {
         @Option(names = "--all", required = true, description = "all eight pages, as page1.png ... page8.png")
         boolean all;
 
-        @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full depth-cued page")
+        @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full page: lit by its own rules, or depth-cued")
         Path scene;
+
+        @Option(names = "--scenes", arity = "1..*", paramLabel = "F|DIR", required = true,
+                description = "every scene named (a folder: its .simp files), each as NAME.png in --out-dir")
+        List<Path> scenes;
 
         @Option(names = "--contact-sheet", required = true, description = "the pages that render, side by side at half size")
         boolean contactSheet;
@@ -66,15 +71,15 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "F.png", description = "the PNG to write (--page, --scene, --contact-sheet)")
     private Path out;
 
-    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write page1.png ... page8.png to (--all)")
+    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write to (--all: page1.png ... page8.png; --scenes: NAME.png)")
     private Path outDir;
 
     @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = 0, channels 0 to 1 (--scene; default: 1,1,1)")
+            description = "depth cue colour at z = 0, channels 0 to 1 (depth-cued scenes; default: 1,1,1)")
     private Rgb near;
 
     @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = -200 (--scene; default: 0,0,0)")
+            description = "depth cue colour at z = -200 (depth-cued scenes; default: 0,0,0)")
     private Rgb far;
 
     @Option(names = {"--own-colors", "--own-colours"},
@@ -93,11 +98,18 @@ final class RenderCommand implements Callable<Integer> {
         if (what.scene != null) {
             return renderScene();
         }
+        if (what.scenes != null) {
+            return renderScenes();
+        }
         return renderContactSheet();
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
     private void checkOptions() {
+        if (what.scenes != null) {
+            checkScenes();
+            return;
+        }
         boolean pages = what.scene == null;
         usage(what.page == null || what.page >= 1 && what.page <= Pages.COUNT,
                 "--page must be 1 to " + Pages.COUNT + ", not " + what.page);
@@ -109,11 +121,32 @@ final class RenderCommand implements Callable<Integer> {
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+        String cue = pages ? null : SceneSheet.cueColoursProblem(what.scene, near, far);
+        usage(cue == null, cue);
         usage(!ownColours || !pages, "--own-colors goes with --scene only");
         usage(!ownColours || near == null && far == null,
                 "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
         usage(out == null || PngFiles.isPngName(out), "--out " + out + ": simpview writes PNG files only; name it .png");
     }
+
+    /** --scenes: the list must name scenes, and the pictures go to a folder. */
+    private void checkScenes() {
+        usage(outDir != null && !outDir.toString().isEmpty() && out == null,
+                "--scenes writes one picture per scene: give --out-dir D, not --out");
+        usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
+        try {
+            sceneList = SceneList.of(what.scenes);
+        } catch (IllegalArgumentException e) {
+            usage(false, e.getMessage());
+        }
+        for (Path scene : sceneList) {
+            String cue = SceneSheet.cueColoursProblem(scene, near, far);
+            usage(cue == null, cue);
+        }
+    }
+
+    /** The scenes of --scenes, once checked. */
+    private List<Path> sceneList;
 
     private void usage(boolean fine, String message) {
         if (!fine) {
@@ -123,7 +156,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private int renderPage(int number) {
         try {
-            return write(new PageRenderer().renderImage(number, context()), out);
+            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;
@@ -131,13 +164,13 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderAll() {
-        PageRenderer renderer = new PageRenderer();
+        PageDrawing drawing = new PageDrawing(monitor());
         PageContext context = context();
         int code = Main.OK;
         for (int n = 1; n <= Pages.COUNT; n++) {
             BufferedImage image;
             try {
-                image = renderer.renderImage(n, context);
+                image = drawing.page(n, context).image();
             } catch (SceneException e) {
                 err().println("page " + n + " not written: " + e.getMessage());
                 code = Main.SCENE_ERROR;
@@ -150,16 +183,33 @@ final class RenderCommand implements Callable<Integer> {
         return code;
     }
 
+    /** Each scene to NAME.png; one that fails is named on stderr and not written, the others are. */
+    private int renderScenes() {
+        PageDrawing drawing = new PageDrawing(monitor());
+        int code = Main.OK;
+        for (Path scene : sceneList) {
+            BufferedImage image;
+            try {
+                image = drawing.scene(scene, near, far).image();
+            } catch (SceneException e) {
+                err().println(scene.getFileName() + " not written: " + e.getMessage());
+                code = Main.SCENE_ERROR;
+                continue;
+            }
+            if (write(image, outDir.resolve(SceneList.pictureName(scene))) != Main.OK) {
+                return Main.SCENE_ERROR;
+            }
+        }
+        return code;
+    }
+
     private int renderScene() {
-        SceneSheet sheet = new SceneSheet(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
-        PageCanvas canvas = new PageCanvas();
         try {
-            sheet.drawOn(canvas, monitor(), SceneDrawer.SIMP, ownColours);
+            return write(new PageDrawing(monitor()).scene(what.scene, near, far, ownColours).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;
         }
-        return write(canvas.image(), out);
     }
 
     /** Pages that fail are left out and named on stderr; the sheet shows the rest. */

@@ -6,19 +6,27 @@ import java.io.File;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.Consumer;
 import javax.swing.TransferHandler;
 
-/** Opens a .simp file dropped on the window. */
+/** Opens a .simp file dropped on the window; a picture dropped is compared with the page (issue 15). */
 final class SceneDrop extends TransferHandler {
 
     private static final long serialVersionUID = 1L;
 
     private final transient Consumer<Path> open;
     private final transient Consumer<String> tell;
+    // compare (issue 15): pictures dropped go here; null when the window does not compare
+    private final transient Consumer<Path> compare;
 
     SceneDrop(Consumer<Path> open, Consumer<String> tell) {
+        this(open, null, tell);
+    }
+
+    SceneDrop(Consumer<Path> open, Consumer<Path> compare, Consumer<String> tell) {
         this.open = open;
+        this.compare = compare;
         this.tell = tell;
     }
 
@@ -44,8 +52,21 @@ final class SceneDrop extends TransferHandler {
                 open.accept(file.toPath());
                 return true;
             }
+            // compare (issue 15)
+            if (compare != null && item instanceof File file && isPicture(file.getName())) {
+                compare.accept(file.toPath());
+                return true;
+            }
         }
-        tell.accept("Drop a .simp file to open it.");
+        tell.accept(compare == null ? "Drop a .simp file to open it."
+                : "Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page.");
         return false;
+    }
+
+    // compare (issue 15)
+    private static boolean isPicture(String name) {
+        String lower = name.toLowerCase(Locale.ROOT);
+        return lower.endsWith(".png") || lower.endsWith(".jpg") || lower.endsWith(".jpeg")
+                || lower.endsWith(".gif") || lower.endsWith(".bmp");
     }
 }

@@ -19,6 +19,20 @@ record SceneSheet(Path file, Rgb near, Rgb far) {
         return new SceneSheet(file, Rgb.WHITE, Rgb.BLACK);
     }
 
+    /**
+     * Why depth-cue colours cannot be given for this scene, or null when they
+     * can: a lit scene has no depth cue, and the problem names the command
+     * that made it lit.
+     */
+    static String cueColoursProblem(Path scene, Rgb near, Rgb far) {
+        if (near == null && far == null) {
+            return null;
+        }
+        SceneRules rules = SceneRules.of(scene);
+        return rules.lit() ? "--near-color and --far-color are for depth-cued scenes, and " + scene.getFileName()
+                + " is lit (" + rules.reason() + ")" : null;
+    }
+
     /** Clears the canvas and draws the scene; on an error what was drawn stays. */
     void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer) throws SceneException {
         drawOn(canvas, monitor, drawer, false);

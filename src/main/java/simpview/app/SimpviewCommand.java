@@ -8,20 +8,21 @@ import java.util.concurrent.Callable;
 import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 import simpview.pages.PageContext;
 
 /** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = Main.VERSION,
-        subcommands = RenderCommand.class,
+        subcommands = {RenderCommand.class, CompareCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
-            "Use 'simpview render' to write pages as PNG files without a window."},
+            "Use 'simpview render' to write pages as PNG files without a window,",
+            "and 'simpview compare' to see how close a picture is to simpview's."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 final class SimpviewCommand implements Callable<Integer> {

@@ -53,6 +53,8 @@ final class SimpviewWindow {
     private WindowOptions options;
     private RenderedView shown;
     private RenderJob pending;
+    // compare (issue 15): a picture dropped or opened, compared with the view on screen
+    private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView, status::say);
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -82,7 +84,7 @@ final class SimpviewWindow {
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         frame.setResizable(true);
-        frame.setTransferHandler(new SceneDrop(this::openScene, status::say));
+        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, status::say)); // compare (issue 15)
         new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
@@ -172,6 +174,7 @@ final class SimpviewWindow {
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
         bindStroke("open", this::chooseScene, KeyStroke.getKeyStroke(KeyEvent.VK_O, menu));
+        comparison.bindKeys((name, action, stroke) -> bindStroke(name, action, KeyStroke.getKeyStroke(stroke))); // compare (issue 15)
         bindStroke("copy", this::copyInspected, KeyStroke.getKeyStroke(KeyEvent.VK_C, menu));
         bindStroke("quit", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_Q, menu));
         bindStroke("close", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_W, menu));
@@ -388,6 +391,7 @@ final class SimpviewWindow {
             status.say(orbit.describe());
         }
         showStep(result);
+        comparison.viewShown(result); // compare (issue 15)
     }
 
     /** Stops the picture being drawn; the one on screen stays, and so does its place among the pages. */
@@ -434,6 +438,11 @@ final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    // compare (issue 15)
+    ComparisonLayer comparison() {
+        return comparison;
     }
 
     RenderedView shown() {

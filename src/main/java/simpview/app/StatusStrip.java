@@ -93,6 +93,11 @@ final class StatusStrip {
         return bar.getString();
     }
 
+    /** The text shown (when no progress is). */
+    String text() {
+        return text.getText();
+    }
+
     boolean showingProgress() {
         return bar.isShowing();
     }

@@ -35,6 +35,17 @@ class SceneDropTest {
     }
 
     @Test
+    void aPictureDroppedIsCompared() {
+        List<Path> compared = new ArrayList<>();
+        SceneDrop comparing = new SceneDrop(opened::add, compared::add, told::add);
+        assertTrue(comparing.importData(support(files("notes.txt", "Mine.PNG"))));
+        assertEquals(List.of(Path.of("Mine.PNG")), compared);
+        assertFalse(comparing.importData(support(files("notes.txt"))));
+        assertEquals(List.of("Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page."), told);
+        assertFalse(drop.importData(support(files("mine.png"))), "a window that does not compare refuses pictures");
+    }
+
+    @Test
     void refusesWhatIsNotAFileList() {
         assertFalse(drop.canImport(support(new StringSelection("house.simp"))));
         assertFalse(drop.importData(support(new StringSelection("house.simp"))));

@@ -57,7 +57,6 @@ class CoursePicturesTest {
         double share = 100 * PanelAgreement.share(ours, theirs, tolerance, slack);
         String what = String.format(Locale.ROOT, "%s: %.2f %% within %d/255%s (measured %.2f %%)", scene, share,
                 tolerance, slack ? " with 1 px of slack" : "", measured);
-        System.out.println(what);
         assertTrue(share >= measured - (slack ? 0.1 : 0.5), what);
     }
 

@@ -53,8 +53,6 @@ class LitHarnessTest {
         java.awt.image.BufferedImage phong = ReferencePage.render(a4.resolve("page-b3.simp"));
         double flatGouraud = LitReferenceComparisonTest.agreement(flat, gouraud);
         double gouraudPhong = LitReferenceComparisonTest.agreement(gouraud, phong);
-        System.out.printf(Locale.ROOT, "page-b flat/gouraud %.4f %%, gouraud/phong %.4f %%%n", 100 * flatGouraud,
-                100 * gouraudPhong);
         assertTrue(flatGouraud < LitReferenceComparisonTest.REQUIRED, "flat passes for gouraud: " + flatGouraud);
         assertTrue(gouraudPhong < LitReferenceComparisonTest.REQUIRED, "gouraud passes for phong: " + gouraudPhong);
     }
@@ -71,7 +69,6 @@ class LitHarnessTest {
         for (int rgb : panel) {
             drawn += rgb != 0 ? 1 : 0;
         }
-        System.out.printf(Locale.ROOT, "random lit scene %d: %d pixels drawn, %.2f s%n", seed, drawn, seconds);
         assertTrue(drawn > 500, "seed " + seed + " drew only " + drawn + " pixels");
         assertTrue(seconds < 10, "seed " + seed + " took " + seconds + " s");
     }

@@ -167,6 +167,23 @@ class LitScenesTest {
     }
 
     @Test
+    void aColourOutsideZeroToOneIsClampedWithOneWarningNamingTheFirstLine() throws Exception {
+        java.util.List<String> warnings = new java.util.ArrayList<>();
+        SceneMonitor monitor = new SceneMonitor() {
+            @Override
+            public void warning(String message) {
+                warnings.add(message);
+            }
+        };
+        PageCanvas canvas = new PageCanvas();
+        SceneRenderer.drawLit(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
+                "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas, monitor);
+        assertEquals(java.util.List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                warnings);
+        assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
+    }
+
+    @Test
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");
         Path top = write("top", "# includes a lit part", "{", "file \"part\"", "}");

@@ -5,8 +5,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Arrays;
 import simpview.scene.SceneException;
-import simpview.scene.simp.DecimalParser;
-import simpview.scene.simp.LineSource;
+import simpview.scene.text.DecimalParser;
+import simpview.scene.text.LineSource;
 
 /**
  * Reads the lines of one .obj file straight from the bytes of its buffer (no

@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import simpview.scene.SceneException;
+import simpview.scene.text.LineSource;
 
 /**
  * The files being read, innermost on top: {@code file} pushes, the end of a

@@ -7,6 +7,8 @@ import simpview.geometry.Axis;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
 import simpview.scene.simp.Command.Shape;
+import simpview.scene.text.DecimalParser;
+import simpview.scene.text.LineSource;
 
 /**
  * Reads the commands of one SIMP file, line by line, straight from the bytes
@@ -90,7 +92,7 @@ public final class SimpReader implements AutoCloseable {
 
     /** The 1-based number of the line last read. */
     public int lineNumber() {
-        return source.lineNumber;
+        return source.lineNumber();
     }
 
     /** Physical lines read so far, blank and comment lines included. */
@@ -110,15 +112,15 @@ public final class SimpReader implements AutoCloseable {
         while (true) {
             if (!readLine()) {
                 if (recording != null) {
-                    recording.finish(source.lineNumber);
+                    recording.finish(source.lineNumber());
                 }
                 return false;
             }
-            int i = skipBlanks(source.lineStart);
+            int i = skipBlanks(source.lineStart());
             if (i < end && b[i] != '#') {
                 parse(i, into);
                 if (recording != null) {
-                    recording.add(into, source.lineNumber, source.lineStart, end);
+                    recording.add(into, source.lineNumber(), source.lineStart(), end);
                 }
                 return true;
             }
@@ -128,17 +130,16 @@ public final class SimpReader implements AutoCloseable {
     /** The next recorded command, standing where it stood: line number, line text and columns as when read. */
     private boolean replay(Command into) {
         if (replayed == recording.size()) {
-            source.lineNumber = recording.lines();
+            source.standOn(recording.lines(), source.lineStart(), source.lineEnd());
             linesRead = recording.lines();
             return false;
         }
         int k = replayed++;
         recording.get(k, into);
-        source.lineNumber = recording.place(k, 0);
-        source.lineStart = recording.place(k, 1);
+        source.standOn(recording.place(k, 0), recording.place(k, 1), recording.place(k, 2));
         end = recording.place(k, 2);
         b = source.buffer();
-        linesRead = source.lineNumber;
+        linesRead = source.lineNumber();
         return true;
     }
 
@@ -148,15 +149,15 @@ public final class SimpReader implements AutoCloseable {
                 return false;
             }
         } catch (LineSource.LineTooLongException e) {
-            throw new SceneException(file(), source.lineNumber + 1, 0, "", "line is too long (over "
+            throw new SceneException(file(), source.lineNumber() + 1, 0, "", "line is too long (over "
                     + LineSource.MAX_LINE + " bytes)");
         } catch (IOException e) {
-            throw new SceneException(file(), source.lineNumber, 0, "", "cannot read the file: " + describe(e));
+            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + describe(e));
         }
         linesRead++;
         b = source.buffer();
-        end = source.lineEnd;
-        if (source.lineNumber == 1) {
+        end = source.lineEnd();
+        if (source.lineNumber() == 1) {
             skipByteOrderMark();
         }
         return true;
@@ -164,9 +165,9 @@ public final class SimpReader implements AutoCloseable {
 
     /** A UTF-8 byte order mark is not part of the first line's text. */
     private void skipByteOrderMark() {
-        int s = source.lineStart;
+        int s = source.lineStart();
         if (end - s >= 3 && b[s] == (byte) 0xEF && b[s + 1] == (byte) 0xBB && b[s + 2] == (byte) 0xBF) {
-            source.lineStart += 3;
+            source.skipAtLineStart(3);
         }
     }
 
@@ -175,7 +176,7 @@ public final class SimpReader implements AutoCloseable {
         try {
             source.suspend();
         } catch (IOException e) {
-            throw new SceneException(file(), source.lineNumber, 0, "", "cannot close the file: " + describe(e));
+            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot close the file: " + describe(e));
         }
     }
 
@@ -406,13 +407,13 @@ public final class SimpReader implements AutoCloseable {
 
     /** The current line, as written. */
     public String lineText() {
-        return source.suspended() ? "" : text(source.lineStart, end);
+        return source.suspended() ? "" : text(source.lineStart(), end);
     }
 
     /** An error at byte index i of the current line. */
     SceneException error(int i, String problem) {
-        int column = text(source.lineStart, Math.min(i, end)).length() + 1;
-        return new SceneException(file(), source.lineNumber, column, lineText(), problem);
+        int column = text(source.lineStart(), Math.min(i, end)).length() + 1;
+        return new SceneException(file(), source.lineNumber(), column, lineText(), problem);
     }
 
     private static String describe(IOException e) {

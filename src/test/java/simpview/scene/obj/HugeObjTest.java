@@ -52,7 +52,6 @@ class HugeObjTest {
         List<String> lines = output.lines().toList();
         assertEquals("streamed " + FACES + " faces, sum " + sum, lines.get(0), output);
         assertEquals("library " + FACES + " faces, sum " + sum + ", parsed 1, kept 0", lines.get(1), output);
-        System.out.println("HugeObjTest: " + lines.get(2));
     }
 
     /** Vertex k (0-based) is (k % 1000, k / 1000, k % 7); face j is vertices a, a+1, a+2 with a = j % (V - 2). */

@@ -1,4 +1,4 @@
-package simpview.scene.simp;
+package simpview.scene.text;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

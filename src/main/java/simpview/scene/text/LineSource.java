@@ -1,4 +1,4 @@
-package simpview.scene.simp;
+package simpview.scene.text;
 
 import java.io.IOException;
 import java.lang.invoke.MethodHandles;
@@ -26,7 +26,7 @@ import simpview.scene.SceneException;
  */
 public final class LineSource {
 
-    static final int CHUNK = 64 * 1024;
+    public static final int CHUNK = 64 * 1024;
     /** Eight bytes of a byte[] read as one long, so the line break is looked for eight bytes at a time. */
     private static final VarHandle LONGS = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.LITTLE_ENDIAN);
     private static final long NEWLINES = 0x0A0A0A0A0A0A0A0AL;
@@ -92,6 +92,21 @@ public final class LineSource {
     }
 
     /** The 1-based number of the current line. */
+    /**
+     * Puts the reader back on a line it read before (a replayed command of a
+     * file kept in memory): its number and where it starts in the buffer.
+     */
+    public void standOn(int number, int start, int end) {
+        lineNumber = number;
+        lineStart = start;
+        lineEnd = end;
+    }
+
+    /** The line starts {@code n} bytes later (a byte order mark is not part of its text). */
+    public void skipAtLineStart(int n) {
+        lineStart += n;
+    }
+
     public int lineNumber() {
         return lineNumber;
     }
@@ -130,7 +145,7 @@ public final class LineSource {
      * zero byte where b has '\n'; (x - ONES) & ~x sets the high bit of the
      * first zero byte (later bytes may get false ones, the first is exact).
      */
-    static int indexOfNewline(byte[] b, int from, int to) {
+    public static int indexOfNewline(byte[] b, int from, int to) {
         int i = from;
         for (; i + Long.BYTES <= to; i += Long.BYTES) {
             long x = (long) LONGS.get(b, i) ^ NEWLINES;
@@ -182,7 +197,7 @@ public final class LineSource {
     }
 
     /** Lets go of the file (not of the place in it); the next line reopens it. */
-    void suspend() throws IOException {
+    public void suspend() throws IOException {
         if (!fileBacked || buf == null) {
             return;
         }
@@ -191,11 +206,11 @@ public final class LineSource {
         closeChannel();
     }
 
-    boolean holdsFile() {
+    public boolean holdsFile() {
         return channel != null;
     }
 
-    boolean suspended() {
+    public boolean suspended() {
         return buf == null;
     }
 

@@ -1,4 +1,4 @@
-package simpview.scene.simp;
+package simpview.scene.text;
 
 import java.nio.charset.StandardCharsets;
 

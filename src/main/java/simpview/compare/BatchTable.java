@@ -1,0 +1,81 @@
+package simpview.compare;
+
+import java.util.List;
+
+/** A batch's rows as a Markdown table and as CSV, one row per submitted picture. */
+public final class BatchTable {
+
+    private static final String[] HEADINGS = {"file", "page", "identical", "within 1/255", "within 8/255",
+        "identical (slack)", "within 1/255 (slack)", "within 8/255 (slack)", "result", "margins", "diff", "note"};
+
+    private BatchTable() {
+    }
+
+    public static String markdown(List<BatchRow> rows, int tolerance, double minimum) {
+        StringBuilder out = new StringBuilder();
+        out.append(String.format("Shares of panel pixels in percent; the result is on the share within %d/255 with "
+                + "one pixel of slack, %s needed.%n%n", tolerance, Percent.of(minimum / 100)));
+        out.append('|');
+        for (String heading : HEADINGS) {
+            out.append(' ').append(heading).append(" |");
+        }
+        out.append("\n|");
+        for (int i = 0; i < HEADINGS.length; i++) {
+            out.append(i >= 2 && i <= 7 ? "---:|" : "---|");
+        }
+        out.append('\n');
+        for (BatchRow row : rows) {
+            out.append('|');
+            for (String cell : cells(row, true)) {
+                String oneLine = cell.replace("\r", "").replace("\n", " / ");
+                out.append(' ').append(oneLine.replace("|", "\\|")).append(" |");
+            }
+            out.append('\n');
+        }
+        out.append('\n').append(summary(rows)).append('\n');
+        return out.toString();
+    }
+
+    public static String csv(List<BatchRow> rows) {
+        StringBuilder out = new StringBuilder();
+        out.append(String.join(",", HEADINGS)).append("\r\n");
+        for (BatchRow row : rows) {
+            List<String> cells = cells(row, false);
+            for (int i = 0; i < cells.size(); i++) {
+                out.append(i == 0 ? "" : ",").append(quoted(cells.get(i)));
+            }
+            out.append("\r\n");
+        }
+        return out.toString();
+    }
+
+    /** E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped". */
+    public static String summary(List<BatchRow> rows) {
+        long[] counts = new long[BatchRow.Result.values().length];
+        for (BatchRow row : rows) {
+            counts[row.result().ordinal()]++;
+        }
+        return String.format("%d pictures: %d pass, %d fail, %d could not be compared, %d skipped",
+                rows.size(), counts[0], counts[1], counts[2], counts[3]);
+    }
+
+    private static List<String> cells(BatchRow row, boolean markdown) {
+        boolean shares = row.exact() != null;
+        String diff = row.diff().isEmpty() || !markdown ? row.diff() : "[diff](" + row.diff().replace(" ", "%20") + ")";
+        return List.of(row.file(), row.target(),
+                shares ? Percent.number(row.exact().identical()) : "",
+                shares ? Percent.number(row.exact().within1()) : "",
+                shares ? Percent.number(row.exact().within8()) : "",
+                shares ? Percent.number(row.slack().identical()) : "",
+                shares ? Percent.number(row.slack().within1()) : "",
+                shares ? Percent.number(row.slack().within8()) : "",
+                row.result().name(), row.margins(), diff, row.note());
+    }
+
+    private static String quoted(String cell) {
+        if (cell.contains(",") || cell.contains("\"") || cell.contains("\n") || cell.contains("\r")) {
+            return "\"" + cell.replace("\"", "\"\"") + "\"";
+        }
+        return cell;
+    }
+}

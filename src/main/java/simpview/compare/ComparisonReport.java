@@ -1,0 +1,73 @@
+package simpview.compare;
+
+import java.util.List;
+
+/**
+ * The outcome of comparing a picture with simpview's own, and the readable
+ * report of it.
+ *
+ * @param theirs the picture compared
+ * @param against what simpview drew, e.g. "page 6 (seed 361)"
+ * @param comparison the two panels compared
+ * @param margins the picture's margins
+ * @param regions the patches that differ beyond the tolerance even with slack
+ * @param tolerance the tolerance the verdict uses, in 1/255 steps (with slack)
+ * @param minimum the share, in percent, that passes
+ */
+public record ComparisonReport(Picture theirs, String against, Comparison comparison, Margins margins,
+        DiffRegions.Found regions, int tolerance, double minimum) {
+
+    /** How many of the largest patches a report lists. */
+    public static final int REGIONS_LISTED = 5;
+
+    public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
+        return new ComparisonReport(theirs, against, comparison, theirs.margins(tolerance),
+                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum);
+    }
+
+    /** The share the verdict is on: within the tolerance, with one pixel of slack. */
+    public double verdictShare() {
+        return comparison.share(tolerance, true);
+    }
+
+    public boolean passes() {
+        return verdictShare() * 100 >= minimum - 1e-9;
+    }
+
+    public String text() {
+        StringBuilder out = new StringBuilder();
+        out.append(theirs.name()).append(" against simpview's ").append(against).append('\n');
+        out.append("panel:   ").append(theirs.place().describe()).append('\n');
+        out.append("margins: ").append(margins.describe()).append('\n');
+        Shares exact = comparison.exact();
+        Shares slack = comparison.withSlack();
+        out.append(String.format("%-22s%12s%18s%n", "panel pixels", "exactly", "with 1 px slack"));
+        appendRow(out, "identical", exact.identical(), slack.identical());
+        appendRow(out, "within 1/255", exact.within1(), slack.within1());
+        appendRow(out, "within 8/255", exact.within8(), slack.within8());
+        if (tolerance != 0 && tolerance != 1 && tolerance != 8) {
+            appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());
+        }
+        appendRegions(out);
+        out.append(String.format("%s: %s within %d/255 with slack (%s needed)%n", passes() ? "PASS" : "FAIL",
+                Percent.of(verdictShare()), tolerance, Percent.of(minimum / 100)));
+        return out.toString();
+    }
+
+    private static void appendRow(StringBuilder out, String label, double exactShare, double slackShare) {
+        out.append(String.format("%-22s%12s%18s%n", label, Percent.of(exactShare), Percent.of(slackShare)));
+    }
+
+    private void appendRegions(StringBuilder out) {
+        List<DiffRegion> largest = regions.largest();
+        if (largest.isEmpty()) {
+            out.append("no pixel differs by more than ").append(tolerance).append("/255 with slack\n");
+            return;
+        }
+        out.append(String.format("%,d pixels in %,d patches differ by more than %d/255 even with slack; the largest%n"
+                + "(panel pixels: origin bottom-left, x right, y up):%n", regions.pixels(), regions.count(), tolerance));
+        for (int k = 0; k < largest.size(); k++) {
+            out.append("  ").append(k + 1).append(". ").append(largest.get(k).describe()).append('\n');
+        }
+    }
+}

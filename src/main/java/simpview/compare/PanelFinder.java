@@ -1,0 +1,150 @@
+package simpview.compare;
+
+/**
+ * Finds the 650x650 panel in a picture: a square whose one-pixel frame just
+ * outside it is white (the margins) while its own outermost pixels are mostly
+ * not (the black panel, whatever is drawn on it). The panel's content is
+ * never looked at, so a page that is mostly white inside still is found by
+ * its frame. A 750x750 picture is a page: its panel is at (50, 50) unless its
+ * frame says clearly otherwise.
+ */
+final class PanelFinder {
+
+    static final int PAGE = 750;
+    static final int PAGE_MARGIN = 50;
+    /** A channel at least this bright counts as white (JPEG captures are not exactly 255). */
+    private static final int WHITE_LEVEL = 200;
+    /** Each side of the frame outside the panel must be at least this white. */
+    private static final double FRAME_WHITE = 0.9;
+    /** The panel's own outermost pixels must be at least this much not white. */
+    private static final double BORDER_DARK = 0.25;
+
+    private final int[] rgb;
+    private final int width;
+    private final int height;
+    /** rowWhite[y * (width + 1) + x]: white pixels in row y left of column x; null until a search needs it. */
+    private int[] rowWhite;
+    /** colWhite[y * width + x]: white pixels in column x above row y (row-major, so it fills in order). */
+    private int[] colWhite;
+
+    private PanelFinder(int[] rgb, int width, int height) {
+        this.rgb = rgb;
+        this.width = width;
+        this.height = height;
+    }
+
+    /** Counts of white pixels along every row and column, so that a search tries each place in constant time. */
+    private void countWhite() {
+        rowWhite = new int[height * (width + 1)];
+        colWhite = new int[(height + 1) * width];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int white = isWhite(rgb[y * width + x]) ? 1 : 0;
+                rowWhite[y * (width + 1) + x + 1] = rowWhite[y * (width + 1) + x] + white;
+                colWhite[(y + 1) * width + x] = colWhite[y * width + x] + white;
+            }
+        }
+    }
+
+    /** The panel's place in a picture of {@code rgb} pixels (row by row), or a clear refusal. */
+    static PanelPlace find(int[] rgb, int width, int height, String name) throws CompareException {
+        int size = PanelPlace.SIZE;
+        if (width < size || height < size) {
+            throw new CompareException(name + " is " + width + "x" + height
+                    + ": too small to hold the 650x650 panel (a page is 750x750)");
+        }
+        if (width == size && height == size) {
+            return new PanelPlace(0, 0, "the whole 650x650 picture is the panel");
+        }
+        PanelFinder finder = new PanelFinder(rgb, width, height);
+        if (width == PAGE && height == PAGE) {
+            if (finder.score(PAGE_MARGIN, PAGE_MARGIN) >= 0) {
+                return new PanelPlace(PAGE_MARGIN, PAGE_MARGIN, "a 750x750 page");
+            }
+            PanelPlace found = finder.search();
+            return found != null ? new PanelPlace(found.left(), found.top(),
+                    "a 750x750 page, but its panel's white frame is here, not at x 50, y 50")
+                    : new PanelPlace(PAGE_MARGIN, PAGE_MARGIN, "a 750x750 page; no white frame around its panel");
+        }
+        PanelPlace found = finder.search();
+        if (found == null) {
+            throw new CompareException("no 650x650 panel found in " + name + " (" + width + "x" + height
+                    + "): looked for a square with white margins around it and a dark edge inside");
+        }
+        return new PanelPlace(found.left(), found.top(), "found in a " + width + "x" + height + " picture");
+    }
+
+    /** The best place that qualifies, or null. */
+    private PanelPlace search() {
+        countWhite();
+        int size = PanelPlace.SIZE;
+        int bestScore = -1;
+        PanelPlace best = null;
+        for (int top = 1; top + size < height; top++) {
+            for (int left = 1; left + size < width; left++) {
+                int score = score(left, top);
+                if (score > bestScore) {
+                    bestScore = score;
+                    best = new PanelPlace(left, top, "");
+                }
+            }
+        }
+        return best;
+    }
+
+    /**
+     * White pixels of the frame outside plus dark pixels of the border inside,
+     * or -1 when some side of the frame is not white enough or the border is
+     * not dark enough (or the frame does not fit in the picture).
+     */
+    private int score(int left, int top) {
+        int size = PanelPlace.SIZE;
+        int right = left + size;
+        int bottom = top + size;
+        if (left < 1 || top < 1 || right >= width || bottom >= height) {
+            return -1;
+        }
+        int need = (int) Math.ceil(FRAME_WHITE * size);
+        int above = row(top - 1, left, right);
+        int below = row(bottom, left, right);
+        int before = column(left - 1, top, bottom);
+        int after = column(right, top, bottom);
+        if (above < need || below < need || before < need || after < need) {
+            return -1;
+        }
+        int borderWhite = row(top, left, right) + row(bottom - 1, left, right)
+                + column(left, top + 1, bottom - 1) + column(right - 1, top + 1, bottom - 1);
+        int border = 4 * size - 4;
+        int dark = border - borderWhite;
+        if (dark < BORDER_DARK * border) {
+            return -1;
+        }
+        return above + below + before + after + dark;
+    }
+
+    private int row(int y, int from, int to) {
+        if (rowWhite != null) {
+            return rowWhite[y * (width + 1) + to] - rowWhite[y * (width + 1) + from];
+        }
+        int white = 0;
+        for (int x = from; x < to; x++) {
+            white += isWhite(rgb[y * width + x]) ? 1 : 0;
+        }
+        return white;
+    }
+
+    private int column(int x, int from, int to) {
+        if (colWhite != null) {
+            return colWhite[to * width + x] - colWhite[from * width + x];
+        }
+        int white = 0;
+        for (int y = from; y < to; y++) {
+            white += isWhite(rgb[y * width + x]) ? 1 : 0;
+        }
+        return white;
+    }
+
+    static boolean isWhite(int rgb) {
+        return (rgb >> 16 & 0xFF) >= WHITE_LEVEL && (rgb >> 8 & 0xFF) >= WHITE_LEVEL && (rgb & 0xFF) >= WHITE_LEVEL;
+    }
+}

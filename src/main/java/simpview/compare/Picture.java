@@ -1,0 +1,130 @@
+package simpview.compare;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+
+/**
+ * A picture to compare: where its panel is, the panel's pixels (650x650
+ * 0xRRGGBB, row by row from the top) and the picture's margins.
+ */
+public final class Picture {
+
+    private final String name;
+    private final int width;
+    private final int height;
+    private final PanelPlace place;
+    private final int[] panel;
+    private final int[] rgb;
+
+    private Picture(String name, int[] rgb, int width, int height, PanelPlace place) {
+        this.name = name;
+        this.rgb = rgb;
+        this.width = width;
+        this.height = height;
+        this.place = place;
+        this.panel = new int[PanelPlace.SIZE * PanelPlace.SIZE];
+        for (int y = 0; y < PanelPlace.SIZE; y++) {
+            System.arraycopy(rgb, (place.top() + y) * width + place.left(), panel, y * PanelPlace.SIZE, PanelPlace.SIZE);
+        }
+    }
+
+    /** Reads a picture file and finds its panel; every way this can fail is a clear CompareException. */
+    public static Picture read(Path file) throws CompareException {
+        PngCodec.Pixels pixels = readPixels(file);
+        String name = file.toString();
+        PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
+        return new Picture(name, pixels.rgb(), pixels.width(), pixels.height(), place);
+    }
+
+    /** A picture in memory (a page, a capture), its panel found as in a file. */
+    public static Picture of(BufferedImage image, String name) throws CompareException {
+        int[] rgb = Rasters.rgb(image);
+        PanelPlace place = PanelFinder.find(rgb, image.getWidth(), image.getHeight(), name);
+        return new Picture(name, rgb, image.getWidth(), image.getHeight(), place);
+    }
+
+    /** One of simpview's own 750x750 pages: the panel is where the page puts it, nothing is searched. */
+    public static Picture ofPage(BufferedImage page, String name) {
+        if (page.getWidth() != PanelFinder.PAGE || page.getHeight() != PanelFinder.PAGE) {
+            throw new IllegalArgumentException("a page is 750x750, not " + page.getWidth() + "x" + page.getHeight());
+        }
+        PanelPlace place = new PanelPlace(PanelFinder.PAGE_MARGIN, PanelFinder.PAGE_MARGIN, "a 750x750 page");
+        return new Picture(name, Rasters.rgb(page), page.getWidth(), page.getHeight(), place);
+    }
+
+    /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
+    static PngCodec.Pixels readPixels(Path file) throws CompareException {
+        byte[] bytes = readBytes(file);
+        if (PngCodec.isPng(bytes)) {
+            try {
+                return PngCodec.decode(bytes);
+            } catch (CompareException e) {
+                throw damaged(file, e.getMessage(), e);
+            } catch (PngCodec.Unsupported e) {
+                // a kind of PNG ImageIO reads
+            }
+        }
+        BufferedImage image;
+        try {
+            image = ImageIO.read(new ByteArrayInputStream(bytes));
+        } catch (IOException | RuntimeException e) {
+            // Decoders throw all sorts on damaged data; the cause is for the curious.
+            throw damaged(file, e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage(), e);
+        }
+        if (image == null) {
+            throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
+        }
+        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.rgb(image));
+    }
+
+    private static CompareException damaged(Path file, String why, Exception cause) {
+        return new CompareException(file + ": cannot be read as a picture, it is damaged or cut short (" + why + ")", cause);
+    }
+
+    private static byte[] readBytes(Path file) throws CompareException {
+        if (!Files.exists(file)) {
+            throw new CompareException(file + ": no such file");
+        }
+        if (Files.isDirectory(file)) {
+            throw new CompareException(file + " is a folder, not a picture");
+        }
+        try {
+            return Files.readAllBytes(file);
+        } catch (AccessDeniedException e) {
+            throw new CompareException(file + ": permission denied", e);
+        } catch (IOException e) {
+            throw new CompareException(file + ": cannot be read (" + e.getMessage() + ")", e);
+        }
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    public PanelPlace place() {
+        return place;
+    }
+
+    /** The panel's pixels, 650x650 0xRRGGBB from the top row down. Shared, not a copy: do not change it. */
+    public int[] panel() {
+        return panel;
+    }
+
+    /** The margins around the panel, judged with a tolerance (in 1/255 steps). */
+    public Margins margins(int tolerance) {
+        return Margins.of(rgb, width, height, place, tolerance);
+    }
+}

@@ -1,0 +1,299 @@
+package simpview.compare;
+
+import java.io.ByteArrayOutputStream;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.zip.CRC32;
+import java.util.zip.DataFormatException;
+import java.util.zip.Deflater;
+import java.util.zip.Inflater;
+
+/**
+ * Reads and writes the PNG files compare meets most, without ImageIO (whose
+ * start-up costs more than a whole comparison): 8-bit grey, grey+alpha, RGB,
+ * RGBA and palette pictures, not interlaced, straight into 0xRRGGBB pixels
+ * (alpha is ignored, as it is for every picture compared). Anything else is
+ * {@link Unsupported}, and the caller falls back to ImageIO.
+ */
+final class PngCodec {
+
+    /** A PNG this codec does not read (interlaced, 16-bit, fewer bits per pixel); ImageIO may. */
+    static final class Unsupported extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        Unsupported(String what) {
+            super(what, null, false, false);
+        }
+    }
+
+    /** A decoded picture: width x height pixels, row by row from the top. */
+    record Pixels(int width, int height, int[] rgb) {
+    }
+
+    private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10};
+    private static final long MAX_PIXELS = 64L << 20;
+
+    private PngCodec() {
+    }
+
+    static boolean isPng(byte[] file) {
+        if (file.length < SIGNATURE.length) {
+            return false;
+        }
+        for (int i = 0; i < SIGNATURE.length; i++) {
+            if (file[i] != SIGNATURE[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Decodes a PNG file's bytes.
+     *
+     * @throws CompareException with what is wrong, when the file is damaged or cut short
+     * @throws Unsupported when it is a kind of PNG this codec leaves to ImageIO
+     */
+    static Pixels decode(byte[] file) throws CompareException, Unsupported {
+        ByteBuffer in = ByteBuffer.wrap(file);
+        in.position(SIGNATURE.length);
+        Header header = null;
+        byte[] palette = null;
+        ByteArrayOutputStream idat = new ByteArrayOutputStream(file.length);
+        while (true) {
+            Chunk chunk = Chunk.next(in, file);
+            switch (chunk.type()) {
+                case "IHDR" -> header = Header.of(file, chunk);
+                case "PLTE" -> palette = Arrays.copyOfRange(file, chunk.start(), chunk.start() + chunk.length());
+                case "IDAT" -> idat.write(file, chunk.start(), chunk.length());
+                case "IEND" -> {
+                    return unfilter(need(header), palette, inflate(idat.toByteArray(), need(header)));
+                }
+                default -> {
+                    // ancillary chunks (gamma, text, time ...) change no pixel compare looks at
+                }
+            }
+        }
+    }
+
+    private static Header need(Header header) throws CompareException {
+        if (header == null) {
+            throw new CompareException("no IHDR chunk before the pixels");
+        }
+        return header;
+    }
+
+    private record Chunk(String type, int start, int length) {
+        static Chunk next(ByteBuffer in, byte[] file) throws CompareException {
+            if (in.remaining() < 12) {
+                throw new CompareException("the file ends before its IEND chunk");
+            }
+            int length = in.getInt();
+            int typeAt = in.position();
+            String type = new String(file, typeAt, 4, StandardCharsets.ISO_8859_1);
+            if (length < 0 || length > in.remaining() - 8) {
+                throw new CompareException("chunk " + type + " runs past the end of the file");
+            }
+            CRC32 crc = new CRC32();
+            crc.update(file, typeAt, 4 + length);
+            in.position(typeAt + 4 + length);
+            if ((int) crc.getValue() != in.getInt()) {
+                throw new CompareException("chunk " + type + " fails its checksum");
+            }
+            return new Chunk(type, typeAt + 4, length);
+        }
+    }
+
+    private record Header(int width, int height, int colourType, int channels) {
+        static Header of(byte[] file, Chunk chunk) throws CompareException, Unsupported {
+            if (chunk.length() != 13) {
+                throw new CompareException("its IHDR chunk is " + chunk.length() + " bytes, not 13");
+            }
+            ByteBuffer b = ByteBuffer.wrap(file, chunk.start(), 13);
+            int width = b.getInt();
+            int height = b.getInt();
+            int depth = b.get() & 0xFF;
+            int colourType = b.get() & 0xFF;
+            b.get();
+            b.get();
+            int interlace = b.get() & 0xFF;
+            if (width <= 0 || height <= 0 || (long) width * height > MAX_PIXELS) {
+                throw new CompareException("it says it is " + width + "x" + height + " pixels");
+            }
+            int channels = switch (colourType) {
+                case 0, 3 -> 1;
+                case 4 -> 2;
+                case 2 -> 3;
+                case 6 -> 4;
+                default -> throw new CompareException("unknown colour type " + colourType);
+            };
+            if (depth != 8 || interlace != 0) {
+                throw new Unsupported(depth + "-bit" + (interlace != 0 ? ", interlaced" : ""));
+            }
+            return new Header(width, height, colourType, channels);
+        }
+    }
+
+    private static byte[] inflate(byte[] compressed, Header h) throws CompareException {
+        byte[] raw = new byte[(h.width() * h.channels() + 1) * h.height()];
+        Inflater inflater = new Inflater();
+        try {
+            inflater.setInput(compressed);
+            int done = 0;
+            while (done < raw.length) {
+                int n = inflater.inflate(raw, done, raw.length - done);
+                if (n == 0 && (inflater.needsInput() || inflater.finished() || inflater.needsDictionary())) {
+                    throw new CompareException("its pixels stop after " + done / (h.width() * h.channels() + 1)
+                            + " of " + h.height() + " rows");
+                }
+                done += n;
+            }
+            return raw;
+        } catch (DataFormatException e) {
+            throw new CompareException("its compressed pixels are damaged (" + e.getMessage() + ")");
+        } finally {
+            inflater.end();
+        }
+    }
+
+    /** Undoes the five PNG row filters in place and packs the pixels as 0xRRGGBB. */
+    private static Pixels unfilter(Header h, byte[] palette, byte[] raw) throws CompareException {
+        int bpp = h.channels();
+        int stride = h.width() * bpp;
+        if (h.colourType() == 3 && palette == null) {
+            throw new CompareException("a palette picture without a PLTE chunk");
+        }
+        int[] rgb = new int[h.width() * h.height()];
+        for (int y = 0; y < h.height(); y++) {
+            int row = y * (stride + 1) + 1;
+            int prior = row - stride - 1;
+            int filter = raw[row - 1];
+            unfilterRow(raw, row, y == 0 ? -1 : prior, stride, bpp, filter);
+            pack(h, palette, raw, row, rgb, y * h.width());
+        }
+        return new Pixels(h.width(), h.height(), rgb);
+    }
+
+    /** One row's filter undone; {@code prior} is the row above, or -1 for the first row. One loop per filter. */
+    private static void unfilterRow(byte[] raw, int row, int prior, int stride, int bpp, int filter)
+            throws CompareException {
+        switch (filter) {
+            case 0 -> {
+                // None: the bytes are the pixels
+            }
+            case 1 -> {
+                for (int i = bpp; i < stride; i++) {
+                    raw[row + i] += raw[row + i - bpp];
+                }
+            }
+            case 2 -> {
+                for (int i = 0; prior >= 0 && i < stride; i++) {
+                    raw[row + i] += raw[prior + i];
+                }
+            }
+            case 3 -> {
+                for (int i = 0; i < stride; i++) {
+                    int left = i >= bpp ? raw[row + i - bpp] & 0xFF : 0;
+                    int up = prior >= 0 ? raw[prior + i] & 0xFF : 0;
+                    raw[row + i] += (byte) ((left + up) >>> 1);
+                }
+            }
+            case 4 -> {
+                for (int i = 0; i < stride; i++) {
+                    int left = i >= bpp ? raw[row + i - bpp] & 0xFF : 0;
+                    int up = prior >= 0 ? raw[prior + i] & 0xFF : 0;
+                    int upLeft = prior >= 0 && i >= bpp ? raw[prior + i - bpp] & 0xFF : 0;
+                    raw[row + i] += (byte) paeth(left, up, upLeft);
+                }
+            }
+            default -> throw new CompareException("unknown row filter " + filter);
+        }
+    }
+
+    private static int paeth(int a, int b, int c) {
+        int p = a + b - c;
+        int pa = Math.abs(p - a);
+        int pb = Math.abs(p - b);
+        int pc = Math.abs(p - c);
+        return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+    }
+
+    private static void pack(Header h, byte[] palette, byte[] raw, int row, int[] rgb, int at) throws CompareException {
+        int bpp = h.channels();
+        int w = h.width();
+        if (h.colourType() == 2 || h.colourType() == 6) {
+            for (int x = 0, p = row; x < w; x++, p += bpp) {
+                rgb[at + x] = (raw[p] & 0xFF) << 16 | (raw[p + 1] & 0xFF) << 8 | raw[p + 2] & 0xFF;
+            }
+        } else if (h.colourType() == 3) {
+            for (int x = 0; x < w; x++) {
+                rgb[at + x] = fromPalette(palette, raw[row + x] & 0xFF);
+            }
+        } else {
+            for (int x = 0, p = row; x < w; x++, p += bpp) {
+                rgb[at + x] = (raw[p] & 0xFF) * 0x010101;
+            }
+        }
+    }
+
+    private static int fromPalette(byte[] palette, int index) throws CompareException {
+        if (3 * index + 2 >= palette.length) {
+            throw new CompareException("a pixel names colour " + index + " of a palette of " + palette.length / 3);
+        }
+        return (palette[3 * index] & 0xFF) << 16 | (palette[3 * index + 1] & 0xFF) << 8 | palette[3 * index + 2] & 0xFF;
+    }
+
+    /**
+     * An 8-bit RGB PNG of 0xRRGGBB pixels, every row but the first filtered
+     * "Up" (the difference from the row above: pictures of panels repeat a lot
+     * from row to row, so this deflates smaller and faster), at the fastest level.
+     */
+    static byte[] encode(int width, int height, int[] rgb) {
+        byte[] raw = new byte[(3 * width + 1) * height];
+        for (int y = 0, o = 0; y < height; y++) {
+            raw[o++] = (byte) (y == 0 ? 0 : 2);
+            for (int x = 0; x < width; x++) {
+                int c = rgb[y * width + x];
+                int up = y == 0 ? 0 : rgb[(y - 1) * width + x];
+                raw[o++] = (byte) ((c >> 16) - (up >> 16));
+                raw[o++] = (byte) ((c >> 8) - (up >> 8));
+                raw[o++] = (byte) (c - up);
+            }
+        }
+        ByteArrayOutputStream out = new ByteArrayOutputStream(raw.length / 4);
+        out.writeBytes(SIGNATURE);
+        ByteBuffer ihdr = ByteBuffer.allocate(13).putInt(width).putInt(height).put((byte) 8).put((byte) 2);
+        chunk(out, "IHDR", ihdr.array());
+        chunk(out, "IDAT", deflate(raw));
+        chunk(out, "IEND", new byte[0]);
+        return out.toByteArray();
+    }
+
+    private static byte[] deflate(byte[] raw) {
+        Deflater deflater = new Deflater(Deflater.BEST_SPEED);
+        try {
+            deflater.setInput(raw);
+            deflater.finish();
+            ByteArrayOutputStream out = new ByteArrayOutputStream(raw.length / 8 + 64);
+            byte[] buffer = new byte[1 << 16];
+            while (!deflater.finished()) {
+                out.write(buffer, 0, deflater.deflate(buffer));
+            }
+            return out.toByteArray();
+        } finally {
+            deflater.end();
+        }
+    }
+
+    private static void chunk(ByteArrayOutputStream out, String type, byte[] data) {
+        byte[] name = type.getBytes(StandardCharsets.ISO_8859_1);
+        CRC32 crc = new CRC32();
+        crc.update(name);
+        crc.update(data);
+        out.writeBytes(ByteBuffer.allocate(4).putInt(data.length).array());
+        out.writeBytes(name);
+        out.writeBytes(data);
+        out.writeBytes(ByteBuffer.allocate(4).putInt((int) crc.getValue()).array());
+    }
+}

@@ -1,0 +1,68 @@
+package simpview.compare;
+
+import java.util.Collection;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.OptionalInt;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Which page or scene a submitted picture is of, from its file name:
+ * page3.png, Page_3.png, alice-page03.png and page3_mesh.png are page 3;
+ * pageC.png, pageC_v2.png and pageJ_tomsPageJ.png are the scenes pageC and
+ * tomsPageJ, page-a2.png the scene page-a2.
+ */
+public final class SubmissionNames {
+
+    private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])page[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
+
+    private SubmissionNames() {
+    }
+
+    /** The page number in a file name, if it names one. */
+    public static OptionalInt pageNumber(String fileName) {
+        Matcher m = PAGE.matcher(stem(fileName));
+        if (!m.find()) {
+            return OptionalInt.empty();
+        }
+        try {
+            return OptionalInt.of(Integer.parseInt(m.group(1)));
+        } catch (NumberFormatException e) {
+            return OptionalInt.empty(); // more digits than any page number has
+        }
+    }
+
+    /**
+     * The scene a file name names: the longest scene name (case ignored) that
+     * stands in it as a whole word, not inside a longer run of letters and digits.
+     */
+    public static Optional<String> sceneName(String fileName, Collection<String> sceneNames) {
+        String stem = stem(fileName).toLowerCase(Locale.ROOT);
+        String best = null;
+        for (String scene : sceneNames) {
+            if ((best == null || scene.length() > best.length()) && standsIn(stem, scene.toLowerCase(Locale.ROOT))) {
+                best = scene;
+            }
+        }
+        return Optional.ofNullable(best);
+    }
+
+    private static boolean standsIn(String stem, String word) {
+        for (int at = stem.indexOf(word); at >= 0; at = stem.indexOf(word, at + 1)) {
+            int end = at + word.length();
+            boolean startOk = at == 0 || !Character.isLetterOrDigit(stem.charAt(at - 1));
+            boolean endOk = end == stem.length() || !Character.isLetterOrDigit(stem.charAt(end));
+            if (startOk && endOk) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The file name without its extension. */
+    public static String stem(String fileName) {
+        int dot = fileName.lastIndexOf('.');
+        return dot > 0 ? fileName.substring(0, dot) : fileName;
+    }
+}

@@ -1,0 +1,152 @@
+package simpview.compare;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Random;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/** Finding the 650x650 panel in pages, window captures and pictures that have none. */
+class PanelFinderTest {
+
+    /** A made-up window capture: grey chrome, a white area, and a page's panel at (left, top). */
+    private static BufferedImage capture(BufferedImage page, int width, int height, int left, int top) {
+        BufferedImage capture = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                boolean white = x >= left - 50 && x < left + 700 && y >= top - 50 && y < top + 700;
+                capture.setRGB(x, y, white ? 0xFFFFFF : 0xE0E0E8 - (x + y) % 7);
+            }
+        }
+        for (int y = 0; y < 650; y++) {
+            for (int x = 0; x < 650; x++) {
+                capture.setRGB(left + x, top + y, page.getRGB(50 + x, 50 + y));
+            }
+        }
+        return capture;
+    }
+
+    private static BufferedImage page(int number) throws Exception {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 3, 5})
+    void findsThePanelOfACaptureAtAnOddPlace(int number) throws Exception {
+        BufferedImage page = page(number);
+        Picture found = Picture.of(capture(page, 900, 811, 73, 111), "capture");
+        assertEquals(73, found.place().left());
+        assertEquals(111, found.place().top());
+        assertEquals(1.0, Comparison.of(Picture.ofPage(page, "page").panel(), found.panel()).share(0, false));
+        assertTrue(found.margins(8).white(), found.margins(8).describe());
+    }
+
+    @Test
+    void findsAPanelWhoseContentIsMostlyWhiteAndTouchesItsEdges() throws Exception {
+        BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                boolean panel = x >= 50 && x < 700 && y >= 50 && y < 700;
+                // In the panel: white except a black band along the left and bottom edges and a grid.
+                boolean dark = panel && (x < 60 || y > 690 || x % 50 == 0);
+                page.setRGB(x, y, dark ? 0 : 0xFFFFFF);
+            }
+        }
+        Picture found = Picture.of(capture(page, 820, 790, 60, 90), "white-ish");
+        assertEquals(60, found.place().left());
+        assertEquals(90, found.place().top());
+    }
+
+    @Test
+    void aPageIsTakenWhereAPageHasItsPanel() throws Exception {
+        Picture found = Picture.of(page(2), "page2.png");
+        assertEquals(new PanelPlace(50, 50, "a 750x750 page"), found.place());
+    }
+
+    @Test
+    void aPageWhosePanelIsElsewhereSaysSo() throws Exception {
+        BufferedImage page = page(3);
+        BufferedImage moved = capture(page, 750, 750, 52, 49);
+        Picture found = Picture.of(moved, "moved.png");
+        assertEquals(52, found.place().left());
+        assertEquals(49, found.place().top());
+        assertTrue(found.place().how().contains("not at x 50, y 50"), found.place().how());
+    }
+
+    @Test
+    void aBarePanelIsTheWholePicture() throws Exception {
+        BufferedImage bare = new BufferedImage(650, 650, BufferedImage.TYPE_INT_RGB);
+        Picture found = Picture.of(bare, "bare.png");
+        assertEquals(0, found.place().left());
+        assertEquals(0, found.margins(8).checked());
+        assertEquals("none in the picture", found.margins(8).describe());
+    }
+
+    @Test
+    void refusesPicturesTooSmallToHoldAPanel() {
+        CompareException e = assertThrows(CompareException.class,
+                () -> Picture.of(new BufferedImage(649, 800, BufferedImage.TYPE_INT_RGB), "small.png"));
+        assertEquals("small.png is 649x800: too small to hold the 650x650 panel (a page is 750x750)", e.getMessage());
+    }
+
+    @Test
+    void refusesPicturesWithNoPanel() {
+        BufferedImage white = new BufferedImage(800, 700, BufferedImage.TYPE_INT_RGB);
+        BufferedImage noise = new BufferedImage(800, 700, BufferedImage.TYPE_INT_RGB);
+        Random random = new Random(1);
+        for (int y = 0; y < 700; y++) {
+            for (int x = 0; x < 800; x++) {
+                white.setRGB(x, y, 0xFFFFFF);
+                noise.setRGB(x, y, random.nextInt(0x1000000));
+            }
+        }
+        for (BufferedImage picture : new BufferedImage[] {white, noise}) {
+            CompareException e = assertThrows(CompareException.class, () -> Picture.of(picture, "x.png"));
+            assertTrue(e.getMessage().startsWith("no 650x650 panel found in x.png (800x700)"), e.getMessage());
+        }
+    }
+
+    @Test
+    void marginsThatAreNotWhiteAreCountedAndTheFirstIsNamed() throws Exception {
+        BufferedImage page = page(1);
+        page.setRGB(3, 7, 0x000000);
+        page.setRGB(720, 720, 0xFEFEFE);
+        Margins margins = Picture.of(page, "p.png").margins(8);
+        assertEquals(140_000, margins.checked());
+        assertEquals(2, margins.notWhite());
+        assertEquals(1, margins.offByMore());
+        assertEquals(3, margins.firstX());
+        assertEquals(7, margins.firstY());
+        assertTrue(margins.describe().startsWith("NOT white: 1 of 140,000 pixels"), margins.describe());
+    }
+
+    static Stream<String> coursePictures() {
+        return Stream.of("a2/page1_mesh_wire.png", "a2/page2_mesh_filled.jpg", "a2/page3_zbuffer_triangles.png",
+                "a2/page4_tomsPage4_green.png", "a2/page5_tomsPage5_red.png", "a2/page6.png", "a2/page7.png",
+                "a2/page8.png", "a3/pageA.png", "a3/pageB.png", "a3/pageC.png", "a3/pageD.png", "a3/pageE.png",
+                "a3/pageF.png", "a3/pageG.png", "a3/pageH.png", "a3/pageI.png", "a3/pageJ_tomsPageJ.png");
+    }
+
+    /** The course's own pictures are 872x782 window captures with the panel at x 51-700, y 81-730. */
+    @ParameterizedTest
+    @MethodSource("coursePictures")
+    void findsThePanelInEachOfTheCoursesOwnPictures(String name) throws Exception {
+        Path file = CourseFiles.require("reference/images/" + name);
+        assertTrue(Files.isRegularFile(file));
+        Picture picture = Picture.read(file);
+        assertEquals(51, picture.place().left(), name);
+        assertEquals(81, picture.place().top(), name);
+        // JPEG rings near the panel's edge: its margins are off white by up to 32/255 there.
+        assertTrue(picture.margins(name.endsWith(".jpg") ? 40 : 0).white(), name + ": " + picture.margins(0).describe());
+    }
+}
