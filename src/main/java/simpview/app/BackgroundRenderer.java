@@ -5,6 +5,8 @@ import java.util.concurrent.Executors;
 import java.util.function.BiConsumer;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
 
 /**
  * Draws pictures one at a time on a thread of its own, so the window keeps
@@ -20,6 +22,8 @@ final class BackgroundRenderer {
     });
     private final PageRenderer renderer = new PageRenderer();
     private final SceneDrawer drawer;
+    /** Who drew each pixel of the picture being drawn; only this thread writes it. */
+    private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
 
     BackgroundRenderer(SceneDrawer drawer) {
         this.drawer = drawer;
@@ -28,7 +32,7 @@ final class BackgroundRenderer {
     /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
     void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
         thread.execute(() -> {
-            RenderedView result = job.run(renderer, drawer);
+            RenderedView result = job.run(renderer, drawer, provenance);
             SwingUtilities.invokeLater(() -> done.accept(job, result));
         });
     }

@@ -44,7 +44,12 @@ final class FileDialogs {
             return Optional.empty();
         }
         saveFolder = chooser.getCurrentDirectory();
-        Path file = chooser.getSelectedFile().toPath();
+        Path file = PngFiles.withPngExtension(chooser.getSelectedFile().toPath());
+        if (!PngFiles.isPngName(file)) {
+            JOptionPane.showMessageDialog(owner, file.getFileName() + ": simpview saves PNG files only; name it .png",
+                    "Save page", JOptionPane.ERROR_MESSAGE);
+            return Optional.empty();
+        }
         if (Files.exists(file) && JOptionPane.showConfirmDialog(owner, file + " exists. Replace it?",
                 "Save page", JOptionPane.YES_NO_OPTION) != JOptionPane.YES_OPTION) {
             return Optional.empty();

@@ -25,10 +25,6 @@ public final class Main {
     }
 
     public static void main(String[] args) {
-        // Pages are meant to be seen pixel for pixel; must be set before AWT starts.
-        if (System.getProperty("sun.java2d.uiScale") == null) {
-            System.setProperty("sun.java2d.uiScale", "1");
-        }
         PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
         PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
         OwnScenes.locate();
@@ -72,7 +68,8 @@ public final class Main {
         CommandLine commandLine = new CommandLine(command)
                 .setOut(out)
                 .setErr(err)
-                .setExecutionExceptionHandler(Main::reportUnexpected);
+                .setExecutionExceptionHandler(Main::reportUnexpected)
+                .setParameterExceptionHandler(Main::reportUsageError);
         sayWhereTheScenesAre(commandLine);
         sayWhereTheScenesAre(commandLine.getSubcommands().get("render"));
         // picocli's own exit code for invalid input is already USAGE_ERROR (2).
@@ -80,6 +77,23 @@ public final class Main {
         out.flush();
         err.flush();
         return code;
+    }
+
+    /** A usage error: the problem, a suggestion when a word was mistyped, and one line pointing at --help. */
+    private static int reportUsageError(CommandLine.ParameterException e, String[] args) {
+        CommandLine commandLine = e.getCommandLine();
+        PrintWriter err = commandLine.getErr();
+        err.println("simpview: " + e.getMessage());
+        if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+            for (String word : unmatched.getUnmatched()) {
+                java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
+                known.addAll(commandLine.getSubcommands().keySet());
+                simpview.scene.Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
+            }
+        }
+        err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");
+        err.flush();
+        return USAGE_ERROR;
     }
 
     /** Ends --help with the scene folder the defaults really read, as an absolute path. */

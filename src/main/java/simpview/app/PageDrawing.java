@@ -29,8 +29,13 @@ final class PageDrawing {
 
     /** A scene as a whole page, depth-cued from near (default white) to far (default black). */
     PageCanvas scene(Path file, Rgb near, Rgb far) throws SceneException {
+        return scene(file, near, far, false);
+    }
+
+    /** The same, or with {@code ownColours} in the vertices' own colours without the depth cue. */
+    PageCanvas scene(Path file, Rgb near, Rgb far, boolean ownColours) throws SceneException {
         SceneSheet sheet = new SceneSheet(file, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
-        sheet.drawOn(renderer.canvas(), monitor, SceneDrawer.SIMP);
+        sheet.drawOn(renderer.canvas(), monitor, SceneDrawer.SIMP, ownColours);
         return renderer.canvas();
     }
 }

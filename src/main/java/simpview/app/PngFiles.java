@@ -44,6 +44,19 @@ final class PngFiles {
         }
     }
 
+    /** True for a name ending in .png (any case), or with no extension at all. */
+    static boolean isPngName(Path file) {
+        String name = file.getFileName() == null ? "" : file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot <= 0 || name.substring(dot + 1).equalsIgnoreCase("png");
+    }
+
+    /** The name with ".png" added when it has no extension (a Save dialog's answer "page3"). */
+    static Path withPngExtension(Path file) {
+        String name = file.getFileName().toString();
+        return name.lastIndexOf('.') > 0 ? file : file.resolveSibling(name + ".png");
+    }
+
     private static byte[] encode(BufferedImage image) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ImageOutputStream out = new MemoryCacheImageOutputStream(bytes)) {

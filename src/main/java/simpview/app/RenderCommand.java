@@ -31,6 +31,7 @@ import simpview.surface.Rgb;
             "  simpview render --page 3 --seed 7 --out page3.png",
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
+            "  simpview render --scene house.simp --own-colors --out house.png",
             "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
             "  simpview render --contact-sheet --out docs/pages.png",
             "  simpview render --contact-sheet --out lit.png simp/lit-shading.simp simp/lit-lights.simp"},
@@ -88,6 +89,10 @@ final class RenderCommand implements Callable<Integer> {
             description = "--contact-sheet: scenes to tile instead of the pages, each drawn as --scene draws it")
     private List<Path> scenes = new ArrayList<>();
 
+    @Option(names = {"--own-colors", "--own-colours"},
+            description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
+    private boolean ownColours;
+
     @Override
     public Integer call() {
         checkOptions();
@@ -128,6 +133,10 @@ final class RenderCommand implements Callable<Integer> {
         usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
         usage(scenes.isEmpty() || seed == null && simpDir == null,
                 "--seed and --simp-dir go with the pages, not with a sheet of scenes");
+        usage(!ownColours || !pages, "--own-colors goes with --scene only");
+        usage(!ownColours || near == null && far == null,
+                "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
+        usage(out == null || PngFiles.isPngName(out), "--out " + out + ": simpview writes PNG files only; name it .png");
     }
 
     /** --scenes: the list must name scenes, and the pictures go to a folder. */
@@ -206,7 +215,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private int renderScene() {
         try {
-            return write(new PageDrawing(monitor()).scene(what.scene, near, far).image(), out);
+            return write(new PageDrawing(monitor()).scene(what.scene, near, far, ownColours).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return Main.SCENE_ERROR;

@@ -1,12 +1,23 @@
 package simpview.app;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import simpview.geometry.Matrix4;
 import simpview.pages.PageContext;
+import simpview.scene.PrimitiveLog;
+import simpview.scene.PrimitiveTrace;
 import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
+import simpview.surface.Provenance;
 import simpview.scene.simp.SceneCancelledException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 
 /**
@@ -18,14 +29,29 @@ final class RenderJob implements SceneMonitor {
 
     private final View view;
     private final PageContext context;
+    private final DrawSettings settings;
     private final long createdNanos = System.nanoTime();
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private volatile long linesRead;
     private volatile boolean cancelled;
+    /** Files smaller than this are read before a progress bar shows: not counted. */
+    private static final long COUNT_FROM_BYTES = 1 << 20;
+    private volatile long topFileLines = -1;
+    /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
+    private PrimitiveLog trace;
 
     RenderJob(View view, PageContext context) {
+        this(view, context, DrawSettings.PLAIN);
+    }
+
+    RenderJob(View view, PageContext context, DrawSettings settings) {
         this.view = view;
-        this.context = context.withMonitor(this);
+        this.context = context.withMonitor(this).withOwnColours(settings.ownColours());
+        this.settings = settings;
+    }
+
+    DrawSettings settings() {
+        return settings;
     }
 
     View view() {
@@ -42,6 +68,33 @@ final class RenderJob implements SceneMonitor {
 
     long linesSoFar() {
         return linesRead;
+    }
+
+    /** Lines of the scene's top file, once counted (for the progress bar's fraction), or -1. */
+    long linesInTopFile() {
+        return topFileLines;
+    }
+
+    /**
+     * Counts the top file's lines on a thread of its own, so that the
+     * progress bar can show a fraction; the drawing does not wait for it.
+     * Only for files big enough to show a progress bar at all.
+     */
+    void countLinesAhead() {
+        Path top = topFile();
+        if (top == null) {
+            return;
+        }
+        try {
+            if (Files.size(top) < COUNT_FROM_BYTES) {
+                return;
+            }
+        } catch (IOException | SecurityException e) {
+            return;
+        }
+        Thread counter = new Thread(() -> topFileLines = LineCount.of(top, () -> cancelled), "simpview-line-count");
+        counter.setDaemon(true);
+        counter.start();
     }
 
     void cancel() {
@@ -63,24 +116,39 @@ final class RenderJob implements SceneMonitor {
         warnings.add(message);
     }
 
+    @Override
+    public PrimitiveTrace trace() {
+        return trace;
+    }
+
+    @Override
+    public Matrix4 worldTurn() {
+        return settings.worldTurn();
+    }
+
     /**
      * Draws on the render thread's canvas and returns a copy of the result,
      * or null when the job was cancelled.
      */
-    RenderedView run(PageRenderer renderer, SceneDrawer drawer) {
+    RenderedView run(PageRenderer renderer, SceneDrawer drawer, Provenance provenance) {
         if (cancelled) {
             return null;
         }
         PageCanvas canvas = renderer.canvas();
+        canvas.recordProvenance(settings.record() ? provenance : null);
+        trace = settings.record() || settings.stepLimit() >= 0
+                ? new PrimitiveLog(settings.record() ? provenance : null, settings.stepLimit()) : null;
         String error = null;
+        boolean drewSomething = true;
         try {
             if (view instanceof View.OfPage page) {
                 renderer.render(page.number(), context);
             } else {
-                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer);
+                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer, settings.ownColours());
             }
         } catch (SceneException e) {
             error = e.getMessage();
+            drewSomething = e.line() > 0;
         } catch (SceneCancelledException e) {
             return null;
         } catch (RuntimeException e) {
@@ -88,6 +156,45 @@ final class RenderJob implements SceneMonitor {
             e.printStackTrace();
             error = "internal error while drawing: " + e;
         }
-        return cancelled ? null : new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings));
+        if (cancelled) {
+            return null;
+        }
+        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(),
+                canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
+                primitives(), filesRead(), drewSomething);
+        canvas.recordProvenance(null);
+        return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+    }
+
+    /** What each primitive drawn was, in drawing order. */
+    private Primitives primitives() {
+        if (view instanceof View.OfPage page) {
+            List<String> names = Pages.page(page.number()).primitiveNames(context);
+            if (!names.isEmpty()) {
+                return Primitives.named(names);
+            }
+        }
+        return trace == null ? Primitives.NONE : Primitives.logged(trace);
+    }
+
+    /** The scene file the view reads, or null for a page that is not a scene. */
+    private Path topFile() {
+        if (view instanceof View.OfScene scene) {
+            return scene.file();
+        }
+        return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
+    }
+
+    /** The scene files this picture read: what to watch for a save. */
+    private List<Path> filesRead() {
+        Path top = topFile();
+        if (top == null) {
+            return List.of();
+        }
+        List<Path> reached = new ArrayList<>(SceneRules.reached(top));
+        if (reached.isEmpty()) {
+            reached.add(top); // not there yet: watch for it to appear
+        }
+        return reached;
     }
 }

@@ -35,11 +35,19 @@ record SceneSheet(Path file, Rgb near, Rgb far) {
 
     /** Clears the canvas and draws the scene; on an error what was drawn stays. */
     void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer) throws SceneException {
+        drawOn(canvas, monitor, drawer, false);
+    }
+
+    /**
+     * The same, or with {@code ownColours} the vertices' own colours (white
+     * where a vertex has none) through the z-buffer, without the depth cue.
+     */
+    void drawOn(PageCanvas canvas, SceneMonitor monitor, SceneDrawer drawer, boolean ownColours) throws SceneException {
         canvas.clear();
         if (SceneRules.of(file).lit()) {
             drawer.drawLit(file, canvas, monitor);
         } else {
-            drawer.draw(file, canvas.depthCued(near, far), monitor);
+            drawer.draw(file, ownColours ? canvas.depthTested() : canvas.depthCued(near, far), monitor);
         }
     }
 }

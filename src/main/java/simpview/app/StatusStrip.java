@@ -18,8 +18,8 @@ import simpview.surface.PageCanvas;
  */
 final class StatusStrip {
 
-    static final String HINTS = "Click/→ next · ← back · Home/End · 1–8 · R new seed · "
-            + "Ctrl+O open (or drop) a scene · Ctrl+S save";
+    static final String HINTS = "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · F fit · Z 1:1 · "
+            + "D depth · P pin · C own colours · ] step · F5 redraw · Ctrl+O open · Ctrl+S save · F1 all keys";
     /** Quick pictures never flash a progress bar. */
     static final int PROGRESS_DELAY_MS = 150;
     private static final String TEXT = "text";
@@ -28,6 +28,7 @@ final class StatusStrip {
     private final CardLayout cards = new CardLayout();
     private final JPanel panel = new JPanel(cards);
     private final JLabel text = new JLabel(HINTS);
+    private final JLabel inspector = new JLabel(" ");
     private final JLabel working = new JLabel();
     private final JProgressBar bar = new JProgressBar();
     private final JButton cancel = new JButton("Cancel");
@@ -35,7 +36,7 @@ final class StatusStrip {
     private RenderJob watched;
 
     StatusStrip(Runnable onCancel) {
-        panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 34));
+        panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 46));
         panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
         bar.setStringPainted(true);
         // Keys belong to the page: a focused button would swallow Space.
@@ -45,7 +46,10 @@ final class StatusStrip {
         progress.add(working, BorderLayout.WEST);
         progress.add(bar, BorderLayout.CENTER);
         progress.add(cancel, BorderLayout.EAST);
-        panel.add(text, TEXT);
+        JPanel lines = new JPanel(new BorderLayout());
+        lines.add(inspector, BorderLayout.NORTH);
+        lines.add(text, BorderLayout.SOUTH);
+        panel.add(lines, TEXT);
         panel.add(progress, PROGRESS);
         cards.show(panel, TEXT);
     }
@@ -71,6 +75,24 @@ final class StatusStrip {
         cards.show(panel, TEXT);
     }
 
+    /** The inspector's line: the pixel under the pointer (or pinned), the zoom. */
+    void inspect(String line) {
+        inspector.setText(line == null || line.isEmpty() ? " " : line);
+    }
+
+    String inspectorText() {
+        return inspector.getText();
+    }
+
+    String messageText() {
+        return text.getText();
+    }
+
+    /** What the progress bar says, e.g. "12,000 of about 40,000 lines read (30 %)". */
+    String progressText() {
+        return bar.getString();
+    }
+
     /** The text shown (when no progress is). */
     String text() {
         return text.getText();
@@ -94,8 +116,18 @@ final class StatusStrip {
             return;
         }
         working.setText("Drawing " + describe(watched.view()) + "…");
-        bar.setString(String.format("%,d lines read", watched.linesSoFar()));
-        bar.setIndeterminate(true);
+        long lines = watched.linesSoFar();
+        long total = watched.linesInTopFile();
+        if (total > 0) {
+            // Lines of included files count too: a scene full of them can pass its top file's count.
+            int percent = (int) Math.min(99, 100 * lines / total);
+            bar.setIndeterminate(false);
+            bar.setValue(percent);
+            bar.setString(String.format("%,d of about %,d lines read (%d %%)", lines, total, percent));
+        } else {
+            bar.setString(String.format("%,d lines read", lines));
+            bar.setIndeterminate(true);
+        }
         cards.show(panel, PROGRESS);
     }
 

@@ -15,6 +15,15 @@ public interface Page {
     }
 
     /**
+     * What each primitive the page draws is, in drawing order, for a page
+     * that is not a scene file (a scene's come from its lines); empty when
+     * the page does not say.
+     */
+    default java.util.List<String> primitiveNames(PageContext context) {
+        return java.util.List.of();
+    }
+
+    /**
      * Draws the page. On a scene error what was drawn before it stays on the
      * canvas and the exception says what went wrong.
      */

@@ -10,12 +10,19 @@ import simpview.scene.simp.SceneMonitor;
  * @param simpDir where page6.simp to page8.simp are looked for
  * @param ownSimpDir where the project's own scenes (page 4 and 5) live
  * @param monitor progress, warnings and cancelling of scene pages
+ * @param ownColours draw the scene pages with their vertices' own colours, without the depth cue
+ *     (SPEC: "without depth cueing, that colour is used"); the pages themselves are cued
  */
-public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
+public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor, boolean ownColours) {
 
     public static final long DEFAULT_SEED = 361;
 
     /** The project's scene folder: -Dsimpview.simpDir (set by the launchers), else ./simp. */
+    /** The pages as they are meant to look: depth-cued. */
+    public PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
+        this(seed, simpDir, ownSimpDir, monitor, false);
+    }
+
     public static Path defaultSimpDir() {
         return Path.of(System.getProperty("simpview.simpDir", "simp"));
     }
@@ -25,14 +32,18 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
     }
 
     public PageContext withSeed(long newSeed) {
-        return new PageContext(newSeed, simpDir, ownSimpDir, monitor);
+        return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours);
     }
 
     public PageContext withSimpDir(Path dir) {
-        return new PageContext(seed, dir, ownSimpDir, monitor);
+        return new PageContext(seed, dir, ownSimpDir, monitor, ownColours);
     }
 
     public PageContext withMonitor(SceneMonitor newMonitor) {
-        return new PageContext(seed, simpDir, ownSimpDir, newMonitor);
+        return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours);
+    }
+
+    public PageContext withOwnColours(boolean own) {
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, own);
     }
 }

@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -41,15 +42,21 @@ public final class ScenePage implements Page {
         return fileName;
     }
 
+    /** The scene file this page reads in {@code context}. */
+    public Path file(PageContext context) {
+        return (ownScene ? context.ownSimpDir() : context.simpDir()).resolve(fileName);
+    }
+
     @Override
     public void draw(PageCanvas canvas, PageContext context) throws SceneException {
         Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
-        Path file = dir.resolve(fileName);
+        Path file = file(context);
         if (!Files.isRegularFile(file)) {
             throw new SceneException(file, 0, 0, "", fileName + " was not found in "
                     + dir.toAbsolutePath().normalize()
                     + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
-        SceneRenderer.draw(file, canvas.depthCued(near, Rgb.BLACK), context.monitor());
+        Drawable target = context.ownColours() ? canvas.depthTested() : canvas.depthCued(near, Rgb.BLACK);
+        SceneRenderer.draw(file, target, context.monitor());
     }
 }

@@ -1,9 +1,13 @@
 package simpview.pages;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.Random;
 import simpview.geometry.Vertex;
 import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
 import simpview.raster.FilledPolygonRenderer;
 
 /**
@@ -34,9 +38,26 @@ public final class ZBufferPage implements Page {
     public void draw(PageCanvas canvas, PageContext context) {
         Drawable target = canvas.depthTested();
         FilledPolygonRenderer renderer = new FilledPolygonRenderer();
-        for (Vertex[] triangle : triangles(context.seed())) {
-            renderer.drawPolygon(triangle[0], triangle[1], triangle[2], target);
+        Provenance provenance = canvas.provenance();
+        Vertex[][] triangles = triangles(context.seed());
+        for (int t = 0; t < triangles.length; t++) {
+            if (provenance != null) {
+                provenance.begin(t);
+            }
+            renderer.drawPolygon(triangles[t][0], triangles[t][1], triangles[t][2], target);
         }
+    }
+
+    /** "triangle 3 of 6, grey 0.70, z -57.1234", in drawing order. */
+    @Override
+    public List<String> primitiveNames(PageContext context) {
+        List<String> names = new ArrayList<>();
+        Vertex[][] triangles = triangles(context.seed());
+        for (int t = 0; t < triangles.length; t++) {
+            names.add(String.format(Locale.ROOT, "triangle %d of %d, grey %.2f, z %.4f",
+                    t + 1, triangles.length, GREYS[t], triangles[t][0].z()));
+        }
+        return names;
     }
 
     /** The six triangles in drawing order, in panel coordinates; random draws: angle, then depth. */

@@ -22,6 +22,9 @@ public final class Painter implements PrimitiveSink {
     private final LineRenderer lines;
     private final PolygonRenderer filled;
     private final PolygonRenderer wire;
+    /** Who follows the primitives drawn (the window's instruments), or null. */
+    private PrimitiveTrace trace;
+    private int drawn;
 
     public Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
         this.panel = panel;
@@ -35,8 +38,16 @@ public final class Painter implements PrimitiveSink {
         draw(kind, p, 0);
     }
 
+    /** From now on tells {@code follower} of every primitive before drawing it (null: nobody). */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
+    }
+
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
     public void draw(int kind, double[] p, int at) {
+        if (trace != null && !trace.drawing(drawn++)) {
+            return;
+        }
         switch (kind) {
             case LINE -> lines.drawLine(p, at, at + Vertex.NUMBERS, panel);
             case FILLED -> filled.drawPolygon(p, at, panel);

@@ -16,6 +16,8 @@ public final class SceneException extends Exception {
     private final int column;
     private final String lineText;
     private final String problem;
+    /** "page4.simp:12", the lines that included the file at fault, innermost first; null for a top file. */
+    private final String includedFrom;
 
     /**
      * @param file the file at fault (may be null when there is none)
@@ -25,15 +27,42 @@ public final class SceneException extends Exception {
      * @param problem what is wrong and what was expected, e.g. "expected a number, found 'x'"
      */
     public SceneException(Path file, int line, int column, String lineText, String problem) {
-        super(format(file, line, column, lineText, problem));
+        this(file, line, column, lineText, problem, null);
+    }
+
+    private SceneException(Path file, int line, int column, String lineText, String problem, String includedFrom) {
+        super(format(file, line, column, lineText, problem, includedFrom));
         this.file = file;
         this.line = line;
         this.column = column;
         this.lineText = lineText == null ? "" : lineText;
         this.problem = problem;
+        this.includedFrom = includedFrom;
     }
 
-    private static String format(Path file, int line, int column, String lineText, String problem) {
+    /**
+     * The same error, saying which lines included the file at fault:
+     * "cube.simp:3:1, included from page4.simp:12: ...". An error that
+     * already says so is returned as it is.
+     *
+     * @param chain the including lines, innermost first, e.g. "b.simp:5, included from page4.simp:12"
+     */
+    public SceneException includedFrom(String chain) {
+        if (includedFrom != null || chain == null || chain.isEmpty()) {
+            return this;
+        }
+        SceneException placed = new SceneException(file, line, column, lineText, problem, chain);
+        placed.setStackTrace(getStackTrace());
+        return placed;
+    }
+
+    /** The including lines, or null when the error is in the top file. */
+    public String includedFrom() {
+        return includedFrom;
+    }
+
+    private static String format(Path file, int line, int column, String lineText, String problem,
+            String includedFrom) {
         StringBuilder sb = new StringBuilder();
         sb.append(file == null ? "<scene>" : file.toString());
         if (line > 0) {
@@ -41,6 +70,9 @@ public final class SceneException extends Exception {
             if (column > 0) {
                 sb.append(':').append(column);
             }
+        }
+        if (includedFrom != null) {
+            sb.append(", included from ").append(includedFrom);
         }
         sb.append(": ").append(problem);
         if (line > 0 && lineText != null && !lineText.isEmpty()) {

@@ -18,6 +18,8 @@ public final class PageCanvas {
     private final ImageDrawable imageDrawable;
     private final PanelDrawable panel;
     private final ZBuffer zbuffer;
+    /** Who drew each panel pixel, when someone asked to know; null costs nothing. */
+    private Provenance provenance;
 
     public PageCanvas() {
         image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
@@ -35,6 +37,34 @@ public final class PageCanvas {
         imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
         zbuffer.reset(Camera.PARALLEL.yon());
+        if (provenance != null) {
+            provenance.reset();
+        }
+    }
+
+    /**
+     * From now on the depth-tested chains record who drew each pixel into
+     * {@code record} (after the z-buffer, so only winning writes count);
+     * null stops it. Cleared with the canvas.
+     */
+    public void recordProvenance(Provenance record) {
+        if (record != null && (record.width() != PANEL || record.height() != PANEL)) {
+            throw new IllegalArgumentException("provenance must be " + PANEL + "x" + PANEL);
+        }
+        provenance = record;
+        if (record != null) {
+            record.reset();
+        }
+    }
+
+    /** The provenance being recorded, or null. */
+    public Provenance provenance() {
+        return provenance;
+    }
+
+    /** What the z-buffer passes its winning writes to: {@code next}, behind the provenance record if there is one. */
+    private Drawable afterZBuffer(Drawable next) {
+        return provenance == null ? next : new ProvenanceDrawable(provenance, next);
     }
 
     public BufferedImage image() {
@@ -52,13 +82,13 @@ public final class PageCanvas {
 
     /** The panel behind the z-buffer and the scissor: what pages 3 and up draw on. */
     public Drawable depthTested() {
-        return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer, panel));
+        return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer, afterZBuffer(panel)));
     }
 
     /** The panel behind scissor, z-buffer and depth cue: what a SIMP scene draws on. */
     public Drawable depthCued(Rgb near, Rgb far) {
-        return new ScissorDrawable(Camera.PARALLEL,
-                new ZBufferDrawable(zbuffer, new DepthCueDrawable(near, far, Camera.PARALLEL, panel)));
+        return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer,
+                afterZBuffer(new DepthCueDrawable(near, far, Camera.PARALLEL, panel))));
     }
 
     /** A copy of the page as it is now. */

@@ -65,6 +65,11 @@ public final class ZBuffer {
         return atFarPlane;
     }
 
+    /** A copy of every depth, row by row (row y at y * width). */
+    public double[] copyDepths() {
+        return depth.clone();
+    }
+
     public double depthAt(int x, int y) {
         return depth[y * width + x];
     }

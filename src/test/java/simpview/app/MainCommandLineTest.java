@@ -103,12 +103,47 @@ class MainCommandLineTest {
         "render --scene a.simp --near-color 1,2 --out x.png",
         "render --scene a.simp --far-color 0,0,nan --out x.png",
         "--frobnicate",
-        "render --page 1 --out x.png extra"})
+        "render --page 1 --out x.png extra",
+        "render --page 1 --out x.jpg",
+        "render --scene a.simp --own-colors --near-color 0,1,0 --out x.png",
+        "render --page 4 --own-colors --out x.png"})
     void badArgumentsAreUsageErrors(String line) {
         CliRun run = CliRun.of(line.split(" "));
         assertEquals(Main.USAGE_ERROR, run.exitCode(), run.err());
-        assertTrue(run.err().contains("Usage:"), "usage shown: " + run.err());
+        assertTrue(run.err().contains("--help' for how to use it."), "points at --help: " + run.err());
+        assertFalse(run.err().contains("Usage:"), "the whole help is not printed: " + run.err());
+        assertTrue(run.err().lines().count() <= 4, "the problem and one line: " + run.err());
         assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @Test
+    void aUsageErrorOfRenderPointsAtRenderHelpAndSuggestsTheNearestOption() {
+        CliRun run = CliRun.of("render", "--pge", "3", "--out", "x.png");
+        assertEquals(Main.USAGE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("See 'simpview render --help'"), run.err());
+        assertTrue(run.err().contains("--page"), "suggests --page: " + run.err());
+    }
+
+    @Test
+    void outAsJpegSaysPngOnly() {
+        CliRun run = CliRun.of("render", "--page", "1", "--out", dir.resolve("x.jpg").toString());
+        assertEquals(Main.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("PNG files only"), run.err());
+        assertFalse(Files.exists(dir.resolve("x.jpg")));
+    }
+
+    @Test
+    void ownColorsDrawTheVertexColoursWithoutTheCue() throws IOException {
+        Path scene = Files.writeString(dir.resolve("red.simp"),
+                "polygon (-50, -50, -150) (1, 0, 0) (50, -50, -150) (1, 0, 0) (0, 50, -150) (1, 0, 0)\n");
+        Path own = dir.resolve("own.png");
+        Path cued = dir.resolve("cued.png");
+        assertEquals(Main.OK, CliRun.of("render", "--scene", scene.toString(), "--own-colors", "--out", own.toString()).exitCode());
+        assertEquals(Main.OK, CliRun.of("render", "--scene", scene.toString(), "--out", cued.toString()).exitCode());
+        int centre = PageCanvas.SIZE / 2;
+        assertEquals(0xFF0000, ImageIO.read(own.toFile()).getRGB(centre, centre) & 0xFFFFFF, "own red");
+        // Cued from white at z = 0 to black at z = -200: z = -150 is a quarter of the way, 64.
+        assertEquals(0x404040, ImageIO.read(cued.toFile()).getRGB(centre, centre) & 0xFFFFFF, "cued grey");
     }
 
     @Test

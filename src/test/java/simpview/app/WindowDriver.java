@@ -41,7 +41,8 @@ final class WindowDriver {
     /** Opens the window and waits for its first page, or for the scene it was given. */
     static WindowDriver open(WindowOptions options, SceneDrawer drawer) throws Exception {
         WindowDriver driver = openWhileDrawing(options, drawer);
-        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(new View.OfPage(1)));
+        View first = options.sceneList().isEmpty() ? new View.OfPage(1) : new View.OfScene(options.sceneList().get(0));
+        driver.awaitShown(options.scene().<View>map(View.OfScene::new).orElse(first));
         return driver;
     }
 
@@ -64,9 +65,14 @@ final class WindowDriver {
      * capture would then miss. An explicit move makes the two agree.
      */
     private void pinWindow() throws Exception {
+        // Near the top-left corner, but wholly on a screen that has little room (1366x768).
+        Rectangle screen = onEdt(() -> window.frame().getGraphicsConfiguration().getBounds());
+        java.awt.Dimension size = onEdt(() -> window.frame().getSize());
+        int left = Math.max(0, Math.min(PIN_X, screen.width - size.width - 10));
+        int top = Math.max(0, Math.min(PIN_Y, screen.height - size.height));
         for (int attempt = 0; attempt < 10; attempt++) {
-            int x = PIN_X + attempt;
-            onEdt(() -> window.frame().setLocation(x, PIN_Y));
+            int x = left + attempt;
+            onEdt(() -> window.frame().setLocation(x, top));
             robot.waitForIdle();
             if (pageIsWhereTheToolkitSaysItIs()) {
                 return;
@@ -77,11 +83,14 @@ final class WindowDriver {
         fail("the window is not where the AWT toolkit says it is, even after moving it");
     }
 
-    /** The capture at the page view's reported place shows the page's white top and left margins. */
+    /** The capture at the page's reported place shows the page's white top and left margins (as zoomed). */
     private boolean pageIsWhereTheToolkitSaysItIs() throws Exception {
         BufferedImage screen = capturePage();
-        for (int i = 0; i < PageCanvas.SIZE; i++) {
-            for (int m = 0; m < PageCanvas.MARGIN; m++) {
+        double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        int shown = Math.min(screen.getWidth(), screen.getHeight());
+        int margin = (int) Math.floor(PageCanvas.MARGIN * Math.min(1, zoom));
+        for (int i = 0; i < shown; i++) {
+            for (int m = 0; m < margin; m++) {
                 if ((screen.getRGB(i, m) & 0xFFFFFF) != 0xFFFFFF || (screen.getRGB(m, i) & 0xFFFFFF) != 0xFFFFFF) {
                     return false;
                 }
@@ -199,11 +208,35 @@ final class WindowDriver {
         robot.keyRelease(KeyEvent.VK_CONTROL);
     }
 
-    /** The page area as the X server shows it. */
+    /** The page as the X server shows it: at 1:1 the 750x750 image, else the square it is zoomed into (what shows of it). */
     BufferedImage capturePage() throws Exception {
         robot.waitForIdle();
-        Point corner = onEdt(() -> window.pageView().getLocationOnScreen());
-        return robot.createScreenCapture(new Rectangle(corner.x, corner.y, PageCanvas.SIZE, PageCanvas.SIZE));
+        Rectangle page = onEdt(this::pageOnScreen);
+        return robot.createScreenCapture(page);
+    }
+
+    /** Where the page image is on screen, cut to the page view. */
+    Rectangle pageOnScreen() {
+        PageView view = window.pageView();
+        Point corner = view.getLocationOnScreen();
+        Point origin = view.imageOrigin();
+        int size = (int) Math.round(view.zoomPan().shownSize());
+        Rectangle image = new Rectangle(corner.x + origin.x, corner.y + origin.y, size, size);
+        return image.intersection(new Rectangle(corner, view.getSize()));
+    }
+
+    /** The screen point at the centre of image pixel (ix, iy) as now zoomed and panned. */
+    Point onScreen(int ix, int iy) throws Exception {
+        return onEdt(() -> {
+            PageView view = window.pageView();
+            Point corner = view.getLocationOnScreen();
+            return new Point(corner.x + (int) Math.floor(view.zoomPan().screenX(ix + 0.5)),
+                    corner.y + (int) Math.floor(view.zoomPan().screenY(iy + 0.5)));
+        });
+    }
+
+    Robot robot() {
+        return robot;
     }
 
     /**
@@ -225,13 +258,56 @@ final class WindowDriver {
      * slow to repaint). When some still differ, the last capture is kept under
      * build/window-failures for a look.
      */
-    long screenDiffersFrom(BufferedImage expected) throws Exception {
-        BufferedImage screen = captureWhen(capture -> Images.differingPixels(expected, capture) == 0);
-        long differing = Images.differingPixels(expected, screen);
+    long screenDiffersFrom(BufferedImage page) throws Exception {
+        double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        if (zoom != 1) {
+            return scaledScreenDiffersFrom(page, zoom);
+        }
+        BufferedImage screen = captureWhen(capture -> Images.differingPixels(page, capture) == 0);
+        long differing = Images.differingPixels(page, screen);
         if (differing != 0) {
             keepEvidence("differs-" + differing, screen);
         }
         return differing;
+    }
+
+    /**
+     * The same for a page scaled to fit (a screen too small for 1:1): a
+     * screen pixel matches when it shows the page pixel it falls on, or,
+     * where rounding can pick either, one of that pixel's neighbours.
+     */
+    private long scaledScreenDiffersFrom(BufferedImage page, double zoom) throws Exception {
+        java.util.function.ToLongFunction<BufferedImage> count = screen -> {
+            long differing = 0;
+            for (int sy = 0; sy < screen.getHeight(); sy++) {
+                for (int sx = 0; sx < screen.getWidth(); sx++) {
+                    if (!nearMatch(page, screen.getRGB(sx, sy), (int) (sx / zoom), (int) (sy / zoom))) {
+                        differing++;
+                    }
+                }
+            }
+            return differing;
+        };
+        BufferedImage screen = captureWhen(capture -> count.applyAsLong(capture) == 0);
+        long differing = count.applyAsLong(screen);
+        if (differing != 0) {
+            keepEvidence("differs-scaled-" + differing, screen);
+        }
+        return differing;
+    }
+
+    private static boolean nearMatch(BufferedImage page, int rgb, int ix, int iy) {
+        for (int dy = -1; dy <= 1; dy++) {
+            for (int dx = -1; dx <= 1; dx++) {
+                int x = ix + dx;
+                int y = iy + dy;
+                if (x >= 0 && y >= 0 && x < page.getWidth() && y < page.getHeight()
+                        && ((page.getRGB(x, y) ^ rgb) & 0xFFFFFF) == 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**

@@ -75,6 +75,23 @@ final class FileStack implements AutoCloseable {
         return false;
     }
 
+    /**
+     * {@code e}, an error met while reading the top file, saying which lines
+     * included that file: "cube.simp:3:1, included from page4.simp:12".
+     */
+    SceneException placed(SceneException e) {
+        if (readers.size() < 2 || !top().file().equals(e.file())) {
+            return e;
+        }
+        StringBuilder chain = new StringBuilder();
+        for (int k = readers.size() - 2; k >= 0; k--) {
+            SimpReader including = readers.get(k);
+            chain.append(chain.length() == 0 ? "" : ", included from ")
+                    .append(including.file().getFileName()).append(':').append(including.lineNumber());
+        }
+        return e.includedFrom(chain.toString());
+    }
+
     /** Acts on a {@code file} command just read from the top file. */
     void include(Command c) throws SceneException {
         SimpReader from = top();

@@ -41,6 +41,18 @@ final class Keywords {
         return null;
     }
 
+    /** " (did you mean 'polygon'? commands are case-sensitive)" for a near miss of a command word, else "". */
+    static String suggestion(String word) {
+        java.util.List<String> spellings = new java.util.ArrayList<>();
+        for (Kind k : Kind.values()) {
+            spellings.add(k.spelling);
+        }
+        return simpview.scene.Nearest.to(word, spellings)
+                .map(near -> " (did you mean '" + near + "'?"
+                        + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")"))
+                .orElse("");
+    }
+
     /** Every command's spelling, for "expected ..." messages: "{, }, scale, ..., phong". */
     static String all() {
         StringBuilder sb = new StringBuilder();

@@ -75,7 +75,7 @@ final class ReadAhead implements AutoCloseable {
             if (batch == null) {
                 return; // cannot happen short of an Error between two batches; next() sees the thread end
             }
-            batch.failure = t;
+            batch.failure = t instanceof SceneException e ? files.placed(e) : t;
         } finally {
             files.close();
             client.sendTo(client.painter());

@@ -21,4 +21,17 @@ public interface SceneMonitor {
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
     default void warning(String message) {
     }
+
+    /** Who follows the scene's primitives one by one (the window's instruments), or null: nobody, at no cost. */
+    default simpview.scene.PrimitiveTrace trace() {
+        return null;
+    }
+
+    /**
+     * A turn of the whole world (the window's orbit), applied before the
+     * scene's own transformations, so before the depth cue; null for none.
+     */
+    default simpview.geometry.Matrix4 worldTurn() {
+        return null;
+    }
 }

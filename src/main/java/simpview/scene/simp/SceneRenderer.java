@@ -23,7 +23,10 @@ public final class SceneRenderer {
      * state: identity CTM, empty stacks, style filled.
      */
     public static void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException {
-        new SimpInterpreter(new SimpClient(panel), monitor).run(file);
+        SimpClient client = new SimpClient(panel);
+        client.follow(monitor.trace());
+        client.turnWorld(monitor.worldTurn());
+        new SimpInterpreter(client, monitor).run(file);
     }
 
     /**

@@ -7,8 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import simpview.scene.simp.Command.Kind;
 
@@ -28,6 +30,32 @@ public record SceneRules(boolean lit, String reason) {
 
     public static final SceneRules DEPTH_CUED = new SceneRules(false, null);
 
+    /**
+     * Every .simp file the scene in {@code top} can reach: itself and, in
+     * the order first met, each file it includes, as the reader would find
+     * them (what the window watches for a save). Files that do not exist yet
+     * are left out.
+     */
+    public static List<Path> reached(Path top) {
+        Set<Path> seen = new HashSet<>();
+        List<Path> reached = new ArrayList<>();
+        Deque<Path> toRead = new ArrayDeque<>();
+        toRead.add(top);
+        while (!toRead.isEmpty()) {
+            Path file = toRead.poll();
+            try {
+                if (!seen.add(file.toRealPath())) {
+                    continue;
+                }
+            } catch (IOException | SecurityException e) {
+                continue;
+            }
+            reached.add(file);
+            scan(file, toRead, false);
+        }
+        return reached;
+    }
+
     /** Looks through {@code top} and the files it includes for a lit command. */
     public static SceneRules of(Path top) {
         Set<Path> seen = new HashSet<>();
@@ -42,7 +70,7 @@ public record SceneRules(boolean lit, String reason) {
                 continue;
             }
             if (seen.add(real)) {
-                String reason = scan(file, toRead);
+                String reason = scan(file, toRead, true);
                 if (reason != null) {
                     return new SceneRules(true, reason);
                 }
@@ -51,8 +79,13 @@ public record SceneRules(boolean lit, String reason) {
         return DEPTH_CUED;
     }
 
-    /** Reads one file's lines; returns where its first lit command is, and queues the files it includes. */
-    private static String scan(Path file, Deque<Path> toRead) {
+    /**
+     * Reads one file's lines; returns where its first lit command is, and
+     * queues the files it includes (all of them, or with {@code stopAtLit}
+     * those before its first lit command).
+     */
+    private static String scan(Path file, Deque<Path> toRead, boolean stopAtLit) {
+        String first = null;
         try (InputStream in = Files.newInputStream(file)) {
             LineWords words = new LineWords(in);
             while (words.next()) {
@@ -60,8 +93,11 @@ public record SceneRules(boolean lit, String reason) {
                 if (kind == null) {
                     continue;
                 }
-                if (kind.lit) {
-                    return file.getFileName() + ":" + words.line() + " " + kind.spelling;
+                if (kind.lit && first == null) {
+                    first = file.getFileName() + ":" + words.line() + " " + kind.spelling;
+                    if (stopAtLit) {
+                        return first;
+                    }
                 }
                 if (kind == Kind.FILE) {
                     Path included = include(file, words.rest());
@@ -71,9 +107,9 @@ public record SceneRules(boolean lit, String reason) {
                 }
             }
         } catch (IOException | SecurityException e) {
-            return null;
+            return first;
         }
-        return null;
+        return first;
     }
 
     /** Where a {@code file} command's argument leads, as the reader looks; null when nowhere. */

@@ -15,6 +15,7 @@ import simpview.scene.GeometryStage;
 import simpview.scene.LitGeometry;
 import simpview.scene.Painter;
 import simpview.scene.PrimitiveSink;
+import simpview.scene.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.Fog;
@@ -52,6 +53,9 @@ public final class SimpClient {
     private String firstPrimitiveAt;
     /** A lit command met in a scene drawn depth-cued on request: where the first stood, or null. */
     private String firstIgnored;
+    /** Who follows the primitives (the window's instruments), or null: nobody, and nothing is spent on it. */
+    private PrimitiveTrace trace;
+    private int traced;
 
     /** Draws a depth-cued scene on a panel-coordinate drawable with the project's renderers. */
     public SimpClient(Drawable panel) {
@@ -247,9 +251,45 @@ public final class SimpClient {
         return painter;
     }
 
+    /**
+     * The window's instruments' hook, one place on each side: {@code follower}
+     * learns each primitive's file and line as the geometry hands it on (the
+     * reading thread), and is asked before the painter draws it (the drawing
+     * thread). Null for nobody, the default. Depth-cued scenes only; call
+     * before the scene is read.
+     */
+    public void follow(PrimitiveTrace follower) {
+        if (cued == null) {
+            return;
+        }
+        trace = follower;
+        painter.follow(follower);
+        cued.sendTo(follower == null ? painter : new Traced(painter));
+    }
+
+    /** Starts the CTM at {@code turn}, a turn of the whole world before the scene's own transforms; null: identity. */
+    public void turnWorld(Matrix4 turn) {
+        ctm = turn == null ? Matrix4.identity() : turn;
+    }
+
+    /** A sink that tells the trace where each primitive came from, then hands it on. */
+    private final class Traced implements PrimitiveSink {
+        private final PrimitiveSink next;
+
+        Traced(PrimitiveSink next) {
+            this.next = next;
+        }
+
+        @Override
+        public void add(int kind, double[] p) {
+            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, p);
+            next.add(kind, p);
+        }
+    }
+
     /** From now on primitives go to {@code to} instead of being drawn at once (depth-cued scenes only). */
     void sendTo(PrimitiveSink to) {
-        cued.sendTo(to);
+        cued.sendTo(trace == null ? to : new Traced(to));
     }
 
     FileStack files() {

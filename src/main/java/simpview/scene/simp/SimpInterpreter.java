@@ -68,8 +68,7 @@ public final class SimpInterpreter {
             files.openTop(file);
             Command c = new Command();
             long commands = 0;
-            while (files.next(c)) {
-                client.execute(c);
+            while (next(files, c)) {
                 if ((++commands & POLL_MASK) == 0) {
                     report(files.linesRead());
                 }
@@ -77,6 +76,19 @@ public final class SimpInterpreter {
             finish(file, files.linesRead(), client.openBraces(), client.warnings());
         } finally {
             files.close();
+        }
+    }
+
+    /** Reads the next command and carries it out; an error in an included file names the lines that included it. */
+    private boolean next(FileStack files, Command c) throws SceneException {
+        try {
+            if (!files.next(c)) {
+                return false;
+            }
+            client.execute(c);
+            return true;
+        } catch (SceneException e) {
+            throw files.placed(e);
         }
     }
 

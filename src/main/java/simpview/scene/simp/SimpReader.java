@@ -215,8 +215,8 @@ public final class SimpReader implements AutoCloseable {
         }
         Kind kind = Keywords.kind(b, start, wordEnd);
         if (kind == null) {
-            throw error(start, "unknown command '" + (wordEnd > start ? text(start, wordEnd) : token(start))
-                    + "'; expected " + Keywords.all());
+            String word = wordEnd > start ? text(start, wordEnd) : token(start);
+            throw error(start, "unknown command '" + word + "'" + Keywords.suggestion(word) + "; expected " + Keywords.all());
         }
         c.kind = kind;
         switch (kind.shape) {

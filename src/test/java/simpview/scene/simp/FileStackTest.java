@@ -212,4 +212,19 @@ class FileStackTest {
         });
         assertEquals(3 + 2 + 2, last[0]);
     }
+
+    @Test
+    void anErrorInAnIncludedFileNamesTheLinesThatIncludedIt(@TempDir Path where) throws Exception {
+        Files.writeString(where.resolve("cube.simp"), "# a cube\n{\nfrobnicate\n");
+        Files.writeString(where.resolve("box.simp"), "scale 1 1 1\nfile \"cube\"\n");
+        Path page = Files.writeString(where.resolve("page4.simp"), "# page\n\n{\nfile \"box\"\n}\n");
+        for (long readAheadFrom : new long[] {Long.MAX_VALUE, 0}) {
+            SceneException e = assertThrows(SceneException.class, () -> new SimpInterpreter(
+                    new SimpClient(new simpview.testing.RecordingDrawable(650, 650)), SceneMonitor.NONE, readAheadFrom)
+                    .run(page));
+            assertTrue(e.getMessage().startsWith(where.resolve("cube.simp") + ":3:1, included from box.simp:2, "
+                    + "included from page4.simp:4: unknown command 'frobnicate'"), e.getMessage());
+            assertEquals(3, e.line());
+        }
+    }
 }

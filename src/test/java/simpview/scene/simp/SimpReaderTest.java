@@ -205,14 +205,23 @@ class SimpReaderTest {
 
     @Test
     void unknownCommand() {
-        assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal'; expected {, }, scale, translate, "
+        assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal' (did you mean 'scale'?); expected {, }, scale, translate, "
                 + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
     @Test
     void commandsAreCaseSensitive() {
-        assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale'; expected {, }, scale, translate, "
+        assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale' (did you mean 'scale'? commands are case-sensitive); expected {, }, scale, translate, "
                 + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+    }
+
+    @Test
+    void aMistypedCommandGetsTheNearestOneSuggested() {
+        assertError("Polygon (0, 0, 0) (1, 0, 0) (0, 1, 0)", 1, 1, "unknown command 'Polygon' (did you mean 'polygon'? "
+                + "commands are case-sensitive); expected {, }, scale, translate, rotate, line, polygon, file, wire, "
+                + "filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+        assertError("frobnicate 1", 1, 1, "unknown command 'frobnicate'; expected {, }, scale, translate, rotate, line, "
+                + "polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
     @Test

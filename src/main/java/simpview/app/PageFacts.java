@@ -1,0 +1,19 @@
+package simpview.app;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * What the instruments can read about a finished picture besides its image.
+ *
+ * @param depths the panel's z-buffer when the picture was done (row y at y * 650, panel y up), or null
+ * @param owners which primitive drew each panel pixel, laid out like depths, or null when not recorded
+ * @param primitives the primitives read, in drawing order (owners index into them)
+ * @param files the scene files the picture read, for reloading on save; empty for pages without a file
+ * @param drewSomething false when an error stopped the picture before anything of it was drawn
+ */
+record PageFacts(double[] depths, int[] owners, Primitives primitives, List<Path> files,
+        boolean drewSomething) {
+
+    static final PageFacts NONE = new PageFacts(null, null, Primitives.NONE, List.of(), true);
+}

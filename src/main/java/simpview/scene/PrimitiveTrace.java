@@ -1,0 +1,30 @@
+package simpview.scene;
+
+import java.nio.file.Path;
+
+/**
+ * Follows a scene's primitives one by one, for the window's instruments
+ * (who drew each pixel, stepping through the drawing). Where nobody follows
+ * there is no trace at all (null), and drawing costs nothing more.
+ *
+ * <p>Primitives are numbered 0, 1, 2, ... in drawing order, counting only
+ * those that reach the rasterizers (not culled). {@link #read} is called on
+ * the thread that reads the scene, {@link #drawing} on the one that draws;
+ * for a large scene these are two threads, and primitive n's read comes
+ * before its drawing.
+ */
+public interface PrimitiveTrace {
+
+    /**
+     * Primitive {@code index} comes from this command.
+     *
+     * @param file the file holding the command
+     * @param line its 1-based line
+     * @param kind {@link Painter#LINE}, {@link Painter#FILLED} or {@link Painter#WIRE}
+     * @param p its vertices in panel space, {@link simpview.geometry.Vertex#NUMBERS} numbers each; read, never kept
+     */
+    void read(int index, Path file, int line, int kind, double[] p);
+
+    /** Primitive {@code index} is about to be drawn; false leaves it out (the picture stops before it). */
+    boolean drawing(int index);
+}
