@@ -83,36 +83,92 @@ public final class FragmentStage implements FragmentSink {
         if (y < 0 || y >= height) {
             return;
         }
-        int row = y * width;
         int start = Math.max(from, 0);
         int end = Math.min(to, width);
+        boolean wrote = shader == null ? colourSpan(y, from, start, end, q0, dq, v0, dv)
+                : phongSpan(y, from, start, end, q0, dq, v0, dv);
+        if (wrote) {
+            zbuffer.written();
+        }
+    }
+
+    /*
+     * The two span loops below do, per pixel, exactly what pixel() does, with
+     * k = x - from: inv = 1 / (q0 + k dq), each channel (v0[c] + k dv[c]) * inv.
+     * The starts and slopes are read into locals once per span (the stores to
+     * depth[] could alias v0 and dv, so the compiler would read them again at
+     * every pixel); the arithmetic, and so every bit, is the same.
+     */
+
+    /** A span whose colour is known (flat, gouraud, wire, lines); true when a pixel was written. */
+    private boolean colourSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double r0 = v0[R];
+        double dr = dv[R];
+        double g0 = v0[G];
+        double dg = dv[G];
+        double b0 = v0[B];
+        double db = dv[B];
+        int row = y * width;
         boolean wrote = false;
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
-            double z = (v0[Z] + k * dv[Z]) * inv;
+            double z = (z0 + k * dz) * inv;
             if (!(z > depth[row + x])) {
                 continue;
             }
             depth[row + x] = z;
             wrote = true;
-            double r = (v0[R] + k * dv[R]) * inv;
-            double g = (v0[G] + k * dv[G]) * inv;
-            double b = (v0[B] + k * dv[B]) * inv;
-            if (shader != null) {
-                shader.shade((v0[PX] + k * dv[PX]) * inv, (v0[PY] + k * dv[PY]) * inv, z,
-                        (v0[NX] + k * dv[NX]) * inv, (v0[NY] + k * dv[NY]) * inv, (v0[NZ] + k * dv[NZ]) * inv,
-                        r, g, b, lit);
-            } else {
-                lit[0] = r;
-                lit[1] = g;
-                lit[2] = b;
-            }
+            lit[0] = (r0 + k * dr) * inv;
+            lit[1] = (g0 + k * dg) * inv;
+            lit[2] = (b0 + k * db) * inv;
             panel.setPixel(x, y, z, fogged(z));
         }
-        if (wrote) {
-            zbuffer.written();
+        return wrote;
+    }
+
+    /** A phong span: kd, P and N resolved at each visible pixel and lit there; true when a pixel was written. */
+    private boolean phongSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double r0 = v0[R];
+        double dr = dv[R];
+        double g0 = v0[G];
+        double dg = dv[G];
+        double b0 = v0[B];
+        double db = dv[B];
+        double px0 = v0[PX];
+        double dpx = dv[PX];
+        double py0 = v0[PY];
+        double dpy = dv[PY];
+        double nx0 = v0[NX];
+        double dnx = dv[NX];
+        double ny0 = v0[NY];
+        double dny = dv[NY];
+        double nz0 = v0[NZ];
+        double dnz = dv[NZ];
+        PointShader s = shader;
+        int row = y * width;
+        boolean wrote = false;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!(z > depth[row + x])) {
+                continue;
+            }
+            depth[row + x] = z;
+            wrote = true;
+            s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                    (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
+                    (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            panel.setPixel(x, y, z, fogged(z));
         }
+        return wrote;
     }
 
     @Override

@@ -270,7 +270,7 @@ class MainCommandLineTest {
     void sceneFilesGoWithTheContactSheetOnly() {
         CliRun run = CliRun.of("render", "--page", "2", "--out", dir.resolve("p.png").toString(), "x.simp");
         assertEquals(Main.USAGE_ERROR, run.exitCode());
-        assertTrue(run.err().startsWith("scene files [x.simp] go with --contact-sheet only"), run.err());
+        assertTrue(run.err().startsWith("simpview: scene files [x.simp] go with --contact-sheet only"), run.err());
         assertFalse(Files.exists(dir.resolve("p.png")));
     }
 
@@ -282,7 +282,7 @@ class MainCommandLineTest {
         for (String option : new String[] {"--near-color", "--far-color"}) {
             CliRun run = CliRun.of("render", "--scene", lit.toString(), option, "1,0,0", "--out", out.toString());
             assertEquals(Main.USAGE_ERROR, run.exitCode(), option);
-            assertTrue(run.err().startsWith("--near-color and --far-color are for depth-cued scenes, and lit.simp"
+            assertTrue(run.err().startsWith("simpview: --near-color and --far-color are for depth-cued scenes, and lit.simp"
                     + " is lit (part.simp:2 ambient)"), run.err());
             assertFalse(Files.exists(out));
         }

@@ -1,0 +1,71 @@
+package simpview.bench;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+
+/**
+ * One course page of the third or fourth assignment (@Param scene, as
+ * "a3/pageI" or "a4/page-d"), from course-simp-a3 and course-simp-a4 beside
+ * -Dsimpview.courseSimp: clear the canvas, then draw the lit scene, as the
+ * window does. Its .obj models are parsed once in the set-up and kept by the
+ * library (as the program keeps them while their files are unchanged), so
+ * one op is the warm redraw. Sampled, in ms.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.SampleTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 4, time = 1)
+@Fork(1)
+public class LitPages {
+
+    @Param({"a3/pageA", "a3/pageB", "a3/pageC", "a3/pageD", "a3/pageE", "a3/pageF", "a3/pageG", "a3/pageH",
+            "a3/pageI", "a3/tomsPageJ",
+            "a4/page-a1", "a4/page-a2", "a4/page-a3", "a4/page-b1", "a4/page-b2", "a4/page-b3",
+            "a4/page-c1", "a4/page-c2", "a4/page-c3", "a4/page-d", "a4/page-e", "a4/page-f1", "a4/page-f2",
+            "a4/page-g", "a4/page-h"})
+    public String scene;
+
+    private final PageCanvas canvas = new PageCanvas();
+    private final ObjLibrary models = new ObjLibrary();
+    private Path file;
+
+    @Setup(Level.Trial)
+    public void setUp() throws SceneException {
+        Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+        String[] parts = scene.split("/");
+        file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+        if (!Files.isRegularFile(file)) {
+            throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
+        }
+        clearAndDraw(); // parses the models, and fails the trial at once if the scene cannot be drawn
+        if (models.parseCount() == 0 && scene.endsWith("pageI")) {
+            throw new IllegalStateException("pageI drew no model");
+        }
+    }
+
+    @Benchmark
+    public PageCanvas clearAndDraw() throws SceneException {
+        canvas.clear();
+        SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+        return canvas;
+    }
+}
