@@ -31,6 +31,7 @@ import simpview.compare.HeatMap;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.SubmissionNames;
+import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
 /**
@@ -225,17 +226,16 @@ final class CompareBatch {
             return files.filter(Files::isRegularFile)
                     .filter(f -> PICTURE_ENDINGS.stream().anyMatch(
                             e -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(e)))
-                    .sorted((a, b) -> NaturalOrder.compare(dir.relativize(a).toString(), dir.relativize(b).toString()))
+                    .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(), dir.relativize(b).toString()))
                     .toList();
         }
     }
 
     private static Map<String, Path> scenesIn(Path folder) {
         Map<String, Path> scenes = new TreeMap<>();
-        try (Stream<Path> files = Files.list(folder)) {
-            files.filter(f -> f.getFileName().toString().endsWith(".simp") && Files.isRegularFile(f))
-                    .forEach(f -> scenes.put(SubmissionNames.stem(f.getFileName().toString()), f));
-        } catch (IOException e) {
+        try {
+            SceneList.folder(folder).forEach(f -> scenes.put(SubmissionNames.stem(f.getFileName().toString()), f));
+        } catch (IllegalArgumentException e) {
             // an unreadable folder has no scenes; the caller says so
         }
         return scenes;
