@@ -294,13 +294,33 @@ class InstrumentsWindowTest {
         }
         Path scene = Files.writeString(dir.resolve("long.simp"), text);
         assertTrue(Files.size(scene) > (1 << 20));
+        // A stand-in that stops half way, still reporting, until the test has seen the fraction: however
+        // busy the machine, the scene cannot end before the progress bar shows (and the count is known).
+        java.util.concurrent.atomic.AtomicBoolean seen = new java.util.concurrent.atomic.AtomicBoolean();
+        SceneDrawer halfWayUntilSeen = (file, panel, monitor) -> {
+            for (long read = 1000; read <= lines; read += 1000) {
+                monitor.linesRead(read);
+                while (read == lines / 2 && !seen.get()) {
+                    if (monitor.cancelled()) {
+                        throw new simpview.scene.simp.SceneCancelledException();
+                    }
+                    monitor.linesRead(read);
+                    try {
+                        Thread.sleep(5);
+                    } catch (InterruptedException e) {
+                        throw new simpview.scene.simp.SceneCancelledException();
+                    }
+                }
+            }
+        };
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()),
-                StandInDrawers.SLOW_READER);
+                halfWayUntilSeen);
         driver.onEdt(() -> window().openScene(scene));
         driver.awaitEdt(() -> window().status().showingProgress()
                 && window().status().progressText().contains("of about 40,000 lines read"),
                 "a fraction on the progress bar");
         String said = driver.onEdt(() -> window().status().progressText());
+        seen.set(true);
         assertTrue(said.matches("[0-9,]+ of about 40,000 lines read \\(\\d+ %\\)"), said);
         driver.awaitShown(new View.OfScene(scene));
     }
