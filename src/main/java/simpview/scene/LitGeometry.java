@@ -55,6 +55,10 @@ public final class LitGeometry implements GeometryStage, ObjSink {
     private boolean[] ownNormal = new boolean[8];
     private double[] screen = new double[(3 + FragmentStage.PHONG_CHANNELS) * 16];
     private final double[] lit = new double[3];
+    /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
+    private double faceNx;
+    private double faceNy;
+    private double faceNz;
     // W * CTM and its normal transform, for the CTM they were made from.
     private Matrix4 madeFrom;
     private Matrix4 madeWith;
@@ -224,10 +228,6 @@ public final class LitGeometry implements GeometryStage, ObjSink {
             cam[o + CB] = lit[2];
         }
     }
-
-    private double faceNx;
-    private double faceNy;
-    private double faceNz;
 
     /** Step 3: the face normal (p2 - p1) x (p3 - p1), unit or zero, given to every vertex without its own. */
     private void faceNormals(int n) {
