@@ -26,18 +26,17 @@ import simpview.surface.Rgb;
 @Command(name = "compare",
         mixinStandardHelpOptions = true,
         version = Main.VERSION,
-        description = {
-            "Compares a picture (a 750x750 page or a window capture: its 650x650 panel is found) with the page or",
-            "scene as simpview draws it, and reports the share of panel pixels that match, the margins and where",
-            "they differ. With --dir, compares a whole folder and writes a table (Markdown and CSV)."},
+        description = "Compares a picture (a 750x750 page or a window capture: its 650x650 panel is found) with the "
+                + "page or scene as simpview draws it, and reports the share of panel pixels that match, the margins "
+                + "and where they differ. With --dir, compares a whole folder and writes a table (Markdown and CSV).",
         footer = {"", "Examples:",
             "  simpview compare mine.png --page 6 --simp-dir course/ --diff diff.png",
             "  simpview compare pageC.png --scene course-a3/pageC.simp",
-            "  simpview compare --dir submissions/ --pages 1-8 --simp-dir course/ --out-dir report/",
-            "  simpview compare --dir submissions/ --scene course-a3/ --out-dir report/",
+            "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
+            "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
             "",
-            "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel",
-            "or one of its 8 neighbours, both ways round. Regions are panel rectangles: origin bottom-left, y up."},
+            "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel "
+                + "or one of its 8 neighbours, both ways round. Regions are panel rectangles: origin bottom-left, y up."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture reaches --min",
             "1:some picture is below --min, or cannot be read, or has no panel; or a scene error",

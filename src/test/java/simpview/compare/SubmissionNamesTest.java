@@ -1,0 +1,37 @@
+package simpview.compare;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.Optional;
+import java.util.OptionalInt;
+import org.junit.jupiter.api.Test;
+
+/** Which page or scene a submitted picture's name names. */
+class SubmissionNamesTest {
+
+    @Test
+    void pageNumbersInNames() {
+        assertEquals(OptionalInt.of(3), SubmissionNames.pageNumber("page3.png"));
+        assertEquals(OptionalInt.of(3), SubmissionNames.pageNumber("Page_3.PNG"));
+        assertEquals(OptionalInt.of(3), SubmissionNames.pageNumber("alice-page03.png"));
+        assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("page1_mesh_wire.png"));
+        assertEquals(OptionalInt.of(12), SubmissionNames.pageNumber("page 12.jpg"));
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("pageC.png"));
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("homepage3.png"), "not inside a word");
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("notes.png"));
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("page99999999999.png"));
+    }
+
+    @Test
+    void sceneNamesInNames() {
+        List<String> a3 = List.of("cube", "pageA", "pageC", "pageJ", "tomsPageJ", "page-a2", "page-a");
+        assertEquals(Optional.of("pageC"), SubmissionNames.sceneName("pageC.png", a3));
+        assertEquals(Optional.of("pageC"), SubmissionNames.sceneName("pagec_v2.png", a3));
+        assertEquals(Optional.of("tomsPageJ"), SubmissionNames.sceneName("pageJ_tomsPageJ.png", a3), "the longest");
+        assertEquals(Optional.of("page-a2"), SubmissionNames.sceneName("page-a2.png", a3));
+        assertEquals(Optional.of("page-a"), SubmissionNames.sceneName("bob-page-a.png", a3));
+        assertEquals(Optional.empty(), SubmissionNames.sceneName("pageAB.png", a3), "pageA inside a longer word");
+        assertEquals(Optional.empty(), SubmissionNames.sceneName("cubes.png", a3));
+    }
+}
