@@ -158,20 +158,11 @@ final class CompareCommand implements Callable<Integer> {
     }
 
     private PageContext context() {
-        PageContext context = PageContext.defaults();
-        if (seed != null) {
-            context = context.withSeed(seed);
-        }
-        return simpDir == null ? context : context.withSimpDir(simpDir);
+        return PageDrawing.context(seed, simpDir, monitor());
     }
 
     private SceneMonitor monitor() {
-        return new SceneMonitor() {
-            @Override
-            public void warning(String message) {
-                err().println("warning: " + message);
-            }
-        };
+        return PageDrawing.warningsTo(err());
     }
 
     private PrintWriter err() {

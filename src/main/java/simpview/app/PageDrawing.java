@@ -1,5 +1,6 @@
 package simpview.app;
 
+import java.io.PrintWriter;
 import java.nio.file.Path;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
@@ -37,5 +38,24 @@ final class PageDrawing {
         SceneSheet sheet = new SceneSheet(file, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
         sheet.drawOn(renderer.canvas(), monitor, SceneDrawer.SIMP, ownColours);
         return renderer.canvas();
+    }
+
+    /** The pages' context from the command line's options (null where not given), warnings to {@code monitor}. */
+    static PageContext context(Long seed, Path simpDir, SceneMonitor monitor) {
+        PageContext context = PageContext.defaults().withMonitor(monitor);
+        if (seed != null) {
+            context = context.withSeed(seed);
+        }
+        return simpDir == null ? context : context.withSimpDir(simpDir);
+    }
+
+    /** A monitor that prints each warning as a "warning: ..." line on {@code err}. */
+    static SceneMonitor warningsTo(PrintWriter err) {
+        return new SceneMonitor() {
+            @Override
+            public void warning(String message) {
+                err.println("warning: " + message);
+            }
+        };
     }
 }
