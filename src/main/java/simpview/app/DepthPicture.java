@@ -13,7 +13,7 @@ import simpview.surface.PageCanvas;
  * at the far plane it was reset to) is marked in {@link #UNTOUCHED}. Margins
  * stay white, as on the page. A lit scene's z-buffer starts at -infinity
  * and holds camera-space depths: there the nearest and farthest depths
- * written are white and black.
+ * written are white and black, and a pixel still at -infinity is untouched.
  */
 final class DepthPicture {
 
@@ -37,29 +37,32 @@ final class DepthPicture {
         return 0xFF000000 | v << 16 | v << 8 | v;
     }
 
-    /** No write reached a pixel whose depth is still at the far plane (or -infinity, a lit scene's start). */
-    static boolean untouched(double z) {
-        return !(z > FAR);
+    /** No write reached a pixel whose depth is still where the z-buffer started ({@code start}), or beyond. */
+    static boolean untouched(double z, double start) {
+        return !(z > start);
     }
 
-    /** The picture of {@code depths}, the panel's z-buffer in rows from the bottom (panel y up). */
-    static BufferedImage of(double[] depths) {
+    /**
+     * The picture of {@code depths}, the panel's z-buffer in rows from the
+     * bottom (panel y up), which started at {@code start}: the far plane for
+     * a depth-cued page, -infinity for a lit scene.
+     */
+    static BufferedImage of(double[] depths, double start) {
         double near = NEAR;
-        double far = FAR;
-        boolean lit = false;
-        double nearest = Double.NEGATIVE_INFINITY;
-        double farthest = Double.POSITIVE_INFINITY;
-        for (double z : depths) {
-            if (z == Double.NEGATIVE_INFINITY) {
-                lit = true;
-            } else if (z == z) {
-                nearest = Math.max(nearest, z);
-                farthest = Math.min(farthest, z);
+        double far = start;
+        if (start == Double.NEGATIVE_INFINITY) {
+            double nearest = Double.NEGATIVE_INFINITY;
+            double farthest = Double.POSITIVE_INFINITY;
+            for (double z : depths) {
+                if (z > start) {
+                    nearest = Math.max(nearest, z);
+                    farthest = Math.min(farthest, z);
+                }
             }
-        }
-        if (lit && nearest >= farthest) {
-            near = nearest;
-            far = Math.nextDown(farthest);
+            if (nearest >= farthest) {
+                near = nearest;
+                far = Math.nextDown(farthest);
+            }
         }
         BufferedImage image = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE, BufferedImage.TYPE_INT_RGB);
         int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
@@ -69,7 +72,7 @@ final class DepthPicture {
             int row = (PageCanvas.MARGIN + panel - 1 - y) * PageCanvas.SIZE + PageCanvas.MARGIN;
             for (int x = 0; x < panel; x++) {
                 double z = depths[y * panel + x];
-                pixels[row + x] = !(z > far) ? UNTOUCHED : grey(z, near, far);
+                pixels[row + x] = untouched(z, far) ? UNTOUCHED : grey(z, near, far);
             }
         }
         return image;

@@ -9,9 +9,9 @@ import simpview.geometry.Matrix4;
  * @param record whether to trace the drawing (who drew each pixel, where each primitive came from);
  *     off on the command line, where it would only cost
  * @param stepLimit draw only the first this many primitives of a scene (stepping), or -1 for all
- * @param worldTurn the orbit's turn of the world before the scene's CTM, or null
+ * @param viewTurn the orbit's turn of the view, in camera space (see SceneMonitor.viewTurn), or null
  */
-record DrawSettings(boolean ownColours, boolean record, int stepLimit, Matrix4 worldTurn) {
+record DrawSettings(boolean ownColours, boolean record, int stepLimit, Matrix4 viewTurn) {
 
     /** The picture as the pages and the command line draw it. */
     static final DrawSettings PLAIN = new DrawSettings(false, false, -1, null);
@@ -20,14 +20,14 @@ record DrawSettings(boolean ownColours, boolean record, int stepLimit, Matrix4 w
     static final DrawSettings WINDOW = new DrawSettings(false, true, -1, null);
 
     DrawSettings withOwnColours(boolean own) {
-        return new DrawSettings(own, record, stepLimit, worldTurn);
+        return new DrawSettings(own, record, stepLimit, viewTurn);
     }
 
     DrawSettings withStepLimit(int limit) {
-        return new DrawSettings(ownColours, record, limit, worldTurn);
+        return new DrawSettings(ownColours, record, limit, viewTurn);
     }
 
-    DrawSettings withWorldTurn(Matrix4 turn) {
+    DrawSettings withViewTurn(Matrix4 turn) {
         return new DrawSettings(ownColours, record, stepLimit, turn);
     }
 }

@@ -48,7 +48,9 @@ final class Inspector {
         PageFacts facts = view.facts();
         if (facts.depths() != null) {
             double z = facts.depths()[y * PageCanvas.PANEL + x];
-            sb.append(" · ").append(DepthPicture.untouched(z) ? "depth untouched (far plane, -200)" : "depth " + number(z));
+            sb.append(" · ").append(!DepthPicture.untouched(z, facts.depthStart()) ? "depth " + number(z)
+                    : facts.depthStart() == Double.NEGATIVE_INFINITY ? "depth untouched (no write)"
+                    : "depth untouched (far plane, " + number(facts.depthStart()) + ")");
         }
         sb.append(" · ").append(drawnBy(facts, y * PageCanvas.PANEL + x));
         return sb.toString();

@@ -39,6 +39,8 @@ final class RenderJob implements SceneMonitor {
     private volatile long topFileLines = -1;
     /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
     private PrimitiveLog trace;
+    /** A lit scene's centre of what was shown, in camera space, when told; the render thread's, like trace. */
+    private double[] shownCentre;
 
     RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -122,8 +124,13 @@ final class RenderJob implements SceneMonitor {
     }
 
     @Override
-    public Matrix4 worldTurn() {
-        return settings.worldTurn();
+    public Matrix4 viewTurn() {
+        return settings.viewTurn();
+    }
+
+    @Override
+    public void shownCentre(double[] xyz) {
+        shownCentre = xyz.clone();
     }
 
     /**
@@ -159,9 +166,9 @@ final class RenderJob implements SceneMonitor {
         if (cancelled) {
             return null;
         }
-        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(),
+        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(), canvas.zbuffer().farthest(),
                 canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
-                primitives(), filesRead(), drewSomething);
+                primitives(), filesRead(), drewSomething, shownCentre);
         canvas.recordProvenance(null);
         return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
     }

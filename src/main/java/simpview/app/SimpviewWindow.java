@@ -53,6 +53,8 @@ final class SimpviewWindow {
     private WindowOptions options;
     private RenderedView shown;
     private RenderJob pending;
+    /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
+    private boolean turnWaiting;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView, status::say);
 
@@ -131,7 +133,12 @@ final class SimpviewWindow {
 
         @Override
         public void orbit(int dx, int dy) {
-            turn(dx, dy);
+            turn(() -> orbit.drag(dx, dy));
+        }
+
+        @Override
+        public void nearer(int notches) {
+            turn(() -> orbit.wheel(notches));
         }
 
         @Override
@@ -260,21 +267,34 @@ final class SimpviewWindow {
         }
     }
 
-    /** A turning drag: the world turns about the view volume's centre, before the depth cue. */
-    private void turn(int dx, int dy) {
+    /**
+     * A turning drag or a move nearer: a depth-cued scene's world turns about
+     * the view volume's centre, before the depth cue; a lit scene's camera
+     * about the centre of what the unturned view showed. While a turned
+     * frame is being drawn, further moves only change what the next frame
+     * shows: it is drawn when this one is done, so frames never queue up.
+     */
+    private void turn(Runnable move) {
         if (!isScene(requested())) {
             status.say("Turning works on scenes: pages 4–8 and opened scenes.");
             return;
         }
-        orbit.drag(dx, dy);
-        settings = settings.withWorldTurn(orbit.matrix());
-        reload();
+        if (!orbit.turned() && shown != null && shown.facts().shownCentre() != null) {
+            orbit.about(shown.facts().shownCentre());
+        }
+        move.run();
+        settings = settings.withViewTurn(orbit.matrix());
+        if (pending != null && pending.settings().viewTurn() != null && pending.view().equals(requested())) {
+            turnWaiting = true;
+        } else {
+            reload();
+        }
     }
 
     private void unturn() {
         orbit.reset();
-        if (settings.worldTurn() != null) {
-            settings = settings.withWorldTurn(null);
+        if (settings.viewTurn() != null) {
+            settings = settings.withViewTurn(null);
             reload();
         }
     }
@@ -282,7 +302,7 @@ final class SimpviewWindow {
     /** Leaving a view leaves its stepping and its turn. */
     private void forgetViewState() {
         orbit.reset();
-        settings = settings.withStepLimit(-1).withWorldTurn(null);
+        settings = settings.withStepLimit(-1).withViewTurn(null);
         pinnedX = pinnedY = -1;
         pageView.pin(-1, -1);
     }
@@ -303,7 +323,7 @@ final class SimpviewWindow {
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
         if (shown != null) {
-            pageView.show(depthView && shown.facts().depths() != null ? DepthPicture.of(shown.facts().depths())
+            pageView.show(depthView && shown.facts().depths() != null ? DepthPicture.of(shown.facts().depths(), shown.facts().depthStart())
                     : shown.image(), shown.error(), shown.facts().drewSomething());
         }
     }
@@ -373,6 +393,7 @@ final class SimpviewWindow {
         if (pending != null) {
             pending.cancel();
         }
+        turnWaiting = false;
         pending = new RenderJob(view, options.pageContext(), settings);
         status.watch(pending);
         pending.countLinesAhead();
@@ -399,6 +420,9 @@ final class SimpviewWindow {
         }
         showStep(result);
         comparison.viewShown(result); // compare (issue 15)
+        if (turnWaiting) {
+            reload();
+        }
     }
 
     /** Stops the picture being drawn; the one on screen stays, and so does its place among the pages. */

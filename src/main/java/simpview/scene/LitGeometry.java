@@ -1,5 +1,6 @@
 package simpview.scene;
 
+import java.nio.file.Path;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
@@ -31,6 +32,12 @@ import simpview.shading.LitState;
  * </ol>
  * One instance draws one scene; it reuses its scratch arrays, and allocates
  * nothing per primitive beyond growing them for the largest face yet.
+ *
+ * <p>Followed by a {@link PrimitiveTrace} (the window's instruments), each
+ * primitive is told to it between steps 6 and 7, with its file and line and
+ * its clipped, projected outline, and may be left out (stepping); the
+ * camera-space box of what was rasterized is kept, for the window's orbit.
+ * Not followed (null, the default), this costs one test per primitive.
  */
 public final class LitGeometry implements GeometryStage, ObjSink {
 
@@ -67,7 +74,16 @@ public final class LitGeometry implements GeometryStage, ObjSink {
     /** The CTM and style of the obj command whose faces are being drawn. */
     private Matrix4 objCtm;
     private boolean objWire;
+    private Path objFile;
     private long culled;
+    /** Who follows the primitives, or null; where the primitive at hand comes from; how many were told. */
+    private PrimitiveTrace trace;
+    private Path sourceFile;
+    private int sourceLine;
+    private int traced;
+    /** The camera-space box of the clipped vertices of every primitive told to the trace: min x, y, z, max x, y, z. */
+    private final double[] shown = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+        Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
 
     public LitGeometry(LitState state, FragmentStage fragments) {
         this.state = state;
@@ -89,7 +105,7 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         if (clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
             fragments.colours(state.fog());
             int n = project(clipper.vertices(), 2, FragmentStage.COLOUR_CHANNELS);
-            if (n == 2) {
+            if (n == 2 && (trace == null || traced(Painter.LINE, FragmentStage.COLOUR_CHANNELS, 2))) {
                 lines.draw(screen, 0, 3 + FragmentStage.COLOUR_CHANNELS, FragmentStage.COLOUR_CHANNELS,
                         fragments.width(), fragments.height(), fragments);
             }
@@ -107,14 +123,17 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         face(3, wire);
     }
 
-    /** Starts the faces of an {@code obj} command: drawn with this CTM and style. */
-    public void beginObj(Matrix4 ctm, boolean wire) {
+    /** Starts the faces of an {@code obj} command: the model in {@code file}, drawn with this CTM and style. */
+    public void beginObj(Matrix4 ctm, boolean wire, Path file) {
         objCtm = ctm;
         objWire = wire;
+        objFile = file;
     }
 
     @Override
     public void face(ObjFace f) {
+        sourceFile = objFile;
+        sourceLine = f.line();
         int n = f.size();
         room(n);
         transform(objCtm);
@@ -152,6 +171,9 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         int m = project(clipper.vertices(), kept, channels);
         if (m < kept) {
             return; // a vertex that cannot be projected (not finite)
+        }
+        if (trace != null && !traced(wire ? Painter.WIRE : Painter.FILLED, channels, kept)) {
+            return;
         }
         int width = fragments.width();
         int height = fragments.height();
@@ -350,6 +372,52 @@ public final class LitGeometry implements GeometryStage, ObjSink {
             ownNormal = new boolean[2 * n];
             cam = new double[2 * n * CAMERA_STRIDE];
         }
+    }
+
+    /**
+     * From now on tells {@code follower} of every primitive about to be
+     * rasterized (null: nobody). Lines and polygons of the SIMP file say
+     * where they stand with {@link #from}; .obj faces name their model's
+     * file and line themselves.
+     */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
+    }
+
+    /** The next line or polygon is the command at {@code line} of {@code file}. */
+    public void from(Path file, int line) {
+        sourceFile = file;
+        sourceLine = line;
+    }
+
+    /**
+     * The centre of the camera-space box around every primitive told to the
+     * trace, as clipped (what the view showed), or null when none was.
+     */
+    public double[] shownCentre() {
+        if (!(shown[0] <= shown[3])) {
+            return null;
+        }
+        return new double[] {(shown[0] + shown[3]) / 2, (shown[1] + shown[4]) / 2, (shown[2] + shown[5]) / 2};
+    }
+
+    /**
+     * Tells the trace of the primitive whose n projected vertices are in
+     * {@code screen} and whose clipped camera-space ones are the clipper's;
+     * false when it is to be left out.
+     */
+    private boolean traced(int kind, int channels, int n) {
+        double[] v = clipper.vertices();
+        for (int k = 0; k < n; k++) {
+            for (int axis = 0; axis < 3; axis++) {
+                double c = v[k * CAMERA_STRIDE + axis];
+                shown[axis] = Math.min(shown[axis], c);
+                shown[3 + axis] = Math.max(shown[3 + axis], c);
+            }
+        }
+        int index = traced++;
+        trace.read(index, sourceFile, sourceLine, kind, screen, 0, 3 + channels, n);
+        return trace.drawing(index);
     }
 
     @Override

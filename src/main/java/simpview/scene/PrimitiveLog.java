@@ -4,7 +4,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import simpview.geometry.Vertex;
 import simpview.surface.Provenance;
 
 /**
@@ -19,11 +18,6 @@ import simpview.surface.Provenance;
  */
 public final class PrimitiveLog implements PrimitiveTrace {
 
-    /** Numbers of outline per primitive: panel x and y of up to three vertices. */
-    public static final int OUTLINE = 6;
-    /** The painter's kind for a line; its other kinds are triangles. */
-    private static final int LINE = 0;
-
     private final Provenance provenance;
     private final int limit;
     private final List<Path> files = new ArrayList<>();
@@ -31,7 +25,9 @@ public final class PrimitiveLog implements PrimitiveTrace {
     private int[] fileOf = new int[256];
     private int[] lineOf = new int[256];
     private byte[] kindOf = new byte[256];
-    private double[] outlines = new double[256 * OUTLINE];
+    /** Primitive k's outline is outlines[outlineAt[k], outlineAt[k + 1]): panel x and y of each vertex. */
+    private int[] outlineAt = new int[257];
+    private double[] outlines = new double[256 * 6];
 
     /**
      * @param provenance the record the canvas keeps (told which primitive draws), or null
@@ -43,28 +39,37 @@ public final class PrimitiveLog implements PrimitiveTrace {
     }
 
     @Override
-    public void read(int index, Path file, int line, int kind, double[] p) {
+    public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
         if (size == fileOf.length) {
             grow();
         }
-        int last = files.size() - 1;
-        if (last < 0 || files.get(last) != file && !files.get(last).equals(file)) {
-            last = files.indexOf(file);
-            if (last < 0) {
-                files.add(file);
-                last = files.size() - 1;
-            }
-        }
-        fileOf[size] = last;
+        fileOf[size] = fileNumber(file);
         lineOf[size] = line;
         kindOf[size] = (byte) kind;
-        int vertices = kind == LINE ? 2 : 3;
-        for (int k = 0; k < 3; k++) {
-            int from = Math.min(k, vertices - 1) * Vertex.NUMBERS;
-            outlines[size * OUTLINE + 2 * k] = p[from + Vertex.X];
-            outlines[size * OUTLINE + 2 * k + 1] = p[from + Vertex.Y];
+        int start = outlineAt[size];
+        if (start + 2 * vertices > outlines.length) {
+            outlines = Arrays.copyOf(outlines, Math.max(2 * outlines.length, start + 2 * vertices));
         }
+        for (int k = 0; k < vertices; k++) {
+            outlines[start + 2 * k] = p[at + k * stride];
+            outlines[start + 2 * k + 1] = p[at + k * stride + 1];
+        }
+        outlineAt[size + 1] = start + 2 * vertices;
         size++;
+    }
+
+    /** The number of {@code file} among the files met so far (most primitives come from the last one met). */
+    private int fileNumber(Path file) {
+        int last = files.size() - 1;
+        if (last >= 0 && (files.get(last) == file || files.get(last).equals(file))) {
+            return last;
+        }
+        int known = files.indexOf(file);
+        if (known >= 0) {
+            return known;
+        }
+        files.add(file);
+        return files.size() - 1;
     }
 
     private void grow() {
@@ -72,7 +77,7 @@ public final class PrimitiveLog implements PrimitiveTrace {
         fileOf = Arrays.copyOf(fileOf, capacity);
         lineOf = Arrays.copyOf(lineOf, capacity);
         kindOf = Arrays.copyOf(kindOf, capacity);
-        outlines = Arrays.copyOf(outlines, capacity * OUTLINE);
+        outlineAt = Arrays.copyOf(outlineAt, capacity + 1);
     }
 
     @Override
@@ -103,9 +108,8 @@ public final class PrimitiveLog implements PrimitiveTrace {
         return kindOf[primitive];
     }
 
-    /** The primitive's projected vertices, panel x and y in turn (2 for a line, 3 for a triangle). */
+    /** The primitive's projected vertices, panel x and y in turn (2 for a line, 3 or more for a polygon). */
     public double[] outline(int primitive) {
-        int vertices = kindOf[primitive] == LINE ? 2 : 3;
-        return Arrays.copyOfRange(outlines, primitive * OUTLINE, primitive * OUTLINE + 2 * vertices);
+        return Arrays.copyOfRange(outlines, outlineAt[primitive], outlineAt[primitive + 1]);
     }
 }

@@ -21,6 +21,8 @@ public final class LitState implements PointShader {
 
     private Camera camera = Camera.PARALLEL;
     private Matrix4 worldToCamera = Matrix4.identity();
+    /** The window's turn of the view, after W; null when not turned. */
+    private Matrix4 turn;
     private double ambientR;
     private double ambientG;
     private double ambientB;
@@ -42,16 +44,31 @@ public final class LitState implements PointShader {
         return worldToCamera;
     }
 
-    /** The camera command: W becomes {@code worldToCamera}; lights given before it are taken to camera space. */
+    /**
+     * Turns the view by {@code turn} in camera space, after W (the window's
+     * orbit), or not at all (null). Before any command: until a camera
+     * command, W is the turn itself.
+     */
+    public void turnView(Matrix4 turn) {
+        this.turn = turn;
+        this.worldToCamera = turn == null ? Matrix4.identity() : turn;
+    }
+
+    /**
+     * The camera command: W becomes {@code worldToCamera} (after the view's
+     * turn, if any); lights given before it are taken to camera space.
+     */
     public void setCamera(Camera camera, Matrix4 worldToCamera) {
         this.camera = camera;
-        this.worldToCamera = worldToCamera;
+        Matrix4 w = turn == null ? worldToCamera : turn.times(worldToCamera);
+        // Lights so far stand where the W before this one (the turn, or the identity) took them.
+        Matrix4 move = turn == null ? w : w.times(turn.inverse());
+        this.worldToCamera = w;
         for (int i = 0; i < lights.count(); i++) {
             double x = lights.x(i);
             double y = lights.y(i);
             double z = lights.z(i);
-            lights.moveTo(i, worldToCamera.applyX(x, y, z), worldToCamera.applyY(x, y, z),
-                    worldToCamera.applyZ(x, y, z));
+            lights.moveTo(i, move.applyX(x, y, z), move.applyY(x, y, z), move.applyZ(x, y, z));
         }
         prepare();
     }

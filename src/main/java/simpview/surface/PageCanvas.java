@@ -80,6 +80,15 @@ public final class PageCanvas {
         return zbuffer;
     }
 
+    /**
+     * The panel as a lit scene's fragment stage writes it: that stage does
+     * its own depth test, so this is the panel behind the provenance record,
+     * if there is one.
+     */
+    public Drawable litPanel() {
+        return afterZBuffer(panel);
+    }
+
     /** The panel behind the z-buffer and the scissor: what pages 3 and up draw on. */
     public Drawable depthTested() {
         return new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(zbuffer, afterZBuffer(panel)));

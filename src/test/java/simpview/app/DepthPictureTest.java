@@ -18,7 +18,7 @@ class DepthPictureTest {
             PageRenderer renderer = new PageRenderer();
             PageCanvas canvas = renderer.render(page, PageContext.defaults());
             double[] depths = canvas.zbuffer().copyDepths();
-            BufferedImage picture = DepthPicture.of(depths);
+            BufferedImage picture = DepthPicture.of(depths, canvas.zbuffer().farthest());
             int touched = 0;
             int untouched = 0;
             for (int y = 0; y < PageCanvas.PANEL; y++) {

@@ -170,7 +170,7 @@ class InstrumentsWindowTest {
         driver.press(KeyEvent.VK_4);
         RenderedView four = driver.awaitShown(new View.OfPage(4));
         driver.press(KeyEvent.VK_D);
-        BufferedImage depths = DepthPicture.of(four.facts().depths());
+        BufferedImage depths = DepthPicture.of(four.facts().depths(), four.facts().depthStart());
         assertEquals(0, driver.screenDiffersFrom(depths), "the depth view on screen");
         driver.press(KeyEvent.VK_D);
         assertEquals(0, driver.screenDiffersFrom(four.image()), "the page again");

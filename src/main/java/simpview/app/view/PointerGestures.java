@@ -11,8 +11,8 @@ import javax.swing.SwingUtilities;
 /**
  * What the pointer does over the page: a left click (press and release
  * without moving) steps on; a left drag pans; a right drag (or Shift + left
- * drag) turns the view; the wheel zooms about the pointer; moving reports the
- * point under it.
+ * drag) turns the view; the wheel zooms about the pointer, and with Ctrl or
+ * Alt moves the view nearer or farther; moving reports the point under it.
  */
 public final class PointerGestures extends MouseAdapter {
 
@@ -25,6 +25,9 @@ public final class PointerGestures extends MouseAdapter {
 
         /** A turning drag moved by (dx, dy) screen pixels. */
         void orbit(int dx, int dy);
+
+        /** The wheel turned with Ctrl or Alt held: up (negative) nearer, down farther. */
+        void nearer(int notches);
 
         /** The pointer is over screen point (x, y) of the page view, or left it (x = y = -1). */
         void hover(int x, int y);
@@ -107,6 +110,10 @@ public final class PointerGestures extends MouseAdapter {
     public void mouseWheelMoved(MouseWheelEvent e) {
         int notches = e.getWheelRotation();
         if (notches == 0) {
+            return;
+        }
+        if ((e.getModifiersEx() & (InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK)) != 0) {
+            actions.nearer(notches);
             return;
         }
         zoomPan.wheel(e.getX(), e.getY(), notches);

@@ -28,10 +28,20 @@ public interface SceneMonitor {
     }
 
     /**
-     * A turn of the whole world (the window's orbit), applied before the
-     * scene's own transformations, so before the depth cue; null for none.
+     * A turn of the view (the window's orbit), in camera space: a point goes
+     * to the camera by turn * W * CTM (W the identity for a depth-cued scene,
+     * so the world turns before the depth cue; for a lit scene the camera
+     * moves about the world); null for none.
      */
-    default simpview.geometry.Matrix4 worldTurn() {
+    default simpview.geometry.Matrix4 viewTurn() {
         return null;
+    }
+
+    /**
+     * Once a lit scene that was traced is drawn: the centre of the
+     * camera-space box around what its view showed (x, y, z), what the
+     * window's orbit turns about. Not called when nothing was in view.
+     */
+    default void shownCentre(double[] xyz) {
     }
 }

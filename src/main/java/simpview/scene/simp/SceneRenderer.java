@@ -25,7 +25,7 @@ public final class SceneRenderer {
     public static void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException {
         SimpClient client = new SimpClient(panel);
         client.follow(monitor.trace());
-        client.turnWorld(monitor.worldTurn());
+        client.turnView(monitor.viewTurn());
         new SimpInterpreter(client, monitor).run(file);
     }
 
@@ -42,8 +42,15 @@ public final class SceneRenderer {
     public static void drawLit(Path file, PageCanvas canvas, SceneMonitor monitor, ObjLibrary models)
             throws SceneException {
         canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), canvas.panel());
-        new SimpInterpreter(SimpClient.lit(fragments, models), monitor).run(file);
+        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), canvas.litPanel());
+        SimpClient client = SimpClient.lit(fragments, models);
+        client.follow(monitor.trace());
+        client.turnView(monitor.viewTurn());
+        new SimpInterpreter(client, monitor).run(file);
+        double[] centre = client.shownCentre();
+        if (centre != null) {
+            monitor.shownCentre(centre);
+        }
     }
 
     /** The library lit scenes take their models from. */

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
@@ -174,7 +175,7 @@ public final class SimpClient {
     private void obj(Command c) throws SceneException {
         primitive();
         Path file = FileStack.locate(c.fileName, ".obj", files.current(), c);
-        lit.beginObj(ctm, style == Style.WIRE);
+        lit.beginObj(ctm, style == Style.WIRE, file);
         models.draw(file, lit);
     }
 
@@ -225,10 +226,16 @@ public final class SimpClient {
         return r.file().getFileName() + ":" + r.lineNumber();
     }
 
-    /** Notes the first primitive, which no camera may follow. */
+    /** Notes the first primitive, which no camera may follow; tells a followed lit stage where it stands. */
     private void primitive() {
-        if (firstPrimitiveAt == null && lit != null) {
+        if (lit == null) {
+            return;
+        }
+        if (firstPrimitiveAt == null) {
             firstPrimitiveAt = place();
+        }
+        if (trace != null) {
+            lit.from(files.current().file(), files.current().lineNumber());
         }
     }
 
@@ -255,21 +262,37 @@ public final class SimpClient {
      * The window's instruments' hook, one place on each side: {@code follower}
      * learns each primitive's file and line as the geometry hands it on (the
      * reading thread), and is asked before the painter draws it (the drawing
-     * thread). Null for nobody, the default. Depth-cued scenes only; call
-     * before the scene is read.
+     * thread). Null for nobody, the default. A lit scene is read and drawn
+     * on one thread, and its stage tells the trace itself. Call before the
+     * scene is read.
      */
     public void follow(PrimitiveTrace follower) {
-        if (cued == null) {
+        trace = follower;
+        if (lit != null) {
+            lit.follow(follower);
             return;
         }
-        trace = follower;
         painter.follow(follower);
         cued.sendTo(follower == null ? painter : new Traced(painter));
     }
 
-    /** Starts the CTM at {@code turn}, a turn of the whole world before the scene's own transforms; null: identity. */
-    public void turnWorld(Matrix4 turn) {
-        ctm = turn == null ? Matrix4.identity() : turn;
+    /**
+     * Turns the view by {@code turn}, in camera space (see
+     * {@link SceneMonitor#viewTurn}); null: not turned. A depth-cued scene
+     * starts its CTM at it; a lit one puts it after W. Call before the scene
+     * is read.
+     */
+    public void turnView(Matrix4 turn) {
+        if (state != null) {
+            state.turnView(turn);
+        } else {
+            ctm = turn == null ? Matrix4.identity() : turn;
+        }
+    }
+
+    /** For a lit scene that was followed: the centre of what its view showed, in camera space; else null. */
+    public double[] shownCentre() {
+        return lit == null ? null : lit.shownCentre();
     }
 
     /** A sink that tells the trace where each primitive came from, then hands it on. */
@@ -282,7 +305,8 @@ public final class SimpClient {
 
         @Override
         public void add(int kind, double[] p) {
-            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, p);
+            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, p, 0, Vertex.NUMBERS,
+                    kind == Painter.LINE ? 2 : 3);
             next.add(kind, p);
         }
     }

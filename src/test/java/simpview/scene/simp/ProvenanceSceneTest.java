@@ -60,7 +60,7 @@ class ProvenanceSceneTest {
         List<Integer> firstWrite = new ArrayList<>();
         PrimitiveTrace boundaries = new PrimitiveTrace() {
             @Override
-            public void read(int index, Path file, int line, int kind, double[] p) {
+            public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
             }
 
             @Override
