@@ -22,6 +22,7 @@ final class KeyHelp {
             new Row("C", "own colours: a scene's vertex colours without depth cue"),
             new Row("] / [ · Shift+] / Shift+[ · \\", "step the drawing one / ten primitives · all"),
             new Row("right-drag, Shift+drag / O", "turn the scene about its centre / back"),
+            new Row("Ctrl+wheel, Alt+wheel", "move the scene's view nearer or farther"),
             new Row("F5", "draw again (files are also watched and redrawn on save)"),
             new Row("H", "hide or show a scene error"),
             new Row("Ctrl+O, drop a file", "open a scene"),

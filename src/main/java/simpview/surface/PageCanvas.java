@@ -1,6 +1,7 @@
 package simpview.surface;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import simpview.geometry.Camera;
 
 /**
@@ -100,10 +101,12 @@ public final class PageCanvas {
                 afterZBuffer(new DepthCueDrawable(near, far, Camera.PARALLEL, panel))));
     }
 
-    /** A copy of the page as it is now. */
+    /** A copy of the page as it is now: the pixels copied as one array (a window's turning frame makes one each). */
     public BufferedImage snapshot() {
         BufferedImage copy = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
-        copy.setData(image.getRaster());
+        int[] from = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        int[] to = ((DataBufferInt) copy.getRaster().getDataBuffer()).getData();
+        System.arraycopy(from, 0, to, 0, from.length);
         return copy;
     }
 }

@@ -286,6 +286,65 @@ class InstrumentsWindowTest {
     }
 
     @Test
+    void aLitSceneIsInspectedSteppedAndTurnedLikeTheOthers() throws Exception {
+        Path scene = Files.writeString(dir.resolve("lit.simp"), String.join("\n",
+                "# a lit scene: a wall, and a square in front of it",
+                "ambient 0.2 0.2 0.2",
+                "camera -1 -1 1 1 -1 -100",
+                "light 1 1 1 1 0",
+                "surface 0.2 0.4 0.9",
+                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
+                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)",
+                "surface 0.9 0.5 0.1",
+                "polygon (-3, -3, -10) (3, -3, -10) (3, 3, -10)",
+                "polygon (-3, -3, -10) (3, 3, -10) (-3, 3, -10)", ""));
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView all = driver.awaitShown(new View.OfScene(scene));
+        assertNull(all.error());
+        assertEquals(4, all.facts().primitives().size());
+
+        // The inspector names the command that drew the centre, and its camera-space depth.
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.awaitEdt(() -> window().status().inspectorText().contains("lit.simp:"), "the inspector on the square");
+        String line = driver.onEdt(() -> window().status().inspectorText());
+        assertTrue(line.matches(".*depth -10(\\.\\d+)? · drawn by primitive [34] of 4: lit.simp:(9|10) polygon .*"), line);
+
+        // The depth view: the nearest depth white, the farthest black, the lit z-buffer's start untouched.
+        driver.press(KeyEvent.VK_D);
+        assertEquals(0, driver.screenDiffersFrom(DepthPicture.of(all.facts().depths(), Double.NEGATIVE_INFINITY)));
+        driver.press(KeyEvent.VK_D);
+
+        // Stepping: primitive 1 is half the wall, without the square in front.
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 1 of 4, lit.simp:6"),
+                "stepping at primitive 1: " + driver.onEdt(() -> window().status().messageText()));
+        int mid = PageCanvas.SIZE / 2;
+        assertNotEquals(all.image().getRGB(mid, mid), driver.onEdt(() -> window().shown()).image().getRGB(mid, mid),
+                "the square not drawn yet");
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the whole picture again");
+
+        // A right-drag moves the camera about the scene; O puts it back bit for bit.
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.robot().mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        for (int k = 1; k <= 6; k++) {
+            driver.robot().mouseMove(centre.x + 12 * k, centre.y + 3 * k);
+        }
+        driver.robot().mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) > 1000,
+                "a turned picture");
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("turned "));
+        driver.press(KeyEvent.VK_O);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the unturned picture");
+        assertEquals(0, driver.screenDiffersFrom(all.image()), "back bit for bit");
+    }
+
+    @Test
     void theProgressBarShowsAFractionOfAFileWhoseSizeIsKnown() throws Exception {
         int lines = 40_000;
         StringBuilder text = new StringBuilder();

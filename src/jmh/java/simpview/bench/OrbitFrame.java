@@ -1,0 +1,137 @@
+package simpview.bench;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import simpview.geometry.Axis;
+import simpview.geometry.Matrix4;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.scene.PrimitiveLog;
+import simpview.scene.PrimitiveTrace;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
+
+/**
+ * One frame of a turning view, as the window's render thread makes it while
+ * a right-drag turns a scene: clear, draw the whole scene turned (yaw 30°,
+ * pitch 15°) with the inspector's record on (the provenance decorator and a
+ * fresh {@link PrimitiveLog}), then copy out the image, the depths and the
+ * owners, as the window does for the EDT. @Param scene: "page7" (depth-cued,
+ * turned about the view volume's centre) or "a4/page-d" (lit: the camera
+ * moves about the centre of what the unturned view showed, found in the
+ * set-up by one traced drawing). Models are parsed once, in the set-up.
+ * Not in it: the window's look through the scene's files for lit commands
+ * and for files to watch. Sampled, in ms; the target is 16 ms.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.SampleTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 4, time = 1)
+@Fork(1)
+public class OrbitFrame {
+
+    @Param({"page7", "a4/page-d"})
+    public String scene;
+
+    @Param({"true"})
+    public boolean turned;
+
+    @Param({"true"})
+    public boolean copy;
+
+    private static final double YAW = 30;
+    private static final double PITCH = 15;
+
+    private final PageRenderer renderer = new PageRenderer();
+    private final ObjLibrary models = new ObjLibrary();
+    private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+    private final Turned monitor = new Turned();
+    private PageContext context;
+    private Path litFile;
+
+    /** What the window's render job tells the scene: the turn, and a fresh trace per frame. */
+    private static final class Turned implements SceneMonitor {
+        private Matrix4 turn;
+        private PrimitiveLog log;
+        private double[] centre;
+
+        @Override
+        public PrimitiveTrace trace() {
+            return log;
+        }
+
+        @Override
+        public Matrix4 viewTurn() {
+            return turn;
+        }
+
+        @Override
+        public void shownCentre(double[] xyz) {
+            centre = xyz;
+        }
+    }
+
+    /** What the frame hands the EDT. */
+    public record Frame(BufferedImage image, double[] depths, int[] owners) {
+    }
+
+    @Setup(Level.Trial)
+    public void setUp() throws SceneException {
+        Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+        context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.defaultSimpDir(), monitor);
+        renderer.canvas().recordProvenance(provenance);
+        double[] centre = {0, 0, -100};
+        if (!scene.equals("page7")) {
+            String[] parts = scene.split("/");
+            litFile = course.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            if (!Files.isRegularFile(litFile)) {
+                throw new IllegalStateException("no " + litFile + ": the course's files belong beside the project");
+            }
+            frame(); // unturned: parses the models and finds what the view shows
+            if (monitor.centre == null) {
+                throw new IllegalStateException(scene + " showed nothing");
+            }
+            centre = monitor.centre;
+        }
+        monitor.turn = !turned ? null : Matrix4.translation(centre[0], centre[1], centre[2])
+                .times(Matrix4.rotation(Axis.X, PITCH))
+                .times(Matrix4.rotation(Axis.Y, YAW))
+                .times(Matrix4.translation(-centre[0], -centre[1], -centre[2]));
+        frame(); // fails the trial at once if the scene cannot be drawn
+    }
+
+    @Benchmark
+    public Frame frame() throws SceneException {
+        monitor.log = new PrimitiveLog(provenance, -1);
+        PageCanvas canvas = renderer.canvas();
+        if (litFile == null) {
+            renderer.render(7, context);
+        } else {
+            canvas.clear();
+            SceneRenderer.drawLit(litFile, canvas, monitor, models);
+        }
+        if (!copy) {
+            return null;
+        }
+        return new Frame(canvas.snapshot(), canvas.zbuffer().copyDepths(), provenance.copyOwners());
+    }
+}
