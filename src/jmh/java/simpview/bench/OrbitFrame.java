@@ -39,7 +39,9 @@ import simpview.surface.Provenance;
  * moves about the centre of what the unturned view showed, found in the
  * set-up by one traced drawing). Models are parsed once, in the set-up.
  * Not in it: the window's look through the scene's files for lit commands
- * and for files to watch. Sampled, in ms; the target is 16 ms.
+ * and for files to watch. @Param turned=false draws the unturned view the
+ * same way, and copy=false leaves out the copies, to show what each costs.
+ * Sampled, in ms; the target is 16 ms.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)
