@@ -54,7 +54,7 @@ public class OrbitFrame {
     @Param({"page7", "a4/page-d"})
     public String scene;
 
-    @Param({"true"})
+    @Param({"true", "false"})
     public boolean turned;
 
     @Param({"true"})

@@ -65,7 +65,21 @@ public final class Summary {
                 B + "SimpEndToEnd.readInterpretDraw", null, null, "SIMP lines/s", false, ">= 2,000,000",
                 (ours, ratio) -> ours >= 2_000_000));
         litRows(rows);
+        instrumentRows(rows);
         return rows;
+    }
+
+    /** Issue 14: what the window's instruments cost, and a turning view's frame. */
+    private static void instrumentRows(List<Row> rows) {
+        rows.add(new Row("Page 7 with the inspector's record (ratio: against without)", B + "Inspector.clearAndDraw",
+                Map.of("inspector", "record"), B + "Inspector.clearAndDraw", Map.of("inspector", "off"), "ms", 1,
+                true, "at most 25 % slower", (ours, ratio) -> ratio >= 1 / 1.25));
+        for (String scene : new String[] {"page7", "a4/page-d"}) {
+            rows.add(new Row("Orbit frame of " + scene + ", turned, traced, copied out (ratio: against unturned)",
+                    B + "OrbitFrame.frame", Map.of("scene", scene, "turned", "true", "copy", "true"),
+                    B + "OrbitFrame.frame", Map.of("scene", scene, "turned", "false", "copy", "true"), "ms", 1, true,
+                    "<= 16 ms", (ours, ratio) -> ours <= 16));
+        }
     }
 
     /** Issues 11 and 12: the course's lit pages, the phong fill, the lighting and the .obj reader. */
