@@ -18,7 +18,7 @@ import simpview.surface.PageCanvas;
  */
 final class StatusStrip {
 
-    static final String HINTS = "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · F fit · Z 1:1 · "
+    static final String HINTS = "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · right-drag turn · F fit · Z 1:1 · "
             + "D depth · P pin · C own colours · ] step · F5 redraw · Ctrl+O open · Ctrl+S save · F1 all keys";
     /** Quick pictures never flash a progress bar. */
     static final int PROGRESS_DELAY_MS = 150;
