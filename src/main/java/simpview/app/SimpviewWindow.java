@@ -284,7 +284,7 @@ final class SimpviewWindow {
         }
         move.run();
         settings = settings.withViewTurn(orbit.matrix());
-        if (pending != null && pending.settings().viewTurn() != null && pending.view().equals(requested())) {
+        if (pending != null && pending.settings().viewTurn() != null) {
             turnWaiting = true;
         } else {
             reload();
@@ -323,8 +323,9 @@ final class SimpviewWindow {
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
         if (shown != null) {
-            pageView.show(depthView && shown.facts().depths() != null ? DepthPicture.of(shown.facts().depths(), shown.facts().depthStart())
-                    : shown.image(), shown.error(), shown.facts().drewSomething());
+            PageFacts facts = shown.facts();
+            pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
+                    : shown.image(), shown.error(), facts.drewSomething());
         }
     }
 
