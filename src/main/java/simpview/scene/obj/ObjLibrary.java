@@ -1,18 +1,15 @@
 package simpview.scene.obj;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.FileTime;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.zip.CRC32C;
+import simpview.scene.FileChecksum;
 import simpview.scene.SceneException;
 
 /**
@@ -146,18 +143,11 @@ public final class ObjLibrary {
     /** The CRC-32C of the file's bytes as they are now. */
     private long checksum(Path file, Path real) throws SceneException {
         contentChecks.incrementAndGet();
-        CRC32C crc = new CRC32C();
-        ByteBuffer buffer = ByteBuffer.allocate(1 << 16);
-        try (FileChannel channel = FileChannel.open(real, StandardOpenOption.READ)) {
-            while (channel.read(buffer) >= 0) {
-                buffer.flip();
-                crc.update(buffer);
-                buffer.clear();
-            }
+        try {
+            return FileChecksum.of(real);
         } catch (IOException e) {
             throw cannotOpen(file, e);
         }
-        return crc.getValue();
     }
 
     /** The model kept for the file at this stamp; a model of an older stamp is dropped. */
