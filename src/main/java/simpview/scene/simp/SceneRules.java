@@ -170,10 +170,16 @@ public record SceneRules(boolean lit, String reason) {
         return c == ' ' || c == '\t';
     }
 
+    /** A name as a command of a file in folder {@code dir} (null for the working directory) gives it. */
+    private record Named(Path dir, Kind kind, String name) {
+    }
+
     /** The files to watch, each once, and the .simp files still to look through. */
     private static final class WatchList {
         private final Path workingDir;
         private final Set<Path> keys = new HashSet<>();
+        /** The names already followed, with the folder they were named in: scenes name a cube hundreds of times. */
+        private final Set<Named> followed = new HashSet<>();
         final List<Path> paths = new ArrayList<>();
         final Deque<Path> toScan = new ArrayDeque<>();
 
@@ -202,7 +208,7 @@ public record SceneRules(boolean lit, String reason) {
         /** Lists the file a {@code file} or {@code obj} command of {@code from} names; queues a .simp one. */
         void named(Path from, Kind kind, String argument) {
             String name = name(argument);
-            if (name == null) {
+            if (name == null || !followed.add(new Named(from.getParent(), kind, name))) {
                 return;
             }
             FilePlaces places;
