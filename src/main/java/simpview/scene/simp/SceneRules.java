@@ -61,6 +61,7 @@ public record SceneRules(boolean lit, String reason) {
     /** Looks through {@code top} and the files it includes for a lit command. */
     public static SceneRules of(Path top) {
         Set<Path> seen = new HashSet<>();
+        Set<Named> followed = new HashSet<>();
         Deque<Path> toRead = new ArrayDeque<>();
         toRead.add(top);
         while (!toRead.isEmpty()) {
@@ -72,7 +73,7 @@ public record SceneRules(boolean lit, String reason) {
                 continue;
             }
             if (seen.add(real)) {
-                String reason = scan(file, (kind, argument) -> include(file, kind, argument, toRead), true);
+                String reason = scan(file, (kind, argument) -> include(file, kind, argument, followed, toRead), true);
                 if (reason != null) {
                     return new SceneRules(true, reason);
                 }
@@ -116,10 +117,14 @@ public record SceneRules(boolean lit, String reason) {
         return first;
     }
 
-    /** Queues the .simp file a {@code file} command of {@code from} leads to, if it is one to read. */
-    private static void include(Path from, Kind kind, String argument, Deque<Path> toRead) {
+    /**
+     * Queues the .simp file a {@code file} command of {@code from} leads to,
+     * if it is one to read and its name was not followed from that folder
+     * before.
+     */
+    private static void include(Path from, Kind kind, String argument, Set<Named> followed, Deque<Path> toRead) {
         String name = kind == Kind.FILE ? name(argument) : null;
-        if (name == null) {
+        if (name == null || !followed.add(new Named(from.getParent(), kind, name))) {
             return;
         }
         try {
