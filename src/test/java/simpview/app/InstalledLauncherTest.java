@@ -1,6 +1,7 @@
 package simpview.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 
@@ -75,6 +76,23 @@ class InstalledLauncherTest {
         Path ownScenes = Path.of(System.getProperty("simpview.projectDir", ".")).resolve("simp");
         PageContext here = new PageContext(PageContext.DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
         assertEquals(0, Images.differingPixels(new PageRenderer().renderImage(4, here), ImageIO.read(png.toFile())));
+    }
+
+    /**
+     * The Unix script opens the X toolkit to simpview (WindowClass names its
+     * X11 windows); the Windows one, where there is no X11 and the JVM would
+     * warn about the missing package, does not.
+     */
+    @Test
+    void theUnixScriptAloneOpensTheX11Toolkit() throws Exception {
+        String opens = "--add-opens=java.desktop/sun.awt.X11=ALL-UNNAMED";
+        String unix = Files.readString(launcher);
+        String windows = Files.readString(launcher.resolveSibling("simpview.bat"));
+        assertTrue(unix.lines().anyMatch(l -> l.startsWith("DEFAULT_JVM_OPTS=") && l.contains(opens)),
+                "DEFAULT_JVM_OPTS of " + launcher + " lacks " + opens);
+        assertTrue(windows.lines().anyMatch(l -> l.startsWith("set DEFAULT_JVM_OPTS=\"-Dsimpview.simpDir=")),
+                "the Windows script keeps its other option");
+        assertFalse(windows.contains("sun.awt.X11"), "the Windows script opens the X toolkit");
     }
 
     @Test

@@ -92,6 +92,16 @@ class RunnableJarTest {
         assertTrue(run.err().contains("page6.simp was not found in " + course.toAbsolutePath()), run.err());
     }
 
+    /** java -jar opens the X toolkit to simpview (WindowClass names its X11 windows), and only that. */
+    @Test
+    void theManifestOpensTheX11ToolkitForTheWindowsClassName() throws Exception {
+        try (java.util.jar.JarFile file = new java.util.jar.JarFile(jar.toFile())) {
+            java.util.jar.Attributes main = file.getManifest().getMainAttributes();
+            assertEquals("java.desktop/sun.awt.X11", main.getValue("Add-Opens"));
+            assertEquals("simpview.app.Main", main.getValue("Main-Class"));
+        }
+    }
+
     @Test
     void anAppArgsLineKeepsQuotedPathsWithSpacesWhole() throws Exception {
         Path folder = Files.createDirectory(dir.resolve("two  spaces and more"));

@@ -9,6 +9,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
+import simpview.scene.FileChecksum;
 import simpview.scene.SceneException;
 
 /**
@@ -16,9 +17,9 @@ import simpview.scene.SceneException;
  * unchanged, so that a page that draws a model twice, or a redraw, does not
  * parse it again.
  *
- * <p>{@link #draw} replays the kept model when the file's real path, size
- * and last-modified time are those it was parsed at; otherwise it parses the
- * file, streaming its faces to the sink as they are read and recording them
+ * <p>{@link #draw} replays the kept model when the file's real path, size,
+ * last-modified time and inode are those it was parsed at, and the model is
+ * settled or its content unchanged (below); otherwise it parses the file, streaming its faces to the sink as they are read and recording them
  * at the same time. A model is kept only while all kept models' arrays fit
  * in the budget (the least recently drawn go first); a file whose model
  * alone would pass it stops being recorded as soon as it does and is simply
@@ -28,9 +29,18 @@ import simpview.scene.SceneException;
  * guarded by this object's lock, held only to look up and to store; parsing
  * and replaying run outside it (two threads drawing the same new file may
  * both parse it). The file is looked at before it is read, so a change made
- * while it is read is seen at the next draw; a change that keeps its size,
- * its inode and its last-modified time (to the file system's resolution) is
- * not seen.
+ * while it is read is seen at the next draw.
+ *
+ * <p>A quick save can keep the size, the inode and the last-modified time,
+ * which file systems keep to a tick of a few milliseconds (ext4) up to two
+ * seconds (FAT). So a model is trusted on those alone only once it is
+ * <em>settled</em>: its file was last modified more than {@link #SETTLE_MILLIS}
+ * before it was looked at, so any later write stamps a later time. Until then
+ * each draw also compares a CRC-32C of the file's bytes with the one taken
+ * before it was parsed (reading the file once, far cheaper than parsing it),
+ * and parses again when they differ. What is not seen is a change that sets
+ * the last-modified time back to exactly the old one, more than that long in
+ * the past, keeping size and inode.
  */
 public final class ObjLibrary {
 
@@ -38,10 +48,15 @@ public final class ObjLibrary {
     public static final long DEFAULT_BUDGET = 64L << 20;
 
     private final long budget;
+    private final long settleMillis;
     /** In access order: the first entry is the least recently drawn. */
     private final LinkedHashMap<Path, Kept> models = new LinkedHashMap<>(16, 0.75f, true);
     private long bytesKept;
     private final AtomicInteger parses = new AtomicInteger();
+    private final AtomicInteger contentChecks = new AtomicInteger();
+
+    /** How long before it is looked at a file must have been last modified for its stamp alone to be trusted. */
+    public static final long SETTLE_MILLIS = 3_000;
 
     public ObjLibrary() {
         this(DEFAULT_BUDGET);
@@ -49,14 +64,26 @@ public final class ObjLibrary {
 
     /** A library keeping at most {@code budget} bytes of model arrays. */
     public ObjLibrary(long budget) {
+        this(budget, SETTLE_MILLIS);
+    }
+
+    /** As {@link #ObjLibrary(long)}, trusting a file's stamp alone once it is {@code settleMillis} old (for tests). */
+    ObjLibrary(long budget, long settleMillis) {
         this.budget = budget;
+        this.settleMillis = settleMillis;
     }
 
     /** The file as last seen: a model is valid while these are unchanged. */
     private record Stamp(long size, FileTime modified, Object fileKey) {
     }
 
-    private record Kept(Stamp stamp, ObjModel model) {
+    /**
+     * A parsed model and the file it was parsed from.
+     *
+     * @param checksum the CRC-32C of the file's bytes before it was parsed (0 when settled then)
+     * @param settled true when the stamp alone tells a change
+     */
+    private record Kept(Stamp stamp, long checksum, boolean settled, ObjModel model) {
     }
 
     /**
@@ -68,6 +95,7 @@ public final class ObjLibrary {
      *     before it have gone to the sink), or the sink threw
      */
     public ObjCounts draw(Path file, ObjSink sink) throws SceneException {
+        long lookedAt = System.currentTimeMillis();
         Path real;
         Stamp stamp;
         try {
@@ -75,40 +103,76 @@ public final class ObjLibrary {
             BasicFileAttributes a = Files.readAttributes(real, BasicFileAttributes.class);
             stamp = new Stamp(a.size(), a.lastModifiedTime(), a.fileKey());
         } catch (IOException e) {
-            throw new SceneException(file, 0, 0, "", "cannot open the obj file: " + e.getClass().getSimpleName()
-                    + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+            throw cannotOpen(file, e);
         }
-        ObjModel model = kept(real, stamp);
-        if (model != null) {
-            model.replay(sink);
-            return model.counts();
+        boolean settled = stamp.modified().toMillis() < lookedAt - settleMillis;
+        Kept kept = kept(real, stamp);
+        long checksum = 0;
+        if (kept != null && kept.settled()) {
+            return replay(kept.model(), sink);
+        }
+        if (kept != null || !settled) {
+            checksum = checksum(file, real);
+        }
+        if (kept != null && kept.checksum() == checksum) {
+            if (settled) {
+                settle(real, kept);
+            }
+            return replay(kept.model(), sink);
         }
         parses.incrementAndGet();
         ObjParser parser = ObjParser.open(file).record(budget);
         ObjCounts counts = parser.run(sink);
         ObjModel parsed = parser.model();
         if (parsed != null) {
-            keep(real, stamp, parsed);
+            keep(real, new Kept(stamp, settled ? 0 : checksum, settled, parsed));
         }
         return counts;
     }
 
+    private static ObjCounts replay(ObjModel model, ObjSink sink) throws SceneException {
+        model.replay(sink);
+        return model.counts();
+    }
+
+    private static SceneException cannotOpen(Path file, IOException e) {
+        return new SceneException(file, 0, 0, "", "cannot open the obj file: " + e.getClass().getSimpleName()
+                + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+    }
+
+    /** The CRC-32C of the file's bytes as they are now. */
+    private long checksum(Path file, Path real) throws SceneException {
+        contentChecks.incrementAndGet();
+        try {
+            return FileChecksum.of(real);
+        } catch (IOException e) {
+            throw cannotOpen(file, e);
+        }
+    }
+
     /** The model kept for the file at this stamp; a model of an older stamp is dropped. */
-    private synchronized ObjModel kept(Path real, Stamp stamp) {
+    private synchronized Kept kept(Path real, Stamp stamp) {
         Kept k = models.get(real);
         if (k == null) {
             return null;
         }
         if (k.stamp().equals(stamp)) {
-            return k.model();
+            return k;
         }
         models.remove(real);
         bytesKept -= k.model().bytes();
         return null;
     }
 
-    private synchronized void keep(Path real, Stamp stamp, ObjModel model) {
-        long bytes = model.bytes();
+    /** From now on trusts the stamp of a model whose content was found unchanged once it had settled. */
+    private synchronized void settle(Path real, Kept k) {
+        if (models.get(real) == k) {
+            models.put(real, new Kept(k.stamp(), k.checksum(), true, k.model()));
+        }
+    }
+
+    private synchronized void keep(Path real, Kept kept) {
+        long bytes = kept.model().bytes();
         Kept old = models.remove(real);
         if (old != null) {
             bytesKept -= old.model().bytes();
@@ -121,13 +185,18 @@ public final class ObjLibrary {
             bytesKept -= eldest.next().getValue().model().bytes();
             eldest.remove();
         }
-        models.put(real, new Kept(stamp, model));
+        models.put(real, kept);
         bytesKept += bytes;
     }
 
     /** How many times a file was parsed (not replayed): for tests and statistics. */
     public int parseCount() {
         return parses.get();
+    }
+
+    /** How many times a file's bytes were read to compare them with a kept model's: for tests. */
+    public int contentCheckCount() {
+        return contentChecks.get();
     }
 
     /** The bytes of the models kept now. */

@@ -139,29 +139,23 @@ final class FileStack implements AutoCloseable {
      * The file that {@code name} + {@code extension}, named by command c of
      * the file {@code from}, stands for: looked for in the folder of the file
      * holding the command, then in the working directory (where the course's
-     * programs looked). When it is in neither, the error names every place
-     * looked.
+     * programs looked), by {@link FilePlaces}. When it is in neither, the
+     * error names every place looked.
      */
     static Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
-        String fileName = name + extension;
-        Path here;
-        Path working;
+        FilePlaces places;
         try {
-            Path dir = from.file().getParent();
-            here = dir == null ? Path.of(fileName) : dir.resolve(fileName);
-            working = Path.of(fileName).toAbsolutePath();
+            places = FilePlaces.of(from.file(), name, extension);
         } catch (InvalidPathException e) {
             throw from.error(c.argumentIndex, "not a valid file name: '" + name + "'");
         }
-        if (Files.exists(here) || here.toAbsolutePath().normalize().equals(working.normalize())) {
-            return here;
-        }
-        if (Files.exists(working)) {
-            return working;
+        Path found = places.found();
+        if (found != null) {
+            return found;
         }
         String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
-        throw from.error(c.argumentIndex, "file not found: " + fileName + hint + "; looked for "
-                + here.toAbsolutePath().normalize() + " and " + working.normalize());
+        throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
+                + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
     }
 
     /**

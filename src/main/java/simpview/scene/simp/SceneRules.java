@@ -20,8 +20,9 @@ import simpview.scene.simp.Command.Kind;
  * lit rules ({@link Kind#lit}); otherwise it is depth-cued. Decided before
  * drawing, by a quick look at the first word of every line of every file the
  * scene can reach: {@code file} names are followed as the reader follows them
- * (the including file's folder, then the working directory). Files that
- * cannot be read are passed over here: the drawing reports them properly.
+ * ({@link FilePlaces}: the including file's folder, then the working
+ * directory). Files that cannot be read are passed over here: the drawing
+ * reports them properly.
  *
  * @param lit true when the scene is drawn by the lit rules
  * @param reason where the first lit command stands, "pageA.simp:3 camera"; null when depth-cued
@@ -31,34 +32,36 @@ public record SceneRules(boolean lit, String reason) {
     public static final SceneRules DEPTH_CUED = new SceneRules(false, null);
 
     /**
-     * Every .simp file the scene in {@code top} can reach: itself and, in
-     * the order first met, each file it includes, as the reader would find
-     * them (what the window watches for a save). Files that do not exist yet
-     * are left out.
+     * Every file the scene in {@code top} can read, what the window watches
+     * for a save: itself and, in the order first met, each .simp file it
+     * includes and each .obj model its files draw, found as the reader finds
+     * them ({@link FilePlaces}). A name found in neither place is listed at
+     * both, and one found only in the working directory also at the place
+     * that would take it over, so that a file appearing is seen too. Empty
+     * when {@code top} does not exist.
      */
     public static List<Path> reached(Path top) {
-        Set<Path> seen = new HashSet<>();
-        List<Path> reached = new ArrayList<>();
-        Deque<Path> toRead = new ArrayDeque<>();
-        toRead.add(top);
-        while (!toRead.isEmpty()) {
-            Path file = toRead.poll();
-            try {
-                if (!seen.add(file.toRealPath())) {
-                    continue;
-                }
-            } catch (IOException | SecurityException e) {
-                continue;
-            }
-            reached.add(file);
-            scan(file, toRead, false);
+        return reached(top, Path.of("").toAbsolutePath());
+    }
+
+    /** As {@link #reached(Path)}, with {@code workingDir} (absolute) as the working directory. */
+    static List<Path> reached(Path top, Path workingDir) {
+        WatchList list = new WatchList(workingDir);
+        if (!list.add(top)) {
+            return List.of();
         }
-        return reached;
+        list.toScan.add(top);
+        while (!list.toScan.isEmpty()) {
+            Path file = list.toScan.poll();
+            scan(file, (kind, argument) -> list.named(file, kind, argument), false);
+        }
+        return List.copyOf(list.paths);
     }
 
     /** Looks through {@code top} and the files it includes for a lit command. */
     public static SceneRules of(Path top) {
         Set<Path> seen = new HashSet<>();
+        Set<Named> followed = new HashSet<>();
         Deque<Path> toRead = new ArrayDeque<>();
         toRead.add(top);
         while (!toRead.isEmpty()) {
@@ -70,7 +73,7 @@ public record SceneRules(boolean lit, String reason) {
                 continue;
             }
             if (seen.add(real)) {
-                String reason = scan(file, toRead, true);
+                String reason = scan(file, (kind, argument) -> include(file, kind, argument, followed, toRead), true);
                 if (reason != null) {
                     return new SceneRules(true, reason);
                 }
@@ -79,12 +82,17 @@ public record SceneRules(boolean lit, String reason) {
         return DEPTH_CUED;
     }
 
+    /** A command that names a file ({@code file}, {@code obj}), met while scanning. */
+    private interface Names {
+        void named(Kind kind, String argument);
+    }
+
     /**
      * Reads one file's lines; returns where its first lit command is, and
-     * queues the files it includes (all of them, or with {@code stopAtLit}
-     * those before its first lit command).
+     * hands the commands naming a file to {@code names} (all of them, or with
+     * {@code stopAtLit} those before its first lit command).
      */
-    private static String scan(Path file, Deque<Path> toRead, boolean stopAtLit) {
+    private static String scan(Path file, Names names, boolean stopAtLit) {
         String first = null;
         try (InputStream in = Files.newInputStream(file)) {
             LineWords words = new LineWords(in);
@@ -99,11 +107,8 @@ public record SceneRules(boolean lit, String reason) {
                         return first;
                     }
                 }
-                if (kind == Kind.FILE) {
-                    Path included = include(file, words.rest());
-                    if (included != null) {
-                        toRead.add(included);
-                    }
+                if (kind == Kind.FILE || kind == Kind.OBJ) {
+                    names.named(kind, words.rest());
                 }
             }
         } catch (IOException | SecurityException e) {
@@ -112,29 +117,123 @@ public record SceneRules(boolean lit, String reason) {
         return first;
     }
 
-    /** Where a {@code file} command's argument leads, as the reader looks; null when nowhere. */
-    private static Path include(Path from, String argument) {
-        String name = argument.trim();
-        if (name.startsWith("\"")) {
-            int close = name.indexOf('"', 1);
-            name = close < 0 ? "" : name.substring(1, close);
-        } else {
-            int blank = name.indexOf(' ');
-            name = blank < 0 ? name : name.substring(0, blank);
-        }
-        if (name.isEmpty()) {
-            return null;
+    /**
+     * Queues the .simp file a {@code file} command of {@code from} leads to,
+     * if it is one to read and its name was not followed from that folder
+     * before.
+     */
+    private static void include(Path from, Kind kind, String argument, Set<Named> followed, Deque<Path> toRead) {
+        String name = kind == Kind.FILE ? name(argument) : null;
+        if (name == null || !followed.add(new Named(from.getParent(), kind, name))) {
+            return;
         }
         try {
-            Path dir = from.getParent();
-            Path here = dir == null ? Path.of(name + ".simp") : dir.resolve(name + ".simp");
-            if (Files.isRegularFile(here)) {
-                return here;
+            Path found = FilePlaces.of(from, name, ".simp").found();
+            if (found != null && Files.isRegularFile(found)) {
+                toRead.add(found);
             }
-            Path working = Path.of(name + ".simp").toAbsolutePath();
-            return Files.isRegularFile(working) ? working : null;
-        } catch (InvalidPathException e) {
+        } catch (InvalidPathException | SecurityException e) {
+            // the reader reports it
+        }
+    }
+
+    /**
+     * The name a {@code file} or {@code obj} command gives, read as the reader
+     * reads it: after at least one blank, a quoted name to its closing quote
+     * or a bare one to the next blank; null when there is none.
+     */
+    static String name(String argument) {
+        int end = argument.length();
+        while (end > 0 && argument.charAt(end - 1) == '\r') {
+            end--;
+        }
+        int i = 0;
+        while (i < end && isBlank(argument.charAt(i))) {
+            i++;
+        }
+        if (i == 0 || i == end) {
             return null;
+        }
+        int nameEnd;
+        int nameStart = i;
+        if (argument.charAt(i) == '"') {
+            nameStart = i + 1;
+            nameEnd = argument.indexOf('"', nameStart);
+            if (nameEnd < 0 || nameEnd >= end) {
+                return null;
+            }
+        } else {
+            nameEnd = i;
+            while (nameEnd < end && !isBlank(argument.charAt(nameEnd))) {
+                nameEnd++;
+            }
+        }
+        return nameEnd > nameStart ? argument.substring(nameStart, nameEnd) : null;
+    }
+
+    private static boolean isBlank(char c) {
+        return c == ' ' || c == '\t';
+    }
+
+    /** A name as a command of a file in folder {@code dir} (null for the working directory) gives it. */
+    private record Named(Path dir, Kind kind, String name) {
+    }
+
+    /** The files to watch, each once, and the .simp files still to look through. */
+    private static final class WatchList {
+        private final Path workingDir;
+        private final Set<Path> keys = new HashSet<>();
+        /** The names already followed, with the folder they were named in: scenes name a cube hundreds of times. */
+        private final Set<Named> followed = new HashSet<>();
+        final List<Path> paths = new ArrayList<>();
+        final Deque<Path> toScan = new ArrayDeque<>();
+
+        WatchList(Path workingDir) {
+            this.workingDir = workingDir;
+        }
+
+        /** Lists {@code file} unless it is already; true when it is new and exists. */
+        boolean add(Path file) {
+            Path key;
+            boolean exists;
+            try {
+                key = file.toRealPath();
+                exists = true;
+            } catch (IOException | SecurityException e) {
+                key = file.toAbsolutePath().normalize();
+                exists = false;
+            }
+            if (!keys.add(key)) {
+                return false;
+            }
+            paths.add(file);
+            return exists;
+        }
+
+        /** Lists the file a {@code file} or {@code obj} command of {@code from} names; queues a .simp one. */
+        void named(Path from, Kind kind, String argument) {
+            String name = name(argument);
+            if (name == null || !followed.add(new Named(from.getParent(), kind, name))) {
+                return;
+            }
+            FilePlaces places;
+            try {
+                places = FilePlaces.of(from, name, kind == Kind.FILE ? ".simp" : ".obj", workingDir);
+            } catch (InvalidPathException e) {
+                return;
+            }
+            Path found = places.found();
+            if (found == null || !Files.exists(found)) {
+                add(places.here());
+                add(places.working());
+                return;
+            }
+            if (add(found) && kind == Kind.FILE && Files.isRegularFile(found)) {
+                toScan.add(found);
+            }
+            if (!places.hereIsWorking() && found.equals(places.working())) {
+                add(places.here());
+            }
         }
     }
 

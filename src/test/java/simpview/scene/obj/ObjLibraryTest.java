@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.FileTime;
 import java.util.ArrayList;
 import java.util.List;
@@ -102,6 +103,61 @@ class ObjLibraryTest {
         Files.setLastModifiedTime(file, FileTime.fromMillis(Files.getLastModifiedTime(file).toMillis() + 5_000));
         assertEquals(7.0, draw(library, file).get(0).corners().get(1).x());
         assertEquals(2, library.parseCount());
+    }
+
+    /** A save within one tick of the file system's clock keeps size, inode and time: only the bytes tell. */
+    @Test
+    void aQuickSaveKeepingSizeInodeAndTimeIsParsedAgain() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        Object inode = Files.readAttributes(file, BasicFileAttributes.class).fileKey();
+        FileTime saved = Files.getLastModifiedTime(file);
+        ObjLibrary library = new ObjLibrary();
+        assertEquals(1.0, draw(library, file).get(0).corners().get(1).x());
+        Files.writeString(file, TRIANGLES.replace("v 1 0 0", "v 7 0 0"));
+        Files.setLastModifiedTime(file, saved);
+        assertEquals(inode, Files.readAttributes(file, BasicFileAttributes.class).fileKey(), "written in place");
+        assertEquals(7.0, draw(library, file).get(0).corners().get(1).x(), "the new model, not the kept one");
+        assertEquals(2, library.parseCount());
+        assertEquals(streamed(file), draw(library, file));
+        assertEquals(2, library.parseCount(), "the new model is kept in its turn");
+    }
+
+    @Test
+    void aFreshFileIsComparedByContentAndReplayedWhileUnchanged() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        ObjLibrary library = new ObjLibrary();
+        draw(library, file);
+        draw(library, file);
+        draw(library, file);
+        assertEquals(1, library.parseCount());
+        assertEquals(3, library.contentCheckCount(), "one before the parse, one at each replay");
+    }
+
+    @Test
+    void aSettledFileIsTrustedOnItsStampAlone() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        Files.setLastModifiedTime(file, FileTime.fromMillis(System.currentTimeMillis() - 60_000));
+        ObjLibrary library = new ObjLibrary();
+        draw(library, file);
+        draw(library, file);
+        assertEquals(1, library.parseCount());
+        assertEquals(0, library.contentCheckCount(), "no byte read but the parse's");
+    }
+
+    @Test
+    void aKeptModelSettlesOnceItsFileIsOldEnough() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        ObjLibrary library = new ObjLibrary(ObjLibrary.DEFAULT_BUDGET, 200);
+        draw(library, file);
+        draw(library, file);
+        assertEquals(2, library.contentCheckCount(), "fresh: its bytes are compared");
+        Thread.sleep(400);
+        draw(library, file);
+        assertEquals(3, library.contentCheckCount(), "old enough now: compared once more, then trusted");
+        draw(library, file);
+        draw(library, file);
+        assertEquals(3, library.contentCheckCount());
+        assertEquals(1, library.parseCount());
     }
 
     @Test

@@ -1,0 +1,55 @@
+package simpview.scene.simp;
+
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+
+/**
+ * The two places a name given to {@code file} or {@code obj} is looked for,
+ * with the extension always added ("bowling" is bowling.obj, "a.obj" is
+ * a.obj.obj): the folder of the file holding the command, then the working
+ * directory (where the course's programs looked). The reader and the
+ * window's watch list both ask here, so they cannot disagree on which file a
+ * name means.
+ *
+ * @param fileName the name with its extension, as looked for
+ * @param here the name in the folder of the file holding the command
+ * @param working the name in the working directory, absolute
+ */
+record FilePlaces(String fileName, Path here, Path working) {
+
+    /**
+     * The places of {@code name} + {@code extension} named in the file
+     * {@code from}, with the working directory the program runs in.
+     *
+     * @throws InvalidPathException the name is no valid file name here
+     */
+    static FilePlaces of(Path from, String name, String extension) {
+        return of(from, name, extension, Path.of("").toAbsolutePath());
+    }
+
+    /** As {@link #of(Path, String, String)}, with {@code workingDir} (absolute) as the working directory. */
+    static FilePlaces of(Path from, String name, String extension, Path workingDir) {
+        String fileName = name + extension;
+        Path dir = from.getParent();
+        Path here = dir == null ? Path.of(fileName) : dir.resolve(fileName);
+        return new FilePlaces(fileName, here, workingDir.resolve(fileName));
+    }
+
+    /**
+     * The file the reader reads: the one beside the including file when it
+     * exists (or when that folder is the working directory), else the one in
+     * the working directory when that exists; null when it is in neither.
+     */
+    Path found() {
+        if (Files.exists(here) || hereIsWorking()) {
+            return here;
+        }
+        return Files.exists(working) ? working : null;
+    }
+
+    /** True when both places are one, the including file lying in the working directory. */
+    boolean hereIsWorking() {
+        return here.toAbsolutePath().normalize().equals(working.normalize());
+    }
+}

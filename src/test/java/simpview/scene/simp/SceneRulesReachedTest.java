@@ -1,0 +1,124 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The files a scene reads, as the window watches them: its .simp files and the .obj models they name. */
+class SceneRulesReachedTest {
+
+    private static final String MODEL = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+    @TempDir
+    Path dir;
+
+    /** Stands for the working directory, so that no test writes into the real one. */
+    private Path working;
+    private Path scenes;
+
+    @BeforeEach
+    void folders() throws IOException {
+        working = Files.createDirectory(dir.resolve("working"));
+        scenes = Files.createDirectory(dir.resolve("scenes"));
+    }
+
+    private static Path write(Path file, String text) throws IOException {
+        Files.createDirectories(file.getParent());
+        return Files.writeString(file, text);
+    }
+
+    private List<Path> reached(Path top) {
+        return SceneRules.reached(top, working);
+    }
+
+    @Test
+    void modelsBesideTheSceneAreListedQuotedOrBareInTheOrderMet() throws Exception {
+        Path bowling = write(scenes.resolve("bowling.obj"), MODEL);
+        Path pin = write(scenes.resolve("pin.obj"), MODEL);
+        Path top = write(scenes.resolve("lit.simp"),
+                "ambient 0.2 0.2 0.2\nobj \"bowling\"\n{\n\tobj\tpin\n}\nobj bowling\n");
+        assertEquals(List.of(top, bowling, pin), reached(top), "each model once, none from the working directory");
+    }
+
+    @Test
+    void aModelNamedInAnIncludedFileIsLookedForBesideThatFile() throws Exception {
+        Path part = write(scenes.resolve("parts/part.simp"), "obj \"wheel\"\n");
+        Path wheel = write(scenes.resolve("parts/wheel.obj"), MODEL);
+        write(scenes.resolve("wheel.obj"), MODEL); // beside the top file: not the one part.simp names
+        Path top = write(scenes.resolve("car.simp"), "file \"parts/part\"\n");
+        assertEquals(List.of(top, part, wheel), reached(top));
+    }
+
+    @Test
+    void aModelOnlyInTheWorkingDirectoryIsListedWithThePlaceThatWouldTakeItOver() throws Exception {
+        Path model = write(working.resolve("bowling.obj"), MODEL);
+        Path top = write(scenes.resolve("lit.simp"), "obj \"bowling\"\n");
+        assertEquals(List.of(top, model, scenes.resolve("bowling.obj")), reached(top));
+        assertFalse(Files.exists(scenes.resolve("bowling.obj")), "watched for appearing");
+    }
+
+    @Test
+    void aMissingModelIsWatchedAtBothPlacesTheReaderLooks() throws Exception {
+        Path top = write(scenes.resolve("lit.simp"), "obj \"notyet\"\n");
+        assertEquals(List.of(top, scenes.resolve("notyet.obj"), working.resolve("notyet.obj")), reached(top));
+    }
+
+    @Test
+    void theRealWorkingDirectoryIsTheOneThePublicMethodUses() throws Exception {
+        Path top = write(scenes.resolve("lit.simp"), "obj \"no-such-model-3f9\"\n");
+        assertEquals(List.of(top, scenes.resolve("no-such-model-3f9.obj"),
+                Path.of("no-such-model-3f9.obj").toAbsolutePath()), SceneRules.reached(top));
+    }
+
+    @Test
+    void theExtensionIsAlwaysAddedAsTheReaderAddsIt() throws Exception {
+        write(scenes.resolve("bowling.obj"), MODEL);
+        Path top = write(scenes.resolve("lit.simp"), "obj \"bowling.obj\"\n");
+        assertEquals(List.of(top, scenes.resolve("bowling.obj.obj"), working.resolve("bowling.obj.obj")),
+                reached(top), "the reader looks for bowling.obj.obj, so that is what is watched");
+    }
+
+    @Test
+    void aSceneInTheWorkingDirectoryListsAMissingModelOnce() throws Exception {
+        Path top = write(working.resolve("lit.simp"), "obj gone\n");
+        assertEquals(List.of(top, working.resolve("gone.obj")), reached(top));
+    }
+
+    @Test
+    void aMissingIncludeIsWatchedToo() throws Exception {
+        Path top = write(scenes.resolve("top.simp"), "file \"later\"\n");
+        assertEquals(List.of(top, scenes.resolve("later.simp"), working.resolve("later.simp")), reached(top));
+    }
+
+    @Test
+    void windowsLineEndsAndAnIncludeCycleAreHandled() throws Exception {
+        Path model = write(scenes.resolve("m.obj"), MODEL);
+        Path a = write(scenes.resolve("a.simp"), "file b\r\nobj m\r\n");
+        Path b = write(scenes.resolve("b.simp"), "file \"a\"\r\n");
+        assertEquals(List.of(a, b, model), reached(a));
+    }
+
+    @Test
+    void aMissingTopFileReachesNothing() {
+        assertEquals(List.of(), reached(scenes.resolve("absent.simp")));
+    }
+
+    @Test
+    void namesAreReadAsTheReaderReadsThem() {
+        assertEquals("a b", SceneRules.name(" \"a b\"  "));
+        assertEquals("cube", SceneRules.name("\tcube\r"));
+        assertEquals("cube", SceneRules.name(" cube extra"));
+        assertNull(SceneRules.name("\"cube\""), "no blank after the command word");
+        assertNull(SceneRules.name(" \"open"), "no closing quote");
+        assertNull(SceneRules.name(" \"\""), "an empty name");
+        assertNull(SceneRules.name("   "));
+    }
+}
