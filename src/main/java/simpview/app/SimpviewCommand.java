@@ -98,7 +98,6 @@ final class SimpviewCommand implements Callable<Integer> {
         }
         WindowOptions options = new WindowOptions(seed,
                 simpDir == null ? PageContext.defaultSimpDir() : simpDir, openAtStart(), sceneList());
-        WindowClass.apply();
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
         openedWindow = true;
         return Main.OK;

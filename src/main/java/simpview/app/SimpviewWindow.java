@@ -74,6 +74,7 @@ final class SimpviewWindow {
     }
 
     static SimpviewWindow open(WindowOptions options, SceneDrawer drawer) {
+        WindowClass.apply();
         SimpviewWindow window = new SimpviewWindow(options, drawer);
         window.build();
         window.show(options.scene().<View>map(View.OfScene::new).orElse(window.viewAt(window.stepper.current())));
