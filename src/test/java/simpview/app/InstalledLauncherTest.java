@@ -80,19 +80,49 @@ class InstalledLauncherTest {
 
     /**
      * The Unix script opens the X toolkit to simpview (WindowClass names its
-     * X11 windows); the Windows one, where there is no X11 and the JVM would
-     * warn about the missing package, does not.
+     * X11 windows), except on macOS, which runs the same script and whose
+     * JVM would warn about the missing package: checked by running it with a
+     * stand-in {@code java} that prints its arguments, and a stand-in
+     * {@code uname} for macOS. The Windows script never opens it.
      */
     @Test
-    void theUnixScriptAloneOpensTheX11Toolkit() throws Exception {
+    void theUnixScriptOpensTheX11ToolkitExceptOnMacOs() throws Exception {
         String opens = "--add-opens=java.desktop/sun.awt.X11=ALL-UNNAMED";
-        String unix = Files.readString(launcher);
+        Path javaHome = Files.createDirectories(dir.resolve("jdk/bin"));
+        stand(javaHome.resolve("java"), "for a in \"$@\"; do echo \"$a\"; done");
+        Path mac = Files.createDirectories(dir.resolve("mac"));
+        stand(mac.resolve("uname"), "echo Darwin");
+        List<String> here = arguments(javaHome.getParent(), null);
+        List<String> onMac = arguments(javaHome.getParent(), mac);
+        assertTrue(here.contains(opens), "the script run here passes " + here);
+        assertTrue(here.contains("-Dsimpview.simpDir=" + launcher.getParent().getParent().resolve("simp")), here.toString());
+        assertFalse(onMac.contains(opens), "the script run as on macOS passes " + onMac);
+        assertTrue(onMac.stream().anyMatch(a -> a.startsWith("-Dsimpview.simpDir=")), onMac.toString());
         String windows = Files.readString(launcher.resolveSibling("simpview.bat"));
-        assertTrue(unix.lines().anyMatch(l -> l.startsWith("DEFAULT_JVM_OPTS=") && l.contains(opens)),
-                "DEFAULT_JVM_OPTS of " + launcher + " lacks " + opens);
         assertTrue(windows.lines().anyMatch(l -> l.startsWith("set DEFAULT_JVM_OPTS=\"-Dsimpview.simpDir=")),
                 "the Windows script keeps its other option");
         assertFalse(windows.contains("sun.awt.X11"), "the Windows script opens the X toolkit");
+    }
+
+    /** A shell script at {@code file} that runs {@code body}. */
+    private static void stand(Path file, String body) throws IOException {
+        Files.writeString(file, "#!/bin/sh\n" + body + "\n");
+        assertTrue(file.toFile().setExecutable(true));
+    }
+
+    /** What the start script hands the java of {@code javaHome}, with {@code pathFirst} (or nothing) before PATH. */
+    private List<String> arguments(Path javaHome, Path pathFirst) throws IOException, InterruptedException {
+        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "--version").directory(dir.toFile());
+        builder.environment().put("JAVA_HOME", javaHome.toString());
+        builder.environment().remove("JAVA_OPTS");
+        builder.environment().remove("SIMPVIEW_OPTS");
+        if (pathFirst != null) {
+            builder.environment().put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
+        }
+        Path out = dir.resolve("arguments.txt");
+        Process process = builder.redirectErrorStream(true).redirectOutput(out.toFile()).start();
+        assertTrue(process.waitFor(LIMIT_SECONDS, TimeUnit.SECONDS), "the start script ended");
+        return Files.readAllLines(out);
     }
 
     @Test
