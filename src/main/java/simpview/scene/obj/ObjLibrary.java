@@ -19,8 +19,9 @@ import simpview.scene.SceneException;
  *
  * <p>{@link #draw} replays the kept model when the file's real path, size,
  * last-modified time and inode are those it was parsed at, and the model is
- * settled or its content unchanged (below); otherwise it parses the file, streaming its faces to the sink as they are read and recording them
- * at the same time. A model is kept only while all kept models' arrays fit
+ * settled or its content unchanged (below); otherwise it parses the file,
+ * streaming its faces to the sink as they are read and recording them at
+ * the same time. A model is kept only while all kept models' arrays fit
  * in the budget (the least recently drawn go first); a file whose model
  * alone would pass it stops being recorded as soon as it does and is simply
  * streamed, on every draw. A file that fails to parse is never kept.
