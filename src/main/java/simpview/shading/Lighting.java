@@ -31,34 +31,41 @@ package simpview.shading;
 public final class Lighting {
 
     /** Squared lengths inside [LOW, HIGH] are used as they are; others are rescaled first. */
-    private static final double LOW = 1e-150;
-    private static final double HIGH = 1e150;
+    static final double LOW = 1e-150;
+    static final double HIGH = 1e150;
     /** Integer exponents up to this are raised by repeated squaring (within 2e-13 of Math.pow). */
     static final int MAX_SQUARING_EXPONENT = 1024;
 
-    private final Lights lights;
+    final Lights lights;
+    private final BatchLighting batch = new BatchLighting(this);
 
-    // What the primitive's command had in force, set by prepare.
-    private double ambientRed;
-    private double ambientGreen;
-    private double ambientBlue;
-    private double ks;
-    private double p;
-    private int exponent;
-    private int lightCount;
-    private boolean perspective;
+    // What the primitive's command had in force, set by prepare (read by
+    // BatchLighting, which lights a batch of points with the same numbers).
+    double ambientRed;
+    double ambientGreen;
+    double ambientBlue;
+    double ks;
+    double p;
+    int exponent;
+    int lightCount;
+    boolean perspective;
 
     // The point being shaded, set by aim: N and E (P to the eye) as given or
     // rescaled, their inverse lengths, and V . N.
-    private double normalX;
-    private double normalY;
-    private double normalZ;
-    private double inverseNormal;
-    private double eyeX;
-    private double eyeY;
-    private double eyeZ;
-    private double inverseEye;
-    private double vn;
+    double normalX;
+    double normalY;
+    double normalZ;
+    double inverseNormal;
+    double eyeX;
+    double eyeY;
+    double eyeZ;
+    double inverseEye;
+    double vn;
+
+    // What light() found a light adds to the point.
+    double addedRed;
+    double addedGreen;
+    double addedBlue;
 
     public Lighting(Lights lights) {
         this.lights = lights;
@@ -104,40 +111,13 @@ public final class Lighting {
         double g = kdGreen * ambientGreen;
         double b = kdBlue * ambientBlue;
         if (lightCount > 0 && aim(px, py, pz, nx, ny, nz)) {
-            double[] data = lights.data();
             int end = lightCount * Lights.STRIDE;
             for (int o = 0; o < end; o += Lights.STRIDE) {
-                double lx = data[o + Lights.X] - px;
-                double ly = data[o + Lights.Y] - py;
-                double lz = data[o + Lights.Z] - pz;
-                double nl = normalX * lx + normalY * ly + normalZ * lz;
-                if (!(nl > 0)) {
-                    continue; // behind the surface, edge on, or at the lit point
+                if (light(o, px, py, pz, kdRed, kdGreen, kdBlue)) {
+                    r += addedRed;
+                    g += addedGreen;
+                    b += addedBlue;
                 }
-                double d2 = lx * lx + ly * ly + lz * lz;
-                double scale = 1;
-                if (!(d2 >= LOW && d2 <= HIGH)) {
-                    scale = largest(lx, ly, lz);
-                    if (!(scale <= Double.MAX_VALUE)) {
-                        continue; // infinitely far
-                    }
-                    lx /= scale;
-                    ly /= scale;
-                    lz /= scale;
-                    nl = normalX * lx + normalY * ly + normalZ * lz;
-                    d2 = lx * lx + ly * ly + lz * lz;
-                }
-                double s = Math.sqrt(d2);
-                double is = 1 / s;
-                double cos = nl * (inverseNormal * is);
-                double vl = (eyeX * lx + eyeY * ly + eyeZ * lz) * (inverseEye * is);
-                double specular = ks * power(2 * cos * vn - vl);
-                // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
-                double lb = data[o + Lights.B];
-                double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
-                r += contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
-                g += contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
-                b += contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
             }
         }
         out[at] = clamp(r);
@@ -145,12 +125,58 @@ public final class Lighting {
         out[at + 2] = clamp(b);
     }
 
+    /** Lights every point of the batch into its colour, each exactly as {@link #shade} lights it alone. */
+    public void shade(LitPoints points) {
+        batch.shade(points);
+    }
+
+    /**
+     * What the light at data[o] adds at P, once {@link #aim} has set the
+     * point's N and E, into {@link #addedRed}, {@link #addedGreen} and
+     * {@link #addedBlue}; false when it adds nothing.
+     */
+    boolean light(int o, double px, double py, double pz, double kdRed, double kdGreen, double kdBlue) {
+        double[] data = lights.data();
+        double lx = data[o + Lights.X] - px;
+        double ly = data[o + Lights.Y] - py;
+        double lz = data[o + Lights.Z] - pz;
+        double nl = normalX * lx + normalY * ly + normalZ * lz;
+        if (!(nl > 0)) {
+            return false; // behind the surface, edge on, or at the lit point
+        }
+        double d2 = lx * lx + ly * ly + lz * lz;
+        double scale = 1;
+        if (!(d2 >= LOW && d2 <= HIGH)) {
+            scale = largest(lx, ly, lz);
+            if (!(scale <= Double.MAX_VALUE)) {
+                return false; // infinitely far
+            }
+            lx /= scale;
+            ly /= scale;
+            lz /= scale;
+            nl = normalX * lx + normalY * ly + normalZ * lz;
+            d2 = lx * lx + ly * ly + lz * lz;
+        }
+        double s = Math.sqrt(d2);
+        double is = 1 / s;
+        double cos = nl * (inverseNormal * is);
+        double vl = (eyeX * lx + eyeY * ly + eyeZ * lz) * (inverseEye * is);
+        double specular = ks * power(2 * cos * vn - vl);
+        // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
+        double lb = data[o + Lights.B];
+        double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
+        addedRed = contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
+        addedGreen = contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
+        addedBlue = contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
+        return true;
+    }
+
     /**
      * Sets the point's normal and eye vectors (each rescaled when its length
      * is tiny or huge, with its inverse length) and V . N; false for a zero
      * or non-finite normal, which gets the ambient term only.
      */
-    private boolean aim(double px, double py, double pz, double nx, double ny, double nz) {
+    boolean aim(double px, double py, double pz, double nx, double ny, double nz) {
         double n2 = nx * nx + ny * ny + nz * nz;
         if (!(n2 >= LOW && n2 <= HIGH)) {
             double m = largest(nx, ny, nz);
@@ -215,12 +241,12 @@ public final class Lighting {
     }
 
     /** (Ii fi) times its factor; a product with no value (infinity times 0) adds nothing. */
-    private static double contribution(double light, double factor) {
+    static double contribution(double light, double factor) {
         double c = light * factor;
         return c == c ? c : 0;
     }
 
-    private static double largest(double x, double y, double z) {
+    static double largest(double x, double y, double z) {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
