@@ -38,6 +38,12 @@ public final class FragmentStage implements FragmentSink {
     public static final int PHONG_CHANNELS = 9;
     /** Pixels of a span done together. */
     static final int BATCH = 64;
+    /**
+     * Phong spans shorter than this are lit pixel by pixel: a batch's steps
+     * cost more to set up than they save on a few pixels (small triangles,
+     * as dummy.obj's, measured slower by batches).
+     */
+    static final int SHORT_PHONG_SPAN = 16;
     /** 0, 1, 2, ...: k0 + RAMP[j] is k0 + j, exactly. */
     private static final double[] RAMP = new double[BATCH];
 
@@ -125,10 +131,14 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
-    /** A phong span, a batch at a time; true when a pixel was written. */
+    /** A phong span, a batch at a time, or pixel by pixel when short; true when a pixel was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
+        int start = Math.max(from, 0);
+        if (end - start < SHORT_PHONG_SPAN) {
+            return phongPixels(y, from, start, end, q0, dq, v0, dv);
+        }
         boolean wrote = false;
-        for (int first = Math.max(from, 0); first < end; first += BATCH) {
+        for (int first = start; first < end; first += BATCH) {
             int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z]);
             if (n > 0) {
                 wrote = true;
@@ -136,6 +146,51 @@ public final class FragmentStage implements FragmentSink {
                 pack(n);
                 writeRuns(y, n);
             }
+        }
+        return wrote;
+    }
+
+    /**
+     * A short phong span, pixel by pixel: kd, P and N resolved at each pixel
+     * that passes the depth test, and lit there alone. True when a pixel was
+     * written.
+     */
+    private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double r0 = v0[R];
+        double dr = dv[R];
+        double g0 = v0[G];
+        double dg = dv[G];
+        double b0 = v0[B];
+        double db = dv[B];
+        double px0 = v0[PX];
+        double dpx = dv[PX];
+        double py0 = v0[PY];
+        double dpy = dv[PY];
+        double nx0 = v0[NX];
+        double dnx = dv[NX];
+        double ny0 = v0[NY];
+        double dny = dv[NY];
+        double nz0 = v0[NZ];
+        double dnz = dv[NZ];
+        PointShader s = shader;
+        int row = y * width;
+        boolean wrote = false;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!(z > depth[row + x])) {
+                continue;
+            }
+            depth[row + x] = z;
+            wrote = true;
+            s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                    (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
+                    (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            panel.setPixel(x, y, z, fogged(z));
         }
         return wrote;
     }
