@@ -14,8 +14,9 @@ package simpview.shading;
  * floating point, and a packed IEEE operation rounds each lane as the single
  * one does), so the bits cannot differ. The steps are written for the usual
  * point: lengths inside [{@link Lighting#LOW}, {@link Lighting#HIGH}]. A
- * point outside that (rescaled alone) is redone alone by Lighting's own
- * scalar code, so every edge case keeps the one implementation it has.
+ * point with a length outside that (N, E or some L, which Lighting rescales)
+ * is lit again alone, by Lighting's own scalar code, so every edge case
+ * keeps the one implementation it has.
  */
 final class BatchLighting {
 
@@ -28,6 +29,7 @@ final class BatchLighting {
     void shade(LitPoints t) {
         int n = t.count;
         Lighting l = lighting;
+        java.util.Arrays.fill(t.alone, 0, n, false);
         for (int i = 0; i < n; i++) {
             t.red[i] = t.kdRed[i] * l.ambientRed;
             t.green[i] = t.kdGreen[i] * l.ambientGreen;
@@ -45,6 +47,21 @@ final class BatchLighting {
             t.green[i] = Lighting.clamp(t.green[i]);
             t.blue[i] = Lighting.clamp(t.blue[i]);
         }
+        for (int i = 0; i < n; i++) {
+            if (t.alone[i]) {
+                shadeAlone(t, i);
+            }
+        }
+    }
+
+    /** Point i lit by Lighting alone, its colour replacing what the steps made of it. */
+    private void shadeAlone(LitPoints t, int i) {
+        double[] out = t.aloneColour;
+        lighting.shade(t.px[i], t.py[i], t.pz[i], t.nx[i], t.ny[i], t.nz[i], t.kdRed[i], t.kdGreen[i],
+                t.kdBlue[i], out, 0);
+        t.red[i] = out[0];
+        t.green[i] = out[1];
+        t.blue[i] = out[2];
     }
 
     /**
@@ -96,7 +113,11 @@ final class BatchLighting {
         }
         for (int i = 0; i < n; i++) {
             if (!(usual(t.normal2[i]) && usual(t.eye2[i]))) {
-                aimAlone(t, i);
+                // Lit alone at the end; meanwhile N = 0 makes N . L never above 0, so no light adds to it.
+                t.alone[i] = true;
+                t.normalX[i] = 0;
+                t.normalY[i] = 0;
+                t.normalZ[i] = 0;
             }
         }
     }
@@ -113,28 +134,7 @@ final class BatchLighting {
         return length2 >= Lighting.LOW && length2 <= Lighting.HIGH;
     }
 
-    /** Lighting.aim itself for point i; a normal that gets the ambient term only is kept as N = 0. */
-    private void aimAlone(LitPoints t, int i) {
-        Lighting l = lighting;
-        if (l.aim(t.px[i], t.py[i], t.pz[i], t.nx[i], t.ny[i], t.nz[i])) {
-            t.normalX[i] = l.normalX;
-            t.normalY[i] = l.normalY;
-            t.normalZ[i] = l.normalZ;
-            t.inverseNormal[i] = l.inverseNormal;
-            t.eyeX[i] = l.eyeX;
-            t.eyeY[i] = l.eyeY;
-            t.eyeZ[i] = l.eyeZ;
-            t.inverseEye[i] = l.inverseEye;
-            t.vn[i] = l.vn;
-        } else {
-            // N . L is then 0 (or NaN) for every light, never above 0: no light adds.
-            t.normalX[i] = 0;
-            t.normalY[i] = 0;
-            t.normalZ[i] = 0;
-        }
-    }
-
-    /** Adds the light at data[o] to every point: Lighting.light, step by step. */
+    /** Adds the light at data[o] to every point: the body of Lighting.shade's light loop, step by step. */
     private void light(LitPoints t, int n, int o) {
         double[] data = lighting.lights.data();
         double[] lx = t.lightX;
@@ -218,7 +218,7 @@ final class BatchLighting {
         }
     }
 
-    /** Each point the light reaches gets its contribution; an unusual |L| is redone by Lighting.light. */
+    /** Each point the light reaches gets its contribution; one at an unusual |L| is left to be lit alone. */
     private void add(LitPoints t, int n, int o) {
         Lighting l = lighting;
         double[] data = l.lights.data();
@@ -233,7 +233,7 @@ final class BatchLighting {
                 continue; // behind the surface, edge on, at the lit point, or N = 0
             }
             if (!usual(t.distance2[i])) {
-                addAlone(t, i, o);
+                t.alone[i] = true; // lit alone at the end
                 continue;
             }
             double cos = t.cosine[i];
@@ -242,17 +242,6 @@ final class BatchLighting {
             t.red[i] += Lighting.contribution(red * f, t.kdRed[i] * cos + specular);
             t.green[i] += Lighting.contribution(green * f, t.kdGreen[i] * cos + specular);
             t.blue[i] += Lighting.contribution(blue * f, t.kdBlue[i] * cos + specular);
-        }
-    }
-
-    /** Lighting.light itself for point i, after Lighting.aim sets the point again (to the same numbers). */
-    private void addAlone(LitPoints t, int i, int o) {
-        Lighting l = lighting;
-        if (l.aim(t.px[i], t.py[i], t.pz[i], t.nx[i], t.ny[i], t.nz[i])
-                && l.light(o, t.px[i], t.py[i], t.pz[i], t.kdRed[i], t.kdGreen[i], t.kdBlue[i])) {
-            t.red[i] += l.addedRed;
-            t.green[i] += l.addedGreen;
-            t.blue[i] += l.addedBlue;
         }
     }
 }

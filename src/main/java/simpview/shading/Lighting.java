@@ -40,7 +40,7 @@ public final class Lighting {
     private final BatchLighting batch = new BatchLighting(this);
 
     // What the primitive's command had in force, set by prepare (read by
-    // BatchLighting, which lights a batch of points with the same numbers).
+    // BatchLighting too, which lights a batch of points with the same).
     double ambientRed;
     double ambientGreen;
     double ambientBlue;
@@ -52,20 +52,15 @@ public final class Lighting {
 
     // The point being shaded, set by aim: N and E (P to the eye) as given or
     // rescaled, their inverse lengths, and V . N.
-    double normalX;
-    double normalY;
-    double normalZ;
-    double inverseNormal;
-    double eyeX;
-    double eyeY;
-    double eyeZ;
-    double inverseEye;
-    double vn;
-
-    // What light() found a light adds to the point.
-    double addedRed;
-    double addedGreen;
-    double addedBlue;
+    private double normalX;
+    private double normalY;
+    private double normalZ;
+    private double inverseNormal;
+    private double eyeX;
+    private double eyeY;
+    private double eyeZ;
+    private double inverseEye;
+    private double vn;
 
     public Lighting(Lights lights) {
         this.lights = lights;
@@ -111,13 +106,40 @@ public final class Lighting {
         double g = kdGreen * ambientGreen;
         double b = kdBlue * ambientBlue;
         if (lightCount > 0 && aim(px, py, pz, nx, ny, nz)) {
+            double[] data = lights.data();
             int end = lightCount * Lights.STRIDE;
             for (int o = 0; o < end; o += Lights.STRIDE) {
-                if (light(o, px, py, pz, kdRed, kdGreen, kdBlue)) {
-                    r += addedRed;
-                    g += addedGreen;
-                    b += addedBlue;
+                double lx = data[o + Lights.X] - px;
+                double ly = data[o + Lights.Y] - py;
+                double lz = data[o + Lights.Z] - pz;
+                double nl = normalX * lx + normalY * ly + normalZ * lz;
+                if (!(nl > 0)) {
+                    continue; // behind the surface, edge on, or at the lit point
                 }
+                double d2 = lx * lx + ly * ly + lz * lz;
+                double scale = 1;
+                if (!(d2 >= LOW && d2 <= HIGH)) {
+                    scale = largest(lx, ly, lz);
+                    if (!(scale <= Double.MAX_VALUE)) {
+                        continue; // infinitely far
+                    }
+                    lx /= scale;
+                    ly /= scale;
+                    lz /= scale;
+                    nl = normalX * lx + normalY * ly + normalZ * lz;
+                    d2 = lx * lx + ly * ly + lz * lz;
+                }
+                double s = Math.sqrt(d2);
+                double is = 1 / s;
+                double cos = nl * (inverseNormal * is);
+                double vl = (eyeX * lx + eyeY * ly + eyeZ * lz) * (inverseEye * is);
+                double specular = ks * power(2 * cos * vn - vl);
+                // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
+                double lb = data[o + Lights.B];
+                double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
+                r += contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
+                g += contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
+                b += contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
             }
         }
         out[at] = clamp(r);
@@ -125,50 +147,13 @@ public final class Lighting {
         out[at + 2] = clamp(b);
     }
 
-    /** Lights every point of the batch into its colour, each exactly as {@link #shade} lights it alone. */
+    /**
+     * Lights every point of the batch into its colour, each to the same bits
+     * as {@link #shade(double, double, double, double, double, double, double,
+     * double, double, double[], int)} gives it alone (see {@link BatchLighting}).
+     */
     public void shade(LitPoints points) {
         batch.shade(points);
-    }
-
-    /**
-     * What the light at data[o] adds at P, once {@link #aim} has set the
-     * point's N and E, into {@link #addedRed}, {@link #addedGreen} and
-     * {@link #addedBlue}; false when it adds nothing.
-     */
-    boolean light(int o, double px, double py, double pz, double kdRed, double kdGreen, double kdBlue) {
-        double[] data = lights.data();
-        double lx = data[o + Lights.X] - px;
-        double ly = data[o + Lights.Y] - py;
-        double lz = data[o + Lights.Z] - pz;
-        double nl = normalX * lx + normalY * ly + normalZ * lz;
-        if (!(nl > 0)) {
-            return false; // behind the surface, edge on, or at the lit point
-        }
-        double d2 = lx * lx + ly * ly + lz * lz;
-        double scale = 1;
-        if (!(d2 >= LOW && d2 <= HIGH)) {
-            scale = largest(lx, ly, lz);
-            if (!(scale <= Double.MAX_VALUE)) {
-                return false; // infinitely far
-            }
-            lx /= scale;
-            ly /= scale;
-            lz /= scale;
-            nl = normalX * lx + normalY * ly + normalZ * lz;
-            d2 = lx * lx + ly * ly + lz * lz;
-        }
-        double s = Math.sqrt(d2);
-        double is = 1 / s;
-        double cos = nl * (inverseNormal * is);
-        double vl = (eyeX * lx + eyeY * ly + eyeZ * lz) * (inverseEye * is);
-        double specular = ks * power(2 * cos * vn - vl);
-        // With b = 0, 1 / (a + 0 d) is 1 / a, kept with the light: one division fewer.
-        double lb = data[o + Lights.B];
-        double f = lb == 0 ? data[o + Lights.INVERSE_A] : 1 / (data[o + Lights.A] + lb * (s * scale));
-        addedRed = contribution(data[o + Lights.RED] * f, kdRed * cos + specular);
-        addedGreen = contribution(data[o + Lights.GREEN] * f, kdGreen * cos + specular);
-        addedBlue = contribution(data[o + Lights.BLUE] * f, kdBlue * cos + specular);
-        return true;
     }
 
     /**
@@ -176,7 +161,7 @@ public final class Lighting {
      * is tiny or huge, with its inverse length) and V . N; false for a zero
      * or non-finite normal, which gets the ambient term only.
      */
-    boolean aim(double px, double py, double pz, double nx, double ny, double nz) {
+    private boolean aim(double px, double py, double pz, double nx, double ny, double nz) {
         double n2 = nx * nx + ny * ny + nz * nz;
         if (!(n2 >= LOW && n2 <= HIGH)) {
             double m = largest(nx, ny, nz);
@@ -246,7 +231,7 @@ public final class Lighting {
         return c == c ? c : 0;
     }
 
-    static double largest(double x, double y, double z) {
+    private static double largest(double x, double y, double z) {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 

@@ -29,12 +29,11 @@ public final class LitPoints {
     final double[] green;
     final double[] blue;
 
-    // BatchLighting's scratch, per point. For the point: N as used
-    // (rescaled when tiny or huge, zero when it gets the ambient term only),
-    // E (P to the eye) as used, 1 / |N|, 1 / |E|, V . N, and |N|^2 and |E|^2
-    // as given. For the light being added: L, N . L, |L|^2, |L|, 1 / |L|, cos, the
-    // highlight's base V . R (then max(0, V . R) at most 1, then its squares),
-    // its power, and the attenuation.
+    // BatchLighting's scratch, per point. For the point: N as used (zero for
+    // a point lit alone), E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
+    // |N|^2 and |E|^2. For the light being added: L, N . L, |L|^2, |L|,
+    // 1 / |L|, cos, the highlight's base V . R (then max(0, V . R) at most 1,
+    // then its squares), its power, and the attenuation.
     final double[] normalX;
     final double[] normalY;
     final double[] normalZ;
@@ -57,6 +56,9 @@ public final class LitPoints {
     final double[] highlight;
     final double[] raised;
     final double[] attenuation;
+    /** Points with a length Lighting rescales: lit alone, into aloneColour, once the steps are done. */
+    final boolean[] alone;
+    final double[] aloneColour = new double[3];
 
     int count;
 
@@ -99,6 +101,7 @@ public final class LitPoints {
         highlight = new double[capacity];
         raised = new double[capacity];
         attenuation = new double[capacity];
+        alone = new boolean[capacity];
     }
 
     public int capacity() {
