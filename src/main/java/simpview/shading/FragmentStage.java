@@ -107,9 +107,10 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /*
-     * Per pixel both span loops do exactly what pixel() does, with
-     * k = x - from: inv = 1 / (q0 + k dq), each channel (v0[c] + k dv[c]) * inv,
-     * so every bit is the same. A phong span is done BATCH pixels at a time,
+     * Per pixel every span path below (colour spans, short phong spans,
+     * phong batches) does exactly what pixel() does, with k = x - from:
+     * inv = 1 / (q0 + k dq), each channel (v0[c] + k dv[c]) * inv, so every
+     * bit is the same. A phong span is done BATCH pixels at a time,
      * each step over every pixel of the batch in a small loop of plain
      * arithmetic, which C2 compiles to packed operations: first 1 / q and z
      * for every pixel, then the depth test, gathering the pixels that pass,
