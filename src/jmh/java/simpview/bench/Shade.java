@@ -16,6 +16,7 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.shading.Fog;
 import simpview.shading.Lighting;
 import simpview.shading.Lights;
+import simpview.shading.LitPoints;
 
 /**
  * One phong pixel's lighting: {@link Lighting#shade} with two lights (one in
@@ -23,8 +24,11 @@ import simpview.shading.Lights;
  * patch in raster order, as phong shading meets them: P across a tilted
  * square 100 to 150 units in front of the eye, N and kd varying smoothly. Each shaded
  * colour is fogged and summed, so none of the work can be dropped. One op is
- * one shade call; the score is ns per call. {@code exponent} is the surface's
+ * one point lit; the score is ns per point. {@code exponent} is the surface's
  * p: 8 and 128 take the repeated-squaring path, 7.5 Math.pow.
+ * {@link #shade} lights one point per call, as gouraud vertices are lit;
+ * {@link #shadeBatch} the same points 64 at a time, as phong spans are
+ * ({@link Lighting#shade(LitPoints)}), filled in the set-up.
  */
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
@@ -42,7 +46,10 @@ public class Shade {
 
     private final double[] points = new double[9 * POINTS];
     private final double[] colour = new double[3];
+    private static final int BATCH = 64;
+
     private Lighting lighting;
+    private final LitPoints[] batches = new LitPoints[POINTS / BATCH];
     private final Fog fog = new Fog(-100, -200, 0, 0, 0);
 
     @Setup
@@ -68,6 +75,14 @@ public class Shade {
             points[at + 7] = 0.5 + 0.5 * v;
             points[at + 8] = 0.5;
         }
+        for (int k = 0; k < batches.length; k++) {
+            batches[k] = new LitPoints(BATCH);
+            for (int i = k * BATCH; i < (k + 1) * BATCH; i++) {
+                int at = 9 * i;
+                batches[k].add(points[at], points[at + 1], points[at + 2], points[at + 3], points[at + 4],
+                        points[at + 5], points[at + 6], points[at + 7], points[at + 8]);
+            }
+        }
     }
 
     @Benchmark
@@ -81,6 +96,26 @@ public class Shade {
                     p[at + 6], p[at + 7], p[at + 8], c, 0);
             fog.apply(p[at + 2], c, 0);
             sum += c[0] + c[1] + c[2];
+        }
+        return sum;
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(POINTS)
+    public double shadeBatch() {
+        double sum = 0;
+        double[] p = points;
+        double[] c = colour;
+        for (int k = 0; k < batches.length; k++) {
+            LitPoints batch = batches[k];
+            lighting.shade(batch);
+            for (int i = 0; i < BATCH; i++) {
+                c[0] = batch.red(i);
+                c[1] = batch.green(i);
+                c[2] = batch.blue(i);
+                fog.apply(p[9 * (k * BATCH + i) + 2], c, 0);
+                sum += c[0] + c[1] + c[2];
+            }
         }
         return sum;
     }

@@ -31,22 +31,24 @@ package simpview.shading;
 public final class Lighting {
 
     /** Squared lengths inside [LOW, HIGH] are used as they are; others are rescaled first. */
-    private static final double LOW = 1e-150;
-    private static final double HIGH = 1e150;
+    static final double LOW = 1e-150;
+    static final double HIGH = 1e150;
     /** Integer exponents up to this are raised by repeated squaring (within 2e-13 of Math.pow). */
     static final int MAX_SQUARING_EXPONENT = 1024;
 
-    private final Lights lights;
+    final Lights lights;
+    private final BatchLighting batch = new BatchLighting(this);
 
-    // What the primitive's command had in force, set by prepare.
-    private double ambientRed;
-    private double ambientGreen;
-    private double ambientBlue;
-    private double ks;
-    private double p;
-    private int exponent;
-    private int lightCount;
-    private boolean perspective;
+    // What the primitive's command had in force, set by prepare (read by
+    // BatchLighting too, which lights a batch of points with the same).
+    double ambientRed;
+    double ambientGreen;
+    double ambientBlue;
+    double ks;
+    double p;
+    int exponent;
+    int lightCount;
+    boolean perspective;
 
     // The point being shaded, set by aim: N and E (P to the eye) as given or
     // rescaled, their inverse lengths, and V . N.
@@ -146,6 +148,15 @@ public final class Lighting {
     }
 
     /**
+     * Lights every point of the batch into its colour, each to the same bits
+     * as {@link #shade(double, double, double, double, double, double, double,
+     * double, double, double[], int)} gives it alone (see {@link BatchLighting}).
+     */
+    public void shade(LitPoints points) {
+        batch.shade(points);
+    }
+
+    /**
      * Sets the point's normal and eye vectors (each rescaled when its length
      * is tiny or huge, with its inverse length) and V . N; false for a zero
      * or non-finite normal, which gets the ambient term only.
@@ -215,7 +226,7 @@ public final class Lighting {
     }
 
     /** (Ii fi) times its factor; a product with no value (infinity times 0) adds nothing. */
-    private static double contribution(double light, double factor) {
+    static double contribution(double light, double factor) {
         double c = light * factor;
         return c == c ? c : 0;
     }

@@ -139,6 +139,11 @@ public final class LitState implements PointShader {
         lighting.shade(px, py, pz, nx, ny, nz, kr, kg, kb, out, 0);
     }
 
+    @Override
+    public void shade(LitPoints points) {
+        lighting.shade(points);
+    }
+
     /** Lighting takes what is in force now: every change to the state is told to it here. */
     private void prepare() {
         lighting.prepare(ambientR, ambientG, ambientB, ks, p, lights.count(), camera.isPerspective());

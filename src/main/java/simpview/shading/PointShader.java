@@ -1,12 +1,16 @@
 package simpview.shading;
 
 /**
- * Lights one point for phong shading, at every pixel: from its camera-space
+ * Lights points for phong shading, at every pixel: from a point's camera-space
  * position P, its normal N (any length; zero gives the ambient term alone) and
- * its kd, the colour clamped to [0, 1], into out[0..3).
+ * its kd, the colour clamped to [0, 1]. One point at a time into out[0..3),
+ * or a batch of them, each point's colour the same to the bit either way.
  */
 public interface PointShader {
 
     void shade(double px, double py, double pz, double nx, double ny, double nz,
             double kr, double kg, double kb, double[] out);
+
+    /** Lights every point of the batch into its colour, each as {@link #shade} would alone. */
+    void shade(LitPoints points);
 }

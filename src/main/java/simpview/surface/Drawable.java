@@ -5,10 +5,13 @@ package simpview.surface;
  * change what a write does (test depth, replace colour, drop writes, move the
  * origin); the chain ends at an {@link ImageDrawable}.
  *
- * <p>Two ways to write, with the same meaning: {@link #setPixel} for one
+ * <p>Three ways to write, with the same meaning: {@link #setPixel} for one
  * pixel, {@link #fillSpan} for a run of pixels on one row whose depth and
- * colour vary linearly. A decorator overrides both so that the fast path and
- * the pixel path draw the same picture.
+ * colour vary linearly, and {@link #setRun} for a run of pixels on one row
+ * whose depths and colours are given one by one. A decorator overrides
+ * setPixel and fillSpan together, so that the fast path and the pixel path
+ * draw the same picture. setRun's default is setPixel pixel by pixel, which
+ * is right for every decorator; one that overrides it keeps that meaning.
  *
  * <p>A drawable's size never changes: a decorator may read its delegate's
  * width and height once, when it is made.
@@ -41,6 +44,19 @@ public interface Drawable {
     default void fillSpan(Span span) {
         for (int x = span.x0; x < span.x1; x++) {
             setPixel(x, span.y, span.zAt(x), span.argbAt(x));
+        }
+    }
+
+    /**
+     * Writes the {@code count} pixels (x + i, y), i = 0, 1, ..., count - 1,
+     * the i-th with depth {@code depths[at + i]} and colour
+     * {@code colours[at + i]}: the same as that many {@link #setPixel}
+     * calls in order of x, which is what the default does. The arrays are
+     * read before the call returns, never kept.
+     */
+    default void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
+        for (int i = 0; i < count; i++) {
+            setPixel(x + i, y, depths[at + i], colours[at + i]);
         }
     }
 }

@@ -1,6 +1,14 @@
 package simpview.surface;
 
-/** A drawable that passes everything to the one it wraps unless told otherwise. */
+/**
+ * A drawable that passes everything to the one it wraps unless told otherwise.
+ *
+ * <p>Except {@link #setRun}: it is not passed on but keeps the interface's
+ * default, setPixel pixel by pixel through this decorator, so a decorator
+ * that changes what setPixel does (tests depth, replaces colour, drops writes)
+ * changes what a run does with it. A decorator passes runs on itself, where
+ * it means the same (see {@link PanelDrawable}, {@link ProvenanceDrawable}).
+ */
 public abstract class DrawableDecorator implements Drawable {
 
     protected final Drawable delegate;

@@ -49,6 +49,19 @@ public final class ImageDrawable implements Drawable {
         }
     }
 
+    /** The part of the run inside the image, copied into the raster in one go. */
+    @Override
+    public void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
+        if (y < 0 || y >= height) {
+            return;
+        }
+        int from = Math.max(x, 0);
+        int to = Math.min(x + count, width);
+        if (from < to) {
+            System.arraycopy(colours, at + (from - x), pixels, y * width + from, to - from);
+        }
+    }
+
     @Override
     public int getPixel(int x, int y) {
         if (x >= 0 && x < width && y >= 0 && y < height) {

@@ -40,6 +40,19 @@ public final class PanelDrawable extends DrawableDecorator {
         }
     }
 
+    /** The part of the run inside the panel, moved to image coordinates in one call. */
+    @Override
+    public void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
+        if (y < 0 || y >= size) {
+            return;
+        }
+        int from = Math.max(x, 0);
+        int to = Math.min(x + count, size);
+        if (from < to) {
+            delegate.setRun(left + from, imageRow(y), to - from, depths, colours, at + (from - x));
+        }
+    }
+
     @Override
     public int getPixel(int x, int y) {
         return inside(x, y) ? delegate.getPixel(left + x, imageRow(y)) : 0;

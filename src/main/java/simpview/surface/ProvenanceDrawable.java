@@ -33,6 +33,19 @@ public final class ProvenanceDrawable extends DrawableDecorator {
         delegate.setPixel(x, y, z, argb);
     }
 
+    /** Records the run's pixels inside the drawable as the current primitive's, then passes the run on. */
+    @Override
+    public void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
+        if (y >= 0 && y < height) {
+            int from = Math.max(0, x);
+            int to = Math.min(width, x + count);
+            if (from < to) {
+                java.util.Arrays.fill(owner, y * width + from, y * width + to, provenance.current);
+            }
+        }
+        delegate.setRun(x, y, count, depths, colours, at);
+    }
+
     @Override
     public void fillSpan(Span s) {
         if (s.y >= 0 && s.y < height) {

@@ -1,0 +1,163 @@
+package simpview.shading;
+
+/**
+ * A batch of points waiting to be lit together, as a phong span's visible
+ * pixels are: each with its camera-space position P, its normal N (any
+ * length) and its kd; {@link Lighting#shade(LitPoints)} writes each point's
+ * colour. A batch is lit step by step, each step over every point, in
+ * loops simple enough for the compiler to run on several points at once
+ * (packed square roots and divisions), where one point at a time waits for
+ * each result in turn.
+ *
+ * <p>Primitive arrays of a fixed capacity, made once and reused for every
+ * batch; nothing is allocated after construction. Not for two threads.
+ */
+public final class LitPoints {
+
+    // The points, as given.
+    final double[] px;
+    final double[] py;
+    final double[] pz;
+    final double[] nx;
+    final double[] ny;
+    final double[] nz;
+    final double[] kdRed;
+    final double[] kdGreen;
+    final double[] kdBlue;
+    // The lit colours.
+    final double[] red;
+    final double[] green;
+    final double[] blue;
+
+    // BatchLighting's scratch, per point. For the point: N as used (zero for
+    // a point lit alone), E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
+    // |N|^2 and |E|^2. For the light being added: L, N . L, |L|^2, |L|,
+    // 1 / |L|, cos, the highlight's base V . R (then max(0, V . R) at most 1,
+    // then its squares), its power, and the attenuation.
+    final double[] normalX;
+    final double[] normalY;
+    final double[] normalZ;
+    final double[] eyeX;
+    final double[] eyeY;
+    final double[] eyeZ;
+    final double[] inverseNormal;
+    final double[] inverseEye;
+    final double[] vn;
+    final double[] normal2;
+    final double[] eye2;
+    final double[] lightX;
+    final double[] lightY;
+    final double[] lightZ;
+    final double[] dot;
+    final double[] distance2;
+    final double[] distance;
+    final double[] inverseDistance;
+    final double[] cosine;
+    final double[] highlight;
+    final double[] raised;
+    final double[] attenuation;
+    /** Points with a length Lighting rescales: lit alone, into aloneColour, once the steps are done. */
+    final boolean[] alone;
+    final double[] aloneColour = new double[3];
+
+    int count;
+
+    /** An empty batch that holds up to {@code capacity} points. */
+    public LitPoints(int capacity) {
+        if (capacity < 1) {
+            throw new IllegalArgumentException("capacity " + capacity);
+        }
+        px = new double[capacity];
+        py = new double[capacity];
+        pz = new double[capacity];
+        nx = new double[capacity];
+        ny = new double[capacity];
+        nz = new double[capacity];
+        kdRed = new double[capacity];
+        kdGreen = new double[capacity];
+        kdBlue = new double[capacity];
+        red = new double[capacity];
+        green = new double[capacity];
+        blue = new double[capacity];
+        normalX = new double[capacity];
+        normalY = new double[capacity];
+        normalZ = new double[capacity];
+        eyeX = new double[capacity];
+        eyeY = new double[capacity];
+        eyeZ = new double[capacity];
+        inverseNormal = new double[capacity];
+        inverseEye = new double[capacity];
+        vn = new double[capacity];
+        normal2 = new double[capacity];
+        eye2 = new double[capacity];
+        lightX = new double[capacity];
+        lightY = new double[capacity];
+        lightZ = new double[capacity];
+        dot = new double[capacity];
+        distance2 = new double[capacity];
+        distance = new double[capacity];
+        inverseDistance = new double[capacity];
+        cosine = new double[capacity];
+        highlight = new double[capacity];
+        raised = new double[capacity];
+        attenuation = new double[capacity];
+        alone = new boolean[capacity];
+    }
+
+    public int capacity() {
+        return px.length;
+    }
+
+    /** How many points the batch holds. */
+    public int count() {
+        return count;
+    }
+
+    /** Empties the batch. */
+    public void clear() {
+        count = 0;
+    }
+
+    /**
+     * Adds the point P = (px, py, pz) with normal N and diffuse colour kd.
+     *
+     * @throws IllegalStateException if the batch is full
+     */
+    public void add(double x, double y, double z, double normalX, double normalY, double normalZ,
+            double kr, double kg, double kb) {
+        int i = count;
+        if (i == px.length) {
+            throw new IllegalStateException("the batch holds " + px.length + " points");
+        }
+        px[i] = x;
+        py[i] = y;
+        pz[i] = z;
+        nx[i] = normalX;
+        ny[i] = normalY;
+        nz[i] = normalZ;
+        kdRed[i] = kr;
+        kdGreen[i] = kg;
+        kdBlue[i] = kb;
+        count = i + 1;
+    }
+
+    /** Point i's lit red, once the batch is lit. */
+    public double red(int i) {
+        return red[checked(i)];
+    }
+
+    public double green(int i) {
+        return green[checked(i)];
+    }
+
+    public double blue(int i) {
+        return blue[checked(i)];
+    }
+
+    private int checked(int i) {
+        if (i < 0 || i >= count) {
+            throw new IndexOutOfBoundsException("point " + i + " of " + count);
+        }
+        return i;
+    }
+}

@@ -1,0 +1,164 @@
+package simpview.shading;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.Random;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A batch of points lit together ({@link Lighting#shade(LitPoints)}) gives
+ * every point the very bits that {@link Lighting#shade} gives it alone: on
+ * ordinary scenes, and on batches where any number may be one of the edge
+ * cases Lighting's javadoc lists (zero, tiny and huge normals and distances,
+ * the light at the lit point, the eye at the lit point, infinities, NaN,
+ * huge intensities, zero attenuation, p = 0, integer and fractional p).
+ */
+class BatchLightingTest {
+
+    private static final double[] AWKWARD = {0.0, -0.0, 1.0, -1.0, 1e-300, -1e-300, 1e300, -1e300, 1e-160,
+        1e160, 1e-76, 1e76, Double.MIN_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, Double.NaN,
+        Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 1e154, 1e-154};
+    private static final double[] EXPONENTS = {0, 1, 2, 7.5, 8, 16, 64, 128, 1024, 1025, 1e6, 0.5};
+
+    /** A number of its usual range, or often one of the awkward ones. */
+    private static double number(Random random, double range, double awkwardShare) {
+        if (random.nextDouble() < awkwardShare) {
+            return AWKWARD[random.nextInt(AWKWARD.length)];
+        }
+        return (random.nextDouble() * 2 - 1) * range;
+    }
+
+    @Property(tries = 400)
+    void aBatchLitTogetherEqualsEachPointLitAloneBitForBit(@ForAll long seed) {
+        Random random = new Random(seed);
+        double awkward = random.nextInt(3) * 0.1; // none, some, many
+        Lights lights = new Lights();
+        int lightCount = random.nextInt(4);
+        for (int i = 0; i < lightCount; i++) {
+            lights.add(number(random, 50, awkward), number(random, 50, awkward), number(random, 50, awkward),
+                    Math.abs(number(random, 2, awkward)), Math.abs(number(random, 2, awkward)),
+                    Math.abs(number(random, 2, awkward)), random.nextBoolean() ? 1 : Math.abs(number(random, 2, awkward)),
+                    random.nextBoolean() ? 0 : Math.abs(number(random, 0.1, awkward)));
+        }
+        Lighting lighting = new Lighting(lights);
+        double p = random.nextBoolean() ? EXPONENTS[random.nextInt(EXPONENTS.length)] : random.nextDouble() * 200;
+        lighting.prepare(random.nextDouble() * 0.3, random.nextDouble() * 0.3, random.nextDouble() * 0.3,
+                random.nextDouble(), p, lightCount, random.nextBoolean());
+        LitPoints points = new LitPoints(1 + random.nextInt(80));
+        int count = 1 + random.nextInt(points.capacity());
+        for (int i = 0; i < count; i++) {
+            // Near a light now and then, so that P - light is tiny or zero.
+            boolean atLight = lightCount > 0 && random.nextInt(10) == 0;
+            double px = atLight ? lights.x(0) + number(random, 1e-80, awkward) : number(random, 40, awkward);
+            double py = atLight ? lights.y(0) : number(random, 40, awkward);
+            double pz = atLight ? lights.z(0) : -Math.abs(number(random, 100, awkward));
+            points.add(px, py, pz, number(random, 1, awkward), number(random, 1, awkward),
+                    number(random, 1, awkward), random.nextDouble(), random.nextDouble(), random.nextDouble());
+        }
+        assertEachPointAsAlone(lighting, points);
+    }
+
+    @Test
+    void theEdgeCasesOfLightingsJavadocInOneBatchAmongOrdinaryPoints() {
+        Lights lights = new Lights();
+        lights.add(0, 0, 0, 1, 1, 1, 1, 0);
+        lights.add(3, 4, -5, 1e300, 1e300, 1e300, 0, 0); // huge intensity, zero attenuation
+        lights.add(1e300, 1e300, -1e300, 0.5, 0.5, 0.5, 1, 0.01); // far away
+        for (double p : EXPONENTS) {
+            for (boolean perspective : new boolean[] {true, false}) {
+                Lighting lighting = new Lighting(lights);
+                lighting.prepare(0.1, 0.2, 0.3, 0.5, p, 3, perspective);
+                LitPoints points = new LitPoints(32);
+                points.add(1, 2, -10, 0, 0, 1, 0.5, 0.5, 0.5); // ordinary
+                points.add(1, 2, -10, 0, 0, 0, 0.5, 0.5, 0.5); // zero normal
+                points.add(1, 2, -10, 0, 0, 1e-300, 0.5, 0.5, 0.5); // tiny normal
+                points.add(1, 2, -10, 0, 1e300, 1e300, 0.5, 0.5, 0.5); // huge normal
+                points.add(3, 4, -5, 0, 0, 1, 0.5, 0.5, 0.5); // at the second light
+                points.add(3 + 1e-200, 4, -5, -1, 0, 1, 0.5, 0.5, 0.5); // a hair from it
+                points.add(0, 0, 0, 0, 0, 1, 0.5, 0.5, 0.5); // at the eye and the first light
+                points.add(1e-200, 0, -1e-200, 0, 0, 1, 0.5, 0.5, 0.5); // a hair from the eye
+                points.add(Double.NaN, 2, -10, 0, 0, 1, 0.5, 0.5, 0.5);
+                points.add(1, Double.POSITIVE_INFINITY, -10, 0, 0, 1, 0.5, 0.5, 0.5);
+                points.add(1, 2, -10, Double.NaN, 0, 1, 0.5, 0.5, 0.5);
+                points.add(1, 2, -10, Double.NEGATIVE_INFINITY, 0, 1, 0.5, 0.5, 0.5);
+                points.add(1, 2, -10, 0, 0, 1, Double.POSITIVE_INFINITY, 0.5, Double.NaN);
+                points.add(-2, 1, -3, 0.3, 0.4, 0.9, 0.9, 0.1, 0.4); // ordinary, after them all
+                assertEachPointAsAlone(lighting, points);
+            }
+        }
+    }
+
+    /**
+     * The same once the JIT has compiled the batch's loops to packed
+     * operations: a full batch of ordinary points with a few awkward ones
+     * among them, lit many thousands of times, checked all along.
+     */
+    @Test
+    void compiledHotTheBatchStillEqualsEachPointAlone() {
+        Random random = new Random(42);
+        Lights lights = new Lights();
+        lights.add(0, 0, 0, 1, 1, 1, 1, 0);
+        lights.add(-8, 6, -4, 0.8, 0.6, 0.5, 1, 0.01);
+        Lighting lighting = new Lighting(lights);
+        lighting.prepare(0.2, 0.2, 0.2, 0.5, 16, 2, true);
+        LitPoints points = new LitPoints(64);
+        for (int i = 0; i < 64; i++) {
+            points.add(number(random, 10, 0.05), number(random, 10, 0.05), -10 - random.nextDouble() * 4,
+                    number(random, 0.3, 0.05), number(random, 0.3, 0.05), 1, 0.8, 0.6, 0.4);
+        }
+        for (int round = 0; round < 20_000; round++) {
+            if (round % 1000 == 0) {
+                assertEachPointAsAlone(lighting, points);
+            } else {
+                lighting.shade(points);
+            }
+        }
+        assertEachPointAsAlone(lighting, points);
+    }
+
+    @Test
+    void anEmptyBatchAndABatchWithNoLightAreLitToo() {
+        Lights lights = new Lights();
+        Lighting lighting = new Lighting(lights);
+        lighting.prepare(0.25, 0.5, 1, 0.3, 8, 0, true);
+        LitPoints points = new LitPoints(4);
+        lighting.shade(points);
+        assertEquals(0, points.count());
+        points.add(1, 2, -3, 0, 0, 1, 0.5, 2, 0.7);
+        assertEachPointAsAlone(lighting, points);
+        assertEquals(0.125, points.red(0));
+        assertEquals(1, points.green(0)); // 2 * 0.5, clamped
+    }
+
+    @Test
+    void aBatchHoldsItsCapacityAndNoMore() {
+        LitPoints points = new LitPoints(2);
+        points.add(0, 0, -1, 0, 0, 1, 1, 1, 1);
+        points.add(0, 0, -1, 0, 0, 1, 1, 1, 1);
+        assertEquals(2, points.count());
+        assertThrows(IllegalStateException.class, () -> points.add(0, 0, -1, 0, 0, 1, 1, 1, 1));
+        assertThrows(IndexOutOfBoundsException.class, () -> points.red(2));
+        points.clear();
+        assertEquals(0, points.count());
+        assertThrows(IndexOutOfBoundsException.class, () -> points.blue(0));
+        assertThrows(IllegalArgumentException.class, () -> new LitPoints(0));
+    }
+
+    /** Lights the batch, then checks each point's colour against the point lit alone, to the bit. */
+    private static void assertEachPointAsAlone(Lighting lighting, LitPoints points) {
+        lighting.shade(points);
+        double[] alone = new double[3];
+        for (int i = 0; i < points.count(); i++) {
+            lighting.shade(points.px[i], points.py[i], points.pz[i], points.nx[i], points.ny[i], points.nz[i],
+                    points.kdRed[i], points.kdGreen[i], points.kdBlue[i], alone, 0);
+            double[] together = {points.red(i), points.green(i), points.blue(i)};
+            for (int c = 0; c < 3; c++) {
+                assertEquals(Double.doubleToRawLongBits(alone[c]), Double.doubleToRawLongBits(together[c]),
+                        "point " + i + " channel " + c + ": alone " + alone[c] + ", in the batch " + together[c]);
+            }
+        }
+    }
+}

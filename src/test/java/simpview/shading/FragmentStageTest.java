@@ -1,0 +1,129 @@
+package simpview.shading;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.util.Random;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+import org.junit.jupiter.api.Test;
+import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
+import simpview.surface.Drawable;
+import simpview.surface.ImageDrawable;
+import simpview.surface.Provenance;
+import simpview.surface.ProvenanceDrawable;
+import simpview.surface.ZBuffer;
+
+/**
+ * A span through the fragment stage draws, to the bit, what its pixels drawn
+ * one by one ({@link FragmentStage#pixel}) draw: colours, depths kept and
+ * the provenance of each pixel, for phong-lit and coloured primitives, with
+ * and without fog, spans longer than a batch, spans over the edges, and
+ * spans hidden in part by earlier ones.
+ */
+class FragmentStageTest {
+
+    private static final int SIZE = 150;
+    private static final int CHANNELS = FragmentStage.PHONG_CHANNELS;
+
+    /** One stage, its surface, and what it keeps. */
+    private record Stage(FragmentStage fragments, BufferedImage image, ZBuffer zbuffer, Provenance provenance) {
+        static Stage make(LitState state, boolean phong) {
+            BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+            ZBuffer zbuffer = new ZBuffer(SIZE, SIZE);
+            zbuffer.reset(-200);
+            Provenance provenance = new Provenance(SIZE, SIZE);
+            Drawable panel = new ProvenanceDrawable(provenance, new ImageDrawable(image));
+            FragmentStage fragments = new FragmentStage(zbuffer, panel);
+            if (phong) {
+                fragments.phong(state, state.fog());
+            } else {
+                fragments.colours(state.fog());
+            }
+            return new Stage(fragments, image, zbuffer, provenance);
+        }
+    }
+
+    private static LitState scene(Random random) {
+        LitState state = new LitState();
+        state.setCamera(Camera.perspective(-1, -1, 1, 1, -0.1, -200), Matrix4.identity());
+        state.setAmbient(0.2, 0.1, 0.3);
+        state.setSurface(0.8, 0.6, 0.4, random.nextDouble(), random.nextBoolean() ? 16 : 7.5);
+        int lights = random.nextInt(4);
+        for (int i = 0; i < lights; i++) {
+            state.addLight(random.nextDouble() * 20 - 10, random.nextDouble() * 20 - 10, random.nextDouble() * 10 - 12,
+                    random.nextDouble(), random.nextDouble(), random.nextDouble(), 1, random.nextBoolean() ? 0 : 0.02);
+        }
+        if (random.nextBoolean()) {
+            state.setFog(new Fog(-8, -16, 0.1, 0.2, 0.3));
+        }
+        return state;
+    }
+
+    @Property(tries = 150)
+    void aSpanDrawsWhatItsPixelsDrawOneByOne(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = scene(random);
+        boolean phong = random.nextInt(3) > 0;
+        Stage bySpan = Stage.make(state, phong);
+        Stage byPixel = Stage.make(state, phong);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] v = new double[CHANNELS];
+        int spans = 1 + random.nextInt(40);
+        for (int s = 0; s < spans; s++) {
+            int y = random.nextInt(SIZE + 4) - 2;
+            int from = random.nextInt(SIZE + 40) - 30;
+            int to = from + random.nextInt(SIZE + 10);
+            double q0 = 1 / (4 + random.nextDouble() * 12);
+            double dq = (random.nextDouble() - 0.5) * 1e-4;
+            for (int c = 0; c < CHANNELS; c++) {
+                double value = c == FragmentStage.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
+                v0[c] = value * q0;
+                dv[c] = (random.nextDouble() - 0.5) * 1e-3;
+            }
+            bySpan.provenance().begin(s);
+            byPixel.provenance().begin(s);
+            bySpan.fragments().span(y, from, to, q0, dq, v0, dv);
+            for (int x = from; x < to; x++) {
+                int k = x - from;
+                for (int c = 0; c < CHANNELS; c++) {
+                    v[c] = v0[c] + k * dv[c];
+                }
+                byPixel.fragments().pixel(x, y, q0 + k * dq, v);
+            }
+        }
+        assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
+        assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
+        assertArrayEquals(byPixel.provenance().copyOwners(), bySpan.provenance().copyOwners(), "the provenance");
+    }
+
+    @Test
+    void aFullRowIsDrawnAndASecondFartherOneLeavesItAlone() {
+        LitState state = scene(new Random(5));
+        Stage stage = Stage.make(state, true);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        v0[FragmentStage.Z] = -5;
+        v0[FragmentStage.NZ] = 1;
+        v0[FragmentStage.R] = 1;
+        stage.provenance().begin(1);
+        stage.fragments().span(10, -5, SIZE + 5, 1, 0, v0, dv);
+        v0[FragmentStage.Z] = -6;
+        stage.provenance().begin(2);
+        stage.fragments().span(10, 0, SIZE, 1, 0, v0, dv);
+        for (int x = 0; x < SIZE; x++) {
+            assertEquals(-5, stage.zbuffer().depthAt(x, 10));
+            assertEquals(1, stage.provenance().ownerAt(x, 10));
+            assertTrue((stage.image().getRGB(x, 10) & 0xFFFFFF) != 0, "pixel " + x + " is lit");
+        }
+    }
+
+    private static int[] pixels(BufferedImage image) {
+        return ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+    }
+}
