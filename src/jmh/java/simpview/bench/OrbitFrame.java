@@ -32,10 +32,12 @@ import simpview.surface.Provenance;
 /**
  * One frame of a turning view, as the window's render thread makes it while
  * a right-drag turns a scene: clear, draw the whole scene turned (yaw 30°,
- * pitch 15°) with the inspector's record on (the provenance decorator and a
- * fresh {@link PrimitiveLog}), then copy out the image, the depths and the
- * owners, as the window does for the EDT. @Param scene: "page7" (depth-cued,
- * turned about the view volume's centre) or "a4/page-d" (lit: the camera
+ * pitch 15°), then copy out the image and the depths for the EDT. The
+ * window draws a drag's frames without the inspector's record, and the frame
+ * after the drag with it: @Param record=true adds the provenance decorator, a
+ * fresh {@link PrimitiveLog} and the copy of the owners. @Param scene:
+ * "page7" (depth-cued, turned about the view volume's centre) or
+ * "a4/page-d" (lit: the camera
  * moves about the centre of what the unturned view showed, found in the
  * set-up by one traced drawing). Models are parsed once, in the set-up.
  * Not in it: the window's look through the scene's files for lit commands
@@ -60,6 +62,9 @@ public class OrbitFrame {
     @Param({"true"})
     public boolean copy;
 
+    @Param({"false"})
+    public boolean record;
+
     private static final double YAW = 30;
     private static final double PITCH = 15;
 
@@ -69,6 +74,7 @@ public class OrbitFrame {
     private final Turned monitor = new Turned();
     private PageContext context;
     private Path litFile;
+    private boolean findingCentre;
 
     /** What the window's render job tells the scene: the turn, and a fresh trace per frame. */
     private static final class Turned implements SceneMonitor {
@@ -100,7 +106,7 @@ public class OrbitFrame {
     public void setUp() throws SceneException {
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.defaultSimpDir(), monitor);
-        renderer.canvas().recordProvenance(provenance);
+        renderer.canvas().recordProvenance(record ? provenance : null);
         double[] centre = {0, 0, -100};
         if (!scene.equals("page7")) {
             String[] parts = scene.split("/");
@@ -108,7 +114,9 @@ public class OrbitFrame {
             if (!Files.isRegularFile(litFile)) {
                 throw new IllegalStateException("no " + litFile + ": the course's files belong beside the project");
             }
+            findingCentre = true;
             frame(); // unturned: parses the models and finds what the view shows
+            findingCentre = false;
             if (monitor.centre == null) {
                 throw new IllegalStateException(scene + " showed nothing");
             }
@@ -123,7 +131,7 @@ public class OrbitFrame {
 
     @Benchmark
     public Frame frame() throws SceneException {
-        monitor.log = new PrimitiveLog(provenance, -1);
+        monitor.log = record || findingCentre ? new PrimitiveLog(provenance, -1) : null;
         PageCanvas canvas = renderer.canvas();
         if (litFile == null) {
             renderer.render(7, context);
@@ -134,6 +142,6 @@ public class OrbitFrame {
         if (!copy) {
             return null;
         }
-        return new Frame(canvas.snapshot(), canvas.zbuffer().copyDepths(), provenance.copyOwners());
+        return new Frame(canvas.snapshot(), canvas.zbuffer().copyDepths(), record ? provenance.copyOwners() : null);
     }
 }

@@ -27,6 +27,10 @@ record DrawSettings(boolean ownColours, boolean record, int stepLimit, Matrix4 v
         return new DrawSettings(ownColours, record, limit, viewTurn);
     }
 
+    DrawSettings withRecord(boolean traced) {
+        return new DrawSettings(ownColours, traced, stepLimit, viewTurn);
+    }
+
     DrawSettings withViewTurn(Matrix4 turn) {
         return new DrawSettings(ownColours, record, stepLimit, turn);
     }

@@ -134,12 +134,19 @@ final class SimpviewWindow {
 
         @Override
         public void orbit(int dx, int dy) {
-            turn(() -> orbit.drag(dx, dy));
+            turn(() -> orbit.drag(dx, dy), false);
+        }
+
+        @Override
+        public void orbitEnded() {
+            if (!settings.record()) {
+                turn(() -> { }, true);
+            }
         }
 
         @Override
         public void nearer(int notches) {
-            turn(() -> orbit.wheel(notches));
+            turn(() -> orbit.wheel(notches), true);
         }
 
         @Override
@@ -274,8 +281,11 @@ final class SimpviewWindow {
      * about the centre of what the unturned view showed. While a turned
      * frame is being drawn, further moves only change what the next frame
      * shows: it is drawn when this one is done, so frames never queue up.
+     * The frames of a drag are drawn without the inspector's record (who
+     * drew each pixel), which costs a fifth of a frame; the frame drawn when
+     * the drag ends has it again ({@code record}).
      */
-    private void turn(Runnable move) {
+    private void turn(Runnable move, boolean record) {
         if (!isScene(requested())) {
             status.say("Turning works on scenes: pages 4–8 and opened scenes.");
             return;
@@ -284,7 +294,7 @@ final class SimpviewWindow {
             orbit.about(shown.facts().shownCentre());
         }
         move.run();
-        settings = settings.withViewTurn(orbit.matrix());
+        settings = settings.withViewTurn(orbit.matrix()).withRecord(record);
         if (pending != null && pending.settings().viewTurn() != null) {
             turnWaiting = true;
         } else {
@@ -294,8 +304,8 @@ final class SimpviewWindow {
 
     private void unturn() {
         orbit.reset();
-        if (settings.viewTurn() != null) {
-            settings = settings.withViewTurn(null);
+        if (settings.viewTurn() != null || !settings.record()) {
+            settings = settings.withViewTurn(null).withRecord(true);
             reload();
         }
     }
@@ -303,7 +313,7 @@ final class SimpviewWindow {
     /** Leaving a view leaves its stepping and its turn. */
     private void forgetViewState() {
         orbit.reset();
-        settings = settings.withStepLimit(-1).withViewTurn(null);
+        settings = settings.withStepLimit(-1).withViewTurn(null).withRecord(true);
         pinnedX = pinnedY = -1;
         pageView.pin(-1, -1);
     }

@@ -249,8 +249,8 @@ class InstrumentsWindowTest {
         }
         robot.mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
         robot.mouseMove(1, 1);
-        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) > 1000,
-                "a turned picture");
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) > 1000
+                && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
         assertEquals(new View.OfPage(4), driver.onEdt(() -> window().shown()).view(), "a right-drag does not step");
         assertTrue(driver.screenDiffersFrom(four.image()) > 1000, "the turned page on screen");
         driver.press(KeyEvent.VK_O);
@@ -335,8 +335,8 @@ class InstrumentsWindowTest {
             driver.robot().mouseMove(centre.x + 12 * k, centre.y + 3 * k);
         }
         driver.robot().mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
-        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) > 1000,
-                "a turned picture");
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) > 1000
+                && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
         assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("turned "));
         driver.press(KeyEvent.VK_O);
         driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,

@@ -26,6 +26,9 @@ public final class PointerGestures extends MouseAdapter {
         /** A turning drag moved by (dx, dy) screen pixels. */
         void orbit(int dx, int dy);
 
+        /** A turning drag that moved ended: the button was let go. */
+        void orbitEnded();
+
         /** The wheel turned with Ctrl or Alt held: up (negative) nearer, down farther. */
         void nearer(int notches);
 
@@ -91,6 +94,9 @@ public final class PointerGestures extends MouseAdapter {
         e.getComponent().setCursor(Cursor.getDefaultCursor());
         if (!dragging && !turning && SwingUtilities.isLeftMouseButton(e)) {
             actions.click();
+        }
+        if (dragging && turning) {
+            actions.orbitEnded();
         }
         dragging = false;
         turning = false;
