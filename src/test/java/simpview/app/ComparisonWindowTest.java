@@ -13,10 +13,7 @@ import java.util.List;
 import java.util.Optional;
 import javax.imageio.ImageIO;
 import javax.swing.TransferHandler;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import simpview.compare.Comparison;
 import simpview.compare.HeatMap;
 import simpview.compare.Percent;
@@ -25,26 +22,9 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 
 /** Compare mode in the real window under Xvfb: drop a picture, flip with B, heat map with H, stop with Backspace. */
-class ComparisonWindowTest {
+class ComparisonWindowTest extends WindowTestCase {
 
     private static final long SEED = 361;
-
-    @TempDir
-    Path dir;
-
-    private WindowDriver driver;
-
-    @BeforeEach
-    void needsADisplay() {
-        Displays.assumeUsable();
-    }
-
-    @AfterEach
-    void closeWindow() throws Exception {
-        if (driver != null) {
-            driver.close();
-        }
-    }
 
     /** Page 1 with a cyan square on it, as a window capture: 872x782, panel at (51, 81). */
     private Path theirPicture(BufferedImage page) throws Exception {

@@ -15,35 +15,15 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import simpview.app.view.PixelGrid;
 import simpview.pages.ZBufferPage;
 import simpview.surface.PageCanvas;
 
 /** The window's instruments under Xvfb, driven with java.awt.Robot: zoom, grid, inspector, depth view, reload. */
-class InstrumentsWindowTest {
+class InstrumentsWindowTest extends WindowTestCase {
 
     private static final long SEED = 361;
-
-    @TempDir
-    Path dir;
-
-    private WindowDriver driver;
-
-    @BeforeEach
-    void needsADisplay() {
-        Displays.assumeUsable();
-    }
-
-    @AfterEach
-    void closeWindow() throws Exception {
-        if (driver != null) {
-            driver.close();
-        }
-    }
 
     private WindowDriver open() throws Exception {
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);

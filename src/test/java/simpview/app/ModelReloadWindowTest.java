@@ -10,13 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** Under Xvfb: saving the .obj model of an open lit scene redraws it, as saving its .simp file does. */
-class ModelReloadWindowTest {
+class ModelReloadWindowTest extends WindowTestCase {
 
     /** A grey-red triangle over the middle of the page, on black. */
     private static final String LIT_SCENE = "ambient 0.5 0.25 0.25\n{\n\tcamera -1 -1 1 1 -1 -100\n}\nobj \"tri\"\n";
@@ -25,23 +22,6 @@ class ModelReloadWindowTest {
     private static final String LOW = "v -9 -9 -10\nv 9 -9 -10\nv 0 -7 -9\nf 1 2 3\n";
     private static final int TRIANGLE = 0x804040;
     private static final int BLACK = 0x000000;
-
-    @TempDir
-    Path dir;
-
-    private WindowDriver driver;
-
-    @BeforeEach
-    void needsADisplay() {
-        Displays.assumeUsable();
-    }
-
-    @AfterEach
-    void closeWindow() throws Exception {
-        if (driver != null) {
-            driver.close();
-        }
-    }
 
     /** Opens the window on page 1, then the scene, as a person would with File > Open. */
     private RenderedView open(Path scene) throws Exception {
@@ -71,7 +51,6 @@ class ModelReloadWindowTest {
         long saved = System.nanoTime();
         DriverWait.until(() -> middleOnScreen() == BLACK, "the middle of the screen to turn black after the save");
         long millis = (System.nanoTime() - saved) / 1_000_000;
-        System.out.println("ModelReloadWindowTest: the screen changed " + millis + " ms after the .obj was saved");
         assertTrue(millis < 2000, "redrawn " + millis + " ms after the save");
         driver.awaitEdt(() -> !driver.window().busy(), "the redraw to end");
         RenderedView after = driver.onEdt(() -> driver.window().shown());
@@ -107,8 +86,6 @@ class ModelReloadWindowTest {
         long saved = System.nanoTime();
         DriverWait.until(() -> middleOnScreen() == BLACK, "the middle of the screen to turn black after the save");
         long millis = (System.nanoTime() - saved) / 1_000_000;
-        System.out.println("ModelReloadWindowTest: a save keeping size, inode and time was on screen " + millis
-                + " ms later");
         assertTrue(millis < 2000, "redrawn " + millis + " ms after the save");
         driver.awaitEdt(() -> !driver.window().busy(), "the redraw to end");
         assertEquals(TRIANGLE, driver.onEdt(() -> driver.window().shown()).image().getRGB(375, 650) & 0xFFFFFF);

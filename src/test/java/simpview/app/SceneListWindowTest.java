@@ -7,31 +7,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.SceneList;
 
 /** Scenes named at start as the window's first pages, with the eight pages after them. */
-class SceneListWindowTest {
-
-    @TempDir
-    Path dir;
-
-    private WindowDriver driver;
-
-    @BeforeEach
-    void needsADisplay() {
-        Displays.assumeUsable();
-    }
-
-    @AfterEach
-    void closeWindow() throws Exception {
-        if (driver != null) {
-            driver.close();
-        }
-    }
+class SceneListWindowTest extends WindowTestCase {
 
     @Test
     void aFolderOfScenesIsSteppedThroughThenThePages() throws Exception {

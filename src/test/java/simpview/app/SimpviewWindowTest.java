@@ -10,10 +10,7 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Pages;
@@ -21,26 +18,9 @@ import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
 /** The real window under a real X server (Xvfb), driven with java.awt.Robot. */
-class SimpviewWindowTest {
+class SimpviewWindowTest extends WindowTestCase {
 
     private static final long SEED = 361;
-
-    @TempDir
-    Path dir;
-
-    private WindowDriver driver;
-
-    @BeforeEach
-    void needsADisplay() {
-        Displays.assumeUsable();
-    }
-
-    @AfterEach
-    void closeWindow() throws Exception {
-        if (driver != null) {
-            driver.close();
-        }
-    }
 
     private WindowDriver open(Path simpDir, SceneDrawer drawer) throws Exception {
         driver = WindowDriver.open(new WindowOptions(SEED, simpDir, Optional.empty()), drawer);
