@@ -10,7 +10,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -45,12 +47,18 @@ class InstalledLauncherTest {
     }
 
     private Run run(String... args) throws IOException, InterruptedException {
+        return run(environment -> { }, args);
+    }
+
+    /** The start script with {@code args}, its environment changed first by {@code change}. */
+    private Run run(Consumer<Map<String, String>> change, String... args) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(launcher.toString()));
         command.addAll(List.of(args));
         Path out = dir.resolve("stdout.txt");
         Path err = dir.resolve("stderr.txt");
-        Process process = new ProcessBuilder(command).directory(dir.toFile())
-                .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(command).directory(dir.toFile());
+        change.accept(builder.environment());
+        Process process = builder.redirectOutput(out.toFile()).redirectError(err.toFile()).start();
         if (!process.waitFor(LIMIT_SECONDS, TimeUnit.SECONDS)) {
             process.destroyForcibly();
             throw new AssertionError(String.join(" ", command) + " did not end within " + LIMIT_SECONDS + " s");
@@ -112,17 +120,16 @@ class InstalledLauncherTest {
 
     /** What the start script hands the java of {@code javaHome}, with {@code pathFirst} (or nothing) before PATH. */
     private List<String> arguments(Path javaHome, Path pathFirst) throws IOException, InterruptedException {
-        ProcessBuilder builder = new ProcessBuilder(launcher.toString(), "--version").directory(dir.toFile());
-        builder.environment().put("JAVA_HOME", javaHome.toString());
-        builder.environment().remove("JAVA_OPTS");
-        builder.environment().remove("SIMPVIEW_OPTS");
-        if (pathFirst != null) {
-            builder.environment().put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
-        }
-        Path out = dir.resolve("arguments.txt");
-        Process process = builder.redirectErrorStream(true).redirectOutput(out.toFile()).start();
-        assertTrue(process.waitFor(LIMIT_SECONDS, TimeUnit.SECONDS), "the start script ended");
-        return Files.readAllLines(out);
+        Run run = run(environment -> {
+            environment.put("JAVA_HOME", javaHome.toString());
+            environment.remove("JAVA_OPTS");
+            environment.remove("SIMPVIEW_OPTS");
+            if (pathFirst != null) {
+                environment.put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
+            }
+        }, "--version");
+        assertEquals("", run.err(), "the start script printed on stderr");
+        return run.out().lines().toList();
     }
 
     @Test
