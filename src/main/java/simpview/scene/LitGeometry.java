@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentSink;
 import simpview.raster.LitLineRasterizer;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.scene.obj.ObjFace;
@@ -55,6 +56,8 @@ public final class LitGeometry implements GeometryStage, ObjSink {
 
     private final LitState state;
     private final FragmentStage fragments;
+    /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
+    private FragmentSink raster;
     private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
     private final LitLineRasterizer lines = new LitLineRasterizer();
     private final Clipper clipper = new Clipper(CAMERA_STRIDE);
@@ -88,6 +91,16 @@ public final class LitGeometry implements GeometryStage, ObjSink {
     public LitGeometry(LitState state, FragmentStage fragments) {
         this.state = state;
         this.fragments = fragments;
+        this.raster = fragments;
+    }
+
+    /**
+     * From now on the rasterizers hand their fragments to {@code sink}, which
+     * passes each on to this stage's fragment stage (the inspector's one-pixel
+     * watch); null: straight to the fragment stage again, the default.
+     */
+    public void fragmentsThrough(FragmentSink sink) {
+        raster = sink == null ? fragments : sink;
     }
 
     @Override
@@ -100,14 +113,17 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         }
         if (state.camera().culls(cam, CAMERA_STRIDE, 2)) {
             culled++;
+            skipped(Painter.LINE, true, 2);
             return;
         }
-        if (clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+        if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+            skipped(Painter.LINE, false, 2);
+        } else {
             fragments.colours(state.fog());
             int n = project(clipper.vertices(), 2, FragmentStage.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentStage.COLOUR_CHANNELS, 2))) {
                 lines.draw(screen, 0, 3 + FragmentStage.COLOUR_CHANNELS, FragmentStage.COLOUR_CHANNELS,
-                        fragments.width(), fragments.height(), fragments);
+                        fragments.width(), fragments.height(), raster);
             }
         }
     }
@@ -160,12 +176,14 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         Camera camera = state.camera();
         if (camera.culls(cam, CAMERA_STRIDE, n)) {
             culled++;
+            skipped(wire ? Painter.WIRE : Painter.FILLED, true, n);
             return;
         }
         faceNormals(n);
         int channels = wire ? FragmentStage.COLOUR_CHANNELS : shade(n);
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
+            skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
         int m = project(clipper.vertices(), kept, channels);
@@ -178,13 +196,13 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         int width = fragments.width();
         int height = fragments.height();
         if (!wire) {
-            fill.fill(screen, kept, channels, width, height, fragments);
+            fill.fill(screen, kept, channels, width, height, raster);
             return;
         }
         fragments.colours(state.fog());
         int stride = 3 + channels;
         for (int k = 0; k < kept; k++) {
-            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, fragments);
+            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
     }
 
@@ -418,6 +436,13 @@ public final class LitGeometry implements GeometryStage, ObjSink {
         int index = traced++;
         trace.read(index, sourceFile, sourceLine, kind, screen, 0, 3 + channels, n);
         return trace.drawing(index);
+    }
+
+    /** Tells the trace, if any, of a primitive culled or clipped away, with its n camera-space vertices. */
+    private void skipped(int kind, boolean wasCulled, int n) {
+        if (trace != null) {
+            trace.skipped(sourceFile, sourceLine, kind, wasCulled, cam, 0, CAMERA_STRIDE, n);
+        }
     }
 
     @Override

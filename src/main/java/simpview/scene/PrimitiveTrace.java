@@ -30,4 +30,17 @@ public interface PrimitiveTrace {
 
     /** Primitive {@code index} is about to be drawn; false leaves it out (the picture stops before it). */
     boolean drawing(int index);
+
+    /**
+     * A primitive that reaches no rasterizer: culled whole ({@code culled}),
+     * or clipped away entirely. It takes no number. Its vertices are given in
+     * camera space (x, y, z first in each; world space for a depth-cued
+     * scene), before clipping. The default ignores it.
+     *
+     * @param file the file holding its command, or null when the stage does not know it (depth-cued scenes)
+     * @param line its 1-based line, or 0 with a null file
+     */
+    default void skipped(Path file, int line, int kind, boolean culled, double[] p, int at, int stride,
+            int vertices) {
+    }
 }

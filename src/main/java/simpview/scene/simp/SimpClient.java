@@ -273,6 +273,7 @@ public final class SimpClient {
             return;
         }
         painter.follow(follower);
+        cued.follow(follower);
         cued.sendTo(follower == null ? painter : new Traced(painter));
     }
 
@@ -318,6 +319,32 @@ public final class SimpClient {
 
     FileStack files() {
         return files;
+    }
+
+    /**
+     * Where the command being carried out stands, with the {@code file}
+     * commands that led to it: the top file's line first, the innermost
+     * last (for an .obj face, the last is the {@code obj} command). For the
+     * inspector, which asks while a primitive is being drawn.
+     */
+    public List<SourcePlace> includeChain() {
+        return files.chain();
+    }
+
+    /** A lit scene's state (camera, lights, surface, fog, shading as they are now); null for a depth-cued one. */
+    public LitState litState() {
+        return state;
+    }
+
+    /**
+     * A lit scene's rasterizers hand their fragments to {@code sink}, which
+     * passes them on to the scene's fragment stage (the inspector's one-pixel
+     * watch); null: straight to the stage. Depth-cued scenes ignore it.
+     */
+    public void fragmentsThrough(simpview.raster.FragmentSink sink) {
+        if (lit != null) {
+            lit.fragmentsThrough(sink);
+        }
     }
 
     public Matrix4 ctm() {
