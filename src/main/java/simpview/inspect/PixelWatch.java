@@ -1,0 +1,206 @@
+package simpview.inspect;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.Supplier;
+import simpview.geometry.Camera;
+import simpview.scene.PrimitiveTrace;
+import simpview.scene.simp.SourcePlace;
+import simpview.surface.ZBuffer;
+
+/**
+ * The one-pixel filter of a replay: follows the scene's primitives as the
+ * window's instruments do (a {@link PrimitiveTrace}), and keeps a history
+ * entry for every write that the probes see arrive at its pixel, with how far
+ * it got. Nothing is kept for any other pixel. One watch per replay.
+ */
+final class PixelWatch implements PrimitiveTrace {
+
+    private final int x;
+    private final int y;
+    private final List<HistoryEntry> entries = new ArrayList<>();
+    private final Supplier<List<SourcePlace>> chains;
+    private final Supplier<Camera> camera;
+    private final ZBuffer zbuffer;
+    /** Explains and colours the writes: the depth cue's or the lighting's. */
+    private final Explainer explainer;
+
+    // The primitive being drawn: its number, command, kind and projected outline.
+    private int primitive = HistoryEntry.NO_NUMBER;
+    private Path file;
+    private int line;
+    private int kind;
+    private double[] outline = new double[64];
+    private int stride;
+    private int vertices;
+    private List<SourcePlace> chain;
+    private int lastWritten = HistoryEntry.NO_NUMBER;
+    /** The write on its way down the chain now. */
+    private HistoryEntry current;
+    private double depthBefore;
+
+    /** What a watch asks of the scene's kind of drawing. */
+    interface Explainer {
+        /**
+         * The colour of a write at depth z whose fragment channels (lit) or
+         * drawn levels (depth-cued, or null) are given, explained into terms
+         * (null: none wanted); 0xAARRGGBB.
+         */
+        int colour(PixelWatch watch, double z, double[] values, int drawnArgb, Terms terms);
+    }
+
+    PixelWatch(int x, int y, Supplier<List<SourcePlace>> chains, Supplier<Camera> camera, ZBuffer zbuffer,
+            Explainer explainer) {
+        this.x = x;
+        this.y = y;
+        this.chains = chains;
+        this.camera = camera;
+        this.zbuffer = zbuffer;
+        this.explainer = explainer;
+    }
+
+    int x() {
+        return x;
+    }
+
+    int y() {
+        return y;
+    }
+
+    List<HistoryEntry> entries() {
+        return entries;
+    }
+
+    // ---- the trace
+
+    @Override
+    public void read(int index, Path commandFile, int commandLine, int primitiveKind, double[] p, int at,
+            int numbers, int count) {
+        primitive = index;
+        file = commandFile;
+        line = commandLine;
+        kind = primitiveKind;
+        stride = numbers;
+        vertices = count;
+        if (outline.length < numbers * count) {
+            outline = new double[2 * numbers * count];
+        }
+        System.arraycopy(p, at, outline, 0, numbers * count);
+        chain = null;
+    }
+
+    @Override
+    public boolean drawing(int index) {
+        primitive = index;
+        return true;
+    }
+
+    @Override
+    public void skipped(Path commandFile, int commandLine, int primitiveKind, boolean culled, double[] p, int at,
+            int numbers, int count) {
+        if (Coverage.covers(camera.get(), primitiveKind, p, at, numbers, count, x, y)) {
+            HistoryEntry e = new HistoryEntry(HistoryEntry.NO_NUMBER, chainOf(commandFile, commandLine),
+                    primitiveKind, culled ? Outcome.CULLED : Outcome.CLIPPED);
+            entries.add(e);
+        }
+    }
+
+    /** The include chain of the command at hand, ending at (file, line) when that is not the innermost simp line. */
+    private List<SourcePlace> chainOf(Path commandFile, int commandLine) {
+        List<SourcePlace> c = new ArrayList<>(chains.get());
+        if (commandFile != null && (c.isEmpty() || !c.get(c.size() - 1).file().equals(commandFile))) {
+            c.add(new SourcePlace(commandFile, commandLine));
+        }
+        return List.copyOf(c);
+    }
+
+    private List<SourcePlace> chain() {
+        if (chain == null) {
+            chain = chainOf(file, line);
+        }
+        return chain;
+    }
+
+    // ---- depth-cued writes, from the probes of the drawable chain
+
+    /** A write at the pixel reached a probe: levels are the drawn colour's levels when it came in a span. */
+    void reached(WriteProbe.Point point, double z, int argb, double[] levels) {
+        switch (point) {
+            case ATTEMPTED -> {
+                current = new HistoryEntry(primitive, chain(), kind, Outcome.SCISSORED);
+                current.z = z;
+                current.argb = explainer.colour(this, z, null, argb, null);
+                entries.add(current);
+            }
+            case IN_RANGE -> {
+                current.outcome = Outcome.DEPTH_FAILED;
+                current.storedDepth = zbuffer.depthAt(x, y);
+                current.storedOwner = lastWritten;
+            }
+            case PASSED_DEPTH -> {
+                current.outcome = Outcome.WRITTEN;
+                current.storedDepth = Double.NaN;
+                current.storedOwner = HistoryEntry.NO_NUMBER;
+                lastWritten = primitive;
+            }
+            case SHOWN -> {
+                Terms terms = new Terms();
+                current.argb = explainer.colour(this, z, levels, argb, terms);
+                current.explanation = terms;
+            }
+            default -> throw new IllegalStateException(String.valueOf(point));
+        }
+    }
+
+    // ---- lit fragments, from the fragment probe
+
+    /** Channels the fragments of the primitive at hand carry. */
+    int channels() {
+        return stride - 3;
+    }
+
+    /** A fragment at the pixel, resolved, before the fragment stage tests it. */
+    void fragment(double[] channels) {
+        double z = channels[0];
+        current = new HistoryEntry(primitive, chain(), kind, Outcome.DEPTH_FAILED);
+        current.z = z;
+        depthBefore = zbuffer.depthAt(x, y);
+        current.storedDepth = depthBefore;
+        current.storedOwner = lastWritten;
+        Terms terms = new Terms();
+        current.argb = explainer.colour(this, z, Arrays.copyOf(channels, channels()), 0, terms);
+        current.explanation = terms;
+        entries.add(current);
+    }
+
+    /** The fragment stage is done with the fragment: it won when the stored depth changed. */
+    void fragmentDone() {
+        if (Double.compare(zbuffer.depthAt(x, y), depthBefore) != 0) {
+            current.outcome = Outcome.WRITTEN;
+            current.storedDepth = Double.NaN;
+            current.storedOwner = HistoryEntry.NO_NUMBER;
+            lastWritten = primitive;
+        }
+    }
+
+    // ---- what the explainers read of the primitive at hand
+
+    int kind() {
+        return kind;
+    }
+
+    /** The projected outline of the primitive at hand: vertices() of stride() numbers (panel x, y, q, then channels times q). */
+    double[] outline() {
+        return outline;
+    }
+
+    int stride() {
+        return stride;
+    }
+
+    int vertices() {
+        return vertices;
+    }
+}
