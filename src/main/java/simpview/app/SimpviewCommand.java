@@ -23,7 +23,7 @@ import simpview.pages.SceneList;
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = Main.VERSION,
-        subcommands = {RenderCommand.class, CompareCommand.class},
+        subcommands = {RenderCommand.class, CompareCommand.class, InspectCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
             "Use 'simpview render' to write pages as PNG files without a window,",

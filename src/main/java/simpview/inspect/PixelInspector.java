@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
@@ -49,34 +50,45 @@ public final class PixelInspector {
      * @throws SceneException when the scene has an error (the history then goes up to it)
      */
     public PixelReport inspect(InspectedScene scene, int x, int y) throws SceneException {
+        return inspect(scene, x, y, HistoryEntry.NO_NUMBER);
+    }
+
+    /**
+     * As {@link #inspect(InspectedScene, int, int)}, also keeping primitive
+     * {@code primitive}'s vertices for {@link PixelReport#vertices(int)}
+     * whether or not it reaches the pixel ({@link HistoryEntry#NO_NUMBER}: only those that do).
+     */
+    public PixelReport inspect(InspectedScene scene, int x, int y, int primitive) throws SceneException {
         if (x < 0 || x >= PageCanvas.PANEL || y < 0 || y >= PageCanvas.PANEL) {
             throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is outside the panel: x and y are 0 to "
                     + (PageCanvas.PANEL - 1) + ", from the panel's bottom-left pixel, y up");
         }
         canvas.clear();
-        PixelWatch watch = scene.lit() ? replayLit(scene, x, y) : replayCued(scene, x, y);
+        PixelWatch watch = scene.lit() ? replayLit(scene, x, y, primitive) : replayCued(scene, x, y, primitive);
         int argb = canvas.panel().getPixel(x, y);
-        return new PixelReport(scene, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries());
+        return new PixelReport(scene, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(), watch::source);
     }
 
-    private PixelWatch replayLit(InspectedScene scene, int x, int y) throws SceneException {
+    private PixelWatch replayLit(InspectedScene scene, int x, int y, int wanted) throws SceneException {
         canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
         FragmentStage stage = new FragmentStage(canvas.zbuffer(), canvas.panel());
         SimpClient client = SimpClient.lit(stage, models);
         PixelWatch watch = new PixelWatch(x, y, client::includeChain, () -> client.litState().camera(),
-                canvas.zbuffer(), new LitExplainer(client.litState()));
+                () -> client.litState().worldToCamera(), true, canvas.zbuffer(), new LitExplainer(client.litState()));
+        watch.want(wanted);
         client.follow(watch);
         client.fragmentsThrough(new FragmentProbe(watch, stage, stage.width()));
         SimpInterpreter.onOneThread(client, monitor).run(scene.file());
         return watch;
     }
 
-    private PixelWatch replayCued(InspectedScene scene, int x, int y) throws SceneException {
+    private PixelWatch replayCued(InspectedScene scene, int x, int y, int wanted) throws SceneException {
         Camera view = Camera.PARALLEL;
         PixelWatch[] made = new PixelWatch[1];
         SimpClient[] client = new SimpClient[1];
-        PixelWatch watch = new PixelWatch(x, y, () -> client[0].includeChain(), () -> view, canvas.zbuffer(),
-                new CueExplainer(scene.near(), scene.far()));
+        PixelWatch watch = new PixelWatch(x, y, () -> client[0].includeChain(), () -> view, Matrix4::identity, false,
+                canvas.zbuffer(), new CueExplainer(scene.near(), scene.far()));
+        watch.want(wanted);
         made[0] = watch;
         Drawable shown = new WriteProbe(watch, WriteProbe.Point.SHOWN, canvas.panel());
         Drawable coloured = scene.near() == null ? shown : new DepthCueDrawable(scene.near(), scene.far(), view, shown);

@@ -19,7 +19,11 @@ public final class PixelReport {
     private final List<HistoryEntry> history;
     private final SourceText text = new SourceText();
 
-    PixelReport(InspectedScene scene, int x, int y, int argb, double depth, List<HistoryEntry> history) {
+    private final java.util.function.IntFunction<PrimitiveSource> sources;
+
+    PixelReport(InspectedScene scene, int x, int y, int argb, double depth, List<HistoryEntry> history,
+            java.util.function.IntFunction<PrimitiveSource> sources) {
+        this.sources = sources;
         this.scene = scene;
         this.x = x;
         this.y = y;
@@ -70,12 +74,26 @@ public final class PixelReport {
         return owner == null ? null : owner.explanation();
     }
 
+    /**
+     * Primitive n's vertices through every space, for one that reached the
+     * pixel (or was asked for when inspecting); null otherwise.
+     */
+    public Terms vertices(int primitive) {
+        PrimitiveSource s = sources.apply(primitive);
+        return s == null ? null : VertexTable.of(s);
+    }
+
     /** "page7.simp:6 › cubeline.simp:12 › cube.simp:7 polygon (...)". */
     public String describe(HistoryEntry e) {
         return text.describe(e.chain());
     }
 
     public String text(boolean withHistory, boolean withExplanation) {
+        return text(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
+    }
+
+    /** The report as text; with the vertex table of primitive {@code vertices} unless that is NO_NUMBER. */
+    public String text(boolean withHistory, boolean withExplanation, int vertices) {
         StringBuilder sb = new StringBuilder();
         sb.append("pixel (").append(x).append(", ").append(y).append(") of the panel (image pixel ")
                 .append(x + PageCanvas.MARGIN).append(", row ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
@@ -118,10 +136,24 @@ public final class PixelReport {
                 explanation.appendText(sb, "  ");
             }
         }
+        if (vertices != HistoryEntry.NO_NUMBER) {
+            Terms table = vertices(vertices);
+            if (table == null) {
+                sb.append("vertices: primitive ").append(vertices).append(" is not in this scene\n");
+            } else {
+                sb.append("vertices of primitive ").append(vertices).append(":\n");
+                table.appendText(sb, "  ");
+            }
+        }
         return sb.toString();
     }
 
     public String json(boolean withHistory, boolean withExplanation) {
+        return json(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
+    }
+
+    /** The report as one JSON object; with "vertices" for primitive {@code vertices} unless that is NO_NUMBER. */
+    public String json(boolean withHistory, boolean withExplanation, int vertices) {
         StringBuilder sb = new StringBuilder("{\"pixel\": {\"x\": ").append(x).append(", \"y\": ").append(y)
                 .append(", \"image_x\": ").append(x + PageCanvas.MARGIN)
                 .append(", \"image_row\": ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
@@ -172,6 +204,15 @@ public final class PixelReport {
                         .append(", ").append(argb & 0xFF).append("], \"background\": true}");
             } else {
                 explanation.appendJson(sb);
+            }
+        }
+        if (vertices != HistoryEntry.NO_NUMBER) {
+            sb.append(", \"vertices\": ");
+            Terms table = vertices(vertices);
+            if (table == null) {
+                sb.append("null");
+            } else {
+                table.appendJson(sb);
             }
         }
         return sb.append('}').toString();

@@ -3,9 +3,12 @@ package simpview.inspect;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
 import simpview.scene.PrimitiveTrace;
 import simpview.scene.simp.SourcePlace;
 import simpview.surface.ZBuffer;
@@ -51,8 +54,19 @@ final class PixelWatch implements PrimitiveTrace {
         int colour(PixelWatch watch, double z, double[] values, int drawnArgb, Terms terms);
     }
 
-    PixelWatch(int x, int y, Supplier<List<SourcePlace>> chains, Supplier<Camera> camera, ZBuffer zbuffer,
-            Explainer explainer) {
+    // The primitive as written, told before it is drawn; kept for those that reach the pixel and the one asked for.
+    private final Supplier<Matrix4> worldToCamera;
+    private final boolean lit;
+    private Matrix4 sourceCtm;
+    private double[] sourceXyz = new double[3 * 8];
+    private int sourceVertices;
+    private final Map<Integer, PrimitiveSource> sources = new HashMap<>();
+    private int wanted = HistoryEntry.NO_NUMBER;
+
+    PixelWatch(int x, int y, Supplier<List<SourcePlace>> chains, Supplier<Camera> camera,
+            Supplier<Matrix4> worldToCamera, boolean lit, ZBuffer zbuffer, Explainer explainer) {
+        this.worldToCamera = worldToCamera;
+        this.lit = lit;
         this.x = x;
         this.y = y;
         this.chains = chains;
@@ -89,6 +103,42 @@ final class PixelWatch implements PrimitiveTrace {
         }
         System.arraycopy(p, at, outline, 0, numbers * count);
         chain = null;
+        if (index == wanted) {
+            keepSource();
+        }
+    }
+
+    @Override
+    public boolean wantsSource() {
+        return true;
+    }
+
+    @Override
+    public void source(Matrix4 ctm, double[] xyz, int count) {
+        sourceCtm = ctm;
+        if (sourceXyz.length < 3 * count) {
+            sourceXyz = new double[6 * count];
+        }
+        System.arraycopy(xyz, 0, sourceXyz, 0, 3 * count);
+        sourceVertices = count;
+    }
+
+    /** The primitive at hand as written, kept (once) under its number. */
+    private void keepSource() {
+        if (sourceCtm != null && !sources.containsKey(primitive)) {
+            sources.put(primitive, new PrimitiveSource(primitive, kind, sourceCtm, worldToCamera.get(), camera.get(),
+                    lit, java.util.Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices));
+        }
+    }
+
+    /** Also keep primitive n as written, whether or not it reaches the pixel. */
+    void want(int n) {
+        wanted = n;
+    }
+
+    /** Primitive n as written, if it reached the pixel or was wanted; else null. */
+    PrimitiveSource source(int n) {
+        return sources.get(n);
     }
 
     @Override
@@ -129,6 +179,7 @@ final class PixelWatch implements PrimitiveTrace {
     void reached(WriteProbe.Point point, double z, int argb, double[] levels) {
         switch (point) {
             case ATTEMPTED -> {
+                keepSource();
                 current = new HistoryEntry(primitive, chain(), kind, Outcome.SCISSORED);
                 current.z = z;
                 current.argb = explainer.colour(this, z, null, argb, null);
@@ -164,6 +215,7 @@ final class PixelWatch implements PrimitiveTrace {
     /** A fragment at the pixel, resolved, before the fragment stage tests it. */
     void fragment(double[] channels) {
         double z = channels[0];
+        keepSource();
         current = new HistoryEntry(primitive, chain(), kind, Outcome.DEPTH_FAILED);
         current.z = z;
         depthBefore = zbuffer.depthAt(x, y);

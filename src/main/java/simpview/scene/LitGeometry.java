@@ -168,6 +168,15 @@ public final class LitGeometry implements GeometryStage, ObjSink {
                 normal(k, f.nx(k), f.ny(k), f.nz(k));
             }
         }
+        if (trace != null && trace.wantsSource()) {
+            double[] xyz = new double[3 * n];
+            for (int k = 0; k < n; k++) {
+                xyz[3 * k] = f.x(k);
+                xyz[3 * k + 1] = f.y(k);
+                xyz[3 * k + 2] = f.z(k);
+            }
+            trace.source(objCtm, xyz, n);
+        }
         face(n, objWire);
     }
 

@@ -43,4 +43,18 @@ public interface PrimitiveTrace {
     default void skipped(Path file, int line, int kind, boolean culled, double[] p, int at, int stride,
             int vertices) {
     }
+
+    /** True for a trace that wants each primitive's {@link #source}; the default does not, and costs nothing. */
+    default boolean wantsSource() {
+        return false;
+    }
+
+    /**
+     * The next primitive as its command wrote it: its vertices in object
+     * space (x, y, z each; read, never kept) and the CTM at its command.
+     * Told before the primitive is culled, skipped or read, and only to a
+     * trace that {@link #wantsSource}.
+     */
+    default void source(simpview.geometry.Matrix4 ctm, double[] xyz, int vertices) {
+    }
 }

@@ -112,10 +112,12 @@ public final class SimpClient {
             case ROTATE -> ctm = ctm.times(Matrix4.rotation(c.axis, c.angle));
             case LINE -> {
                 primitive();
+                source(c, 2);
                 geometry.line(ctm, c.xyz, colours(c));
             }
             case POLYGON -> {
                 primitive();
+                source(c, 3);
                 geometry.polygon(ctm, c.xyz, colours(c), style == Style.WIRE);
             }
             case FILE -> files.include(c);
@@ -236,6 +238,13 @@ public final class SimpClient {
         }
         if (trace != null) {
             lit.from(files.current().file(), files.current().lineNumber());
+        }
+    }
+
+    /** Tells a trace that wants them the vertices of the line or polygon c as written, and the CTM. */
+    private void source(Command c, int vertices) {
+        if (trace != null && trace.wantsSource()) {
+            trace.source(ctm, c.xyz, vertices);
         }
     }
 
