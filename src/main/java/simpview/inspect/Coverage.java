@@ -1,7 +1,7 @@
 package simpview.inspect;
 
 import simpview.geometry.Camera;
-import simpview.scene.Painter;
+import simpview.stage.Painter;
 
 /**
  * Whether a primitive that was never rasterized (culled, or clipped away)

@@ -43,7 +43,7 @@ public final class HistoryEntry {
         return chain;
     }
 
-    /** {@link simpview.scene.Painter#LINE}, {@code FILLED} or {@code WIRE}. */
+    /** {@link simpview.stage.Painter#LINE}, {@code FILLED} or {@code WIRE}. */
     public int kind() {
         return kind;
     }

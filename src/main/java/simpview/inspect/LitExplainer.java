@@ -2,7 +2,7 @@ package simpview.inspect;
 
 import java.util.ArrayList;
 import java.util.List;
-import simpview.scene.Painter;
+import simpview.stage.Painter;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;

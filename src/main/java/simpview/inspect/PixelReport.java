@@ -1,7 +1,7 @@
 package simpview.inspect;
 
 import java.util.List;
-import simpview.scene.Painter;
+import simpview.stage.Painter;
 import simpview.scene.simp.SourcePlace;
 import simpview.surface.PageCanvas;
 

@@ -9,7 +9,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
-import simpview.scene.PrimitiveTrace;
+import simpview.stage.PrimitiveTrace;
 import simpview.scene.simp.SourcePlace;
 import simpview.surface.ZBuffer;
 

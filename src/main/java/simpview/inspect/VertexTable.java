@@ -5,7 +5,7 @@ import java.util.List;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
-import simpview.scene.Painter;
+import simpview.stage.Painter;
 
 /**
  * A primitive's vertices through every space, as the geometry stages take
