@@ -29,9 +29,9 @@ final class CueExplainer implements PixelWatch.Explainer {
     }
 
     @Override
-    public int colour(PixelWatch watch, double z, double[] levels, int drawnArgb, Terms terms) {
+    public int colour(PixelWatch watch, double z, double[] levels, int drawnArgb, boolean drawn, Terms terms) {
         if (terms == null) {
-            if (cue == null) {
+            if (drawn || cue == null) {
                 return drawnArgb;
             }
             cue.setPixel(0, 0, z, 0);

@@ -27,9 +27,21 @@ final class LitExplainer implements PixelWatch.Explainer {
     }
 
     @Override
-    public int colour(PixelWatch watch, double z, double[] ch, int drawnArgb, Terms terms) {
+    public int colour(PixelWatch watch, double z, double[] ch, int drawnArgb, boolean drawn, Terms terms) {
         double[] lit = new double[3];
         boolean phong = ch.length == FragmentStage.PHONG_CHANNELS;
+        if (terms == null) {
+            if (phong) {
+                state.shade(ch[FragmentStage.PX], ch[FragmentStage.PY], z, ch[FragmentStage.NX], ch[FragmentStage.NY],
+                        ch[FragmentStage.NZ], ch[FragmentStage.R], ch[FragmentStage.G], ch[FragmentStage.B], lit);
+            } else {
+                lit[0] = ch[FragmentStage.R];
+                lit[1] = ch[FragmentStage.G];
+                lit[2] = ch[FragmentStage.B];
+            }
+            state.fog().apply(z, lit, 0);
+            return Colors.pack(lit[0], lit[1], lit[2]);
+        }
         int kind = watch.kind();
         terms.put("z", z);
         if (phong) {

@@ -31,6 +31,7 @@ public final class PixelInspector {
     private final PageCanvas canvas = new PageCanvas();
     private final ObjLibrary models;
     private final SceneMonitor monitor;
+    private boolean explaining = true;
 
     /** Models from the program's shared library, warnings dropped. */
     public PixelInspector() {
@@ -40,6 +41,16 @@ public final class PixelInspector {
     public PixelInspector(ObjLibrary models, SceneMonitor monitor) {
         this.models = models;
         this.monitor = monitor;
+    }
+
+    /**
+     * With false, the replays give each write its colour but explain none
+     * ({@link PixelReport#explanation()} is null): the history alone, for
+     * the window's overlays and for measuring what explaining costs.
+     */
+    public PixelInspector explaining(boolean explain) {
+        explaining = explain;
+        return this;
     }
 
     /**
@@ -76,6 +87,7 @@ public final class PixelInspector {
         PixelWatch watch = new PixelWatch(x, y, client::includeChain, () -> client.litState().camera(),
                 () -> client.litState().worldToCamera(), true, canvas.zbuffer(), new LitExplainer(client.litState()));
         watch.want(wanted);
+        watch.explaining(explaining);
         client.follow(watch);
         client.fragmentsThrough(new FragmentProbe(watch, stage, stage.width()));
         SimpInterpreter.onOneThread(client, monitor).run(scene.file());
@@ -89,6 +101,7 @@ public final class PixelInspector {
         PixelWatch watch = new PixelWatch(x, y, () -> client[0].includeChain(), () -> view, Matrix4::identity, false,
                 canvas.zbuffer(), new CueExplainer(scene.near(), scene.far()));
         watch.want(wanted);
+        watch.explaining(explaining);
         made[0] = watch;
         Drawable shown = new WriteProbe(watch, WriteProbe.Point.SHOWN, canvas.panel());
         Drawable coloured = scene.near() == null ? shown : new DepthCueDrawable(scene.near(), scene.far(), view, shown);

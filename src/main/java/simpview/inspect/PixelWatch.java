@@ -51,7 +51,7 @@ final class PixelWatch implements PrimitiveTrace {
          * drawn levels (depth-cued, or null) are given, explained into terms
          * (null: none wanted); 0xAARRGGBB.
          */
-        int colour(PixelWatch watch, double z, double[] values, int drawnArgb, Terms terms);
+        int colour(PixelWatch watch, double z, double[] values, int drawnArgb, boolean drawn, Terms terms);
     }
 
     // The primitive as written, told before it is drawn; kept for those that reach the pixel and the one asked for.
@@ -62,6 +62,7 @@ final class PixelWatch implements PrimitiveTrace {
     private int sourceVertices;
     private final Map<Integer, PrimitiveSource> sources = new HashMap<>();
     private int wanted = HistoryEntry.NO_NUMBER;
+    private boolean explaining = true;
 
     PixelWatch(int x, int y, Supplier<List<SourcePlace>> chains, Supplier<Camera> camera,
             Supplier<Matrix4> worldToCamera, boolean lit, ZBuffer zbuffer, Explainer explainer) {
@@ -131,6 +132,11 @@ final class PixelWatch implements PrimitiveTrace {
         }
     }
 
+    /** With false, each write gets its colour but no explanation (what an explanation costs is the difference). */
+    void explaining(boolean explain) {
+        explaining = explain;
+    }
+
     /** Also keep primitive n as written, whether or not it reaches the pixel. */
     void want(int n) {
         wanted = n;
@@ -182,7 +188,7 @@ final class PixelWatch implements PrimitiveTrace {
                 keepSource();
                 current = new HistoryEntry(primitive, chain(), kind, Outcome.SCISSORED);
                 current.z = z;
-                current.argb = explainer.colour(this, z, null, argb, null);
+                current.argb = explainer.colour(this, z, null, argb, false, null);
                 entries.add(current);
             }
             case IN_RANGE -> {
@@ -197,8 +203,8 @@ final class PixelWatch implements PrimitiveTrace {
                 lastWritten = primitive;
             }
             case SHOWN -> {
-                Terms terms = new Terms();
-                current.argb = explainer.colour(this, z, levels, argb, terms);
+                Terms terms = explaining ? new Terms() : null;
+                current.argb = explainer.colour(this, z, levels, argb, true, terms);
                 current.explanation = terms;
             }
             default -> throw new IllegalStateException(String.valueOf(point));
@@ -221,8 +227,8 @@ final class PixelWatch implements PrimitiveTrace {
         depthBefore = zbuffer.depthAt(x, y);
         current.storedDepth = depthBefore;
         current.storedOwner = lastWritten;
-        Terms terms = new Terms();
-        current.argb = explainer.colour(this, z, Arrays.copyOf(channels, channels()), 0, terms);
+        Terms terms = explaining ? new Terms() : null;
+        current.argb = explainer.colour(this, z, Arrays.copyOf(channels, channels()), 0, false, terms);
         current.explanation = terms;
         entries.add(current);
     }

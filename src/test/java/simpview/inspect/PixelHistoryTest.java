@@ -21,6 +21,7 @@ import simpview.scene.simp.SceneRenderer;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.Rgb;
+import simpview.testing.CourseFiles;
 
 /**
  * The pixel history against the picture as the program draws it (the
@@ -62,6 +63,20 @@ class PixelHistoryTest {
         for (long seed = 30; seed <= 31; seed++) {
             Path scene = RandomCuedScenes.write(dir, seed);
             check(new InspectedScene(scene, false, null, null), 30, seed);
+        }
+    }
+
+    /** The course's own pages: a depth-cued one three files deep, obj models, every shading mode. */
+    @Test
+    void coursePages() throws Exception {
+        Path simp = CourseFiles.requireSimpDir();
+        Path a3 = CourseFiles.require("course-simp-a3");
+        Path a4 = CourseFiles.require("course-simp-a4");
+        check(InspectedScene.of(simp.resolve("page7.simp")), 10, 7);
+        check(InspectedScene.of(a3.resolve("pageI.simp")), 8, 9);
+        check(InspectedScene.of(a3.resolve("pageH.simp")), 6, 8);
+        for (String page : new String[] {"page-d", "page-a1", "page-a2", "page-b1", "page-c2", "page-g"}) {
+            check(InspectedScene.of(a4.resolve(page + ".simp")), 6, page.hashCode());
         }
     }
 
