@@ -9,7 +9,9 @@ import simpview.raster.FragmentSink;
  * same operations in the same order, so the same bits), told to the watch
  * with the depth stored before it, and then the span goes on whole to the
  * fragment stage, which draws it; whether it won is read back from the
- * z-buffer.
+ * z-buffer. Spans and pixels that miss the inspected pixel go no further:
+ * what happens at a pixel depends on the writes at that pixel alone, so
+ * the replay leaves the rest of the picture undrawn.
  */
 final class FragmentProbe implements FragmentSink {
 
@@ -31,7 +33,6 @@ final class FragmentProbe implements FragmentSink {
     @Override
     public void span(int row, int from, int to, double q0, double dq, double[] v0, double[] dv) {
         if (row != y || x < Math.max(from, 0) || x >= Math.min(to, width)) {
-            stage.span(row, from, to, q0, dq, v0, dv);
             return;
         }
         int k = x - from;
@@ -48,7 +49,6 @@ final class FragmentProbe implements FragmentSink {
     @Override
     public void pixel(int px, int py, double q, double[] v) {
         if (px != x || py != y) {
-            stage.pixel(px, py, q, v);
             return;
         }
         double inv = 1 / q;

@@ -18,8 +18,10 @@ import simpview.surface.ZBufferDrawable;
 /**
  * Answers "why is this pixel this colour": replays the scene with the
  * program's own drawing code, onto a canvas of its own, with a one-pixel
- * filter that keeps a record of every write attempted at the pixel and of
- * nothing else. Depth-cued scenes go through the pages' drawable chain with
+ * filter that keeps a record of every write attempted at the pixel and lets
+ * no other write through (what happens at a pixel depends on the writes at
+ * that pixel alone), so a replay costs the scene's reading and geometry and
+ * little of its rasterization. Depth-cued scenes go through the pages' drawable chain with
  * probes between its decorators (before the scissor, after it, after the
  * z-buffer, after the depth cue); lit scenes through their fragment stage,
  * with a probe between the rasterizers and it.
@@ -114,7 +116,7 @@ public final class PixelInspector {
         return made[0];
     }
 
-    /** The picture the last replay drew (the same as the page's): for tests and the window. */
+    /** What the last replay drew: the inspected pixel as the page has it, and little else (the filter drops the rest). */
     public PageCanvas canvas() {
         return canvas;
     }

@@ -32,6 +32,8 @@ final class WriteProbe extends DrawableDecorator {
     public void setPixel(int px, int py, double z, int argb) {
         if (px == x && py == y) {
             watch.reached(point, z, argb, null);
+        } else if (point == Point.ATTEMPTED) {
+            return;
         }
         delegate.setPixel(px, py, z, argb);
     }
@@ -41,6 +43,8 @@ final class WriteProbe extends DrawableDecorator {
         if (s.y == y && s.x0 <= x && x < s.x1) {
             int k = x - s.xBase;
             watch.reached(point, s.zAt(x), s.argbAt(x), new double[] {s.r + k * s.dr, s.g + k * s.dg, s.b + k * s.db});
+        } else if (point == Point.ATTEMPTED) {
+            return;
         }
         delegate.fillSpan(s);
     }

@@ -4,6 +4,7 @@ import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.DepthPicture;
 import simpview.window.instruments.Inspector;
+import simpview.window.instruments.InspectorPanel;
 import simpview.window.render.BackgroundRenderer;
 import simpview.window.render.DrawSettings;
 import simpview.window.render.PageFacts;
@@ -65,6 +66,8 @@ public final class SimpviewWindow {
     private boolean turnWaiting;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say);
+    // the pixel's history, explanation and vertices (issue 20)
+    private final InspectorPanel inspectorPanel = new InspectorPanel();
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -95,6 +98,7 @@ public final class SimpviewWindow {
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
+        frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
         frame.setResizable(true);
         frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, status::say)); // compare (issue 15)
         new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
@@ -110,6 +114,7 @@ public final class SimpviewWindow {
             public void windowClosed(WindowEvent e) {
                 watcher.stop();
                 renderer.shutdown();
+                inspectorPanel.shutdown();
             }
         });
         frame.pack();
@@ -194,6 +199,13 @@ public final class SimpviewWindow {
         bind("step on ten", () -> step(10), "shift CLOSE_BRACKET");
         bind("step back ten", () -> step(-10), "shift OPEN_BRACKET");
         bind("step off", this::stepOff, "BACK_SLASH");
+        bind("step on hundred", () -> step(100), "ctrl CLOSE_BRACKET");
+        bind("step back hundred", () -> step(-100), "ctrl OPEN_BRACKET");
+        bind("step on thousand", () -> step(1000), "ctrl shift CLOSE_BRACKET");
+        bind("step back thousand", () -> step(-1000), "ctrl shift OPEN_BRACKET");
+        bind("step to the pixel's primitive", this::stepToOwner, "J");
+        bind("go to primitive", this::goToPrimitive, "G");
+        bind("inspector panel", this::toggleInspectorPanel, "I");
         bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
@@ -234,6 +246,94 @@ public final class SimpviewWindow {
         }
         pageView.pin(pinnedX, pinnedY);
         inspect();
+        refreshPanel();
+    }
+
+    /** Shows or hides the side panel of the pinned pixel's history (I). */
+    private void toggleInspectorPanel() {
+        boolean shownNow = inspectorPanel.toggle();
+        frame.getContentPane().validate();
+        if (shownNow) {
+            refreshPanel();
+        }
+    }
+
+    /** The side panel, when shown: the pinned pixel's history in the view on screen, replayed. */
+    private void refreshPanel() {
+        if (!inspectorPanel.isShown()) {
+            return;
+        }
+        if (pinnedX < 0 || shown == null) {
+            inspectorPanel.say("Pin a pixel (P) to see every write it received, how its colour was made, and its "
+                    + "primitive's vertices.");
+            return;
+        }
+        int x = pinnedX - simpview.surface.PageCanvas.MARGIN;
+        int y = simpview.surface.PageCanvas.MARGIN + simpview.surface.PageCanvas.PANEL - 1 - pinnedY;
+        if (x < 0 || y < 0 || x >= simpview.surface.PageCanvas.PANEL || y >= simpview.surface.PageCanvas.PANEL) {
+            inspectorPanel.say("The pinned pixel is in the margin: nothing is drawn there.");
+            return;
+        }
+        simpview.inspect.InspectedScene scene;
+        try {
+            View view = shown.view();
+            if (view instanceof View.OfScene s) {
+                scene = settings.ownColours() && !simpview.scene.simp.SceneRules.of(s.file()).lit()
+                        ? new simpview.inspect.InspectedScene(s.file(), false, null, null)
+                        : simpview.inspect.InspectedScene.of(s.file());
+            } else {
+                int number = ((View.OfPage) view).number();
+                scene = simpview.inspect.InspectedScene.page(number, options.pageContext());
+                if (settings.ownColours()) {
+                    scene = new simpview.inspect.InspectedScene(scene.file(), false, null, null);
+                }
+            }
+        } catch (IllegalArgumentException | simpview.scene.SceneException e) {
+            inspectorPanel.say(e.getMessage());
+            return;
+        }
+        String note = orbit.turned() || settings.stepLimit() >= 0
+                ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
+                : null;
+        inspectorPanel.inspect(scene, x, y, note);
+    }
+
+    /** Steps the drawing up to the primitive that drew the pixel under the pointer (or the pinned one). */
+    private void stepToOwner() {
+        int x = pinnedX >= 0 ? pinnedX : hoverX;
+        int y = pinnedX >= 0 ? pinnedY : hoverY;
+        int owner = Inspector.ownerAt(shown, x, y);
+        if (owner < 0) {
+            status.say("No primitive drew the pixel under the pointer: nothing to step to.");
+            return;
+        }
+        settings = settings.withStepLimit(owner + 1);
+        reload();
+    }
+
+    /** Asks for a primitive number and steps the drawing to it (G). */
+    private void goToPrimitive() {
+        if (!isScene(requested()) || shown == null) {
+            status.say("Stepping through the drawing works on scenes: pages 4–8 and opened scenes.");
+            return;
+        }
+        int total = shown.facts().primitives().size();
+        String answer = javax.swing.JOptionPane.showInputDialog(frame, "Go to primitive (1 to " + total + "):",
+                "simpview", javax.swing.JOptionPane.QUESTION_MESSAGE);
+        if (answer == null) {
+            return;
+        }
+        try {
+            int n = Integer.parseInt(answer.strip());
+            if (n < 1 || n > total) {
+                status.say("There is no primitive " + n + ": this picture has 1 to " + total + ".");
+                return;
+            }
+            settings = settings.withStepLimit(n);
+            reload();
+        } catch (NumberFormatException e) {
+            status.say("'" + answer + "' is not a primitive number.");
+        }
     }
 
     /** Puts the inspector's line on the clipboard. */
@@ -439,6 +539,7 @@ public final class SimpviewWindow {
             status.say(orbit.describe());
         }
         showStep(result);
+        refreshPanel();
         comparison.viewShown(result); // compare (issue 15)
         if (turnWaiting) {
             reload();
@@ -492,6 +593,10 @@ public final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    InspectorPanel inspectorPanel() {
+        return inspectorPanel;
     }
 
     // compare (issue 15)
