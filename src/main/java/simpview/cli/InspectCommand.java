@@ -61,7 +61,7 @@ final class InspectCommand implements Callable<Integer> {
     @Option(names = "--vertices", description = "the vertices of the primitive that drew the pixel, through every space")
     private boolean vertices;
 
-    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N instead of the pixel's owner")
+    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner")
     private Integer primitive;
 
     @Option(names = "--json", description = "one JSON object instead of text")
@@ -106,12 +106,13 @@ final class InspectCommand implements Callable<Integer> {
             }
             PixelInspector inspector = new PixelInspector(simpview.scene.simp.SceneRenderer.models(),
                     PageDrawing.warningsTo(err()));
-            int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive;
+            usage(primitive == null || primitive >= 1, "--primitive counts from 1, as the window's stepping does");
+            int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;
             PixelReport report = inspector.inspect(scene, xy[0], xy[1], wanted);
             int table = HistoryEntry.NO_NUMBER;
             if (vertices || all) {
                 HistoryEntry owner = report.lastWritten();
-                table = primitive != null ? primitive : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
+                table = primitive != null ? wanted : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
             }
             PrintWriter out = spec.commandLine().getOut();
             if (json) {

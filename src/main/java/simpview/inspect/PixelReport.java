@@ -88,6 +88,14 @@ public final class PixelReport {
         return text.describe(e.chain());
     }
 
+    /**
+     * A primitive's number as the reports and the window's stepping show it:
+     * 1, 2, 3, ... in drawing order (the entries hold 0, 1, 2, ...).
+     */
+    public static int shown(int primitive) {
+        return primitive + 1;
+    }
+
     public String text(boolean withHistory, boolean withExplanation) {
         return text(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
     }
@@ -101,12 +109,12 @@ public final class PixelReport {
                 .append(argb & 0xFF).append("), depth ").append(Json.number(depth)).append('\n');
         HistoryEntry owner = lastWritten();
         sb.append(owner == null ? "drawn by no primitive (background)\n"
-                : "drawn by primitive " + owner.primitive() + ": " + describe(owner) + "\n");
+                : "drawn by primitive " + shown(owner.primitive()) + ": " + describe(owner) + "\n");
         if (withHistory) {
             sb.append("history: ").append(history.size()).append(history.size() == 1 ? " write" : " writes")
                     .append(" attempted, in drawing order\n");
             for (HistoryEntry e : history) {
-                sb.append("  ").append(e.primitive() == HistoryEntry.NO_NUMBER ? "-" : "#" + e.primitive())
+                sb.append("  ").append(e.primitive() == HistoryEntry.NO_NUMBER ? "-" : "#" + shown(e.primitive()))
                         .append(' ').append(describe(e)).append('\n');
                 sb.append("      ").append(e.outcome().word());
                 if (!Double.isNaN(e.z())) {
@@ -116,7 +124,7 @@ public final class PixelReport {
                 }
                 if (e.outcome() == Outcome.DEPTH_FAILED) {
                     sb.append(": stored depth ").append(Json.number(e.storedDepth())).append(e.storedOwner()
-                            == HistoryEntry.NO_NUMBER ? " (nothing drawn yet)" : " of primitive " + e.storedOwner());
+                            == HistoryEntry.NO_NUMBER ? " (nothing drawn yet)" : " of primitive " + shown(e.storedOwner()));
                 } else if (e.outcome() == Outcome.SCISSORED) {
                     sb.append(": outside the view's depth range");
                 } else if (e.outcome() == Outcome.CULLED) {
@@ -132,16 +140,16 @@ public final class PixelReport {
             if (explanation == null) {
                 sb.append("explain: the background, nothing was drawn here\n");
             } else {
-                sb.append("explain (primitive ").append(owner.primitive()).append("):\n");
+                sb.append("explain (primitive ").append(shown(owner.primitive())).append("):\n");
                 explanation.appendText(sb, "  ");
             }
         }
         if (vertices != HistoryEntry.NO_NUMBER) {
             Terms table = vertices(vertices);
             if (table == null) {
-                sb.append("vertices: primitive ").append(vertices).append(" is not in this scene\n");
+                sb.append("vertices: primitive ").append(shown(vertices)).append(" is not in this scene\n");
             } else {
-                sb.append("vertices of primitive ").append(vertices).append(":\n");
+                sb.append("vertices of primitive ").append(shown(vertices)).append(":\n");
                 table.appendText(sb, "  ");
             }
         }
@@ -161,14 +169,14 @@ public final class PixelReport {
                 .append(", ").append(argb & 0xFF).append("], \"depth\": ");
         Json.number(sb, depth);
         HistoryEntry owner = lastWritten();
-        sb.append(", \"owner\": ").append(owner == null ? "null" : String.valueOf(owner.primitive()));
+        sb.append(", \"owner\": ").append(owner == null ? "null" : String.valueOf(shown(owner.primitive())));
         sb.append("}, \"lit\": ").append(scene.lit());
         if (withHistory) {
             sb.append(", \"history\": [");
             for (int k = 0; k < history.size(); k++) {
                 HistoryEntry e = history.get(k);
                 sb.append(k == 0 ? "" : ", ").append("{\"primitive\": ")
-                        .append(e.primitive() == HistoryEntry.NO_NUMBER ? "null" : String.valueOf(e.primitive()))
+                        .append(e.primitive() == HistoryEntry.NO_NUMBER ? "null" : String.valueOf(shown(e.primitive())))
                         .append(", \"kind\": ");
                 Json.string(sb, e.kind() == Painter.LINE ? "line" : e.kind() == Painter.WIRE ? "wire" : "filled");
                 sb.append(", \"chain\": [");
@@ -190,7 +198,7 @@ public final class PixelReport {
                     sb.append(", \"stored_depth\": ");
                     Json.number(sb, e.storedDepth());
                     sb.append(", \"stored_owner\": ").append(e.storedOwner() == HistoryEntry.NO_NUMBER ? "null"
-                            : String.valueOf(e.storedOwner()));
+                            : String.valueOf(shown(e.storedOwner())));
                 }
                 sb.append('}');
             }

@@ -24,7 +24,7 @@ final class VertexTable {
 
     static Terms of(PrimitiveSource s) {
         Terms t = new Terms();
-        t.put("primitive", s.primitive());
+        t.put("primitive", PixelReport.shown(s.primitive()));
         t.put("kind", s.kind() == Painter.LINE ? "line" : s.kind() == Painter.WIRE ? "wire polygon" : "filled polygon");
         t.put("ctm", rows(s.ctm()));
         Matrix4 toCamera = s.worldToCamera().times(s.ctm());

@@ -63,6 +63,8 @@ public final class LitGeometry implements GeometryStage {
     private boolean[] ownNormal = new boolean[8];
     private double[] screen = new double[(3 + FragmentStage.PHONG_CHANNELS) * 16];
     private final double[] lit = new double[3];
+    /** An obj face's vertices as written, for a trace that wants them. */
+    private double[] written = new double[3 * 8];
     /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
     private double faceNx;
     private double faceNy;
@@ -167,13 +169,15 @@ public final class LitGeometry implements GeometryStage {
             }
         }
         if (trace != null && trace.wantsSource()) {
-            double[] xyz = new double[3 * n];
-            for (int k = 0; k < n; k++) {
-                xyz[3 * k] = f.x(k);
-                xyz[3 * k + 1] = f.y(k);
-                xyz[3 * k + 2] = f.z(k);
+            if (written.length < 3 * n) {
+                written = new double[6 * n];
             }
-            trace.source(objCtm, xyz, n);
+            for (int k = 0; k < n; k++) {
+                written[3 * k] = f.x(k);
+                written[3 * k + 1] = f.y(k);
+                written[3 * k + 2] = f.z(k);
+            }
+            trace.source(objCtm, written, n);
         }
         face(n, objWire);
     }

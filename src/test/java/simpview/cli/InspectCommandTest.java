@@ -57,7 +57,7 @@ class InspectCommandTest {
         assertEquals(List.of("written", "written", "depth-failed"), outcomes);
         Map<String, Object> second = (Map<String, Object>) history.get(1);
         assertEquals(List.of("top.simp:2", "leaf.simp:1"), second.get("chain"));
-        assertEquals(1.0, second.get("primitive"));
+        assertEquals(2.0, second.get("primitive"));
         Map<String, Object> explain = (Map<String, Object>) json.get("explain");
         assertEquals(rgb, explain.get("final_rgb"));
         assertEquals(rgb, second.get("rgb"));
@@ -84,9 +84,9 @@ class InspectCommandTest {
         Path scene = write("top.simp", "# top\nfile leaf\n");
         CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300");
         assertEquals(0, run.exitCode(), run.err());
-        assertTrue(run.out().contains("drawn by primitive 0: top.simp:2 › leaf.simp:1 polygon"), run.out());
+        assertTrue(run.out().contains("drawn by primitive 1: top.simp:2 › leaf.simp:1 polygon"), run.out());
         assertTrue(run.out().contains("history: 1 write attempted"), run.out());
-        assertTrue(run.out().contains("vertices of primitive 0:"), run.out());
+        assertTrue(run.out().contains("vertices of primitive 1:"), run.out());
         assertTrue(run.out().contains("final_rgb: "), run.out());
     }
 
