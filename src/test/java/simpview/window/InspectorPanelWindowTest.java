@@ -32,7 +32,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
 
         Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
         driver.robot().mouseMove(centre.x, centre.y);
-        driver.awaitEdt(() -> window.status().inspectorText().contains("top.simp"), "the inspector on the centre");
+        driver.awaitEdt(() -> window.status().inspectorText().contains("drawn by primitive"), "the inspector on the centre");
         driver.press(KeyEvent.VK_P);
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
