@@ -21,7 +21,7 @@ import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 
 /**
@@ -106,7 +106,7 @@ public class PixelHistory {
     @Benchmark
     public PageCanvas draw() throws SceneException {
         canvas.clear();
-        SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(models), SceneMonitor.NONE);
         return canvas;
     }
 }

@@ -46,8 +46,8 @@ public class Explanation {
         state.addLight(0, 0, 0, 0.3, 0.3, 0.3, 1, 0);
         state.setFog(new Fog(-20, -60, 0.1, 0.1, 0.3));
         explainer = new LitExplainer(state);
-        watch = new PixelWatch(325, 325, List::of, state::camera, state::worldToCamera, true, new ZBuffer(650, 650),
-                explainer);
+        watch = new PixelWatch(325, 325, new ZBuffer(650, 650));
+        watch.begin(List::of, state, null);
     }
 
     @Benchmark

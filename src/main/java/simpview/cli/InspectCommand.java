@@ -14,7 +14,6 @@ import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
-import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -87,11 +86,6 @@ final class InspectCommand implements Callable<Integer> {
         usage(primitive == null || vertices, "--primitive goes with --vertices");
         usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
-        if (what.scene != null && (near != null || far != null)) {
-            SceneRules rules = SceneRules.of(what.scene);
-            usage(!rules.lit(), "--near-color and --far-color are for depth-cued scenes, and "
-                    + what.scene.getFileName() + " is lit (" + rules.reason() + ")");
-        }
         boolean all = !history && !explain && !vertices;
         try {
             InspectedScene scene;
@@ -102,13 +96,18 @@ final class InspectCommand implements Callable<Integer> {
                     throw new ParameterException(spec.commandLine(), e.getMessage());
                 }
             } else {
-                scene = InspectedScene.of(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
+                scene = near == null && far == null ? InspectedScene.of(what.scene)
+                        : InspectedScene.cued(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
             }
-            PixelInspector inspector = new PixelInspector(simpview.scene.simp.SceneRenderer.models(),
+            PixelInspector inspector = new PixelInspector(new simpview.scene.obj.ObjLibrary(),
                     PageDrawing.warningsTo(err()));
             usage(primitive == null || primitive >= 1, "--primitive counts from 1, as the window's stepping does");
             int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;
             PixelReport report = inspector.inspect(scene, xy[0], xy[1], wanted);
+            if (!report.drawn()) {
+                throw new UsageProblem("--near-color and --far-color are for depth-cued scenes, and "
+                        + what.scene.getFileName() + " is lit (" + report.litBecause() + ")");
+            }
             int table = HistoryEntry.NO_NUMBER;
             if (vertices || all) {
                 HistoryEntry owner = report.lastWritten();

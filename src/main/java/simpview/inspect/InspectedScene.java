@@ -7,29 +7,37 @@ import simpview.pages.PageContext;
 import simpview.pages.Pages;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
-import simpview.scene.simp.SceneRules;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.Rgb;
 
 /**
- * A scene to replay, with the rules it is drawn by: lit, or depth-cued from
- * a near to a far colour (or, with a null near colour, in its vertices' own
- * colours).
+ * A scene to replay, drawn as the program draws it: by the rules its
+ * commands call for (lit, or depth-cued from a near to a far colour), or
+ * always depth-cued (the pages), or in its vertices' own colours.
  */
-public record InspectedScene(Path file, boolean lit, Rgb near, Rgb far) {
+public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, ScenePipeline.Rules rules) {
 
     /** A scene file drawn as {@code render --scene} draws it: by its own rules, depth-cued white to black. */
     public static InspectedScene of(Path file) {
-        return of(file, Rgb.WHITE, Rgb.BLACK);
-    }
-
-    /** A scene file by its own rules; depth-cued from near to far when it is not lit. */
-    public static InspectedScene of(Path file, Rgb near, Rgb far) {
-        boolean lit = SceneRules.of(file).lit();
-        return new InspectedScene(file, lit, lit ? null : near, lit ? null : far);
+        return new InspectedScene(file, Rgb.WHITE, Rgb.BLACK, false, ScenePipeline.Rules.BY_COMMANDS);
     }
 
     /**
-     * Page n (4 to 8) as the pages draw it.
+     * A scene file depth-cued from near to far, as {@code render --scene
+     * --near-color --far-color} draws it: a lit scene cannot take the
+     * colours, and its replay draws nothing (the report says so).
+     */
+    public static InspectedScene cued(Path file, Rgb near, Rgb far) {
+        return new InspectedScene(file, near, far, false, ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING);
+    }
+
+    /** A depth-cued scene in its vertices' own colours (white where none), without the cue. */
+    public static InspectedScene ownColours(Path file) {
+        return new InspectedScene(file, Rgb.WHITE, Rgb.BLACK, true, ScenePipeline.Rules.BY_COMMANDS);
+    }
+
+    /**
+     * Page n (4 to 8) as the pages draw it: depth-cued, whatever its files hold.
      *
      * @throws IllegalArgumentException for a page that is not a scene file (1 to 3), or no page
      * @throws SceneException when the page's scene file is missing
@@ -48,6 +56,11 @@ public record InspectedScene(Path file, boolean lit, Rgb near, Rgb far) {
             throw new SceneException(file, 0, 0, "", scene.fileName() + " was not found in "
                     + file.toAbsolutePath().normalize().getParent());
         }
-        return new InspectedScene(file, false, scene.near(), Rgb.BLACK);
+        return new InspectedScene(file, scene.near(), Rgb.BLACK, context.ownColours(), ScenePipeline.Rules.DEPTH_CUED);
+    }
+
+    /** The same scene in its own colours, or depth-cued again. */
+    public InspectedScene withOwnColours(boolean own) {
+        return new InspectedScene(file, near, far, own, rules);
     }
 }

@@ -1,30 +1,37 @@
 package simpview.inspect;
 
+import java.util.List;
+import java.util.function.Supplier;
 import simpview.geometry.Camera;
-import simpview.geometry.Matrix4;
+import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.DrawingWatch;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.scene.simp.SimpClient;
-import simpview.scene.simp.SimpInterpreter;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.stage.PrimitiveTrace;
 import simpview.surface.DepthCueDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 import simpview.surface.ScissorDrawable;
 import simpview.surface.ZBufferDrawable;
 
 /**
- * Answers "why is this pixel this colour": replays the scene with the
- * program's own drawing code, onto a canvas of its own, with a one-pixel
- * filter that keeps a record of every write attempted at the pixel and lets
- * no other write through (what happens at a pixel depends on the writes at
- * that pixel alone), so a replay costs the scene's reading and geometry and
- * little of its rasterization. Depth-cued scenes go through the pages' drawable chain with
- * probes between its decorators (before the scissor, after it, after the
- * z-buffer, after the depth cue); lit scenes through their fragment stage,
- * with a probe between the rasterizers and it.
+ * Answers "why is this pixel this colour": replays the scene through the
+ * program's one pipeline ({@link ScenePipeline#draw}, the same rules, the
+ * same decision lit or depth-cued, the same geometry, rasterizers and
+ * per-pixel stages), onto a canvas of its own, with a one-pixel filter that
+ * keeps a record of every write attempted at the pixel and lets no other
+ * write through (what happens at a pixel depends on the writes at that
+ * pixel alone), so a replay costs the scene's reading and geometry and
+ * little of its rasterization. Depth-cued scenes draw on the canvas's chain
+ * with probes between its decorators (before the scissor, after it, after
+ * the z-buffer, after the depth cue); lit scenes' fragments pass a probe
+ * before the fragment stage.
  *
  * <p>One inspector keeps one canvas for its replays; not for two threads at once.
  */
@@ -35,11 +42,12 @@ public final class PixelInspector {
     private final SceneMonitor monitor;
     private boolean explaining = true;
 
-    /** Models from the program's shared library, warnings dropped. */
+    /** Models kept by this inspector across replays, warnings dropped. */
     public PixelInspector() {
-        this(SceneRenderer.models(), SceneMonitor.NONE);
+        this(new ObjLibrary(), SceneMonitor.NONE);
     }
 
+    /** @param monitor told the scene's warnings (its trace and turn are the inspector's own) */
     public PixelInspector(ObjLibrary models, SceneMonitor monitor) {
         this.models = models;
         this.monitor = monitor;
@@ -48,7 +56,7 @@ public final class PixelInspector {
     /**
      * With false, the replays give each write its colour but explain none
      * ({@link PixelReport#explanation()} is null): the history alone, for
-     * the window's overlays and for measuring what explaining costs.
+     * measuring what explaining costs.
      */
     public PixelInspector explaining(boolean explain) {
         explaining = explain;
@@ -77,47 +85,66 @@ public final class PixelInspector {
                     + (PageCanvas.PANEL - 1) + ", from the panel's bottom-left pixel, y up");
         }
         canvas.clear();
-        PixelWatch watch = scene.lit() ? replayLit(scene, x, y, primitive) : replayCued(scene, x, y, primitive);
+        PixelWatch watch = new PixelWatch(x, y, canvas.zbuffer());
+        watch.want(primitive);
+        watch.explaining(explaining);
+        Replay replay = new Replay(watch);
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+                .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
+        ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, options, replay);
         int argb = canvas.panel().getPixel(x, y);
-        return new PixelReport(scene, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(), watch::source);
-    }
-
-    private PixelWatch replayLit(InspectedScene scene, int x, int y, int wanted) throws SceneException {
-        canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-        FragmentStage stage = new FragmentStage(canvas.zbuffer(), canvas.panel());
-        SimpClient client = SimpClient.lit(stage, models);
-        PixelWatch watch = new PixelWatch(x, y, client::includeChain, () -> client.litState().camera(),
-                () -> client.litState().worldToCamera(), true, canvas.zbuffer(), new LitExplainer(client.litState()));
-        watch.want(wanted);
-        watch.explaining(explaining);
-        client.follow(watch);
-        client.fragmentsThrough(new FragmentProbe(watch, stage, stage.width()));
-        SimpInterpreter.onOneThread(client, monitor).run(scene.file());
-        return watch;
-    }
-
-    private PixelWatch replayCued(InspectedScene scene, int x, int y, int wanted) throws SceneException {
-        Camera view = Camera.PARALLEL;
-        PixelWatch[] made = new PixelWatch[1];
-        SimpClient[] client = new SimpClient[1];
-        PixelWatch watch = new PixelWatch(x, y, () -> client[0].includeChain(), () -> view, Matrix4::identity, false,
-                canvas.zbuffer(), new CueExplainer(scene.near(), scene.far()));
-        watch.want(wanted);
-        watch.explaining(explaining);
-        made[0] = watch;
-        Drawable shown = new WriteProbe(watch, WriteProbe.Point.SHOWN, canvas.panel());
-        Drawable coloured = scene.near() == null ? shown : new DepthCueDrawable(scene.near(), scene.far(), view, shown);
-        Drawable chain = new WriteProbe(watch, WriteProbe.Point.ATTEMPTED, new ScissorDrawable(view,
-                new WriteProbe(watch, WriteProbe.Point.IN_RANGE, new ZBufferDrawable(canvas.zbuffer(),
-                        new WriteProbe(watch, WriteProbe.Point.PASSED_DEPTH, coloured)))));
-        client[0] = new SimpClient(chain);
-        client[0].follow(watch);
-        SimpInterpreter.onOneThread(client[0], monitor).run(scene.file());
-        return made[0];
+        return new PixelReport(scene, drawn, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(),
+                watch::source);
     }
 
     /** What the last replay drew: the inspected pixel as the page has it, and little else (the filter drops the rest). */
     public PageCanvas canvas() {
         return canvas;
+    }
+
+    /** The replay's monitor: the watch follows the primitives and sets its probes into the drawing. */
+    private final class Replay implements SceneMonitor, DrawingWatch {
+        private final PixelWatch watch;
+        private CueExplainer cue;
+
+        Replay(PixelWatch watch) {
+            this.watch = watch;
+        }
+
+        @Override
+        public void warning(String message) {
+            monitor.warning(message);
+        }
+
+        @Override
+        public PrimitiveTrace trace() {
+            return watch;
+        }
+
+        @Override
+        public DrawingWatch watch() {
+            return this;
+        }
+
+        @Override
+        public Drawable depthCued(PageCanvas on, Rgb near, Rgb far, boolean ownColours) {
+            Camera view = Camera.PARALLEL;
+            cue = new CueExplainer(ownColours ? null : near, far);
+            Drawable shown = new WriteProbe(watch, WriteProbe.Point.SHOWN, on.panel());
+            Drawable coloured = ownColours ? shown : new DepthCueDrawable(near, far, view, shown);
+            return new WriteProbe(watch, WriteProbe.Point.ATTEMPTED, new ScissorDrawable(view,
+                    new WriteProbe(watch, WriteProbe.Point.IN_RANGE, new ZBufferDrawable(on.zbuffer(),
+                            new WriteProbe(watch, WriteProbe.Point.PASSED_DEPTH, coloured)))));
+        }
+
+        @Override
+        public FragmentSink fragments(FragmentStage stage) {
+            return new FragmentProbe(watch, stage, stage.width());
+        }
+
+        @Override
+        public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
+            watch.begin(chain, lit, cue);
+        }
     }
 }

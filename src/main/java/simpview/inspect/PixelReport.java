@@ -21,8 +21,11 @@ public final class PixelReport {
 
     private final java.util.function.IntFunction<PrimitiveSource> sources;
 
-    PixelReport(InspectedScene scene, int x, int y, int argb, double depth, List<HistoryEntry> history,
-            java.util.function.IntFunction<PrimitiveSource> sources) {
+    private final simpview.scene.simp.ScenePipeline.Drawn drawn;
+
+    PixelReport(InspectedScene scene, simpview.scene.simp.ScenePipeline.Drawn drawn, int x, int y, int argb,
+            double depth, List<HistoryEntry> history, java.util.function.IntFunction<PrimitiveSource> sources) {
+        this.drawn = drawn;
         this.sources = sources;
         this.scene = scene;
         this.x = x;
@@ -50,8 +53,19 @@ public final class PixelReport {
         return depth;
     }
 
+    /** True when the scene was drawn (or, not drawn, would have been) by the lit rules. */
     public boolean lit() {
-        return scene.lit();
+        return drawn.lit();
+    }
+
+    /** False when the scene was not drawn at all: depth-cue colours were asked for and it is lit ({@link #litBecause}). */
+    public boolean drawn() {
+        return drawn.drawn();
+    }
+
+    /** Where the scene's first lit command stands ("pageA.simp:3 camera"), or null when depth-cued. */
+    public String litBecause() {
+        return drawn.litBecause();
     }
 
     public List<HistoryEntry> history() {
@@ -170,7 +184,7 @@ public final class PixelReport {
         Json.number(sb, depth);
         HistoryEntry owner = lastWritten();
         sb.append(", \"owner\": ").append(owner == null ? "null" : String.valueOf(shown(owner.primitive())));
-        sb.append("}, \"lit\": ").append(scene.lit());
+        sb.append("}, \"lit\": ").append(drawn.lit());
         if (withHistory) {
             sb.append(", \"history\": [");
             for (int k = 0; k < history.size(); k++) {

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.shading.LitState;
 import simpview.stage.PrimitiveTrace;
 import simpview.scene.simp.SourcePlace;
 import simpview.surface.ZBuffer;
@@ -24,11 +25,14 @@ final class PixelWatch implements PrimitiveTrace {
     private final int x;
     private final int y;
     private final List<HistoryEntry> entries = new ArrayList<>();
-    private final Supplier<List<SourcePlace>> chains;
-    private final Supplier<Camera> camera;
     private final ZBuffer zbuffer;
-    /** Explains and colours the writes: the depth cue's or the lighting's. */
-    private final Explainer explainer;
+    // Set when the scene's rules begin (again, when it turns lit): where to ask for the include chain,
+    // the view, and what explains and colours the writes (the depth cue's or the lighting's).
+    private Supplier<List<SourcePlace>> chains = List::of;
+    private Supplier<Camera> camera = () -> Camera.PARALLEL;
+    private Supplier<Matrix4> worldToCamera = Matrix4::identity;
+    private boolean lit;
+    private Explainer explainer;
 
     // The primitive being drawn: its number, command, kind and projected outline.
     private int primitive = HistoryEntry.NO_NUMBER;
@@ -55,8 +59,6 @@ final class PixelWatch implements PrimitiveTrace {
     }
 
     // The primitive as written, told before it is drawn; kept for those that reach the pixel and the one asked for.
-    private final Supplier<Matrix4> worldToCamera;
-    private final boolean lit;
     private Matrix4 sourceCtm;
     private double[] sourceXyz = new double[3 * 8];
     private int sourceVertices;
@@ -64,16 +66,34 @@ final class PixelWatch implements PrimitiveTrace {
     private int wanted = HistoryEntry.NO_NUMBER;
     private boolean explaining = true;
 
-    PixelWatch(int x, int y, Supplier<List<SourcePlace>> chains, Supplier<Camera> camera,
-            Supplier<Matrix4> worldToCamera, boolean lit, ZBuffer zbuffer, Explainer explainer) {
-        this.worldToCamera = worldToCamera;
-        this.lit = lit;
+    PixelWatch(int x, int y, ZBuffer zbuffer) {
         this.x = x;
         this.y = y;
-        this.chains = chains;
-        this.camera = camera;
         this.zbuffer = zbuffer;
-        this.explainer = explainer;
+    }
+
+    /** The scene's rules begin: depth-cued ones (lit null) explained by {@code cue}, or lit ones by their state. */
+    void begin(Supplier<List<SourcePlace>> chain, LitState state, Explainer cue) {
+        chains = chain;
+        lit = state != null;
+        camera = lit ? state::camera : () -> Camera.PARALLEL;
+        worldToCamera = lit ? state::worldToCamera : Matrix4::identity;
+        explainer = lit ? new LitExplainer(state) : cue;
+    }
+
+    boolean lit() {
+        return lit;
+    }
+
+    /** The scene is drawn again from the start (it turned lit): what was seen so far is forgotten. */
+    @Override
+    public void restart() {
+        entries.clear();
+        sources.clear();
+        lastWritten = HistoryEntry.NO_NUMBER;
+        primitive = HistoryEntry.NO_NUMBER;
+        current = null;
+        sourceCtm = null;
     }
 
     int x() {

@@ -57,4 +57,12 @@ public interface PrimitiveTrace {
      */
     default void source(simpview.geometry.Matrix4 ctm, double[] xyz, int vertices) {
     }
+
+    /**
+     * The scene is drawn again from the start (it turned out lit after it
+     * had drawn depth-cued): forget every primitive told so far; numbering
+     * starts at 0 again.
+     */
+    default void restart() {
+    }
 }

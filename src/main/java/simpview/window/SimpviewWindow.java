@@ -278,15 +278,11 @@ public final class SimpviewWindow {
         try {
             View view = shown.view();
             if (view instanceof View.OfScene s) {
-                scene = settings.ownColours() && !simpview.scene.simp.SceneRules.of(s.file()).lit()
-                        ? new simpview.inspect.InspectedScene(s.file(), false, null, null)
-                        : simpview.inspect.InspectedScene.of(s.file());
+                scene = simpview.inspect.InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
             } else {
                 int number = ((View.OfPage) view).number();
-                scene = simpview.inspect.InspectedScene.page(number, options.pageContext());
-                if (settings.ownColours()) {
-                    scene = new simpview.inspect.InspectedScene(scene.file(), false, null, null);
-                }
+                scene = simpview.inspect.InspectedScene.page(number, options.pageContext())
+                        .withOwnColours(settings.ownColours());
             }
         } catch (IllegalArgumentException | simpview.scene.SceneException e) {
             inspectorPanel.say(e.getMessage());

@@ -104,6 +104,14 @@ class InspectCommandTest {
     }
 
     @Test
+    void depthCueColoursForALitSceneAreAUsageError() throws Exception {
+        Path scene = write("lit.simp", "camera -1 -1 1 1 -1 -100\npolygon (-5, -5, -10) (5, -5, -10) (0, 5, -10)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--near-color", "0,1,0");
+        assertEquals(2, run.exitCode(), run.err());
+        assertTrue(run.err().contains("is lit (lit.simp:1 camera)"), run.err());
+    }
+
+    @Test
     void pagesThatAreNotScenesAndMissingScenes() throws Exception {
         CliRun page = CliRun.of("inspect", "--page", "2", "--at", "10,10");
         assertEquals(2, page.exitCode());

@@ -74,4 +74,20 @@ class IncludeChainTest {
         assertEquals(0, u.get(2).storedOwner());
         assertEquals(u.get(0).z(), u.get(2).storedDepth(), 0);
     }
+
+    @Test
+    void aSceneThatTurnsLitAfterDrawingIsReplayedLitFromTheStart() throws Exception {
+        Files.writeString(dir.resolve("late.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "ambient 0.5 0.5 0.5\n");
+        PixelReport report = new PixelInspector().inspect(InspectedScene.of(dir.resolve("late.simp")), 325, 325);
+        assertEquals(true, report.lit());
+        assertEquals(1, report.history().size(), report.text(true, false));
+        HistoryEntry e = report.history().get(0);
+        assertEquals(Outcome.WRITTEN, e.outcome());
+        assertEquals(0, e.primitive());
+        // Lit with what stood before its command: Ia still (0, 0, 0), no lights, so black (depth-cued it was near white).
+        assertEquals(0xFF000000, e.argb());
+        assertEquals(0xFF000000, report.argb());
+        assertEquals(-10, e.z(), 1e-12);
+    }
 }

@@ -197,7 +197,7 @@ class LightingExplanationTest {
         Path file = dir.resolve("cued.simp");
         Files.writeString(file, "polygon (-90, -90, -20) (90, -90, -180) (0, 90, -100)\n");
         PixelReport report = new PixelInspector().inspect(
-                InspectedScene.of(file, new simpview.surface.Rgb(0.2, 1, 0.6), new simpview.surface.Rgb(0.1, 0, 0.3)),
+                InspectedScene.cued(file, new simpview.surface.Rgb(0.2, 1, 0.6), new simpview.surface.Rgb(0.1, 0, 0.3)),
                 325, 325);
         Terms t = report.explanation();
         double z = t.number("z");

@@ -17,7 +17,8 @@ import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.Rgb;
@@ -36,7 +37,8 @@ class PixelHistoryTest {
     @TempDir
     Path dir;
 
-    private final PixelInspector inspector = new PixelInspector();
+    private static final ObjLibrary MODELS = new ObjLibrary();
+    private final PixelInspector inspector = new PixelInspector(MODELS, simpview.scene.simp.SceneMonitor.NONE);
 
     @Test
     void litScenesOfEveryKind() throws Exception {
@@ -53,7 +55,7 @@ class PixelHistoryTest {
         int written = 0;
         for (long seed = 1; seed <= 8; seed++) {
             Path scene = RandomCuedScenes.write(dir, seed);
-            written += check(InspectedScene.of(scene, new Rgb(0.2, 1, 0.6), new Rgb(0.1, 0, 0.3)), 24, seed);
+            written += check(InspectedScene.cued(scene, new Rgb(0.2, 1, 0.6), new Rgb(0.1, 0, 0.3)), 24, seed);
         }
         assertTrue(written > 100, "too few drawn pixels sampled: " + written);
     }
@@ -62,7 +64,7 @@ class PixelHistoryTest {
     void ownColours() throws Exception {
         for (long seed = 30; seed <= 31; seed++) {
             Path scene = RandomCuedScenes.write(dir, seed);
-            check(new InspectedScene(scene, false, null, null), 30, seed);
+            check(InspectedScene.ownColours(scene), 30, seed);
         }
     }
 
@@ -123,6 +125,7 @@ class PixelHistoryTest {
             int c = drawn.pixels[i];
             assertArrayEquals(new int[] {c >>> 16 & 0xFF, c >>> 8 & 0xFF, c & 0xFF},
                     report.explanation().bytes("final_rgb"), where + ": the explanation's final bytes");
+            assertEquals(drawn.lit, report.lit(), where + ": lit");
             consistent(report, where);
         }
         return checked;
@@ -152,7 +155,7 @@ class PixelHistoryTest {
     }
 
     /** The picture, depths and owners as the program draws the scene, with the window's record. */
-    private record Drawn(int[] pixels, double[] depths, int[] owners) {
+    private record Drawn(int[] pixels, double[] depths, int[] owners, boolean lit) {
     }
 
     private static Drawn draw(InspectedScene scene) throws SceneException {
@@ -166,12 +169,8 @@ class PixelHistoryTest {
                 return log;
             }
         };
-        if (scene.lit()) {
-            SceneRenderer.drawLit(scene.file(), canvas, monitor);
-        } else {
-            SceneRenderer.draw(scene.file(), scene.near() == null ? canvas.depthTested()
-                    : canvas.depthCued(scene.near(), scene.far()), monitor);
-        }
+        ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, ScenePipeline.Options.byCommands(MODELS)
+                .withRules(scene.rules()).withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours()), monitor);
         int n = PageCanvas.PANEL * PageCanvas.PANEL;
         int[] pixels = new int[n];
         for (int y = 0; y < PageCanvas.PANEL; y++) {
@@ -179,6 +178,6 @@ class PixelHistoryTest {
                 pixels[y * PageCanvas.PANEL + x] = canvas.panel().getPixel(x, y);
             }
         }
-        return new Drawn(pixels, canvas.zbuffer().copyDepths(), provenance.copyOwners());
+        return new Drawn(pixels, canvas.zbuffer().copyDepths(), provenance.copyOwners(), drawn.lit());
     }
 }

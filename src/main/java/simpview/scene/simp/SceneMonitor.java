@@ -18,6 +18,14 @@ public interface SceneMonitor {
         return false;
     }
 
+    /**
+     * Once, when the scene ends however it ends: every file it read or looked
+     * for, in the order met (what a window watches for a save; see
+     * {@link ScenePipeline.Drawn#files}).
+     */
+    default void reached(java.util.List<java.nio.file.Path> files) {
+    }
+
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
     default void warning(String message) {
     }
@@ -43,5 +51,10 @@ public interface SceneMonitor {
      * window's orbit turns about. Not called when nothing was in view.
      */
     default void shownCentre(double[] xyz) {
+    }
+
+    /** The inspector's replay: what it sets into the drawing (see {@link DrawingWatch}); null, the default, for none. */
+    default DrawingWatch watch() {
+        return null;
     }
 }

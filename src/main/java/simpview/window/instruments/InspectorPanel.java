@@ -16,7 +16,6 @@ import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
 
 /**
  * The inspector's side panel: for the pinned pixel, its whole history, how
@@ -38,8 +37,8 @@ public final class InspectorPanel {
         t.setDaemon(true);
         return t;
     });
-    /** The replay's inspector: used on the worker thread only. */
-    private final PixelInspector inspector = new PixelInspector(SceneRenderer.models(), SceneMonitor.NONE);
+    /** The replay's inspector, with its own models: used on the worker thread only. */
+    private final PixelInspector inspector = new PixelInspector(new simpview.scene.obj.ObjLibrary(), SceneMonitor.NONE);
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
