@@ -68,6 +68,8 @@ public final class SimpviewWindow {
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say);
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel = new InspectorPanel();
+    private boolean overdrawShown;
+    private int overdrawMax = -1;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -206,6 +208,7 @@ public final class SimpviewWindow {
         bind("step to the pixel's primitive", this::stepToOwner, "J");
         bind("go to primitive", this::goToPrimitive, "G");
         bind("inspector panel", this::toggleInspectorPanel, "I");
+        bind("overdraw", this::toggleOverdraw, "V");
         bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
@@ -274,24 +277,58 @@ public final class SimpviewWindow {
             inspectorPanel.say("The pinned pixel is in the margin: nothing is drawn there.");
             return;
         }
-        simpview.inspect.InspectedScene scene;
-        try {
-            View view = shown.view();
-            if (view instanceof View.OfScene s) {
-                scene = simpview.inspect.InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
-            } else {
-                int number = ((View.OfPage) view).number();
-                scene = simpview.inspect.InspectedScene.page(number, options.pageContext())
-                        .withOwnColours(settings.ownColours());
-            }
-        } catch (IllegalArgumentException | simpview.scene.SceneException e) {
-            inspectorPanel.say(e.getMessage());
+        simpview.inspect.InspectedScene scene = inspectedScene(inspectorPanel::say);
+        if (scene == null) {
             return;
         }
         String note = orbit.turned() || settings.stepLimit() >= 0
                 ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
                 : null;
         inspectorPanel.inspect(scene, x, y, note);
+    }
+
+    /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
+    private simpview.inspect.InspectedScene inspectedScene(java.util.function.Consumer<String> why) {
+        try {
+            View view = shown.view();
+            if (view instanceof View.OfScene s) {
+                return simpview.inspect.InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
+            }
+            int number = ((View.OfPage) view).number();
+            return simpview.inspect.InspectedScene.page(number, options.pageContext())
+                    .withOwnColours(settings.ownColours());
+        } catch (IllegalArgumentException | simpview.scene.SceneException e) {
+            why.accept(e.getMessage());
+            return null;
+        }
+    }
+
+    /** The overdraw overlay (V): each pixel by how many writes reached its depth test, with its scale; again: the page. */
+    private void toggleOverdraw() {
+        if (overdrawShown) {
+            overdrawShown = false;
+            showPicture();
+            return;
+        }
+        if (shown == null) {
+            return;
+        }
+        simpview.inspect.InspectedScene scene = inspectedScene(status::say);
+        if (scene == null) {
+            return;
+        }
+        RenderedView of = shown;
+        status.say("Counting the writes of every pixel ...");
+        inspectorPanel.overdraw(scene, counts -> {
+            if (shown != of || counts == null) {
+                status.say(counts == null ? "The overdraw could not be counted: the scene has an error." : "");
+                return;
+            }
+            overdrawShown = true;
+            overdrawMax = simpview.inspect.Overdraw.max(counts);
+            pageView.show(simpview.window.instruments.OverdrawPicture.of(counts), null, true);
+            status.say("Overdraw: up to " + overdrawMax + " writes at a pixel (the scale is above the panel) · V: the page again");
+        });
     }
 
     /** Steps the drawing up to the primitive that drew the pixel under the pointer (or the pinned one). */
@@ -437,6 +474,7 @@ public final class SimpviewWindow {
 
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
+        overdrawShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
             pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
@@ -526,6 +564,7 @@ public final class SimpviewWindow {
             return;
         }
         shown = result;
+        overdrawShown = false;
         showPicture();
         frame.setTitle(result.title());
         watcher.watch(result.facts().files());
@@ -593,6 +632,11 @@ public final class SimpviewWindow {
 
     InspectorPanel inspectorPanel() {
         return inspectorPanel;
+    }
+
+    /** The overdraw overlay's largest count while it is shown, else -1. */
+    int overdrawShownMax() {
+        return overdrawShown ? overdrawMax : -1;
     }
 
     // compare (issue 15)

@@ -55,6 +55,15 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 3, leaf.simp:1"),
                 "stepping to the pixel's primitive");
 
+        // V: the overdraw overlay; the three triangles overlap at the centre, so the most is 3 writes.
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window.busy() && window.shown().facts().primitives().size() == 3, "the whole picture");
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw overlay, up to 3 writes");
+        assertTrue(driver.onEdt(() -> window.status().messageText()).contains("up to 3 writes"));
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+
         // I again hides the panel.
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> !window.inspectorPanel().isShown(), "the panel hidden");

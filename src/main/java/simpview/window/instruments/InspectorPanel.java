@@ -33,12 +33,13 @@ public final class InspectorPanel {
     private final JTextArea text = new JTextArea();
     private final JScrollPane scroll;
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "simpview-pixel-history");
+        Thread t = new Thread(r, "simpview-inspector");
         t.setDaemon(true);
         return t;
     });
     /** The replay's inspector, with its own models: used on the worker thread only. */
-    private final PixelInspector inspector = new PixelInspector(new simpview.scene.obj.ObjLibrary(), SceneMonitor.NONE);
+    private final simpview.scene.obj.ObjLibrary models = new simpview.scene.obj.ObjLibrary();
+    private final PixelInspector inspector = new PixelInspector(models, SceneMonitor.NONE);
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
@@ -106,6 +107,23 @@ public final class InspectorPanel {
                     text.setCaretPosition(0);
                 }
             });
+        });
+    }
+
+    /**
+     * The overdraw of {@code scene}, counted on the inspector's thread, then
+     * given to {@code show} on the EDT (null when the scene has an error).
+     */
+    public void overdraw(InspectedScene scene, java.util.function.Consumer<int[]> show) {
+        worker.submit(() -> {
+            int[] counts;
+            try {
+                counts = simpview.inspect.Overdraw.of(scene, models);
+            } catch (SceneException | RuntimeException e) {
+                counts = null;
+            }
+            int[] shown = counts;
+            SwingUtilities.invokeLater(() -> show.accept(shown));
         });
     }
 
