@@ -45,6 +45,9 @@ final class InspectCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
+    @picocli.CommandLine.ParentCommand
+    private SimpviewCommand parent;
+
     @ArgGroup(exclusive = true, multiplicity = "1")
     private What what;
 
@@ -91,7 +94,8 @@ final class InspectCommand implements Callable<Integer> {
             InspectedScene scene;
             if (what.page != null) {
                 try {
-                    scene = InspectedScene.page(what.page, PageDrawing.context(seed, simpDir, PageDrawing.warningsTo(err())));
+                    scene = InspectedScene.page(what.page, PageDrawing.context(parent.ownScenes(), seed, simpDir,
+                            PageDrawing.warningsTo(err())));
                 } catch (IllegalArgumentException e) {
                     throw new ParameterException(spec.commandLine(), e.getMessage());
                 }
