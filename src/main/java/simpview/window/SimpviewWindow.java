@@ -69,6 +69,8 @@ public final class SimpviewWindow {
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel = new InspectorPanel();
     private boolean overdrawShown;
+    private boolean backFacesShown;
+    private int backFaces = -1;
     private int overdrawMax = -1;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
@@ -209,6 +211,7 @@ public final class SimpviewWindow {
         bind("go to primitive", this::goToPrimitive, "G");
         bind("inspector panel", this::toggleInspectorPanel, "I");
         bind("overdraw", this::toggleOverdraw, "V");
+        bind("back faces", this::toggleBackFaces, "K");
         bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
@@ -329,6 +332,29 @@ public final class SimpviewWindow {
             pageView.show(simpview.window.instruments.OverdrawPicture.of(counts), null, true);
             status.say("Overdraw: up to " + overdrawMax + " writes at a pixel (the scale is above the panel) · V: the page again");
         });
+    }
+
+    /** The back-face overlay (K): pixels of clockwise polygons tinted magenta; again: the page. */
+    private void toggleBackFaces() {
+        if (backFacesShown) {
+            showPicture();
+            return;
+        }
+        if (shown == null) {
+            return;
+        }
+        simpview.window.instruments.BackFacePicture.Tinted tinted =
+                simpview.window.instruments.BackFacePicture.of(shown.image(), shown.facts());
+        if (tinted == null) {
+            status.say("Who drew each pixel was not recorded for this picture: no back faces to show.");
+            return;
+        }
+        showPicture();
+        backFacesShown = true;
+        backFaces = tinted.backFacing();
+        pageView.show(tinted.image(), null, true);
+        status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
+                + " polygons are clockwise on the panel · K: the page again");
     }
 
     /** Steps the drawing up to the primitive that drew the pixel under the pointer (or the pinned one). */
@@ -475,6 +501,7 @@ public final class SimpviewWindow {
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
         overdrawShown = false;
+        backFacesShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
             pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
@@ -631,6 +658,11 @@ public final class SimpviewWindow {
 
     InspectorPanel inspectorPanel() {
         return inspectorPanel;
+    }
+
+    /** How many polygons the back-face overlay tints while it is shown, else -1. */
+    int backFacesShownCount() {
+        return backFacesShown ? backFaces : -1;
     }
 
     /** The overdraw overlay's largest count while it is shown, else -1. */

@@ -23,7 +23,8 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         Files.writeString(dir.resolve("leaf.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
         Path scene = dir.resolve("top.simp");
         Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n"
-                + "polygon (-90, -90, -150) (90, -90, -150) (0, 90, -150)\n");
+                + "polygon (-90, -90, -150) (90, -90, -150) (0, 90, -150)\n"
+                + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n");
         driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
         SimpviewWindow window = driver.window();
         driver.focusByClicking(new View.OfPage(2));
@@ -52,17 +53,24 @@ public class InspectorPanelWindowTest extends WindowTestCase {
 
         // J steps the drawing to the primitive that drew the pinned pixel: the second of three.
         driver.press(KeyEvent.VK_J);
-        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 3, leaf.simp:1"),
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 4, leaf.simp:1"),
                 "stepping to the pixel's primitive");
 
         // V: the overdraw overlay; the three triangles overlap at the centre, so the most is 3 writes.
         driver.press(KeyEvent.VK_BACK_SLASH);
-        driver.awaitEdt(() -> !window.busy() && window.shown().facts().primitives().size() == 3, "the whole picture");
+        driver.awaitEdt(() -> !window.busy() && window.shown().facts().primitives().size() == 4, "the whole picture");
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw overlay, up to 3 writes");
         assertTrue(driver.onEdt(() -> window.status().messageText()).contains("up to 3 writes"));
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+
+        // K: the back faces: only the last triangle, (60, 60) (60, 90) (90, 60), is clockwise.
+        driver.press(KeyEvent.VK_K);
+        driver.awaitEdt(() -> window.backFacesShownCount() == 1, "the back-face overlay, one polygon facing away");
+        assertTrue(driver.onEdt(() -> window.status().messageText()).contains("1 of 4 polygons"));
+        driver.press(KeyEvent.VK_K);
+        driver.awaitEdt(() -> window.backFacesShownCount() == -1, "the page again");
 
         // I again hides the panel.
         driver.press(KeyEvent.VK_I);
