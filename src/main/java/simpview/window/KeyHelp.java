@@ -25,7 +25,7 @@ public final class KeyHelp {
             new Row("G / J", "go to primitive N / to the one that drew the pixel under the pointer"),
             new Row("I", "inspector panel: the pinned pixel's history, colour explained, vertices"),
             new Row("K", "back faces: pixels of clockwise polygons tinted magenta (again: the page)"),
-            new Row("V", "overdraw: each pixel by the writes that reached it, with the scale (again: the page)"),
+            new Row("V / Shift+V", "overdraw / depth-test failures per pixel, with the scale (again: the page)"),
             new Row("right-drag, Shift+drag / O", "turn the scene about its centre / back"),
             new Row("Ctrl+wheel, Alt+wheel", "move the scene's view nearer or farther"),
             new Row("F5", "draw again (files are also watched and redrawn on save)"),

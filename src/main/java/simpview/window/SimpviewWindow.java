@@ -210,7 +210,8 @@ public final class SimpviewWindow {
         bind("step to the pixel's primitive", this::stepToOwner, "J");
         bind("go to primitive", this::goToPrimitive, "G");
         bind("inspector panel", this::toggleInspectorPanel, "I");
-        bind("overdraw", this::toggleOverdraw, "V");
+        bind("overdraw", () -> toggleOverdraw(false), "V");
+        bind("depth-test failures", () -> toggleOverdraw(true), "shift V");
         bind("back faces", this::toggleBackFaces, "K");
         bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
@@ -306,8 +307,12 @@ public final class SimpviewWindow {
         }
     }
 
-    /** The overdraw overlay (V): each pixel by how many writes reached its depth test, with its scale; again: the page. */
-    private void toggleOverdraw() {
+    /**
+     * The overdraw overlay (V): each pixel by how many writes reached its
+     * depth test, with its scale; or (Shift+V) by how many of them lost it.
+     * Again: the page.
+     */
+    private void toggleOverdraw(boolean failures) {
         if (overdrawShown) {
             overdrawShown = false;
             showPicture();
@@ -327,10 +332,16 @@ public final class SimpviewWindow {
                 status.say(counts == null ? "The overdraw could not be counted: the scene has an error." : "");
                 return;
             }
+            int[] shownCounts = failures ? counts.failed() : counts.reached();
             overdrawShown = true;
-            overdrawMax = simpview.inspect.Overdraw.max(counts);
-            pageView.show(simpview.window.instruments.OverdrawPicture.of(counts), null, true);
-            status.say("Overdraw: up to " + overdrawMax + " writes at a pixel (the scale is above the panel) · V: the page again");
+            overdrawMax = simpview.inspect.Overdraw.max(shownCounts);
+            pageView.show(failures
+                    ? simpview.window.instruments.OverdrawPicture.of(shownCounts,
+                            "depth-test failures: writes that lost each pixel's depth test")
+                    : simpview.window.instruments.OverdrawPicture.of(shownCounts), null, true);
+            status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost writes at a pixel"
+                    : "Overdraw: up to " + overdrawMax + " writes at a pixel")
+                    + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
         });
     }
 

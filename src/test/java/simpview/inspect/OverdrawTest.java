@@ -12,7 +12,10 @@ import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 
-/** For sampled pixels of random scenes, the history's written plus depth-failed entries are the overdraw count. */
+/**
+ * For sampled pixels of random scenes, the history's written plus depth-failed
+ * entries are the overdraw count, and its depth-failed ones the failure count.
+ */
 class OverdrawTest {
 
     @TempDir
@@ -28,7 +31,8 @@ class OverdrawTest {
             InspectedScene lit = InspectedScene.of(RandomLitScenes.write(dir, seed));
             InspectedScene cued = InspectedScene.of(RandomCuedScenes.write(dir, seed));
             for (InspectedScene scene : new InspectedScene[] {lit, cued}) {
-                int[] counts = Overdraw.of(scene, models);
+                Overdraw.Counts both = Overdraw.counts(scene, models);
+                int[] counts = both.reached();
                 Random random = new Random(seed);
                 for (int k = 0; k < 16; k++) {
                     int x = random.nextInt(PageCanvas.PANEL);
@@ -38,6 +42,9 @@ class OverdrawTest {
                             || e.outcome() == Outcome.DEPTH_FAILED).count();
                     assertEquals(counts[y * PageCanvas.PANEL + x], reached,
                             scene.file().getFileName() + " (" + x + ", " + y + ")\n" + report.text(true, false));
+                    long failed = report.history().stream().filter(e -> e.outcome() == Outcome.DEPTH_FAILED).count();
+                    assertEquals(both.failed()[y * PageCanvas.PANEL + x], failed,
+                            scene.file().getFileName() + " (" + x + ", " + y + ") failures");
                     if (reached > 1) {
                         overdrawn++;
                     }

@@ -64,6 +64,13 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         assertTrue(driver.onEdt(() -> window.status().messageText()).contains("up to 3 writes"));
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+        // Shift+V: at the centre the farthest triangle, drawn last, lost to the two before it: at most 1 loss.
+        driver.robot().keyPress(KeyEvent.VK_SHIFT);
+        driver.press(KeyEvent.VK_V);
+        driver.robot().keyRelease(KeyEvent.VK_SHIFT);
+        driver.awaitEdt(() -> window.overdrawShownMax() == 1, "the depth-test failures, at most 1");
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
 
         // K: the back faces: only the last triangle, (60, 60) (60, 90) (90, 60), is clockwise.
         driver.press(KeyEvent.VK_K);

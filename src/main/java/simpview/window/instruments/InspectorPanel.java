@@ -114,15 +114,15 @@ public final class InspectorPanel {
      * The overdraw of {@code scene}, counted on the inspector's thread, then
      * given to {@code show} on the EDT (null when the scene has an error).
      */
-    public void overdraw(InspectedScene scene, java.util.function.Consumer<int[]> show) {
+    public void overdraw(InspectedScene scene, java.util.function.Consumer<simpview.inspect.Overdraw.Counts> show) {
         worker.submit(() -> {
-            int[] counts;
+            simpview.inspect.Overdraw.Counts counts;
             try {
-                counts = simpview.inspect.Overdraw.of(scene, models);
+                counts = simpview.inspect.Overdraw.counts(scene, models);
             } catch (SceneException | RuntimeException e) {
                 counts = null;
             }
-            int[] shown = counts;
+            simpview.inspect.Overdraw.Counts shown = counts;
             SwingUtilities.invokeLater(() -> show.accept(shown));
         });
     }

@@ -22,6 +22,11 @@ public final class OverdrawPicture {
 
     /** The picture of {@code counts} (row by row from the bottom), its legend in the top margin. */
     public static BufferedImage of(int[] counts) {
+        return of(counts, "overdraw: writes that reached each pixel's depth test");
+    }
+
+    /** The same with another title above the scale (the depth-test failures). */
+    public static BufferedImage of(int[] counts, String title) {
         int size = PageCanvas.SIZE;
         int panel = PageCanvas.PANEL;
         int margin = PageCanvas.MARGIN;
@@ -44,7 +49,7 @@ public final class OverdrawPicture {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.setColor(Color.BLACK);
-        g.drawString("overdraw: writes that reached each pixel's depth test", margin, 16);
+        g.drawString(title, margin, 16);
         int barLeft = margin;
         int barWidth = panel;
         for (int i = 0; i < barWidth; i++) {
