@@ -20,7 +20,7 @@ import simpview.compare.ComparisonReport;
 import simpview.compare.HeatMap;
 import simpview.compare.Picture;
 import simpview.pages.PageContext;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
@@ -124,7 +124,7 @@ public final class CompareCommand implements Callable<Integer> {
             usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
         }
-        usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);
+        usage(page == null || page >= 1 && page <= Assignment2.COUNT, "--page must be 1 to " + Assignment2.COUNT + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }

@@ -20,7 +20,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
@@ -126,8 +126,8 @@ public final class RenderCommand implements Callable<Integer> {
             return;
         }
         boolean pages = what.scene == null;
-        usage(what.page == null || what.page >= 1 && what.page <= Pages.COUNT,
-                "--page must be 1 to " + Pages.COUNT + ", not " + what.page);
+        usage(what.page == null || what.page >= 1 && what.page <= Assignment2.COUNT,
+                "--page must be 1 to " + Assignment2.COUNT + ", not " + what.page);
         usage(what.all ? outDir != null : out != null,
                 what.all ? "--all needs --out-dir D" : "missing --out F.png");
         usage(what.all ? out == null : outDir == null,
@@ -186,7 +186,7 @@ public final class RenderCommand implements Callable<Integer> {
         PageDrawing drawing = new PageDrawing(monitor());
         PageContext context = context();
         int code = ExitCode.OK;
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             BufferedImage image;
             try {
                 image = drawing.page(n, context).image();
@@ -241,10 +241,10 @@ public final class RenderCommand implements Callable<Integer> {
         PageRenderer renderer = new PageRenderer();
         PageContext context = context();
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             try {
-                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
-                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
+                String seedNote = Assignment2.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Assignment2.page(n).title() + seedNote, renderer.renderImage(n, context)));
             } catch (SceneException e) {
                 err().println("page " + n + " left out: " + e.getMessage());
             }
@@ -253,7 +253,7 @@ public final class RenderCommand implements Callable<Integer> {
             return ExitCode.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
-        return tiles.size() == Pages.COUNT ? written : ExitCode.SCENE_ERROR;
+        return tiles.size() == Assignment2.COUNT ? written : ExitCode.SCENE_ERROR;
     }
 
     /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */

@@ -19,7 +19,7 @@ public final class PageRenderer {
      */
     public PageCanvas render(int pageNumber, PageContext context) throws SceneException {
         canvas.clear();
-        Pages.page(pageNumber).draw(canvas, context);
+        Assignment2.page(pageNumber).draw(canvas, context);
         return canvas;
     }
 

@@ -17,7 +17,7 @@ import simpview.geometry.Matrix4;
 public final class LitState implements PointShader {
 
     /** How filled polygons are shaded. */
-    public enum Shading { FLAT, GOURAUD, PHONG }
+    public enum ShadingMode { FLAT, GOURAUD, PHONG }
 
     private Camera camera = Camera.PARALLEL;
     private Matrix4 worldToCamera = Matrix4.identity();
@@ -32,7 +32,7 @@ public final class LitState implements PointShader {
     private double ks = 0.3;
     private double p = 8;
     private Fog fog = Fog.NONE;
-    private Shading shading = Shading.PHONG;
+    private ShadingMode shading = ShadingMode.PHONG;
     private final Lights lights = new Lights();
     private final Lighting lighting = new Lighting(lights);
 
@@ -98,7 +98,7 @@ public final class LitState implements PointShader {
         fog = f;
     }
 
-    public void setShading(Shading s) {
+    public void setShading(ShadingMode s) {
         shading = s;
     }
 
@@ -125,7 +125,7 @@ public final class LitState implements PointShader {
         return fog;
     }
 
-    public Shading shading() {
+    public ShadingMode shading() {
         return shading;
     }
 

@@ -14,7 +14,7 @@ import java.util.Random;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -47,7 +47,7 @@ class ReferenceComparisonTest {
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"page4.simp", "page5.simp"})
     void ownScenes(String name) throws Exception {
-        compare(GoldenCase.ownSimpDir().resolve(name), name.equals("page4.simp") ? Rgb.GREEN : Pages.PAGE5_NEAR);
+        compare(GoldenCase.ownSimpDir().resolve(name), name.equals("page4.simp") ? Rgb.GREEN : Assignment2.PAGE5_NEAR);
     }
 
     @ParameterizedTest(name = "seed {0}")

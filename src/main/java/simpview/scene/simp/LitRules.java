@@ -81,9 +81,9 @@ final class LitRules implements RuleSet {
             case SURFACE -> surface(c);
             case DEPTH -> depth(c);
             case LIGHT -> light(c, ctm);
-            case FLAT -> shading(LitState.Shading.FLAT);
-            case GOURAUD -> shading(LitState.Shading.GOURAUD);
-            case PHONG -> shading(LitState.Shading.PHONG);
+            case FLAT -> shading(LitState.ShadingMode.FLAT);
+            case GOURAUD -> shading(LitState.ShadingMode.GOURAUD);
+            case PHONG -> shading(LitState.ShadingMode.PHONG);
             case PUSH, POP, SCALE, TRANSLATE, ROTATE, LINE, POLYGON, FILE, WIRE, FILLED ->
                     throw new IllegalArgumentException(c.kind.spelling + " is the same under both rules: SimpClient's");
         };
@@ -152,7 +152,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean shading(LitState.Shading shading) {
+    private boolean shading(LitState.ShadingMode shading) {
         state.setShading(shading);
         return false;
     }
