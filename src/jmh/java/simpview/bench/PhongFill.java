@@ -16,6 +16,7 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentLayout;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
@@ -44,7 +45,7 @@ import simpview.surface.PageCanvas;
 @Fork(1)
 public class PhongFill {
 
-    private static final int CHANNELS = FragmentStage.PHONG_CHANNELS;
+    private static final int CHANNELS = FragmentLayout.PHONG_CHANNELS;
     private static final int STRIDE = 3 + CHANNELS;
 
     private final PageCanvas canvas = new PageCanvas();

@@ -57,6 +57,6 @@ public final class ScenePage implements Page {
                     + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
         Drawable target = context.ownColours() ? canvas.depthTested() : canvas.depthCued(near, Rgb.BLACK);
-        SceneRenderer.draw(file, target, context.monitor());
+        SceneRenderer.draw(file, target, context.monitor(), canvas.drawingThreads(), canvas.provenance());
     }
 }

@@ -14,6 +14,7 @@ import simpview.raster.WireframePolygonRenderer;
 import simpview.scene.DepthCuedGeometry;
 import simpview.scene.GeometryStage;
 import simpview.scene.LitGeometry;
+import simpview.scene.LitPrimitives;
 import simpview.scene.Painter;
 import simpview.scene.PrimitiveSink;
 import simpview.scene.PrimitiveTrace;
@@ -91,6 +92,13 @@ public final class SimpClient {
     /** A client for a lit scene: its fragments go through {@code fragments}; .obj models come from {@code models}. */
     public static SimpClient lit(FragmentStage fragments, ObjLibrary models) {
         return new SimpClient(fragments, models, new FileStack());
+    }
+
+    /** A lit client's primitives are recorded in {@code to}, to be drawn by its threads (null: drawn at once). */
+    void recordTo(LitPrimitives to) {
+        if (lit != null) {
+            lit.recordTo(to);
+        }
     }
 
     /** True for a client that draws by the lit rules. */
