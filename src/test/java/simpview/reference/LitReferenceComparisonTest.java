@@ -12,8 +12,10 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
 import simpview.scene.simp.SceneRules;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
+import simpview.testing.ThreadCounts;
 
 /**
  * simpview against the independent reference on lit scenes (SPEC Part 2):
@@ -31,12 +33,15 @@ class LitReferenceComparisonTest {
     Path dir;
 
     /** simpview's picture of a scene, as a 750x750 page, by the rules the scene calls for. */
-    static BufferedImage simpviewRender(Path scene) throws Exception {
+    static BufferedImage simpviewRender(Path scene, int threads) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        if (SceneRules.of(scene).lit()) {
-            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
-        } else {
-            SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            canvas.drawWith(drawing);
+            if (SceneRules.of(scene).lit()) {
+                SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+            } else {
+                SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE, drawing, null);
+            }
         }
         return canvas.image();
     }
@@ -61,17 +66,23 @@ class LitReferenceComparisonTest {
         assertAgrees(RandomLitScenes.write(dir, seed));
     }
 
-    /** simpview's page agrees with the reference's, and its margins are white. */
+    /** simpview's page, drawn by 1, 2 and 7 threads, agrees with the reference's, and its margins are white. */
     static void assertAgrees(Path scene) throws Exception {
-        BufferedImage ours = simpviewRender(scene);
-        double share = agreement(ours, ReferencePage.render(scene));
-        assertTrue(share >= REQUIRED, scene.getFileName() + ": only " + String.format(Locale.ROOT, "%.4f", 100 * share)
+        BufferedImage reference = ReferencePage.render(scene);
+        for (int threads : ThreadCounts.ALL) {
+            assertAgrees(scene, threads, simpviewRender(scene, threads), reference);
+        }
+    }
+
+    private static void assertAgrees(Path scene, int threads, BufferedImage ours, BufferedImage reference) {
+        double share = agreement(ours, reference);
+        assertTrue(share >= REQUIRED, scene.getFileName() + " on " + threads + " threads: only " + String.format(Locale.ROOT, "%.4f", 100 * share)
                 + " % of panel pixels match the reference");
         for (int y = 0; y < RefRaster.PAGE; y++) {
             for (int x = 0; x < RefRaster.PAGE; x++) {
                 if (x < RefRaster.MARGIN || x >= RefRaster.PAGE - RefRaster.MARGIN || y < RefRaster.MARGIN
                         || y >= RefRaster.PAGE - RefRaster.MARGIN) {
-                    assertEquals(0xFFFFFF, ours.getRGB(x, y) & 0xFFFFFF, "margin " + x + "," + y);
+                    assertEquals(0xFFFFFF, ours.getRGB(x, y) & 0xFFFFFF, "margin " + x + "," + y + " on " + threads + " threads");
                 }
             }
         }

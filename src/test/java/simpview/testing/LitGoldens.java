@@ -8,6 +8,7 @@ import java.util.List;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.SceneRenderer;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 
 /**
@@ -39,9 +40,17 @@ public final class LitGoldens {
         }
 
         public BufferedImage render() throws SceneException {
-            PageCanvas canvas = new PageCanvas();
-            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
-            return canvas.snapshot();
+            return render(1);
+        }
+
+        /** The scene drawn by that many threads. */
+        public BufferedImage render(int threads) throws SceneException {
+            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                PageCanvas canvas = new PageCanvas();
+                canvas.drawWith(drawing);
+                SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+                return canvas.snapshot();
+            }
         }
     }
 
