@@ -10,8 +10,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
-import simpview.scene.CuedPrimitives;
-import simpview.scene.Painter;
+import simpview.stage.CuedPrimitives;
+import simpview.stage.Painter;
 
 /**
  * Guards the raster fast paths against any change of output while they are

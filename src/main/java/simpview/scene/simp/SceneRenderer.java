@@ -1,8 +1,8 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
-import simpview.scene.CuedPrimitives;
-import simpview.scene.LitPrimitives;
+import simpview.stage.CuedPrimitives;
+import simpview.stage.LitPrimitives;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.FragmentStage;
