@@ -6,6 +6,7 @@ import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -22,8 +23,9 @@ public final class OwnPictures {
     private final Map<CompareTarget, Picture> drawn = new HashMap<>();
 
     /** Scenes are depth-cued from {@code near} to {@code far}; null means the defaults, white and black. */
-    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor) {
-        this.drawing = new PageDrawing(monitor);
+    /** Draws with {@code threads}, which the caller owns and closes. */
+    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor, DrawingThreads threads) {
+        this.drawing = new PageDrawing(monitor, threads);
         this.context = context;
         this.near = near;
         this.far = far;

@@ -9,6 +9,7 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -19,11 +20,13 @@ import simpview.surface.Rgb;
  */
 public final class PageDrawing {
 
-    private final PageRenderer renderer = new PageRenderer();
+    private final PageRenderer renderer;
     private final SceneMonitor monitor;
 
-    PageDrawing(SceneMonitor monitor) {
+    /** Draws with {@code threads}, which the caller owns and closes. */
+    PageDrawing(SceneMonitor monitor, DrawingThreads threads) {
         this.monitor = monitor;
+        this.renderer = new PageRenderer(threads);
     }
 
     /** Page n; on a scene error the canvas keeps what was drawn before it and the error is thrown on. */

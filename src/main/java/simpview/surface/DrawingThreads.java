@@ -2,6 +2,7 @@ package simpview.surface;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -114,6 +115,9 @@ public final class DrawingThreads implements AutoCloseable {
                     break;
                 } catch (ExecutionException e) {
                     failure = failure == null ? e.getCause() : failure;
+                    break;
+                } catch (CancellationException e) {
+                    failure = failure == null ? e : failure; // closed while drawing
                     break;
                 } catch (InterruptedException e) {
                     interrupted = true;

@@ -12,11 +12,20 @@ import simpview.pages.PageContext;
  * @param simpDir where the course's page6.simp to page8.simp are looked for
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
+ * @param threads how many threads draw each picture (the window's render thread and its helpers)
  */
-public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
+public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, int threads) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        }
+    }
+
+    /** Drawn by one thread per processor. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
+        this(seed, simpDir, scene, sceneList, Runtime.getRuntime().availableProcessors());
     }
 
     /** The eight pages, and perhaps a scene to open at start. */
@@ -29,7 +38,7 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, threads);
     }
 
     PageContext pageContext() {

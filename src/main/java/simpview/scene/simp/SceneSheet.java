@@ -45,7 +45,7 @@ public record SceneSheet(Path file, Rgb near, Rgb far) {
         if (SceneRules.of(file).lit()) {
             drawer.drawLit(file, canvas, monitor);
         } else {
-            drawer.draw(file, ownColours ? canvas.depthTested() : canvas.depthCued(near, far), monitor);
+            drawer.draw(file, ownColours ? canvas.depthTested() : canvas.depthCued(near, far), monitor, canvas);
         }
     }
 }
