@@ -29,6 +29,8 @@ public final class DrawingThreads implements AutoCloseable {
     private final int threads;
     /** The workers; null for one thread. */
     private final ExecutorService workers;
+    /** Wall time the callers of forEach spent in it, summed: the parallel part of drawing. */
+    private long nanosInBands;
 
     private DrawingThreads(int threads) {
         if (threads < 1) {
@@ -82,6 +84,25 @@ public final class DrawingThreads implements AutoCloseable {
      * done. The first failure is thrown on, once all have stopped.
      */
     public void forEach(int count, IntConsumer task) {
+        long start = System.nanoTime();
+        try {
+            runAll(count, task);
+        } finally {
+            nanosInBands += System.nanoTime() - start;
+        }
+    }
+
+    /**
+     * The wall time spent in {@link #forEach} so far, summed over its calls:
+     * how long the bands took, against the whole drawing's time (the rest,
+     * reading and the geometry stage, runs on one thread). For benchmarks;
+     * read on the thread that calls forEach.
+     */
+    public long nanosInBands() {
+        return nanosInBands;
+    }
+
+    private void runAll(int count, IntConsumer task) {
         if (workers == null || count == 1) {
             for (int i = 0; i < count; i++) {
                 task.accept(i);
