@@ -147,6 +147,36 @@ public final class LitState implements PointShader {
         lighting.shade(points);
     }
 
+    /**
+     * What lights a point now, as numbers, for a program that lights the
+     * same scene elsewhere (the llvmpipe benchmark): ambient r, g, b, ks, p,
+     * 1 for a perspective view (else 0), the number of lights, then per light
+     * its camera-space x, y, z, intensity r, g, b and attenuation A, B.
+     */
+    public double[] lightingNumbers() {
+        int n = lights.count();
+        double[] v = new double[7 + 8 * n];
+        v[0] = ambientR;
+        v[1] = ambientG;
+        v[2] = ambientB;
+        v[3] = ks;
+        v[4] = p;
+        v[5] = camera.isPerspective() ? 1 : 0;
+        v[6] = n;
+        for (int i = 0; i < n; i++) {
+            int o = 7 + 8 * i;
+            v[o] = lights.x(i);
+            v[o + 1] = lights.y(i);
+            v[o + 2] = lights.z(i);
+            v[o + 3] = lights.red(i);
+            v[o + 4] = lights.green(i);
+            v[o + 5] = lights.blue(i);
+            v[o + 6] = lights.a(i);
+            v[o + 7] = lights.b(i);
+        }
+        return v;
+    }
+
     /** Changes whenever what {@link #shade} does changes: equal versions light every point alike. */
     public int lightingVersion() {
         return lightingVersion;

@@ -101,6 +101,11 @@ public final class SimpClient {
         }
     }
 
+    /** A lit client's state as the commands so far left it (null for a depth-cued one): read, never to be changed. */
+    public LitState litState() {
+        return state;
+    }
+
     /** True for a client that draws by the lit rules. */
     public boolean isLit() {
         return lit != null;
