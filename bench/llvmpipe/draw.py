@@ -5,7 +5,7 @@ filled triangles simpview's geometry stage hands its rasterizers, grouped by
 how they are lit) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
 context), with simpview's lighting formula, fog and depth test in GLSL, per
 pixel. Warm: the triangles are uploaded and the shaders compiled first, and
-20 redraws run before 15 are timed (clear colour and depth, one draw call
+20 redraws run before 21 are timed (clear colour and depth, one draw call
 per group, glFinish). Prints one line per page: NAME median_ms best_ms.
 
 Usage: python draw.py DIR NAME...   (with SIMPVIEW_LLVMPIPE_PNG=1 also writes
@@ -179,7 +179,7 @@ def main():
         for _ in range(20):
             redraw()
         times = []
-        for _ in range(15):
+        for _ in range(21):
             start = time.perf_counter()
             redraw()
             times.append((time.perf_counter() - start) * 1000)

@@ -33,7 +33,7 @@ import simpview.surface.PageCanvas;
  * attributes simpview interpolates), grouped by how they are lit, so that
  * OpenGL draws the same fragments with the same lighting in GLSL; then
  * times simpview's warm redraws of the page on 1 and on 2 threads (median
- * and best of 15, after 20 to warm up) and prints them, one line of
+ * and best of 21, after 20 to warm up) and prints them, one line of
  * {@code page ms1 best1 ms2 best2 triangles skipped} per page.
  *
  * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
@@ -71,7 +71,7 @@ public final class LlvmpipeExport {
         }
     }
 
-    /** Median and best of 15 warm redraws, in ms. */
+    /** Median and best of 21 warm redraws, in ms. */
     private static double[] time(Path file, int threads) throws Exception {
         ObjLibrary models = new ObjLibrary();
         try (DrawingThreads drawing = DrawingThreads.of(threads)) {
@@ -81,7 +81,7 @@ public final class LlvmpipeExport {
                 canvas.clear();
                 SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
             }
-            double[] t = new double[15];
+            double[] t = new double[21];
             for (int r = 0; r < t.length; r++) {
                 long start = System.nanoTime();
                 canvas.clear();
