@@ -19,9 +19,9 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.surface.DrawingThreads;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import simpview.surface.DrawingThreads;
 
 /**
  * One course page of the third or fourth assignment (@Param scene, as
@@ -50,10 +50,10 @@ public class LitPages {
     @Param({"1"})
     public int threads;
 
+    private DrawingThreads drawing;
     private final PageCanvas canvas = new PageCanvas();
     private final ObjLibrary models = new ObjLibrary();
     private Path file;
-    private DrawingThreads drawing;
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
@@ -79,7 +79,7 @@ public class LitPages {
     @Benchmark
     public PageCanvas clearAndDraw() throws SceneException {
         canvas.clear();
-        SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
         return canvas;
     }
 }

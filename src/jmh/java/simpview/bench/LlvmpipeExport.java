@@ -15,7 +15,7 @@ import simpview.geometry.Camera;
 import simpview.raster.FragmentLayout;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SimpClient;
 import simpview.scene.simp.SimpInterpreter;
 import simpview.shading.Fog;
@@ -79,13 +79,13 @@ public final class LlvmpipeExport {
             canvas.drawWith(drawing);
             for (int r = 0; r < 20; r++) {
                 canvas.clear();
-                SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
             }
             double[] t = new double[21];
             for (int r = 0; r < t.length; r++) {
                 long start = System.nanoTime();
                 canvas.clear();
-                SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
                 t[r] = (System.nanoTime() - start) / 1e6;
             }
             Arrays.sort(t);
@@ -96,16 +96,18 @@ public final class LlvmpipeExport {
     private static Export export(Path file) throws Exception {
         PageCanvas canvas = new PageCanvas();
         canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-        SimpClient client = SimpClient.lit(new FragmentStage(canvas.zbuffer(), canvas.litPanel()), new ObjLibrary());
-        Export export = new Export(client);
-        client.follow(export);
+        Export export = new Export();
+        SimpClient client = SimpClient.lit(new FragmentStage(canvas.zbuffer(), canvas.litPanel()), new ObjLibrary(),
+                export);
+        export.client = client;
         new SimpInterpreter(client, SceneMonitor.NONE).run(file);
         return export;
     }
 
     /** Follows the primitives as they reach the rasterizers, in drawing order. */
     private static final class Export implements PrimitiveTrace {
-        private final SimpClient client;
+        /** The client whose primitives are followed: its lit state is the one in force for each. */
+        SimpClient client;
         private final List<float[]> groupUniforms = new ArrayList<>();
         private final List<FloatList> groupVertices = new ArrayList<>();
         private Fog lastFog;
@@ -114,9 +116,6 @@ public final class LlvmpipeExport {
         int triangles;
         int skipped;
 
-        Export(SimpClient client) {
-            this.client = client;
-        }
 
         @Override
         public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {

@@ -26,10 +26,10 @@ import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.surface.DrawingThreads;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
+import simpview.surface.DrawingThreads;
 
 /**
  * One frame of a turning view, as the window's render thread makes it while
@@ -67,12 +67,12 @@ public class OrbitFrame {
     @Param({"false"})
     public boolean record;
 
+    private static final double YAW = 30;
+    private static final double PITCH = 15;
+
     /** Threads drawing each frame's bands (1: drawn as read, on the benchmark's thread). */
     @Param({"1"})
     public int threads;
-
-    private static final double YAW = 30;
-    private static final double PITCH = 15;
 
     private PageRenderer renderer;
     private DrawingThreads drawing;
@@ -151,7 +151,7 @@ public class OrbitFrame {
             renderer.render(7, context);
         } else {
             canvas.clear();
-            SceneRenderer.drawLit(litFile, canvas, monitor, models);
+            ScenePipeline.draw(litFile, canvas, ScenePipeline.Options.lit(models), monitor);
         }
         if (!copy) {
             return null;

@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 
@@ -97,7 +97,7 @@ public final class SerialShare {
         canvas.drawWith(threads);
         long start = System.nanoTime();
         canvas.clear();
-        SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
         return System.nanoTime() - start;
     }
 }

@@ -6,6 +6,7 @@ import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -22,8 +23,11 @@ public final class OwnPictures {
     private final Rgb far;
     private final Map<CompareTarget, Picture> drawn = new HashMap<>();
 
-    /** Scenes are depth-cued from {@code near} to {@code far}; null means the defaults, white and black. */
-    /** Draws with {@code threads}, which the caller owns and closes. */
+    /**
+     * Scenes are depth-cued from {@code near} to {@code far}; null means the
+     * defaults, white and black. Drawn with {@code threads}, which the caller
+     * owns and closes.
+     */
     OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor, DrawingThreads threads) {
         this.drawing = new PageDrawing(monitor, threads);
         this.context = context;
@@ -34,8 +38,16 @@ public final class OwnPictures {
     Picture of(CompareTarget target) throws SceneException {
         Picture picture = drawn.get(target);
         if (picture == null) {
-            PageCanvas canvas = target.isPage() ? drawing.page(target.page(), context)
-                    : drawing.scene(target.scene(), near, far);
+            PageCanvas canvas;
+            if (target.isPage()) {
+                canvas = drawing.page(target.page(), context);
+            } else {
+                ScenePipeline.Drawn scene = drawing.scene(target.scene(), near, far, false);
+                if (!scene.drawn()) {
+                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene));
+                }
+                canvas = drawing.canvas();
+            }
             picture = Picture.ofPage(canvas.image(), "simpview's " + target.describe(context));
             drawn.put(target, picture);
         }

@@ -40,7 +40,7 @@ class LitHarnessTest {
     @Test
     void theMeasureCatchesAWrongPicture() throws Exception {
         double share = LitReferenceComparisonTest.agreement(
-                LitReferenceComparisonTest.simpviewRender(depthCuedScene(4), 1), ReferencePage.render(depthCuedScene(5)));
+                LitReferenceComparisonTest.simpviewRender(depthCuedScene(4)), ReferencePage.render(depthCuedScene(5)));
         assertTrue(share < LitReferenceComparisonTest.REQUIRED, "two different scenes agree on " + share);
     }
 

@@ -1,5 +1,6 @@
 package simpview.reference;
 
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,11 +11,10 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.scene.simp.SceneRules;
-import simpview.surface.DrawingThreads;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 import simpview.testing.ThreadCounts;
 
 /**
@@ -22,7 +22,7 @@ import simpview.testing.ThreadCounts;
  * every A3 page, every A4 page and random lit scenes must agree on at least
  * 99.9 % of panel pixels within 3/255 per channel, with one pixel of slack;
  * the margins stay white. simpview is asked through one adapter,
- * {@link #simpviewRender}.
+ * {@link #simpviewRender}, and each page is drawn by 1, 2 and 7 threads.
  */
 class LitReferenceComparisonTest {
 
@@ -33,15 +33,16 @@ class LitReferenceComparisonTest {
     Path dir;
 
     /** simpview's picture of a scene, as a 750x750 page, by the rules the scene calls for. */
+    static BufferedImage simpviewRender(Path scene) throws Exception {
+        return simpviewRender(scene, 1);
+    }
+
+    /** The same, drawn by that many threads. */
     static BufferedImage simpviewRender(Path scene, int threads) throws Exception {
         PageCanvas canvas = new PageCanvas();
         try (DrawingThreads drawing = DrawingThreads.of(threads)) {
             canvas.drawWith(drawing);
-            if (SceneRules.of(scene).lit()) {
-                SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
-            } else {
-                SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE, drawing, null);
-            }
+            DrawnScenes.draw(scene, canvas);
         }
         return canvas.image();
     }
@@ -66,7 +67,7 @@ class LitReferenceComparisonTest {
         assertAgrees(RandomLitScenes.write(dir, seed));
     }
 
-    /** simpview's page, drawn by 1, 2 and 7 threads, agrees with the reference's, and its margins are white. */
+    /** simpview's page agrees with the reference's, and its margins are white. */
     static void assertAgrees(Path scene) throws Exception {
         BufferedImage reference = ReferencePage.render(scene);
         for (int threads : ThreadCounts.ALL) {

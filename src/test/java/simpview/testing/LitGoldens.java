@@ -7,9 +7,9 @@ import java.util.ArrayList;
 import java.util.List;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.surface.DrawingThreads;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import simpview.surface.DrawingThreads;
 
 /**
  * The golden images of lit scenes: the project's own (own-lit-shading,
@@ -48,7 +48,8 @@ public final class LitGoldens {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 PageCanvas canvas = new PageCanvas();
                 canvas.drawWith(drawing);
-                SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()),
+                        SceneMonitor.NONE);
                 return canvas.snapshot();
             }
         }

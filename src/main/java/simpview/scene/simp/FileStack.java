@@ -41,6 +41,11 @@ final class FileStack implements AutoCloseable {
     private final Map<Name, Found> found = new HashMap<>();
     private final Map<Path, Recording> recordings = new HashMap<>();
     private final long smallFileLimit;
+    /** The working directory names are also looked for in (where the course's programs looked), absolute. */
+    private final Path workingDir;
+    /** Every file the scene read or looked for, each once, in the order met: what a window watches. */
+    private final Set<Path> reachedKeys = new HashSet<>();
+    private final List<Path> reached = new ArrayList<>();
     private long cachedBytes;
     private long linesOfFinishedFiles;
 
@@ -50,11 +55,18 @@ final class FileStack implements AutoCloseable {
 
     /** @param smallFileLimit files up to this many bytes are read whole and kept; -1 streams every file */
     FileStack(long smallFileLimit) {
+        this(smallFileLimit, Path.of("").toAbsolutePath());
+    }
+
+    /** @param workingDir the folder names are looked for in after the including file's, absolute */
+    FileStack(long smallFileLimit, Path workingDir) {
         this.smallFileLimit = smallFileLimit;
+        this.workingDir = workingDir;
     }
 
     /** Starts with the scene's top file. */
     void openTop(Path file) throws SceneException {
+        reach(file);
         Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
         push(open(file, real), real);
     }
@@ -142,20 +154,61 @@ final class FileStack implements AutoCloseable {
      * programs looked), by {@link FilePlaces}. When it is in neither, the
      * error names every place looked.
      */
-    static Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
+    private Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
         FilePlaces places;
         try {
-            places = FilePlaces.of(from.file(), name, extension);
+            places = FilePlaces.of(from.file(), name, extension, workingDir);
         } catch (InvalidPathException e) {
             throw from.error(c.argumentIndex, "not a valid file name: '" + name + "'");
         }
         Path found = places.found();
-        if (found != null) {
-            return found;
+        if (found == null) {
+            reach(places.here());
+            reach(places.working());
+            String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
+            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
+                    + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
         }
-        String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
-        throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
-                + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
+        reach(found);
+        if (!places.hereIsWorking() && found.equals(places.working())) {
+            reach(places.here()); // a file appearing beside the including one would take over
+        }
+        return found;
+    }
+
+    /** The .obj file an {@code obj} command of the top file names, found as {@code file} names are. */
+    Path locateModel(Command c) throws SceneException {
+        return locate(c.fileName, ".obj", top(), c);
+    }
+
+    /** "file:line" of the command being carried out, for messages. */
+    String place() {
+        SimpReader r = top();
+        return r.file().getFileName() + ":" + r.lineNumber();
+    }
+
+    /** Notes a file the scene read or looked for, once. */
+    private void reach(Path file) {
+        Path key;
+        try {
+            key = file.toRealPath();
+        } catch (IOException | SecurityException e) {
+            key = file.toAbsolutePath().normalize();
+        }
+        if (reachedKeys.add(key)) {
+            reached.add(file);
+        }
+    }
+
+    /**
+     * Every file the scene read or looked for so far, each once, in the order
+     * met: the top file, each included .simp file and each .obj model, and
+     * for a name found in neither place both places (for a name found only in
+     * the working directory, also the place that would take it over), so
+     * that a window watching them sees a file appear too.
+     */
+    List<Path> reached() {
+        return List.copyOf(reached);
     }
 
     /**

@@ -11,12 +11,12 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import simpview.scene.obj.ObjLibrary;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
-import simpview.surface.Rgb;
 import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
 
@@ -91,11 +91,9 @@ class BandedDrawingTest {
         };
         try (DrawingThreads drawing = DrawingThreads.of(threads)) {
             canvas.drawWith(drawing);
-            if (c.lit()) {
-                SceneRenderer.drawLit(c.scene(), canvas, monitor);
-            } else {
-                SceneRenderer.draw(c.scene(), canvas.depthCued(Rgb.WHITE, Rgb.BLACK), monitor, drawing, provenance);
-            }
+            ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
+                    ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
+            assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
         }
         int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
         double[] z = canvas.zbuffer().copyDepths();
