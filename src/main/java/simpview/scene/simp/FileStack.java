@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.text.LineSource;
 
@@ -65,10 +66,25 @@ final class FileStack implements AutoCloseable {
     }
 
     /** Starts with the scene's top file. */
-    void openTop(Path file) throws SceneException {
+    void openTop(Path named) throws SceneException {
+        Path file = withExtension(named);
         reach(file);
         Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
         push(open(file, real), real);
+    }
+
+    /**
+     * The top file as named, or with .simp added when it was named without
+     * and only that exists (SPEC: a scene may be named without .simp, as the
+     * course's programs took it).
+     */
+    static Path withExtension(Path named) {
+        Path name = named.getFileName();
+        if (name == null || name.toString().endsWith(".simp") || Files.exists(named)) {
+            return named;
+        }
+        Path simp = named.resolveSibling(name + ".simp");
+        return Files.exists(simp) ? simp : named;
     }
 
     /**
@@ -225,10 +241,11 @@ final class FileStack implements AutoCloseable {
         } catch (NoSuchFileException e) {
             throw error.apply("file not found: " + shown);
         } catch (IOException e) {
-            throw error.apply("cannot open " + shown + ": " + e.getMessage());
+            throw error.apply("cannot open " + shown + ": " + FileProblem.of(candidate, e));
         }
-        if (!Files.isRegularFile(real)) {
-            throw error.apply((Files.isDirectory(real) ? "not a file but a folder: " : "not a regular file: ") + shown);
+        String notAFile = FileProblem.notAFile(real);
+        if (notAFile != null) {
+            throw error.apply(notAFile + ": " + shown);
         }
         return real;
     }

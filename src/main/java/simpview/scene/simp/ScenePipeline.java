@@ -239,6 +239,10 @@ public final class ScenePipeline {
     }
 
     private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor) {
+        if (!client.drew()) {
+            monitor.warning(files.reached().get(0).getFileName()
+                    + " drew nothing: no line, polygon or obj in it or in the files it includes");
+        }
         double[] centre = client.shownCentre();
         if (centre != null) {
             monitor.shownCentre(centre);
