@@ -51,7 +51,7 @@ public class Pages {
     public void setUp() throws SceneException {
         drawing = DrawingThreads.of(threads);
         renderer = new PageRenderer(drawing);
-        Path own = PageContext.defaultSimpDir();
+        Path own = PageContext.PROJECT_SCENES;
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, own, SceneMonitor.NONE);
         renderer.render(page, context); // fails the trial at once if the page cannot be drawn

@@ -12,9 +12,11 @@ import simpview.pages.PageContext;
  * @param simpDir where the course's page6.simp to page8.simp are looked for
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
+ * @param ownScenes where the project's own scenes (pages 4 and 5) are
  * @param threads how many threads draw each picture (the window's render thread and its helpers)
  */
-public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, int threads) {
+public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
+        int threads) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
@@ -24,8 +26,13 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     /** Drawn by one thread per processor. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
+        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors());
+    }
+
+    /** Started from the repository's folder: the project's scenes in simp/. */
     public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
-        this(seed, simpDir, scene, sceneList, Runtime.getRuntime().availableProcessors());
+        this(seed, simpDir, scene, sceneList, PageContext.PROJECT_SCENES);
     }
 
     /** The eight pages, and perhaps a scene to open at start. */
@@ -34,14 +41,14 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     static WindowOptions defaults() {
-        return new WindowOptions(PageContext.DEFAULT_SEED, PageContext.defaultSimpDir(), Optional.empty());
+        return new WindowOptions(PageContext.DEFAULT_SEED, PageContext.PROJECT_SCENES, Optional.empty());
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, threads);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads);
     }
 
     PageContext pageContext() {
-        return PageContext.defaults().withSeed(seed).withSimpDir(simpDir);
+        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir);
     }
 }
