@@ -7,6 +7,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
@@ -24,6 +25,7 @@ import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
 @Command(name = "compare",
@@ -99,15 +101,20 @@ public final class CompareCommand implements Callable<Integer> {
             description = "the share in percent that passes (default: 99)")
     private double min = 99;
 
+    @Mixin
+    private ThreadsOption threads;
+
     @Override
     public Integer call() {
         checkOptions();
-        OwnPictures own = new OwnPictures(context(), near, far, monitor());
-        if (dir != null) {
-            CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
-            return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+        try (DrawingThreads drawing = threads.open()) {
+            OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
+            if (dir != null) {
+                CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
+                return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+            }
+            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
         }
-        return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */

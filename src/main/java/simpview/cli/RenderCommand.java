@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Parameters;
@@ -25,6 +26,7 @@ import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",
@@ -101,9 +103,24 @@ public final class RenderCommand implements Callable<Integer> {
             description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
     private boolean ownColours;
 
+    @Mixin
+    private ThreadsOption threads;
+
+    /** The threads drawing while the command runs: made and closed by call(). */
+    private DrawingThreads drawingThreads;
+
     @Override
     public Integer call() {
         checkOptions();
+        try (DrawingThreads drawing = threads.open()) {
+            drawingThreads = drawing;
+            return render();
+        } finally {
+            drawingThreads = null;
+        }
+    }
+
+    private int render() {
         if (what.page != null) {
             return renderPage(what.page);
         }
@@ -175,7 +192,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderPage(int number) {
         try {
-            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
+            return write(new PageDrawing(monitor(), drawingThreads).page(number, context()).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -183,7 +200,7 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderAll() {
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         PageContext context = context();
         int code = ExitCode.OK;
         for (int n = 1; n <= Assignment2.COUNT; n++) {
@@ -204,7 +221,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Each scene to NAME.png; one that fails is named on stderr and not written, the others are. */
     private int renderScenes() {
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         int code = ExitCode.OK;
         for (Path scene : sceneList) {
             BufferedImage image;
@@ -226,7 +243,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderScene() {
         try {
-            PageDrawing drawing = new PageDrawing(monitor());
+            PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
             ScenePipeline.Drawn drawn = drawing.scene(what.scene, near, far, ownColours);
             refuseIfLit(what.scene, drawn);
             return write(drawing.canvas().image(), out);
@@ -238,7 +255,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Pages that fail are left out and named on stderr; the sheet shows the rest. */
     private int renderContactSheet() {
-        PageRenderer renderer = new PageRenderer();
+        PageRenderer renderer = new PageRenderer(drawingThreads);
         PageContext context = context();
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         for (int n = 1; n <= Assignment2.COUNT; n++) {
@@ -259,7 +276,7 @@ public final class RenderCommand implements Callable<Integer> {
     /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
     private int renderSceneSheet() {
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         for (Path scene : scenes) {
             try {
                 drawing.scene(scene, null, null, false);

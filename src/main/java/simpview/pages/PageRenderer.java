@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.awt.image.BufferedImage;
 import simpview.scene.SceneException;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 
 /**
@@ -12,6 +13,18 @@ import simpview.surface.PageCanvas;
 public final class PageRenderer {
 
     private final PageCanvas canvas = new PageCanvas();
+
+    /** Draws every page on the caller's thread alone. */
+    public PageRenderer() {
+    }
+
+    /**
+     * Draws the scene pages with {@code threads} (see {@link PageCanvas#drawWith}),
+     * to the same pictures as one thread; whoever gives them closes them.
+     */
+    public PageRenderer(DrawingThreads threads) {
+        canvas.drawWith(threads);
+    }
 
     /**
      * Draws page n. On a scene error the canvas keeps what was drawn before it
