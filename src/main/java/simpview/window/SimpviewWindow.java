@@ -431,7 +431,7 @@ public final class SimpviewWindow {
         shown = result;
         showPicture();
         frame.setTitle(result.title());
-        watcher.watch(result.facts().files());
+        watcher.watch(result.facts().files(), job.stampsAsRead());
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (orbit.turned()) {

@@ -144,6 +144,7 @@ public final class ScenePipeline {
             litAfterDrawing = turn.because;
         } finally {
             if (litAfterDrawing == null) {
+                monitor.stampsAsRead(files.stampsAsRead());
                 monitor.reached(files.reached());
             }
         }
@@ -164,6 +165,7 @@ public final class ScenePipeline {
             run(client, monitor, file);
             return drawn(client, litBecause, files, monitor);
         } finally {
+            monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
         }
     }
@@ -234,6 +236,7 @@ public final class ScenePipeline {
             cued.drawWith(threads, panel, provenance);
             run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
+            monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
         }
     }
