@@ -48,6 +48,35 @@ final class CompareOptions {
         }
     }
 
+    /** A position deviation in pixels: 0, 1 or 2. */
+    static final class Deviation implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            String px = text.trim().endsWith("px") ? text.trim().substring(0, text.trim().length() - 2) : text.trim();
+            try {
+                int value = Integer.parseInt(px.trim());
+                if (value >= 0 && value <= simpview.compare.Comparison.MAX_DEVIATION) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a position deviation: expected 0, 1 or 2 (pixels)");
+        }
+    }
+
+    /** The metric: exact or blur. */
+    static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
+        @Override
+        public simpview.compare.Comparison.Metric convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "exact" -> simpview.compare.Comparison.Metric.EXACT;
+                case "blur" -> simpview.compare.Comparison.Metric.BLUR;
+                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact or blur");
+            };
+        }
+    }
+
     /** Pages, e.g. {@code 1-8}, {@code 6} or {@code 1,3,6-8}. */
     record PageRange(BitSet pages, String text) {
 
