@@ -13,7 +13,7 @@ import javax.xml.stream.XMLStreamWriter;
 /**
  * A batch as JUnit XML, which CI systems and GitHub Classroom's runners read:
  * {@code <testsuites>} holding one {@code <testsuite>} per submission (the
- * first folder of the pictures' paths, "." for pictures at the top), one
+ * first folder of the pictures' paths, "submission" for pictures at the top), one
  * {@code <testcase>} per picture, named by its page, with {@code classname}
  * the submission. A picture below the minimum has a {@code <failure>} whose
  * message is the shares; one that cannot be compared an {@code <error>}; one
@@ -22,6 +22,9 @@ import javax.xml.stream.XMLStreamWriter;
  * escaped as XML wants.
  */
 public final class JUnitResults {
+
+    /** The submission of pictures at the top of the folder (one student's folder). */
+    public static final String TOP = "submission";
 
     private JUnitResults() {
     }
@@ -33,7 +36,7 @@ public final class JUnitResults {
             suites.computeIfAbsent(submission(row.file()), k -> new ArrayList<>()).add(row);
         }
         if (suites.isEmpty() && !wanted.isEmpty()) {
-            suites.put(".", new ArrayList<>());
+            suites.put(TOP, new ArrayList<>());
         }
         StringWriter text = new StringWriter();
         try {
@@ -88,9 +91,9 @@ public final class JUnitResults {
         for (BatchRow row : rows) {
             xml.writeCharacters("\n    ");
             xml.writeStartElement("testcase");
-            String page = row.target().isEmpty() ? row.file() : GradescopeResults.name(row.target());
-            xml.writeAttribute("name", page + " (" + row.file() + ")");
-            xml.writeAttribute("classname", "simpview.compare." + name);
+            xml.writeAttribute("name", row.target().isEmpty() ? row.file()
+                    : GradescopeResults.name(row.target()) + " (" + row.file() + ")");
+            xml.writeAttribute("classname", name);
             switch (row.result()) {
                 case PASS -> { }
                 case FAIL -> element(xml, "failure", shares(row), "below the minimum", GradescopeResults.output(row));
@@ -107,7 +110,7 @@ public final class JUnitResults {
             xml.writeCharacters("\n    ");
             xml.writeStartElement("testcase");
             xml.writeAttribute("name", GradescopeResults.name(wanted.target()) + " (no picture)");
-            xml.writeAttribute("classname", "simpview.compare." + name);
+            xml.writeAttribute("classname", name);
             element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found", "missing",
                     "No picture's name names " + GradescopeResults.name(wanted.target()) + ".");
             xml.writeEndElement();
@@ -137,6 +140,6 @@ public final class JUnitResults {
     static String submission(String file) {
         String path = file.replace('\\', '/');
         int slash = path.indexOf('/');
-        return slash < 0 ? "." : path.substring(0, slash);
+        return slash < 0 ? TOP : path.substring(0, slash);
     }
 }
