@@ -268,8 +268,8 @@ final class CompareBatch {
 
     /**
      * One picture against simpview's (a Picture, or the error that kept it from being drawn),
-     * and when it does not pass, against each accepted alternate: the first that passes, or
-     * else the best, is its result. Thread-safe.
+     * and when it does not pass, against each accepted alternate: the first that passes is its
+     * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
             Path outDir) {
@@ -292,8 +292,7 @@ final class CompareBatch {
         for (Reference reference : references) {
             Comparison comparison = Comparison.of(reference.panel(), theirs.panel(), rule.deviation(), rule.metric());
             ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
-            if (best == null || report.passes() && !best.passes()
-                    || report.passes() == best.passes() && report.verdictShare() > best.verdictShare()) {
+            if (best == null || report.passes()) {
                 best = report;
                 bestName = reference.name();
             }
