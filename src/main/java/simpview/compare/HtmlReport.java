@@ -53,7 +53,8 @@ public final class HtmlReport {
         h.append("</p>\n");
         legend(h);
         table(h, rows, missing);
-        h.append("<p class=\"hint\">Click a column's heading to sort by it (again: the other way). "
+        h.append("<p class=\"hint\">Click a column's heading to sort by it (again: the other way); "
+                + "index.html#sort=4-down opens it sorted by share, lowest last. "
                 + "Shares are of the 650x650 panel's pixels, in percent.</p>\n");
         int index = 0;
         for (BatchRow row : rows) {
@@ -204,21 +205,26 @@ public final class HtmlReport {
                 var cell = row.cells[col];
                 return cell.hasAttribute('data-v') ? parseFloat(cell.getAttribute('data-v')) : cell.textContent;
               }
+              function sort(col, up) {
+                for (var k = 0; k < heads.length; k++) { heads[k].classList.remove('up', 'down'); }
+                heads[col].classList.add(up ? 'up' : 'down');
+                var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows);
+                rows.sort(function (a, b) {
+                  var x = value(a, col), y = value(b, col);
+                  var d = typeof x === 'number' && typeof y === 'number' ? x - y : String(x).localeCompare(String(y), undefined, {numeric: true});
+                  return up ? d : -d;
+                });
+                rows.forEach(function (r) { body.appendChild(r); });
+              }
               for (var c = 0; c < heads.length; c++) {
                 heads[c].addEventListener('click', function (e) {
-                  var th = e.currentTarget, col = +th.getAttribute('data-col');
-                  var up = !th.classList.contains('up');
-                  for (var k = 0; k < heads.length; k++) { heads[k].classList.remove('up', 'down'); }
-                  th.classList.add(up ? 'up' : 'down');
-                  var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows);
-                  rows.sort(function (a, b) {
-                    var x = value(a, col), y = value(b, col);
-                    var d = typeof x === 'number' && typeof y === 'number' ? x - y : String(x).localeCompare(String(y), undefined, {numeric: true});
-                    return up ? d : -d;
-                  });
-                  rows.forEach(function (r) { body.appendChild(r); });
+                  var th = e.currentTarget;
+                  sort(+th.getAttribute('data-col'), !th.classList.contains('up'));
                 });
               }
+              // index.html#sort=4-down opens sorted: by column 4 (share), largest first.
+              var asked = /sort=(\\d+)-(up|down)/.exec(location.hash);
+              if (asked && +asked[1] < heads.length) { sort(+asked[1], asked[2] === 'up'); }
               var buttons = document.querySelectorAll('button[data-zoom]');
               for (var b = 0; b < buttons.length; b++) {
                 buttons[b].addEventListener('click', function (e) {
