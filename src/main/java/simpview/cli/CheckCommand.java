@@ -113,7 +113,8 @@ final class CheckCommand implements Callable<Integer> {
         OwnPictures own = new OwnPictures(PageDrawing.context(seed, simpDir, PageDrawing.warningsTo(spec.commandLine().getErr())),
                 near, far, PageDrawing.warningsTo(spec.commandLine().getErr()));
         CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
-        CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true);
+        CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
+                CompareBatch.DiffImages.FAILING);
         if (scene != null) {
             return batch.scenes(dir, scene, outputs);
         }

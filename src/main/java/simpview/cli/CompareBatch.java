@@ -68,8 +68,11 @@ public final class CompareBatch {
      * tables and diff images; the others are written when not null. {@code student}: print
      * the student's table ({@code simpview check}) instead of the teacher's.
      */
-    record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student) {
+    record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student, DiffImages diffs) {
     }
+
+    /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
+    enum DiffImages { ALL, FAILING, NONE }
 
     private final OwnPictures own;
     private final Rubric rubric;
@@ -148,7 +151,7 @@ public final class CompareBatch {
         }
         Map<CompareTarget, Object> drawn = drawAll(matches);
         Map<CompareTarget, List<Reference>> alternates = alternatesOf(drawn.keySet(), namer);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir());
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir(), outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
         List<Wanted> asked = new ArrayList<>();
@@ -227,7 +230,8 @@ public final class CompareBatch {
 
     /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir) {
+            Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir,
+            DiffImages diffs) {
         ExecutorService workers = Executors.newFixedThreadPool(Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())));
         AtomicInteger finished = new AtomicInteger();
         try {
@@ -239,7 +243,7 @@ public final class CompareBatch {
                     String relative = dir.relativize(picture).toString();
                     BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
                             : compare(picture, relative, match.target(), drawn.get(match.target()),
-                                    alternates.get(match.target()), outDir);
+                                    alternates.get(match.target()), outDir, diffs);
                     synchronized (err) {
                         err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(row));
                     }
@@ -274,7 +278,7 @@ public final class CompareBatch {
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
-            Path outDir) {
+            Path outDir, DiffImages diffs) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
@@ -303,7 +307,7 @@ public final class CompareBatch {
             }
         }
         double score = rule.score(best.comparison(), partial);
-        if (outDir == null) {
+        if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && best.passes()) {
             return BatchRow.compared(relative, label, best, "", rule, score, bestName);
         }
         String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "") + "-diff.png";

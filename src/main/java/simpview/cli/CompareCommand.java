@@ -123,6 +123,11 @@ public final class CompareCommand implements Callable<Integer> {
             + "(the diff images go to --out-dir, or to D without it)")
     private Path html;
 
+    @Option(names = "--diffs", paramLabel = "WHICH", converter = CompareOptions.DiffImagesConverter.class,
+            description = "with --dir: which pictures get a diff image, all, failing (those that do not pass) or none "
+                    + "(default: all)")
+    private CompareBatch.DiffImages diffs = CompareBatch.DiffImages.ALL;
+
     @Option(names = "--partial", description = "with --gradescope: score a failing page in part, by how near it came "
             + "(default: all or nothing)")
     private boolean partial;
@@ -141,7 +146,7 @@ public final class CompareCommand implements Callable<Integer> {
             }
             CompareBatch batch = new CompareBatch(own, judged, partial, spec.commandLine().getOut(), err());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
-                    gradescope, junit, html, false);
+                    gradescope, junit, html, false, diffs);
             return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
         }
         return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
@@ -161,8 +166,9 @@ public final class CompareCommand implements Callable<Integer> {
         } else {
             usage(page == null ^ scene == null, "say what to compare with: --page N or --scene F.simp");
             usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
-            usage(rubric == null && gradescope == null && junit == null && html == null && !partial,
-                    "--rubric, --gradescope, --junit, --html and --partial go with --dir");
+            usage(rubric == null && gradescope == null && junit == null && html == null && !partial
+                    && diffs == CompareBatch.DiffImages.ALL,
+                    "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
         }
         usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);

@@ -65,6 +65,20 @@ public final class CompareOptions {
         }
     }
 
+    /** Which pictures of a batch get a diff image: all, failing or none. */
+    static final class DiffImagesConverter implements ITypeConverter<CompareBatch.DiffImages> {
+        @Override
+        public CompareBatch.DiffImages convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "all" -> CompareBatch.DiffImages.ALL;
+                case "failing" -> CompareBatch.DiffImages.FAILING;
+                case "none" -> CompareBatch.DiffImages.NONE;
+                default -> throw new TypeConversionException("'" + text + "' is not a choice of diff images: expected "
+                        + "all, failing or none");
+            };
+        }
+    }
+
     /** The metric: exact or blur. */
     static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
         @Override

@@ -140,7 +140,7 @@ public final class HtmlReport {
                 .append(" &mdash; ").append(row.result().name()).append("</h2>\n<pre>")
                 .append(esc(GradescopeResults.output(row))).append("</pre>\n");
         if (row.diff().isEmpty() || outDir == null) {
-            h.append("<p>No diff image was written.</p>\n</section>\n");
+            h.append("<p>No diff image was written for it (see --diffs).</p>\n</section>\n");
             return;
         }
         String src = htmlDir.toAbsolutePath().normalize().relativize(outDir.resolve(row.diff()).toAbsolutePath().normalize())

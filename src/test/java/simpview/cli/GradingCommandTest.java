@@ -97,6 +97,21 @@ class GradingCommandTest {
     }
 
     @Test
+    void diffsFailingWritesTheDiffsOfThoseThatDoNotPassOnly() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page1.png"), page(1));
+        png(subs.resolve("page2.png"), spoiled(2));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--diffs", "failing");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertFalse(Files.exists(out.resolve("diffs/page1-diff.png")), "page 1 passes");
+        assertTrue(Files.isRegularFile(out.resolve("diffs/page2-diff.png")));
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2",
+                "--out-dir", out.toString(), "--diffs", "some").exitCode());
+    }
+
+    @Test
     void aBadRubricIsAUsageErrorNamingTheLine() throws Exception {
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\", \"deviation\": 5}\n]}");
