@@ -127,7 +127,11 @@ public final class CompareBatch {
             err.println("simpview compare: --scene " + scene + ": no .simp files in that folder");
             return ExitCode.USAGE_ERROR;
         }
-        List<CompareTarget> wanted = scenes.values().stream().map(CompareTarget::scene).toList();
+        // A folder also holds scenes the pages include (cube.simp): the ones asked for are those a rubric
+        // rule names, and (in run) every one some picture of the batch was matched to.
+        List<CompareTarget> wanted = scenes.entrySet().stream()
+                .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
+                .map(e -> CompareTarget.scene(e.getValue())).toList();
         return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), name -> {
             Optional<String> named = SubmissionNames.sceneName(name, scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
@@ -154,8 +158,16 @@ public final class CompareBatch {
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir(), outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
+        // Asked for: the given targets, and every one some picture was matched to (so a class's batch
+        // shows who lacks a page that others handed in).
+        java.util.LinkedHashSet<CompareTarget> all = new java.util.LinkedHashSet<>(wanted);
+        for (Match match : matches) {
+            if (match.target() != null) {
+                all.add(match.target());
+            }
+        }
         List<Wanted> asked = new ArrayList<>();
-        for (CompareTarget target : wanted) {
+        for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
         }
         return writeResults(rows, asked, outputs, seconds);

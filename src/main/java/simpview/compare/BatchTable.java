@@ -15,6 +15,11 @@ public final class BatchTable {
         StringBuilder out = new StringBuilder();
         out.append(String.format("Shares of panel pixels in percent; the result is on the share within %d/255 with "
                 + "one pixel of slack, %s needed.%n%n", tolerance, Percent.of(minimum / 100)));
+        if (rows.stream().anyMatch(r -> r.rule() != null && !"*".equals(r.rule().match()))) {
+            out.setLength(out.length() - System.lineSeparator().length());
+            out.append(String.format("Pages the rubric names are judged by its rules (tolerance, slack, minimum, "
+                    + "pixel limit) and their slack columns use their own slack.%n%n"));
+        }
         out.append('|');
         for (String heading : HEADINGS) {
             out.append(' ').append(heading).append(" |");
