@@ -4,8 +4,11 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * A batch as one web page, {@code index.html}, that a teacher opens from
@@ -37,11 +40,26 @@ public final class HtmlReport {
      */
     public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir) throws IOException {
         Files.createDirectories(htmlDir);
-        Files.writeString(htmlDir.resolve(INDEX), page(rows, Wanted.missing(wanted, rows), htmlDir, outDir),
+        Files.writeString(htmlDir.resolve(INDEX), page(rows, missingBySubmission(wanted, rows), htmlDir, outDir),
                 StandardCharsets.UTF_8);
     }
 
-    static String page(List<BatchRow> rows, List<Wanted> missing, Path htmlDir, Path outDir) {
+    /** What each submission (first folder of the path) lacks, as (submission, page) pairs; all of it when there are no rows. */
+    static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows) {
+        Map<String, List<BatchRow>> bySubmission = new LinkedHashMap<>();
+        for (BatchRow row : rows) {
+            bySubmission.computeIfAbsent(JUnitResults.submission(row.file()), k -> new ArrayList<>()).add(row);
+        }
+        List<Map.Entry<String, Wanted>> missing = new ArrayList<>();
+        if (bySubmission.isEmpty()) {
+            wanted.forEach(w -> missing.add(Map.entry("", w)));
+        }
+        bySubmission.forEach((submission, its) ->
+                Wanted.missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w))));
+        return missing;
+    }
+
+    static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows))).append("</title>\n")
@@ -81,7 +99,7 @@ public final class HtmlReport {
         h.append(String.format(Locale.ROOT, "<span class=\"swatch\" style=\"background:#%06x\"></span>%s ", rgb, esc(what)));
     }
 
-    private static void table(StringBuilder h, List<BatchRow> rows, List<Wanted> missing) {
+    private static void table(StringBuilder h, List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
         h.append("<table id=\"results\">\n<thead><tr>");
         String[] headings = {"submission", "picture", "page", "result", "share", "identical", "failing pixels",
             "score", "details"};
@@ -110,9 +128,10 @@ public final class HtmlReport {
             h.append("</tr>\n");
             index++;
         }
-        for (Wanted wanted : missing) {
+        for (Map.Entry<String, Wanted> lack : missing) {
+            Wanted wanted = lack.getValue();
             h.append("<tr class=\"row missing\">");
-            cell(h, "", null);
+            cell(h, lack.getKey(), null);
             cell(h, "", null);
             cell(h, GradescopeResults.name(wanted.target()), null);
             cell(h, "MISSING", null);
