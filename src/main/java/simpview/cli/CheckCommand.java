@@ -13,7 +13,6 @@ import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
-import simpview.scene.simp.SceneSheet;
 import simpview.surface.Rgb;
 
 /**
@@ -98,10 +97,6 @@ final class CheckCommand implements Callable<Integer> {
         }
         if (scene != null && (seed != null || simpDir != null)) {
             throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
-        }
-        String cue = scene == null ? null : SceneSheet.cueColoursProblem(scene, near, far);
-        if (cue != null) {
-            throw new ParameterException(spec.commandLine(), cue);
         }
         Rubric judged;
         try {
