@@ -244,7 +244,10 @@ public final class CompareBatch {
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir,
             DiffImages diffs) {
-        ExecutorService workers = Executors.newFixedThreadPool(Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())));
+        AtomicInteger named = new AtomicInteger();
+        ExecutorService workers = Executors.newFixedThreadPool(
+                Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
+                task -> new Thread(task, "simpview-compare-" + named.incrementAndGet()));
         AtomicInteger finished = new AtomicInteger();
         try {
             List<Future<BatchRow>> rows = new ArrayList<>();
