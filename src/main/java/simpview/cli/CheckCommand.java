@@ -7,6 +7,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
@@ -39,6 +40,10 @@ final class CheckCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
+
+    /** The top command, which knows where the project's own scenes are. */
+    @ParentCommand
+    private SimpviewCommand parent;
 
     @Parameters(index = "0", paramLabel = "DIR", description = "the folder of your pictures (subfolders too)")
     private Path dir;
@@ -105,7 +110,7 @@ final class CheckCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("simpview check: " + e.getMessage());
             return ExitCode.USAGE_ERROR;
         }
-        OwnPictures own = new OwnPictures(PageDrawing.context(seed, simpDir, PageDrawing.warningsTo(spec.commandLine().getErr())),
+        OwnPictures own = new OwnPictures(PageDrawing.context(parent.ownScenes(), seed, simpDir, PageDrawing.warningsTo(spec.commandLine().getErr())),
                 near, far, PageDrawing.warningsTo(spec.commandLine().getErr()));
         CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
         CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
