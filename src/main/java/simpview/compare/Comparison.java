@@ -75,8 +75,12 @@ public final class Comparison {
             for (int x = 0; x < N; x++) {
                 int i = y * N + x;
                 int d = Rasters.distance(ours[i], theirs[i]);
-                int s = d == 0 || r == 0 ? d
-                        : Math.max(nearest(ours[i], theirs, x, y, r, d), nearest(theirs[i], ours, x, y, r, d));
+                int s = d;
+                if (d != 0 && r != 0) {
+                    int one = nearest(ours[i], theirs, x, y, r, d, 0);
+                    // The other way only matters where it is larger than the first: it may stop at that.
+                    s = one == d ? d : nearest(theirs[i], ours, x, y, r, d, one);
+                }
                 direct[i] = (byte) d;
                 slack[i] = (byte) s;
                 directCount[d]++;
@@ -85,14 +89,18 @@ public final class Comparison {
         }
     }
 
-    /** The smallest distance from {@code colour} to a pixel of {@code other} within r pixels of (x, y) (a square), at most {@code bound}. */
-    private static int nearest(int colour, int[] other, int x, int y, int r, int bound) {
+    /**
+     * The smallest distance from {@code colour} to a pixel of {@code other} within r pixels of (x, y)
+     * (a square), at most {@code bound}; or, as soon as one is found at or below {@code floor}, the
+     * floor (the caller takes the larger of this and the floor, so nothing smaller changes it).
+     */
+    private static int nearest(int colour, int[] other, int x, int y, int r, int bound, int floor) {
         int best = bound;
         for (int ny = Math.max(0, y - r); ny <= Math.min(N - 1, y + r); ny++) {
             for (int nx = Math.max(0, x - r); nx <= Math.min(N - 1, x + r); nx++) {
                 best = Math.min(best, Rasters.distance(colour, other[ny * N + nx]));
-                if (best == 0) {
-                    return 0;
+                if (best <= floor) {
+                    return floor;
                 }
             }
         }
