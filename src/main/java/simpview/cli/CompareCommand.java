@@ -42,7 +42,9 @@ import simpview.surface.Rgb;
             "  simpview compare --dir subs/ --pages 1-8 --rubric compare.json --gradescope results.json --junit results.xml --html report/",
             "",
             "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel "
-                + "or one of its 8 neighbours, both ways round. Regions are panel rectangles: origin bottom-left, y up."},
+                + "or one of its 8 neighbours (--deviation 2: its 24), both ways round. Regions are panel rectangles: "
+                + "origin bottom-left, y up.",
+            "Grading (rubric, Gradescope, JUnit, the web report) and 'simpview check': docs/grading.md."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture reaches --min",
             "1:some picture is below --min, or cannot be read, or has no panel; or a scene error",
