@@ -3,6 +3,7 @@ package simpview.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -14,6 +15,7 @@ import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.surface.DrawingThreads;
 import simpview.surface.Rgb;
 
 /**
@@ -92,6 +94,9 @@ final class CheckCommand implements Callable<Integer> {
     @Option(names = "--out-dir", paramLabel = "D", description = "also write the tables and diff images here")
     private Path outDir;
 
+    @Mixin
+    private ThreadsOption threads;
+
     @Override
     public Integer call() {
         if (pages != null && scene != null) {
@@ -110,14 +115,17 @@ final class CheckCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("simpview check: " + e.getMessage());
             return ExitCode.USAGE_ERROR;
         }
-        OwnPictures own = new OwnPictures(PageDrawing.context(parent.ownScenes(), seed, simpDir, PageDrawing.warningsTo(spec.commandLine().getErr())),
-                near, far, PageDrawing.warningsTo(spec.commandLine().getErr()));
-        CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
-        CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
-                CompareBatch.DiffImages.FAILING);
-        if (scene != null) {
-            return batch.scenes(dir, scene, outputs);
+        try (DrawingThreads drawing = threads.open()) {
+            OwnPictures own = new OwnPictures(PageDrawing.context(parent.ownScenes(), seed, simpDir,
+                    PageDrawing.warningsTo(spec.commandLine().getErr())), near, far,
+                    PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
+            CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
+            CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
+                    CompareBatch.DiffImages.FAILING);
+            if (scene != null) {
+                return batch.scenes(dir, scene, outputs);
+            }
+            return batch.pages(dir, pages != null ? pages : new CompareOptions.PageRangeConverter().convert("1-8"), outputs);
         }
-        return batch.pages(dir, pages != null ? pages : new CompareOptions.PageRangeConverter().convert("1-8"), outputs);
     }
 }

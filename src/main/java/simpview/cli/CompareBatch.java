@@ -91,7 +91,7 @@ public final class CompareBatch {
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
     int pages(Path dir, PageRange pages, Outputs outputs) {
         List<CompareTarget> wanted = new ArrayList<>();
-        for (int p = 1; p <= simpview.pages.Pages.COUNT; p++) {
+        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
             if (pages.contains(p)) {
                 wanted.add(CompareTarget.page(p));
             }

@@ -7,6 +7,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
@@ -22,10 +23,11 @@ import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
 @Command(name = "compare",
@@ -138,24 +140,29 @@ public final class CompareCommand implements Callable<Integer> {
             + "(default: all or nothing)")
     private boolean partial;
 
+    @Mixin
+    private ThreadsOption threads;
+
     @Override
     public Integer call() {
         checkOptions();
-        OwnPictures own = new OwnPictures(context(), near, far, monitor());
-        if (dir != null) {
-            Rubric judged;
-            try {
-                judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
-            } catch (CompareException e) {
-                err().println("simpview compare: " + e.getMessage());
-                return ExitCode.USAGE_ERROR;
+        try (DrawingThreads drawing = threads.open()) {
+            OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
+            if (dir != null) {
+                Rubric judged;
+                try {
+                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+                } catch (CompareException e) {
+                    err().println("simpview compare: " + e.getMessage());
+                    return ExitCode.USAGE_ERROR;
+                }
+                CompareBatch batch = new CompareBatch(own, judged, partial, spec.commandLine().getOut(), err());
+                CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
+                        gradescope, junit, html, false, diffs);
+                return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
             }
-            CompareBatch batch = new CompareBatch(own, judged, partial, spec.commandLine().getOut(), err());
-            CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
-                    gradescope, junit, html, false, diffs);
-            return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
+            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
         }
-        return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
@@ -177,7 +184,7 @@ public final class CompareCommand implements Callable<Integer> {
                     "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
         }
-        usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);
+        usage(page == null || page >= 1 && page <= Assignment2.COUNT, "--page must be 1 to " + Assignment2.COUNT + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }

@@ -41,7 +41,7 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageContext;
 import simpview.pages.PageStepper;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 
 /**
@@ -77,7 +77,7 @@ public final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
-        this.renderer = new BackgroundRenderer(drawer);
+        this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }
 
@@ -180,7 +180,7 @@ public final class SimpviewWindow {
         bind("previous", () -> stepTo(stepper.previous()), "LEFT", "PAGE_UP", "KP_LEFT");
         bind("first", () -> stepTo(stepper.first()), "HOME");
         bind("last", () -> stepTo(stepper.last()), "END");
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             int page = n;
             bind("page" + n, () -> stepTo(stepper.jump(page)), String.valueOf(n), "NUMPAD" + n);
         }
@@ -269,7 +269,7 @@ public final class SimpviewWindow {
     /** Whether the view is drawn from a scene file (pages 4 to 8, an opened scene): what stepping and turning work on. */
     private boolean isScene(View view) {
         return view instanceof View.OfScene
-                || view instanceof View.OfPage page && Pages.page(page.number()) instanceof ScenePage;
+                || view instanceof View.OfPage page && Assignment2.page(page.number()) instanceof ScenePage;
     }
 
     /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
@@ -441,7 +441,7 @@ public final class SimpviewWindow {
             seed = ThreadLocalRandom.current().nextInt(1, 100_000);
         }
         options = options.withSeed(seed);
-        if (requested() instanceof View.OfPage page && Pages.page(page.number()).usesSeed()) {
+        if (requested() instanceof View.OfPage page && Assignment2.page(page.number()).usesSeed()) {
             show(page);
         } else {
             status.say("Seed is now " + seed + ": it changes pages 1–3 only, not this one.");

@@ -21,9 +21,9 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
+import simpview.pages.Assignment2;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
@@ -50,7 +50,7 @@ public final class FolderCheck {
         for (Path file : picturesIn(folder)) {
             String relative = folder.relativize(file).toString();
             OptionalInt page = SubmissionNames.pageNumber(file.getFileName().toString());
-            if (page.isEmpty() || page.getAsInt() > Pages.COUNT) {
+            if (page.isEmpty() || page.getAsInt() > Assignment2.COUNT) {
                 rows.add(BatchRow.skipped(relative, "no page 1 to 8 in the name"));
                 continue;
             }
@@ -71,7 +71,7 @@ public final class FolderCheck {
             }
         }
         List<Wanted> wanted = new ArrayList<>();
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             wanted.add(new Wanted(label(n, context), rule));
         }
         if (rows.isEmpty()) {
@@ -82,7 +82,7 @@ public final class FolderCheck {
 
     /** As check labels a page: "6", or "2 (seed 361)" for the seeded pages. */
     private static String label(int page, PageContext context) {
-        return Pages.page(page).usesSeed() ? page + " (seed " + context.seed() + ")" : String.valueOf(page);
+        return Assignment2.page(page).usesSeed() ? page + " (seed " + context.seed() + ")" : String.valueOf(page);
     }
 
     private static Object draw(int page, PageContext context) {
