@@ -4,7 +4,7 @@ import java.util.BitSet;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 
 /** The values {@code simpview compare} reads from its options: tolerances, shares, page ranges. */
 public final class CompareOptions {
@@ -48,6 +48,49 @@ public final class CompareOptions {
         }
     }
 
+    /** A position deviation in pixels: 0, 1 or 2. */
+    static final class Deviation implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            String px = text.trim().endsWith("px") ? text.trim().substring(0, text.trim().length() - 2) : text.trim();
+            try {
+                int value = Integer.parseInt(px.trim());
+                if (value >= 0 && value <= simpview.compare.Comparison.MAX_DEVIATION) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a position deviation: expected 0, 1 or 2 (pixels)");
+        }
+    }
+
+    /** Which pictures of a batch get a diff image: all, failing or none. */
+    static final class DiffImagesConverter implements ITypeConverter<CompareBatch.DiffImages> {
+        @Override
+        public CompareBatch.DiffImages convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "all" -> CompareBatch.DiffImages.ALL;
+                case "failing" -> CompareBatch.DiffImages.FAILING;
+                case "none" -> CompareBatch.DiffImages.NONE;
+                default -> throw new TypeConversionException("'" + text + "' is not a choice of diff images: expected "
+                        + "all, failing or none");
+            };
+        }
+    }
+
+    /** The metric: exact or blur. */
+    static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
+        @Override
+        public simpview.compare.Comparison.Metric convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "exact" -> simpview.compare.Comparison.Metric.EXACT;
+                case "blur" -> simpview.compare.Comparison.Metric.BLUR;
+                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact or blur");
+            };
+        }
+    }
+
     /** Pages, e.g. {@code 1-8}, {@code 6} or {@code 1,3,6-8}. */
     record PageRange(BitSet pages, String text) {
 
@@ -83,7 +126,7 @@ public final class CompareOptions {
         private static int page(String number, String whole) {
             try {
                 int page = Integer.parseInt(number.trim());
-                if (page >= 1 && page <= Pages.COUNT) {
+                if (page >= 1 && page <= Assignment2.COUNT) {
                     return page;
                 }
             } catch (NumberFormatException e) {
@@ -94,7 +137,7 @@ public final class CompareOptions {
 
         private static TypeConversionException invalid(String text) {
             return new TypeConversionException(String.format(Locale.ROOT,
-                    "'%s' is not a set of pages: expected pages 1 to %d like 1-8, 6 or 1,3,6-8", text, Pages.COUNT));
+                    "'%s' is not a set of pages: expected pages 1 to %d like 1-8, 6 or 1,3,6-8", text, Assignment2.COUNT));
         }
     }
 }

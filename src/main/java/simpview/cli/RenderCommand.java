@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Parameters;
@@ -20,11 +21,12 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",
@@ -101,9 +103,24 @@ public final class RenderCommand implements Callable<Integer> {
             description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
     private boolean ownColours;
 
+    @Mixin
+    private ThreadsOption threads;
+
+    /** The threads drawing while the command runs: made and closed by call(). */
+    private DrawingThreads drawingThreads;
+
     @Override
     public Integer call() {
         checkOptions();
+        try (DrawingThreads drawing = threads.open()) {
+            drawingThreads = drawing;
+            return render();
+        } finally {
+            drawingThreads = null;
+        }
+    }
+
+    private int render() {
         if (what.page != null) {
             return renderPage(what.page);
         }
@@ -126,8 +143,8 @@ public final class RenderCommand implements Callable<Integer> {
             return;
         }
         boolean pages = what.scene == null;
-        usage(what.page == null || what.page >= 1 && what.page <= Pages.COUNT,
-                "--page must be 1 to " + Pages.COUNT + ", not " + what.page);
+        usage(what.page == null || what.page >= 1 && what.page <= Assignment2.COUNT,
+                "--page must be 1 to " + Assignment2.COUNT + ", not " + what.page);
         usage(what.all ? outDir != null : out != null,
                 what.all ? "--all needs --out-dir D" : "missing --out F.png");
         usage(what.all ? out == null : outDir == null,
@@ -175,7 +192,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderPage(int number) {
         try {
-            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
+            return write(new PageDrawing(monitor(), drawingThreads).page(number, context()).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -183,10 +200,10 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderAll() {
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         PageContext context = context();
         int code = ExitCode.OK;
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             BufferedImage image;
             try {
                 image = drawing.page(n, context).image();
@@ -204,7 +221,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Each scene to NAME.png; one that fails is named on stderr and not written, the others are. */
     private int renderScenes() {
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         int code = ExitCode.OK;
         for (Path scene : sceneList) {
             BufferedImage image;
@@ -226,7 +243,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderScene() {
         try {
-            PageDrawing drawing = new PageDrawing(monitor());
+            PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
             ScenePipeline.Drawn drawn = drawing.scene(what.scene, near, far, ownColours);
             refuseIfLit(what.scene, drawn);
             return write(drawing.canvas().image(), out);
@@ -238,13 +255,13 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Pages that fail are left out and named on stderr; the sheet shows the rest. */
     private int renderContactSheet() {
-        PageRenderer renderer = new PageRenderer();
+        PageRenderer renderer = new PageRenderer(drawingThreads);
         PageContext context = context();
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             try {
-                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
-                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
+                String seedNote = Assignment2.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Assignment2.page(n).title() + seedNote, renderer.renderImage(n, context)));
             } catch (SceneException e) {
                 err().println("page " + n + " left out: " + e.getMessage());
             }
@@ -253,13 +270,13 @@ public final class RenderCommand implements Callable<Integer> {
             return ExitCode.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
-        return tiles.size() == Pages.COUNT ? written : ExitCode.SCENE_ERROR;
+        return tiles.size() == Assignment2.COUNT ? written : ExitCode.SCENE_ERROR;
     }
 
     /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
     private int renderSceneSheet() {
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         for (Path scene : scenes) {
             try {
                 drawing.scene(scene, null, null, false);

@@ -15,6 +15,7 @@ import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
@@ -26,17 +27,21 @@ import simpview.pages.SceneList;
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = ExitCode.VERSION,
-        subcommands = {RenderCommand.class, CompareCommand.class, InspectCommand.class},
+        subcommands = {RenderCommand.class, CompareCommand.class, CheckCommand.class, InspectCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
             "Use 'simpview render' to write pages as PNG files without a window,",
-            "and 'simpview compare' to see how close a picture is to simpview's."},
+            "'simpview compare' to see how close a picture is to simpview's,",
+            "and 'simpview check DIR' to check a folder of your pages before handing them in."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 public final class SimpviewCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
+
+    @Mixin
+    private ThreadsOption threads;
 
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
     private long seed = PageContext.DEFAULT_SEED;
@@ -113,7 +118,7 @@ public final class SimpviewCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
-                sceneList(), ownScenes);
+                sceneList(), ownScenes, threads.count());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
         openedWindow = true;
         return ExitCode.OK;

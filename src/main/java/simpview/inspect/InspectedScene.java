@@ -4,7 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.pages.Page;
 import simpview.pages.PageContext;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 import simpview.scene.simp.ScenePipeline;
@@ -43,10 +43,10 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
      * @throws SceneException when the page's scene file is missing
      */
     public static InspectedScene page(int number, PageContext context) throws SceneException {
-        if (number < 1 || number > Pages.COUNT) {
-            throw new IllegalArgumentException("--page must be 1 to " + Pages.COUNT + ", not " + number);
+        if (number < 1 || number > Assignment2.COUNT) {
+            throw new IllegalArgumentException("--page must be 1 to " + Assignment2.COUNT + ", not " + number);
         }
-        Page page = Pages.page(number);
+        Page page = Assignment2.page(number);
         if (!(page instanceof ScenePage scene)) {
             throw new IllegalArgumentException("page " + number + " (" + page.title()
                     + ") is drawn by the program, not from a scene file: inspect reads pages 4 to 8 and scenes");

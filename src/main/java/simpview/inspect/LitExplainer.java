@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import simpview.stage.Painter;
 import simpview.shading.Fog;
-import simpview.shading.FragmentStage;
+import simpview.raster.FragmentLayout;
 import simpview.shading.LitState;
 import simpview.surface.Colors;
 
@@ -29,15 +29,15 @@ final class LitExplainer implements PixelWatch.Explainer {
     @Override
     public int colour(PixelWatch watch, double z, double[] ch, int drawnArgb, boolean drawn, Terms terms) {
         double[] lit = new double[3];
-        boolean phong = ch.length == FragmentStage.PHONG_CHANNELS;
+        boolean phong = ch.length == FragmentLayout.PHONG_CHANNELS;
         if (terms == null) {
             if (phong) {
-                state.shade(ch[FragmentStage.PX], ch[FragmentStage.PY], z, ch[FragmentStage.NX], ch[FragmentStage.NY],
-                        ch[FragmentStage.NZ], ch[FragmentStage.R], ch[FragmentStage.G], ch[FragmentStage.B], lit);
+                state.shade(ch[FragmentLayout.PX], ch[FragmentLayout.PY], z, ch[FragmentLayout.NX], ch[FragmentLayout.NY],
+                        ch[FragmentLayout.NZ], ch[FragmentLayout.R], ch[FragmentLayout.G], ch[FragmentLayout.B], lit);
             } else {
-                lit[0] = ch[FragmentStage.R];
-                lit[1] = ch[FragmentStage.G];
-                lit[2] = ch[FragmentStage.B];
+                lit[0] = ch[FragmentLayout.R];
+                lit[1] = ch[FragmentLayout.G];
+                lit[2] = ch[FragmentLayout.B];
             }
             state.fog().apply(z, lit, 0);
             return Colors.pack(lit[0], lit[1], lit[2]);
@@ -46,21 +46,21 @@ final class LitExplainer implements PixelWatch.Explainer {
         terms.put("z", z);
         if (phong) {
             terms.put("shading", "phong");
-            double[] p = {ch[FragmentStage.PX], ch[FragmentStage.PY], z};
-            double[] n = {ch[FragmentStage.NX], ch[FragmentStage.NY], ch[FragmentStage.NZ]};
-            double[] kd = {ch[FragmentStage.R], ch[FragmentStage.G], ch[FragmentStage.B]};
+            double[] p = {ch[FragmentLayout.PX], ch[FragmentLayout.PY], z};
+            double[] n = {ch[FragmentLayout.NX], ch[FragmentLayout.NY], ch[FragmentLayout.NZ]};
+            double[] kd = {ch[FragmentLayout.R], ch[FragmentLayout.G], ch[FragmentLayout.B]};
             double[] sum = LightingTerms.explain(state, p, n, kd, terms);
             state.shade(p[0], p[1], p[2], n[0], n[1], n[2], kd[0], kd[1], kd[2], lit);
             terms.put("clamped", clamp(sum));
             terms.put("lit", lit.clone());
         } else {
-            lit[0] = ch[FragmentStage.R];
-            lit[1] = ch[FragmentStage.G];
-            lit[2] = ch[FragmentStage.B];
+            lit[0] = ch[FragmentLayout.R];
+            lit[1] = ch[FragmentLayout.G];
+            lit[2] = ch[FragmentLayout.B];
             if (kind == Painter.LINE || kind == Painter.WIRE) {
                 terms.put("shading", kind == Painter.LINE ? "none (a line carries kd)" : "none (a wire polygon's edges carry kd)");
                 terms.put("kd", lit.clone());
-            } else if (state.shading() == LitState.Shading.FLAT) {
+            } else if (state.shading() == LitState.ShadingMode.FLAT) {
                 terms.put("shading", "flat");
                 terms.put("centroid_colour", lit.clone());
             } else {

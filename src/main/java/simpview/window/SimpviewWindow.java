@@ -3,6 +3,7 @@ package simpview.window;
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.DepthPicture;
+import simpview.window.instruments.FolderCheck;
 import simpview.window.instruments.Inspector;
 import simpview.window.instruments.InspectorPanel;
 import simpview.window.render.BackgroundRenderer;
@@ -16,6 +17,7 @@ import simpview.window.render.View;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
+import java.awt.Font;
 import java.awt.GraphicsConfiguration;
 import java.awt.Insets;
 import java.awt.Rectangle;
@@ -32,10 +34,15 @@ import java.util.concurrent.ThreadLocalRandom;
 import javax.swing.AbstractAction;
 import javax.swing.InputMap;
 import javax.swing.JComponent;
+import javax.swing.JDialog;
 import javax.swing.JFrame;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import simpview.pages.PageContext;
 import simpview.pages.PageStepper;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 
 /**
@@ -60,6 +67,7 @@ public final class SimpviewWindow {
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
+    private String lastCheck;
     private RenderedView shown;
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
@@ -76,7 +84,7 @@ public final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
-        this.renderer = new BackgroundRenderer(drawer);
+        this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }
 
@@ -104,7 +112,8 @@ public final class SimpviewWindow {
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
         frame.setResizable(true);
-        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, status::say)); // compare (issue 15)
+        // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
+        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
         new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
@@ -180,7 +189,7 @@ public final class SimpviewWindow {
         bind("previous", () -> stepTo(stepper.previous()), "LEFT", "PAGE_UP", "KP_LEFT");
         bind("first", () -> stepTo(stepper.first()), "HOME");
         bind("last", () -> stepTo(stepper.last()), "END");
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             int page = n;
             bind("page" + n, () -> stepTo(stepper.jump(page)), String.valueOf(n), "NUMPAD" + n);
         }
@@ -430,7 +439,7 @@ public final class SimpviewWindow {
     /** Whether the view is drawn from a scene file (pages 4 to 8, an opened scene): what stepping and turning work on. */
     private boolean isScene(View view) {
         return view instanceof View.OfScene
-                || view instanceof View.OfPage page && Pages.page(page.number()) instanceof ScenePage;
+                || view instanceof View.OfPage page && Assignment2.page(page.number()) instanceof ScenePage;
     }
 
     /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
@@ -557,6 +566,41 @@ public final class SimpviewWindow {
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */
+    /**
+     * A folder dropped (issue 21): {@code simpview check} for the pages, on its own thread
+     * (the pages drawn with this window's seed and scene folder); the table in a window of its own.
+     */
+    void checkFolder(Path folder) {
+        status.say("Checking the pictures in " + folder + " against the pages ...");
+        PageContext context = options.pageContext();
+        Runnable work = () -> {
+            String table = FolderCheck.text(folder, context);
+            SwingUtilities.invokeLater(() -> showCheck(folder, table));
+        };
+        Thread check = new Thread(work, "simpview-folder-check");
+        check.setDaemon(true);
+        check.start();
+    }
+
+    private void showCheck(Path folder, String table) {
+        JTextArea text = new JTextArea(table);
+        text.setEditable(false);
+        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
+        JDialog dialog = new JDialog(frame, "check: " + folder.getFileName(), false);
+        dialog.getContentPane().add(new JScrollPane(text));
+        dialog.pack();
+        dialog.setLocationRelativeTo(frame);
+        dialog.setVisible(true);
+        lastCheck = table;
+        String[] lines = table.split("\n");
+        status.say(folder.getFileName() + ": " + lines[lines.length - 1]);
+    }
+
+    /** The table of the last folder checked, or null: for the tests. */
+    String lastCheck() {
+        return lastCheck;
+    }
+
     void openScene(Path file) {
         forgetViewState();
         show(new View.OfScene(file));
@@ -569,7 +613,7 @@ public final class SimpviewWindow {
             seed = ThreadLocalRandom.current().nextInt(1, 100_000);
         }
         options = options.withSeed(seed);
-        if (requested() instanceof View.OfPage page && Pages.page(page.number()).usesSeed()) {
+        if (requested() instanceof View.OfPage page && Assignment2.page(page.number()).usesSeed()) {
             show(page);
         } else {
             status.say("Seed is now " + seed + ": it changes pages 1–3 only, not this one.");
@@ -604,7 +648,7 @@ public final class SimpviewWindow {
         overdrawShown = false;
         showPicture();
         frame.setTitle(result.title());
-        watcher.watch(result.facts().files());
+        watcher.watch(result.facts().files(), job.stampsAsRead());
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (orbit.turned()) {

@@ -1,6 +1,7 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
+import simpview.scene.FileStamp;
 import simpview.scene.simp.ScenePipeline;
 import simpview.scene.obj.ObjLibrary;
 
@@ -15,7 +16,7 @@ import simpview.pages.PageContext;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 import simpview.surface.Provenance;
@@ -44,6 +45,8 @@ public final class RenderJob implements SceneMonitor {
     private double[] shownCentre;
     /** The files the scene read or looked for, as its pipeline told them; the render thread's, like trace. */
     private List<Path> reached = List.of();
+    /** Their stamps before they were read; set on the render thread, read on the EDT once the job is done. */
+    private volatile List<FileStamp> stampsAsRead = List.of();
 
     public RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -115,6 +118,16 @@ public final class RenderJob implements SceneMonitor {
     }
 
     @Override
+    public void stampsAsRead(List<FileStamp> stamps) {
+        stampsAsRead = List.copyOf(stamps);
+    }
+
+    /** The stamps of {@link PageFacts#files}' files as the scene read them (empty for a page that reads none). */
+    public List<FileStamp> stampsAsRead() {
+        return stampsAsRead;
+    }
+
+    @Override
     public void reached(List<Path> files) {
         reached = List.copyOf(files);
     }
@@ -169,7 +182,7 @@ public final class RenderJob implements SceneMonitor {
     /** What each primitive drawn was, in drawing order. */
     private Primitives primitives() {
         if (view instanceof View.OfPage page) {
-            List<String> names = Pages.page(page.number()).primitiveNames(context);
+            List<String> names = Assignment2.page(page.number()).primitiveNames(context);
             if (!names.isEmpty()) {
                 return Primitives.named(names);
             }
@@ -182,7 +195,7 @@ public final class RenderJob implements SceneMonitor {
         if (view instanceof View.OfScene scene) {
             return scene.file();
         }
-        return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
+        return Assignment2.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
     }
 
     /** The scene files this picture read or looked for: what to watch for a save. */

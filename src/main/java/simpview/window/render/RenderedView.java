@@ -2,7 +2,7 @@ package simpview.window.render;
 
 import java.awt.image.BufferedImage;
 import java.util.List;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 
 /**
  * A finished picture, ready for the screen.
@@ -23,8 +23,8 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
     /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
     public String title() {
         if (view instanceof View.OfPage page) {
-            String title = "simpview — page " + page.number() + "/" + Pages.COUNT + ": " + Pages.page(page.number()).title();
-            title = Pages.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
+            String title = "simpview — page " + page.number() + "/" + Assignment2.COUNT + ": " + Assignment2.page(page.number()).title();
+            title = Assignment2.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
             return error == null ? title : title + " — error";
         }
         String title = "simpview — scene: " + ((View.OfScene) view).file().getFileName();
@@ -34,7 +34,7 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
     /** A file name to offer when saving, e.g. "page3-seed361.png" or "house.png". */
     public String suggestedFileName() {
         if (view instanceof View.OfPage page) {
-            return "page" + page.number() + (Pages.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+            return "page" + page.number() + (Assignment2.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
         }
         String name = ((View.OfScene) view).file().getFileName().toString();
         return name.replaceFirst("\\.simp$", "") + ".png";
