@@ -123,9 +123,8 @@ public final class ScenePipeline {
     /**
      * Draws the scene in {@code file} on {@code canvas}, which has just been
      * cleared, from a fresh state (identity CTM, empty stacks, style filled).
-     * On an error what was drawn
-     * before it stays and the error is thrown on; the monitor is told the
-     * files reached either way.
+     * On an error what was drawn before it stays and the error is thrown on;
+     * the monitor is told the files reached (and their stamps) either way.
      */
     public static Drawn draw(Path file, PageCanvas canvas, Options options, SceneMonitor monitor)
             throws SceneException {
