@@ -15,7 +15,7 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjFace;
+import simpview.stage.ObjFace;
 import simpview.scene.obj.ObjModel;
 import simpview.scene.obj.ObjReader;
 import simpview.scene.obj.ObjSink;

@@ -1,5 +1,7 @@
 package simpview.scene.obj;
 
+import simpview.stage.ObjFace;
+
 import java.nio.file.Path;
 import simpview.scene.SceneException;
 

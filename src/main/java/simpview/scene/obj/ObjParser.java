@@ -1,5 +1,7 @@
 package simpview.scene.obj;
 
+import simpview.stage.ObjFace;
+
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;

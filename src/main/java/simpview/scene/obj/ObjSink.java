@@ -1,5 +1,7 @@
 package simpview.scene.obj;
 
+import simpview.stage.ObjFace;
+
 import simpview.scene.SceneException;
 
 /**

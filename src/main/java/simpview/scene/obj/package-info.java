@@ -2,7 +2,7 @@
  * The .obj model reader (SPEC Part 2, ".obj files"): the faces of a model
  * handed, one at a time and in file order, to an {@link
  * simpview.scene.obj.ObjSink}, through one reused {@link
- * simpview.scene.obj.ObjFace} view, so that nothing is allocated per face.
+ * simpview.stage.ObjFace} view, so that nothing is allocated per face.
  *
  * <ul>
  * <li>{@link simpview.scene.obj.ObjReader#stream} reads a file in chunks and
@@ -39,3 +39,5 @@
  * }</pre>
  */
 package simpview.scene.obj;
+
+import simpview.stage.ObjFace;

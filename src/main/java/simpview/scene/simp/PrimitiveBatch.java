@@ -1,8 +1,8 @@
 package simpview.scene.simp;
 
 import java.util.List;
-import simpview.scene.Painter;
-import simpview.scene.PrimitiveSink;
+import simpview.stage.Painter;
+import simpview.stage.PrimitiveSink;
 
 /**
  * The primitives of one stretch of a scene, at most {@link #CAPACITY}

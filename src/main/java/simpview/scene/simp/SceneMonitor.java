@@ -23,7 +23,7 @@ public interface SceneMonitor {
     }
 
     /** Who follows the scene's primitives one by one (the window's instruments), or null: nobody, at no cost. */
-    default simpview.scene.PrimitiveTrace trace() {
+    default simpview.stage.PrimitiveTrace trace() {
         return null;
     }
 

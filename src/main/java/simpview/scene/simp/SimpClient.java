@@ -11,12 +11,12 @@ import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
-import simpview.scene.DepthCuedGeometry;
-import simpview.scene.GeometryStage;
-import simpview.scene.LitGeometry;
-import simpview.scene.Painter;
-import simpview.scene.PrimitiveSink;
-import simpview.scene.PrimitiveTrace;
+import simpview.stage.DepthCuedGeometry;
+import simpview.stage.GeometryStage;
+import simpview.stage.LitGeometry;
+import simpview.stage.Painter;
+import simpview.stage.PrimitiveSink;
+import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.Fog;
@@ -176,7 +176,7 @@ public final class SimpClient {
         primitive();
         Path file = FileStack.locate(c.fileName, ".obj", files.current(), c);
         lit.beginObj(ctm, style == Style.WIRE, file);
-        models.draw(file, lit);
+        models.draw(file, lit::face);
     }
 
     private void surface(Command c) throws SceneException {

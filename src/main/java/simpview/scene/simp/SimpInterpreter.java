@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import simpview.scene.Painter;
+import simpview.stage.Painter;
 import simpview.scene.SceneException;
 
 /**

@@ -1,5 +1,7 @@
 package simpview.scene.obj;
 
+import simpview.stage.ObjFace;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,0 +1,174 @@
+package simpview.cli;
+
+import simpview.compare.PngFiles;
+import simpview.scene.simp.SceneSheet;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import simpview.cli.CompareOptions.PageRange;
+import simpview.compare.CompareException;
+import simpview.compare.Comparison;
+import simpview.compare.ComparisonReport;
+import simpview.compare.HeatMap;
+import simpview.compare.Picture;
+import simpview.pages.PageContext;
+import simpview.pages.Pages;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.Rgb;
+
+/** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
+@Command(name = "compare",
+        mixinStandardHelpOptions = true,
+        version = ExitCode.VERSION,
+        description = "Compares a picture (a 750x750 page or a window capture: its 650x650 panel is found) with the "
+                + "page or scene as simpview draws it, and reports the share of panel pixels that match, the margins "
+                + "and where they differ. With --dir, compares a whole folder and writes a table (Markdown and CSV).",
+        footer = {"", "Examples:",
+            "  simpview compare mine.png --page 6 --simp-dir course/ --diff diff.png",
+            "  simpview compare pageC.png --scene course-a3/pageC.simp",
+            "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
+            "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
+            "",
+            "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel "
+                + "or one of its 8 neighbours, both ways round. Regions are panel rectangles: origin bottom-left, y up."},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:every picture reaches --min",
+            "1:some picture is below --min, or cannot be read, or has no panel; or a scene error",
+            "2:usage error"})
+public final class CompareCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(arity = "0..1", paramLabel = "IMAGE", description = "the picture to compare (PNG, JPEG, GIF or BMP)")
+    private Path image;
+
+    @Option(names = "--page", paramLabel = "N", description = "compare with page N, 1 to 8")
+    private Integer page;
+
+    @Option(names = "--scene", paramLabel = "F.simp|D",
+            description = "compare with this scene drawn as a page; with --dir, a scene file for every picture "
+                    + "or a folder whose scenes are matched to the pictures by name")
+    private Path scene;
+
+    @Option(names = "--dir", paramLabel = "D", description = "compare every picture in this folder and its subfolders")
+    private Path dir;
+
+    @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
+            description = "with --dir: the pages pictures are matched to by name (page3.png is page 3), e.g. 1-8")
+    private PageRange pages;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    private Path simpDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = -200 for --scene (default: 0,0,0)")
+    private Rgb far;
+
+    @Option(names = "--diff", paramLabel = "OUT.png", description = "write ours | theirs | heat map, at 1:1")
+    private Path diff;
+
+    @Option(names = "--out-dir", paramLabel = "D", description = "with --dir: where the table and the diff images go")
+    private Path outDir;
+
+    @Option(names = "--tolerance", paramLabel = "T", converter = CompareOptions.Tolerance.class,
+            description = "per channel, in 1/255 steps, for the verdict (with slack) and the regions (default: 8)")
+    private int tolerance = 8;
+
+    @Option(names = "--min", paramLabel = "P", converter = CompareOptions.Share.class,
+            description = "the share in percent that passes (default: 99)")
+    private double min = 99;
+
+    @Override
+    public Integer call() {
+        checkOptions();
+        OwnPictures own = new OwnPictures(context(), near, far, monitor());
+        if (dir != null) {
+            CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
+            return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+        }
+        return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
+    }
+
+    /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
+    private void checkOptions() {
+        usage(image == null ^ dir == null, image == null ? "give a picture to compare, or --dir D" : "give a picture or --dir D, not both");
+        boolean batch = dir != null;
+        if (batch) {
+            usage(pages == null ^ scene == null, "--dir needs either --pages RANGE or --scene F.simp|D");
+            usage(page == null, "--page goes with one picture; with --dir use --pages RANGE");
+            usage(diff == null, "with --dir the diff images go to --out-dir");
+            usage(outDir != null && !outDir.toString().isEmpty(), "--dir needs --out-dir D, where the table and the diff images go");
+        } else {
+            usage(page == null ^ scene == null, "say what to compare with: --page N or --scene F.simp");
+            usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
+            usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
+        }
+        usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);
+        usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
+        String cue = scene == null ? null : SceneSheet.cueColoursProblem(scene, near, far);
+        usage(cue == null, cue);
+        usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+    }
+
+    private void usage(boolean fine, String message) {
+        if (!fine) {
+            throw new ParameterException(spec.commandLine(), message);
+        }
+    }
+
+    private int compareOne(OwnPictures own, CompareTarget target) {
+        Picture theirs;
+        Picture ours;
+        try {
+            theirs = Picture.read(image);
+            ours = own.of(target);
+        } catch (CompareException | SceneException e) {
+            err().println("simpview compare: " + e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+        Comparison comparison = Comparison.of(ours.panel(), theirs.panel());
+        ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
+        PrintWriter out = spec.commandLine().getOut();
+        out.print(report.text());
+        if (diff != null) {
+            try {
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
+                out.println("diff:    " + diff + " (ours | theirs | heat map: grey identical, blue within "
+                        + tolerance + "/255, yellow one pixel off, red different)");
+            } catch (IOException e) {
+                err().println("simpview compare: " + e.getMessage());
+                return ExitCode.SCENE_ERROR;
+            }
+        }
+        return report.passes() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    private PageContext context() {
+        return PageDrawing.context(seed, simpDir, monitor());
+    }
+
+    private SceneMonitor monitor() {
+        return PageDrawing.warningsTo(err());
+    }
+
+    private PrintWriter err() {
+        return spec.commandLine().getErr();
+    }
+}

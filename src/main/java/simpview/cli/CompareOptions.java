@@ -1,0 +1,100 @@
+package simpview.cli;
+
+import java.util.BitSet;
+import java.util.Locale;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.TypeConversionException;
+import simpview.pages.Pages;
+
+/** The values {@code simpview compare} reads from its options: tolerances, shares, page ranges. */
+public final class CompareOptions {
+
+    private CompareOptions() {
+    }
+
+    /** A tolerance in 1/255 steps: {@code 8} or {@code 8/255}, 0 to 255. */
+    static final class Tolerance implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            String steps = text.trim().endsWith("/255") ? text.trim().substring(0, text.trim().length() - 4) : text.trim();
+            try {
+                int value = Integer.parseInt(steps.trim());
+                if (value >= 0 && value <= 255) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a tolerance: expected a whole number of 1/255 "
+                    + "steps from 0 to 255, e.g. 8 or 8/255");
+        }
+    }
+
+    /** A share in percent: {@code 99}, {@code 99.5} or {@code 99.5%}, 0 to 100. */
+    static final class Share implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            String number = text.trim().endsWith("%") ? text.trim().substring(0, text.trim().length() - 1) : text.trim();
+            try {
+                double value = Double.parseDouble(number.trim());
+                if (value >= 0 && value <= 100) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a share: expected a percentage from 0 to 100, "
+                    + "e.g. 99 or 99.5%");
+        }
+    }
+
+    /** Pages, e.g. {@code 1-8}, {@code 6} or {@code 1,3,6-8}. */
+    record PageRange(BitSet pages, String text) {
+
+        boolean contains(int page) {
+            return page >= 1 && pages.get(page);
+        }
+
+        @Override
+        public String toString() {
+            return text;
+        }
+    }
+
+    static final class PageRangeConverter implements ITypeConverter<PageRange> {
+        @Override
+        public PageRange convert(String text) {
+            BitSet pages = new BitSet();
+            for (String part : text.split(",", -1)) {
+                String[] ends = part.trim().split("-", -1);
+                if (ends.length > 2) {
+                    throw invalid(text);
+                }
+                int from = page(ends[0], text);
+                int to = ends.length == 2 ? page(ends[1], text) : from;
+                if (to < from) {
+                    throw invalid(text);
+                }
+                pages.set(from, to + 1);
+            }
+            return new PageRange(pages, text.trim());
+        }
+
+        private static int page(String number, String whole) {
+            try {
+                int page = Integer.parseInt(number.trim());
+                if (page >= 1 && page <= Pages.COUNT) {
+                    return page;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw invalid(whole);
+        }
+
+        private static TypeConversionException invalid(String text) {
+            return new TypeConversionException(String.format(Locale.ROOT,
+                    "'%s' is not a set of pages: expected pages 1 to %d like 1-8, 6 or 1,3,6-8", text, Pages.COUNT));
+        }
+    }
+}

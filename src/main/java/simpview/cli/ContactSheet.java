@@ -1,0 +1,84 @@
+package simpview.cli;
+
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.util.List;
+import simpview.surface.Colors;
+
+/**
+ * Several finished pages side by side at half size, each with its label:
+ * the picture in the README. The pages come from our rasterizer; Java2D only
+ * tiles them and writes the labels.
+ */
+public final class ContactSheet {
+
+    static final int COLUMNS = 4;
+    static final int TILE = 375;
+    static final int LABEL_HEIGHT = 28;
+    static final int GAP = 12;
+
+    /** One page of the sheet. */
+    record Tile(String label, BufferedImage page) {
+    }
+
+    private ContactSheet() {
+    }
+
+    static BufferedImage compose(List<Tile> tiles) {
+        if (tiles.isEmpty()) {
+            throw new IllegalArgumentException("a contact sheet needs at least one page");
+        }
+        int columns = Math.min(COLUMNS, tiles.size());
+        int rows = (tiles.size() + COLUMNS - 1) / COLUMNS;
+        int cellHeight = TILE + LABEL_HEIGHT;
+        BufferedImage sheet = new BufferedImage(GAP + columns * (TILE + GAP), GAP + rows * (cellHeight + GAP),
+                BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = sheet.createGraphics();
+        try {
+            g.setColor(new Color(0xE8E8E8));
+            g.fillRect(0, 0, sheet.getWidth(), sheet.getHeight());
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 15));
+            for (int i = 0; i < tiles.size(); i++) {
+                int x = GAP + (i % COLUMNS) * (TILE + GAP);
+                int y = GAP + (i / COLUMNS) * (cellHeight + GAP);
+                g.drawImage(halved(tiles.get(i).page()), x, y, null);
+                g.setColor(Color.BLACK);
+                g.drawString(tiles.get(i).label(), x + 4, y + TILE + LABEL_HEIGHT - 9);
+            }
+        } finally {
+            g.dispose();
+        }
+        return sheet;
+    }
+
+    /** Half size by averaging each 2x2 block: exact and the same on every machine. */
+    static BufferedImage halved(BufferedImage page) {
+        int w = page.getWidth() / 2;
+        int h = page.getHeight() / 2;
+        BufferedImage small = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int[] block = page.getRGB(2 * x, 2 * y, 2, 2, null, 0, 2);
+                small.setRGB(x, y, average(block));
+            }
+        }
+        return small;
+    }
+
+    private static int average(int[] pixels) {
+        int r = 0;
+        int g = 0;
+        int b = 0;
+        for (int p : pixels) {
+            r += Colors.red(p);
+            g += Colors.green(p);
+            b += Colors.blue(p);
+        }
+        int n = pixels.length;
+        return 0xFF000000 | (r + n / 2) / n << 16 | (g + n / 2) / n << 8 | (b + n / 2) / n;
+    }
+}

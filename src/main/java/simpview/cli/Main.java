@@ -1,0 +1,116 @@
+package simpview.cli;
+
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import picocli.CommandLine;
+import simpview.pages.PageContext;
+
+/**
+ * Entry point: {@code simpview} opens the window, {@code simpview render ...}
+ * writes PNG files. Exit codes: 0 success, 1 scene error (or an output that
+ * cannot be written), 2 usage error ({@link ExitCode}).
+ */
+public final class Main {
+
+    /** The whole argument line of {@code gradle run -PappArgs="..."}, split here as a shell would. */
+    static final String APP_ARGS = "simpview.appArgs";
+
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
+        PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
+        OwnScenes.locate();
+        String[] line;
+        try {
+            line = withAppArgs(System.getProperty(APP_ARGS), args);
+        } catch (IllegalArgumentException e) {
+            err.println("simpview: -PappArgs: " + e.getMessage());
+            System.exit(ExitCode.USAGE_ERROR);
+            return;
+        }
+        SimpviewCommand command = new SimpviewCommand(SimpviewCommand::displayMissing);
+        int code = execute(command, line, out, err);
+        // An open window keeps the program alive; it ends when the window closes.
+        if (!command.openedWindow()) {
+            System.exit(code);
+        }
+    }
+
+    /** Runs one command line in-process and returns its exit code (never exits the JVM). */
+    public static int run(String[] args, PrintWriter out, PrintWriter err) {
+        return execute(new SimpviewCommand(SimpviewCommand::displayMissing), args, out, err);
+    }
+
+    /**
+     * The arguments simpview runs with: those of -Dsimpview.appArgs (one line,
+     * split as a shell would, so quoted paths stay whole), then the program's own.
+     *
+     * @throws IllegalArgumentException when a quote of the line is never closed
+     */
+    static String[] withAppArgs(String appArgs, String[] args) {
+        if (appArgs == null) {
+            return args;
+        }
+        List<String> all = new ArrayList<>(ArgumentLine.split(appArgs));
+        all.addAll(List.of(args));
+        return all.toArray(String[]::new);
+    }
+
+    static int execute(SimpviewCommand command, String[] args, PrintWriter out, PrintWriter err) {
+        CommandLine commandLine = new CommandLine(command)
+                .setOut(out)
+                .setErr(err)
+                .setExecutionExceptionHandler(Main::reportUnexpected)
+                .setParameterExceptionHandler(Main::reportUsageError);
+        sayWhereTheScenesAre(commandLine);
+        sayWhereTheScenesAre(commandLine.getSubcommands().get("render"));
+        // picocli's own exit code for invalid input is already ExitCode.USAGE_ERROR (2).
+        int code = commandLine.execute(args);
+        out.flush();
+        err.flush();
+        return code;
+    }
+
+    /** A usage error: the problem, a suggestion when a word was mistyped, and one line pointing at --help. */
+    private static int reportUsageError(CommandLine.ParameterException e, String[] args) {
+        CommandLine commandLine = e.getCommandLine();
+        PrintWriter err = commandLine.getErr();
+        err.println("simpview: " + e.getMessage());
+        if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+            for (String word : unmatched.getUnmatched()) {
+                java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
+                known.addAll(commandLine.getSubcommands().keySet());
+                simpview.scene.Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
+            }
+        }
+        err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");
+        err.flush();
+        return ExitCode.USAGE_ERROR;
+    }
+
+    /** Ends --help with the scene folder the defaults really read, as an absolute path. */
+    private static void sayWhereTheScenesAre(CommandLine commandLine) {
+        String folder = PageContext.defaultSimpDir().toAbsolutePath().normalize().toString().replace("%", "%%");
+        List<String> footer = new ArrayList<>(List.of(commandLine.getCommandSpec().usageMessage().footer()));
+        footer.add("");
+        footer.add("Scene folder: " + folder);
+        footer.add("  pages 4 and 5 come from there; pages 6 to 8 too, unless --simp-dir D");
+        footer.add("  names the folder of the course's page6.simp to page8.simp.");
+        commandLine.getCommandSpec().usageMessage().footer(footer.toArray(String[]::new));
+    }
+
+    /**
+     * User errors are caught where they happen and reported in one message;
+     * anything reaching here is a bug, so the trace is worth showing.
+     */
+    private static int reportUnexpected(Exception e, CommandLine commandLine, CommandLine.ParseResult parsed) {
+        PrintWriter err = commandLine.getErr();
+        err.println("simpview: internal error: " + e);
+        e.printStackTrace(err);
+        return ExitCode.SCENE_ERROR;
+    }
+}

@@ -1,0 +1,46 @@
+package simpview.cli;
+
+import java.util.HashMap;
+import java.util.Map;
+import simpview.compare.Picture;
+import simpview.pages.PageContext;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+
+/**
+ * simpview's own pictures to compare with, drawn the way {@code render}
+ * draws them (through {@link PageDrawing}), each at most once per run.
+ */
+public final class OwnPictures {
+
+    private final PageDrawing drawing;
+    private final PageContext context;
+    private final Rgb near;
+    private final Rgb far;
+    private final Map<CompareTarget, Picture> drawn = new HashMap<>();
+
+    /** Scenes are depth-cued from {@code near} to {@code far}; null means the defaults, white and black. */
+    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor) {
+        this.drawing = new PageDrawing(monitor);
+        this.context = context;
+        this.near = near;
+        this.far = far;
+    }
+
+    Picture of(CompareTarget target) throws SceneException {
+        Picture picture = drawn.get(target);
+        if (picture == null) {
+            PageCanvas canvas = target.isPage() ? drawing.page(target.page(), context)
+                    : drawing.scene(target.scene(), near, far);
+            picture = Picture.ofPage(canvas.image(), "simpview's " + target.describe(context));
+            drawn.put(target, picture);
+        }
+        return picture;
+    }
+
+    PageContext context() {
+        return context;
+    }
+}

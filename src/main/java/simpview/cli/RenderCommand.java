@@ -1,0 +1,288 @@
+package simpview.cli;
+
+import simpview.compare.PngFiles;
+import simpview.scene.simp.SceneSheet;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.pages.SceneList;
+import simpview.scene.SceneException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.Rgb;
+
+/** {@code simpview render ...}: pages or any scene to PNG, without a window. */
+@Command(name = "render",
+        mixinStandardHelpOptions = true,
+        version = ExitCode.VERSION,
+        description = "Renders pages, or any scene as a page, to PNG files (no display needed).",
+        footer = {"", "Examples:",
+            "  simpview render --page 3 --seed 7 --out page3.png",
+            "  simpview render --all --simp-dir course/ --out-dir pages/",
+            "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
+            "  simpview render --scene house.simp --own-colors --out house.png",
+            "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
+            "  simpview render --contact-sheet --out docs/pages.png",
+            "  simpview render --contact-sheet --out lit.png simp/lit-shading.simp simp/lit-lights.simp"},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
+public final class RenderCommand implements Callable<Integer> {
+
+    /** Exactly one of these says what to render. */
+    static final class What {
+        @Option(names = "--page", paramLabel = "N", required = true, description = "one page, 1 to 8")
+        Integer page;
+
+        @Option(names = "--all", required = true, description = "all eight pages, as page1.png ... page8.png")
+        boolean all;
+
+        @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full page: lit by its own rules, or depth-cued")
+        Path scene;
+
+        @Option(names = "--scenes", arity = "1..*", paramLabel = "F|DIR", required = true,
+                description = "every scene named (a folder: its .simp files), each as NAME.png in --out-dir")
+        List<Path> scenes;
+
+        @Option(names = "--contact-sheet", required = true,
+                description = "the pages that render (or the SCENE files given), side by side at half size")
+        boolean contactSheet;
+    }
+
+    @Spec
+    private CommandSpec spec;
+
+    @ArgGroup(exclusive = true, multiplicity = "1")
+    private What what;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
+    private Path simpDir;
+
+    @Option(names = "--out", paramLabel = "F.png", description = "the PNG to write (--page, --scene, --contact-sheet)")
+    private Path out;
+
+    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write to (--all: page1.png ... page8.png; --scenes: NAME.png)")
+    private Path outDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "depth cue colour at z = 0, channels 0 to 1 (depth-cued scenes; default: 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "depth cue colour at z = -200 (depth-cued scenes; default: 0,0,0)")
+    private Rgb far;
+
+    @Parameters(paramLabel = "SCENE", arity = "0..*",
+            description = "--contact-sheet: scenes to tile instead of the pages, each drawn as --scene draws it")
+    private List<Path> scenes = new ArrayList<>();
+
+    @Option(names = {"--own-colors", "--own-colours"},
+            description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
+    private boolean ownColours;
+
+    @Override
+    public Integer call() {
+        checkOptions();
+        if (what.page != null) {
+            return renderPage(what.page);
+        }
+        if (what.all) {
+            return renderAll();
+        }
+        if (what.scene != null) {
+            return renderScene();
+        }
+        if (what.scenes != null) {
+            return renderScenes();
+        }
+        return scenes.isEmpty() ? renderContactSheet() : renderSceneSheet();
+    }
+
+    /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
+    private void checkOptions() {
+        if (what.scenes != null) {
+            checkScenes();
+            return;
+        }
+        boolean pages = what.scene == null;
+        usage(what.page == null || what.page >= 1 && what.page <= Pages.COUNT,
+                "--page must be 1 to " + Pages.COUNT + ", not " + what.page);
+        usage(what.all ? outDir != null : out != null,
+                what.all ? "--all needs --out-dir D" : "missing --out F.png");
+        usage(what.all ? out == null : outDir == null,
+                what.all ? "--all writes eight files: use --out-dir, not --out" : "--out-dir goes with --all only");
+        usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
+        usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
+        usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
+        usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+        String cue = pages ? null : SceneSheet.cueColoursProblem(what.scene, near, far);
+        usage(cue == null, cue);
+        usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
+        usage(scenes.isEmpty() || seed == null && simpDir == null,
+                "--seed and --simp-dir go with the pages, not with a sheet of scenes");
+        usage(!ownColours || !pages, "--own-colors goes with --scene only");
+        usage(!ownColours || near == null && far == null,
+                "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
+        usage(out == null || PngFiles.isPngName(out), "--out " + out + ": simpview writes PNG files only; name it .png");
+    }
+
+    /** --scenes: the list must name scenes, and the pictures go to a folder. */
+    private void checkScenes() {
+        usage(outDir != null && !outDir.toString().isEmpty() && out == null,
+                "--scenes writes one picture per scene: give --out-dir D, not --out");
+        usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
+        try {
+            sceneList = SceneList.of(what.scenes);
+        } catch (IllegalArgumentException e) {
+            usage(false, e.getMessage());
+        }
+        for (Path scene : sceneList) {
+            String cue = SceneSheet.cueColoursProblem(scene, near, far);
+            usage(cue == null, cue);
+        }
+    }
+
+    /** The scenes of --scenes, once checked. */
+    private List<Path> sceneList;
+
+    private void usage(boolean fine, String message) {
+        if (!fine) {
+            throw new ParameterException(spec.commandLine(), message);
+        }
+    }
+
+    private int renderPage(int number) {
+        try {
+            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
+        } catch (SceneException e) {
+            err().println(e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+    }
+
+    private int renderAll() {
+        PageDrawing drawing = new PageDrawing(monitor());
+        PageContext context = context();
+        int code = ExitCode.OK;
+        for (int n = 1; n <= Pages.COUNT; n++) {
+            BufferedImage image;
+            try {
+                image = drawing.page(n, context).image();
+            } catch (SceneException e) {
+                err().println("page " + n + " not written: " + e.getMessage());
+                code = ExitCode.SCENE_ERROR;
+                continue;
+            }
+            if (write(image, outDir.resolve("page" + n + ".png")) != ExitCode.OK) {
+                return ExitCode.SCENE_ERROR; // the folder is unwritable: the other pages would fail alike
+            }
+        }
+        return code;
+    }
+
+    /** Each scene to NAME.png; one that fails is named on stderr and not written, the others are. */
+    private int renderScenes() {
+        PageDrawing drawing = new PageDrawing(monitor());
+        int code = ExitCode.OK;
+        for (Path scene : sceneList) {
+            BufferedImage image;
+            try {
+                image = drawing.scene(scene, near, far).image();
+            } catch (SceneException e) {
+                err().println(scene.getFileName() + " not written: " + e.getMessage());
+                code = ExitCode.SCENE_ERROR;
+                continue;
+            }
+            if (write(image, outDir.resolve(SceneList.pictureName(scene))) != ExitCode.OK) {
+                return ExitCode.SCENE_ERROR;
+            }
+        }
+        return code;
+    }
+
+    private int renderScene() {
+        try {
+            return write(new PageDrawing(monitor()).scene(what.scene, near, far, ownColours).image(), out);
+        } catch (SceneException e) {
+            err().println(e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+    }
+
+    /** Pages that fail are left out and named on stderr; the sheet shows the rest. */
+    private int renderContactSheet() {
+        PageRenderer renderer = new PageRenderer();
+        PageContext context = context();
+        List<ContactSheet.Tile> tiles = new ArrayList<>();
+        for (int n = 1; n <= Pages.COUNT; n++) {
+            try {
+                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
+            } catch (SceneException e) {
+                err().println("page " + n + " left out: " + e.getMessage());
+            }
+        }
+        if (tiles.isEmpty()) {
+            return ExitCode.SCENE_ERROR;
+        }
+        int written = write(ContactSheet.compose(tiles), out);
+        return tiles.size() == Pages.COUNT ? written : ExitCode.SCENE_ERROR;
+    }
+
+    /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
+    private int renderSceneSheet() {
+        List<ContactSheet.Tile> tiles = new ArrayList<>();
+        PageDrawing drawing = new PageDrawing(monitor());
+        for (Path scene : scenes) {
+            try {
+                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()),
+                        drawing.scene(scene, null, null).snapshot()));
+            } catch (SceneException e) {
+                err().println(scene + " left out: " + e.getMessage());
+            }
+        }
+        if (tiles.isEmpty()) {
+            return ExitCode.SCENE_ERROR;
+        }
+        int written = write(ContactSheet.compose(tiles), out);
+        return tiles.size() == scenes.size() ? written : ExitCode.SCENE_ERROR;
+    }
+
+    private int write(BufferedImage image, Path file) {
+        try {
+            PngFiles.write(image, file);
+            return ExitCode.OK;
+        } catch (IOException e) {
+            err().println("simpview: " + e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+    }
+
+    private PageContext context() {
+        return PageDrawing.context(seed, simpDir, monitor());
+    }
+
+    private SceneMonitor monitor() {
+        return PageDrawing.warningsTo(err());
+    }
+
+    private PrintWriter err() {
+        return spec.commandLine().getErr();
+    }
+}

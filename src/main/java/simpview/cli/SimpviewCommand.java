@@ -1,0 +1,108 @@
+package simpview.cli;
+
+import simpview.window.SimpviewWindow;
+import simpview.window.WindowOptions;
+
+import java.awt.AWTError;
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.function.BooleanSupplier;
+import javax.swing.SwingUtilities;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import simpview.pages.PageContext;
+import simpview.pages.SceneList;
+
+/** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
+@Command(name = "simpview",
+        mixinStandardHelpOptions = true,
+        version = ExitCode.VERSION,
+        subcommands = {RenderCommand.class, CompareCommand.class},
+        description = {
+            "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
+            "Use 'simpview render' to write pages as PNG files without a window,",
+            "and 'simpview compare' to see how close a picture is to simpview's."},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
+public final class SimpviewCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
+    private long seed = PageContext.DEFAULT_SEED;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
+    private Path simpDir;
+
+    @Parameters(arity = "0..*", paramLabel = "SCENE",
+            description = "a .simp scene to open at start (stepping goes on to the pages); several scenes, or a "
+                    + "folder of them, become the window's first pages, in the order given (a folder: natural name order)")
+    private List<Path> scenes = new ArrayList<>();
+
+    private final BooleanSupplier displayMissing;
+    private boolean openedWindow;
+
+    SimpviewCommand(BooleanSupplier displayMissing) {
+        this.displayMissing = displayMissing;
+    }
+
+    /** No display, or one that cannot be reached (a DISPLAY whose X server is gone). */
+    static boolean displayMissing() {
+        if (GraphicsEnvironment.isHeadless()) {
+            return true;
+        }
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getDefaultScreenDevice();
+            return false;
+        } catch (AWTError e) {
+            return true;
+        }
+    }
+
+    /** One scene file named alone: the window opens on it as an extra view, as before. */
+    private Optional<Path> openAtStart() {
+        return scenes.size() == 1 && !Files.isDirectory(scenes.get(0)) ? Optional.of(scenes.get(0)) : Optional.empty();
+    }
+
+    /** Several scenes or a folder: the window's first pages; a usage error when one names no scene. */
+    private List<Path> sceneList() {
+        if (openAtStart().isPresent() || scenes.isEmpty()) {
+            return List.of();
+        }
+        try {
+            return SceneList.of(scenes);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+    }
+
+    /** True once the window was asked to open: then the program lives until it closes. */
+    boolean openedWindow() {
+        return openedWindow;
+    }
+
+    @Override
+    public Integer call() {
+        if (displayMissing.getAsBoolean()) {
+            spec.commandLine().getErr().println(
+                    "simpview: no display to open a window on; write PNG files with 'simpview render --all --out-dir DIR' "
+                    + "(see 'simpview render --help')");
+            return ExitCode.USAGE_ERROR;
+        }
+        WindowOptions options = new WindowOptions(seed,
+                simpDir == null ? PageContext.defaultSimpDir() : simpDir, openAtStart(), sceneList());
+        SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
+        openedWindow = true;
+        return ExitCode.OK;
+    }
+}

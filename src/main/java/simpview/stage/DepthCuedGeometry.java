@@ -1,0 +1,87 @@
+package simpview.stage;
+
+import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
+import simpview.geometry.Vertex;
+
+/**
+ * The geometry stage of a depth-cued scene (SPEC Part 1), top to bottom:
+ * object space -> world space by the CTM (world space is camera space: Part 1
+ * has no camera) -> culled when wholly outside one plane of the parallel view
+ * -> projected onto the panel -> handed to the sink. Nothing is clipped here:
+ * the scissor in the drawable chain drops what lies outside, pixel by pixel.
+ *
+ * <p>Reuses its scratch arrays: nothing is allocated per primitive.
+ */
+public final class DepthCuedGeometry implements GeometryStage {
+
+    private static final Camera VIEW = Camera.PARALLEL;
+
+    private PrimitiveSink sink;
+    /** Camera-space (= world-space) positions of the primitive at hand, x, y, z each. */
+    private final double[] camera = new double[3 * 3];
+    /** The same in panel space with colours, as the painter takes them. */
+    private final double[] panel = new double[Painter.STRIDE];
+    private long culled;
+
+    public DepthCuedGeometry(PrimitiveSink sink) {
+        this.sink = sink;
+    }
+
+    @Override
+    public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        draw(Painter.LINE, ctm, xyz, rgb, 2);
+    }
+
+    @Override
+    public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        draw(wire ? Painter.WIRE : Painter.FILLED, ctm, xyz, rgb, 3);
+    }
+
+    /** Object -> world (= camera) -> cull -> project -> sink; a vertex without a colour is white. */
+    private void draw(int kind, Matrix4 ctm, double[] xyz, double[] rgb, int count) {
+        toCamera(ctm, xyz, count);
+        if (VIEW.culls(camera, 3, count)) {
+            culled++;
+            return;
+        }
+        project(rgb, count);
+        sink.add(kind, panel);
+    }
+
+    private void toCamera(Matrix4 ctm, double[] p, int count) {
+        for (int k = 0; k < 3 * count; k += 3) {
+            double x = p[k];
+            double y = p[k + 1];
+            double z = p[k + 2];
+            camera[k] = ctm.applyX(x, y, z);
+            camera[k + 1] = ctm.applyY(x, y, z);
+            camera[k + 2] = ctm.applyZ(x, y, z);
+        }
+    }
+
+    /** Panel x and y, depth kept, each vertex with its own colour or white. */
+    private void project(double[] rgb, int count) {
+        for (int k = 0; k < count; k++) {
+            int i = 3 * k;
+            int o = Vertex.NUMBERS * k;
+            double z = camera[i + 2];
+            panel[o + Vertex.X] = VIEW.panelX(camera[i], z);
+            panel[o + Vertex.Y] = VIEW.panelY(camera[i + 1], z);
+            panel[o + Vertex.Z] = z;
+            panel[o + Vertex.R] = rgb == null ? 1 : rgb[i];
+            panel[o + Vertex.G] = rgb == null ? 1 : rgb[i + 1];
+            panel[o + Vertex.B] = rgb == null ? 1 : rgb[i + 2];
+        }
+    }
+
+    /** From now on primitives go to {@code to}. */
+    public void sendTo(PrimitiveSink to) {
+        sink = to;
+    }
+
+    @Override
+    public long culledCount() {
+        return culled;
+    }
+}

@@ -1,0 +1,27 @@
+package simpview.stage;
+
+import simpview.geometry.Matrix4;
+
+/**
+ * The first stage of the pipeline: takes a scene's lines and polygons in
+ * object space, with the CTM at their command, through world and camera space
+ * to the panel, and hands what is in view to the rasterizers. One stage per
+ * rule set: {@link DepthCuedGeometry} (SPEC Part 1) and {@link LitGeometry}
+ * (Part 2).
+ */
+public interface GeometryStage {
+
+    /**
+     * A line from vertex 0 to vertex 1.
+     *
+     * @param xyz object-space positions, x, y, z per vertex
+     * @param rgb the vertices' own colours, r, g, b each in [0, 1], or null when they have none
+     */
+    void line(Matrix4 ctm, double[] xyz, double[] rgb);
+
+    /** A triangle, filled or as its outline ({@code wire}); arguments as for {@link #line}. */
+    void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire);
+
+    /** Primitives skipped because they lie wholly outside one plane of the view. */
+    long culledCount();
+}

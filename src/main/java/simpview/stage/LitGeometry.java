@@ -1,0 +1,425 @@
+package simpview.stage;
+
+import java.nio.file.Path;
+import simpview.geometry.Camera;
+import simpview.geometry.Clipper;
+import simpview.geometry.Matrix4;
+import simpview.raster.LitLineRasterizer;
+import simpview.raster.LitPolygonRasterizer;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+
+/**
+ * The geometry stage of a lit scene (SPEC Part 2), top to bottom for every
+ * line, polygon and .obj face:
+ * <ol>
+ * <li>object -> camera space by W * CTM (W the inverse of the CTM at the
+ *     {@code camera} command; the identity without one), own normals by its
+ *     normal transform, made unit length;</li>
+ * <li>culled when every vertex is outside one plane of the view;</li>
+ * <li>the face normal for vertices without their own;</li>
+ * <li>lit, for filled polygons: once at the centroid (flat), at each vertex
+ *     (gouraud), or not yet (phong: the fragment stage lights every pixel);
+ *     lines and wire polygons are not lit, they carry kd;</li>
+ * <li>clipped against the six planes (Sutherland-Hodgman, attributes lerped
+ *     in camera space);</li>
+ * <li>projected onto the panel, each attribute multiplied by q = 1/w;</li>
+ * <li>rasterized: a fan for filled polygons, the clipped outline for wire
+ *     ones, a DDA line for lines; the fragments go to the
+ *     {@link FragmentStage}.</li>
+ * </ol>
+ * One instance draws one scene; it reuses its scratch arrays, and allocates
+ * nothing per primitive beyond growing them for the largest face yet.
+ *
+ * <p>Followed by a {@link PrimitiveTrace} (the window's instruments), each
+ * primitive is told to it between steps 6 and 7, with its file and line and
+ * its clipped, projected outline, and may be left out (stepping); the
+ * camera-space box of what was rasterized is kept, for the window's orbit.
+ * Not followed (null, the default), this costs one test per primitive.
+ */
+public final class LitGeometry implements GeometryStage {
+
+    // A camera-space vertex, as the clipper takes it.
+    static final int CX = 0;
+    static final int CY = 1;
+    static final int CZ = 2;
+    static final int CR = 3;
+    static final int CG = 4;
+    static final int CB = 5;
+    static final int CNX = 6;
+    static final int CNY = 7;
+    static final int CNZ = 8;
+    static final int CAMERA_STRIDE = 9;
+
+    private final LitState state;
+    private final FragmentStage fragments;
+    private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
+    private final LitLineRasterizer lines = new LitLineRasterizer();
+    private final Clipper clipper = new Clipper(CAMERA_STRIDE);
+    private double[] cam = new double[CAMERA_STRIDE * 8];
+    private boolean[] ownNormal = new boolean[8];
+    private double[] screen = new double[(3 + FragmentStage.PHONG_CHANNELS) * 16];
+    private final double[] lit = new double[3];
+    /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
+    private double faceNx;
+    private double faceNy;
+    private double faceNz;
+    // W * CTM and its normal transform, for the CTM they were made from.
+    private Matrix4 madeFrom;
+    private Matrix4 madeWith;
+    private Matrix4 toCamera;
+    private Matrix4 normals;
+    /** The CTM and style of the obj command whose faces are being drawn. */
+    private Matrix4 objCtm;
+    private boolean objWire;
+    private Path objFile;
+    private long culled;
+    /** Who follows the primitives, or null; where the primitive at hand comes from; how many were told. */
+    private PrimitiveTrace trace;
+    private Path sourceFile;
+    private int sourceLine;
+    private int traced;
+    /** The camera-space box of the clipped vertices of every primitive told to the trace: min x, y, z, max x, y, z. */
+    private final double[] shown = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+        Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+
+    public LitGeometry(LitState state, FragmentStage fragments) {
+        this.state = state;
+        this.fragments = fragments;
+    }
+
+    @Override
+    public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        transform(ctm);
+        for (int k = 0; k < 2; k++) {
+            vertex(k, xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+            colour(k, rgb, 3 * k);
+            ownNormal[k] = false;
+        }
+        if (state.camera().culls(cam, CAMERA_STRIDE, 2)) {
+            culled++;
+            return;
+        }
+        if (clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+            fragments.colours(state.fog());
+            int n = project(clipper.vertices(), 2, FragmentStage.COLOUR_CHANNELS);
+            if (n == 2 && (trace == null || traced(Painter.LINE, FragmentStage.COLOUR_CHANNELS, 2))) {
+                lines.draw(screen, 0, 3 + FragmentStage.COLOUR_CHANNELS, FragmentStage.COLOUR_CHANNELS,
+                        fragments.width(), fragments.height(), fragments);
+            }
+        }
+    }
+
+    @Override
+    public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        transform(ctm);
+        for (int k = 0; k < 3; k++) {
+            vertex(k, xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+            colour(k, rgb, 3 * k);
+            ownNormal[k] = false;
+        }
+        face(3, wire);
+    }
+
+    /** Starts the faces of an {@code obj} command: the model in {@code file}, drawn with this CTM and style. */
+    public void beginObj(Matrix4 ctm, boolean wire, Path file) {
+        objCtm = ctm;
+        objWire = wire;
+        objFile = file;
+    }
+
+    /** One face of the model begun by {@link #beginObj}: the obj reader's faces come here, in file order. */
+    public void face(ObjFace f) {
+        sourceFile = objFile;
+        sourceLine = f.line();
+        int n = f.size();
+        room(n);
+        transform(objCtm);
+        for (int k = 0; k < n; k++) {
+            vertex(k, f.x(k), f.y(k), f.z(k));
+            int o = k * CAMERA_STRIDE;
+            if (f.hasColor(k)) {
+                cam[o + CR] = clamp(f.r(k));
+                cam[o + CG] = clamp(f.g(k));
+                cam[o + CB] = clamp(f.b(k));
+            } else {
+                colour(k, null, 0);
+            }
+            ownNormal[k] = f.hasNormal(k);
+            if (ownNormal[k]) {
+                normal(k, f.nx(k), f.ny(k), f.nz(k));
+            }
+        }
+        face(n, objWire);
+    }
+
+    /** Steps 2 to 7 for a polygon whose n camera-space vertices are in place. */
+    private void face(int n, boolean wire) {
+        Camera camera = state.camera();
+        if (camera.culls(cam, CAMERA_STRIDE, n)) {
+            culled++;
+            return;
+        }
+        faceNormals(n);
+        int channels = wire ? FragmentStage.COLOUR_CHANNELS : shade(n);
+        int kept = clipper.clipPolygon(camera, cam, 0, n);
+        if (kept < 3) {
+            return;
+        }
+        int m = project(clipper.vertices(), kept, channels);
+        if (m < kept) {
+            return; // a vertex that cannot be projected (not finite)
+        }
+        if (trace != null && !traced(wire ? Painter.WIRE : Painter.FILLED, channels, kept)) {
+            return;
+        }
+        int width = fragments.width();
+        int height = fragments.height();
+        if (!wire) {
+            fill.fill(screen, kept, channels, width, height, fragments);
+            return;
+        }
+        fragments.colours(state.fog());
+        int stride = 3 + channels;
+        for (int k = 0; k < kept; k++) {
+            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, fragments);
+        }
+    }
+
+    /**
+     * Step 4 for a filled polygon: flat and gouraud put the lit colour in
+     * place of kd; phong leaves kd and the normals for the fragment stage.
+     *
+     * @return the channels the fragments will carry
+     */
+    private int shade(int n) {
+        switch (state.shading()) {
+            case FLAT -> {
+                flat(n);
+                fragments.colours(state.fog());
+                return FragmentStage.COLOUR_CHANNELS;
+            }
+            case GOURAUD -> {
+                for (int k = 0; k < n; k++) {
+                    int o = k * CAMERA_STRIDE;
+                    state.shade(cam[o + CX], cam[o + CY], cam[o + CZ], cam[o + CNX], cam[o + CNY], cam[o + CNZ],
+                            cam[o + CR], cam[o + CG], cam[o + CB], lit);
+                    cam[o + CR] = lit[0];
+                    cam[o + CG] = lit[1];
+                    cam[o + CB] = lit[2];
+                }
+                fragments.colours(state.fog());
+                return FragmentStage.COLOUR_CHANNELS;
+            }
+            default -> {
+                fragments.phong(state, state.fog());
+                return FragmentStage.PHONG_CHANNELS;
+            }
+        }
+    }
+
+    /** One colour for the polygon: lit at the centroid, with the mean kd and the mean own normal or the face's. */
+    private void flat(int n) {
+        double px = 0, py = 0, pz = 0, kr = 0, kg = 0, kb = 0, nx = 0, ny = 0, nz = 0;
+        boolean allOwn = true;
+        for (int k = 0; k < n; k++) {
+            int o = k * CAMERA_STRIDE;
+            px += cam[o + CX];
+            py += cam[o + CY];
+            pz += cam[o + CZ];
+            kr += cam[o + CR];
+            kg += cam[o + CG];
+            kb += cam[o + CB];
+            nx += cam[o + CNX];
+            ny += cam[o + CNY];
+            nz += cam[o + CNZ];
+            allOwn &= ownNormal[k];
+        }
+        if (!allOwn) {
+            nx = faceNx;
+            ny = faceNy;
+            nz = faceNz;
+        }
+        state.shade(px / n, py / n, pz / n, nx, ny, nz, kr / n, kg / n, kb / n, lit);
+        for (int k = 0; k < n; k++) {
+            int o = k * CAMERA_STRIDE;
+            cam[o + CR] = lit[0];
+            cam[o + CG] = lit[1];
+            cam[o + CB] = lit[2];
+        }
+    }
+
+    /** Step 3: the face normal (p2 - p1) x (p3 - p1), unit or zero, given to every vertex without its own. */
+    private void faceNormals(int n) {
+        int b = CAMERA_STRIDE;
+        int c = 2 * CAMERA_STRIDE;
+        double e1x = cam[b + CX] - cam[CX];
+        double e1y = cam[b + CY] - cam[CY];
+        double e1z = cam[b + CZ] - cam[CZ];
+        double e2x = cam[c + CX] - cam[CX];
+        double e2y = cam[c + CY] - cam[CY];
+        double e2z = cam[c + CZ] - cam[CZ];
+        double nx = e1y * e2z - e1z * e2y;
+        double ny = e1z * e2x - e1x * e2z;
+        double nz = e1x * e2y - e1y * e2x;
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        boolean usable = length > 0 && Double.isFinite(length);
+        faceNx = usable ? nx / length : 0;
+        faceNy = usable ? ny / length : 0;
+        faceNz = usable ? nz / length : 0;
+        for (int k = 0; k < n; k++) {
+            if (!ownNormal[k]) {
+                int o = k * CAMERA_STRIDE;
+                cam[o + CNX] = faceNx;
+                cam[o + CNY] = faceNy;
+                cam[o + CNZ] = faceNz;
+            }
+        }
+    }
+
+    /**
+     * Step 6: the first n clipped vertices to panel space, channels times q.
+     *
+     * @return how many could be projected (all of them unless one is not finite)
+     */
+    private int project(double[] v, int n, int channels) {
+        Camera camera = state.camera();
+        int stride = 3 + channels;
+        if (screen.length < n * stride) {
+            screen = new double[2 * n * stride];
+        }
+        for (int k = 0; k < n; k++) {
+            int i = k * CAMERA_STRIDE;
+            int o = k * stride;
+            double x = v[i + CX];
+            double y = v[i + CY];
+            double z = v[i + CZ];
+            double q = camera.q(z);
+            double sx = camera.panelX(x, z);
+            double sy = camera.panelY(y, z);
+            if (!Double.isFinite(sx) || !Double.isFinite(sy) || !Double.isFinite(q)) {
+                return k;
+            }
+            screen[o] = sx;
+            screen[o + 1] = sy;
+            screen[o + 2] = q;
+            screen[o + 3 + FragmentStage.Z] = z * q;
+            screen[o + 3 + FragmentStage.R] = v[i + CR] * q;
+            screen[o + 3 + FragmentStage.G] = v[i + CG] * q;
+            screen[o + 3 + FragmentStage.B] = v[i + CB] * q;
+            if (channels == FragmentStage.PHONG_CHANNELS) {
+                screen[o + 3 + FragmentStage.PX] = x * q;
+                screen[o + 3 + FragmentStage.PY] = y * q;
+                screen[o + 3 + FragmentStage.NX] = v[i + CNX] * q;
+                screen[o + 3 + FragmentStage.NY] = v[i + CNY] * q;
+                screen[o + 3 + FragmentStage.NZ] = v[i + CNZ] * q;
+            }
+        }
+        return n;
+    }
+
+    /** W * CTM and its normal transform, made again only when the CTM or the camera changed. */
+    private void transform(Matrix4 ctm) {
+        Matrix4 w = state.worldToCamera();
+        if (ctm != madeFrom || w != madeWith) {
+            madeFrom = ctm;
+            madeWith = w;
+            toCamera = w.times(ctm);
+            normals = toCamera.normalTransform();
+        }
+    }
+
+    /** Step 1 for vertex k's position. */
+    private void vertex(int k, double x, double y, double z) {
+        int o = k * CAMERA_STRIDE;
+        Matrix4 m = toCamera;
+        cam[o + CX] = m.applyX(x, y, z);
+        cam[o + CY] = m.applyY(x, y, z);
+        cam[o + CZ] = m.applyZ(x, y, z);
+    }
+
+    /** Vertex k's kd: its own colour from rgb[at], else the surface colour. */
+    private void colour(int k, double[] rgb, int at) {
+        int o = k * CAMERA_STRIDE;
+        cam[o + CR] = rgb == null ? state.kdR() : rgb[at];
+        cam[o + CG] = rgb == null ? state.kdG() : rgb[at + 1];
+        cam[o + CB] = rgb == null ? state.kdB() : rgb[at + 2];
+    }
+
+    /** Step 1 for vertex k's own normal: by the normal transform, made unit length (zero stays zero). */
+    private void normal(int k, double x, double y, double z) {
+        Matrix4 m = normals;
+        double nx = m.applyX(x, y, z);
+        double ny = m.applyY(x, y, z);
+        double nz = m.applyZ(x, y, z);
+        double length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        boolean usable = length > 0 && Double.isFinite(length);
+        int o = k * CAMERA_STRIDE;
+        cam[o + CNX] = usable ? nx / length : 0;
+        cam[o + CNY] = usable ? ny / length : 0;
+        cam[o + CNZ] = usable ? nz / length : 0;
+    }
+
+    private static double clamp(double c) {
+        return c < 0 ? 0 : c > 1 ? 1 : c;
+    }
+
+    /** Room for a face of n vertices. */
+    private void room(int n) {
+        if (ownNormal.length < n) {
+            ownNormal = new boolean[2 * n];
+            cam = new double[2 * n * CAMERA_STRIDE];
+        }
+    }
+
+    /**
+     * From now on tells {@code follower} of every primitive about to be
+     * rasterized (null: nobody). Lines and polygons of the SIMP file say
+     * where they stand with {@link #from}; .obj faces name their model's
+     * file and line themselves.
+     */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
+    }
+
+    /** The next line or polygon is the command at {@code line} of {@code file}. */
+    public void from(Path file, int line) {
+        sourceFile = file;
+        sourceLine = line;
+    }
+
+    /**
+     * The centre of the camera-space box around every primitive told to the
+     * trace, as clipped (what the view showed), or null when none was.
+     */
+    public double[] shownCentre() {
+        if (!(shown[0] <= shown[3])) {
+            return null;
+        }
+        return new double[] {(shown[0] + shown[3]) / 2, (shown[1] + shown[4]) / 2, (shown[2] + shown[5]) / 2};
+    }
+
+    /**
+     * Tells the trace of the primitive whose n projected vertices are in
+     * {@code screen} and whose clipped camera-space ones are the clipper's;
+     * false when it is to be left out.
+     */
+    private boolean traced(int kind, int channels, int n) {
+        double[] v = clipper.vertices();
+        for (int k = 0; k < n; k++) {
+            for (int axis = 0; axis < 3; axis++) {
+                double c = v[k * CAMERA_STRIDE + axis];
+                shown[axis] = Math.min(shown[axis], c);
+                shown[3 + axis] = Math.max(shown[3 + axis], c);
+            }
+        }
+        int index = traced++;
+        trace.read(index, sourceFile, sourceLine, kind, screen, 0, 3 + channels, n);
+        return trace.drawing(index);
+    }
+
+    @Override
+    public long culledCount() {
+        return culled;
+    }
+}

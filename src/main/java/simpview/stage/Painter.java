@@ -1,0 +1,58 @@
+package simpview.stage;
+
+import simpview.geometry.Vertex;
+import simpview.raster.LineRenderer;
+import simpview.raster.PolygonRenderer;
+import simpview.surface.Drawable;
+
+/**
+ * Draws primitives given as plain numbers in panel space with the scene's
+ * renderers. Everything it touches (renderers, panel) belongs to the thread
+ * that draws, so it is the only part of a scene that runs there.
+ */
+public final class Painter implements PrimitiveSink {
+
+    public static final int LINE = 0;
+    public static final int FILLED = 1;
+    public static final int WIRE = 2;
+    /** Numbers per primitive: room for a polygon's three vertices (panel x, panel y, world z, r, g, b each). */
+    public static final int STRIDE = 3 * Vertex.NUMBERS;
+
+    private final Drawable panel;
+    private final LineRenderer lines;
+    private final PolygonRenderer filled;
+    private final PolygonRenderer wire;
+    /** Who follows the primitives drawn (the window's instruments), or null. */
+    private PrimitiveTrace trace;
+    private int drawn;
+
+    public Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
+        this.panel = panel;
+        this.lines = lines;
+        this.filled = filled;
+        this.wire = wire;
+    }
+
+    @Override
+    public void add(int kind, double[] p) {
+        draw(kind, p, 0);
+    }
+
+    /** From now on tells {@code follower} of every primitive before drawing it (null: nobody). */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
+    }
+
+    /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
+    public void draw(int kind, double[] p, int at) {
+        if (trace != null && !trace.drawing(drawn++)) {
+            return;
+        }
+        switch (kind) {
+            case LINE -> lines.drawLine(p, at, at + Vertex.NUMBERS, panel);
+            case FILLED -> filled.drawPolygon(p, at, panel);
+            case WIRE -> wire.drawPolygon(p, at, panel);
+            default -> throw new IllegalArgumentException("primitive kind " + kind);
+        }
+    }
+}

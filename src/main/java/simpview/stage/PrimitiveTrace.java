@@ -1,0 +1,33 @@
+package simpview.stage;
+
+import java.nio.file.Path;
+
+/**
+ * Follows a scene's primitives one by one, for the window's instruments
+ * (who drew each pixel, stepping through the drawing). Where nobody follows
+ * there is no trace at all (null), and drawing costs nothing more.
+ *
+ * <p>Primitives are numbered 0, 1, 2, ... in drawing order, counting only
+ * those that reach the rasterizers (not culled, and for a lit scene not
+ * clipped away). {@link #read} is called on the thread that reads the scene,
+ * {@link #drawing} on the one that draws; for a large depth-cued scene these
+ * are two threads, and primitive n's read comes before its drawing.
+ */
+public interface PrimitiveTrace {
+
+    /**
+     * Primitive {@code index} comes from this command.
+     *
+     * @param file the file holding the command
+     * @param line its 1-based line
+     * @param kind {@link Painter#LINE}, {@link Painter#FILLED} or {@link Painter#WIRE}
+     * @param p its vertices, panel x and panel y first in each: read, never kept
+     * @param at where the first vertex starts in p
+     * @param stride the numbers per vertex in p
+     * @param vertices how many (2 for a line; 3 or more for a polygon, a lit one clipped)
+     */
+    void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices);
+
+    /** Primitive {@code index} is about to be drawn; false leaves it out (the picture stops before it). */
+    boolean drawing(int index);
+}

@@ -1,0 +1,184 @@
+package simpview.window;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.Rectangle;
+import java.awt.RenderingHints;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
+import java.awt.geom.Path2D;
+import java.awt.image.BufferedImage;
+import javax.swing.JComponent;
+import simpview.surface.PageCanvas;
+
+/**
+ * The page on screen: the finished image copied at the zoom and place that
+ * {@link ZoomPan} says, nearest-neighbour so every image pixel stays a sharp
+ * square, with overlays drawn over it (pixel grid, the pinned pixel, the
+ * outline of a primitive, a scene error, the key help). The picture itself is
+ * never drawn here.
+ */
+public final class PageView extends JComponent {
+
+    private static final long serialVersionUID = 1L;
+    private static final Color AROUND = new Color(96, 96, 96);
+    private static final Color MARK = new Color(255, 64, 255);
+
+    private final transient ZoomPan zoomPan = new ZoomPan(PageCanvas.SIZE);
+    private transient BufferedImage image = new PageCanvas().snapshot();
+    private String error;
+    private boolean errorAfterDrawing = true;
+    private boolean errorHidden;
+    private boolean helpShown;
+    private int pinnedX = -1;
+    private int pinnedY = -1;
+    /** A primitive's outline in image coordinates (x0, y0, x1, y1, ...), or null. */
+    private double[] outline;
+
+    PageView() {
+        setPreferredSize(new Dimension(PageCanvas.SIZE, PageCanvas.SIZE));
+        setMinimumSize(new Dimension(100, 100));
+        setOpaque(true);
+        addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                zoomPan.resize(getWidth(), getHeight());
+                repaint();
+            }
+        });
+    }
+
+    ZoomPan zoomPan() {
+        return zoomPan;
+    }
+
+    /** Shows a finished page and, if it failed, its error over it. Call on the EDT. */
+    public void show(BufferedImage page, String errorMessage) {
+        show(page, errorMessage, true);
+    }
+
+    /** The same; {@code drewSomething} false when the error came before anything was drawn. */
+    public void show(BufferedImage page, String errorMessage, boolean drewSomething) {
+        image = page;
+        error = errorMessage;
+        errorAfterDrawing = drewSomething;
+        repaint();
+    }
+
+    /** Replaces the picture only (e.g. the depth view of the same page); the error stays. */
+    void showImage(BufferedImage picture) {
+        image = picture;
+        repaint();
+    }
+
+    BufferedImage image() {
+        return image;
+    }
+
+    /** The error shown over the page, or null. */
+    String error() {
+        return error;
+    }
+
+    /** Hides or shows the error box; the error itself stays known. */
+    boolean toggleErrorHidden() {
+        errorHidden = !errorHidden;
+        repaint();
+        return errorHidden;
+    }
+
+    boolean toggleHelp() {
+        helpShown = !helpShown;
+        repaint();
+        return helpShown;
+    }
+
+    /** Marks image pixel (x, y) with a frame; -1 for none. */
+    void pin(int x, int y) {
+        pinnedX = x;
+        pinnedY = y;
+        repaint();
+    }
+
+    /** Outlines a primitive, given in image coordinates; null for none. */
+    void outline(double[] imagePoints) {
+        outline = imagePoints;
+        repaint();
+    }
+
+    /** Where the image's top-left corner is, in this component. */
+    java.awt.Point imageOrigin() {
+        return new java.awt.Point((int) zoomPan.originX(), (int) zoomPan.originY());
+    }
+
+    @Override
+    protected void paintComponent(Graphics graphics) {
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            Rectangle clip = g.getClipBounds() != null ? g.getClipBounds() : new Rectangle(getSize());
+            g.setColor(AROUND);
+            g.fillRect(clip.x, clip.y, clip.width, clip.height);
+            paintImage(g, clip);
+            if (PixelGrid.shows(zoomPan)) {
+                PixelGrid.paint(g, zoomPan, image, clip);
+            }
+            paintMarks(g);
+            if (error != null && !errorHidden) {
+                ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
+                        error, getWidth(), getHeight());
+            }
+            if (helpShown) {
+                HelpOverlay.paint(g, getWidth(), getHeight());
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Copies the part of the image that shows, each image pixel a square of screen pixels. */
+    private void paintImage(Graphics2D g, Rectangle clip) {
+        g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+        g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_SPEED);
+        double zoom = zoomPan.zoom();
+        int ox = (int) zoomPan.originX();
+        int oy = (int) zoomPan.originY();
+        if (!zoomPan.isIntegerZoom()) {
+            int size = (int) Math.round(zoomPan.shownSize());
+            g.drawImage(image, ox, oy, ox + size, oy + size, 0, 0, image.getWidth(), image.getHeight(), null);
+            return;
+        }
+        int z = (int) zoom;
+        int sx0 = Math.max(0, Math.floorDiv(clip.x - ox, z));
+        int sy0 = Math.max(0, Math.floorDiv(clip.y - oy, z));
+        int sx1 = Math.min(image.getWidth(), Math.floorDiv(clip.x + clip.width - ox + z - 1, z));
+        int sy1 = Math.min(image.getHeight(), Math.floorDiv(clip.y + clip.height - oy + z - 1, z));
+        if (sx0 < sx1 && sy0 < sy1) {
+            g.drawImage(image, ox + sx0 * z, oy + sy0 * z, ox + sx1 * z, oy + sy1 * z, sx0, sy0, sx1, sy1, null);
+        }
+    }
+
+    private void paintMarks(Graphics2D g) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(MARK);
+        if (outline != null && outline.length >= 4) {
+            Path2D.Double path = new Path2D.Double();
+            path.moveTo(zoomPan.screenX(outline[0]), zoomPan.screenY(outline[1]));
+            for (int k = 2; k + 1 < outline.length; k += 2) {
+                path.lineTo(zoomPan.screenX(outline[k]), zoomPan.screenY(outline[k + 1]));
+            }
+            path.closePath();
+            g.setStroke(new BasicStroke(1.25f));
+            g.draw(path);
+        }
+        if (pinnedX >= 0) {
+            double size = Math.max(zoomPan.zoom(), 3);
+            double left = zoomPan.screenX(pinnedX + 0.5) - size / 2;
+            double top = zoomPan.screenY(pinnedY + 0.5) - size / 2;
+            g.setStroke(new BasicStroke(2f));
+            g.draw(new java.awt.geom.Rectangle2D.Double(left - 2, top - 2, size + 4, size + 4));
+        }
+    }
+}

@@ -1,0 +1,66 @@
+package simpview.window;
+
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.Rectangle;
+import java.awt.image.BufferedImage;
+
+/**
+ * The magnifier's detail, drawn over the picture from 8x on: a line along
+ * the left and top edge of every image pixel, and a dot at every pixel's
+ * centre (light on dark pixels, dark on light ones), so that where a sample
+ * falls can be seen. An overlay only: the image itself is never touched.
+ */
+public final class PixelGrid {
+
+    /** The grid shows from this zoom on. */
+    public static final int FROM_ZOOM = 8;
+    /** The grid lines' colour: half-transparent grey, visible on black and on white. */
+    public static final Color LINE = new Color(128, 128, 128, 160);
+    private static final Color DOT_ON_DARK = new Color(255, 255, 255, 200);
+    private static final Color DOT_ON_LIGHT = new Color(0, 0, 0, 200);
+
+    private PixelGrid() {
+    }
+
+    public static boolean shows(ZoomPan zoomPan) {
+        return zoomPan.isIntegerZoom() && zoomPan.zoom() >= FROM_ZOOM;
+    }
+
+    /** Draws the grid over the image pixels that lie inside {@code clip} (screen coordinates). */
+    public static void paint(Graphics2D g, ZoomPan zoomPan, BufferedImage image, Rectangle clip) {
+        int zoom = (int) zoomPan.zoom();
+        int[] cols = visible(zoomPan.originX(), zoom, clip.x, clip.x + clip.width, image.getWidth());
+        int[] rows = visible(zoomPan.originY(), zoom, clip.y, clip.y + clip.height, image.getHeight());
+        int left = (int) zoomPan.screenX(cols[0]);
+        int top = (int) zoomPan.screenY(rows[0]);
+        int right = (int) zoomPan.screenX(cols[1]);
+        int bottom = (int) zoomPan.screenY(rows[1]);
+        g.setColor(LINE);
+        for (int i = cols[0]; i < cols[1]; i++) {
+            g.fillRect((int) zoomPan.screenX(i), top, 1, bottom - top);
+        }
+        for (int j = rows[0]; j < rows[1]; j++) {
+            g.fillRect(left, (int) zoomPan.screenY(j), right - left, 1);
+        }
+        int dot = zoom >= 16 ? 2 : 1;
+        int inset = zoom / 2 - dot / 2;
+        for (int j = rows[0]; j < rows[1]; j++) {
+            for (int i = cols[0]; i < cols[1]; i++) {
+                g.setColor(luminance(image.getRGB(i, j)) < 128 ? DOT_ON_DARK : DOT_ON_LIGHT);
+                g.fillRect((int) zoomPan.screenX(i) + inset, (int) zoomPan.screenY(j) + inset, dot, dot);
+            }
+        }
+    }
+
+    /** The image columns (or rows) [from, to) that show between screen coordinates lo and hi. */
+    private static int[] visible(double origin, int zoom, int lo, int hi, int size) {
+        int from = (int) Math.max(0, Math.floor((lo - origin) / zoom));
+        int to = (int) Math.min(size, Math.ceil((hi - origin) / zoom));
+        return new int[] {from, Math.max(from, to)};
+    }
+
+    private static int luminance(int rgb) {
+        return (299 * ((rgb >> 16) & 0xFF) + 587 * ((rgb >> 8) & 0xFF) + 114 * (rgb & 0xFF)) / 1000;
+    }
+}

@@ -1,0 +1,142 @@
+package simpview.window;
+
+import simpview.window.render.RenderJob;
+import simpview.window.render.View;
+
+import java.awt.BorderLayout;
+import java.awt.CardLayout;
+import java.awt.Dimension;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JProgressBar;
+import javax.swing.Timer;
+import simpview.surface.PageCanvas;
+
+/**
+ * The line under the page: key hints and messages, or, while a picture takes
+ * more than a moment, a progress bar (lines read) with a Cancel button.
+ * Everything here runs on the EDT.
+ */
+public final class StatusStrip {
+
+    static final String HINTS = "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · right-drag turn · F fit · Z 1:1 · "
+            + "D depth · P pin · C own colours · ] step · F5 redraw · Ctrl+O open · Ctrl+S save · F1 all keys";
+    /** Quick pictures never flash a progress bar. */
+    static final int PROGRESS_DELAY_MS = 150;
+    private static final String TEXT = "text";
+    private static final String PROGRESS = "progress";
+
+    private final CardLayout cards = new CardLayout();
+    private final JPanel panel = new JPanel(cards);
+    private final JLabel text = new JLabel(HINTS);
+    private final JLabel inspector = new JLabel(" ");
+    private final JLabel working = new JLabel();
+    private final JProgressBar bar = new JProgressBar();
+    private final JButton cancel = new JButton("Cancel");
+    private final Timer ticker = new Timer(100, e -> tick());
+    private RenderJob watched;
+
+    StatusStrip(Runnable onCancel) {
+        panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 46));
+        panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
+        bar.setStringPainted(true);
+        // Keys belong to the page: a focused button would swallow Space.
+        cancel.setFocusable(false);
+        cancel.addActionListener(e -> onCancel.run());
+        JPanel progress = new JPanel(new BorderLayout(8, 0));
+        progress.add(working, BorderLayout.WEST);
+        progress.add(bar, BorderLayout.CENTER);
+        progress.add(cancel, BorderLayout.EAST);
+        JPanel lines = new JPanel(new BorderLayout());
+        lines.add(inspector, BorderLayout.NORTH);
+        lines.add(text, BorderLayout.SOUTH);
+        panel.add(lines, TEXT);
+        panel.add(progress, PROGRESS);
+        cards.show(panel, TEXT);
+    }
+
+    JPanel component() {
+        return panel;
+    }
+
+    /** Follows a job; its progress shows once it has taken longer than a moment. */
+    void watch(RenderJob job) {
+        watched = job;
+        ticker.restart();
+    }
+
+    /** Back to text, e.g. when the job ended or was cancelled. */
+    void say(String message) {
+        watched = null;
+        ticker.stop();
+        // An indeterminate bar animates for as long as its window is open,
+        // shown or not: only while a job is showing may it move.
+        bar.setIndeterminate(false);
+        text.setText(message);
+        cards.show(panel, TEXT);
+    }
+
+    /** The inspector's line: the pixel under the pointer (or pinned), the zoom. */
+    void inspect(String line) {
+        inspector.setText(line == null || line.isEmpty() ? " " : line);
+    }
+
+    String inspectorText() {
+        return inspector.getText();
+    }
+
+    String messageText() {
+        return text.getText();
+    }
+
+    /** What the progress bar says, e.g. "12,000 of about 40,000 lines read (30 %)". */
+    String progressText() {
+        return bar.getString();
+    }
+
+    /** The text shown (when no progress is). */
+    String text() {
+        return text.getText();
+    }
+
+    boolean showingProgress() {
+        return bar.isShowing();
+    }
+
+    /** Whether the progress bar is animating (it should only while a job shows). */
+    boolean animating() {
+        return bar.isIndeterminate();
+    }
+
+    JButton cancelButton() {
+        return cancel;
+    }
+
+    private void tick() {
+        if (watched == null || watched.millisSinceCreated() < PROGRESS_DELAY_MS) {
+            return;
+        }
+        working.setText("Drawing " + describe(watched.view()) + "…");
+        long lines = watched.linesSoFar();
+        long total = watched.linesInTopFile();
+        if (total > 0) {
+            // Lines of included files count too: a scene full of them can pass its top file's count.
+            int percent = (int) Math.min(99, 100 * lines / total);
+            bar.setIndeterminate(false);
+            bar.setValue(percent);
+            bar.setString(String.format("%,d of about %,d lines read (%d %%)", lines, total, percent));
+        } else {
+            bar.setString(String.format("%,d lines read", lines));
+            bar.setIndeterminate(true);
+        }
+        cards.show(panel, PROGRESS);
+    }
+
+    private static String describe(View view) {
+        return view instanceof View.OfPage page
+                ? "page " + page.number()
+                : ((View.OfScene) view).file().getFileName().toString();
+    }
+}

@@ -1,0 +1,185 @@
+package simpview.window;
+
+/**
+ * Where the square page image sits in a viewport, and how large: a zoom
+ * (screen pixels per image pixel) and the screen position of the image's
+ * top-left corner. Pure arithmetic, no Swing; the view asks it and paints.
+ *
+ * <p>"Fit" follows the viewport: the largest integer zoom at which the whole
+ * image fits (1:1 whenever it fits at all), else the fraction that fits,
+ * centred. Zooming or panning leaves fit; {@link #fit()} goes back to it.
+ * Integer zooms keep the origin on whole screen pixels, so every image pixel
+ * is exactly {@code zoom} by {@code zoom} screen pixels.
+ */
+public final class ZoomPan {
+
+    /** The largest zoom the wheel reaches. */
+    public static final int MAX_ZOOM = 32;
+    /** Wheel steps above 1:1. */
+    private static final int[] STEPS = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
+    /** At least this much of the image stays in view while panning, in screen pixels. */
+    private static final int KEEP_VISIBLE = 48;
+
+    private final int imageSize;
+    private int viewWidth;
+    private int viewHeight;
+    private boolean fitting = true;
+    private double zoom = 1;
+    /** The image's top-left corner on screen, unrounded: zooming about a point keeps that point exactly. */
+    private double exactX;
+    private double exactY;
+
+    public ZoomPan(int imageSize) {
+        this.imageSize = imageSize;
+    }
+
+    /** The viewport changed size; in fit mode the image follows it. */
+    public void resize(int width, int height) {
+        viewWidth = Math.max(1, width);
+        viewHeight = Math.max(1, height);
+        if (fitting) {
+            fit();
+        } else {
+            clampOrigin();
+        }
+    }
+
+    /** Back to fit: the largest integer zoom that shows the whole image, or less when even 1:1 does not fit. */
+    public void fit() {
+        fitting = true;
+        zoom = fitZoom();
+        centre();
+    }
+
+    /** One image pixel per screen pixel, centred on what is in the middle of the view now. */
+    public void actualSize() {
+        zoomAbout(viewWidth / 2.0, viewHeight / 2.0, 1);
+    }
+
+    /** The zoom at which the whole image fits the viewport: an integer when 1:1 fits, else a fraction. */
+    public double fitZoom() {
+        int room = Math.min(viewWidth, viewHeight);
+        if (room >= imageSize) {
+            return Math.min(MAX_ZOOM, room / imageSize);
+        }
+        return (double) room / imageSize;
+    }
+
+    /** One wheel notch nearer ({@code notches < 0}) or farther, keeping the image point under (x, y) there. */
+    public void wheel(double x, double y, int notches) {
+        double next = zoom;
+        for (int i = 0; i < Math.abs(notches); i++) {
+            next = notches < 0 ? stepIn(next) : stepOut(next);
+        }
+        zoomAbout(x, y, next);
+    }
+
+    private double stepIn(double from) {
+        for (int step : STEPS) {
+            if (step > from + 1e-9) {
+                return step;
+            }
+        }
+        return MAX_ZOOM;
+    }
+
+    private double stepOut(double from) {
+        double smallest = Math.min(1, fitZoom());
+        for (int k = STEPS.length - 1; k >= 0; k--) {
+            if (STEPS[k] < from - 1e-9 && STEPS[k] >= smallest) {
+                return STEPS[k];
+            }
+        }
+        return smallest;
+    }
+
+    /** Sets the zoom, keeping the image point under screen point (x, y) under it. */
+    public void zoomAbout(double x, double y, double newZoom) {
+        double imageX = (x - exactX) / zoom;
+        double imageY = (y - exactY) / zoom;
+        fitting = false;
+        zoom = Math.max(Math.min(1, fitZoom()), Math.min(MAX_ZOOM, newZoom));
+        exactX = x - imageX * zoom;
+        exactY = y - imageY * zoom;
+        clampOrigin();
+    }
+
+    /** Moves the image by (dx, dy) screen pixels; some of it always stays in view. */
+    public void pan(double dx, double dy) {
+        fitting = false;
+        exactX += dx;
+        exactY += dy;
+        clampOrigin();
+    }
+
+    private void centre() {
+        exactX = Math.floor((viewWidth - shownSize()) / 2.0);
+        exactY = Math.floor((viewHeight - shownSize()) / 2.0);
+    }
+
+    private void clampOrigin() {
+        double size = shownSize();
+        double keep = Math.min(KEEP_VISIBLE, size);
+        exactX = Math.max(keep - size, Math.min(viewWidth - keep, exactX));
+        exactY = Math.max(keep - size, Math.min(viewHeight - keep, exactY));
+    }
+
+    /** Width (and height) of the image on screen. */
+    public double shownSize() {
+        return imageSize * zoom;
+    }
+
+    public double zoom() {
+        return zoom;
+    }
+
+    public boolean isIntegerZoom() {
+        return zoom == Math.rint(zoom);
+    }
+
+    public boolean fitting() {
+        return fitting;
+    }
+
+    /** The screen x of the image's left edge: a whole pixel, so that at an integer zoom pixel edges are exact. */
+    public double originX() {
+        return Math.floor(exactX);
+    }
+
+    public double originY() {
+        return Math.floor(exactY);
+    }
+
+    /** The image column under screen x, or -1 when it is off the image. */
+    public int imageX(double x) {
+        return toImage(x, originX());
+    }
+
+    /** The image row under screen y, or -1 when it is off the image. */
+    public int imageY(double y) {
+        return toImage(y, originY());
+    }
+
+    private int toImage(double screen, double origin) {
+        double at = Math.floor((screen - origin) / zoom);
+        return at < 0 || at >= imageSize ? -1 : (int) at;
+    }
+
+    /** The screen coordinate where image column (or row) i begins, on the x axis. */
+    public double screenX(double imageX) {
+        return originX() + imageX * zoom;
+    }
+
+    public double screenY(double imageY) {
+        return originY() + imageY * zoom;
+    }
+
+    /** "1:1", "8x", or "scaled to fit (96%)". */
+    public String describe() {
+        if (!isIntegerZoom()) {
+            return "scaled to fit (" + Math.round(zoom * 100) + " %)";
+        }
+        int z = (int) zoom;
+        return z == 1 ? "1:1" : z + "x";
+    }
+}

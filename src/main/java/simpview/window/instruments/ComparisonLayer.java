@@ -1,0 +1,174 @@
+package simpview.window.instruments;
+
+import simpview.window.render.RenderedView;
+import simpview.window.render.View;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.BiConsumer;
+import java.util.function.Consumer;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import simpview.compare.CompareException;
+import simpview.compare.Comparison;
+import simpview.compare.HeatMap;
+import simpview.compare.Percent;
+import simpview.compare.Picture;
+import simpview.compare.Shares;
+import simpview.surface.PageCanvas;
+
+/**
+ * Compare mode in the window (issue 15). A picture dropped on a page, or
+ * opened with Ctrl+Shift+O, is compared with the view on screen and stays
+ * with that view (stepping away and back keeps it). B flips between ours and
+ * theirs, H shows the heat map, Backspace stops comparing; the status line
+ * gives the shares. Everything here runs on the EDT.
+ */
+public final class ComparisonLayer {
+
+    /** What the page view shows while comparing. */
+    public enum Showing { OURS, THEIRS, HEAT }
+
+    /** Binds a key stroke to an action, the window's way. */
+    @FunctionalInterface
+    public interface KeyBinder {
+        void bind(String name, Runnable action, String stroke);
+    }
+
+    private static final int TOLERANCE = 8;
+
+    private final JFrame owner;
+    /** Puts a picture (and the error to show over it, or null) on the screen. */
+    private final BiConsumer<BufferedImage, String> pageView;
+    private final Consumer<String> say;
+    private final Map<View, Picture> theirs = new HashMap<>();
+    private RenderedView shown;
+    private Comparison comparison;
+    private Showing showing = Showing.OURS;
+    private String text = "";
+
+    public ComparisonLayer(JFrame owner, BiConsumer<BufferedImage, String> pageView, Consumer<String> say) {
+        this.owner = owner;
+        this.pageView = pageView;
+        this.say = say;
+    }
+
+    public void bindKeys(KeyBinder keys) {
+        keys.bind("compare-flip", this::flip, "B");
+        keys.bind("compare-heat", this::heat, "H");
+        keys.bind("compare-stop", this::stop, "BACK_SPACE");
+        keys.bind("compare-open", this::choosePicture, "ctrl shift O");
+    }
+
+    /** Compares a picture with the view on screen; a picture that cannot be compared is said why. */
+    public void compareWith(Path file) {
+        if (shown == null) {
+            say.accept("Wait for the page to be drawn, then drop the picture again.");
+            return;
+        }
+        try {
+            theirs.put(shown.view(), Picture.read(file));
+        } catch (CompareException e) {
+            say.accept("Cannot compare: " + e.getMessage());
+            return;
+        }
+        showing = Showing.OURS;
+        viewShown(shown);
+    }
+
+    /** The window calls this when a new picture is on screen. */
+    public void viewShown(RenderedView view) {
+        shown = view;
+        Picture picture = theirs.get(view.view());
+        comparison = picture == null ? null
+                : Comparison.of(Picture.ofPage(view.image(), "simpview").panel(), picture.panel());
+        if (comparison == null) {
+            showing = Showing.OURS;
+            text = "";
+            return;
+        }
+        repaint();
+    }
+
+    void flip() {
+        if (comparison != null) {
+            showing = showing == Showing.THEIRS ? Showing.OURS : Showing.THEIRS;
+            repaint();
+        }
+    }
+
+    void heat() {
+        if (comparison != null) {
+            showing = showing == Showing.HEAT ? Showing.OURS : Showing.HEAT;
+            repaint();
+        }
+    }
+
+    void stop() {
+        if (comparison != null) {
+            theirs.remove(shown.view());
+            comparison = null;
+            showing = Showing.OURS;
+            text = "";
+            pageView.accept(shown.image(), shown.error());
+            say.accept("Stopped comparing.");
+        }
+    }
+
+    private void choosePicture() {
+        JFileChooser chooser = new JFileChooser();
+        chooser.setDialogTitle("Compare the page with a picture");
+        chooser.setFileFilter(new FileNameExtensionFilter("Pictures (*.png, *.jpg, *.gif, *.bmp)", "png", "jpg", "jpeg", "gif", "bmp"));
+        if (chooser.showOpenDialog(owner) == JFileChooser.APPROVE_OPTION) {
+            compareWith(chooser.getSelectedFile().toPath());
+        }
+    }
+
+    private void repaint() {
+        BufferedImage image = switch (showing) {
+            case OURS -> shown.image();
+            case THEIRS -> HeatMap.asPage(comparison.theirs());
+            case HEAT -> heatPage();
+        };
+        pageView.accept(image, showing == Showing.OURS ? shown.error() : null);
+        Shares slack = comparison.withSlack();
+        text = String.format("vs %s: identical %s, ≤1/255 %s, ≤8/255 %s (1 px slack) · showing %s · B flip · H heat · ⌫ stop",
+                theirs.get(shown.view()).name().replaceFirst(".*[/\\\\]", ""), Percent.of(slack.identical()),
+                Percent.of(slack.within1()), Percent.of(slack.within8()), showing.name().toLowerCase(Locale.ROOT));
+        say.accept(text);
+    }
+
+    private BufferedImage heatPage() {
+        int[] heat = new int[Comparison.N * Comparison.N];
+        HeatMap.fill(comparison, TOLERANCE, heat);
+        return HeatMap.asPage(heat);
+    }
+
+    /** For an inspector: their pixel at page pixel (x, y down from the top-left), or empty when not comparing. */
+    Optional<Integer> theirsAt(int x, int y) {
+        int px = x - PageCanvas.MARGIN;
+        int py = y - PageCanvas.MARGIN;
+        if (comparison == null || px < 0 || py < 0 || px >= Comparison.N || py >= Comparison.N) {
+            return Optional.empty();
+        }
+        return Optional.of(comparison.theirs()[py * Comparison.N + px]);
+    }
+
+    public Showing showing() {
+        return showing;
+    }
+
+    /** The status line while comparing, or "" when not. */
+    public String statusText() {
+        return text;
+    }
+
+    public Comparison comparison() {
+        return comparison;
+    }
+}

@@ -1,0 +1,45 @@
+package simpview.window.render;
+
+import simpview.scene.simp.SceneDrawer;
+
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.BiConsumer;
+import javax.swing.SwingUtilities;
+import simpview.pages.PageRenderer;
+import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
+
+/**
+ * Draws pictures one at a time on a thread of its own, so the window keeps
+ * answering while a large scene is read. Only that thread touches the canvas;
+ * the EDT only ever gets copies.
+ */
+public final class BackgroundRenderer {
+
+    private final ExecutorService thread = Executors.newSingleThreadExecutor(task -> {
+        Thread t = new Thread(task, "simpview-render");
+        t.setDaemon(true);
+        return t;
+    });
+    private final PageRenderer renderer = new PageRenderer();
+    private final SceneDrawer drawer;
+    /** Who drew each pixel of the picture being drawn; only this thread writes it. */
+    private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+
+    public BackgroundRenderer(SceneDrawer drawer) {
+        this.drawer = drawer;
+    }
+
+    /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
+    public void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
+        thread.execute(() -> {
+            RenderedView result = job.run(renderer, drawer, provenance);
+            SwingUtilities.invokeLater(() -> done.accept(job, result));
+        });
+    }
+
+    public void shutdown() {
+        thread.shutdownNow();
+    }
+}

@@ -1,0 +1,210 @@
+package simpview.window.render;
+
+import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneSheet;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import simpview.geometry.Matrix4;
+import simpview.pages.PageContext;
+import simpview.stage.PrimitiveLog;
+import simpview.stage.PrimitiveTrace;
+import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.pages.ScenePage;
+import simpview.scene.SceneException;
+import simpview.surface.Provenance;
+import simpview.scene.simp.SceneCancelledException;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.SceneRules;
+import simpview.surface.PageCanvas;
+
+/**
+ * One picture to draw on the render thread. It is also the scene's monitor:
+ * the window reads its progress and cancels it from the EDT, so its shared
+ * state is volatile or thread-safe.
+ */
+public final class RenderJob implements SceneMonitor {
+
+    private final View view;
+    private final PageContext context;
+    private final DrawSettings settings;
+    private final long createdNanos = System.nanoTime();
+    private final List<String> warnings = new CopyOnWriteArrayList<>();
+    private volatile long linesRead;
+    private volatile boolean cancelled;
+    /** Files smaller than this are read before a progress bar shows: not counted. */
+    private static final long COUNT_FROM_BYTES = 1 << 20;
+    private volatile long topFileLines = -1;
+    /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
+    private PrimitiveLog trace;
+    /** A lit scene's centre of what was shown, in camera space, when told; the render thread's, like trace. */
+    private double[] shownCentre;
+
+    public RenderJob(View view, PageContext context) {
+        this(view, context, DrawSettings.PLAIN);
+    }
+
+    public RenderJob(View view, PageContext context, DrawSettings settings) {
+        this.view = view;
+        this.context = context.withMonitor(this).withOwnColours(settings.ownColours());
+        this.settings = settings;
+    }
+
+    public DrawSettings settings() {
+        return settings;
+    }
+
+    public View view() {
+        return view;
+    }
+
+    long seed() {
+        return context.seed();
+    }
+
+    public long millisSinceCreated() {
+        return (System.nanoTime() - createdNanos) / 1_000_000;
+    }
+
+    public long linesSoFar() {
+        return linesRead;
+    }
+
+    /** Lines of the scene's top file, once counted (for the progress bar's fraction), or -1. */
+    public long linesInTopFile() {
+        return topFileLines;
+    }
+
+    /**
+     * Counts the top file's lines on a thread of its own, so that the
+     * progress bar can show a fraction; the drawing does not wait for it.
+     * Only for files big enough to show a progress bar at all.
+     */
+    public void countLinesAhead() {
+        Path top = topFile();
+        if (top == null) {
+            return;
+        }
+        try {
+            if (Files.size(top) < COUNT_FROM_BYTES) {
+                return;
+            }
+        } catch (IOException | SecurityException e) {
+            return;
+        }
+        Thread counter = new Thread(() -> topFileLines = LineCount.of(top, () -> cancelled), "simpview-line-count");
+        counter.setDaemon(true);
+        counter.start();
+    }
+
+    public void cancel() {
+        cancelled = true;
+    }
+
+    @Override
+    public boolean cancelled() {
+        return cancelled;
+    }
+
+    @Override
+    public void linesRead(long lines) {
+        linesRead = lines;
+    }
+
+    @Override
+    public void warning(String message) {
+        warnings.add(message);
+    }
+
+    @Override
+    public PrimitiveTrace trace() {
+        return trace;
+    }
+
+    @Override
+    public Matrix4 viewTurn() {
+        return settings.viewTurn();
+    }
+
+    @Override
+    public void shownCentre(double[] xyz) {
+        shownCentre = xyz.clone();
+    }
+
+    /**
+     * Draws on the render thread's canvas and returns a copy of the result,
+     * or null when the job was cancelled.
+     */
+    RenderedView run(PageRenderer renderer, SceneDrawer drawer, Provenance provenance) {
+        if (cancelled) {
+            return null;
+        }
+        PageCanvas canvas = renderer.canvas();
+        canvas.recordProvenance(settings.record() ? provenance : null);
+        trace = settings.record() || settings.stepLimit() >= 0
+                ? new PrimitiveLog(settings.record() ? provenance : null, settings.stepLimit()) : null;
+        String error = null;
+        boolean drewSomething = true;
+        try {
+            if (view instanceof View.OfPage page) {
+                renderer.render(page.number(), context);
+            } else {
+                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer, settings.ownColours());
+            }
+        } catch (SceneException e) {
+            error = e.getMessage();
+            drewSomething = e.line() > 0;
+        } catch (SceneCancelledException e) {
+            return null;
+        } catch (RuntimeException e) {
+            // A bug, not bad input: say so on the page and keep the window going.
+            e.printStackTrace();
+            error = "internal error while drawing: " + e;
+        }
+        if (cancelled) {
+            return null;
+        }
+        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(), canvas.zbuffer().farthest(),
+                canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
+                primitives(), filesRead(), drewSomething, shownCentre);
+        canvas.recordProvenance(null);
+        return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+    }
+
+    /** What each primitive drawn was, in drawing order. */
+    private Primitives primitives() {
+        if (view instanceof View.OfPage page) {
+            List<String> names = Pages.page(page.number()).primitiveNames(context);
+            if (!names.isEmpty()) {
+                return Primitives.named(names);
+            }
+        }
+        return trace == null ? Primitives.NONE : Primitives.logged(trace);
+    }
+
+    /** The scene file the view reads, or null for a page that is not a scene. */
+    private Path topFile() {
+        if (view instanceof View.OfScene scene) {
+            return scene.file();
+        }
+        return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
+    }
+
+    /** The scene files this picture read: what to watch for a save. */
+    private List<Path> filesRead() {
+        Path top = topFile();
+        if (top == null) {
+            return List.of();
+        }
+        List<Path> reached = new ArrayList<>(SceneRules.reached(top));
+        if (reached.isEmpty()) {
+            reached.add(top); // not there yet: watch for it to appear
+        }
+        return reached;
+    }
+}

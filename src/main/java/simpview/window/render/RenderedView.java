@@ -1,0 +1,42 @@
+package simpview.window.render;
+
+import java.awt.image.BufferedImage;
+import java.util.List;
+import simpview.pages.Pages;
+
+/**
+ * A finished picture, ready for the screen.
+ *
+ * @param view what was drawn
+ * @param seed the seed it was drawn with
+ * @param image a copy of the page, never the canvas being drawn on
+ * @param error the scene error's message, or null; the image then holds what was drawn before it
+ * @param warnings what the scene reported that is not an error
+ * @param facts depths, who drew what, the files read: what the instruments show
+ */
+public record RenderedView(View view, long seed, BufferedImage image, String error, List<String> warnings, PageFacts facts) {
+
+    RenderedView(View view, long seed, BufferedImage image, String error, List<String> warnings) {
+        this(view, seed, image, error, warnings, PageFacts.NONE);
+    }
+
+    /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
+    public String title() {
+        if (view instanceof View.OfPage page) {
+            String title = "simpview — page " + page.number() + "/" + Pages.COUNT + ": " + Pages.page(page.number()).title();
+            title = Pages.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
+            return error == null ? title : title + " — error";
+        }
+        String title = "simpview — scene: " + ((View.OfScene) view).file().getFileName();
+        return error == null ? title : title + " — error";
+    }
+
+    /** A file name to offer when saving, e.g. "page3-seed361.png" or "house.png". */
+    public String suggestedFileName() {
+        if (view instanceof View.OfPage page) {
+            return "page" + page.number() + (Pages.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+        }
+        String name = ((View.OfScene) view).file().getFileName().toString();
+        return name.replaceFirst("\\.simp$", "") + ".png";
+    }
+}

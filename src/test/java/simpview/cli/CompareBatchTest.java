@@ -1,0 +1,137 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/** {@code simpview compare --dir ...}: one row per picture, good, bad or broken, in Markdown and CSV. */
+public class CompareBatchTest {
+
+    @TempDir
+    Path dir;
+
+    private static BufferedImage page(int number) throws Exception {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    private Path png(Path file, BufferedImage image) throws Exception {
+        Files.createDirectories(file.getParent());
+        ImageIO.write(image, "png", file.toFile());
+        return file;
+    }
+
+    private static List<String> csvRows(Path out) throws Exception {
+        return Files.readAllLines(out.resolve("compare.csv"));
+    }
+
+    @Test
+    void everyPictureGetsOneRowAndABrokenOneSaysWhatIsWrong() throws Exception {
+        Path submissions = dir.resolve("submissions");
+        png(submissions.resolve("page1.png"), page(1));
+        BufferedImage wrong = page(2);
+        for (int y = 100; y < 300; y++) {
+            for (int x = 100; x < 300; x++) {
+                wrong.setRGB(x, y, 0x00FFFF);
+            }
+        }
+        png(submissions.resolve("bob/Page_2.png"), wrong);
+        Files.write(submissions.resolve("page3.png"), new byte[] {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0});
+        Files.writeString(submissions.resolve("page10.png"), "x");
+        Files.writeString(submissions.resolve("notes.txt"), "not a picture, and not named like one");
+        Path out = dir.resolve("report");
+
+        CliRun run = CliRun.of("compare", "--dir", submissions.toString(), "--pages", "1-8", "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "a failing and a broken picture: " + run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+        List<String> rows = csvRows(out);
+        assertEquals(5, rows.size(), "a heading and one row per picture: " + rows);
+        assertTrue(rows.get(0).startsWith("file,page,identical,within 1/255,within 8/255,identical (slack)"), rows.get(0));
+        assertTrue(rows.get(1).startsWith("bob/Page_2.png,2 (seed 361),"), rows.get(1));
+        assertTrue(rows.get(1).contains(",FAIL,white,diffs/bob_Page_2-diff.png,"), rows.get(1));
+        assertTrue(rows.get(2).startsWith("page1.png,1 (seed 361),100.00,100.00,100.00,100.00,100.00,100.00,PASS,white,"
+                + "diffs/page1-diff.png,"), rows.get(2));
+        assertTrue(rows.get(3).startsWith("page3.png,3 (seed 361),,,,,,,ERROR,,,"), rows.get(3));
+        assertTrue(rows.get(3).contains("page3.png: cannot be read as a picture, it is damaged or cut short"), rows.get(3));
+        assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
+        BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
+        assertEquals(1970, diff.getWidth());
+        assertTrue(Files.isRegularFile(out.resolve("diffs/page1-diff.png")));
+
+        String table = Files.readString(out.resolve("compare.md"));
+        assertEquals(table, run.out().substring(0, table.length()), "the table is printed too");
+        assertTrue(table.contains("| page1.png | 1 (seed 361) | 100.00 |"), table);
+        assertTrue(table.contains("[diff](diffs/bob_Page_2-diff.png)"), table);
+        assertTrue(table.contains("4 pictures: 1 pass, 1 fail, 1 could not be compared, 1 skipped"), table);
+        assertTrue(run.err().contains("/4] page1.png: PASS 100.00 %"), run.err());
+        assertTrue(run.err().contains("/4] page3.png: ERROR: "), run.err());
+    }
+
+    @Test
+    void theSharesInTheTableAreThoseOfTheSingleComparison() throws Exception {
+        Path submissions = dir.resolve("in");
+        BufferedImage theirs = page(3);
+        for (int x = 50; x < 700; x += 3) {
+            theirs.setRGB(x, 400, 0xFFFFFF);
+        }
+        Path file = png(submissions.resolve("page3.png"), theirs);
+        Path out = dir.resolve("out");
+        CliRun batch = CliRun.of("compare", "--dir", submissions.toString(), "--pages", "3", "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, batch.exitCode(), batch.err());
+        CliRun one = CliRun.of("compare", file.toString(), "--page", "3");
+        String[] cells = csvRows(out).get(1).split(",");
+        assertEquals(CompareCommandTest.printed(one.out(), "identical")[0], Double.parseDouble(cells[2]));
+        assertEquals(CompareCommandTest.printed(one.out(), "within 8/255")[1], Double.parseDouble(cells[7]));
+        assertEquals(CompareCommandTest.asPrinted(CompareCommandTest.independentDirect(page(3), theirs, 0)),
+                Double.parseDouble(cells[2]));
+    }
+
+    @Test
+    void aSceneFolderIsMatchedToPicturesByName() throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Path tri = Files.writeString(scenes.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        Path bar = Files.writeString(scenes.resolve("triBar.simp"), "polygon (-90,-10,-5) (90,-10,-5) (90,10,-5)\n");
+        Path submissions = dir.resolve("pics");
+        Files.createDirectories(submissions);
+        Path triPicture = submissions.resolve("tri.png");
+        Path barPicture = submissions.resolve("page_triBar_v2.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", tri.toString(), "--out", triPicture.toString()).exitCode());
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", bar.toString(), "--out", barPicture.toString()).exitCode());
+        png(submissions.resolve("other.png"), page(1));
+        Path out = dir.resolve("out");
+
+        CliRun run = CliRun.of("compare", "--dir", submissions.toString(), "--scene", scenes.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        List<String> rows = csvRows(out);
+        assertEquals(4, rows.size(), rows.toString());
+        assertTrue(rows.get(1).startsWith("other.png,,,,,,,,SKIPPED,,,its name names none of the scenes"), rows.get(1));
+        assertTrue(rows.get(2).startsWith("page_triBar_v2.png,triBar.simp,100.00,"), rows.get(2));
+        assertTrue(rows.get(3).startsWith("tri.png,tri.simp,100.00,"), rows.get(3));
+
+        // One scene file: every picture is compared with it.
+        CliRun one = CliRun.of("compare", "--dir", submissions.toString(), "--scene", tri.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, one.exitCode(), "other.png and the bar are not the triangle");
+        List<String> against = csvRows(out);
+        assertEquals(4, against.size());
+        assertTrue(against.stream().skip(1).allMatch(r -> r.contains(",tri.simp,")), against.toString());
+        assertTrue(against.get(3).contains(",PASS,"), against.toString());
+    }
+
+    @Test
+    void aFolderThatIsNotThereIsAClearError() {
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("--dir " + dir.resolve("nope") + ": no such folder"), run.err());
+        assertFalse(run.showsStackTrace());
+    }
+}

@@ -1,0 +1,259 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/** {@code simpview compare IMAGE ...}: the report, the diff image and the exit codes. */
+public class CompareCommandTest {
+
+    @TempDir
+    Path dir;
+
+    private static BufferedImage page(int number) throws Exception {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    private Path png(String name, BufferedImage image) throws Exception {
+        Path file = dir.resolve(name);
+        ImageIO.write(image, "png", file.toFile());
+        return file;
+    }
+
+    /** The share printed in the report's row, e.g. "identical" → {exactly, with slack}, in percent. */
+    static double[] printed(String report, String row) {
+        Matcher m = Pattern.compile("(?m)^" + Pattern.quote(row) + "\\s+([0-9.]+) %\\s+([0-9.]+) %$").matcher(report);
+        assertTrue(m.find(), "no row '" + row + "' in:\n" + report);
+        return new double[] {Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2))};
+    }
+
+    /** A share as the report prints it: in percent, two decimals, rounded down. */
+    static double asPrinted(double share) {
+        return Math.floor(share * 10_000 + 1e-9) / 100;
+    }
+
+    @Test
+    void aPageAgainstSimpviewsOwnRenderIsIdenticalAndPasses() throws Exception {
+        Path mine = png("page3.png", page(3));
+        CliRun run = CliRun.of("compare", mine.toString(), "--page", "3");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        for (String row : new String[] {"identical", "within 1/255", "within 8/255"}) {
+            assertEquals(100.0, printed(run.out(), row)[0], row);
+            assertEquals(100.0, printed(run.out(), row)[1], row);
+        }
+        assertTrue(run.out().contains("panel:   x 50-699, y 50-699"), run.out());
+        assertTrue(run.out().contains("margins: white (140,000 pixels)"), run.out());
+        assertTrue(run.out().contains("PASS: 100.00 % within 8/255 with slack (99.00 % needed)"), run.out());
+    }
+
+    @Test
+    void aShiftedPageIsLowOnIdenticalButFullWithSlack() throws Exception {
+        BufferedImage page = page(1);
+        BufferedImage shifted = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        shifted.setData(page.getRaster());
+        for (int y = 51; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                shifted.setRGB(x, y, page.getRGB(x, y - 1));
+            }
+        }
+        for (int x = 50; x < 700; x++) {
+            shifted.setRGB(x, 50, 0);
+        }
+        CliRun run = CliRun.of("compare", png("shifted.png", shifted).toString(), "--page", "1");
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        double[] identical = printed(run.out(), "identical");
+        assertTrue(identical[0] < 99, "identical share " + identical[0]);
+        assertEquals(100.0, identical[1]);
+        assertEquals(100.0, printed(run.out(), "within 8/255")[1]);
+        // One pixel down is a shift of the whole panel: with slack it all matches.
+        assertEquals(asPrinted(independentDirect(page, shifted, 0)), identical[0]);
+    }
+
+    @Test
+    void oneChannelOffByTwoIsNeverIdenticalButAlwaysWithinEight() throws Exception {
+        BufferedImage page = page(2);
+        BufferedImage off = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        off.setData(page.getRaster());
+        for (int y = 50; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                int rgb = page.getRGB(x, y);
+                int r = rgb >> 16 & 0xFF;
+                off.setRGB(x, y, rgb & 0xFF00FFFF | (r >= 254 ? r - 2 : r + 2) << 16);
+            }
+        }
+        Path file = png("off.png", off);
+        CliRun run = CliRun.of("compare", file.toString(), "--page", "2");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertEquals(0.0, printed(run.out(), "identical")[0]);
+        assertEquals(0.0, printed(run.out(), "within 1/255")[0]);
+        assertEquals(100.0, printed(run.out(), "within 8/255")[0]);
+        assertEquals(100.0, printed(run.out(), "within 8/255")[1]);
+        // With slack a few pixels of a gradient find their shifted colour next door.
+        assertTrue(printed(run.out(), "identical")[1] < 1, run.out());
+        CliRun strict = CliRun.of("compare", file.toString(), "--page", "2", "--tolerance", "1");
+        assertEquals(ExitCode.SCENE_ERROR, strict.exitCode(), "below --min with --tolerance 1");
+        assertTrue(strict.out().contains("FAIL: "), strict.out());
+        // With slack many pixels of a gradient find a colour within 1/255 next door, but far from all.
+        assertTrue(printed(strict.out(), "within 1/255")[1] < 50, strict.out());
+    }
+
+    @Test
+    void theMinimumDecidesTheExitCodeAndTheRegionsAreListed() throws Exception {
+        BufferedImage page = page(3);
+        // A 100x40 red patch at panel x 200-299, y 500-539 (y up): picture rows 700-1-539 .. 700-1-500.
+        for (int y = 500; y < 540; y++) {
+            for (int x = 200; x < 300; x++) {
+                page.setRGB(50 + x, 699 - y, 0xFF0000);
+            }
+        }
+        Path file = png("patched.png", page);
+        CliRun pass = CliRun.of("compare", file.toString(), "--page", "3");
+        assertEquals(ExitCode.OK, pass.exitCode(), "4,000 of 422,500 pixels off is above 99 %: " + pass.out());
+        assertTrue(pass.out().contains("  1. x 200-299, y 500-539 (100x40): 4,000 pixels"), pass.out());
+        CliRun fail = CliRun.of("compare", file.toString(), "--page", "3", "--min", "99.5%");
+        assertEquals(ExitCode.SCENE_ERROR, fail.exitCode());
+        assertTrue(fail.out().contains("FAIL: 99.05 % within 8/255 with slack (99.50 % needed)"), fail.out());
+    }
+
+    @Test
+    void theDiffImageIsOursTheirsAndTheHeatMapAtOneToOne() throws Exception {
+        BufferedImage theirs = page(2);
+        theirs.setRGB(60, 60, 0x00FF00);
+        Path diff = dir.resolve("out/diff.png");
+        CliRun run = CliRun.of("compare", png("mine.png", theirs).toString(), "--page", "2", "--diff", diff.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        BufferedImage written = ImageIO.read(diff.toFile());
+        assertEquals(1970, written.getWidth());
+        assertEquals(650, written.getHeight());
+        BufferedImage ours = page(2);
+        for (int y = 0; y < 650; y += 13) {
+            for (int x = 0; x < 650; x += 7) {
+                assertEquals(ours.getRGB(50 + x, 50 + y) & 0xFFFFFF, written.getRGB(x, y) & 0xFFFFFF);
+                assertEquals(theirs.getRGB(50 + x, 50 + y) & 0xFFFFFF, written.getRGB(660 + x, y) & 0xFFFFFF);
+            }
+        }
+        assertEquals(0xFF0000, written.getRGB(1320 + 10, 10) >> 16 << 16 & 0xFF0000, "the changed pixel is red");
+    }
+
+    @Test
+    void aSceneIsDrawnAsRenderDrawsIt() throws Exception {
+        Path scene = Files.writeString(dir.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        Path rendered = dir.resolve("tri.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--near-color", "0,1,0",
+                "--out", rendered.toString()).exitCode());
+        CliRun same = CliRun.of("compare", rendered.toString(), "--scene", scene.toString(), "--near-color", "0,1,0");
+        assertEquals(ExitCode.OK, same.exitCode(), same.err());
+        assertEquals(100.0, printed(same.out(), "identical")[0]);
+        CliRun other = CliRun.of("compare", rendered.toString(), "--scene", scene.toString());
+        assertEquals(ExitCode.SCENE_ERROR, other.exitCode(), "white, not green: " + other.out());
+        assertTrue(other.out().contains("against simpview's scene tri.simp"), other.out());
+    }
+
+    @Test
+    void badPicturesGetAClearMessageAndExitOne() throws Exception {
+        Path missing = dir.resolve("nope.png");
+        Path corrupt = Files.write(dir.resolve("corrupt.png"), truncatedPng());
+        Path text = Files.writeString(dir.resolve("notes.png"), "not a picture at all\n");
+        Path small = png("small.png", new BufferedImage(640, 480, BufferedImage.TYPE_INT_RGB));
+        BufferedImage blank = new BufferedImage(900, 800, BufferedImage.TYPE_INT_RGB);
+        Path noPanel = png("blank.png", blank);
+        String[][] cases = {
+            {missing.toString(), missing + ": no such file"},
+            {corrupt.toString(), corrupt + ": cannot be read as a picture, it is damaged or cut short"},
+            {text.toString(), text + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)"},
+            {small.toString(), small + " is 640x480: too small to hold the 650x650 panel"},
+            {noPanel.toString(), "no 650x650 panel found in " + noPanel + " (900x800)"},
+            {dir.toString(), dir + " is a folder, not a picture"}};
+        for (String[] c : cases) {
+            CliRun run = CliRun.of("compare", c[0], "--page", "1");
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), c[0]);
+            assertTrue(run.err().startsWith("simpview compare: " + c[1]), run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+            assertEquals("", run.out());
+        }
+    }
+
+    private byte[] truncatedPng() throws Exception {
+        byte[] whole = Files.readAllBytes(png("whole.png", page(1)));
+        byte[] half = new byte[whole.length / 2];
+        System.arraycopy(whole, 0, half, 0, half.length);
+        return half;
+    }
+
+    @Test
+    void usageErrorsExitTwo() throws Exception {
+        Path mine = png("page1.png", page(1));
+        String[][] cases = {
+            {"compare", mine.toString(), "--page", "9"},
+            {"compare", mine.toString(), "--page", "0"},
+            {"compare", mine.toString()},
+            {"compare", "--page", "1"},
+            {"compare", mine.toString(), "--page", "1", "--scene", "x.simp"},
+            {"compare", mine.toString(), "--page", "1", "--tolerance", "300"},
+            {"compare", mine.toString(), "--page", "1", "--min", "101"},
+            {"compare", mine.toString(), "--page", "1", "--near-color", "0,1,0"},
+            {"compare", mine.toString(), "--scene", "x.simp", "--seed", "3"},
+            {"compare", mine.toString(), "--page", "1", "--out-dir", "x"},
+            {"compare", "--dir", dir.toString(), "--pages", "1-8"},
+            {"compare", "--dir", dir.toString(), "--pages", "1-9", "--out-dir", "x"},
+            {"compare", "--dir", dir.toString(), "--out-dir", "x"},
+            {"compare", mine.toString(), "--dir", dir.toString(), "--pages", "1", "--out-dir", "x"}};
+        for (String[] args : cases) {
+            CliRun run = CliRun.of(args);
+            assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), String.join(" ", args) + "\n" + run.err());
+            assertTrue(run.err().contains("See 'simpview compare --help'"), run.err()); // issue 14: the problem and one line, not the whole help
+            assertFalse(run.showsStackTrace(), run.err());
+        }
+        assertTrue(CliRun.of("compare", mine.toString(), "--page", "9").err().contains("--page must be 1 to 8, not 9"));
+    }
+
+    @Test
+    void aSceneErrorIsReportedWithItsPlaceAndExitsOne() throws Exception {
+        Path mine = png("page1.png", page(1));
+        Path bad = Files.writeString(dir.resolve("bad.simp"), "rotate x 30\n");
+        CliRun run = CliRun.of("compare", mine.toString(), "--scene", bad.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains(bad + ":1:"), run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @Test
+    void helpNamesTheSubcommand() {
+        CliRun help = CliRun.of("compare", "--help");
+        assertEquals(ExitCode.OK, help.exitCode());
+        assertTrue(help.out().contains("--tolerance"), help.out());
+        assertTrue(CliRun.of("--help").out().contains("compare"));
+    }
+
+    /** The share of identical (within {@code tolerance}) panel pixels, plain loops over two pages. */
+    static double independentDirect(BufferedImage a, BufferedImage b, int tolerance) {
+        long same = 0;
+        for (int y = 50; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                int p = a.getRGB(x, y);
+                int q = b.getRGB(x, y);
+                boolean close = Math.abs((p >> 16 & 255) - (q >> 16 & 255)) <= tolerance
+                        && Math.abs((p >> 8 & 255) - (q >> 8 & 255)) <= tolerance
+                        && Math.abs((p & 255) - (q & 255)) <= tolerance;
+                same += close ? 1 : 0;
+            }
+        }
+        return same / 422_500.0;
+    }
+
+    static String format(double percent) {
+        return String.format(Locale.ROOT, "%.2f", percent);
+    }
+}

@@ -1,0 +1,48 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine.TypeConversionException;
+
+public class CompareOptionsTest {
+
+    @Test
+    void tolerancesInStepsOf255ths() {
+        CompareOptions.Tolerance t = new CompareOptions.Tolerance();
+        assertEquals(8, t.convert("8"));
+        assertEquals(8, t.convert("8/255"));
+        assertEquals(0, t.convert("0"));
+        for (String bad : new String[] {"-1", "256", "0.5", "x", "8/256", ""}) {
+            assertThrows(TypeConversionException.class, () -> t.convert(bad), bad);
+        }
+    }
+
+    @Test
+    void sharesInPercent() {
+        CompareOptions.Share s = new CompareOptions.Share();
+        assertEquals(99.5, s.convert("99.5%"));
+        assertEquals(100.0, s.convert("100"));
+        for (String bad : new String[] {"101", "-3", "NaN", "ninety"}) {
+            assertThrows(TypeConversionException.class, () -> s.convert(bad), bad);
+        }
+    }
+
+    @Test
+    void pageRanges() {
+        CompareOptions.PageRangeConverter c = new CompareOptions.PageRangeConverter();
+        CompareOptions.PageRange range = c.convert("1,3,6-8");
+        for (int page = 1; page <= 8; page++) {
+            assertEquals(page == 1 || page == 3 || page >= 6, range.contains(page), "page " + page);
+        }
+        assertFalse(range.contains(0));
+        assertTrue(c.convert("1-8").contains(8));
+        for (String bad : new String[] {"0-8", "1-9", "8-1", "1--3", "a", ""}) {
+            TypeConversionException e = assertThrows(TypeConversionException.class, () -> c.convert(bad), bad);
+            assertTrue(e.getMessage().contains("expected pages 1 to 8"), e.getMessage());
+        }
+    }
+}

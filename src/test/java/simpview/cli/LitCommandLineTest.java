@@ -1,0 +1,70 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The command line with lit scenes: scene lists and folders, and depth-cue options that do not apply. */
+public class LitCommandLineTest {
+
+    @TempDir
+    Path dir;
+
+    private Path scene(String name, String... lines) throws IOException {
+        Path file = dir.resolve(name + ".simp");
+        Files.writeString(file, String.join("\n", lines));
+        return file;
+    }
+
+    @Test
+    void renderWritesEverySceneOfAFolderNamedAfterIt() throws IOException {
+        scene("b-lit", "ambient 1 1 1", "polygon (-50 -50 -100) (50 -50 -100) (0 50 -100)");
+        scene("a-cued", "polygon (-50 -50 -100) (50 -50 -100) (0 50 -100)");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", dir.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        try (var files = Files.list(out)) {
+            assertEquals(List.of("a-cued.png", "b-lit.png"), files.map(f -> f.getFileName().toString()).sorted().toList());
+        }
+        assertEquals(0xFFFFFF, ImageIO.read(out.resolve("b-lit.png").toFile()).getRGB(375, 375) & 0xFFFFFF,
+                "the lit scene: kd (white) times ambient (white)");
+    }
+
+    @Test
+    void aSceneListKeepsItsOrderAndTakesNamesWithoutSimp() throws IOException {
+        scene("one", "ambient 1 1 1");
+        scene("two", "line (0 0 -1) (1 1 -1)");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", dir.resolve("two").toString(), dir.resolve("one.simp").toString(),
+                "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertTrue(Files.exists(out.resolve("one.png")) && Files.exists(out.resolve("two.png")));
+    }
+
+    @Test
+    void depthCueColoursForALitSceneAreAUsageErrorNamingTheCommand() throws IOException {
+        Path lit = scene("lit", "# a comment", "camera -1 -1 1 1 -1 -100");
+        CliRun run = CliRun.of("render", "--scene", lit.toString(), "--near-color", "0,1,0", "--out",
+                dir.resolve("x.png").toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("lit.simp is lit (lit.simp:2 camera)"), run.err());
+        CliRun compare = CliRun.of("compare", dir.resolve("x.png").toString(), "--scene", lit.toString(),
+                "--far-color", "0,0,1");
+        assertEquals(ExitCode.USAGE_ERROR, compare.exitCode());
+        assertTrue(compare.err().contains("lit.simp:2 camera"), compare.err());
+    }
+
+    @Test
+    void aListThatNamesNoSceneIsAUsageError() {
+        CliRun run = CliRun.of("render", "--scenes", dir.resolve("nothing").toString(), "--out-dir", dir.toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("no scene"), run.err());
+    }
+}

@@ -1,0 +1,299 @@
+package simpview.cli;
+
+import simpview.testing.Images;
+import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneSheet;
+import simpview.window.TestScenes;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.Pages;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
+
+public class MainCommandLineTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void helpAndVersionExitZero() {
+        CliRun help = CliRun.of("--help");
+        assertEquals(ExitCode.OK, help.exitCode());
+        assertTrue(help.out().contains("Usage: simpview"), help.out());
+        CliRun renderHelp = CliRun.of("render", "--help");
+        assertEquals(ExitCode.OK, renderHelp.exitCode());
+        assertTrue(renderHelp.out().contains("--near-color"), renderHelp.out());
+        CliRun version = CliRun.of("--version");
+        assertEquals(ExitCode.OK, version.exitCode());
+        assertTrue(version.out().startsWith("simpview "), version.out());
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2, 3})
+    void pageOutputEqualsHeadlessRenderPixelForPixel(int page) throws Exception {
+        Path out = dir.resolve("page.png");
+        CliRun run = CliRun.of("render", "--page", String.valueOf(page), "--seed", "7", "--out", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        BufferedImage expected = new PageRenderer().renderImage(page, PageContext.defaults().withSeed(7));
+        assertEquals(0, Images.differingPixels(expected, ImageIO.read(out.toFile())));
+    }
+
+    @Test
+    void seedChangesTheRandomPages() throws Exception {
+        Path a = dir.resolve("a.png");
+        Path b = dir.resolve("b.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "2", "--out", a.toString()).exitCode());
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "2", "--seed", "8", "--out", b.toString()).exitCode());
+        assertTrue(Images.differingPixels(ImageIO.read(a.toFile()), ImageIO.read(b.toFile())) > 1000);
+    }
+
+    @Test
+    void allWritesEightFilesWhenEveryPageRenders() throws Exception {
+        TestScenes.requireCourseSimpDir();
+        PageContext context = TestScenes.courseContext();
+        Path outDir = dir.resolve("pages");
+        CliRun run = CliRun.of("render", "--all", "--simp-dir", TestScenes.courseSimpDir().toString(),
+                "--out-dir", outDir.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        for (int n = 1; n <= Pages.COUNT; n++) {
+            BufferedImage written = ImageIO.read(outDir.resolve("page" + n + ".png").toFile());
+            BufferedImage expected = new PageRenderer().renderImage(n, context);
+            assertEquals(0, Images.differingPixels(expected, written), "page " + n);
+        }
+    }
+
+    @Test
+    void allReportsMissingCourseFilesAndStillWritesTheOtherPages() {
+        Path empty = dir.resolve("no-course-files");
+        Path outDir = dir.resolve("pages");
+        CliRun run = CliRun.of("render", "--all", "--simp-dir", empty.toString(), "--out-dir", outDir.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        for (int n = 1; n <= 3; n++) {
+            assertTrue(Files.isRegularFile(outDir.resolve("page" + n + ".png")), "page " + n + " written");
+        }
+        for (int n = 6; n <= 8; n++) {
+            assertFalse(Files.exists(outDir.resolve("page" + n + ".png")), "page " + n + " has no scene");
+            assertTrue(run.err().contains("page" + n + ".simp was not found in " + empty.toAbsolutePath()), run.err());
+        }
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {
+        "render",
+        "render --page 3",
+        "render --page 0 --out x.png",
+        "render --page 9 --out x.png",
+        "render --page two --out x.png",
+        "render --all --out x.png",
+        "render --all --page 2 --out-dir d",
+        "render --page 2 --out-dir d",
+        "render --page 2 --near-color 0,1,0 --out x.png",
+        "render --scene a.simp --seed 3 --out x.png",
+        "render --scene a.simp --near-color 1,2 --out x.png",
+        "render --scene a.simp --far-color 0,0,nan --out x.png",
+        "--frobnicate",
+        "render --page 1 --out x.png extra",
+        "render --page 1 --out x.jpg",
+        "render --scene a.simp --own-colors --near-color 0,1,0 --out x.png",
+        "render --page 4 --own-colors --out x.png"})
+    void badArgumentsAreUsageErrors(String line) {
+        CliRun run = CliRun.of(line.split(" "));
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("--help' for how to use it."), "points at --help: " + run.err());
+        assertFalse(run.err().contains("Usage:"), "the whole help is not printed: " + run.err());
+        assertTrue(run.err().lines().count() <= 4, "the problem and one line: " + run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @Test
+    void aUsageErrorOfRenderPointsAtRenderHelpAndSuggestsTheNearestOption() {
+        CliRun run = CliRun.of("render", "--pge", "3", "--out", "x.png");
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("See 'simpview render --help'"), run.err());
+        assertTrue(run.err().contains("--page"), "suggests --page: " + run.err());
+    }
+
+    @Test
+    void outAsJpegSaysPngOnly() {
+        CliRun run = CliRun.of("render", "--page", "1", "--out", dir.resolve("x.jpg").toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("PNG files only"), run.err());
+        assertFalse(Files.exists(dir.resolve("x.jpg")));
+    }
+
+    @Test
+    void ownColorsDrawTheVertexColoursWithoutTheCue() throws IOException {
+        Path scene = Files.writeString(dir.resolve("red.simp"),
+                "polygon (-50, -50, -150) (1, 0, 0) (50, -50, -150) (1, 0, 0) (0, 50, -150) (1, 0, 0)\n");
+        Path own = dir.resolve("own.png");
+        Path cued = dir.resolve("cued.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--own-colors", "--out", own.toString()).exitCode());
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out", cued.toString()).exitCode());
+        int centre = PageCanvas.SIZE / 2;
+        assertEquals(0xFF0000, ImageIO.read(own.toFile()).getRGB(centre, centre) & 0xFFFFFF, "own red");
+        // Cued from white at z = 0 to black at z = -200: z = -150 is a quarter of the way, 64.
+        assertEquals(0x404040, ImageIO.read(cued.toFile()).getRGB(centre, centre) & 0xFFFFFF, "cued grey");
+    }
+
+    @Test
+    void emptyOutputNamesAreUsageErrors() {
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("render", "--page", "1", "--out", "").exitCode());
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("render", "--all", "--out-dir", "").exitCode());
+    }
+
+    @Test
+    void badSceneGivesExitOneWithFileLineAndColumn() throws IOException {
+        Path scene = Files.writeString(dir.resolve("bad.simp"), "# a bad scene\nline (0, 0, 0) (10, 10, -5)\nfrobnicate 1 2\n");
+        CliRun run = CliRun.of("render", "--scene", scene.toString(), "--out", dir.resolve("bad.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertFalse(run.showsStackTrace(), run.err());
+        assertTrue(run.err().contains("bad.simp"), run.err());
+        assertTrue(run.err().contains(scene + ":3:1"), "file:line:col in " + run.err());
+    }
+
+    @Test
+    void missingSceneGivesExitOneNamingTheFile() {
+        Path missing = dir.resolve("nowhere.simp");
+        CliRun run = CliRun.of("render", "--scene", missing.toString(), "--out", dir.resolve("x.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("file not found: " + missing.toAbsolutePath().normalize()), run.err());
+        assertFalse(Files.exists(dir.resolve("x.png")));
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @Test
+    void sceneOptionDrawsACourseSceneLikeItsPage() throws Exception {
+        Path course = TestScenes.requireCourseSimpDir();
+        Path out = dir.resolve("scene.png");
+        CliRun run = CliRun.of("render", "--scene", course.resolve("page6.simp").toString(), "--out", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        BufferedImage page = new PageRenderer().renderImage(6, TestScenes.courseContext());
+        assertEquals(0, Images.differingPixels(page, ImageIO.read(out.toFile())));
+    }
+
+    @Test
+    void aFolderGivenAsSceneIsAClearSceneError() {
+        CliRun run = CliRun.of("render", "--scene", dir.toString(), "--out", dir.resolve("x.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("not a file but a folder: " + dir.toAbsolutePath().normalize()), run.err());
+    }
+
+    @Test
+    void unwritableOutputIsAClearMessageAndExitOne() throws IOException {
+        Path aFile = Files.writeString(dir.resolve("plain-file"), "not a folder");
+        CliRun run = CliRun.of("render", "--page", "1", "--out", aFile.resolve("page.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith("simpview: cannot write " + aFile.resolve("page.png")), run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+
+        CliRun intoFolder = CliRun.of("render", "--page", "1", "--out", dir.toString());
+        assertEquals(ExitCode.SCENE_ERROR, intoFolder.exitCode());
+        assertTrue(intoFolder.err().contains("cannot write " + dir), intoFolder.err());
+    }
+
+    @Test
+    void outputFoldersAreMadeWhenMissing() throws IOException {
+        Path out = dir.resolve("a/b/page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "1", "--out", out.toString()).exitCode());
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertNotNull(image);
+        assertEquals(PageCanvas.SIZE, image.getWidth());
+    }
+
+    @Test
+    void withoutADisplayTheWindowCommandHintsAtRender() {
+        CliRun run = CliRun.with(() -> true);
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertEquals(1, run.err().strip().lines().count(), run.err());
+        assertTrue(run.err().contains("simpview render"), run.err());
+    }
+
+    @Test
+    void contactSheetTilesThePagesThatRender() throws Exception {
+        Path out = dir.resolve("sheet.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--simp-dir", dir.toString(), "--out", out.toString());
+        // Pages 6 to 8 have no files in an empty folder: named on stderr, left out, exit 1.
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("page 6 left out"), run.err());
+        BufferedImage sheet = ImageIO.read(out.toFile());
+        BufferedImage page1 = ContactSheet.halved(new PageRenderer().renderImage(1, PageContext.defaults()));
+        BufferedImage tile = sheet.getSubimage(ContactSheet.GAP, ContactSheet.GAP, ContactSheet.TILE, ContactSheet.TILE);
+        assertEquals(0, Images.differingPixels(page1, tile));
+    }
+
+    @Test
+    void aContactSheetOfScenesTilesThemInTheOrderGiven() throws Exception {
+        Path lit = Files.writeString(dir.resolve("lit.simp"), "ambient 1 1 1\nsurface 0 0 1\n"
+                + "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)\n");
+        Path cued = Files.writeString(dir.resolve("cued.simp"), "polygon (-50, -50, -50) (50, -50, -50) (0, 50, -50)\n");
+        Path out = dir.resolve("scenes.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), lit.toString(), cued.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        BufferedImage sheet = ImageIO.read(out.toFile());
+        assertEquals(ContactSheet.GAP + 2 * (ContactSheet.TILE + ContactSheet.GAP), sheet.getWidth());
+        int cell = ContactSheet.TILE + ContactSheet.GAP;
+        for (int k = 0; k < 2; k++) {
+            PageCanvas canvas = new PageCanvas();
+            SceneSheet.of(k == 0 ? lit : cued).drawOn(canvas, SceneMonitor.NONE, SceneDrawer.SIMP);
+            BufferedImage tile = sheet.getSubimage(ContactSheet.GAP + k * cell, ContactSheet.GAP, ContactSheet.TILE,
+                    ContactSheet.TILE);
+            assertEquals(0, Images.differingPixels(ContactSheet.halved(canvas.image()), tile), "tile " + k);
+        }
+        // The lit scene is blue (kd * Ia), the depth-cued one 3/4 white at z = -50: round(0.75 * 255) = 191.
+        assertEquals(0x0000FF, sheet.getRGB(ContactSheet.GAP + 187, ContactSheet.GAP + 187) & 0xFFFFFF);
+        assertEquals(0xBFBFBF, sheet.getRGB(ContactSheet.GAP + cell + 187, ContactSheet.GAP + 187) & 0xFFFFFF);
+    }
+
+    @Test
+    void aSceneThatFailsIsLeftOutOfTheSheetAndNamed() throws Exception {
+        Path good = Files.writeString(dir.resolve("good.simp"), "ambient 1 1 1\n");
+        Path bad = Files.writeString(dir.resolve("bad.simp"), "rotate W 5\n");
+        Path out = dir.resolve("scenes.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), bad.toString(), good.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith(bad + " left out: "), run.err());
+        assertEquals(ContactSheet.GAP + ContactSheet.TILE + ContactSheet.GAP, ImageIO.read(out.toFile()).getWidth());
+    }
+
+    @Test
+    void sceneFilesGoWithTheContactSheetOnly() {
+        CliRun run = CliRun.of("render", "--page", "2", "--out", dir.resolve("p.png").toString(), "x.simp");
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith("simpview: scene files [x.simp] go with --contact-sheet only"), run.err());
+        assertFalse(Files.exists(dir.resolve("p.png")));
+    }
+
+    @Test
+    void depthCueColoursOnALitSceneAreAUsageErrorNamingTheLitCommand() throws Exception {
+        Files.writeString(dir.resolve("part.simp"), "# lit\nambient 1 1 1\n");
+        Path lit = Files.writeString(dir.resolve("lit.simp"), "file \"part\"\npolygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        Path out = dir.resolve("lit.png");
+        for (String option : new String[] {"--near-color", "--far-color"}) {
+            CliRun run = CliRun.of("render", "--scene", lit.toString(), option, "1,0,0", "--out", out.toString());
+            assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), option);
+            assertTrue(run.err().startsWith("simpview: --near-color and --far-color are for depth-cued scenes, and lit.simp"
+                    + " is lit (part.simp:2 ambient)"), run.err());
+            assertFalse(Files.exists(out));
+        }
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", lit.toString(), "--out", out.toString()).exitCode());
+        Path cued = Files.writeString(dir.resolve("cued.simp"), "polygon (0 0 -5) (1 0 -5) (0 1 -5)\n");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", cued.toString(), "--near-color", "1,0,0", "--out",
+                out.toString()).exitCode());
+    }
+}

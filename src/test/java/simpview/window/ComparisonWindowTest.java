@@ -1,0 +1,130 @@
+package simpview.window;
+
+import simpview.scene.simp.SceneDrawer;
+import simpview.window.instruments.ComparisonLayer;
+import simpview.window.render.View;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.Transferable;
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import javax.imageio.ImageIO;
+import javax.swing.TransferHandler;
+import org.junit.jupiter.api.Test;
+import simpview.compare.Comparison;
+import simpview.compare.HeatMap;
+import simpview.compare.Percent;
+import simpview.compare.Picture;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/** Compare mode in the real window under Xvfb: drop a picture, flip with B, heat map with H, stop with Backspace. */
+public class ComparisonWindowTest extends WindowTestCase {
+
+    private static final long SEED = 361;
+
+    /** Page 1 with a cyan square on it, as a window capture: 872x782, panel at (51, 81). */
+    private Path theirPicture(BufferedImage page) throws Exception {
+        BufferedImage capture = new BufferedImage(872, 782, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 782; y++) {
+            for (int x = 0; x < 872; x++) {
+                capture.setRGB(x, y, x < 751 && y > 30 ? 0xFFFFFF : 0xF0F0F0);
+            }
+        }
+        for (int y = 0; y < 650; y++) {
+            for (int x = 0; x < 650; x++) {
+                boolean square = x >= 300 && x < 400 && y >= 300 && y < 400;
+                capture.setRGB(51 + x, 81 + y, square ? 0x00FFFF : page.getRGB(50 + x, 50 + y));
+            }
+        }
+        Path file = dir.resolve("mine.png");
+        ImageIO.write(capture, "png", file.toFile());
+        return file;
+    }
+
+    private void drop(Path file) throws Exception {
+        Transferable files = new Transferable() {
+            @Override
+            public DataFlavor[] getTransferDataFlavors() {
+                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
+            }
+
+            @Override
+            public boolean isDataFlavorSupported(DataFlavor flavor) {
+                return DataFlavor.javaFileListFlavor.equals(flavor);
+            }
+
+            @Override
+            public Object getTransferData(DataFlavor flavor) {
+                return List.of(new File(file.toString()));
+            }
+        };
+        boolean taken = driver.onEdt(() -> {
+            TransferHandler handler = driver.window().frame().getTransferHandler();
+            return handler.importData(new TransferHandler.TransferSupport(driver.window().frame().getRootPane(), files));
+        });
+        assertTrue(taken, "the window took the dropped picture");
+    }
+
+    @Test
+    void aDroppedPictureIsComparedFlippedAndShownAsAHeatMap() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_1);
+        driver.awaitShown(new View.OfPage(1));
+        BufferedImage ours = new PageRenderer().renderImage(1, PageContext.defaults().withSeed(SEED));
+        Path mine = theirPicture(ours);
+
+        drop(mine);
+        Comparison expected = Comparison.of(Picture.ofPage(ours, "ours").panel(), Picture.read(mine).panel());
+        String status = driver.onEdt(() -> driver.window().status().text());
+        assertTrue(status.startsWith("vs mine.png: identical " + Percent.of(expected.share(0, true))), status);
+        assertTrue(status.contains("≤8/255 " + Percent.of(expected.share(8, true))), status);
+        assertTrue(expected.share(0, true) < 0.99, "the square differs");
+        assertEquals(0, driver.screenDiffersFrom(ours), "ours first");
+
+        driver.press(KeyEvent.VK_B);
+        assertEquals(ComparisonLayer.Showing.THEIRS, driver.onEdt(() -> driver.window().comparison().showing()));
+        assertEquals(0, driver.screenDiffersFrom(HeatMap.asPage(Picture.read(mine).panel())), "theirs after B");
+        driver.press(KeyEvent.VK_B);
+        assertEquals(0, driver.screenDiffersFrom(ours), "ours after B again");
+
+        driver.press(KeyEvent.VK_H);
+        int[] heat = new int[Comparison.N * Comparison.N];
+        HeatMap.fill(expected, 8, heat);
+        BufferedImage heatPage = HeatMap.asPage(heat);
+        assertEquals(0, driver.screenDiffersFrom(heatPage), "the heat map after H");
+        assertEquals(0xFF0000, heatPage.getRGB(50 + 350, 50 + 350) & 0xFF0000, "the square is red on it");
+        assertTrue(driver.onEdt(() -> driver.window().status().text()).contains("showing heat"));
+
+        // The comparison stays with page 1: away and back, it is still there.
+        driver.press(KeyEvent.VK_RIGHT);
+        driver.awaitShown(new View.OfPage(2));
+        assertEquals("", driver.onEdt(() -> driver.window().comparison().statusText()));
+        driver.press(KeyEvent.VK_LEFT);
+        driver.awaitShown(new View.OfPage(1));
+        assertTrue(driver.onEdt(() -> driver.window().status().text()).startsWith("vs mine.png"));
+
+        driver.press(KeyEvent.VK_BACK_SPACE);
+        assertEquals(0, driver.screenDiffersFrom(ours), "ours once stopped");
+        assertEquals("Stopped comparing.", driver.onEdt(() -> driver.window().status().text()));
+    }
+
+    @Test
+    void aPictureWithoutAPanelIsRefusedInTheStatusLine() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        Path blank = dir.resolve("blank.png");
+        ImageIO.write(new BufferedImage(800, 800, BufferedImage.TYPE_INT_RGB), "png", blank.toFile());
+        drop(blank);
+        String status = driver.onEdt(() -> driver.window().status().text());
+        assertTrue(status.startsWith("Cannot compare: no 650x650 panel found in " + blank), status);
+        assertEquals(null, driver.onEdt(() -> driver.window().comparison().comparison()));
+    }
+}

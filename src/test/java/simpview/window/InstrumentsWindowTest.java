@@ -1,0 +1,376 @@
+package simpview.window;
+
+import simpview.testing.Images;
+import simpview.scene.simp.SceneDrawer;
+import simpview.window.instruments.DepthPicture;
+import simpview.window.instruments.Inspector;
+import simpview.window.render.RenderedView;
+import simpview.window.render.View;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Insets;
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import simpview.pages.ZBufferPage;
+import simpview.surface.PageCanvas;
+
+/** The window's instruments under Xvfb, driven with java.awt.Robot: zoom, grid, inspector, depth view, reload. */
+public class InstrumentsWindowTest extends WindowTestCase {
+
+    private static final long SEED = 361;
+
+    private WindowDriver open() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        return driver;
+    }
+
+    private SimpviewWindow window() {
+        return driver.window();
+    }
+
+    @Test
+    void theFrameFitsTheScreenAndAResizeKeepsThePageWhole() throws Exception {
+        open();
+        Rectangle usable = driver.onEdt(() -> {
+            var screen = window().frame().getGraphicsConfiguration();
+            Insets taken = Toolkit.getDefaultToolkit().getScreenInsets(screen);
+            Rectangle b = screen.getBounds();
+            return new Rectangle(b.x + taken.left, b.y + taken.top, b.width - taken.left - taken.right,
+                    b.height - taken.top - taken.bottom);
+        });
+        Rectangle frame = driver.onEdt(() -> window().frame().getBounds());
+        assertTrue(frame.width <= usable.width && frame.height <= usable.height, frame + " within " + usable);
+        assertTrue(driver.onEdt(() -> window().frame().isResizable()));
+
+        driver.onEdt(() -> window().frame().setSize(560, 480));
+        driver.awaitEdt(() -> window().pageView().getHeight() < 480, "the smaller frame laid out");
+        driver.robot().waitForIdle();
+        PageView view = window().pageView();
+        double shown = driver.onEdt(() -> view.zoomPan().shownSize());
+        Point origin = driver.onEdt(view::imageOrigin);
+        int width = driver.onEdt(view::getWidth);
+        int height = driver.onEdt(view::getHeight);
+        assertTrue(origin.x >= 0 && origin.y >= 0 && origin.x + shown <= width && origin.y + shown <= height,
+                "the whole page in the view: origin " + origin + ", size " + shown + " in " + width + "x" + height);
+        assertTrue(driver.onEdt(() -> window().status().inspectorText()).contains("scaled to fit"),
+                driver.onEdt(() -> window().status().inspectorText()));
+        // On screen: all four corners of the scaled page are its white margins.
+        BufferedImage screen = driver.capturePage();
+        int last = screen.getWidth() - 1;
+        for (int[] corner : new int[][] {{0, 0}, {last, 0}, {0, last}, {last, last}}) {
+            assertEquals(0xFFFFFF, screen.getRGB(corner[0], corner[1]) & 0xFFFFFF, "corner " + corner[0] + "," + corner[1]);
+        }
+    }
+
+    @Test
+    void zoom8xShowsAGridLineBetweenTwoPixels() throws Exception {
+        open();
+        // Image pixels (52, 697) and (53, 697): panel (2, 2) and (3, 2), black on page 1 (the mesh keeps 10 px off the edge).
+        Point at = driver.onScreen(52, 697);
+        Point viewCorner = driver.onEdt(() -> window().pageView().getLocationOnScreen());
+        driver.onEdt(() -> window().pageView().zoomPan().zoomAbout(at.x - viewCorner.x, at.y - viewCorner.y, 8));
+        driver.onEdt(() -> window().pageView().repaint());
+        driver.robot().waitForIdle();
+        Point left = driver.onScreen(52, 697);
+        int lineX = left.x - 4 + 8; // the first screen column of pixel 53
+        int y = left.y - 2;
+        BufferedImage strip = driver.captureWhen(s -> true);
+        assertEquals(8.0, driver.onEdt(() -> window().pageView().zoomPan().zoom()));
+        int inside = driver.robot().getPixelColor(left.x - 2, y).getRGB() & 0xFFFFFF;
+        int line = driver.robot().getPixelColor(lineX, y).getRGB() & 0xFFFFFF;
+        int insideNext = driver.robot().getPixelColor(lineX + 2, y).getRGB() & 0xFFFFFF;
+        assertEquals(0x000000, inside, "inside pixel 52 it is the page's black");
+        assertEquals(0x000000, insideNext, "inside pixel 53 too");
+        assertNotEquals(0x000000, line, "a grid line between them");
+        assertEquals(PixelGrid.LINE.getRed() * PixelGrid.LINE.getAlpha() / 255, (line >> 16) & 0xFF, 2, "the grid's grey over black");
+        assertNotNull(strip);
+        assertEquals(0, Images.differingPixels(driver.onEdt(() -> window().shown()).image(),
+                driver.onEdt(() -> window().pageView().image())), "the picture itself is unchanged");
+
+        driver.onEdt(() -> window().pageView().zoomPan().zoomAbout(at.x - viewCorner.x, at.y - viewCorner.y, 4));
+        driver.onEdt(() -> window().pageView().repaint());
+        driver.robot().waitForIdle();
+        Point left4 = driver.onScreen(52, 697);
+        assertEquals(0x000000, driver.robot().getPixelColor(left4.x - 2 + 4, left4.y).getRGB() & 0xFFFFFF,
+                "no grid at 4x");
+    }
+
+    @Test
+    void hoveringAPixelOfPage3ShowsTheTrianglesColourDepthAndDrawingOrder() throws Exception {
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_3);
+        RenderedView three = driver.awaitShown(new View.OfPage(3));
+        // The panel's centre is inside all six triangles: the nearest one shows there.
+        int px = PageCanvas.PANEL / 2;
+        int py = PageCanvas.PANEL / 2;
+        var triangles = ZBufferPage.triangles(SEED);
+        int nearest = 0;
+        for (int t = 1; t < triangles.length; t++) {
+            if (triangles[t][0].z() > triangles[nearest][0].z()) {
+                nearest = t;
+            }
+        }
+        Point p = driver.onScreen(PageCanvas.MARGIN + px, PageCanvas.MARGIN + PageCanvas.PANEL - 1 - py);
+        driver.robot().mouseMove(p.x, p.y);
+        driver.robot().waitForIdle();
+        int grey = (int) Math.round(ZBufferPage.GREYS[nearest] * 255);
+        String z = Inspector.number(triangles[nearest][0].z());
+        // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
+        java.util.regex.Pattern expected = java.util.regex.Pattern.compile(
+                "x (\\d+), y (\\d+) · rgb " + grey + " " + grey + " " + grey + " = .*");
+        driver.awaitEdt(() -> expected.matcher(window().status().inspectorText()).matches(), "the inspector on the centre");
+        String line = driver.onEdt(() -> window().status().inspectorText());
+        java.util.regex.Matcher at = expected.matcher(line);
+        assertTrue(at.matches(), line);
+        assertTrue(Math.abs(Integer.parseInt(at.group(1)) - px) <= 2 && Math.abs(Integer.parseInt(at.group(2)) - py) <= 2, line);
+        assertTrue(line.contains("depth " + z), line);
+        assertTrue(line.contains("drawn by primitive " + (nearest + 1) + " of 6"), line);
+        assertTrue(line.contains("triangle " + (nearest + 1) + " of 6"), line);
+        assertNull(three.error());
+
+        // Pinned, it stays when the pointer moves on.
+        driver.press(KeyEvent.VK_P);
+        driver.robot().mouseMove(p.x + 200, p.y + 200);
+        driver.robot().waitForIdle();
+        String pinned = driver.onEdt(() -> window().status().inspectorText());
+        assertEquals("pinned · " + line, pinned);
+    }
+
+    @Test
+    void theDepthViewShowsTheZBuffer() throws Exception {
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_4);
+        RenderedView four = driver.awaitShown(new View.OfPage(4));
+        driver.press(KeyEvent.VK_D);
+        BufferedImage depths = DepthPicture.of(four.facts().depths(), four.facts().depthStart());
+        assertEquals(0, driver.screenDiffersFrom(depths), "the depth view on screen");
+        driver.press(KeyEvent.VK_D);
+        assertEquals(0, driver.screenDiffersFrom(four.image()), "the page again");
+    }
+
+    @Test
+    void editingAnOpenSceneFileChangesTheScreenWithinTwoSeconds() throws Exception {
+        Path scene = dir.resolve("edit.simp");
+        Files.writeString(scene, triangleAt(-150));
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView before = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(0, driver.screenDiffersFrom(before.image()));
+        driver.onEdt(() -> window().pageView().zoomPan().zoomAbout(375, 375, 2));
+        Files.writeString(scene, triangleAt(-50));
+        long saved = System.nanoTime();
+        driver.awaitEdt(() -> window().shown().image().getRGB(375, 375) != before.image().getRGB(375, 375),
+                "the picture to change after the save");
+        long millis = (System.nanoTime() - saved) / 1_000_000;
+        assertTrue(millis < 2000, "redrawn " + millis + " ms after the save");
+        assertEquals(2.0, driver.onEdt(() -> window().pageView().zoomPan().zoom()), "zoom kept");
+        // z = -50: three quarters of the way from black to white.
+        assertEquals(0xBFBFBF, driver.onEdt(() -> window().shown()).image().getRGB(375, 375) & 0xFFFFFF);
+
+        Files.writeString(scene, "polygon (-50, -50, -50) (50, -50\n");
+        driver.awaitEdt(() -> window().shown().error() != null, "the broken save's error");
+        assertTrue(driver.onEdt(() -> window().frame().getTitle()).endsWith("— error"));
+        Files.writeString(scene, triangleAt(-120));
+        driver.awaitEdt(() -> window().shown().error() == null, "recovery on the next save");
+        assertEquals(0x666666, driver.onEdt(() -> window().shown()).image().getRGB(375, 375) & 0xFFFFFF);
+    }
+
+    @Test
+    void editingAFileTheSceneIncludesRedrawsItToo() throws Exception {
+        Path part = dir.resolve("part.simp");
+        Files.writeString(part, triangleAt(-150));
+        Path scene = Files.writeString(dir.resolve("whole.simp"), "# includes part\nfile \"part\"\n");
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView before = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(java.util.List.of(scene, part), driver.onEdt(() -> window().watcher().watched()));
+        Files.writeString(part, triangleAt(-50));
+        long saved = System.nanoTime();
+        driver.awaitEdt(() -> window().shown().image().getRGB(375, 375) != before.image().getRGB(375, 375),
+                "the picture to change after the included file's save");
+        assertTrue((System.nanoTime() - saved) / 1_000_000 < 2000, "within 2 s");
+    }
+
+    @Test
+    void ownColoursShowAScenesVertexColours() throws Exception {
+        Path scene = Files.writeString(dir.resolve("red.simp"),
+                "polygon (-50, -50, -150) (1, 0, 0) (50, -50, -150) (1, 0, 0) (0, 50, -150) (1, 0, 0)\n");
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView cued = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(0x404040, cued.image().getRGB(375, 375) & 0xFFFFFF);
+        driver.press(KeyEvent.VK_C);
+        driver.awaitEdt(() -> !window().busy() && (window().shown().image().getRGB(375, 375) & 0xFFFFFF) == 0xFF0000,
+                "the scene in its own red");
+    }
+
+    @Test
+    void aRightDragTurnsTheSceneAndTheResetKeyRestoresItBitForBit() throws Exception {
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_4);
+        RenderedView four = driver.awaitShown(new View.OfPage(4));
+        assertEquals(0, driver.screenDiffersFrom(four.image()), "page 4 as drawn");
+        Point from = driver.onScreen(375, 375);
+        var robot = driver.robot();
+        robot.mouseMove(from.x, from.y);
+        robot.mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        for (int k = 1; k <= 6; k++) {
+            robot.mouseMove(from.x + 10 * k, from.y + 4 * k);
+        }
+        robot.mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        robot.mouseMove(1, 1);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) > 1000
+                && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
+        assertEquals(new View.OfPage(4), driver.onEdt(() -> window().shown()).view(), "a right-drag does not step");
+        assertTrue(driver.screenDiffersFrom(four.image()) > 1000, "the turned page on screen");
+        driver.press(KeyEvent.VK_O);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) == 0,
+                "the unturned picture");
+        assertEquals(0, driver.screenDiffersFrom(four.image()), "back bit for bit");
+    }
+
+    @Test
+    void stepKeysShowTheDrawingPrimitiveByPrimitive() throws Exception {
+        Path scene = Files.writeString(dir.resolve("three.simp"), "# three\n" + triangleAt(-150) + "\n"
+                + "polygon (-90, -90, -50) (-20, -90, -50) (-55, -20, -50)\n" + "line (60, 60, -10) (90, 90, -10)\n");
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView all = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(3, all.facts().primitives().size());
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 1 of 3, three.simp:2"),
+                "stepping at primitive 1: " + driver.onEdt(() -> window().status().messageText()));
+        RenderedView first = driver.onEdt(() -> window().shown());
+        int centre = PageCanvas.SIZE / 2;
+        assertEquals(all.image().getRGB(centre, centre), first.image().getRGB(centre, centre), "the first triangle drawn");
+        Point corner = new Point(PageCanvas.MARGIN + 65, PageCanvas.MARGIN + PageCanvas.PANEL - 65);
+        assertEquals(0xFF000000, first.image().getRGB(corner.x, corner.y), "the second not yet");
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 2 of 3, three.simp:4"),
+                "stepping at primitive 2");
+        assertEquals(all.image().getRGB(corner.x, corner.y), driver.onEdt(() -> window().shown()).image().getRGB(corner.x, corner.y));
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the whole picture again");
+    }
+
+    @Test
+    void aLitSceneIsInspectedSteppedAndTurnedLikeTheOthers() throws Exception {
+        Path scene = Files.writeString(dir.resolve("lit.simp"), String.join("\n",
+                "# a lit scene: a wall, and a square in front of it",
+                "ambient 0.2 0.2 0.2",
+                "camera -1 -1 1 1 -1 -100",
+                "light 1 1 1 1 0",
+                "surface 0.2 0.4 0.9",
+                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
+                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)",
+                "surface 0.9 0.5 0.1",
+                "polygon (-3, -3, -10) (3, -3, -10) (3, 3, -10)",
+                "polygon (-3, -3, -10) (3, 3, -10) (-3, 3, -10)", ""));
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView all = driver.awaitShown(new View.OfScene(scene));
+        assertNull(all.error());
+        assertEquals(4, all.facts().primitives().size());
+
+        // The inspector names the command that drew the centre, and its camera-space depth.
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.awaitEdt(() -> window().status().inspectorText().contains("lit.simp:"), "the inspector on the square");
+        String line = driver.onEdt(() -> window().status().inspectorText());
+        assertTrue(line.matches(".*depth -10(\\.\\d+)? · drawn by primitive [34] of 4: lit.simp:(9|10) polygon .*"), line);
+
+        // The depth view: the nearest depth white, the farthest black, the lit z-buffer's start untouched.
+        driver.press(KeyEvent.VK_D);
+        assertEquals(0, driver.screenDiffersFrom(DepthPicture.of(all.facts().depths(), Double.NEGATIVE_INFINITY)));
+        driver.press(KeyEvent.VK_D);
+
+        // Stepping: primitive 1 is half the wall, without the square in front.
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 1 of 4, lit.simp:6"),
+                "stepping at primitive 1: " + driver.onEdt(() -> window().status().messageText()));
+        int mid = PageCanvas.SIZE / 2;
+        assertNotEquals(all.image().getRGB(mid, mid), driver.onEdt(() -> window().shown()).image().getRGB(mid, mid),
+                "the square not drawn yet");
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the whole picture again");
+
+        // A right-drag moves the camera about the scene; O puts it back bit for bit.
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.robot().mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        for (int k = 1; k <= 6; k++) {
+            driver.robot().mouseMove(centre.x + 12 * k, centre.y + 3 * k);
+        }
+        driver.robot().mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) > 1000
+                && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("turned "));
+        driver.press(KeyEvent.VK_O);
+        driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) == 0,
+                "the unturned picture");
+        assertEquals(0, driver.screenDiffersFrom(all.image()), "back bit for bit");
+    }
+
+    @Test
+    void theProgressBarShowsAFractionOfAFileWhoseSizeIsKnown() throws Exception {
+        int lines = 40_000;
+        StringBuilder text = new StringBuilder();
+        for (int k = 0; k < lines; k++) {
+            text.append("line (-50, -50, -10) (50, 50, -10)\n");
+        }
+        Path scene = Files.writeString(dir.resolve("long.simp"), text);
+        assertTrue(Files.size(scene) > (1 << 20));
+        // A stand-in that stops half way, still reporting, until the test has seen the fraction: however
+        // busy the machine, the scene cannot end before the progress bar shows (and the count is known).
+        java.util.concurrent.atomic.AtomicBoolean seen = new java.util.concurrent.atomic.AtomicBoolean();
+        SceneDrawer halfWayUntilSeen = (file, panel, monitor) -> {
+            for (long read = 1000; read <= lines; read += 1000) {
+                monitor.linesRead(read);
+                while (read == lines / 2 && !seen.get()) {
+                    if (monitor.cancelled()) {
+                        throw new simpview.scene.simp.SceneCancelledException();
+                    }
+                    monitor.linesRead(read);
+                    try {
+                        Thread.sleep(5);
+                    } catch (InterruptedException e) {
+                        throw new simpview.scene.simp.SceneCancelledException();
+                    }
+                }
+            }
+        };
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()),
+                halfWayUntilSeen);
+        driver.onEdt(() -> window().openScene(scene));
+        driver.awaitEdt(() -> window().status().showingProgress()
+                && window().status().progressText().contains("of about 40,000 lines read"),
+                "a fraction on the progress bar");
+        String said = driver.onEdt(() -> window().status().progressText());
+        seen.set(true);
+        assertTrue(said.matches("[0-9,]+ of about 40,000 lines read \\(\\d+ %\\)"), said);
+        driver.awaitShown(new View.OfScene(scene));
+    }
+
+    private static String triangleAt(int z) {
+        return "polygon (-60, -60, " + z + ") (60, -60, " + z + ") (0, 60, " + z + ")\n";
+    }
+}

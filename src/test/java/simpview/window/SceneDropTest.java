@@ -1,0 +1,81 @@
+package simpview.window;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.StringSelection;
+import java.awt.datatransfer.Transferable;
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import javax.swing.JPanel;
+import javax.swing.TransferHandler.TransferSupport;
+import org.junit.jupiter.api.Test;
+
+public class SceneDropTest {
+
+    private final List<Path> opened = new ArrayList<>();
+    private final List<String> told = new ArrayList<>();
+    private final SceneDrop drop = new SceneDrop(opened::add, told::add);
+
+    @Test
+    void opensTheFirstSimpFileDropped() {
+        assertTrue(drop.importData(support(files("notes.txt", "house.simp", "tree.simp"))));
+        assertEquals(List.of(Path.of("house.simp")), opened);
+    }
+
+    @Test
+    void saysWhatItWantsWhenNoSimpFileIsDropped() {
+        assertFalse(drop.importData(support(files("notes.txt"))));
+        assertEquals(List.of(), opened);
+        assertEquals(List.of("Drop a .simp file to open it."), told);
+    }
+
+    @Test
+    void aPictureDroppedIsCompared() {
+        List<Path> compared = new ArrayList<>();
+        SceneDrop comparing = new SceneDrop(opened::add, compared::add, told::add);
+        assertTrue(comparing.importData(support(files("notes.txt", "Mine.PNG"))));
+        assertEquals(List.of(Path.of("Mine.PNG")), compared);
+        assertFalse(comparing.importData(support(files("notes.txt"))));
+        assertEquals(List.of("Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page."), told);
+        assertFalse(drop.importData(support(files("mine.png"))), "a window that does not compare refuses pictures");
+    }
+
+    @Test
+    void refusesWhatIsNotAFileList() {
+        assertFalse(drop.canImport(support(new StringSelection("house.simp"))));
+        assertFalse(drop.importData(support(new StringSelection("house.simp"))));
+        assertEquals(List.of(), opened);
+    }
+
+    private static TransferSupport support(Transferable data) {
+        return new TransferSupport(new JPanel(), data);
+    }
+
+    private static Transferable files(String... names) {
+        List<File> files = new ArrayList<>();
+        for (String name : names) {
+            files.add(new File(name));
+        }
+        return new Transferable() {
+            @Override
+            public DataFlavor[] getTransferDataFlavors() {
+                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
+            }
+
+            @Override
+            public boolean isDataFlavorSupported(DataFlavor flavor) {
+                return DataFlavor.javaFileListFlavor.equals(flavor);
+            }
+
+            @Override
+            public Object getTransferData(DataFlavor flavor) {
+                return files;
+            }
+        };
+    }
+}

@@ -1,0 +1,73 @@
+package simpview.window;
+
+import simpview.scene.simp.SceneDrawer;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import simpview.scene.simp.SceneCancelledException;
+
+/**
+ * Stand-ins for the SIMP interpreter, so the window's own machinery
+ * (render thread, progress, cancel) can be tested whatever state the
+ * interpreter is in. They read the file but understand none of it.
+ */
+public final class StandInDrawers {
+
+    static final int REPORT_EVERY = 1000;
+
+    private StandInDrawers() {
+    }
+
+    /** Reads every line, paints one pixel per line, and takes about 2 ms per 1000 lines. */
+    static final SceneDrawer SLOW_READER = (file, panel, monitor) -> {
+        long lines = 0;
+        try (BufferedReader in = Files.newBufferedReader(file)) {
+            while (in.readLine() != null) {
+                lines++;
+                panel.setPixel((int) (lines % panel.width()), (int) (lines / panel.width() % panel.height()), -100, 0xFFFFFFFF);
+                if (lines % REPORT_EVERY == 0) {
+                    monitor.linesRead(lines);
+                    if (monitor.cancelled()) {
+                        throw new SceneCancelledException();
+                    }
+                    pause();
+                }
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        monitor.linesRead(lines);
+    };
+
+    /** Reports progress every few milliseconds and never finishes: only a cancel ends it. */
+    static final SceneDrawer UNTIL_CANCELLED = (file, panel, monitor) -> {
+        for (long lines = REPORT_EVERY; !monitor.cancelled(); lines += REPORT_EVERY) {
+            monitor.linesRead(lines);
+            pause();
+        }
+        throw new SceneCancelledException();
+    };
+
+    /** Draws a white diagonal at the near plane, whatever the file says. */
+    static final SceneDrawer DIAGONAL = (file, panel, monitor) -> {
+        for (int i = 0; i < panel.width(); i++) {
+            panel.setPixel(i, i, 0, 0xFFFFFFFF);
+        }
+    };
+
+    static Path sceneFile(Path dir, String name) throws IOException {
+        return Files.writeString(dir.resolve(name), "line (-100, -100, 0) (100, 100, 0)\n");
+    }
+
+    private static void pause() {
+        try {
+            Thread.sleep(2);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SceneCancelledException();
+        }
+    }
+}

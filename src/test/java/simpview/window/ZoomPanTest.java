@@ -1,0 +1,125 @@
+package simpview.window;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Dimension;
+import java.awt.Rectangle;
+import org.junit.jupiter.api.Test;
+
+public class ZoomPanTest {
+
+    private static ZoomPan in(int width, int height) {
+        ZoomPan zoomPan = new ZoomPan(750);
+        zoomPan.resize(width, height);
+        return zoomPan;
+    }
+
+    @Test
+    void fitIsOneToOneWhenTheWholePageFitsAndCentresIt() {
+        ZoomPan zoomPan = in(800, 760);
+        assertEquals(1.0, zoomPan.zoom());
+        assertEquals(25.0, zoomPan.originX());
+        assertEquals(5.0, zoomPan.originY());
+        assertEquals("1:1", zoomPan.describe());
+    }
+
+    @Test
+    void fitIsTheLargestIntegerZoomThatFits() {
+        assertEquals(2.0, in(1600, 1520).zoom());
+        assertEquals(1.0, in(1600, 1499).zoom());
+    }
+
+    @Test
+    void aViewportSmallerThanThePageScalesItDownAndSaysSo() {
+        ZoomPan zoomPan = in(1366, 700);
+        assertFalse(zoomPan.isIntegerZoom());
+        assertEquals(700 / 750.0, zoomPan.zoom(), 1e-12);
+        assertTrue(zoomPan.shownSize() <= 700);
+        assertTrue(zoomPan.describe().startsWith("scaled to fit"), zoomPan.describe());
+    }
+
+    @Test
+    void theWheelZoomsAboutThePointerUpTo32x() {
+        ZoomPan zoomPan = in(750, 750);
+        int imageX = zoomPan.imageX(300);
+        int imageY = zoomPan.imageY(200);
+        for (int i = 0; i < 20; i++) {
+            zoomPan.wheel(300.5, 200.5, -1);
+            assertEquals(imageX, zoomPan.imageX(300.5), "the pixel under the pointer stays under it");
+            assertEquals(imageY, zoomPan.imageY(200.5));
+            assertTrue(zoomPan.isIntegerZoom());
+        }
+        assertEquals(ZoomPan.MAX_ZOOM, zoomPan.zoom());
+        for (int i = 0; i < 20; i++) {
+            zoomPan.wheel(300.5, 200.5, 1);
+        }
+        assertEquals(1.0, zoomPan.zoom(), "never below the fit");
+    }
+
+    @Test
+    void atAnIntegerZoomEveryImagePixelIsAWholeSquareOfScreenPixels() {
+        ZoomPan zoomPan = in(750, 750);
+        zoomPan.zoomAbout(333.3, 111.7, 8);
+        int x = 500;
+        int first = zoomPan.imageX(x);
+        int start = (int) zoomPan.screenX(first);
+        assertEquals(zoomPan.screenX(first), start, "pixel edges on whole screen pixels");
+        for (int k = 0; k < 8; k++) {
+            assertEquals(first, zoomPan.imageX(start + k + 0.5));
+        }
+        assertEquals(first + 1, zoomPan.imageX(start + 8.5));
+    }
+
+    @Test
+    void panMovesTheImageKeepsSomeOfItInViewAndFitComesBack() {
+        ZoomPan zoomPan = in(750, 750);
+        zoomPan.zoomAbout(375, 375, 4);
+        double x = zoomPan.originX();
+        zoomPan.pan(40, -10);
+        assertEquals(x + 40, zoomPan.originX());
+        assertFalse(zoomPan.fitting());
+        zoomPan.pan(1e6, 1e6);
+        assertTrue(zoomPan.originX() < 750 && zoomPan.originY() < 750, "some of the image stays in view");
+        zoomPan.fit();
+        assertEquals(1.0, zoomPan.zoom());
+        assertEquals(0.0, zoomPan.originX());
+    }
+
+    @Test
+    void actualSizeIsOneToOneAboutTheMiddle() {
+        ZoomPan zoomPan = in(700, 700);
+        zoomPan.actualSize();
+        assertEquals(1.0, zoomPan.zoom());
+        assertEquals("1:1", zoomPan.describe());
+    }
+
+    @Test
+    void aResizeInFitModeRefits() {
+        ZoomPan zoomPan = in(750, 750);
+        zoomPan.resize(500, 600);
+        assertEquals(500 / 750.0, zoomPan.zoom(), 1e-12);
+        assertTrue(zoomPan.originX() >= 0 && zoomPan.originY() >= 0 && zoomPan.originY() + zoomPan.shownSize() <= 600);
+    }
+
+    @Test
+    void pointsOffTheImageAreMinusOne() {
+        ZoomPan zoomPan = in(800, 800);
+        assertEquals(-1, zoomPan.imageX(10));
+        assertEquals(-1, zoomPan.imageY(790));
+        assertEquals(0, zoomPan.imageX(25));
+    }
+
+    @Test
+    void theWindowOpensWithinALaptopScreenWithATaskbar() {
+        // 1366x768 with a 40-pixel taskbar at the bottom; the frame would like 766x846.
+        Rectangle usable = new Rectangle(0, 0, 1366, 728);
+        Rectangle bounds = WindowPlacement.within(new Dimension(766, 846), usable);
+        assertTrue(usable.contains(bounds), bounds.toString());
+        assertEquals(728, bounds.height);
+        assertEquals(766, bounds.width);
+        Rectangle roomy = WindowPlacement.within(new Dimension(766, 846), new Rectangle(100, 50, 1920, 1050));
+        assertEquals(new Rectangle(100 + (1920 - 766) / 2, 50 + (1050 - 846) / 2, 766, 846), roomy);
+    }
+}
