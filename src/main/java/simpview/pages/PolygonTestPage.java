@@ -7,8 +7,8 @@ import simpview.surface.PageCanvas;
 
 /**
  * The first assignment's pages 4 and 5 (SPEC Part 3): the four scenes of
- * {@link A1Polygons}, filled by Part 1's rule (sampled at integer coordinates:
- * {@link A1Polygons#SAMPLE_SHIFT}), each triangle its random
+ * {@link A1Polygons}, filled by Part 1's rule (rows sampled at integer y:
+ * {@link A1Polygons#ROW_SHIFT}), each triangle its random
  * colour (page 4), or every triangle white at opacity 0.14 through a
  * {@link GhostWritingDrawable} (page 5, the same geometry and seed).
  */
