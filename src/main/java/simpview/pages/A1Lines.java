@@ -15,6 +15,13 @@ public final class A1Lines {
     public static final double CENTRE = 150;
     public static final double RADIUS = 135;
     public static final int SPOKES = 90;
+    /**
+     * The angle between spokes, 4 degrees in radians, added up spoke after
+     * spoke as the course's program does: the sum puts the 120-degree
+     * spoke's end at x = 82.49999999999987, which rounds to 82 as in the
+     * course's picture, where 4 i degrees computed afresh gives 82.50000000000003 and 83.
+     */
+    public static final double STEP = 2 * Math.PI / SPOKES;
     /** The parallelogram's offsets p = 0..50. */
     public static final int OFFSETS = 51;
     /** The random test's count and range (0..299). */
@@ -57,8 +64,8 @@ public final class A1Lines {
     /** Page 1: 90 white lines from the centre, 135 long, at 0, 4, ..., 356 degrees. */
     public static A1Lines starburst() {
         double[] n = new double[SPOKES * 2 * Vertex.NUMBERS];
-        for (int i = 0; i < SPOKES; i++) {
-            double angle = Math.toRadians(i * 360.0 / SPOKES);
+        double angle = 0;
+        for (int i = 0; i < SPOKES; i++, angle += STEP) {
             put(n, i, CENTRE, CENTRE, CENTRE + RADIUS * Math.cos(angle), CENTRE + RADIUS * Math.sin(angle), 1, 1, 1);
         }
         return new A1Lines(n);

@@ -77,15 +77,45 @@ final class A1Panels {
         return agreeing / (double) ours.length;
     }
 
+    /**
+     * simpview's page | the course's page | a heat map of the four panels:
+     * grey where identical (dark where both are black), blue within 8/255,
+     * red beyond. Only for the docs: these are not page pixels.
+     */
+    static BufferedImage beside(BufferedImage ours, BufferedImage capture) {
+        int size = PageCanvas.SIZE;
+        BufferedImage out = new BufferedImage(3 * size, size, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < size; y++) {
+            for (int x = 0; x < size; x++) {
+                int a = ours.getRGB(x, y) & 0xFFFFFF;
+                int b = capture.getRGB(CAPTURE_LEFT + x, CAPTURE_TOP + y) & 0xFFFFFF;
+                out.setRGB(x, y, a);
+                out.setRGB(size + x, y, b);
+                int heat;
+                if (A1Layout.panelAt(x, y) == 0) {
+                    heat = 0xFFFFFF;
+                } else if (a == b) {
+                    heat = a == 0 ? 0x202020 : 0x808080;
+                } else if (PanelAgreement.close(a, b, 8)) {
+                    heat = 0x3050FF;
+                } else {
+                    heat = 0xFF2020;
+                }
+                out.setRGB(2 * size + x, y, heat);
+            }
+        }
+        return out;
+    }
+
     /** Prints every page's panel shares: identical, within 8/255, same geometry; with a folder, writes the pages there. */
     public static void main(String[] args) throws IOException {
         Path shared = Path.of(args.length > 0 ? args[0] : "../shared");
         for (int page = 1; page <= Assignment1.COUNT; page++) {
             BufferedImage ours = ourPage(page);
-            if (args.length > 1) {
-                ImageIO.write(ours, "png", Path.of(args[1], "a1-page" + page + ".png").toFile());
-            }
             BufferedImage theirs = coursePicture(shared, page);
+            if (args.length > 1) {
+                ImageIO.write(beside(ours, theirs), "png", Path.of(args[1], "a1-page" + page + ".png").toFile());
+            }
             StringBuilder line = new StringBuilder("page " + page + ":");
             for (int k = 1; k <= 4; k++) {
                 int[] a = ourPanel(ours, k);
