@@ -54,7 +54,10 @@ class AntialiasedLineRendererTest {
     /**
      * Across a line, perpendicular to it, the coverages add up to its width (1)
      * over the spacing of the pixels crossed: a column of a line at angle a to
-     * its major axis sums to about 1 / cos a.
+     * its major axis sums to about 1 / cos a: within 4 % on the mean of its
+     * columns (one column alone is off by up to 6 %, by where its pixel
+     * centres fall; at 45 degrees every column samples the same places and
+     * sums to 0.818 + 2 x 0.316 = 1.451 against sqrt 2).
      */
     @Property(tries = 60)
     void aCrossSectionSumsToAboutTheWidth(@ForAll @DoubleRange(min = 0, max = 45) double degrees) {
@@ -68,12 +71,15 @@ class AntialiasedLineRendererTest {
         AntialiasedLineRenderer aa = new AntialiasedLineRenderer();
         ImageDrawable image = new ImageDrawable(new BufferedImage(300, 300, BufferedImage.TYPE_INT_RGB));
         aa.drawLine(Vertex.of(x0, y0, 0).withColor(1, 1, 1), Vertex.of(x1, y1, 0).withColor(1, 1, 1), image);
-        int column = (int) ((x0 + x1) / 2);
-        for (int y = 0; y < 300; y++) {
-            sum[0] += Colors.red(image.getPixel(column, 299 - y)) / 255.0;
+        // Each column samples the profile at its own phase; over many columns the mean is the integral.
+        int columns = 0;
+        for (int column = (int) x0 + 20; column <= (int) x1 - 20; column++, columns++) {
+            for (int y = 0; y < 300; y++) {
+                sum[0] += Colors.red(image.getPixel(column, y)) / 255.0;
+            }
         }
         double expected = 1 / Math.cos(angle);
-        assertEquals(expected, sum[0], 0.05 * expected, degrees + " degrees");
+        assertEquals(expected, sum[0] / columns, 0.04 * expected, degrees + " degrees");
     }
 
     @Test

@@ -26,7 +26,7 @@ class BresenhamLineRendererTest {
         "3,-7,false", "7,-3,false", "7,3,true", "3,7,true", "-3,7,true", "-7,3,true", "-7,-3,true",
         "-3,-7,true", "3,-7,true", "7,-3,true"})
     void everyOctantFromEitherEndHitsTheExactPixels(int dx, int dy, boolean reversed) {
-        List<String> expected = LineExpectations.pixels(100, 100, 100 + dx, 100 + dy, Tie.TOWARD_START);
+        List<String> expected = LineExpectations.pixels(100, 100, 100 + dx, 100 + dy, Tie.AWAY_FROM_START);
         List<String> drawn = reversed
                 ? LineExpectations.drawn(bresenham, 100 + dx, 100 + dy, 100, 100, 200)
                 : LineExpectations.drawn(bresenham, 100, 100, 100 + dx, 100 + dy, 200);
@@ -60,28 +60,28 @@ class BresenhamLineRendererTest {
     }
 
     /**
-     * The tie rule: at an exact tie Bresenham keeps the start's minor
-     * coordinate. On a 2:1 line rising from (0, 0) the middle step is a tie:
-     * Bresenham stays at row 0 where the DDA (half up) goes to row 1. On the
-     * falling 2:-1 line both stay, so there they agree.
+     * The tie rule: at an exact tie Bresenham steps the minor coordinate
+     * (away from the start's side). On a 2:1 line rising from (0, 0) the middle
+     * step is a tie: both go to row 1 (the DDA by rounding half up). On the
+     * falling 2:-1 line from (0, 5) Bresenham steps down to row 4 where the
+     * DDA's 4.5 rounds up to 5.
      */
     @Test
-    void atATieBresenhamKeepsTheStartsSideAndDiffersFromTheDdaOnlyOnRisingLines() {
-        assertEquals(List.of("0,0", "1,0", "2,1"), LineExpectations.drawn(bresenham, 0, 0, 2, 1, 10));
-        assertEquals(List.of("0,0", "1,1", "2,1"), LineExpectations.drawn(dda, 0, 0, 2, 1, 10));
-        assertEquals(List.of("0,5", "1,5", "2,4"), LineExpectations.drawn(bresenham, 0, 5, 2, 4, 10));
-        assertEquals(LineExpectations.drawn(dda, 0, 5, 2, 4, 10), LineExpectations.drawn(bresenham, 0, 5, 2, 4, 10));
+    void atATieBresenhamStepsAndDiffersFromTheDdaOnFallingLines() {
+        assertEquals(List.of("0,0", "1,1", "2,1"), LineExpectations.drawn(bresenham, 0, 0, 2, 1, 10));
+        assertEquals(LineExpectations.drawn(dda, 0, 0, 2, 1, 10), LineExpectations.drawn(bresenham, 0, 0, 2, 1, 10));
+        assertEquals(List.of("0,5", "1,4", "2,4"), LineExpectations.drawn(bresenham, 0, 5, 2, 4, 10));
+        assertEquals(List.of("0,5", "1,5", "2,4"), LineExpectations.drawn(dda, 0, 5, 2, 4, 10));
         // y-major: the same, x rising or falling from the smaller-y end.
-        assertEquals(List.of("0,0", "0,1", "1,2"), LineExpectations.drawn(bresenham, 0, 0, 1, 2, 10));
-        assertEquals(List.of("5,0", "5,1", "4,2"), LineExpectations.drawn(bresenham, 5, 0, 4, 2, 10));
+        assertEquals(List.of("0,0", "1,1", "1,2"), LineExpectations.drawn(bresenham, 0, 0, 1, 2, 10));
+        assertEquals(List.of("5,0", "4,1", "4,2"), LineExpectations.drawn(bresenham, 5, 0, 4, 2, 10));
     }
 
     /**
      * Where the rule says the two must agree: every line without an exact tie.
-     * Where they may differ: at ties, where Bresenham keeps the start's side
-     * (exactly) and the DDA's added-up minor coordinate lands on the half or
-     * a last bit either side of it (a falling 103:142 line's sum at its tie
-     * is just below 162.5, so the DDA goes to 162 and Bresenham stays at 163).
+     * Where they may differ: at ties, where Bresenham steps (exactly) and
+     * the DDA's added-up minor coordinate lands on the half or a last bit
+     * either side of it, then rounded half up.
      */
     @Test
     void theDdaAndBresenhamAgreeExceptAtTies() {
@@ -98,7 +98,7 @@ class BresenhamLineRendererTest {
             if (!LineExpectations.hasTie(x0, y0, x1, y1)) {
                 assertEquals(a, b, line);
             } else {
-                assertEquals(LineExpectations.pixels(x0, y0, x1, y1, Tie.TOWARD_START), b, line);
+                assertEquals(LineExpectations.pixels(x0, y0, x1, y1, Tie.AWAY_FROM_START), b, line);
                 differing += a.equals(b) ? 0 : 1;
             }
         }
@@ -145,4 +145,5 @@ class BresenhamLineRendererTest {
         }).toList();
         assertEquals(moved, window.writes().stream().map(w -> w.x() + "," + w.y()).toList());
     }
+
 }

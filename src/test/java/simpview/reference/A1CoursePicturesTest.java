@@ -82,6 +82,63 @@ class A1CoursePicturesTest {
         }
     }
 
+    /**
+     * The tie rule, as far as the course's page 1 panel 2 shows one: at every
+     * step of a spoke where the line through its rounded ends passes exactly
+     * half-way between two pixels, which of the two the picture lit. The
+     * picture steps (away from the start's side) at 30 of the 60 where it
+     * lit one of the two, and keeps at the other 30: no rule of an integer
+     * Bresenham. simpview steps (so it agrees with the DDA on rising lines).
+     */
+    @Test
+    void theCoursesBresenhamTiesSplitEvenlyAndSimpviewSteps() throws IOException {
+        CourseFiles.require("reference/images/a1");
+        int[] theirs = theirs(1, 2);
+        int[] ours = ours(1, 2);
+        simpview.pages.A1Lines spokes = simpview.pages.A1Lines.starburst();
+        int stepped = 0;
+        int kept = 0;
+        int oursStepped = 0;
+        for (int i = 0; i < spokes.count(); i++) {
+            long x0 = (long) Math.floor(spokes.start(i).x() + 0.5);
+            long y0 = (long) Math.floor(spokes.start(i).y() + 0.5);
+            long x1 = (long) Math.floor(spokes.end(i).x() + 0.5);
+            long y1 = (long) Math.floor(spokes.end(i).y() + 0.5);
+            boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
+            boolean swap = xMajor ? x1 < x0 : y1 < y0;
+            long ax = swap ? x1 : x0;
+            long ay = swap ? y1 : y0;
+            long steps = Math.abs(xMajor ? x1 - x0 : y1 - y0);
+            long rise = xMajor ? (swap ? y0 - y1 : y1 - y0) : (swap ? x0 - x1 : x1 - x0);
+            long direction = rise >= 0 ? 1 : -1;
+            for (long k = 1; k < steps; k++) {
+                if (Math.floorMod(2 * k * Math.abs(rise), 2 * steps) != steps) {
+                    continue;
+                }
+                long keep = (2 * k * Math.abs(rise) - steps) / (2 * steps);
+                int keepAt = at(xMajor, ax, ay, k, direction * keep);
+                int stepAt = at(xMajor, ax, ay, k, direction * (keep + 1));
+                boolean keepLit = theirs[keepAt] != 0;
+                boolean stepLit = theirs[stepAt] != 0;
+                if (keepLit != stepLit) {
+                    stepped += stepLit ? 1 : 0;
+                    kept += keepLit ? 1 : 0;
+                    oursStepped += ours[stepAt] != 0 && ours[keepAt] == 0 ? 1 : 0;
+                }
+            }
+        }
+        assertEquals(30, stepped, "ties where the course's picture stepped (kept: " + kept + ")");
+        assertEquals(30, kept, "ties where it kept the start's side");
+        assertEquals(stepped + kept, oursStepped, "simpview steps at every one");
+    }
+
+    /** Where panel pixel (major k from the start, minor offset) is in a panel packed row 0 at the top. */
+    private static int at(boolean xMajor, long ax, long ay, long k, long offset) {
+        long x = xMajor ? ax + k : ax + offset;
+        long y = xMajor ? ay + offset : ay + k;
+        return (int) ((A1Panels.N - 1 - y) * A1Panels.N + x);
+    }
+
     /** A negative control: the starburst's DDA panel against the parallelogram's does not agree. */
     @Test
     void anotherPagesPanelDoesNotAgree() throws IOException {
