@@ -109,11 +109,13 @@ public final class AntialiasedLineRenderer implements LineRenderer {
         double qg = v[to + G];
         double qb = v[to + B];
         double qz = v[to + Z];
+        // A pixel at minor offset o from the line's minor coordinate at its
+        // major one is o |u_major| from the line: only |o| < REACH / |u_major| can be touched.
+        double minorReach = REACH / Math.abs(xMajor ? ux : uy);
         for (double m = lo; m <= hi; m++) {
-            double along = Math.min(Math.max(m, major0), major1);
-            double centre = minorA + (along - majorA) * slope;
-            double first = Math.max(Math.floor(centre) - 2, 0);
-            double last = Math.min(Math.floor(centre) + 3, minorLimit - 1);
+            double centre = minorA + (m - majorA) * slope;
+            double first = Math.max(Math.ceil(centre - minorReach), 0);
+            double last = Math.min(Math.floor(centre + minorReach), minorLimit - 1);
             for (double n = first; n <= last; n++) {
                 double px = xMajor ? m : n;
                 double py = xMajor ? n : m;
