@@ -22,7 +22,7 @@ import simpview.pages.Pages;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DepthCueDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
@@ -107,7 +107,7 @@ public class ChainStages {
                 renderer.drawPolygon(p, at, chain);
             }
         } else {
-            SceneRenderer.draw(file, chain, SceneMonitor.NONE);
+            ScenePipeline.drawDepthCued(file, chain, SceneMonitor.NONE);
         }
         return chain;
     }

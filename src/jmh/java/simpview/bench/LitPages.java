@@ -18,7 +18,7 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 
 /**
@@ -65,7 +65,7 @@ public class LitPages {
     @Benchmark
     public PageCanvas clearAndDraw() throws SceneException {
         canvas.clear();
-        SceneRenderer.drawLit(file, canvas, SceneMonitor.NONE, models);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
         return canvas;
     }
 }

@@ -25,7 +25,7 @@ import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 
@@ -137,7 +137,7 @@ public class OrbitFrame {
             renderer.render(7, context);
         } else {
             canvas.clear();
-            SceneRenderer.drawLit(litFile, canvas, monitor, models);
+            ScenePipeline.draw(litFile, canvas, ScenePipeline.Options.lit(models), monitor);
         }
         if (!copy) {
             return null;

@@ -22,7 +22,7 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -70,7 +70,7 @@ public class SimpEndToEnd {
     @OperationsPerInvocation(LINES)
     public PageCanvas readInterpretDraw() throws SceneException {
         canvas.clear();
-        SceneRenderer.draw(file, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
+        ScenePipeline.drawDepthCued(file, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
         return canvas;
     }
 

@@ -1,7 +1,6 @@
 package simpview.cli;
 
 import simpview.compare.PngFiles;
-import simpview.scene.simp.SceneSheet;
 
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -122,8 +121,6 @@ public final class CompareCommand implements Callable<Integer> {
         }
         usage(page == null || page >= 1 && page <= Pages.COUNT, "--page must be 1 to " + Pages.COUNT + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
-        String cue = scene == null ? null : SceneSheet.cueColoursProblem(scene, near, far);
-        usage(cue == null, cue);
         usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }
 
@@ -137,8 +134,8 @@ public final class CompareCommand implements Callable<Integer> {
         Picture theirs;
         Picture ours;
         try {
+            ours = own.of(target); // first: a usage problem it finds (cue colours for a lit scene) comes first
             theirs = Picture.read(image);
-            ours = own.of(target);
         } catch (CompareException | SceneException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;

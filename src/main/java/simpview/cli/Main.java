@@ -104,10 +104,14 @@ public final class Main {
     }
 
     /**
-     * User errors are caught where they happen and reported in one message;
-     * anything reaching here is a bug, so the trace is worth showing.
+     * User errors are caught where they happen and reported in one message
+     * (a {@link UsageProblem} as a usage error); anything else reaching here
+     * is a bug, so the trace is worth showing.
      */
     private static int reportUnexpected(Exception e, CommandLine commandLine, CommandLine.ParseResult parsed) {
+        if (e instanceof UsageProblem problem) {
+            return reportUsageError(new CommandLine.ParameterException(commandLine, problem.getMessage()), null);
+        }
         PrintWriter err = commandLine.getErr();
         err.println("simpview: internal error: " + e);
         e.printStackTrace(err);

@@ -6,6 +6,7 @@ import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -32,8 +33,16 @@ public final class OwnPictures {
     Picture of(CompareTarget target) throws SceneException {
         Picture picture = drawn.get(target);
         if (picture == null) {
-            PageCanvas canvas = target.isPage() ? drawing.page(target.page(), context)
-                    : drawing.scene(target.scene(), near, far);
+            PageCanvas canvas;
+            if (target.isPage()) {
+                canvas = drawing.page(target.page(), context);
+            } else {
+                ScenePipeline.Drawn scene = drawing.scene(target.scene(), near, far, false);
+                if (!scene.drawn()) {
+                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene));
+                }
+                canvas = drawing.canvas();
+            }
             picture = Picture.ofPage(canvas.image(), "simpview's " + target.describe(context));
             drawn.put(target, picture);
         }

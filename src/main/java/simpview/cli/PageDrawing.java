@@ -1,7 +1,7 @@
 package simpview.cli;
 
-import simpview.scene.simp.SceneDrawer;
-import simpview.scene.simp.SceneSheet;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.obj.ObjLibrary;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -21,6 +21,8 @@ public final class PageDrawing {
 
     private final PageRenderer renderer = new PageRenderer();
     private final SceneMonitor monitor;
+    /** The models of this run's lit scenes: each .obj file read once however many scenes draw it. */
+    private final ObjLibrary models = new ObjLibrary();
 
     PageDrawing(SceneMonitor monitor) {
         this.monitor = monitor;
@@ -31,16 +33,33 @@ public final class PageDrawing {
         return renderer.render(number, context.withMonitor(monitor));
     }
 
-    /** A scene as a whole page, depth-cued from near (default white) to far (default black). */
-    PageCanvas scene(Path file, Rgb near, Rgb far) throws SceneException {
-        return scene(file, near, far, false);
+    /**
+     * A scene as a whole page: lit by its own rules, or depth-cued from near
+     * (default white) to far (default black), or with {@code ownColours} in
+     * the vertices' own colours without the cue. Given depth-cue colours, a
+     * lit scene is not drawn ({@link ScenePipeline.Drawn#drawn} false: see
+     * {@link #cueColoursProblem}). The picture is on {@link #canvas()}.
+     */
+    ScenePipeline.Drawn scene(Path file, Rgb near, Rgb far, boolean ownColours) throws SceneException {
+        boolean cueGiven = near != null || far != null;
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models)
+                .withCue(near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far)
+                .withOwnColours(ownColours)
+                .withRules(cueGiven ? ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING : ScenePipeline.Rules.BY_COMMANDS);
+        PageCanvas canvas = renderer.canvas();
+        canvas.clear();
+        return ScenePipeline.draw(file, canvas, options, monitor);
     }
 
-    /** The same, or with {@code ownColours} in the vertices' own colours without the depth cue. */
-    PageCanvas scene(Path file, Rgb near, Rgb far, boolean ownColours) throws SceneException {
-        SceneSheet sheet = new SceneSheet(file, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
-        sheet.drawOn(renderer.canvas(), monitor, SceneDrawer.SIMP, ownColours);
+    /** The canvas the last page or scene was drawn on (overwritten by the next). */
+    PageCanvas canvas() {
         return renderer.canvas();
+    }
+
+    /** Why {@code file}, which drew nothing, could not take the depth-cue colours given: it is lit. */
+    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn) {
+        return "--near-color and --far-color are for depth-cued scenes, and " + file.getFileName()
+                + " is lit (" + drawn.litBecause() + ")";
     }
 
     /** The pages' context from the command line's options (null where not given), warnings to {@code monitor}. */

@@ -1,7 +1,7 @@
 package simpview.cli;
 
 import simpview.compare.PngFiles;
-import simpview.scene.simp.SceneSheet;
+import simpview.scene.simp.ScenePipeline;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -143,8 +143,6 @@ public final class RenderCommand implements Callable<Integer> {
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
-        String cue = pages ? null : SceneSheet.cueColoursProblem(what.scene, near, far);
-        usage(cue == null, cue);
         usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
         usage(scenes.isEmpty() || seed == null && simpDir == null,
                 "--seed and --simp-dir go with the pages, not with a sheet of scenes");
@@ -164,14 +162,17 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             usage(false, e.getMessage());
         }
-        for (Path scene : sceneList) {
-            String cue = SceneSheet.cueColoursProblem(scene, near, far);
-            usage(cue == null, cue);
-        }
     }
 
     /** The scenes of --scenes, once checked. */
     private List<Path> sceneList;
+
+    /** Depth-cue colours given, and the scene's first lit command showed it is lit: a usage error (exit 2). */
+    private static void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
+        if (!drawn.drawn()) {
+            throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn));
+        }
+    }
 
     private void usage(boolean fine, String message) {
         if (!fine) {
@@ -230,7 +231,9 @@ public final class RenderCommand implements Callable<Integer> {
         for (Path scene : sceneList) {
             BufferedImage image;
             try {
-                image = drawing.scene(scene, near, far).image();
+                ScenePipeline.Drawn drawn = drawing.scene(scene, near, far, false);
+                refuseIfLit(scene, drawn);
+                image = drawing.canvas().image();
             } catch (SceneException e) {
                 err().println(scene.getFileName() + " not written: " + e.getMessage());
                 code = ExitCode.SCENE_ERROR;
@@ -245,7 +248,10 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderScene() {
         try {
-            return write(new PageDrawing(monitor()).scene(what.scene, near, far, ownColours).image(), out);
+            PageDrawing drawing = new PageDrawing(monitor());
+            ScenePipeline.Drawn drawn = drawing.scene(what.scene, near, far, ownColours);
+            refuseIfLit(what.scene, drawn);
+            return write(drawing.canvas().image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -278,8 +284,8 @@ public final class RenderCommand implements Callable<Integer> {
         PageDrawing drawing = new PageDrawing(monitor());
         for (Path scene : scenes) {
             try {
-                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()),
-                        drawing.scene(scene, null, null).snapshot()));
+                drawing.scene(scene, null, null, false);
+                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()), drawing.canvas().snapshot()));
             } catch (SceneException e) {
                 err().println(scene + " left out: " + e.getMessage());
             }

@@ -3,8 +3,8 @@ package simpview.pages;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.scene.SceneException;
-import simpview.scene.simp.SceneRenderer;
-import simpview.surface.Drawable;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -56,7 +56,7 @@ public final class ScenePage implements Page {
                     + dir.toAbsolutePath().normalize()
                     + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
-        Drawable target = context.ownColours() ? canvas.depthTested() : canvas.depthCued(near, Rgb.BLACK);
-        SceneRenderer.draw(file, target, context.monitor());
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.depthCued(near, new ObjLibrary())
+                .withOwnColours(context.ownColours()), context.monitor());
     }
 }

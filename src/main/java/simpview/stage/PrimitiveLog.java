@@ -58,6 +58,12 @@ public final class PrimitiveLog implements PrimitiveTrace {
         size++;
     }
 
+    @Override
+    public void restart() {
+        size = 0;
+        files.clear();
+    }
+
     /** The number of {@code file} among the files met so far (most primitives come from the last one met). */
     private int fileNumber(Path file) {
         int last = files.size() - 1;

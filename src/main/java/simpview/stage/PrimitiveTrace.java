@@ -30,4 +30,12 @@ public interface PrimitiveTrace {
 
     /** Primitive {@code index} is about to be drawn; false leaves it out (the picture stops before it). */
     boolean drawing(int index);
+
+    /**
+     * The scene is drawn again from the start (it turned out lit after it
+     * had drawn depth-cued): forget every primitive told so far; numbering
+     * starts at 0 again.
+     */
+    default void restart() {
+    }
 }

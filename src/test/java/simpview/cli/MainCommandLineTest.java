@@ -1,8 +1,8 @@
 package simpview.cli;
 
+import simpview.testing.DrawnScenes;
 import simpview.testing.Images;
 import simpview.scene.simp.SceneDrawer;
-import simpview.scene.simp.SceneSheet;
 import simpview.window.TestScenes;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -250,7 +250,7 @@ public class MainCommandLineTest {
         int cell = ContactSheet.TILE + ContactSheet.GAP;
         for (int k = 0; k < 2; k++) {
             PageCanvas canvas = new PageCanvas();
-            SceneSheet.of(k == 0 ? lit : cued).drawOn(canvas, SceneMonitor.NONE, SceneDrawer.SIMP);
+            DrawnScenes.draw(k == 0 ? lit : cued, canvas);
             BufferedImage tile = sheet.getSubimage(ContactSheet.GAP + k * cell, ContactSheet.GAP, ContactSheet.TILE,
                     ContactSheet.TILE);
             assertEquals(0, Images.differingPixels(ContactSheet.halved(canvas.image()), tile), "tile " + k);

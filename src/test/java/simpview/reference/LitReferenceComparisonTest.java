@@ -1,5 +1,6 @@
 package simpview.reference;
 
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,8 +11,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.scene.simp.SceneRules;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -33,11 +33,7 @@ class LitReferenceComparisonTest {
     /** simpview's picture of a scene, as a 750x750 page, by the rules the scene calls for. */
     static BufferedImage simpviewRender(Path scene) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        if (SceneRules.of(scene).lit()) {
-            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
-        } else {
-            SceneRenderer.draw(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
-        }
+        DrawnScenes.draw(scene, canvas);
         return canvas.image();
     }
 

@@ -17,7 +17,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.Pages;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 import simpview.testing.CourseFiles;
@@ -83,7 +83,7 @@ class ReferenceComparisonTest {
 
     private static void compare(Path scene, Rgb near, Rgb referenceNear) throws IOException, SceneException {
         PageCanvas canvas = new PageCanvas();
-        SceneRenderer.draw(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE);
+        ScenePipeline.drawDepthCued(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE);
         ReferenceRenderer reference = new ReferenceRenderer(
                 new double[] {referenceNear.r(), referenceNear.g(), referenceNear.b()}, new double[] {0, 0, 0});
         reference.render(scene);

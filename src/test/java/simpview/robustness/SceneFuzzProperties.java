@@ -37,7 +37,7 @@ import simpview.scene.SceneException;
  * Scene fuzzing: random token streams, mutated real scenes, webs of `file`
  * commands with cycles and missing files, well-formed scenes that must render,
  * and well-formed scenes with one bad line that must be reported at that line.
- * Whatever the input, SceneRenderer.draw returns or throws a SceneException
+ * Whatever the input, ScenePipeline.drawDepthCued returns or throws a SceneException
  * with a sound location, within 2 seconds, without touching the margins.
  */
 class SceneFuzzProperties {

@@ -16,14 +16,14 @@ import net.jqwik.api.lifecycle.LifecycleContext;
 import net.jqwik.api.lifecycle.SkipExecutionHook;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
 /**
  * Runs SIMP scenes the way a page does (a 750x750 canvas, scissor, z-buffer
  * and depth cue) under a 2-second watchdog, and judges how they end: either
- * {@link SceneRenderer#draw} returns, or it throws a {@link SceneException}
+ * {@link ScenePipeline#drawDepthCued} returns, or it throws a {@link SceneException}
  * that says where the problem is. Anything else fails.
  */
 final class SceneHarness {
@@ -43,7 +43,7 @@ final class SceneHarness {
                 }
             };
             try {
-                SceneRenderer.draw(top, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), monitor);
+                ScenePipeline.drawDepthCued(top, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), monitor);
                 return null;
             } catch (SceneException e) {
                 return e;

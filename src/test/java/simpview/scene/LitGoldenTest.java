@@ -1,5 +1,6 @@
 package simpview.scene;
 
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -7,7 +8,6 @@ import java.awt.image.BufferedImage;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import simpview.scene.simp.SceneRules;
 import simpview.testing.CourseFiles;
 import simpview.testing.Goldens;
 import simpview.testing.LitGoldens;
@@ -22,7 +22,7 @@ class LitGoldenTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("own")
     void theProjectsOwnLitScenesMatchTheirGoldens(LitGoldens.Case c) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render());
     }
 
@@ -39,14 +39,14 @@ class LitGoldenTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("a3")
     void theThirdAssignmentsPagesMatchTheirGoldens(LitGoldens.Case c) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render());
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("a4")
     void theFourthAssignmentsPagesMatchTheirGoldens(LitGoldens.Case c) throws Exception {
-        assertTrue(SceneRules.of(c.scene()).lit(), c.scene() + " is a lit scene");
+        assertTrue(DrawnScenes.isLit(c.scene()), c.scene() + " is a lit scene");
         Goldens.assertMatches(c.name(), c.render());
     }
 

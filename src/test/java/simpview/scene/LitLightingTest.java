@@ -18,11 +18,11 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 
 /**
- * Lighting through the whole pipeline (SceneRenderer.drawLit on scene files
+ * Lighting through the whole pipeline (ScenePipeline.draw on scene files
  * written here), against SPEC's formula evaluated by hand in this test:
  *
  * <pre>
@@ -119,7 +119,7 @@ class LitLightingTest {
 
     private PageCanvas draw(String... lines) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        SceneRenderer.drawLit(write("scene.simp", lines), canvas, SceneMonitor.NONE);
+        ScenePipeline.draw(write("scene.simp", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
         return canvas;
     }
 

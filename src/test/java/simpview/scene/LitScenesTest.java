@@ -1,5 +1,9 @@
 package simpview.scene;
 
+import simpview.scene.SceneException;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -10,8 +14,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
-import simpview.scene.simp.SceneRules;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 
 /** Lit scenes drawn end to end, checked against what the rules say by hand. */
@@ -28,14 +31,14 @@ class LitScenesTest {
 
     private PageCanvas draw(String... lines) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        SceneRenderer.drawLit(write("s", lines), canvas, SceneMonitor.NONE);
+        ScenePipeline.draw(write("s", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
         return canvas;
     }
 
     private SceneException failure(String... lines) throws Exception {
         Path file = write("bad", lines);
         return assertThrows(SceneException.class,
-                () -> SceneRenderer.drawLit(file, new PageCanvas(), SceneMonitor.NONE));
+                () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE));
     }
 
     private static int[] rgb(PageCanvas canvas, int x, int y) {
@@ -177,8 +180,9 @@ class LitScenesTest {
             }
         };
         PageCanvas canvas = new PageCanvas();
-        SceneRenderer.drawLit(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
-                "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas, monitor);
+        ScenePipeline.draw(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
+                "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas,
+                ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), monitor);
         assertEquals(java.util.List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 warnings);
         assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
@@ -188,10 +192,15 @@ class LitScenesTest {
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");
         Path top = write("top", "# includes a lit part", "{", "file \"part\"", "}");
-        assertEquals(new SceneRules(true, "part.simp:1 ambient"), SceneRules.of(top));
+        ScenePipeline.Drawn lit = DrawnScenes.draw(top);
+        assertTrue(lit.lit());
+        assertEquals("part.simp:1 ambient", lit.litBecause());
         Path plain = write("plain", "polygon (0 0 0) (1 0 0) (0 1 0)");
-        assertEquals(SceneRules.DEPTH_CUED, SceneRules.of(plain));
+        ScenePipeline.Drawn cued = DrawnScenes.draw(plain);
+        assertFalse(cued.lit());
+        assertNull(cued.litBecause());
         Path cycle = write("cycle", "file \"cycle\"");
-        assertEquals(SceneRules.DEPTH_CUED, SceneRules.of(cycle), "a cycle is left for the reader to report");
+        SceneException e = assertThrows(SceneException.class, () -> DrawnScenes.draw(cycle));
+        assertTrue(e.getMessage().contains("file cycle"), e.getMessage());
     }
 }

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRenderer;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 
 /**
@@ -40,7 +40,7 @@ public final class LitGoldens {
 
         public BufferedImage render() throws SceneException {
             PageCanvas canvas = new PageCanvas();
-            SceneRenderer.drawLit(scene, canvas, SceneMonitor.NONE);
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
             return canvas.snapshot();
         }
     }

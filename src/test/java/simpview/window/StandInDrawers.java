@@ -1,5 +1,10 @@
 package simpview.window;
 
+import java.util.List;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.surface.Drawable;
+
 import simpview.scene.simp.SceneDrawer;
 
 import java.io.BufferedReader;
@@ -22,7 +27,8 @@ public final class StandInDrawers {
     }
 
     /** Reads every line, paints one pixel per line, and takes about 2 ms per 1000 lines. */
-    static final SceneDrawer SLOW_READER = (file, panel, monitor) -> {
+    static final SceneDrawer SLOW_READER = (file, canvas, options, monitor) -> {
+        Drawable panel = canvas.depthTested();
         long lines = 0;
         try (BufferedReader in = Files.newBufferedReader(file)) {
             while (in.readLine() != null) {
@@ -40,10 +46,11 @@ public final class StandInDrawers {
             throw new UncheckedIOException(e);
         }
         monitor.linesRead(lines);
+        return drawn(file, monitor);
     };
 
     /** Reports progress every few milliseconds and never finishes: only a cancel ends it. */
-    static final SceneDrawer UNTIL_CANCELLED = (file, panel, monitor) -> {
+    static final SceneDrawer UNTIL_CANCELLED = (file, canvas, options, monitor) -> {
         for (long lines = REPORT_EVERY; !monitor.cancelled(); lines += REPORT_EVERY) {
             monitor.linesRead(lines);
             pause();
@@ -52,11 +59,19 @@ public final class StandInDrawers {
     };
 
     /** Draws a white diagonal at the near plane, whatever the file says. */
-    static final SceneDrawer DIAGONAL = (file, panel, monitor) -> {
+    static final SceneDrawer DIAGONAL = (file, canvas, options, monitor) -> {
+        Drawable panel = canvas.depthTested();
         for (int i = 0; i < panel.width(); i++) {
             panel.setPixel(i, i, 0, 0xFFFFFFFF);
         }
+        return drawn(file, monitor);
     };
+
+    /** What a stand-in drew: a depth-cued picture of the one file it read. */
+    private static ScenePipeline.Drawn drawn(Path file, SceneMonitor monitor) {
+        monitor.reached(List.of(file));
+        return new ScenePipeline.Drawn(false, null, true, List.of(file));
+    }
 
     static Path sceneFile(Path dir, String name) throws IOException {
         return Files.writeString(dir.resolve(name), "line (-100, -100, 0) (100, 100, 0)\n");

@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
 import simpview.scene.FileChecksum;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 
 /**
@@ -37,9 +38,10 @@ import simpview.scene.SceneException;
  * seconds (FAT). So a model is trusted on those alone only once it is
  * <em>settled</em>: its file was last modified more than {@link #SETTLE_MILLIS}
  * before it was looked at, so any later write stamps a later time. Until then
- * each draw also compares a CRC-32C of the file's bytes with the one taken
- * before it was parsed (reading the file once, far cheaper than parsing it),
- * and parses again when they differ. What is not seen is a change that sets
+ * each draw also compares a CRC-32C of the file's bytes with the one of the
+ * bytes it was parsed from (taken as they were parsed, so a first draw reads
+ * the file once; a later one reads it once more, far cheaper than parsing
+ * it), and parses again when they differ. What is not seen is a change that sets
  * the last-modified time back to exactly the old one, more than that long in
  * the past, keeping size and inode.
  */
@@ -101,6 +103,11 @@ public final class ObjLibrary {
         Stamp stamp;
         try {
             real = file.toRealPath();
+            String notAFile = FileProblem.notAFile(real);
+            if (notAFile != null) {
+                throw new SceneException(file, 0, 0, "", "cannot read the obj file "
+                        + file.toAbsolutePath().normalize() + ": " + notAFile);
+            }
             BasicFileAttributes a = Files.readAttributes(real, BasicFileAttributes.class);
             stamp = new Stamp(a.size(), a.lastModifiedTime(), a.fileKey());
         } catch (IOException e) {
@@ -112,21 +119,25 @@ public final class ObjLibrary {
         if (kept != null && kept.settled()) {
             return replay(kept.model(), sink);
         }
-        if (kept != null || !settled) {
+        if (kept != null) {
             checksum = checksum(file, real);
-        }
-        if (kept != null && kept.checksum() == checksum) {
-            if (settled) {
-                settle(real, kept);
+            if (kept.checksum() == checksum) {
+                if (settled) {
+                    settle(real, kept);
+                }
+                return replay(kept.model(), sink);
             }
-            return replay(kept.model(), sink);
         }
         parses.incrementAndGet();
+        // A file not settled yet is checksummed as it is parsed: its bytes are read once.
         ObjParser parser = ObjParser.open(file).record(budget);
+        if (!settled) {
+            parser.checksummed();
+        }
         ObjCounts counts = parser.run(sink);
         ObjModel parsed = parser.model();
         if (parsed != null) {
-            keep(real, new Kept(stamp, settled ? 0 : checksum, settled, parsed));
+            keep(real, new Kept(stamp, settled ? 0 : parser.checksum(), settled, parsed));
         }
         return counts;
     }
@@ -137,8 +148,8 @@ public final class ObjLibrary {
     }
 
     private static SceneException cannotOpen(Path file, IOException e) {
-        return new SceneException(file, 0, 0, "", "cannot open the obj file: " + e.getClass().getSimpleName()
-                + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+        return new SceneException(file, 0, 0, "", "cannot open the obj file "
+                + file.toAbsolutePath().normalize() + ": " + FileProblem.of(file, e));
     }
 
     /** The CRC-32C of the file's bytes as they are now. */

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Arrays;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
@@ -55,7 +56,8 @@ final class ObjParser {
         try {
             return new ObjParser(LineSource.open(file));
         } catch (IOException e) {
-            throw new SceneException(file, 0, 0, "", "cannot open the obj file: " + describe(e));
+            throw new SceneException(file, 0, 0, "", "cannot open the obj file "
+                    + file.toAbsolutePath().normalize() + ": " + FileProblem.of(file, e));
         }
     }
 
@@ -67,6 +69,17 @@ final class ObjParser {
     static ObjModel model(ObjParser parser) throws SceneException {
         parser.record(Long.MAX_VALUE).run(NOWHERE);
         return parser.model();
+    }
+
+    /** Keeps the CRC-32C of the bytes read: the file's checksum once {@link #run} read it all. */
+    ObjParser checksummed() {
+        source.checksummed();
+        return this;
+    }
+
+    /** The CRC-32C of the file's bytes, after a {@link #run} of a {@link #checksummed} parser. */
+    long checksum() {
+        return source.checksum();
     }
 
     /** Records the faces too, up to {@code budget} bytes of arrays with the vertices. */
@@ -96,7 +109,7 @@ final class ObjParser {
             throw new SceneException(file(), source.lineNumber() + 1, 0, "",
                     "a line is longer than " + LineSource.MAX_LINE + " bytes");
         } catch (IOException e) {
-            throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + describe(e));
+            throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + FileProblem.of(file(), e));
         } finally {
             close();
         }
@@ -341,8 +354,4 @@ final class ObjParser {
         return new SceneException(file(), source.lineNumber(), column, text(lineStart, end), problem);
     }
 
-    private static String describe(IOException e) {
-        String m = e.getMessage();
-        return e.getClass().getSimpleName() + (m == null ? "" : ": " + m);
-    }
 }

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.text.LineSource;
 
@@ -41,6 +42,11 @@ final class FileStack implements AutoCloseable {
     private final Map<Name, Found> found = new HashMap<>();
     private final Map<Path, Recording> recordings = new HashMap<>();
     private final long smallFileLimit;
+    /** The working directory names are also looked for in (where the course's programs looked), absolute. */
+    private final Path workingDir;
+    /** Every file the scene read or looked for, each once, in the order met: what a window watches. */
+    private final Set<Path> reachedKeys = new HashSet<>();
+    private final List<Path> reached = new ArrayList<>();
     private long cachedBytes;
     private long linesOfFinishedFiles;
 
@@ -50,13 +56,35 @@ final class FileStack implements AutoCloseable {
 
     /** @param smallFileLimit files up to this many bytes are read whole and kept; -1 streams every file */
     FileStack(long smallFileLimit) {
+        this(smallFileLimit, Path.of("").toAbsolutePath());
+    }
+
+    /** @param workingDir the folder names are looked for in after the including file's, absolute */
+    FileStack(long smallFileLimit, Path workingDir) {
         this.smallFileLimit = smallFileLimit;
+        this.workingDir = workingDir;
     }
 
     /** Starts with the scene's top file. */
-    void openTop(Path file) throws SceneException {
+    void openTop(Path named) throws SceneException {
+        Path file = withExtension(named);
+        reach(file);
         Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
         push(open(file, real), real);
+    }
+
+    /**
+     * The top file as named, or with .simp added when it was named without
+     * and only that exists (SPEC: a scene may be named without .simp, as the
+     * course's programs took it).
+     */
+    static Path withExtension(Path named) {
+        Path name = named.getFileName();
+        if (name == null || name.toString().endsWith(".simp") || Files.exists(named)) {
+            return named;
+        }
+        Path simp = named.resolveSibling(name + ".simp");
+        return Files.exists(simp) ? simp : named;
     }
 
     /**
@@ -142,20 +170,61 @@ final class FileStack implements AutoCloseable {
      * programs looked), by {@link FilePlaces}. When it is in neither, the
      * error names every place looked.
      */
-    static Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
+    private Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
         FilePlaces places;
         try {
-            places = FilePlaces.of(from.file(), name, extension);
+            places = FilePlaces.of(from.file(), name, extension, workingDir);
         } catch (InvalidPathException e) {
             throw from.error(c.argumentIndex, "not a valid file name: '" + name + "'");
         }
         Path found = places.found();
-        if (found != null) {
-            return found;
+        if (found == null) {
+            reach(places.here());
+            reach(places.working());
+            String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
+            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
+                    + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
         }
-        String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
-        throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
-                + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
+        reach(found);
+        if (!places.hereIsWorking() && found.equals(places.working())) {
+            reach(places.here()); // a file appearing beside the including one would take over
+        }
+        return found;
+    }
+
+    /** The .obj file an {@code obj} command of the top file names, found as {@code file} names are. */
+    Path locateModel(Command c) throws SceneException {
+        return locate(c.fileName, ".obj", top(), c);
+    }
+
+    /** "file:line" of the command being carried out, for messages. */
+    String place() {
+        SimpReader r = top();
+        return r.file().getFileName() + ":" + r.lineNumber();
+    }
+
+    /** Notes a file the scene read or looked for, once. */
+    private void reach(Path file) {
+        Path key;
+        try {
+            key = file.toRealPath();
+        } catch (IOException | SecurityException e) {
+            key = file.toAbsolutePath().normalize();
+        }
+        if (reachedKeys.add(key)) {
+            reached.add(file);
+        }
+    }
+
+    /**
+     * Every file the scene read or looked for so far, each once, in the order
+     * met: the top file, each included .simp file and each .obj model, and
+     * for a name found in neither place both places (for a name found only in
+     * the working directory, also the place that would take it over), so
+     * that a window watching them sees a file appear too.
+     */
+    List<Path> reached() {
+        return List.copyOf(reached);
     }
 
     /**
@@ -172,10 +241,11 @@ final class FileStack implements AutoCloseable {
         } catch (NoSuchFileException e) {
             throw error.apply("file not found: " + shown);
         } catch (IOException e) {
-            throw error.apply("cannot open " + shown + ": " + e.getMessage());
+            throw error.apply("cannot open " + shown + ": " + FileProblem.of(candidate, e));
         }
-        if (!Files.isRegularFile(real)) {
-            throw error.apply((Files.isDirectory(real) ? "not a file but a folder: " : "not a regular file: ") + shown);
+        String notAFile = FileProblem.notAFile(real);
+        if (notAFile != null) {
+            throw error.apply(notAFile + ": " + shown);
         }
         return real;
     }

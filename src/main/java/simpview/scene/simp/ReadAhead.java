@@ -27,12 +27,12 @@ final class ReadAhead implements AutoCloseable {
     private final BlockingQueue<PrimitiveBatch> free = new ArrayBlockingQueue<>(BATCHES);
     private final BlockingQueue<PrimitiveBatch> full = new ArrayBlockingQueue<>(BATCHES);
     private final SimpClient client;
-    private final Path file;
+    private final long commandsSoFar;
     private final Thread reader;
 
-    private ReadAhead(SimpClient client, Path file) {
+    private ReadAhead(SimpClient client, Path file, long commandsSoFar) {
         this.client = client;
-        this.file = file;
+        this.commandsSoFar = commandsSoFar;
         for (int k = 0; k < BATCHES; k++) {
             free.add(new PrimitiveBatch());
         }
@@ -40,9 +40,15 @@ final class ReadAhead implements AutoCloseable {
         reader.setDaemon(true);
     }
 
-    /** Starts reading {@code file} with {@code client}, which from now on belongs to the reader thread. */
-    static ReadAhead start(SimpClient client, Path file) {
-        ReadAhead ahead = new ReadAhead(client, file);
+    /**
+     * Goes on reading the scene {@code client}'s files are open on, from the
+     * command after the last one it carried out; the client and its files
+     * belong to the reader thread from now on, which closes them. {@code top}
+     * names the thread; batches end where the calling thread would have
+     * reported progress, counting the {@code commandsSoFar} it carried out.
+     */
+    static ReadAhead start(SimpClient client, Path top, long commandsSoFar) {
+        ReadAhead ahead = new ReadAhead(client, top, commandsSoFar);
         ahead.reader.start();
         return ahead;
     }
@@ -53,9 +59,8 @@ final class ReadAhead implements AutoCloseable {
         PrimitiveBatch batch = null;
         try {
             batch = fresh();
-            files.openTop(file);
             Command c = new Command();
-            long commands = 0;
+            long commands = commandsSoFar;
             while (files.next(c)) {
                 client.execute(c);
                 if (++commands % PrimitiveBatch.CAPACITY == 0) {

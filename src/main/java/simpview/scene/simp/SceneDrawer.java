@@ -1,20 +1,20 @@
 package simpview.scene.simp;
 
-import simpview.scene.SceneException;
 import java.nio.file.Path;
-import simpview.surface.Drawable;
+import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
-/** What draws a SIMP file onto a panel; the real one is {@link SceneRenderer}. Tests may stand in. */
+/**
+ * What draws a scene file for the window's render thread: the real one is
+ * {@link ScenePipeline#draw}; the window's tests stand in for it to test the
+ * machinery around it (progress, cancelling) in any state.
+ */
 @FunctionalInterface
 public interface SceneDrawer {
 
-    SceneDrawer SIMP = SceneRenderer::draw;
+    SceneDrawer SIMP = ScenePipeline::draw;
 
-    void draw(Path file, Drawable panel, SceneMonitor monitor) throws SceneException;
-
-    /** Draws a lit scene onto a cleared canvas. */
-    default void drawLit(Path file, PageCanvas canvas, SceneMonitor monitor) throws SceneException {
-        SceneRenderer.drawLit(file, canvas, monitor);
-    }
+    /** As {@link ScenePipeline#draw}: on a canvas just cleared, files reached told to the monitor. */
+    ScenePipeline.Drawn draw(Path file, PageCanvas canvas, ScenePipeline.Options options, SceneMonitor monitor)
+            throws SceneException;
 }

@@ -18,6 +18,14 @@ public interface SceneMonitor {
         return false;
     }
 
+    /**
+     * Once, when the scene ends however it ends: every file it read or looked
+     * for, in the order met (what a window watches for a save; see
+     * {@link ScenePipeline.Drawn#files}).
+     */
+    default void reached(java.util.List<java.nio.file.Path> files) {
+    }
+
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
     default void warning(String message) {
     }

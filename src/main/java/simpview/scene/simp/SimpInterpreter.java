@@ -41,12 +41,39 @@ public final class SimpInterpreter {
         this.readAheadFrom = readAheadFrom;
     }
 
-    /** Reads {@code file} and everything it includes, to the end. */
+    /**
+     * Reads {@code file} and everything it includes, to the end. The first
+     * commands are read here; once the first primitive is drawn the scene's
+     * rules are known (a lit scene's camera comes before it), and a big
+     * depth-cued scene goes on reading on a second thread while this one
+     * draws.
+     */
     public void run(Path file) throws SceneException {
-        if (readAhead(file)) {
-            runReadingAhead(file);
-        } else {
-            runHere(file);
+        FileStack files = client.files();
+        boolean handedOver = false;
+        try {
+            files.openTop(file);
+            Command c = new Command();
+            long commands = 0;
+            boolean firstDrawn = false;
+            while (next(files, c)) {
+                if ((++commands & POLL_MASK) == 0) {
+                    report(files.linesRead());
+                }
+                if (!firstDrawn && client.drew()) {
+                    firstDrawn = true;
+                    if (readAhead(file)) {
+                        handedOver = true;
+                        runReadingAhead(file, commands);
+                        return;
+                    }
+                }
+            }
+            finish(file, files.linesRead(), client.openBraces(), client.warnings());
+        } finally {
+            if (!handedOver) {
+                files.close();
+            }
         }
     }
 
@@ -59,23 +86,6 @@ public final class SimpInterpreter {
             return Runtime.getRuntime().availableProcessors() > 1 && Files.size(file) >= readAheadFrom;
         } catch (IOException | SecurityException e) {
             return false; // reading here reports the problem properly
-        }
-    }
-
-    private void runHere(Path file) throws SceneException {
-        FileStack files = client.files();
-        try {
-            files.openTop(file);
-            Command c = new Command();
-            long commands = 0;
-            while (next(files, c)) {
-                if ((++commands & POLL_MASK) == 0) {
-                    report(files.linesRead());
-                }
-            }
-            finish(file, files.linesRead(), client.openBraces(), client.warnings());
-        } finally {
-            files.close();
         }
     }
 
@@ -93,9 +103,9 @@ public final class SimpInterpreter {
     }
 
     /** Draws the batches the reading thread fills; each ends where runHere would report. */
-    private void runReadingAhead(Path file) throws SceneException {
+    private void runReadingAhead(Path file, long commandsSoFar) throws SceneException {
         Painter painter = client.painter();
-        try (ReadAhead ahead = ReadAhead.start(client, file)) {
+        try (ReadAhead ahead = ReadAhead.start(client, file, commandsSoFar)) {
             while (true) {
                 PrimitiveBatch batch = ahead.next();
                 batch.drawAll(painter);

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import simpview.geometry.Axis;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
 import simpview.scene.simp.Command.Shape;
@@ -48,7 +49,8 @@ public final class SimpReader implements AutoCloseable {
         try {
             return new SimpReader(LineSource.open(file));
         } catch (IOException e) {
-            throw new SceneException(file, 0, 0, "", "cannot open the file: " + describe(e));
+            throw new SceneException(file, 0, 0, "", "cannot open the file "
+                    + file.toAbsolutePath().normalize() + ": " + FileProblem.of(file, e));
         }
     }
 
@@ -152,7 +154,7 @@ public final class SimpReader implements AutoCloseable {
             throw new SceneException(file(), source.lineNumber() + 1, 0, "", "line is too long (over "
                     + LineSource.MAX_LINE + " bytes)");
         } catch (IOException e) {
-            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + describe(e));
+            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + FileProblem.of(file(), e));
         }
         linesRead++;
         b = source.buffer();
@@ -176,7 +178,7 @@ public final class SimpReader implements AutoCloseable {
         try {
             source.suspend();
         } catch (IOException e) {
-            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot close the file: " + describe(e));
+            throw new SceneException(file(), source.lineNumber(), 0, "", "cannot close the file: " + FileProblem.of(file(), e));
         }
     }
 
@@ -198,6 +200,27 @@ public final class SimpReader implements AutoCloseable {
     }
 
     // ---- parsing one line ------------------------------------------------------------------
+
+    /**
+     * The error to give when the current line holds a byte no text file holds
+     * (a control character other than tab, carriage return and form feed):
+     * a program or a picture renamed .simp: the error then says so instead,
+     * and shows none of its bytes, only where the first such byte is. Asked
+     * only once a line failed to parse, so it costs a real scene nothing.
+     */
+    private SceneException notText() {
+        int from = source.lineStart();
+        for (int i = from; i < end; i++) {
+            int v = b[i] & 0xFF;
+            if (v < 0x20 && v != '\t' && v != '\r' && v != '\f' || v == 0x7F) {
+                long offset = source.lineOffset() + (i - from);
+                return new SceneException(file(), source.lineNumber(), 0, "", String.format(
+                        "not a text file: byte 0x%02X at offset %d (line %d); a SIMP file is lines of text",
+                        v, offset, source.lineNumber()));
+            }
+        }
+        return null;
+    }
 
     private void parse(int start, Command c) throws SceneException {
         c.commandIndex = start;
@@ -412,12 +435,12 @@ public final class SimpReader implements AutoCloseable {
 
     /** An error at byte index i of the current line. */
     SceneException error(int i, String problem) {
+        SceneException binary = notText();
+        if (binary != null) {
+            return binary;
+        }
         int column = text(source.lineStart(), Math.min(i, end)).length() + 1;
         return new SceneException(file(), source.lineNumber(), column, lineText(), problem);
     }
 
-    private static String describe(IOException e) {
-        String m = e.getMessage();
-        return e.getClass().getSimpleName() + (m == null ? "" : ": " + m);
-    }
 }

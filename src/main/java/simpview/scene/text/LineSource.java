@@ -8,6 +8,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.zip.CRC32C;
 import simpview.scene.SceneException;
 
 /**
@@ -36,6 +37,8 @@ public final class LineSource {
     public static final int MAX_LINE = 1 << 20;
 
     private final Path path;
+    /** The CRC-32C of every byte read so far, when asked for ({@link #checksummed}); else null. */
+    private CRC32C crc;
     private FileChannel channel;
     private boolean fileBacked;
     private byte[] buf;
@@ -72,6 +75,24 @@ public final class LineSource {
         return s;
     }
 
+    /**
+     * From now on (call it before the first line) keeps the CRC-32C of the
+     * bytes read, so that a reader that reads a file to its end learns its
+     * checksum without reading it a second time ({@link #checksum}).
+     */
+    public LineSource checksummed() {
+        crc = new CRC32C();
+        if (!fileBacked) {
+            crc.update(buf, 0, limit);
+        }
+        return this;
+    }
+
+    /** The CRC-32C of the bytes read so far: of the whole file once it was read to its end (as FileChecksum gives it). */
+    public long checksum() {
+        return crc.getValue();
+    }
+
     public Path path() {
         return path;
     }
@@ -105,6 +126,11 @@ public final class LineSource {
     /** The line starts {@code n} bytes later (a byte order mark is not part of its text). */
     public void skipAtLineStart(int n) {
         lineStart += n;
+    }
+
+    /** Where the current line starts in the file, in bytes from its first. */
+    public long lineOffset() {
+        return bufferOffset + lineStart;
     }
 
     public int lineNumber() {
@@ -192,6 +218,9 @@ public final class LineSource {
         if (n < 0) {
             eof = true;
         } else {
+            if (crc != null) {
+                crc.update(buf, limit, n);
+            }
             limit += n;
         }
     }

@@ -1,5 +1,6 @@
 package simpview.window.render;
 
+import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneDrawer;
 
 import java.util.concurrent.ExecutorService;
@@ -26,6 +27,8 @@ public final class BackgroundRenderer {
     private final SceneDrawer drawer;
     /** Who drew each pixel of the picture being drawn; only this thread writes it. */
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+    /** The window's obj models, kept across redraws while their files are unchanged; only this thread uses it. */
+    private final ObjLibrary models = new ObjLibrary();
 
     public BackgroundRenderer(SceneDrawer drawer) {
         this.drawer = drawer;
@@ -34,7 +37,7 @@ public final class BackgroundRenderer {
     /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
     public void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
         thread.execute(() -> {
-            RenderedView result = job.run(renderer, drawer, provenance);
+            RenderedView result = job.run(renderer, drawer, models, provenance);
             SwingUtilities.invokeLater(() -> done.accept(job, result));
         });
     }

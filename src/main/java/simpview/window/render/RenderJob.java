@@ -1,7 +1,8 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
-import simpview.scene.simp.SceneSheet;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.obj.ObjLibrary;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -20,7 +21,6 @@ import simpview.scene.SceneException;
 import simpview.surface.Provenance;
 import simpview.scene.simp.SceneCancelledException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.SceneRules;
 import simpview.surface.PageCanvas;
 
 /**
@@ -44,6 +44,8 @@ public final class RenderJob implements SceneMonitor {
     private PrimitiveLog trace;
     /** A lit scene's centre of what was shown, in camera space, when told; the render thread's, like trace. */
     private double[] shownCentre;
+    /** The files the scene read or looked for, as its pipeline told them; the render thread's, like trace. */
+    private List<Path> reached = List.of();
 
     public RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -132,6 +134,11 @@ public final class RenderJob implements SceneMonitor {
     }
 
     @Override
+    public void reached(List<Path> files) {
+        reached = List.copyOf(files);
+    }
+
+    @Override
     public void shownCentre(double[] xyz) {
         shownCentre = xyz.clone();
     }
@@ -140,7 +147,7 @@ public final class RenderJob implements SceneMonitor {
      * Draws on the render thread's canvas and returns a copy of the result,
      * or null when the job was cancelled.
      */
-    RenderedView run(PageRenderer renderer, SceneDrawer drawer, Provenance provenance) {
+    public RenderedView run(PageRenderer renderer, SceneDrawer drawer, ObjLibrary models, Provenance provenance) {
         if (cancelled) {
             return null;
         }
@@ -154,7 +161,9 @@ public final class RenderJob implements SceneMonitor {
             if (view instanceof View.OfPage page) {
                 renderer.render(page.number(), context);
             } else {
-                SceneSheet.of(((View.OfScene) view).file()).drawOn(canvas, this, drawer, settings.ownColours());
+                canvas.clear();
+                drawer.draw(((View.OfScene) view).file(), canvas,
+                        ScenePipeline.Options.byCommands(models).withOwnColours(settings.ownColours()), this);
             }
         } catch (SceneException e) {
             error = e.getMessage();
@@ -195,16 +204,12 @@ public final class RenderJob implements SceneMonitor {
         return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
     }
 
-    /** The scene files this picture read: what to watch for a save. */
+    /** The scene files this picture read or looked for: what to watch for a save. */
     private List<Path> filesRead() {
         Path top = topFile();
         if (top == null) {
             return List.of();
         }
-        List<Path> reached = new ArrayList<>(SceneRules.reached(top));
-        if (reached.isEmpty()) {
-            reached.add(top); // not there yet: watch for it to appear
-        }
-        return reached;
+        return reached.isEmpty() ? List.of(top) : reached; // not read at all: watch for it to appear
     }
 }

@@ -178,7 +178,8 @@ class ObjErrorsTest {
         Path missing = dir.resolve("gone.obj");
         SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(missing, face -> { }));
         assertEquals(missing, e.file());
-        assertTrue(e.problem().startsWith("cannot open the obj file: NoSuchFileException"), e.problem());
+        assertTrue(e.problem().startsWith("cannot open the obj file " + missing.toAbsolutePath().normalize()
+                + ": file not found"), e.problem());
     }
 
     @Test

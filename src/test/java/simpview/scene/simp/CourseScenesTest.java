@@ -25,7 +25,7 @@ class CourseScenesTest {
         Path file = courseDir().resolve(name);
         PageCanvas canvas = new PageCanvas();
         List<String> warnings = new ArrayList<>();
-        SceneRenderer.draw(file, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), new SceneMonitor() {
+        ScenePipeline.drawDepthCued(file, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), new SceneMonitor() {
             @Override
             public void warning(String message) {
                 warnings.add(message);

@@ -83,7 +83,7 @@ class CullingTest {
         // Sticks out of the left, the top and the near plane.
         scene.write("s", "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "wire",
                 "polygon (-180, 0, 40) (50, 180, -100) (50, -50, -150)", "line (-300, -10, 100) (300, 10, -300)");
-        SceneRenderer.draw(dir.resolve("s.simp"), new ScissorDrawable(Camera.PARALLEL, recorder), SceneMonitor.NONE);
+        ScenePipeline.drawDepthCued(dir.resolve("s.simp"), new ScissorDrawable(Camera.PARALLEL, recorder), SceneMonitor.NONE);
         List<Write> writes = recorder.writes();
         assertTrue(writes.size() > 1000, "the visible part is drawn: " + writes.size());
         assertEquals(0, recorder.strays(), "writes outside the panel");

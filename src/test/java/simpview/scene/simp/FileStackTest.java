@@ -39,7 +39,7 @@ class FileStackTest {
     @Test
     void missingTopFileIsAnError() {
         SceneException e = assertThrows(SceneException.class,
-                () -> SceneRenderer.draw(dir.resolve("absent.simp"), SceneFixture.NOWHERE, SceneMonitor.NONE));
+                () -> ScenePipeline.drawDepthCued(dir.resolve("absent.simp"), SceneFixture.NOWHERE, SceneMonitor.NONE));
         assertEquals(0, e.line());
         assertTrue(e.problem().startsWith("file not found: ") && e.problem().endsWith("absent.simp"), e.problem());
     }
@@ -89,7 +89,7 @@ class FileStackTest {
         Files.createSymbolicLink(dir.resolve("zero.simp"), Path.of("/dev/zero"));
         SceneFixture scene = new SceneFixture(dir);
         scene.write("s", "file zero");
-        assertTrue(scene.failure("s").problem().startsWith("not a regular file: "));
+        assertTrue(scene.failure("s").problem().startsWith("not a regular file"));
     }
 
     @Test
@@ -192,7 +192,7 @@ class FileStackTest {
             }
         };
         assertThrows(SceneCancelledException.class,
-                () -> SceneRenderer.draw(dir.resolve("long.simp"), SceneFixture.NOWHERE, cancelLater));
+                () -> ScenePipeline.drawDepthCued(dir.resolve("long.simp"), SceneFixture.NOWHERE, cancelLater));
         assertEquals(3, reports.size());
         assertTrue(reports.get(0) > 0 && reports.get(2) > reports.get(0), reports.toString());
         assertTrue(reports.get(2) < 10_000);
@@ -204,7 +204,7 @@ class FileStackTest {
         scene.write("leaf", "# one", "wire");
         scene.write("s", "file leaf", "", "file leaf");
         long[] last = {0};
-        SceneRenderer.draw(dir.resolve("s.simp"), SceneFixture.NOWHERE, new SceneMonitor() {
+        ScenePipeline.drawDepthCued(dir.resolve("s.simp"), SceneFixture.NOWHERE, new SceneMonitor() {
             @Override
             public void linesRead(long lines) {
                 last[0] = lines;

@@ -114,8 +114,7 @@ class LitProvenanceTest {
                 "camera -1 -1 1 1 -1 -100",
                 "polygon (-2, -1, -10) (3, -1, -10) (0, 2, -20)", ""));
         SimpClient client = SimpClient.lit(new FragmentStage(new ZBuffer(PANEL, PANEL), new RecordingDrawable(PANEL, PANEL)),
-                new ObjLibrary());
-        client.follow(new PrimitiveLog(null, -1));
+                new ObjLibrary(), new PrimitiveLog(null, -1));
         new SimpInterpreter(client, SceneMonitor.NONE).run(scene);
         double[] centre = client.shownCentre();
         assertNotNull(centre);
@@ -148,8 +147,7 @@ class LitProvenanceTest {
     private static void run(Path scene, Drawable panel, PrimitiveTrace trace) throws Exception {
         ZBuffer zbuffer = new ZBuffer(PANEL, PANEL);
         zbuffer.reset(Double.NEGATIVE_INFINITY);
-        SimpClient client = SimpClient.lit(new FragmentStage(zbuffer, panel), new ObjLibrary());
-        client.follow(trace);
+        SimpClient client = SimpClient.lit(new FragmentStage(zbuffer, panel), new ObjLibrary(), trace);
         new SimpInterpreter(client, SceneMonitor.NONE).run(scene);
     }
 

@@ -71,12 +71,12 @@ class LitViewTurnTest {
     private static BufferedImage draw(Path scene, Matrix4 turn) throws Exception {
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
-        SceneRenderer.drawLit(scene, canvas, new SceneMonitor() {
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), new SceneMonitor() {
             @Override
             public Matrix4 viewTurn() {
                 return turn;
             }
-        }, new ObjLibrary());
+        });
         return canvas.snapshot();
     }
 

@@ -1,5 +1,6 @@
 package simpview.scene.simp;
 
+import simpview.testing.DrawnScenes;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -63,7 +64,7 @@ class OwnScenesTest {
     void theOwnLitScenesAreLitAndUseTheGeneratedModels() throws Exception {
         for (String name : List.of("lit-shading", "lit-corridor", "lit-lights")) {
             Path scene = simpDir().resolve(name + ".simp");
-            assertTrue(SceneRules.of(scene).lit(), name);
+            assertTrue(DrawnScenes.isLit(scene), name);
             String text = Files.readString(scene);
             assertTrue(text.contains("camera ") && text.contains("obj \"") && text.contains("light "), name);
         }

@@ -108,8 +108,7 @@ class ProvenanceSceneTest {
     }
 
     private static void run(Path scene, Drawable target, PrimitiveTrace trace, long readAheadFrom) throws Exception {
-        SimpClient client = new SimpClient(target);
-        client.follow(trace);
+        SimpClient client = SimpClient.depthCued(target, trace);
         new SimpInterpreter(client, SceneMonitor.NONE, readAheadFrom).run(scene);
     }
 

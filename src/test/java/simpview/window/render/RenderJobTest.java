@@ -25,7 +25,7 @@ public class RenderJobTest {
 
     private RenderedView draw(View view, DrawSettings settings) {
         RenderJob job = new RenderJob(view, PageContext.defaults().withSimpDir(dir), settings);
-        return job.run(new PageRenderer(), SceneDrawer.SIMP, new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
+        return job.run(new PageRenderer(), SceneDrawer.SIMP, new simpview.scene.obj.ObjLibrary(), new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
     }
 
     @Test

@@ -1,8 +1,12 @@
 package simpview.scene.simp;
 
+import java.util.ArrayList;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.surface.PageCanvas;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -12,8 +16,12 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The files a scene reads, as the window watches them: its .simp files and the .obj models they name. */
-class SceneRulesReachedTest {
+/**
+ * The files a scene reads or looks for, as the pipeline tells them and the
+ * window watches them: its .simp files and the .obj models they name, found
+ * by the reader itself while it reads (no second pass over the files).
+ */
+class ReachedFilesTest {
 
     private static final String MODEL = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
@@ -35,8 +43,31 @@ class SceneRulesReachedTest {
         return Files.writeString(file, text);
     }
 
+    /** The files drawing {@code top} reached, an error or not, with {@link #working} as the working directory. */
     private List<Path> reached(Path top) {
-        return SceneRules.reached(top, working);
+        return reached(top, ScenePipeline.Options.byCommands(new ObjLibrary()).withWorkingDir(working));
+    }
+
+    private static List<Path> reached(Path top, ScenePipeline.Options options) {
+        List<List<Path>> told = new ArrayList<>();
+        SceneMonitor monitor = new SceneMonitor() {
+            @Override
+            public void reached(List<Path> files) {
+                told.add(files);
+            }
+        };
+        PageCanvas canvas = new PageCanvas();
+        List<Path> drawn = null;
+        try {
+            drawn = ScenePipeline.draw(top, canvas, options, monitor).files();
+        } catch (SceneException e) {
+            // the files reached up to the error are told all the same
+        }
+        assertEquals(1, told.size(), "the monitor is told once");
+        if (drawn != null) {
+            assertEquals(drawn, told.get(0), "what was drawn says the same");
+        }
+        return told.get(0);
     }
 
     @Test
@@ -75,7 +106,8 @@ class SceneRulesReachedTest {
     void theRealWorkingDirectoryIsTheOneThePublicMethodUses() throws Exception {
         Path top = write(scenes.resolve("lit.simp"), "obj \"no-such-model-3f9\"\n");
         assertEquals(List.of(top, scenes.resolve("no-such-model-3f9.obj"),
-                Path.of("no-such-model-3f9.obj").toAbsolutePath()), SceneRules.reached(top));
+                Path.of("no-such-model-3f9.obj").toAbsolutePath()),
+                reached(top, ScenePipeline.Options.byCommands(new ObjLibrary())));
     }
 
     @Test
@@ -99,26 +131,31 @@ class SceneRulesReachedTest {
     }
 
     @Test
-    void windowsLineEndsAndAnIncludeCycleAreHandled() throws Exception {
+    void windowsLineEndsAreHandled() throws Exception {
         Path model = write(scenes.resolve("m.obj"), MODEL);
         Path a = write(scenes.resolve("a.simp"), "file b\r\nobj m\r\n");
-        Path b = write(scenes.resolve("b.simp"), "file \"a\"\r\n");
+        Path b = write(scenes.resolve("b.simp"), "wire\r\n");
         assertEquals(List.of(a, b, model), reached(a));
     }
 
     @Test
-    void aMissingTopFileReachesNothing() {
-        assertEquals(List.of(), reached(scenes.resolve("absent.simp")));
+    void anIncludeCycleEndsTheReadingAndWhatWasReadIsWatched() throws Exception {
+        write(scenes.resolve("m.obj"), MODEL);
+        Path a = write(scenes.resolve("a.simp"), "file b\nobj m\n");
+        Path b = write(scenes.resolve("b.simp"), "file \"a\"\n");
+        assertEquals(List.of(a, b), reached(a), "a save of either file fixes the cycle, and then m is read");
     }
 
     @Test
-    void namesAreReadAsTheReaderReadsThem() {
-        assertEquals("a b", SceneRules.name(" \"a b\"  "));
-        assertEquals("cube", SceneRules.name("\tcube\r"));
-        assertEquals("cube", SceneRules.name(" cube extra"));
-        assertNull(SceneRules.name("\"cube\""), "no blank after the command word");
-        assertNull(SceneRules.name(" \"open"), "no closing quote");
-        assertNull(SceneRules.name(" \"\""), "an empty name");
-        assertNull(SceneRules.name("   "));
+    void aMissingTopFileIsWatchedForItToAppear() {
+        Path absent = scenes.resolve("absent.simp");
+        assertEquals(List.of(absent), reached(absent));
+    }
+
+    @Test
+    void namesAreTheNamesTheReaderRead() throws Exception {
+        Path spaced = write(scenes.resolve("a b.simp"), "wire\n");
+        Path top = write(scenes.resolve("top.simp"), "file \"a b\"  \nfile\tcube\r\n");
+        assertEquals(List.of(top, spaced, scenes.resolve("cube.simp"), working.resolve("cube.simp")), reached(top));
     }
 }

@@ -1,0 +1,50 @@
+package simpview.scene;
+
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+
+/**
+ * What went wrong with a file, in the words of a person: "file not found",
+ * "permission denied", "not a file but a folder". Never a Java class name.
+ */
+public final class FileProblem {
+
+    private FileProblem() {
+    }
+
+    /** Why {@code file} could not be opened or read, from the exception that said so. */
+    public static String of(Path file, IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "file not found";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (Files.isDirectory(file)) {
+            return "not a file but a folder";
+        }
+        String reason = e instanceof FileSystemException fs ? fs.getReason() : e.getMessage();
+        return reason == null || reason.isBlank() ? "the system could not read it" : lowerFirst(reason);
+    }
+
+    /**
+     * Why {@code real}, an existing path, is not a file to read as text, or
+     * null when it is one: a folder, or a device or pipe, which may stream
+     * bytes for ever.
+     */
+    public static String notAFile(Path real) {
+        if (Files.isRegularFile(real)) {
+            return null;
+        }
+        return Files.isDirectory(real) ? "not a file but a folder" : "not a regular file (a device or a pipe?)";
+    }
+
+    private static String lowerFirst(String s) {
+        return s.length() > 1 && Character.isUpperCase(s.charAt(0)) && Character.isLowerCase(s.charAt(1))
+                ? Character.toLowerCase(s.charAt(0)) + s.substring(1) : s;
+    }
+}

@@ -1,0 +1,103 @@
+package simpview.scene.simp;
+
+import simpview.geometry.Matrix4;
+import simpview.geometry.Vertex;
+import simpview.raster.DdaLineRenderer;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.raster.WireframePolygonRenderer;
+import simpview.stage.DepthCuedGeometry;
+import simpview.stage.Painter;
+import simpview.stage.PrimitiveSink;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.Drawable;
+
+/**
+ * A scene by the depth-cued rules (SPEC Part 1): each line and polygon goes
+ * through the depth-cued geometry stage to the painter, which draws it on a
+ * panel drawable that already does what the page wants done per pixel
+ * (scissor, z-buffer, depth cue). A big scene's reader may send the
+ * transformed primitives to batches instead ({@link #sendTo}), for the
+ * painter to draw on another thread.
+ */
+final class DepthCuedRules implements RuleSet {
+
+    private final Painter painter;
+    private final DepthCuedGeometry geometry;
+    private final FileStack files;
+    /** Who follows the primitives (the window's instruments), or null: nobody, at no cost. */
+    private final PrimitiveTrace trace;
+    /** The window's turn of the view, applied before the CTM (the world turns before the depth cue), or null. */
+    private final Matrix4 turn;
+    private Matrix4 lastCtm;
+    private Matrix4 turnedCtm;
+    private int traced;
+
+    /** The project's renderers on {@code panel}: DDA lines, top-left-rule fills, wireframes of DDA lines. */
+    DepthCuedRules(Drawable panel, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
+        this(new Painter(panel, new DdaLineRenderer(), new FilledPolygonRenderer(),
+                new WireframePolygonRenderer(new DdaLineRenderer())), files, trace, turn);
+    }
+
+    /** Drawing with {@code painter} (tests give it renderers that record). */
+    DepthCuedRules(Painter painter, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
+        this.painter = painter;
+        this.geometry = new DepthCuedGeometry(painter);
+        this.files = files;
+        this.trace = trace;
+        this.turn = turn;
+        painter.follow(trace);
+        sendTo(painter);
+    }
+
+    @Override
+    public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        geometry.line(viewed(ctm), xyz, rgb);
+    }
+
+    @Override
+    public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        geometry.polygon(viewed(ctm), xyz, rgb, wire);
+    }
+
+    @Override
+    public long culledCount() {
+        return geometry.culledCount();
+    }
+
+    /** turn * ctm, worked out again only when the CTM changed (it is a new object each time it does). */
+    private Matrix4 viewed(Matrix4 ctm) {
+        if (turn == null) {
+            return ctm;
+        }
+        if (ctm != lastCtm) {
+            lastCtm = ctm;
+            turnedCtm = turn.times(ctm);
+        }
+        return turnedCtm;
+    }
+
+    Painter painter() {
+        return painter;
+    }
+
+    /** From now on the transformed primitives go to {@code to} (the painter, or a reader's batches). */
+    void sendTo(PrimitiveSink to) {
+        geometry.sendTo(trace == null ? to : new Traced(to));
+    }
+
+    /** A sink that tells the trace where each primitive came from, then hands it on. */
+    private final class Traced implements PrimitiveSink {
+        private final PrimitiveSink next;
+
+        Traced(PrimitiveSink next) {
+            this.next = next;
+        }
+
+        @Override
+        public void add(int kind, double[] p) {
+            trace.read(traced++, files.current().file(), files.current().lineNumber(), kind, p, 0, Vertex.NUMBERS,
+                    kind == Painter.LINE ? 2 : 3);
+            next.add(kind, p);
+        }
+    }
+}

@@ -1,0 +1,182 @@
+package simpview.scene.simp;
+
+import java.nio.file.Path;
+import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.shading.Fog;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.stage.LitGeometry;
+import simpview.stage.PrimitiveTrace;
+
+/**
+ * A scene by the lit rules (SPEC Part 2): the lit commands set the camera,
+ * the light, the surface, the fog and the shading in its {@link LitState},
+ * each checking its numbers first, and every line, polygon and obj face goes
+ * through the lit geometry stage to the fragment stage.
+ */
+final class LitRules implements RuleSet {
+
+    private final LitState state = new LitState();
+    private final LitGeometry geometry;
+    private final ObjLibrary models;
+    private final FileStack files;
+    private final boolean traced;
+    /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
+    private String cameraAt;
+    private String firstPrimitiveAt;
+
+    /**
+     * @param fragments where the fragments go: the canvas's z-buffer (reset to -infinity) and panel
+     * @param models where obj models come from (kept by whoever draws, across pictures)
+     * @param trace who follows the primitives, or null
+     * @param turn the window's turn of the view, after W (the camera moves about the world), or null
+     */
+    LitRules(FragmentStage fragments, ObjLibrary models, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
+        this.geometry = new LitGeometry(state, fragments);
+        this.models = models;
+        this.files = files;
+        this.traced = trace != null;
+        geometry.follow(trace);
+        state.turnView(turn);
+    }
+
+    @Override
+    public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        primitive();
+        geometry.line(ctm, xyz, rgb);
+    }
+
+    @Override
+    public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        primitive();
+        geometry.polygon(ctm, xyz, rgb, wire);
+    }
+
+    @Override
+    public long culledCount() {
+        return geometry.culledCount();
+    }
+
+    /**
+     * Carries out a command of the lit rules; true when it drew (an obj).
+     * Every kind is named here, so a new command is a compile error until it
+     * is given its place.
+     */
+    boolean execute(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
+        return switch (c.kind) {
+            case CAMERA -> camera(c, ctm);
+            case OBJ -> obj(c, ctm, style);
+            case AMBIENT -> {
+                notNegative(c, 0, 3, "ambient light");
+                state.setAmbient(c.numbers[0], c.numbers[1], c.numbers[2]);
+                yield false;
+            }
+            case SURFACE -> surface(c);
+            case DEPTH -> depth(c);
+            case LIGHT -> light(c, ctm);
+            case FLAT -> shading(LitState.Shading.FLAT);
+            case GOURAUD -> shading(LitState.Shading.GOURAUD);
+            case PHONG -> shading(LitState.Shading.PHONG);
+            case PUSH, POP, SCALE, TRANSLATE, ROTATE, LINE, POLYGON, FILE, WIRE, FILLED ->
+                    throw new IllegalArgumentException(c.kind.spelling + " is the same under both rules: SimpClient's");
+        };
+    }
+
+    private boolean camera(Command c, Matrix4 ctm) throws SceneException {
+        if (cameraAt != null) {
+            throw error(c, c.commandIndex, "a second camera: a scene has one, and the first is at " + cameraAt);
+        }
+        if (firstPrimitiveAt != null) {
+            throw error(c, c.commandIndex, "the camera must come before every line, polygon and obj; "
+                    + firstPrimitiveAt + " drew one before it");
+        }
+        double[] n = c.numbers;
+        String problem = Camera.problem(n[0], n[1], n[2], n[3], n[4], n[5]);
+        if (problem != null) {
+            throw error(c, c.argumentIndex, problem);
+        }
+        Matrix4 w = ctm.inverse();
+        if (w == null) {
+            throw error(c, c.commandIndex, "the CTM at the camera cannot be inverted (a scale of 0?): "
+                    + "there is no way from the world to the camera");
+        }
+        cameraAt = files.place();
+        state.setCamera(Camera.perspective(n[0], n[1], n[2], n[3], n[4], n[5]), w);
+        return false;
+    }
+
+    private boolean obj(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
+        primitive();
+        Path file = files.locateModel(c);
+        geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
+        models.draw(file, geometry::face);
+        return true;
+    }
+
+    private boolean surface(Command c) throws SceneException {
+        notNegative(c, 0, c.count, c.count == 3 ? "surface colour" : "surface colour, ks and p");
+        double[] n = c.numbers;
+        if (c.count == 3) {
+            state.setSurface(n[0], n[1], n[2]);
+        } else {
+            state.setSurface(n[0], n[1], n[2], n[3], n[4]);
+        }
+        return false;
+    }
+
+    private boolean depth(Command c) throws SceneException {
+        double[] n = c.numbers;
+        if (!(n[0] > n[1])) {
+            throw error(c, c.argumentIndex, "fog needs near > far (camera-space z, far more negative), found near "
+                    + n[0] + " and far " + n[1]);
+        }
+        notNegative(c, 2, 5, "fog colour");
+        state.setFog(new Fog(n[0], n[1], n[2], n[3], n[4]));
+        return false;
+    }
+
+    private boolean light(Command c, Matrix4 ctm) throws SceneException {
+        notNegative(c, 0, 5, "light intensity and attenuation");
+        double[] n = c.numbers;
+        if (n[3] == 0 && n[4] == 0) {
+            throw error(c, c.argumentIndex, "attenuation A and B are both 0: the light would be infinitely bright");
+        }
+        state.addLight(ctm.get(0, 3), ctm.get(1, 3), ctm.get(2, 3), n[0], n[1], n[2], n[3], n[4]);
+        return false;
+    }
+
+    private boolean shading(LitState.Shading shading) {
+        state.setShading(shading);
+        return false;
+    }
+
+    private void notNegative(Command c, int from, int to, String what) throws SceneException {
+        for (int i = from; i < to; i++) {
+            if (c.numbers[i] < 0) {
+                throw error(c, c.argumentIndex, what + " may not be negative, found " + c.numbers[i]);
+            }
+        }
+    }
+
+    private SceneException error(Command c, int at, String problem) {
+        return files.current().error(at, problem);
+    }
+
+    /** Notes the first primitive, which no camera may follow; tells a followed stage where it stands. */
+    private void primitive() {
+        if (firstPrimitiveAt == null) {
+            firstPrimitiveAt = files.place();
+        }
+        if (traced) {
+            geometry.from(files.current().file(), files.current().lineNumber());
+        }
+    }
+
+    /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
+    double[] shownCentre() {
+        return geometry.shownCentre();
+    }
+}

@@ -1,0 +1,23 @@
+package simpview.scene.simp;
+
+import simpview.geometry.Matrix4;
+import simpview.scene.SceneException;
+
+/**
+ * What a scene's primitives do under the rules it is drawn by: the
+ * depth-cued rules of SPEC Part 1 ({@link DepthCuedRules}) or the lit rules
+ * of Part 2 ({@link LitRules}, which also carries out the lit commands).
+ * {@link SimpClient} holds exactly one, and every command that is the same
+ * under both rules is its own.
+ */
+sealed interface RuleSet permits DepthCuedRules, LitRules {
+
+    /** A line, its vertices in object space, transformed by {@code ctm}; rgb null when it has no colours. */
+    void line(Matrix4 ctm, double[] xyz, double[] rgb) throws SceneException;
+
+    /** A triangle, likewise; {@code wire} for its outline. */
+    void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) throws SceneException;
+
+    /** Primitives skipped because they lie wholly outside one plane of the view volume. */
+    long culledCount();
+}

@@ -1,0 +1,223 @@
+package simpview.scene.simp;
+
+import java.nio.file.Path;
+import java.util.List;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.shading.FragmentStage;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+
+/**
+ * The one way from a SIMP scene file to its pixels: the window, the pages,
+ * {@code render}, {@code compare} and the benchmarks all draw a scene here.
+ * Read top to bottom, one scene is:
+ *
+ * <ol>
+ * <li>a canvas its caller has just cleared ({@link PageCanvas#clear}): white
+ *     margins, black panel, the z-buffer at the far plane;
+ * <li>the files read once each, command by command ({@link SimpInterpreter},
+ *     {@link FileStack}), every command carried out by {@link SimpClient}:
+ *     the CTM and the stacks, then each primitive by the scene's rules;
+ * <li>depth-cued rules (SPEC Part 1, {@link DepthCuedRules}): world space,
+ *     culling, panel space, DDA lines and top-left-rule triangles, through
+ *     the scissor, the z-buffer and the depth cue onto the panel;
+ * <li>or, from the first command of the lit rules on (SPEC Part 2,
+ *     {@link LitRules}): camera space, culling and the clipper, perspective,
+ *     the rasterizers' fragments, then per pixel the depth test, the lighting,
+ *     the fog and the bytes ({@link FragmentStage}), on a z-buffer that
+ *     starts at -infinity;
+ * <li>what was drawn: which rules, why, and every file read or looked for.
+ * </ol>
+ *
+ * Which rules is decided while reading, by the first lit command met, so no
+ * file is opened twice to decide it; only a scene whose first lit command
+ * comes after a primitive (rare: a camera must come first) is drawn a second
+ * time, lit, from the start.
+ */
+public final class ScenePipeline {
+
+    /** Which rules a scene may be drawn by. */
+    public enum Rules {
+        /** SPEC Part 2: lit when any file it reads holds a lit command, else depth-cued. */
+        BY_COMMANDS,
+        /** Always depth-cued (the eight pages): lit commands are ignored, with a warning. */
+        DEPTH_CUED,
+        /**
+         * Depth-cued, and not drawn at all when it turns out lit (depth-cue
+         * colours were asked for, which a lit scene cannot take: the caller
+         * says so, naming {@link Drawn#litBecause}).
+         */
+        DEPTH_CUED_OR_NOTHING,
+        /** Lit from the first command, whatever the files hold (tests and benchmarks of the lit rules). */
+        LIT
+    }
+
+    /**
+     * How a scene is drawn.
+     *
+     * @param near the depth cue's colour at z = 0
+     * @param far its colour at z = -200
+     * @param ownColours depth-cued scenes in their vertices' own colours (white where none), without the cue
+     * @param rules which rules the scene may be drawn by
+     * @param models where lit scenes' obj models come from: kept by whoever draws, across pictures
+     * @param workingDir where {@code file} and {@code obj} names are looked for after the including
+     *     file's folder (the course's programs looked in the working directory), absolute
+     */
+    public record Options(Rgb near, Rgb far, boolean ownColours, Rules rules, ObjLibrary models, Path workingDir) {
+
+        /** A scene as its commands say, depth-cued from white to black when it is not lit. */
+        public static Options byCommands(ObjLibrary models) {
+            return new Options(Rgb.WHITE, Rgb.BLACK, false, Rules.BY_COMMANDS, models, processWorkingDir());
+        }
+
+        /** By the lit rules from the first command on. */
+        public static Options lit(ObjLibrary models) {
+            return byCommands(models).withRules(Rules.LIT);
+        }
+
+        /** A page's scene: always depth-cued from {@code near} to black. */
+        public static Options depthCued(Rgb near, ObjLibrary models) {
+            return byCommands(models).withRules(Rules.DEPTH_CUED).withCue(near, Rgb.BLACK);
+        }
+
+        private static Path processWorkingDir() {
+            return Path.of("").toAbsolutePath();
+        }
+
+        public Options withCue(Rgb newNear, Rgb newFar) {
+            return new Options(newNear, newFar, ownColours, rules, models, workingDir);
+        }
+
+        public Options withOwnColours(boolean own) {
+            return new Options(near, far, own, rules, models, workingDir);
+        }
+
+        public Options withRules(Rules newRules) {
+            return new Options(near, far, ownColours, newRules, models, workingDir);
+        }
+
+        public Options withWorkingDir(Path dir) {
+            return new Options(near, far, ownColours, rules, models, dir.toAbsolutePath());
+        }
+    }
+
+    /**
+     * What a scene drew.
+     *
+     * @param lit true when it was drawn (or, not drawn, would have been) by the lit rules
+     * @param litBecause where its first lit command stands, "pageA.simp:3 camera"; null when depth-cued
+     * @param drawn false only for {@link Rules#DEPTH_CUED_OR_NOTHING} and a lit scene: nothing was drawn
+     * @param files every file it read or looked for, in the order met (see {@link SceneMonitor#reached})
+     */
+    public record Drawn(boolean lit, String litBecause, boolean drawn, List<Path> files) {
+    }
+
+    private ScenePipeline() {
+    }
+
+    /**
+     * Draws the scene in {@code file} on {@code canvas}, which has just been
+     * cleared, from a fresh state (identity CTM, empty stacks, style filled).
+     * On an error what was drawn
+     * before it stays and the error is thrown on; the monitor is told the
+     * files reached either way.
+     */
+    public static Drawn draw(Path file, PageCanvas canvas, Options options, SceneMonitor monitor)
+            throws SceneException {
+        FileStack files = new FileStack(FileStack.SMALL_FILE, options.workingDir());
+        String litAfterDrawing = null;
+        try {
+            SimpClient client = options.rules() == Rules.LIT ? litFromTheStart(canvas, options, files, monitor)
+                    : depthCuedFirst(canvas, options, files, monitor);
+            new SimpInterpreter(client, monitor).run(file);
+            return drawn(client, client.litBecause(), files, monitor);
+        } catch (SceneTurnsLit turn) {
+            if (options.rules() == Rules.DEPTH_CUED_OR_NOTHING) {
+                canvas.clear();
+                return new Drawn(true, turn.because, false, files.reached());
+            }
+            litAfterDrawing = turn.because;
+        } finally {
+            if (litAfterDrawing == null) {
+                monitor.reached(files.reached());
+            }
+        }
+        return drawnAgainLit(file, canvas, options, monitor, litAfterDrawing);
+    }
+
+    /** A scene that turned lit after it had drawn depth-cued: the whole of it again, lit from its first command. */
+    private static Drawn drawnAgainLit(Path file, PageCanvas canvas, Options options, SceneMonitor monitor,
+            String litBecause) throws SceneException {
+        canvas.clear();
+        PrimitiveTrace trace = monitor.trace();
+        if (trace != null) {
+            trace.restart();
+        }
+        FileStack files = new FileStack(FileStack.SMALL_FILE, options.workingDir());
+        try {
+            SimpClient client = litFromTheStart(canvas, options, files, monitor);
+            new SimpInterpreter(client, monitor).run(file);
+            return drawn(client, litBecause, files, monitor);
+        } finally {
+            monitor.reached(files.reached());
+        }
+    }
+
+    /** A client that draws depth-cued until the scene's first lit command (what then depends on the options). */
+    private static SimpClient depthCuedFirst(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
+        Drawable panel = options.ownColours() ? canvas.depthTested() : canvas.depthCued(options.near(), options.far());
+        DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
+        SimpClient.OnLit onLit = switch (options.rules()) {
+            case BY_COMMANDS, LIT -> SimpClient.OnLit.TURN_LIT;
+            case DEPTH_CUED -> SimpClient.OnLit.IGNORE;
+            case DEPTH_CUED_OR_NOTHING -> SimpClient.OnLit.STOP;
+        };
+        return new SimpClient(files, cued, onLit, () -> lit(canvas, options, files, monitor));
+    }
+
+    /** A client by the lit rules from its first command. */
+    private static SimpClient litFromTheStart(PageCanvas canvas, Options options, FileStack files,
+            SceneMonitor monitor) {
+        return new SimpClient(files, lit(canvas, options, files, monitor), SimpClient.OnLit.TURN_LIT,
+                () -> lit(canvas, options, files, monitor));
+    }
+
+    /** The lit rules on the canvas: its z-buffer from -infinity, fragments onto its panel. */
+    private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
+        canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
+        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), canvas.litPanel());
+        return new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
+    }
+
+    /**
+     * A depth-cued scene onto any panel drawable that already does what is
+     * wanted per pixel (tests and benchmarks give scissors, recorders, chains
+     * of their own); lit commands are ignored, with a warning. The steps are
+     * those of {@link #draw}'s depth-cued rules.
+     */
+    public static void drawDepthCued(Path file, Drawable panel, SceneMonitor monitor) throws SceneException {
+        FileStack files = new FileStack();
+        try {
+            DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
+            new SimpInterpreter(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor)
+                    .run(file);
+        } finally {
+            monitor.reached(files.reached());
+        }
+    }
+
+    private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor) {
+        if (!client.drew()) {
+            monitor.warning(files.reached().get(0).getFileName()
+                    + " drew nothing: no line, polygon or obj in it or in the files it includes");
+        }
+        double[] centre = client.shownCentre();
+        if (centre != null) {
+            monitor.shownCentre(centre);
+        }
+        return new Drawn(client.isLit(), litBecause, true, files.reached());
+    }
+}

@@ -1,0 +1,151 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+
+/** The one way from a scene file to its pixels: which rules, and what a user is told. */
+class ScenePipelineTest {
+
+    @TempDir
+    Path dir;
+
+    private final List<String> warnings = new ArrayList<>();
+    private final SceneMonitor monitor = new SceneMonitor() {
+        @Override
+        public void warning(String message) {
+            warnings.add(message);
+        }
+    };
+
+    private Path write(String name, String... lines) throws IOException {
+        return Files.writeString(dir.resolve(name), String.join("\n", lines) + "\n");
+    }
+
+    private ScenePipeline.Drawn draw(Path file, PageCanvas canvas, ScenePipeline.Rules rules) throws SceneException {
+        canvas.clear();
+        return ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()).withRules(rules),
+                monitor);
+    }
+
+    @Test
+    void aLitCommandBeforeAnyPrimitiveTurnsTheSceneLitWhereItStands() throws Exception {
+        Path scene = write("a.simp", "translate 0 0 -5", "ambient 1 1 1", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
+        PageCanvas byCommands = new PageCanvas();
+        ScenePipeline.Drawn drawn = draw(scene, byCommands, ScenePipeline.Rules.BY_COMMANDS);
+        assertTrue(drawn.lit());
+        assertEquals("a.simp:2 ambient", drawn.litBecause());
+        PageCanvas lit = new PageCanvas();
+        draw(scene, lit, ScenePipeline.Rules.LIT);
+        assertArrayEquals(lit.image().getRGB(0, 0, 750, 750, null, 0, 750),
+                byCommands.image().getRGB(0, 0, 750, 750, null, 0, 750), "the same picture as lit from the start");
+    }
+
+    @Test
+    void aLitCommandAfterAPrimitiveDrawsTheSceneAgainLit() throws Exception {
+        Path scene = write("late.simp", "polygon (-50 -50 -5) (50 -50 -5) (0 50 -5)", "surface 0 0 1",
+                "ambient 1 1 1", "polygon (-90 -90 -9) (-60 -90 -9) (-75 -60 -9)");
+        PageCanvas byCommands = new PageCanvas();
+        ScenePipeline.Drawn drawn = draw(scene, byCommands, ScenePipeline.Rules.BY_COMMANDS);
+        assertTrue(drawn.lit());
+        assertEquals("late.simp:2 surface", drawn.litBecause());
+        PageCanvas lit = new PageCanvas();
+        draw(scene, lit, ScenePipeline.Rules.LIT);
+        assertArrayEquals(lit.image().getRGB(0, 0, 750, 750, null, 0, 750),
+                byCommands.image().getRGB(0, 0, 750, 750, null, 0, 750), "nothing of the depth-cued start is left");
+        assertEquals(List.of(scene), drawn.files());
+    }
+
+    @Test
+    void withDepthCueColoursALitSceneIsNotDrawnAndSaysWhy() throws Exception {
+        Path scene = write("lit.simp", "# a lit scene", "camera -1 -1 1 1 -1 -100", "polygon (0 0 -5) (1 0 -5) (0 1 -5)");
+        PageCanvas canvas = new PageCanvas();
+        ScenePipeline.Drawn drawn = draw(scene, canvas, ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING);
+        assertFalse(drawn.drawn());
+        assertTrue(drawn.lit());
+        assertEquals("lit.simp:2 camera", drawn.litBecause());
+    }
+
+    @Test
+    void thePagesIgnoreLitCommandsWithAWarning() throws Exception {
+        Path scene = write("page.simp", "ambient 1 1 1", "polygon (-50 -50 -50) (50 -50 -50) (0 50 -50)");
+        ScenePipeline.Drawn drawn = draw(scene, new PageCanvas(), ScenePipeline.Rules.DEPTH_CUED);
+        assertFalse(drawn.lit());
+        assertEquals(List.of("page.simp:1 ambient: commands of lit scenes were ignored in this depth-cued drawing"
+                + " (the first of them)"), warnings);
+    }
+
+    @Test
+    void anEmptySceneSaysItDrewNothing() throws Exception {
+        Path scene = write("empty.simp", "# nothing here yet", "", "wire");
+        draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("empty.simp drew nothing: no line, polygon or obj in it or in the files it includes"),
+                warnings);
+    }
+
+    @Test
+    void aSceneMayBeNamedWithoutItsExtension() throws Exception {
+        Path scene = write("house.simp", "polygon (-50 -50 -50) (50 -50 -50) (0 50 -50)");
+        ScenePipeline.Drawn drawn = draw(dir.resolve("house"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(scene), drawn.files());
+        assertEquals(List.of(), warnings);
+    }
+
+    @Test
+    void aProgramRenamedSimpIsNotATextFileAndNoneOfItsBytesAreShown() throws Exception {
+        byte[] bytes = new byte[4096];
+        new Random(19).nextBytes(bytes);
+        bytes[0] = 0x7F;
+        bytes[1] = 'E';
+        bytes[2] = 'L';
+        bytes[3] = 'F';
+        Path scene = Files.write(dir.resolve("a.out.simp"), bytes);
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(e.problem().startsWith("not a text file: byte 0x7F at offset 0 (line 1)"), e.problem());
+        assertTrue(e.getMessage().length() < 300, e.getMessage());
+    }
+
+    @Test
+    void aNonTextByteFurtherOnIsPlacedByItsOffset() throws Exception {
+        Path scene = Files.writeString(dir.resolve("late.simp"), "wire\npolygon (0 0 0) (1 0 0) (0 1 0)\nsca\u0001le 1 1 1\n");
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals("not a text file: byte 0x01 at offset 40 (line 3); a SIMP file is lines of text", e.problem());
+    }
+
+    @Test
+    void anObjNamingAFolderSaysSoInWords() throws Exception {
+        Files.createDirectory(dir.resolve("models.obj"));
+        Path scene = write("lit.simp", "ambient 1 1 1", "obj \"models\"");
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(e.problem().contains("not a file but a folder"), e.problem());
+        assertFalse(e.getMessage().contains("Exception"), e.getMessage());
+    }
+
+    @Test
+    void theCueColoursArePassedOn() throws Exception {
+        Path scene = write("near.simp", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
+        PageCanvas canvas = new PageCanvas();
+        canvas.clear();
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary())
+                .withCue(new Rgb(0, 1, 0), Rgb.BLACK), monitor);
+        assertEquals(0x00FF00, canvas.image().getRGB(375, 400) & 0xFFFFFF, "green at z = 0");
+    }
+}
