@@ -62,7 +62,7 @@ public class Inspector {
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
-        Path own = PageContext.defaultSimpDir();
+        Path own = PageContext.PROJECT_SCENES;
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         record = inspector.equals("record");
         context = new PageContext(PageContext.DEFAULT_SEED, course, own, record ? tracing : SceneMonitor.NONE);

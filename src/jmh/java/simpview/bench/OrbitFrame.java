@@ -105,7 +105,7 @@ public class OrbitFrame {
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
-        context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.defaultSimpDir(), monitor);
+        context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.PROJECT_SCENES, monitor);
         renderer.canvas().recordProvenance(record ? provenance : null);
         double[] centre = {0, 0, -100};
         if (!scene.equals("page7")) {

@@ -42,7 +42,7 @@ public class Pages {
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
-        Path own = PageContext.defaultSimpDir();
+        Path own = PageContext.PROJECT_SCENES;
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, own, SceneMonitor.NONE);
         renderer.render(page, context); // fails the trial at once if the page cannot be drawn

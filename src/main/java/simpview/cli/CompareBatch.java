@@ -138,7 +138,10 @@ public final class CompareBatch {
     /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Object> drawn, Path outDir) {
-        ExecutorService workers = Executors.newFixedThreadPool(Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())));
+        AtomicInteger named = new AtomicInteger();
+        ExecutorService workers = Executors.newFixedThreadPool(
+                Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
+                task -> new Thread(task, "simpview-compare-" + named.incrementAndGet()));
         AtomicInteger finished = new AtomicInteger();
         try {
             List<Future<BatchRow>> rows = new ArrayList<>();

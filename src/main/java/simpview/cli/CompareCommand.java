@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -54,6 +55,10 @@ public final class CompareCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
+
+    /** The top command, which knows where the project's own scenes are. */
+    @ParentCommand
+    private SimpviewCommand parent;
 
     @Parameters(arity = "0..1", paramLabel = "IMAGE", description = "the picture to compare (PNG, JPEG, GIF or BMP)")
     private Path image;
@@ -211,7 +216,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private PageContext context() {
-        return PageDrawing.context(seed, simpDir, monitor());
+        return PageDrawing.context(parent.ownScenes(), seed, simpDir, monitor());
     }
 
     private SceneMonitor monitor() {

@@ -2,6 +2,7 @@ package simpview.cli;
 
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine;
@@ -23,7 +24,7 @@ public final class Main {
     public static void main(String[] args) {
         PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
         PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
-        OwnScenes.locate();
+        Path ownScenes = OwnScenes.folder();
         String[] line;
         try {
             line = withAppArgs(System.getProperty(APP_ARGS), args);
@@ -32,7 +33,7 @@ public final class Main {
             System.exit(ExitCode.USAGE_ERROR);
             return;
         }
-        SimpviewCommand command = new SimpviewCommand(SimpviewCommand::displayMissing);
+        SimpviewCommand command = new SimpviewCommand(SimpviewCommand::displayMissing, ownScenes);
         int code = execute(command, line, out, err);
         // An open window keeps the program alive; it ends when the window closes.
         if (!command.openedWindow()) {
@@ -66,8 +67,8 @@ public final class Main {
                 .setErr(err)
                 .setExecutionExceptionHandler(Main::reportUnexpected)
                 .setParameterExceptionHandler(Main::reportUsageError);
-        sayWhereTheScenesAre(commandLine);
-        sayWhereTheScenesAre(commandLine.getSubcommands().get("render"));
+        sayWhereTheScenesAre(commandLine, command.ownScenes());
+        sayWhereTheScenesAre(commandLine.getSubcommands().get("render"), command.ownScenes());
         // picocli's own exit code for invalid input is already ExitCode.USAGE_ERROR (2).
         int code = commandLine.execute(args);
         out.flush();
@@ -93,8 +94,8 @@ public final class Main {
     }
 
     /** Ends --help with the scene folder the defaults really read, as an absolute path. */
-    private static void sayWhereTheScenesAre(CommandLine commandLine) {
-        String folder = PageContext.defaultSimpDir().toAbsolutePath().normalize().toString().replace("%", "%%");
+    private static void sayWhereTheScenesAre(CommandLine commandLine, Path ownScenes) {
+        String folder = ownScenes.toAbsolutePath().normalize().toString().replace("%", "%%");
         List<String> footer = new ArrayList<>(List.of(commandLine.getCommandSpec().usageMessage().footer()));
         footer.add("");
         footer.add("Scene folder: " + folder);

@@ -17,33 +17,39 @@ import simpview.pages.PageContext;
  * unpacked into a fresh temporary folder (removed when simpview exits), so
  * that scenes that include each other, the file dialog and error messages
  * all see ordinary files. The start scripts and {@code gradle run} name
- * their folder with -Dsimpview.simpDir, which always wins.
+ * their folder with -Dsimpview.simpDir, which wins; the entry point asks
+ * here once and hands the folder on as a value ({@link SimpviewCommand}).
  */
 public final class OwnScenes {
 
-    static final String PROPERTY = "simpview.simpDir";
+    /** How a launcher (the start scripts, {@code gradle run}) names the scenes' folder; read only here. */
+    static final String LAUNCHER_PROPERTY = "simpview.simpDir";
     private static final String FOLDER = "simp/";
 
     private OwnScenes() {
     }
 
-    /** Sets -Dsimpview.simpDir to the unpacked scenes when running from a jar that has them. */
-    static void locate() {
-        if (System.getProperty(PROPERTY) != null) {
-            return;
+    /**
+     * Where the project's own scenes are: the folder the launcher named,
+     * else the scenes packed in the running jar (unpacked), else simp/ in the
+     * working directory (a run from the repository's folder, or an IDE's).
+     */
+    static Path folder() {
+        String named = System.getProperty(LAUNCHER_PROPERTY);
+        if (named != null) {
+            return Path.of(named);
         }
         Path jar = runningJar();
         if (jar == null) {
-            return;
+            return PageContext.PROJECT_SCENES;
         }
         try {
             Path dir = unpack(jar);
-            if (dir != null) {
-                System.setProperty(PROPERTY, dir.toString());
-            }
+            return dir != null ? dir : PageContext.PROJECT_SCENES;
         } catch (IOException e) {
             System.err.println("simpview: cannot unpack the scenes of " + jar + " (" + e.getMessage()
-                    + "); looking for them in " + PageContext.defaultSimpDir().toAbsolutePath());
+                    + "); looking for them in " + PageContext.PROJECT_SCENES.toAbsolutePath());
+            return PageContext.PROJECT_SCENES;
         }
     }
 

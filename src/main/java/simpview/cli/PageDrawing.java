@@ -63,8 +63,8 @@ public final class PageDrawing {
     }
 
     /** The pages' context from the command line's options (null where not given), warnings to {@code monitor}. */
-    static PageContext context(Long seed, Path simpDir, SceneMonitor monitor) {
-        PageContext context = PageContext.defaults().withMonitor(monitor);
+    static PageContext context(Path ownScenes, Long seed, Path simpDir, SceneMonitor monitor) {
+        PageContext context = PageContext.of(ownScenes).withMonitor(monitor);
         if (seed != null) {
             context = context.withSeed(seed);
         }

@@ -14,6 +14,7 @@ import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
@@ -67,6 +68,10 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
+
+    /** The top command, which knows where the project's own scenes are. */
+    @ParentCommand
+    private SimpviewCommand parent;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     private What what;
@@ -308,7 +313,7 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private PageContext context() {
-        return PageDrawing.context(seed, simpDir, monitor());
+        return PageDrawing.context(parent.ownScenes(), seed, simpDir, monitor());
     }
 
     private SceneMonitor monitor() {

@@ -50,10 +50,23 @@ public final class SimpviewCommand implements Callable<Integer> {
     private List<Path> scenes = new ArrayList<>();
 
     private final BooleanSupplier displayMissing;
+    /** Where the project's own scenes are, as the entry point found them ({@link OwnScenes}). */
+    private final Path ownScenes;
     private boolean openedWindow;
 
+    /** Run from the repository's folder: the project's scenes in simp/. */
     SimpviewCommand(BooleanSupplier displayMissing) {
+        this(displayMissing, PageContext.PROJECT_SCENES);
+    }
+
+    SimpviewCommand(BooleanSupplier displayMissing, Path ownScenes) {
         this.displayMissing = displayMissing;
+        this.ownScenes = ownScenes;
+    }
+
+    /** Where the project's own scenes are: what the subcommands' pages read too. */
+    Path ownScenes() {
+        return ownScenes;
     }
 
     /** No display, or one that cannot be reached (a DISPLAY whose X server is gone). */
@@ -99,8 +112,8 @@ public final class SimpviewCommand implements Callable<Integer> {
                     + "(see 'simpview render --help')");
             return ExitCode.USAGE_ERROR;
         }
-        WindowOptions options = new WindowOptions(seed,
-                simpDir == null ? PageContext.defaultSimpDir() : simpDir, openAtStart(), sceneList());
+        WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
+                sceneList(), ownScenes);
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
         openedWindow = true;
         return ExitCode.OK;

@@ -17,18 +17,26 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
 
     public static final long DEFAULT_SEED = 361;
 
-    /** The project's scene folder: -Dsimpview.simpDir (set by the launchers), else ./simp. */
+    /**
+     * The project's own scenes as seen from the repository's folder (where
+     * the tests, the benchmarks and {@code gradle run} work). An installed or
+     * packaged simpview is told its own folder by its entry point instead.
+     */
+    public static final Path PROJECT_SCENES = Path.of("simp");
+
     /** The pages as they are meant to look: depth-cued. */
     public PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
         this(seed, simpDir, ownSimpDir, monitor, false);
     }
 
-    public static Path defaultSimpDir() {
-        return Path.of(System.getProperty("simpview.simpDir", "simp"));
+    /** The defaults with the project's scenes in {@link #PROJECT_SCENES}. */
+    public static PageContext defaults() {
+        return of(PROJECT_SCENES);
     }
 
-    public static PageContext defaults() {
-        return new PageContext(DEFAULT_SEED, defaultSimpDir(), defaultSimpDir(), SceneMonitor.NONE);
+    /** The defaults with the project's own scenes (and, until told otherwise, the course's) in {@code ownScenes}. */
+    public static PageContext of(Path ownScenes) {
+        return new PageContext(DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
     }
 
     public PageContext withSeed(long newSeed) {

@@ -476,7 +476,6 @@ public final class SimpviewWindow {
         turnWaiting = false;
         pending = new RenderJob(view, options.pageContext(), settings);
         status.watch(pending);
-        pending.countLinesAhead();
         renderer.submit(pending, this::finished);
     }
 

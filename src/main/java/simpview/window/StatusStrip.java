@@ -120,13 +120,13 @@ public final class StatusStrip {
         }
         working.setText("Drawing " + describe(watched.view()) + "…");
         long lines = watched.linesSoFar();
-        long total = watched.linesInTopFile();
-        if (total > 0) {
-            // Lines of included files count too: a scene full of them can pass its top file's count.
-            int percent = (int) Math.min(99, 100 * lines / total);
+        double share = watched.topFileShare();
+        if (share > 0) {
+            // The share of the top file's bytes: included files are read in between.
+            int percent = (int) Math.min(99, 100 * share);
             bar.setIndeterminate(false);
             bar.setValue(percent);
-            bar.setString(String.format("%,d of about %,d lines read (%d %%)", lines, total, percent));
+            bar.setString(String.format("%,d lines read (%d %% of the scene file)", lines, percent));
         } else {
             bar.setString(String.format("%,d lines read", lines));
             bar.setIndeterminate(true);

@@ -12,11 +12,17 @@ import simpview.pages.PageContext;
  * @param simpDir where the course's page6.simp to page8.simp are looked for
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
+ * @param ownScenes where the project's own scenes (pages 4 and 5) are
  */
-public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
+public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
+    }
+
+    /** Started from the repository's folder: the project's scenes in simp/. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList) {
+        this(seed, simpDir, scene, sceneList, PageContext.PROJECT_SCENES);
     }
 
     /** The eight pages, and perhaps a scene to open at start. */
@@ -25,14 +31,14 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     static WindowOptions defaults() {
-        return new WindowOptions(PageContext.DEFAULT_SEED, PageContext.defaultSimpDir(), Optional.empty());
+        return new WindowOptions(PageContext.DEFAULT_SEED, PageContext.PROJECT_SCENES, Optional.empty());
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes);
     }
 
     PageContext pageContext() {
-        return PageContext.defaults().withSeed(seed).withSimpDir(simpDir);
+        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir);
     }
 }

@@ -346,6 +346,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         SceneDrawer halfWayUntilSeen = (file, canvas, options, monitor) -> {
             for (long read = 1000; read <= lines; read += 1000) {
                 monitor.linesRead(read);
+                monitor.topFileRead((double) read / lines);
                 while (read == lines / 2 && !seen.get()) {
                     if (monitor.cancelled()) {
                         throw new simpview.scene.simp.SceneCancelledException();
@@ -364,11 +365,11 @@ public class InstrumentsWindowTest extends WindowTestCase {
                 halfWayUntilSeen);
         driver.onEdt(() -> window().openScene(scene));
         driver.awaitEdt(() -> window().status().showingProgress()
-                && window().status().progressText().contains("of about 40,000 lines read"),
+                && window().status().progressText().contains("lines read (50 % of the scene file)"),
                 "a fraction on the progress bar");
         String said = driver.onEdt(() -> window().status().progressText());
         seen.set(true);
-        assertTrue(said.matches("[0-9,]+ of about 40,000 lines read \\(\\d+ %\\)"), said);
+        assertEquals("20,000 lines read (50 % of the scene file)", said);
         driver.awaitShown(new View.OfScene(scene));
     }
 

@@ -5,7 +5,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.FileTime;
+import java.util.HashSet;
 import java.util.Iterator;
+import java.util.Set;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -98,6 +100,17 @@ public final class ObjLibrary {
      *     before it have gone to the sink), or the sink threw
      */
     public ObjCounts draw(Path file, ObjSink sink) throws SceneException {
+        return draw(file, sink, new HashSet<>());
+    }
+
+    /**
+     * As {@link #draw(Path, ObjSink)}, for one of the pictures a scene draws:
+     * a file whose bytes this picture has read already ({@code readThisPicture},
+     * the picture's own set, kept by its caller) is replayed on its stamp
+     * alone, so a model drawn twice in one picture is read once. A save while
+     * the picture is drawn is seen by the next one.
+     */
+    public ObjCounts draw(Path file, ObjSink sink, Set<Path> readThisPicture) throws SceneException {
         long lookedAt = System.currentTimeMillis();
         Path real;
         Stamp stamp;
@@ -116,9 +129,10 @@ public final class ObjLibrary {
         boolean settled = stamp.modified().toMillis() < lookedAt - settleMillis;
         Kept kept = kept(real, stamp);
         long checksum = 0;
-        if (kept != null && kept.settled()) {
+        if (kept != null && (kept.settled() || readThisPicture.contains(real))) {
             return replay(kept.model(), sink);
         }
+        readThisPicture.add(real);
         if (kept != null) {
             checksum = checksum(file, real);
             if (kept.checksum() == checksum) {

@@ -49,6 +49,8 @@ final class FileStack implements AutoCloseable {
     private final List<Path> reached = new ArrayList<>();
     private long cachedBytes;
     private long linesOfFinishedFiles;
+    /** The top file's size when it was opened, for the share of it read so far. */
+    private long topFileBytes;
 
     FileStack() {
         this(SMALL_FILE);
@@ -70,6 +72,11 @@ final class FileStack implements AutoCloseable {
         Path file = withExtension(named);
         reach(file);
         Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
+        try {
+            topFileBytes = Files.size(real);
+        } catch (IOException e) {
+            topFileBytes = 0; // reading reports the problem properly
+        }
         push(open(file, real), real);
     }
 
@@ -327,6 +334,14 @@ final class FileStack implements AutoCloseable {
             open += r.holdsFile() ? 1 : 0;
         }
         return open;
+    }
+
+    /** The share of the top file's bytes read so far, 0 to 1: what a progress bar shows. */
+    double topFileShare() {
+        if (readers.isEmpty()) {
+            return 1;
+        }
+        return topFileBytes <= 0 ? 0 : Math.min(1, (double) readers.get(0).bytesRead() / topFileBytes);
     }
 
     /** Physical lines read so far over all files. */

@@ -1,6 +1,8 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.Set;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
@@ -22,6 +24,8 @@ final class LitRules implements RuleSet {
     private final LitState state = new LitState();
     private final LitGeometry geometry;
     private final ObjLibrary models;
+    /** The obj files this picture has read: a model drawn again is not read again ({@link ObjLibrary#draw}). */
+    private final Set<Path> modelsRead = new HashSet<>();
     private final FileStack files;
     private final boolean traced;
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
@@ -112,7 +116,7 @@ final class LitRules implements RuleSet {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
-        models.draw(file, geometry::face);
+        models.draw(file, geometry::face, modelsRead);
         return true;
     }
 

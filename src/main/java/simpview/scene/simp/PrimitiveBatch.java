@@ -21,6 +21,8 @@ final class PrimitiveBatch implements PrimitiveSink {
     private int size;
     /** Lines read over all files when the batch was closed. */
     long linesRead;
+    /** The share of the top file read when the batch was handed over (FileStack#topFileShare). */
+    double topFileShare;
     /** True when the scene ended with this batch. */
     boolean last;
     /** '{' left open at the end of the scene (when {@link #last}). */

@@ -65,6 +65,7 @@ final class ReadAhead implements AutoCloseable {
                 client.execute(c);
                 if (++commands % PrimitiveBatch.CAPACITY == 0) {
                     batch.linesRead = files.linesRead();
+                    batch.topFileShare = files.topFileShare();
                     full.add(batch); // never blocks: the queue has room for every batch
                     batch = null; // handed over: a failure in fresh() must not touch it
                     batch = fresh();

@@ -13,6 +13,14 @@ public interface SceneMonitor {
     default void linesRead(long lines) {
     }
 
+    /**
+     * Called with each {@link #linesRead}: the share of the top file's bytes
+     * read so far, 0 to 1 (the fraction a progress bar shows; included files
+     * are read in between).
+     */
+    default void topFileRead(double share) {
+    }
+
     /** Polled now and then; true stops the scene with a {@link SceneCancelledException}. */
     default boolean cancelled() {
         return false;

@@ -58,7 +58,7 @@ public final class SimpInterpreter {
             boolean firstDrawn = false;
             while (next(files, c)) {
                 if ((++commands & POLL_MASK) == 0) {
-                    report(files.linesRead());
+                    report(files.linesRead(), files.topFileShare());
                 }
                 if (!firstDrawn && client.drew()) {
                     firstDrawn = true;
@@ -116,14 +116,15 @@ public final class SimpInterpreter {
                     finish(file, batch.linesRead, batch.openBraces, batch.warnings);
                     return;
                 }
-                report(batch.linesRead);
+                report(batch.linesRead, batch.topFileShare);
                 ahead.recycle(batch);
             }
         }
     }
 
-    private void report(long linesRead) {
+    private void report(long linesRead, double topFileShare) {
         monitor.linesRead(linesRead);
+        monitor.topFileRead(topFileShare);
         if (monitor.cancelled()) {
             throw new SceneCancelledException();
         }
@@ -131,6 +132,7 @@ public final class SimpInterpreter {
 
     private void finish(Path file, long linesRead, int openBraces, List<String> warnings) {
         monitor.linesRead(linesRead);
+        monitor.topFileRead(1);
         for (String w : warnings) {
             monitor.warning(w);
         }

@@ -102,6 +102,11 @@ public final class SimpReader implements AutoCloseable {
         return linesRead;
     }
 
+    /** Where the line last read starts in the file, in bytes: how far the reading has come. */
+    long bytesRead() {
+        return source.lineOffset();
+    }
+
     /**
      * Reads the next command into {@code into}.
      *

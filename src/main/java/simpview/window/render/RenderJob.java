@@ -38,9 +38,7 @@ public final class RenderJob implements SceneMonitor {
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private volatile long linesRead;
     private volatile boolean cancelled;
-    /** Files smaller than this are read before a progress bar shows: not counted. */
-    private static final long COUNT_FROM_BYTES = 1 << 20;
-    private volatile long topFileLines = -1;
+    private volatile double topFileShare = -1;
     /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
     private PrimitiveLog trace;
     /** A lit scene's centre of what was shown, in camera space, when told; the render thread's, like trace. */
@@ -78,31 +76,9 @@ public final class RenderJob implements SceneMonitor {
         return linesRead;
     }
 
-    /** Lines of the scene's top file, once counted (for the progress bar's fraction), or -1. */
-    public long linesInTopFile() {
-        return topFileLines;
-    }
-
-    /**
-     * Counts the top file's lines on a thread of its own, so that the
-     * progress bar can show a fraction; the drawing does not wait for it.
-     * Only for files big enough to show a progress bar at all.
-     */
-    public void countLinesAhead() {
-        Path top = topFile();
-        if (top == null) {
-            return;
-        }
-        try {
-            if (Files.size(top) < COUNT_FROM_BYTES) {
-                return;
-            }
-        } catch (IOException | SecurityException e) {
-            return;
-        }
-        Thread counter = new Thread(() -> topFileLines = LineCount.of(top, () -> cancelled), "simpview-line-count");
-        counter.setDaemon(true);
-        counter.start();
+    /** The share of the scene's top file read so far, 0 to 1, or -1 before the scene tells (for the progress bar). */
+    public double topFileShare() {
+        return topFileShare;
     }
 
     public void cancel() {
@@ -117,6 +93,11 @@ public final class RenderJob implements SceneMonitor {
     @Override
     public void linesRead(long lines) {
         linesRead = lines;
+    }
+
+    @Override
+    public void topFileRead(double share) {
+        topFileShare = share;
     }
 
     @Override

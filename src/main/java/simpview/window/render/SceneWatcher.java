@@ -7,16 +7,21 @@ import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-import javax.swing.Timer;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+import javax.swing.SwingUtilities;
 import simpview.scene.FileChecksum;
 
 /**
  * Watches the files of the picture on screen (the scene and every file it
  * read) and says when one of them changed: its size, its time of last
  * change or its inode differs, or it appeared or went away. It looks a few
- * times a second on the EDT, which is cheap for the handful of files a scene
- * reads and sees an editor's save however the editor writes (in place, or a
- * new file renamed over the old).
+ * times a second on a thread of its own, "simpview-watch" (started by the
+ * first {@link #watch}, ended by {@link #stop}), so that the EDT never waits
+ * for a disk; the change is told on the EDT. Looking sees an editor's save
+ * however the editor writes (in place, or a new file renamed over the old).
  *
  * <p>A file system keeps the time of last change to a tick (a few
  * milliseconds on ext4, two seconds on FAT), so two saves of the same size
@@ -31,15 +36,24 @@ public final class SceneWatcher {
     static final long CHECKSUM_LIMIT = 8L << 20;
     private static final long NO_CHECKSUM = -1;
 
-    private final Timer timer;
+    /** Runs every look, one at a time: the files and the looks are this thread's only. */
+    private final ScheduledExecutorService thread = Executors.newSingleThreadScheduledExecutor(task -> {
+        Thread t = new Thread(task, "simpview-watch");
+        t.setDaemon(true);
+        return t;
+    });
+    /** Told on the EDT. */
     private final Runnable changed;
+    /** The files watched, as the EDT last gave them (read there by {@link #watched}). */
+    private volatile List<Path> watched = List.of();
+    private ScheduledFuture<?> polling;
+    /** The watcher thread's: the files it looks at, and what it saw of them last. */
     private List<Path> files = List.of();
     private List<Look> looks = List.of();
 
+    /** @param changed what to do, on the EDT, when a watched file changed */
     public SceneWatcher(Runnable changed) {
         this.changed = changed;
-        this.timer = new Timer(POLL_MS, e -> poll());
-        timer.setCoalesce(true);
     }
 
     /**
@@ -51,25 +65,32 @@ public final class SceneWatcher {
     record Look(Object stamp, long checksum) {
     }
 
-    /** From now on watches {@code watched}, as they are now. */
-    public void watch(List<Path> watched) {
-        files = List.copyOf(watched);
-        looks = looksNow();
-        if (files.isEmpty()) {
-            timer.stop();
-        } else if (!timer.isRunning()) {
-            timer.start();
+    /** From now on watches {@code toWatch}, as they are when the watcher thread first looks (soon). */
+    public synchronized void watch(List<Path> toWatch) {
+        List<Path> list = List.copyOf(toWatch);
+        watched = list;
+        if (thread.isShutdown()) {
+            return;
+        }
+        thread.execute(() -> {
+            files = list;
+            looks = looksNow();
+        });
+        if (polling == null) {
+            polling = thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
         }
     }
 
     public List<Path> watched() {
-        return files;
+        return watched;
     }
 
-    public void stop() {
-        timer.stop();
+    /** Stops looking for good and ends the watcher thread. */
+    public synchronized void stop() {
+        thread.shutdownNow();
     }
 
+    /** On the watcher thread: looks again, and tells the EDT when something changed. */
     private void poll() {
         List<Look> now = looksNow();
         boolean any = false;
@@ -78,7 +99,7 @@ public final class SceneWatcher {
         }
         looks = now;
         if (any) {
-            changed.run();
+            SwingUtilities.invokeLater(changed);
         }
     }
 

@@ -136,6 +136,19 @@ class ObjLibraryTest {
     }
 
     @Test
+    void aFreshModelDrawnTwiceInOnePictureIsReadOnce() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        ObjLibrary library = new ObjLibrary();
+        java.util.Set<Path> picture = new java.util.HashSet<>();
+        library.draw(file, face -> { }, picture);
+        library.draw(file, face -> { }, picture);
+        assertEquals(1, library.parseCount());
+        assertEquals(0, library.contentCheckCount(), "the picture has read its bytes already");
+        library.draw(file, face -> { }, new java.util.HashSet<>());
+        assertEquals(1, library.contentCheckCount(), "the next picture compares them again");
+    }
+
+    @Test
     void aSettledFileIsTrustedOnItsStampAlone() throws Exception {
         Path file = write("a.obj", TRIANGLES);
         Files.setLastModifiedTime(file, FileTime.fromMillis(System.currentTimeMillis() - 60_000));

@@ -140,6 +140,35 @@ class ScenePipelineTest {
     }
 
     @Test
+    void theShareOfTheTopFileReadGrowsToOne() throws Exception {
+        StringBuilder text = new StringBuilder();
+        for (int k = 0; k < 5000; k++) {
+            text.append("line (-50, -50, -10) (50, 50, -10)\n");
+            if (k == 2500) {
+                text.append("file \"part\"\n");
+            }
+        }
+        write("part.simp", "line (0, 0, -5) (10, 10, -5)");
+        Path scene = Files.writeString(dir.resolve("long.simp"), text);
+        List<Double> shares = new ArrayList<>();
+        SceneMonitor told = new SceneMonitor() {
+            @Override
+            public void topFileRead(double share) {
+                shares.add(share);
+            }
+        };
+        PageCanvas canvas = new PageCanvas();
+        canvas.clear();
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), told);
+        assertTrue(shares.size() >= 4, shares.toString());
+        for (int i = 1; i < shares.size(); i++) {
+            assertTrue(shares.get(i) >= shares.get(i - 1), shares.toString());
+        }
+        assertTrue(shares.get(0) > 0.15 && shares.get(0) < 0.25, "1024 of 5001 lines: " + shares);
+        assertEquals(1.0, shares.get(shares.size() - 1), "all of it at the end");
+    }
+
+    @Test
     void theCueColoursArePassedOn() throws Exception {
         Path scene = write("near.simp", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
         PageCanvas canvas = new PageCanvas();

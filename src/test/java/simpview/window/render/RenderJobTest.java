@@ -55,12 +55,4 @@ public class RenderJobTest {
         assertEquals(null, plain.facts().owners());
         assertEquals(0, plain.facts().primitives().size());
     }
-
-    @Test
-    void lineCountCountsALastLineWithoutANewline() throws Exception {
-        assertEquals(3, LineCount.of(Files.writeString(dir.resolve("a"), "a\nb\nc"), () -> false));
-        assertEquals(2, LineCount.of(Files.writeString(dir.resolve("b"), "a\nb\n"), () -> false));
-        assertEquals(0, LineCount.of(Files.writeString(dir.resolve("c"), ""), () -> false));
-        assertEquals(-1, LineCount.of(dir.resolve("missing"), () -> false));
-    }
 }

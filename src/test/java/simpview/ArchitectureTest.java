@@ -1,0 +1,128 @@
+package simpview;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The shape docs/architecture.md describes, held against the sources: the
+ * packages in pipeline order with no package importing one below it in
+ * that list, no type named like a package, and every thread the program
+ * starts named and listed.
+ */
+class ArchitectureTest {
+
+    private static final Path MAIN = Path.of("src/main/java");
+    private static final Path DOC = Path.of("docs/architecture.md");
+
+    /** Bottom to top: a package may import only those before it (and itself). */
+    private static final List<String> LAYERS = List.of(
+            "geometry", "surface", "raster", "shading", "stage",
+            "scene", "scene.text", "scene.obj", "scene.simp",
+            "pages", "compare",
+            "window.render", "window.instruments", "window",
+            "cli");
+
+    private static final Pattern PACKAGE = Pattern.compile("^package simpview\\.([a-z.]+);", Pattern.MULTILINE);
+    /** An import, or a type named in full in the code: simpview.pkg.Type. */
+    private static final Pattern USE = Pattern.compile("\\bsimpview\\.([a-z][a-z.]*)\\.[A-Z]");
+
+    record Source(Path file, String pkg, String text) {
+    }
+
+    private static List<Source> sources() throws IOException {
+        List<Source> all = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(MAIN)) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
+                String text = Files.readString(file);
+                Matcher m = PACKAGE.matcher(text);
+                assertTrue(m.find(), file + " has a package");
+                all.add(new Source(file, m.group(1), text));
+            }
+        }
+        return all;
+    }
+
+    @Test
+    void everyPackageHasItsPlaceInThePipeline() throws IOException {
+        Set<String> packages = new TreeSet<>();
+        for (Source s : sources()) {
+            packages.add(s.pkg());
+        }
+        Set<String> placed = new TreeSet<>(LAYERS);
+        assertEquals(placed, packages, "every package of src/main is in LAYERS (and docs/architecture.md), and no more");
+        String doc = Files.readString(DOC);
+        for (String layer : LAYERS) {
+            String last = layer.substring(layer.lastIndexOf('.') + 1);
+            assertTrue(doc.contains("── " + last) || doc.contains("── (" + last + ")"), layer + " in the doc's tree");
+        }
+    }
+
+    @Test
+    void noPackageImportsOneAboveItInThePipeline() throws IOException {
+        List<String> wrong = new ArrayList<>();
+        for (Source s : sources()) {
+            int own = LAYERS.indexOf(s.pkg());
+            Matcher m = USE.matcher(s.text());
+            while (m.find()) {
+                String used = m.group(1);
+                int at = LAYERS.indexOf(used);
+                if (at > own) {
+                    wrong.add(s.file().getFileName() + " (" + s.pkg() + ") uses " + used);
+                }
+            }
+        }
+        assertEquals(List.of(), wrong);
+    }
+
+    @Test
+    void noTypeSharesANameWithAPackage() throws IOException {
+        Set<String> segments = new TreeSet<>();
+        for (String layer : LAYERS) {
+            segments.addAll(List.of(layer.split("\\.")));
+        }
+        List<String> clashes = new ArrayList<>();
+        Pattern type = Pattern.compile("\\b(?:class|interface|record|enum)\\s+([A-Z]\\w*)");
+        for (Source s : sources()) {
+            Matcher m = type.matcher(s.text());
+            while (m.find()) {
+                if (segments.contains(m.group(1).toLowerCase(Locale.ROOT))) {
+                    clashes.add(s.pkg() + "." + m.group(1));
+                }
+            }
+        }
+        assertEquals(List.of(), clashes);
+    }
+
+    @Test
+    void everyThreadIsNamedAndListed() throws IOException {
+        String doc = Files.readString(DOC);
+        Pattern start = Pattern.compile("new Thread\\(([^;]*)\\);", Pattern.DOTALL);
+        Pattern name = Pattern.compile("\"([^\"]+)\"");
+        int threads = 0;
+        for (Source s : sources()) {
+            Matcher m = start.matcher(s.text());
+            while (m.find()) {
+                threads++;
+                Matcher n = name.matcher(m.group(1));
+                assertTrue(n.find(), s.file().getFileName() + " starts a thread without a name: " + m.group());
+                String prefix = n.group(1).strip();
+                assertTrue(doc.contains("`" + prefix), "thread '" + prefix + "' of " + s.file().getFileName()
+                        + " is listed in docs/architecture.md");
+            }
+        }
+        assertTrue(threads >= 4, "found the threads: " + threads);
+    }
+}
