@@ -106,6 +106,29 @@ class ArchitectureTest {
         assertEquals(List.of(), clashes);
     }
 
+    /**
+     * Test classes run two at a time (junit-platform.properties): one of
+     * simpview.window that opens windows (a driver, a robot, a frame) must run
+     * alone.
+     */
+    @Test
+    void everyWindowTestRunsAlone() throws IOException {
+        List<String> shared = new ArrayList<>();
+        try (Stream<Path> files = Files.list(Path.of("src/test/java/simpview/window"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
+                String text = Files.readString(file);
+                boolean tests = (text.contains("@Test") || text.contains("@ParameterizedTest"))
+                        && (text.contains("WindowDriver") || text.contains("Robot") || text.contains("JFrame")
+                        || text.contains("SimpviewWindow") || text.contains("xprop"));
+                boolean alone = text.contains("@Isolated") || text.contains("extends WindowTestCase");
+                if (tests && !alone) {
+                    shared.add(file.getFileName().toString());
+                }
+            }
+        }
+        assertEquals(List.of(), shared, "window test classes without @Isolated (or WindowTestCase)");
+    }
+
     @Test
     void everyThreadIsNamedAndListed() throws IOException {
         String doc = Files.readString(DOC);

@@ -66,6 +66,30 @@ final class SceneHarness {
     }
 
     /**
+     * A file that is not text: none of its bytes is shown, and the offset the
+     * message names is a byte no text holds, on the line it names.
+     */
+    private static void checkNotText(SceneException e, String where) throws IOException {
+        assertEquals("", e.lineText(), "a binary line is not shown" + where);
+        java.util.regex.Matcher m = java.util.regex.Pattern
+                .compile("^not a text file: byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)").matcher(e.problem());
+        assertTrue(m.find(), "the byte, its offset and its line" + where);
+        byte[] bytes = Files.readAllBytes(e.file());
+        int offset = Integer.parseInt(m.group(2));
+        assertTrue(offset < bytes.length, "an offset within the file" + where);
+        int v = bytes[offset] & 0xFF;
+        assertEquals(Integer.parseInt(m.group(1), 16), v, "the byte named is the byte at that offset" + where);
+        assertTrue(v < 0x20 && v != '\t' && v != '\r' && v != '\n' && v != '\f' || v == 0x7F,
+                "a byte no text holds" + where);
+        int line = 1;
+        for (int i = 0; i < offset; i++) {
+            line += bytes[i] == '\n' ? 1 : 0;
+        }
+        assertEquals(e.line(), line, "on the line named" + where);
+        assertEquals(line, Integer.parseInt(m.group(3)), where);
+    }
+
+    /**
      * A sound error: a file; line 1 or more (0 only when the file as a whole
      * is at fault: missing or unreadable), within the file; the line shown as
      * it stands there; a column from 0 to one past the line's end; a message.
@@ -88,6 +112,10 @@ final class SceneHarness {
         String raw = lines[e.line() - 1];
         String stripped = raw.endsWith("\r") ? raw.substring(0, raw.length() - 1) : raw;
         String shown = e.lineText();
+        if (e.problem().startsWith("not a text file: ")) {
+            checkNotText(e, where);
+            return;
+        }
         if (!shown.equals(raw) && !shown.equals(stripped)) {
             assertEquals(stripped, shown, "the line shown is not line " + e.line() + " of the file" + where);
         }

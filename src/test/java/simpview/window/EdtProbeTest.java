@@ -1,5 +1,7 @@
 package simpview.window;
 
+import org.junit.jupiter.api.parallel.Isolated;
+
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import javax.swing.SwingUtilities;
@@ -11,6 +13,7 @@ import org.junit.jupiter.api.Test;
  * LargeSceneWindowTest's allowance for a busy machine cannot hide a window
  * that blocks its EDT.
  */
+@Isolated
 public class EdtProbeTest {
 
     @Test

@@ -1,5 +1,7 @@
 package simpview.window;
 
+import org.junit.jupiter.api.parallel.Isolated;
+
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.render.RenderedView;
 import simpview.window.render.View;
@@ -26,6 +28,7 @@ import simpview.pages.PageRenderer;
  * answering while it is drawn, shows progress, and Cancel leaves the page
  * that was showing.
  */
+@Isolated
 public class LargeSceneWindowTest {
 
     static final int POLYGONS = 1_000_000;

@@ -1,5 +1,7 @@
 package simpview.window;
 
+import org.junit.jupiter.api.parallel.Isolated;
+
 import simpview.cli.Main;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -32,6 +34,7 @@ import org.junit.jupiter.api.io.TempDir;
  * (the start script, java -jar), and without the X toolkit's opening the
  * window still opens, silently, under the JDK's own name.
  */
+@Isolated
 public class WindowClassTest {
 
     private static final long WINDOW_WAIT_MS = 30_000;

@@ -1,5 +1,7 @@
 package simpview.window;
 
+import org.junit.jupiter.api.parallel.Isolated;
+
 import java.nio.file.Path;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -10,6 +12,7 @@ import org.junit.jupiter.api.io.TempDir;
  * under CI=true failed, without one), a folder of its own for files it
  * writes, and its window closed after it.
  */
+@Isolated
 public abstract class WindowTestCase {
 
     @TempDir
