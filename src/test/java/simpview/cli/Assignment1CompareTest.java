@@ -50,4 +50,16 @@ class Assignment1CompareTest {
         assertTrue(run.err().contains("no page of 4 panels of 300x300 found in " + page), run.err());
         assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "6").exitCode());
     }
+
+    /** A batch of the eight pages does not take a1-page2.png for page 2: it says how to compare it. */
+    @Test
+    void aBatchOfTheEightPagesSetsAFirstAssignmentPageAside() throws Exception {
+        Path subs = java.nio.file.Files.createDirectories(dir.resolve("subs"));
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2",
+                "--out", subs.resolve("a1-page2.png").toString()).exitCode());
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
+        String all = run.out() + run.err() + String.join("\n", java.nio.file.Files.readAllLines(
+                java.nio.file.Files.list(dir.resolve("report")).filter(f -> f.toString().endsWith(".md")).findFirst().orElseThrow()));
+        assertTrue(all.contains("a first-assignment page by its name: compare it alone, with compare a1-page2.png --assignment 1 --page 2"), all);
+    }
 }
