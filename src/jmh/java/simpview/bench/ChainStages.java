@@ -18,7 +18,7 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Camera;
 import simpview.geometry.Vertex;
 import simpview.pages.PageContext;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
@@ -77,7 +77,7 @@ public class ChainStages {
             case "page7" -> file = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"), "page7.simp");
             default -> throw new IllegalArgumentException("no scene " + scene);
         }
-        chain = cutAfter(stage, scene.equals("page5") ? Pages.PAGE5_NEAR : Rgb.WHITE);
+        chain = cutAfter(stage, scene.equals("page5") ? Assignment2.PAGE5_NEAR : Rgb.WHITE);
         draw(); // fails the trial at once if the scene cannot be drawn
     }
 

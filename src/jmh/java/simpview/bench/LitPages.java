@@ -14,12 +14,14 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import simpview.surface.DrawingThreads;
 
 /**
  * One course page of the third or fourth assignment (@Param scene, as
@@ -44,12 +46,19 @@ public class LitPages {
             "a4/page-g", "a4/page-h"})
     public String scene;
 
+    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread). */
+    @Param({"1"})
+    public int threads;
+
+    private DrawingThreads drawing;
     private final PageCanvas canvas = new PageCanvas();
     private final ObjLibrary models = new ObjLibrary();
     private Path file;
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
+        drawing = DrawingThreads.of(threads);
+        canvas.drawWith(drawing);
         Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         String[] parts = scene.split("/");
         file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
@@ -60,6 +69,11 @@ public class LitPages {
         if (models.parseCount() == 0 && scene.endsWith("pageI")) {
             throw new IllegalStateException("pageI drew no model");
         }
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        drawing.close();
     }
 
     @Benchmark

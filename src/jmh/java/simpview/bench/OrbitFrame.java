@@ -15,6 +15,7 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Axis;
 import simpview.geometry.Matrix4;
@@ -28,6 +29,7 @@ import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
+import simpview.surface.DrawingThreads;
 
 /**
  * One frame of a turning view, as the window's render thread makes it while
@@ -68,7 +70,12 @@ public class OrbitFrame {
     private static final double YAW = 30;
     private static final double PITCH = 15;
 
-    private final PageRenderer renderer = new PageRenderer();
+    /** Threads drawing each frame's bands (1: drawn as read, on the benchmark's thread). */
+    @Param({"1"})
+    public int threads;
+
+    private PageRenderer renderer;
+    private DrawingThreads drawing;
     private final ObjLibrary models = new ObjLibrary();
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
     private final Turned monitor = new Turned();
@@ -104,6 +111,8 @@ public class OrbitFrame {
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
+        drawing = DrawingThreads.of(threads);
+        renderer = new PageRenderer(drawing);
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.PROJECT_SCENES, monitor);
         renderer.canvas().recordProvenance(record ? provenance : null);
@@ -127,6 +136,11 @@ public class OrbitFrame {
                 .times(Matrix4.rotation(Axis.Y, YAW))
                 .times(Matrix4.translation(-centre[0], -centre[1], -centre[2]));
         frame(); // fails the trial at once if the scene cannot be drawn
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        drawing.close();
     }
 
     @Benchmark

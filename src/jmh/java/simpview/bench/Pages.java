@@ -13,12 +13,14 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
+import simpview.surface.DrawingThreads;
 
 /**
  * One whole page, as the window shows it: clear (image and z-buffer) and
@@ -37,15 +39,27 @@ public class Pages {
     @Param({"1", "2", "3", "4", "5", "6", "7", "8"})
     public int page;
 
-    private final PageRenderer renderer = new PageRenderer();
+    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread). */
+    @Param({"1"})
+    public int threads;
+
+    private PageRenderer renderer;
+    private DrawingThreads drawing;
     private PageContext context;
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
+        drawing = DrawingThreads.of(threads);
+        renderer = new PageRenderer(drawing);
         Path own = PageContext.PROJECT_SCENES;
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, own, SceneMonitor.NONE);
         renderer.render(page, context); // fails the trial at once if the page cannot be drawn
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        drawing.close();
     }
 
     @Benchmark

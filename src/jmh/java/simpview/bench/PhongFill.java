@@ -13,14 +13,18 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentLayout;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.surface.RowBands;
 
 /**
  * Lit fill rate: one quad (a fan of two triangles) covering the whole
@@ -35,6 +39,10 @@ import simpview.surface.PageCanvas;
  * invocation (outside the timing), so every pixel passes the z-test and is
  * lit. {@code rejects}: it is reset to +infinity, so the z-test rejects every
  * pixel and nothing is lit or written.
+ *
+ * <p>{@code threads}: the panel's bands are filled by that many threads at
+ * once, each band with a rasterizer, fragment stage and shader of its own,
+ * as a scene drawn by several threads fills them.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
@@ -44,13 +52,19 @@ import simpview.surface.PageCanvas;
 @Fork(1)
 public class PhongFill {
 
-    private static final int CHANNELS = FragmentStage.PHONG_CHANNELS;
+    private static final int CHANNELS = FragmentLayout.PHONG_CHANNELS;
     private static final int STRIDE = 3 + CHANNELS;
 
     private final PageCanvas canvas = new PageCanvas();
-    private final LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
     private final double[] quad = new double[4 * STRIDE];
-    private FragmentStage fragments;
+    /** Per band: its rasterizer and fragment stage. */
+    private LitPolygonRasterizer[] rasterizers;
+    private FragmentStage[] fragments;
+    private DrawingThreads drawing;
+
+    /** Threads filling the bands (1: the whole panel on the benchmark's thread). */
+    @Param({"1"})
+    public int threads;
 
     /** "passes": every pixel is nearer than the z-buffer and is lit; "rejects": none is. */
     @Param({"passes", "rejects"})
@@ -64,8 +78,19 @@ public class PhongFill {
         state.setSurface(0.8, 0.6, 0.4, 0.5, 16);
         state.addLight(0, 0, 0, 1, 1, 1, 1, 0);
         state.addLight(-8, 6, -4, 0.8, 0.6, 0.5, 1, 0.01);
-        fragments = new FragmentStage(canvas.zbuffer(), canvas.panel());
-        fragments.phong(state, Fog.NONE);
+        drawing = DrawingThreads.of(threads);
+        RowBands bands = drawing.bands(PageCanvas.PANEL);
+        rasterizers = new LitPolygonRasterizer[bands.count()];
+        fragments = new FragmentStage[bands.count()];
+        for (int b = 0; b < bands.count(); b++) {
+            rasterizers[b] = new LitPolygonRasterizer();
+            fragments[b] = new FragmentStage(canvas.zbuffer(), canvas.panel());
+            if (bands.count() > 1) {
+                rasterizers[b].rows(bands.start(b), bands.end(b));
+                fragments[b].rows(bands.start(b), bands.end(b));
+            }
+            fragments[b].phong(bands.count() > 1 ? state.frozenShader().get() : state, Fog.NONE);
+        }
         // Corners a pixel outside the panel, unprojected to their depths.
         corner(0, -1, -1, 10, -0.2, -0.1);
         corner(1, 1, -1, 10, 0.2, -0.1);
@@ -98,7 +123,13 @@ public class PhongFill {
     @Benchmark
     @OperationsPerInvocation(PageCanvas.PANEL * PageCanvas.PANEL)
     public PageCanvas fill() {
-        rasterizer.fill(quad, 4, CHANNELS, fragments.width(), fragments.height(), fragments);
+        drawing.forEach(fragments.length, b -> rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL,
+                PageCanvas.PANEL, fragments[b]));
         return canvas;
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        drawing.close();
     }
 }

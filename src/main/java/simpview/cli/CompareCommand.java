@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
@@ -24,12 +25,13 @@ import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
 import simpview.pages.Page;
-import simpview.pages.Pages;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
 @Command(name = "compare",
@@ -110,18 +112,23 @@ public final class CompareCommand implements Callable<Integer> {
             description = "the share in percent that passes (default: 99)")
     private double min = 99;
 
+    @Mixin
+    private ThreadsOption threads;
+
     @Override
     public Integer call() {
         checkOptions();
         if (assignment != null && assignment == 1) {
             return compareAssignment1();
         }
-        OwnPictures own = new OwnPictures(context(), near, far, monitor());
-        if (dir != null) {
-            CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
-            return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+        try (DrawingThreads drawing = threads.open()) {
+            OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
+            if (dir != null) {
+                CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
+                return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+            }
+            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
         }
-        return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
     }
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
@@ -142,7 +149,7 @@ public final class CompareCommand implements Callable<Integer> {
         boolean first = assignment != null && assignment == 1;
         usage(!first || !batch && page != null && diff == null,
                 "--assignment 1 compares one picture with one page: give IMAGE --page N (no --dir, no --diff)");
-        int count = first ? Assignment1.COUNT : Pages.COUNT;
+        int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");

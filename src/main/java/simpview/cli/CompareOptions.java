@@ -4,7 +4,7 @@ import java.util.BitSet;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 
 /** The values {@code simpview compare} reads from its options: tolerances, shares, page ranges. */
 public final class CompareOptions {
@@ -83,7 +83,7 @@ public final class CompareOptions {
         private static int page(String number, String whole) {
             try {
                 int page = Integer.parseInt(number.trim());
-                if (page >= 1 && page <= Pages.COUNT) {
+                if (page >= 1 && page <= Assignment2.COUNT) {
                     return page;
                 }
             } catch (NumberFormatException e) {
@@ -94,7 +94,7 @@ public final class CompareOptions {
 
         private static TypeConversionException invalid(String text) {
             return new TypeConversionException(String.format(Locale.ROOT,
-                    "'%s' is not a set of pages: expected pages 1 to %d like 1-8, 6 or 1,3,6-8", text, Pages.COUNT));
+                    "'%s' is not a set of pages: expected pages 1 to %d like 1-8, 6 or 1,3,6-8", text, Assignment2.COUNT));
         }
     }
 }

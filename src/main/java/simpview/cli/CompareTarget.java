@@ -2,7 +2,7 @@ package simpview.cli;
 
 import java.nio.file.Path;
 import simpview.pages.PageContext;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 
 /** What simpview draws for a comparison: one of its pages, or a scene as a page. Exactly one is set. */
 public record CompareTarget(int page, Path scene) {
@@ -24,8 +24,8 @@ public record CompareTarget(int page, Path scene) {
         if (!isPage()) {
             return "scene " + scene.getFileName();
         }
-        String title = "page " + page + ": " + Pages.page(page).title();
-        return Pages.page(page).usesSeed() ? title + ", seed " + context.seed() : title;
+        String title = "page " + page + ": " + Assignment2.page(page).title();
+        return Assignment2.page(page).usesSeed() ? title + ", seed " + context.seed() : title;
     }
 
     /** For the batch table: "6", "2 (seed 361)" or "pageC.simp". */
@@ -33,6 +33,6 @@ public record CompareTarget(int page, Path scene) {
         if (!isPage()) {
             return scene.getFileName().toString();
         }
-        return Pages.page(page).usesSeed() ? page + " (seed " + context.seed() + ")" : String.valueOf(page);
+        return Assignment2.page(page).usesSeed() ? page + " (seed " + context.seed() + ")" : String.valueOf(page);
     }
 }

@@ -7,6 +7,7 @@ import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -22,9 +23,13 @@ public final class OwnPictures {
     private final Rgb far;
     private final Map<CompareTarget, Picture> drawn = new HashMap<>();
 
-    /** Scenes are depth-cued from {@code near} to {@code far}; null means the defaults, white and black. */
-    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor) {
-        this.drawing = new PageDrawing(monitor);
+    /**
+     * Scenes are depth-cued from {@code near} to {@code far}; null means the
+     * defaults, white and black. Drawn with {@code threads}, which the caller
+     * owns and closes.
+     */
+    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor, DrawingThreads threads) {
+        this.drawing = new PageDrawing(monitor, threads);
         this.context = context;
         this.near = near;
         this.far = far;

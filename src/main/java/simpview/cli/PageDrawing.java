@@ -9,6 +9,7 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -19,13 +20,15 @@ import simpview.surface.Rgb;
  */
 public final class PageDrawing {
 
-    private final PageRenderer renderer = new PageRenderer();
+    private final PageRenderer renderer;
     private final SceneMonitor monitor;
     /** The models of this run's lit scenes: each .obj file read once however many scenes draw it. */
     private final ObjLibrary models = new ObjLibrary();
 
-    PageDrawing(SceneMonitor monitor) {
+    /** Draws with {@code threads}, which the caller owns and closes. */
+    PageDrawing(SceneMonitor monitor, DrawingThreads threads) {
         this.monitor = monitor;
+        this.renderer = new PageRenderer(threads);
     }
 
     /** Page n; on a scene error the canvas keeps what was drawn before it and the error is thrown on. */

@@ -13,6 +13,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Parameters;
@@ -21,11 +22,12 @@ import picocli.CommandLine.Spec;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",
@@ -108,9 +110,24 @@ public final class RenderCommand implements Callable<Integer> {
             description = "--scene: draw the vertices' own colours (white where none) without the depth cue")
     private boolean ownColours;
 
+    @Mixin
+    private ThreadsOption threads;
+
+    /** The threads drawing while the command runs: made and closed by call(). */
+    private DrawingThreads drawingThreads;
+
     @Override
     public Integer call() {
         checkOptions();
+        try (DrawingThreads drawing = threads.open()) {
+            drawingThreads = drawing;
+            return render();
+        } finally {
+            drawingThreads = null;
+        }
+    }
+
+    private int render() {
         if (what.page != null) {
             return renderPage(what.page);
         }
@@ -137,7 +154,7 @@ public final class RenderCommand implements Callable<Integer> {
                 "--assignment must be 1 or 2 (the later assignments' pages are scenes: use --scenes), not " + assignment);
         usage(assignment == null || what.page != null || what.all, "--assignment goes with --page or --all");
         usage(!firstAssignment() || simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
-        int count = firstAssignment() ? Assignment1.COUNT : Pages.COUNT;
+        int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
         usage(what.page == null || what.page >= 1 && what.page <= count,
                 "--page must be 1 to " + count + (firstAssignment() ? " for the first assignment" : "") + ", not " + what.page);
         usage(what.all ? outDir != null : out != null,
@@ -194,7 +211,7 @@ public final class RenderCommand implements Callable<Integer> {
             return write(Assignment1.render(number, context()), out);
         }
         try {
-            return write(new PageDrawing(monitor()).page(number, context()).image(), out);
+            return write(new PageDrawing(monitor(), drawingThreads).page(number, context()).image(), out);
         } catch (SceneException e) {
             err().println(e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -210,10 +227,10 @@ public final class RenderCommand implements Callable<Integer> {
             }
             return ExitCode.OK;
         }
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         PageContext context = context();
         int code = ExitCode.OK;
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             BufferedImage image;
             try {
                 image = drawing.page(n, context).image();
@@ -231,7 +248,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Each scene to NAME.png; one that fails is named on stderr and not written, the others are. */
     private int renderScenes() {
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         int code = ExitCode.OK;
         for (Path scene : sceneList) {
             BufferedImage image;
@@ -253,7 +270,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     private int renderScene() {
         try {
-            PageDrawing drawing = new PageDrawing(monitor());
+            PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
             ScenePipeline.Drawn drawn = drawing.scene(what.scene, near, far, ownColours);
             refuseIfLit(what.scene, drawn);
             return write(drawing.canvas().image(), out);
@@ -265,13 +282,13 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Pages that fail are left out and named on stderr; the sheet shows the rest. */
     private int renderContactSheet() {
-        PageRenderer renderer = new PageRenderer();
+        PageRenderer renderer = new PageRenderer(drawingThreads);
         PageContext context = context();
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             try {
-                String seedNote = Pages.page(n).usesSeed() ? " — seed " + context.seed() : "";
-                tiles.add(new ContactSheet.Tile(n + "  " + Pages.page(n).title() + seedNote, renderer.renderImage(n, context)));
+                String seedNote = Assignment2.page(n).usesSeed() ? " — seed " + context.seed() : "";
+                tiles.add(new ContactSheet.Tile(n + "  " + Assignment2.page(n).title() + seedNote, renderer.renderImage(n, context)));
             } catch (SceneException e) {
                 err().println("page " + n + " left out: " + e.getMessage());
             }
@@ -280,13 +297,13 @@ public final class RenderCommand implements Callable<Integer> {
             return ExitCode.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
-        return tiles.size() == Pages.COUNT ? written : ExitCode.SCENE_ERROR;
+        return tiles.size() == Assignment2.COUNT ? written : ExitCode.SCENE_ERROR;
     }
 
     /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
     private int renderSceneSheet() {
         List<ContactSheet.Tile> tiles = new ArrayList<>();
-        PageDrawing drawing = new PageDrawing(monitor());
+        PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         for (Path scene : scenes) {
             try {
                 drawing.scene(scene, null, null, false);

@@ -15,6 +15,7 @@ import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
@@ -37,6 +38,9 @@ public final class SimpviewCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
+
+    @Mixin
+    private ThreadsOption threads;
 
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
     private long seed = PageContext.DEFAULT_SEED;
@@ -113,7 +117,7 @@ public final class SimpviewCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
-                sceneList(), ownScenes);
+                sceneList(), ownScenes, threads.count());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
         openedWindow = true;
         return ExitCode.OK;

@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.awt.image.BufferedImage;
 import simpview.scene.SceneException;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 
 /**
@@ -13,13 +14,25 @@ public final class PageRenderer {
 
     private final PageCanvas canvas = new PageCanvas();
 
+    /** Draws every page on the caller's thread alone. */
+    public PageRenderer() {
+    }
+
+    /**
+     * Draws the scene pages with {@code threads} (see {@link PageCanvas#drawWith}),
+     * to the same pictures as one thread; whoever gives them closes them.
+     */
+    public PageRenderer(DrawingThreads threads) {
+        canvas.drawWith(threads);
+    }
+
     /**
      * Draws page n. On a scene error the canvas keeps what was drawn before it
      * and the exception is thrown on.
      */
     public PageCanvas render(int pageNumber, PageContext context) throws SceneException {
         canvas.clear();
-        Pages.page(pageNumber).draw(canvas, context);
+        Assignment2.page(pageNumber).draw(canvas, context);
         return canvas;
     }
 

@@ -26,7 +26,7 @@ public final class PageStepper {
 
     /** How many positions there are: the scenes and the eight pages. */
     public int count() {
-        return scenes + Pages.COUNT;
+        return scenes + Assignment2.COUNT;
     }
 
     /** The position showing, 1 to {@link #count()}. */
@@ -66,7 +66,7 @@ public final class PageStepper {
 
     /** Goes to page n (1 to 8) of the eight; anything else leaves the position as it is. */
     public int jump(int n) {
-        if (n >= 1 && n <= Pages.COUNT) {
+        if (n >= 1 && n <= Assignment2.COUNT) {
             current = scenes + n;
         }
         return current;

@@ -14,7 +14,7 @@ import simpview.surface.Span;
 /**
  * The filled triangle, one span per pixel row: which pixels, by
  * {@link TriangleCoverage} (centres, the top-left rule); what they carry, by
- * one {@link Plane} per attribute.
+ * one {@link Plane} per attribute; both set up by {@link TriangleSetup}.
  *
  * <p>Attributes. Colour (in byte levels) and z are planes over the triangle,
  * evaluated at the first pixel centre of each span with their x slopes;
@@ -28,19 +28,25 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
     private final Span span = new Span();
     /** Room for a triangle given as vertices, so that both entries share one path. */
     private final double[] corners = new double[3 * Vertex.NUMBERS];
-    private final TriangleCoverage coverage = new TriangleCoverage();
+    private final TriangleSetup triangle = new TriangleSetup();
     private final Plane red = new Plane();
     private final Plane green = new Plane();
     private final Plane blue = new Plane();
     private final Plane depth = new Plane();
-    // Every plane is given relative to vertex a: (originX, originY).
-    private double originX;
-    private double originY;
     /** False when the drawable replaces colour: then no colour plane is set up or evaluated. */
     private boolean shaded;
     // The last drawable asked: a drawable's answer never changes.
     private Drawable asked;
     private boolean askedUsesColour;
+    // The rows drawn: all of them, or one band's.
+    private int rowFrom;
+    private int rowTo = Integer.MAX_VALUE;
+
+    /** From now on draws only the rows {@code from <= y < to} of each triangle (one band of a picture). */
+    public void rows(int from, int to) {
+        rowFrom = from;
+        rowTo = to;
+    }
 
     @Override
     public void drawPolygon(Vertex p1, Vertex p2, Vertex p3, Drawable drawable) {
@@ -58,22 +64,23 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         if (!Vertex.isFinite(p, i1) || !Vertex.isFinite(p, i2) || !Vertex.isFinite(p, i3)) {
             return;
         }
-        TriangleCoverage t = coverage;
-        if (!t.set(p[i1 + X], p[i1 + Y], p[i2 + X], p[i2 + Y], p[i3 + X], p[i3 + Y])) {
+        TriangleSetup t = triangle;
+        if (!t.set(p, i1, i2, i3, X, Y)) {
             return;
         }
-        // Counter-clockwise a, b, c.
-        int a = i1;
-        int b = t.clockwise ? i3 : i2;
-        int c = t.clockwise ? i2 : i3;
         shaded = usesColour(drawable);
-        setUpPlanes(p, a, b, c, t.area);
+        t.plane(depth, p, Z);
+        if (shaded) {
+            t.plane(red, p, R, 255);
+            t.plane(green, p, G, 255);
+            t.plane(blue, p, B, 255);
+        }
         int width = drawable.width();
         int height = drawable.height();
-        int lastRow = t.lastRow(height);
-        for (int row = t.firstRow(height); row <= lastRow; row++) {
+        int lastRow = t.lastRow(height, rowTo);
+        for (int row = t.firstRow(height, rowFrom); row <= lastRow; row++) {
             if (t.row(row, width)) {
-                emitSpan(row, t.from, t.to, drawable);
+                emitSpan(row, drawable);
             }
         }
     }
@@ -86,29 +93,15 @@ public final class FilledPolygonRenderer implements PolygonRenderer {
         return askedUsesColour;
     }
 
-    private void setUpPlanes(double[] p, int a, int b, int c, double area) {
-        originX = p[a + X];
-        originY = p[a + Y];
-        double e1x = p[b + X] - p[a + X];
-        double e1y = p[b + Y] - p[a + Y];
-        double e2x = p[c + X] - p[a + X];
-        double e2y = p[c + Y] - p[a + Y];
-        depth.set(p[a + Z], p[b + Z], p[c + Z], e1x, e1y, e2x, e2y, area);
-        if (shaded) {
-            red.set(255 * p[a + R], 255 * p[b + R], 255 * p[c + R], e1x, e1y, e2x, e2y, area);
-            green.set(255 * p[a + G], 255 * p[b + G], 255 * p[c + G], e1x, e1y, e2x, e2y, area);
-            blue.set(255 * p[a + B], 255 * p[b + B], 255 * p[c + B], e1x, e1y, e2x, e2y, area);
-        }
-    }
-
-    private void emitSpan(int row, int from, int to, Drawable drawable) {
+    private void emitSpan(int row, Drawable drawable) {
+        TriangleSetup t = triangle;
         Span s = span;
-        double dx = from + 0.5 - originX;
-        double dy = row + 0.5 - originY;
+        double dx = t.dx();
+        double dy = t.dy(row);
         s.y = row;
-        s.x0 = from;
-        s.x1 = to;
-        s.xBase = from;
+        s.x0 = t.from();
+        s.x1 = t.to();
+        s.xBase = t.from();
         s.z = depth.valueAt(dx, dy);
         s.dz = depth.slopeX;
         if (shaded) {

@@ -6,8 +6,9 @@ package simpview.raster;
  * Part 1's rule ({@link TriangleCoverage}: centres, top-left), so the fan's
  * triangles share their diagonals without gaps or double writes.
  *
- * <p>A vertex is {@code 3 + channels} numbers: panel x, panel y, q, then the
- * channels (attributes multiplied by q). q and every channel are planes over
+ * <p>A vertex is laid out as {@link FragmentLayout} says: panel x, panel y,
+ * q, then the channels (attributes multiplied by q). The triangles are set
+ * up as the depth-cued renderer's are ({@link TriangleSetup}). q and every channel are planes over
  * each triangle, evaluated at the first pixel centre of each span with their
  * x slopes, and handed to the {@link FragmentSink}: perspective-correct
  * interpolation, once the sink divides by q.
@@ -19,16 +20,25 @@ public final class LitPolygonRasterizer {
     /** Most channels a vertex may carry. */
     public static final int MAX_CHANNELS = 16;
 
-    private final TriangleCoverage coverage = new TriangleCoverage();
+    private final TriangleSetup triangle = new TriangleSetup();
     private final Plane q = new Plane();
     private final Plane[] channel = new Plane[MAX_CHANNELS];
     private final double[] v0 = new double[MAX_CHANNELS];
     private final double[] dv = new double[MAX_CHANNELS];
+    // The rows drawn: all of them, or one band's.
+    private int rowFrom;
+    private int rowTo = Integer.MAX_VALUE;
 
     public LitPolygonRasterizer() {
         for (int c = 0; c < MAX_CHANNELS; c++) {
             channel[c] = new Plane();
         }
+    }
+
+    /** From now on fills only the rows {@code from <= y < to} of each polygon (one band of a picture). */
+    public void rows(int from, int to) {
+        rowFrom = from;
+        rowTo = to;
     }
 
     /**
@@ -37,41 +47,37 @@ public final class LitPolygonRasterizer {
      * @param channels channels per vertex, at most {@link #MAX_CHANNELS}
      */
     public void fill(double[] v, int n, int channels, int width, int height, FragmentSink sink) {
-        int stride = 3 + channels;
+        fill(v, 0, n, channels, width, height, sink);
+    }
+
+    /** The same for the polygon whose first vertex starts at v[at]. */
+    public void fill(double[] v, int at, int n, int channels, int width, int height, FragmentSink sink) {
+        int stride = FragmentLayout.stride(channels);
         for (int k = 1; k + 1 < n; k++) {
-            triangle(v, 0, k * stride, (k + 1) * stride, channels, width, height, sink);
+            triangle(v, at, at + k * stride, at + (k + 1) * stride, channels, width, height, sink);
         }
     }
 
     private void triangle(double[] v, int i1, int i2, int i3, int channels, int width, int height,
             FragmentSink sink) {
-        TriangleCoverage t = coverage;
-        if (!t.set(v[i1], v[i1 + 1], v[i2], v[i2 + 1], v[i3], v[i3 + 1])) {
+        TriangleSetup t = triangle;
+        if (!t.set(v, i1, i2, i3, FragmentLayout.X, FragmentLayout.Y)) {
             return;
         }
-        int a = i1;
-        int b = t.clockwise ? i3 : i2;
-        int c = t.clockwise ? i2 : i3;
-        double ax = v[a];
-        double ay = v[a + 1];
-        double e1x = v[b] - ax;
-        double e1y = v[b + 1] - ay;
-        double e2x = v[c] - ax;
-        double e2y = v[c + 1] - ay;
-        q.set(v[a + 2], v[b + 2], v[c + 2], e1x, e1y, e2x, e2y, t.area);
+        t.plane(q, v, FragmentLayout.Q);
         for (int ch = 0; ch < channels; ch++) {
-            channel[ch].set(v[a + 3 + ch], v[b + 3 + ch], v[c + 3 + ch], e1x, e1y, e2x, e2y, t.area);
+            t.plane(channel[ch], v, FragmentLayout.CHANNEL + ch);
             dv[ch] = channel[ch].slopeX;
         }
-        int lastRow = t.lastRow(height);
-        for (int row = t.firstRow(height); row <= lastRow; row++) {
+        int lastRow = t.lastRow(height, rowTo);
+        for (int row = t.firstRow(height, rowFrom); row <= lastRow; row++) {
             if (t.row(row, width)) {
-                double dx = t.from + 0.5 - ax;
-                double dy = row + 0.5 - ay;
+                double dx = t.dx();
+                double dy = t.dy(row);
                 for (int ch = 0; ch < channels; ch++) {
                     v0[ch] = channel[ch].valueAt(dx, dy);
                 }
-                sink.span(row, t.from, t.to, q.valueAt(dx, dy), q.slopeX, v0, dv);
+                sink.span(row, t.from(), t.to(), q.valueAt(dx, dy), q.slopeX, v0, dv);
             }
         }
     }

@@ -1,5 +1,16 @@
 package simpview.shading;
 
+import static simpview.raster.FragmentLayout.B;
+import static simpview.raster.FragmentLayout.G;
+import static simpview.raster.FragmentLayout.NX;
+import static simpview.raster.FragmentLayout.NY;
+import static simpview.raster.FragmentLayout.NZ;
+import static simpview.raster.FragmentLayout.PX;
+import static simpview.raster.FragmentLayout.PY;
+import static simpview.raster.FragmentLayout.R;
+import static simpview.raster.FragmentLayout.Z;
+
+import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.surface.Colors;
 import simpview.surface.Drawable;
@@ -13,29 +24,16 @@ import simpview.surface.ZBuffer;
  * already lit), fog on camera-space z, and write round(c * 255) once to the
  * panel. Hidden pixels stop at the depth test and cost no shading.
  *
- * <p>Channels, in the order the geometry stage lays them out:
- * {@link #Z}, {@link #R}, {@link #G}, {@link #B} for every primitive (R, G, B
- * the final unfogged colour, or kd under phong), and for phong also the
- * camera-space point's x and y ({@link #PX}, {@link #PY}; its z is Z) and the
- * normal ({@link #NX}, {@link #NY}, {@link #NZ}).
+ * <p>Channels as {@link FragmentLayout} lays them out, the geometry stage's
+ * layout too.
+ *
+ * <p>One stage may draw only a band of the panel's rows ({@link #rows}): a
+ * picture drawn by several threads has one stage per band.
  *
  * <p>State set per primitive; the per-pixel loop allocates nothing.
  */
 public final class FragmentStage implements FragmentSink {
 
-    public static final int Z = 0;
-    public static final int R = 1;
-    public static final int G = 2;
-    public static final int B = 3;
-    public static final int PX = 4;
-    public static final int PY = 5;
-    public static final int NX = 6;
-    public static final int NY = 7;
-    public static final int NZ = 8;
-    /** Channels of a primitive whose colour is known before rasterization. */
-    public static final int COLOUR_CHANNELS = 4;
-    /** Channels of a phong-shaded polygon. */
-    public static final int PHONG_CHANNELS = 9;
     /** Pixels of a span done together. */
     static final int BATCH = 64;
     /**
@@ -73,6 +71,9 @@ public final class FragmentStage implements FragmentSink {
     private final int[] colours = new int[BATCH];
     private PointShader shader;
     private Fog fog = Fog.NONE;
+    // The rows written: all of them, or one band's.
+    private int rowFrom;
+    private int rowTo;
 
     /** Writes to {@code panel} (panel coordinates, y up), depth-tested against {@code zbuffer}. */
     public FragmentStage(ZBuffer zbuffer, Drawable panel) {
@@ -84,6 +85,13 @@ public final class FragmentStage implements FragmentSink {
         this.width = zbuffer.width();
         this.height = zbuffer.height();
         this.panel = panel;
+        this.rowTo = height;
+    }
+
+    /** From now on writes only the rows {@code from <= y < to}, within the panel (one band of a picture). */
+    public void rows(int from, int to) {
+        rowFrom = Math.max(from, 0);
+        rowTo = Math.min(to, height);
     }
 
     public int width() {
@@ -121,7 +129,7 @@ public final class FragmentStage implements FragmentSink {
      */
     @Override
     public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
-        if (y < 0 || y >= height) {
+        if (y < rowFrom || y >= rowTo) {
             return;
         }
         int end = Math.min(to, width);
@@ -183,15 +191,14 @@ public final class FragmentStage implements FragmentSink {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
             double z = (z0 + k * dz) * inv;
-            if (!(z > depth[row + x])) {
+            if (!nearer(row + x, z)) {
                 continue;
             }
-            depth[row + x] = z;
             wrote = true;
             s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
                     (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
                     (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
-            panel.setPixel(x, y, z, fogged(z));
+            panel.setPixel(x, y, z, fogged(z, lit));
         }
         return wrote;
     }
@@ -220,15 +227,14 @@ public final class FragmentStage implements FragmentSink {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
             double z = (z0 + k * dz) * inv;
-            if (!(z > depth[row + x])) {
+            if (!nearer(row + x, z)) {
                 continue;
             }
-            depth[row + x] = z;
             wrote = true;
             lit[0] = (r0 + k * dr) * inv;
             lit[1] = (g0 + k * dg) * inv;
             lit[2] = (b0 + k * db) * inv;
-            panel.setPixel(x, y, z, fogged(z));
+            panel.setPixel(x, y, z, fogged(z, lit));
         }
         return wrote;
     }
@@ -253,8 +259,7 @@ public final class FragmentStage implements FragmentSink {
         int n = 0;
         for (int j = 0; j < m; j++) {
             double z = zs[j];
-            if (z > depth[at + j]) {
-                depth[at + j] = z;
+            if (nearer(at + j, z)) {
                 batchX[n] = first + j;
                 batchK[n] = k0 + RAMP[j];
                 batchInverse[n] = inv[j];
@@ -294,7 +299,7 @@ public final class FragmentStage implements FragmentSink {
             lit[0] = t.red[i];
             lit[1] = t.green[i];
             lit[2] = t.blue[i];
-            colours[i] = fogged(batchZ[i]);
+            colours[i] = fogged(batchZ[i], lit);
         }
     }
 
@@ -313,16 +318,15 @@ public final class FragmentStage implements FragmentSink {
 
     @Override
     public void pixel(int x, int y, double q, double[] v) {
-        if (x < 0 || x >= width || y < 0 || y >= height) {
+        if (x < 0 || x >= width || y < rowFrom || y >= rowTo) {
             return;
         }
         int i = y * width + x;
         double inv = 1 / q;
         double z = v[Z] * inv;
-        if (!(z > depth[i])) {
+        if (!nearer(i, z)) {
             return;
         }
-        depth[i] = z;
         zbuffer.written();
         double r = v[R] * inv;
         double g = v[G] * inv;
@@ -334,12 +338,24 @@ public final class FragmentStage implements FragmentSink {
             lit[1] = g;
             lit[2] = b;
         }
-        panel.setPixel(x, y, z, fogged(z));
+        panel.setPixel(x, y, z, fogged(z, lit));
     }
 
-    /** The colour in {@link #lit}, fogged at depth z and packed: round(c * 255), once. */
-    private int fogged(double z) {
-        fog.apply(z, lit, 0);
-        return Colors.pack(lit[0], lit[1], lit[2]);
+    /**
+     * The depth test, the only one of lit scenes: true when z is strictly
+     * nearer than the depth at index i (a NaN z never is), which then keeps z.
+     */
+    private boolean nearer(int i, double z) {
+        if (z > depth[i]) {
+            depth[i] = z;
+            return true;
+        }
+        return false;
+    }
+
+    /** The colour in colour[0..3), fogged in place at depth z and packed: round(c * 255), once. */
+    private int fogged(double z, double[] colour) {
+        fog.apply(z, colour, 0);
+        return Colors.pack(colour[0], colour[1], colour[2]);
     }
 }

@@ -59,6 +59,14 @@ public final class Lights {
         data[at + Z] = z;
     }
 
+    /** A copy of the lights as they are now, apart from later changes to these. */
+    public Lights copy() {
+        Lights c = new Lights();
+        c.data = data.clone();
+        c.count = count;
+        return c;
+    }
+
     /** Forgets every light (a new picture of the scene starts with none). */
     public void clear() {
         count = 0;

@@ -1,5 +1,6 @@
 package simpview.shading;
 
+import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 
@@ -17,7 +18,7 @@ import simpview.geometry.Matrix4;
 public final class LitState implements PointShader {
 
     /** How filled polygons are shaded. */
-    public enum Shading { FLAT, GOURAUD, PHONG }
+    public enum ShadingMode { FLAT, GOURAUD, PHONG }
 
     private Camera camera = Camera.PARALLEL;
     private Matrix4 worldToCamera = Matrix4.identity();
@@ -32,9 +33,11 @@ public final class LitState implements PointShader {
     private double ks = 0.3;
     private double p = 8;
     private Fog fog = Fog.NONE;
-    private Shading shading = Shading.PHONG;
+    private ShadingMode shading = ShadingMode.PHONG;
     private final Lights lights = new Lights();
     private final Lighting lighting = new Lighting(lights);
+    /** Counts the changes to what lights a point: see {@link #lightingVersion}. */
+    private int lightingVersion;
 
     public Camera camera() {
         return camera;
@@ -98,7 +101,7 @@ public final class LitState implements PointShader {
         fog = f;
     }
 
-    public void setShading(Shading s) {
+    public void setShading(ShadingMode s) {
         shading = s;
     }
 
@@ -125,7 +128,7 @@ public final class LitState implements PointShader {
         return fog;
     }
 
-    public Shading shading() {
+    public ShadingMode shading() {
         return shading;
     }
 
@@ -144,8 +147,76 @@ public final class LitState implements PointShader {
         lighting.shade(points);
     }
 
+    /**
+     * What lights a point now, as numbers, for a program that lights the
+     * same scene elsewhere (the llvmpipe benchmark): ambient r, g, b, ks, p,
+     * 1 for a perspective view (else 0), the number of lights, then per light
+     * its camera-space x, y, z, intensity r, g, b and attenuation A, B.
+     */
+    public double[] lightingNumbers() {
+        int n = lights.count();
+        double[] v = new double[7 + 8 * n];
+        v[0] = ambientR;
+        v[1] = ambientG;
+        v[2] = ambientB;
+        v[3] = ks;
+        v[4] = p;
+        v[5] = camera.isPerspective() ? 1 : 0;
+        v[6] = n;
+        for (int i = 0; i < n; i++) {
+            int o = 7 + 8 * i;
+            v[o] = lights.x(i);
+            v[o + 1] = lights.y(i);
+            v[o + 2] = lights.z(i);
+            v[o + 3] = lights.red(i);
+            v[o + 4] = lights.green(i);
+            v[o + 5] = lights.blue(i);
+            v[o + 6] = lights.a(i);
+            v[o + 7] = lights.b(i);
+        }
+        return v;
+    }
+
+    /** Changes whenever what {@link #shade} does changes: equal versions light every point alike. */
+    public int lightingVersion() {
+        return lightingVersion;
+    }
+
+    /**
+     * What lights a point now (ambient, ks and p, the lights so far, the
+     * view), kept apart from later changes to the state: each shader the
+     * supplier makes lights as this state does now, to the bit, with scratch
+     * of its own, so each drawing thread takes its own.
+     */
+    public Supplier<PointShader> frozenShader() {
+        Lights now = lights.copy();
+        double ar = ambientR;
+        double ag = ambientG;
+        double ab = ambientB;
+        double specular = ks;
+        double exponent = p;
+        boolean perspective = camera.isPerspective();
+        return () -> {
+            Lighting own = new Lighting(now);
+            own.prepare(ar, ag, ab, specular, exponent, now.count(), perspective);
+            return new PointShader() {
+                @Override
+                public void shade(double px, double py, double pz, double nx, double ny, double nz,
+                        double kr, double kg, double kb, double[] out) {
+                    own.shade(px, py, pz, nx, ny, nz, kr, kg, kb, out, 0);
+                }
+
+                @Override
+                public void shade(LitPoints points) {
+                    own.shade(points);
+                }
+            };
+        };
+    }
+
     /** Lighting takes what is in force now: every change to the state is told to it here. */
     private void prepare() {
+        lightingVersion++;
         lighting.prepare(ambientR, ambientG, ambientB, ks, p, lights.count(), camera.isPerspective());
     }
 }

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentLayout;
 import simpview.raster.LitLineRasterizer;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.FragmentStage;
@@ -58,7 +59,7 @@ public final class LitGeometry implements GeometryStage {
     private final Clipper clipper = new Clipper(CAMERA_STRIDE);
     private double[] cam = new double[CAMERA_STRIDE * 8];
     private boolean[] ownNormal = new boolean[8];
-    private double[] screen = new double[(3 + FragmentStage.PHONG_CHANNELS) * 16];
+    private double[] screen = new double[(FragmentLayout.stride(FragmentLayout.PHONG_CHANNELS)) * 16];
     private final double[] lit = new double[3];
     /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
     private double faceNx;
@@ -83,9 +84,21 @@ public final class LitGeometry implements GeometryStage {
     private final double[] shown = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
         Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
 
+    /** Where the primitives are recorded to be drawn by several threads; null: drawn here, at once. */
+    private LitPrimitives record;
+
     public LitGeometry(LitState state, FragmentStage fragments) {
         this.state = state;
         this.fragments = fragments;
+    }
+
+    /**
+     * From now on the primitives are recorded in {@code to}, to be drawn by
+     * its threads, instead of drawn at once (null: at once again). Call
+     * before the scene is read.
+     */
+    public void recordTo(LitPrimitives to) {
+        record = to;
     }
 
     @Override
@@ -102,9 +115,14 @@ public final class LitGeometry implements GeometryStage {
         }
         if (clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
             fragments.colours(state.fog());
-            int n = project(clipper.vertices(), 2, FragmentStage.COLOUR_CHANNELS);
-            if (n == 2 && (trace == null || traced(Painter.LINE, FragmentStage.COLOUR_CHANNELS, 2))) {
-                lines.draw(screen, 0, 3 + FragmentStage.COLOUR_CHANNELS, FragmentStage.COLOUR_CHANNELS,
+            int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
+            if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
+                if (record != null) {
+                    record.add(LitPrimitives.LINE, screen, 2, FragmentLayout.COLOUR_CHANNELS,
+                            record.look(state.fog(), null));
+                    return;
+                }
+                lines.draw(screen, 0, FragmentLayout.stride(FragmentLayout.COLOUR_CHANNELS), FragmentLayout.COLOUR_CHANNELS,
                         fragments.width(), fragments.height(), fragments);
             }
         }
@@ -161,7 +179,7 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         faceNormals(n);
-        int channels = wire ? FragmentStage.COLOUR_CHANNELS : shade(n);
+        int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
             return;
@@ -173,6 +191,12 @@ public final class LitGeometry implements GeometryStage {
         if (trace != null && !traced(wire ? Painter.WIRE : Painter.FILLED, channels, kept)) {
             return;
         }
+        if (record != null) {
+            int look = wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
+                    : record.look(state.fog(), state);
+            record.add(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, screen, kept, channels, look);
+            return;
+        }
         int width = fragments.width();
         int height = fragments.height();
         if (!wire) {
@@ -180,7 +204,7 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         fragments.colours(state.fog());
-        int stride = 3 + channels;
+        int stride = FragmentLayout.stride(channels);
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, fragments);
         }
@@ -197,7 +221,7 @@ public final class LitGeometry implements GeometryStage {
             case FLAT -> {
                 flat(n);
                 fragments.colours(state.fog());
-                return FragmentStage.COLOUR_CHANNELS;
+                return FragmentLayout.COLOUR_CHANNELS;
             }
             case GOURAUD -> {
                 for (int k = 0; k < n; k++) {
@@ -209,11 +233,11 @@ public final class LitGeometry implements GeometryStage {
                     cam[o + CB] = lit[2];
                 }
                 fragments.colours(state.fog());
-                return FragmentStage.COLOUR_CHANNELS;
+                return FragmentLayout.COLOUR_CHANNELS;
             }
             default -> {
                 fragments.phong(state, state.fog());
-                return FragmentStage.PHONG_CHANNELS;
+                return FragmentLayout.PHONG_CHANNELS;
             }
         }
     }
@@ -284,7 +308,7 @@ public final class LitGeometry implements GeometryStage {
      */
     private int project(double[] v, int n, int channels) {
         Camera camera = state.camera();
-        int stride = 3 + channels;
+        int stride = FragmentLayout.stride(channels);
         if (screen.length < n * stride) {
             screen = new double[2 * n * stride];
         }
@@ -300,19 +324,19 @@ public final class LitGeometry implements GeometryStage {
             if (!Double.isFinite(sx) || !Double.isFinite(sy) || !Double.isFinite(q)) {
                 return k;
             }
-            screen[o] = sx;
-            screen[o + 1] = sy;
-            screen[o + 2] = q;
-            screen[o + 3 + FragmentStage.Z] = z * q;
-            screen[o + 3 + FragmentStage.R] = v[i + CR] * q;
-            screen[o + 3 + FragmentStage.G] = v[i + CG] * q;
-            screen[o + 3 + FragmentStage.B] = v[i + CB] * q;
-            if (channels == FragmentStage.PHONG_CHANNELS) {
-                screen[o + 3 + FragmentStage.PX] = x * q;
-                screen[o + 3 + FragmentStage.PY] = y * q;
-                screen[o + 3 + FragmentStage.NX] = v[i + CNX] * q;
-                screen[o + 3 + FragmentStage.NY] = v[i + CNY] * q;
-                screen[o + 3 + FragmentStage.NZ] = v[i + CNZ] * q;
+            screen[o + FragmentLayout.X] = sx;
+            screen[o + FragmentLayout.Y] = sy;
+            screen[o + FragmentLayout.Q] = q;
+            screen[o + FragmentLayout.CHANNEL + FragmentLayout.Z] = z * q;
+            screen[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * q;
+            screen[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * q;
+            screen[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * q;
+            if (channels == FragmentLayout.PHONG_CHANNELS) {
+                screen[o + FragmentLayout.CHANNEL + FragmentLayout.PX] = x * q;
+                screen[o + FragmentLayout.CHANNEL + FragmentLayout.PY] = y * q;
+                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NX] = v[i + CNX] * q;
+                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NY] = v[i + CNY] * q;
+                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NZ] = v[i + CNZ] * q;
             }
         }
         return n;
@@ -414,7 +438,7 @@ public final class LitGeometry implements GeometryStage {
             }
         }
         int index = traced++;
-        trace.read(index, sourceFile, sourceLine, kind, screen, 0, 3 + channels, n);
+        trace.read(index, sourceFile, sourceLine, kind, screen, 0, FragmentLayout.stride(channels), n);
         return trace.drawing(index);
     }
 

@@ -8,7 +8,9 @@ import simpview.surface.Drawable;
 /**
  * Draws primitives given as plain numbers in panel space with the scene's
  * renderers. Everything it touches (renderers, panel) belongs to the thread
- * that draws, so it is the only part of a scene that runs there.
+ * that draws, so it is the only part of a scene that runs there. With
+ * several drawing threads it records the primitives instead
+ * ({@link CuedPrimitives}), and each band's own painter draws them.
  */
 public final class Painter implements PrimitiveSink {
 
@@ -25,6 +27,8 @@ public final class Painter implements PrimitiveSink {
     /** Who follows the primitives drawn (the window's instruments), or null. */
     private PrimitiveTrace trace;
     private int drawn;
+    /** Where the primitives are recorded to be drawn by several threads, or null: drawn at once. */
+    private CuedPrimitives record;
 
     public Painter(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire) {
         this.panel = panel;
@@ -43,9 +47,18 @@ public final class Painter implements PrimitiveSink {
         trace = follower;
     }
 
+    /** From now on records the primitives in {@code to}, to be drawn by its threads (null: draws them at once). */
+    public void recordTo(CuedPrimitives to) {
+        record = to;
+    }
+
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */
     public void draw(int kind, double[] p, int at) {
         if (trace != null && !trace.drawing(drawn++)) {
+            return;
+        }
+        if (record != null) {
+            record.add(kind, p, at);
             return;
         }
         switch (kind) {

@@ -21,6 +21,8 @@ public final class PageCanvas {
     private final ZBuffer zbuffer;
     /** Who drew each panel pixel, when someone asked to know; null costs nothing. */
     private Provenance provenance;
+    /** The threads scenes are drawn on this canvas with: the owner's, given to it; one (the caller's) by default. */
+    private DrawingThreads threads = DrawingThreads.one();
 
     public PageCanvas() {
         image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
@@ -56,6 +58,19 @@ public final class PageCanvas {
         if (record != null) {
             record.reset();
         }
+    }
+
+    /**
+     * From now on scenes are drawn on this canvas by {@code drawing}'s
+     * threads. The canvas does not own them: whoever gave them closes them.
+     */
+    public void drawWith(DrawingThreads drawing) {
+        threads = drawing;
+    }
+
+    /** The threads scenes are drawn on this canvas with. */
+    public DrawingThreads drawingThreads() {
+        return threads;
     }
 
     /** The provenance being recorded, or null. */

@@ -28,7 +28,7 @@ public final class ProvenanceDrawable extends DrawableDecorator {
     @Override
     public void setPixel(int x, int y, double z, int argb) {
         if (x >= 0 && x < width && y >= 0 && y < height) {
-            owner[y * width + x] = provenance.current;
+            owner[y * width + x] = provenance.currentAt(y);
         }
         delegate.setPixel(x, y, z, argb);
     }
@@ -40,7 +40,7 @@ public final class ProvenanceDrawable extends DrawableDecorator {
             int from = Math.max(0, x);
             int to = Math.min(width, x + count);
             if (from < to) {
-                java.util.Arrays.fill(owner, y * width + from, y * width + to, provenance.current);
+                java.util.Arrays.fill(owner, y * width + from, y * width + to, provenance.currentAt(y));
             }
         }
         delegate.setRun(x, y, count, depths, colours, at);
@@ -52,7 +52,7 @@ public final class ProvenanceDrawable extends DrawableDecorator {
             int from = Math.max(0, s.x0);
             int to = Math.min(width, s.x1);
             if (from < to) {
-                java.util.Arrays.fill(owner, s.y * width + from, s.y * width + to, provenance.current);
+                java.util.Arrays.fill(owner, s.y * width + from, s.y * width + to, provenance.currentAt(s.y));
             }
         }
         delegate.fillSpan(s);

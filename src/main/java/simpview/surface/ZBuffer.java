@@ -52,7 +52,11 @@ public final class ZBuffer {
 
     /** Some entry may now differ from the far plane. */
     public void written() {
-        atFarPlane = false;
+        // Read before written: threads drawing bands call this for every span, and a
+        // store each time would pull the line holding it from core to core.
+        if (atFarPlane) {
+            atFarPlane = false;
+        }
     }
 
     /** The raw depths, row by row from the bottom, for a stage that tests and writes them itself. */

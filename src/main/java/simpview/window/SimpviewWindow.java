@@ -35,7 +35,7 @@ import javax.swing.JFrame;
 import javax.swing.KeyStroke;
 import simpview.pages.Assignment1;
 import simpview.pages.PageStepper;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 
 /**
@@ -72,7 +72,7 @@ public final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
-        this.renderer = new BackgroundRenderer(drawer);
+        this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }
 
@@ -174,7 +174,7 @@ public final class SimpviewWindow {
         bind("previous", this::previous, "LEFT", "PAGE_UP", "KP_LEFT");
         bind("first", () -> end(true), "HOME");
         bind("last", () -> end(false), "END");
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             int page = n;
             bind("page" + n, () -> jump(page), String.valueOf(n), "NUMPAD" + n);
         }
@@ -264,7 +264,7 @@ public final class SimpviewWindow {
     /** Whether the view is drawn from a scene file (pages 4 to 8, an opened scene): what stepping and turning work on. */
     private boolean isScene(View view) {
         return view instanceof View.OfScene
-                || view instanceof View.OfPage page && Pages.page(page.number()) instanceof ScenePage;
+                || view instanceof View.OfPage page && Assignment2.page(page.number()) instanceof ScenePage;
     }
 
     /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
@@ -455,7 +455,7 @@ public final class SimpviewWindow {
             seed = ThreadLocalRandom.current().nextInt(1, 100_000);
         }
         options = options.withSeed(seed);
-        if (requested() instanceof View.OfPage page && Pages.page(page.number()).usesSeed()) {
+        if (requested() instanceof View.OfPage page && Assignment2.page(page.number()).usesSeed()) {
             show(page);
         } else if (requested() instanceof View.OfAssignment1Page page && Assignment1.page(page.number()).usesSeed()) {
             show(page);

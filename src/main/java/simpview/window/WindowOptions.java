@@ -13,11 +13,21 @@ import simpview.pages.PageContext;
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
  * @param ownScenes where the project's own scenes (pages 4 and 5) are
+ * @param threads how many threads draw each picture (the window's render thread and its helpers)
  */
-public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
+public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
+        int threads) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        }
+    }
+
+    /** Drawn by one thread per processor. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
+        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors());
     }
 
     /** Started from the repository's folder: the project's scenes in simp/. */
@@ -35,7 +45,7 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads);
     }
 
     PageContext pageContext() {

@@ -21,7 +21,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 
@@ -70,7 +70,7 @@ public class MainCommandLineTest {
         CliRun run = CliRun.of("render", "--all", "--simp-dir", TestScenes.courseSimpDir().toString(),
                 "--out-dir", outDir.toString());
         assertEquals(ExitCode.OK, run.exitCode(), run.err());
-        for (int n = 1; n <= Pages.COUNT; n++) {
+        for (int n = 1; n <= Assignment2.COUNT; n++) {
             BufferedImage written = ImageIO.read(outDir.resolve("page" + n + ".png").toFile());
             BufferedImage expected = new PageRenderer().renderImage(n, context);
             assertEquals(0, Images.differingPixels(expected, written), "page " + n);

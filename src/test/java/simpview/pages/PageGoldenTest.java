@@ -4,47 +4,61 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.provider.Arguments;
 import simpview.scene.SceneException;
+import simpview.surface.DrawingThreads;
 import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
 import simpview.testing.Goldens;
+import simpview.testing.ThreadCounts;
 
-/** Every page against its golden PNG, exactly. */
+/** Every page against its golden PNG, exactly, drawn by 1, 2 and 7 threads. */
 class PageGoldenTest {
 
     private final PageRenderer renderer = new PageRenderer();
 
-    static Stream<GoldenCase> seededPages() {
-        return GoldenCase.seededPages().stream();
+    static Stream<Arguments> seededPages() {
+        return ThreadCounts.each(GoldenCase.seededPages());
     }
 
-    @ParameterizedTest(name = "{0}")
+    @ParameterizedTest(name = "{0} on {1} threads")
     @MethodSource("seededPages")
-    void seededPagesMatchTheirGoldens(GoldenCase c) throws SceneException {
-        Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
+    void seededPagesMatchTheirGoldens(GoldenCase c, int threads) throws SceneException {
+        Goldens.assertMatches(c.name(), render(c, threads));
     }
 
-    static Stream<GoldenCase> ownScenePages() {
-        return GoldenCase.ownScenePages().stream();
+    static Stream<Arguments> ownScenePages() {
+        return ThreadCounts.each(GoldenCase.ownScenePages());
     }
 
-    @ParameterizedTest(name = "{0}")
+    @ParameterizedTest(name = "{0} on {1} threads")
     @MethodSource("ownScenePages")
-    void theProjectsOwnScenesMatchTheirGoldens(GoldenCase c) throws SceneException {
-        Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
+    void theProjectsOwnScenesMatchTheirGoldens(GoldenCase c, int threads) throws SceneException {
+        Goldens.assertMatches(c.name(), render(c, threads));
     }
 
-    @ParameterizedTest(name = "page {0}")
-    @ValueSource(ints = {6, 7, 8})
-    void theCourseScenesMatchTheirGoldens(int page) throws SceneException {
+    static Stream<Arguments> coursePages() {
+        return ThreadCounts.each(List.of(6, 7, 8));
+    }
+
+    @ParameterizedTest(name = "page {0} on {1} threads")
+    @MethodSource("coursePages")
+    void theCourseScenesMatchTheirGoldens(int page, int threads) throws SceneException {
         CourseFiles.requireSimpDir();
         GoldenCase c = GoldenCase.coursePages().get(page - 6);
-        Goldens.assertMatches(c.name(), renderer.renderImage(c.page(), c.context()));
+        Goldens.assertMatches(c.name(), render(c, threads));
+    }
+
+    /** The case's page drawn by a renderer with that many threads. */
+    private static BufferedImage render(GoldenCase c, int threads) throws SceneException {
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            return new PageRenderer(drawing).renderImage(c.page(), c.context());
+        }
     }
 
     @Test

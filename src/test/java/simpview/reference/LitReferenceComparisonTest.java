@@ -14,13 +14,15 @@ import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
+import simpview.surface.DrawingThreads;
+import simpview.testing.ThreadCounts;
 
 /**
  * simpview against the independent reference on lit scenes (SPEC Part 2):
  * every A3 page, every A4 page and random lit scenes must agree on at least
  * 99.9 % of panel pixels within 3/255 per channel, with one pixel of slack;
  * the margins stay white. simpview is asked through one adapter,
- * {@link #simpviewRender}.
+ * {@link #simpviewRender}, and each page is drawn by 1, 2 and 7 threads.
  */
 class LitReferenceComparisonTest {
 
@@ -32,8 +34,16 @@ class LitReferenceComparisonTest {
 
     /** simpview's picture of a scene, as a 750x750 page, by the rules the scene calls for. */
     static BufferedImage simpviewRender(Path scene) throws Exception {
+        return simpviewRender(scene, 1);
+    }
+
+    /** The same, drawn by that many threads. */
+    static BufferedImage simpviewRender(Path scene, int threads) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        DrawnScenes.draw(scene, canvas);
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            canvas.drawWith(drawing);
+            DrawnScenes.draw(scene, canvas);
+        }
         return canvas.image();
     }
 
@@ -59,15 +69,21 @@ class LitReferenceComparisonTest {
 
     /** simpview's page agrees with the reference's, and its margins are white. */
     static void assertAgrees(Path scene) throws Exception {
-        BufferedImage ours = simpviewRender(scene);
-        double share = agreement(ours, ReferencePage.render(scene));
-        assertTrue(share >= REQUIRED, scene.getFileName() + ": only " + String.format(Locale.ROOT, "%.4f", 100 * share)
+        BufferedImage reference = ReferencePage.render(scene);
+        for (int threads : ThreadCounts.ALL) {
+            assertAgrees(scene, threads, simpviewRender(scene, threads), reference);
+        }
+    }
+
+    private static void assertAgrees(Path scene, int threads, BufferedImage ours, BufferedImage reference) {
+        double share = agreement(ours, reference);
+        assertTrue(share >= REQUIRED, scene.getFileName() + " on " + threads + " threads: only " + String.format(Locale.ROOT, "%.4f", 100 * share)
                 + " % of panel pixels match the reference");
         for (int y = 0; y < RefRaster.PAGE; y++) {
             for (int x = 0; x < RefRaster.PAGE; x++) {
                 if (x < RefRaster.MARGIN || x >= RefRaster.PAGE - RefRaster.MARGIN || y < RefRaster.MARGIN
                         || y >= RefRaster.PAGE - RefRaster.MARGIN) {
-                    assertEquals(0xFFFFFF, ours.getRGB(x, y) & 0xFFFFFF, "margin " + x + "," + y);
+                    assertEquals(0xFFFFFF, ours.getRGB(x, y) & 0xFFFFFF, "margin " + x + "," + y + " on " + threads + " threads");
                 }
             }
         }

@@ -36,7 +36,7 @@ final class LitReferenceRenderer {
     static final int NX = 6;
     static final int SIZE = 9;
 
-    enum Shading { FLAT, GOURAUD, PHONG }
+    enum ShadingMode { FLAT, GOURAUD, PHONG }
 
     record Fog(double near, double far, double[] colour) {
     }
@@ -58,7 +58,7 @@ final class LitReferenceRenderer {
     private double ks = 0.3;
     private double exponent = 8;
     private Fog fog;
-    private Shading shading = Shading.PHONG;
+    private ShadingMode shading = ShadingMode.PHONG;
 
     static BufferedImage render(Path scene) throws IOException {
         LitReferenceRenderer renderer = new LitReferenceRenderer();
@@ -102,9 +102,9 @@ final class LitReferenceRenderer {
             case "rotate" -> ctm = RefMatrix.times(ctm, RefMatrix.rotate(tokens[1].charAt(0), num(tokens, 2)));
             case "wire" -> wire = true;
             case "filled" -> wire = false;
-            case "flat" -> shading = Shading.FLAT;
-            case "gouraud" -> shading = Shading.GOURAUD;
-            case "phong" -> shading = Shading.PHONG;
+            case "flat" -> shading = ShadingMode.FLAT;
+            case "gouraud" -> shading = ShadingMode.GOURAUD;
+            case "phong" -> shading = ShadingMode.PHONG;
             case "ambient" -> ambient = numbers(tokens, 3);
             case "surface" -> surface(numbers(tokens, -1));
             case "depth" -> depth(numbers(tokens, 5));
@@ -291,17 +291,17 @@ final class LitReferenceRenderer {
         }
         List<double[]> vertices = new ArrayList<>();
         RefLighting lighting = lighting();
-        double[] flat = wire || shading != Shading.FLAT ? null : flatColour(lighting, p, kd, normal, allOwn, face);
+        double[] flat = wire || shading != ShadingMode.FLAT ? null : flatColour(lighting, p, kd, normal, allOwn, face);
         for (int i = 0; i < n; i++) {
-            double[] colour = wire || shading == Shading.PHONG ? kd[i]
-                    : shading == Shading.FLAT ? flat : lighting.colour(p[i], normal[i], kd[i]);
+            double[] colour = wire || shading == ShadingMode.PHONG ? kd[i]
+                    : shading == ShadingMode.FLAT ? flat : lighting.colour(p[i], normal[i], kd[i]);
             vertices.add(vertex(p[i], colour, wire ? new double[3] : normal[i]));
         }
         if (RefClipper.culled(view, vertices)) {
             return;
         }
         List<double[]> clipped = RefClipper.polygon(view, vertices);
-        RefRaster.Fragment fragment = wire || shading != Shading.PHONG ? unlit(fog) : phong(lighting, fog);
+        RefRaster.Fragment fragment = wire || shading != ShadingMode.PHONG ? unlit(fog) : phong(lighting, fog);
         if (wire) {
             for (int i = 0; clipped.size() >= 2 && i < clipped.size(); i++) {
                 raster.line(view, clipped.get(i), clipped.get((i + 1) % clipped.size()), fragment);

@@ -14,7 +14,7 @@ import java.util.Random;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -22,6 +22,8 @@ import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
+import simpview.surface.DrawingThreads;
+import simpview.testing.ThreadCounts;
 
 /**
  * simpview against the independent {@link ReferenceRenderer}, the way unseen
@@ -47,7 +49,7 @@ class ReferenceComparisonTest {
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"page4.simp", "page5.simp"})
     void ownScenes(String name) throws Exception {
-        compare(GoldenCase.ownSimpDir().resolve(name), name.equals("page4.simp") ? Rgb.GREEN : Pages.PAGE5_NEAR);
+        compare(GoldenCase.ownSimpDir().resolve(name), name.equals("page4.simp") ? Rgb.GREEN : Assignment2.PAGE5_NEAR);
     }
 
     @ParameterizedTest(name = "seed {0}")
@@ -81,12 +83,21 @@ class ReferenceComparisonTest {
         compare(scene, near, near);
     }
 
+    /** simpview's picture on 1, 2 and 7 threads, each against the reference's. */
     private static void compare(Path scene, Rgb near, Rgb referenceNear) throws IOException, SceneException {
-        PageCanvas canvas = new PageCanvas();
-        ScenePipeline.drawDepthCued(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE);
         ReferenceRenderer reference = new ReferenceRenderer(
                 new double[] {referenceNear.r(), referenceNear.g(), referenceNear.b()}, new double[] {0, 0, 0});
         reference.render(scene);
+        for (int threads : ThreadCounts.ALL) {
+            PageCanvas canvas = new PageCanvas();
+            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                ScenePipeline.drawDepthCued(scene, canvas.depthCued(near, Rgb.BLACK), SceneMonitor.NONE, drawing, null);
+            }
+            compare(scene, threads, canvas, reference);
+        }
+    }
+
+    private static void compare(Path scene, int threads, PageCanvas canvas, ReferenceRenderer reference) {
 
         int matching = 0;
         int exact = 0;
@@ -104,9 +115,9 @@ class ReferenceComparisonTest {
         // (and the negative control below checks that a wrong picture does).
         String numbers = String.format(Locale.ROOT, "%.4f%% within tolerance, %.4f%% identical; the reference drew %d pixels",
                 100.0 * matching / total, 100.0 * exact / total, drawn);
-        assertTrue(drawn > total / 100, scene.getFileName() + ": the reference drew only " + drawn
+        assertTrue(drawn > total / 100, scene.getFileName() + " on " + threads + " threads: the reference drew only " + drawn
                 + " pixels, too few for the comparison to mean much");
-        assertTrue(matching >= REQUIRED * total, scene.getFileName() + ": only " + matching + " of " + total
+        assertTrue(matching >= REQUIRED * total, scene.getFileName() + " on " + threads + " threads: only " + matching + " of " + total
                 + " panel pixels match the reference (" + numbers + ")");
         assertMarginsWhite(canvas);
     }

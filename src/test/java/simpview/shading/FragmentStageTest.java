@@ -12,6 +12,7 @@ import net.jqwik.api.Property;
 import org.junit.jupiter.api.Test;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentLayout;
 import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
 import simpview.surface.Provenance;
@@ -28,7 +29,7 @@ import simpview.surface.ZBuffer;
 class FragmentStageTest {
 
     private static final int SIZE = 150;
-    private static final int CHANNELS = FragmentStage.PHONG_CHANNELS;
+    private static final int CHANNELS = FragmentLayout.PHONG_CHANNELS;
 
     /** One stage, its surface, and what it keeps. */
     private record Stage(FragmentStage fragments, BufferedImage image, ZBuffer zbuffer, Provenance provenance) {
@@ -82,7 +83,7 @@ class FragmentStageTest {
             double q0 = 1 / (4 + random.nextDouble() * 12);
             double dq = (random.nextDouble() - 0.5) * 1e-4;
             for (int c = 0; c < CHANNELS; c++) {
-                double value = c == FragmentStage.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
+                double value = c == FragmentLayout.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
                 v0[c] = value * q0;
                 dv[c] = (random.nextDouble() - 0.5) * 1e-3;
             }
@@ -108,12 +109,12 @@ class FragmentStageTest {
         Stage stage = Stage.make(state, true);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
-        v0[FragmentStage.Z] = -5;
-        v0[FragmentStage.NZ] = 1;
-        v0[FragmentStage.R] = 1;
+        v0[FragmentLayout.Z] = -5;
+        v0[FragmentLayout.NZ] = 1;
+        v0[FragmentLayout.R] = 1;
         stage.provenance().begin(1);
         stage.fragments().span(10, -5, SIZE + 5, 1, 0, v0, dv);
-        v0[FragmentStage.Z] = -6;
+        v0[FragmentLayout.Z] = -6;
         stage.provenance().begin(2);
         stage.fragments().span(10, 0, SIZE, 1, 0, v0, dv);
         for (int x = 0; x < SIZE; x++) {

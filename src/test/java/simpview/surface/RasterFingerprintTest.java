@@ -2,13 +2,16 @@ package simpview.surface;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.List;
 import java.util.Random;
 import java.util.zip.CRC32;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
+import simpview.stage.CuedPrimitives;
+import simpview.stage.Painter;
 
 /**
  * Guards the raster fast paths against any change of output while they are
@@ -21,7 +24,8 @@ import simpview.raster.FilledPolygonRenderer;
  * pixels are held by DdaLineRendererTest's exact expectations); an
  * optimisation must never change them. The same primitives given as plain numbers
  * (the renderers' array entries, as scenes use them) must match the same
- * checksums.
+ * checksums, and so must the same primitives drawn band by band by 2 and by
+ * 7 threads.
  */
 class RasterFingerprintTest {
 
@@ -29,32 +33,32 @@ class RasterFingerprintTest {
     private static final Rgb FAR = new Rgb(0.1, 0, 0.2);
 
     @ParameterizedTest(name = "{0}")
-    @EnumSource(Entry.class)
-    void panelChain(Entry entry) {
+    @MethodSource("ways")
+    void panelChain(Way entry) {
         PageCanvas canvas = new PageCanvas();
         draw(canvas, canvas.panel(), 11, entry);
         assertEquals(3035845392L, checksum(canvas), "panel");
     }
 
     @ParameterizedTest(name = "{0}")
-    @EnumSource(Entry.class)
-    void depthTestedChain(Entry entry) {
+    @MethodSource("ways")
+    void depthTestedChain(Way entry) {
         PageCanvas canvas = new PageCanvas();
         draw(canvas, canvas.depthTested(), 12, entry);
         assertEquals(1872279498L, checksum(canvas), "depth tested");
     }
 
     @ParameterizedTest(name = "{0}")
-    @EnumSource(Entry.class)
-    void depthCuedChain(Entry entry) {
+    @MethodSource("ways")
+    void depthCuedChain(Way entry) {
         PageCanvas canvas = new PageCanvas();
         draw(canvas, canvas.depthCued(NEAR, FAR), 13, entry);
         assertEquals(1458905852L, checksum(canvas), "depth cued");
     }
 
     @ParameterizedTest(name = "{0}")
-    @EnumSource(Entry.class)
-    void depthCuedWhiteToBlackChain(Entry entry) {
+    @MethodSource("ways")
+    void depthCuedWhiteToBlackChain(Way entry) {
         PageCanvas canvas = new PageCanvas();
         draw(canvas, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), 14, entry);
         assertEquals(2691378239L, checksum(canvas), "depth cued white to black");
@@ -63,9 +67,32 @@ class RasterFingerprintTest {
     /** How the primitives reach the renderers. */
     enum Entry { VERTICES, NUMBERS }
 
-    private static void draw(PageCanvas canvas, Drawable target, long seed, Entry entry) {
+    /**
+     * An entry and the threads that draw: more than one records the
+     * primitives as numbers and draws them band by band ({@link CuedPrimitives}).
+     */
+    record Way(Entry entry, int threads) {
+        @Override
+        public String toString() {
+            return entry + " on " + threads + (threads == 1 ? " thread" : " threads");
+        }
+    }
+
+    static List<Way> ways() {
+        return List.of(new Way(Entry.VERTICES, 1), new Way(Entry.NUMBERS, 1), new Way(Entry.NUMBERS, 2),
+                new Way(Entry.NUMBERS, 7));
+    }
+
+    private static void draw(PageCanvas canvas, Drawable target, long seed, Way way) {
+        try (DrawingThreads threads = DrawingThreads.of(way.threads())) {
+            Renderers r = new Renderers(way.entry(), threads, target);
+            draw(r, target, seed);
+            r.finish();
+        }
+    }
+
+    private static void draw(Renderers r, Drawable target, long seed) {
         Random random = new Random(seed);
-        Renderers r = new Renderers(entry);
         for (int i = 0; i < 3000; i++) {
             double size = i % 3 == 0 ? 900 : i % 3 == 1 ? 60 : 4;
             double cx = random.nextDouble() * 800 - 75;
@@ -91,12 +118,38 @@ class RasterFingerprintTest {
         private final DdaLineRenderer lines = new DdaLineRenderer();
         private final double[] numbers = new double[AT + 3 * Vertex.NUMBERS + 1];
         private final Entry entry;
+        /** With more than one thread: the painter that records, and its record. */
+        private final Painter painter;
+        private final CuedPrimitives record;
+        private final double[] primitive = new double[Painter.STRIDE];
 
-        Renderers(Entry entry) {
+        Renderers(Entry entry, DrawingThreads threads, Drawable target) {
             this.entry = entry;
+            if (threads.isOne()) {
+                painter = null;
+                record = null;
+            } else {
+                painter = new Painter(target, lines, filled, filled);
+                record = new CuedPrimitives(threads, target, null);
+                painter.recordTo(record);
+            }
+        }
+
+        /** Draws what was recorded. */
+        void finish() {
+            if (record != null) {
+                record.flush();
+            }
         }
 
         void triangle(Vertex a, Vertex b, Vertex c, Drawable target) {
+            if (painter != null) {
+                a.writeTo(primitive, 0);
+                b.writeTo(primitive, Vertex.NUMBERS);
+                c.writeTo(primitive, 2 * Vertex.NUMBERS);
+                painter.draw(Painter.FILLED, primitive, 0);
+                return;
+            }
             if (entry == Entry.VERTICES) {
                 filled.drawPolygon(a, b, c, target);
                 return;
@@ -108,6 +161,12 @@ class RasterFingerprintTest {
         }
 
         void line(Vertex a, Vertex b, Drawable target) {
+            if (painter != null) {
+                a.writeTo(primitive, 0);
+                b.writeTo(primitive, Vertex.NUMBERS);
+                painter.draw(Painter.LINE, primitive, 0);
+                return;
+            }
             if (entry == Entry.VERTICES) {
                 lines.drawLine(a, b, target);
                 return;

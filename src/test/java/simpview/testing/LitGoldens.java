@@ -9,6 +9,7 @@ import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import simpview.surface.DrawingThreads;
 
 /**
  * The golden images of lit scenes: the project's own (own-lit-shading,
@@ -39,9 +40,18 @@ public final class LitGoldens {
         }
 
         public BufferedImage render() throws SceneException {
-            PageCanvas canvas = new PageCanvas();
-            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
-            return canvas.snapshot();
+            return render(1);
+        }
+
+        /** The scene drawn by that many threads. */
+        public BufferedImage render(int threads) throws SceneException {
+            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                PageCanvas canvas = new PageCanvas();
+                canvas.drawWith(drawing);
+                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()),
+                        SceneMonitor.NONE);
+                return canvas.snapshot();
+            }
         }
     }
 

@@ -18,7 +18,7 @@ import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
@@ -57,7 +57,7 @@ public class SimpviewWindowTest extends WindowTestCase {
         PageContext context = PageContext.defaults().withSeed(SEED).withSimpDir(TestScenes.courseSimpDir());
         open(context.simpDir(), SceneDrawer.SIMP);
         PageRenderer headless = new PageRenderer();
-        for (int page = 1; page <= Pages.COUNT; page++) {
+        for (int page = 1; page <= Assignment2.COUNT; page++) {
             RenderedView shown = driver.awaitShown(new View.OfPage(page));
             try {
                 BufferedImage expected = headless.renderImage(page, context);

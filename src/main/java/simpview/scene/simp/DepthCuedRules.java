@@ -5,11 +5,14 @@ import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.stage.CuedPrimitives;
 import simpview.stage.DepthCuedGeometry;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Provenance;
 
 /**
  * A scene by the depth-cued rules (SPEC Part 1): each line and polygon goes
@@ -31,6 +34,8 @@ final class DepthCuedRules implements RuleSet {
     private Matrix4 lastCtm;
     private Matrix4 turnedCtm;
     private int traced;
+    /** The record several threads draw from, or null: drawn at once, on this thread. */
+    private CuedPrimitives record;
 
     /** The project's renderers on {@code panel}: DDA lines, top-left-rule fills, wireframes of DDA lines. */
     DepthCuedRules(Drawable panel, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
@@ -78,6 +83,25 @@ final class DepthCuedRules implements RuleSet {
 
     Painter painter() {
         return painter;
+    }
+
+    /**
+     * With more than one of {@code threads}: from now on the primitives are
+     * recorded and drawn band by band onto {@code panel} (the painter's),
+     * owners into {@code provenance} (or null). Call before the scene is read.
+     */
+    void drawWith(DrawingThreads threads, Drawable panel, Provenance provenance) {
+        if (!threads.isOne()) {
+            record = new CuedPrimitives(threads, panel, provenance);
+            painter.recordTo(record);
+        }
+    }
+
+    @Override
+    public void flush() {
+        if (record != null) {
+            record.flush();
+        }
     }
 
     /** From now on the transformed primitives go to {@code to} (the painter, or a reader's batches). */

@@ -11,7 +11,12 @@ import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.LitGeometry;
+import simpview.stage.LitPrimitives;
 import simpview.stage.PrimitiveTrace;
+import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Provenance;
+import simpview.surface.ZBuffer;
 
 /**
  * A scene by the lit rules (SPEC Part 2): the lit commands set the camera,
@@ -31,6 +36,8 @@ final class LitRules implements RuleSet {
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
     private String cameraAt;
     private String firstPrimitiveAt;
+    /** The record several threads draw from, or null: drawn at once, on this thread. */
+    private LitPrimitives record;
 
     /**
      * @param fragments where the fragments go: the canvas's z-buffer (reset to -infinity) and panel
@@ -81,9 +88,9 @@ final class LitRules implements RuleSet {
             case SURFACE -> surface(c);
             case DEPTH -> depth(c);
             case LIGHT -> light(c, ctm);
-            case FLAT -> shading(LitState.Shading.FLAT);
-            case GOURAUD -> shading(LitState.Shading.GOURAUD);
-            case PHONG -> shading(LitState.Shading.PHONG);
+            case FLAT -> shading(LitState.ShadingMode.FLAT);
+            case GOURAUD -> shading(LitState.ShadingMode.GOURAUD);
+            case PHONG -> shading(LitState.ShadingMode.PHONG);
             case PUSH, POP, SCALE, TRANSLATE, ROTATE, LINE, POLYGON, FILE, WIRE, FILLED ->
                     throw new IllegalArgumentException(c.kind.spelling + " is the same under both rules: SimpClient's");
         };
@@ -152,7 +159,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean shading(LitState.Shading shading) {
+    private boolean shading(LitState.ShadingMode shading) {
         state.setShading(shading);
         return false;
     }
@@ -180,6 +187,31 @@ final class LitRules implements RuleSet {
     }
 
     /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
+    /** The state as the commands so far left it: read, never to be changed. */
+    LitState state() {
+        return state;
+    }
+
+    /**
+     * With more than one of {@code threads}: from now on the primitives are
+     * recorded and drawn band by band, depth-tested against {@code zbuffer}
+     * onto {@code panel} (the fragment stage's), owners into
+     * {@code provenance} (or null). Call before the scene is read.
+     */
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+        if (!threads.isOne()) {
+            record = new LitPrimitives(threads, zbuffer, panel, provenance);
+            geometry.recordTo(record);
+        }
+    }
+
+    @Override
+    public void flush() {
+        if (record != null) {
+            record.flush();
+        }
+    }
+
     double[] shownCentre() {
         return geometry.shownCentre();
     }

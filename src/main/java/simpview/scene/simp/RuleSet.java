@@ -20,4 +20,11 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
 
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     long culledCount();
+
+    /**
+     * Draws what is still recorded, when several threads draw (see
+     * {@link #drawWith}); nothing otherwise. Called once the scene is read,
+     * also after an error, so what was read before it is drawn.
+     */
+    void flush();
 }

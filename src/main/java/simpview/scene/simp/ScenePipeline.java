@@ -7,7 +7,9 @@ import simpview.scene.obj.ObjLibrary;
 import simpview.shading.FragmentStage;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
 import simpview.surface.Rgb;
 
 /**
@@ -132,7 +134,7 @@ public final class ScenePipeline {
         try {
             SimpClient client = options.rules() == Rules.LIT ? litFromTheStart(canvas, options, files, monitor)
                     : depthCuedFirst(canvas, options, files, monitor);
-            new SimpInterpreter(client, monitor).run(file);
+            run(client, monitor, file);
             return drawn(client, client.litBecause(), files, monitor);
         } catch (SceneTurnsLit turn) {
             if (options.rules() == Rules.DEPTH_CUED_OR_NOTHING) {
@@ -159,10 +161,23 @@ public final class ScenePipeline {
         FileStack files = new FileStack(FileStack.SMALL_FILE, options.workingDir());
         try {
             SimpClient client = litFromTheStart(canvas, options, files, monitor);
-            new SimpInterpreter(client, monitor).run(file);
+            run(client, monitor, file);
             return drawn(client, litBecause, files, monitor);
         } finally {
             monitor.reached(files.reached());
+        }
+    }
+
+    /**
+     * Reads and draws the scene. With several drawing threads the primitives
+     * are recorded as they are read, and what is still recorded is drawn at
+     * the end, also after an error (what was read before it stays drawn).
+     */
+    private static void run(SimpClient client, SceneMonitor monitor, Path file) throws SceneException {
+        try {
+            new SimpInterpreter(client, monitor).run(file);
+        } finally {
+            client.flush();
         }
     }
 
@@ -170,6 +185,7 @@ public final class ScenePipeline {
     private static SimpClient depthCuedFirst(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
         Drawable panel = options.ownColours() ? canvas.depthTested() : canvas.depthCued(options.near(), options.far());
         DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
+        cued.drawWith(canvas.drawingThreads(), panel, canvas.provenance());
         SimpClient.OnLit onLit = switch (options.rules()) {
             case BY_COMMANDS, LIT -> SimpClient.OnLit.TURN_LIT;
             case DEPTH_CUED -> SimpClient.OnLit.IGNORE;
@@ -188,8 +204,11 @@ public final class ScenePipeline {
     /** The lit rules on the canvas: its z-buffer from -infinity, fragments onto its panel. */
     private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
         canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), canvas.litPanel());
-        return new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
+        Drawable panel = canvas.litPanel();
+        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), panel);
+        LitRules lit = new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
+        lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
+        return lit;
     }
 
     /**
@@ -199,11 +218,21 @@ public final class ScenePipeline {
      * those of {@link #draw}'s depth-cued rules.
      */
     public static void drawDepthCued(Path file, Drawable panel, SceneMonitor monitor) throws SceneException {
+        drawDepthCued(file, panel, monitor, DrawingThreads.one(), null);
+    }
+
+    /**
+     * The same, drawn by {@code threads} (the geometry stage once, on this
+     * thread, then the panel band by band by all of them), owners into
+     * {@code provenance} when the panel records them (else null).
+     */
+    public static void drawDepthCued(Path file, Drawable panel, SceneMonitor monitor, DrawingThreads threads,
+            Provenance provenance) throws SceneException {
         FileStack files = new FileStack();
         try {
             DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
-            new SimpInterpreter(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor)
-                    .run(file);
+            cued.drawWith(threads, panel, provenance);
+            run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
             monitor.reached(files.reached());
         }

@@ -1,5 +1,6 @@
 package simpview.scene.simp;
 
+import simpview.shading.LitState;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
@@ -183,6 +184,16 @@ public final class SimpClient {
             firstClamped = files.place();
         }
         return c.colored ? c.rgb : null;
+    }
+
+    /** Draws what the rules still hold recorded (several drawing threads); see {@link RuleSet#flush}. */
+    void flush() {
+        rules.flush();
+    }
+
+    /** The lit state as the commands so far left it, or null while depth-cued: read, never to be changed. */
+    public LitState litState() {
+        return rules instanceof LitRules lit ? lit.state() : null;
     }
 
     /** True once the scene is drawn by the lit rules. */

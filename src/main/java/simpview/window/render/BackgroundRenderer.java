@@ -8,6 +8,7 @@ import java.util.concurrent.Executors;
 import java.util.function.BiConsumer;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageRenderer;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 
@@ -23,15 +24,25 @@ public final class BackgroundRenderer {
         t.setDaemon(true);
         return t;
     });
-    private final PageRenderer renderer = new PageRenderer();
+    /** simpview-render and its helpers, which draw each picture's bands with it; closed by {@link #shutdown}. */
+    private final DrawingThreads drawing;
+    private final PageRenderer renderer;
     private final SceneDrawer drawer;
-    /** Who drew each pixel of the picture being drawn; only this thread writes it. */
+    /** Who drew each pixel of the picture being drawn; only this thread writes it (each band its own rows). */
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
     /** The window's obj models, kept across redraws while their files are unchanged; only this thread uses it. */
     private final ObjLibrary models = new ObjLibrary();
 
+    /** Draws on the render thread alone. */
     public BackgroundRenderer(SceneDrawer drawer) {
+        this(drawer, 1);
+    }
+
+    /** Draws each picture with {@code threads} threads: the render thread and threads - 1 helpers. */
+    public BackgroundRenderer(SceneDrawer drawer, int threads) {
         this.drawer = drawer;
+        this.drawing = DrawingThreads.of(threads);
+        this.renderer = new PageRenderer(drawing);
     }
 
     /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
@@ -44,5 +55,6 @@ public final class BackgroundRenderer {
 
     public void shutdown() {
         thread.shutdownNow();
+        drawing.close();
     }
 }

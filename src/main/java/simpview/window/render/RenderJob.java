@@ -16,7 +16,7 @@ import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.pages.PageRenderer;
 import simpview.pages.Assignment1;
-import simpview.pages.Pages;
+import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 import simpview.surface.Provenance;
@@ -173,7 +173,7 @@ public final class RenderJob implements SceneMonitor {
     /** What each primitive drawn was, in drawing order. */
     private Primitives primitives() {
         if (view instanceof View.OfPage page) {
-            List<String> names = Pages.page(page.number()).primitiveNames(context);
+            List<String> names = Assignment2.page(page.number()).primitiveNames(context);
             if (!names.isEmpty()) {
                 return Primitives.named(names);
             }
@@ -189,7 +189,7 @@ public final class RenderJob implements SceneMonitor {
         if (view instanceof View.OfAssignment1Page) {
             return null;
         }
-        return Pages.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
+        return Assignment2.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
     }
 
     /** The scene files this picture read or looked for: what to watch for a save. */

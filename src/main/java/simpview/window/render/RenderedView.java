@@ -3,8 +3,8 @@ package simpview.window.render;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
 import simpview.pages.Page;
-import simpview.pages.Pages;
 
 /**
  * A finished picture, ready for the screen.
@@ -25,8 +25,8 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
     /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
     public String title() {
         if (view instanceof View.OfPage page) {
-            String title = "simpview — page " + page.number() + "/" + Pages.COUNT + ": " + Pages.page(page.number()).title();
-            title = Pages.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
+            String title = "simpview — page " + page.number() + "/" + Assignment2.COUNT + ": " + Assignment2.page(page.number()).title();
+            title = Assignment2.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
             return error == null ? title : title + " — error";
         }
         if (view instanceof View.OfAssignment1Page page) {
@@ -42,7 +42,7 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
     /** A file name to offer when saving, e.g. "page3-seed361.png" or "house.png". */
     public String suggestedFileName() {
         if (view instanceof View.OfPage page) {
-            return "page" + page.number() + (Pages.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+            return "page" + page.number() + (Assignment2.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
         }
         if (view instanceof View.OfAssignment1Page page) {
             return "a1-page" + page.number() + (Assignment1.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";

@@ -4,7 +4,7 @@ import java.util.List;
 import simpview.surface.Rgb;
 
 /** The eight pages, in order. Page n is {@code all().get(n - 1)}. */
-public final class Pages {
+public final class Assignment2 {
 
     public static final int COUNT = 8;
 
@@ -21,7 +21,7 @@ public final class Pages {
             ScenePage.course("page7.simp"),
             ScenePage.course("page8.simp"));
 
-    private Pages() {
+    private Assignment2() {
     }
 
     public static List<Page> all() {

@@ -1,0 +1,198 @@
+"""The llvmpipe side of simpview's side-by-side benchmark.
+
+Draws the pages that simpview.bench.LlvmpipeExport wrote (NAME.bin: the
+filled triangles simpview's geometry stage hands its rasterizers, grouped by
+how they are lit) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
+context), with simpview's lighting formula, fog and depth test in GLSL, per
+pixel. Warm: the triangles are uploaded and the shaders compiled first, and
+20 redraws run before 21 are timed (clear colour and depth, one draw call
+per group, glFinish). Prints one line per page: NAME median_ms best_ms.
+
+Usage: python draw.py DIR NAME...   (with SIMPVIEW_LLVMPIPE_PNG=1 also writes
+DIR/NAME-llvmpipe.png, the panel as llvmpipe drew it, to look at beside simpview's)
+"""
+import os
+import struct
+import sys
+import time
+import zlib
+
+os.environ.setdefault("PYOPENGL_PLATFORM", "osmesa")
+
+import numpy as np  # noqa: E402
+from OpenGL import GL, arrays, osmesa  # noqa: E402
+
+SIZE = 650
+UNIFORMS = 80
+FLOATS = 13
+
+VERTEX = """
+#version 330 core
+layout(location = 0) in vec4 clip;
+layout(location = 1) in vec4 zrgb;
+layout(location = 2) in vec4 pn;
+layout(location = 3) in float nz;
+out vec4 v_zrgb;
+out vec4 v_pn;
+out float v_nz;
+void main() {
+    gl_Position = clip;
+    v_zrgb = zrgb;
+    v_pn = pn;
+    v_nz = nz;
+}
+"""
+
+# SPEC's lighting: I = kd Ia + sum_i (Ii fi) (kd (N.Li) + ks max(0, V.Ri)^p),
+# fi = 1 / (A + B d), clamped to [0, 1]; then fog on camera-space z.
+FRAGMENT = """
+#version 330 core
+in vec4 v_zrgb;
+in vec4 v_pn;
+in float v_nz;
+out vec4 colour;
+uniform float u[80];
+void main() {
+    vec3 c = v_zrgb.yzw;
+    float z = v_zrgb.x;
+    if (u[0] > 0.5) {
+        vec3 kd = c;
+        vec3 P = vec3(v_pn.x, v_pn.y, z);
+        vec3 N = vec3(v_pn.z, v_pn.w, v_nz);
+        float nl = length(N);
+        N = nl > 0.0 ? N / nl : N;
+        vec3 V = u[12] > 0.5 ? normalize(-P) : vec3(0.0, 0.0, 1.0);
+        c = kd * vec3(u[7], u[8], u[9]);
+        int lights = int(u[13]);
+        for (int i = 0; i < lights; i++) {
+            int o = 16 + 8 * i;
+            vec3 toLight = vec3(u[o], u[o + 1], u[o + 2]) - P;
+            float d = length(toLight);
+            vec3 L = toLight / d;
+            float nDotL = dot(N, L);
+            if (nDotL > 0.0) {
+                vec3 R = 2.0 * nDotL * N - L;
+                float f = 1.0 / (u[o + 6] + u[o + 7] * d);
+                float spec = u[10] * pow(max(0.0, min(1.0, dot(V, R))), u[11]);
+                c += vec3(u[o + 3], u[o + 4], u[o + 5]) * f * (kd * nDotL + spec);
+            }
+        }
+        c = clamp(c, 0.0, 1.0);
+    }
+    if (u[1] > 0.5 && z < u[2]) {
+        float t = clamp((z - u[3]) / (u[2] - u[3]), 0.0, 1.0);
+        c = t * c + (1.0 - t) * vec3(u[4], u[5], u[6]);
+    }
+    colour = vec4(c, 1.0);
+}
+"""
+
+
+def context():
+    attrs = arrays.GLintArray.asArray([
+        osmesa.OSMESA_FORMAT, osmesa.OSMESA_RGBA, osmesa.OSMESA_DEPTH_BITS, 24,
+        osmesa.OSMESA_PROFILE, osmesa.OSMESA_CORE_PROFILE,
+        osmesa.OSMESA_CONTEXT_MAJOR_VERSION, 4, osmesa.OSMESA_CONTEXT_MINOR_VERSION, 5, 0])
+    ctx = osmesa.OSMesaCreateContextAttribs(attrs, None)
+    buf = arrays.GLubyteArray.zeros((SIZE, SIZE, 4))
+    if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, SIZE, SIZE):
+        raise SystemExit("OSMesa: no context")
+    return ctx, buf
+
+
+def program():
+    def shader(kind, source):
+        s = GL.glCreateShader(kind)
+        GL.glShaderSource(s, source)
+        GL.glCompileShader(s)
+        if not GL.glGetShaderiv(s, GL.GL_COMPILE_STATUS):
+            raise SystemExit(GL.glGetShaderInfoLog(s).decode())
+        return s
+    p = GL.glCreateProgram()
+    GL.glAttachShader(p, shader(GL.GL_VERTEX_SHADER, VERTEX))
+    GL.glAttachShader(p, shader(GL.GL_FRAGMENT_SHADER, FRAGMENT))
+    GL.glLinkProgram(p)
+    if not GL.glGetProgramiv(p, GL.GL_LINK_STATUS):
+        raise SystemExit(GL.glGetProgramInfoLog(p).decode())
+    return p
+
+
+def load(path):
+    raw = open(path, "rb").read()
+    at = 0
+    groups = int(np.frombuffer(raw, "<i4", 1, at)[0])
+    at += 4
+    uniforms, counts, vertices = [], [], []
+    for _ in range(groups):
+        uniforms.append(np.frombuffer(raw, "<f4", UNIFORMS, at).copy())
+        at += 4 * UNIFORMS
+        n = int(np.frombuffer(raw, "<i4", 1, at)[0])
+        at += 4
+        vertices.append(np.frombuffer(raw, "<f4", n * FLOATS, at))
+        at += 4 * n * FLOATS
+        counts.append(n)
+    return uniforms, counts, np.concatenate(vertices) if vertices else np.zeros(0, "<f4")
+
+
+def write_png(path, rgba):
+    """The SIZE x SIZE RGBA buffer (bottom row first, as OpenGL reads it) as an RGB PNG."""
+    rows = rgba[::-1, :, :3]
+    raw = b"".join(b"\x00" + rows[y].tobytes() for y in range(rows.shape[0]))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    header = struct.pack(">IIBBBBB", rows.shape[1], rows.shape[0], 8, 2, 0, 0, 0)
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def main():
+    folder = sys.argv[1]
+    ctx, buf = context()
+    prog = program()
+    GL.glUseProgram(prog)
+    where = GL.glGetUniformLocation(prog, "u")
+    GL.glViewport(0, 0, SIZE, SIZE)
+    GL.glEnable(GL.GL_DEPTH_TEST)
+    GL.glDepthFunc(GL.GL_LESS)  # strictly nearer wins, as simpview's z-buffer
+    GL.glClearColor(0, 0, 0, 1)
+    for name in sys.argv[2:]:
+        uniforms, counts, data = load(os.path.join(folder, name + ".bin"))
+        vao = GL.glGenVertexArrays(1)
+        GL.glBindVertexArray(vao)
+        vbo = GL.glGenBuffers(1)
+        GL.glBindBuffer(GL.GL_ARRAY_BUFFER, vbo)
+        GL.glBufferData(GL.GL_ARRAY_BUFFER, data.nbytes, data, GL.GL_STATIC_DRAW)
+        stride = 4 * FLOATS
+        for index, (size, offset) in enumerate([(4, 0), (4, 16), (4, 32), (1, 48)]):
+            GL.glEnableVertexAttribArray(index)
+            GL.glVertexAttribPointer(index, size, GL.GL_FLOAT, GL.GL_FALSE, stride, GL.GLvoidp(offset))
+        firsts = np.cumsum([0] + counts[:-1]).tolist()
+
+        def redraw():
+            GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
+            for u, first, count in zip(uniforms, firsts, counts):
+                GL.glUniform1fv(where, UNIFORMS, u)
+                GL.glDrawArrays(GL.GL_TRIANGLES, first, count)
+            GL.glFinish()
+
+        for _ in range(20):
+            redraw()
+        times = []
+        for _ in range(21):
+            start = time.perf_counter()
+            redraw()
+            times.append((time.perf_counter() - start) * 1000)
+        times.sort()
+        print("%s %.3f %.3f" % (name, times[len(times) // 2], times[0]), flush=True)
+        if os.environ.get("SIMPVIEW_LLVMPIPE_PNG"):
+            pixels = GL.glReadPixels(0, 0, SIZE, SIZE, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE)
+            write_png(os.path.join(folder, name + "-llvmpipe.png"),
+                      np.frombuffer(pixels, np.uint8).reshape(SIZE, SIZE, 4))
+        GL.glDeleteBuffers(1, [vbo])
+        GL.glDeleteVertexArrays(1, [vao])
+    osmesa.OSMesaDestroyContext(ctx)
+
+
+if __name__ == "__main__":
+    main()

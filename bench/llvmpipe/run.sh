@@ -1,0 +1,27 @@
+#!/bin/sh
+# simpview against Mesa's llvmpipe on the same lit course pages, in one run,
+# page by page: simpview's warm redraws on 1 and 2 threads (LlvmpipeExport,
+# which also writes the page's triangles), then at once llvmpipe's warm
+# redraws of those triangles (draw.py), so both see the host as it is then;
+# then the table of both, with the load average before and after.
+# Run setup.sh once first.
+# Usage: bench/llvmpipe/run.sh [COURSE_DIR] [page ...]   (COURSE_DIR holds course-simp-a3 and -a4)
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+root="$here/../.."
+course=${1:-$root/../shared}
+[ $# -gt 0 ] && shift
+pages=${*:-"a3/pageC a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ a4/page-d a4/page-e a4/page-f2 a4/page-h"}
+out="$root/build/llvmpipe"
+mkdir -p "$out"
+(cd "$root" && gradle --no-daemon -q jmhClasses)
+cp="$root/build/classes/java/main:$root/build/classes/java/jmh:$root/build/resources/main"
+: > "$out/simpview.txt"
+: > "$out/llvmpipe.txt"
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+for p in $pages; do
+    java -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$p" >> "$out/simpview.txt"
+    "$root/build/llvmpipe-venv/bin/python" "$here/draw.py" "$out" "$(echo "$p" | tr / -)" >> "$out/llvmpipe.txt"
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+python3 "$here/table.py" "$out/simpview.txt" "$out/llvmpipe.txt"

@@ -1,0 +1,245 @@
+package simpview.bench;
+
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import simpview.geometry.Camera;
+import simpview.raster.FragmentLayout;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.SimpClient;
+import simpview.scene.simp.SimpInterpreter;
+import simpview.shading.Fog;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.stage.Painter;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
+
+/**
+ * The simpview side of the llvmpipe benchmark (bench/llvmpipe/): for each
+ * lit course page, writes the filled triangles its geometry stage hands the
+ * rasterizers (clipped and projected, as clip-space positions and the
+ * attributes simpview interpolates), grouped by how they are lit, so that
+ * OpenGL draws the same fragments with the same lighting in GLSL; then
+ * times simpview's warm redraws of the page on 1 and on 2 threads (median
+ * and best of 21, after 20 to warm up) and prints them, one line of
+ * {@code page ms1 best1 ms2 best2 triangles skipped} per page.
+ *
+ * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
+ * to write NAME.bin into, then pages as "a3/pageF". Lines and wire outlines
+ * are not exported (they are counted): OpenGL would draw them by its own
+ * line rules.
+ *
+ * <p>File (little-endian): int groups; per group 80 floats of uniforms (see
+ * {@link #uniforms}), int vertices, then 13 floats per vertex: clip x, y,
+ * z, w, camera z, r, g, b (kd under phong, else the lit colour), P x, P y,
+ * N x, N y, N z.
+ */
+public final class LlvmpipeExport {
+
+    static final int UNIFORMS = 80;
+    static final int MOST_LIGHTS = 8;
+    private static final int FLOATS = 13;
+
+    private LlvmpipeExport() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path folder = Path.of(args[0]);
+        Path out = Path.of(args[1]);
+        Files.createDirectories(out);
+        for (int i = 2; i < args.length; i++) {
+            String[] parts = args[i].split("/");
+            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            Export export = export(file);
+            export.write(out.resolve(args[i].replace('/', '-') + ".bin"));
+            double[] one = time(file, 1);
+            double[] two = time(file, 2);
+            System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %d %d", args[i], one[0], one[1],
+                    two[0], two[1], export.triangles, export.skipped));
+        }
+    }
+
+    /** Median and best of 21 warm redraws, in ms. */
+    private static double[] time(Path file, int threads) throws Exception {
+        ObjLibrary models = new ObjLibrary();
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(drawing);
+            for (int r = 0; r < 20; r++) {
+                canvas.clear();
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+            }
+            double[] t = new double[21];
+            for (int r = 0; r < t.length; r++) {
+                long start = System.nanoTime();
+                canvas.clear();
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+                t[r] = (System.nanoTime() - start) / 1e6;
+            }
+            Arrays.sort(t);
+            return new double[] {t[t.length / 2], t[0]};
+        }
+    }
+
+    private static Export export(Path file) throws Exception {
+        PageCanvas canvas = new PageCanvas();
+        canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
+        Export export = new Export();
+        SimpClient client = SimpClient.lit(new FragmentStage(canvas.zbuffer(), canvas.litPanel()), new ObjLibrary(),
+                export);
+        export.client = client;
+        new SimpInterpreter(client, SceneMonitor.NONE).run(file);
+        return export;
+    }
+
+    /** Follows the primitives as they reach the rasterizers, in drawing order. */
+    private static final class Export implements PrimitiveTrace {
+        /** The client whose primitives are followed: its lit state is the one in force for each. */
+        SimpClient client;
+        private final List<float[]> groupUniforms = new ArrayList<>();
+        private final List<FloatList> groupVertices = new ArrayList<>();
+        private Fog lastFog;
+        private int lastVersion = -1;
+        private boolean lastPhong;
+        int triangles;
+        int skipped;
+
+
+        @Override
+        public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
+            if (kind != Painter.FILLED) {
+                skipped++;
+                return;
+            }
+            LitState state = client.litState();
+            int channels = stride - FragmentLayout.CHANNEL;
+            boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
+            if (groupVertices.isEmpty() || state.fog() != lastFog || state.lightingVersion() != lastVersion
+                    || phong != lastPhong) {
+                lastFog = state.fog();
+                lastVersion = state.lightingVersion();
+                lastPhong = phong;
+                groupUniforms.add(uniforms(state, phong));
+                groupVertices.add(new FloatList());
+            }
+            FloatList v = groupVertices.get(groupVertices.size() - 1);
+            Camera camera = state.camera();
+            for (int k = 1; k + 1 < vertices; k++) {
+                vertex(v, camera, p, at, stride, channels);
+                vertex(v, camera, p, at + k * stride, stride, channels);
+                vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
+                triangles++;
+            }
+        }
+
+        private static void vertex(FloatList out, Camera camera, double[] p, int at, int stride, int channels) {
+            double q = p[at + FragmentLayout.Q];
+            double w = 1 / q;
+            double x = p[at + FragmentLayout.X] / PageCanvas.PANEL * 2 - 1;
+            double y = p[at + FragmentLayout.Y] / PageCanvas.PANEL * 2 - 1;
+            int c = at + FragmentLayout.CHANNEL;
+            double z = p[c + FragmentLayout.Z] * w;
+            double ndc;
+            if (camera.isPerspective()) {
+                double near = 1 / -camera.hither();
+                double far = 1 / -camera.yon();
+                ndc = 1 - 2 * (q - far) / (near - far);
+            } else {
+                ndc = 1 - 2 * (z - camera.yon()) / (camera.hither() - camera.yon());
+            }
+            out.add(x * w, y * w, ndc * w, w);
+            out.add(z, p[c + FragmentLayout.R] * w, p[c + FragmentLayout.G] * w, p[c + FragmentLayout.B] * w);
+            if (channels == FragmentLayout.PHONG_CHANNELS) {
+                out.add(p[c + FragmentLayout.PX] * w, p[c + FragmentLayout.PY] * w, p[c + FragmentLayout.NX] * w,
+                        p[c + FragmentLayout.NY] * w);
+                out.add(p[c + FragmentLayout.NZ] * w);
+            } else {
+                out.add(0, 0, 0, 0);
+                out.add(0);
+            }
+        }
+
+        @Override
+        public boolean drawing(int index) {
+            return true;
+        }
+
+        void write(Path file) throws IOException {
+            try (OutputStream o = Files.newOutputStream(file); DataOutputStream d = new DataOutputStream(o)) {
+                d.write(ints(groupVertices.size()));
+                for (int g = 0; g < groupVertices.size(); g++) {
+                    d.write(floats(groupUniforms.get(g), groupUniforms.get(g).length));
+                    FloatList v = groupVertices.get(g);
+                    d.write(ints(v.size / FLOATS));
+                    d.write(floats(v.data, v.size));
+                }
+            }
+        }
+    }
+
+    /**
+     * The uniforms of a group: phong (1 or 0), fog on (1 or 0), fog near,
+     * far, r, g, b, ambient r, g, b, ks, p, perspective, lights; then from 16,
+     * 8 floats per light (camera-space x, y, z, intensity r, g, b, A, B).
+     */
+    static float[] uniforms(LitState state, boolean phong) {
+        float[] u = new float[UNIFORMS];
+        Fog fog = state.fog();
+        double[] lighting = state.lightingNumbers();
+        u[0] = phong ? 1 : 0;
+        u[1] = fog.isNone() ? 0 : 1;
+        u[2] = (float) (fog.isNone() ? 0 : fog.near());
+        u[3] = (float) (fog.isNone() ? 0 : fog.far());
+        u[4] = (float) fog.r();
+        u[5] = (float) fog.g();
+        u[6] = (float) fog.b();
+        for (int i = 0; i < 6; i++) {
+            u[7 + i] = (float) lighting[i];
+        }
+        int lights = Math.min(MOST_LIGHTS, (int) lighting[6]);
+        u[13] = lights;
+        for (int i = 0; i < 8 * lights; i++) {
+            u[16 + i] = (float) lighting[7 + i];
+        }
+        return u;
+    }
+
+    private static byte[] ints(int v) {
+        return ByteBuffer.allocate(4).order(ByteOrder.LITTLE_ENDIAN).putInt(v).array();
+    }
+
+    private static byte[] floats(float[] v, int n) {
+        ByteBuffer b = ByteBuffer.allocate(4 * n).order(ByteOrder.LITTLE_ENDIAN);
+        for (int i = 0; i < n; i++) {
+            b.putFloat(v[i]);
+        }
+        return b.array();
+    }
+
+    /** A growing array of floats. */
+    private static final class FloatList {
+        float[] data = new float[1024];
+        int size;
+
+        void add(double... values) {
+            if (size + values.length > data.length) {
+                data = Arrays.copyOf(data, 2 * data.length + values.length);
+            }
+            for (double v : values) {
+                data[size++] = (float) v;
+            }
+        }
+    }
+}

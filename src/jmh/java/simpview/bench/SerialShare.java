@@ -1,0 +1,103 @@
+package simpview.bench;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.nio.file.Path;
+import java.util.Locale;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
+
+/**
+ * The serial share of a lit page drawn by two threads, measured rather than
+ * inferred: the same page redrawn on one thread (as read, nothing recorded)
+ * and on two, alternating, in one process; the best of many redraws of
+ * each, to see past a shared host. Of a two-thread redraw, the time outside
+ * the bands ({@link DrawingThreads#nanosInBands}) is what one thread does
+ * alone: reading, the geometry stage, recording. Its share of the
+ * one-thread time is Amdahl's s, and 1 / (s + (1 - s) / n) its prediction
+ * for n cores (an upper bound: it assumes bands of equal work). The CPU
+ * time of both ways (this thread's and the band helpers', over the warm half
+ * of the redraws) shows what drawing in bands costs beside the one-thread
+ * path, apart from the host's load.
+ *
+ * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.SerialShare DIR scene...},
+ * DIR the folder holding course-simp-a3 and course-simp-a4, a scene as
+ * "a3/pageF". Not a JMH benchmark: a measurement of where the time goes.
+ */
+public final class SerialShare {
+
+    private SerialShare() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path folder = Path.of(args[0]);
+        int rounds = 80;
+        System.out.println("| page | 1 thread, best | 2 threads, best | speed-up | serial part | s | 8 cores | 16 cores "
+                + "| CPU per redraw, 1 thread | CPU per redraw, 2 threads (sum) |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+        for (int i = 1; i < args.length; i++) {
+            String[] parts = args[i].split("/");
+            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            ObjLibrary models = new ObjLibrary();
+            try (DrawingThreads one = DrawingThreads.one(); DrawingThreads two = DrawingThreads.of(2)) {
+                PageCanvas canvas = new PageCanvas();
+                long bestOne = Long.MAX_VALUE;
+                long bestTwo = Long.MAX_VALUE;
+                long serialOfBest = 0;
+                long cpuOne = 0;
+                long cpuTwo = 0;
+                for (int r = 0; r < rounds; r++) {
+                    long cpu = cpu();
+                    bestOne = Math.min(bestOne, redraw(canvas, one, file, models));
+                    long between = cpu();
+                    long before = two.nanosInBands();
+                    long t = redraw(canvas, two, file, models);
+                    long bands = two.nanosInBands() - before;
+                    if (r >= rounds / 2) { // the second half, warm
+                        long after = cpu();
+                        cpuOne += between - cpu;
+                        cpuTwo += after - between;
+                    }
+                    if (t < bestTwo) {
+                        bestTwo = t;
+                        serialOfBest = t - bands;
+                    }
+                }
+                double s = (double) serialOfBest / bestOne;
+                System.out.println(String.format(Locale.ROOT,
+                        "| %s | %.2f ms | %.2f ms | %.2fx | %.2f ms | %.2f | %.1fx | %.1fx | %.2f ms | %.2f ms |",
+                        args[i], bestOne / 1e6, bestTwo / 1e6, (double) bestOne / bestTwo, serialOfBest / 1e6, s,
+                        amdahl(s, 8), amdahl(s, 16), cpuOne / 1e6 / (rounds - rounds / 2),
+                        cpuTwo / 1e6 / (rounds - rounds / 2)));
+            }
+        }
+    }
+
+    /** CPU time so far of this thread and of every band helper. */
+    private static long cpu() {
+        ThreadMXBean bean = ManagementFactory.getThreadMXBean();
+        long sum = bean.getCurrentThreadCpuTime();
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (t.getName().startsWith("simpview-band-")) {
+                sum += Math.max(0, bean.getThreadCpuTime(t.getId()));
+            }
+        }
+        return sum;
+    }
+
+    private static double amdahl(double s, int n) {
+        return 1 / (s + (1 - s) / n);
+    }
+
+    private static long redraw(PageCanvas canvas, DrawingThreads threads, Path file, ObjLibrary models)
+            throws Exception {
+        canvas.drawWith(threads);
+        long start = System.nanoTime();
+        canvas.clear();
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+        return System.nanoTime() - start;
+    }
+}

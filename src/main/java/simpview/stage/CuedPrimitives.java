@@ -1,0 +1,135 @@
+package simpview.stage;
+
+import java.util.Arrays;
+import simpview.raster.DdaLineRenderer;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.raster.WireframePolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Provenance;
+import simpview.surface.RowBandDrawable;
+import simpview.surface.RowBands;
+
+/**
+ * A depth-cued scene drawn by several threads: the primitives the
+ * {@link Painter} is given, recorded in drawing order (panel-space vertices
+ * and the primitive each is), then drawn band by band, each band of the
+ * panel's rows by one thread at a time with renderers of its own, through
+ * the panel behind a {@link RowBandDrawable} that keeps its writes to the
+ * band. Every primitive that may touch a band is drawn there, in drawing
+ * order, so each pixel sees the writes, in the order, that one thread
+ * drawing the scene as it is read gives it: its colour, depth and owner are
+ * the same to the bit. The renderers compute every row from the primitive
+ * alone, never stepping from the row before, so a band's rows are exactly
+ * the whole primitive's.
+ *
+ * <p>Drawn and emptied when full and at the end of the scene ({@link #flush});
+ * filled on the one thread that draws the scene.
+ */
+public final class CuedPrimitives {
+
+    /** Primitives after which the record is drawn and emptied. */
+    private static final int MOST_PRIMITIVES = 16384;
+
+    private final DrawingThreads threads;
+    private final RowBands bands;
+    private final Band[] drawers;
+    private final Provenance provenance;
+    private int size;
+    private byte[] kind = new byte[1024];
+    private int[] owner = new int[1024];
+    private double[] lowY = new double[1024];
+    private double[] highY = new double[1024];
+    private double[] numbers = new double[1024 * Painter.STRIDE];
+
+    /**
+     * Draws onto {@code panel} (panel coordinates, whatever the page does per
+     * pixel) with {@code threads}; {@code provenance} is the record the panel
+     * writes owners into, or null.
+     */
+    public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
+        this.threads = threads;
+        this.bands = threads.bands(panel.height());
+        this.provenance = provenance;
+        this.drawers = new Band[bands.count()];
+        for (int b = 0; b < drawers.length; b++) {
+            drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
+        }
+    }
+
+    /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
+    void add(int what, double[] p, int at) {
+        if (size == kind.length) {
+            grow();
+        }
+        System.arraycopy(p, at, numbers, size * Painter.STRIDE, Painter.STRIDE);
+        int corners = what == Painter.LINE ? 2 : 3;
+        double low = Double.POSITIVE_INFINITY;
+        double high = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < corners; k++) {
+            double y = p[at + k * simpview.geometry.Vertex.NUMBERS + simpview.geometry.Vertex.Y];
+            low = Math.min(low, y);
+            high = Math.max(high, y);
+        }
+        kind[size] = (byte) what;
+        owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
+        lowY[size] = Math.floor(low - 1);
+        highY[size] = Math.ceil(high + 1);
+        size++;
+        if (size >= MOST_PRIMITIVES) {
+            flush();
+        }
+    }
+
+    private void grow() {
+        int capacity = 2 * kind.length;
+        kind = Arrays.copyOf(kind, capacity);
+        owner = Arrays.copyOf(owner, capacity);
+        lowY = Arrays.copyOf(lowY, capacity);
+        highY = Arrays.copyOf(highY, capacity);
+        numbers = Arrays.copyOf(numbers, capacity * Painter.STRIDE);
+    }
+
+    /** Draws what is recorded, every band at once, and empties the record; returns when all is drawn. */
+    public void flush() {
+        if (size == 0) {
+            return;
+        }
+        if (provenance != null) {
+            provenance.useBands(bands);
+        }
+        threads.forEach(drawers.length, b -> drawers[b].draw());
+        size = 0;
+    }
+
+    /** One band's drawer: renderers of its own, the panel through its rows only. */
+    private final class Band {
+        private final int band;
+        private final int from;
+        private final int to;
+        private final Painter painter;
+
+        Band(int band, int from, int to, Drawable panel) {
+            this.band = band;
+            this.from = from;
+            this.to = to;
+            FilledPolygonRenderer filled = new FilledPolygonRenderer();
+            filled.rows(from, to);
+            this.painter = new Painter(new RowBandDrawable(from, to, panel), new DdaLineRenderer(), filled,
+                    new WireframePolygonRenderer(new DdaLineRenderer()));
+        }
+
+        void draw() {
+            for (int k = 0; k < size; k++) {
+                // Conservative: a primitive is skipped only when all of it lies a row or more outside.
+                if (highY[k] < from || lowY[k] >= to) {
+                    continue;
+                }
+                if (provenance != null) {
+                    provenance.begin(band, owner[k]);
+                }
+                painter.draw(kind[k], numbers, k * Painter.STRIDE);
+            }
+        }
+    }
+}

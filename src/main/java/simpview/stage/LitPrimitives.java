@@ -1,0 +1,232 @@
+package simpview.stage;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.Supplier;
+import simpview.raster.FragmentLayout;
+import simpview.raster.LitLineRasterizer;
+import simpview.raster.LitPolygonRasterizer;
+import simpview.shading.Fog;
+import simpview.shading.LitState;
+import simpview.shading.FragmentStage;
+import simpview.shading.PointShader;
+import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Provenance;
+import simpview.surface.RowBands;
+import simpview.surface.ZBuffer;
+
+/**
+ * A lit scene drawn by several threads: the primitives its geometry stage
+ * hands to the rasterizers, recorded in drawing order (projected vertices,
+ * how they are shaded and fogged, which primitive each is), then drawn band
+ * by band, each band of the panel's rows by one thread at a time with its
+ * own rasterizers and {@link FragmentStage}, every primitive that may touch
+ * the band in drawing order. Each pixel therefore sees the same writes in
+ * the same order as when one thread draws the scene as it is read, and its
+ * colour, depth and owner are the same to the bit.
+ *
+ * <p>The record is drawn and emptied when it is full and at the end of the
+ * scene ({@link #flush}), so a scene of any size takes bounded room. Used on
+ * the one thread that reads the scene; only {@link #flush} uses the others.
+ */
+public final class LitPrimitives {
+
+    static final byte FILL = 0;
+    static final byte LINE = 1;
+    static final byte OUTLINE = 2;
+    /** Primitives, or numbers, after which the record is drawn and emptied. */
+    private static final int MOST_PRIMITIVES = 16384;
+    private static final int MOST_NUMBERS = 1 << 20;
+
+    private final DrawingThreads threads;
+    private final RowBands bands;
+    private final Band[] drawers;
+    private final Provenance provenance;
+
+    private int size;
+    private byte[] kind = new byte[1024];
+    private int[] vertices = new int[1024];
+    private byte[] channels = new byte[1024];
+    private int[] start = new int[1025];
+    private int[] owner = new int[1024];
+    private int[] lookOf = new int[1024];
+    private double[] lowY = new double[1024];
+    private double[] highY = new double[1024];
+    private double[] numbers = new double[1 << 14];
+    /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
+    private final List<Fog> fogs = new ArrayList<>();
+    private final List<Supplier<PointShader>> shaders = new ArrayList<>();
+    private int lastLook = -1;
+    /** The lighting last frozen, and what from. */
+    private Supplier<PointShader> frozen;
+    private LitState frozenFrom;
+    private int frozenVersion;
+
+    /**
+     * Draws on {@code panel} (panel coordinates), depth-tested against
+     * {@code zbuffer}, with {@code threads}; {@code provenance} is the
+     * record the panel writes owners into, or null.
+     */
+    public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+        this.threads = threads;
+        this.bands = threads.bands(zbuffer.height());
+        this.provenance = provenance;
+        this.drawers = new Band[bands.count()];
+        for (int b = 0; b < drawers.length; b++) {
+            drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
+        }
+    }
+
+    /**
+     * The look of the primitives recorded next: their colours known, fogged
+     * by {@code fog} ({@code phong} null), or lit at every pixel as
+     * {@code phong} lights now, then fogged. Looks are made again only when
+     * one of these changed.
+     */
+    int look(Fog fog, LitState phong) {
+        if (phong != null && (phong != frozenFrom || phong.lightingVersion() != frozenVersion)) {
+            frozenFrom = phong;
+            frozenVersion = phong.lightingVersion();
+            frozen = phong.frozenShader();
+        }
+        Supplier<PointShader> shader = phong == null ? null : frozen;
+        if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)) {
+            fogs.add(fog);
+            shaders.add(shader);
+            lastLook = fogs.size() - 1;
+        }
+        return lastLook;
+    }
+
+    /**
+     * Records a primitive: its n vertices from v[0] (layout of {@link FragmentLayout}),
+     * its channels, kind and look, and the primitive the provenance record
+     * says is being drawn (the owner of what it draws).
+     */
+    void add(byte what, double[] v, int n, int channelCount, int look) {
+        int stride = FragmentLayout.stride(channelCount);
+        int count = n * stride;
+        if (size == kind.length) {
+            grow();
+        }
+        int at = start[size];
+        if (at + count > numbers.length) {
+            numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
+        }
+        System.arraycopy(v, 0, numbers, at, count);
+        double low = Double.POSITIVE_INFINITY;
+        double high = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            double y = v[k * stride + FragmentLayout.Y];
+            low = Math.min(low, y);
+            high = Math.max(high, y);
+        }
+        kind[size] = what;
+        vertices[size] = n;
+        channels[size] = (byte) channelCount;
+        owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
+        lookOf[size] = look;
+        lowY[size] = Math.floor(low - 1);
+        highY[size] = Math.ceil(high + 1);
+        start[size + 1] = at + count;
+        size++;
+        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS) {
+            flush();
+        }
+    }
+
+    private void grow() {
+        int capacity = 2 * kind.length;
+        kind = Arrays.copyOf(kind, capacity);
+        vertices = Arrays.copyOf(vertices, capacity);
+        channels = Arrays.copyOf(channels, capacity);
+        start = Arrays.copyOf(start, capacity + 1);
+        owner = Arrays.copyOf(owner, capacity);
+        lookOf = Arrays.copyOf(lookOf, capacity);
+        lowY = Arrays.copyOf(lowY, capacity);
+        highY = Arrays.copyOf(highY, capacity);
+    }
+
+    /** Draws what is recorded, every band at once, and empties the record; returns when all is drawn. */
+    public void flush() {
+        if (size == 0) {
+            return;
+        }
+        if (provenance != null) {
+            provenance.useBands(bands);
+        }
+        threads.forEach(drawers.length, b -> drawers[b].draw());
+        size = 0;
+    }
+
+    /** One band's drawer: its own rasterizers and fragment stage, its rows only. */
+    private final class Band {
+        private final int band;
+        private final int from;
+        private final int to;
+        private final FragmentStage fragments;
+        private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
+        private final LitLineRasterizer lines = new LitLineRasterizer();
+        /** The look the fragment stage is set to, and the shader this band made for it. */
+        private int look = -1;
+        private Supplier<PointShader> madeFrom;
+        private PointShader shader;
+
+        Band(int band, int from, int to, FragmentStage fragments) {
+            this.band = band;
+            this.from = from;
+            this.to = to;
+            this.fragments = fragments;
+            fragments.rows(from, to);
+            fill.rows(from, to);
+        }
+
+        void draw() {
+            int width = fragments.width();
+            int height = fragments.height();
+            for (int k = 0; k < size; k++) {
+                // Conservative: a primitive is skipped only when all of it lies a row or more outside.
+                if (highY[k] < from || lowY[k] >= to) {
+                    continue;
+                }
+                if (provenance != null) {
+                    provenance.begin(band, owner[k]);
+                }
+                setLook(lookOf[k]);
+                int at = start[k];
+                int n = vertices[k];
+                int ch = channels[k];
+                switch (kind[k]) {
+                    case FILL -> fill.fill(numbers, at, n, ch, width, height, fragments);
+                    case LINE -> lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
+                    default -> {
+                        int stride = FragmentLayout.stride(ch);
+                        for (int i = 0; i < n; i++) {
+                            lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
+                                    fragments);
+                        }
+                    }
+                }
+            }
+        }
+
+        private void setLook(int l) {
+            if (l == look) {
+                return;
+            }
+            look = l;
+            Supplier<PointShader> s = shaders.get(l);
+            if (s == null) {
+                fragments.colours(fogs.get(l));
+                return;
+            }
+            if (s != madeFrom) {
+                madeFrom = s;
+                shader = s.get();
+            }
+            fragments.phong(shader, fogs.get(l));
+        }
+    }
+}

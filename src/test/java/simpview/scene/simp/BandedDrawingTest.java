@@ -1,0 +1,106 @@
+package simpview.scene.simp;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.DataBufferInt;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import simpview.scene.obj.ObjLibrary;
+import simpview.stage.PrimitiveLog;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
+import simpview.testing.CourseFiles;
+import simpview.testing.GoldenCase;
+
+/**
+ * A scene drawn by several threads, band by band, is the one-thread drawing
+ * to the bit in everything the window's instruments read: every pixel, every
+ * depth (its bits), every pixel's owner and the log of primitives, whole and
+ * stopped part-way (stepping). Depth-cued and lit scenes, with and without
+ * .obj models; the course's when they are present.
+ */
+class BandedDrawingTest {
+
+    /** A scene, whether it is lit, and where stepping stops (-1: the whole scene). */
+    record Case(String name, Path scene, boolean lit, int limit) {
+        @Override
+        public String toString() {
+            return name + (limit < 0 ? "" : ", stopped before primitive " + limit);
+        }
+    }
+
+    static Stream<Case> cases() {
+        Path own = GoldenCase.ownSimpDir();
+        List<Case> cases = new ArrayList<>();
+        for (int limit : new int[] {-1, 37}) {
+            cases.add(new Case("page5", own.resolve("page5.simp"), false, limit));
+            cases.add(new Case("lit-lights", own.resolve("lit-lights.simp"), true, limit));
+            cases.add(new Case("lit-shading", own.resolve("lit-shading.simp"), true, limit));
+        }
+        if (CourseFiles.present()) {
+            cases.add(new Case("page7", CourseFiles.simpDir().resolve("page7.simp"), false, -1));
+        }
+        Path a3 = CourseFiles.folder("course-simp-a3");
+        if (a3.toFile().isDirectory()) {
+            cases.add(new Case("a3 pageI", a3.resolve("pageI.simp"), true, -1));
+            cases.add(new Case("a3 pageF", a3.resolve("pageF.simp"), true, 5));
+        }
+        Path a4 = CourseFiles.folder("course-simp-a4");
+        if (a4.toFile().isDirectory()) {
+            cases.add(new Case("a4 page-f2", a4.resolve("page-f2.simp"), true, -1));
+        }
+        return cases.stream();
+    }
+
+    /** What the instruments read of one drawing. */
+    private record Drawing(int[] pixels, long[] depths, int[] owners, int logged) {
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void severalThreadsDrawWhatOneDraws(Case c) throws Exception {
+        Drawing one = draw(c, 1);
+        assertTrue(one.logged() > 0, "something was drawn");
+        for (int threads : new int[] {2, 7}) {
+            Drawing several = draw(c, threads);
+            assertEquals(one.logged(), several.logged(), "primitives logged on " + threads + " threads");
+            assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + threads + " threads");
+            assertArrayEquals(one.depths(), several.depths(), "depths on " + threads + " threads");
+            assertArrayEquals(one.owners(), several.owners(), "owners on " + threads + " threads");
+        }
+    }
+
+    private static Drawing draw(Case c, int threads) throws Exception {
+        PageCanvas canvas = new PageCanvas();
+        Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+        canvas.recordProvenance(provenance);
+        PrimitiveLog log = new PrimitiveLog(provenance, c.limit());
+        SceneMonitor monitor = new SceneMonitor() {
+            @Override
+            public PrimitiveTrace trace() {
+                return log;
+            }
+        };
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            canvas.drawWith(drawing);
+            ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
+                    ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
+            assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
+        }
+        int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
+        double[] z = canvas.zbuffer().copyDepths();
+        long[] depths = new long[z.length];
+        for (int i = 0; i < z.length; i++) {
+            depths[i] = Double.doubleToRawLongBits(z[i]);
+        }
+        return new Drawing(pixels, depths, provenance.copyOwners(), log.size());
+    }
+}
