@@ -29,10 +29,17 @@ import simpview.compare.BatchTable;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
+import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
+import simpview.compare.HtmlReport;
+import simpview.compare.JUnitResults;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
+import simpview.compare.Rubric;
+import simpview.compare.RubricRule;
+import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
+import simpview.compare.Wanted;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
@@ -52,23 +59,48 @@ public final class CompareBatch {
     private record Match(CompareTarget target, String skipped) {
     }
 
+    /** A reference a picture may match: simpview's own (name "") or an accepted alternate. */
+    private record Reference(String name, int[] panel) {
+    }
+
+    /**
+     * Where the results go. {@code outDir} (null: no files but the ones named) holds the
+     * tables and diff images; the others are written when not null. {@code student}: print
+     * the student's table ({@code simpview check}) instead of the teacher's.
+     */
+    record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student, DiffImages diffs) {
+    }
+
+    /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
+    enum DiffImages { ALL, FAILING, NONE }
+
     private final OwnPictures own;
-    private final int tolerance;
-    private final double min;
+    private final Rubric rubric;
+    private final boolean partial;
     private final PrintWriter out;
     private final PrintWriter err;
 
-    CompareBatch(OwnPictures own, int tolerance, double min, PrintWriter out, PrintWriter err) {
+    CompareBatch(OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
         this.own = own;
-        this.tolerance = tolerance;
-        this.min = min;
+        this.rubric = rubric;
+        this.partial = partial;
         this.out = out;
         this.err = err;
     }
 
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
-    int pages(Path dir, PageRange pages, Path outDir) {
-        return run(dir, outDir, name -> {
+    int pages(Path dir, PageRange pages, Outputs outputs) {
+        List<CompareTarget> wanted = new ArrayList<>();
+        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+            if (pages.contains(p)) {
+                wanted.add(CompareTarget.page(p));
+            }
+        }
+        Function<String, Optional<String>> namer = name -> {
+            OptionalInt n = SubmissionNames.pageNumber(name);
+            return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
+        };
+        return run(dir, outputs, wanted, namer, name -> {
             OptionalInt number = SubmissionNames.pageNumber(name);
             if (number.isPresent() && SubmissionNames.namesFirstAssignment(name)) {
                 return new Match(null, "a first-assignment page by its name: compare it alone, with "
@@ -86,9 +118,10 @@ public final class CompareBatch {
     }
 
     /** Every picture against one scene file, or against the scene of a folder that its name names. */
-    int scenes(Path dir, Path scene, Path outDir) {
+    int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
-            return run(dir, outDir, name -> new Match(CompareTarget.scene(scene), null));
+            return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
+                    name -> new Match(CompareTarget.scene(scene), null));
         }
         if (!Files.isDirectory(scene)) {
             err.println("simpview compare: --scene " + scene + ": no such file or folder");
@@ -99,14 +132,20 @@ public final class CompareBatch {
             err.println("simpview compare: --scene " + scene + ": no .simp files in that folder");
             return ExitCode.USAGE_ERROR;
         }
-        return run(dir, outDir, name -> {
+        // A folder also holds scenes the pages include (cube.simp): the ones asked for are those a rubric
+        // rule names, and (in run) every one some picture of the batch was matched to.
+        List<CompareTarget> wanted = scenes.entrySet().stream()
+                .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
+                .map(e -> CompareTarget.scene(e.getValue())).toList();
+        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), name -> {
             Optional<String> named = SubmissionNames.sceneName(name, scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
         });
     }
 
-    private int run(Path dir, Path outDir, Function<String, Match> matcher) {
+    private int run(Path dir, Outputs outputs, List<CompareTarget> wanted, Function<String, Optional<String>> namer,
+            Function<String, Match> matcher) {
         List<Path> pictures;
         try {
             pictures = picturesIn(dir);
@@ -120,9 +159,75 @@ public final class CompareBatch {
             matches.add(matcher.apply(picture.getFileName().toString()));
         }
         Map<CompareTarget, Object> drawn = drawAll(matches);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, outDir);
-        err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), (System.nanoTime() - start) / 1e9);
-        return writeTables(rows, outDir);
+        Map<CompareTarget, List<Reference>> alternates = alternatesOf(drawn.keySet(), namer);
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir(), outputs.diffs());
+        double seconds = (System.nanoTime() - start) / 1e9;
+        err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
+        // Asked for: the given targets, and every one some picture was matched to (so a class's batch
+        // shows who lacks a page that others handed in).
+        java.util.LinkedHashSet<CompareTarget> all = new java.util.LinkedHashSet<>(wanted);
+        for (Match match : matches) {
+            if (match.target() != null) {
+                all.add(match.target());
+            }
+        }
+        List<Wanted> asked = new ArrayList<>();
+        for (CompareTarget target : all) {
+            asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
+        }
+        return writeResults(rows, asked, outputs, seconds);
+    }
+
+    /** The rubric's key of a target: "page6" for page 6, "pageC" for pageC.simp. */
+    private static String key(CompareTarget target) {
+        return target.isPage() ? "page" + target.page() : SubmissionNames.stem(target.scene().getFileName().toString());
+    }
+
+    private RubricRule ruleOf(CompareTarget target) {
+        return rubric.ruleFor(key(target), target.isPage() ? target.page() : 0);
+    }
+
+    /**
+     * Each target's accepted alternates from its rule's folder: a picture there that
+     * names a page or scene (as submissions do) is for that one only; one that names
+     * none is for every target of the rule. An unreadable alternate is said and left out.
+     */
+    private Map<CompareTarget, List<Reference>> alternatesOf(Iterable<CompareTarget> targets,
+            Function<String, Optional<String>> namer) {
+        Map<CompareTarget, List<Reference>> all = new HashMap<>();
+        Map<Path, Object> read = new HashMap<>();
+        for (CompareTarget target : targets) {
+            RubricRule rule = ruleOf(target);
+            List<Reference> refs = new ArrayList<>();
+            if (rule.alternates() != null) {
+                List<Path> files;
+                try {
+                    files = picturesIn(rule.alternates());
+                } catch (IOException | UncheckedIOException e) {
+                    err.println("simpview compare: alternates " + rule.alternates() + ": cannot be listed");
+                    files = List.of();
+                }
+                for (Path file : files) {
+                    Optional<String> named = namer.apply(file.getFileName().toString());
+                    if (named.isPresent() && !named.get().equals(key(target))) {
+                        continue;
+                    }
+                    Object picture = read.computeIfAbsent(file, f -> {
+                        try {
+                            return Picture.read(f);
+                        } catch (CompareException e) {
+                            err.println("simpview compare: alternate left out: " + e.getMessage());
+                            return e;
+                        }
+                    });
+                    if (picture instanceof Picture p) {
+                        refs.add(new Reference(rule.alternates().relativize(file).toString(), p.panel()));
+                    }
+                }
+            }
+            all.put(target, refs);
+        }
+        return all;
     }
 
     /** Each page or scene the pictures need, drawn once, in order (the canvas is one): its Picture or its error. */
@@ -142,7 +247,8 @@ public final class CompareBatch {
 
     /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Object> drawn, Path outDir) {
+            Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir,
+            DiffImages diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
@@ -156,7 +262,8 @@ public final class CompareBatch {
                 rows.add(workers.submit(() -> {
                     String relative = dir.relativize(picture).toString();
                     BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
-                            : compare(picture, relative, match.target(), drawn.get(match.target()), outDir);
+                            : compare(picture, relative, match.target(), drawn.get(match.target()),
+                                    alternates.get(match.target()), outDir, diffs);
                     synchronized (err) {
                         err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(row));
                     }
@@ -185,49 +292,102 @@ public final class CompareBatch {
         };
     }
 
-    /** One picture against simpview's (a Picture, or the error that kept it from being drawn). Thread-safe. */
-    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, Path outDir) {
+    /**
+     * One picture against simpview's (a Picture, or the error that kept it from being drawn),
+     * and when it does not pass, against each accepted alternate: the first that passes is its
+     * result; when none does, the comparison with simpview's own is. Thread-safe.
+     */
+    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
+            Path outDir, DiffImages diffs) {
         String label = target.label(own.context());
+        RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
-            return BatchRow.broken(relative, label, problem);
+            return BatchRow.broken(relative, label, problem, rule);
         }
         Picture theirs;
         try {
             theirs = Picture.read(file);
         } catch (CompareException e) {
-            return BatchRow.broken(relative, label, e.getMessage());
+            return BatchRow.broken(relative, label, e.getMessage(), rule);
         }
-        Comparison comparison = Comparison.of(((Picture) ours).panel(), theirs.panel());
-        ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
+        List<Reference> references = new ArrayList<>();
+        references.add(new Reference("", ((Picture) ours).panel()));
+        references.addAll(alternates);
+        ComparisonReport best = null;
+        String bestName = "";
+        for (Reference reference : references) {
+            Comparison comparison = Comparison.of(reference.panel(), theirs.panel(), rule.deviation(), rule.metric());
+            ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
+            if (best == null || report.passes()) {
+                best = report;
+                bestName = reference.name();
+            }
+            if (report.passes()) {
+                break;
+            }
+        }
+        double score = rule.score(best.comparison(), partial);
+        if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && best.passes()) {
+            return BatchRow.compared(relative, label, best, "", rule, score, bestName);
+        }
         String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "") + "-diff.png";
         try {
-            PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), outDir.resolve(diff));
+            PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), outDir.resolve(diff));
         } catch (IOException e) {
-            BatchRow row = BatchRow.compared(relative, label, report, "");
-            return new BatchRow(row.file(), row.target(), row.exact(), row.slack(), row.verdict(), row.result(),
-                    row.margins(), "", "diff not written: " + e.getMessage());
+            return BatchRow.compared(relative, label, best, "", rule, score, bestName)
+                    .withoutDiff("diff not written: " + e.getMessage());
         }
-        return BatchRow.compared(relative, label, report, diff);
+        return BatchRow.compared(relative, label, best, diff, rule, score, bestName);
     }
 
-    private int writeTables(List<BatchRow> rows, Path outDir) {
-        String markdown = BatchTable.markdown(rows, tolerance, min);
+    private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
+        RubricRule base = rubric.defaults();
+        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation());
+        Path outDir = outputs.outDir();
         try {
-            Files.createDirectories(outDir);
-            Files.writeString(outDir.resolve(TABLE), markdown, StandardCharsets.UTF_8);
-            Files.writeString(outDir.resolve(CSV), BatchTable.csv(rows), StandardCharsets.UTF_8);
+            if (outDir != null) {
+                Files.createDirectories(outDir);
+                Files.writeString(outDir.resolve(TABLE), markdown, StandardCharsets.UTF_8);
+                Files.writeString(outDir.resolve(CSV), BatchTable.csv(rows), StandardCharsets.UTF_8);
+            }
+            if (outputs.gradescope() != null) {
+                write(outputs.gradescope(), GradescopeResults.json(rows, wanted, seconds));
+            }
+            if (outputs.junit() != null) {
+                write(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
+            }
+            if (outputs.html() != null) {
+                HtmlReport.write(rows, wanted, outputs.html(), outDir);
+            }
         } catch (IOException e) {
-            err.println("simpview compare: cannot write the table to " + outDir + ": " + e.getMessage());
+            err.println("simpview compare: cannot write the results: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         }
-        out.print(markdown);
-        out.println("table: " + outDir.resolve(TABLE) + " and " + outDir.resolve(CSV));
+        if (outputs.student()) {
+            out.print(StudentTable.text(rows, Wanted.missing(wanted, rows)));
+        } else {
+            out.print(markdown);
+            if (outDir != null) {
+                out.println("table: " + outDir.resolve(TABLE) + " and " + outDir.resolve(CSV));
+            }
+        }
         if (rows.isEmpty()) {
             err.println("simpview compare: no pictures (.png, .jpg, .gif, .bmp) found");
             return ExitCode.SCENE_ERROR;
         }
         boolean allPass = rows.stream().allMatch(r -> r.result() != BatchRow.Result.FAIL && r.result() != BatchRow.Result.ERROR);
+        if (outputs.student() && rows.stream().noneMatch(r -> r.result() == BatchRow.Result.PASS)) {
+            return ExitCode.SCENE_ERROR;
+        }
         return allPass ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    private static void write(Path file, String text) throws IOException {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.writeString(file, text, StandardCharsets.UTF_8);
     }
 
     /** The pictures under {@code dir}, in natural order of their paths (page2 before page10). */

@@ -22,6 +22,8 @@ import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.HeatMap;
 import simpview.compare.Picture;
+import simpview.compare.Rubric;
+import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
@@ -46,9 +48,12 @@ import simpview.surface.DrawingThreads;
             "  simpview compare a1-page2.png --assignment 1 --page 2",
             "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
             "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
+            "  simpview compare --dir subs/ --pages 1-8 --rubric compare.json --gradescope results.json --junit results.xml --html report/",
             "",
             "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel "
-                + "or one of its 8 neighbours, both ways round. Regions are panel rectangles: origin bottom-left, y up."},
+                + "or one of its 8 neighbours (--deviation 2: its 24), both ways round. Regions are panel rectangles: "
+                + "origin bottom-left, y up.",
+            "Grading (rubric, Gradescope, JUnit, the web report) and 'simpview check': docs/grading.md."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture reaches --min",
             "1:some picture is below --min, or cannot be read, or has no panel; or a scene error",
@@ -112,6 +117,40 @@ public final class CompareCommand implements Callable<Integer> {
             description = "the share in percent that passes (default: 99)")
     private double min = 99;
 
+    @Option(names = "--deviation", paramLabel = "PX", converter = CompareOptions.Deviation.class,
+            description = "position deviation, 0, 1 or 2 pixels: a pixel matches when the other picture has its colour "
+                    + "within that distance, both ways round (default: 1)")
+    private int deviation = Comparison.DEFAULT_DEVIATION;
+
+    @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
+            description = "exact, or blur: both panels blurred (3x3 binomial) first, forgiving another antialiasing "
+                    + "(default: exact)")
+    private Comparison.Metric metric = Comparison.Metric.EXACT;
+
+    @Option(names = "--rubric", paramLabel = "F.json",
+            description = "with --dir: per page or pattern, the tolerance, deviation, minimum share, failing-pixel "
+                    + "limit, points and accepted alternates (see docs/grading.md)")
+    private Path rubric;
+
+    @Option(names = "--gradescope", paramLabel = "results.json", description = "with --dir: write Gradescope's results.json")
+    private Path gradescope;
+
+    @Option(names = "--junit", paramLabel = "F.xml", description = "with --dir: write JUnit XML, one testcase per picture")
+    private Path junit;
+
+    @Option(names = "--html", paramLabel = "D", description = "with --dir: write a web report, D/index.html "
+            + "(the diff images go to --out-dir, or to D without it)")
+    private Path html;
+
+    @Option(names = "--diffs", paramLabel = "WHICH", converter = CompareOptions.DiffImagesConverter.class,
+            description = "with --dir: which pictures get a diff image, all, failing (those that do not pass) or none "
+                    + "(default: all)")
+    private CompareBatch.DiffImages diffs = CompareBatch.DiffImages.ALL;
+
+    @Option(names = "--partial", description = "with --gradescope: score a failing page in part, by how near it came "
+            + "(default: all or nothing)")
+    private boolean partial;
+
     @Mixin
     private ThreadsOption threads;
 
@@ -124,8 +163,17 @@ public final class CompareCommand implements Callable<Integer> {
         try (DrawingThreads drawing = threads.open()) {
             OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
             if (dir != null) {
-                CompareBatch batch = new CompareBatch(own, tolerance, min, spec.commandLine().getOut(), err());
-                return pages != null ? batch.pages(dir, pages, outDir) : batch.scenes(dir, scene, outDir);
+                Rubric judged;
+                try {
+                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+                } catch (CompareException e) {
+                    err().println("simpview compare: " + e.getMessage());
+                    return ExitCode.USAGE_ERROR;
+                }
+                CompareBatch batch = new CompareBatch(own, judged, partial, spec.commandLine().getOut(), err());
+                CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
+                        gradescope, junit, html, false, diffs);
+                return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
             }
             return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
         }
@@ -139,10 +187,15 @@ public final class CompareCommand implements Callable<Integer> {
             usage(pages == null ^ scene == null, "--dir needs either --pages RANGE or --scene F.simp|D");
             usage(page == null, "--page goes with one picture; with --dir use --pages RANGE");
             usage(diff == null, "with --dir the diff images go to --out-dir");
-            usage(outDir != null && !outDir.toString().isEmpty(), "--dir needs --out-dir D, where the table and the diff images go");
+            usage(outDir != null || html != null || gradescope != null || junit != null,
+                    "--dir needs --out-dir D (the tables and diff images), or --html, --gradescope or --junit");
+            usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         } else {
             usage(page == null ^ scene == null, "say what to compare with: --page N or --scene F.simp");
             usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
+            usage(rubric == null && gradescope == null && junit == null && html == null && !partial
+                    && diffs == CompareBatch.DiffImages.ALL,
+                    "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
@@ -172,7 +225,7 @@ public final class CompareCommand implements Callable<Integer> {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         }
-        Comparison comparison = Comparison.of(ours.panel(), theirs.panel());
+        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric);
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
@@ -220,6 +273,11 @@ public final class CompareCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% within %d/255 (no slack)%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, tolerance);
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** The rubric file read over the command line's rule, or the command line's rule alone. */
+    static Rubric rubricOf(Path file, RubricRule base) throws CompareException {
+        return file == null ? Rubric.of(base) : Rubric.read(file, base);
     }
 
     private PageContext context() {

@@ -48,6 +48,49 @@ public final class CompareOptions {
         }
     }
 
+    /** A position deviation in pixels: 0, 1 or 2. */
+    static final class Deviation implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            String px = text.trim().endsWith("px") ? text.trim().substring(0, text.trim().length() - 2) : text.trim();
+            try {
+                int value = Integer.parseInt(px.trim());
+                if (value >= 0 && value <= simpview.compare.Comparison.MAX_DEVIATION) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a position deviation: expected 0, 1 or 2 (pixels)");
+        }
+    }
+
+    /** Which pictures of a batch get a diff image: all, failing or none. */
+    static final class DiffImagesConverter implements ITypeConverter<CompareBatch.DiffImages> {
+        @Override
+        public CompareBatch.DiffImages convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "all" -> CompareBatch.DiffImages.ALL;
+                case "failing" -> CompareBatch.DiffImages.FAILING;
+                case "none" -> CompareBatch.DiffImages.NONE;
+                default -> throw new TypeConversionException("'" + text + "' is not a choice of diff images: expected "
+                        + "all, failing or none");
+            };
+        }
+    }
+
+    /** The metric: exact or blur. */
+    static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
+        @Override
+        public simpview.compare.Comparison.Metric convert(String text) {
+            return switch (text.trim().toLowerCase(Locale.ROOT)) {
+                case "exact" -> simpview.compare.Comparison.Metric.EXACT;
+                case "blur" -> simpview.compare.Comparison.Metric.BLUR;
+                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact or blur");
+            };
+        }
+    }
+
     /** Pages, e.g. {@code 1-8}, {@code 6} or {@code 1,3,6-8}. */
     record PageRange(BitSet pages, String text) {
 

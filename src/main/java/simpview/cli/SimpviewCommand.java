@@ -27,11 +27,12 @@ import simpview.pages.SceneList;
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = ExitCode.VERSION,
-        subcommands = {RenderCommand.class, CompareCommand.class},
+        subcommands = {RenderCommand.class, CompareCommand.class, CheckCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
             "Use 'simpview render' to write pages as PNG files without a window,",
-            "and 'simpview compare' to see how close a picture is to simpview's."},
+            "'simpview compare' to see how close a picture is to simpview's,",
+            "and 'simpview check DIR' to check a folder of your pages before handing them in."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 public final class SimpviewCommand implements Callable<Integer> {

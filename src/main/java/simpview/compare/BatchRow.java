@@ -1,5 +1,7 @@
 package simpview.compare;
 
+import java.util.List;
+
 /**
  * One submitted picture in a batch: what it was compared with and how it
  * came out, or why it could not be.
@@ -7,29 +9,59 @@ package simpview.compare;
  * @param file the picture, relative to the submissions folder
  * @param target the page or scene it was matched to, or "" when none matched
  * @param exact shares without slack, or null when there was no comparison
- * @param slack shares with one pixel of slack, or null
+ * @param slack shares with slack (the rule's position deviation), or null
  * @param verdict the share the result is on (within the tolerance, with slack), or NaN
  * @param result PASS, FAIL, ERROR (the picture or the scene is broken) or SKIPPED (no page matches)
  * @param margins whether the margins are white: "white", "not white" or ""
  * @param diff the diff image, relative to the table, or ""
  * @param note where the panel was found, or the problem
+ * @param rule the rule it was judged by, or null when it was skipped
+ * @param score its score under the rule (0 when it could not be compared)
+ * @param failing pixels beyond the tolerance even with slack (0 when not compared)
+ * @param regions the largest of those patches, largest first
+ * @param alternate the accepted alternate picture it matched best, relative to its folder, or "" for simpview's own
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
-        Result result, String margins, String diff, String note) {
+        Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
+        List<DiffRegion> regions, String alternate) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
     public static BatchRow compared(String file, String target, ComparisonReport report, String diff) {
+        return compared(file, target, report, diff, null, 0, "");
+    }
+
+    public static BatchRow compared(String file, String target, ComparisonReport report, String diff,
+            RubricRule rule, double score, String alternate) {
+        String note = "panel at " + report.theirs().place().describe()
+                + (alternate.isEmpty() ? "" : "; matched the accepted alternate " + alternate);
         return new BatchRow(file, target, report.comparison().exact(), report.comparison().withSlack(),
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
-                report.margins().white() ? "white" : "not white", diff, "panel at " + report.theirs().place().describe());
+                report.margins().white() ? "white" : "not white", diff, note, rule, score,
+                report.regions().pixels(), report.regions().largest(), alternate);
     }
 
     public static BatchRow broken(String file, String target, String problem) {
-        return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem);
+        return broken(file, target, problem, null);
+    }
+
+    public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
+        return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
+                List.of(), "");
     }
 
     public static BatchRow skipped(String file, String why) {
-        return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why);
+        return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "");
+    }
+
+    /** The same row with another note (and no diff image). */
+    public BatchRow withoutDiff(String why) {
+        return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
+                regions, alternate);
+    }
+
+    /** Whether it was compared (PASS or FAIL). */
+    public boolean compared() {
+        return exact != null;
     }
 }

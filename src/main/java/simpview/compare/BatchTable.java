@@ -12,9 +12,20 @@ public final class BatchTable {
     }
 
     public static String markdown(List<BatchRow> rows, int tolerance, double minimum) {
+        return markdown(rows, tolerance, minimum, 1);
+    }
+
+    /** The table, its heading saying the tolerance, minimum and slack ({@code deviation} pixels) the rows are judged by. */
+    public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation) {
         StringBuilder out = new StringBuilder();
+        String slack = deviation == 0 ? "no slack" : deviation == 1 ? "one pixel of slack" : deviation + " pixels of slack";
         out.append(String.format("Shares of panel pixels in percent; the result is on the share within %d/255 with "
-                + "one pixel of slack, %s needed.%n%n", tolerance, Percent.of(minimum / 100)));
+                + "%s, %s needed.%n%n", tolerance, slack, Percent.of(minimum / 100)));
+        if (rows.stream().anyMatch(r -> r.rule() != null && !"*".equals(r.rule().match()))) {
+            out.setLength(out.length() - System.lineSeparator().length());
+            out.append(String.format("Pages the rubric names are judged by its rules (tolerance, slack, minimum, "
+                    + "pixel limit) and their slack columns use their own slack.%n%n"));
+        }
         out.append('|');
         for (String heading : HEADINGS) {
             out.append(' ').append(heading).append(" |");

@@ -3,47 +3,84 @@ package simpview.compare;
 /**
  * Two 650x650 panels compared pixel by pixel. A pixel's distance is the
  * largest difference of one channel (0 to 255). Its distance with slack is
- * the smaller one found when either picture may take its colour from one
- * pixel away: the larger of (ours against the nearest match among theirs'
- * 3x3 neighbours) and (theirs against ours' 3x3 neighbours). Both ways, so a
- * line one pixel off passes and a line missing from either side does not.
+ * the smaller one found when either picture may take its colour from up to
+ * {@code deviation} pixels away (dEQP's position deviation; 1 by default):
+ * the larger of (ours against the nearest match among theirs' neighbours
+ * within that distance, a square) and (theirs against ours' neighbours).
+ * Both ways, so a line one pixel off passes and a line missing from either
+ * side does not. Deviation 0 makes slack the same as no slack.
+ *
+ * <p>With the {@link Metric#BLUR} metric the distances are measured between
+ * the two panels each blurred by {@link Blur}, so a different antialiasing of
+ * the same edge counts as near; {@link #ours()} and {@link #theirs()} stay
+ * the pictures as given, for showing.
  *
  * <p>Invariant: slack[i] <= direct[i]. The pixels are read, never kept
- * changed; the arrays here are the only ones made.
+ * changed; the arrays here (and the blurred copies) are the only ones made.
  */
 public final class Comparison {
 
     public static final int N = PanelPlace.SIZE;
     private static final int LEVELS = 256;
 
+    /** How distances are measured: on the pixels as they are, or after a small blur of both panels. */
+    public enum Metric { EXACT, BLUR }
+
+    /** Today's slack: one pixel. */
+    public static final int DEFAULT_DEVIATION = 1;
+    /** The largest position deviation offered. */
+    public static final int MAX_DEVIATION = 2;
+
     private final int[] ours;
     private final int[] theirs;
+    private final int deviation;
+    private final Metric metric;
     private final byte[] direct = new byte[N * N];
     private final byte[] slack = new byte[N * N];
     private final int[] directCount = new int[LEVELS];
     private final int[] slackCount = new int[LEVELS];
 
-    private Comparison(int[] ours, int[] theirs) {
+    private Comparison(int[] ours, int[] theirs, int deviation, Metric metric) {
         this.ours = ours;
         this.theirs = theirs;
+        this.deviation = deviation;
+        this.metric = metric;
     }
 
-    /** Compares two panels of 650x650 0xRRGGBB pixels, row by row from the top. */
+    /** Compares two panels of 650x650 0xRRGGBB pixels, row by row from the top, with one pixel of slack. */
     public static Comparison of(int[] ours, int[] theirs) {
+        return of(ours, theirs, DEFAULT_DEVIATION, Metric.EXACT);
+    }
+
+    /** Compares with slack of {@code deviation} pixels (0 to 2), measuring by {@code metric}. */
+    public static Comparison of(int[] ours, int[] theirs, int deviation, Metric metric) {
         if (ours.length != N * N || theirs.length != N * N) {
             throw new IllegalArgumentException("panels are 650x650 pixels");
         }
-        Comparison c = new Comparison(ours, theirs);
-        c.measure();
+        if (deviation < 0 || deviation > MAX_DEVIATION) {
+            throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
+        }
+        Comparison c = new Comparison(ours, theirs, deviation, metric);
+        if (metric == Metric.BLUR) {
+            c.measure(Blur.of(ours), Blur.of(theirs));
+        } else {
+            c.measure(ours, theirs);
+        }
         return c;
     }
 
-    private void measure() {
+    private void measure(int[] ours, int[] theirs) {
+        int r = deviation;
         for (int y = 0; y < N; y++) {
             for (int x = 0; x < N; x++) {
                 int i = y * N + x;
                 int d = Rasters.distance(ours[i], theirs[i]);
-                int s = d == 0 ? 0 : Math.max(nearest(ours[i], theirs, x, y, d), nearest(theirs[i], ours, x, y, d));
+                int s = d;
+                if (d != 0 && r != 0) {
+                    int one = nearest(ours[i], theirs, x, y, r, d, 0);
+                    // The other way only matters where it is larger than the first: it may stop at that.
+                    s = one == d ? d : nearest(theirs[i], ours, x, y, r, d, one);
+                }
                 direct[i] = (byte) d;
                 slack[i] = (byte) s;
                 directCount[d]++;
@@ -52,14 +89,18 @@ public final class Comparison {
         }
     }
 
-    /** The smallest distance from {@code colour} to a pixel of {@code other} in the 3x3 around (x, y), at most {@code bound}. */
-    private static int nearest(int colour, int[] other, int x, int y, int bound) {
+    /**
+     * The smallest distance from {@code colour} to a pixel of {@code other} within r pixels of (x, y)
+     * (a square), at most {@code bound}; or, as soon as one is found at or below {@code floor}, the
+     * floor (the caller takes the larger of this and the floor, so nothing smaller changes it).
+     */
+    private static int nearest(int colour, int[] other, int x, int y, int r, int bound, int floor) {
         int best = bound;
-        for (int ny = Math.max(0, y - 1); ny <= Math.min(N - 1, y + 1); ny++) {
-            for (int nx = Math.max(0, x - 1); nx <= Math.min(N - 1, x + 1); nx++) {
+        for (int ny = Math.max(0, y - r); ny <= Math.min(N - 1, y + r); ny++) {
+            for (int nx = Math.max(0, x - r); nx <= Math.min(N - 1, x + r); nx++) {
                 best = Math.min(best, Rasters.distance(colour, other[ny * N + nx]));
-                if (best == 0) {
-                    return 0;
+                if (best <= floor) {
+                    return floor;
                 }
             }
         }
@@ -76,6 +117,24 @@ public final class Comparison {
         return (double) within / (N * N);
     }
 
+    /** How many panel pixels differ by more than {@code tolerance} even with slack. */
+    public int failing(int tolerance) {
+        int failing = 0;
+        for (int level = Math.max(0, tolerance + 1); level < LEVELS; level++) {
+            failing += slackCount[level];
+        }
+        return failing;
+    }
+
+    /** The slack in pixels: the position deviation. */
+    public int deviation() {
+        return deviation;
+    }
+
+    public Metric metric() {
+        return metric;
+    }
+
     public Shares exact() {
         return new Shares(share(0, false), share(1, false), share(8, false));
     }
@@ -89,7 +148,7 @@ public final class Comparison {
         return direct[i] & 0xFF;
     }
 
-    /** Pixel i's distance with one pixel of slack. */
+    /** Pixel i's distance with slack ({@link #deviation()} pixels). */
     public int distanceWithSlack(int i) {
         return slack[i] & 0xFF;
     }

@@ -13,16 +13,24 @@ import java.util.List;
  * @param regions the patches that differ beyond the tolerance even with slack
  * @param tolerance the tolerance the verdict uses, in 1/255 steps (with slack)
  * @param minimum the share, in percent, that passes
+ * @param maxFailing the most pixels that may differ beyond the tolerance even with slack, or -1 for no limit
  */
 public record ComparisonReport(Picture theirs, String against, Comparison comparison, Margins margins,
-        DiffRegions.Found regions, int tolerance, double minimum) {
+        DiffRegions.Found regions, int tolerance, double minimum, int maxFailing) {
 
     /** How many of the largest patches a report lists. */
     public static final int REGIONS_LISTED = 5;
 
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
         return new ComparisonReport(theirs, against, comparison, theirs.margins(tolerance),
-                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum);
+                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1);
+    }
+
+    /** Judged by a rubric's rule (its tolerance, minimum share and pixel limit; the comparison made with its deviation). */
+    public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule) {
+        return new ComparisonReport(theirs, against, comparison, theirs.margins(rule.tolerance()),
+                DiffRegions.of(comparison, rule.tolerance(), REGIONS_LISTED), rule.tolerance(), rule.minShare(),
+                rule.maxFailing());
     }
 
     /** The share the verdict is on: within the tolerance, with one pixel of slack. */
@@ -31,7 +39,13 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     }
 
     public boolean passes() {
-        return verdictShare() * 100 >= minimum - 1e-9;
+        return verdictShare() * 100 >= minimum - 1e-9 && (maxFailing < 0 || regions.pixels() <= maxFailing);
+    }
+
+    /** "with 1 px slack", "with 2 px slack", "without slack"; and " (blurred)" for the perceptual metric. */
+    public String slackName() {
+        String slack = comparison.deviation() == 0 ? "no slack" : "with " + comparison.deviation() + " px slack";
+        return comparison.metric() == Comparison.Metric.BLUR ? slack + ", blurred" : slack;
     }
 
     public String text() {
@@ -41,7 +55,11 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         out.append("margins: ").append(margins.describe()).append('\n');
         Shares exact = comparison.exact();
         Shares slack = comparison.withSlack();
-        out.append(String.format("%-22s%12s%18s%n", "panel pixels", "exactly", "with 1 px slack"));
+        if (comparison.metric() == Comparison.Metric.BLUR) {
+            out.append("metric:  both panels blurred (3x3 binomial) before they are compared\n");
+        }
+        out.append(String.format("%-22s%12s%18s%n", "panel pixels", "exactly",
+                comparison.deviation() == 0 ? "no slack" : "with " + comparison.deviation() + " px slack"));
         appendRow(out, "identical", exact.identical(), slack.identical());
         appendRow(out, "within 1/255", exact.within1(), slack.within1());
         appendRow(out, "within 8/255", exact.within8(), slack.within8());
@@ -49,8 +67,9 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
             appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());
         }
         appendRegions(out);
-        out.append(String.format("%s: %s within %d/255 with slack (%s needed)%n", passes() ? "PASS" : "FAIL",
-                Percent.of(verdictShare()), tolerance, Percent.of(minimum / 100)));
+        out.append(String.format("%s: %s within %d/255 with slack (%s needed)%s%n", passes() ? "PASS" : "FAIL",
+                Percent.of(verdictShare()), tolerance, Percent.of(minimum / 100),
+                maxFailing < 0 ? "" : String.format("; %,d pixels fail (at most %,d allowed)", regions.pixels(), maxFailing)));
         return out.toString();
     }
 

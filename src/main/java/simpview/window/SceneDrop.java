@@ -10,7 +10,10 @@ import java.util.Locale;
 import java.util.function.Consumer;
 import javax.swing.TransferHandler;
 
-/** Opens a .simp file dropped on the window; a picture dropped is compared with the page (issue 15). */
+/**
+ * Opens a .simp file dropped on the window; a picture dropped is compared with the page (issue 15);
+ * a folder dropped is checked, every page picture in it, as {@code simpview check} does (issue 21).
+ */
 public final class SceneDrop extends TransferHandler {
 
     private static final long serialVersionUID = 1L;
@@ -19,14 +22,21 @@ public final class SceneDrop extends TransferHandler {
     private final transient Consumer<String> tell;
     // compare (issue 15): pictures dropped go here; null when the window does not compare
     private final transient Consumer<Path> compare;
+    // check (issue 21): a folder dropped goes here; null when the window does not check folders
+    private final transient Consumer<Path> folder;
 
     SceneDrop(Consumer<Path> open, Consumer<String> tell) {
-        this(open, null, tell);
+        this(open, null, null, tell);
     }
 
     SceneDrop(Consumer<Path> open, Consumer<Path> compare, Consumer<String> tell) {
+        this(open, compare, null, tell);
+    }
+
+    SceneDrop(Consumer<Path> open, Consumer<Path> compare, Consumer<Path> folder, Consumer<String> tell) {
         this.open = open;
         this.compare = compare;
+        this.folder = folder;
         this.tell = tell;
     }
 
@@ -57,9 +67,16 @@ public final class SceneDrop extends TransferHandler {
                 compare.accept(file.toPath());
                 return true;
             }
+            // check (issue 21)
+            if (folder != null && item instanceof File file && file.isDirectory()) {
+                folder.accept(file.toPath());
+                return true;
+            }
         }
         tell.accept(compare == null ? "Drop a .simp file to open it."
-                : "Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page.");
+                : folder == null ? "Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page."
+                : "Drop a .simp file to open it, a picture (.png, .jpg) to compare it with the page, "
+                        + "or a folder of your pages to check them all.");
         return false;
     }
 

@@ -3,6 +3,7 @@ package simpview.window;
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.DepthPicture;
+import simpview.window.instruments.FolderCheck;
 import simpview.window.instruments.Inspector;
 import simpview.window.render.BackgroundRenderer;
 import simpview.window.render.DrawSettings;
@@ -15,6 +16,7 @@ import simpview.window.render.View;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
+import java.awt.Font;
 import java.awt.GraphicsConfiguration;
 import java.awt.Insets;
 import java.awt.Rectangle;
@@ -31,8 +33,13 @@ import java.util.concurrent.ThreadLocalRandom;
 import javax.swing.AbstractAction;
 import javax.swing.InputMap;
 import javax.swing.JComponent;
+import javax.swing.JDialog;
 import javax.swing.JFrame;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
 import simpview.pages.PageStepper;
 import simpview.pages.Assignment2;
@@ -62,6 +69,7 @@ public final class SimpviewWindow {
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
+    private String lastCheck;
     private RenderedView shown;
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
@@ -99,7 +107,8 @@ public final class SimpviewWindow {
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         frame.setResizable(true);
-        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, status::say)); // compare (issue 15)
+        // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
+        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
         new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
@@ -442,6 +451,41 @@ public final class SimpviewWindow {
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */
+    /**
+     * A folder dropped (issue 21): {@code simpview check} for the pages, on its own thread
+     * (the pages drawn with this window's seed and scene folder); the table in a window of its own.
+     */
+    void checkFolder(Path folder) {
+        status.say("Checking the pictures in " + folder + " against the pages ...");
+        PageContext context = options.pageContext();
+        Runnable work = () -> {
+            String table = FolderCheck.text(folder, context);
+            SwingUtilities.invokeLater(() -> showCheck(folder, table));
+        };
+        Thread check = new Thread(work, "simpview-folder-check");
+        check.setDaemon(true);
+        check.start();
+    }
+
+    private void showCheck(Path folder, String table) {
+        JTextArea text = new JTextArea(table);
+        text.setEditable(false);
+        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
+        JDialog dialog = new JDialog(frame, "check: " + folder.getFileName(), false);
+        dialog.getContentPane().add(new JScrollPane(text));
+        dialog.pack();
+        dialog.setLocationRelativeTo(frame);
+        dialog.setVisible(true);
+        lastCheck = table;
+        String[] lines = table.split("\n");
+        status.say(folder.getFileName() + ": " + lines[lines.length - 1]);
+    }
+
+    /** The table of the last folder checked, or null: for the tests. */
+    String lastCheck() {
+        return lastCheck;
+    }
+
     void openScene(Path file) {
         assignment1Page = 0;
         forgetViewState();
@@ -491,7 +535,7 @@ public final class SimpviewWindow {
         shown = result;
         showPicture();
         frame.setTitle(result.title());
-        watcher.watch(result.facts().files());
+        watcher.watch(result.facts().files(), job.stampsAsRead());
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (orbit.turned()) {

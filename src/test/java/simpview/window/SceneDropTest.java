@@ -46,6 +46,22 @@ public class SceneDropTest {
     }
 
     @Test
+    void aFolderDroppedIsChecked(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        List<Path> checked = new ArrayList<>();
+        List<Path> compared = new ArrayList<>();
+        SceneDrop checking = new SceneDrop(opened::add, compared::add, checked::add, told::add);
+        Path folder = java.nio.file.Files.createDirectories(dir.resolve("my pages"));
+        assertTrue(checking.importData(support(files("notes.txt", folder.toString()))));
+        assertEquals(List.of(folder), checked);
+        assertFalse(checking.importData(support(files("notes.txt"))));
+        assertEquals(List.of("Drop a .simp file to open it, a picture (.png, .jpg) to compare it with the page, "
+                + "or a folder of your pages to check them all."), told);
+        assertFalse(new SceneDrop(opened::add, compared::add, told::add).importData(support(files(folder.toString()))),
+                "a window that does not check folders refuses them");
+        assertEquals(List.of(), compared);
+    }
+
+    @Test
     void refusesWhatIsNotAFileList() {
         assertFalse(drop.canImport(support(new StringSelection("house.simp"))));
         assertFalse(drop.importData(support(new StringSelection("house.simp"))));

@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import simpview.scene.FileProblem;
+import simpview.scene.FileStamp;
 import simpview.scene.SceneException;
 import simpview.scene.text.LineSource;
 
@@ -47,6 +48,8 @@ final class FileStack implements AutoCloseable {
     /** Every file the scene read or looked for, each once, in the order met: what a window watches. */
     private final Set<Path> reachedKeys = new HashSet<>();
     private final List<Path> reached = new ArrayList<>();
+    /** Each reached file as it was when it was reached, before it was read. */
+    private final List<FileStamp> stamps = new ArrayList<>();
     private long cachedBytes;
     private long linesOfFinishedFiles;
     /** The top file's size when it was opened, for the share of it read so far. */
@@ -220,6 +223,7 @@ final class FileStack implements AutoCloseable {
         }
         if (reachedKeys.add(key)) {
             reached.add(file);
+            stamps.add(FileStamp.of(file));
         }
     }
 
@@ -232,6 +236,15 @@ final class FileStack implements AutoCloseable {
      */
     List<Path> reached() {
         return List.copyOf(reached);
+    }
+
+    /**
+     * The stamps of {@link #reached()}'s files, in the same order, taken
+     * before each was read: a save made while the scene was read differs
+     * from them, so a window that watches the files sees it.
+     */
+    List<FileStamp> stampsAsRead() {
+        return List.copyOf(stamps);
     }
 
     /**

@@ -34,6 +34,13 @@ public interface SceneMonitor {
     default void reached(java.util.List<java.nio.file.Path> files) {
     }
 
+    /**
+     * Told just before {@link #reached}: the files' stamps, in the same order,
+     * as they were before the scene read them (see {@link FileStack}).
+     */
+    default void stampsAsRead(java.util.List<simpview.scene.FileStamp> stamps) {
+    }
+
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
     default void warning(String message) {
     }

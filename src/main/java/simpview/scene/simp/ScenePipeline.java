@@ -123,9 +123,8 @@ public final class ScenePipeline {
     /**
      * Draws the scene in {@code file} on {@code canvas}, which has just been
      * cleared, from a fresh state (identity CTM, empty stacks, style filled).
-     * On an error what was drawn
-     * before it stays and the error is thrown on; the monitor is told the
-     * files reached either way.
+     * On an error what was drawn before it stays and the error is thrown on;
+     * the monitor is told the files reached (and their stamps) either way.
      */
     public static Drawn draw(Path file, PageCanvas canvas, Options options, SceneMonitor monitor)
             throws SceneException {
@@ -144,6 +143,7 @@ public final class ScenePipeline {
             litAfterDrawing = turn.because;
         } finally {
             if (litAfterDrawing == null) {
+                monitor.stampsAsRead(files.stampsAsRead());
                 monitor.reached(files.reached());
             }
         }
@@ -164,6 +164,7 @@ public final class ScenePipeline {
             run(client, monitor, file);
             return drawn(client, litBecause, files, monitor);
         } finally {
+            monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
         }
     }
@@ -234,6 +235,7 @@ public final class ScenePipeline {
             cued.drawWith(threads, panel, provenance);
             run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
+            monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
         }
     }

@@ -1,6 +1,7 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
+import simpview.scene.FileStamp;
 import simpview.scene.simp.ScenePipeline;
 import simpview.scene.obj.ObjLibrary;
 
@@ -45,6 +46,8 @@ public final class RenderJob implements SceneMonitor {
     private double[] shownCentre;
     /** The files the scene read or looked for, as its pipeline told them; the render thread's, like trace. */
     private List<Path> reached = List.of();
+    /** Their stamps before they were read; set on the render thread, read on the EDT once the job is done. */
+    private volatile List<FileStamp> stampsAsRead = List.of();
 
     public RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -113,6 +116,16 @@ public final class RenderJob implements SceneMonitor {
     @Override
     public Matrix4 viewTurn() {
         return settings.viewTurn();
+    }
+
+    @Override
+    public void stampsAsRead(List<FileStamp> stamps) {
+        stampsAsRead = List.copyOf(stamps);
+    }
+
+    /** The stamps of {@link PageFacts#files}' files as the scene read them (empty for a page that reads none). */
+    public List<FileStamp> stampsAsRead() {
+        return stampsAsRead;
     }
 
     @Override

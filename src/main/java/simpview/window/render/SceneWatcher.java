@@ -6,13 +6,13 @@ import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Objects;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import simpview.scene.FileChecksum;
+import simpview.scene.FileStamp;
 
 /**
  * Watches the files of the picture on screen (the scene and every file it
@@ -62,12 +62,23 @@ public final class SceneWatcher {
      * @param stamp size, last change and inode, or "missing"
      * @param checksum the CRC-32C of its bytes when it was fresh and small, else {@link #NO_CHECKSUM}
      */
-    record Look(Object stamp, long checksum) {
+    record Look(FileStamp stamp, long checksum) {
     }
 
     /** From now on watches {@code toWatch}, as they are when the watcher thread first looks (soon). */
-    public synchronized void watch(List<Path> toWatch) {
+    public void watch(List<Path> toWatch) {
+        watch(toWatch, List.of());
+    }
+
+    /**
+     * From now on watches {@code toWatch}; {@code asRead} are their stamps as
+     * the picture on screen read them (same order; empty when not known). A
+     * file saved while the picture was drawn differs from its stamp as read,
+     * and is told at once: its picture is not what the file now says.
+     */
+    public synchronized void watch(List<Path> toWatch, List<FileStamp> asRead) {
         List<Path> list = List.copyOf(toWatch);
+        List<FileStamp> read = List.copyOf(asRead);
         watched = list;
         if (thread.isShutdown()) {
             return;
@@ -75,6 +86,9 @@ public final class SceneWatcher {
         thread.execute(() -> {
             files = list;
             looks = looksNow();
+            if (savedSinceRead(read, looks)) {
+                SwingUtilities.invokeLater(changed);
+            }
         });
         if (polling == null) {
             polling = thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
@@ -112,6 +126,19 @@ public final class SceneWatcher {
         return seen;
     }
 
+    /** True when a file's stamp now is not its stamp as read (the two lists in the same order). */
+    static boolean savedSinceRead(List<FileStamp> asRead, List<Look> now) {
+        if (asRead.size() != now.size()) {
+            return false; // not known, or not of these files
+        }
+        for (int i = 0; i < now.size(); i++) {
+            if (!asRead.get(i).equals(now.get(i).stamp())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** True when {@code now} shows another file than {@code before}. */
     static boolean changed(Look before, Look now) {
         if (!before.stamp().equals(now.stamp())) {
@@ -126,10 +153,9 @@ public final class SceneWatcher {
         try {
             attributes = Files.readAttributes(file, BasicFileAttributes.class);
         } catch (IOException e) {
-            return new Look("missing", NO_CHECKSUM);
+            return new Look(FileStamp.MISSING, NO_CHECKSUM);
         }
-        Object stamp = List.of(attributes.size(), attributes.lastModifiedTime(),
-                Objects.toString(attributes.fileKey()));
+        FileStamp stamp = FileStamp.of(attributes);
         boolean fresh = attributes.lastModifiedTime().toMillis() > now - FRESH_MILLIS;
         boolean small = attributes.isRegularFile() && attributes.size() <= CHECKSUM_LIMIT;
         return new Look(stamp, fresh && small ? checksum(file) : NO_CHECKSUM);

@@ -68,4 +68,14 @@ public class SceneWatcherTest {
         Files.delete(file);
         assertTrue(SceneWatcher.changed(there, look(file)), "gone");
     }
+
+    @Test
+    void aSaveSinceTheFilesWereReadIsTold() throws Exception {
+        Path file = Files.writeString(dir.resolve("a.simp"), "wire\n");
+        java.util.List<simpview.scene.FileStamp> asRead = java.util.List.of(simpview.scene.FileStamp.of(file));
+        assertFalse(SceneWatcher.savedSinceRead(asRead, java.util.List.of(look(file))), "as it was read");
+        Files.writeString(file, "filled\nwire\n");
+        assertTrue(SceneWatcher.savedSinceRead(asRead, java.util.List.of(look(file))), "saved since");
+        assertFalse(SceneWatcher.savedSinceRead(java.util.List.of(), java.util.List.of(look(file))), "not known: not told");
+    }
 }

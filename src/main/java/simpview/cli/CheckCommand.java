@@ -1,0 +1,131 @@
+package simpview.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+import simpview.cli.CompareOptions.PageRange;
+import simpview.compare.CompareException;
+import simpview.compare.Comparison;
+import simpview.compare.Rubric;
+import simpview.compare.RubricRule;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Rgb;
+
+/**
+ * {@code simpview check DIR}: a student's self-check before handing in. Every
+ * picture in DIR that names a page (or a scene of --scene) is compared with
+ * simpview's, and one table says PASS or FAIL and the worst region of each.
+ * The same batch as {@code compare --dir}, printed for one student.
+ */
+@Command(name = "check",
+        mixinStandardHelpOptions = true,
+        version = ExitCode.VERSION,
+        description = "Checks a folder of your pictures (page1.png ... page8.png, or window captures named so) against "
+                + "simpview's pages, or a folder of scenes, and prints one table: pass or fail and the worst region "
+                + "of each. Exit 0 only when every picture found passes.",
+        footer = {"", "Examples:",
+            "  simpview check my-pages/ --simp-dir course/",
+            "  simpview check my-a3/ --scene course-a3/",
+            "  simpview check my-pages/ --pages 1-3 --seed 7 --out-dir check-report/"},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:every picture found passes",
+            "1:some picture fails or cannot be read, no picture was found, or a scene error",
+            "2:usage error"})
+final class CheckCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    /** The top command, which knows where the project's own scenes are. */
+    @ParentCommand
+    private SimpviewCommand parent;
+
+    @Parameters(index = "0", paramLabel = "DIR", description = "the folder of your pictures (subfolders too)")
+    private Path dir;
+
+    @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
+            description = "the pages pictures are matched to by name (default: 1-8)")
+    private PageRange pages;
+
+    @Option(names = "--scene", paramLabel = "F.simp|D",
+            description = "instead of the pages: one scene for every picture, or a folder of scenes matched by name")
+    private Path scene;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    private Path simpDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = -200 for --scene (default: 0,0,0)")
+    private Rgb far;
+
+    @Option(names = "--tolerance", paramLabel = "T", converter = CompareOptions.Tolerance.class,
+            description = "per channel, in 1/255 steps (default: 8)")
+    private int tolerance = 8;
+
+    @Option(names = "--min", paramLabel = "P", converter = CompareOptions.Share.class,
+            description = "the share in percent that passes (default: 99)")
+    private double min = 99;
+
+    @Option(names = "--deviation", paramLabel = "PX", converter = CompareOptions.Deviation.class,
+            description = "position deviation, 0, 1 or 2 pixels (default: 1)")
+    private int deviation = Comparison.DEFAULT_DEVIATION;
+
+    @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
+            description = "exact, or blur (default: exact)")
+    private Comparison.Metric metric = Comparison.Metric.EXACT;
+
+    @Option(names = "--rubric", paramLabel = "F.json", description = "the course's rubric, if it gives you one")
+    private Path rubric;
+
+    @Option(names = "--out-dir", paramLabel = "D", description = "also write the tables and diff images here")
+    private Path outDir;
+
+    @Mixin
+    private ThreadsOption threads;
+
+    @Override
+    public Integer call() {
+        if (pages != null && scene != null) {
+            throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
+        }
+        if (scene == null && (near != null || far != null)) {
+            throw new ParameterException(spec.commandLine(), "--near-color and --far-color go with --scene only");
+        }
+        if (scene != null && (seed != null || simpDir != null)) {
+            throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
+        }
+        Rubric judged;
+        try {
+            judged = CompareCommand.rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+        } catch (CompareException e) {
+            spec.commandLine().getErr().println("simpview check: " + e.getMessage());
+            return ExitCode.USAGE_ERROR;
+        }
+        try (DrawingThreads drawing = threads.open()) {
+            OwnPictures own = new OwnPictures(PageDrawing.context(parent.ownScenes(), seed, simpDir,
+                    PageDrawing.warningsTo(spec.commandLine().getErr())), near, far,
+                    PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
+            CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
+            CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
+                    CompareBatch.DiffImages.FAILING);
+            if (scene != null) {
+                return batch.scenes(dir, scene, outputs);
+            }
+            return batch.pages(dir, pages != null ? pages : new CompareOptions.PageRangeConverter().convert("1-8"), outputs);
+        }
+    }
+}

@@ -1,0 +1,115 @@
+package simpview.compare;
+
+import com.google.gson.GsonBuilder;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * A batch as Gradescope's autograder {@code results.json}: one test per
+ * compared picture (its name the page and the file, its output the shares,
+ * the largest regions and the diff image's name; {@code max_score} the
+ * rule's points), one test scoring 0 for each page asked for that no picture
+ * matched, one for each picture that could not be compared; the top-level
+ * score is the sum of the tests' scores. Pictures that match no page are
+ * left out (they are named in the top-level output).
+ */
+public final class GradescopeResults {
+
+    private GradescopeResults() {
+    }
+
+    /** {@code wanted}: every page or scene asked for; one no picture matched is a test scoring 0. */
+    public static String json(List<BatchRow> rows, List<Wanted> wanted, double seconds) {
+        List<Wanted> missing = Wanted.missing(wanted, rows);
+        JsonArray tests = new JsonArray();
+        double total = 0;
+        int number = 0;
+        StringBuilder skipped = new StringBuilder();
+        for (BatchRow row : rows) {
+            if (row.result() == BatchRow.Result.SKIPPED) {
+                skipped.append("\n  ").append(row.file()).append(": ").append(row.note());
+                continue;
+            }
+            JsonObject test = new JsonObject();
+            test.addProperty("name", name(row.target()) + " (" + row.file() + ")");
+            test.addProperty("number", String.valueOf(++number));
+            test.addProperty("score", row.score());
+            test.addProperty("max_score", row.rule().points());
+            test.addProperty("output", output(row));
+            test.addProperty("visibility", row.rule().visibility());
+            JsonArray tags = new JsonArray();
+            tags.add(name(row.target()));
+            tags.add(row.result().name());
+            test.add("tags", tags);
+            tests.add(test);
+            total += row.score();
+        }
+        for (Wanted lost : missing) {
+            JsonObject test = new JsonObject();
+            test.addProperty("name", name(lost.target()) + " (no picture)");
+            test.addProperty("number", String.valueOf(++number));
+            test.addProperty("score", 0.0);
+            test.addProperty("max_score", lost.rule().points());
+            test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission "
+                    + "(a picture is matched by its name, e.g. page3.png).");
+            test.addProperty("visibility", lost.rule().visibility());
+            JsonArray tags = new JsonArray();
+            tags.add(name(lost.target()));
+            tags.add("MISSING");
+            test.add("tags", tags);
+            tests.add(test);
+        }
+        JsonObject results = new JsonObject();
+        results.addProperty("score", Math.round(total * 100) / 100.0);
+        results.addProperty("execution_time", Math.max(1, (int) Math.ceil(seconds)));
+        results.addProperty("output", BatchTable.summary(rows)
+                + (missing.isEmpty() ? "" : String.format(Locale.ROOT, "; %d asked for but not found", missing.size()))
+                + (skipped.length() == 0 ? "" : "\nNot matched to any page:" + skipped));
+        results.addProperty("stdout_visibility", "hidden");
+        results.add("tests", tests);
+        return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results) + "\n";
+    }
+
+    /** "page 6" for a page's label ("6", "2 (seed 361)"), the scene's file name otherwise. */
+    static String name(String target) {
+        return target.matches("[0-9].*") ? "page " + target : target;
+    }
+
+    /** The shares, the verdict, the largest regions and the diff image, as the test's output. */
+    static String output(BatchRow row) {
+        if (!row.compared()) {
+            return row.result() + ": " + row.note();
+        }
+        RubricRule rule = row.rule();
+        StringBuilder out = new StringBuilder();
+        out.append(String.format(Locale.ROOT, "%s: %s of panel pixels within %d/255 with %d px slack (%s needed)",
+                row.result(), Percent.of(row.verdict()), rule.tolerance(), rule.deviation(),
+                Percent.of(rule.minShare() / 100)));
+        if (rule.maxFailing() >= 0) {
+            out.append(String.format(Locale.ROOT, "; %,d pixels fail (at most %,d allowed)", row.failing(), rule.maxFailing()));
+        }
+        out.append(String.format(Locale.ROOT, "%nidentical %s, within 1/255 %s, within 8/255 %s exactly; "
+                + "%s, %s, %s with slack%n", Percent.of(row.exact().identical()), Percent.of(row.exact().within1()),
+                Percent.of(row.exact().within8()), Percent.of(row.slack().identical()), Percent.of(row.slack().within1()),
+                Percent.of(row.slack().within8())));
+        if (!row.alternate().isEmpty()) {
+            out.append("matched the accepted alternate ").append(row.alternate()).append('\n');
+        }
+        if (row.regions().isEmpty()) {
+            out.append("no region differs beyond the tolerance\n");
+        } else {
+            out.append(String.format(Locale.ROOT, "%,d pixels differ beyond the tolerance; the largest regions "
+                    + "(panel pixels, origin bottom-left, y up):%n", row.failing()));
+            for (DiffRegion region : row.regions()) {
+                out.append("  ").append(region.describe()).append('\n');
+            }
+        }
+        out.append("margins: ").append(row.margins());
+        if (!row.diff().isEmpty()) {
+            out.append("\ndiff image: ").append(row.diff());
+        }
+        return out.toString();
+    }
+}

@@ -1,0 +1,145 @@
+package simpview.compare;
+
+import java.io.StringWriter;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import javax.xml.stream.XMLOutputFactory;
+import javax.xml.stream.XMLStreamException;
+import javax.xml.stream.XMLStreamWriter;
+
+/**
+ * A batch as JUnit XML, which CI systems and GitHub Classroom's runners read:
+ * {@code <testsuites>} holding one {@code <testsuite>} per submission (the
+ * first folder of the pictures' paths, "submission" for pictures at the top), one
+ * {@code <testcase>} per picture, named by its page, with {@code classname}
+ * the submission. A picture below the minimum has a {@code <failure>} whose
+ * message is the shares; one that cannot be compared an {@code <error>}; one
+ * that matches no page is {@code <skipped>}; a page asked for but not found is
+ * a failure too. Written with the JDK's XML writer, so every name and text is
+ * escaped as XML wants.
+ */
+public final class JUnitResults {
+
+    /** The submission of pictures at the top of the folder (one student's folder). */
+    public static final String TOP = "submission";
+
+    private JUnitResults() {
+    }
+
+    /** {@code wanted}: every page or scene asked for; each submission lacking one gets a failing test for it. */
+    public static String xml(List<BatchRow> rows, List<Wanted> wanted, double seconds) {
+        Map<String, List<BatchRow>> suites = new LinkedHashMap<>();
+        for (BatchRow row : rows) {
+            suites.computeIfAbsent(submission(row.file()), k -> new ArrayList<>()).add(row);
+        }
+        if (suites.isEmpty() && !wanted.isEmpty()) {
+            suites.put(TOP, new ArrayList<>());
+        }
+        StringWriter text = new StringWriter();
+        try {
+            XMLStreamWriter xml = XMLOutputFactory.newFactory().createXMLStreamWriter(text);
+            xml.writeStartDocument("UTF-8", "1.0");
+            xml.writeCharacters("\n");
+            xml.writeStartElement("testsuites");
+            xml.writeAttribute("name", "simpview compare");
+            int failures = 0;
+            int errors = 0;
+            int skipped = 0;
+            for (BatchRow row : rows) {
+                failures += row.result() == BatchRow.Result.FAIL ? 1 : 0;
+                errors += row.result() == BatchRow.Result.ERROR ? 1 : 0;
+                skipped += row.result() == BatchRow.Result.SKIPPED ? 1 : 0;
+            }
+            int missingCount = 0;
+            for (List<BatchRow> suite : suites.values()) {
+                missingCount += Wanted.missing(wanted, suite).size();
+            }
+            xml.writeAttribute("tests", String.valueOf(rows.size() + missingCount));
+            xml.writeAttribute("failures", String.valueOf(failures + missingCount));
+            xml.writeAttribute("errors", String.valueOf(errors));
+            xml.writeAttribute("skipped", String.valueOf(skipped));
+            xml.writeAttribute("time", String.format(Locale.ROOT, "%.3f", seconds));
+            int id = 0;
+            for (Map.Entry<String, List<BatchRow>> suite : suites.entrySet()) {
+                writeSuite(xml, id++, suite.getKey(), suite.getValue(), Wanted.missing(wanted, suite.getValue()));
+            }
+            xml.writeCharacters("\n");
+            xml.writeEndElement();
+            xml.writeCharacters("\n");
+            xml.writeEndDocument();
+            xml.close();
+        } catch (XMLStreamException e) {
+            throw new IllegalStateException("writing JUnit XML to a string failed", e);
+        }
+        return text.toString();
+    }
+
+    private static void writeSuite(XMLStreamWriter xml, int id, String name, List<BatchRow> rows, List<Wanted> notFound)
+            throws XMLStreamException {
+        xml.writeCharacters("\n  ");
+        xml.writeStartElement("testsuite");
+        xml.writeAttribute("name", name);
+        xml.writeAttribute("id", String.valueOf(id));
+        xml.writeAttribute("tests", String.valueOf(rows.size() + notFound.size()));
+        xml.writeAttribute("failures", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.FAIL).count()
+                + notFound.size()));
+        xml.writeAttribute("errors", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.ERROR).count()));
+        xml.writeAttribute("skipped", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count()));
+        for (BatchRow row : rows) {
+            xml.writeCharacters("\n    ");
+            xml.writeStartElement("testcase");
+            xml.writeAttribute("name", row.target().isEmpty() ? row.file()
+                    : GradescopeResults.name(row.target()) + " (" + row.file() + ")");
+            xml.writeAttribute("classname", name);
+            switch (row.result()) {
+                case PASS -> { }
+                case FAIL -> element(xml, "failure", shares(row), "below the minimum", GradescopeResults.output(row));
+                case ERROR -> element(xml, "error", row.note().lines().findFirst().orElse(""), "not compared", row.note());
+                case SKIPPED -> {
+                    xml.writeStartElement("skipped");
+                    xml.writeAttribute("message", row.note());
+                    xml.writeEndElement();
+                }
+            }
+            xml.writeEndElement();
+        }
+        for (Wanted wanted : notFound) {
+            xml.writeCharacters("\n    ");
+            xml.writeStartElement("testcase");
+            xml.writeAttribute("name", GradescopeResults.name(wanted.target()) + " (no picture)");
+            xml.writeAttribute("classname", name);
+            element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found", "missing",
+                    "No picture's name names " + GradescopeResults.name(wanted.target()) + ".");
+            xml.writeEndElement();
+        }
+        xml.writeCharacters("\n  ");
+        xml.writeEndElement();
+    }
+
+    private static void element(XMLStreamWriter xml, String tag, String message, String type, String body)
+            throws XMLStreamException {
+        xml.writeStartElement(tag);
+        xml.writeAttribute("message", message);
+        xml.writeAttribute("type", type);
+        xml.writeCharacters(body);
+        xml.writeEndElement();
+    }
+
+    /** E.g. "92.90 % within 8/255 with 1 px slack, 99.00 % needed". */
+    private static String shares(BatchRow row) {
+        return String.format(Locale.ROOT, "%s within %d/255 with %d px slack, %s needed%s", Percent.of(row.verdict()),
+                row.rule().tolerance(), row.rule().deviation(), Percent.of(row.rule().minShare() / 100),
+                row.rule().maxFailing() >= 0 ? String.format(Locale.ROOT, "; %d pixels fail, at most %d allowed",
+                        row.failing(), row.rule().maxFailing()) : "");
+    }
+
+    /** The submission a picture belongs to: the first folder of its path, or "." at the top. */
+    static String submission(String file) {
+        String path = file.replace('\\', '/');
+        int slash = path.indexOf('/');
+        return slash < 0 ? TOP : path.substring(0, slash);
+    }
+}

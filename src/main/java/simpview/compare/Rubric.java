@@ -1,0 +1,254 @@
+package simpview.compare;
+
+import com.google.gson.stream.JsonReader;
+import com.google.gson.stream.JsonToken;
+import com.google.gson.stream.MalformedJsonException;
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+
+/**
+ * A grading rubric: how each page or scene is judged and what it is worth.
+ * Read from a JSON file (with Gson's streaming reader, so every error names
+ * its line and column):
+ *
+ * <pre>
+ * { "defaults": { "tolerance": 8, "deviation": 1, "min_share": 99, "points": 1 },
+ *   "pages": [ { "match": "1-3", "points": 2 },
+ *              { "match": "6-8", "min_share": 92, "max_failing_pixels": 40000 },
+ *              { "match": "pageC", "metric": "blur", "alternates": "alternates/pageC" } ] }
+ * </pre>
+ *
+ * The first rule whose {@code match} fits a page or scene is its rule; a
+ * field it leaves out comes from {@code defaults}, and one left out there from
+ * the command line (today's defaults). Without a rubric every page has the
+ * command line's rule.
+ */
+public final class Rubric {
+
+    private static final Set<String> VISIBILITIES = Set.of("hidden", "after_due_date", "after_published", "visible");
+
+    private final RubricRule defaults;
+    private final List<RubricRule> rules;
+
+    private Rubric(RubricRule defaults, List<RubricRule> rules) {
+        this.defaults = defaults;
+        this.rules = List.copyOf(rules);
+    }
+
+    /** No file: every page judged by {@code defaults}. */
+    public static Rubric of(RubricRule defaults) {
+        return new Rubric(defaults, List.of());
+    }
+
+    /** The rule for a page or scene: key "page6" and page 6, or key "pageC" (the scene's name without .simp) and 0. */
+    public RubricRule ruleFor(String key, int page) {
+        for (RubricRule rule : rules) {
+            if (rule.matches(key, page)) {
+                return rule;
+            }
+        }
+        return defaults;
+    }
+
+    public List<RubricRule> rules() {
+        return rules;
+    }
+
+    public RubricRule defaults() {
+        return defaults;
+    }
+
+    /** Reads a rubric file over {@code base} (the command line's rule). Alternates are relative to the file's folder. */
+    public static Rubric read(Path file, RubricRule base) throws CompareException {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new CompareException("rubric " + file + ": cannot be read (" + e.getMessage() + ")");
+        }
+        try (Reader reader = new java.io.StringReader(text)) {
+            JsonReader json = new JsonReader(reader);
+            return new Parser(file, json).rubric(base);
+        } catch (MalformedJsonException e) {
+            throw new CompareException("rubric " + file + ": not valid JSON: " + e.getMessage());
+        } catch (IOException | IllegalStateException | NumberFormatException e) {
+            throw new CompareException("rubric " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** The streaming parse, one object at a time, each error with its place. */
+    private static final class Parser {
+        private final Path file;
+        private final Path folder;
+        private final JsonReader json;
+
+        Parser(Path file, JsonReader json) {
+            this.file = file;
+            this.folder = file.toAbsolutePath().getParent();
+            this.json = json;
+        }
+
+        Rubric rubric(RubricRule base) throws IOException, CompareException {
+            expect(JsonToken.BEGIN_OBJECT, "an object with \"defaults\" and \"pages\"");
+            json.beginObject();
+            RubricRule defaults = base;
+            List<RubricRule> rules = new ArrayList<>();
+            boolean sawPages = false;
+            while (json.hasNext()) {
+                String name = json.nextName();
+                switch (name) {
+                    case "defaults" -> defaults = rule(defaults, false);
+                    case "pages" -> {
+                        sawPages = true;
+                        expect(JsonToken.BEGIN_ARRAY, "a list of page rules");
+                        json.beginArray();
+                        while (json.hasNext()) {
+                            rules.add(rule(null, true));
+                        }
+                        json.endArray();
+                    }
+                    default -> throw error("unknown key \"" + name + "\": expected \"defaults\" or \"pages\"");
+                }
+            }
+            json.endObject();
+            if (json.peek() != JsonToken.END_DOCUMENT) {
+                throw error("text after the rubric's closing }");
+            }
+            if (!sawPages && defaults == base) {
+                throw new CompareException("rubric " + file + ": neither \"defaults\" nor \"pages\" given");
+            }
+            // Page rules left open fall back on the defaults as the file gives them.
+            List<RubricRule> filled = new ArrayList<>();
+            for (RubricRule rule : rules) {
+                filled.add(fill(rule, defaults));
+            }
+            return new Rubric(defaults, filled);
+        }
+
+        /** A rule object; over {@code base}, or with its missing fields left null-ish (NaN, MIN_VALUE) to fill later. */
+        private RubricRule rule(RubricRule base, boolean needsMatch) throws IOException, CompareException {
+            expect(JsonToken.BEGIN_OBJECT, needsMatch ? "a page rule: an object with \"match\"" : "an object of default fields");
+            String where = place();
+            json.beginObject();
+            String match = base == null ? null : base.match();
+            int tolerance = base == null ? Integer.MIN_VALUE : base.tolerance();
+            int deviation = base == null ? Integer.MIN_VALUE : base.deviation();
+            double minShare = base == null ? Double.NaN : base.minShare();
+            int maxFailing = base == null ? Integer.MIN_VALUE : base.maxFailing();
+            double points = base == null ? Double.NaN : base.points();
+            double zeroShare = base == null ? Double.NaN : base.zeroShare();
+            Comparison.Metric metric = base == null ? null : base.metric();
+            Path alternates = base == null ? null : base.alternates();
+            String visibility = base == null ? null : base.visibility();
+            while (json.hasNext()) {
+                String name = json.nextName();
+                switch (name) {
+                    case "match" -> {
+                        if (!needsMatch) {
+                            throw error("\"match\" belongs in a page rule, not in the defaults");
+                        }
+                        match = string("a page range like \"6\" or \"1-3\", or a name pattern like \"page*\"");
+                        if (match.isBlank()) {
+                            throw error("\"match\" is empty");
+                        }
+                    }
+                    case "tolerance" -> tolerance = (int) number(0, 255, true, "a whole number of 1/255 steps, 0 to 255");
+                    case "deviation" -> deviation = (int) number(0, Comparison.MAX_DEVIATION, true,
+                            "a position deviation of 0, 1 or 2 pixels");
+                    case "min_share" -> minShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    case "max_failing_pixels" -> maxFailing = (int) number(0, Comparison.N * Comparison.N, true,
+                            "a whole number of pixels, 0 to 422500");
+                    case "points" -> points = number(0, 1e6, false, "points, 0 or more");
+                    case "zero_share" -> zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    case "metric" -> metric = switch (string("\"exact\" or \"blur\"")) {
+                        case "exact" -> Comparison.Metric.EXACT;
+                        case "blur" -> Comparison.Metric.BLUR;
+                        default -> throw error("\"metric\" must be \"exact\" or \"blur\"");
+                    };
+                    case "alternates" -> alternates = folder(string("a folder of extra accepted pictures"));
+                    case "visibility" -> {
+                        visibility = string("one of " + VISIBILITIES);
+                        if (!VISIBILITIES.contains(visibility)) {
+                            throw error("\"visibility\" must be hidden, after_due_date, after_published or visible");
+                        }
+                    }
+                    default -> throw error("unknown key \"" + name + "\": expected match, tolerance, deviation, "
+                            + "min_share, max_failing_pixels, points, zero_share, metric, alternates or visibility");
+                }
+            }
+            json.endObject();
+            if (needsMatch && match == null) {
+                throw new CompareException("rubric " + file + ": the page rule " + where + " has no \"match\"");
+            }
+            return new RubricRule(match, tolerance, deviation, minShare, maxFailing, points, zeroShare, metric,
+                    alternates, visibility);
+        }
+
+        private RubricRule fill(RubricRule r, RubricRule d) throws CompareException {
+            RubricRule full = new RubricRule(r.match(),
+                    r.tolerance() == Integer.MIN_VALUE ? d.tolerance() : r.tolerance(),
+                    r.deviation() == Integer.MIN_VALUE ? d.deviation() : r.deviation(),
+                    Double.isNaN(r.minShare()) ? d.minShare() : r.minShare(),
+                    r.maxFailing() == Integer.MIN_VALUE ? d.maxFailing() : r.maxFailing(),
+                    Double.isNaN(r.points()) ? d.points() : r.points(),
+                    Double.isNaN(r.zeroShare()) ? Math.min(d.zeroShare(), Double.isNaN(r.minShare()) ? d.minShare() : r.minShare())
+                            : r.zeroShare(),
+                    r.metric() == null ? d.metric() : r.metric(),
+                    r.alternates() == null ? d.alternates() : r.alternates(),
+                    r.visibility() == null ? d.visibility() : r.visibility());
+            if (full.zeroShare() > full.minShare()) {
+                throw new CompareException(String.format(Locale.ROOT, "rubric %s: the rule for \"%s\" has zero_share %s "
+                        + "above its min_share %s", file, r.match(), full.zeroShare(), full.minShare()));
+            }
+            return full;
+        }
+
+        private Path folder(String name) throws CompareException {
+            Path path = folder == null ? Path.of(name) : folder.resolve(name);
+            if (!Files.isDirectory(path)) {
+                throw error("\"alternates\": no such folder: " + path);
+            }
+            return path;
+        }
+
+        private String string(String what) throws IOException, CompareException {
+            expect(JsonToken.STRING, what);
+            return json.nextString();
+        }
+
+        private double number(double min, double max, boolean whole, String what) throws IOException, CompareException {
+            expect(JsonToken.NUMBER, what);
+            String where = place();
+            double value = json.nextDouble();
+            if (value < min || value > max || whole && value != Math.rint(value)) {
+                throw new CompareException("rubric " + file + ": " + where + ": " + value + " is not " + what);
+            }
+            return value;
+        }
+
+        private void expect(JsonToken token, String what) throws IOException, CompareException {
+            JsonToken found = json.peek();
+            if (found != token) {
+                throw error("expected " + what + ", found " + found.name().toLowerCase(Locale.ROOT).replace('_', ' '));
+            }
+        }
+
+        private CompareException error(String message) {
+            return new CompareException("rubric " + file + ": " + place() + ": " + message);
+        }
+
+        /** E.g. "line 3, column 14 ($.pages[0].tolerance)", from the reader's own account of where it is. */
+        private String place() {
+            String s = json.toString();
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("line (\\d+) column (\\d+) path (\\S+)").matcher(s);
+            return m.find() ? "line " + m.group(1) + ", column " + m.group(2) + " (" + m.group(3) + ")" : s;
+        }
+    }
+}

@@ -1,0 +1,94 @@
+package simpview.compare;
+
+import java.nio.file.Path;
+
+/**
+ * How one page or scene is judged and scored: the rule of a rubric that
+ * matched it, every field filled in (from the rubric's defaults, and those
+ * from the command line's options).
+ *
+ * @param match what the rule matched on: a page range ("6", "1-3"), a name pattern ("page*", "pageC") or "*"
+ * @param tolerance per channel, in 1/255 steps
+ * @param deviation position deviation in pixels, 0 to 2: a pixel matches when a pixel within that distance matches
+ * @param minShare the share within the tolerance (with the deviation) that passes, in percent
+ * @param maxFailing the most pixels that may fail (beyond the tolerance even with the deviation), or -1 for no limit
+ * @param points the page's score when it passes (Gradescope's max_score)
+ * @param zeroShare with partial scoring, the share (percent) at and below which the page scores nothing
+ * @param metric exact, or after a small blur (antialiased panels)
+ * @param alternates a folder of extra accepted references, or null
+ * @param visibility Gradescope's visibility of the page's test
+ */
+public record RubricRule(String match, int tolerance, int deviation, double minShare, int maxFailing, double points,
+        double zeroShare, Comparison.Metric metric, Path alternates, String visibility) {
+
+    /** Today's defaults: 8/255, one pixel, 99 %, no pixel limit, one point, exact. */
+    public static RubricRule defaults(int tolerance, double minShare, int deviation, Comparison.Metric metric) {
+        return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(90, minShare), metric, null, "visible");
+    }
+
+    /** The verdict of a comparison made under this rule (with its deviation and metric). */
+    public boolean passes(Comparison comparison) {
+        return comparison.share(tolerance, true) * 100 >= minShare - 1e-9
+                && (maxFailing < 0 || comparison.failing(tolerance) <= maxFailing);
+    }
+
+    /**
+     * The score of a comparison. All or nothing: the points when it passes, else 0.
+     * Partial: the points when it passes; else the points times how far the share
+     * got from {@code zeroShare} towards {@code minShare} (0 at or below it), and
+     * when there are more failing pixels than allowed, times allowed / failing.
+     * Rounded to hundredths.
+     */
+    public double score(Comparison comparison, boolean partial) {
+        if (passes(comparison)) {
+            return points;
+        }
+        if (!partial) {
+            return 0;
+        }
+        double share = comparison.share(tolerance, true) * 100;
+        double part = minShare <= zeroShare ? (share >= minShare ? 1 : 0)
+                : Math.max(0, Math.min(1, (share - zeroShare) / (minShare - zeroShare)));
+        int failing = comparison.failing(tolerance);
+        if (maxFailing >= 0 && failing > maxFailing) {
+            part *= (double) maxFailing / failing;
+        }
+        return Math.floor(points * part * 100 + 1e-9) / 100;
+    }
+
+    /** Whether this rule is for the page or scene of that key ("page6", "pageC") and page number (0 for a scene). */
+    boolean matches(String key, int page) {
+        String m = match.trim();
+        if (m.matches("[0-9][0-9 ,\\-]*")) {
+            return page > 0 && inRange(m, page);
+        }
+        return key.matches(glob(m));
+    }
+
+    private static boolean inRange(String range, int page) {
+        for (String part : range.split(",")) {
+            String[] ends = part.trim().split("-");
+            if (ends.length == 0 || ends[0].isBlank()) {
+                continue;
+            }
+            int from = Integer.parseInt(ends[0].trim());
+            int to = ends.length > 1 && !ends[1].isBlank() ? Integer.parseInt(ends[1].trim()) : from;
+            if (page >= from && page <= to) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static String glob(String pattern) {
+        StringBuilder regex = new StringBuilder();
+        for (char c : pattern.toCharArray()) {
+            switch (c) {
+                case '*' -> regex.append(".*");
+                case '?' -> regex.append('.');
+                default -> regex.append(java.util.regex.Pattern.quote(String.valueOf(c)));
+            }
+        }
+        return regex.toString();
+    }
+}

@@ -1,0 +1,71 @@
+package simpview.compare;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * {@code simpview check}'s one table for a student: each picture found, the
+ * page it was matched to, PASS or FAIL, the share the verdict is on, and the
+ * worst region (the largest patch that differs even with slack), in aligned
+ * plain-text columns; then the pages asked for that no picture matched, and
+ * one line of counts.
+ */
+public final class StudentTable {
+
+    private static final String[] HEADINGS = {"picture", "page", "result", "share", "worst region"};
+
+    private StudentTable() {
+    }
+
+    public static String text(List<BatchRow> rows, List<Wanted> missing) {
+        List<String[]> lines = new ArrayList<>();
+        lines.add(HEADINGS);
+        for (BatchRow row : rows) {
+            if (row.result() == BatchRow.Result.SKIPPED) {
+                continue;
+            }
+            String worst;
+            if (!row.compared()) {
+                worst = row.note().lines().findFirst().orElse("");
+            } else if (row.regions().isEmpty()) {
+                worst = "none";
+            } else {
+                worst = row.regions().get(0).describe();
+            }
+            lines.add(new String[] {row.file(), GradescopeResults.name(row.target()), row.result().name(),
+                row.compared() ? Percent.of(row.verdict()) : "", worst});
+        }
+        int[] widths = new int[HEADINGS.length];
+        for (String[] line : lines) {
+            for (int c = 0; c < line.length; c++) {
+                widths[c] = Math.max(widths[c], line[c].length());
+            }
+        }
+        StringBuilder out = new StringBuilder();
+        for (String[] line : lines) {
+            StringBuilder one = new StringBuilder();
+            for (int c = 0; c < line.length; c++) {
+                String cell = c == 3 ? pad(line[c], widths[c], true) : pad(line[c], widths[c], false);
+                one.append(c == 0 ? "" : "  ").append(cell);
+            }
+            out.append(one.toString().stripTrailing()).append('\n');
+        }
+        long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
+        for (Wanted wanted : missing) {
+            out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
+                    .append(" found (name it like page3.png)\n");
+        }
+        long pass = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
+        long compared = rows.size() - skipped;
+        out.append(String.format(Locale.ROOT, "%d of %d pictures pass%s%s%n", pass, compared,
+                skipped == 0 ? "" : String.format(Locale.ROOT, "; %d other files matched no page", skipped),
+                missing.isEmpty() ? "" : String.format(Locale.ROOT, "; %d pages without a picture", missing.size())));
+        return out.toString();
+    }
+
+    private static String pad(String cell, int width, boolean right) {
+        String spaces = " ".repeat(width - cell.length());
+        return right ? spaces + cell : cell + spaces;
+    }
+}

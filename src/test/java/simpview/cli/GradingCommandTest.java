@@ -1,0 +1,155 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/** Grading from the command line: a rubric with alternates, the three result files, and {@code simpview check}. */
+class GradingCommandTest {
+
+    @TempDir
+    Path dir;
+
+    private static BufferedImage page(int number) throws Exception {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    /** The page with a 100x100 block of its panel painted cyan: about 2.4 % of the panel wrong. */
+    private static BufferedImage spoiled(int number) throws Exception {
+        BufferedImage image = page(number);
+        for (int y = 200; y < 300; y++) {
+            for (int x = 200; x < 300; x++) {
+                image.setRGB(x, y, 0x00FFFF);
+            }
+        }
+        return image;
+    }
+
+    private static Path png(Path file, BufferedImage image) throws Exception {
+        Files.createDirectories(file.getParent());
+        ImageIO.write(image, "png", file.toFile());
+        return file;
+    }
+
+    @Test
+    void aPictureMatchingAnAcceptedAlternatePasses() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("alice/page1.png"), spoiled(1));
+        png(subs.resolve("bob/page1.png"), spoiled(2)); // the wrong page: no alternate is like it
+        png(dir.resolve("alternates/page1-other-method.png"), spoiled(1));
+        png(dir.resolve("alternates/page2-alt.png"), spoiled(2)); // names page 2: not an alternate of page 1
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [{\"match\": \"1-2\", \"alternates\": \"alternates\"}]}");
+
+        CliRun without = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", dir.resolve("a").toString());
+        assertEquals(ExitCode.SCENE_ERROR, without.exitCode(), without.err());
+        assertTrue(without.out().contains("| alice/page1.png | 1 (seed 361) |") && without.out().contains("| FAIL |"), without.out());
+
+        CliRun with = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--rubric", rubric.toString(),
+                "--out-dir", dir.resolve("b").toString());
+        List<String> csv = Files.readAllLines(dir.resolve("b/compare.csv"));
+        assertTrue(csv.get(1).startsWith("alice/page1.png,1 (seed 361),100.00,"), csv.get(1));
+        assertTrue(csv.get(1).contains(",PASS,") && csv.get(1).contains("matched the accepted alternate page1-other-method.png"),
+                csv.get(1));
+        assertTrue(csv.get(2).startsWith("bob/page1.png,") && csv.get(2).contains(",FAIL,"), csv.get(2));
+        assertFalse(csv.get(2).contains("alternate"), "page2-alt.png names page 2: " + csv.get(2));
+        assertEquals(ExitCode.SCENE_ERROR, with.exitCode(), "bob still fails");
+    }
+
+    @Test
+    void aBatchWritesGradescopeJUnitAndHtmlAndABrokenFileStopsNothing() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page1.png"), page(1));
+        png(subs.resolve("page2.png"), spoiled(2));
+        Files.write(subs.resolve("page3.png"), new byte[] {1, 2, 3});
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"defaults\": {\"points\": 4, \"zero_share\": 90}}");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-4", "--rubric", rubric.toString(),
+                "--partial", "--gradescope", out.resolve("results.json").toString(), "--junit",
+                out.resolve("results.xml").toString(), "--html", out.resolve("report").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertFalse(run.showsStackTrace(), run.err());
+        assertTrue(run.err().contains("page3.png: ERROR"), run.err());
+        JsonObject results = JsonParser.parseString(Files.readString(out.resolve("results.json"))).getAsJsonObject();
+        assertEquals(4, results.getAsJsonArray("tests").size(), "pages 1, 2 and 3 found, page 4 missing");
+        double page2 = results.getAsJsonArray("tests").get(1).getAsJsonObject().get("score").getAsDouble();
+        assertTrue(page2 > 0 && page2 < 4, "partial: " + page2);
+        assertEquals(4 + page2, results.get("score").getAsDouble(), 1e-9);
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertTrue(xml.contains("<testsuite name=\"submission\" id=\"0\" tests=\"4\" failures=\"2\" errors=\"1\" skipped=\"0\">"), xml);
+        String html = Files.readString(out.resolve("report/index.html"));
+        assertEquals(4, html.split("<tr class=\"row ", -1).length - 1, "three pictures and the missing page");
+        assertTrue(Files.isRegularFile(out.resolve("report/diffs/page2-diff.png")), "the diffs beside the report");
+        assertTrue(html.contains("src=\"diffs/page2-diff.png\""), "linked relative to the page");
+    }
+
+    @Test
+    void diffsFailingWritesTheDiffsOfThoseThatDoNotPassOnly() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page1.png"), page(1));
+        png(subs.resolve("page2.png"), spoiled(2));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--diffs", "failing");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertFalse(Files.exists(out.resolve("diffs/page1-diff.png")), "page 1 passes");
+        assertTrue(Files.isRegularFile(out.resolve("diffs/page2-diff.png")));
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2",
+                "--out-dir", out.toString(), "--diffs", "some").exitCode());
+    }
+
+    @Test
+    void aBadRubricIsAUsageErrorNamingTheLine() throws Exception {
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\", \"deviation\": 5}\n]}");
+        Files.createDirectories(dir.resolve("subs"));
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1", "--rubric",
+                rubric.toString(), "--out-dir", dir.resolve("o").toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("compare.json: line 2, column"), run.err());
+        assertTrue(run.err().contains("is not a position deviation of 0, 1 or 2 pixels"), run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
+    @Test
+    void checkPrintsOneTableAndPassesOnlyWhenEveryPictureDoes() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        png(mine.resolve("Page_2.png"), spoiled(2));
+        Files.writeString(mine.resolve("readme.txt"), "not a picture");
+        CliRun run = CliRun.of("check", mine.toString(), "--pages", "1-3");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String[] lines = run.out().split("\n");
+        assertTrue(lines[0].matches("picture +page +result +share +worst region"), lines[0]);
+        assertTrue(lines[2].matches("Page_2\\.png +page 2 \\(seed 361\\) +FAIL +9[0-9]\\.[0-9]{2} % +x \\d+-\\d+, y \\d+-\\d+ .*"), lines[2]);
+        assertTrue(lines[1].matches("page1\\.png +page 1 \\(seed 361\\) +PASS +100\\.00 % +none"), lines[1]);
+        assertTrue(run.out().contains("no picture of page 3 (seed 361) found"), run.out());
+        assertTrue(run.out().contains("1 of 2 pictures pass"), run.out());
+
+        // The window's drop of a folder (issue 21) gives the same rows (it asks for all eight pages).
+        String[] window = simpview.window.instruments.FolderCheck.text(mine, PageContext.defaults()).split("\n");
+        assertEquals(List.of(lines[0], lines[1], lines[2]), List.of(window[0], window[1], window[2]));
+
+        Files.delete(mine.resolve("Page_2.png"));
+        CliRun good = CliRun.of("check", mine.toString(), "--pages", "1");
+        assertEquals(ExitCode.OK, good.exitCode(), good.out() + good.err());
+        assertTrue(good.out().contains("1 of 1 pictures pass"), good.out());
+
+        Path empty = Files.createDirectories(dir.resolve("empty"));
+        assertEquals(ExitCode.SCENE_ERROR, CliRun.of("check", empty.toString()).exitCode(), "nothing found is no pass");
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("check", mine.toString(), "--pages", "1", "--scene", "x.simp").exitCode());
+    }
+}

@@ -1,0 +1,175 @@
+package simpview.compare;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The rubric: each field changes a verdict or a score the way it says, and the file is read strictly. */
+class RubricTest {
+
+    @TempDir
+    Path dir;
+
+    private static final int[] STRIPES = GradingFixtures.stripes(0);
+    private static final RubricRule BASE = GradingFixtures.defaults();
+
+    private static RubricRule with(String json) throws Exception {
+        Path file = Files.createTempFile("rubric", ".json");
+        try {
+            Files.writeString(file, "{\"pages\": [" + json + "]}");
+            return Rubric.read(file, BASE).ruleFor("page4", 4);
+        } finally {
+            Files.delete(file);
+        }
+    }
+
+    private static Comparison compare(int[] theirs, RubricRule rule) {
+        return Comparison.of(STRIPES, theirs, rule.deviation(), rule.metric());
+    }
+
+    @Test
+    void toleranceDecidesWhetherAnEvenDifferencePasses() throws Exception {
+        int[] offByFive = GradingFixtures.nudged(STRIPES, 5);
+        assertTrue(BASE.passes(compare(offByFive, BASE)), "5/255 is within today's 8/255");
+        RubricRule strict = with("{\"match\": \"4\", \"tolerance\": 4}");
+        assertEquals(4, strict.tolerance());
+        assertFalse(strict.passes(compare(offByFive, strict)));
+    }
+
+    @Test
+    void deviationDecidesWhetherAOnePixelShiftPasses() throws Exception {
+        int[] shifted = GradingFixtures.stripes(1);
+        assertTrue(BASE.passes(compare(shifted, BASE)));
+        RubricRule exact = with("{\"match\": \"4\", \"deviation\": 0}");
+        assertFalse(exact.passes(compare(shifted, exact)));
+        RubricRule two = with("{\"match\": \"4\", \"deviation\": 2}");
+        assertTrue(two.passes(compare(GradingFixtures.stripes(2), two)));
+    }
+
+    @Test
+    void minShareAndMaxFailingPixelsEachDecide() throws Exception {
+        // 2 % of the panel (8,450 pixels) spoiled beyond any slack.
+        int[] spoiled = GradingFixtures.spoiled(STRIPES, 8_450);
+        assertEquals(8_450, compare(spoiled, BASE).failing(8));
+        assertFalse(BASE.passes(compare(spoiled, BASE)), "98 % < 99 %");
+        RubricRule lenient = with("{\"match\": \"4\", \"min_share\": 97.5}");
+        assertTrue(lenient.passes(compare(spoiled, lenient)));
+        RubricRule capped = with("{\"match\": \"4\", \"min_share\": 97.5, \"max_failing_pixels\": 8000}");
+        assertFalse(capped.passes(compare(spoiled, capped)), "8,450 failing pixels > 8,000");
+        RubricRule enough = with("{\"match\": \"4\", \"min_share\": 97.5, \"max_failing_pixels\": 8450}");
+        assertTrue(enough.passes(compare(spoiled, enough)));
+    }
+
+    @Test
+    void pointsAndPartialScoring() throws Exception {
+        RubricRule rule = with("{\"match\": \"4\", \"points\": 3, \"zero_share\": 90}");
+        assertEquals(3, rule.score(compare(STRIPES, rule), false), "a pass scores its points");
+        Comparison twoPercentOff = compare(GradingFixtures.spoiled(STRIPES, 8_450), rule);
+        assertEquals(0, rule.score(twoPercentOff, false), "all or nothing");
+        // 98 % is 8/9 of the way from 90 % to 99 %: 3 * 8/9 = 2.666..., rounded down to hundredths.
+        assertEquals(2.66, rule.score(twoPercentOff, true), 1e-9);
+        Comparison tenPercentOff = compare(GradingFixtures.spoiled(STRIPES, 42_250 + 1), rule);
+        assertEquals(0, rule.score(tenPercentOff, true), "at or below zero_share nothing");
+        RubricRule capped = with("{\"match\": \"4\", \"points\": 3, \"min_share\": 97, \"max_failing_pixels\": 4225}");
+        // Above min_share but twice the allowed pixels: half the points.
+        assertEquals(1.5, capped.score(twoPercentOff, true), 1e-9);
+    }
+
+    @Test
+    void theBlurMetricForgivesAnotherAntialiasingButNotAMissingLine() throws Exception {
+        // Bands 4 px white, 4 px black; each edge is one grey pixel of 128.
+        int[] ours = GradingFixtures.panel((x, row) -> switch (x % 8) {
+            case 0, 1, 2 -> 0xFFFFFF;
+            case 3, 7 -> 0x808080;
+            default -> 0;
+        });
+        // Another renderer's coverage: the edge pixels 24/255 lighter and darker by turns, row by row.
+        int[] theirs = GradingFixtures.panel((x, row) -> {
+            int rgb = ours[row * GradingFixtures.N + x];
+            if (rgb != 0x808080) {
+                return rgb;
+            }
+            int g = row % 2 == 0 ? 128 + 24 : 128 - 24;
+            return g << 16 | g << 8 | g;
+        });
+        RubricRule exact = BASE;
+        RubricRule blur = with("{\"match\": \"4\", \"metric\": \"blur\"}");
+        assertEquals(Comparison.Metric.BLUR, blur.metric());
+        Comparison exactly = Comparison.of(ours, theirs, exact.deviation(), exact.metric());
+        assertEquals(0.75, exactly.share(8, true), 0.002, "the edge columns, a quarter, are 24/255 off");
+        assertFalse(exact.passes(exactly));
+        assertTrue(blur.passes(Comparison.of(ours, theirs, blur.deviation(), blur.metric())));
+        // A missing white line is not another antialiasing: it still fails when blurred.
+        int[] line = GradingFixtures.panel((x, row) -> x % 16 == 5 ? 0xFFFFFF : 0);
+        int[] none = GradingFixtures.panel((x, row) -> 0);
+        assertFalse(blur.passes(Comparison.of(line, none, blur.deviation(), blur.metric())));
+    }
+
+    @Test
+    void theFirstMatchingRuleWinsAndDefaultsFillTheRest() throws Exception {
+        Files.createDirectories(dir.resolve("alt/page1"));
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, """
+                {
+                  "defaults": {"points": 2, "min_share": 98, "visibility": "after_due_date"},
+                  "pages": [
+                    {"match": "1", "alternates": "alt/page1", "deviation": 2},
+                    {"match": "1-3", "points": 5},
+                    {"match": "page*", "tolerance": 12},
+                    {"match": "tomsPage?", "metric": "blur", "visibility": "hidden"}
+                  ]
+                }
+                """);
+        Rubric rubric = Rubric.read(file, BASE);
+        RubricRule one = rubric.ruleFor("page1", 1);
+        assertEquals(2, one.deviation());
+        assertEquals(2, one.points(), "page 1's rule gives no points: the defaults' 2");
+        assertEquals(dir.resolve("alt/page1").toAbsolutePath(), one.alternates().toAbsolutePath());
+        assertEquals(5, rubric.ruleFor("page3", 3).points());
+        RubricRule pageC = rubric.ruleFor("pageC", 0);
+        assertEquals(12, pageC.tolerance());
+        assertEquals(98, pageC.minShare());
+        assertEquals("after_due_date", pageC.visibility());
+        assertEquals(Comparison.Metric.BLUR, rubric.ruleFor("tomsPageJ", 0).metric());
+        RubricRule other = rubric.ruleFor("house", 0);
+        assertEquals("*", other.match(), "no rule matches: the defaults");
+        assertEquals(8, other.tolerance(), "from the command line");
+        assertEquals(-1, other.maxFailing());
+        assertNull(other.alternates());
+    }
+
+    @Test
+    void badRubricsSayWhereAndWhat() throws Exception {
+        assertEquals("line 2, column 29 ($.pages[0].tolerence)", placeOf("{\"pages\": [\n  {\"match\": \"1\", \"tolerence\": 3}]}"));
+        CompareException deviation = bad("{\"pages\": [{\"match\": \"1\", \"deviation\": 3}]}");
+        assertTrue(deviation.getMessage().contains("3.0 is not a position deviation of 0, 1 or 2 pixels"), deviation.getMessage());
+        assertTrue(deviation.getMessage().contains("line 1, column"), deviation.getMessage());
+        assertTrue(bad("{\"pages\": [{\"tolerance\": 3}]}").getMessage().contains("has no \"match\""));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flip\"}]}").getMessage().contains("\"exact\" or \"blur\""));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"alternates\": \"nowhere\"}]}").getMessage().contains("no such folder"));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": \"3\"}]}").getMessage().contains("expected points, 0 or more, found string"));
+        assertTrue(bad("{\"pages\": [").getMessage().startsWith("rubric "), "cut short");
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"min_share\": 95, \"zero_share\": 96}]}").getMessage()
+                .contains("zero_share 96.0 above its min_share 95.0"));
+    }
+
+    private String placeOf(String json) throws Exception {
+        String message = bad(json).getMessage();
+        int colon = message.indexOf(": ", message.indexOf("compare.json"));
+        String rest = message.substring(colon + 2);
+        return rest.substring(0, rest.indexOf("): ") + 1);
+    }
+
+    private CompareException bad(String json) throws Exception {
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, json);
+        return assertThrows(CompareException.class, () -> Rubric.read(file, BASE));
+    }
+}
