@@ -31,7 +31,7 @@ class ArchitectureTest {
     private static final List<String> LAYERS = List.of(
             "geometry", "surface", "raster", "shading", "stage",
             "scene", "scene.text", "scene.obj", "scene.simp",
-            "pages", "compare",
+            "pages", "compare", "inspect",
             "window.render", "window.instruments", "window",
             "cli");
 

@@ -27,7 +27,7 @@ import simpview.pages.SceneList;
 @Command(name = "simpview",
         mixinStandardHelpOptions = true,
         version = ExitCode.VERSION,
-        subcommands = {RenderCommand.class, CompareCommand.class, CheckCommand.class},
+        subcommands = {RenderCommand.class, CompareCommand.class, CheckCommand.class, InspectCommand.class},
         description = {
             "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
             "Use 'simpview render' to write pages as PNG files without a window,",

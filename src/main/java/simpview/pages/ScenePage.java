@@ -38,6 +38,11 @@ public final class ScenePage implements Page {
         return title;
     }
 
+    /** The depth cue's near colour (far is black). */
+    public Rgb near() {
+        return near;
+    }
+
     public String fileName() {
         return fileName;
     }

@@ -124,6 +124,33 @@ public final class LitState implements PointShader {
         return kdB;
     }
 
+    public double ambientR() {
+        return ambientR;
+    }
+
+    public double ambientG() {
+        return ambientG;
+    }
+
+    public double ambientB() {
+        return ambientB;
+    }
+
+    /** The specular coefficient ks in force. */
+    public double ks() {
+        return ks;
+    }
+
+    /** The specular exponent p in force. */
+    public double p() {
+        return p;
+    }
+
+    /** The lights so far, in camera space (read only: the inspector's explanation). */
+    public Lights lights() {
+        return lights;
+    }
+
     public Fog fog() {
         return fog;
     }

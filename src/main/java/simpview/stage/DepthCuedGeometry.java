@@ -23,6 +23,8 @@ public final class DepthCuedGeometry implements GeometryStage {
     /** The same in panel space with colours, as the painter takes them. */
     private final double[] panel = new double[Painter.STRIDE];
     private long culled;
+    /** Told of the primitives culled (the inspector), or null. */
+    private PrimitiveTrace trace;
 
     public DepthCuedGeometry(PrimitiveSink sink) {
         this.sink = sink;
@@ -43,6 +45,9 @@ public final class DepthCuedGeometry implements GeometryStage {
         toCamera(ctm, xyz, count);
         if (VIEW.culls(camera, 3, count)) {
             culled++;
+            if (trace != null) {
+                trace.skipped(null, 0, kind, true, camera, 0, 3, count);
+            }
             return;
         }
         project(rgb, count);
@@ -73,6 +78,11 @@ public final class DepthCuedGeometry implements GeometryStage {
             panel[o + Vertex.G] = rgb == null ? 1 : rgb[i + 1];
             panel[o + Vertex.B] = rgb == null ? 1 : rgb[i + 2];
         }
+    }
+
+    /** From now on tells {@code follower} of every primitive culled (null: nobody). */
+    public void follow(PrimitiveTrace follower) {
+        trace = follower;
     }
 
     /** From now on primitives go to {@code to}. */

@@ -5,6 +5,7 @@ import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
 import simpview.raster.FragmentLayout;
+import simpview.raster.FragmentSink;
 import simpview.raster.LitLineRasterizer;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.FragmentStage;
@@ -54,6 +55,8 @@ public final class LitGeometry implements GeometryStage {
 
     private final LitState state;
     private final FragmentStage fragments;
+    /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
+    private FragmentSink raster;
     private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
     private final LitLineRasterizer lines = new LitLineRasterizer();
     private final Clipper clipper = new Clipper(CAMERA_STRIDE);
@@ -61,6 +64,8 @@ public final class LitGeometry implements GeometryStage {
     private boolean[] ownNormal = new boolean[8];
     private double[] screen = new double[(FragmentLayout.stride(FragmentLayout.PHONG_CHANNELS)) * 16];
     private final double[] lit = new double[3];
+    /** An obj face's vertices as written, for a trace that wants them. */
+    private double[] written = new double[3 * 8];
     /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
     private double faceNx;
     private double faceNy;
@@ -90,6 +95,16 @@ public final class LitGeometry implements GeometryStage {
     public LitGeometry(LitState state, FragmentStage fragments) {
         this.state = state;
         this.fragments = fragments;
+        this.raster = fragments;
+    }
+
+    /**
+     * From now on the rasterizers hand their fragments to {@code sink}, which
+     * passes each on to this stage's fragment stage (the inspector's one-pixel
+     * watch); null: straight to the fragment stage again, the default.
+     */
+    public void fragmentsThrough(FragmentSink sink) {
+        raster = sink == null ? fragments : sink;
     }
 
     /**
@@ -111,9 +126,12 @@ public final class LitGeometry implements GeometryStage {
         }
         if (state.camera().culls(cam, CAMERA_STRIDE, 2)) {
             culled++;
+            skipped(Painter.LINE, true, 2);
             return;
         }
-        if (clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+        if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+            skipped(Painter.LINE, false, 2);
+        } else {
             fragments.colours(state.fog());
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
@@ -123,7 +141,7 @@ public final class LitGeometry implements GeometryStage {
                     return;
                 }
                 lines.draw(screen, 0, FragmentLayout.stride(FragmentLayout.COLOUR_CHANNELS), FragmentLayout.COLOUR_CHANNELS,
-                        fragments.width(), fragments.height(), fragments);
+                        fragments.width(), fragments.height(), raster);
             }
         }
     }
@@ -168,6 +186,17 @@ public final class LitGeometry implements GeometryStage {
                 normal(k, f.nx(k), f.ny(k), f.nz(k));
             }
         }
+        if (trace != null && trace.wantsSource()) {
+            if (written.length < 3 * n) {
+                written = new double[6 * n];
+            }
+            for (int k = 0; k < n; k++) {
+                written[3 * k] = f.x(k);
+                written[3 * k + 1] = f.y(k);
+                written[3 * k + 2] = f.z(k);
+            }
+            trace.source(objCtm, written, n);
+        }
         face(n, objWire);
     }
 
@@ -176,12 +205,14 @@ public final class LitGeometry implements GeometryStage {
         Camera camera = state.camera();
         if (camera.culls(cam, CAMERA_STRIDE, n)) {
             culled++;
+            skipped(wire ? Painter.WIRE : Painter.FILLED, true, n);
             return;
         }
         faceNormals(n);
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
+            skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
         int m = project(clipper.vertices(), kept, channels);
@@ -200,13 +231,13 @@ public final class LitGeometry implements GeometryStage {
         int width = fragments.width();
         int height = fragments.height();
         if (!wire) {
-            fill.fill(screen, kept, channels, width, height, fragments);
+            fill.fill(screen, kept, channels, width, height, raster);
             return;
         }
         fragments.colours(state.fog());
         int stride = FragmentLayout.stride(channels);
         for (int k = 0; k < kept; k++) {
-            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, fragments);
+            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
     }
 
@@ -440,6 +471,13 @@ public final class LitGeometry implements GeometryStage {
         int index = traced++;
         trace.read(index, sourceFile, sourceLine, kind, screen, 0, FragmentLayout.stride(channels), n);
         return trace.drawing(index);
+    }
+
+    /** Tells the trace, if any, of a primitive culled or clipped away, with its n camera-space vertices. */
+    private void skipped(int kind, boolean wasCulled, int n) {
+        if (trace != null) {
+            trace.skipped(sourceFile, sourceLine, kind, wasCulled, cam, 0, CAMERA_STRIDE, n);
+        }
     }
 
     @Override

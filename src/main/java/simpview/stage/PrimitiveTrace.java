@@ -32,6 +32,33 @@ public interface PrimitiveTrace {
     boolean drawing(int index);
 
     /**
+     * A primitive that reaches no rasterizer: culled whole ({@code culled}),
+     * or clipped away entirely. It takes no number. Its vertices are given in
+     * camera space (x, y, z first in each; world space for a depth-cued
+     * scene), before clipping. The default ignores it.
+     *
+     * @param file the file holding its command, or null when the stage does not know it (depth-cued scenes)
+     * @param line its 1-based line, or 0 with a null file
+     */
+    default void skipped(Path file, int line, int kind, boolean culled, double[] p, int at, int stride,
+            int vertices) {
+    }
+
+    /** True for a trace that wants each primitive's {@link #source}; the default does not, and costs nothing. */
+    default boolean wantsSource() {
+        return false;
+    }
+
+    /**
+     * The next primitive as its command wrote it: its vertices in object
+     * space (x, y, z each; read, never kept) and the CTM at its command.
+     * Told before the primitive is culled, skipped or read, and only to a
+     * trace that {@link #wantsSource}.
+     */
+    default void source(simpview.geometry.Matrix4 ctm, double[] xyz, int vertices) {
+    }
+
+    /**
      * The scene is drawn again from the start (it turned out lit after it
      * had drawn depth-cued): forget every primitive told so far; numbering
      * starts at 0 again.

@@ -5,6 +5,7 @@ import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.DepthPicture;
 import simpview.window.instruments.FolderCheck;
 import simpview.window.instruments.Inspector;
+import simpview.window.instruments.InspectorPanel;
 import simpview.window.render.BackgroundRenderer;
 import simpview.window.render.DrawSettings;
 import simpview.window.render.PageFacts;
@@ -76,6 +77,12 @@ public final class SimpviewWindow {
     private boolean turnWaiting;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say);
+    // the pixel's history, explanation and vertices (issue 20)
+    private final InspectorPanel inspectorPanel = new InspectorPanel();
+    private boolean overdrawShown;
+    private boolean backFacesShown;
+    private int backFaces = -1;
+    private int overdrawMax = -1;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -106,6 +113,7 @@ public final class SimpviewWindow {
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
+        frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
         frame.setResizable(true);
         // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
         frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
@@ -122,6 +130,7 @@ public final class SimpviewWindow {
             public void windowClosed(WindowEvent e) {
                 watcher.stop();
                 renderer.shutdown();
+                inspectorPanel.shutdown();
             }
         });
         frame.pack();
@@ -207,6 +216,16 @@ public final class SimpviewWindow {
         bind("step on ten", () -> step(10), "shift CLOSE_BRACKET");
         bind("step back ten", () -> step(-10), "shift OPEN_BRACKET");
         bind("step off", this::stepOff, "BACK_SLASH");
+        bind("step on hundred", () -> step(100), "ctrl CLOSE_BRACKET");
+        bind("step back hundred", () -> step(-100), "ctrl OPEN_BRACKET");
+        bind("step on thousand", () -> step(1000), "ctrl shift CLOSE_BRACKET");
+        bind("step back thousand", () -> step(-1000), "ctrl shift OPEN_BRACKET");
+        bind("step to the pixel's primitive", this::stepToOwner, "J");
+        bind("go to primitive", this::goToPrimitive, "G");
+        bind("inspector panel", this::toggleInspectorPanel, "I");
+        bind("overdraw", () -> toggleOverdraw(false), "V");
+        bind("depth-test failures", () -> toggleOverdraw(true), "shift V");
+        bind("back faces", this::toggleBackFaces, "K");
         bind("unturn", this::unturn, "O");
         int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
@@ -247,6 +266,157 @@ public final class SimpviewWindow {
         }
         pageView.pin(pinnedX, pinnedY);
         inspect();
+        refreshPanel();
+    }
+
+    /** Shows or hides the side panel of the pinned pixel's history (I). */
+    private void toggleInspectorPanel() {
+        boolean shownNow = inspectorPanel.toggle();
+        frame.getContentPane().validate();
+        if (shownNow) {
+            refreshPanel();
+        }
+    }
+
+    /** The side panel, when shown: the pinned pixel's history in the view on screen, replayed. */
+    private void refreshPanel() {
+        if (!inspectorPanel.isShown()) {
+            return;
+        }
+        if (pinnedX < 0 || shown == null) {
+            inspectorPanel.say("Pin a pixel (P) to see every write it received, how its colour was made, and its "
+                    + "primitive's vertices.");
+            return;
+        }
+        int x = pinnedX - simpview.surface.PageCanvas.MARGIN;
+        int y = simpview.surface.PageCanvas.MARGIN + simpview.surface.PageCanvas.PANEL - 1 - pinnedY;
+        if (x < 0 || y < 0 || x >= simpview.surface.PageCanvas.PANEL || y >= simpview.surface.PageCanvas.PANEL) {
+            inspectorPanel.say("The pinned pixel is in the margin: nothing is drawn there.");
+            return;
+        }
+        simpview.inspect.InspectedScene scene = inspectedScene(inspectorPanel::say);
+        if (scene == null) {
+            return;
+        }
+        String note = orbit.turned() || settings.stepLimit() >= 0
+                ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
+                : null;
+        inspectorPanel.inspect(scene, x, y, note);
+    }
+
+    /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
+    private simpview.inspect.InspectedScene inspectedScene(java.util.function.Consumer<String> why) {
+        try {
+            View view = shown.view();
+            if (view instanceof View.OfScene s) {
+                return simpview.inspect.InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
+            }
+            int number = ((View.OfPage) view).number();
+            return simpview.inspect.InspectedScene.page(number, options.pageContext())
+                    .withOwnColours(settings.ownColours());
+        } catch (IllegalArgumentException | simpview.scene.SceneException e) {
+            why.accept(e.getMessage());
+            return null;
+        }
+    }
+
+    /**
+     * The overdraw overlay (V): each pixel by how many writes reached its
+     * depth test, with its scale; or (Shift+V) by how many of them lost it.
+     * Again: the page.
+     */
+    private void toggleOverdraw(boolean failures) {
+        if (overdrawShown) {
+            overdrawShown = false;
+            showPicture();
+            return;
+        }
+        if (shown == null) {
+            return;
+        }
+        simpview.inspect.InspectedScene scene = inspectedScene(status::say);
+        if (scene == null) {
+            return;
+        }
+        RenderedView of = shown;
+        status.say("Counting the writes of every pixel ...");
+        inspectorPanel.overdraw(scene, counts -> {
+            if (shown != of || counts == null) {
+                status.say(counts == null ? "The overdraw could not be counted: the scene has an error." : "");
+                return;
+            }
+            int[] shownCounts = failures ? counts.failed() : counts.reached();
+            overdrawShown = true;
+            overdrawMax = simpview.inspect.Overdraw.max(shownCounts);
+            pageView.show(failures
+                    ? simpview.window.instruments.OverdrawPicture.of(shownCounts,
+                            "depth-test failures: writes that lost each pixel's depth test")
+                    : simpview.window.instruments.OverdrawPicture.of(shownCounts), null, true);
+            status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost writes at a pixel"
+                    : "Overdraw: up to " + overdrawMax + " writes at a pixel")
+                    + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
+        });
+    }
+
+    /** The back-face overlay (K): pixels of clockwise polygons tinted magenta; again: the page. */
+    private void toggleBackFaces() {
+        if (backFacesShown) {
+            showPicture();
+            return;
+        }
+        if (shown == null) {
+            return;
+        }
+        simpview.window.instruments.BackFacePicture.Tinted tinted =
+                simpview.window.instruments.BackFacePicture.of(shown.image(), shown.facts());
+        if (tinted == null) {
+            status.say("Who drew each pixel was not recorded for this picture: no back faces to show.");
+            return;
+        }
+        showPicture();
+        backFacesShown = true;
+        backFaces = tinted.backFacing();
+        pageView.show(tinted.image(), null, true);
+        status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
+                + " polygons are clockwise on the panel · K: the page again");
+    }
+
+    /** Steps the drawing up to the primitive that drew the pixel under the pointer (or the pinned one). */
+    private void stepToOwner() {
+        int x = pinnedX >= 0 ? pinnedX : hoverX;
+        int y = pinnedX >= 0 ? pinnedY : hoverY;
+        int owner = Inspector.ownerAt(shown, x, y);
+        if (owner < 0) {
+            status.say("No primitive drew the pixel under the pointer: nothing to step to.");
+            return;
+        }
+        settings = settings.withStepLimit(owner + 1);
+        reload();
+    }
+
+    /** Asks for a primitive number and steps the drawing to it (G). */
+    private void goToPrimitive() {
+        if (!isScene(requested()) || shown == null) {
+            status.say("Stepping through the drawing works on scenes: pages 4–8 and opened scenes.");
+            return;
+        }
+        int total = shown.facts().primitives().size();
+        String answer = javax.swing.JOptionPane.showInputDialog(frame, "Go to primitive (1 to " + total + "):",
+                "simpview", javax.swing.JOptionPane.QUESTION_MESSAGE);
+        if (answer == null) {
+            return;
+        }
+        try {
+            int n = Integer.parseInt(answer.strip());
+            if (n < 1 || n > total) {
+                status.say("There is no primitive " + n + ": this picture has 1 to " + total + ".");
+                return;
+            }
+            settings = settings.withStepLimit(n);
+            reload();
+        } catch (NumberFormatException e) {
+            status.say("'" + answer + "' is not a primitive number.");
+        }
     }
 
     /** Puts the inspector's line on the clipboard. */
@@ -354,6 +524,8 @@ public final class SimpviewWindow {
 
     /** Shows the picture, or its depths, of the finished view. */
     private void showPicture() {
+        overdrawShown = false;
+        backFacesShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
             pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
@@ -533,6 +705,7 @@ public final class SimpviewWindow {
             return;
         }
         shown = result;
+        overdrawShown = false;
         showPicture();
         frame.setTitle(result.title());
         watcher.watch(result.facts().files(), job.stampsAsRead());
@@ -542,6 +715,7 @@ public final class SimpviewWindow {
             status.say(orbit.describe());
         }
         showStep(result);
+        refreshPanel();
         comparison.viewShown(result); // compare (issue 15)
         if (turnWaiting) {
             reload();
@@ -595,6 +769,20 @@ public final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    InspectorPanel inspectorPanel() {
+        return inspectorPanel;
+    }
+
+    /** How many polygons the back-face overlay tints while it is shown, else -1. */
+    int backFacesShownCount() {
+        return backFacesShown ? backFaces : -1;
+    }
+
+    /** The overdraw overlay's largest count while it is shown, else -1. */
+    int overdrawShownMax() {
+        return overdrawShown ? overdrawMax : -1;
     }
 
     // compare (issue 15)

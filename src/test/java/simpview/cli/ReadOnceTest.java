@@ -42,7 +42,8 @@ class ReadOnceTest {
                 "camera -1 -1 1 1 -1 -100", "ambient 1 1 1", "file \"middle\"", "obj \"model\"", "obj model", ""));
         Path out = dir.resolve("top.png");
         Path log = dir.resolve("strace.log");
-        List<String> command = new ArrayList<>(List.of(STRACE.toString(), "-f", "-qq", "-e", "trace=open,openat",
+        // -ff: a log per thread, so that no call is split over two lines by another thread's.
+        List<String> command = new ArrayList<>(List.of(STRACE.toString(), "-ff", "-qq", "-e", "trace=open,openat",
                 "-o", log.toString(), javaCommand(), "-Xmx256m", "-cp", System.getProperty("java.class.path"),
                 Main.class.getName(), "render", "--scene", top.toString(), "--out", out.toString()));
         Process render = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
@@ -50,7 +51,7 @@ class ReadOnceTest {
         assertTrue(render.waitFor(60, TimeUnit.SECONDS), "render under strace ended");
         assertEquals(0, render.exitValue(), Files.readString(dir.resolve("render.out")));
         assertTrue(Files.size(out) > 0);
-        Map<Path, Integer> opens = successfulOpens(log);
+        Map<Path, Integer> opens = successfulOpens(dir, log.getFileName().toString());
         for (Path file : List.of(top, middle, leaf, model)) {
             assertEquals(1, opens.getOrDefault(file.toRealPath(), 0),
                     file.getFileName() + " opened once (leaf.simp is included twice, model.obj drawn twice)");
@@ -61,14 +62,25 @@ class ReadOnceTest {
         return Path.of(System.getProperty("java.home"), "bin", "java").toString();
     }
 
-    /** How often each path was opened successfully, from strace's lines {@code openat(AT_FDCWD, "/p", ...) = 3}. */
-    private static Map<Path, Integer> successfulOpens(Path log) throws IOException {
+    /**
+     * How often each path was opened successfully, from the lines
+     * {@code openat(AT_FDCWD, "/p", ...) = 3} of every thread's log
+     * ({@code log.PID}).
+     */
+    private static Map<Path, Integer> successfulOpens(Path dir, String log) throws IOException {
         Pattern open = Pattern.compile("open(?:at)?\\((?:[^,]*, )?\"([^\"]+)\".*\\) = (-?\\d+)");
         Map<Path, Integer> counts = new HashMap<>();
-        for (String line : Files.readAllLines(log)) {
-            Matcher m = open.matcher(line);
-            if (m.find() && Integer.parseInt(m.group(2)) >= 0) {
-                counts.merge(Path.of(m.group(1)).normalize(), 1, Integer::sum);
+        List<Path> logs;
+        try (var files = Files.list(dir)) {
+            logs = files.filter(f -> f.getFileName().toString().startsWith(log + ".")).toList();
+        }
+        assertTrue(!logs.isEmpty(), "strace wrote its logs");
+        for (Path threadLog : logs) {
+            for (String line : Files.readAllLines(threadLog)) {
+                Matcher m = open.matcher(line);
+                if (m.find() && Integer.parseInt(m.group(2)) >= 0) {
+                    counts.merge(Path.of(m.group(1)).normalize(), 1, Integer::sum);
+                }
             }
         }
         return counts;

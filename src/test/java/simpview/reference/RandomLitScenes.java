@@ -17,7 +17,7 @@ import java.util.Random;
  * without normals (w, colours, every face reference form, negative indices).
  * Every scene is valid by SPEC.
  */
-final class RandomLitScenes {
+public final class RandomLitScenes {
 
     private final Random random;
     private final List<String> lines = new ArrayList<>();
@@ -29,7 +29,7 @@ final class RandomLitScenes {
     }
 
     /** Writes randomN.simp (and the cube and models it uses) into dir; returns the scene. */
-    static Path write(Path dir, long seed) throws IOException {
+    public static Path write(Path dir, long seed) throws IOException {
         writeParts(dir);
         Path scene = dir.resolve("random" + seed + ".simp");
         Files.writeString(scene, new RandomLitScenes(seed).scene());

@@ -51,17 +51,27 @@ final class DepthCuedRules implements RuleSet {
         this.trace = trace;
         this.turn = turn;
         painter.follow(trace);
+        geometry.follow(trace);
         sendTo(painter);
     }
 
     @Override
     public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        source(ctm, xyz, 2);
         geometry.line(viewed(ctm), xyz, rgb);
     }
 
     @Override
     public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        source(ctm, xyz, 3);
         geometry.polygon(viewed(ctm), xyz, rgb, wire);
+    }
+
+    /** Tells a trace that wants them the primitive's vertices as written and the CTM (as turned for the view). */
+    private void source(Matrix4 ctm, double[] xyz, int vertices) {
+        if (trace != null && trace.wantsSource()) {
+            trace.source(viewed(ctm), xyz, vertices);
+        }
     }
 
     @Override

@@ -340,6 +340,18 @@ final class FileStack implements AutoCloseable {
         return readers.size();
     }
 
+    /**
+     * Where the command being carried out stands, with every {@code file}
+     * command that led to it: the top file's line first, the innermost last.
+     */
+    java.util.List<SourcePlace> chain() {
+        java.util.List<SourcePlace> chain = new ArrayList<>(readers.size());
+        for (SimpReader r : readers) {
+            chain.add(new SourcePlace(r.file(), r.lineNumber()));
+        }
+        return chain;
+    }
+
     /** How many of the readers hold an open file now (for tests). */
     int openFiles() {
         int open = 0;

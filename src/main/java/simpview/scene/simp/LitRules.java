@@ -33,6 +33,7 @@ final class LitRules implements RuleSet {
     private final Set<Path> modelsRead = new HashSet<>();
     private final FileStack files;
     private final boolean traced;
+    private final PrimitiveTrace trace;
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
     private String cameraAt;
     private String firstPrimitiveAt;
@@ -50,6 +51,7 @@ final class LitRules implements RuleSet {
         this.models = models;
         this.files = files;
         this.traced = trace != null;
+        this.trace = trace;
         geometry.follow(trace);
         state.turnView(turn);
     }
@@ -57,13 +59,27 @@ final class LitRules implements RuleSet {
     @Override
     public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
         primitive();
+        source(ctm, xyz, 2);
         geometry.line(ctm, xyz, rgb);
     }
 
     @Override
     public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
         primitive();
+        source(ctm, xyz, 3);
         geometry.polygon(ctm, xyz, rgb, wire);
+    }
+
+    /** Tells a trace that wants them the primitive's vertices as written and the CTM. */
+    private void source(Matrix4 ctm, double[] xyz, int vertices) {
+        if (trace != null && trace.wantsSource()) {
+            trace.source(ctm, xyz, vertices);
+        }
+    }
+
+    /** The rasterizers' fragments go through {@code sink} on their way to the fragment stage (the inspector's probe). */
+    void fragmentsThrough(simpview.raster.FragmentSink sink) {
+        geometry.fragmentsThrough(sink);
     }
 
     @Override

@@ -67,4 +67,9 @@ public interface SceneMonitor {
      */
     default void shownCentre(double[] xyz) {
     }
+
+    /** The inspector's replay: what it sets into the drawing (see {@link DrawingWatch}); null, the default, for none. */
+    default DrawingWatch watch() {
+        return null;
+    }
 }

@@ -176,7 +176,7 @@ public final class ScenePipeline {
      */
     private static void run(SimpClient client, SceneMonitor monitor, Path file) throws SceneException {
         try {
-            new SimpInterpreter(client, monitor).run(file);
+            interpreter(client, monitor).run(file);
         } finally {
             client.flush();
         }
@@ -184,9 +184,15 @@ public final class ScenePipeline {
 
     /** A client that draws depth-cued until the scene's first lit command (what then depends on the options). */
     private static SimpClient depthCuedFirst(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
-        Drawable panel = options.ownColours() ? canvas.depthTested() : canvas.depthCued(options.near(), options.far());
+        DrawingWatch watch = monitor.watch();
+        Drawable panel = watch != null ? watch.depthCued(canvas, options.near(), options.far(), options.ownColours())
+                : options.ownColours() ? canvas.depthTested() : canvas.depthCued(options.near(), options.far());
         DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
-        cued.drawWith(canvas.drawingThreads(), panel, canvas.provenance());
+        if (watch != null) {
+            watch.began(files::chain, null); // and drawn on this thread alone: the watch sees each write as it is made
+        } else {
+            cued.drawWith(canvas.drawingThreads(), panel, canvas.provenance());
+        }
         SimpClient.OnLit onLit = switch (options.rules()) {
             case BY_COMMANDS, LIT -> SimpClient.OnLit.TURN_LIT;
             case DEPTH_CUED -> SimpClient.OnLit.IGNORE;
@@ -208,7 +214,14 @@ public final class ScenePipeline {
         Drawable panel = canvas.litPanel();
         FragmentStage fragments = new FragmentStage(canvas.zbuffer(), panel);
         LitRules lit = new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
-        lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
+        DrawingWatch watch = monitor.watch();
+        if (watch != null) {
+            // Drawn on this thread alone: the watch sees each fragment as the rasterizers make it.
+            lit.fragmentsThrough(watch.fragments(fragments));
+            watch.began(files::chain, lit.state());
+        } else {
+            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
+        }
         return lit;
     }
 
@@ -238,6 +251,16 @@ public final class ScenePipeline {
             monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
         }
+    }
+
+    /**
+     * The reading loop; a watched scene (the inspector's replay) reads and
+     * draws on this thread alone, so each primitive is drawn while its command
+     * is being carried out, where the file stack can say where it stands.
+     */
+    private static SimpInterpreter interpreter(SimpClient client, SceneMonitor monitor) {
+        return monitor.watch() != null ? SimpInterpreter.onOneThread(client, monitor)
+                : new SimpInterpreter(client, monitor);
     }
 
     private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor) {

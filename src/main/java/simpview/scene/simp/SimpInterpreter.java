@@ -34,6 +34,15 @@ public final class SimpInterpreter {
         this(client, monitor, READ_AHEAD_FROM);
     }
 
+    /**
+     * An interpreter that reads and draws on the calling thread only, however
+     * big the scene: each primitive is drawn while its command is being
+     * carried out (the inspector's replay asks the file stack where it stands).
+     */
+    public static SimpInterpreter onOneThread(SimpClient client, SceneMonitor monitor) {
+        return new SimpInterpreter(client, monitor, Long.MAX_VALUE);
+    }
+
     /** @param readAheadFrom top-file size from which to read on a second thread; Long.MAX_VALUE never */
     SimpInterpreter(SimpClient client, SceneMonitor monitor, long readAheadFrom) {
         this.client = client;

@@ -96,6 +96,14 @@ public final class Inspector {
         return s.equals("-0") ? "0" : s;
     }
 
+    /** The primitive (0, 1, ...) that drew image pixel (ix, iy) of the view, or -1 for none or not recorded. */
+    public static int ownerAt(RenderedView view, int ix, int iy) {
+        if (view == null || view.facts().owners() == null || !inPanel(ix, iy)) {
+            return -1;
+        }
+        return view.facts().owners()[panelY(iy) * PageCanvas.PANEL + panelX(ix)];
+    }
+
     /**
      * The projected outline, in image coordinates, of the primitive that drew
      * image pixel (ix, iy): what the magnifier draws over the pixels so the

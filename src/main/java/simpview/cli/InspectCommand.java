@@ -1,0 +1,161 @@
+package simpview.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import simpview.inspect.HistoryEntry;
+import simpview.inspect.InspectedScene;
+import simpview.inspect.PixelInspector;
+import simpview.inspect.PixelReport;
+import simpview.scene.SceneException;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+
+/** {@code simpview inspect ...}: why a pixel is the colour it is, as text or JSON. */
+@Command(name = "inspect",
+        mixinStandardHelpOptions = true,
+        version = ExitCode.VERSION,
+        description = {"Explains one pixel of a page or scene: every write attempted at it in drawing order "
+                + "(primitive, include chain, depth, colour, what became of it), how its colour was made, "
+                + "and the vertices of the primitive that drew it through every space.",
+            "X,Y are panel coordinates: x right, y up from the panel's bottom-left pixel, 0 to 649."},
+        footer = {"", "Examples:",
+            "  simpview inspect --page 7 --simp-dir course/ --at 325,325",
+            "  simpview inspect --scene ../shared/course-simp-a4/page-d.simp --at 300,280 --explain",
+            "  simpview inspect --scene pageI.simp --at 320,300 --history --json"},
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {"0:success", "1:scene error", "2:usage error (a pixel outside the panel, too)"})
+final class InspectCommand implements Callable<Integer> {
+
+    static final class What {
+        @Option(names = "--page", paramLabel = "N", required = true, description = "page 4 to 8 (the scene pages)")
+        Integer page;
+
+        @Option(names = "--scene", paramLabel = "F.simp", required = true,
+                description = "any scene, drawn as render --scene draws it: lit by its own rules, or depth-cued")
+        Path scene;
+    }
+
+    @Spec
+    private CommandSpec spec;
+
+    @picocli.CommandLine.ParentCommand
+    private SimpviewCommand parent;
+
+    @ArgGroup(exclusive = true, multiplicity = "1")
+    private What what;
+
+    @Option(names = "--at", paramLabel = "X,Y", required = true, description = "the pixel, in panel coordinates")
+    private String at;
+
+    @Option(names = "--history", description = "every write attempted at the pixel, in drawing order")
+    private boolean history;
+
+    @Option(names = "--explain", description = "how the pixel's colour was made, term by term")
+    private boolean explain;
+
+    @Option(names = "--vertices", description = "the vertices of the primitive that drew the pixel, through every space")
+    private boolean vertices;
+
+    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner")
+    private Integer primitive;
+
+    @Option(names = "--json", description = "one JSON object instead of text")
+    private boolean json;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages (pages 4 to 8 do not use it)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp")
+    private Path simpDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "--scene, depth-cued: colour at z = 0 (default 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "--scene, depth-cued: colour at z = -200 (default 0,0,0)")
+    private Rgb far;
+
+    @Override
+    public Integer call() {
+        int[] xy = pixel();
+        usage(primitive == null || vertices, "--primitive goes with --vertices");
+        usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
+        usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
+        boolean all = !history && !explain && !vertices;
+        try {
+            InspectedScene scene;
+            if (what.page != null) {
+                try {
+                    scene = InspectedScene.page(what.page, PageDrawing.context(parent.ownScenes(), seed, simpDir,
+                            PageDrawing.warningsTo(err())));
+                } catch (IllegalArgumentException e) {
+                    throw new ParameterException(spec.commandLine(), e.getMessage());
+                }
+            } else {
+                scene = near == null && far == null ? InspectedScene.of(what.scene)
+                        : InspectedScene.cued(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
+            }
+            PixelInspector inspector = new PixelInspector(new simpview.scene.obj.ObjLibrary(),
+                    PageDrawing.warningsTo(err()));
+            usage(primitive == null || primitive >= 1, "--primitive counts from 1, as the window's stepping does");
+            int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;
+            PixelReport report = inspector.inspect(scene, xy[0], xy[1], wanted);
+            if (!report.drawn()) {
+                throw new UsageProblem("--near-color and --far-color are for depth-cued scenes, and "
+                        + what.scene.getFileName() + " is lit (" + report.litBecause() + ")");
+            }
+            int table = HistoryEntry.NO_NUMBER;
+            if (vertices || all) {
+                HistoryEntry owner = report.lastWritten();
+                table = primitive != null ? wanted : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
+            }
+            PrintWriter out = spec.commandLine().getOut();
+            if (json) {
+                out.println(report.json(history || all, explain || all, table));
+            } else {
+                out.print(report.text(history || all, explain || all, table));
+            }
+            out.flush();
+            return ExitCode.OK;
+        } catch (SceneException e) {
+            err().println(e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+    }
+
+    /** X,Y from --at, inside the panel. */
+    private int[] pixel() {
+        String[] parts = at.split(",", -1);
+        int[] xy = new int[2];
+        usage(parts.length == 2, "--at takes X,Y (two whole numbers, panel coordinates), not '" + at + "'");
+        for (int k = 0; k < 2; k++) {
+            try {
+                xy[k] = Integer.parseInt(parts[k].strip());
+            } catch (NumberFormatException e) {
+                usage(false, "--at takes X,Y (two whole numbers, panel coordinates), not '" + at + "'");
+            }
+        }
+        int last = PageCanvas.PANEL - 1;
+        usage(xy[0] >= 0 && xy[0] <= last && xy[1] >= 0 && xy[1] <= last, "--at " + at
+                + " is outside the panel: x and y are 0 to " + last + ", from the panel's bottom-left pixel, y up");
+        return xy;
+    }
+
+    private void usage(boolean fine, String message) {
+        if (!fine) {
+            throw new ParameterException(spec.commandLine(), message);
+        }
+    }
+
+    private PrintWriter err() {
+        return spec.commandLine().getErr();
+    }
+}

@@ -1,0 +1,74 @@
+package simpview.inspect;
+
+import java.util.List;
+import simpview.scene.simp.SourcePlace;
+
+/**
+ * One write attempted at the inspected pixel, in drawing order: which
+ * primitive made it and where its command stands, the depth and colour it
+ * came with, and what became of it. Filled in while the scene is replayed,
+ * then only read.
+ */
+public final class HistoryEntry {
+
+    /** Primitive numbers are those of the window's stepping; a primitive culled or clipped away has none. */
+    public static final int NO_NUMBER = -1;
+
+    int primitive;
+    List<SourcePlace> chain;
+    int kind;
+    double z = Double.NaN;
+    /** The colour it came with (depth-cued scenes: the colour the cue gives it), 0xAARRGGBB; 0 when it has none. */
+    int argb;
+    Outcome outcome;
+    /** For a write that lost the depth test: the depth there and the primitive that put it there. */
+    double storedDepth = Double.NaN;
+    int storedOwner = NO_NUMBER;
+    /** The colour as the drawing code computed it, term by term; null where there is nothing to explain. */
+    Terms explanation;
+
+    HistoryEntry(int primitive, List<SourcePlace> chain, int kind, Outcome outcome) {
+        this.primitive = primitive;
+        this.chain = chain;
+        this.kind = kind;
+        this.outcome = outcome;
+    }
+
+    public int primitive() {
+        return primitive;
+    }
+
+    /** The include chain: the top file's line first, the command's own line last (an .obj face's after its obj command). */
+    public List<SourcePlace> chain() {
+        return chain;
+    }
+
+    /** {@link simpview.stage.Painter#LINE}, {@code FILLED} or {@code WIRE}. */
+    public int kind() {
+        return kind;
+    }
+
+    public double z() {
+        return z;
+    }
+
+    public int argb() {
+        return argb;
+    }
+
+    public Outcome outcome() {
+        return outcome;
+    }
+
+    public double storedDepth() {
+        return storedDepth;
+    }
+
+    public int storedOwner() {
+        return storedOwner;
+    }
+
+    public Terms explanation() {
+        return explanation;
+    }
+}

@@ -1,0 +1,149 @@
+package simpview.inspect;
+
+import java.util.ArrayList;
+import java.util.List;
+import simpview.stage.Painter;
+import simpview.shading.Fog;
+import simpview.raster.FragmentLayout;
+import simpview.shading.LitState;
+import simpview.surface.Colors;
+
+/**
+ * The colour of a lit fragment, made by the same code as the fragment stage
+ * makes it and in the same order: the colour channels as resolved, or under
+ * phong the scene's own lighting ({@link LitState#shade}) of the resolved P,
+ * N and kd; then the scene's fog ({@link Fog#apply}); then
+ * {@link Colors#pack}. So its bytes are the pixel's bytes. Around that it
+ * writes out what went in: the lighting's terms (phong), the lit vertex
+ * colours and the pixel's perspective-correct weights (gouraud), the
+ * polygon's one colour (flat), the fog.
+ */
+final class LitExplainer implements PixelWatch.Explainer {
+
+    private final LitState state;
+
+    LitExplainer(LitState state) {
+        this.state = state;
+    }
+
+    @Override
+    public int colour(PixelWatch watch, double z, double[] ch, int drawnArgb, boolean drawn, Terms terms) {
+        double[] lit = new double[3];
+        boolean phong = ch.length == FragmentLayout.PHONG_CHANNELS;
+        if (terms == null) {
+            if (phong) {
+                state.shade(ch[FragmentLayout.PX], ch[FragmentLayout.PY], z, ch[FragmentLayout.NX], ch[FragmentLayout.NY],
+                        ch[FragmentLayout.NZ], ch[FragmentLayout.R], ch[FragmentLayout.G], ch[FragmentLayout.B], lit);
+            } else {
+                lit[0] = ch[FragmentLayout.R];
+                lit[1] = ch[FragmentLayout.G];
+                lit[2] = ch[FragmentLayout.B];
+            }
+            state.fog().apply(z, lit, 0);
+            return Colors.pack(lit[0], lit[1], lit[2]);
+        }
+        int kind = watch.kind();
+        terms.put("z", z);
+        if (phong) {
+            terms.put("shading", "phong");
+            double[] p = {ch[FragmentLayout.PX], ch[FragmentLayout.PY], z};
+            double[] n = {ch[FragmentLayout.NX], ch[FragmentLayout.NY], ch[FragmentLayout.NZ]};
+            double[] kd = {ch[FragmentLayout.R], ch[FragmentLayout.G], ch[FragmentLayout.B]};
+            double[] sum = LightingTerms.explain(state, p, n, kd, terms);
+            state.shade(p[0], p[1], p[2], n[0], n[1], n[2], kd[0], kd[1], kd[2], lit);
+            terms.put("clamped", clamp(sum));
+            terms.put("lit", lit.clone());
+        } else {
+            lit[0] = ch[FragmentLayout.R];
+            lit[1] = ch[FragmentLayout.G];
+            lit[2] = ch[FragmentLayout.B];
+            if (kind == Painter.LINE || kind == Painter.WIRE) {
+                terms.put("shading", kind == Painter.LINE ? "none (a line carries kd)" : "none (a wire polygon's edges carry kd)");
+                terms.put("kd", lit.clone());
+            } else if (state.shading() == LitState.ShadingMode.FLAT) {
+                terms.put("shading", "flat");
+                terms.put("centroid_colour", lit.clone());
+            } else {
+                terms.put("shading", "gouraud");
+                gouraud(watch, terms);
+                terms.put("interpolated", lit.clone());
+            }
+        }
+        double[] fogged = lit.clone();
+        Fog fog = state.fog();
+        fog.apply(z, fogged, 0);
+        if (fog.isNone()) {
+            terms.put("fog", "none");
+        } else {
+            double t = (z - fog.far()) / (fog.near() - fog.far());
+            terms.put("fog", new Terms().put("near", fog.near()).put("far", fog.far())
+                    .put("colour", fog.r(), fog.g(), fog.b()).put("t", Math.max(0, Math.min(1, t))));
+        }
+        terms.put("fogged", fogged);
+        int argb = Colors.pack(fogged[0], fogged[1], fogged[2]);
+        terms.put("final_rgb", argb >>> 16 & 0xFF, argb >>> 8 & 0xFF, argb & 0xFF);
+        return argb;
+    }
+
+    /**
+     * The lit (clamped, clipped) vertex colours of the fan triangle holding
+     * the pixel's centre, and its perspective-correct weights there:
+     * {@code w_i = b_i q_i / sum_j b_j q_j} for the screen-space barycentric b.
+     */
+    private static void gouraud(PixelWatch watch, Terms terms) {
+        double[] o = watch.outline();
+        int s = watch.stride();
+        int n = watch.vertices();
+        double cx = watch.x() + 0.5;
+        double cy = watch.y() + 0.5;
+        for (int i = 1; i + 1 < n; i++) {
+            int[] v = {0, i, i + 1};
+            double[] b = barycentric(o, s, v, cx, cy);
+            if (b == null) {
+                continue;
+            }
+            double[] w = new double[3];
+            double total = 0;
+            for (int k = 0; k < 3; k++) {
+                w[k] = b[k] * o[v[k] * s + 2];
+                total += w[k];
+            }
+            List<Terms> vertices = new ArrayList<>();
+            for (int k = 0; k < 3; k++) {
+                w[k] /= total;
+                int at = v[k] * s;
+                double q = o[at + 2];
+                vertices.add(new Terms().put("vertex", v[k]).put("panel", o[at], o[at + 1])
+                        .put("z", o[at + 3] / q)
+                        .put("colour", o[at + 4] / q, o[at + 5] / q, o[at + 6] / q));
+            }
+            terms.put("vertex_colours", vertices);
+            terms.put("weights", w);
+            return;
+        }
+    }
+
+    /** Screen-space barycentric coordinates of (cx, cy) in triangle v of the outline, or null when outside. */
+    private static double[] barycentric(double[] o, int s, int[] v, double cx, double cy) {
+        double x0 = o[v[0] * s], y0 = o[v[0] * s + 1];
+        double x1 = o[v[1] * s], y1 = o[v[1] * s + 1];
+        double x2 = o[v[2] * s], y2 = o[v[2] * s + 1];
+        double area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+        if (area == 0) {
+            return null;
+        }
+        double b0 = ((x1 - cx) * (y2 - cy) - (x2 - cx) * (y1 - cy)) / area;
+        double b1 = ((x2 - cx) * (y0 - cy) - (x0 - cx) * (y2 - cy)) / area;
+        double b2 = 1 - b0 - b1;
+        double slack = -1e-9;
+        return b0 >= slack && b1 >= slack && b2 >= slack ? new double[] {b0, b1, b2} : null;
+    }
+
+    private static double[] clamp(double[] c) {
+        double[] out = new double[3];
+        for (int k = 0; k < 3; k++) {
+            out[k] = c[k] > 0 ? Math.min(c[k], 1) : 0;
+        }
+        return out;
+    }
+}

@@ -1,0 +1,201 @@
+package simpview.inspect;
+
+import java.util.List;
+import java.util.function.Supplier;
+import simpview.geometry.Camera;
+import simpview.raster.FragmentSink;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.DrawingWatch;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.SourcePlace;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.DepthCueDrawable;
+import simpview.surface.Drawable;
+import simpview.surface.DrawableDecorator;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+import simpview.surface.ScissorDrawable;
+import simpview.surface.Span;
+import simpview.surface.ZBufferDrawable;
+
+/**
+ * The overdraw of a whole picture: how many writes reached each panel
+ * pixel's depth test (those written plus those that lost it), counted in a
+ * replay through the program's pipeline: depth-cued writes after the
+ * scissor, lit fragments as the rasterizers hand them to the fragment stage
+ * (inside the panel). Row by row from the bottom, as the z-buffer is kept.
+ * The pixel history of any pixel has as many written and depth-failed
+ * entries as its count here.
+ */
+public final class Overdraw {
+
+    private Overdraw() {
+    }
+
+    /** The counts of the scene, drawn as {@code scene} says, its models from {@code models}. */
+    public static int[] of(InspectedScene scene, ObjLibrary models) throws SceneException {
+        return counts(scene, models).reached();
+    }
+
+    /**
+     * Per panel pixel: the writes that reached its depth test, and those of
+     * them that lost it (the depth-test failure overlay).
+     */
+    public record Counts(int[] reached, int[] failed) {
+    }
+
+    /** Both counts of the scene, drawn as {@code scene} says. */
+    public static Counts counts(InspectedScene scene, ObjLibrary models) throws SceneException {
+        PageCanvas canvas = new PageCanvas();
+        int[] counts = new int[PageCanvas.PANEL * PageCanvas.PANEL];
+        int[] won = new int[counts.length];
+        Counting counting = new Counting(counts, won, canvas.zbuffer().depths());
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+                .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
+        ScenePipeline.draw(scene.file(), canvas, options, counting);
+        int[] failed = new int[counts.length];
+        for (int i = 0; i < counts.length; i++) {
+            failed[i] = counts[i] - won[i];
+        }
+        return new Counts(counts, failed);
+    }
+
+    /** The largest count. */
+    public static int max(int[] counts) {
+        int m = 0;
+        for (int c : counts) {
+            m = Math.max(m, c);
+        }
+        return m;
+    }
+
+    private static final class Counting implements SceneMonitor, DrawingWatch {
+        private final int[] counts;
+        private final int[] won;
+        /** The canvas's depths, read after each lit span to see which of its pixels won. */
+        private final double[] depths;
+
+        Counting(int[] counts, int[] won, double[] depths) {
+            this.counts = counts;
+            this.won = won;
+            this.depths = depths;
+        }
+
+        /** A scene that turns lit after drawing is drawn again from the start: the counts start again too. */
+        @Override
+        public PrimitiveTrace trace() {
+            return new PrimitiveTrace() {
+                @Override
+                public void read(int index, java.nio.file.Path file, int line, int kind, double[] p, int at,
+                        int stride, int vertices) {
+                }
+
+                @Override
+                public boolean drawing(int index) {
+                    return true;
+                }
+
+                @Override
+                public void restart() {
+                    java.util.Arrays.fill(counts, 0);
+                    java.util.Arrays.fill(won, 0);
+                }
+            };
+        }
+
+        @Override
+        public DrawingWatch watch() {
+            return this;
+        }
+
+        @Override
+        public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
+            Camera view = Camera.PARALLEL;
+            Drawable coloured = ownColours ? canvas.panel() : new DepthCueDrawable(near, far, view, canvas.panel());
+            return new ScissorDrawable(view, new CountedWrites(counts, new ZBufferDrawable(canvas.zbuffer(),
+                    new CountedWrites(won, coloured))));
+        }
+
+        @Override
+        public FragmentSink fragments(FragmentStage stage) {
+            int width = stage.width();
+            int height = stage.height();
+            double[] z = depths;
+            return new FragmentSink() {
+                private double[] before = new double[width];
+
+                @Override
+                public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
+                    if (y < 0 || y >= height) {
+                        stage.span(y, from, to, q0, dq, v0, dv);
+                        return;
+                    }
+                    int start = Math.max(from, 0);
+                    int end = Math.min(to, width);
+                    int row = y * width;
+                    for (int x = start; x < end; x++) {
+                        counts[row + x]++;
+                        before[x] = z[row + x];
+                    }
+                    stage.span(y, from, to, q0, dq, v0, dv);
+                    for (int x = start; x < end; x++) {
+                        if (Double.compare(z[row + x], before[x]) != 0) {
+                            won[row + x]++;
+                        }
+                    }
+                }
+
+                @Override
+                public void pixel(int x, int y, double q, double[] v) {
+                    boolean inside = x >= 0 && x < width && y >= 0 && y < height;
+                    double was = inside ? z[y * width + x] : 0;
+                    if (inside) {
+                        counts[y * width + x]++;
+                    }
+                    stage.pixel(x, y, q, v);
+                    if (inside && Double.compare(z[y * width + x], was) != 0) {
+                        won[y * width + x]++;
+                    }
+                }
+            };
+        }
+
+        @Override
+        public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
+        }
+
+    }
+
+    /** Counts every write that reaches it inside the panel, then passes it on. */
+    private static final class CountedWrites extends DrawableDecorator {
+        private final int[] counts;
+        private final int size = PageCanvas.PANEL;
+
+        CountedWrites(int[] counts, Drawable delegate) {
+            super(delegate);
+            this.counts = counts;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            if (x >= 0 && x < size && y >= 0 && y < size) {
+                counts[y * size + x]++;
+            }
+            delegate.setPixel(x, y, z, argb);
+        }
+
+        @Override
+        public void fillSpan(Span s) {
+            if (s.y >= 0 && s.y < size) {
+                for (int x = Math.max(s.x0, 0); x < Math.min(s.x1, size); x++) {
+                    counts[s.y * size + x]++;
+                }
+            }
+            delegate.fillSpan(s);
+        }
+    }
+}

@@ -1,0 +1,242 @@
+package simpview.inspect;
+
+import java.util.List;
+import simpview.stage.Painter;
+import simpview.scene.simp.SourcePlace;
+import simpview.surface.PageCanvas;
+
+/**
+ * What a replay found at one pixel: its final colour and depth, and every
+ * write attempted at it in drawing order. Printed as text or as JSON.
+ */
+public final class PixelReport {
+
+    private final InspectedScene scene;
+    private final int x;
+    private final int y;
+    private final int argb;
+    private final double depth;
+    private final List<HistoryEntry> history;
+    private final SourceText text = new SourceText();
+
+    private final java.util.function.IntFunction<PrimitiveSource> sources;
+
+    private final simpview.scene.simp.ScenePipeline.Drawn drawn;
+
+    PixelReport(InspectedScene scene, simpview.scene.simp.ScenePipeline.Drawn drawn, int x, int y, int argb,
+            double depth, List<HistoryEntry> history, java.util.function.IntFunction<PrimitiveSource> sources) {
+        this.drawn = drawn;
+        this.sources = sources;
+        this.scene = scene;
+        this.x = x;
+        this.y = y;
+        this.argb = argb;
+        this.depth = depth;
+        this.history = List.copyOf(history);
+    }
+
+    public int x() {
+        return x;
+    }
+
+    public int y() {
+        return y;
+    }
+
+    /** The pixel's colour at the end, 0xAARRGGBB. */
+    public int argb() {
+        return argb;
+    }
+
+    /** The z-buffer at the pixel at the end (the far plane or -infinity where nothing was written). */
+    public double depth() {
+        return depth;
+    }
+
+    /** True when the scene was drawn (or, not drawn, would have been) by the lit rules. */
+    public boolean lit() {
+        return drawn.lit();
+    }
+
+    /** False when the scene was not drawn at all: depth-cue colours were asked for and it is lit ({@link #litBecause}). */
+    public boolean drawn() {
+        return drawn.drawn();
+    }
+
+    /** Where the scene's first lit command stands ("pageA.simp:3 camera"), or null when depth-cued. */
+    public String litBecause() {
+        return drawn.litBecause();
+    }
+
+    public List<HistoryEntry> history() {
+        return history;
+    }
+
+    /** The last write that went through: the pixel's owner; null for a background pixel. */
+    public HistoryEntry lastWritten() {
+        for (int k = history.size() - 1; k >= 0; k--) {
+            if (history.get(k).outcome() == Outcome.WRITTEN) {
+                return history.get(k);
+            }
+        }
+        return null;
+    }
+
+    /** How the pixel's colour was made: the last written entry's explanation, or null for the background. */
+    public Terms explanation() {
+        HistoryEntry owner = lastWritten();
+        return owner == null ? null : owner.explanation();
+    }
+
+    /**
+     * Primitive n's vertices through every space, for one that reached the
+     * pixel (or was asked for when inspecting); null otherwise.
+     */
+    public Terms vertices(int primitive) {
+        PrimitiveSource s = sources.apply(primitive);
+        return s == null ? null : VertexTable.of(s);
+    }
+
+    /** "page7.simp:6 › cubeline.simp:12 › cube.simp:7 polygon (...)". */
+    public String describe(HistoryEntry e) {
+        return text.describe(e.chain());
+    }
+
+    /**
+     * A primitive's number as the reports and the window's stepping show it:
+     * 1, 2, 3, ... in drawing order (the entries hold 0, 1, 2, ...).
+     */
+    public static int shown(int primitive) {
+        return primitive + 1;
+    }
+
+    public String text(boolean withHistory, boolean withExplanation) {
+        return text(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
+    }
+
+    /** The report as text; with the vertex table of primitive {@code vertices} unless that is NO_NUMBER. */
+    public String text(boolean withHistory, boolean withExplanation, int vertices) {
+        StringBuilder sb = new StringBuilder();
+        sb.append("pixel (").append(x).append(", ").append(y).append(") of the panel (image pixel ")
+                .append(x + PageCanvas.MARGIN).append(", row ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
+                .append("): rgb (").append(argb >>> 16 & 0xFF).append(", ").append(argb >>> 8 & 0xFF).append(", ")
+                .append(argb & 0xFF).append("), depth ").append(Json.number(depth)).append('\n');
+        HistoryEntry owner = lastWritten();
+        sb.append(owner == null ? "drawn by no primitive (background)\n"
+                : "drawn by primitive " + shown(owner.primitive()) + ": " + describe(owner) + "\n");
+        if (withHistory) {
+            sb.append("history: ").append(history.size()).append(history.size() == 1 ? " write" : " writes")
+                    .append(" attempted, in drawing order\n");
+            for (HistoryEntry e : history) {
+                sb.append("  ").append(e.primitive() == HistoryEntry.NO_NUMBER ? "-" : "#" + shown(e.primitive()))
+                        .append(' ').append(describe(e)).append('\n');
+                sb.append("      ").append(e.outcome().word());
+                if (!Double.isNaN(e.z())) {
+                    int c = e.argb();
+                    sb.append(", z ").append(Json.number(e.z())).append(", rgb (").append(c >>> 16 & 0xFF)
+                            .append(", ").append(c >>> 8 & 0xFF).append(", ").append(c & 0xFF).append(')');
+                }
+                if (e.outcome() == Outcome.DEPTH_FAILED) {
+                    sb.append(": stored depth ").append(Json.number(e.storedDepth())).append(e.storedOwner()
+                            == HistoryEntry.NO_NUMBER ? " (nothing drawn yet)" : " of primitive " + shown(e.storedOwner()));
+                } else if (e.outcome() == Outcome.SCISSORED) {
+                    sb.append(": outside the view's depth range");
+                } else if (e.outcome() == Outcome.CULLED) {
+                    sb.append(": every vertex outside one plane of the view; its projection covers the pixel");
+                } else if (e.outcome() == Outcome.CLIPPED) {
+                    sb.append(": clipped away whole; its projection covers the pixel");
+                }
+                sb.append('\n');
+            }
+        }
+        Terms explanation = explanation();
+        if (withExplanation) {
+            if (explanation == null) {
+                sb.append("explain: the background, nothing was drawn here\n");
+            } else {
+                sb.append("explain (primitive ").append(shown(owner.primitive())).append("):\n");
+                explanation.appendText(sb, "  ");
+            }
+        }
+        if (vertices != HistoryEntry.NO_NUMBER) {
+            Terms table = vertices(vertices);
+            if (table == null) {
+                sb.append("vertices: primitive ").append(shown(vertices)).append(" is not in this scene\n");
+            } else {
+                sb.append("vertices of primitive ").append(shown(vertices)).append(":\n");
+                table.appendText(sb, "  ");
+            }
+        }
+        return sb.toString();
+    }
+
+    public String json(boolean withHistory, boolean withExplanation) {
+        return json(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
+    }
+
+    /** The report as one JSON object; with "vertices" for primitive {@code vertices} unless that is NO_NUMBER. */
+    public String json(boolean withHistory, boolean withExplanation, int vertices) {
+        StringBuilder sb = new StringBuilder("{\"pixel\": {\"x\": ").append(x).append(", \"y\": ").append(y)
+                .append(", \"image_x\": ").append(x + PageCanvas.MARGIN)
+                .append(", \"image_row\": ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
+                .append(", \"rgb\": [").append(argb >>> 16 & 0xFF).append(", ").append(argb >>> 8 & 0xFF)
+                .append(", ").append(argb & 0xFF).append("], \"depth\": ");
+        Json.number(sb, depth);
+        HistoryEntry owner = lastWritten();
+        sb.append(", \"owner\": ").append(owner == null ? "null" : String.valueOf(shown(owner.primitive())));
+        sb.append("}, \"lit\": ").append(drawn.lit());
+        if (withHistory) {
+            sb.append(", \"history\": [");
+            for (int k = 0; k < history.size(); k++) {
+                HistoryEntry e = history.get(k);
+                sb.append(k == 0 ? "" : ", ").append("{\"primitive\": ")
+                        .append(e.primitive() == HistoryEntry.NO_NUMBER ? "null" : String.valueOf(shown(e.primitive())))
+                        .append(", \"kind\": ");
+                Json.string(sb, e.kind() == Painter.LINE ? "line" : e.kind() == Painter.WIRE ? "wire" : "filled");
+                sb.append(", \"chain\": [");
+                List<SourcePlace> chain = e.chain();
+                for (int j = 0; j < chain.size(); j++) {
+                    sb.append(j == 0 ? "" : ", ");
+                    Json.string(sb, chain.get(j).toString());
+                }
+                sb.append("], \"command\": ");
+                Json.string(sb, chain.isEmpty() ? "" : text.line(chain.get(chain.size() - 1)));
+                sb.append(", \"z\": ");
+                Json.number(sb, e.z());
+                int c = e.argb();
+                sb.append(", \"rgb\": ").append(Double.isNaN(e.z()) ? "null"
+                        : "[" + (c >>> 16 & 0xFF) + ", " + (c >>> 8 & 0xFF) + ", " + (c & 0xFF) + "]");
+                sb.append(", \"outcome\": ");
+                Json.string(sb, e.outcome().word());
+                if (e.outcome() == Outcome.DEPTH_FAILED) {
+                    sb.append(", \"stored_depth\": ");
+                    Json.number(sb, e.storedDepth());
+                    sb.append(", \"stored_owner\": ").append(e.storedOwner() == HistoryEntry.NO_NUMBER ? "null"
+                            : String.valueOf(shown(e.storedOwner())));
+                }
+                sb.append('}');
+            }
+            sb.append(']');
+        }
+        if (withExplanation) {
+            sb.append(", \"explain\": ");
+            Terms explanation = explanation();
+            if (explanation == null) {
+                sb.append("{\"final_rgb\": [").append(argb >>> 16 & 0xFF).append(", ").append(argb >>> 8 & 0xFF)
+                        .append(", ").append(argb & 0xFF).append("], \"background\": true}");
+            } else {
+                explanation.appendJson(sb);
+            }
+        }
+        if (vertices != HistoryEntry.NO_NUMBER) {
+            sb.append(", \"vertices\": ");
+            Terms table = vertices(vertices);
+            if (table == null) {
+                sb.append("null");
+            } else {
+                table.appendJson(sb);
+            }
+        }
+        return sb.append('}').toString();
+    }
+}

@@ -1,0 +1,284 @@
+package simpview.inspect;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
+import simpview.shading.LitState;
+import simpview.stage.PrimitiveTrace;
+import simpview.scene.simp.SourcePlace;
+import simpview.surface.ZBuffer;
+
+/**
+ * The one-pixel filter of a replay: follows the scene's primitives as the
+ * window's instruments do (a {@link PrimitiveTrace}), and keeps a history
+ * entry for every write that the probes see arrive at its pixel, with how far
+ * it got. Nothing is kept for any other pixel. One watch per replay.
+ */
+final class PixelWatch implements PrimitiveTrace {
+
+    private final int x;
+    private final int y;
+    private final List<HistoryEntry> entries = new ArrayList<>();
+    private final ZBuffer zbuffer;
+    // Set when the scene's rules begin (again, when it turns lit): where to ask for the include chain,
+    // the view, and what explains and colours the writes (the depth cue's or the lighting's).
+    private Supplier<List<SourcePlace>> chains = List::of;
+    private Supplier<Camera> camera = () -> Camera.PARALLEL;
+    private Supplier<Matrix4> worldToCamera = Matrix4::identity;
+    private boolean lit;
+    private Explainer explainer;
+
+    // The primitive being drawn: its number, command, kind and projected outline.
+    private int primitive = HistoryEntry.NO_NUMBER;
+    private Path file;
+    private int line;
+    private int kind;
+    private double[] outline = new double[64];
+    private int stride;
+    private int vertices;
+    private List<SourcePlace> chain;
+    private int lastWritten = HistoryEntry.NO_NUMBER;
+    /** The write on its way down the chain now. */
+    private HistoryEntry current;
+    private double depthBefore;
+
+    /** What a watch asks of the scene's kind of drawing. */
+    interface Explainer {
+        /**
+         * The colour of a write at depth z whose fragment channels (lit) or
+         * drawn levels (depth-cued, or null) are given, explained into terms
+         * (null: none wanted); 0xAARRGGBB.
+         */
+        int colour(PixelWatch watch, double z, double[] values, int drawnArgb, boolean drawn, Terms terms);
+    }
+
+    // The primitive as written, told before it is drawn; kept for those that reach the pixel and the one asked for.
+    private Matrix4 sourceCtm;
+    private double[] sourceXyz = new double[3 * 8];
+    private int sourceVertices;
+    private final Map<Integer, PrimitiveSource> sources = new HashMap<>();
+    private int wanted = HistoryEntry.NO_NUMBER;
+    private boolean explaining = true;
+
+    PixelWatch(int x, int y, ZBuffer zbuffer) {
+        this.x = x;
+        this.y = y;
+        this.zbuffer = zbuffer;
+    }
+
+    /** The scene's rules begin: depth-cued ones (lit null) explained by {@code cue}, or lit ones by their state. */
+    void begin(Supplier<List<SourcePlace>> chain, LitState state, Explainer cue) {
+        chains = chain;
+        lit = state != null;
+        camera = lit ? state::camera : () -> Camera.PARALLEL;
+        worldToCamera = lit ? state::worldToCamera : Matrix4::identity;
+        explainer = lit ? new LitExplainer(state) : cue;
+    }
+
+    boolean lit() {
+        return lit;
+    }
+
+    /** The scene is drawn again from the start (it turned lit): what was seen so far is forgotten. */
+    @Override
+    public void restart() {
+        entries.clear();
+        sources.clear();
+        lastWritten = HistoryEntry.NO_NUMBER;
+        primitive = HistoryEntry.NO_NUMBER;
+        current = null;
+        sourceCtm = null;
+    }
+
+    int x() {
+        return x;
+    }
+
+    int y() {
+        return y;
+    }
+
+    List<HistoryEntry> entries() {
+        return entries;
+    }
+
+    // ---- the trace
+
+    @Override
+    public void read(int index, Path commandFile, int commandLine, int primitiveKind, double[] p, int at,
+            int numbers, int count) {
+        primitive = index;
+        file = commandFile;
+        line = commandLine;
+        kind = primitiveKind;
+        stride = numbers;
+        vertices = count;
+        if (outline.length < numbers * count) {
+            outline = new double[2 * numbers * count];
+        }
+        System.arraycopy(p, at, outline, 0, numbers * count);
+        chain = null;
+        if (index == wanted) {
+            keepSource();
+        }
+    }
+
+    @Override
+    public boolean wantsSource() {
+        return true;
+    }
+
+    @Override
+    public void source(Matrix4 ctm, double[] xyz, int count) {
+        sourceCtm = ctm;
+        if (sourceXyz.length < 3 * count) {
+            sourceXyz = new double[6 * count];
+        }
+        System.arraycopy(xyz, 0, sourceXyz, 0, 3 * count);
+        sourceVertices = count;
+    }
+
+    /** The primitive at hand as written, kept (once) under its number. */
+    private void keepSource() {
+        if (sourceCtm != null && !sources.containsKey(primitive)) {
+            sources.put(primitive, new PrimitiveSource(primitive, kind, sourceCtm, worldToCamera.get(), camera.get(),
+                    lit, java.util.Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices));
+        }
+    }
+
+    /** With false, each write gets its colour but no explanation (what an explanation costs is the difference). */
+    void explaining(boolean explain) {
+        explaining = explain;
+    }
+
+    /** Also keep primitive n as written, whether or not it reaches the pixel. */
+    void want(int n) {
+        wanted = n;
+    }
+
+    /** Primitive n as written, if it reached the pixel or was wanted; else null. */
+    PrimitiveSource source(int n) {
+        return sources.get(n);
+    }
+
+    @Override
+    public boolean drawing(int index) {
+        primitive = index;
+        return true;
+    }
+
+    @Override
+    public void skipped(Path commandFile, int commandLine, int primitiveKind, boolean culled, double[] p, int at,
+            int numbers, int count) {
+        if (Coverage.covers(camera.get(), primitiveKind, p, at, numbers, count, x, y)) {
+            HistoryEntry e = new HistoryEntry(HistoryEntry.NO_NUMBER, chainOf(commandFile, commandLine),
+                    primitiveKind, culled ? Outcome.CULLED : Outcome.CLIPPED);
+            entries.add(e);
+        }
+    }
+
+    /** The include chain of the command at hand, ending at (file, line) when that is not the innermost simp line. */
+    private List<SourcePlace> chainOf(Path commandFile, int commandLine) {
+        List<SourcePlace> c = new ArrayList<>(chains.get());
+        if (commandFile != null && (c.isEmpty() || !c.get(c.size() - 1).file().equals(commandFile))) {
+            c.add(new SourcePlace(commandFile, commandLine));
+        }
+        return List.copyOf(c);
+    }
+
+    private List<SourcePlace> chain() {
+        if (chain == null) {
+            chain = chainOf(file, line);
+        }
+        return chain;
+    }
+
+    // ---- depth-cued writes, from the probes of the drawable chain
+
+    /** A write at the pixel reached a probe: levels are the drawn colour's levels when it came in a span. */
+    void reached(WriteProbe.Point point, double z, int argb, double[] levels) {
+        switch (point) {
+            case ATTEMPTED -> {
+                keepSource();
+                current = new HistoryEntry(primitive, chain(), kind, Outcome.SCISSORED);
+                current.z = z;
+                current.argb = explainer.colour(this, z, null, argb, false, null);
+                entries.add(current);
+            }
+            case IN_RANGE -> {
+                current.outcome = Outcome.DEPTH_FAILED;
+                current.storedDepth = zbuffer.depthAt(x, y);
+                current.storedOwner = lastWritten;
+            }
+            case PASSED_DEPTH -> {
+                current.outcome = Outcome.WRITTEN;
+                current.storedDepth = Double.NaN;
+                current.storedOwner = HistoryEntry.NO_NUMBER;
+                lastWritten = primitive;
+            }
+            case SHOWN -> {
+                Terms terms = explaining ? new Terms() : null;
+                current.argb = explainer.colour(this, z, levels, argb, true, terms);
+                current.explanation = terms;
+            }
+            default -> throw new IllegalStateException(String.valueOf(point));
+        }
+    }
+
+    // ---- lit fragments, from the fragment probe
+
+    /** Channels the fragments of the primitive at hand carry. */
+    int channels() {
+        return stride - 3;
+    }
+
+    /** A fragment at the pixel, resolved, before the fragment stage tests it. */
+    void fragment(double[] channels) {
+        double z = channels[0];
+        keepSource();
+        current = new HistoryEntry(primitive, chain(), kind, Outcome.DEPTH_FAILED);
+        current.z = z;
+        depthBefore = zbuffer.depthAt(x, y);
+        current.storedDepth = depthBefore;
+        current.storedOwner = lastWritten;
+        Terms terms = explaining ? new Terms() : null;
+        current.argb = explainer.colour(this, z, Arrays.copyOf(channels, channels()), 0, false, terms);
+        current.explanation = terms;
+        entries.add(current);
+    }
+
+    /** The fragment stage is done with the fragment: it won when the stored depth changed. */
+    void fragmentDone() {
+        if (Double.compare(zbuffer.depthAt(x, y), depthBefore) != 0) {
+            current.outcome = Outcome.WRITTEN;
+            current.storedDepth = Double.NaN;
+            current.storedOwner = HistoryEntry.NO_NUMBER;
+            lastWritten = primitive;
+        }
+    }
+
+    // ---- what the explainers read of the primitive at hand
+
+    int kind() {
+        return kind;
+    }
+
+    /** The projected outline of the primitive at hand: vertices() of stride() numbers (panel x, y, q, then channels times q). */
+    double[] outline() {
+        return outline;
+    }
+
+    int stride() {
+        return stride;
+    }
+
+    int vertices() {
+        return vertices;
+    }
+}

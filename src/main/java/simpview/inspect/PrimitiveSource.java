@@ -1,0 +1,13 @@
+package simpview.inspect;
+
+import simpview.geometry.Camera;
+import simpview.geometry.Matrix4;
+
+/**
+ * A primitive as its command wrote it, with what took it to the panel: its
+ * object-space vertices, the CTM at its command, W (world to camera; the
+ * identity for a depth-cued scene) and the camera.
+ */
+record PrimitiveSource(int primitive, int kind, Matrix4 ctm, Matrix4 worldToCamera, Camera camera, boolean lit,
+        double[] xyz, int vertices) {
+}

@@ -1,0 +1,168 @@
+package simpview.inspect;
+
+import java.util.ArrayList;
+import java.util.List;
+import simpview.geometry.Camera;
+import simpview.geometry.Clipper;
+import simpview.geometry.Matrix4;
+import simpview.stage.Painter;
+
+/**
+ * A primitive's vertices through every space, as the geometry stages take
+ * them: as written, after the CTM (world), after W (camera space), projected
+ * (panel coordinates with their fractions) and the pixel each rounds to; for
+ * a lit scene the clipper's output (by the program's own {@link Clipper}) and
+ * the planes that cut it; for a line, the DDA's start pixel, direction and
+ * step count by SPEC's rule.
+ */
+final class VertexTable {
+
+    static final String[] PLANES = {"hither", "yon", "left", "right", "bottom", "top"};
+
+    private VertexTable() {
+    }
+
+    static Terms of(PrimitiveSource s) {
+        Terms t = new Terms();
+        t.put("primitive", PixelReport.shown(s.primitive()));
+        t.put("kind", s.kind() == Painter.LINE ? "line" : s.kind() == Painter.WIRE ? "wire polygon" : "filled polygon");
+        t.put("ctm", rows(s.ctm()));
+        Matrix4 toCamera = s.worldToCamera().times(s.ctm());
+        if (s.lit()) {
+            t.put("world_to_camera", rows(s.worldToCamera()));
+        }
+        Camera camera = s.camera();
+        int n = s.vertices();
+        double[] cam = new double[3 * n];
+        List<Terms> vertices = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            double x = s.xyz()[3 * k];
+            double y = s.xyz()[3 * k + 1];
+            double z = s.xyz()[3 * k + 2];
+            Matrix4 m = s.ctm();
+            double[] world = {m.applyX(x, y, z), m.applyY(x, y, z), m.applyZ(x, y, z)};
+            cam[3 * k] = toCamera.applyX(x, y, z);
+            cam[3 * k + 1] = toCamera.applyY(x, y, z);
+            cam[3 * k + 2] = toCamera.applyZ(x, y, z);
+            Terms v = new Terms().put("written", x, y, z).put("world", world);
+            if (s.lit()) {
+                v.put("camera", cam[3 * k], cam[3 * k + 1], cam[3 * k + 2]);
+            }
+            v.put("outside", planes(camera.outcode(cam[3 * k], cam[3 * k + 1], cam[3 * k + 2])));
+            project(camera, cam[3 * k], cam[3 * k + 1], cam[3 * k + 2], v);
+            vertices.add(v);
+        }
+        t.put("vertices", vertices);
+        boolean culled = camera.culls(cam, 3, n);
+        double[] ends = null;
+        if (culled) {
+            t.put("culled", "every vertex is outside the " + planes(commonOutside(camera, cam, n)) + " plane");
+        } else if (!s.lit()) {
+            t.put("clipping", "none: a depth-cued scene is not clipped; the scissor drops the pixels outside the view");
+            if (s.kind() == Painter.LINE) {
+                ends = new double[] {cam[0], cam[1], cam[2], cam[3], cam[4], cam[5]};
+            }
+        } else {
+            Clipper clipper = new Clipper(3);
+            int kept;
+            if (s.kind() == Painter.LINE) {
+                kept = clipper.clipLine(camera, cam, 0, 3) ? 2 : 0;
+            } else {
+                kept = clipper.clipPolygon(camera, cam, 0, n);
+            }
+            double[] out = clipper.vertices();
+            Terms clip = new Terms();
+            int crossed = 0;
+            for (int k = 0; k < n; k++) {
+                crossed |= camera.outcode(cam[3 * k], cam[3 * k + 1], cam[3 * k + 2]);
+            }
+            clip.put("cut_by", crossed == 0 ? "none: every vertex is inside the view" : planes(crossed));
+            List<Terms> output = new ArrayList<>();
+            for (int k = 0; k < kept; k++) {
+                Terms v = new Terms().put("camera", out[3 * k], out[3 * k + 1], out[3 * k + 2]);
+                project(camera, out[3 * k], out[3 * k + 1], out[3 * k + 2], v);
+                output.add(v);
+            }
+            clip.put("output", output);
+            if (kept == 0) {
+                clip.put("result", "nothing is left in view");
+            }
+            t.put("clipping", clip);
+            if (s.kind() == Painter.LINE && kept == 2) {
+                ends = new double[] {out[0], out[1], out[2], out[3], out[4], out[5]};
+            }
+        }
+        if (ends != null) {
+            t.put("dda", dda(camera.panelX(ends[0], ends[2]), camera.panelY(ends[1], ends[2]),
+                    camera.panelX(ends[3], ends[5]), camera.panelY(ends[4], ends[5])));
+        }
+        return t;
+    }
+
+    /** Panel coordinates and the pixel they round to, or why there are none. */
+    private static void project(Camera camera, double x, double y, double z, Terms v) {
+        if (camera.isPerspective() && !(z < 0)) {
+            v.put("panel", "none: at or behind the eye (z >= 0)");
+            return;
+        }
+        double px = camera.panelX(x, z);
+        double py = camera.panelY(y, z);
+        v.put("panel", px, py);
+        v.put("pixel", (int) Math.floor(px + 0.5), (int) Math.floor(py + 0.5));
+    }
+
+    /** SPEC's DDA for a line between two panel points: start pixel, direction, slope and step count. */
+    static Terms dda(double x0, double y0, double x1, double y1) {
+        long ax = (long) Math.floor(x0 + 0.5);
+        long ay = (long) Math.floor(y0 + 0.5);
+        long bx = (long) Math.floor(x1 + 0.5);
+        long by = (long) Math.floor(y1 + 0.5);
+        boolean xMajor = Math.abs(bx - ax) >= Math.abs(by - ay);
+        boolean swap = xMajor ? ax > bx : ay > by;
+        if (swap) {
+            long t = ax;
+            ax = bx;
+            bx = t;
+            t = ay;
+            ay = by;
+            by = t;
+        }
+        long major = xMajor ? bx - ax : by - ay;
+        long minor = xMajor ? by - ay : bx - ax;
+        Terms t = new Terms();
+        t.put("start_pixel", (double) ax, (double) ay);
+        t.put("end_pixel", (double) bx, (double) by);
+        t.put("major_axis", xMajor ? "x" : "y");
+        t.put("direction", xMajor ? 1 : Long.signum(minor), xMajor ? Long.signum(minor) : 1);
+        t.put("slope", major == 0 ? 0 : (double) minor / major);
+        t.put("steps", (double) major);
+        t.put("pixels", (double) (major + 1));
+        return t;
+    }
+
+    private static int commonOutside(Camera camera, double[] cam, int n) {
+        int common = ~0;
+        for (int k = 0; k < n; k++) {
+            common &= camera.outcode(cam[3 * k], cam[3 * k + 1], cam[3 * k + 2]);
+        }
+        return common;
+    }
+
+    private static String planes(int code) {
+        StringBuilder sb = new StringBuilder();
+        for (int p = 0; p < Camera.PLANES; p++) {
+            if ((code & 1 << p) != 0) {
+                sb.append(sb.length() == 0 ? "" : ", ").append(PLANES[p]);
+            }
+        }
+        return sb.length() == 0 ? "none" : sb.toString();
+    }
+
+    private static Terms rows(Matrix4 m) {
+        Terms rows = new Terms();
+        for (int r = 0; r < 4; r++) {
+            rows.put("row " + (r + 1), m.get(r, 0), m.get(r, 1), m.get(r, 2), m.get(r, 3));
+        }
+        return rows;
+    }
+}

@@ -1,0 +1,241 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code simpview inspect}: its JSON read back by a parser of the test's own, its text, and its errors. */
+class InspectCommandTest {
+
+    private static final Set<String> OUTCOMES = Set.of("written", "depth-failed", "scissored", "clipped", "culled",
+            "blended");
+
+    @TempDir
+    Path dir;
+
+    private Path write(String name, String text) throws Exception {
+        Path file = dir.resolve(name);
+        Files.writeString(file, text);
+        return file;
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void jsonOfADepthCuedScene() throws Exception {
+        write("leaf.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path scene = write("top.simp", "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n"
+                + "polygon (-90, -90, -190) (90, -90, -190) (0, 90, -190)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--json");
+        assertEquals(0, run.exitCode(), run.err());
+        Map<String, Object> json = (Map<String, Object>) new MiniJson(run.out().strip()).value();
+        Map<String, Object> pixel = (Map<String, Object>) json.get("pixel");
+        assertEquals(325.0, pixel.get("x"));
+        assertEquals(300.0, pixel.get("y"));
+        List<Object> rgb = (List<Object>) pixel.get("rgb");
+        assertEquals(3, rgb.size());
+        double depth = (Double) pixel.get("depth");
+        assertEquals(-10, depth, 1e-9);
+        List<Object> history = (List<Object>) json.get("history");
+        assertEquals(3, history.size());
+        List<String> outcomes = new ArrayList<>();
+        for (Object o : history) {
+            Map<String, Object> e = (Map<String, Object>) o;
+            assertTrue(OUTCOMES.contains(e.get("outcome")), "outcome " + e.get("outcome"));
+            outcomes.add((String) e.get("outcome"));
+            assertTrue(e.containsKey("primitive") && e.containsKey("z") && e.containsKey("rgb"));
+        }
+        assertEquals(List.of("written", "written", "depth-failed"), outcomes);
+        Map<String, Object> second = (Map<String, Object>) history.get(1);
+        assertEquals(List.of("top.simp:2", "leaf.simp:1"), second.get("chain"));
+        assertEquals(2.0, second.get("primitive"));
+        Map<String, Object> explain = (Map<String, Object>) json.get("explain");
+        assertEquals(rgb, explain.get("final_rgb"));
+        assertEquals(rgb, second.get("rgb"));
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void jsonOfALitScene() throws Exception {
+        Path scene = write("lit.simp", "camera -1 -1 1 1 -1 -100\nambient 0.2 0.2 0.2\n{\ntranslate 0 10 0\n"
+                + "light 1 1 1 1 0\n}\npolygon (-5, -5, -10) (5, -5, -10) (0, 5, -10)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--explain", "--json");
+        assertEquals(0, run.exitCode(), run.err());
+        Map<String, Object> json = (Map<String, Object>) new MiniJson(run.out().strip()).value();
+        Map<String, Object> explain = (Map<String, Object>) json.get("explain");
+        assertEquals("phong", explain.get("shading"));
+        assertEquals(1, ((List<Object>) explain.get("lights")).size());
+        assertEquals(((Map<String, Object>) json.get("pixel")).get("rgb"), explain.get("final_rgb"));
+        assertFalse(json.containsKey("history"), "--explain alone leaves the history out");
+    }
+
+    @Test
+    void textNamesTheChainAndTheVertices() throws Exception {
+        write("leaf.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path scene = write("top.simp", "# top\nfile leaf\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.out().contains("drawn by primitive 1: top.simp:2 › leaf.simp:1 polygon"), run.out());
+        assertTrue(run.out().contains("history: 1 write attempted"), run.out());
+        assertTrue(run.out().contains("vertices of primitive 1:"), run.out());
+        assertTrue(run.out().contains("final_rgb: "), run.out());
+    }
+
+    @Test
+    void aPixelOutsideThePanelIsAUsageError() throws Exception {
+        Path scene = write("s.simp", "polygon (0, 0, -1) (1, 0, -1) (0, 1, -1)\n");
+        for (String at : new String[] {"650,10", "-1,3", "3", "a,b"}) {
+            CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", at);
+            assertEquals(2, run.exitCode(), at);
+            assertTrue(run.err().contains("--at"), run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+        }
+        CliRun outside = CliRun.of("inspect", "--scene", scene.toString(), "--at", "650,10");
+        assertTrue(outside.err().contains("outside the panel: x and y are 0 to 649"), outside.err());
+    }
+
+    @Test
+    void depthCueColoursForALitSceneAreAUsageError() throws Exception {
+        Path scene = write("lit.simp", "camera -1 -1 1 1 -1 -100\npolygon (-5, -5, -10) (5, -5, -10) (0, 5, -10)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--near-color", "0,1,0");
+        assertEquals(2, run.exitCode(), run.err());
+        assertTrue(run.err().contains("is lit (lit.simp:1 camera)"), run.err());
+    }
+
+    @Test
+    void pagesThatAreNotScenesAndMissingScenes() throws Exception {
+        CliRun page = CliRun.of("inspect", "--page", "2", "--at", "10,10");
+        assertEquals(2, page.exitCode());
+        assertTrue(page.err().contains("inspect reads pages 4 to 8 and scenes"), page.err());
+        CliRun missing = CliRun.of("inspect", "--scene", dir.resolve("none.simp").toString(), "--at", "10,10");
+        assertEquals(1, missing.exitCode());
+        assertTrue(missing.err().contains("none.simp"), missing.err());
+        assertFalse(missing.showsStackTrace(), missing.err());
+    }
+
+    /** A small JSON reader: objects, arrays, strings, numbers (as Double), true, false, null. */
+    static final class MiniJson {
+        private final String s;
+        private int i;
+
+        MiniJson(String s) {
+            this.s = s;
+        }
+
+        Object value() {
+            Object v = next();
+            space();
+            if (i != s.length()) {
+                throw new IllegalArgumentException("trailing text at " + i);
+            }
+            return v;
+        }
+
+        private Object next() {
+            space();
+            char c = s.charAt(i);
+            if (c == '{') {
+                Map<String, Object> m = new LinkedHashMap<>();
+                i++;
+                space();
+                if (s.charAt(i) == '}') {
+                    i++;
+                    return m;
+                }
+                while (true) {
+                    space();
+                    String key = (String) next();
+                    space();
+                    expect(':');
+                    m.put(key, next());
+                    space();
+                    if (s.charAt(i) == ',') {
+                        i++;
+                    } else {
+                        expect('}');
+                        return m;
+                    }
+                }
+            }
+            if (c == '[') {
+                List<Object> list = new ArrayList<>();
+                i++;
+                space();
+                if (s.charAt(i) == ']') {
+                    i++;
+                    return list;
+                }
+                while (true) {
+                    list.add(next());
+                    space();
+                    if (s.charAt(i) == ',') {
+                        i++;
+                    } else {
+                        expect(']');
+                        return list;
+                    }
+                }
+            }
+            if (c == '"') {
+                StringBuilder sb = new StringBuilder();
+                i++;
+                while (s.charAt(i) != '"') {
+                    char d = s.charAt(i++);
+                    if (d == '\\') {
+                        char e = s.charAt(i++);
+                        switch (e) {
+                            case 'n' -> sb.append('\n');
+                            case 't' -> sb.append('\t');
+                            case 'r' -> sb.append('\r');
+                            case 'u' -> {
+                                sb.append((char) Integer.parseInt(s.substring(i, i + 4), 16));
+                                i += 4;
+                            }
+                            default -> sb.append(e);
+                        }
+                    } else {
+                        sb.append(d);
+                    }
+                }
+                i++;
+                return sb.toString();
+            }
+            for (String word : new String[] {"true", "false", "null"}) {
+                if (s.startsWith(word, i)) {
+                    i += word.length();
+                    return word.equals("null") ? null : Boolean.valueOf(word);
+                }
+            }
+            int start = i;
+            while (i < s.length() && "+-0123456789.eE".indexOf(s.charAt(i)) >= 0) {
+                i++;
+            }
+            if (start == i) {
+                throw new IllegalArgumentException("unexpected '" + c + "' at " + i);
+            }
+            return Double.parseDouble(s.substring(start, i));
+        }
+
+        private void space() {
+            while (i < s.length() && Character.isWhitespace(s.charAt(i))) {
+                i++;
+            }
+        }
+
+        private void expect(char c) {
+            if (s.charAt(i) != c) {
+                throw new IllegalArgumentException("expected '" + c + "' at " + i + ", found '" + s.charAt(i) + "'");
+            }
+            i++;
+        }
+    }
+}

@@ -1,0 +1,292 @@
+package simpview.inspect;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The explanation's terms against SPEC's formula computed here, in plain
+ * steps that share no code with simpview's lighting: per light L, d, f,
+ * N . L, R, V . R, (V . R)^p and the diffuse and specular parts, the sum,
+ * the clamp, the fog and the bytes; gouraud's lit vertex colours and weights;
+ * flat's centroid colour. Within 1e-9; the bytes exactly.
+ */
+class LightingExplanationTest {
+
+    private static final double EPS = 1e-9;
+    /** Lights in camera space (the camera stands at the identity, so W is the identity): x, y, z, r, g, b, A, B. */
+    private static final double[][] LIGHTS = {
+        {20, 30, -10, 1, 0.9, 0.8, 1, 0.01},
+        {-5, -40, -90, 0.5, 0.5, 1, 0.5, 0.02},
+        {0, 0, 0, 0.3, 0.3, 0.3, 1, 0},
+    };
+    private static final double[] AMBIENT = {0.1, 0.2, 0.15};
+    private static final double[] KD = {0.8, 0.5, 0.3};
+    private static final double KS = 0.6;
+    private static final double P = 12;
+    private static final double FOG_NEAR = -20;
+    private static final double FOG_FAR = -60;
+    private static final double[] FOG = {0.1, 0.1, 0.3};
+    private static final double[][] TRIANGLE = {{-30, -30, -50}, {30, -30, -40}, {0, 30, -45}};
+
+    @TempDir
+    Path dir;
+
+    private Path scene(String shading) throws Exception {
+        Path file = dir.resolve(shading + ".simp");
+        StringBuilder sb = new StringBuilder("camera -1 -1 1 1 -1 -100\n");
+        sb.append("ambient ").append(AMBIENT[0]).append(' ').append(AMBIENT[1]).append(' ').append(AMBIENT[2]).append('\n');
+        sb.append("surface ").append(KD[0]).append(' ').append(KD[1]).append(' ').append(KD[2]).append(' ').append(KS)
+                .append(' ').append(P).append('\n');
+        for (double[] l : LIGHTS) {
+            sb.append("{\ntranslate ").append(l[0]).append(' ').append(l[1]).append(' ').append(l[2]).append("\nlight ")
+                    .append(l[3]).append(' ').append(l[4]).append(' ').append(l[5]).append(' ').append(l[6]).append(' ')
+                    .append(l[7]).append("\n}\n");
+        }
+        sb.append("depth ").append(FOG_NEAR).append(' ').append(FOG_FAR).append(" (").append(FOG[0]).append(", ")
+                .append(FOG[1]).append(", ").append(FOG[2]).append(")\n");
+        sb.append(shading).append('\n');
+        sb.append("polygon");
+        for (double[] v : TRIANGLE) {
+            sb.append(" (").append(v[0]).append(", ").append(v[1]).append(", ").append(v[2]).append(')');
+        }
+        Files.writeString(file, sb.append('\n').toString());
+        return file;
+    }
+
+    @Test
+    void phongTermsFollowTheFormula() throws Exception {
+        Path file = scene("phong");
+        PixelInspector inspector = new PixelInspector();
+        int checked = 0;
+        int behind = 0;
+        for (int y = 100; y < 600; y += 37) {
+            for (int x = 100; x < 600; x += 41) {
+                PixelReport report = inspector.inspect(InspectedScene.of(file), x, y);
+                Terms t = report.explanation();
+                if (t == null) {
+                    continue;
+                }
+                checked++;
+                String where = "pixel (" + x + ", " + y + ")";
+                assertEquals("phong", t.get("shading"));
+                double[] p = t.vector("P");
+                double[] nRaw = t.vector("N_interpolated");
+                double[] kd = t.vector("kd");
+                // P lies on the triangle's plane and projects onto the pixel's centre.
+                double[] normal = faceNormal();
+                assertEquals(0, dot(normal, sub(p, TRIANGLE[0])) / length(normal), 1e-7, where + ": P off the plane");
+                assertEquals(x + 0.5, (p[0] / -p[2] + 1) * 325, 1e-6, where + ": P's panel x");
+                assertEquals(y + 0.5, (p[1] / -p[2] + 1) * 325, 1e-6, where + ": P's panel y");
+                assertArrayEquals(KD, kd, EPS, where + ": kd");
+                double[] n = scale(nRaw, 1 / length(nRaw));
+                assertArrayEquals(n, t.vector("N"), EPS, where + ": N");
+                double[] v = scale(p, -1 / length(p));
+                assertArrayEquals(v, t.vector("V"), EPS, where + ": V");
+                double[] sum = {KD[0] * AMBIENT[0], KD[1] * AMBIENT[1], KD[2] * AMBIENT[2]};
+                assertArrayEquals(sum, t.terms("ambient").vector("kd_Ia"), EPS, where + ": ambient");
+                List<Terms> lights = t.list("lights");
+                assertEquals(LIGHTS.length, lights.size());
+                for (int i = 0; i < LIGHTS.length; i++) {
+                    double[] light = LIGHTS[i];
+                    Terms lt = lights.get(i);
+                    double[] toLight = sub(new double[] {light[0], light[1], light[2]}, p);
+                    double d = length(toLight);
+                    double[] l = scale(toLight, 1 / d);
+                    double f = 1 / (light[6] + light[7] * d);
+                    double nl = dot(n, l);
+                    assertArrayEquals(l, lt.vector("L"), EPS, where + ": L" + i);
+                    assertEquals(d, lt.number("distance"), EPS, where + ": d" + i);
+                    assertEquals(f, lt.number("f"), EPS, where + ": f" + i);
+                    assertEquals(nl, lt.number("N_dot_L"), EPS, where + ": N.L" + i);
+                    if (nl <= 0) {
+                        behind++;
+                        assertEquals(true, lt.get("behind_surface"), where + ": light " + i + " is behind");
+                        continue;
+                    }
+                    double[] r = sub(scale(n, 2 * nl), l);
+                    double vr = dot(v, r);
+                    double power = Math.pow(Math.max(0, vr), P);
+                    assertArrayEquals(r, lt.vector("R"), EPS, where + ": R" + i);
+                    assertEquals(vr, lt.number("V_dot_R"), EPS, where + ": V.R" + i);
+                    assertEquals(power, lt.number("V_dot_R_pow_p"), EPS, where + ": (V.R)^p" + i);
+                    for (int c = 0; c < 3; c++) {
+                        double diffuse = light[3 + c] * f * KD[c] * nl;
+                        double specular = light[3 + c] * f * KS * power;
+                        assertEquals(diffuse, lt.vector("diffuse")[c], EPS, where + ": diffuse" + i);
+                        assertEquals(specular, lt.vector("specular")[c], EPS, where + ": specular" + i);
+                        sum[c] += diffuse + specular;
+                    }
+                }
+                assertArrayEquals(sum, t.vector("sum"), EPS, where + ": sum");
+                double[] clamped = new double[3];
+                for (int c = 0; c < 3; c++) {
+                    clamped[c] = Math.max(0, Math.min(1, sum[c]));
+                }
+                assertArrayEquals(clamped, t.vector("clamped"), EPS, where + ": clamp");
+                assertArrayEquals(clamped, t.vector("lit"), EPS, where + ": the lighting's own colour");
+                fogAndBytes(t, report, clamped, where);
+            }
+        }
+        assertTrue(checked > 40, "too few lit pixels: " + checked);
+        assertTrue(behind > 0, "no light was behind the surface: the test does not reach that case");
+    }
+
+    @Test
+    void gouraudVertexColoursAndWeights() throws Exception {
+        Path file = scene("gouraud");
+        PixelInspector inspector = new PixelInspector();
+        double[][] lit = new double[3][];
+        for (int k = 0; k < 3; k++) {
+            lit[k] = clamp(light(TRIANGLE[k], unit(faceNormal())));
+        }
+        int checked = 0;
+        for (int y = 100; y < 600; y += 53) {
+            for (int x = 100; x < 600; x += 47) {
+                PixelReport report = inspector.inspect(InspectedScene.of(file), x, y);
+                Terms t = report.explanation();
+                if (t == null) {
+                    continue;
+                }
+                checked++;
+                String where = "pixel (" + x + ", " + y + ")";
+                assertEquals("gouraud", t.get("shading"));
+                List<Terms> vertices = t.list("vertex_colours");
+                double[] w = t.vector("weights");
+                double[] mixed = new double[3];
+                for (int k = 0; k < 3; k++) {
+                    int index = (int) vertices.get(k).number("vertex");
+                    assertArrayEquals(lit[index], vertices.get(k).vector("colour"), EPS, where + ": vertex " + index);
+                    for (int c = 0; c < 3; c++) {
+                        mixed[c] += w[k] * lit[index][c];
+                    }
+                }
+                assertEquals(1, w[0] + w[1] + w[2], EPS, where + ": weights");
+                assertArrayEquals(mixed, t.vector("interpolated"), 1e-6, where + ": weighted colours");
+                fogAndBytes(t, report, t.vector("interpolated"), where);
+            }
+        }
+        assertTrue(checked > 20, "too few lit pixels: " + checked);
+    }
+
+    @Test
+    void flatCentroidColour() throws Exception {
+        Path file = scene("flat");
+        double[] centroid = new double[3];
+        for (double[] v : TRIANGLE) {
+            for (int c = 0; c < 3; c++) {
+                centroid[c] += v[c] / 3;
+            }
+        }
+        double[] expected = clamp(light(centroid, unit(faceNormal())));
+        PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), 325, 325);
+        Terms t = report.explanation();
+        assertEquals("flat", t.get("shading"));
+        assertArrayEquals(expected, t.vector("centroid_colour"), EPS);
+        fogAndBytes(t, report, expected, "pixel (325, 325)");
+    }
+
+    @Test
+    void depthCueTerms() throws Exception {
+        Path file = dir.resolve("cued.simp");
+        Files.writeString(file, "polygon (-90, -90, -20) (90, -90, -180) (0, 90, -100)\n");
+        PixelReport report = new PixelInspector().inspect(
+                InspectedScene.cued(file, new simpview.surface.Rgb(0.2, 1, 0.6), new simpview.surface.Rgb(0.1, 0, 0.3)),
+                325, 325);
+        Terms t = report.explanation();
+        double z = t.number("z");
+        assertEquals(report.depth(), z, 0);
+        double tt = (z + 200) / 200;
+        assertEquals(tt, t.number("t"), 1e-12);
+        double[] cued = {0.1 + 0.1 * tt, tt, 0.3 + 0.3 * tt};
+        assertArrayEquals(cued, t.vector("cued"), 1e-12);
+        int[] bytes = t.bytes("final_rgb");
+        for (int c = 0; c < 3; c++) {
+            assertEquals(Math.floor(cued[c] * 255 + 0.5), bytes[c], 1, "channel " + c + " off by more than a rounding");
+        }
+    }
+
+    /** Fog's t and colour and the bytes, from the unfogged colour; the bytes are the pixel's. */
+    private static void fogAndBytes(Terms t, PixelReport report, double[] colour, String where) {
+        double z = t.number("z");
+        double[] fogged = colour.clone();
+        if (z < FOG_NEAR) {
+            double ft = z <= FOG_FAR ? 0 : (z - FOG_FAR) / (FOG_NEAR - FOG_FAR);
+            assertEquals(ft, t.terms("fog").number("t"), EPS, where + ": fog t");
+            for (int c = 0; c < 3; c++) {
+                fogged[c] = ft * colour[c] + (1 - ft) * FOG[c];
+            }
+        }
+        assertArrayEquals(fogged, t.vector("fogged"), 1e-6, where + ": fogged");
+        int[] bytes = t.bytes("final_rgb");
+        int argb = report.argb();
+        assertArrayEquals(new int[] {argb >>> 16 & 0xFF, argb >>> 8 & 0xFF, argb & 0xFF}, bytes,
+                where + ": the final bytes are not the pixel's");
+        for (int c = 0; c < 3; c++) {
+            double level = fogged[c] * 255 + 0.5;
+            // Away from a rounding tie the bytes follow from the formula alone.
+            if (Math.abs(level - Math.rint(level)) > 1e-6) {
+                assertEquals((int) Math.floor(level), bytes[c], where + ": byte " + c);
+            }
+        }
+    }
+
+    /** SPEC's I at camera-space point p with unit normal n, the scene's kd, before the clamp. */
+    private static double[] light(double[] p, double[] n) {
+        double[] v = scale(p, -1 / length(p));
+        double[] sum = {KD[0] * AMBIENT[0], KD[1] * AMBIENT[1], KD[2] * AMBIENT[2]};
+        for (double[] light : LIGHTS) {
+            double[] toLight = sub(new double[] {light[0], light[1], light[2]}, p);
+            double d = length(toLight);
+            double[] l = scale(toLight, 1 / d);
+            double nl = dot(n, l);
+            if (nl <= 0) {
+                continue;
+            }
+            double f = 1 / (light[6] + light[7] * d);
+            double[] r = sub(scale(n, 2 * nl), l);
+            double power = Math.pow(Math.max(0, dot(v, r)), P);
+            for (int c = 0; c < 3; c++) {
+                sum[c] += light[3 + c] * f * (KD[c] * nl + KS * power);
+            }
+        }
+        return sum;
+    }
+
+    private static double[] faceNormal() {
+        double[] a = sub(TRIANGLE[1], TRIANGLE[0]);
+        double[] b = sub(TRIANGLE[2], TRIANGLE[0]);
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+
+    private static double[] clamp(double[] c) {
+        return new double[] {Math.max(0, Math.min(1, c[0])), Math.max(0, Math.min(1, c[1])),
+            Math.max(0, Math.min(1, c[2]))};
+    }
+
+    private static double[] unit(double[] a) {
+        return scale(a, 1 / length(a));
+    }
+
+    private static double[] sub(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    private static double[] scale(double[] a, double s) {
+        return new double[] {a[0] * s, a[1] * s, a[2] * s};
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double length(double[] a) {
+        return Math.sqrt(dot(a, a));
+    }
+}

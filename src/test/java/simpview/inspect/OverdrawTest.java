@@ -1,0 +1,56 @@
+package simpview.inspect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.reference.RandomLitScenes;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.PageCanvas;
+
+/**
+ * For sampled pixels of random scenes, the history's written plus depth-failed
+ * entries are the overdraw count, and its depth-failed ones the failure count.
+ */
+class OverdrawTest {
+
+    @TempDir
+    Path dir;
+
+    private final ObjLibrary models = new ObjLibrary();
+    private final PixelInspector inspector = new PixelInspector(models, SceneMonitor.NONE);
+
+    @Test
+    void historyAndOverdrawAgree() throws Exception {
+        int overdrawn = 0;
+        for (long seed = 40; seed <= 47; seed++) {
+            InspectedScene lit = InspectedScene.of(RandomLitScenes.write(dir, seed));
+            InspectedScene cued = InspectedScene.of(RandomCuedScenes.write(dir, seed));
+            for (InspectedScene scene : new InspectedScene[] {lit, cued}) {
+                Overdraw.Counts both = Overdraw.counts(scene, models);
+                int[] counts = both.reached();
+                Random random = new Random(seed);
+                for (int k = 0; k < 16; k++) {
+                    int x = random.nextInt(PageCanvas.PANEL);
+                    int y = random.nextInt(PageCanvas.PANEL);
+                    PixelReport report = inspector.inspect(scene, x, y);
+                    long reached = report.history().stream().filter(e -> e.outcome() == Outcome.WRITTEN
+                            || e.outcome() == Outcome.DEPTH_FAILED).count();
+                    assertEquals(counts[y * PageCanvas.PANEL + x], reached,
+                            scene.file().getFileName() + " (" + x + ", " + y + ")\n" + report.text(true, false));
+                    long failed = report.history().stream().filter(e -> e.outcome() == Outcome.DEPTH_FAILED).count();
+                    assertEquals(both.failed()[y * PageCanvas.PANEL + x], failed,
+                            scene.file().getFileName() + " (" + x + ", " + y + ") failures");
+                    if (reached > 1) {
+                        overdrawn++;
+                    }
+                }
+            }
+        }
+        assertTrue(overdrawn > 10, "too few pixels written more than once: " + overdrawn);
+    }
+}

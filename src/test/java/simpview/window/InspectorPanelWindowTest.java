@@ -1,0 +1,91 @@
+package simpview.window;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Point;
+import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import javax.swing.JTextArea;
+import javax.swing.JViewport;
+import org.junit.jupiter.api.Test;
+import simpview.scene.simp.SceneDrawer;
+import simpview.surface.PageCanvas;
+import simpview.window.render.View;
+
+/** The inspector panel under Xvfb: I shows the pinned pixel's history, wrapped, never cut; J steps to its primitive. */
+public class InspectorPanelWindowTest extends WindowTestCase {
+
+    @Test
+    void thePinnedPixelsHistoryAndSteppingToItsPrimitive() throws Exception {
+        Files.writeString(dir.resolve("leaf.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path scene = dir.resolve("top.simp");
+        Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n"
+                + "polygon (-90, -90, -150) (90, -90, -150) (0, 90, -150)\n"
+                + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n");
+        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.awaitEdt(() -> window.status().inspectorText().contains("drawn by primitive"), "the inspector on the centre");
+        driver.press(KeyEvent.VK_P);
+        driver.press(KeyEvent.VK_I);
+        driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
+                && window.inspectorPanel().text().contains("history:"), "the panel's report");
+        String text = driver.onEdt(() -> window.inspectorPanel().text());
+        assertTrue(text.contains("drawn by primitive 2: top.simp:2 › leaf.simp:1 polygon"), text);
+        assertTrue(text.contains("history: 3 writes attempted"), text);
+        assertTrue(text.contains("depth-failed"), text);
+        assertTrue(text.contains("final_rgb"), text);
+        assertTrue(text.contains("vertices of primitive 2:"), text);
+        // Wrapped in a scrolling view that is as wide as the panel: no line runs off its right edge.
+        boolean wraps = driver.onEdt(() -> {
+            JViewport port = (JViewport) javax.swing.SwingUtilities.getAncestorOfClass(JViewport.class, textArea(window));
+            return textArea(window).getLineWrap() && textArea(window).getWidth() <= port.getWidth();
+        });
+        assertTrue(wraps, "the panel's text wraps within its width");
+
+        // J steps the drawing to the primitive that drew the pinned pixel: the second of three.
+        driver.press(KeyEvent.VK_J);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 4, leaf.simp:1"),
+                "stepping to the pixel's primitive");
+
+        // V: the overdraw overlay; the three triangles overlap at the centre, so the most is 3 writes.
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.awaitEdt(() -> !window.busy() && window.shown().facts().primitives().size() == 4, "the whole picture");
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw overlay, up to 3 writes");
+        assertTrue(driver.onEdt(() -> window.status().messageText()).contains("up to 3 writes"));
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+        // Shift+V: at the centre the farthest triangle, drawn last, lost to the two before it: at most 1 loss.
+        driver.robot().keyPress(KeyEvent.VK_SHIFT);
+        driver.press(KeyEvent.VK_V);
+        driver.robot().keyRelease(KeyEvent.VK_SHIFT);
+        driver.awaitEdt(() -> window.overdrawShownMax() == 1, "the depth-test failures, at most 1");
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+
+        // K: the back faces: only the last triangle, (60, 60) (60, 90) (90, 60), is clockwise.
+        driver.press(KeyEvent.VK_K);
+        driver.awaitEdt(() -> window.backFacesShownCount() == 1, "the back-face overlay, one polygon facing away");
+        assertTrue(driver.onEdt(() -> window.status().messageText()).contains("1 of 4 polygons"));
+        driver.press(KeyEvent.VK_K);
+        driver.awaitEdt(() -> window.backFacesShownCount() == -1, "the page again");
+
+        // I again hides the panel.
+        driver.press(KeyEvent.VK_I);
+        driver.awaitEdt(() -> !window.inspectorPanel().isShown(), "the panel hidden");
+        assertFalse(driver.onEdt(() -> window.inspectorPanel().component().isShowing()));
+    }
+
+    private static JTextArea textArea(SimpviewWindow window) {
+        return (JTextArea) ((javax.swing.JScrollPane) window.inspectorPanel().component()).getViewport().getView();
+    }
+}
