@@ -102,6 +102,11 @@ public final class CompareBatch {
         };
         return run(dir, outputs, wanted, namer, name -> {
             OptionalInt number = SubmissionNames.pageNumber(name);
+            if (number.isPresent() && SubmissionNames.namesFirstAssignment(name)) {
+                return new Match(null, "a first-assignment page by its name: compare it alone, with "
+                        + "compare " + name + " --assignment 1 --page " + number.getAsInt()
+                        + " (the batch does not compare those yet)");
+            }
             if (number.isEmpty()) {
                 return new Match(null, "no page number in the name (expected a name like page3.png)");
             }

@@ -4,6 +4,7 @@ import simpview.compare.PngFiles;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.util.Locale;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -16,6 +17,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
+import simpview.compare.PanelGridComparison;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.HeatMap;
@@ -23,7 +25,11 @@ import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
+import simpview.pages.A1Layout;
+import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
+import simpview.pages.LineTestPage;
+import simpview.pages.Page;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.Rgb;
@@ -39,6 +45,7 @@ import simpview.surface.DrawingThreads;
         footer = {"", "Examples:",
             "  simpview compare mine.png --page 6 --simp-dir course/ --diff diff.png",
             "  simpview compare pageC.png --scene course-a3/pageC.simp",
+            "  simpview compare a1-page2.png --assignment 1 --page 2",
             "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
             "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
             "  simpview compare --dir subs/ --pages 1-8 --rubric compare.json --gradescope results.json --junit results.xml --html report/",
@@ -65,6 +72,10 @@ public final class CompareCommand implements Callable<Integer> {
 
     @Option(names = "--page", paramLabel = "N", description = "compare with page N, 1 to 8")
     private Integer page;
+
+    @Option(names = "--assignment", paramLabel = "A",
+            description = "1: compare with the first assignment's page --page N (1 to 5), panel by panel; 2: the eight pages (default)")
+    private Integer assignment;
 
     @Option(names = "--scene", paramLabel = "F.simp|D",
             description = "compare with this scene drawn as a page; with --dir, a scene file for every picture "
@@ -146,6 +157,9 @@ public final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         checkOptions();
+        if (assignment != null && assignment == 1) {
+            return compareAssignment1();
+        }
         try (DrawingThreads drawing = threads.open()) {
             OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
             if (dir != null) {
@@ -184,7 +198,13 @@ public final class CompareCommand implements Callable<Integer> {
                     "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
         }
-        usage(page == null || page >= 1 && page <= Assignment2.COUNT, "--page must be 1 to " + Assignment2.COUNT + ", not " + page);
+        usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
+        boolean first = assignment != null && assignment == 1;
+        usage(!first || !batch && page != null && diff == null,
+                "--assignment 1 compares one picture with one page: give IMAGE --page N (no --dir, no --diff)");
+        int count = first ? Assignment1.COUNT : Assignment2.COUNT;
+        usage(page == null || page >= 1 && page <= count,
+                "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
         usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
     }
@@ -220,6 +240,39 @@ public final class CompareCommand implements Callable<Integer> {
             }
         }
         return report.passes() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** The first assignment's page beside the picture, panel by panel: the verdict passes when every panel does. */
+    private int compareAssignment1() {
+        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
+        }
+        PageContext context = context();
+        Page shown = Assignment1.page(page);
+        PanelGridComparison comparison;
+        try {
+            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance);
+        } catch (CompareException e) {
+            err().println("simpview compare: " + e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
+                + (shown.usesSeed() ? ", seed " + context.seed() : ""));
+        out.println("page:    top-left at x " + comparison.pageLeft() + ", y " + comparison.pageTop()
+                + " of the picture, counted from its top-left");
+        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", "within " + tolerance + "/255");
+        boolean passes = true;
+        for (int k = 0; k < panels.length; k++) {
+            PanelGridComparison.PanelShares shares = comparison.shares(k);
+            String what = (k + 1) + " " + (shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : "scene " + (k + 1));
+            out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", what, 100 * shares.identical(), 100 * shares.within());
+            passes &= 100 * shares.within() >= min;
+        }
+        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% within %d/255 (no slack)%n", passes ? "PASS" : "FAIL",
+                passes ? "reaches" : "must reach", min, tolerance);
+        return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 
     /** The rubric file read over the command line's rule, or the command line's rule alone. */

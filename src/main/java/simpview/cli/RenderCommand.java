@@ -19,6 +19,7 @@ import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.pages.Assignment2;
@@ -36,6 +37,8 @@ import simpview.surface.DrawingThreads;
         footer = {"", "Examples:",
             "  simpview render --page 3 --seed 7 --out page3.png",
             "  simpview render --all --simp-dir course/ --out-dir pages/",
+            "  simpview render --assignment 1 --page 2 --out a1-page2.png",
+            "  simpview render --assignment 1 --all --seed 7 --out-dir a1/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
             "  simpview render --scene house.simp --own-colors --out house.png",
             "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
@@ -50,7 +53,7 @@ public final class RenderCommand implements Callable<Integer> {
         @Option(names = "--page", paramLabel = "N", required = true, description = "one page, 1 to 8")
         Integer page;
 
-        @Option(names = "--all", required = true, description = "all eight pages, as page1.png ... page8.png")
+        @Option(names = "--all", required = true, description = "all eight pages, as page1.png ... page8.png (--assignment 1: a1-page1.png ... a1-page5.png)")
         boolean all;
 
         @Option(names = "--scene", paramLabel = "F.simp", required = true, description = "any scene, as a full page: lit by its own rules, or depth-cued")
@@ -74,6 +77,10 @@ public final class RenderCommand implements Callable<Integer> {
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     private What what;
+
+    @Option(names = "--assignment", paramLabel = "A",
+            description = "whose pages --page and --all mean: 1 (the first assignment's five pages) or 2 (the eight pages; default)")
+    private Integer assignment;
 
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
     private Long seed;
@@ -143,8 +150,13 @@ public final class RenderCommand implements Callable<Integer> {
             return;
         }
         boolean pages = what.scene == null;
-        usage(what.page == null || what.page >= 1 && what.page <= Assignment2.COUNT,
-                "--page must be 1 to " + Assignment2.COUNT + ", not " + what.page);
+        usage(assignment == null || assignment == 1 || assignment == 2,
+                "--assignment must be 1 or 2 (the later assignments' pages are scenes: use --scenes), not " + assignment);
+        usage(assignment == null || what.page != null || what.all, "--assignment goes with --page or --all");
+        usage(!firstAssignment() || simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
+        int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
+        usage(what.page == null || what.page >= 1 && what.page <= count,
+                "--page must be 1 to " + count + (firstAssignment() ? " for the first assignment" : "") + ", not " + what.page);
         usage(what.all ? outDir != null : out != null,
                 what.all ? "--all needs --out-dir D" : "missing --out F.png");
         usage(what.all ? out == null : outDir == null,
@@ -190,7 +202,14 @@ public final class RenderCommand implements Callable<Integer> {
         }
     }
 
+    private boolean firstAssignment() {
+        return assignment != null && assignment == 1;
+    }
+
     private int renderPage(int number) {
+        if (firstAssignment()) {
+            return write(Assignment1.render(number, context()), out);
+        }
         try {
             return write(new PageDrawing(monitor(), drawingThreads).page(number, context()).image(), out);
         } catch (SceneException e) {
@@ -200,6 +219,14 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderAll() {
+        if (firstAssignment()) {
+            for (int n = 1; n <= Assignment1.COUNT; n++) {
+                if (write(Assignment1.render(n, context()), outDir.resolve("a1-page" + n + ".png")) != ExitCode.OK) {
+                    return ExitCode.SCENE_ERROR;
+                }
+            }
+            return ExitCode.OK;
+        }
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         PageContext context = context();
         int code = ExitCode.OK;

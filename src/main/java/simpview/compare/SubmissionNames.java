@@ -17,7 +17,15 @@ public final class SubmissionNames {
 
     private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])page[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
 
+    /** "a1", "A1", "assignment1", "assignment-1" as a word of its own: the first assignment's pages. */
+    private static final Pattern FIRST_ASSIGNMENT = Pattern.compile("(?i)(?<![a-z0-9])(a|assignment[\\s_-]*)0*1(?![0-9])");
+
     private SubmissionNames() {
+    }
+
+    /** Whether a file name says it is one of the first assignment's pages, like a1-page2.png. */
+    public static boolean namesFirstAssignment(String fileName) {
+        return FIRST_ASSIGNMENT.matcher(stem(fileName)).find();
     }
 
     /** The page number in a file name, if it names one. */

@@ -41,4 +41,16 @@ public final class Colors {
     public static int blue(int argb) {
         return argb & 0xFF;
     }
+
+    /**
+     * {@code c * colour + (1 - c) * old} per channel, each channel in [0, 1]
+     * (a byte over 255), then back to a byte by {@link #toByte}: a write with
+     * coverage or opacity c over what is there. The alpha bits play no part.
+     */
+    public static int mix(int colour, int old, double c) {
+        double keep = 1 - c;
+        return pack(c * red(colour) / 255.0 + keep * red(old) / 255.0,
+                c * green(colour) / 255.0 + keep * green(old) / 255.0,
+                c * blue(colour) / 255.0 + keep * blue(old) / 255.0);
+    }
 }

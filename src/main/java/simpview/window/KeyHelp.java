@@ -12,7 +12,8 @@ public final class KeyHelp {
     static final List<Row> ROWS = List.of(
             new Row("click, →, Space, Page Down", "next page (after 8 comes 1)"),
             new Row("←, Page Up / Home, End / 1…8", "previous page / page 1, page 8 / that page"),
-            new Row("R", "new seed for pages 1–3"),
+            new Row("A", "switch assignment: the first's five pages (A1) / the eight pages (A2)"),
+            new Row("R", "new seed for the random pages (A2 1–3, A1 3–5)"),
             new Row("wheel, + / -", "zoom about the pointer (up to 32x) / in, out"),
             new Row("drag", "pan"),
             new Row("F / Z", "fit the window / 1:1"),

@@ -41,6 +41,7 @@ import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageContext;
+import simpview.pages.Assignment1;
 import simpview.pages.PageStepper;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
@@ -64,6 +65,8 @@ public final class SimpviewWindow {
     private int pinnedY = -1;
     private final StatusStrip status = new StatusStrip(this::cancel);
     private final PageStepper stepper;
+    /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
+    private int assignment1Page;
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
@@ -149,7 +152,7 @@ public final class SimpviewWindow {
     private final class Gestures implements PointerGestures.Actions {
         @Override
         public void click() {
-            stepTo(stepper.next());
+            next();
         }
 
         @Override
@@ -185,14 +188,15 @@ public final class SimpviewWindow {
     }
 
     private void bindKeys() {
-        bind("next", () -> stepTo(stepper.next()), "RIGHT", "SPACE", "PAGE_DOWN", "KP_RIGHT");
-        bind("previous", () -> stepTo(stepper.previous()), "LEFT", "PAGE_UP", "KP_LEFT");
-        bind("first", () -> stepTo(stepper.first()), "HOME");
-        bind("last", () -> stepTo(stepper.last()), "END");
+        bind("next", this::next, "RIGHT", "SPACE", "PAGE_DOWN", "KP_RIGHT");
+        bind("previous", this::previous, "LEFT", "PAGE_UP", "KP_LEFT");
+        bind("first", () -> end(true), "HOME");
+        bind("last", () -> end(false), "END");
         for (int n = 1; n <= Assignment2.COUNT; n++) {
             int page = n;
-            bind("page" + n, () -> stepTo(stepper.jump(page)), String.valueOf(n), "NUMPAD" + n);
+            bind("page" + n, () -> jump(page), String.valueOf(n), "NUMPAD" + n);
         }
+        bind("assignment", this::switchAssignment, "A");
         bind("seed", this::newSeed, "R");
         bind("cancel", this::cancel, "ESCAPE");
         bind("fit", () -> zoom(ZoomPan::fit), "F");
@@ -554,7 +558,60 @@ public final class SimpviewWindow {
         });
     }
 
+    /** The next page of the assignment on show (after its last comes its first). */
+    void next() {
+        if (assignment1Page > 0) {
+            showAssignment1(assignment1Page % Assignment1.COUNT + 1);
+        } else {
+            stepTo(stepper.next());
+        }
+    }
+
+    void previous() {
+        if (assignment1Page > 0) {
+            showAssignment1((assignment1Page + Assignment1.COUNT - 2) % Assignment1.COUNT + 1);
+        } else {
+            stepTo(stepper.previous());
+        }
+    }
+
+    /** The first or the last place of the assignment on show. */
+    private void end(boolean first) {
+        if (assignment1Page > 0) {
+            showAssignment1(first ? 1 : Assignment1.COUNT);
+        } else {
+            stepTo(first ? stepper.first() : stepper.last());
+        }
+    }
+
+    /** Page n of the assignment on show. */
+    private void jump(int n) {
+        if (assignment1Page == 0) {
+            stepTo(stepper.jump(n));
+        } else if (n <= Assignment1.COUNT) {
+            showAssignment1(n);
+        } else {
+            status.say("The first assignment has pages 1 to " + Assignment1.COUNT + "; A switches to the eight pages.");
+        }
+    }
+
+    /** A: from the eight pages (and scenes) to the first assignment's five pages and back, each where it was left. */
+    void switchAssignment() {
+        if (assignment1Page > 0) {
+            stepTo(stepper.current());
+        } else {
+            showAssignment1(1);
+        }
+    }
+
+    private void showAssignment1(int page) {
+        forgetViewState();
+        assignment1Page = page;
+        show(new View.OfAssignment1Page(page));
+    }
+
     private void stepTo(int position) {
+        assignment1Page = 0;
         forgetViewState();
         show(viewAt(position));
     }
@@ -602,6 +659,7 @@ public final class SimpviewWindow {
     }
 
     void openScene(Path file) {
+        assignment1Page = 0;
         forgetViewState();
         show(new View.OfScene(file));
     }
@@ -614,6 +672,8 @@ public final class SimpviewWindow {
         }
         options = options.withSeed(seed);
         if (requested() instanceof View.OfPage page && Assignment2.page(page.number()).usesSeed()) {
+            show(page);
+        } else if (requested() instanceof View.OfAssignment1Page page && Assignment1.page(page.number()).usesSeed()) {
             show(page);
         } else {
             status.say("Seed is now " + seed + ": it changes pages 1–3 only, not this one.");

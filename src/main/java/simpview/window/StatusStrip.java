@@ -135,6 +135,9 @@ public final class StatusStrip {
     }
 
     private static String describe(View view) {
+        if (view instanceof View.OfAssignment1Page page) {
+            return "assignment 1, page " + page.number();
+        }
         return view instanceof View.OfPage page
                 ? "page " + page.number()
                 : ((View.OfScene) view).file().getFileName().toString();

@@ -31,15 +31,15 @@ public class CourseA3PicturesCompareTest {
     @ParameterizedTest(name = "{0}")
     @CsvSource({
         // scene, the course's picture, the share within 8/255 with slack measured here (percent)
-        "pageA.simp, pageA.png, 99.97",
-        "pageB.simp, pageB.png, 99.97",
+        "pageA.simp, pageA.png, 99.98",
+        "pageB.simp, pageB.png, 99.99",
         "pageC.simp, pageC.png, 99.90",
         "pageD.simp, pageD.png, 99.99",
         "pageE.simp, pageE.png, 99.93",
         "pageF.simp, pageF.png, 99.84",
         "pageG.simp, pageG.png, 99.87",
         "pageH.simp, pageH.png, 99.98",
-        "pageI.simp, pageI.png, 99.93",
+        "pageI.simp, pageI.png, 99.97",
         "tomsPageJ.simp, pageJ_tomsPageJ.png, 100.00"})
     void sceneAgainstTheCoursesPicture(String scene, String pictureName, double measured) throws Exception {
         Path file = CourseFiles.require("course-simp-a3/" + scene);

@@ -34,4 +34,15 @@ class SubmissionNamesTest {
         assertEquals(Optional.empty(), SubmissionNames.sceneName("pageAB.png", a3), "pageA inside a longer word");
         assertEquals(Optional.empty(), SubmissionNames.sceneName("cubes.png", a3));
     }
+
+    @Test
+    void namesOfTheFirstAssignmentsPages() {
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.namesFirstAssignment("a1-page2.png"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.namesFirstAssignment("bob_A1_page5.PNG"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.namesFirstAssignment("assignment1-page3.png"));
+        org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.namesFirstAssignment("page2.png"));
+        org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.namesFirstAssignment("a12-page2.png"));
+        org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.namesFirstAssignment("data1-page2.png"));
+        assertEquals(OptionalInt.of(2), SubmissionNames.pageNumber("a1-page2.png"));
+    }
 }

@@ -7,7 +7,7 @@ import java.util.Arrays;
  * The reference's panel, z-buffer and rasterizers, the plain way: every
  * pixel centre of a projected triangle's bounding box is tested with
  * barycentric weights (top-left rule on ties); lines are DDA between the
- * pixels holding their endpoints. Every attribute slot of a vertex is
+ * rounded endpoints, from the smaller-x (or smaller-y) end. Every attribute slot of a vertex is
  * interpolated perspective-correctly (a/z and 1/z linear on screen; linear
  * in the parallel view). The z-buffer holds camera-space z (slot 2), starts
  * at -infinity and takes only strictly nearer (greater) writes.
@@ -74,24 +74,40 @@ final class RefRaster {
         }
     }
 
-    /** DDA from the pixel holding a to the pixel holding b, both included, minor coordinate rounded. */
-    void line(RefView view, double[] a, double[] b, Fragment fragment) {
-        double x0 = Math.floor(view.panelX(a));
-        double y0 = Math.floor(view.panelY(a));
-        double x1 = Math.floor(view.panelX(b));
-        double y1 = Math.floor(view.panelY(b));
+    /**
+     * DDA as SPEC words it: endpoints rounded to the nearest pixel, from the
+     * smaller-x end (x-major) or the smaller-y end (y-major), the minor
+     * coordinate adding the slope per step, rounded half up; attributes
+     * perspective-correct from the start end to the other.
+     */
+    void line(RefView view, double[] p, double[] q, Fragment fragment) {
+        double x0 = Math.floor(view.panelX(p) + 0.5);
+        double y0 = Math.floor(view.panelY(p) + 0.5);
+        double x1 = Math.floor(view.panelX(q) + 0.5);
+        double y1 = Math.floor(view.panelY(q) + 0.5);
+        boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
+        boolean swap = xMajor ? x1 < x0 : y1 < y0;
+        double[] a = swap ? q : p;
+        double[] b = swap ? p : q;
+        double ax = swap ? x1 : x0;
+        double ay = swap ? y1 : y0;
+        double bx = swap ? x0 : x1;
+        double by = swap ? y0 : y1;
         double qa = view.weight(a);
         double qb = view.weight(b);
-        double steps = Math.max(Math.abs(x1 - x0), Math.abs(y1 - y0));
+        double steps = xMajor ? bx - ax : by - ay;
+        double slope = steps == 0 ? 0 : (xMajor ? by - ay : bx - ax) / steps;
+        double minor = xMajor ? ay : ax;
         double[] attributes = new double[a.length];
-        for (int k = 0; k <= steps; k++) {
+        for (int k = 0; k <= steps; k++, minor += slope) {
             double t = steps == 0 ? 0 : k / steps;
             double wa = (1 - t) * qa;
             double wb = t * qb;
             for (int i = 0; i < attributes.length; i++) {
                 attributes[i] = (wa * a[i] + wb * b[i]) / (wa + wb);
             }
-            plot((int) Math.round(x0 + (x1 - x0) * t), (int) Math.round(y0 + (y1 - y0) * t), attributes, fragment);
+            double m = Math.floor(minor + 0.5);
+            plot((int) (xMajor ? ax + k : m), (int) (xMajor ? m : ay + k), attributes, fragment);
         }
     }
 

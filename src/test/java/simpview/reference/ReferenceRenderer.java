@@ -162,17 +162,31 @@ final class ReferenceRenderer {
         return w > 0 || (w == 0 && (dy < 0 || (dy == 0 && dx < 0)));
     }
 
-    /** DDA between the pixels holding the endpoints, as SPEC words it. */
+    /**
+     * DDA as SPEC words it: endpoints rounded to the nearest pixel, from the
+     * smaller-x end (x-major) or the smaller-y end (y-major), the minor
+     * coordinate adding the slope per step, rounded half up.
+     */
     private void line(double[] p, double[] q) {
-        double x0 = Math.floor(p[0]);
-        double y0 = Math.floor(p[1]);
-        double x1 = Math.floor(q[0]);
-        double y1 = Math.floor(q[1]);
-        double steps = Math.max(Math.abs(x1 - x0), Math.abs(y1 - y0));
-        for (int k = 0; k <= steps; k++) {
+        double x0 = Math.floor(p[0] + 0.5);
+        double y0 = Math.floor(p[1] + 0.5);
+        double x1 = Math.floor(q[0] + 0.5);
+        double y1 = Math.floor(q[1] + 0.5);
+        boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
+        boolean swap = xMajor ? x1 < x0 : y1 < y0;
+        double[] a = swap ? q : p;
+        double[] b = swap ? p : q;
+        double ax = swap ? x1 : x0;
+        double ay = swap ? y1 : y0;
+        double bx = swap ? x0 : x1;
+        double by = swap ? y0 : y1;
+        double steps = xMajor ? bx - ax : by - ay;
+        double slope = steps == 0 ? 0 : (xMajor ? by - ay : bx - ax) / steps;
+        double minor = xMajor ? ay : ax;
+        for (int k = 0; k <= steps; k++, minor += slope) {
             double t = steps == 0 ? 0 : k / steps;
-            plot((int) Math.round(x0 + (x1 - x0) * t), (int) Math.round(y0 + (y1 - y0) * t),
-                    p[2] + (q[2] - p[2]) * t);
+            double m = Math.floor(minor + 0.5);
+            plot((int) (xMajor ? ax + k : m), (int) (xMajor ? m : ay + k), a[2] + (b[2] - a[2]) * t);
         }
     }
 

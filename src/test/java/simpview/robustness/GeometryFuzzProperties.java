@@ -146,16 +146,27 @@ class GeometryFuzzProperties {
             assertEquals(0, w.size(), "a line with a non-finite end draws nothing");
             return;
         }
-        int px = (int) Math.floor(p.x());
-        int py = (int) Math.floor(p.y());
-        int qx = (int) Math.floor(q.x());
-        int qy = (int) Math.floor(q.y());
-        boolean bothOn = inside(p) && inside(q);
+        // SPEC: the ends rounded to the nearest pixel, drawn from the smaller x
+        // (x-major) or the smaller y (y-major).
+        int px = (int) Math.floor(p.x() + 0.5);
+        int py = (int) Math.floor(p.y() + 0.5);
+        int qx = (int) Math.floor(q.x() + 0.5);
+        int qy = (int) Math.floor(q.y() + 0.5);
+        boolean xMajor = Math.abs(qx - px) >= Math.abs(qy - py);
+        if (xMajor ? qx < px : qy < py) {
+            int x = px;
+            int y = py;
+            px = qx;
+            py = qy;
+            qx = x;
+            qy = y;
+        }
+        boolean bothOn = px >= 0 && px < W && py >= 0 && py < H && qx >= 0 && qx < W && qy >= 0 && qy < H;
         if (bothOn) {
             assertEquals(Math.max(Math.abs(qx - px), Math.abs(qy - py)) + 1, w.size(), "pixels on the line");
-            assertEquals(px + "," + py, w.get(0).x() + "," + w.get(0).y(), "first pixel holds the first end");
+            assertEquals(px + "," + py, w.get(0).x() + "," + w.get(0).y(), "first pixel: the start end's");
             assertEquals(qx + "," + qy, w.get(w.size() - 1).x() + "," + w.get(w.size() - 1).y(),
-                    "last pixel holds the last end");
+                    "last pixel: the other end's");
             for (int i = 1; i < w.size(); i++) {
                 int dx = Math.abs(w.get(i).x() - w.get(i - 1).x());
                 int dy = Math.abs(w.get(i).y() - w.get(i - 1).y());

@@ -124,7 +124,8 @@ class LitScenesTest {
         PageCanvas canvas = draw("ambient 0 0 0", "surface 0 1 0", "wire",
                 "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)", "line (-80, 80, -100) (80, 80, -100)");
         assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, 325, (int) (180 * 3.25))));
-        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, (int) (50 * 3.25), (int) (50 * 3.25))));
+        // The triangle's bottom-left corner is at panel (162.5, 162.5): the lines' rounded end is (163, 163).
+        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, 163, 163)));
     }
 
     @Test

@@ -91,7 +91,7 @@ class DecoratorTest {
         draw(triangle(-150, 0.9), canvas.depthCued(Rgb.WHITE, Rgb.BLACK));
         assertEquals(0xFF404040, canvas.panel().getPixel(300, 250));
         canvas.clear();
-        new DdaLineRenderer().drawLine(Vertex.of(10.5, 10.5, -150), Vertex.of(600.5, 10.5, -150),
+        new DdaLineRenderer().drawLine(Vertex.of(10, 10, -150), Vertex.of(600, 10, -150),
                 canvas.depthCued(Rgb.GREEN, Rgb.BLACK));
         assertEquals(0xFF004000, canvas.panel().getPixel(300, 10));
     }

@@ -1,5 +1,8 @@
 package simpview.window.instruments;
 
+import simpview.pages.A1Pixel;
+import simpview.window.render.View;
+
 import simpview.window.render.PageFacts;
 import simpview.window.render.RenderedView;
 
@@ -41,6 +44,11 @@ public final class Inspector {
         }
         int rgb = view.image().getRGB(ix, iy);
         String colour = colour(rgb);
+        if (view.view() instanceof View.OfAssignment1Page page) {
+            String facts = A1Pixel.describe(page.number(), view.seed(), ix, iy);
+            return facts == null ? "margin (image " + ix + ", " + iy + ") · " + colour
+                    : facts.replaceFirst(" · ", " · " + colour + " · ");
+        }
         if (!inPanel(ix, iy)) {
             return "margin (image " + ix + ", " + iy + ") · " + colour;
         }

@@ -16,6 +16,7 @@ import simpview.pages.PageContext;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.pages.PageRenderer;
+import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
@@ -154,6 +155,9 @@ public final class RenderJob implements SceneMonitor {
         try {
             if (view instanceof View.OfPage page) {
                 renderer.render(page.number(), context);
+            } else if (view instanceof View.OfAssignment1Page page) {
+                canvas.clear();
+                Assignment1.page(page.number()).draw(canvas, context);
             } else {
                 canvas.clear();
                 drawer.draw(((View.OfScene) view).file(), canvas,
@@ -194,6 +198,9 @@ public final class RenderJob implements SceneMonitor {
     private Path topFile() {
         if (view instanceof View.OfScene scene) {
             return scene.file();
+        }
+        if (view instanceof View.OfAssignment1Page) {
+            return null;
         }
         return Assignment2.page(((View.OfPage) view).number()) instanceof ScenePage page ? page.file(context) : null;
     }

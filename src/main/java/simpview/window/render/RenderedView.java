@@ -2,7 +2,9 @@ package simpview.window.render;
 
 import java.awt.image.BufferedImage;
 import java.util.List;
+import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
+import simpview.pages.Page;
 
 /**
  * A finished picture, ready for the screen.
@@ -27,6 +29,12 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
             title = Assignment2.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
             return error == null ? title : title + " — error";
         }
+        if (view instanceof View.OfAssignment1Page page) {
+            Page shownPage = Assignment1.page(page.number());
+            String title = "simpview — assignment 1, page " + page.number() + "/" + Assignment1.COUNT + ": "
+                    + shownPage.title() + (shownPage.usesSeed() ? " — seed " + seed : "");
+            return error == null ? title : title + " — error";
+        }
         String title = "simpview — scene: " + ((View.OfScene) view).file().getFileName();
         return error == null ? title : title + " — error";
     }
@@ -35,6 +43,9 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
     public String suggestedFileName() {
         if (view instanceof View.OfPage page) {
             return "page" + page.number() + (Assignment2.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+        }
+        if (view instanceof View.OfAssignment1Page page) {
+            return "a1-page" + page.number() + (Assignment1.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
         }
         String name = ((View.OfScene) view).file().getFileName().toString();
         return name.replaceFirst("\\.simp$", "") + ".png";

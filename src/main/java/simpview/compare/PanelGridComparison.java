@@ -1,0 +1,125 @@
+package simpview.compare;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+
+/**
+ * A picture of a page of several square panels (the first assignment's four
+ * 300x300 ones) beside simpview's page, panel by panel. The page is found
+ * in the picture by its frames: a place where the one-pixel ring just outside
+ * each panel is white while the panel's own outermost pixels are mostly dark
+ * (a 750x750 page, or a window capture such as the course's, where the page
+ * starts at (1, 31)). Shares are exact, without slack: which pixels a line
+ * drawer lights is what is being compared.
+ */
+public final class PanelGridComparison {
+
+    /** A panel's top-left pixel and side, in page coordinates (rows down). */
+    public record Panel(int left, int top, int size) {
+    }
+
+    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel. */
+    public record PanelShares(double identical, double within) {
+    }
+
+    private final int pageLeft;
+    private final int pageTop;
+    private final PanelShares[] shares;
+
+    private PanelGridComparison(int pageLeft, int pageTop, PanelShares[] shares) {
+        this.pageLeft = pageLeft;
+        this.pageTop = pageTop;
+        this.shares = shares;
+    }
+
+    /** Where the page's top-left pixel is in the picture. */
+    public int pageLeft() {
+        return pageLeft;
+    }
+
+    public int pageTop() {
+        return pageTop;
+    }
+
+    /** Panel k's shares, k from 0. */
+    public PanelShares shares(int k) {
+        return shares[k];
+    }
+
+    /** Reads the picture, finds the page in it and compares each panel with simpview's page. */
+    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance)
+            throws CompareException {
+        PngCodec.Pixels theirs = Picture.readPixels(picture);
+        int page = ours.getWidth();
+        int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
+        int[] mine = Rasters.rgb(ours);
+        PanelShares[] shares = new PanelShares[panels.length];
+        for (int k = 0; k < panels.length; k++) {
+            Panel p = panels[k];
+            long identical = 0;
+            long within = 0;
+            for (int y = 0; y < p.size(); y++) {
+                for (int x = 0; x < p.size(); x++) {
+                    int a = mine[(p.top() + y) * page + p.left() + x];
+                    int b = theirs.rgb()[(at[1] + p.top() + y) * theirs.width() + at[0] + p.left() + x];
+                    int d = Rasters.distance(a, b);
+                    identical += d == 0 ? 1 : 0;
+                    within += d <= tolerance ? 1 : 0;
+                }
+            }
+            double n = (double) p.size() * p.size();
+            shares[k] = new PanelShares(identical / n, within / n);
+        }
+        return new PanelGridComparison(at[0], at[1], shares);
+    }
+
+    /** The first place (rows first, then columns) where every panel is framed; a clear error when there is none. */
+    static int[] find(int[] rgb, int width, int height, int page, Panel[] panels, String name) throws CompareException {
+        for (int top = 0; top + page <= height; top++) {
+            for (int left = 0; left + page <= width; left++) {
+                if (framed(rgb, width, left, top, panels)) {
+                    return new int[] {left, top};
+                }
+            }
+        }
+        throw new CompareException("no page of " + panels.length + " panels of " + panels[0].size() + "x"
+                + panels[0].size() + " found in " + name + " (" + width + "x" + height + "): each panel needs a white "
+                + "ring around it and a mostly dark edge");
+    }
+
+    private static boolean framed(int[] rgb, int width, int left, int top, Panel[] panels) {
+        for (Panel p : panels) {
+            int x0 = left + p.left();
+            int y0 = top + p.top();
+            int s = p.size();
+            if (x0 < 1 || y0 < 1) {
+                return false;
+            }
+            int dark = 0;
+            int samples = 0;
+            for (int i = 0; i < s; i += 5) {
+                if (!white(rgb[(y0 - 1) * width + x0 + i]) || !white(rgb[(y0 + i) * width + x0 - 1])
+                        || !white(rgb[(y0 + s) * width + x0 + i]) || !white(rgb[(y0 + i) * width + x0 + s])) {
+                    return false;
+                }
+                dark += dark(rgb[y0 * width + x0 + i]) ? 1 : 0;
+                dark += dark(rgb[(y0 + i) * width + x0]) ? 1 : 0;
+                dark += dark(rgb[(y0 + s - 1) * width + x0 + i]) ? 1 : 0;
+                dark += dark(rgb[(y0 + i) * width + x0 + s - 1]) ? 1 : 0;
+                samples += 4;
+            }
+            if (2 * dark < samples) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean white(int rgb) {
+        return Rasters.distance(rgb, 0xFFFFFF) <= 16;
+    }
+
+    private static boolean dark(int rgb) {
+        return Rasters.distance(rgb, 0) <= 64;
+    }
+}

@@ -1,0 +1,128 @@
+package simpview.pages;
+
+import java.util.Locale;
+import simpview.geometry.Vertex;
+import simpview.raster.AntialiasedLineRenderer;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.raster.LineRenderer;
+import simpview.surface.Drawable;
+
+/**
+ * What drew one pixel of a first-assignment page, for the inspector: its
+ * panel and the panel's drawer, and the last line (or triangle) that wrote
+ * it, with its rounded endpoints; for an antialiased pixel, its distance
+ * from that line and the coverage the handout's disc gives it. Worked out by
+ * drawing the panel again onto a probe that watches the one pixel.
+ */
+public final class A1Pixel {
+
+    private A1Pixel() {
+    }
+
+    /** The inspector's words for image pixel (ix, iy) of the first assignment's page, or null outside its panels. */
+    public static String describe(int page, long seed, int ix, int iy) {
+        int panel = A1Layout.panelAt(ix, iy);
+        if (panel == 0) {
+            return null;
+        }
+        int x = ix - A1Layout.left(panel);
+        int y = A1Layout.top(panel) + A1Layout.PANEL - 1 - iy;
+        String where = String.format(Locale.ROOT, "panel %d, x %d, y %d", panel, x, y);
+        Page shown = Assignment1.page(page);
+        if (shown instanceof LineTestPage lines) {
+            return where + " · " + LineTestPage.DRAWERS[panel - 1] + " · " + line(lines.lines(seed), panel, x, y);
+        }
+        return where + " · " + triangle(new A1Polygons(seed), panel, x, y,
+                ((PolygonTestPage) shown).ghost() ? "ghost (white, opacity 0.14)" : "filled");
+    }
+
+    private static String line(A1Lines set, int panel, int x, int y) {
+        Probe probe = new Probe(x, y);
+        LineRenderer drawer = LineTestPage.drawer(panel);
+        int last = -1;
+        int count = 0;
+        for (int i = 0; i < set.count(); i++) {
+            probe.hit = false;
+            drawer.drawLine(set.numbers(), A1Lines.from(i), A1Lines.to(i), probe);
+            if (probe.hit) {
+                last = i;
+                count++;
+            }
+        }
+        if (last < 0) {
+            return "no line drew it (background)";
+        }
+        Vertex p = set.start(last);
+        Vertex q = set.end(last);
+        double px = Math.floor(p.x() + 0.5);
+        double py = Math.floor(p.y() + 0.5);
+        double qx = Math.floor(q.x() + 0.5);
+        double qy = Math.floor(q.y() + 0.5);
+        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
+                "line %d of %d, (%.0f, %.0f) to (%.0f, %.0f)", last + 1, set.count(), px, py, qx, qy));
+        if (count > 1) {
+            sb.append(String.format(Locale.ROOT, ", the last of %d lines here", count));
+        }
+        if (panel == 4) {
+            double length = Math.hypot(qx - px, qy - py);
+            double distance = length == 0 ? Math.abs(y - py)
+                    : Math.abs((x - px) * (qy - py) - (y - py) * (qx - px)) / length;
+            sb.append(String.format(Locale.ROOT, " · distance %.3f, coverage %.3f", distance,
+                    AntialiasedLineRenderer.coverage(distance)));
+        }
+        return sb.toString();
+    }
+
+    private static String triangle(A1Polygons scenes, int panel, int x, int y, String how) {
+        Probe probe = new Probe(x, y);
+        FilledPolygonRenderer fill = new FilledPolygonRenderer();
+        double[] n = scenes.scene(panel);
+        int last = -1;
+        int count = 0;
+        for (int i = 0; i < scenes.count(panel); i++) {
+            probe.hit = false;
+            fill.drawPolygon(n, A1Polygons.at(i), probe);
+            if (probe.hit) {
+                last = i;
+                count++;
+            }
+        }
+        if (last < 0) {
+            return how + " · no triangle drew it (background)";
+        }
+        return String.format(Locale.ROOT, "%s · triangle %d of %d%s", how, last + 1, scenes.count(panel),
+                count > 1 ? ", the last of " + count + " here" : "");
+    }
+
+    /** A 300x300 surface that keeps nothing but whether one pixel was written. */
+    private static final class Probe implements Drawable {
+        private final int x;
+        private final int y;
+        boolean hit;
+
+        Probe(int x, int y) {
+            this.x = x;
+            this.y = y;
+        }
+
+        @Override
+        public int width() {
+            return A1Layout.PANEL;
+        }
+
+        @Override
+        public int height() {
+            return A1Layout.PANEL;
+        }
+
+        @Override
+        public void setPixel(int px, int py, double z, int argb) {
+            hit |= px == x && py == y;
+        }
+
+        @Override
+        public int getPixel(int px, int py) {
+            return 0;
+        }
+    }
+}

@@ -1,0 +1,45 @@
+package simpview.pages;
+
+import java.awt.image.BufferedImage;
+import java.util.List;
+import simpview.surface.PageCanvas;
+
+/** The first assignment's five pages (SPEC Part 3). Page n is {@code all().get(n - 1)}. */
+public final class Assignment1 {
+
+    public static final int COUNT = 5;
+
+    private static final List<Page> ALL = List.of(
+            LineTestPage.starburst(),
+            LineTestPage.parallelogram(),
+            LineTestPage.random(),
+            PolygonTestPage.filled(),
+            PolygonTestPage.ghosts());
+
+    private Assignment1() {
+    }
+
+    public static List<Page> all() {
+        return ALL;
+    }
+
+    /** Page n, 1-based. */
+    public static Page page(int number) {
+        if (number < 1 || number > COUNT) {
+            throw new IllegalArgumentException("the first assignment has no page " + number + "; its pages are 1 to " + COUNT);
+        }
+        return ALL.get(number - 1);
+    }
+
+    /** Page n drawn on a fresh canvas: its pictures read no files, so it cannot fail. */
+    public static BufferedImage render(int number, PageContext context) {
+        Page page = page(number);
+        PageCanvas canvas = new PageCanvas();
+        try {
+            page.draw(canvas, context);
+        } catch (simpview.scene.SceneException e) {
+            throw new IllegalStateException("the first assignment's pages read no files", e);
+        }
+        return canvas.image();
+    }
+}

@@ -1,0 +1,82 @@
+package simpview.pages;
+
+import java.util.function.LongFunction;
+import simpview.raster.AlternatingLineRenderer;
+import simpview.raster.AntialiasedLineRenderer;
+import simpview.raster.BresenhamLineRenderer;
+import simpview.raster.DdaLineRenderer;
+import simpview.raster.LineRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+
+/**
+ * One of the first assignment's line pages (SPEC Part 3, pages 1 to 3): the
+ * same lines on all four panels, each panel with its drawer: 1 DDA,
+ * 2 Bresenham, 3 alternating (DDA first), 4 antialiased.
+ */
+public final class LineTestPage implements Page {
+
+    /** What draws panel k (1..4), as the inspector and the docs name it. */
+    public static final String[] DRAWERS = {"DDA", "Bresenham", "alternating DDA / Bresenham", "antialiased"};
+
+    private final String title;
+    private final boolean seeded;
+    private final LongFunction<A1Lines> lines;
+
+    private LineTestPage(String title, boolean seeded, LongFunction<A1Lines> lines) {
+        this.title = title;
+        this.seeded = seeded;
+        this.lines = lines;
+    }
+
+    public static LineTestPage starburst() {
+        return new LineTestPage("Starburst", false, seed -> A1Lines.starburst());
+    }
+
+    public static LineTestPage parallelogram() {
+        return new LineTestPage("Parallelogram", false, seed -> A1Lines.parallelogram());
+    }
+
+    public static LineTestPage random() {
+        return new LineTestPage("Random lines", true, A1Lines::random);
+    }
+
+    @Override
+    public String title() {
+        return title;
+    }
+
+    @Override
+    public boolean usesSeed() {
+        return seeded;
+    }
+
+    /** The page's lines for this seed. */
+    public A1Lines lines(long seed) {
+        return lines.apply(seed);
+    }
+
+    /** A fresh drawer for panel k (1..4); the alternating one counts from its first line. */
+    public static LineRenderer drawer(int panel) {
+        return switch (panel) {
+            case 1 -> new DdaLineRenderer();
+            case 2 -> new BresenhamLineRenderer();
+            case 3 -> AlternatingLineRenderer.ddaThenBresenham();
+            case 4 -> new AntialiasedLineRenderer();
+            default -> throw new IllegalArgumentException("panels are 1 to 4, not " + panel);
+        };
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        Drawable[] panels = A1Layout.paint(canvas);
+        A1Lines set = lines(context.seed());
+        double[] n = set.numbers();
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            LineRenderer drawer = drawer(k);
+            for (int i = 0; i < set.count(); i++) {
+                drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panels[k - 1]);
+            }
+        }
+    }
+}

@@ -1,0 +1,58 @@
+package simpview.pages;
+
+import simpview.raster.FilledPolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.GhostWritingDrawable;
+import simpview.surface.PageCanvas;
+
+/**
+ * The first assignment's pages 4 and 5 (SPEC Part 3): the four scenes of
+ * {@link A1Polygons}, filled by Part 1's rule (rows sampled at integer y:
+ * {@link A1Polygons#ROW_SHIFT}), each triangle its random
+ * colour (page 4), or every triangle white at opacity 0.14 through a
+ * {@link GhostWritingDrawable} (page 5, the same geometry and seed).
+ */
+public final class PolygonTestPage implements Page {
+
+    private final boolean ghost;
+
+    private PolygonTestPage(boolean ghost) {
+        this.ghost = ghost;
+    }
+
+    public static PolygonTestPage filled() {
+        return new PolygonTestPage(false);
+    }
+
+    public static PolygonTestPage ghosts() {
+        return new PolygonTestPage(true);
+    }
+
+    public boolean ghost() {
+        return ghost;
+    }
+
+    @Override
+    public String title() {
+        return ghost ? "Ghost polygons (white, opacity 0.14)" : "Filled polygons";
+    }
+
+    @Override
+    public boolean usesSeed() {
+        return true;
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        Drawable[] panels = A1Layout.paint(canvas);
+        A1Polygons scenes = new A1Polygons(context.seed());
+        FilledPolygonRenderer fill = new FilledPolygonRenderer();
+        for (int k = 1; k <= A1Polygons.SCENES; k++) {
+            Drawable target = ghost ? new GhostWritingDrawable(panels[k - 1]) : panels[k - 1];
+            double[] n = scenes.scene(k);
+            for (int i = 0; i < scenes.count(k); i++) {
+                fill.drawPolygon(n, A1Polygons.at(i), target);
+            }
+        }
+    }
+}

@@ -1,0 +1,39 @@
+package simpview.surface;
+
+/**
+ * The first assignment's ghost (SPEC Part 3, page 5): every write, whatever
+ * its colour, makes the pixel full white at opacity {@value #OPACITY}, each
+ * channel {@code 0.14 * 1 + 0.86 * old}, never through the alpha bits.
+ * Depth is passed on unchanged.
+ */
+public final class GhostWritingDrawable extends DrawableDecorator {
+
+    public static final double OPACITY = 0.14;
+
+    /** What a ghost write makes of each old channel byte: the same arithmetic, done once per byte. */
+    private static final int[] AFTER = new int[256];
+
+    static {
+        for (int level = 0; level < 256; level++) {
+            AFTER[level] = Colors.red(Colors.mix(Colors.WHITE, level << 16, OPACITY));
+        }
+    }
+
+    public GhostWritingDrawable(Drawable delegate) {
+        super(delegate);
+    }
+
+    @Override
+    public void setPixel(int x, int y, double z, int argb) {
+        int old = delegate.getPixel(x, y);
+        delegate.setPixel(x, y, z, 0xFF000000 | AFTER[Colors.red(old)] << 16 | AFTER[Colors.green(old)] << 8
+                | AFTER[Colors.blue(old)]);
+    }
+
+    @Override
+    public void fillSpan(Span span) {
+        for (int x = span.x0; x < span.x1; x++) {
+            setPixel(x, span.y, span.zAt(x), span.argbAt(x));
+        }
+    }
+}

@@ -1,0 +1,65 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.testing.CourseFiles;
+
+/** {@code compare --assignment 1}: the page found in a picture, and shares panel by panel. */
+class Assignment1CompareTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void ourOwnPageAgreesEverywhere() {
+        Path page = dir.resolve("a1-page3.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "3", "--seed", "5", "--out", page.toString()).exitCode());
+        CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "3", "--seed", "5");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertTrue(run.out().contains("page:    top-left at x 0, y 0"), run.out());
+        assertTrue(run.out().contains("2 Bresenham                             100.00 %     100.00 %"), run.out());
+        // Another seed's lines do not agree.
+        CliRun other = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "3", "--seed", "6");
+        assertEquals(ExitCode.SCENE_ERROR, other.exitCode());
+        assertTrue(other.out().contains("FAIL"), other.out());
+    }
+
+    @Test
+    void theCoursesCaptureIsFoundAndJudgedPanelByPanel() {
+        Path picture = CourseFiles.require("reference/images/a1/page2.png");
+        CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "2");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertTrue(run.out().contains("page:    top-left at x 1, y 31"), run.out());
+        assertTrue(run.out().contains("4 antialiased                           100.00 %     100.00 %"), run.out());
+        CliRun starburst = CliRun.of("compare", CourseFiles.require("reference/images/a1/page1.png").toString(),
+                "--assignment", "1", "--page", "1");
+        assertTrue(starburst.out().contains("2 Bresenham                              96.62 %      96.62 %"), starburst.out());
+        assertEquals(ExitCode.SCENE_ERROR, starburst.exitCode(), "the Bresenham panel is below 99 %");
+    }
+
+    @Test
+    void aPictureWithoutTheFourPanelsIsRefusedClearly() {
+        Path page = dir.resolve("page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "1", "--out", page.toString()).exitCode());
+        CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().contains("no page of 4 panels of 300x300 found in " + page), run.err());
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "6").exitCode());
+    }
+
+    /** A batch of the eight pages does not take a1-page2.png for page 2: it says how to compare it. */
+    @Test
+    void aBatchOfTheEightPagesSetsAFirstAssignmentPageAside() throws Exception {
+        Path subs = java.nio.file.Files.createDirectories(dir.resolve("subs"));
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2",
+                "--out", subs.resolve("a1-page2.png").toString()).exitCode());
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
+        String all = run.out() + run.err() + String.join("\n", java.nio.file.Files.readAllLines(
+                java.nio.file.Files.list(dir.resolve("report")).filter(f -> f.toString().endsWith(".md")).findFirst().orElseThrow()));
+        assertTrue(all.contains("a first-assignment page by its name: compare it alone, with compare a1-page2.png --assignment 1 --page 2"), all);
+    }
+}

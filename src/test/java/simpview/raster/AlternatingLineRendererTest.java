@@ -1,0 +1,20 @@
+package simpview.raster;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class AlternatingLineRendererTest {
+
+    /** Lines 1, 3, 5 by the DDA, 2, 4 by Bresenham: each falling 2:-1 line shows which by its tie. */
+    @Test
+    void theFirstLineIsTheDdasThenTheyTakeTurns() {
+        AlternatingLineRenderer alternating = AlternatingLineRenderer.ddaThenBresenham();
+        List<String> dda = List.of("0,5", "1,5", "2,4");
+        List<String> bresenham = List.of("0,5", "1,4", "2,4");
+        for (int i = 0; i < 5; i++) {
+            assertEquals(i % 2 == 0 ? dda : bresenham, LineExpectations.drawn(alternating, 0, 5, 2, 4, 10), "line " + (i + 1));
+        }
+    }
+}
