@@ -2,19 +2,10 @@ package simpview.surface;
 
 /**
  * Hidden-surface removal: a write goes through only if it is strictly nearer
- * than what is there ({@link #nearer}), and then its depth is kept.
+ * ({@code z > zbuffer(x, y)}) than what is there, and then its depth is kept.
+ * Of two writes at equal depth the first stays.
  */
 public final class ZBufferDrawable extends DrawableDecorator {
-
-    /**
-     * The depth test of depth-cued scenes, written once: {@code z} wins
-     * against the {@code stored} depth only when strictly nearer (greater:
-     * the view looks down -z), so of two writes at equal depth the first
-     * stays, and a NaN depth never wins.
-     */
-    static boolean nearer(double z, double stored) {
-        return z > stored;
-    }
 
     private final ZBuffer zbuffer;
     private final double[] depth;
@@ -53,7 +44,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
             return;
         }
         int i = y * width + x;
-        if (nearer(z, depth[i])) {
+        if (z > depth[i]) {
             depth[i] = z;
             zbuffer.written();
             delegate.setPixel(x, y, z, argb);
@@ -63,7 +54,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
     /**
      * Passes on the longest runs of pixels that win the depth test, each as
      * one span. Depth at pixel x is {@code z + (x - xBase) * dz}, as
-     * {@link Span#zAt}.
+     * {@link Span#zAt}; a NaN depth never wins.
      */
     @Override
     public void fillSpan(Span s) {
@@ -80,13 +71,13 @@ public final class ZBufferDrawable extends DrawableDecorator {
         int xBase = s.xBase;
         int x = Math.max(x0, 0);
         while (x < to) {
-            while (x < to && !nearer(z + (x - xBase) * dz, d[row + x])) {
+            while (x < to && !(z + (x - xBase) * dz > d[row + x])) {
                 x++; // hidden
             }
             int runStart = x;
             while (x < to) {
                 double zx = z + (x - xBase) * dz;
-                if (!nearer(zx, d[row + x])) {
+                if (!(zx > d[row + x])) {
                     break;
                 }
                 d[row + x] = zx;
