@@ -252,7 +252,7 @@ public final class CompareCommand implements Callable<Integer> {
         Page shown = Assignment1.page(page);
         PanelGridComparison comparison;
         try {
-            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance);
+            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric);
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -262,6 +262,9 @@ public final class CompareCommand implements Callable<Integer> {
                 + (shown.usesSeed() ? ", seed " + context.seed() : ""));
         out.println("page:    top-left at x " + comparison.pageLeft() + ", y " + comparison.pageTop()
                 + " of the picture, counted from its top-left");
+        if (metric == Comparison.Metric.BLUR) {
+            out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
+        }
         out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", "within " + tolerance + "/255");
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {

@@ -11,37 +11,40 @@ package simpview.compare;
  */
 public final class Blur {
 
-    private static final int N = PanelPlace.SIZE;
-
     private Blur() {
     }
 
     /** A blurred copy of a 650x650 panel of 0xRRGGBB pixels. */
     public static int[] of(int[] panel) {
-        int[] across = new int[N * N * 3];
-        for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                int left = panel[y * N + Math.max(0, x - 1)];
-                int centre = panel[y * N + x];
-                int right = panel[y * N + Math.min(N - 1, x + 1)];
-                int o = (y * N + x) * 3;
+        return of(panel, PanelPlace.SIZE);
+    }
+
+    /** A blurred copy of a square panel of n x n 0xRRGGBB pixels (the first assignment's are 300x300). */
+    public static int[] of(int[] panel, int n) {
+        int[] across = new int[n * n * 3];
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int left = panel[y * n + Math.max(0, x - 1)];
+                int centre = panel[y * n + x];
+                int right = panel[y * n + Math.min(n - 1, x + 1)];
+                int o = (y * n + x) * 3;
                 for (int c = 0; c < 3; c++) {
                     int shift = 16 - 8 * c;
                     across[o + c] = (left >> shift & 0xFF) + 2 * (centre >> shift & 0xFF) + (right >> shift & 0xFF);
                 }
             }
         }
-        int[] out = new int[N * N];
-        for (int y = 0; y < N; y++) {
-            int up = Math.max(0, y - 1) * N;
-            int down = Math.min(N - 1, y + 1) * N;
-            for (int x = 0; x < N; x++) {
+        int[] out = new int[n * n];
+        for (int y = 0; y < n; y++) {
+            int up = Math.max(0, y - 1) * n;
+            int down = Math.min(n - 1, y + 1) * n;
+            for (int x = 0; x < n; x++) {
                 int rgb = 0;
                 for (int c = 0; c < 3; c++) {
-                    int sum = across[(up + x) * 3 + c] + 2 * across[(y * N + x) * 3 + c] + across[(down + x) * 3 + c];
+                    int sum = across[(up + x) * 3 + c] + 2 * across[(y * n + x) * 3 + c] + across[(down + x) * 3 + c];
                     rgb |= ((sum + 8) >> 4) << (16 - 8 * c);
                 }
-                out[y * N + x] = rgb;
+                out[y * n + x] = rgb;
             }
         }
         return out;

@@ -9,8 +9,11 @@ import java.nio.file.Path;
  * in the picture by its frames: a place where the one-pixel ring just outside
  * each panel is white while the panel's own outermost pixels are mostly dark
  * (a 750x750 page, or a window capture such as the course's, where the page
- * starts at (1, 31)). Shares are exact, without slack: which pixels a line
- * drawer lights is what is being compared.
+ * starts at (1, 31)). Shares are without slack: which pixels a line drawer
+ * lights is what is being compared. With {@link Comparison.Metric#BLUR} each
+ * panel of both pictures is blurred first ({@link Blur}), so that another
+ * valid antialiasing (the handout allows any method for panel 4) is measured
+ * by what the eye sees at 1:1.
  */
 public final class PanelGridComparison {
 
@@ -46,9 +49,15 @@ public final class PanelGridComparison {
         return shares[k];
     }
 
-    /** Reads the picture, finds the page in it and compares each panel with simpview's page. */
+    /** Reads the picture, finds the page in it and compares each panel with simpview's page, pixel for pixel. */
     public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance)
             throws CompareException {
+        return of(picture, ours, panels, tolerance, Comparison.Metric.EXACT);
+    }
+
+    /** The same, measured by {@code metric}. */
+    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
+            Comparison.Metric metric) throws CompareException {
         PngCodec.Pixels theirs = Picture.readPixels(picture);
         int page = ours.getWidth();
         int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
@@ -56,21 +65,32 @@ public final class PanelGridComparison {
         PanelShares[] shares = new PanelShares[panels.length];
         for (int k = 0; k < panels.length; k++) {
             Panel p = panels[k];
+            int[] a = cut(mine, page, p.left(), p.top(), p.size());
+            int[] b = cut(theirs.rgb(), theirs.width(), at[0] + p.left(), at[1] + p.top(), p.size());
+            if (metric == Comparison.Metric.BLUR) {
+                a = Blur.of(a, p.size());
+                b = Blur.of(b, p.size());
+            }
             long identical = 0;
             long within = 0;
-            for (int y = 0; y < p.size(); y++) {
-                for (int x = 0; x < p.size(); x++) {
-                    int a = mine[(p.top() + y) * page + p.left() + x];
-                    int b = theirs.rgb()[(at[1] + p.top() + y) * theirs.width() + at[0] + p.left() + x];
-                    int d = Rasters.distance(a, b);
-                    identical += d == 0 ? 1 : 0;
-                    within += d <= tolerance ? 1 : 0;
-                }
+            for (int i = 0; i < a.length; i++) {
+                int d = Rasters.distance(a[i], b[i]);
+                identical += d == 0 ? 1 : 0;
+                within += d <= tolerance ? 1 : 0;
             }
             double n = (double) p.size() * p.size();
             shares[k] = new PanelShares(identical / n, within / n);
         }
         return new PanelGridComparison(at[0], at[1], shares);
+    }
+
+    /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */
+    private static int[] cut(int[] rgb, int width, int left, int top, int size) {
+        int[] out = new int[size * size];
+        for (int y = 0; y < size; y++) {
+            System.arraycopy(rgb, (top + y) * width + left, out, y * size, size);
+        }
+        return out;
     }
 
     /** The first place (rows first, then columns) where every panel is framed; a clear error when there is none. */

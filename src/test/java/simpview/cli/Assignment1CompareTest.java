@@ -41,6 +41,27 @@ class Assignment1CompareTest {
         assertEquals(ExitCode.SCENE_ERROR, starburst.exitCode(), "the Bresenham panel is below 99 %");
     }
 
+    /**
+     * --metric blur measures the blurred panels. On the course's page 1 the
+     * antialiased panel's share within 8/255 goes down (99.02 to 98.75 %):
+     * the blur spreads each differing pixel over its neighbours rather than
+     * forgiving the course's antialiasing (docs/grading.md).
+     */
+    @Test
+    void theBlurMetricMeasuresTheBlurredPanels() {
+        String picture = CourseFiles.require("reference/images/a1/page1.png").toString();
+        CliRun exact = CliRun.of("compare", picture, "--assignment", "1", "--page", "1");
+        CliRun blur = CliRun.of("compare", picture, "--assignment", "1", "--page", "1", "--metric", "blur");
+        assertTrue(blur.out().contains("metric:  both pictures' panels blurred (3x3) before they are compared"), blur.out());
+        assertTrue(exact.out().contains("4 antialiased                            98.64 %      99.02 %"), exact.out());
+        assertTrue(blur.out().contains("4 antialiased                            92.95 %      98.75 %"), blur.out());
+        String self = dir.resolve("a1-page2.png").toString();
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2", "--out", self).exitCode());
+        CliRun same = CliRun.of("compare", self, "--assignment", "1", "--page", "2", "--metric", "blur");
+        assertEquals(ExitCode.OK, same.exitCode(), same.out() + same.err());
+        assertTrue(same.out().contains("4 antialiased                           100.00 %     100.00 %"), same.out());
+    }
+
     @Test
     void aPictureWithoutTheFourPanelsIsRefusedClearly() {
         Path page = dir.resolve("page1.png");
