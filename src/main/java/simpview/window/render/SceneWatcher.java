@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import simpview.scene.FileChecksum;
@@ -46,7 +45,8 @@ public final class SceneWatcher {
     private final Runnable changed;
     /** The files watched, as the EDT last gave them (read there by {@link #watched}). */
     private volatile List<Path> watched = List.of();
-    private ScheduledFuture<?> polling;
+    /** True once the looks are scheduled (by the first {@link #watch}). */
+    private boolean polling;
     /** The watcher thread's: the files it looks at, and what it saw of them last. */
     private List<Path> files = List.of();
     private List<Look> looks = List.of();
@@ -59,7 +59,7 @@ public final class SceneWatcher {
     /**
      * What was seen of a file at one look.
      *
-     * @param stamp size, last change and inode, or "missing"
+     * @param stamp size, last change and inode, or {@link FileStamp#MISSING}
      * @param checksum the CRC-32C of its bytes when it was fresh and small, else {@link #NO_CHECKSUM}
      */
     record Look(FileStamp stamp, long checksum) {
@@ -90,8 +90,9 @@ public final class SceneWatcher {
                 SwingUtilities.invokeLater(changed);
             }
         });
-        if (polling == null) {
-            polling = thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
+        if (!polling) {
+            thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
+            polling = true;
         }
     }
 
