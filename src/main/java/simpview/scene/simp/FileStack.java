@@ -202,7 +202,7 @@ final class FileStack implements AutoCloseable {
         return found;
     }
 
-    /** The .obj file an {@code obj} command of the top file names, found as {@code file} names are. */
+    /** The .obj file an {@code obj} command of the file being read names, found as {@code file} names are. */
     Path locateModel(Command c) throws SceneException {
         return locate(c.fileName, ".obj", top(), c);
     }
