@@ -16,7 +16,6 @@ import simpview.compare.Comparison;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.surface.DrawingThreads;
-import simpview.surface.Rgb;
 
 /**
  * {@code simpview check DIR}: a student's self-check before handing in. Every
@@ -58,20 +57,6 @@ final class CheckCommand implements Callable<Integer> {
             description = "instead of the pages: one scene for every picture, or a folder of scenes matched by name")
     private Path scene;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
-    private Long seed;
-
-    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
-    private Path simpDir;
-
-    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
-    private Rgb near;
-
-    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = -200 for --scene (default: 0,0,0)")
-    private Rgb far;
-
     @Option(names = "--tolerance", paramLabel = "T", converter = CompareOptions.Tolerance.class,
             description = "per channel, in 1/255 steps (default: 8)")
     private int tolerance = 8;
@@ -95,6 +80,9 @@ final class CheckCommand implements Callable<Integer> {
     private Path outDir;
 
     @Mixin
+    private OwnPicturesOptions pictures;
+
+    @Mixin
     private ThreadsOption threads;
 
     @Override
@@ -102,12 +90,7 @@ final class CheckCommand implements Callable<Integer> {
         if (pages != null && scene != null) {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
-        if (scene == null && (near != null || far != null)) {
-            throw new ParameterException(spec.commandLine(), "--near-color and --far-color go with --scene only");
-        }
-        if (scene != null && (seed != null || simpDir != null)) {
-            throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
-        }
+        pictures.check(scene);
         Rubric judged;
         try {
             judged = CompareCommand.rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
@@ -116,8 +99,7 @@ final class CheckCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         try (DrawingThreads drawing = threads.open()) {
-            OwnPictures own = new OwnPictures(PageDrawing.context(parent.ownScenes(), seed, simpDir,
-                    PageDrawing.warningsTo(spec.commandLine().getErr())), near, far,
+            OwnPictures own = pictures.ownPictures(parent.ownScenes(),
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,

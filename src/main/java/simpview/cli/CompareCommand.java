@@ -32,7 +32,6 @@ import simpview.pages.LineTestPage;
 import simpview.pages.Page;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.surface.Rgb;
 import simpview.surface.DrawingThreads;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
@@ -89,20 +88,6 @@ public final class CompareCommand implements Callable<Integer> {
             description = "with --dir: the pages pictures are matched to by name (page3.png is page 3), e.g. 1-8")
     private PageRange pages;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
-    private Long seed;
-
-    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
-    private Path simpDir;
-
-    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
-    private Rgb near;
-
-    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
-            description = "colour at z = -200 for --scene (default: 0,0,0)")
-    private Rgb far;
-
     @Option(names = "--diff", paramLabel = "OUT.png", description = "write ours | theirs | heat map, at 1:1")
     private Path diff;
 
@@ -152,6 +137,9 @@ public final class CompareCommand implements Callable<Integer> {
     private boolean partial;
 
     @Mixin
+    private OwnPicturesOptions pictures;
+
+    @Mixin
     private ThreadsOption threads;
 
     @Override
@@ -161,7 +149,7 @@ public final class CompareCommand implements Callable<Integer> {
             return compareAssignment1();
         }
         try (DrawingThreads drawing = threads.open()) {
-            OwnPictures own = new OwnPictures(context(), near, far, monitor(), drawing);
+            OwnPictures own = pictures.ownPictures(parent.ownScenes(), monitor(), drawing);
             if (dir != null) {
                 Rubric judged;
                 try {
@@ -205,8 +193,7 @@ public final class CompareCommand implements Callable<Integer> {
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
-        usage(scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
-        usage(scene == null || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
+        pictures.check(scene);
     }
 
     private void usage(boolean fine, String message) {
@@ -284,7 +271,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private PageContext context() {
-        return PageDrawing.context(parent.ownScenes(), seed, simpDir, monitor());
+        return pictures.context(parent.ownScenes(), monitor());
     }
 
     private SceneMonitor monitor() {

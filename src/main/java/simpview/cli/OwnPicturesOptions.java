@@ -1,0 +1,57 @@
+package simpview.cli;
+
+import java.nio.file.Path;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import simpview.pages.PageContext;
+import simpview.scene.simp.SceneMonitor;
+import simpview.surface.DrawingThreads;
+import simpview.surface.Rgb;
+
+/**
+ * The options of the commands that compare pictures with simpview's own
+ * ({@code compare}, {@code check}): the seed and the course's folder the
+ * pages are drawn with, the depth cue a scene is drawn with, and which of
+ * them go together.
+ */
+final class OwnPicturesOptions {
+
+    @Spec(Spec.Target.MIXEE)
+    private CommandSpec spec;
+
+    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    private Long seed;
+
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
+    private Path simpDir;
+
+    @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
+    private Rgb near;
+
+    @Option(names = "--far-color", paramLabel = "r,g,b", converter = RgbConverter.class,
+            description = "colour at z = -200 for --scene (default: 0,0,0)")
+    private Rgb far;
+
+    /** Usage errors for options that do not go with what is compared: a scene, or the pages when {@code scene} is null. */
+    void check(Path scene) {
+        if (scene == null && (near != null || far != null)) {
+            throw new ParameterException(spec.commandLine(), "--near-color and --far-color go with --scene only");
+        }
+        if (scene != null && (seed != null || simpDir != null)) {
+            throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
+        }
+    }
+
+    /** The pages' context these options ask for, the project's own scenes in {@code ownScenes}. */
+    PageContext context(Path ownScenes, SceneMonitor monitor) {
+        return PageDrawing.context(ownScenes, seed, simpDir, monitor);
+    }
+
+    /** simpview's pictures to compare with, drawn as these options ask, by {@code drawing}. */
+    OwnPictures ownPictures(Path ownScenes, SceneMonitor monitor, DrawingThreads drawing) {
+        return new OwnPictures(context(ownScenes, monitor), near, far, monitor, drawing);
+    }
+}
