@@ -5,14 +5,23 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.util.ArrayList;
+import java.util.List;
 
-/** The key help (F1), drawn in a box over the page. */
+/**
+ * The key help (F1), drawn in a box over the page: as many columns as the
+ * view's height needs, each row's keys, then what they do, cut short with
+ * "…" only where the window is too narrow for the whole text.
+ */
 public final class HelpOverlay {
 
-    private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 13);
-    private static final Color BOX = new Color(20, 20, 40, 230);
-    private static final Color HEADING = new Color(160, 200, 255);
-    private static final int PAD = 12;
+    private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
+    private static final Color BOX = new Color(20, 20, 40, 235);
+    private static final Color HEADING = new Color(255, 220, 140);
+    private static final Color KEYS = new Color(160, 200, 255);
+    private static final int PAD = 10;
+    /** The widest a column's "does" text is drawn before it is cut. */
+    private static final int DOES_WIDTH = 330;
 
     private HelpOverlay() {
     }
@@ -21,28 +30,62 @@ public final class HelpOverlay {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setFont(FONT);
         FontMetrics metrics = g.getFontMetrics();
-        int inputWidth = 0;
-        int doesWidth = 0;
-        for (KeyHelp.Row row : KeyHelp.ROWS) {
-            inputWidth = Math.max(inputWidth, metrics.stringWidth(row.input()));
-            doesWidth = Math.max(doesWidth, metrics.stringWidth(row.does()));
-        }
         int line = metrics.getHeight();
-        int boxWidth = Math.min(width - 2 * PAD, inputWidth + doesWidth + 5 * PAD);
-        int boxHeight = Math.min(height - 2 * PAD, (KeyHelp.ROWS.size() + 1) * line + 2 * PAD);
+        List<KeyHelp.Row> rows = KeyHelp.ROWS;
+        int perColumn = Math.max(1, (height - 3 * PAD) / line - 1);
+        int columns = (rows.size() + perColumn - 1) / perColumn;
+        perColumn = (rows.size() + columns - 1) / columns;
+        List<List<KeyHelp.Row>> split = new ArrayList<>();
+        for (int c = 0; c < columns; c++) {
+            split.add(rows.subList(c * perColumn, Math.min(rows.size(), (c + 1) * perColumn)));
+        }
+        int[] inputWidths = new int[columns];
+        int[] doesWidths = new int[columns];
+        int boxWidth = PAD;
+        for (int c = 0; c < columns; c++) {
+            for (KeyHelp.Row row : split.get(c)) {
+                if (!row.heading()) {
+                    inputWidths[c] = Math.max(inputWidths[c], metrics.stringWidth(row.input()));
+                    doesWidths[c] = Math.max(doesWidths[c], Math.min(DOES_WIDTH, metrics.stringWidth(row.does())));
+                }
+            }
+            boxWidth += inputWidths[c] + doesWidths[c] + 3 * PAD;
+        }
+        boxWidth = Math.min(width, boxWidth);
+        int boxHeight = Math.min(height, (perColumn + 1) * line + 2 * PAD);
         int left = Math.max(0, (width - boxWidth) / 2);
         int top = Math.max(0, (height - boxHeight) / 2);
         g.setColor(BOX);
         g.fillRect(left, top, boxWidth, boxHeight);
-        int baseline = top + PAD + metrics.getAscent();
         g.setColor(HEADING);
-        g.drawString("simpview — keys and gestures (F1 hides this)", left + PAD, baseline);
-        for (KeyHelp.Row row : KeyHelp.ROWS) {
-            baseline += line;
-            g.setColor(HEADING);
-            g.drawString(row.input(), left + PAD, baseline);
-            g.setColor(Color.WHITE);
-            g.drawString(row.does(), left + 3 * PAD + inputWidth, baseline);
+        g.drawString("simpview — keys, menus and gestures (F1 hides this)", left + PAD, top + PAD + metrics.getAscent());
+        int x = left + PAD;
+        for (int c = 0; c < columns; c++) {
+            int baseline = top + PAD + metrics.getAscent();
+            for (KeyHelp.Row row : split.get(c)) {
+                baseline += line;
+                if (row.heading()) {
+                    g.setColor(HEADING);
+                    g.drawString(row.does(), x, baseline);
+                    continue;
+                }
+                g.setColor(KEYS);
+                g.drawString(row.input(), x, baseline);
+                g.setColor(Color.WHITE);
+                g.drawString(cut(row.does(), metrics, DOES_WIDTH), x + inputWidths[c] + PAD, baseline);
+            }
+            x += inputWidths[c] + doesWidths[c] + 3 * PAD;
         }
+    }
+
+    private static String cut(String text, FontMetrics metrics, int room) {
+        if (metrics.stringWidth(text) <= room) {
+            return text;
+        }
+        String shorter = text;
+        while (!shorter.isEmpty() && metrics.stringWidth(shorter + "…") > room) {
+            shorter = shorter.substring(0, shorter.length() - 1);
+        }
+        return shorter + "…";
     }
 }

@@ -17,7 +17,8 @@ import simpview.surface.PageCanvas;
 /**
  * The page on screen: the finished image copied at the zoom and place that
  * {@link ZoomPan} says, nearest-neighbour so every image pixel stays a sharp
- * square, with overlays drawn over it (pixel grid, the pinned pixel, the
+ * square (below 1:1, the image {@link LineKeepingDownscale} made smaller,
+ * copied 1:1), with overlays drawn over it (pixel grid, the pinned pixel, the
  * outline of a primitive, a scene error, the key help). The picture itself is
  * never drawn here.
  */
@@ -27,8 +28,12 @@ public final class PageView extends JComponent {
     private static final Color AROUND = new Color(96, 96, 96);
     private static final Color MARK = new Color(255, 64, 255);
 
-    private final transient ZoomPan zoomPan = new ZoomPan(PageCanvas.SIZE);
+    private final transient ZoomPan zoomPan = new ZoomPan(PageCanvas.SIZE, PageCanvas.MARGIN);
     private transient BufferedImage image = new PageCanvas().snapshot();
+    /** The image below 1:1 as {@link LineKeepingDownscale} made it, for {@link #smallOf} and {@link #smallZoom}. */
+    private transient BufferedImage small;
+    private transient BufferedImage smallOf;
+    private double smallZoom;
     private String error;
     private boolean errorAfterDrawing = true;
     private boolean errorHidden;
@@ -37,6 +42,9 @@ public final class PageView extends JComponent {
     private int pinnedY = -1;
     /** A primitive's outline in image coordinates (x0, y0, x1, y1, ...), or null. */
     private double[] outline;
+    /** Outlines drawn over the whole page (wire over fill), each in image coordinates; null for none. */
+    private transient java.util.List<double[]> wire;
+    private static final Color WIRE = new Color(0, 255, 128, 200);
 
     PageView() {
         setPreferredSize(new Dimension(PageCanvas.SIZE, PageCanvas.SIZE));
@@ -109,6 +117,16 @@ public final class PageView extends JComponent {
         repaint();
     }
 
+    /** Draws these outlines (image coordinates) over the page, or none (null). */
+    void wire(java.util.List<double[]> outlines) {
+        wire = outlines;
+        repaint();
+    }
+
+    boolean wireShown() {
+        return wire != null;
+    }
+
     /** Where the image's top-left corner is, in this component. */
     java.awt.Point imageOrigin() {
         return new java.awt.Point((int) zoomPan.originX(), (int) zoomPan.originY());
@@ -125,6 +143,7 @@ public final class PageView extends JComponent {
             if (PixelGrid.shows(zoomPan)) {
                 PixelGrid.paint(g, zoomPan, image, clip);
             }
+            paintWire(g);
             paintMarks(g);
             if (error != null && !errorHidden) {
                 ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
@@ -145,6 +164,10 @@ public final class PageView extends JComponent {
         double zoom = zoomPan.zoom();
         int ox = (int) zoomPan.originX();
         int oy = (int) zoomPan.originY();
+        if (zoomPan.belowOneToOne()) {
+            g.drawImage(shownSmall(), ox, oy, null);
+            return;
+        }
         if (!zoomPan.isIntegerZoom()) {
             int size = (int) Math.round(zoomPan.shownSize());
             g.drawImage(image, ox, oy, ox + size, oy + size, 0, 0, image.getWidth(), image.getHeight(), null);
@@ -158,6 +181,34 @@ public final class PageView extends JComponent {
         if (sx0 < sx1 && sy0 < sy1) {
             g.drawImage(image, ox + sx0 * z, oy + sy0 * z, ox + sx1 * z, oy + sy1 * z, sx0, sy0, sx1, sy1, null);
         }
+    }
+
+    /** The picture below 1:1, made again only when the picture or the zoom changed. */
+    BufferedImage shownSmall() {
+        if (small == null || smallOf != image || smallZoom != zoomPan.zoom()) {
+            small = LineKeepingDownscale.of(image, zoomPan.zoom());
+            smallOf = image;
+            smallZoom = zoomPan.zoom();
+        }
+        return small;
+    }
+
+    private void paintWire(Graphics2D g) {
+        if (wire == null) {
+            return;
+        }
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(WIRE);
+        g.setStroke(new BasicStroke(1f));
+        Path2D.Double path = new Path2D.Double();
+        for (double[] points : wire) {
+            path.moveTo(zoomPan.screenX(points[0]), zoomPan.screenY(points[1]));
+            for (int k = 2; k + 1 < points.length; k += 2) {
+                path.lineTo(zoomPan.screenX(points[k]), zoomPan.screenY(points[k + 1]));
+            }
+            path.closePath();
+        }
+        g.draw(path);
     }
 
     private void paintMarks(Graphics2D g) {

@@ -54,6 +54,7 @@ public final class SimpviewWindow {
 
     private final JFrame frame = new JFrame("simpview");
     private final PageView pageView = new PageView();
+    private final LegendStrip legendStrip = new LegendStrip();
     private final SceneWatcher watcher = new SceneWatcher(this::reload);
     private DrawSettings settings = DrawSettings.WINDOW;
     private final Orbit orbit = new Orbit();
@@ -76,13 +77,16 @@ public final class SimpviewWindow {
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
     private boolean turnWaiting;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
-    private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say);
+    private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
+            legendStrip::show);
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel = new InspectorPanel();
     private boolean overdrawShown;
     private boolean backFacesShown;
     private int backFaces = -1;
     private int overdrawMax = -1;
+    /** The screen area a test placed the frame in, or null for the real one. */
+    private Rectangle placedWithin;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -112,8 +116,13 @@ public final class SimpviewWindow {
         frame.setIconImages(AppIcon.images());
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
-        frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
+        javax.swing.JPanel south = new javax.swing.JPanel(new BorderLayout());
+        south.add(legendStrip, BorderLayout.NORTH);
+        south.add(status.component(), BorderLayout.SOUTH);
+        frame.getContentPane().add(south, BorderLayout.SOUTH);
         frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
+        frame.setJMenuBar(menuBar());
+        inspectorPanel.onCopy(status::say);
         frame.setResizable(true);
         // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
         frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
@@ -181,59 +190,140 @@ public final class SimpviewWindow {
         @Override
         public void hover(int x, int y) {
             ZoomPan zoomPan = pageView.zoomPan();
+            int wasX = hoverX;
+            int wasY = hoverY;
             hoverX = x < 0 ? -1 : zoomPan.imageX(x);
             hoverY = y < 0 ? -1 : zoomPan.imageY(y);
             inspect();
+            if (pinnedX < 0 && hoverX >= 0 && hoverY >= 0 && (hoverX != wasX || hoverY != wasY)) {
+                refreshPanel(); // the panel follows the pointer while nothing is pinned
+            }
         }
     }
 
+    /** Every key of the table on the root pane, whichever component has the keyboard. */
     private void bindKeys() {
-        bind("next", this::next, "RIGHT", "SPACE", "PAGE_DOWN", "KP_RIGHT");
-        bind("previous", this::previous, "LEFT", "PAGE_UP", "KP_LEFT");
-        bind("first", () -> end(true), "HOME");
-        bind("last", () -> end(false), "END");
-        for (int n = 1; n <= Assignment2.COUNT; n++) {
-            int page = n;
-            bind("page" + n, () -> jump(page), String.valueOf(n), "NUMPAD" + n);
+        JComponent root = frame.getRootPane();
+        InputMap keys = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
+        for (WindowAction action : WindowAction.values()) {
+            for (KeyStroke stroke : action.strokes()) {
+                keys.put(stroke, action);
+            }
+            root.getActionMap().put(action, new AbstractAction() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public void actionPerformed(ActionEvent e) {
+                    perform(action);
+                }
+            });
         }
-        bind("assignment", this::switchAssignment, "A");
-        bind("seed", this::newSeed, "R");
-        bind("cancel", this::cancel, "ESCAPE");
-        bind("fit", () -> zoom(ZoomPan::fit), "F");
-        bind("actual size", () -> zoom(ZoomPan::actualSize), "Z");
-        bind("zoom in", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1)),
-                "typed +", "typed =");
-        bind("zoom out", () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1)),
-                "typed -");
-        bind("depth view", this::toggleDepthView, "D");
-        bind("pin", this::togglePin, "P");
-        bind("own colours", this::toggleOwnColours, "C");
-        bind("hide error", () -> pageView.toggleErrorHidden(), "H");
-        bind("help", () -> pageView.toggleHelp(), "F1");
-        bind("redraw", this::reload, "F5");
-        bind("step on", () -> step(1), "CLOSE_BRACKET");
-        bind("step back", () -> step(-1), "OPEN_BRACKET");
-        bind("step on ten", () -> step(10), "shift CLOSE_BRACKET");
-        bind("step back ten", () -> step(-10), "shift OPEN_BRACKET");
-        bind("step off", this::stepOff, "BACK_SLASH");
-        bind("step on hundred", () -> step(100), "ctrl CLOSE_BRACKET");
-        bind("step back hundred", () -> step(-100), "ctrl OPEN_BRACKET");
-        bind("step on thousand", () -> step(1000), "ctrl shift CLOSE_BRACKET");
-        bind("step back thousand", () -> step(-1000), "ctrl shift OPEN_BRACKET");
-        bind("step to the pixel's primitive", this::stepToOwner, "J");
-        bind("go to primitive", this::goToPrimitive, "G");
-        bind("inspector panel", this::toggleInspectorPanel, "I");
-        bind("overdraw", () -> toggleOverdraw(false), "V");
-        bind("depth-test failures", () -> toggleOverdraw(true), "shift V");
-        bind("back faces", this::toggleBackFaces, "K");
-        bind("unturn", this::unturn, "O");
-        int menu = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
-        bindStroke("save", this::save, KeyStroke.getKeyStroke(KeyEvent.VK_S, menu));
-        bindStroke("open", this::chooseScene, KeyStroke.getKeyStroke(KeyEvent.VK_O, menu));
-        comparison.bindKeys((name, action, stroke) -> bindStroke(name, action, KeyStroke.getKeyStroke(stroke))); // compare (issue 15)
-        bindStroke("copy", this::copyInspected, KeyStroke.getKeyStroke(KeyEvent.VK_C, menu));
-        bindStroke("quit", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_Q, menu));
-        bindStroke("close", this::close, KeyStroke.getKeyStroke(KeyEvent.VK_W, menu));
+    }
+
+    /**
+     * The menu bar, from the same table as the keys: each entry shows its
+     * accelerator and does what its key does (the key itself is handled by
+     * the root pane's binding, which consumes it, so it acts once).
+     */
+    private javax.swing.JMenuBar menuBar() {
+        javax.swing.JMenuBar bar = new javax.swing.JMenuBar();
+        bar.setName("menu bar");
+        javax.swing.JMenu menu = null;
+        for (WindowAction action : WindowAction.values()) {
+            if (menu == null || !menu.getName().equals(action.menu().name())) {
+                menu = new javax.swing.JMenu(action.menu().title());
+                menu.setName(action.menu().name());
+                menu.setMnemonic(action.menu().mnemonic());
+                bar.add(menu);
+            }
+            if (separatedBefore(action)) {
+                menu.addSeparator();
+            }
+            javax.swing.JMenuItem item = new javax.swing.JMenuItem(action.label());
+            item.setName(action.name());
+            item.setAccelerator(action.accelerator());
+            item.addActionListener(e -> perform(action));
+            menu.add(item);
+        }
+        return bar;
+    }
+
+    /** Where a menu's groups begin. */
+    private static boolean separatedBefore(WindowAction action) {
+        return switch (action) {
+            case REDRAW, CLOSE, DEPTH_VIEW, COMPARE_FLIP, HIDE_ERROR, PAGE_1, ASSIGNMENT, SEED, STEP_ON,
+                    GO_TO_PRIMITIVE -> true;
+            default -> false;
+        };
+    }
+
+    /** What each entry of the table does: a key, its menu entry and the tests all come here. */
+    void perform(WindowAction action) {
+        switch (action) {
+            case OPEN -> chooseScene();
+            case COMPARE -> comparison.choosePicture(dialogFolder());
+            case SAVE -> save();
+            case REDRAW -> reload();
+            case CLOSE, QUIT -> close();
+            case ZOOM_IN -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1));
+            case ZOOM_OUT -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1));
+            case ACTUAL_SIZE -> zoom(ZoomPan::actualSize);
+            case FIT -> zoom(ZoomPan::fit);
+            case CROP -> zoom(ZoomPan::fitPanel);
+            case DEPTH_VIEW -> toggleDepthView();
+            case OWN_COLOURS -> toggleOwnColours();
+            case BACK_FACES -> toggleBackFaces();
+            case OVERDRAW -> toggleOverdraw(false);
+            case DEPTH_FAILURES -> toggleOverdraw(true);
+            case WIRE -> toggleWire();
+            case COMPARE_FLIP -> comparison.flip();
+            case COMPARE_HEAT -> comparison.heat();
+            case COMPARE_STOP -> comparison.stop();
+            case HIDE_ERROR -> pageView.toggleErrorHidden();
+            case UNTURN -> unturn();
+            case NEXT -> next();
+            case PREVIOUS -> previous();
+            case FIRST -> end(true);
+            case LAST -> end(false);
+            case PAGE_1 -> jump(1);
+            case PAGE_2 -> jump(2);
+            case PAGE_3 -> jump(3);
+            case PAGE_4 -> jump(4);
+            case PAGE_5 -> jump(5);
+            case PAGE_6 -> jump(6);
+            case PAGE_7 -> jump(7);
+            case PAGE_8 -> jump(8);
+            case ASSIGNMENT -> switchAssignment();
+            case ASSIGNMENT_1 -> {
+                if (assignment1Page == 0) {
+                    switchAssignment();
+                }
+            }
+            case ASSIGNMENT_2 -> {
+                if (assignment1Page > 0) {
+                    switchAssignment();
+                }
+            }
+            case SEED -> newSeed();
+            case CANCEL -> cancel();
+            case INSPECTOR -> toggleInspectorPanel();
+            case PIN -> togglePin();
+            case GO_TO_PIXEL -> askForPixel();
+            case COPY -> copyInspected();
+            case COPY_CHAIN -> copyChain();
+            case STEP_ON -> step(1);
+            case STEP_BACK -> step(-1);
+            case STEP_ON_10 -> step(10);
+            case STEP_BACK_10 -> step(-10);
+            case STEP_ON_100 -> step(100);
+            case STEP_BACK_100 -> step(-100);
+            case STEP_ON_1000 -> step(1000);
+            case STEP_BACK_1000 -> step(-1000);
+            case STEP_OFF -> stepOff();
+            case GO_TO_PRIMITIVE -> goToPrimitive();
+            case STEP_TO_OWNER -> stepToOwner();
+            case HELP -> pageView.toggleHelp();
+        }
     }
 
     private void zoom(java.util.function.Consumer<ZoomPan> change) {
@@ -249,7 +339,9 @@ public final class SimpviewWindow {
         String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
         String zoom = pageView.zoomPan().describe() + (depthView ? " · depth view" : "")
                 + (settings.ownColours() ? " · own colours" : "");
-        status.inspect(pixel == null ? zoom : (pinnedX >= 0 ? "pinned · " : "") + pixel + " · " + zoom);
+        String theirs = x < 0 || y < 0 ? "" : comparison.theirsAt(x, y)
+                .map(rgb -> " · theirs " + Inspector.rgb(rgb)).orElse("");
+        status.inspect(pixel == null ? zoom : (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs + " · " + zoom);
         if (settings.stepLimit() < 0) {
             pageView.outline(PixelGrid.shows(pageView.zoomPan()) ? Inspector.outlineAt(shown, x, y) : null);
         }
@@ -272,36 +364,55 @@ public final class SimpviewWindow {
     /** Shows or hides the side panel of the pinned pixel's history (I). */
     private void toggleInspectorPanel() {
         boolean shownNow = inspectorPanel.toggle();
+        makeRoomForThePanel(shownNow);
         frame.getContentPane().validate();
         if (shownNow) {
             refreshPanel();
         }
     }
 
-    /** The side panel, when shown: the pinned pixel's history in the view on screen, replayed. */
+    /** The side panel, when shown: the pinned pixel's history (else the one under the pointer's), replayed. */
     private void refreshPanel() {
         if (!inspectorPanel.isShown()) {
             return;
         }
-        if (pinnedX < 0 || shown == null) {
-            inspectorPanel.say("Pin a pixel (P) to see every write it received, how its colour was made, and its "
-                    + "primitive's vertices.");
+        int ix = pinnedX >= 0 ? pinnedX : hoverX;
+        int iy = pinnedX >= 0 ? pinnedY : hoverY;
+        if (ix < 0 || iy < 0 || shown == null) {
+            inspectorPanel.say("Point at a pixel, or pin one (P, or Shift+G for its coordinates), to see every write "
+                    + "it received, how its colour was made, and its primitive's vertices.");
             return;
         }
-        int x = pinnedX - simpview.surface.PageCanvas.MARGIN;
-        int y = simpview.surface.PageCanvas.MARGIN + simpview.surface.PageCanvas.PANEL - 1 - pinnedY;
+        int x = ix - simpview.surface.PageCanvas.MARGIN;
+        int y = simpview.surface.PageCanvas.MARGIN + simpview.surface.PageCanvas.PANEL - 1 - iy;
+        String theirs = comparedAt(ix, iy);
         if (x < 0 || y < 0 || x >= simpview.surface.PageCanvas.PANEL || y >= simpview.surface.PageCanvas.PANEL) {
-            inspectorPanel.say("The pinned pixel is in the margin: nothing is drawn there.");
+            inspectorPanel.say((theirs == null ? "" : theirs + "\n\n")
+                    + "The pixel is in the margin: nothing is drawn there.");
             return;
         }
-        simpview.inspect.InspectedScene scene = inspectedScene(inspectorPanel::say);
+        simpview.inspect.InspectedScene scene = inspectedScene(message ->
+                inspectorPanel.say((theirs == null ? "" : theirs + "\n\n") + message));
         if (scene == null) {
             return;
         }
         String note = orbit.turned() || settings.stepLimit() >= 0
                 ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
                 : null;
-        inspectorPanel.inspect(scene, x, y, note);
+        inspectorPanel.inspect(scene, x, y, note, theirs);
+    }
+
+    /** While comparing: both pictures' values at image pixel (ix, iy) and how far apart they are; else null. */
+    private String comparedAt(int ix, int iy) {
+        return comparison.theirsAt(ix, iy).map(theirs -> {
+            int ours = shown.image().getRGB(ix, iy);
+            int dr = ((theirs >> 16) & 0xFF) - ((ours >> 16) & 0xFF);
+            int dg = ((theirs >> 8) & 0xFF) - ((ours >> 8) & 0xFF);
+            int db = (theirs & 0xFF) - (ours & 0xFF);
+            return "comparing with " + comparison.theirName() + ":\n  ours   " + Inspector.rgb(ours) + "\n  theirs "
+                    + Inspector.rgb(theirs) + "\n  theirs - ours (" + dr + ", " + dg + ", " + db + "), largest "
+                    + Math.max(Math.abs(dr), Math.max(Math.abs(dg), Math.abs(db))) + "/255";
+        }).orElse(null);
     }
 
     /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
@@ -377,6 +488,9 @@ public final class SimpviewWindow {
         backFacesShown = true;
         backFaces = tinted.backFacing();
         pageView.show(tinted.image(), null, true);
+        legendStrip.show(new simpview.window.instruments.Legend("back faces (K: the page)", java.util.List.of(
+                new simpview.window.instruments.Legend.Entry(0xFF00FF, "tinted: a polygon clockwise on the panel "
+                        + "(facing away by SPEC's counter-clockwise rule)"))));
         status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
                 + " polygons are clockwise on the panel · K: the page again");
     }
@@ -417,6 +531,151 @@ public final class SimpviewWindow {
         } catch (NumberFormatException e) {
             status.say("'" + answer + "' is not a primitive number.");
         }
+    }
+
+    /**
+     * The frame grows by the panel's width when the panel is shown (as far as
+     * the screen allows) and shrinks back when it is hidden, so that the page
+     * keeps its zoom beside it; a maximized frame keeps its size.
+     */
+    private void makeRoomForThePanel(boolean shownNow) {
+        if ((frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) != 0) {
+            return;
+        }
+        int panel = inspectorPanel.component().getPreferredSize().width;
+        Rectangle bounds = frame.getBounds();
+        Rectangle usable = screenForPlacing();
+        int width = shownNow ? Math.min(usable.width, bounds.width + panel) : Math.max(320, bounds.width - panel);
+        int x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - width));
+        frame.setBounds(x, bounds.y, width, bounds.height);
+    }
+
+    /** The screen area the frame is placed in: the usable screen, or what a test said. */
+    private Rectangle screenForPlacing() {
+        return placedWithin != null ? placedWithin : usableScreen();
+    }
+
+    /**
+     * Places the frame as it would open on a screen whose usable area is
+     * {@code usable} (for tests of a small screen on a larger one).
+     */
+    void placeWithin(Rectangle usable) {
+        placedWithin = usable;
+        Dimension wanted = frame.getPreferredSize();
+        if (inspectorPanel.isShown()) {
+            wanted = new Dimension(wanted.width, wanted.height);
+        }
+        frame.setBounds(WindowPlacement.within(wanted, usable));
+        frame.validate();
+    }
+
+    /** Asks for a pixel by its panel coordinates (x right, y up), pins it and shows it (Shift+G). */
+    private void askForPixel() {
+        if (shown == null) {
+            return;
+        }
+        boolean pageCoordinates = shown.view() instanceof View.OfAssignment1Page;
+        int last = pageCoordinates ? simpview.surface.PageCanvas.SIZE - 1 : simpview.surface.PageCanvas.PANEL - 1;
+        String answer = javax.swing.JOptionPane.showInputDialog(frame, (pageCoordinates
+                ? "Go to the page's pixel x, y (x right, y up from the page's bottom-left, 0 to " + last + "):"
+                : "Go to the panel's pixel x, y (x right, y up from the panel's bottom-left, 0 to " + last + "):"),
+                "simpview", javax.swing.JOptionPane.QUESTION_MESSAGE);
+        if (answer != null) {
+            goToPixel(answer);
+        }
+    }
+
+    /**
+     * Pins the pixel "x, y" (the panel's coordinates, x right and y up; on
+     * the first assignment's pages the page's) and brings it into view; says
+     * why not when the text is not a pixel.
+     */
+    void goToPixel(String answer) {
+        String[] parts = answer.strip().split("[,\\s]+");
+        boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
+        int last = pageCoordinates ? simpview.surface.PageCanvas.SIZE - 1 : simpview.surface.PageCanvas.PANEL - 1;
+        int x;
+        int y;
+        try {
+            if (parts.length != 2) {
+                throw new NumberFormatException();
+            }
+            x = Integer.parseInt(parts[0]);
+            y = Integer.parseInt(parts[1]);
+        } catch (NumberFormatException e) {
+            status.say("'" + answer + "' is not a pixel: give x, y, for example 325, 400.");
+            return;
+        }
+        if (x < 0 || y < 0 || x > last || y > last) {
+            status.say("(" + x + ", " + y + ") is outside the " + (pageCoordinates ? "page" : "panel") + ": x and y go "
+                    + "from 0 to " + last + ".");
+            return;
+        }
+        int offset = pageCoordinates ? 0 : simpview.surface.PageCanvas.MARGIN;
+        pinnedX = offset + x;
+        pinnedY = offset + last - y;
+        pageView.zoomPan().bringIntoView(pinnedX, pinnedY);
+        pageView.pin(pinnedX, pinnedY);
+        inspect();
+        refreshPanel();
+        status.say("Pinned " + (pageCoordinates ? "page" : "panel") + " pixel (" + x + ", " + y + "): the image's column "
+                + pinnedX + ", row " + pinnedY + " (rows run down from the top)");
+    }
+
+    /** Copies the include chain of the inspected pixel's owner, whole paths (Ctrl+Shift+C). */
+    private void copyChain() {
+        String chain = inspectorPanel.isShown() ? inspectorPanel.ownerChainText() : "";
+        if (chain.isEmpty()) {
+            int x = pinnedX >= 0 ? pinnedX : hoverX;
+            int y = pinnedX >= 0 ? pinnedY : hoverY;
+            String line = x < 0 ? null : Inspector.describe(shown, x, y);
+            if (line == null || !line.contains("drawn by primitive")) {
+                status.say("No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
+                return;
+            }
+            chain = line.substring(line.indexOf("drawn by primitive"));
+        }
+        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
+        status.say("Copied: " + chain);
+    }
+
+    /** Where the compare dialog opens: the shown scene's folder, else the course's pages' folder. */
+    Path dialogFolder() {
+        if (shown != null && shown.view() instanceof View.OfScene scene && scene.file().toAbsolutePath().getParent() != null) {
+            return scene.file().toAbsolutePath().getParent();
+        }
+        return options.simpDir();
+    }
+
+    /** Wire over fill (W): every primitive's edges over the page; again: off. */
+    private void toggleWire() {
+        if (pageView.wireShown()) {
+            pageView.wire(null);
+            legendStrip.show(null);
+            return;
+        }
+        showWire();
+    }
+
+    private void showWire() {
+        java.util.List<double[]> outlines = new java.util.ArrayList<>();
+        Primitives primitives = shown == null ? null : shown.facts().primitives();
+        for (int k = 0; primitives != null && k < primitives.size(); k++) {
+            double[] outline = primitives.outline(k);
+            if (outline != null) {
+                outlines.add(Inspector.toImage(outline));
+            }
+        }
+        if (outlines.isEmpty()) {
+            pageView.wire(null);
+            legendStrip.show(null);
+            status.say("Wire over fill needs a scene's record of its primitives: pages 4-8 and opened scenes.");
+            return;
+        }
+        pageView.wire(outlines);
+        legendStrip.show(new simpview.window.instruments.Legend("wire over fill (W: off)", java.util.List.of(
+                new simpview.window.instruments.Legend.Entry(0x00FF80, "the edges of all " + outlines.size()
+                        + " primitives drawn, as projected"))));
     }
 
     /** Puts the inspector's line on the clipboard. */
@@ -531,31 +790,15 @@ public final class SimpviewWindow {
             pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
                     : shown.image(), shown.error(), facts.drewSomething());
         }
+        legendStrip.show(null);
+        if (pageView.wireShown()) {
+            showWire();
+        }
     }
 
     /** Draws what is on screen again (F5, a save of one of its files), keeping zoom and pan. */
     void reload() {
         show(requested());
-    }
-
-    private void bind(String name, Runnable action, String... keys) {
-        for (String key : keys) {
-            bindStroke(name, action, KeyStroke.getKeyStroke(key));
-        }
-    }
-
-    private void bindStroke(String name, Runnable action, KeyStroke stroke) {
-        JComponent root = frame.getRootPane();
-        InputMap keys = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
-        keys.put(stroke, name);
-        root.getActionMap().put(name, new AbstractAction() {
-            private static final long serialVersionUID = 1L;
-
-            @Override
-            public void actionPerformed(ActionEvent e) {
-                action.run();
-            }
-        });
     }
 
     /** The next page of the assignment on show (after its last comes its first). */
@@ -769,6 +1012,10 @@ public final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    LegendStrip legendStrip() {
+        return legendStrip;
     }
 
     InspectorPanel inspectorPanel() {

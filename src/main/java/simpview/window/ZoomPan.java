@@ -6,8 +6,11 @@ package simpview.window;
  * top-left corner. Pure arithmetic, no Swing; the view asks it and paints.
  *
  * <p>"Fit" follows the viewport: the largest integer zoom at which the whole
- * image fits (1:1 whenever it fits at all), else the fraction that fits,
- * centred. Zooming or panning leaves fit; {@link #fit()} goes back to it.
+ * image fits (1:1 whenever it fits at all); when the whole image does not fit
+ * at 1:1 but the panel inside its white margins does, the panel at 1:1 with
+ * the margins cropped; else the fraction at which the panel fits, centred.
+ * "Crop" ({@link #fitPanel()}) is the same fit made on the panel alone.
+ * Zooming or panning leaves fit; {@link #fit()} goes back to it.
  * Integer zooms keep the origin on whole screen pixels, so every image pixel
  * is exactly {@code zoom} by {@code zoom} screen pixels.
  */
@@ -21,16 +24,25 @@ public final class ZoomPan {
     private static final int KEEP_VISIBLE = 48;
 
     private final int imageSize;
+    /** The white margin around the panel, cropped when the whole image does not fit. */
+    private final int margin;
     private int viewWidth;
     private int viewHeight;
     private boolean fitting = true;
+    /** The fit is made on the panel alone (Crop), even when the whole image would fit. */
+    private boolean panelOnly;
     private double zoom = 1;
     /** The image's top-left corner on screen, unrounded: zooming about a point keeps that point exactly. */
     private double exactX;
     private double exactY;
 
-    public ZoomPan(int imageSize) {
+    /** A square image of {@code imageSize} whose panel lies {@code margin} pixels inside each edge. */
+    public ZoomPan(int imageSize, int margin) {
+        if (margin < 0 || 2 * margin >= imageSize) {
+            throw new IllegalArgumentException("a margin of " + margin + " leaves no panel in " + imageSize);
+        }
         this.imageSize = imageSize;
+        this.margin = margin;
     }
 
     /** The viewport changed size; in fit mode the image follows it. */
@@ -38,7 +50,8 @@ public final class ZoomPan {
         viewWidth = Math.max(1, width);
         viewHeight = Math.max(1, height);
         if (fitting) {
-            fit();
+            zoom = fitZoom();
+            centre();
         } else {
             clampOrigin();
         }
@@ -47,6 +60,15 @@ public final class ZoomPan {
     /** Back to fit: the largest integer zoom that shows the whole image, or less when even 1:1 does not fit. */
     public void fit() {
         fitting = true;
+        panelOnly = false;
+        zoom = fitZoom();
+        centre();
+    }
+
+    /** Crop: the fit made on the panel alone, its white margins cut off (followed on resize like fit). */
+    public void fitPanel() {
+        fitting = true;
+        panelOnly = true;
         zoom = fitZoom();
         centre();
     }
@@ -59,10 +81,24 @@ public final class ZoomPan {
     /** The zoom at which the whole image fits the viewport: an integer when 1:1 fits, else a fraction. */
     public double fitZoom() {
         int room = Math.min(viewWidth, viewHeight);
-        if (room >= imageSize) {
+        if (!panelOnly && room >= imageSize) {
             return Math.min(MAX_ZOOM, room / imageSize);
         }
-        return (double) room / imageSize;
+        int panel = panelSize();
+        if (room >= panel) {
+            return Math.min(MAX_ZOOM, room / panel);
+        }
+        return (double) room / panel;
+    }
+
+    /** The side of the panel: the image without its margins. */
+    public int panelSize() {
+        return imageSize - 2 * margin;
+    }
+
+    /** Whether the fit shown cuts off the margins: the whole image does not fit at the fit's zoom, or Crop is on. */
+    public boolean cropped() {
+        return fitting && (panelOnly || imageSize * zoom > Math.min(viewWidth, viewHeight));
     }
 
     /** One wheel notch nearer ({@code notches < 0}) or farther, keeping the image point under (x, y) there. */
@@ -104,6 +140,16 @@ public final class ZoomPan {
         clampOrigin();
     }
 
+    /** Pans, when image pixel (ix, iy) is not wholly in view, so that it is in the middle of the view. */
+    public void bringIntoView(int ix, int iy) {
+        double left = screenX(ix);
+        double top = screenY(iy);
+        if (left >= 0 && top >= 0 && left + Math.max(zoom, 1) <= viewWidth && top + Math.max(zoom, 1) <= viewHeight) {
+            return;
+        }
+        pan(viewWidth / 2.0 - (left + zoom / 2), viewHeight / 2.0 - (top + zoom / 2));
+    }
+
     /** Moves the image by (dx, dy) screen pixels; some of it always stays in view. */
     public void pan(double dx, double dy) {
         fitting = false;
@@ -113,8 +159,16 @@ public final class ZoomPan {
     }
 
     private void centre() {
-        exactX = Math.floor((viewWidth - shownSize()) / 2.0);
-        exactY = Math.floor((viewHeight - shownSize()) / 2.0);
+        if (cropped()) {
+            double panel = panelSize() * zoom;
+            // The origin is floored when shown: so that the panel's first column and row are not cut, take whole pixels here.
+            // (1e-9: a panel that fills the view exactly must not start a pixel early by rounding.)
+            exactX = Math.floor((viewWidth - panel) / 2.0 + 1e-9) - Math.floor(margin * zoom + 1e-9);
+            exactY = Math.floor((viewHeight - panel) / 2.0 + 1e-9) - Math.floor(margin * zoom + 1e-9);
+        } else {
+            exactX = Math.floor((viewWidth - shownSize()) / 2.0);
+            exactY = Math.floor((viewHeight - shownSize()) / 2.0);
+        }
     }
 
     private void clampOrigin() {
@@ -174,12 +228,23 @@ public final class ZoomPan {
         return originY() + imageY * zoom;
     }
 
-    /** "1:1", "8x", or "scaled to fit (96%)". */
+    /** Whether the image is shown smaller than 1:1 (each screen pixel then stands for more than one image pixel). */
+    public boolean belowOneToOne() {
+        return zoom < 1;
+    }
+
+    /**
+     * "1:1", "8x", "1:1, margins cropped", or below 1:1 "scaled to 93 % (below 1:1: ...)",
+     * saying how the smaller picture keeps its lines and how to see it at 1:1.
+     */
     public String describe() {
+        String crop = cropped() ? ", margins cropped" : "";
         if (!isIntegerZoom()) {
-            return "scaled to fit (" + Math.round(zoom * 100) + " %)";
+            return "scaled to " + Math.round(zoom * 100) + " %" + crop
+                    + " (below 1:1: each screen pixel shows its most distinct page pixel, so 1-px lines stay;"
+                    + " Z: 1:1, drag to scroll)";
         }
         int z = (int) zoom;
-        return z == 1 ? "1:1" : z + "x";
+        return (z == 1 ? "1:1" : z + "x") + crop;
     }
 }

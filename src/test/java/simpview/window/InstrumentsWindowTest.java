@@ -58,20 +58,21 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window().pageView().getHeight() < 480, "the smaller frame laid out");
         driver.robot().waitForIdle();
         PageView view = window().pageView();
-        double shown = driver.onEdt(() -> view.zoomPan().shownSize());
-        Point origin = driver.onEdt(view::imageOrigin);
+        ZoomPan zoomPan = view.zoomPan();
         int width = driver.onEdt(view::getWidth);
         int height = driver.onEdt(view::getHeight);
-        assertTrue(origin.x >= 0 && origin.y >= 0 && origin.x + shown <= width && origin.y + shown <= height,
-                "the whole page in the view: origin " + origin + ", size " + shown + " in " + width + "x" + height);
-        assertTrue(driver.onEdt(() -> window().status().inspectorText()).contains("scaled to fit"),
-                driver.onEdt(() -> window().status().inspectorText()));
-        // On screen: all four corners of the scaled page are its white margins.
-        BufferedImage screen = driver.capturePage();
-        int last = screen.getWidth() - 1;
-        for (int[] corner : new int[][] {{0, 0}, {last, 0}, {0, last}, {last, last}}) {
-            assertEquals(0xFFFFFF, screen.getRGB(corner[0], corner[1]) & 0xFFFFFF, "corner " + corner[0] + "," + corner[1]);
-        }
+        // The panel (image 50 to 699) is whole in the view, scaled below 1:1; the white margins are cropped.
+        double left = driver.onEdt(() -> zoomPan.screenX(PageCanvas.MARGIN));
+        double top = driver.onEdt(() -> zoomPan.screenY(PageCanvas.MARGIN));
+        double right = driver.onEdt(() -> zoomPan.screenX(PageCanvas.MARGIN + PageCanvas.PANEL));
+        double bottom = driver.onEdt(() -> zoomPan.screenY(PageCanvas.MARGIN + PageCanvas.PANEL));
+        assertTrue(left >= 0 && top >= 0 && right <= width + 1 && bottom <= height + 1,
+                "the whole panel in the view: " + left + "," + top + " to " + right + "," + bottom + " in " + width + "x" + height);
+        assertTrue(driver.onEdt(() -> zoomPan.cropped() && zoomPan.zoom() < 1));
+        String said = driver.onEdt(() -> window().status().inspectorText());
+        assertTrue(said.contains("below 1:1") && said.contains("margins cropped"), said);
+        // On screen, exactly the picture the line-keeping filter makes (its lines whole), the margins gone.
+        assertEquals(0, driver.screenDiffersFrom(driver.onEdt(() -> window().shown()).image()), "the scaled page on screen");
     }
 
     @Test
@@ -130,7 +131,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         String z = Inspector.number(triangles[nearest][0].z());
         // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
         java.util.regex.Pattern expected = java.util.regex.Pattern.compile(
-                "x (\\d+), y (\\d+) · rgb " + grey + " " + grey + " " + grey + " = .*");
+                "x (\\d+), y (\\d+) \\(image row \\d+\\) · rgb " + grey + " " + grey + " " + grey + " = .*");
         driver.awaitEdt(() -> expected.matcher(window().status().inspectorText()).matches(), "the inspector on the centre");
         String line = driver.onEdt(() -> window().status().inspectorText());
         java.util.regex.Matcher at = expected.matcher(line);

@@ -92,8 +92,10 @@ public final class WindowDriver {
     private boolean pageIsWhereTheToolkitSaysItIs() throws Exception {
         BufferedImage screen = capturePage();
         double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        Point origin = onEdt(() -> window.pageView().imageOrigin());
         int shown = Math.min(screen.getWidth(), screen.getHeight());
-        int margin = (int) Math.floor(PageCanvas.MARGIN * Math.min(1, zoom));
+        // With the margins cropped (a small screen), only what is left of them shows.
+        int margin = (int) Math.floor(PageCanvas.MARGIN * Math.min(1, zoom) + Math.min(0, Math.min(origin.x, origin.y)));
         for (int i = 0; i < shown; i++) {
             for (int m = 0; m < margin; m++) {
                 if ((screen.getRGB(i, m) & 0xFFFFFF) != 0xFFFFFF || (screen.getRGB(m, i) & 0xFFFFFF) != 0xFFFFFF) {
@@ -265,11 +267,17 @@ public final class WindowDriver {
      */
     long screenDiffersFrom(BufferedImage page) throws Exception {
         double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
-        if (zoom != 1) {
+        if (zoom > 1) {
             return scaledScreenDiffersFrom(page, zoom);
         }
-        BufferedImage screen = captureWhen(capture -> Images.differingPixels(page, capture) == 0);
-        long differing = Images.differingPixels(page, screen);
+        // At 1:1 the page itself; below 1:1 the page as the line-keeping filter makes it smaller: exactly.
+        BufferedImage whole = zoom == 1 ? page : LineKeepingDownscale.of(page, zoom);
+        Point origin = onEdt(() -> window.pageView().imageOrigin());
+        Rectangle seen = onEdt(this::pageOnScreen);
+        BufferedImage expected = whole.getSubimage(Math.max(0, -origin.x), Math.max(0, -origin.y),
+                Math.min(seen.width, whole.getWidth()), Math.min(seen.height, whole.getHeight()));
+        BufferedImage screen = captureWhen(capture -> Images.differingPixels(expected, capture) == 0);
+        long differing = Images.differingPixels(expected, screen);
         if (differing != 0) {
             keepEvidence("differs-" + differing, screen);
         }
@@ -277,9 +285,9 @@ public final class WindowDriver {
     }
 
     /**
-     * The same for a page scaled to fit (a screen too small for 1:1): a
-     * screen pixel matches when it shows the page pixel it falls on, or,
-     * where rounding can pick either, one of that pixel's neighbours.
+     * The same for a page zoomed in at a zoom that is not whole: a screen
+     * pixel matches when it shows the page pixel it falls on, or, where
+     * rounding can pick either, one of that pixel's neighbours.
      */
     private long scaledScreenDiffersFrom(BufferedImage page, double zoom) throws Exception {
         java.util.function.ToLongFunction<BufferedImage> count = screen -> {

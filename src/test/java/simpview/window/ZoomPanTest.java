@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 public class ZoomPanTest {
 
     private static ZoomPan in(int width, int height) {
-        ZoomPan zoomPan = new ZoomPan(750);
+        ZoomPan zoomPan = new ZoomPan(750, 50);
         zoomPan.resize(width, height);
         return zoomPan;
     }
@@ -32,12 +32,43 @@ public class ZoomPanTest {
     }
 
     @Test
-    void aViewportSmallerThanThePageScalesItDownAndSaysSo() {
-        ZoomPan zoomPan = in(1366, 700);
+    void aViewportSmallerThanThePageShowsThePanelAt1To1WithItsMarginsCropped() {
+        // 1366x768 less the menu bar and the status line: 750 does not fit, 650 does.
+        ZoomPan zoomPan = in(946, 700);
+        assertEquals(1.0, zoomPan.zoom());
+        assertTrue(zoomPan.cropped());
+        // The panel (image 50..699) is centred: its first column and row at (148, 25).
+        assertEquals(148.0, zoomPan.screenX(50));
+        assertEquals(25.0, zoomPan.screenY(50));
+        assertEquals(50, zoomPan.imageX(148));
+        assertEquals("1:1, margins cropped", zoomPan.describe());
+    }
+
+    @Test
+    void aViewportSmallerThanThePanelScalesThePanelBelow1To1AndSaysSo() {
+        ZoomPan zoomPan = in(1366, 600);
         assertFalse(zoomPan.isIntegerZoom());
-        assertEquals(700 / 750.0, zoomPan.zoom(), 1e-12);
-        assertTrue(zoomPan.shownSize() <= 700);
-        assertTrue(zoomPan.describe().startsWith("scaled to fit"), zoomPan.describe());
+        assertEquals(600 / 650.0, zoomPan.zoom(), 1e-12);
+        assertTrue(zoomPan.cropped());
+        assertTrue(zoomPan.screenY(50) >= 0 && zoomPan.screenY(700) <= 601);
+        assertTrue(zoomPan.describe().startsWith("scaled to 92 %, margins cropped (below 1:1"), zoomPan.describe());
+        zoomPan.actualSize();
+        assertEquals(1.0, zoomPan.zoom());
+        assertFalse(zoomPan.cropped(), "1:1 by Z is not a fit: it pans");
+    }
+
+    @Test
+    void cropFitsThePanelAloneEvenWhenThePageFits() {
+        ZoomPan zoomPan = in(800, 800);
+        zoomPan.fitPanel();
+        assertEquals(1.0, zoomPan.zoom());
+        assertTrue(zoomPan.cropped());
+        assertEquals(75.0, zoomPan.screenX(50));
+        zoomPan.resize(1400, 1400);
+        assertEquals(2.0, zoomPan.zoom(), "the crop follows the window: 650 fits twice in 1400");
+        zoomPan.fit();
+        assertEquals(1.0, zoomPan.zoom());
+        assertFalse(zoomPan.cropped());
     }
 
     @Test
@@ -99,8 +130,10 @@ public class ZoomPanTest {
     void aResizeInFitModeRefits() {
         ZoomPan zoomPan = in(750, 750);
         zoomPan.resize(500, 600);
-        assertEquals(500 / 750.0, zoomPan.zoom(), 1e-12);
-        assertTrue(zoomPan.originX() >= 0 && zoomPan.originY() >= 0 && zoomPan.originY() + zoomPan.shownSize() <= 600);
+        assertEquals(500 / 650.0, zoomPan.zoom(), 1e-12);
+        // The panel, not the margins, fills the view.
+        assertTrue(zoomPan.screenX(50) >= 0 && zoomPan.screenX(700) <= 501 && zoomPan.screenY(50) >= 0
+                && zoomPan.screenY(700) <= 601);
     }
 
     @Test

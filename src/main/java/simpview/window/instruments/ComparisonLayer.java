@@ -24,7 +24,7 @@ import simpview.surface.PageCanvas;
 
 /**
  * Compare mode in the window (issue 15). A picture dropped on a page, or
- * opened with Ctrl+Shift+O, is compared with the view on screen and stays
+ * opened with Ctrl+Shift+O (the dialog opens in the scene's folder), is compared with the view on screen and stays
  * with that view (stepping away and back keeps it). B flips between ours and
  * theirs, H shows the heat map, Backspace stops comparing; the status line
  * gives the shares. Everything here runs on the EDT.
@@ -33,12 +33,6 @@ public final class ComparisonLayer {
 
     /** What the page view shows while comparing. */
     public enum Showing { OURS, THEIRS, HEAT }
-
-    /** Binds a key stroke to an action, the window's way. */
-    @FunctionalInterface
-    public interface KeyBinder {
-        void bind(String name, Runnable action, String stroke);
-    }
 
     private static final int TOLERANCE = 8;
 
@@ -52,17 +46,15 @@ public final class ComparisonLayer {
     private Showing showing = Showing.OURS;
     private String text = "";
 
-    public ComparisonLayer(JFrame owner, BiConsumer<BufferedImage, String> pageView, Consumer<String> say) {
+    /** The heat map's legend while it is shown, else null. */
+    private final Consumer<Legend> legend;
+
+    public ComparisonLayer(JFrame owner, BiConsumer<BufferedImage, String> pageView, Consumer<String> say,
+            Consumer<Legend> legend) {
         this.owner = owner;
         this.pageView = pageView;
         this.say = say;
-    }
-
-    public void bindKeys(KeyBinder keys) {
-        keys.bind("compare-flip", this::flip, "B");
-        keys.bind("compare-heat", this::heat, "H");
-        keys.bind("compare-stop", this::stop, "BACK_SPACE");
-        keys.bind("compare-open", this::choosePicture, "ctrl shift O");
+        this.legend = legend;
     }
 
     /** Compares a picture with the view on screen; a picture that cannot be compared is said why. */
@@ -95,33 +87,35 @@ public final class ComparisonLayer {
         repaint();
     }
 
-    void flip() {
+    public void flip() {
         if (comparison != null) {
             showing = showing == Showing.THEIRS ? Showing.OURS : Showing.THEIRS;
             repaint();
         }
     }
 
-    void heat() {
+    public void heat() {
         if (comparison != null) {
             showing = showing == Showing.HEAT ? Showing.OURS : Showing.HEAT;
             repaint();
         }
     }
 
-    void stop() {
+    public void stop() {
         if (comparison != null) {
             theirs.remove(shown.view());
             comparison = null;
             showing = Showing.OURS;
             text = "";
+            legend.accept(null);
             pageView.accept(shown.image(), shown.error());
             say.accept("Stopped comparing.");
         }
     }
 
-    private void choosePicture() {
-        JFileChooser chooser = new JFileChooser();
+    /** Asks for a picture to compare with, starting in {@code folder} (the shown scene's, or the pages'). */
+    public void choosePicture(Path folder) {
+        JFileChooser chooser = new JFileChooser(folder == null ? null : folder.toFile());
         chooser.setDialogTitle("Compare the page with a picture");
         chooser.setFileFilter(new FileNameExtensionFilter("Pictures (*.png, *.jpg, *.gif, *.bmp)", "png", "jpg", "jpeg", "gif", "bmp"));
         if (chooser.showOpenDialog(owner) == JFileChooser.APPROVE_OPTION) {
@@ -136,6 +130,7 @@ public final class ComparisonLayer {
             case HEAT -> heatPage();
         };
         pageView.accept(image, showing == Showing.OURS ? shown.error() : null);
+        legend.accept(showing == Showing.HEAT ? Legend.heatMap(TOLERANCE) : null);
         Shares slack = comparison.withSlack();
         text = String.format("vs %s: identical %s, ≤1/255 %s, ≤8/255 %s (1 px slack) · showing %s · B flip · H heat · ⌫ stop",
                 theirs.get(shown.view()).name().replaceFirst(".*[/\\\\]", ""), Percent.of(slack.identical()),
@@ -150,7 +145,7 @@ public final class ComparisonLayer {
     }
 
     /** For an inspector: their pixel at page pixel (x, y down from the top-left), or empty when not comparing. */
-    Optional<Integer> theirsAt(int x, int y) {
+    public Optional<Integer> theirsAt(int x, int y) {
         int px = x - PageCanvas.MARGIN;
         int py = y - PageCanvas.MARGIN;
         if (comparison == null || px < 0 || py < 0 || px >= Comparison.N || py >= Comparison.N) {
@@ -166,6 +161,11 @@ public final class ComparisonLayer {
     /** The status line while comparing, or "" when not. */
     public String statusText() {
         return text;
+    }
+
+    /** The name of the picture compared with, or null when not comparing. */
+    public String theirName() {
+        return comparison == null ? null : theirs.get(shown.view()).name().replaceFirst(".*[/\\\\]", "");
     }
 
     public Comparison comparison() {

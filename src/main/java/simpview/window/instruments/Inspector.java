@@ -55,7 +55,7 @@ public final class Inspector {
         int x = panelX(ix);
         int y = panelY(iy);
         StringBuilder sb = new StringBuilder();
-        sb.append("x ").append(x).append(", y ").append(y).append(" · ").append(colour);
+        sb.append("x ").append(x).append(", y ").append(y).append(" (image row ").append(iy).append(") · ").append(colour);
         PageFacts facts = view.facts();
         if (facts.depths() != null) {
             double z = facts.depths()[y * PageCanvas.PANEL + x];
@@ -65,6 +65,11 @@ public final class Inspector {
         }
         sb.append(" · ").append(drawnBy(facts, y * PageCanvas.PANEL + x));
         return sb.toString();
+    }
+
+    /** "rgb 255 128 0": a colour's bytes. */
+    public static String rgb(int rgb) {
+        return "rgb " + ((rgb >> 16) & 0xFF) + " " + ((rgb >> 8) & 0xFF) + " " + (rgb & 0xFF);
     }
 
     /** "rgb 255 128 0 = (1.000, 0.502, 0.000)". */

@@ -22,9 +22,12 @@ import simpview.scene.simp.SceneMonitor;
  * its colour was made and the vertices of the primitive that drew it, as
  * {@code simpview inspect} prints them. The text wraps and scrolls; nothing
  * is cut off. The replay behind it runs on the panel's own thread
- * ("simpview-pixel-history"), one at a time; a newer request overtakes an
- * older one, whose answer is then dropped. Methods other than the worker's
- * run on the EDT.
+ * ("simpview-inspector"), one at a time; a newer request overtakes an older
+ * one: only the newest waiting request is replayed (the pointer's moves do
+ * not queue up), and an answer for an older one is dropped. Each part of an
+ * include chain in the text ("cube.simp:7") is a link: a click copies the
+ * file's whole path and line to the clipboard. Methods other than the
+ * worker's run on the EDT.
  */
 public final class InspectorPanel {
 
@@ -43,6 +46,17 @@ public final class InspectorPanel {
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
+    /** The newest request waiting for the worker, or null: taken by the worker, set on the EDT. */
+    private final java.util.concurrent.atomic.AtomicReference<Runnable> waiting =
+            new java.util.concurrent.atomic.AtomicReference<>();
+    /** The places the text's chains name, by the text's spelling ("cube.simp:7"), for the links. */
+    private java.util.Map<String, simpview.scene.simp.SourcePlace> places = java.util.Map.of();
+    /** The inspected pixel's owner's chain, whole, for Copy chain; empty when there is none. */
+    private java.util.List<simpview.scene.simp.SourcePlace> ownerChain = java.util.List.of();
+    /** What a click on a chain's part says (the window's status line). */
+    private java.util.function.Consumer<String> say = message -> { };
+    /** A part of a chain as the text spells it: a file name, a colon, a line number. */
+    private static final java.util.regex.Pattern PART = java.util.regex.Pattern.compile("[^\\s›()\"]+\\.(simp|obj):\\d+");
 
     public InspectorPanel() {
         text.setEditable(false);
@@ -57,6 +71,67 @@ public final class InspectorPanel {
         scroll.setName("inspector panel");
         scroll.setVisible(false);
         say("Pin a pixel (P) to see every write it received, how its colour was made, and its primitive's vertices.");
+        java.awt.event.MouseAdapter links = new java.awt.event.MouseAdapter() {
+            @Override
+            public void mouseClicked(java.awt.event.MouseEvent e) {
+                String part = partAt(e.getPoint());
+                if (part != null) {
+                    copyPart(part);
+                }
+            }
+
+            @Override
+            public void mouseMoved(java.awt.event.MouseEvent e) {
+                text.setCursor(java.awt.Cursor.getPredefinedCursor(partAt(e.getPoint()) != null
+                        ? java.awt.Cursor.HAND_CURSOR : java.awt.Cursor.TEXT_CURSOR));
+            }
+        };
+        text.addMouseListener(links);
+        text.addMouseMotionListener(links);
+    }
+
+    /** Where a click on a chain's part is told ("Copied ..."). */
+    public void onCopy(java.util.function.Consumer<String> message) {
+        say = message;
+    }
+
+    /** The chain's part ("cube.simp:7") under a point of the text, or null. */
+    String partAt(java.awt.Point point) {
+        int at = text.viewToModel2D(point);
+        if (at < 0) {
+            return null;
+        }
+        String all = text.getText();
+        int lineStart = all.lastIndexOf('\n', Math.max(0, at - 1)) + 1;
+        int lineEnd = all.indexOf('\n', at);
+        String line = all.substring(lineStart, lineEnd < 0 ? all.length() : lineEnd);
+        java.util.regex.Matcher m = PART.matcher(line);
+        while (m.find()) {
+            if (lineStart + m.start() <= at && at <= lineStart + m.end()) {
+                return m.group();
+            }
+        }
+        return null;
+    }
+
+    /** Copies a chain's part as its whole path and line ("/.../cube.simp:7"), or as spelt when its file is not known. */
+    public String copyPart(String part) {
+        simpview.scene.simp.SourcePlace place = places.get(part);
+        String copied = place == null ? part : place.file().toAbsolutePath() + ":" + place.line();
+        java.awt.Toolkit.getDefaultToolkit().getSystemClipboard()
+                .setContents(new java.awt.datatransfer.StringSelection(copied), null);
+        say.accept("Copied " + copied);
+        return copied;
+    }
+
+    /** The inspected pixel's owner's include chain, whole paths, " › " between the parts; "" when none. */
+    public String ownerChainText() {
+        StringBuilder chain = new StringBuilder();
+        for (simpview.scene.simp.SourcePlace place : ownerChain) {
+            chain.append(chain.length() == 0 ? "" : " › ").append(place.file().toAbsolutePath()).append(':')
+                    .append(place.line());
+        }
+        return chain.toString();
     }
 
     public JComponent component() {
@@ -78,36 +153,66 @@ public final class InspectorPanel {
     public void say(String message) {
         request++;
         answered = true;
+        places = java.util.Map.of();
+        ownerChain = java.util.List.of();
         text.setText(message);
         text.setCaretPosition(0);
     }
 
-    /** Replays {@code scene} for panel pixel (x, y) and shows the report when it is ready. */
+    /**
+     * Replays {@code scene} for panel pixel (x, y) and shows the report when
+     * it is ready, after {@code before} (the other picture's values while
+     * comparing, or null) and {@code note} (or null).
+     */
     public void inspect(InspectedScene scene, int x, int y, String note) {
+        inspect(scene, x, y, note, null);
+    }
+
+    public void inspect(InspectedScene scene, int x, int y, String note, String before) {
         int mine = ++request;
         answered = false;
-        text.setText("Replaying the scene for pixel (" + x + ", " + y + ") ...");
-        worker.submit(() -> {
+        text.setText((before == null ? "" : before + "\n\n") + "Replaying the scene for pixel (" + x + ", " + y
+                + ") ...");
+        Runnable job = () -> {
             String report;
+            java.util.Map<String, simpview.scene.simp.SourcePlace> named = new java.util.HashMap<>();
+            java.util.List<simpview.scene.simp.SourcePlace> chain = java.util.List.of();
             try {
                 PixelReport r = inspector.inspect(scene, x, y);
                 HistoryEntry owner = r.lastWritten();
-                report = (note == null ? "" : note + "\n\n")
+                report = (before == null ? "" : before + "\n\n") + (note == null ? "" : note + "\n\n")
                         + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive());
+                for (HistoryEntry entry : r.history()) {
+                    for (simpview.scene.simp.SourcePlace place : entry.chain()) {
+                        named.put(place.file().getFileName() + ":" + place.line(), place);
+                    }
+                }
+                chain = owner == null ? java.util.List.of() : owner.chain();
             } catch (SceneException e) {
                 report = "The scene stops with an error, so the history ends there:\n" + e.getMessage();
             } catch (RuntimeException e) {
                 report = "Could not replay the scene: " + e;
             }
             String shown = report;
+            java.util.List<simpview.scene.simp.SourcePlace> ownerPlaces = chain;
             SwingUtilities.invokeLater(() -> {
                 if (mine == request) {
                     answered = true;
+                    places = named;
+                    ownerChain = ownerPlaces;
                     text.setText(shown);
                     text.setCaretPosition(0);
                 }
             });
-        });
+        };
+        if (waiting.getAndSet(job) == null) {
+            worker.submit(() -> {
+                Runnable newest = waiting.getAndSet(null);
+                if (newest != null) {
+                    newest.run();
+                }
+            });
+        }
     }
 
     /**

@@ -1,0 +1,175 @@
+package simpview.window;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.geom.Rectangle2D;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.Test;
+import simpview.scene.simp.SceneDrawer;
+import simpview.surface.PageCanvas;
+import simpview.window.render.View;
+
+/**
+ * The view on a small screen, the menu bar and getting to a pixel, under
+ * Xvfb: on a 768-pixel-high screen the panel is at 1:1 beside the inspector;
+ * the inspector follows the pointer, goes to a pixel by its coordinates, and
+ * a click on a part of the include chain copies it; menu entries do what
+ * their keys do.
+ */
+public class ViewWindowTest extends WindowTestCase {
+
+    @Test
+    void onA768PixelScreenThePanelIsAt1To1BesideTheInspectorWhichFollowsThePointerAndGoesToAPixel() throws Exception {
+        Files.writeString(dir.resolve("leaf.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path scene = dir.resolve("top.simp");
+        Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n");
+        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        // Xvfb's screen is 1280x1024; the window placed as on a 1366x768 laptop's (its height is what binds).
+        driver.onEdt(() -> window.placeWithin(new Rectangle(0, 0, 1280, 768)));
+        driver.press(KeyEvent.VK_I);
+        driver.awaitEdt(() -> window.inspectorPanel().component().isShowing()
+                && window.pageView().getWidth() >= PageCanvas.PANEL, "the panel shown beside the page");
+        driver.robot().waitForIdle();
+        ZoomPan zoomPan = window.pageView().zoomPan();
+        assertEquals(1.0, (double) driver.onEdt(zoomPan::zoom), "the panel at 1:1");
+        assertTrue(driver.onEdt(zoomPan::cropped), "the white margins cropped");
+        int width = driver.onEdt(() -> window.pageView().getWidth());
+        int height = driver.onEdt(() -> window.pageView().getHeight());
+        assertTrue(height < PageCanvas.SIZE, "the whole page does not fit: " + height);
+        double left = driver.onEdt(() -> zoomPan.screenX(PageCanvas.MARGIN));
+        double top = driver.onEdt(() -> zoomPan.screenY(PageCanvas.MARGIN));
+        assertTrue(left >= 0 && top >= 0 && left + PageCanvas.PANEL <= width && top + PageCanvas.PANEL <= height,
+                "the whole panel in view at " + left + "," + top + " in " + width + "x" + height);
+        assertEquals(0, driver.screenDiffersFrom(driver.onEdt(() -> window.shown()).image()), "the panel on screen");
+
+        // Nothing pinned: the panel follows the pointer.
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        awaitPanel(window, "pixel (325, 324) of the panel");
+        assertTrue(driver.onEdt(() -> window.status().inspectorText()).contains("1:1, margins cropped"));
+        Point other = driver.onScreen(PageCanvas.MARGIN + 300, PageCanvas.MARGIN + 400);
+        driver.robot().mouseMove(other.x, other.y);
+        awaitPanel(window, "pixel (300, 249) of the panel");
+
+        // Shift+G: go to panel pixel (325, 330), typed; it is pinned, the panel shows it, the image's row is said.
+        driver.robot().keyPress(KeyEvent.VK_SHIFT);
+        driver.press(KeyEvent.VK_G);
+        driver.robot().keyRelease(KeyEvent.VK_SHIFT);
+        driver.awaitEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
+                instanceof javax.swing.JTextField, "the go-to-pixel dialog");
+        for (int key : new int[] {KeyEvent.VK_3, KeyEvent.VK_2, KeyEvent.VK_5, KeyEvent.VK_COMMA, KeyEvent.VK_3,
+                KeyEvent.VK_3, KeyEvent.VK_0, KeyEvent.VK_ENTER}) {
+            driver.press(key);
+        }
+        try {
+            driver.awaitEdt(() -> window.status().messageText().startsWith("Pinned panel pixel (325, 330)"),
+                    "the pixel pinned");
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "; the status line says: "
+                    + driver.onEdt(() -> window.status().messageText()), e);
+        }
+        assertTrue(driver.onEdt(() -> window.status().messageText()).contains("column 375, row 369"));
+        driver.robot().mouseMove(1, 1);
+        String text = awaitPanel(window, "pixel (325, 330) of the panel");
+        assertTrue(text.contains("drawn by primitive 2: top.simp:2 › leaf.simp:1 polygon"), text);
+
+        // A click on "leaf.simp:1" in the panel copies that file's path and line.
+        Point link = driver.onEdt(() -> {
+            JTextArea area = (JTextArea) ((JScrollPane) window.inspectorPanel().component()).getViewport().getView();
+            int at = area.getText().indexOf("leaf.simp:1");
+            Rectangle2D box = area.modelToView2D(at + 3);
+            area.scrollRectToVisible(box.getBounds());
+            Point p = new Point((int) box.getCenterX(), (int) box.getCenterY());
+            SwingUtilities.convertPointToScreen(p, area);
+            return p;
+        });
+        driver.robot().mouseMove(link.x, link.y);
+        driver.robot().mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        driver.robot().mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        String copied = dir.resolve("leaf.simp").toAbsolutePath() + ":1";
+        driver.awaitEdt(() -> window.status().messageText().equals("Copied " + copied), "the part copied");
+        assertEquals(copied, Toolkit.getDefaultToolkit().getSystemClipboard().getData(DataFlavor.stringFlavor));
+    }
+
+    @Test
+    void theMenuBarsEntriesShowTheirKeysAndDoWhatTheKeysDo() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(361, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        JMenuBar bar = driver.onEdt(() -> window.frame().getJMenuBar());
+        int entries = driver.onEdt(() -> {
+            int n = 0;
+            for (int m = 0; m < bar.getMenuCount(); m++) {
+                for (int k = 0; k < bar.getMenu(m).getItemCount(); k++) {
+                    JMenuItem item = bar.getMenu(m).getItem(k);
+                    if (item != null) {
+                        WindowAction action = WindowAction.valueOf(item.getName());
+                        assertEquals(action.accelerator(), item.getAccelerator(), action + "'s accelerator");
+                        assertEquals(action.menu().title(), bar.getMenu(m).getText());
+                        n++;
+                    }
+                }
+            }
+            return n;
+        });
+        assertEquals(WindowAction.values().length, entries, "every action has its menu entry");
+
+        // View > Crop to the panel, clicked: the panel fills the view, as X does.
+        chooseFromMenu(window, "VIEW", WindowAction.CROP);
+        driver.awaitEdt(() -> window.pageView().zoomPan().cropped(), "the crop");
+        assertTrue(driver.onEdt(() -> window.status().inspectorText()).contains("margins cropped"));
+        // Page > Page 3, clicked: page 3, as the key 3 does.
+        chooseFromMenu(window, "PAGE", WindowAction.PAGE_3);
+        driver.awaitShown(new View.OfPage(3));
+        assertFalse(driver.onEdt(window::busy));
+    }
+
+    /** Clicks a menu on the bar, waits for its popup, and clicks the action's entry in it. */
+    private void chooseFromMenu(SimpviewWindow window, String menuName, WindowAction action) throws Exception {
+        JMenu menu = driver.onEdt(() -> {
+            JMenuBar bar = window.frame().getJMenuBar();
+            for (int m = 0; m < bar.getMenuCount(); m++) {
+                if (bar.getMenu(m).getName().equals(menuName)) {
+                    return bar.getMenu(m);
+                }
+            }
+            throw new AssertionError("no menu " + menuName);
+        });
+        driver.click(menu);
+        JMenuItem item = driver.onEdt(() -> {
+            for (int k = 0; k < menu.getItemCount(); k++) {
+                if (menu.getItem(k) != null && menu.getItem(k).getName().equals(action.name())) {
+                    return menu.getItem(k);
+                }
+            }
+            throw new AssertionError("no entry " + action);
+        });
+        driver.awaitEdt(item::isShowing, "the " + menuName + " menu open");
+        driver.click(item);
+    }
+
+    private String awaitPanel(SimpviewWindow window, String start) throws Exception {
+        driver.awaitEdt(() -> window.inspectorPanel().answered() && window.inspectorPanel().text().startsWith(start),
+                "the panel on " + start);
+        return driver.onEdt(() -> window.inspectorPanel().text());
+    }
+}
