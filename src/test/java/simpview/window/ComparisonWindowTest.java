@@ -2,6 +2,7 @@ package simpview.window;
 
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
+import simpview.window.instruments.Inspector;
 import simpview.window.render.View;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -89,6 +90,16 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertTrue(status.contains("≤8/255 " + Percent.of(expected.share(8, true))), status);
         assertTrue(expected.share(0, true) < 0.99, "the square differs");
         assertEquals(0, driver.screenDiffersFrom(ours), "ours first");
+        // The inspector shows both pictures at the pixel: in the square, ours and their cyan.
+        java.awt.Point inSquare = driver.onScreen(50 + 350, 50 + 350);
+        driver.robot().mouseMove(inSquare.x, inSquare.y);
+        String ourPixel = Inspector.rgb(ours.getRGB(400, 400));
+        driver.awaitEdt(() -> driver.window().status().inspectorText().contains("rgb")
+                && driver.window().status().inspectorText().contains(" · theirs rgb 0 255 255"), "both pictures' values");
+        assertTrue(driver.onEdt(() -> driver.window().status().inspectorText()).contains(ourPixel));
+        driver.robot().mouseMove(1, 1);
+        // Compare's dialog opens in the pages' folder here (the shown scene's folder for a scene).
+        assertEquals(TestScenes.courseSimpDir(), driver.onEdt(() -> driver.window().dialogFolder()));
 
         driver.press(KeyEvent.VK_B);
         assertEquals(ComparisonLayer.Showing.THEIRS, driver.onEdt(() -> driver.window().comparison().showing()));
@@ -103,6 +114,9 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertEquals(0, driver.screenDiffersFrom(heatPage), "the heat map after H");
         assertEquals(0xFF0000, heatPage.getRGB(50 + 350, 50 + 350) & 0xFF0000, "the square is red on it");
         assertTrue(driver.onEdt(() -> driver.window().status().text()).contains("showing heat"));
+        String legend = driver.onEdt(() -> driver.window().legendStrip().isShowing() ? driver.window().legendStrip().text() : "");
+        assertTrue(legend.startsWith("heat map") && legend.contains("#0000a0 differs by at most 8/255")
+                && legend.contains("#d0d000 matches only one pixel off"), legend);
 
         // The comparison stays with page 1: away and back, it is still there.
         driver.press(KeyEvent.VK_RIGHT);
@@ -115,6 +129,7 @@ public class ComparisonWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_BACK_SPACE);
         assertEquals(0, driver.screenDiffersFrom(ours), "ours once stopped");
         assertEquals("Stopped comparing.", driver.onEdt(() -> driver.window().status().text()));
+        assertEquals(null, driver.onEdt(() -> driver.window().legendStrip().legend()), "no legend once stopped");
     }
 
     @Test
