@@ -45,6 +45,11 @@ public final class PageView extends JComponent {
     /** Outlines drawn over the whole page (wire over fill), each in image coordinates; null for none. */
     private transient java.util.List<double[]> wire;
     private static final Color WIRE = new Color(0, 255, 128, 200);
+    /** The culled and the clipped-away primitives' outlines (image coordinates), or null for none. */
+    private transient java.util.List<double[]> culled;
+    private transient java.util.List<double[]> clipped;
+    static final Color CULLED = new Color(255, 160, 0);
+    static final Color CLIPPED = new Color(0, 200, 255);
 
     PageView() {
         setPreferredSize(new Dimension(PageCanvas.SIZE, PageCanvas.SIZE));
@@ -127,6 +132,17 @@ public final class PageView extends JComponent {
         return wire != null;
     }
 
+    /** Outlines the primitives culled and those clipped away (image coordinates), or none (nulls). */
+    void skipped(java.util.List<double[]> culledOutlines, java.util.List<double[]> clippedOutlines) {
+        culled = culledOutlines;
+        clipped = clippedOutlines;
+        repaint();
+    }
+
+    boolean skippedShown() {
+        return culled != null;
+    }
+
     /** Where the image's top-left corner is, in this component. */
     java.awt.Point imageOrigin() {
         return new java.awt.Point((int) zoomPan.originX(), (int) zoomPan.originY());
@@ -194,14 +210,20 @@ public final class PageView extends JComponent {
     }
 
     private void paintWire(Graphics2D g) {
-        if (wire == null) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setStroke(new BasicStroke(1f));
+        outlines(g, wire, WIRE);
+        outlines(g, culled, CULLED);
+        outlines(g, clipped, CLIPPED);
+    }
+
+    private void outlines(Graphics2D g, java.util.List<double[]> shapes, Color colour) {
+        if (shapes == null) {
             return;
         }
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setColor(WIRE);
-        g.setStroke(new BasicStroke(1f));
+        g.setColor(colour);
         Path2D.Double path = new Path2D.Double();
-        for (double[] points : wire) {
+        for (double[] points : shapes) {
             path.moveTo(zoomPan.screenX(points[0]), zoomPan.screenY(points[1]));
             for (int k = 2; k + 1 < points.length; k += 2) {
                 path.lineTo(zoomPan.screenX(points[k]), zoomPan.screenY(points[k + 1]));

@@ -85,6 +85,8 @@ public final class SimpviewWindow {
     private boolean backFacesShown;
     private int backFaces = -1;
     private int overdrawMax = -1;
+    /** What the culled and clipped-away overlay last found: for the tests. */
+    private simpview.inspect.SkippedPrimitives.Found skippedFound;
     /** The screen area a test placed the frame in, or null for the real one. */
     private Rectangle placedWithin;
 
@@ -275,6 +277,7 @@ public final class SimpviewWindow {
             case BACK_FACES -> toggleBackFaces();
             case OVERDRAW -> toggleOverdraw(false);
             case DEPTH_FAILURES -> toggleOverdraw(true);
+            case CULLED -> toggleSkipped();
             case WIRE -> toggleWire();
             case COMPARE_FLIP -> comparison.flip();
             case COMPARE_HEAT -> comparison.heat();
@@ -647,6 +650,49 @@ public final class SimpviewWindow {
         return options.simpDir();
     }
 
+    /**
+     * The culled and clipped-away outlines (U): found by a replay on the
+     * inspector's thread that writes no pixel, drawn over the page with a
+     * legend; again: off. A new picture takes them away.
+     */
+    private void toggleSkipped() {
+        if (pageView.skippedShown()) {
+            pageView.skipped(null, null);
+            legendStrip.show(null);
+            return;
+        }
+        if (shown == null) {
+            return;
+        }
+        simpview.inspect.InspectedScene scene = inspectedScene(status::say);
+        if (scene == null) {
+            return;
+        }
+        RenderedView of = shown;
+        status.say("Finding the primitives culled and clipped away ...");
+        inspectorPanel.skipped(scene, found -> {
+            if (shown != of || found == null) {
+                status.say(found == null ? "The scene has an error: no outlines." : "");
+                return;
+            }
+            java.util.List<double[]> culled = new java.util.ArrayList<>();
+            java.util.List<double[]> clipped = new java.util.ArrayList<>();
+            for (simpview.inspect.SkippedPrimitives.Skipped s : found.outlined()) {
+                (s.culled() ? culled : clipped).add(Inspector.toImage(s.outline()));
+            }
+            skippedFound = found;
+            pageView.skipped(culled, clipped);
+            legendStrip.show(new simpview.window.instruments.Legend("never rasterized (U: off)", java.util.List.of(
+                    new simpview.window.instruments.Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size()
+                            + " culled: every vertex outside one plane of the view"),
+                    new simpview.window.instruments.Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size()
+                            + " clipped away whole"))));
+            status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
+                    + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more have a vertex at or behind "
+                    + "the eye and no outline" : "") + " · U: off");
+        });
+    }
+
     /** Wire over fill (W): every primitive's edges over the page; again: off. */
     private void toggleWire() {
         if (pageView.wireShown()) {
@@ -791,6 +837,7 @@ public final class SimpviewWindow {
                     : shown.image(), shown.error(), facts.drewSomething());
         }
         legendStrip.show(null);
+        pageView.skipped(null, null);
         if (pageView.wireShown()) {
             showWire();
         }
@@ -1012,6 +1059,11 @@ public final class SimpviewWindow {
 
     StatusStrip status() {
         return status;
+    }
+
+    /** What the culled and clipped-away overlay shows, or null while it is off. */
+    simpview.inspect.SkippedPrimitives.Found skippedShown() {
+        return pageView.skippedShown() ? skippedFound : null;
     }
 
     LegendStrip legendStrip() {

@@ -45,6 +45,8 @@ public enum WindowAction {
             + "(the most), the scale above the panel (again: the page)", "V"),
     DEPTH_FAILURES(Menu.VIEW, "Depth-test failures", "each pixel by how many writes lost its depth test, with the "
             + "scale (again: the page)", "shift V"),
+    CULLED(Menu.VIEW, "Culled and clipped-away outlines", "outline the primitives culled (every vertex outside one "
+            + "plane of the view) and those clipped away whole, as projected, with a legend (again: off)", "U"),
     WIRE(Menu.VIEW, "Wire over fill", "every primitive's edges drawn over the page, with a legend (again: off)",
             "W"),
     COMPARE_FLIP(Menu.VIEW, "Flip ours / theirs", "while comparing: flip between our page and the picture", "B"),

@@ -1,5 +1,6 @@
 package simpview.window;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -24,7 +25,8 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         Path scene = dir.resolve("top.simp");
         Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n"
                 + "polygon (-90, -90, -150) (90, -90, -150) (0, 90, -150)\n"
-                + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n");
+                + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n"
+                + "polygon (60, -90, -300) (90, -90, -300) (90, -60, -300)\n");
         driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
         SimpviewWindow window = driver.window();
         driver.focusByClicking(new View.OfPage(2));
@@ -78,6 +80,16 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         assertTrue(driver.onEdt(() -> window.status().messageText()).contains("1 of 4 polygons"));
         driver.press(KeyEvent.VK_K);
         driver.awaitEdt(() -> window.backFacesShownCount() == -1, "the page again");
+
+        // U: the one polygon beyond the far plane (z = -300) is culled, and outlined with its legend.
+        driver.press(KeyEvent.VK_U);
+        driver.awaitEdt(() -> window.skippedShown() != null, "the culled outlines");
+        assertEquals(1L, (long) driver.onEdt(() -> window.skippedShown().culled()));
+        assertEquals(0L, (long) driver.onEdt(() -> window.skippedShown().clipped()));
+        String legend = driver.onEdt(() -> window.legendStrip().text());
+        assertTrue(legend.contains("1 culled") && legend.contains("0 clipped away whole"), legend);
+        driver.press(KeyEvent.VK_U);
+        driver.awaitEdt(() -> window.skippedShown() == null && window.legendStrip().legend() == null, "the outlines off");
 
         // I again hides the panel.
         driver.press(KeyEvent.VK_I);

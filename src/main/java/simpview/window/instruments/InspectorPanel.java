@@ -232,6 +232,24 @@ public final class InspectorPanel {
         });
     }
 
+    /**
+     * The primitives of {@code scene} culled or clipped away whole, found on
+     * the inspector's thread, then given to {@code show} on the EDT (null when
+     * the scene has an error).
+     */
+    public void skipped(InspectedScene scene, java.util.function.Consumer<simpview.inspect.SkippedPrimitives.Found> show) {
+        worker.submit(() -> {
+            simpview.inspect.SkippedPrimitives.Found found;
+            try {
+                found = simpview.inspect.SkippedPrimitives.of(scene, models);
+            } catch (SceneException | RuntimeException e) {
+                found = null;
+            }
+            simpview.inspect.SkippedPrimitives.Found shown = found;
+            SwingUtilities.invokeLater(() -> show.accept(shown));
+        });
+    }
+
     /** The panel's text, whole (for copying and for tests). */
     public String text() {
         return text.getText();

@@ -1,0 +1,163 @@
+package simpview.inspect;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+import simpview.geometry.Camera;
+import simpview.raster.FragmentSink;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.DrawingWatch;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.SourcePlace;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.stage.PrimitiveTrace;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+
+/**
+ * The primitives of a scene that reach no rasterizer, as outlines on the
+ * panel: those culled whole (every vertex outside one plane of the view) and
+ * those clipped away whole, each projected as it is by the scene's camera
+ * (the depth-cued view's for a depth-cued scene). A primitive with a vertex
+ * at or behind the eye has no outline and is only counted. Found by a replay
+ * through {@link ScenePipeline} that writes no pixel: only the geometry runs.
+ */
+public final class SkippedPrimitives {
+
+    /** One primitive: culled or clipped away, its outline in panel x and y (y up) in turn, where it came from. */
+    public record Skipped(boolean culled, int kind, double[] outline, Path file, int line) {
+    }
+
+    /** What the replay found: the outlined ones, and how many more had no outline (a vertex at or behind the eye). */
+    public record Found(List<Skipped> outlined, int unprojectable) {
+
+        public long culled() {
+            return outlined.stream().filter(Skipped::culled).count();
+        }
+
+        public long clipped() {
+            return outlined.size() - culled();
+        }
+    }
+
+    private SkippedPrimitives() {
+    }
+
+    /** The scene's skipped primitives, drawn as {@code scene} says, its models from {@code models}. */
+    public static Found of(InspectedScene scene, ObjLibrary models) throws SceneException {
+        Collecting collecting = new Collecting();
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+                .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
+        ScenePipeline.draw(scene.file(), new PageCanvas(), options, collecting);
+        return new Found(List.copyOf(collecting.found), collecting.unprojectable);
+    }
+
+    private static final class Collecting implements SceneMonitor, DrawingWatch {
+        private final List<Skipped> found = new ArrayList<>();
+        private int unprojectable;
+        private Supplier<Camera> camera = () -> Camera.PARALLEL;
+
+        @Override
+        public PrimitiveTrace trace() {
+            return new PrimitiveTrace() {
+                @Override
+                public void read(int index, Path file, int line, int kind, double[] p, int at, int stride,
+                        int vertices) {
+                }
+
+                @Override
+                public boolean drawing(int index) {
+                    return true;
+                }
+
+                @Override
+                public void skipped(Path file, int line, int kind, boolean culled, double[] p, int at, int stride,
+                        int vertices) {
+                    double[] outline = project(camera.get(), p, at, stride, vertices);
+                    if (outline == null) {
+                        unprojectable++;
+                    } else {
+                        found.add(new Skipped(culled, kind, outline, file, line));
+                    }
+                }
+
+                @Override
+                public void restart() {
+                    found.clear();
+                    unprojectable = 0;
+                }
+            };
+        }
+
+        @Override
+        public DrawingWatch watch() {
+            return this;
+        }
+
+        /** Nothing is written: the outlines need only the geometry. */
+        @Override
+        public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
+            return new Drawable() {
+                @Override
+                public int width() {
+                    return PageCanvas.PANEL;
+                }
+
+                @Override
+                public int height() {
+                    return PageCanvas.PANEL;
+                }
+
+                @Override
+                public void setPixel(int x, int y, double z, int argb) {
+                }
+
+                @Override
+                public int getPixel(int x, int y) {
+                    return 0;
+                }
+            };
+        }
+
+        @Override
+        public FragmentSink fragments(FragmentStage stage) {
+            return new FragmentSink() {
+                @Override
+                public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
+                }
+
+                @Override
+                public void pixel(int x, int y, double q, double[] v) {
+                }
+            };
+        }
+
+        @Override
+        public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
+            camera = lit != null ? lit::camera : () -> Camera.PARALLEL;
+        }
+    }
+
+    /** The vertices on the panel, or null when one of them cannot be projected. */
+    static double[] project(Camera camera, double[] p, int at, int stride, int n) {
+        double[] outline = new double[2 * n];
+        for (int k = 0; k < n; k++) {
+            int o = at + k * stride;
+            double z = p[o + 2];
+            if (camera.isPerspective() && !(z < 0)) {
+                return null;
+            }
+            outline[2 * k] = camera.panelX(p[o], z);
+            outline[2 * k + 1] = camera.panelY(p[o + 1], z);
+            if (!Double.isFinite(outline[2 * k]) || !Double.isFinite(outline[2 * k + 1])) {
+                return null;
+            }
+        }
+        return outline;
+    }
+}
