@@ -15,9 +15,9 @@ import java.util.List;
  */
 public final class ErrorOverlay {
 
-    static final String HEADING = "Scene error — the page shows what was drawn before it (H hides this):";
+    static final String HEADING = "Scene error — the page shows what was drawn before it (E hides this):";
     /** When the scene drew nothing at all, e.g. its file is missing. */
-    static final String HEADING_NOTHING_DRAWN = "Scene error — nothing was drawn (H hides this):";
+    static final String HEADING_NOTHING_DRAWN = "Scene error — nothing was drawn (E hides this):";
     private static final Font FONT = new Font(Font.MONOSPACED, Font.PLAIN, 13);
     private static final Color BOX = new Color(70, 0, 0, 225);
     private static final Color BORDER = new Color(255, 120, 120);

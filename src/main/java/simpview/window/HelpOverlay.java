@@ -41,13 +41,21 @@ public final class HelpOverlay {
         }
         int[] inputWidths = new int[columns];
         int[] doesWidths = new int[columns];
-        int boxWidth = PAD;
+        int inputs = 0;
         for (int c = 0; c < columns; c++) {
             for (KeyHelp.Row row : split.get(c)) {
                 if (!row.heading()) {
                     inputWidths[c] = Math.max(inputWidths[c], metrics.stringWidth(row.input()));
-                    doesWidths[c] = Math.max(doesWidths[c], Math.min(DOES_WIDTH, metrics.stringWidth(row.does())));
                 }
+            }
+            inputs += inputWidths[c] + 3 * PAD;
+        }
+        // What is left of the width goes to the words, evenly; a narrow window cuts them (the keys stay whole).
+        int doesRoom = Math.max(80, Math.min(DOES_WIDTH, (width - PAD - inputs) / columns));
+        int boxWidth = PAD;
+        for (int c = 0; c < columns; c++) {
+            for (KeyHelp.Row row : split.get(c)) {
+                doesWidths[c] = Math.max(doesWidths[c], Math.min(doesRoom, metrics.stringWidth(row.does())));
             }
             boxWidth += inputWidths[c] + doesWidths[c] + 3 * PAD;
         }
@@ -72,7 +80,7 @@ public final class HelpOverlay {
                 g.setColor(KEYS);
                 g.drawString(row.input(), x, baseline);
                 g.setColor(Color.WHITE);
-                g.drawString(cut(row.does(), metrics, DOES_WIDTH), x + inputWidths[c] + PAD, baseline);
+                g.drawString(cut(row.does(), metrics, doesRoom), x + inputWidths[c] + PAD, baseline);
             }
             x += inputWidths[c] + doesWidths[c] + 3 * PAD;
         }

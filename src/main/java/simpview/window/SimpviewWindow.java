@@ -85,6 +85,8 @@ public final class SimpviewWindow {
     private boolean backFacesShown;
     private int backFaces = -1;
     private int overdrawMax = -1;
+    /** The frame's width before the inspector panel widened it, or 0. */
+    private int widthBeforePanel;
     /** What the culled and clipped-away overlay last found: for the tests. */
     private simpview.inspect.SkippedPrimitives.Found skippedFound;
     /** The screen area a test placed the frame in, or null for the real one. */
@@ -548,7 +550,13 @@ public final class SimpviewWindow {
         int panel = inspectorPanel.component().getPreferredSize().width;
         Rectangle bounds = frame.getBounds();
         Rectangle usable = screenForPlacing();
-        int width = shownNow ? Math.min(usable.width, bounds.width + panel) : Math.max(320, bounds.width - panel);
+        int width;
+        if (shownNow) {
+            widthBeforePanel = bounds.width;
+            width = Math.min(usable.width, bounds.width + panel);
+        } else {
+            width = widthBeforePanel > 0 ? widthBeforePanel : Math.max(320, bounds.width - panel);
+        }
         int x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - width));
         frame.setBounds(x, bounds.y, width, bounds.height);
     }
