@@ -346,7 +346,10 @@ public final class SimpviewWindow {
                 + (settings.ownColours() ? " · own colours" : "");
         String theirs = x < 0 || y < 0 ? "" : comparison.theirsAt(x, y)
                 .map(rgb -> " · theirs " + Inspector.rgb(rgb)).orElse("");
-        status.inspect(pixel == null ? zoom : (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs + " · " + zoom);
+        String line = (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs;
+        // Below 1:1 the zoom comes first: the line may be cut at its end, and that must not be lost.
+        status.inspect(pixel == null ? zoom : pageView.zoomPan().belowOneToOne() ? zoom + " · " + line
+                : line + " · " + zoom);
         if (settings.stepLimit() < 0) {
             pageView.outline(PixelGrid.shows(pageView.zoomPan()) ? Inspector.outlineAt(shown, x, y) : null);
         }

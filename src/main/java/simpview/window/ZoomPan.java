@@ -234,15 +234,13 @@ public final class ZoomPan {
     }
 
     /**
-     * "1:1", "8x", "1:1, margins cropped", or below 1:1 "scaled to 93 % (below 1:1: ...)",
+     * "1:1", "8x", "1:1, margins cropped", or "below 1:1: 92 %, margins cropped, 1-px lines kept (...)",
      * saying how the smaller picture keeps its lines and how to see it at 1:1.
      */
     public String describe() {
         String crop = cropped() ? ", margins cropped" : "";
         if (!isIntegerZoom()) {
-            return "scaled to " + Math.round(zoom * 100) + " %" + crop
-                    + " (below 1:1: each screen pixel shows its most distinct page pixel, so 1-px lines stay;"
-                    + " Z: 1:1, drag to scroll)";
+            return "below 1:1: " + Math.round(zoom * 100) + " %" + crop + ", 1-px lines kept (Z: 1:1, drag to scroll)";
         }
         int z = (int) zoom;
         return (z == 1 ? "1:1" : z + "x") + crop;

@@ -270,18 +270,28 @@ public final class WindowDriver {
         if (zoom > 1) {
             return scaledScreenDiffersFrom(page, zoom);
         }
-        // At 1:1 the page itself; below 1:1 the page as the line-keeping filter makes it smaller: exactly.
-        BufferedImage whole = zoom == 1 ? page : LineKeepingDownscale.of(page, zoom);
-        Point origin = onEdt(() -> window.pageView().imageOrigin());
-        Rectangle seen = onEdt(this::pageOnScreen);
-        BufferedImage expected = whole.getSubimage(Math.max(0, -origin.x), Math.max(0, -origin.y),
-                Math.min(seen.width, whole.getWidth()), Math.min(seen.height, whole.getHeight()));
+        BufferedImage expected = shownPart(page);
         BufferedImage screen = captureWhen(capture -> Images.differingPixels(expected, capture) == 0);
         long differing = Images.differingPixels(expected, screen);
         if (differing != 0) {
             keepEvidence("differs-" + differing, screen);
         }
         return differing;
+    }
+
+    /**
+     * What of {@code page} the screen should show at 1:1 or below, as
+     * {@link #capturePage} captures it: at 1:1 the page itself, below 1:1 the
+     * page as the line-keeping filter makes it smaller (exactly), and of that
+     * what is in view (the margins cropped on a small screen).
+     */
+    BufferedImage shownPart(BufferedImage page) throws Exception {
+        double zoom = onEdt(() -> window.pageView().zoomPan().zoom());
+        BufferedImage whole = zoom == 1 ? page : LineKeepingDownscale.of(page, zoom);
+        Point origin = onEdt(() -> window.pageView().imageOrigin());
+        Rectangle seen = onEdt(this::pageOnScreen);
+        return whole.getSubimage(Math.max(0, -origin.x), Math.max(0, -origin.y),
+                Math.min(seen.width, whole.getWidth()), Math.min(seen.height, whole.getHeight()));
     }
 
     /**

@@ -51,7 +51,7 @@ public class ZoomPanTest {
         assertEquals(600 / 650.0, zoomPan.zoom(), 1e-12);
         assertTrue(zoomPan.cropped());
         assertTrue(zoomPan.screenY(50) >= 0 && zoomPan.screenY(700) <= 601);
-        assertTrue(zoomPan.describe().startsWith("scaled to 92 %, margins cropped (below 1:1"), zoomPan.describe());
+        assertTrue(zoomPan.describe().startsWith("below 1:1: 92 %, margins cropped, 1-px lines kept"), zoomPan.describe());
         zoomPan.actualSize();
         assertEquals(1.0, zoomPan.zoom());
         assertFalse(zoomPan.cropped(), "1:1 by Z is not a fit: it pans");
