@@ -313,7 +313,8 @@ public final class SimpviewWindow {
             case CANCEL -> cancel();
             case INSPECTOR -> toggleInspectorPanel();
             case PIN -> togglePin();
-            case GO_TO_PIXEL -> askForPixel();
+            // A dialog opened on the key's press would receive the key's own typed letter: open it after that.
+            case GO_TO_PIXEL -> SwingUtilities.invokeLater(this::askForPixel);
             case COPY -> copyInspected();
             case COPY_CHAIN -> copyChain();
             case STEP_ON -> step(1);
@@ -325,7 +326,7 @@ public final class SimpviewWindow {
             case STEP_ON_1000 -> step(1000);
             case STEP_BACK_1000 -> step(-1000);
             case STEP_OFF -> stepOff();
-            case GO_TO_PRIMITIVE -> goToPrimitive();
+            case GO_TO_PRIMITIVE -> SwingUtilities.invokeLater(this::goToPrimitive);
             case STEP_TO_OWNER -> stepToOwner();
             case HELP -> pageView.toggleHelp();
         }
@@ -737,7 +738,8 @@ public final class SimpviewWindow {
 
     /** Puts the inspector's line on the clipboard. */
     private void copyInspected() {
-        String line = status.inspectorText();
+        String selected = inspectorPanel.isShown() ? inspectorPanel.selectedText() : "";
+        String line = selected.isEmpty() ? status.inspectorText() : selected;
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(line), null);
         status.say("Copied: " + line);
     }

@@ -83,8 +83,8 @@ public enum WindowAction {
     PIN(Menu.INSTRUMENTS, "Pin the pixel", "pin the inspected pixel (again: unpin)", "P"),
     GO_TO_PIXEL(Menu.INSTRUMENTS, "Go to pixel…", "go to a pixel by its panel coordinates (x right, y up) and pin "
             + "it", "shift G"),
-    COPY(Menu.INSTRUMENTS, "Copy the inspector's line", "copy the status line's inspector to the clipboard",
-            "menu C"),
+    COPY(Menu.INSTRUMENTS, "Copy", "copy the text selected in the inspector panel, else the status line's "
+            + "inspector", "menu C"),
     COPY_CHAIN(Menu.INSTRUMENTS, "Copy the pixel's include chain", "copy where the inspected pixel came from, "
             + "file:line by file:line (each part is also a link in the panel: a click copies it)", "menu shift C"),
     STEP_ON(Menu.INSTRUMENTS, "Step on", "step the drawing one primitive on", "CLOSE_BRACKET"),

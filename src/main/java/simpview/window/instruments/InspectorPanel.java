@@ -65,6 +65,8 @@ public final class InspectorPanel {
         text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         text.setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         text.setName("inspector text");
+        // Keys belong to the page (a focused text would take the arrows and Ctrl+C): the mouse still selects.
+        text.setFocusable(false);
         scroll = new JScrollPane(text, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
                 ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
         scroll.setPreferredSize(new Dimension(WIDTH, 400));
@@ -248,6 +250,12 @@ public final class InspectorPanel {
             simpview.inspect.SkippedPrimitives.Found shown = found;
             SwingUtilities.invokeLater(() -> show.accept(shown));
         });
+    }
+
+    /** The text selected in the panel with the mouse, or "" (Ctrl+C copies it). */
+    public String selectedText() {
+        String selected = text.getSelectedText();
+        return selected == null ? "" : selected;
     }
 
     /** The panel's text, whole (for copying and for tests). */
