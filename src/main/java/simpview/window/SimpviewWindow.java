@@ -68,6 +68,9 @@ public final class SimpviewWindow {
     private final PageStepper stepper;
     /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
     private int assignment1Page;
+    /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
+    private CoursePageSet coursePages;
+    private final java.util.Map<Integer, CoursePageSet> courseSets = new java.util.HashMap<>();
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
@@ -301,14 +304,17 @@ public final class SimpviewWindow {
             case ASSIGNMENT -> switchAssignment();
             case ASSIGNMENT_1 -> {
                 if (assignment1Page == 0) {
+                    coursePages = null;
                     switchAssignment();
                 }
             }
             case ASSIGNMENT_2 -> {
-                if (assignment1Page > 0) {
-                    switchAssignment();
+                if (assignment1Page > 0 || coursePages != null) {
+                    stepTo(stepper.current());
                 }
             }
+            case ASSIGNMENT_3 -> showCoursePages(3);
+            case ASSIGNMENT_4 -> showCoursePages(4);
             case SEED -> newSeed();
             case CANCEL -> cancel();
             case INSPECTOR -> toggleInspectorPanel();
@@ -861,8 +867,35 @@ public final class SimpviewWindow {
         show(requested());
     }
 
+    /**
+     * The third or fourth assignment's pages (Alt+3, Alt+4), where they were
+     * left: the course's scenes beside its pages' folder. The keys that step
+     * through pages step through them until another assignment is chosen.
+     */
+    private void showCoursePages(int assignment) {
+        CoursePageSet set = courseSets.computeIfAbsent(assignment, n -> CoursePageSet.of(options.simpDir(), n));
+        if (set == null) {
+            courseSets.remove(assignment);
+            status.say("No pages of assignment " + assignment + " in " + CoursePageSet.folder(options.simpDir(), assignment)
+                    + ": its scenes are looked for beside the course's pages.");
+            return;
+        }
+        showCoursePage(set, set.current());
+    }
+
+    private void showCoursePage(CoursePageSet set, Path page) {
+        assignment1Page = 0;
+        forgetViewState();
+        coursePages = set;
+        show(new View.OfScene(page));
+    }
+
     /** The next page of the assignment on show (after its last comes its first). */
     void next() {
+        if (coursePages != null) {
+            showCoursePage(coursePages, coursePages.next());
+            return;
+        }
         if (assignment1Page > 0) {
             showAssignment1(assignment1Page % Assignment1.COUNT + 1);
         } else {
@@ -871,6 +904,10 @@ public final class SimpviewWindow {
     }
 
     void previous() {
+        if (coursePages != null) {
+            showCoursePage(coursePages, coursePages.previous());
+            return;
+        }
         if (assignment1Page > 0) {
             showAssignment1((assignment1Page + Assignment1.COUNT - 2) % Assignment1.COUNT + 1);
         } else {
@@ -880,6 +917,10 @@ public final class SimpviewWindow {
 
     /** The first or the last place of the assignment on show. */
     private void end(boolean first) {
+        if (coursePages != null) {
+            showCoursePage(coursePages, first ? coursePages.first() : coursePages.last());
+            return;
+        }
         if (assignment1Page > 0) {
             showAssignment1(first ? 1 : Assignment1.COUNT);
         } else {
@@ -889,6 +930,16 @@ public final class SimpviewWindow {
 
     /** Page n of the assignment on show. */
     private void jump(int n) {
+        if (coursePages != null) {
+            Path page = coursePages.jump(n);
+            if (page == null) {
+                status.say("Assignment " + coursePages.assignment() + " has pages 1 to " + coursePages.size()
+                        + " (Page Down steps on to the rest); Alt+2 goes back to the eight pages.");
+            } else {
+                showCoursePage(coursePages, page);
+            }
+            return;
+        }
         if (assignment1Page == 0) {
             stepTo(stepper.jump(n));
         } else if (n <= Assignment1.COUNT) {
@@ -900,7 +951,7 @@ public final class SimpviewWindow {
 
     /** A: from the eight pages (and scenes) to the first assignment's five pages and back, each where it was left. */
     void switchAssignment() {
-        if (assignment1Page > 0) {
+        if (coursePages != null || assignment1Page > 0) {
             stepTo(stepper.current());
         } else {
             showAssignment1(1);
@@ -908,6 +959,7 @@ public final class SimpviewWindow {
     }
 
     private void showAssignment1(int page) {
+        coursePages = null;
         forgetViewState();
         assignment1Page = page;
         show(new View.OfAssignment1Page(page));
@@ -915,6 +967,7 @@ public final class SimpviewWindow {
 
     private void stepTo(int position) {
         assignment1Page = 0;
+        coursePages = null;
         forgetViewState();
         show(viewAt(position));
     }
@@ -963,6 +1016,7 @@ public final class SimpviewWindow {
 
     void openScene(Path file) {
         assignment1Page = 0;
+        coursePages = null;
         forgetViewState();
         show(new View.OfScene(file));
     }
@@ -1010,10 +1064,15 @@ public final class SimpviewWindow {
         shown = result;
         overdrawShown = false;
         showPicture();
-        frame.setTitle(result.title());
+        boolean coursePage = coursePages != null && result.view().equals(new View.OfScene(coursePages.current()));
+        frame.setTitle(coursePage ? "simpview — " + coursePages.describe() + (result.error() == null ? "" : " — error")
+                : result.title());
         watcher.watch(result.facts().files(), job.stampsAsRead());
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
+        if (coursePage && result.warnings().isEmpty()) {
+            status.say(coursePages.describe() + " · → ← Home End 1-9: its pages · Alt+2: the eight pages");
+        }
         if (orbit.turned()) {
             status.say(orbit.describe());
         }

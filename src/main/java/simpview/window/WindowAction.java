@@ -61,7 +61,8 @@ public enum WindowAction {
     PREVIOUS(Menu.PAGE, "Previous page", "previous page", "LEFT", "PAGE_UP", "KP_LEFT"),
     FIRST(Menu.PAGE, "First page", "the assignment's first page", "HOME"),
     LAST(Menu.PAGE, "Last page", "the assignment's last page", "END"),
-    PAGE_1(Menu.PAGE, "Page 1", "that page of the assignment shown (A1: 1 to 5)", "1", "NUMPAD1"),
+    PAGE_1(Menu.PAGE, "Page 1", "that page of the assignment shown (A1: 1 to 5; A3, A4: 1 to 8 of theirs)", "1",
+            "NUMPAD1"),
     PAGE_2(Menu.PAGE, "Page 2", null, "2", "NUMPAD2"),
     PAGE_3(Menu.PAGE, "Page 3", null, "3", "NUMPAD3"),
     PAGE_4(Menu.PAGE, "Page 4", null, "4", "NUMPAD4"),
@@ -70,11 +71,15 @@ public enum WindowAction {
     PAGE_7(Menu.PAGE, "Page 7", null, "7", "NUMPAD7"),
     PAGE_8(Menu.PAGE, "Page 8", null, "8", "NUMPAD8"),
     ASSIGNMENT(Menu.PAGE, "Switch assignment", "switch between the first assignment's five pages (A1) and the "
-            + "eight pages (A2), each where it was left", "A"),
+            + "eight pages (A2); from A3 or A4, back to the eight", "A"),
     ASSIGNMENT_1(Menu.PAGE, "Assignment 1 (five pages)", "the first assignment's pages, where they were left",
             "alt 1"),
     ASSIGNMENT_2(Menu.PAGE, "Assignment 2 (eight pages)", "the eight pages (and the scenes named at start), where "
             + "they were left", "alt 2"),
+    ASSIGNMENT_3(Menu.PAGE, "Assignment 3 (the course's scenes)", "the third assignment's pages: the course's "
+            + "page scenes in course-simp-a3 beside the pages' folder, where they were left", "alt 3"),
+    ASSIGNMENT_4(Menu.PAGE, "Assignment 4 (the course's scenes)", "the fourth assignment's pages, from "
+            + "course-simp-a4", "alt 4"),
     SEED(Menu.PAGE, "New seed", "a new seed for the random pages (A2 1-3, A1 3-5)", "R"),
     CANCEL(Menu.PAGE, "Stop drawing", "stop drawing a long scene (the page on screen stays)", "ESCAPE"),
 
@@ -167,8 +172,9 @@ public enum WindowAction {
         KeyStroke stroke;
         if (key.startsWith("menu ")) {
             KeyStroke rest = KeyStroke.getKeyStroke(key.substring("menu ".length()));
-            stroke = KeyStroke.getKeyStroke(rest.getKeyCode(),
-                    rest.getModifiers() | Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx());
+            int menu = java.awt.GraphicsEnvironment.isHeadless() ? java.awt.event.InputEvent.CTRL_DOWN_MASK
+                    : Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
+            stroke = KeyStroke.getKeyStroke(rest.getKeyCode(), rest.getModifiers() | menu);
         } else {
             stroke = KeyStroke.getKeyStroke(key);
         }

@@ -141,6 +141,18 @@ public class ViewWindowTest extends WindowTestCase {
         chooseFromMenu(window, "PAGE", WindowAction.PAGE_3);
         driver.awaitShown(new View.OfPage(3));
         assertFalse(driver.onEdt(window::busy));
+        // Page > Assignment 3: the course's A3 pages (pageA ... tomsPageJ), stepped by the page keys.
+        simpview.testing.CourseFiles.require("course-simp-a3");
+        Path a3 = CoursePageSet.folder(TestScenes.courseSimpDir(), 3);
+        chooseFromMenu(window, "PAGE", WindowAction.ASSIGNMENT_3);
+        driver.awaitShown(new View.OfScene(a3.resolve("pageA.simp")));
+        assertEquals("simpview — assignment 3, page 1/10: pageA.simp", driver.onEdt(() -> window.frame().getTitle()));
+        driver.onEdt(() -> window.perform(WindowAction.NEXT));
+        driver.awaitShown(new View.OfScene(a3.resolve("pageB.simp")));
+        driver.onEdt(() -> window.perform(WindowAction.LAST));
+        driver.awaitShown(new View.OfScene(a3.resolve("tomsPageJ.simp")));
+        driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_2));
+        driver.awaitShown(new View.OfPage(3));
     }
 
     /** Clicks a menu on the bar, waits for its popup, and clicks the action's entry in it. */
