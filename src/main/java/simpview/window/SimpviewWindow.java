@@ -319,8 +319,7 @@ public final class SimpviewWindow {
             case CANCEL -> cancel();
             case INSPECTOR -> toggleInspectorPanel();
             case PIN -> togglePin();
-            // A dialog opened on the key's press would receive the key's own typed letter: open it after that.
-            case GO_TO_PIXEL -> SwingUtilities.invokeLater(this::askForPixel);
+            case GO_TO_PIXEL -> askForPixel();
             case COPY -> copyInspected();
             case COPY_CHAIN -> copyChain();
             case STEP_ON -> step(1);
@@ -332,7 +331,7 @@ public final class SimpviewWindow {
             case STEP_ON_1000 -> step(1000);
             case STEP_BACK_1000 -> step(-1000);
             case STEP_OFF -> stepOff();
-            case GO_TO_PRIMITIVE -> SwingUtilities.invokeLater(this::goToPrimitive);
+            case GO_TO_PRIMITIVE -> goToPrimitive();
             case STEP_TO_OWNER -> stepToOwner();
             case HELP -> pageView.toggleHelp();
         }
@@ -530,8 +529,7 @@ public final class SimpviewWindow {
             return;
         }
         int total = shown.facts().primitives().size();
-        String answer = javax.swing.JOptionPane.showInputDialog(frame, "Go to primitive (1 to " + total + "):",
-                "simpview", javax.swing.JOptionPane.QUESTION_MESSAGE);
+        String answer = askAfterKey("Go to primitive (1 to " + total + "):", 'g');
         if (answer == null) {
             return;
         }
@@ -590,6 +588,42 @@ public final class SimpviewWindow {
         frame.validate();
     }
 
+    /**
+     * Asks for a line of text in a dialog opened by the key {@code key}: the
+     * dialog opens on the key's press, and the letter that key types comes
+     * after, into the dialog's field; the field lets that first letter go by
+     * (an answer here never starts with it). Null when cancelled.
+     */
+    private String askAfterKey(String question, char key) {
+        javax.swing.JTextField field = new javax.swing.JTextField(12);
+        field.setName("answer");
+        field.addKeyListener(new java.awt.event.KeyAdapter() {
+            private boolean first = true;
+
+            @Override
+            public void keyTyped(java.awt.event.KeyEvent e) {
+                if (first && Character.toLowerCase(e.getKeyChar()) == key && field.getText().isEmpty()) {
+                    e.consume();
+                }
+                first = false;
+            }
+        });
+        javax.swing.JOptionPane pane = new javax.swing.JOptionPane(new Object[] {question, field},
+                javax.swing.JOptionPane.QUESTION_MESSAGE, javax.swing.JOptionPane.OK_CANCEL_OPTION);
+        JDialog dialog = pane.createDialog(frame, "simpview");
+        dialog.addWindowFocusListener(new java.awt.event.WindowAdapter() {
+            @Override
+            public void windowGainedFocus(java.awt.event.WindowEvent e) {
+                field.requestFocusInWindow();
+            }
+        });
+        field.addActionListener(e -> pane.setValue(javax.swing.JOptionPane.OK_OPTION));
+        dialog.setVisible(true);
+        dialog.dispose();
+        Object chosen = pane.getValue();
+        return chosen instanceof Integer option && option == javax.swing.JOptionPane.OK_OPTION ? field.getText() : null;
+    }
+
     /** Asks for a pixel by its panel coordinates (x right, y up), pins it and shows it (Shift+G). */
     private void askForPixel() {
         if (shown == null) {
@@ -597,10 +631,9 @@ public final class SimpviewWindow {
         }
         boolean pageCoordinates = shown.view() instanceof View.OfAssignment1Page;
         int last = pageCoordinates ? simpview.surface.PageCanvas.SIZE - 1 : simpview.surface.PageCanvas.PANEL - 1;
-        String answer = javax.swing.JOptionPane.showInputDialog(frame, (pageCoordinates
+        String answer = askAfterKey(pageCoordinates
                 ? "Go to the page's pixel x, y (x right, y up from the page's bottom-left, 0 to " + last + "):"
-                : "Go to the panel's pixel x, y (x right, y up from the panel's bottom-left, 0 to " + last + "):"),
-                "simpview", javax.swing.JOptionPane.QUESTION_MESSAGE);
+                : "Go to the panel's pixel x, y (x right, y up from the panel's bottom-left, 0 to " + last + "):", 'g');
         if (answer != null) {
             goToPixel(answer);
         }
