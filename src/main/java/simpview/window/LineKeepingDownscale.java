@@ -14,8 +14,9 @@ import java.awt.image.BufferedImage;
  * every shown colour is a page pixel's own colour (nothing is blended).
  *
  * <p>A filter over the finished image, written here: it picks among the
- * picture's pixels and makes none. It runs on the EDT once per picture and
- * zoom (the view keeps the result).
+ * picture's pixels and makes none. The windows' means come from summed-area
+ * tables of the three channels (four looks a window). It runs on the EDT
+ * once per picture and zoom (the view keeps the result).
  */
 public final class LineKeepingDownscale {
 
@@ -46,34 +47,45 @@ public final class LineKeepingDownscale {
         int[] rowFrom = new int[outHeight];
         int[] rowTo = new int[outHeight];
         spans(height, zoom, rowFrom, rowTo);
+        // Summed-area tables of the three channels: any window's sum in four looks.
+        int stride = width + 1;
+        int[] sumR = new int[stride * (height + 1)];
+        int[] sumG = new int[sumR.length];
+        int[] sumB = new int[sumR.length];
+        for (int y = 0; y < height; y++) {
+            int r = 0;
+            int g = 0;
+            int b = 0;
+            int row = y * width;
+            int above = y * stride;
+            int here = above + stride;
+            for (int x = 0; x < width; x++) {
+                int c = source[row + x];
+                r += (c >> 16) & 0xFF;
+                g += (c >> 8) & 0xFF;
+                b += c & 0xFF;
+                sumR[here + x + 1] = sumR[above + x + 1] + r;
+                sumG[here + x + 1] = sumG[above + x + 1] + g;
+                sumB[here + x + 1] = sumB[above + x + 1] + b;
+            }
+        }
         int[] out = new int[outWidth * outHeight];
         for (int j = 0; j < outHeight; j++) {
             int y0 = rowFrom[j];
             int y1 = rowTo[j];
-            int wy0 = Math.max(0, y0 - 1);
-            int wy1 = Math.min(height, y1 + 1);
+            int top = Math.max(0, y0 - 1) * stride;
+            int bottom = Math.min(height, y1 + 1) * stride;
+            int rows = (bottom - top) / stride;
             for (int i = 0; i < outWidth; i++) {
                 int x0 = colFrom[i];
                 int x1 = colTo[i];
-                int wx0 = Math.max(0, x0 - 1);
-                int wx1 = Math.min(width, x1 + 1);
-                long r = 0;
-                long g = 0;
-                long b = 0;
-                for (int y = wy0; y < wy1; y++) {
-                    int row = y * width;
-                    for (int x = wx0; x < wx1; x++) {
-                        int c = source[row + x];
-                        r += (c >> 16) & 0xFF;
-                        g += (c >> 8) & 0xFF;
-                        b += c & 0xFF;
-                    }
-                }
-                int n = (wy1 - wy0) * (wx1 - wx0);
-                // The distances are compared at n times their size, to stay in whole numbers.
-                long mr = r;
-                long mg = g;
-                long mb = b;
+                int left = Math.max(0, x0 - 1);
+                int right = Math.min(width, x1 + 1);
+                int n = rows * (right - left);
+                // The window's sums: n times its mean; the distances are compared at n times their size.
+                long mr = sumR[bottom + right] - sumR[bottom + left] - sumR[top + right] + sumR[top + left];
+                long mg = sumG[bottom + right] - sumG[bottom + left] - sumG[top + right] + sumG[top + left];
+                long mb = sumB[bottom + right] - sumB[bottom + left] - sumB[top + right] + sumB[top + left];
                 int best = source[y0 * width + x0];
                 long bestDistance = -1;
                 for (int y = y0; y < y1; y++) {

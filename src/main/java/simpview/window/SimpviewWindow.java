@@ -45,6 +45,25 @@ import simpview.pages.Assignment1;
 import simpview.pages.PageStepper;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
+import java.awt.event.KeyAdapter;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JTextField;
+import simpview.inspect.InspectedScene;
+import simpview.inspect.Overdraw;
+import simpview.inspect.SkippedPrimitives;
+import simpview.surface.PageCanvas;
+import simpview.window.instruments.BackFacePicture;
+import simpview.window.instruments.Legend;
+import simpview.window.instruments.OverdrawPicture;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
@@ -70,7 +89,7 @@ public final class SimpviewWindow {
     private int assignment1Page;
     /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
     private CoursePageSet coursePages;
-    private final java.util.Map<Integer, CoursePageSet> courseSets = new java.util.HashMap<>();
+    private final Map<Integer, CoursePageSet> courseSets = new HashMap<>();
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
@@ -91,7 +110,7 @@ public final class SimpviewWindow {
     /** The frame's width before the inspector panel widened it, or 0. */
     private int widthBeforePanel;
     /** What the culled and clipped-away overlay last found: for the tests. */
-    private simpview.inspect.SkippedPrimitives.Found skippedFound;
+    private SkippedPrimitives.Found skippedFound;
     /** The screen area a test placed the frame in, or null for the real one. */
     private Rectangle placedWithin;
 
@@ -123,7 +142,7 @@ public final class SimpviewWindow {
         frame.setIconImages(AppIcon.images());
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
-        javax.swing.JPanel south = new javax.swing.JPanel(new BorderLayout());
+        JPanel south = new JPanel(new BorderLayout());
         south.add(legendStrip, BorderLayout.NORTH);
         south.add(status.component(), BorderLayout.SOUTH);
         frame.getContentPane().add(south, BorderLayout.SOUTH);
@@ -232,13 +251,13 @@ public final class SimpviewWindow {
      * accelerator and does what its key does (the key itself is handled by
      * the root pane's binding, which consumes it, so it acts once).
      */
-    private javax.swing.JMenuBar menuBar() {
-        javax.swing.JMenuBar bar = new javax.swing.JMenuBar();
+    private JMenuBar menuBar() {
+        JMenuBar bar = new JMenuBar();
         bar.setName("menu bar");
-        javax.swing.JMenu menu = null;
+        JMenu menu = null;
         for (WindowAction action : WindowAction.values()) {
             if (menu == null || !menu.getName().equals(action.menu().name())) {
-                menu = new javax.swing.JMenu(action.menu().title());
+                menu = new JMenu(action.menu().title());
                 menu.setName(action.menu().name());
                 menu.setMnemonic(action.menu().mnemonic());
                 bar.add(menu);
@@ -246,7 +265,7 @@ public final class SimpviewWindow {
             if (separatedBefore(action)) {
                 menu.addSeparator();
             }
-            javax.swing.JMenuItem item = new javax.swing.JMenuItem(action.label());
+            JMenuItem item = new JMenuItem(action.label());
             item.setName(action.name());
             item.setAccelerator(action.accelerator());
             item.addActionListener(e -> perform(action));
@@ -337,7 +356,7 @@ public final class SimpviewWindow {
         }
     }
 
-    private void zoom(java.util.function.Consumer<ZoomPan> change) {
+    private void zoom(Consumer<ZoomPan> change) {
         change.accept(pageView.zoomPan());
         pageView.repaint();
         inspect();
@@ -397,15 +416,15 @@ public final class SimpviewWindow {
                     + "it received, how its colour was made, and its primitive's vertices.");
             return;
         }
-        int x = ix - simpview.surface.PageCanvas.MARGIN;
-        int y = simpview.surface.PageCanvas.MARGIN + simpview.surface.PageCanvas.PANEL - 1 - iy;
+        int x = ix - PageCanvas.MARGIN;
+        int y = PageCanvas.MARGIN + PageCanvas.PANEL - 1 - iy;
         String theirs = comparedAt(ix, iy);
-        if (x < 0 || y < 0 || x >= simpview.surface.PageCanvas.PANEL || y >= simpview.surface.PageCanvas.PANEL) {
+        if (x < 0 || y < 0 || x >= PageCanvas.PANEL || y >= PageCanvas.PANEL) {
             inspectorPanel.say((theirs == null ? "" : theirs + "\n\n")
                     + "The pixel is in the margin: nothing is drawn there.");
             return;
         }
-        simpview.inspect.InspectedScene scene = inspectedScene(message ->
+        InspectedScene scene = inspectedScene(message ->
                 inspectorPanel.say((theirs == null ? "" : theirs + "\n\n") + message));
         if (scene == null) {
             return;
@@ -430,14 +449,14 @@ public final class SimpviewWindow {
     }
 
     /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
-    private simpview.inspect.InspectedScene inspectedScene(java.util.function.Consumer<String> why) {
+    private InspectedScene inspectedScene(Consumer<String> why) {
         try {
             View view = shown.view();
             if (view instanceof View.OfScene s) {
-                return simpview.inspect.InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
+                return InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
             }
             int number = ((View.OfPage) view).number();
-            return simpview.inspect.InspectedScene.page(number, options.pageContext())
+            return InspectedScene.page(number, options.pageContext())
                     .withOwnColours(settings.ownColours());
         } catch (IllegalArgumentException | simpview.scene.SceneException e) {
             why.accept(e.getMessage());
@@ -459,7 +478,7 @@ public final class SimpviewWindow {
         if (shown == null) {
             return;
         }
-        simpview.inspect.InspectedScene scene = inspectedScene(status::say);
+        InspectedScene scene = inspectedScene(status::say);
         if (scene == null) {
             return;
         }
@@ -472,11 +491,11 @@ public final class SimpviewWindow {
             }
             int[] shownCounts = failures ? counts.failed() : counts.reached();
             overdrawShown = true;
-            overdrawMax = simpview.inspect.Overdraw.max(shownCounts);
+            overdrawMax = Overdraw.max(shownCounts);
             pageView.show(failures
-                    ? simpview.window.instruments.OverdrawPicture.of(shownCounts,
+                    ? OverdrawPicture.of(shownCounts,
                             "depth-test failures: writes that lost each pixel's depth test")
-                    : simpview.window.instruments.OverdrawPicture.of(shownCounts), null, true);
+                    : OverdrawPicture.of(shownCounts), null, true);
             status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost writes at a pixel"
                     : "Overdraw: up to " + overdrawMax + " writes at a pixel")
                     + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
@@ -492,8 +511,8 @@ public final class SimpviewWindow {
         if (shown == null) {
             return;
         }
-        simpview.window.instruments.BackFacePicture.Tinted tinted =
-                simpview.window.instruments.BackFacePicture.of(shown.image(), shown.facts());
+        BackFacePicture.Tinted tinted =
+                BackFacePicture.of(shown.image(), shown.facts());
         if (tinted == null) {
             status.say("Who drew each pixel was not recorded for this picture: no back faces to show.");
             return;
@@ -502,8 +521,8 @@ public final class SimpviewWindow {
         backFacesShown = true;
         backFaces = tinted.backFacing();
         pageView.show(tinted.image(), null, true);
-        legendStrip.show(new simpview.window.instruments.Legend("back faces (K: the page)", java.util.List.of(
-                new simpview.window.instruments.Legend.Entry(0xFF00FF, "tinted: a polygon clockwise on the panel "
+        legendStrip.show(new Legend("back faces (K: the page)", List.of(
+                new Legend.Entry(0xFF00FF, "tinted: a polygon clockwise on the panel "
                         + "(facing away by SPEC's counter-clockwise rule)"))));
         status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
                 + " polygons are clockwise on the panel · K: the page again");
@@ -595,33 +614,33 @@ public final class SimpviewWindow {
      * (an answer here never starts with it). Null when cancelled.
      */
     private String askAfterKey(String question, char key) {
-        javax.swing.JTextField field = new javax.swing.JTextField(12);
+        JTextField field = new JTextField(12);
         field.setName("answer");
-        field.addKeyListener(new java.awt.event.KeyAdapter() {
+        field.addKeyListener(new KeyAdapter() {
             private boolean first = true;
 
             @Override
-            public void keyTyped(java.awt.event.KeyEvent e) {
+            public void keyTyped(KeyEvent e) {
                 if (first && Character.toLowerCase(e.getKeyChar()) == key && field.getText().isEmpty()) {
                     e.consume();
                 }
                 first = false;
             }
         });
-        javax.swing.JOptionPane pane = new javax.swing.JOptionPane(new Object[] {question, field},
-                javax.swing.JOptionPane.QUESTION_MESSAGE, javax.swing.JOptionPane.OK_CANCEL_OPTION);
+        JOptionPane pane = new JOptionPane(new Object[] {question, field},
+                JOptionPane.QUESTION_MESSAGE, JOptionPane.OK_CANCEL_OPTION);
         JDialog dialog = pane.createDialog(frame, "simpview");
-        dialog.addWindowFocusListener(new java.awt.event.WindowAdapter() {
+        dialog.addWindowFocusListener(new WindowAdapter() {
             @Override
-            public void windowGainedFocus(java.awt.event.WindowEvent e) {
+            public void windowGainedFocus(WindowEvent e) {
                 field.requestFocusInWindow();
             }
         });
-        field.addActionListener(e -> pane.setValue(javax.swing.JOptionPane.OK_OPTION));
+        field.addActionListener(e -> pane.setValue(JOptionPane.OK_OPTION));
         dialog.setVisible(true);
         dialog.dispose();
         Object chosen = pane.getValue();
-        return chosen instanceof Integer option && option == javax.swing.JOptionPane.OK_OPTION ? field.getText() : null;
+        return chosen instanceof Integer option && option == JOptionPane.OK_OPTION ? field.getText() : null;
     }
 
     /** Asks for a pixel by its panel coordinates (x right, y up), pins it and shows it (Shift+G). */
@@ -630,7 +649,7 @@ public final class SimpviewWindow {
             return;
         }
         boolean pageCoordinates = shown.view() instanceof View.OfAssignment1Page;
-        int last = pageCoordinates ? simpview.surface.PageCanvas.SIZE - 1 : simpview.surface.PageCanvas.PANEL - 1;
+        int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
         String answer = askAfterKey(pageCoordinates
                 ? "Go to the page's pixel x, y (x right, y up from the page's bottom-left, 0 to " + last + "):"
                 : "Go to the panel's pixel x, y (x right, y up from the panel's bottom-left, 0 to " + last + "):", 'g');
@@ -647,7 +666,7 @@ public final class SimpviewWindow {
     void goToPixel(String answer) {
         String[] parts = answer.strip().split("[,\\s]+");
         boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
-        int last = pageCoordinates ? simpview.surface.PageCanvas.SIZE - 1 : simpview.surface.PageCanvas.PANEL - 1;
+        int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
         int x;
         int y;
         try {
@@ -665,7 +684,7 @@ public final class SimpviewWindow {
                     + "from 0 to " + last + ".");
             return;
         }
-        int offset = pageCoordinates ? 0 : simpview.surface.PageCanvas.MARGIN;
+        int offset = pageCoordinates ? 0 : PageCanvas.MARGIN;
         pinnedX = offset + x;
         pinnedY = offset + last - y;
         pageView.zoomPan().bringIntoView(pinnedX, pinnedY);
@@ -715,7 +734,7 @@ public final class SimpviewWindow {
         if (shown == null) {
             return;
         }
-        simpview.inspect.InspectedScene scene = inspectedScene(status::say);
+        InspectedScene scene = inspectedScene(status::say);
         if (scene == null) {
             return;
         }
@@ -726,17 +745,17 @@ public final class SimpviewWindow {
                 status.say(found == null ? "The scene has an error: no outlines." : "");
                 return;
             }
-            java.util.List<double[]> culled = new java.util.ArrayList<>();
-            java.util.List<double[]> clipped = new java.util.ArrayList<>();
-            for (simpview.inspect.SkippedPrimitives.Skipped s : found.outlined()) {
+            List<double[]> culled = new ArrayList<>();
+            List<double[]> clipped = new ArrayList<>();
+            for (SkippedPrimitives.Skipped s : found.outlined()) {
                 (s.culled() ? culled : clipped).add(Inspector.toImage(s.outline()));
             }
             skippedFound = found;
             pageView.skipped(culled, clipped);
-            legendStrip.show(new simpview.window.instruments.Legend("never rasterized (U: off)", java.util.List.of(
-                    new simpview.window.instruments.Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size()
+            legendStrip.show(new Legend("never rasterized (U: off)", List.of(
+                    new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size()
                             + " culled: every vertex outside one plane of the view"),
-                    new simpview.window.instruments.Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size()
+                    new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size()
                             + " clipped away whole"))));
             status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
                     + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more have a vertex at or behind "
@@ -755,7 +774,7 @@ public final class SimpviewWindow {
     }
 
     private void showWire() {
-        java.util.List<double[]> outlines = new java.util.ArrayList<>();
+        List<double[]> outlines = new ArrayList<>();
         Primitives primitives = shown == null ? null : shown.facts().primitives();
         for (int k = 0; primitives != null && k < primitives.size(); k++) {
             double[] outline = primitives.outline(k);
@@ -770,8 +789,8 @@ public final class SimpviewWindow {
             return;
         }
         pageView.wire(outlines);
-        legendStrip.show(new simpview.window.instruments.Legend("wire over fill (W: off)", java.util.List.of(
-                new simpview.window.instruments.Legend.Entry(0x00FF80, "the edges of all " + outlines.size()
+        legendStrip.show(new Legend("wire over fill (W: off)", List.of(
+                new Legend.Entry(0x00FF80, "the edges of all " + outlines.size()
                         + " primitives drawn, as projected"))));
     }
 
@@ -1167,7 +1186,7 @@ public final class SimpviewWindow {
     }
 
     /** What the culled and clipped-away overlay shows, or null while it is off. */
-    simpview.inspect.SkippedPrimitives.Found skippedShown() {
+    SkippedPrimitives.Found skippedShown() {
         return pageView.skippedShown() ? skippedFound : null;
     }
 

@@ -16,6 +16,23 @@ import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import java.awt.Cursor;
+import java.awt.Point;
+import java.awt.Toolkit;
+import java.awt.datatransfer.StringSelection;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Consumer;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import simpview.inspect.Overdraw;
+import simpview.inspect.SkippedPrimitives;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SourcePlace;
 
 /**
  * The inspector's side panel: for the pinned pixel, its whole history, how
@@ -41,22 +58,21 @@ public final class InspectorPanel {
         return t;
     });
     /** The replay's inspector, with its own models: used on the worker thread only. */
-    private final simpview.scene.obj.ObjLibrary models = new simpview.scene.obj.ObjLibrary();
+    private final ObjLibrary models = new ObjLibrary();
     private final PixelInspector inspector = new PixelInspector(models, SceneMonitor.NONE);
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
     /** The newest request waiting for the worker, or null: taken by the worker, set on the EDT. */
-    private final java.util.concurrent.atomic.AtomicReference<Runnable> waiting =
-            new java.util.concurrent.atomic.AtomicReference<>();
+    private final AtomicReference<Runnable> waiting = new AtomicReference<>();
     /** The places the text's chains name, by the text's spelling ("cube.simp:7"), for the links. */
-    private java.util.Map<String, simpview.scene.simp.SourcePlace> places = java.util.Map.of();
+    private Map<String, SourcePlace> places = Map.of();
     /** The inspected pixel's owner's chain, whole, for Copy chain; empty when there is none. */
-    private java.util.List<simpview.scene.simp.SourcePlace> ownerChain = java.util.List.of();
+    private List<SourcePlace> ownerChain = List.of();
     /** What a click on a chain's part says (the window's status line). */
-    private java.util.function.Consumer<String> say = message -> { };
+    private Consumer<String> toldOfCopy = message -> { };
     /** A part of a chain as the text spells it: a file name, a colon, a line number. */
-    private static final java.util.regex.Pattern PART = java.util.regex.Pattern.compile("[^\\s›()\"]+\\.(simp|obj):\\d+");
+    private static final Pattern PART = Pattern.compile("[^\\s›()\"]+\\.(simp|obj):\\d+");
 
     public InspectorPanel() {
         text.setEditable(false);
@@ -73,9 +89,9 @@ public final class InspectorPanel {
         scroll.setName("inspector panel");
         scroll.setVisible(false);
         say("Pin a pixel (P) to see every write it received, how its colour was made, and its primitive's vertices.");
-        java.awt.event.MouseAdapter links = new java.awt.event.MouseAdapter() {
+        MouseAdapter links = new MouseAdapter() {
             @Override
-            public void mouseClicked(java.awt.event.MouseEvent e) {
+            public void mouseClicked(MouseEvent e) {
                 String part = partAt(e.getPoint());
                 if (part != null) {
                     copyPart(part);
@@ -83,9 +99,9 @@ public final class InspectorPanel {
             }
 
             @Override
-            public void mouseMoved(java.awt.event.MouseEvent e) {
-                text.setCursor(java.awt.Cursor.getPredefinedCursor(partAt(e.getPoint()) != null
-                        ? java.awt.Cursor.HAND_CURSOR : java.awt.Cursor.TEXT_CURSOR));
+            public void mouseMoved(MouseEvent e) {
+                text.setCursor(Cursor.getPredefinedCursor(partAt(e.getPoint()) != null
+                        ? Cursor.HAND_CURSOR : Cursor.TEXT_CURSOR));
             }
         };
         text.addMouseListener(links);
@@ -93,12 +109,12 @@ public final class InspectorPanel {
     }
 
     /** Where a click on a chain's part is told ("Copied ..."). */
-    public void onCopy(java.util.function.Consumer<String> message) {
-        say = message;
+    public void onCopy(Consumer<String> message) {
+        toldOfCopy = message;
     }
 
     /** The chain's part ("cube.simp:7") under a point of the text, or null. */
-    String partAt(java.awt.Point point) {
+    String partAt(Point point) {
         int at = text.viewToModel2D(point);
         if (at < 0) {
             return null;
@@ -107,7 +123,7 @@ public final class InspectorPanel {
         int lineStart = all.lastIndexOf('\n', Math.max(0, at - 1)) + 1;
         int lineEnd = all.indexOf('\n', at);
         String line = all.substring(lineStart, lineEnd < 0 ? all.length() : lineEnd);
-        java.util.regex.Matcher m = PART.matcher(line);
+        Matcher m = PART.matcher(line);
         while (m.find()) {
             if (lineStart + m.start() <= at && at <= lineStart + m.end()) {
                 return m.group();
@@ -118,18 +134,18 @@ public final class InspectorPanel {
 
     /** Copies a chain's part as its whole path and line ("/.../cube.simp:7"), or as spelt when its file is not known. */
     public String copyPart(String part) {
-        simpview.scene.simp.SourcePlace place = places.get(part);
+        SourcePlace place = places.get(part);
         String copied = place == null ? part : place.file().toAbsolutePath() + ":" + place.line();
-        java.awt.Toolkit.getDefaultToolkit().getSystemClipboard()
-                .setContents(new java.awt.datatransfer.StringSelection(copied), null);
-        say.accept("Copied " + copied);
+        Toolkit.getDefaultToolkit().getSystemClipboard()
+                .setContents(new StringSelection(copied), null);
+        toldOfCopy.accept("Copied " + copied);
         return copied;
     }
 
     /** The inspected pixel's owner's include chain, whole paths, " › " between the parts; "" when none. */
     public String ownerChainText() {
         StringBuilder chain = new StringBuilder();
-        for (simpview.scene.simp.SourcePlace place : ownerChain) {
+        for (SourcePlace place : ownerChain) {
             chain.append(chain.length() == 0 ? "" : " › ").append(place.file().toAbsolutePath()).append(':')
                     .append(place.line());
         }
@@ -155,8 +171,8 @@ public final class InspectorPanel {
     public void say(String message) {
         request++;
         answered = true;
-        places = java.util.Map.of();
-        ownerChain = java.util.List.of();
+        places = Map.of();
+        ownerChain = List.of();
         text.setText(message);
         text.setCaretPosition(0);
     }
@@ -177,26 +193,26 @@ public final class InspectorPanel {
                 + ") ...");
         Runnable job = () -> {
             String report;
-            java.util.Map<String, simpview.scene.simp.SourcePlace> named = new java.util.HashMap<>();
-            java.util.List<simpview.scene.simp.SourcePlace> chain = java.util.List.of();
+            Map<String, SourcePlace> named = new HashMap<>();
+            List<SourcePlace> chain = List.of();
             try {
                 PixelReport r = inspector.inspect(scene, x, y);
                 HistoryEntry owner = r.lastWritten();
                 report = (before == null ? "" : before + "\n\n") + (note == null ? "" : note + "\n\n")
                         + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive());
                 for (HistoryEntry entry : r.history()) {
-                    for (simpview.scene.simp.SourcePlace place : entry.chain()) {
+                    for (SourcePlace place : entry.chain()) {
                         named.put(place.file().getFileName() + ":" + place.line(), place);
                     }
                 }
-                chain = owner == null ? java.util.List.of() : owner.chain();
+                chain = owner == null ? List.of() : owner.chain();
             } catch (SceneException e) {
                 report = "The scene stops with an error, so the history ends there:\n" + e.getMessage();
             } catch (RuntimeException e) {
                 report = "Could not replay the scene: " + e;
             }
             String shown = report;
-            java.util.List<simpview.scene.simp.SourcePlace> ownerPlaces = chain;
+            List<SourcePlace> ownerPlaces = chain;
             SwingUtilities.invokeLater(() -> {
                 if (mine == request) {
                     answered = true;
@@ -221,15 +237,15 @@ public final class InspectorPanel {
      * The overdraw of {@code scene}, counted on the inspector's thread, then
      * given to {@code show} on the EDT (null when the scene has an error).
      */
-    public void overdraw(InspectedScene scene, java.util.function.Consumer<simpview.inspect.Overdraw.Counts> show) {
+    public void overdraw(InspectedScene scene, Consumer<Overdraw.Counts> show) {
         worker.submit(() -> {
-            simpview.inspect.Overdraw.Counts counts;
+            Overdraw.Counts counts;
             try {
-                counts = simpview.inspect.Overdraw.counts(scene, models);
+                counts = Overdraw.counts(scene, models);
             } catch (SceneException | RuntimeException e) {
                 counts = null;
             }
-            simpview.inspect.Overdraw.Counts shown = counts;
+            Overdraw.Counts shown = counts;
             SwingUtilities.invokeLater(() -> show.accept(shown));
         });
     }
@@ -239,15 +255,15 @@ public final class InspectorPanel {
      * the inspector's thread, then given to {@code show} on the EDT (null when
      * the scene has an error).
      */
-    public void skipped(InspectedScene scene, java.util.function.Consumer<simpview.inspect.SkippedPrimitives.Found> show) {
+    public void skipped(InspectedScene scene, Consumer<SkippedPrimitives.Found> show) {
         worker.submit(() -> {
-            simpview.inspect.SkippedPrimitives.Found found;
+            SkippedPrimitives.Found found;
             try {
-                found = simpview.inspect.SkippedPrimitives.of(scene, models);
+                found = SkippedPrimitives.of(scene, models);
             } catch (SceneException | RuntimeException e) {
                 found = null;
             }
-            simpview.inspect.SkippedPrimitives.Found shown = found;
+            SkippedPrimitives.Found shown = found;
             SwingUtilities.invokeLater(() -> show.accept(shown));
         });
     }
