@@ -70,7 +70,7 @@ final class CheckCommand implements Callable<Integer> {
     private int deviation = Comparison.DEFAULT_DEVIATION;
 
     @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
-            description = "exact, or blur (default: exact)")
+            description = "exact, blur or flip (see compare --help; default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
 
     @Option(names = "--rubric", paramLabel = "F.json", description = "the course's rubric, if it gives you one")

@@ -108,8 +108,9 @@ public final class CompareCommand implements Callable<Integer> {
     private int deviation = Comparison.DEFAULT_DEVIATION;
 
     @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
-            description = "exact, or blur: both panels blurred (3x3 binomial) first, forgiving another antialiasing "
-                    + "(default: exact)")
+            description = "exact; blur: both panels blurred (3x3 binomial) first; or flip: a pixel matches when its "
+                    + "perceptual difference (LDR-FLIP, 67 pixels per degree) is at most 0.13, forgiving another "
+                    + "antialiasing (default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
 
     @Option(names = "--rubric", paramLabel = "F.json",
@@ -252,7 +253,14 @@ public final class CompareCommand implements Callable<Integer> {
         if (metric == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }
-        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", "within " + tolerance + "/255");
+        boolean flip = metric == Comparison.Metric.FLIP;
+        String within = flip ? String.format(Locale.ROOT, "FLIP <= %.3f", Comparison.FLIP_THRESHOLD)
+                : "within " + tolerance + "/255";
+        if (flip) {
+            out.println("metric:  FLIP (LDR, 67 pixels per degree) of each panel: a pixel matches at FLIP "
+                    + String.format(Locale.ROOT, "%.3f", Comparison.FLIP_THRESHOLD) + " or less");
+        }
+        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", within);
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {
             PanelGridComparison.PanelShares shares = comparison.shares(k);
@@ -260,8 +268,8 @@ public final class CompareCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", what, 100 * shares.identical(), 100 * shares.within());
             passes &= 100 * shares.within() >= min;
         }
-        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% within %d/255 (no slack)%n", passes ? "PASS" : "FAIL",
-                passes ? "reaches" : "must reach", min, tolerance);
+        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
+                passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 

@@ -79,14 +79,15 @@ public final class CompareOptions {
         }
     }
 
-    /** The metric: exact or blur. */
+    /** The metric: exact, blur or flip. */
     static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
         @Override
         public simpview.compare.Comparison.Metric convert(String text) {
             return switch (text.trim().toLowerCase(Locale.ROOT)) {
                 case "exact" -> simpview.compare.Comparison.Metric.EXACT;
                 case "blur" -> simpview.compare.Comparison.Metric.BLUR;
-                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact or blur");
+                case "flip" -> simpview.compare.Comparison.Metric.FLIP;
+                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact, blur or flip");
             };
         }
     }

@@ -15,6 +15,12 @@ package simpview.compare;
  * the same edge counts as near; {@link #ours()} and {@link #theirs()} stay
  * the pictures as given, for showing.
  *
+ * <p>With {@link Metric#FLIP} the shares are still the colour distances (with
+ * slack) above, but whether a pixel matches is decided by its {@link Flip}
+ * value: at most {@link #FLIP_THRESHOLD}. The verdict's share
+ * ({@link #verdictShare}), the failing pixels and their regions then count
+ * by FLIP, not by the tolerance.
+ *
  * <p>Invariant: slack[i] <= direct[i]. The pixels are read, never kept
  * changed; the arrays here (and the blurred copies) are the only ones made.
  */
@@ -23,8 +29,19 @@ public final class Comparison {
     public static final int N = PanelPlace.SIZE;
     private static final int LEVELS = 256;
 
-    /** How distances are measured: on the pixels as they are, or after a small blur of both panels. */
-    public enum Metric { EXACT, BLUR }
+    /**
+     * How distances are measured: on the pixels as they are, after a small blur of both panels, or
+     * whether a pixel matches is decided by its perceptual difference (LDR-FLIP).
+     */
+    public enum Metric { EXACT, BLUR, FLIP }
+
+    /**
+     * The FLIP value at or below which a pixel matches: just above the 0.128 FLIP gives inside a flat area
+     * whose colour is the default tolerance, 8/255, off mid grey (0.100 on black, 0.117 near white;
+     * {@link Flip#flat}). So where there is no edge FLIP forgives what the default tolerance forgives, and
+     * along an edge what the eye does not see when the two pictures are flipped between.
+     */
+    public static final double FLIP_THRESHOLD = 0.13;
 
     /** Today's slack: one pixel. */
     public static final int DEFAULT_DEVIATION = 1;
@@ -39,6 +56,8 @@ public final class Comparison {
     private final byte[] slack = new byte[N * N];
     private final int[] directCount = new int[LEVELS];
     private final int[] slackCount = new int[LEVELS];
+    private float[] flip;
+    private int flipFailing;
 
     private Comparison(int[] ours, int[] theirs, int deviation, Metric metric) {
         this.ours = ours;
@@ -65,6 +84,12 @@ public final class Comparison {
             c.measure(Blur.of(ours), Blur.of(theirs));
         } else {
             c.measure(ours, theirs);
+        }
+        if (metric == Metric.FLIP) {
+            c.flip = Flip.of(ours, theirs, N, N);
+            for (float v : c.flip) {
+                c.flipFailing += v > FLIP_THRESHOLD ? 1 : 0;
+            }
         }
         return c;
     }
@@ -117,8 +142,29 @@ public final class Comparison {
         return (double) within / (N * N);
     }
 
-    /** How many panel pixels differ by more than {@code tolerance} even with slack. */
+    /**
+     * The share the verdict is on: within {@code tolerance} with slack; with FLIP, the share of pixels
+     * whose FLIP value is at most the threshold.
+     */
+    public double verdictShare(int tolerance) {
+        return metric == Metric.FLIP ? 1 - (double) flipFailing / (N * N) : share(tolerance, true);
+    }
+
+    /** Whether pixel i fails: beyond {@code tolerance} even with slack; with FLIP, above the threshold. */
+    public boolean fails(int i, int tolerance) {
+        return metric == Metric.FLIP ? flip[i] > FLIP_THRESHOLD : (slack[i] & 0xFF) > tolerance;
+    }
+
+    /** Pixel i's FLIP value, 0 to 1; NaN unless the metric is FLIP. */
+    public double flip(int i) {
+        return flip == null ? Double.NaN : flip[i];
+    }
+
+    /** How many panel pixels fail: differ by more than {@code tolerance} even with slack, or with FLIP above its threshold. */
     public int failing(int tolerance) {
+        if (metric == Metric.FLIP) {
+            return flipFailing;
+        }
         int failing = 0;
         for (int level = Math.max(0, tolerance + 1); level < LEVELS; level++) {
             failing += slackCount[level];

@@ -10,7 +10,9 @@ import java.util.Arrays;
  * one sees where one is); pixels that differ but within the tolerance are dark
  * blue; pixels beyond it that match with one pixel of slack (an edge or a line
  * one pixel off) are yellow; pixels beyond the tolerance even with slack are
- * red, the brighter the larger the difference.
+ * red, the brighter the larger the difference. With the FLIP metric, yellow
+ * is a pixel beyond the tolerance that FLIP forgives, and red one above
+ * FLIP's threshold, the brighter the larger its FLIP value.
  */
 public final class HeatMap {
 
@@ -32,6 +34,12 @@ public final class HeatMap {
             int rgb = c.ours()[i];
             int grey = ((rgb >> 16 & 0xFF) + (rgb >> 8 & 0xFF) + (rgb & 0xFF)) / (3 * IDENTICAL_DIM);
             return grey << 16 | grey << 8 | grey;
+        }
+        if (c.metric() == Comparison.Metric.FLIP) {
+            if (!c.fails(i, tolerance)) {
+                return d <= tolerance ? WITHIN : SLACK_ONLY;
+            }
+            return (128 + (int) Math.round(c.flip(i) * 127)) << 16;
         }
         if (d <= tolerance) {
             return WITHIN;

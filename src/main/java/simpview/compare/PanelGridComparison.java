@@ -13,7 +13,9 @@ import java.nio.file.Path;
  * lights is what is being compared. With {@link Comparison.Metric#BLUR} each
  * panel of both pictures is blurred first ({@link Blur}), so that another
  * valid antialiasing (the handout allows any method for panel 4) is measured
- * by what the eye sees at 1:1.
+ * by what the eye sees at 1:1. With {@link Comparison.Metric#FLIP} a pixel
+ * is within when its FLIP value ({@link Flip}, of the two panels) is at most
+ * {@link Comparison#FLIP_THRESHOLD}.
  */
 public final class PanelGridComparison {
 
@@ -21,7 +23,7 @@ public final class PanelGridComparison {
     public record Panel(int left, int top, int size) {
     }
 
-    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel. */
+    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel (with FLIP: at most its threshold). */
     public record PanelShares(double identical, double within) {
     }
 
@@ -73,10 +75,11 @@ public final class PanelGridComparison {
             }
             long identical = 0;
             long within = 0;
+            float[] flip = metric == Comparison.Metric.FLIP ? Flip.of(a, b, p.size(), p.size()) : null;
             for (int i = 0; i < a.length; i++) {
                 int d = Rasters.distance(a[i], b[i]);
                 identical += d == 0 ? 1 : 0;
-                within += d <= tolerance ? 1 : 0;
+                within += (flip == null ? d <= tolerance : flip[i] <= Comparison.FLIP_THRESHOLD) ? 1 : 0;
             }
             double n = (double) p.size() * p.size();
             shares[k] = new PanelShares(identical / n, within / n);

@@ -167,10 +167,11 @@ public final class Rubric {
                             "a whole number of pixels, 0 to 422500");
                     case "points" -> points = number(0, 1e6, false, "points, 0 or more");
                     case "zero_share" -> zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
-                    case "metric" -> metric = switch (string("\"exact\" or \"blur\"")) {
+                    case "metric" -> metric = switch (string("\"exact\", \"blur\" or \"flip\"")) {
                         case "exact" -> Comparison.Metric.EXACT;
                         case "blur" -> Comparison.Metric.BLUR;
-                        default -> throw error("\"metric\" must be \"exact\" or \"blur\"");
+                        case "flip" -> Comparison.Metric.FLIP;
+                        default -> throw error("\"metric\" must be \"exact\", \"blur\" or \"flip\"");
                     };
                     case "alternates" -> alternates = folder(string("a folder of extra accepted pictures"));
                     case "visibility" -> {

@@ -14,7 +14,7 @@ import java.nio.file.Path;
  * @param maxFailing the most pixels that may fail (beyond the tolerance even with the deviation), or -1 for no limit
  * @param points the page's score when it passes (Gradescope's max_score)
  * @param zeroShare with partial scoring, the share (percent) at and below which the page scores nothing
- * @param metric exact, or after a small blur (antialiased panels)
+ * @param metric exact, after a small blur, or FLIP (antialiased panels)
  * @param alternates a folder of extra accepted references, or null
  * @param visibility Gradescope's visibility of the page's test
  */
@@ -28,7 +28,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
 
     /** The verdict of a comparison made under this rule (with its deviation and metric). */
     public boolean passes(Comparison comparison) {
-        return comparison.share(tolerance, true) * 100 >= minShare - 1e-9
+        return comparison.verdictShare(tolerance) * 100 >= minShare - 1e-9
                 && (maxFailing < 0 || comparison.failing(tolerance) <= maxFailing);
     }
 
@@ -46,7 +46,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
         if (!partial) {
             return 0;
         }
-        double share = comparison.share(tolerance, true) * 100;
+        double share = comparison.verdictShare(tolerance) * 100;
         double part = minShare <= zeroShare ? (share >= minShare ? 1 : 0)
                 : Math.max(0, Math.min(1, (share - zeroShare) / (minShare - zeroShare)));
         int failing = comparison.failing(tolerance);
