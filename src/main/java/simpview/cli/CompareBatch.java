@@ -342,7 +342,7 @@ public final class CompareBatch {
 
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
         RubricRule base = rubric.defaults();
-        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation());
+        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation(), base.metric());
         Path outDir = outputs.outDir();
         try {
             if (outDir != null) {

@@ -50,20 +50,24 @@ public final class Comparison {
 
     private final int[] ours;
     private final int[] theirs;
+    private final int size;
     private final int deviation;
     private final Metric metric;
-    private final byte[] direct = new byte[N * N];
-    private final byte[] slack = new byte[N * N];
+    private final byte[] direct;
+    private final byte[] slack;
     private final int[] directCount = new int[LEVELS];
     private final int[] slackCount = new int[LEVELS];
     private float[] flip;
     private int flipFailing;
 
-    private Comparison(int[] ours, int[] theirs, int deviation, Metric metric) {
+    private Comparison(int[] ours, int[] theirs, int size, int deviation, Metric metric) {
         this.ours = ours;
         this.theirs = theirs;
+        this.size = size;
         this.deviation = deviation;
         this.metric = metric;
+        this.direct = new byte[size * size];
+        this.slack = new byte[size * size];
     }
 
     /** Compares two panels of 650x650 0xRRGGBB pixels, row by row from the top, with one pixel of slack. */
@@ -76,17 +80,25 @@ public final class Comparison {
         if (ours.length != N * N || theirs.length != N * N) {
             throw new IllegalArgumentException("panels are 650x650 pixels");
         }
+        return of(ours, theirs, N, deviation, metric);
+    }
+
+    /** Compares two square panels of {@code size} x {@code size} pixels (the first assignment's are 300x300). */
+    public static Comparison of(int[] ours, int[] theirs, int size, int deviation, Metric metric) {
+        if (size < 1 || ours.length != size * size || theirs.length != size * size) {
+            throw new IllegalArgumentException("both panels must be " + size + "x" + size + " pixels");
+        }
         if (deviation < 0 || deviation > MAX_DEVIATION) {
             throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
         }
-        Comparison c = new Comparison(ours, theirs, deviation, metric);
+        Comparison c = new Comparison(ours, theirs, size, deviation, metric);
         if (metric == Metric.BLUR) {
-            c.measure(Blur.of(ours), Blur.of(theirs));
+            c.measure(Blur.of(ours, size), Blur.of(theirs, size));
         } else {
             c.measure(ours, theirs);
         }
         if (metric == Metric.FLIP) {
-            c.flip = Flip.of(ours, theirs, N, N);
+            c.flip = Flip.of(ours, theirs, size, size);
             for (float v : c.flip) {
                 c.flipFailing += v > FLIP_THRESHOLD ? 1 : 0;
             }
@@ -96,15 +108,16 @@ public final class Comparison {
 
     private void measure(int[] ours, int[] theirs) {
         int r = deviation;
-        for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                int i = y * N + x;
+        int n = size;
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int i = y * n + x;
                 int d = Rasters.distance(ours[i], theirs[i]);
                 int s = d;
                 if (d != 0 && r != 0) {
-                    int one = nearest(ours[i], theirs, x, y, r, d, 0);
+                    int one = nearest(ours[i], theirs, n, x, y, r, d, 0);
                     // The other way only matters where it is larger than the first: it may stop at that.
-                    s = one == d ? d : nearest(theirs[i], ours, x, y, r, d, one);
+                    s = one == d ? d : nearest(theirs[i], ours, n, x, y, r, d, one);
                 }
                 direct[i] = (byte) d;
                 slack[i] = (byte) s;
@@ -119,11 +132,11 @@ public final class Comparison {
      * (a square), at most {@code bound}; or, as soon as one is found at or below {@code floor}, the
      * floor (the caller takes the larger of this and the floor, so nothing smaller changes it).
      */
-    private static int nearest(int colour, int[] other, int x, int y, int r, int bound, int floor) {
+    private static int nearest(int colour, int[] other, int n, int x, int y, int r, int bound, int floor) {
         int best = bound;
-        for (int ny = Math.max(0, y - r); ny <= Math.min(N - 1, y + r); ny++) {
-            for (int nx = Math.max(0, x - r); nx <= Math.min(N - 1, x + r); nx++) {
-                best = Math.min(best, Rasters.distance(colour, other[ny * N + nx]));
+        for (int ny = Math.max(0, y - r); ny <= Math.min(n - 1, y + r); ny++) {
+            for (int nx = Math.max(0, x - r); nx <= Math.min(n - 1, x + r); nx++) {
+                best = Math.min(best, Rasters.distance(colour, other[ny * n + nx]));
                 if (best <= floor) {
                     return floor;
                 }
@@ -139,7 +152,7 @@ public final class Comparison {
         for (int level = 0; level <= Math.min(tolerance, LEVELS - 1); level++) {
             within += counts[level];
         }
-        return (double) within / (N * N);
+        return (double) within / (size * size);
     }
 
     /**
@@ -147,7 +160,7 @@ public final class Comparison {
      * whose FLIP value is at most the threshold.
      */
     public double verdictShare(int tolerance) {
-        return metric == Metric.FLIP ? 1 - (double) flipFailing / (N * N) : share(tolerance, true);
+        return metric == Metric.FLIP ? 1 - (double) flipFailing / (size * size) : share(tolerance, true);
     }
 
     /** Whether pixel i fails: beyond {@code tolerance} even with slack; with FLIP, above the threshold. */
@@ -170,6 +183,11 @@ public final class Comparison {
             failing += slackCount[level];
         }
         return failing;
+    }
+
+    /** The panels' side in pixels: 650 for a page's panel. */
+    public int size() {
+        return size;
     }
 
     /** The slack in pixels: the position deviation. */

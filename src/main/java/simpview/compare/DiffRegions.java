@@ -18,7 +18,7 @@ public final class DiffRegions {
     }
 
     public static Found of(Comparison comparison, int tolerance, int keep) {
-        int n = Comparison.N;
+        int n = comparison.size();
         boolean[] seen = new boolean[n * n];
         int[] stack = new int[n * n];
         List<DiffRegion> largest = new ArrayList<>();
@@ -45,7 +45,7 @@ public final class DiffRegions {
 
     /** Floods the patch holding pixel {@code start}; returns its bounds in panel coordinates (y up). */
     private static DiffRegion fill(Comparison comparison, int tolerance, int start, boolean[] seen, int[] stack) {
-        int n = Comparison.N;
+        int n = comparison.size();
         int size = 0;
         int pixels = 0;
         int minX = n;

@@ -84,9 +84,8 @@ public final class GradescopeResults {
         }
         RubricRule rule = row.rule();
         StringBuilder out = new StringBuilder();
-        out.append(String.format(Locale.ROOT, "%s: %s of panel pixels within %d/255 with %d px slack (%s needed)",
-                row.result(), Percent.of(row.verdict()), rule.tolerance(), rule.deviation(),
-                Percent.of(rule.minShare() / 100)));
+        out.append(String.format(Locale.ROOT, "%s: %s of panel pixels %s (%s needed)",
+                row.result(), Percent.of(row.verdict()), row.verdictName(), Percent.of(rule.minShare() / 100)));
         if (rule.maxFailing() >= 0) {
             out.append(String.format(Locale.ROOT, "; %,d pixels fail (at most %,d allowed)", row.failing(), rule.maxFailing()));
         }
