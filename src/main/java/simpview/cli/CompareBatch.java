@@ -40,6 +40,12 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
+import java.awt.image.BufferedImage;
+import simpview.compare.PanelGridComparison;
+import simpview.pages.A1Layout;
+import simpview.pages.Assignment1;
+import simpview.pages.LineTestPage;
+import simpview.pages.Page;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
@@ -55,8 +61,19 @@ public final class CompareBatch {
     static final String DIFFS = "diffs";
     private static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
 
-    /** What a picture's name matched: a target, or why it was skipped. */
-    private record Match(CompareTarget target, String skipped) {
+    /**
+     * What a picture's name matched: a target, a page of the first assignment (compared panel by
+     * panel), or why it was skipped.
+     */
+    private record Match(CompareTarget target, String skipped, int firstAssignmentPage) {
+
+        Match(CompareTarget target, String skipped) {
+            this(target, skipped, 0);
+        }
+
+        boolean compared() {
+            return target != null || firstAssignmentPage > 0;
+        }
     }
 
     /** A reference a picture may match: simpview's own (name "") or an accepted alternate. */
@@ -100,12 +117,15 @@ public final class CompareBatch {
             OptionalInt n = SubmissionNames.pageNumber(name);
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
-        return run(dir, outputs, wanted, namer, name -> {
+        return run(dir, outputs, wanted, namer, relative -> {
+            String name = fileName(relative);
             OptionalInt number = SubmissionNames.pageNumber(name);
-            if (number.isPresent() && SubmissionNames.namesFirstAssignment(name)) {
-                return new Match(null, "a first-assignment page by its name: compare it alone, with "
-                        + "compare " + name + " --assignment 1 --page " + number.getAsInt()
-                        + " (the batch does not compare those yet)");
+            if (number.isPresent() && namesFirstAssignment(relative)) {
+                if (number.getAsInt() > Assignment1.COUNT) {
+                    return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not "
+                            + number.getAsInt());
+                }
+                return new Match(null, null, number.getAsInt());
             }
             if (number.isEmpty()) {
                 return new Match(null, "no page number in the name (expected a name like page3.png)");
@@ -121,7 +141,7 @@ public final class CompareBatch {
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
             return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
-                    name -> new Match(CompareTarget.scene(scene), null));
+                    relative -> new Match(CompareTarget.scene(scene), null));
         }
         if (!Files.isDirectory(scene)) {
             err.println("simpview compare: --scene " + scene + ": no such file or folder");
@@ -137,8 +157,8 @@ public final class CompareBatch {
         List<CompareTarget> wanted = scenes.entrySet().stream()
                 .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
                 .map(e -> CompareTarget.scene(e.getValue())).toList();
-        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), name -> {
-            Optional<String> named = SubmissionNames.sceneName(name, scenes.keySet());
+        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
+            Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
         });
@@ -156,11 +176,13 @@ public final class CompareBatch {
         long start = System.nanoTime();
         List<Match> matches = new ArrayList<>();
         for (Path picture : pictures) {
-            matches.add(matcher.apply(picture.getFileName().toString()));
+            matches.add(matcher.apply(dir.relativize(picture).toString()));
         }
         Map<CompareTarget, Object> drawn = drawAll(matches);
+        Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<Reference>> alternates = alternatesOf(drawn.keySet(), namer);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir(), outputs.diffs());
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, outputs.outDir(),
+                outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
@@ -174,6 +196,11 @@ public final class CompareBatch {
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
+        }
+        for (int page : firstAssignment.keySet()) {
+            for (int k = 1; k <= A1Layout.PANELS; k++) {
+                asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
+            }
         }
         return writeResults(rows, asked, outputs, seconds);
     }
@@ -245,34 +272,52 @@ public final class CompareBatch {
         return drawn;
     }
 
+    /** The first assignment's pages the pictures need, drawn once each (they read no files). */
+    private Map<Integer, BufferedImage> drawFirstAssignment(List<Match> matches) {
+        Map<Integer, BufferedImage> drawn = new TreeMap<>();
+        for (Match match : matches) {
+            if (match.firstAssignmentPage() > 0) {
+                drawn.computeIfAbsent(match.firstAssignmentPage(), p -> Assignment1.render(p, own.context()));
+            }
+        }
+        return drawn;
+    }
+
     /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir,
-            DiffImages diffs) {
+            Map<CompareTarget, Object> drawn, Map<Integer, BufferedImage> firstAssignment,
+            Map<CompareTarget, List<Reference>> alternates, Path outDir, DiffImages diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
                 task -> new Thread(task, "simpview-compare-" + named.incrementAndGet()));
         AtomicInteger finished = new AtomicInteger();
         try {
-            List<Future<BatchRow>> rows = new ArrayList<>();
+            List<Future<List<BatchRow>>> rows = new ArrayList<>();
             for (int i = 0; i < pictures.size(); i++) {
                 Path picture = pictures.get(i);
                 Match match = matches.get(i);
                 rows.add(workers.submit(() -> {
                     String relative = dir.relativize(picture).toString();
-                    BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
-                            : compare(picture, relative, match.target(), drawn.get(match.target()),
-                                    alternates.get(match.target()), outDir, diffs);
-                    synchronized (err) {
-                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(row));
+                    List<BatchRow> made;
+                    if (match.firstAssignmentPage() > 0) {
+                        made = compareFirstAssignment(picture, relative, match.firstAssignmentPage(),
+                                firstAssignment.get(match.firstAssignmentPage()), outDir, diffs);
+                    } else if (match.target() == null) {
+                        made = List.of(BatchRow.skipped(relative, match.skipped()));
+                    } else {
+                        made = List.of(compare(picture, relative, match.target(), drawn.get(match.target()),
+                                alternates.get(match.target()), outDir, diffs));
                     }
-                    return row;
+                    synchronized (err) {
+                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(made));
+                    }
+                    return made;
                 }));
             }
             List<BatchRow> done = new ArrayList<>();
-            for (Future<BatchRow> row : rows) {
-                done.add(row.get());
+            for (Future<List<BatchRow>> row : rows) {
+                done.addAll(row.get());
             }
             return done;
         } catch (InterruptedException e) {
@@ -283,6 +328,18 @@ public final class CompareBatch {
         } finally {
             workers.shutdownNow();
         }
+    }
+
+    /** One picture's progress line: its row's result, or of a page of panels the worst panel's. */
+    private static String progress(List<BatchRow> rows) {
+        if (rows.size() == 1) {
+            return progress(rows.get(0));
+        }
+        BatchRow worst = rows.stream().filter(BatchRow::compared)
+                .min(java.util.Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
+        long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
+        return (passing == rows.size() ? "PASS" : "FAIL") + " " + passing + " of " + rows.size() + " panels; lowest "
+                + Percent.of(worst.verdict()) + " (" + worst.target() + ")";
     }
 
     private static String progress(BatchRow row) {
@@ -338,6 +395,96 @@ public final class CompareBatch {
                     .withoutDiff("diff not written: " + e.getMessage());
         }
         return BatchRow.compared(relative, label, best, diff, rule, score, bestName);
+    }
+
+    /** The panels of the first assignment's pages, in page coordinates. */
+    static PanelGridComparison.Panel[] firstAssignmentPanels() {
+        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
+        }
+        return panels;
+    }
+
+    /** E.g. "A1 page 1 panel 4 (antialiased)", "A1 page 3 (seed 361) panel 1 (DDA)", "A1 page 4 panel 2". */
+    private String firstAssignmentLabel(int page, int panel) {
+        Page shown = Assignment1.page(page);
+        return "A1 page " + page + (shown.usesSeed() ? " (seed " + own.context().seed() + ")" : "") + " panel " + panel
+                + (shown instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
+    }
+
+    /**
+     * A panel's rule: the rubric's rule for "a1-page2-panel4" (a pattern like "a1-*-panel4" picks out the
+     * antialiased panels); when no rule of the rubric names it, the defaults without slack, as
+     * {@code compare --assignment 1} judges: which pixels a line drawer lights is the point.
+     */
+    private RubricRule firstAssignmentRule(int page, int panel) {
+        RubricRule rule = rubric.ruleFor("a1-page" + page + "-panel" + panel, 0);
+        if (!"*".equals(rule.match())) {
+            return rule;
+        }
+        return new RubricRule(rule.match(), rule.tolerance(), 0, rule.minShare(), rule.maxFailing(), rule.points(),
+                rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility());
+    }
+
+    /**
+     * A picture of one of the first assignment's pages, panel by panel against simpview's page: one row per
+     * panel, or one ERROR row when it cannot be read or holds no such page. Thread-safe.
+     */
+    private List<BatchRow> compareFirstAssignment(Path file, String relative, int page, BufferedImage ours,
+            Path outDir, DiffImages diffs) {
+        PanelGridComparison.Cut cut;
+        try {
+            cut = PanelGridComparison.cut(file, ours, firstAssignmentPanels());
+        } catch (CompareException e) {
+            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page, 1).replaceFirst(" panel .*", ""),
+                    e.getMessage(), firstAssignmentRule(page, 1)));
+        }
+        List<BatchRow> rows = new ArrayList<>();
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            RubricRule rule = firstAssignmentRule(page, k);
+            Comparison comparison = Comparison.of(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL,
+                    rule.deviation(), rule.metric());
+            String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
+                    + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
+                    + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page";
+            double score = rule.score(comparison, partial);
+            boolean passes = rule.passes(comparison);
+            String label = firstAssignmentLabel(page, k);
+            if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && passes) {
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note));
+                continue;
+            }
+            String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "")
+                    + "-panel" + k + "-diff.png";
+            try {
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), outDir.resolve(diff));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
+            } catch (IOException e) {
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", "diff not written: " + e.getMessage()));
+            }
+        }
+        return rows;
+    }
+
+    /** The file name of a path relative to the submissions folder. */
+    private static String fileName(String relative) {
+        Path name = Path.of(relative).getFileName();
+        return name == null ? relative : name.toString();
+    }
+
+    /**
+     * Whether a picture is one of the first assignment's pages: its file name says so (a1-page2.png,
+     * a1page2.png, assignment1_page2.png) or a folder on its way does (a1/page2.png, the course's own
+     * captures' folder).
+     */
+    static boolean namesFirstAssignment(String relative) {
+        for (Path part : Path.of(relative)) {
+            if (SubmissionNames.namesFirstAssignment(part.toString())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {

@@ -25,7 +25,6 @@ import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
-import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
@@ -232,10 +231,7 @@ public final class CompareCommand implements Callable<Integer> {
 
     /** The first assignment's page beside the picture, panel by panel: the verdict passes when every panel does. */
     private int compareAssignment1() {
-        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
-        for (int k = 1; k <= A1Layout.PANELS; k++) {
-            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
-        }
+        PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
         PageContext context = context();
         Page shown = Assignment1.page(page);
         PanelGridComparison comparison;

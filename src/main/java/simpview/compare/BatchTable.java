@@ -78,8 +78,11 @@ public final class BatchTable {
         for (BatchRow row : rows) {
             counts[row.result().ordinal()]++;
         }
-        return String.format("%d pictures: %d pass, %d fail, %d could not be compared, %d skipped",
-                rows.size(), counts[0], counts[1], counts[2], counts[3]);
+        long files = rows.stream().map(BatchRow::file).distinct().count();
+        // a page of the first assignment is a row per panel
+        String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + " pictures)";
+        return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
+                what, counts[0], counts[1], counts[2], counts[3]);
     }
 
     private static List<String> cells(BatchRow row, boolean markdown) {

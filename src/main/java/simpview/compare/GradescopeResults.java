@@ -105,7 +105,8 @@ public final class GradescopeResults {
                 out.append("  ").append(region.describe()).append('\n');
             }
         }
-        out.append("margins: ").append(row.margins());
+        // a panel of the first assignment's pages has no margins of its own
+        out.append(row.margins().isEmpty() ? row.note() : "margins: " + row.margins());
         if (!row.diff().isEmpty()) {
             out.append("\ndiff image: ").append(row.diff());
         }

@@ -60,15 +60,12 @@ public final class PanelGridComparison {
     /** The same, measured by {@code metric}. */
     public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
             Comparison.Metric metric) throws CompareException {
-        PngCodec.Pixels theirs = Picture.readPixels(picture);
-        int page = ours.getWidth();
-        int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
-        int[] mine = Rasters.rgb(ours);
+        Cut cut = cut(picture, ours, panels);
         PanelShares[] shares = new PanelShares[panels.length];
         for (int k = 0; k < panels.length; k++) {
             Panel p = panels[k];
-            int[] a = cut(mine, page, p.left(), p.top(), p.size());
-            int[] b = cut(theirs.rgb(), theirs.width(), at[0] + p.left(), at[1] + p.top(), p.size());
+            int[] a = cut.ours()[k];
+            int[] b = cut.theirs()[k];
             if (metric == Comparison.Metric.BLUR) {
                 a = Blur.of(a, p.size());
                 b = Blur.of(b, p.size());
@@ -84,7 +81,34 @@ public final class PanelGridComparison {
             double n = (double) p.size() * p.size();
             shares[k] = new PanelShares(identical / n, within / n);
         }
-        return new PanelGridComparison(at[0], at[1], shares);
+        return new PanelGridComparison(cut.pageLeft(), cut.pageTop(), shares);
+    }
+
+    /**
+     * A picture's page found and cut into its panels, beside simpview's page cut the same way.
+     *
+     * @param pageLeft where the page's top-left pixel is in the picture
+     * @param pageTop the same, its row
+     * @param ours simpview's panels, each size x size pixels row by row from the top
+     * @param theirs the picture's panels, the same
+     */
+    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs) {
+    }
+
+    /** Reads the picture, finds the page in it and cuts both pages into their panels. */
+    public static Cut cut(Path picture, BufferedImage ours, Panel[] panels) throws CompareException {
+        PngCodec.Pixels theirs = Picture.readPixels(picture);
+        int page = ours.getWidth();
+        int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
+        int[] mine = Rasters.rgb(ours);
+        int[][] a = new int[panels.length][];
+        int[][] b = new int[panels.length][];
+        for (int k = 0; k < panels.length; k++) {
+            Panel p = panels[k];
+            a[k] = cut(mine, page, p.left(), p.top(), p.size());
+            b[k] = cut(theirs.rgb(), theirs.width(), at[0] + p.left(), at[1] + p.top(), p.size());
+        }
+        return new Cut(at[0], at[1], a, b);
     }
 
     /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */
