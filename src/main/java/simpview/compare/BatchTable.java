@@ -80,7 +80,7 @@ public final class BatchTable {
         }
         long files = rows.stream().map(BatchRow::file).distinct().count();
         // a page of the first assignment is a row per panel
-        String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + " pictures)";
+        String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + (files == 1 ? " picture)" : " pictures)");
         return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
                 what, counts[0], counts[1], counts[2], counts[3]);
     }

@@ -152,7 +152,8 @@ class RubricTest {
         assertTrue(deviation.getMessage().contains("3.0 is not a position deviation of 0, 1 or 2 pixels"), deviation.getMessage());
         assertTrue(deviation.getMessage().contains("line 1, column"), deviation.getMessage());
         assertTrue(bad("{\"pages\": [{\"tolerance\": 3}]}").getMessage().contains("has no \"match\""));
-        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flip\"}]}").getMessage().contains("\"exact\" or \"blur\""));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flop\"}]}").getMessage()
+                .contains("\"exact\", \"blur\" or \"flip\""));
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"alternates\": \"nowhere\"}]}").getMessage().contains("no such folder"));
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": \"3\"}]}").getMessage().contains("expected points, 0 or more, found string"));
         assertTrue(bad("{\"pages\": [").getMessage().startsWith("rubric "), "cut short");
