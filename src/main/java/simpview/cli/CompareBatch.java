@@ -117,23 +117,64 @@ public final class CompareBatch {
             OptionalInt n = SubmissionNames.pageNumber(name);
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
-        return run(dir, outputs, wanted, namer, relative -> {
-            String name = fileName(relative);
-            OptionalInt number = SubmissionNames.pageNumber(name);
-            if (number.isPresent() && namesFirstAssignment(relative)) {
-                if (number.getAsInt() > Assignment1.COUNT) {
-                    return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not "
-                            + number.getAsInt());
+        return run(dir, outputs, wanted, namer, relative -> pageMatch(relative, pages));
+    }
+
+    /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
+    private static Match pageMatch(String relative, PageRange pages) {
+        String name = fileName(relative);
+        OptionalInt number = SubmissionNames.pageNumber(name);
+        if (number.isPresent() && namesFirstAssignment(relative)) {
+            if (number.getAsInt() > Assignment1.COUNT) {
+                return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not "
+                        + number.getAsInt());
+            }
+            return new Match(null, null, number.getAsInt());
+        }
+        if (number.isEmpty()) {
+            return new Match(null, "no page number in the name (expected a name like page3.png)");
+        }
+        if (!pages.contains(number.getAsInt())) {
+            return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
+        }
+        return new Match(CompareTarget.page(number.getAsInt()), null);
+    }
+
+    /**
+     * A student's folder as {@code check DIR} (and a folder dropped on the window) takes it: a picture whose
+     * name names a scene of the folder itself (house.png beside house.simp) is compared with that scene;
+     * any other with the page its name names, as {@link #pages} does. Without scenes in the folder it is
+     * {@link #pages} exactly. The pages asked for (reported missing) are {@code pages} only when
+     * {@code askPages}; the folder's scenes asked for are those a picture matched or the rubric names.
+     */
+    int folder(Path dir, PageRange pages, boolean askPages, Outputs outputs) {
+        Map<String, Path> scenes = Files.isDirectory(dir) ? scenesIn(dir) : Map.of();
+        if (scenes.isEmpty()) {
+            return pages(dir, pages, outputs);
+        }
+        List<CompareTarget> wanted = new ArrayList<>();
+        if (askPages) {
+            for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+                if (pages.contains(p)) {
+                    wanted.add(CompareTarget.page(p));
                 }
-                return new Match(null, null, number.getAsInt());
             }
-            if (number.isEmpty()) {
-                return new Match(null, "no page number in the name (expected a name like page3.png)");
+        }
+        scenes.entrySet().stream()
+                .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
+                .forEach(e -> wanted.add(CompareTarget.scene(e.getValue())));
+        Function<String, Optional<String>> namer = name -> {
+            Optional<String> scene = SubmissionNames.sceneName(name, scenes.keySet());
+            if (scene.isPresent()) {
+                return scene;
             }
-            if (!pages.contains(number.getAsInt())) {
-                return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
-            }
-            return new Match(CompareTarget.page(number.getAsInt()), null);
+            OptionalInt n = SubmissionNames.pageNumber(name);
+            return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
+        };
+        return run(dir, outputs, wanted, namer, relative -> {
+            Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
+            return named.map(name -> new Match(CompareTarget.scene(scenes.get(name)), null))
+                    .orElseGet(() -> pageMatch(relative, pages));
         });
     }
 
