@@ -99,7 +99,8 @@ public final class GradescopeResults {
         if (row.regions().isEmpty()) {
             out.append("no region differs beyond the tolerance\n");
         } else {
-            out.append(String.format(Locale.ROOT, "%,d pixels differ beyond the tolerance; the largest regions "
+            out.append(String.format(Locale.ROOT, "%,d pixels " + (rule.metric() == Comparison.Metric.FLIP
+                    ? "are above FLIP's threshold" : "differ beyond the tolerance") + "; the largest regions "
                     + "(panel pixels, origin bottom-left, y up):%n", row.failing()));
             for (DiffRegion region : row.regions()) {
                 out.append("  ").append(region.describe()).append('\n');
