@@ -238,7 +238,7 @@ public final class CompareBatch {
         for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
         }
-        for (int page : firstAssignment.keySet()) {
+        for (int page : new java.util.TreeSet<>(firstAssignment.keySet())) {
             for (int k = 1; k <= A1Layout.PANELS; k++) {
                 asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
             }
@@ -315,7 +315,8 @@ public final class CompareBatch {
 
     /** The first assignment's pages the pictures need, drawn once each (they read no files). */
     private Map<Integer, BufferedImage> drawFirstAssignment(List<Match> matches) {
-        Map<Integer, BufferedImage> drawn = new TreeMap<>();
+        // concurrent: a picture named like one of the eight pages that holds a first-assignment page adds its page
+        Map<Integer, BufferedImage> drawn = new java.util.concurrent.ConcurrentHashMap<>();
         for (Match match : matches) {
             if (match.firstAssignmentPage() > 0) {
                 drawn.computeIfAbsent(match.firstAssignmentPage(), p -> Assignment1.render(p, own.context()));
@@ -342,13 +343,14 @@ public final class CompareBatch {
                     String relative = dir.relativize(picture).toString();
                     List<BatchRow> made;
                     if (match.firstAssignmentPage() > 0) {
-                        made = compareFirstAssignment(picture, relative, match.firstAssignmentPage(),
-                                firstAssignment.get(match.firstAssignmentPage()), outDir, diffs);
+                        int page = match.firstAssignmentPage();
+                        made = compareFirstAssignment(relative, page, firstAssignment.get(page), outDir, diffs,
+                                ours -> PanelGridComparison.cut(picture, ours, firstAssignmentPanels()));
                     } else if (match.target() == null) {
                         made = List.of(BatchRow.skipped(relative, match.skipped()));
                     } else {
-                        made = List.of(compare(picture, relative, match.target(), drawn.get(match.target()),
-                                alternates.get(match.target()), outDir, diffs));
+                        made = compareRead(picture, relative, match.target(), drawn.get(match.target()),
+                                alternates.get(match.target()), firstAssignment, outDir, diffs);
                     }
                     synchronized (err) {
                         err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(made));
@@ -369,6 +371,36 @@ public final class CompareBatch {
         } finally {
             workers.shutdownNow();
         }
+    }
+
+    /**
+     * A picture matched to one of the eight pages by its name. When that page's number is also one of the
+     * first assignment's and the picture holds a first-assignment page (four framed 300x300 panels: a capture
+     * named page2.png), it is compared as that, panel by panel; else as the page it names.
+     */
+    private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Object ours,
+            List<Reference> alternates, Map<Integer, BufferedImage> firstAssignment, Path outDir, DiffImages diffs) {
+        if (!target.isPage() || target.page() > Assignment1.COUNT || ours instanceof String) {
+            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+        }
+        Picture theirs;
+        try {
+            theirs = Picture.read(file);
+        } catch (CompareException e) {
+            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+        }
+        int page = target.page();
+        if (PanelGridComparison.holds(theirs, 2 * A1Layout.PANEL + 3 * A1Layout.MARGIN, firstAssignmentPanels())) {
+            BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
+            return compareFirstAssignment(relative, page, first, outDir, diffs,
+                    mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
+        }
+        return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, theirs));
+    }
+
+    /** How a first-assignment picture is cut beside simpview's page (its file read, or a picture already read). */
+    private interface Cutter {
+        PanelGridComparison.Cut cut(BufferedImage ours) throws CompareException;
     }
 
     /** One picture's progress line: its row's result, or of a page of panels the worst panel's. */
@@ -396,17 +428,19 @@ public final class CompareBatch {
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
-            Path outDir, DiffImages diffs) {
+            Path outDir, DiffImages diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
             return BatchRow.broken(relative, label, problem, rule);
         }
-        Picture theirs;
-        try {
-            theirs = Picture.read(file);
-        } catch (CompareException e) {
-            return BatchRow.broken(relative, label, e.getMessage(), rule);
+        Picture theirs = read;
+        if (theirs == null) {
+            try {
+                theirs = Picture.read(file);
+            } catch (CompareException e) {
+                return BatchRow.broken(relative, label, e.getMessage(), rule);
+            }
         }
         List<Reference> references = new ArrayList<>();
         references.add(new Reference("", ((Picture) ours).panel()));
@@ -472,11 +506,11 @@ public final class CompareBatch {
      * A picture of one of the first assignment's pages, panel by panel against simpview's page: one row per
      * panel, or one ERROR row when it cannot be read or holds no such page. Thread-safe.
      */
-    private List<BatchRow> compareFirstAssignment(Path file, String relative, int page, BufferedImage ours,
-            Path outDir, DiffImages diffs) {
+    private List<BatchRow> compareFirstAssignment(String relative, int page, BufferedImage ours, Path outDir,
+            DiffImages diffs, Cutter cutter) {
         PanelGridComparison.Cut cut;
         try {
-            cut = PanelGridComparison.cut(file, ours, firstAssignmentPanels());
+            cut = cutter.cut(ours);
         } catch (CompareException e) {
             return List.of(BatchRow.broken(relative, firstAssignmentLabel(page, 1).replaceFirst(" panel .*", ""),
                     e.getMessage(), firstAssignmentRule(page, 1)));

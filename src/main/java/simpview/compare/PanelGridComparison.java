@@ -98,15 +98,39 @@ public final class PanelGridComparison {
     /** Reads the picture, finds the page in it and cuts both pages into their panels. */
     public static Cut cut(Path picture, BufferedImage ours, Panel[] panels) throws CompareException {
         PngCodec.Pixels theirs = Picture.readPixels(picture);
+        return cut(theirs.rgb(), theirs.width(), theirs.height(), picture.toString(), ours, panels);
+    }
+
+    /** The same for a picture already read (for its 650x650 panel, which it may not really have). */
+    public static Cut cut(Picture theirs, BufferedImage ours, Panel[] panels) throws CompareException {
+        return cut(theirs.rgb(), theirs.width(), theirs.height(), theirs.name(), ours, panels);
+    }
+
+    /**
+     * Whether the picture holds a page of these panels, each framed by a white ring (a page of the
+     * first assignment's, which a search for one 650x650 panel can take for one). Cheap: most places
+     * fail at their first sample.
+     */
+    public static boolean holds(Picture theirs, int page, Panel[] panels) {
+        try {
+            find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, theirs.name());
+            return true;
+        } catch (CompareException e) {
+            return false;
+        }
+    }
+
+    private static Cut cut(int[] rgb, int width, int height, String name, BufferedImage ours, Panel[] panels)
+            throws CompareException {
         int page = ours.getWidth();
-        int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
+        int[] at = find(rgb, width, height, page, panels, name);
         int[] mine = Rasters.rgb(ours);
         int[][] a = new int[panels.length][];
         int[][] b = new int[panels.length][];
         for (int k = 0; k < panels.length; k++) {
             Panel p = panels[k];
             a[k] = cut(mine, page, p.left(), p.top(), p.size());
-            b[k] = cut(theirs.rgb(), theirs.width(), at[0] + p.left(), at[1] + p.top(), p.size());
+            b[k] = cut(rgb, width, at[0] + p.left(), at[1] + p.top(), p.size());
         }
         return new Cut(at[0], at[1], a, b);
     }

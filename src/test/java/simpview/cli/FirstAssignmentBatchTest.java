@@ -152,6 +152,21 @@ class FirstAssignmentBatchTest {
     }
 
     @Test
+    void aPictureNamedLikeOneOfTheEightPagesThatHoldsAFirstAssignmentPageIsComparedAsOne() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page2.png"), captured(page(2)));
+        png(subs.resolve("page3.png"), new simpview.pages.PageRenderer().renderImage(3, PageContext.defaults()));
+        CliRun check = CliRun.of("check", subs.toString(), "--pages", "2-3");
+        for (int k = 1; k <= 4; k++) {
+            assertTrue(line(check.out(), "A1 page 2 panel " + k).matches("page2\\.png +A1 page 2 panel .* PASS +100\\.00 % +none"),
+                    check.out());
+        }
+        assertTrue(line(check.out(), "page3.png").matches("page3\\.png +page 3 \\(seed 361\\) +PASS +100\\.00 % +none"),
+                "one of the eight pages stays one: " + check.out());
+        assertTrue(check.out().contains("no picture of page 2 (seed 361) found"), check.out());
+    }
+
+    @Test
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
         png(subs.resolve("a1-page1.png"), page(1));
