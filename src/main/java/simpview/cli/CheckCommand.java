@@ -118,7 +118,7 @@ public final class CheckCommand implements Callable<Integer> {
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }
-            return batch.folder(dir, pages != null ? pages : ALL_PAGES, true, outputs);
+            return batch.folder(dir, pages != null ? pages : ALL_PAGES, outputs);
         }
     }
 
@@ -144,7 +144,7 @@ public final class CheckCommand implements Callable<Integer> {
         try (DrawingThreads drawing = DrawingThreads.one()) {
             OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
             CompareBatch batch = new CompareBatch(own, judged, false, new PrintWriter(out, true), errors);
-            batch.folder(folder, ALL_PAGES, true, new CompareBatch.Outputs(null, null, null, null, true,
+            batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE));
         }
         String table = out.toString();

@@ -2,6 +2,7 @@ package simpview.cli;
 
 import simpview.compare.PngFiles;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -40,7 +41,6 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
-import java.awt.image.BufferedImage;
 import simpview.compare.PanelGridComparison;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
@@ -69,10 +69,6 @@ public final class CompareBatch {
 
         Match(CompareTarget target, String skipped) {
             this(target, skipped, 0);
-        }
-
-        boolean compared() {
-            return target != null || firstAssignmentPage > 0;
         }
     }
 
@@ -144,20 +140,18 @@ public final class CompareBatch {
      * A student's folder as {@code check DIR} (and a folder dropped on the window) takes it: a picture whose
      * name names a scene of the folder itself (house.png beside house.simp) is compared with that scene;
      * any other with the page its name names, as {@link #pages} does. Without scenes in the folder it is
-     * {@link #pages} exactly. The pages asked for (reported missing) are {@code pages} only when
-     * {@code askPages}; the folder's scenes asked for are those a picture matched or the rubric names.
+     * {@link #pages} exactly. The pages asked for (reported missing) are {@code pages}; the folder's
+     * scenes asked for are those a picture matched or the rubric names.
      */
-    int folder(Path dir, PageRange pages, boolean askPages, Outputs outputs) {
+    int folder(Path dir, PageRange pages, Outputs outputs) {
         Map<String, Path> scenes = Files.isDirectory(dir) ? scenesIn(dir) : Map.of();
         if (scenes.isEmpty()) {
             return pages(dir, pages, outputs);
         }
         List<CompareTarget> wanted = new ArrayList<>();
-        if (askPages) {
-            for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
-                if (pages.contains(p)) {
-                    wanted.add(CompareTarget.page(p));
-                }
+        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+            if (pages.contains(p)) {
+                wanted.add(CompareTarget.page(p));
             }
         }
         scenes.entrySet().stream()
