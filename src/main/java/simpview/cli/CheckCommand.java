@@ -77,6 +77,11 @@ public final class CheckCommand implements Callable<Integer> {
             description = "exact, blur or flip (see compare --help; default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
 
+    @Option(names = "--flip-threshold", paramLabel = "F", converter = CompareOptions.FlipThreshold.class,
+            description = "with --metric flip: the FLIP value, 0 to 1, at or below which a pixel matches (default: 0.13, "
+                    + "just above a flat 8/255 difference on mid grey)")
+    private Double flipThreshold;
+
     @Option(names = "--rubric", paramLabel = "F.json", description = "the course's rubric, if it gives you one")
     private Path rubric;
 
@@ -98,10 +103,15 @@ public final class CheckCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
         pictures.check(scene);
+        if (flipThreshold != null && metric != Comparison.Metric.FLIP && rubric == null) {
+            throw new ParameterException(spec.commandLine(), "--flip-threshold goes with --metric flip (or a rubric whose "
+                    + "rules use it)");
+        }
         Rubric judged;
         Path rules = rubric != null ? rubric : Files.isRegularFile(dir.resolve(FOLDER_RUBRIC)) ? dir.resolve(FOLDER_RUBRIC) : null;
         try {
-            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(tolerance, min, deviation, metric));
+            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(tolerance, min, deviation, metric,
+                    flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold));
         } catch (CompareException e) {
             spec.commandLine().getErr().println("simpview check: " + e.getMessage());
             return ExitCode.USAGE_ERROR;

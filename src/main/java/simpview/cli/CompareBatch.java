@@ -442,7 +442,7 @@ public final class CompareBatch {
         ComparisonReport best = null;
         String bestName = "";
         for (Reference reference : references) {
-            Comparison comparison = Comparison.of(reference.panel(), theirs.panel(), rule.deviation(), rule.metric());
+            Comparison comparison = rule.compare(reference.panel(), theirs.panel(), Comparison.N);
             ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
             if (best == null || report.passes()) {
                 best = report;
@@ -493,7 +493,7 @@ public final class CompareBatch {
             return rule;
         }
         return new RubricRule(rule.match(), rule.tolerance(), 0, rule.minShare(), rule.maxFailing(), rule.points(),
-                rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility());
+                rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(), rule.flipThreshold());
     }
 
     /**
@@ -512,8 +512,7 @@ public final class CompareBatch {
         List<BatchRow> rows = new ArrayList<>();
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);
-            Comparison comparison = Comparison.of(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL,
-                    rule.deviation(), rule.metric());
+            Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
             String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
                     + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
                     + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page";
@@ -558,7 +557,8 @@ public final class CompareBatch {
 
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
         RubricRule base = rubric.defaults();
-        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation(), base.metric());
+        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation(), base.metric(),
+                base.flipThreshold());
         Path outDir = outputs.outDir();
         try {
             if (outDir != null) {

@@ -112,6 +112,11 @@ public final class CompareCommand implements Callable<Integer> {
                     + "antialiasing (default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
 
+    @Option(names = "--flip-threshold", paramLabel = "F", converter = CompareOptions.FlipThreshold.class,
+            description = "with --metric flip: the FLIP value, 0 to 1, at or below which a pixel matches (default: 0.13, "
+                    + "just above a flat 8/255 difference on mid grey)")
+    private Double flipThreshold;
+
     @Option(names = "--rubric", paramLabel = "F.json",
             description = "with --dir: per page or pattern, the tolerance, deviation, minimum share, failing-pixel "
                     + "limit, points and accepted alternates (see docs/grading.md)")
@@ -153,7 +158,7 @@ public final class CompareCommand implements Callable<Integer> {
             if (dir != null) {
                 Rubric judged;
                 try {
-                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric, flipThreshold()));
                 } catch (CompareException e) {
                     err().println("simpview compare: " + e.getMessage());
                     return ExitCode.USAGE_ERROR;
@@ -193,7 +198,13 @@ public final class CompareCommand implements Callable<Integer> {
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
+        usage(flipThreshold == null || metric == Comparison.Metric.FLIP || rubric != null,
+                "--flip-threshold goes with --metric flip (or a rubric whose rules use it)");
         pictures.check(scene);
+    }
+
+    private double flipThreshold() {
+        return flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold;
     }
 
     private void usage(boolean fine, String message) {
@@ -212,7 +223,7 @@ public final class CompareCommand implements Callable<Integer> {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         }
-        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric);
+        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
@@ -236,7 +247,8 @@ public final class CompareCommand implements Callable<Integer> {
         Page shown = Assignment1.page(page);
         PanelGridComparison comparison;
         try {
-            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric);
+            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric,
+                    flipThreshold());
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -250,11 +262,11 @@ public final class CompareCommand implements Callable<Integer> {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }
         boolean flip = metric == Comparison.Metric.FLIP;
-        String within = flip ? String.format(Locale.ROOT, "FLIP <= %.3f", Comparison.FLIP_THRESHOLD)
+        String within = flip ? String.format(Locale.ROOT, "FLIP <= %.3f", flipThreshold())
                 : "within " + tolerance + "/255";
         if (flip) {
             out.println("metric:  FLIP (LDR, 67 pixels per degree) of each panel: a pixel matches at FLIP "
-                    + String.format(Locale.ROOT, "%.3f", Comparison.FLIP_THRESHOLD) + " or less");
+                    + String.format(Locale.ROOT, "%.3f", flipThreshold()) + " or less");
         }
         out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", within);
         boolean passes = true;

@@ -48,6 +48,23 @@ public final class CompareOptions {
         }
     }
 
+    /** A FLIP value, 0 to 1: {@code 0.13}. */
+    static final class FlipThreshold implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            try {
+                double value = Double.parseDouble(text.trim());
+                if (value >= 0 && value <= 1) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a FLIP threshold: expected a value from 0 to 1, "
+                    + "e.g. 0.13");
+        }
+    }
+
     /** A position deviation in pixels: 0, 1 or 2. */
     static final class Deviation implements ITypeConverter<Integer> {
         @Override

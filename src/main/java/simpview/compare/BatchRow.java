@@ -77,7 +77,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */
     public String verdictName() {
         if (rule.metric() == Comparison.Metric.FLIP) {
-            return String.format(java.util.Locale.ROOT, "within FLIP %.3f", Comparison.FLIP_THRESHOLD);
+            return String.format(java.util.Locale.ROOT, "within FLIP %.3f", rule.flipThreshold());
         }
         return "within " + rule.tolerance() + "/255 " + (rule.deviation() == 0 ? "without slack"
                 : "with " + rule.deviation() + " px slack") + (rule.metric() == Comparison.Metric.BLUR ? ", blurred" : "");

@@ -18,17 +18,17 @@ public final class BatchTable {
 
     /** The table, its heading saying the tolerance, minimum and slack ({@code deviation} pixels) the rows are judged by. */
     public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation) {
-        return markdown(rows, tolerance, minimum, deviation, Comparison.Metric.EXACT);
+        return markdown(rows, tolerance, minimum, deviation, Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
     }
 
     /** The same, judged by {@code metric}: with FLIP the judged share is that of pixels at most FLIP's threshold. */
     public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation,
-            Comparison.Metric metric) {
+            Comparison.Metric metric, double flipThreshold) {
         StringBuilder out = new StringBuilder();
         String slack = deviation == 0 ? "no slack" : deviation == 1 ? "one pixel of slack" : deviation + " pixels of slack";
         String judged = metric == Comparison.Metric.FLIP
                 ? String.format(java.util.Locale.ROOT, "FLIP at most %.3f (the shares are colour distances)",
-                        Comparison.FLIP_THRESHOLD)
+                        flipThreshold)
                 : String.format("within %d/255 with %s%s", tolerance, slack,
                         metric == Comparison.Metric.BLUR ? ", both panels blurred" : "");
         out.append(String.format("Shares of panel pixels in percent; the result is on the judged share: %s, %s "

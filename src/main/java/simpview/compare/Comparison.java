@@ -36,12 +36,13 @@ public final class Comparison {
     public enum Metric { EXACT, BLUR, FLIP }
 
     /**
-     * The FLIP value at or below which a pixel matches: just above the 0.128 FLIP gives inside a flat area
+     * The default FLIP value at or below which a pixel matches: just above the 0.128 FLIP gives inside a flat area
      * whose colour is the default tolerance, 8/255, off mid grey (0.100 on black, 0.117 near white;
      * {@link Flip#flat}). So where there is no edge FLIP forgives what the default tolerance forgives, and
      * along an edge what the eye does not see when the two pictures are flipped between.
      */
     public static final double FLIP_THRESHOLD = 0.13;
+    private final double flipThreshold;
 
     /** Today's slack: one pixel. */
     public static final int DEFAULT_DEVIATION = 1;
@@ -60,7 +61,8 @@ public final class Comparison {
     private float[] flip;
     private int flipFailing;
 
-    private Comparison(int[] ours, int[] theirs, int size, int deviation, Metric metric) {
+    private Comparison(int[] ours, int[] theirs, int size, int deviation, Metric metric, double flipThreshold) {
+        this.flipThreshold = flipThreshold;
         this.ours = ours;
         this.theirs = theirs;
         this.size = size;
@@ -80,18 +82,29 @@ public final class Comparison {
         if (ours.length != N * N || theirs.length != N * N) {
             throw new IllegalArgumentException("panels are 650x650 pixels");
         }
-        return of(ours, theirs, N, deviation, metric);
+        return of(ours, theirs, N, deviation, metric, FLIP_THRESHOLD);
     }
 
-    /** Compares two square panels of {@code size} x {@code size} pixels (the first assignment's are 300x300). */
-    public static Comparison of(int[] ours, int[] theirs, int size, int deviation, Metric metric) {
+    /** The same, a pixel matching by FLIP at {@code flipThreshold} or less (with {@link Metric#FLIP}). */
+    public static Comparison of(int[] ours, int[] theirs, int deviation, Metric metric, double flipThreshold) {
+        return of(ours, theirs, N, deviation, metric, flipThreshold);
+    }
+
+    /**
+     * Compares two square panels of {@code size} x {@code size} pixels (the first assignment's are 300x300);
+     * with FLIP a pixel matches at {@code flipThreshold} or less (0 to 1).
+     */
+    public static Comparison of(int[] ours, int[] theirs, int size, int deviation, Metric metric, double flipThreshold) {
+        if (!(flipThreshold >= 0 && flipThreshold <= 1)) {
+            throw new IllegalArgumentException("a FLIP threshold is 0 to 1, not " + flipThreshold);
+        }
         if (size < 1 || ours.length != size * size || theirs.length != size * size) {
             throw new IllegalArgumentException("both panels must be " + size + "x" + size + " pixels");
         }
         if (deviation < 0 || deviation > MAX_DEVIATION) {
             throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
         }
-        Comparison c = new Comparison(ours, theirs, size, deviation, metric);
+        Comparison c = new Comparison(ours, theirs, size, deviation, metric, flipThreshold);
         if (metric == Metric.BLUR) {
             c.measure(Blur.of(ours, size), Blur.of(theirs, size));
         } else {
@@ -100,7 +113,7 @@ public final class Comparison {
         if (metric == Metric.FLIP) {
             c.flip = Flip.of(ours, theirs, size, size);
             for (float v : c.flip) {
-                c.flipFailing += v > FLIP_THRESHOLD ? 1 : 0;
+                c.flipFailing += v > flipThreshold ? 1 : 0;
             }
         }
         return c;
@@ -165,7 +178,7 @@ public final class Comparison {
 
     /** Whether pixel i fails: beyond {@code tolerance} even with slack; with FLIP, above the threshold. */
     public boolean fails(int i, int tolerance) {
-        return metric == Metric.FLIP ? flip[i] > FLIP_THRESHOLD : (slack[i] & 0xFF) > tolerance;
+        return metric == Metric.FLIP ? flip[i] > flipThreshold : (slack[i] & 0xFF) > tolerance;
     }
 
     /** Pixel i's FLIP value, 0 to 1; NaN unless the metric is FLIP. */
@@ -183,6 +196,11 @@ public final class Comparison {
             failing += slackCount[level];
         }
         return failing;
+    }
+
+    /** With FLIP, the value at or below which a pixel matches. */
+    public double flipThreshold() {
+        return flipThreshold;
     }
 
     /** The panels' side in pixels: 650 for a page's panel. */

@@ -44,7 +44,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
 
     /** What the verdict's share counts: "within 8/255 with slack", or "within FLIP 0.130". */
     public String verdictName() {
-        return flip() ? String.format(java.util.Locale.ROOT, "within FLIP %.3f", Comparison.FLIP_THRESHOLD)
+        return flip() ? String.format(java.util.Locale.ROOT, "within FLIP %.3f", comparison.flipThreshold())
                 : "within " + tolerance + "/255 with slack";
     }
 
@@ -72,7 +72,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (flip()) {
             out.append(String.format(java.util.Locale.ROOT, "metric:  FLIP (LDR, %.0f pixels per degree): a pixel matches "
                     + "at FLIP %.3f or less; the shares below are colour distances%n", Flip.DEFAULT_PPD,
-                    Comparison.FLIP_THRESHOLD));
+                    comparison.flipThreshold()));
         }
         out.append(String.format("%-22s%12s%18s%n", "panel pixels", "exactly",
                 comparison.deviation() == 0 ? "no slack" : "with " + comparison.deviation() + " px slack"));
@@ -81,7 +81,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         appendRow(out, "within 8/255", exact.within8(), slack.within8());
         if (flip()) {
             out.append(String.format("%-22s%12s%18s%n", "within FLIP " + String.format(java.util.Locale.ROOT, "%.3f",
-                    Comparison.FLIP_THRESHOLD), "", Percent.of(verdictShare())));
+                    comparison.flipThreshold()), "", Percent.of(verdictShare())));
         } else if (tolerance != 0 && tolerance != 1 && tolerance != 8) {
             appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());
         }

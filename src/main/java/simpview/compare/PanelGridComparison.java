@@ -60,6 +60,12 @@ public final class PanelGridComparison {
     /** The same, measured by {@code metric}. */
     public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
             Comparison.Metric metric) throws CompareException {
+        return of(picture, ours, panels, tolerance, metric, Comparison.FLIP_THRESHOLD);
+    }
+
+    /** The same, with FLIP a pixel within at {@code flipThreshold} or less. */
+    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
+            Comparison.Metric metric, double flipThreshold) throws CompareException {
         Cut cut = cut(picture, ours, panels);
         PanelShares[] shares = new PanelShares[panels.length];
         for (int k = 0; k < panels.length; k++) {
@@ -76,7 +82,7 @@ public final class PanelGridComparison {
             for (int i = 0; i < a.length; i++) {
                 int d = Rasters.distance(a[i], b[i]);
                 identical += d == 0 ? 1 : 0;
-                within += (flip == null ? d <= tolerance : flip[i] <= Comparison.FLIP_THRESHOLD) ? 1 : 0;
+                within += (flip == null ? d <= tolerance : flip[i] <= flipThreshold) ? 1 : 0;
             }
             double n = (double) p.size() * p.size();
             shares[k] = new PanelShares(identical / n, within / n);

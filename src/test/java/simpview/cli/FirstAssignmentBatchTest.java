@@ -149,6 +149,16 @@ class FirstAssignmentBatchTest {
         assertTrue(line(flip.out(), "panel 1 (DDA)").matches(".*PASS +99\\.97 %.*"), flip.out());
         assertTrue(line(flip.out(), "panel 2 (Bresenham)").matches(".*FAIL +96\\.61 %.*"), flip.out());
         assertEquals(ExitCode.SCENE_ERROR, flip.exitCode());
+
+        Path picture = subs.resolve("a1-page1.png");
+        CliRun strict = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--metric", "flip",
+                "--flip-threshold", "0.02");
+        assertTrue(strict.out().contains("FLIP <= 0.020"), strict.out());
+        assertTrue(line(strict.out(), "4 antialiased").matches("4 antialiased +98\\.64 % +9[0-8]\\.[0-9]{2} %"),
+                "a threshold near 0 forgives little: " + strict.out());
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1",
+                "--flip-threshold", "0.2").exitCode(), "a threshold without the metric");
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("check", subs.toString(), "--flip-threshold", "1.5").exitCode());
     }
 
     @Test
