@@ -108,7 +108,7 @@ public final class CompareCommand implements Callable<Integer> {
 
     @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
             description = "exact; blur: both panels blurred (3x3 binomial) first; or flip: a pixel matches when its "
-                    + "perceptual difference (LDR-FLIP, 67 pixels per degree) is at most 0.13, forgiving another "
+                    + "perceptual difference (LDR-FLIP, 67 pixels per degree) is at most --flip-threshold, forgiving another "
                     + "antialiasing (default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
 

@@ -89,8 +89,8 @@ public final class HtmlReport {
         h.append("<div id=\"legend\"><b>Heat map:</b> ");
         swatch(h, 0x303030, "identical (simpview's picture, dimmed)");
         swatch(h, HeatMap.WITHIN, "differs within the tolerance");
-        swatch(h, HeatMap.SLACK_ONLY, "beyond it, but matches with slack (an edge one pixel off)");
-        swatch(h, 0xE00000, "differs even with slack (brighter: more)");
+        swatch(h, HeatMap.SLACK_ONLY, "beyond it, but matches with slack (an edge one pixel off), or by FLIP");
+        swatch(h, 0xE00000, "differs even with slack, or above FLIP's threshold (brighter: more)");
         swatch(h, OUTLINE_COLOUR, "outline: the largest regions that differ");
         h.append("</div>\n");
     }
