@@ -103,6 +103,14 @@ public final class PageView extends JComponent {
         return errorHidden;
     }
 
+    boolean errorHidden() {
+        return errorHidden;
+    }
+
+    boolean helpShown() {
+        return helpShown;
+    }
+
     boolean toggleHelp() {
         helpShown = !helpShown;
         repaint();

@@ -105,6 +105,8 @@ public final class SimpviewWindow {
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel = new InspectorPanel();
     private boolean overdrawShown;
+    /** The overdraw overlay shows the depth-test failures (Shift+V), not every write (V). */
+    private boolean overdrawFailures;
     private boolean backFacesShown;
     private int backFaces = -1;
     private int overdrawMax = -1;
@@ -266,13 +268,59 @@ public final class SimpviewWindow {
             if (separatedBefore(action)) {
                 menu.addSeparator();
             }
-            JMenuItem item = new JMenuItem(action.label());
+            JMenuItem item = isOn(action) != null ? new javax.swing.JCheckBoxMenuItem(action.label())
+                    : new JMenuItem(action.label());
             item.setName(action.name());
             item.setAccelerator(action.accelerator());
             item.addActionListener(e -> perform(action));
             menu.add(item);
         }
+        for (int m = 0; m < bar.getMenuCount(); m++) {
+            JMenu shown = bar.getMenu(m);
+            shown.addMenuListener(new javax.swing.event.MenuListener() {
+                @Override
+                public void menuSelected(javax.swing.event.MenuEvent e) {
+                    tick(shown);
+                }
+
+                @Override
+                public void menuDeselected(javax.swing.event.MenuEvent e) {
+                }
+
+                @Override
+                public void menuCanceled(javax.swing.event.MenuEvent e) {
+                }
+            });
+        }
         return bar;
+    }
+
+    /** Ticks a menu's toggles that are on, as it opens. */
+    private void tick(JMenu menu) {
+        for (int k = 0; k < menu.getItemCount(); k++) {
+            if (menu.getItem(k) instanceof javax.swing.JCheckBoxMenuItem toggle) {
+                toggle.setSelected(Boolean.TRUE.equals(isOn(WindowAction.valueOf(toggle.getName()))));
+            }
+        }
+    }
+
+    /** Whether an entry that turns something on and off is on now (its menu entry ticked); null for the others. */
+    Boolean isOn(WindowAction action) {
+        return switch (action) {
+            case DEPTH_VIEW -> depthView;
+            case OWN_COLOURS -> settings.ownColours();
+            case BACK_FACES -> backFacesShown;
+            case OVERDRAW -> overdrawShown && !overdrawFailures;
+            case DEPTH_FAILURES -> overdrawShown && overdrawFailures;
+            case CULLED -> pageView.skippedShown();
+            case WIRE -> pageView.wireShown();
+            case COMPARE_HEAT -> comparison.showing() == ComparisonLayer.Showing.HEAT;
+            case HIDE_ERROR -> pageView.errorHidden();
+            case INSPECTOR -> inspectorPanel.isShown();
+            case PIN -> pinnedX >= 0;
+            case HELP -> pageView.helpShown();
+            default -> null;
+        };
     }
 
     /** Where a menu's groups begin. */
@@ -492,6 +540,7 @@ public final class SimpviewWindow {
             }
             int[] shownCounts = failures ? counts.failed() : counts.reached();
             overdrawShown = true;
+            overdrawFailures = failures;
             overdrawMax = Overdraw.max(shownCounts);
             pageView.show(failures
                     ? OverdrawPicture.of(shownCounts,

@@ -137,6 +137,13 @@ public class ViewWindowTest extends WindowTestCase {
         chooseFromMenu(window, "VIEW", WindowAction.CROP);
         driver.awaitEdt(() -> window.pageView().zoomPan().cropped(), "the crop");
         assertTrue(driver.onEdt(() -> window.status().inspectorText()).contains("margins cropped"));
+        // View > Depth view, a toggle: on, as D turns it on, and ticked in the menu when it opens again.
+        assertEquals(Boolean.FALSE, driver.onEdt(() -> window.isOn(WindowAction.DEPTH_VIEW)));
+        chooseFromMenu(window, "VIEW", WindowAction.DEPTH_VIEW);
+        driver.awaitEdt(() -> window.isOn(WindowAction.DEPTH_VIEW), "the depth view on");
+        JMenuItem depth = chooseFromMenu(window, "VIEW", WindowAction.DEPTH_VIEW);
+        driver.awaitEdt(() -> !window.isOn(WindowAction.DEPTH_VIEW), "the depth view off again");
+        assertTrue(driver.onEdt(() -> depth instanceof javax.swing.JCheckBoxMenuItem));
         // Page > Page 3, clicked: page 3, as the key 3 does.
         chooseFromMenu(window, "PAGE", WindowAction.PAGE_3);
         driver.awaitShown(new View.OfPage(3));
@@ -156,7 +163,7 @@ public class ViewWindowTest extends WindowTestCase {
     }
 
     /** Clicks a menu on the bar, waits for its popup, and clicks the action's entry in it. */
-    private void chooseFromMenu(SimpviewWindow window, String menuName, WindowAction action) throws Exception {
+    private JMenuItem chooseFromMenu(SimpviewWindow window, String menuName, WindowAction action) throws Exception {
         JMenu menu = driver.onEdt(() -> {
             JMenuBar bar = window.frame().getJMenuBar();
             for (int m = 0; m < bar.getMenuCount(); m++) {
@@ -176,7 +183,10 @@ public class ViewWindowTest extends WindowTestCase {
             throw new AssertionError("no entry " + action);
         });
         driver.awaitEdt(item::isShowing, "the " + menuName + " menu open");
+        boolean ticked = driver.onEdt(item::isSelected);
+        assertEquals(ticked, Boolean.TRUE.equals(driver.onEdt(() -> window.isOn(action))), action + " ticked as it is");
         driver.click(item);
+        return item;
     }
 
     private String awaitPanel(SimpviewWindow window, String start) throws Exception {
