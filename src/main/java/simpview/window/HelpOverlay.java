@@ -9,11 +9,31 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The key help (F1), drawn in a box over the page: as many columns as the
- * view's height needs, each row's keys, then what they do, cut short with
- * "…" only where the window is too narrow for the whole text.
+ * The key help (F1), drawn in a box over the whole window (its glass pane:
+ * over the page and the inspector panel, the pointer's events passing
+ * through): as many columns as the window's height needs, each row's keys,
+ * then what they do, cut short with "…" only where the window is too narrow
+ * for the whole text.
  */
-public final class HelpOverlay {
+public final class HelpOverlay extends javax.swing.JComponent {
+
+    private static final long serialVersionUID = 1L;
+
+    HelpOverlay() {
+        setName("key help");
+        setOpaque(false);
+        setVisible(false);
+    }
+
+    @Override
+    protected void paintComponent(java.awt.Graphics graphics) {
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            paint(g, getWidth(), getHeight());
+        } finally {
+            g.dispose();
+        }
+    }
 
     private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
     private static final Color BOX = new Color(20, 20, 40, 235);
@@ -21,10 +41,7 @@ public final class HelpOverlay {
     private static final Color KEYS = new Color(160, 200, 255);
     private static final int PAD = 10;
     /** The widest a column's "does" text is drawn before it is cut. */
-    private static final int DOES_WIDTH = 330;
-
-    private HelpOverlay() {
-    }
+    private static final int DOES_WIDTH = 440;
 
     static void paint(Graphics2D g, int width, int height) {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);

@@ -19,7 +19,7 @@ import simpview.surface.PageCanvas;
  * {@link ZoomPan} says, nearest-neighbour so every image pixel stays a sharp
  * square (below 1:1, the image {@link LineKeepingDownscale} made smaller,
  * copied 1:1), with overlays drawn over it (pixel grid, the pinned pixel, the
- * outline of a primitive, a scene error, the key help). The picture itself is
+ * outline of a primitive, a scene error). The picture itself is
  * never drawn here.
  */
 public final class PageView extends JComponent {
@@ -37,7 +37,6 @@ public final class PageView extends JComponent {
     private String error;
     private boolean errorAfterDrawing = true;
     private boolean errorHidden;
-    private boolean helpShown;
     private int pinnedX = -1;
     private int pinnedY = -1;
     /** A primitive's outline in image coordinates (x0, y0, x1, y1, ...), or null. */
@@ -107,15 +106,6 @@ public final class PageView extends JComponent {
         return errorHidden;
     }
 
-    boolean helpShown() {
-        return helpShown;
-    }
-
-    boolean toggleHelp() {
-        helpShown = !helpShown;
-        repaint();
-        return helpShown;
-    }
 
     /** Marks image pixel (x, y) with a frame; -1 for none. */
     void pin(int x, int y) {
@@ -172,9 +162,6 @@ public final class PageView extends JComponent {
             if (error != null && !errorHidden) {
                 ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
                         error, getWidth(), getHeight());
-            }
-            if (helpShown) {
-                HelpOverlay.paint(g, getWidth(), getHeight());
             }
         } finally {
             g.dispose();

@@ -74,6 +74,8 @@ public final class SimpviewWindow {
     private final JFrame frame = new JFrame("simpview");
     private final PageView pageView = new PageView();
     private final LegendStrip legendStrip = new LegendStrip();
+    /** The key help (F1), over the whole window. */
+    private final HelpOverlay help = new HelpOverlay();
     private final SceneWatcher watcher = new SceneWatcher(this::reload);
     private DrawSettings settings = DrawSettings.WINDOW;
     private final Orbit orbit = new Orbit();
@@ -151,6 +153,7 @@ public final class SimpviewWindow {
         frame.getContentPane().add(south, BorderLayout.SOUTH);
         frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
         frame.setJMenuBar(menuBar());
+        frame.setGlassPane(help);
         inspectorPanel.onCopy(status::say);
         frame.setResizable(true);
         // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
@@ -318,7 +321,7 @@ public final class SimpviewWindow {
             case HIDE_ERROR -> pageView.errorHidden();
             case INSPECTOR -> inspectorPanel.isShown();
             case PIN -> pinnedX >= 0;
-            case HELP -> pageView.helpShown();
+            case HELP -> help.isVisible();
             default -> null;
         };
     }
@@ -401,7 +404,7 @@ public final class SimpviewWindow {
             case STEP_OFF -> stepOff();
             case GO_TO_PRIMITIVE -> goToPrimitive();
             case STEP_TO_OWNER -> stepToOwner();
-            case HELP -> pageView.toggleHelp();
+            case HELP -> help.setVisible(!help.isVisible());
         }
     }
 
@@ -649,11 +652,7 @@ public final class SimpviewWindow {
      */
     void placeWithin(Rectangle usable) {
         placedWithin = usable;
-        Dimension wanted = frame.getPreferredSize();
-        if (inspectorPanel.isShown()) {
-            wanted = new Dimension(wanted.width, wanted.height);
-        }
-        frame.setBounds(WindowPlacement.within(wanted, usable));
+        frame.setBounds(WindowPlacement.within(frame.getPreferredSize(), usable));
         frame.validate();
     }
 
