@@ -160,6 +160,11 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitShown(new View.OfScene(a3.resolve("tomsPageJ.simp")));
         driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_2));
         driver.awaitShown(new View.OfPage(3));
+        // Help > Keys and gestures shows F1's help over the window; F1 hides it.
+        chooseFromMenu(window, "HELP", WindowAction.HELP);
+        driver.awaitEdt(() -> window.frame().getGlassPane().isShowing(), "the key help shown");
+        driver.press(KeyEvent.VK_F1);
+        driver.awaitEdt(() -> !window.frame().getGlassPane().isVisible(), "the key help hidden by F1");
     }
 
     /** Clicks a menu on the bar, waits for its popup, and clicks the action's entry in it. */
