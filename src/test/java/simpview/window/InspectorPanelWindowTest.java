@@ -91,6 +91,13 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_U);
         driver.awaitEdt(() -> window.skippedShown() == null && window.legendStrip().legend() == null, "the outlines off");
 
+        // W: wire over fill, the edges of the 4 primitives drawn, with its legend.
+        driver.press(KeyEvent.VK_W);
+        driver.awaitEdt(() -> window.pageView().wireShown(), "wire over fill");
+        assertTrue(driver.onEdt(() -> window.legendStrip().text()).contains("the edges of all 4 primitives"));
+        driver.press(KeyEvent.VK_W);
+        driver.awaitEdt(() -> !window.pageView().wireShown() && window.legendStrip().legend() == null, "wire off");
+
         // I again hides the panel.
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> !window.inspectorPanel().isShown(), "the panel hidden");
