@@ -507,6 +507,11 @@ public final class SimpviewWindow {
             if (view instanceof View.OfScene s) {
                 return InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
             }
+            if (view instanceof View.OfAssignment1Page) {
+                why.accept("The first assignment's pages are not replayed by the inspector (yet): the status line "
+                        + "names the pixel's panel, line drawer and line.");
+                return null;
+            }
             int number = ((View.OfPage) view).number();
             return InspectedScene.page(number, options.pageContext())
                     .withOwnColours(settings.ownColours());

@@ -160,6 +160,15 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitShown(new View.OfScene(a3.resolve("tomsPageJ.simp")));
         driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_2));
         driver.awaitShown(new View.OfPage(3));
+        // On the first assignment's pages the panel follows the pointer too, and says it does not replay them.
+        driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_1));
+        driver.awaitShown(new View.OfAssignment1Page(1));
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        Point inPanel = driver.onScreen(200, 200);
+        driver.robot().mouseMove(inPanel.x, inPanel.y);
+        driver.awaitEdt(() -> window.inspectorPanel().text().contains("not replayed by the inspector"), "the panel's word");
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        driver.robot().mouseMove(1, 1);
         // Help > Keys and gestures shows F1's help over the window; F1 hides it.
         chooseFromMenu(window, "HELP", WindowAction.HELP);
         driver.awaitEdt(() -> window.frame().getGlassPane().isShowing(), "the key help shown");
