@@ -1,0 +1,72 @@
+package simpview.inspect;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.obj.ObjLibrary;
+
+/**
+ * The primitives that reach no rasterizer, projected by hand: SPEC's camera
+ * maps camera (x, y, z) to panel ((x / -z - xlow) 650 / (xhigh - xlow), the
+ * same for y).
+ */
+class SkippedPrimitivesTest {
+
+    private static final double EPS = 1e-9;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void culledClippedAwayAndBehindTheEyeInALitScene() throws Exception {
+        Path scene = dir.resolve("skips.simp");
+        Files.writeString(scene, "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                // line 3: beyond the far plane (z = -200): culled, its projection near the centre
+                + "polygon (-1, -1, -200) (1, -1, -200) (0, 1, -200)\n"
+                // line 4: drawn
+                + "polygon (-2, -2, -10) (2, -2, -10) (0, 2, -10)\n"
+                // line 5: past the corner where the right (x = 10) and top (y = 10) planes meet at z = -10: each
+                // vertex inside one of them, so not culled; none of it inside both: clipped away whole
+                + "polygon (15, 6, -10) (6, 15, -10) (14, 14, -10)\n"
+                // line 6: behind the eye: culled, and no outline
+                + "polygon (0, 0, 5) (1, 0, 5) (0, 1, 5)\n");
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new ObjLibrary());
+        assertEquals(2, found.outlined().size());
+        assertEquals(1, found.unprojectable());
+        SkippedPrimitives.Skipped far = found.outlined().get(0);
+        assertTrue(far.culled());
+        assertEquals(3, far.line());
+        assertEquals(scene, far.file());
+        assertArrayEquals(new double[] {panel(-1, -200), panel(-1, -200), panel(1, -200), panel(-1, -200),
+                panel(0, -200), panel(1, -200)}, far.outline(), EPS);
+        SkippedPrimitives.Skipped corner = found.outlined().get(1);
+        assertFalse(corner.culled());
+        assertEquals(5, corner.line());
+        assertArrayEquals(new double[] {panel(15, -10), panel(6, -10), panel(6, -10), panel(15, -10),
+                panel(14, -10), panel(14, -10)}, corner.outline(), EPS);
+        assertEquals(1, found.culled());
+        assertEquals(1, found.clipped());
+    }
+
+    @Test
+    void aDepthCuedSceneBeyondItsDepthRangeIsCulled() throws Exception {
+        Path scene = dir.resolve("cued.simp");
+        Files.writeString(scene, "polygon (60, -90, -300) (90, -90, -300) (90, -60, -300)\n"
+                + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new ObjLibrary());
+        assertEquals(1, found.outlined().size());
+        assertTrue(found.outlined().get(0).culled());
+        assertEquals(0, found.unprojectable());
+    }
+
+    /** The window [-1, 1] on the plane z = -1, 650 pixels across. */
+    private static double panel(double x, double z) {
+        return (x / -z + 1) * 650 / 2;
+    }
+}
