@@ -11,9 +11,10 @@ import javax.swing.JComponent;
 import simpview.window.instruments.Legend;
 
 /**
- * What an overlay's colours mean, in one line under the page (never over
- * it): the legend's title, then a swatch and its words for each colour.
- * Hidden while there is no legend. On the EDT.
+ * What an overlay's colours mean, in one line at the menu bar's right end
+ * (never over the page, and taking no height from it): the legend's title,
+ * then a swatch and its words for each colour. Hidden while there is no
+ * legend. On the EDT.
  */
 final class LegendStrip extends JComponent {
 
@@ -21,7 +22,8 @@ final class LegendStrip extends JComponent {
     private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
     private static final int PAD = 4;
 
-    private transient Legend legend;
+    /** The legends shown, by the overlay that shows each, in the order they came. */
+    private final transient java.util.Map<String, Legend> legends = new java.util.LinkedHashMap<>();
 
     LegendStrip() {
         setName("legend");
@@ -29,26 +31,38 @@ final class LegendStrip extends JComponent {
         setFont(FONT);
     }
 
-    /** Shows a legend, or hides the strip (null). */
-    void show(Legend shown) {
-        legend = shown;
-        setVisible(shown != null);
+    /** Shows the legend of the overlay {@code of}, or takes it away (null); the strip hides when it has none. */
+    void show(String of, Legend shown) {
+        if (shown == null) {
+            legends.remove(of);
+        } else {
+            legends.put(of, shown);
+        }
+        setVisible(!legends.isEmpty());
         revalidate();
         repaint();
     }
 
-    Legend legend() {
-        return legend;
+    /** Takes every legend away. */
+    void clear() {
+        legends.clear();
+        setVisible(false);
+        revalidate();
+        repaint();
     }
 
-    /** The legend as words, for tests and for copying: "title · [colour] words · ...". */
+    boolean empty() {
+        return legends.isEmpty();
+    }
+
+    /** The legends as words, for tests and for copying: "title · #rrggbb words · ... | title ...". */
     String text() {
-        if (legend == null) {
-            return "";
-        }
-        StringBuilder text = new StringBuilder(legend.title());
-        for (Legend.Entry entry : legend.entries()) {
-            text.append(" · ").append(String.format("#%06x", entry.rgb())).append(' ').append(entry.means());
+        StringBuilder text = new StringBuilder();
+        for (Legend legend : legends.values()) {
+            text.append(text.length() == 0 ? "" : " | ").append(legend.title());
+            for (Legend.Entry entry : legend.entries()) {
+                text.append(" · ").append(String.format("#%06x", entry.rgb())).append(' ').append(entry.means());
+            }
         }
         return text.toString();
     }
@@ -56,12 +70,25 @@ final class LegendStrip extends JComponent {
     @Override
     public Dimension getPreferredSize() {
         FontMetrics metrics = getFontMetrics(FONT);
-        return new Dimension(100, metrics.getHeight() + 2 * PAD);
+        int width = 2 * PAD;
+        for (Legend legend : legends.values()) {
+            int swatch = metrics.getAscent();
+            width += metrics.stringWidth(legend.title() + ":") + 2 * PAD;
+            for (Legend.Entry entry : legend.entries()) {
+                width += swatch + PAD + metrics.stringWidth(entry.means()) + 3 * PAD;
+            }
+        }
+        return new Dimension(width, metrics.getHeight() + 2 * PAD);
+    }
+
+    @Override
+    public Dimension getMaximumSize() {
+        return getPreferredSize();
     }
 
     @Override
     protected void paintComponent(Graphics graphics) {
-        if (legend == null) {
+        if (legends.isEmpty()) {
             return;
         }
         Graphics2D g = (Graphics2D) graphics.create();
@@ -71,21 +98,24 @@ final class LegendStrip extends JComponent {
             g.fillRect(0, 0, getWidth(), getHeight());
             g.setFont(FONT);
             FontMetrics metrics = g.getFontMetrics();
-            int baseline = PAD + metrics.getAscent();
+            int baseline = (getHeight() - metrics.getHeight()) / 2 + metrics.getAscent();
             int swatch = metrics.getAscent();
+            int swatchTop = baseline - swatch + 1;
             int x = PAD;
+            for (Legend legend : legends.values()) {
             g.setColor(Color.WHITE);
             g.drawString(legend.title() + ":", x, baseline);
             x += metrics.stringWidth(legend.title() + ":") + 2 * PAD;
             for (Legend.Entry entry : legend.entries()) {
                 g.setColor(new Color(entry.rgb()));
-                g.fillRect(x, PAD + 1, swatch, swatch);
+                g.fillRect(x, swatchTop, swatch, swatch);
                 g.setColor(Color.GRAY);
-                g.drawRect(x, PAD + 1, swatch, swatch);
+                g.drawRect(x, swatchTop, swatch, swatch);
                 x += swatch + PAD;
                 g.setColor(Color.WHITE);
                 g.drawString(entry.means(), x, baseline);
                 x += metrics.stringWidth(entry.means()) + 3 * PAD;
+            }
             }
         } finally {
             g.dispose();

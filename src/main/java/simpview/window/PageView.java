@@ -204,12 +204,25 @@ public final class PageView extends JComponent {
         return small;
     }
 
-    private void paintWire(Graphics2D g) {
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setStroke(new BasicStroke(1f));
-        outlines(g, wire, WIRE);
-        outlines(g, culled, CULLED);
-        outlines(g, clipped, CLIPPED);
+    /** The outlines over the page, cut to the panel: what lies outside it is not on the page. */
+    private void paintWire(Graphics2D graphics) {
+        if (wire == null && culled == null) {
+            return;
+        }
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            double left = zoomPan.screenX(PageCanvas.MARGIN);
+            double top = zoomPan.screenY(PageCanvas.MARGIN);
+            double side = PageCanvas.PANEL * zoomPan.zoom();
+            g.clip(new java.awt.geom.Rectangle2D.Double(left, top, side, side));
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setStroke(new BasicStroke(1f));
+            outlines(g, wire, WIRE);
+            outlines(g, culled, CULLED);
+            outlines(g, clipped, CLIPPED);
+        } finally {
+            g.dispose();
+        }
     }
 
     private void outlines(Graphics2D g, java.util.List<double[]> shapes, Color colour) {

@@ -103,7 +103,7 @@ public final class SimpviewWindow {
     private boolean turnWaiting;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
-            legendStrip::show);
+            legend -> legendStrip.show("compare", legend));
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel = new InspectorPanel();
     private boolean overdrawShown;
@@ -147,10 +147,7 @@ public final class SimpviewWindow {
         frame.setIconImages(AppIcon.images());
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
-        JPanel south = new JPanel(new BorderLayout());
-        south.add(legendStrip, BorderLayout.NORTH);
-        south.add(status.component(), BorderLayout.SOUTH);
-        frame.getContentPane().add(south, BorderLayout.SOUTH);
+        frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
         frame.setJMenuBar(menuBar());
         frame.setGlassPane(help);
@@ -278,8 +275,14 @@ public final class SimpviewWindow {
             item.addActionListener(e -> perform(action));
             menu.add(item);
         }
+        // What an overlay's colours mean, at the bar's right end: it takes no height from the page.
+        bar.add(javax.swing.Box.createHorizontalGlue());
+        bar.add(legendStrip);
         for (int m = 0; m < bar.getMenuCount(); m++) {
             JMenu shown = bar.getMenu(m);
+            if (shown == null) {
+                continue;
+            }
             shown.addMenuListener(new javax.swing.event.MenuListener() {
                 @Override
                 public void menuSelected(javax.swing.event.MenuEvent e) {
@@ -579,9 +582,8 @@ public final class SimpviewWindow {
         backFacesShown = true;
         backFaces = tinted.backFacing();
         pageView.show(tinted.image(), null, true);
-        legendStrip.show(new Legend("back faces (K: the page)", List.of(
-                new Legend.Entry(0xFF00FF, "tinted: a polygon clockwise on the panel "
-                        + "(facing away by SPEC's counter-clockwise rule)"))));
+        legendStrip.show("back faces", new Legend("back faces", List.of(
+                new Legend.Entry(0xFF00FF, "clockwise on the panel (facing away)"))));
         status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
                 + " polygons are clockwise on the panel · K: the page again");
     }
@@ -782,7 +784,7 @@ public final class SimpviewWindow {
     private void toggleSkipped() {
         if (pageView.skippedShown()) {
             pageView.skipped(null, null);
-            legendStrip.show(null);
+            legendStrip.show("skipped", null);
             return;
         }
         if (shown == null) {
@@ -806,11 +808,9 @@ public final class SimpviewWindow {
             }
             skippedFound = found;
             pageView.skipped(culled, clipped);
-            legendStrip.show(new Legend("never rasterized (U: off)", List.of(
-                    new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size()
-                            + " culled: every vertex outside one plane of the view"),
-                    new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size()
-                            + " clipped away whole"))));
+            legendStrip.show("skipped", new Legend("never rasterized", List.of(
+                    new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size() + " culled"),
+                    new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size() + " clipped away"))));
             status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
                     + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more have a vertex at or behind "
                     + "the eye and no outline" : "") + " · U: off");
@@ -821,7 +821,7 @@ public final class SimpviewWindow {
     private void toggleWire() {
         if (pageView.wireShown()) {
             pageView.wire(null);
-            legendStrip.show(null);
+            legendStrip.show("wire", null);
             return;
         }
         showWire();
@@ -838,14 +838,13 @@ public final class SimpviewWindow {
         }
         if (outlines.isEmpty()) {
             pageView.wire(null);
-            legendStrip.show(null);
+            legendStrip.show("wire", null);
             status.say("Wire over fill needs a scene's record of its primitives: pages 4-8 and opened scenes.");
             return;
         }
         pageView.wire(outlines);
-        legendStrip.show(new Legend("wire over fill (W: off)", List.of(
-                new Legend.Entry(0x00FF80, "the edges of all " + outlines.size()
-                        + " primitives drawn, as projected"))));
+        legendStrip.show("wire", new Legend("wire over fill", List.of(
+                new Legend.Entry(0x00FF80, "the edges of all " + outlines.size() + " primitives"))));
     }
 
     /** Puts the inspector's line on the clipboard. */
@@ -961,7 +960,7 @@ public final class SimpviewWindow {
             pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
                     : shown.image(), shown.error(), facts.drewSomething());
         }
-        legendStrip.show(null);
+        legendStrip.clear();
         pageView.skipped(null, null);
         if (pageView.wireShown()) {
             showWire();

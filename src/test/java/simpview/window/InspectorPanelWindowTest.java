@@ -87,16 +87,16 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         assertEquals(1L, (long) driver.onEdt(() -> window.skippedShown().culled()));
         assertEquals(0L, (long) driver.onEdt(() -> window.skippedShown().clipped()));
         String legend = driver.onEdt(() -> window.legendStrip().text());
-        assertTrue(legend.contains("1 culled") && legend.contains("0 clipped away whole"), legend);
+        assertTrue(legend.contains("1 culled") && legend.contains("0 clipped away"), legend);
         driver.press(KeyEvent.VK_U);
-        driver.awaitEdt(() -> window.skippedShown() == null && window.legendStrip().legend() == null, "the outlines off");
+        driver.awaitEdt(() -> window.skippedShown() == null && window.legendStrip().empty(), "the outlines off");
 
         // W: wire over fill, the edges of the 4 primitives drawn, with its legend.
         driver.press(KeyEvent.VK_W);
         driver.awaitEdt(() -> window.pageView().wireShown(), "wire over fill");
         assertTrue(driver.onEdt(() -> window.legendStrip().text()).contains("the edges of all 4 primitives"));
         driver.press(KeyEvent.VK_W);
-        driver.awaitEdt(() -> !window.pageView().wireShown() && window.legendStrip().legend() == null, "wire off");
+        driver.awaitEdt(() -> !window.pageView().wireShown() && window.legendStrip().empty(), "wire off");
 
         // I again hides the panel.
         driver.press(KeyEvent.VK_I);

@@ -119,6 +119,9 @@ public class ViewWindowTest extends WindowTestCase {
         int entries = driver.onEdt(() -> {
             int n = 0;
             for (int m = 0; m < bar.getMenuCount(); m++) {
+                if (bar.getMenu(m) == null) {
+                    continue; // the glue and the legend at the bar's right end
+                }
                 for (int k = 0; k < bar.getMenu(m).getItemCount(); k++) {
                     JMenuItem item = bar.getMenu(m).getItem(k);
                     if (item != null) {
@@ -181,7 +184,7 @@ public class ViewWindowTest extends WindowTestCase {
         JMenu menu = driver.onEdt(() -> {
             JMenuBar bar = window.frame().getJMenuBar();
             for (int m = 0; m < bar.getMenuCount(); m++) {
-                if (bar.getMenu(m).getName().equals(menuName)) {
+                if (bar.getMenu(m) != null && bar.getMenu(m).getName().equals(menuName)) {
                     return bar.getMenu(m);
                 }
             }

@@ -18,10 +18,10 @@ public record Legend(String title, List<Entry> entries) {
 
     /** The compare mode's heat map (HeatMap's colours, the tolerance in 255ths). */
     public static Legend heatMap(int tolerance) {
-        return new Legend("heat map: ours against theirs", List.of(
-                new Entry(0x404040, "identical (ours, dimmed to a quarter)"),
-                new Entry(simpview.compare.HeatMap.WITHIN, "differs by at most " + tolerance + "/255"),
-                new Entry(simpview.compare.HeatMap.SLACK_ONLY, "matches only one pixel off (slack)"),
-                new Entry(0xC00000, "differs by more, even with slack (brighter: more)")));
+        return new Legend("heat map", List.of(
+                new Entry(0x404040, "identical (ours, dimmed)"),
+                new Entry(simpview.compare.HeatMap.WITHIN, "within " + tolerance + "/255"),
+                new Entry(simpview.compare.HeatMap.SLACK_ONLY, "only 1 px off"),
+                new Entry(0xC00000, "more (brighter: more)")));
     }
 }
