@@ -3,6 +3,7 @@ package simpview.inspect;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
+import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
@@ -13,7 +14,6 @@ import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.PrimitiveTrace;
-import simpview.surface.DepthCueDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.DrawableDecorator;
 import simpview.surface.PageCanvas;
@@ -30,6 +30,15 @@ import simpview.surface.ZBufferDrawable;
  * (inside the panel). Row by row from the bottom, as the z-buffer is kept.
  * The pixel history of any pixel has as many written and depth-failed
  * entries as its count here.
+ *
+ * <p>Only the depth test decides a count, so the replay stops there and
+ * makes no colour: depth-cued writes go through the scissor and the
+ * z-buffer (the program's own decorators) to a surface that keeps nothing
+ * and wants no colour; lit fragments are depth-tested here as the fragment
+ * stage tests them (z = (z q) (1 / q) at each pixel, the same operations in
+ * the same order, so the same bits; strictly nearer wins and is kept), and
+ * never lit. {@code OverdrawTest} holds the counts to the histories, whose
+ * fragments the fragment stage itself tests.
  */
 public final class Overdraw {
 
@@ -115,9 +124,8 @@ public final class Overdraw {
         @Override
         public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
             Camera view = Camera.PARALLEL;
-            Drawable coloured = ownColours ? canvas.panel() : new DepthCueDrawable(near, far, view, canvas.panel());
             return new ScissorDrawable(view, new CountedWrites(counts, new ZBufferDrawable(canvas.zbuffer(),
-                    new CountedWrites(won, coloured))));
+                    new CountedWrites(won, new Nowhere()))));
         }
 
         @Override
@@ -126,39 +134,40 @@ public final class Overdraw {
             int height = stage.height();
             double[] z = depths;
             return new FragmentSink() {
-                private double[] before = new double[width];
-
                 @Override
                 public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
                     if (y < 0 || y >= height) {
-                        stage.span(y, from, to, q0, dq, v0, dv);
                         return;
                     }
-                    int start = Math.max(from, 0);
                     int end = Math.min(to, width);
                     int row = y * width;
-                    for (int x = start; x < end; x++) {
-                        counts[row + x]++;
-                        before[x] = z[row + x];
-                    }
-                    stage.span(y, from, to, q0, dq, v0, dv);
-                    for (int x = start; x < end; x++) {
-                        if (Double.compare(z[row + x], before[x]) != 0) {
-                            won[row + x]++;
+                    double z0 = v0[FragmentLayout.Z];
+                    double dz = dv[FragmentLayout.Z];
+                    for (int x = Math.max(from, 0); x < end; x++) {
+                        int k = x - from;
+                        double inv = 1 / (q0 + k * dq);
+                        double depth = (z0 + k * dz) * inv;
+                        int i = row + x;
+                        counts[i]++;
+                        if (depth > z[i]) {
+                            z[i] = depth;
+                            won[i]++;
                         }
                     }
                 }
 
                 @Override
                 public void pixel(int x, int y, double q, double[] v) {
-                    boolean inside = x >= 0 && x < width && y >= 0 && y < height;
-                    double was = inside ? z[y * width + x] : 0;
-                    if (inside) {
-                        counts[y * width + x]++;
+                    if (x < 0 || x >= width || y < 0 || y >= height) {
+                        return;
                     }
-                    stage.pixel(x, y, q, v);
-                    if (inside && Double.compare(z[y * width + x], was) != 0) {
-                        won[y * width + x]++;
+                    int i = y * width + x;
+                    double inv = 1 / q;
+                    double depth = v[FragmentLayout.Z] * inv;
+                    counts[i]++;
+                    if (depth > z[i]) {
+                        z[i] = depth;
+                        won[i]++;
                     }
                 }
             };
@@ -168,6 +177,37 @@ public final class Overdraw {
         public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
         }
 
+    }
+
+    /** The end of the counting chain: the panel's size, no colour wanted, nothing kept. */
+    private static final class Nowhere implements Drawable {
+        @Override
+        public int width() {
+            return PageCanvas.PANEL;
+        }
+
+        @Override
+        public int height() {
+            return PageCanvas.PANEL;
+        }
+
+        @Override
+        public boolean usesColour() {
+            return false;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+        }
+
+        @Override
+        public void fillSpan(Span span) {
+        }
+
+        @Override
+        public int getPixel(int x, int y) {
+            return 0;
+        }
     }
 
     /** Counts every write that reaches it inside the panel, then passes it on. */
