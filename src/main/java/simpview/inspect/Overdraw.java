@@ -134,24 +134,42 @@ public final class Overdraw {
             int height = stage.height();
             double[] z = depths;
             return new FragmentSink() {
+                // k at each pixel of a span as an exact double, and each pixel's 1 / q and z: plain loops over
+                // arrays, which C2 compiles to packed operations, as the fragment stage's batches are.
+                private final double[] ramp = ramp(width);
+                private final double[] inverse = new double[width];
+                private final double[] zs = new double[width];
+
                 @Override
                 public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
                     if (y < 0 || y >= height) {
                         return;
                     }
-                    int end = Math.min(to, width);
-                    int row = y * width;
+                    int start = Math.max(from, 0);
+                    int m = Math.min(to, width) - start;
+                    if (m <= 0) {
+                        return;
+                    }
+                    double k0 = start - from;
                     double z0 = v0[FragmentLayout.Z];
                     double dz = dv[FragmentLayout.Z];
-                    for (int x = Math.max(from, 0); x < end; x++) {
-                        int k = x - from;
-                        double inv = 1 / (q0 + k * dq);
-                        double depth = (z0 + k * dz) * inv;
-                        int i = row + x;
-                        counts[i]++;
-                        if (depth > z[i]) {
-                            z[i] = depth;
-                            won[i]++;
+                    double[] inv = inverse;
+                    double[] depth = zs;
+                    double[] r = ramp;
+                    for (int j = 0; j < m; j++) {
+                        inv[j] = 1 / (q0 + (k0 + r[j]) * dq);
+                    }
+                    for (int j = 0; j < m; j++) {
+                        depth[j] = (z0 + (k0 + r[j]) * dz) * inv[j];
+                    }
+                    int at = y * width + start;
+                    for (int j = 0; j < m; j++) {
+                        counts[at + j]++;
+                    }
+                    for (int j = 0; j < m; j++) {
+                        if (depth[j] > z[at + j]) {
+                            z[at + j] = depth[j];
+                            won[at + j]++;
                         }
                     }
                 }
@@ -177,6 +195,15 @@ public final class Overdraw {
         public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
         }
 
+    }
+
+    /** 0, 1, 2, ... as doubles. */
+    private static double[] ramp(int n) {
+        double[] r = new double[n];
+        for (int i = 0; i < n; i++) {
+            r[i] = i;
+        }
+        return r;
     }
 
     /** The end of the counting chain: the panel's size, no colour wanted, nothing kept. */
