@@ -87,6 +87,27 @@ class ClippedHistoryTest {
     }
 
     @Test
+    void aTriangleThroughTheEyesPlaneIsJudgedByItsPartInFrontOfTheEye() throws Exception {
+        // Base at z = -10 (window x -0.1 to 0.1, y -0.1), apex (0, 0.5, 1) behind the eye. The near plane
+        // z = -1 crosses the sides 9/11 of the way up, at window (-+2/11, 5/22): the drawn part is the
+        // quadrilateral below that. The part between the near plane and the eye projects above it, its sides
+        // going on up and out at dx/dy = -+1/4 (at window y 0.8 they are 0.1 + 0.9 / 4 = 0.325 from x = 0).
+        InspectedScene s = scene("through.simp", CAMERA + "polygon (-1, -1, -10) (1, -1, -10) (0, 0.5, 1)\n");
+        // Window (-0.0015, 0.7985): above the drawn part, inside the part nearer than the near plane.
+        PixelReport cut = inspector.inspect(s, 324, 584);
+        assertEquals(1, cut.history().size(), cut.text(true, false));
+        HistoryEntry e = cut.history().get(0);
+        assertEquals(Outcome.CLIPPED, e.outcome());
+        assertEquals(0, e.primitive());
+        assertTrue(e.planeNames().contains("hither"), e.planeNames().toString());
+        // Window (-0.0015, -0.0015): the drawn part.
+        PixelReport drawn = inspector.inspect(s, 324, 324);
+        assertEquals(List.of(Outcome.WRITTEN), drawn.history().stream().map(HistoryEntry::outcome).toList());
+        // Window (0.5, 0.7985): outside both.
+        assertEquals(0, inspector.inspect(s, 487, 584).history().size());
+    }
+
+    @Test
     void gouraudThroughTheNearPlaneIsExplainedByItsOwnVertices() throws Exception {
         // Ambient 1 and no lights: each vertex lit is its own colour. The apex (z = -0.5) is nearer than the
         // near plane (z = -1): the clipper cuts the triangle into a quadrilateral, drawn as a fan of two.
