@@ -162,10 +162,11 @@ final class InspectCommand implements Callable<Integer> {
         long chosen = PageDrawing.context(parent.ownScenes(), seed, null, PageDrawing.warningsTo(err())).seed();
         A1Report report = A1Inspector.inspect(what.page, chosen, xy[0], xy[1]);
         PrintWriter out = spec.commandLine().getOut();
+        boolean all = !history && !explain;
         if (json) {
-            out.println(report.json());
+            out.println(report.json(history || all, explain || all));
         } else {
-            out.print(report.text());
+            out.print(report.text(history || all, explain || all));
         }
         out.flush();
         return ExitCode.OK;

@@ -172,6 +172,11 @@ public final class A1Report {
     }
 
     public String text() {
+        return text(true, true);
+    }
+
+    /** The report as text: the pixel and its panel, then the history and the explanation as asked. */
+    public String text(boolean withHistory, boolean withExplanation) {
         StringBuilder sb = new StringBuilder();
         sb.append("pixel (").append(x).append(", ").append(y).append(") of the first assignment's page ").append(page)
                 .append(" (").append(title).append(seed == null ? "" : ", seed " + seed).append("; image pixel ")
@@ -182,6 +187,18 @@ public final class A1Report {
         }
         sb.append("panel ").append(panel).append(" (").append(drawer).append("), panel pixel (").append(panelX)
                 .append(", ").append(panelY).append(")\n");
+        if (withHistory) {
+            history(sb);
+        }
+        if (withExplanation) {
+            sb.append("explain: final_rgb ").append(rgb(argb)).append(writes.isEmpty() ? ", the panel's black: no "
+                    + (lines ? "line" : "triangle") + " reached this pixel" : ", the last write's new colour")
+                    .append('\n');
+        }
+        return sb.toString();
+    }
+
+    private void history(StringBuilder sb) {
         sb.append("history: ").append(writes.size()).append(writes.size() == 1 ? " write" : " writes")
                 .append(", in drawing order\n");
         for (Write w : writes) {
@@ -192,12 +209,14 @@ public final class A1Report {
             sb.append(", rgb ").append(rgb(w.argb)).append(": ").append(rgb(w.old)).append(" -> ").append(rgb(w.now))
                     .append('\n');
         }
-        sb.append("explain: final_rgb ").append(rgb(argb)).append(writes.isEmpty() ? ", the panel's black: no "
-                + (lines ? "line" : "triangle") + " reached this pixel" : ", the last write's new colour").append('\n');
-        return sb.toString();
     }
 
     public String json() {
+        return json(true, true);
+    }
+
+    /** The report as one JSON object: "pixel", "panel", then "history" and "explain" as asked. */
+    public String json(boolean withHistory, boolean withExplanation) {
         StringBuilder sb = new StringBuilder("{\"pixel\": {\"x\": ").append(x).append(", \"y\": ").append(y)
                 .append(", \"image_x\": ").append(column).append(", \"image_row\": ").append(row).append(", \"rgb\": ")
                 .append(array(argb)).append(", \"depth\": null}, \"assignment\": 1, \"page\": ").append(page)
@@ -211,7 +230,19 @@ public final class A1Report {
             Json.string(sb, drawer);
             sb.append(", \"x\": ").append(panelX).append(", \"y\": ").append(panelY).append('}');
         }
-        sb.append(", \"history\": [");
+        if (withHistory) {
+            historyJson(sb.append(", \"history\": ["));
+            sb.append(']');
+        }
+        if (withExplanation) {
+            sb.append(", \"explain\": {\"final_rgb\": ").append(array(argb)).append(", \"writes\": ")
+                    .append(writes.size()).append(", \"background\": ").append(writes.isEmpty()).append('}');
+        }
+        return sb.append('}').toString();
+    }
+
+    /** The history's entries as JSON objects, comma-separated. */
+    private void historyJson(StringBuilder sb) {
         for (int k = 0; k < writes.size(); k++) {
             Write w = writes.get(k);
             sb.append(k == 0 ? "" : ", ").append("{\"primitive\": ").append(w.number()).append(", \"kind\": ")
@@ -245,9 +276,6 @@ public final class A1Report {
             }
             sb.append(", \"old\": ").append(array(w.old)).append(", \"new\": ").append(array(w.now)).append('}');
         }
-        sb.append("], \"explain\": {\"final_rgb\": ").append(array(argb)).append(", \"writes\": ").append(writes.size())
-                .append(", \"background\": ").append(writes.isEmpty()).append("}}");
-        return sb.toString();
     }
 
     private static String rgb(int c) {
