@@ -34,16 +34,17 @@ class A1HistoryTest {
             BufferedImage image = page(n);
             Random random = new Random(n);
             List<int[]> lit = new java.util.ArrayList<>();
+            int[] all = image.getRGB(0, 0, LAST + 1, LAST + 1, null, 0, LAST + 1);
             for (int row = 0; row <= LAST; row++) {
                 for (int column = 0; column <= LAST; column++) {
-                    int rgb = image.getRGB(column, row) & 0xFFFFFF;
+                    int rgb = all[row * (LAST + 1) + column] & 0xFFFFFF;
                     if (rgb != 0 && simpview.pages.A1Layout.panelAt(column, row) != 0) {
                         lit.add(new int[] {column, LAST - row});
                     }
                 }
             }
             int drawn = 0;
-            for (int k = 0; k < 36; k++) {
+            for (int k = 0; k < 30; k++) {
                 // Mostly pixels the page drew, some anywhere.
                 int[] xy = k % 6 == 0 ? new int[] {random.nextInt(LAST + 1), random.nextInt(LAST + 1)}
                         : lit.get(random.nextInt(lit.size()));
@@ -80,7 +81,7 @@ class A1HistoryTest {
                     }
                 }
             }
-            assertTrue(drawn >= 24, "page " + n + ": only " + drawn + " drawn pixels sampled");
+            assertTrue(drawn >= 20, "page " + n + ": only " + drawn + " drawn pixels sampled");
         }
         assertTrue(blends > 50, "blends checked: " + blends);
     }
