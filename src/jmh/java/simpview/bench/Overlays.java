@@ -19,20 +19,40 @@ import org.openjdk.jmh.annotations.Warmup;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneDrawer;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
 import simpview.window.LineKeepingDownscale;
+import simpview.window.instruments.BackFacePicture;
+import simpview.window.instruments.DepthPicture;
+import simpview.window.instruments.OverdrawPicture;
+import simpview.window.render.DrawSettings;
+import simpview.window.render.RenderJob;
+import simpview.window.render.RenderedView;
+import simpview.window.render.View;
 
 /**
- * What the window's overlays cost against the page's own drawing (issue 20:
- * each at most twice): the scene drawn ("draw"), the overdraw counts (V,
- * a replay with counting decorators), the culled and clipped-away outlines
- * (U, a replay that writes no pixel), and the picture made smaller than 1:1
- * with its lines kept (the view below 1:1, at 650/750 of its size and at
- * 400/750).
+ * What each overlay of the window costs against the page's own drawing, in
+ * one run: {@code draw} is the page drawn as the command line draws it (one
+ * thread, no record); {@code windowDraw} as the window draws it (who drew
+ * each pixel and every primitive recorded, what the back-face and depth
+ * overlays read); {@code overdraw} and {@code failures} the V and Shift+V
+ * overlays (the scene replayed counting every write that reaches each
+ * pixel's depth test, then the heat map with its scale); {@code backFaces}
+ * the K overlay and {@code depth} the depth picture, from the facts the
+ * window's drawing recorded; {@code culledAndClipped} the U overlay (a
+ * replay that writes no pixel); {@code downscaleTo650} and
+ * {@code downscaleTo400} the finished picture made smaller than 1:1 with its
+ * lines kept, to 650/750 and 400/750 of its side (the view below 1:1, on
+ * the EDT once per picture and zoom). Scenes: A4's page-d and A3's pageI from the
+ * course folders beside -Dsimpview.courseSimp, and A2's page 7 as the page
+ * draws it (depth-cued from its near colour). Sampled, in ms.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)
@@ -42,39 +62,96 @@ import simpview.window.LineKeepingDownscale;
 @Fork(1)
 public class Overlays {
 
-    /** A course scene: its assignment and name ("a4/page-d"), beside -Dsimpview.courseSimp. */
-    @Param({"a4/page-d"})
+    @Param({"a4/page-d", "a3/pageI", "a2/page7"})
     public String scene;
 
     private final ObjLibrary models = new ObjLibrary();
     private final PageCanvas canvas = new PageCanvas();
+    private final PageRenderer renderer = new PageRenderer();
+    private final PageRenderer windowRenderer = new PageRenderer();
+    private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+    private PageContext context;
     private InspectedScene inspected;
+    private View view;
     private Path file;
-    private BufferedImage page;
+    private RenderedView recorded;
+    private Overdraw.Counts counted;
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
         Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+        context = new PageContext(PageContext.DEFAULT_SEED, courseSimp, PageContext.PROJECT_SCENES, SceneMonitor.NONE);
         String[] parts = scene.split("/");
-        file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
-        if (!Files.isRegularFile(file)) {
-            throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
+        if (parts[0].equals("a2")) {
+            int page = Integer.parseInt(parts[1].substring("page".length()));
+            inspected = InspectedScene.page(page, context);
+            view = new View.OfPage(page);
+            file = null;
+        } else {
+            file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            if (!Files.isRegularFile(file)) {
+                throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
+            }
+            inspected = InspectedScene.of(file);
+            view = new View.OfScene(file);
         }
-        inspected = InspectedScene.of(file);
         draw();
-        page = canvas.snapshot();
+        recorded = windowDraw();
+        if (recorded == null || recorded.facts().owners() == null) {
+            throw new IllegalStateException(scene + ": the window's drawing recorded no owners");
+        }
+        Overdraw.Counts counts = Overdraw.counts(inspected, models);
+        counted = counts;
+        System.out.println(scene + ": up to " + Overdraw.max(counts.reached()) + " writes at a pixel, "
+                + BackFacePicture.of(recorded.image(), recorded.facts()).backFacing() + " back faces");
     }
 
     @Benchmark
     public PageCanvas draw() throws SceneException {
+        if (file == null) {
+            return renderer.render(((View.OfPage) view).number(), context);
+        }
         canvas.clear();
         ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(models), SceneMonitor.NONE);
         return canvas;
     }
 
     @Benchmark
-    public Overdraw.Counts overdraw() throws SceneException {
+    public RenderedView windowDraw() {
+        return new RenderJob(view, context, DrawSettings.WINDOW).run(windowRenderer, SceneDrawer.SIMP, models,
+                provenance);
+    }
+
+    @Benchmark
+    public BufferedImage overdraw() throws SceneException {
+        return OverdrawPicture.of(Overdraw.counts(inspected, models).reached());
+    }
+
+    @Benchmark
+    public BufferedImage failures() throws SceneException {
+        return OverdrawPicture.of(Overdraw.counts(inspected, models).failed(), "depth-test failures");
+    }
+
+    /** The overdraw overlay's replay alone, without its picture. */
+    @Benchmark
+    public Overdraw.Counts counts() throws SceneException {
         return Overdraw.counts(inspected, models);
+    }
+
+    /** The overdraw overlay's picture alone, of counts made in the set-up. */
+    @Benchmark
+    public BufferedImage heatMap() {
+        return OverdrawPicture.of(counted.reached());
+    }
+
+    @Benchmark
+    public BackFacePicture.Tinted backFaces() {
+        return BackFacePicture.of(recorded.image(), recorded.facts());
+    }
+
+    @Benchmark
+    public BufferedImage depth() {
+        return DepthPicture.of(recorded.facts().depths(), recorded.facts().depthStart());
     }
 
     @Benchmark
@@ -84,11 +161,11 @@ public class Overlays {
 
     @Benchmark
     public BufferedImage downscaleTo650() {
-        return LineKeepingDownscale.of(page, 650.0 / 750);
+        return LineKeepingDownscale.of(recorded.image(), 650.0 / 750);
     }
 
     @Benchmark
     public BufferedImage downscaleTo400() {
-        return LineKeepingDownscale.of(page, 400.0 / 750);
+        return LineKeepingDownscale.of(recorded.image(), 400.0 / 750);
     }
 }
