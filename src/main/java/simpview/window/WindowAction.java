@@ -105,7 +105,8 @@ public enum WindowAction {
     STEP_TO_OWNER(Menu.INSTRUMENTS, "Step to the pixel's primitive", "step to the primitive that drew the pixel "
             + "under the pointer (or the pinned one)", "J"),
 
-    HELP(Menu.HELP, "Keys and gestures", "these keys over the page (again: hide them)", "F1");
+    HELP(Menu.HELP, "Keys and gestures", "these keys, menu entries and gestures over the window (again: hide them)",
+            "F1");
 
     /** The menus of the menu bar, in order, with their mnemonics. */
     public enum Menu {
