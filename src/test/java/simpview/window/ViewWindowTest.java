@@ -159,8 +159,6 @@ public class ViewWindowTest extends WindowTestCase {
         assertEquals("simpview — assignment 3, page 1/10: pageA.simp", driver.onEdt(() -> window.frame().getTitle()));
         driver.onEdt(() -> window.perform(WindowAction.NEXT));
         driver.awaitShown(new View.OfScene(a3.resolve("pageB.simp")));
-        driver.onEdt(() -> window.perform(WindowAction.LAST));
-        driver.awaitShown(new View.OfScene(a3.resolve("tomsPageJ.simp")));
         driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_2));
         driver.awaitShown(new View.OfPage(3));
         // On the first assignment's pages the panel follows the pointer too, and says it does not replay them.
