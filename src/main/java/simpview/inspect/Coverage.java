@@ -29,6 +29,34 @@ final class Coverage {
     }
 
     static boolean covers(Camera camera, int kind, double[] p, int at, int stride, int n, int x, int y) {
+        double[][] projected = projected(camera, kind, p, at, stride, n);
+        if (projected == null) {
+            return false;
+        }
+        double[] sx = projected[0];
+        double[] sy = projected[1];
+        int m = sx.length;
+        if (kind == Painter.FILLED) {
+            return m >= 3 && inside(sx, sy, m, x + 0.5, y + 0.5);
+        }
+        if (kind == Painter.LINE) {
+            return onLine(sx[0], sy[0], sx[1], sy[1], x, y);
+        }
+        for (int k = 0; k < m; k++) {
+            int j = (k + 1) % m;
+            if (onLine(sx[k], sy[k], sx[j], sy[j], x, y)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The primitive's part in front of the eye, projected: its panel x and y
+     * ({@code [0]} and {@code [1]}), or null when nothing of it is in front
+     * of the eye or a vertex does not project to a finite point.
+     */
+    static double[][] projected(Camera camera, int kind, double[] p, int at, int stride, int n) {
         double[] xs = new double[n + 1];
         double[] ys = new double[n + 1];
         double[] zs = new double[n + 1];
@@ -44,7 +72,7 @@ final class Coverage {
             double eye = -Math.abs(camera.hither()) * EYE_PLANE;
             double[][] front = inFront(xs, ys, zs, n, closed, eye);
             if (front == null) {
-                return false;
+                return null;
             }
             xs = front[0];
             ys = front[1];
@@ -57,22 +85,10 @@ final class Coverage {
             sx[k] = camera.panelX(xs[k], zs[k]);
             sy[k] = camera.panelY(ys[k], zs[k]);
             if (!Double.isFinite(sx[k]) || !Double.isFinite(sy[k])) {
-                return false;
+                return null;
             }
         }
-        if (kind == Painter.FILLED) {
-            return m >= 3 && inside(sx, sy, m, x + 0.5, y + 0.5);
-        }
-        if (kind == Painter.LINE) {
-            return onLine(sx[0], sy[0], sx[1], sy[1], x, y);
-        }
-        for (int k = 0; k < m; k++) {
-            int j = (k + 1) % m;
-            if (onLine(sx[k], sy[k], sx[j], sy[j], x, y)) {
-                return true;
-            }
-        }
-        return false;
+        return new double[][] {sx, sy};
     }
 
     /**

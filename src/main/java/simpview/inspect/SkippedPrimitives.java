@@ -23,8 +23,9 @@ import simpview.surface.Rgb;
  * The primitives of a scene that reach no rasterizer, as outlines on the
  * panel: those culled whole (every vertex outside one plane of the view) and
  * those clipped away whole, each projected as it is by the scene's camera
- * (the depth-cued view's for a depth-cued scene). A primitive with a vertex
- * at or behind the eye has no outline and is only counted. Found by a replay
+ * (the depth-cued view's for a depth-cued scene): its part in front of the
+ * eye, as the pixel history's coverage test takes it. A primitive wholly at
+ * or behind the eye has no outline and is only counted. Found by a replay
  * through {@link ScenePipeline} that writes no pixel: only the geometry runs.
  */
 public final class SkippedPrimitives {
@@ -33,7 +34,7 @@ public final class SkippedPrimitives {
     public record Skipped(boolean culled, int kind, double[] outline, Path file, int line) {
     }
 
-    /** What the replay found: the outlined ones, and how many more had no outline (a vertex at or behind the eye). */
+    /** What the replay found: the outlined ones, and how many more had no outline (wholly at or behind the eye). */
     public record Found(List<Skipped> outlined, int unprojectable) {
 
         public long culled() {
@@ -78,7 +79,7 @@ public final class SkippedPrimitives {
                 @Override
                 public void skipped(Path file, int line, int kind, boolean culled, double[] p, int at, int stride,
                         int vertices) {
-                    double[] outline = project(camera.get(), p, at, stride, vertices);
+                    double[] outline = project(camera.get(), kind, p, at, stride, vertices);
                     if (outline == null) {
                         unprojectable++;
                     } else {
@@ -143,20 +144,20 @@ public final class SkippedPrimitives {
         }
     }
 
-    /** The vertices on the panel, or null when one of them cannot be projected. */
-    static double[] project(Camera camera, double[] p, int at, int stride, int n) {
-        double[] outline = new double[2 * n];
-        for (int k = 0; k < n; k++) {
-            int o = at + k * stride;
-            double z = p[o + 2];
-            if (camera.isPerspective() && !(z < 0)) {
-                return null;
-            }
-            outline[2 * k] = camera.panelX(p[o], z);
-            outline[2 * k + 1] = camera.panelY(p[o + 1], z);
-            if (!Double.isFinite(outline[2 * k]) || !Double.isFinite(outline[2 * k + 1])) {
-                return null;
-            }
+    /**
+     * The outline on the panel, panel x and y in turn: the primitive's part
+     * in front of the eye, projected as the pixel history's coverage test
+     * projects it; null when nothing of it is in front of the eye.
+     */
+    static double[] project(Camera camera, int kind, double[] p, int at, int stride, int n) {
+        double[][] projected = Coverage.projected(camera, kind, p, at, stride, n);
+        if (projected == null) {
+            return null;
+        }
+        double[] outline = new double[2 * projected[0].length];
+        for (int k = 0; k < projected[0].length; k++) {
+            outline[2 * k] = projected[0][k];
+            outline[2 * k + 1] = projected[1][k];
         }
         return outline;
     }

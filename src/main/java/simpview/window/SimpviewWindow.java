@@ -812,8 +812,8 @@ public final class SimpviewWindow {
                     new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size() + " culled"),
                     new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size() + " clipped away"))));
             status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
-                    + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more have a vertex at or behind "
-                    + "the eye and no outline" : "") + " · U: off");
+                    + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more lie wholly at or behind "
+                    + "the eye and have no outline" : "") + " · U: off");
         });
     }
 

@@ -35,9 +35,12 @@ class SkippedPrimitivesTest {
                 // vertex inside one of them, so not culled; none of it inside both: clipped away whole
                 + "polygon (15, 6, -10) (6, 15, -10) (14, 14, -10)\n"
                 // line 6: behind the eye: culled, and no outline
-                + "polygon (0, 0, 5) (1, 0, 5) (0, 1, 5)\n");
+                + "polygon (0, 0, 5) (1, 0, 5) (0, 1, 5)\n"
+                // line 7: left of the left plane (x < z) and through the eye's plane: culled, outlined by its
+                // part in front of the eye
+                + "polygon (-20, 0, -10) (-20, 1, -10) (-20, 0, 5)\n");
         SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new ObjLibrary());
-        assertEquals(2, found.outlined().size());
+        assertEquals(3, found.outlined().size());
         assertEquals(1, found.unprojectable());
         SkippedPrimitives.Skipped far = found.outlined().get(0);
         assertTrue(far.culled());
@@ -50,7 +53,17 @@ class SkippedPrimitivesTest {
         assertEquals(5, corner.line());
         assertArrayEquals(new double[] {panel(15, -10), panel(6, -10), panel(6, -10), panel(15, -10),
                 panel(14, -10), panel(14, -10)}, corner.outline(), EPS);
-        assertEquals(1, found.culled());
+        SkippedPrimitives.Skipped through = found.outlined().get(2);
+        assertTrue(through.culled());
+        assertEquals(7, through.line());
+        // Its front part: its two vertices at z = -10 and the two cuts at the eye's plane (far off the panel).
+        assertEquals(8, through.outline().length);
+        int atTen = 0;
+        for (int k = 0; k < 8; k += 2) {
+            atTen += Math.abs(through.outline()[k] - panel(-20, -10)) < EPS ? 1 : 0;
+        }
+        assertEquals(2, atTen);
+        assertEquals(2, found.culled());
         assertEquals(1, found.clipped());
     }
 
