@@ -29,20 +29,24 @@ final class BatchLighting {
     void shade(LitPoints t) {
         int n = t.count;
         Lighting l = lighting;
-        if (l.lightCount == 0) {
-            java.util.Arrays.fill(t.alone, 0, n, false);
-        }
         for (int i = 0; i < n; i++) {
             t.red[i] = t.kdRed[i] * l.ambientRed;
             t.green[i] = t.kdGreen[i] * l.ambientGreen;
             t.blue[i] = t.kdBlue[i] * l.ambientBlue;
         }
-        if (l.lightCount > 0) {
-            aim(t, n);
-            int end = l.lightCount * Lights.STRIDE;
-            for (int o = 0; o < end; o += Lights.STRIDE) {
-                light(t, n, o);
+        if (l.lightCount == 0) {
+            // The ambient term alone: no point is lit alone.
+            for (int i = 0; i < n; i++) {
+                t.red[i] = Lighting.clamp(t.red[i]);
+                t.green[i] = Lighting.clamp(t.green[i]);
+                t.blue[i] = Lighting.clamp(t.blue[i]);
             }
+            return;
+        }
+        aim(t, n);
+        int end = l.lightCount * Lights.STRIDE;
+        for (int o = 0; o < end; o += Lights.STRIDE) {
+            light(t, n, o);
         }
         for (int i = 0; i < n; i++) {
             double r = t.red[i];
