@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.function.IntConsumer;
 import java.util.function.LongFunction;
 import simpview.raster.AlternatingLineRenderer;
 import simpview.raster.AntialiasedLineRenderer;
@@ -71,12 +72,24 @@ public final class LineTestPage implements Page {
     public void draw(PageCanvas canvas, PageContext context) {
         Drawable[] panels = A1Layout.paint(canvas);
         A1Lines set = lines(context.seed());
-        double[] n = set.numbers();
         for (int k = 1; k <= A1Layout.PANELS; k++) {
-            LineRenderer drawer = drawer(k);
-            for (int i = 0; i < set.count(); i++) {
-                drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panels[k - 1]);
+            drawPanel(k, set, panels[k - 1], null);
+        }
+    }
+
+    /**
+     * Draws panel k's lines (k = 1..4) onto its panel, in order, by the
+     * panel's drawer; {@code beforeLine}, unless null, is told each line's
+     * index (0, 1, ...) before it is drawn (the inspector's replay of one pixel).
+     */
+    public static void drawPanel(int k, A1Lines set, Drawable panel, IntConsumer beforeLine) {
+        LineRenderer drawer = drawer(k);
+        double[] n = set.numbers();
+        for (int i = 0; i < set.count(); i++) {
+            if (beforeLine != null) {
+                beforeLine.accept(i);
             }
+            drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panel);
         }
     }
 }
