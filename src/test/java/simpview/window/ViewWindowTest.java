@@ -77,9 +77,12 @@ public class ViewWindowTest extends WindowTestCase {
         driver.robot().keyRelease(KeyEvent.VK_SHIFT);
         driver.awaitEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
                 instanceof javax.swing.JTextField, "the go-to-pixel dialog");
+        // Typed without waiting for the toolkit to be idle after each key: under a modal dialog that wait
+        // (Robot.waitForIdle) can run into its timeout, seconds a key; the X server keeps the keys' order.
         for (int key : new int[] {KeyEvent.VK_3, KeyEvent.VK_2, KeyEvent.VK_5, KeyEvent.VK_COMMA, KeyEvent.VK_3,
                 KeyEvent.VK_3, KeyEvent.VK_0, KeyEvent.VK_ENTER}) {
-            driver.press(key);
+            driver.robot().keyPress(key);
+            driver.robot().keyRelease(key);
         }
         try {
             driver.awaitEdt(() -> window.status().messageText().startsWith("Pinned panel pixel (325, 330)"),
