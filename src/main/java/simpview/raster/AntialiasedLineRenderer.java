@@ -55,7 +55,8 @@ public final class AntialiasedLineRenderer implements LineRenderer {
     /**
      * The area of the disc beyond a line at signed distance h from its centre
      * (positive: the line does not reach the centre): the handout's pie wedge
-     * and triangle, {@code r^2 theta - h sqrt(r^2 - h^2)} with cos theta = h / r.
+     * and triangle, {@code r^2 theta - h sqrt(r^2 - h^2)} with cos theta = h / r
+     * ({@link ArcCosine}: within a few units in the last place of Math.acos).
      */
     private static double cap(double h) {
         if (h >= RADIUS) {
@@ -64,7 +65,9 @@ public final class AntialiasedLineRenderer implements LineRenderer {
         if (h <= -RADIUS) {
             return DISC;
         }
-        return RADIUS * RADIUS * Math.acos(h / RADIUS) - h * Math.sqrt(RADIUS * RADIUS - h * h);
+        double cos = h / RADIUS;
+        double sin = ArcCosine.sine(cos);
+        return RADIUS * RADIUS * ArcCosine.of(cos, sin) - h * RADIUS * sin;
     }
 
     @Override
