@@ -4,7 +4,9 @@ package simpview.surface;
  * The first assignment's ghost (SPEC Part 3, page 5): every write, whatever
  * its colour, makes the pixel full white at opacity {@value #OPACITY}, each
  * channel {@code 0.14 * 1 + 0.86 * old}, never through the alpha bits.
- * Depth is passed on unchanged.
+ * Depth is passed on unchanged. A span is read, made ghosts of and written
+ * back as one run ({@link Drawable#setRun}), in scratch rows this instance
+ * keeps: one instance serves one thread.
  */
 public final class GhostWritingDrawable extends DrawableDecorator {
 
@@ -19,21 +21,45 @@ public final class GhostWritingDrawable extends DrawableDecorator {
         }
     }
 
+    /** One row's depths and colours, for {@link #fillSpan}: grown to the longest span, never per span. */
+    private double[] depths = new double[0];
+    private int[] colours = new int[0];
+
     public GhostWritingDrawable(Drawable delegate) {
         super(delegate);
     }
 
+    /** The colour written is always white at the opacity, whatever is asked. */
     @Override
-    public void setPixel(int x, int y, double z, int argb) {
-        int old = delegate.getPixel(x, y);
-        delegate.setPixel(x, y, z, 0xFF000000 | AFTER[Colors.red(old)] << 16 | AFTER[Colors.green(old)] << 8
-                | AFTER[Colors.blue(old)]);
+    public boolean usesColour() {
+        return false;
     }
 
     @Override
+    public void setPixel(int x, int y, double z, int argb) {
+        delegate.setPixel(x, y, z, ghostOver(delegate.getPixel(x, y)));
+    }
+
+    private static int ghostOver(int old) {
+        return 0xFF000000 | AFTER[Colors.red(old)] << 16 | AFTER[Colors.green(old)] << 8 | AFTER[Colors.blue(old)];
+    }
+
+    /** The span's pixels read, made ghosts of and written back as one run. */
+    @Override
     public void fillSpan(Span span) {
-        for (int x = span.x0; x < span.x1; x++) {
-            setPixel(x, span.y, span.zAt(x), span.argbAt(x));
+        int count = span.x1 - span.x0;
+        if (count <= 0) {
+            return;
         }
+        if (colours.length < count) {
+            colours = new int[count];
+            depths = new double[count];
+        }
+        delegate.getRun(span.x0, span.y, count, colours, 0);
+        for (int i = 0; i < count; i++) {
+            colours[i] = ghostOver(colours[i]);
+            depths[i] = span.zAt(span.x0 + i);
+        }
+        delegate.setRun(span.x0, span.y, count, depths, colours, 0);
     }
 }

@@ -80,6 +80,16 @@ public final class ImageDrawable implements Drawable {
      * cost more than the clamps it saves.
      */
     @Override
+    public void getRun(int x, int y, int count, int[] into, int at) {
+        boolean onRow = y >= 0 && y < height;
+        int row = y * width;
+        for (int i = 0; i < count; i++) {
+            int column = x + i;
+            into[at + i] = onRow && column >= 0 && column < width ? pixels[row + column] | 0xFF000000 : 0;
+        }
+    }
+
+    @Override
     public void fillSpan(Span s) {
         if (s.y < 0 || s.y >= height) {
             return;
