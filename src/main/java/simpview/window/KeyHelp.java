@@ -21,7 +21,7 @@ public final class KeyHelp {
             new Row("P", "pin the inspected pixel (again: unpin); Ctrl+C copies it"),
             new Row("D", "depth view: the z-buffer as a picture (again: the page)"),
             new Row("C", "own colours: a scene's vertex colours without depth cue"),
-            new Row("] / [ · Shift+] / Shift+[ · \\", "step the drawing one / ten primitives · all"),
+            new Row("] / [ · Shift+] / Shift+[ · \\", "step the drawing one / ten primitives (A1: lines or triangles, every panel) · all"),
             new Row("Ctrl+] / Ctrl+[ · Ctrl+Shift+] / Ctrl+Shift+[", "step a hundred / a thousand primitives"),
             new Row("G / J", "go to primitive N / to the one that drew the pixel under the pointer"),
             new Row("I", "inspector panel: the pinned pixel's history, colour explained, vertices"),
