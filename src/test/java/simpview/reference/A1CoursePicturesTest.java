@@ -53,7 +53,7 @@ class A1CoursePicturesTest {
 
     /** Pages 4 and 5, panels 1 and 2 (random colours, fixed geometry): the same pixels drawn, at least 99.5 %. */
     @ParameterizedTest(name = "page {0} panel {1}")
-    @CsvSource({"4, 1, 99.67", "4, 2, 100.00", "5, 1, 99.67", "5, 2, 100.00"})
+    @CsvSource({"4, 1, 99.82", "4, 2, 100.00", "5, 1, 99.82", "5, 2, 100.00"})
     void polygonPanelsHaveTheCoursesGeometry(int page, int panel, double measured) throws IOException {
         CourseFiles.require("reference/images/a1");
         double share = percent(A1Panels.sameGeometry(ours(page, panel), theirs(page, panel)));
