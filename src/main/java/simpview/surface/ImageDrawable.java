@@ -81,12 +81,18 @@ public final class ImageDrawable implements Drawable {
      */
     @Override
     public void getRun(int x, int y, int count, int[] into, int at) {
-        boolean onRow = y >= 0 && y < height;
-        int row = y * width;
-        for (int i = 0; i < count; i++) {
-            int column = x + i;
-            into[at + i] = onRow && column >= 0 && column < width ? pixels[row + column] | 0xFF000000 : 0;
+        if (y < 0 || y >= height) {
+            java.util.Arrays.fill(into, at, at + count, 0);
+            return;
         }
+        int from = Math.min(Math.max(x, 0), x + count);
+        int to = Math.max(Math.min(x + count, width), from);
+        java.util.Arrays.fill(into, at, at + (from - x), 0);
+        int row = y * width;
+        for (int column = from, i = at + (from - x); column < to; column++, i++) {
+            into[i] = pixels[row + column] | 0xFF000000;
+        }
+        java.util.Arrays.fill(into, at + (to - x), at + count, 0);
     }
 
     @Override
