@@ -56,8 +56,17 @@ public final class GhostWritingDrawable extends DrawableDecorator {
             depths = new double[count];
         }
         delegate.getRun(span.x0, span.y, count, colours, 0);
+        // Runs of one old colour are common (a ghost over a flat area): each is looked up once.
+        int old = ~colours[0];
+        int ghost = 0;
         for (int i = 0; i < count; i++) {
-            colours[i] = ghostOver(colours[i]);
+            if (colours[i] != old) {
+                old = colours[i];
+                ghost = ghostOver(old);
+            }
+            colours[i] = ghost;
+        }
+        for (int i = 0; i < count; i++) {
             depths[i] = span.zAt(span.x0 + i);
         }
         delegate.setRun(span.x0, span.y, count, depths, colours, 0);

@@ -466,13 +466,10 @@ public final class SimpviewWindow {
      * scene, a step).
      */
     private int stepsInAll() {
-        if (shown == null) {
-            return 0;
+        if (requested() instanceof View.OfAssignment1Page page) {
+            return Assignment1.page(page.number()).steps(options.pageContext());
         }
-        if (shown.view() instanceof View.OfAssignment1Page page) {
-            return Assignment1.page(page.number()).steps(options.pageContext().withSeed(shown.seed()));
-        }
-        return shown.facts().primitives().size();
+        return shown == null ? 0 : shown.facts().primitives().size();
     }
 
     /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
