@@ -40,18 +40,6 @@ public interface Drawable {
     /** The colour now at (x, y), 0xAARRGGBB; 0 outside the surface. */
     int getPixel(int x, int y);
 
-    /**
-     * The colours now at (x + i, y), i = 0, 1, ..., count - 1, into
-     * {@code into[at + i]}: the same as that many {@link #getPixel} calls,
-     * which is what the default does. A decorator that changes what getPixel
-     * reads and overrides this keeps that meaning.
-     */
-    default void getRun(int x, int y, int count, int[] into, int at) {
-        for (int i = 0; i < count; i++) {
-            into[at + i] = getPixel(x + i, y);
-        }
-    }
-
     /** Writes every pixel of the span; the default goes pixel by pixel. */
     default void fillSpan(Span span) {
         for (int x = span.x0; x < span.x1; x++) {

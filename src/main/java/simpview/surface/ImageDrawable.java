@@ -80,22 +80,6 @@ public final class ImageDrawable implements Drawable {
      * cost more than the clamps it saves.
      */
     @Override
-    public void getRun(int x, int y, int count, int[] into, int at) {
-        if (y < 0 || y >= height) {
-            java.util.Arrays.fill(into, at, at + count, 0);
-            return;
-        }
-        int from = Math.min(Math.max(x, 0), x + count);
-        int to = Math.max(Math.min(x + count, width), from);
-        java.util.Arrays.fill(into, at, at + (from - x), 0);
-        int row = y * width;
-        for (int column = from, i = at + (from - x); column < to; column++, i++) {
-            into[i] = pixels[row + column] | 0xFF000000;
-        }
-        java.util.Arrays.fill(into, at + (to - x), at + count, 0);
-    }
-
-    @Override
     public void fillSpan(Span s) {
         if (s.y < 0 || s.y >= height) {
             return;

@@ -58,21 +58,6 @@ public final class PanelDrawable extends DrawableDecorator {
         return inside(x, y) ? delegate.getPixel(left + x, imageRow(y)) : 0;
     }
 
-    @Override
-    public void getRun(int x, int y, int count, int[] into, int at) {
-        if (y < 0 || y >= size) {
-            java.util.Arrays.fill(into, at, at + count, 0);
-            return;
-        }
-        int from = Math.min(Math.max(x, 0), x + count);
-        int to = Math.max(Math.min(x + count, size), from);
-        java.util.Arrays.fill(into, at, at + (from - x), 0);
-        if (from < to) {
-            delegate.getRun(left + from, imageRow(y), to - from, into, at + (from - x));
-        }
-        java.util.Arrays.fill(into, at + (to - x), at + count, 0);
-    }
-
     private int imageRow(int y) {
         return top + size - 1 - y;
     }

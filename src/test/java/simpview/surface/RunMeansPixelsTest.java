@@ -87,53 +87,6 @@ class RunMeansPixelsTest {
         }
     }
 
-    /**
-     * The same rule for reading: a drawable that reads runs whole ({@code
-     * getRun}: the image, and the panel over it) reads what getPixel reads,
-     * pixel by pixel, off the surface included (0).
-     */
-    @Test
-    void aReadRunIsItsPixelsOneByOne() {
-        Random random = new Random(23);
-        ImageDrawable image = new ImageDrawable(new java.awt.image.BufferedImage(SIZE, SIZE,
-                java.awt.image.BufferedImage.TYPE_INT_RGB));
-        for (int y = 0; y < SIZE; y++) {
-            for (int x = 0; x < SIZE; x++) {
-                image.setPixel(x, y, 0, random.nextInt());
-            }
-        }
-        TreeSet<String> checked = new TreeSet<>();
-        for (Drawable d : new Drawable[] {image, new PanelDrawable(image, 3, 5, SIZE - 10)}) {
-            checked.add(d.getClass().getSimpleName());
-            for (int trial = 0; trial < 300; trial++) {
-                int count = 1 + random.nextInt(90);
-                int at = random.nextInt(5);
-                int x = random.nextInt(SIZE + 40) - 20 - count / 2;
-                int y = random.nextInt(SIZE + 20) - 10;
-                int[] run = new int[at + count];
-                d.getRun(x, y, count, run, at);
-                for (int i = 0; i < count; i++) {
-                    assertEquals(d.getPixel(x + i, y), run[at + i], d.getClass().getSimpleName() + " at " + (x + i) + "," + y);
-                }
-            }
-        }
-        assertEquals(new TreeSet<>(List.of("ImageDrawable", "PanelDrawable")), checked);
-    }
-
-    @Test
-    void everyDrawableThatReadsRunsWholeIsCheckedHere() throws IOException {
-        TreeSet<String> found = new TreeSet<>();
-        try (Stream<Path> files = Files.walk(Path.of("src/main/java"))) {
-            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
-                if (Files.readString(file).contains("public void getRun(")) {
-                    found.add(file.getFileName().toString().replace(".java", ""));
-                }
-            }
-        }
-        assertEquals(new TreeSet<>(List.of("ImageDrawable", "PanelDrawable")), found,
-                "a drawable that reads runs whole must read what its getPixel reads: check it in aReadRunIsItsPixelsOneByOne");
-    }
-
     private static List<RecordingDrawable.Write> writes(RecordingDrawable d) {
         return new ArrayList<>(d.writes());
     }
