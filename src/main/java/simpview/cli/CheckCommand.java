@@ -1,5 +1,8 @@
 package simpview.cli;
 
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -15,6 +18,7 @@ import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.pages.PageContext;
 import simpview.surface.DrawingThreads;
 
 /**
@@ -37,7 +41,7 @@ import simpview.surface.DrawingThreads;
         exitCodeList = {"0:every picture found passes",
             "1:some picture fails or cannot be read, no picture was found, or a scene error",
             "2:usage error"})
-final class CheckCommand implements Callable<Integer> {
+public final class CheckCommand implements Callable<Integer> {
 
     @Spec
     private CommandSpec spec;
@@ -70,8 +74,13 @@ final class CheckCommand implements Callable<Integer> {
     private int deviation = Comparison.DEFAULT_DEVIATION;
 
     @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
-            description = "exact, or blur (default: exact)")
+            description = "exact, blur or flip (see compare --help; default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
+
+    @Option(names = "--flip-threshold", paramLabel = "F", converter = CompareOptions.FlipThreshold.class,
+            description = "with --metric flip: the FLIP value, 0 to 1, at or below which a pixel matches (default: 0.13, "
+                    + "just above a flat 8/255 difference on mid grey)")
+    private Double flipThreshold;
 
     @Option(names = "--rubric", paramLabel = "F.json", description = "the course's rubric, if it gives you one")
     private Path rubric;
@@ -85,18 +94,30 @@ final class CheckCommand implements Callable<Integer> {
     @Mixin
     private ThreadsOption threads;
 
+    /** The rubric a folder carries for itself, used when --rubric does not name one. */
+    static final String FOLDER_RUBRIC = "compare.json";
+
     @Override
     public Integer call() {
         if (pages != null && scene != null) {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
         pictures.check(scene);
+        if (flipThreshold != null && metric != Comparison.Metric.FLIP && rubric == null) {
+            throw new ParameterException(spec.commandLine(), "--flip-threshold goes with --metric flip (or a rubric whose "
+                    + "rules use it)");
+        }
         Rubric judged;
+        Path rules = rubric != null ? rubric : Files.isRegularFile(dir.resolve(FOLDER_RUBRIC)) ? dir.resolve(FOLDER_RUBRIC) : null;
         try {
-            judged = CompareCommand.rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(tolerance, min, deviation, metric,
+                    flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold));
         } catch (CompareException e) {
             spec.commandLine().getErr().println("simpview check: " + e.getMessage());
             return ExitCode.USAGE_ERROR;
+        }
+        if (rubric == null && rules != null) {
+            spec.commandLine().getErr().println("rubric: " + rules + " (the folder's own)");
         }
         try (DrawingThreads drawing = threads.open()) {
             OwnPictures own = pictures.ownPictures(parent.ownScenes(),
@@ -107,7 +128,39 @@ final class CheckCommand implements Callable<Integer> {
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }
-            return batch.pages(dir, pages != null ? pages : new CompareOptions.PageRangeConverter().convert("1-8"), outputs);
+            return batch.folder(dir, pages != null ? pages : ALL_PAGES, outputs);
         }
+    }
+
+    private static final CompareOptions.PageRange ALL_PAGES = new CompareOptions.PageRangeConverter().convert("1-8");
+
+    /**
+     * A folder dropped on the window: {@code simpview check FOLDER} with the window's seed and scene folder
+     * and today's defaults, the folder's own compare.json as the rubric and its scenes with their pictures;
+     * the table as check prints it (or, when there is none, what went wrong). Runs on the caller's thread.
+     */
+    public static String checkFolder(Path folder, PageContext context) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        PrintWriter errors = new PrintWriter(err, true);
+        Path rules = Files.isRegularFile(folder.resolve(FOLDER_RUBRIC)) ? folder.resolve(FOLDER_RUBRIC) : null;
+        Rubric judged;
+        try {
+            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(8, 99, Comparison.DEFAULT_DEVIATION,
+                    Comparison.Metric.EXACT));
+        } catch (CompareException e) {
+            return e.getMessage() + "\n";
+        }
+        try (DrawingThreads drawing = DrawingThreads.one()) {
+            OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
+            CompareBatch batch = new CompareBatch(own, judged, false, new PrintWriter(out, true), errors);
+            batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
+                    CompareBatch.DiffImages.NONE));
+        }
+        String table = out.toString();
+        if (table.isEmpty() || err.toString().contains("no pictures (")) {
+            return "No pictures (.png, .jpg, .gif, .bmp) in " + folder + ".\n";
+        }
+        return (rules == null ? "" : "rubric: " + rules.getFileName() + " (the folder's own)\n") + table;
     }
 }

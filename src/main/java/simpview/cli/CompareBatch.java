@@ -2,6 +2,7 @@ package simpview.cli;
 
 import simpview.compare.PngFiles;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -40,6 +41,11 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
+import simpview.compare.PanelGridComparison;
+import simpview.pages.A1Layout;
+import simpview.pages.Assignment1;
+import simpview.pages.LineTestPage;
+import simpview.pages.Page;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
@@ -55,8 +61,15 @@ public final class CompareBatch {
     static final String DIFFS = "diffs";
     private static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
 
-    /** What a picture's name matched: a target, or why it was skipped. */
-    private record Match(CompareTarget target, String skipped) {
+    /**
+     * What a picture's name matched: a target, a page of the first assignment (compared panel by
+     * panel), or why it was skipped.
+     */
+    private record Match(CompareTarget target, String skipped, int firstAssignmentPage) {
+
+        Match(CompareTarget target, String skipped) {
+            this(target, skipped, 0);
+        }
     }
 
     /** A reference a picture may match: simpview's own (name "") or an accepted alternate. */
@@ -100,20 +113,62 @@ public final class CompareBatch {
             OptionalInt n = SubmissionNames.pageNumber(name);
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
-        return run(dir, outputs, wanted, namer, name -> {
-            OptionalInt number = SubmissionNames.pageNumber(name);
-            if (number.isPresent() && SubmissionNames.namesFirstAssignment(name)) {
-                return new Match(null, "a first-assignment page by its name: compare it alone, with "
-                        + "compare " + name + " --assignment 1 --page " + number.getAsInt()
-                        + " (the batch does not compare those yet)");
+        return run(dir, outputs, wanted, namer, relative -> pageMatch(relative, pages));
+    }
+
+    /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
+    private static Match pageMatch(String relative, PageRange pages) {
+        String name = fileName(relative);
+        OptionalInt number = SubmissionNames.pageNumber(name);
+        if (number.isPresent() && namesFirstAssignment(relative)) {
+            if (number.getAsInt() > Assignment1.COUNT) {
+                return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not "
+                        + number.getAsInt());
             }
-            if (number.isEmpty()) {
-                return new Match(null, "no page number in the name (expected a name like page3.png)");
+            return new Match(null, null, number.getAsInt());
+        }
+        if (number.isEmpty()) {
+            return new Match(null, "no page number in the name (expected a name like page3.png)");
+        }
+        if (!pages.contains(number.getAsInt())) {
+            return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
+        }
+        return new Match(CompareTarget.page(number.getAsInt()), null);
+    }
+
+    /**
+     * A student's folder as {@code check DIR} (and a folder dropped on the window) takes it: a picture whose
+     * name names a scene of the folder itself (house.png beside house.simp) is compared with that scene;
+     * any other with the page its name names, as {@link #pages} does. Without scenes in the folder it is
+     * {@link #pages} exactly. The pages asked for (reported missing) are {@code pages}; the folder's
+     * scenes asked for are those a picture matched or the rubric names.
+     */
+    int folder(Path dir, PageRange pages, Outputs outputs) {
+        Map<String, Path> scenes = Files.isDirectory(dir) ? scenesIn(dir) : Map.of();
+        if (scenes.isEmpty()) {
+            return pages(dir, pages, outputs);
+        }
+        List<CompareTarget> wanted = new ArrayList<>();
+        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+            if (pages.contains(p)) {
+                wanted.add(CompareTarget.page(p));
             }
-            if (!pages.contains(number.getAsInt())) {
-                return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
+        }
+        scenes.entrySet().stream()
+                .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
+                .forEach(e -> wanted.add(CompareTarget.scene(e.getValue())));
+        Function<String, Optional<String>> namer = name -> {
+            Optional<String> scene = SubmissionNames.sceneName(name, scenes.keySet());
+            if (scene.isPresent()) {
+                return scene;
             }
-            return new Match(CompareTarget.page(number.getAsInt()), null);
+            OptionalInt n = SubmissionNames.pageNumber(name);
+            return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
+        };
+        return run(dir, outputs, wanted, namer, relative -> {
+            Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
+            return named.map(name -> new Match(CompareTarget.scene(scenes.get(name)), null))
+                    .orElseGet(() -> pageMatch(relative, pages));
         });
     }
 
@@ -121,7 +176,7 @@ public final class CompareBatch {
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
             return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
-                    name -> new Match(CompareTarget.scene(scene), null));
+                    relative -> new Match(CompareTarget.scene(scene), null));
         }
         if (!Files.isDirectory(scene)) {
             err.println("simpview compare: --scene " + scene + ": no such file or folder");
@@ -137,8 +192,8 @@ public final class CompareBatch {
         List<CompareTarget> wanted = scenes.entrySet().stream()
                 .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
                 .map(e -> CompareTarget.scene(e.getValue())).toList();
-        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), name -> {
-            Optional<String> named = SubmissionNames.sceneName(name, scenes.keySet());
+        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
+            Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
         });
@@ -156,11 +211,13 @@ public final class CompareBatch {
         long start = System.nanoTime();
         List<Match> matches = new ArrayList<>();
         for (Path picture : pictures) {
-            matches.add(matcher.apply(picture.getFileName().toString()));
+            matches.add(matcher.apply(dir.relativize(picture).toString()));
         }
         Map<CompareTarget, Object> drawn = drawAll(matches);
+        Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<Reference>> alternates = alternatesOf(drawn.keySet(), namer);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, alternates, outputs.outDir(), outputs.diffs());
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, outputs.outDir(),
+                outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
@@ -174,6 +231,11 @@ public final class CompareBatch {
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
+        }
+        for (int page : new java.util.TreeSet<>(firstAssignment.keySet())) {
+            for (int k = 1; k <= A1Layout.PANELS; k++) {
+                asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
+            }
         }
         return writeResults(rows, asked, outputs, seconds);
     }
@@ -245,34 +307,54 @@ public final class CompareBatch {
         return drawn;
     }
 
+    /** The first assignment's pages the pictures need, drawn once each (they read no files). */
+    private Map<Integer, BufferedImage> drawFirstAssignment(List<Match> matches) {
+        // concurrent: a picture named like one of the eight pages that holds a first-assignment page adds its page
+        Map<Integer, BufferedImage> drawn = new java.util.concurrent.ConcurrentHashMap<>();
+        for (Match match : matches) {
+            if (match.firstAssignmentPage() > 0) {
+                drawn.computeIfAbsent(match.firstAssignmentPage(), p -> Assignment1.render(p, own.context()));
+            }
+        }
+        return drawn;
+    }
+
     /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Object> drawn, Map<CompareTarget, List<Reference>> alternates, Path outDir,
-            DiffImages diffs) {
+            Map<CompareTarget, Object> drawn, Map<Integer, BufferedImage> firstAssignment,
+            Map<CompareTarget, List<Reference>> alternates, Path outDir, DiffImages diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
                 task -> new Thread(task, "simpview-compare-" + named.incrementAndGet()));
         AtomicInteger finished = new AtomicInteger();
         try {
-            List<Future<BatchRow>> rows = new ArrayList<>();
+            List<Future<List<BatchRow>>> rows = new ArrayList<>();
             for (int i = 0; i < pictures.size(); i++) {
                 Path picture = pictures.get(i);
                 Match match = matches.get(i);
                 rows.add(workers.submit(() -> {
                     String relative = dir.relativize(picture).toString();
-                    BatchRow row = match.target() == null ? BatchRow.skipped(relative, match.skipped())
-                            : compare(picture, relative, match.target(), drawn.get(match.target()),
-                                    alternates.get(match.target()), outDir, diffs);
-                    synchronized (err) {
-                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(row));
+                    List<BatchRow> made;
+                    if (match.firstAssignmentPage() > 0) {
+                        int page = match.firstAssignmentPage();
+                        made = compareFirstAssignment(relative, page, firstAssignment.get(page), outDir, diffs,
+                                ours -> PanelGridComparison.cut(picture, ours, firstAssignmentPanels()));
+                    } else if (match.target() == null) {
+                        made = List.of(BatchRow.skipped(relative, match.skipped()));
+                    } else {
+                        made = compareRead(picture, relative, match.target(), drawn.get(match.target()),
+                                alternates.get(match.target()), firstAssignment, outDir, diffs);
                     }
-                    return row;
+                    synchronized (err) {
+                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(made));
+                    }
+                    return made;
                 }));
             }
             List<BatchRow> done = new ArrayList<>();
-            for (Future<BatchRow> row : rows) {
-                done.add(row.get());
+            for (Future<List<BatchRow>> row : rows) {
+                done.addAll(row.get());
             }
             return done;
         } catch (InterruptedException e) {
@@ -283,6 +365,48 @@ public final class CompareBatch {
         } finally {
             workers.shutdownNow();
         }
+    }
+
+    /**
+     * A picture matched to one of the eight pages by its name. When that page's number is also one of the
+     * first assignment's and the picture holds a first-assignment page (four framed 300x300 panels: a capture
+     * named page2.png), it is compared as that, panel by panel; else as the page it names.
+     */
+    private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Object ours,
+            List<Reference> alternates, Map<Integer, BufferedImage> firstAssignment, Path outDir, DiffImages diffs) {
+        if (!target.isPage() || target.page() > Assignment1.COUNT || ours instanceof String) {
+            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+        }
+        Picture theirs;
+        try {
+            theirs = Picture.read(file);
+        } catch (CompareException e) {
+            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+        }
+        int page = target.page();
+        if (PanelGridComparison.holds(theirs, 2 * A1Layout.PANEL + 3 * A1Layout.MARGIN, firstAssignmentPanels())) {
+            BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
+            return compareFirstAssignment(relative, page, first, outDir, diffs,
+                    mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
+        }
+        return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, theirs));
+    }
+
+    /** How a first-assignment picture is cut beside simpview's page (its file read, or a picture already read). */
+    private interface Cutter {
+        PanelGridComparison.Cut cut(BufferedImage ours) throws CompareException;
+    }
+
+    /** One picture's progress line: its row's result, or of a page of panels the worst panel's. */
+    private static String progress(List<BatchRow> rows) {
+        if (rows.size() == 1) {
+            return progress(rows.get(0));
+        }
+        BatchRow worst = rows.stream().filter(BatchRow::compared)
+                .min(java.util.Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
+        long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
+        return (passing == rows.size() ? "PASS" : "FAIL") + " " + passing + " of " + rows.size() + " panels; lowest "
+                + Percent.of(worst.verdict()) + " (" + worst.target() + ")";
     }
 
     private static String progress(BatchRow row) {
@@ -298,17 +422,19 @@ public final class CompareBatch {
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
-            Path outDir, DiffImages diffs) {
+            Path outDir, DiffImages diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
             return BatchRow.broken(relative, label, problem, rule);
         }
-        Picture theirs;
-        try {
-            theirs = Picture.read(file);
-        } catch (CompareException e) {
-            return BatchRow.broken(relative, label, e.getMessage(), rule);
+        Picture theirs = read;
+        if (theirs == null) {
+            try {
+                theirs = Picture.read(file);
+            } catch (CompareException e) {
+                return BatchRow.broken(relative, label, e.getMessage(), rule);
+            }
         }
         List<Reference> references = new ArrayList<>();
         references.add(new Reference("", ((Picture) ours).panel()));
@@ -316,7 +442,7 @@ public final class CompareBatch {
         ComparisonReport best = null;
         String bestName = "";
         for (Reference reference : references) {
-            Comparison comparison = Comparison.of(reference.panel(), theirs.panel(), rule.deviation(), rule.metric());
+            Comparison comparison = rule.compare(reference.panel(), theirs.panel(), Comparison.N);
             ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
             if (best == null || report.passes()) {
                 best = report;
@@ -340,9 +466,99 @@ public final class CompareBatch {
         return BatchRow.compared(relative, label, best, diff, rule, score, bestName);
     }
 
+    /** The panels of the first assignment's pages, in page coordinates. */
+    static PanelGridComparison.Panel[] firstAssignmentPanels() {
+        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
+        }
+        return panels;
+    }
+
+    /** E.g. "A1 page 1 panel 4 (antialiased)", "A1 page 3 (seed 361) panel 1 (DDA)", "A1 page 4 panel 2". */
+    private String firstAssignmentLabel(int page, int panel) {
+        Page shown = Assignment1.page(page);
+        return "A1 page " + page + (shown.usesSeed() ? " (seed " + own.context().seed() + ")" : "") + " panel " + panel
+                + (shown instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
+    }
+
+    /**
+     * A panel's rule: the rubric's rule for "a1-page2-panel4" (a pattern like "a1-*-panel4" picks out the
+     * antialiased panels); when no rule of the rubric names it, the defaults without slack, as
+     * {@code compare --assignment 1} judges: which pixels a line drawer lights is the point.
+     */
+    private RubricRule firstAssignmentRule(int page, int panel) {
+        RubricRule rule = rubric.ruleFor("a1-page" + page + "-panel" + panel, 0);
+        if (!"*".equals(rule.match())) {
+            return rule;
+        }
+        return new RubricRule(rule.match(), rule.tolerance(), 0, rule.minShare(), rule.maxFailing(), rule.points(),
+                rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(), rule.flipThreshold());
+    }
+
+    /**
+     * A picture of one of the first assignment's pages, panel by panel against simpview's page: one row per
+     * panel, or one ERROR row when it cannot be read or holds no such page. Thread-safe.
+     */
+    private List<BatchRow> compareFirstAssignment(String relative, int page, BufferedImage ours, Path outDir,
+            DiffImages diffs, Cutter cutter) {
+        PanelGridComparison.Cut cut;
+        try {
+            cut = cutter.cut(ours);
+        } catch (CompareException e) {
+            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page, 1).replaceFirst(" panel .*", ""),
+                    e.getMessage(), firstAssignmentRule(page, 1)));
+        }
+        List<BatchRow> rows = new ArrayList<>();
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            RubricRule rule = firstAssignmentRule(page, k);
+            Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
+            String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
+                    + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
+                    + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page";
+            double score = rule.score(comparison, partial);
+            boolean passes = rule.passes(comparison);
+            String label = firstAssignmentLabel(page, k);
+            if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && passes) {
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note));
+                continue;
+            }
+            String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "")
+                    + "-panel" + k + "-diff.png";
+            try {
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), outDir.resolve(diff));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
+            } catch (IOException e) {
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", "diff not written: " + e.getMessage()));
+            }
+        }
+        return rows;
+    }
+
+    /** The file name of a path relative to the submissions folder. */
+    private static String fileName(String relative) {
+        Path name = Path.of(relative).getFileName();
+        return name == null ? relative : name.toString();
+    }
+
+    /**
+     * Whether a picture is one of the first assignment's pages: its file name says so (a1-page2.png,
+     * a1page2.png, assignment1_page2.png) or a folder on its way does (a1/page2.png, the course's own
+     * captures' folder).
+     */
+    static boolean namesFirstAssignment(String relative) {
+        for (Path part : Path.of(relative)) {
+            if (SubmissionNames.namesFirstAssignment(part.toString())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
         RubricRule base = rubric.defaults();
-        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation());
+        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation(), base.metric(),
+                base.flipThreshold());
         Path outDir = outputs.outDir();
         try {
             if (outDir != null) {

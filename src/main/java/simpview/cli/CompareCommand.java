@@ -25,7 +25,6 @@ import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
-import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
@@ -108,9 +107,15 @@ public final class CompareCommand implements Callable<Integer> {
     private int deviation = Comparison.DEFAULT_DEVIATION;
 
     @Option(names = "--metric", paramLabel = "M", converter = CompareOptions.MetricConverter.class,
-            description = "exact, or blur: both panels blurred (3x3 binomial) first, forgiving another antialiasing "
-                    + "(default: exact)")
+            description = "exact; blur: both panels blurred (3x3 binomial) first; or flip: a pixel matches when its "
+                    + "perceptual difference (LDR-FLIP, 67 pixels per degree) is at most --flip-threshold, forgiving another "
+                    + "antialiasing (default: exact)")
     private Comparison.Metric metric = Comparison.Metric.EXACT;
+
+    @Option(names = "--flip-threshold", paramLabel = "F", converter = CompareOptions.FlipThreshold.class,
+            description = "with --metric flip: the FLIP value, 0 to 1, at or below which a pixel matches (default: 0.13, "
+                    + "just above a flat 8/255 difference on mid grey)")
+    private Double flipThreshold;
 
     @Option(names = "--rubric", paramLabel = "F.json",
             description = "with --dir: per page or pattern, the tolerance, deviation, minimum share, failing-pixel "
@@ -153,7 +158,7 @@ public final class CompareCommand implements Callable<Integer> {
             if (dir != null) {
                 Rubric judged;
                 try {
-                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric));
+                    judged = rubricOf(rubric, RubricRule.defaults(tolerance, min, deviation, metric, flipThreshold()));
                 } catch (CompareException e) {
                     err().println("simpview compare: " + e.getMessage());
                     return ExitCode.USAGE_ERROR;
@@ -193,7 +198,13 @@ public final class CompareCommand implements Callable<Integer> {
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
+        usage(flipThreshold == null || metric == Comparison.Metric.FLIP || rubric != null,
+                "--flip-threshold goes with --metric flip (or a rubric whose rules use it)");
         pictures.check(scene);
+    }
+
+    private double flipThreshold() {
+        return flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold;
     }
 
     private void usage(boolean fine, String message) {
@@ -212,7 +223,7 @@ public final class CompareCommand implements Callable<Integer> {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         }
-        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric);
+        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
@@ -231,15 +242,13 @@ public final class CompareCommand implements Callable<Integer> {
 
     /** The first assignment's page beside the picture, panel by panel: the verdict passes when every panel does. */
     private int compareAssignment1() {
-        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
-        for (int k = 1; k <= A1Layout.PANELS; k++) {
-            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
-        }
+        PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
         PageContext context = context();
         Page shown = Assignment1.page(page);
         PanelGridComparison comparison;
         try {
-            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric);
+            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric,
+                    flipThreshold());
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
@@ -252,7 +261,14 @@ public final class CompareCommand implements Callable<Integer> {
         if (metric == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }
-        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", "within " + tolerance + "/255");
+        boolean flip = metric == Comparison.Metric.FLIP;
+        String within = flip ? String.format(Locale.ROOT, "FLIP <= %.3f", flipThreshold())
+                : "within " + tolerance + "/255";
+        if (flip) {
+            out.println("metric:  FLIP (LDR, 67 pixels per degree) of each panel: a pixel matches at FLIP "
+                    + String.format(Locale.ROOT, "%.3f", flipThreshold()) + " or less");
+        }
+        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", within);
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {
             PanelGridComparison.PanelShares shares = comparison.shares(k);
@@ -260,8 +276,8 @@ public final class CompareCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", what, 100 * shares.identical(), 100 * shares.within());
             passes &= 100 * shares.within() >= min;
         }
-        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% within %d/255 (no slack)%n", passes ? "PASS" : "FAIL",
-                passes ? "reaches" : "must reach", min, tolerance);
+        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
+                passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 

@@ -48,6 +48,23 @@ public final class CompareOptions {
         }
     }
 
+    /** A FLIP value, 0 to 1: {@code 0.13}. */
+    static final class FlipThreshold implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            try {
+                double value = Double.parseDouble(text.trim());
+                if (value >= 0 && value <= 1) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // said below
+            }
+            throw new TypeConversionException("'" + text + "' is not a FLIP threshold: expected a value from 0 to 1, "
+                    + "e.g. 0.13");
+        }
+    }
+
     /** A position deviation in pixels: 0, 1 or 2. */
     static final class Deviation implements ITypeConverter<Integer> {
         @Override
@@ -79,14 +96,15 @@ public final class CompareOptions {
         }
     }
 
-    /** The metric: exact or blur. */
+    /** The metric: exact, blur or flip. */
     static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
         @Override
         public simpview.compare.Comparison.Metric convert(String text) {
             return switch (text.trim().toLowerCase(Locale.ROOT)) {
                 case "exact" -> simpview.compare.Comparison.Metric.EXACT;
                 case "blur" -> simpview.compare.Comparison.Metric.BLUR;
-                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact or blur");
+                case "flip" -> simpview.compare.Comparison.Metric.FLIP;
+                default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact, blur or flip");
             };
         }
     }

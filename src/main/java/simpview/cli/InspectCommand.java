@@ -9,10 +9,13 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
+import simpview.inspect.A1Inspector;
+import simpview.inspect.A1Report;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
+import simpview.pages.Assignment1;
 import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -24,17 +27,21 @@ import simpview.surface.Rgb;
         description = {"Explains one pixel of a page or scene: every write attempted at it in drawing order "
                 + "(primitive, include chain, depth, colour, what became of it), how its colour was made, "
                 + "and the vertices of the primitive that drew it through every space.",
-            "X,Y are panel coordinates: x right, y up from the panel's bottom-left pixel, 0 to 649."},
+            "X,Y are panel coordinates: x right, y up from the panel's bottom-left pixel, 0 to 649; "
+                + "with --assignment 1, page coordinates: x right, y up from the page's bottom-left pixel, 0 to 749 "
+                + "(the report names the panel)."},
         footer = {"", "Examples:",
             "  simpview inspect --page 7 --simp-dir course/ --at 325,325",
             "  simpview inspect --scene ../shared/course-simp-a4/page-d.simp --at 300,280 --explain",
-            "  simpview inspect --scene pageI.simp --at 320,300 --history --json"},
+            "  simpview inspect --scene pageI.simp --at 320,300 --history --json",
+            "  simpview inspect --assignment 1 --page 1 --at 540,200 --json"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error", "2:usage error (a pixel outside the panel, too)"})
 final class InspectCommand implements Callable<Integer> {
 
     static final class What {
-        @Option(names = "--page", paramLabel = "N", required = true, description = "page 4 to 8 (the scene pages)")
+        @Option(names = "--page", paramLabel = "N", required = true,
+                description = "page 4 to 8 (the scene pages); with --assignment 1, page 1 to 5")
         Integer page;
 
         @Option(names = "--scene", paramLabel = "F.simp", required = true,
@@ -51,7 +58,13 @@ final class InspectCommand implements Callable<Integer> {
     @ArgGroup(exclusive = true, multiplicity = "1")
     private What what;
 
-    @Option(names = "--at", paramLabel = "X,Y", required = true, description = "the pixel, in panel coordinates")
+    @Option(names = "--assignment", paramLabel = "A",
+            description = "whose pages --page means: 1 (the first assignment's five pages, --at in page coordinates) "
+                    + "or 2 (the eight pages; default)")
+    private Integer assignment;
+
+    @Option(names = "--at", paramLabel = "X,Y", required = true,
+            description = "the pixel, in panel coordinates (--assignment 1: page coordinates)")
     private String at;
 
     @Option(names = "--history", description = "every write attempted at the pixel, in drawing order")
@@ -85,7 +98,13 @@ final class InspectCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        int[] xy = pixel();
+        usage(assignment == null || assignment == 1 || assignment == 2,
+                "--assignment must be 1 or 2 (the later assignments' pages are scenes: use --scene), not " + assignment);
+        usage(assignment == null || what.page != null, "--assignment goes with --page");
+        if (assignment != null && assignment == 1) {
+            return firstAssignment();
+        }
+        int[] xy = pixel(PageCanvas.PANEL - 1, "panel");
         usage(primitive == null || vertices, "--primitive goes with --vertices");
         usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
@@ -131,21 +150,43 @@ final class InspectCommand implements Callable<Integer> {
         }
     }
 
-    /** X,Y from --at, inside the panel. */
-    private int[] pixel() {
+    /** {@code --assignment 1 --page N}: the history of a page pixel, blends and all. */
+    private Integer firstAssignment() {
+        int[] xy = pixel(PageCanvas.SIZE - 1, "page");
+        usage(what.page >= 1 && what.page <= Assignment1.COUNT,
+                "--page must be 1 to " + Assignment1.COUNT + " for the first assignment, not " + what.page);
+        usage(!vertices && primitive == null, "--vertices and --primitive are for scenes: the first assignment's "
+                + "pages are drawn in panel coordinates, and the history names each line's or triangle's vertices");
+        usage(simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
+        usage(near == null && far == null, "--near-color and --far-color go with --scene only");
+        long chosen = PageDrawing.context(parent.ownScenes(), seed, null, PageDrawing.warningsTo(err())).seed();
+        A1Report report = A1Inspector.inspect(what.page, chosen, xy[0], xy[1]);
+        PrintWriter out = spec.commandLine().getOut();
+        boolean all = !history && !explain;
+        if (json) {
+            out.println(report.json(history || all, explain || all));
+        } else {
+            out.print(report.text(history || all, explain || all));
+        }
+        out.flush();
+        return ExitCode.OK;
+    }
+
+    /** X,Y from --at, inside the panel (or the page). */
+    private int[] pixel(int last, String where) {
         String[] parts = at.split(",", -1);
         int[] xy = new int[2];
-        usage(parts.length == 2, "--at takes X,Y (two whole numbers, panel coordinates), not '" + at + "'");
+        usage(parts.length == 2, "--at takes X,Y (two whole numbers, " + where + " coordinates), not '" + at + "'");
         for (int k = 0; k < 2; k++) {
             try {
                 xy[k] = Integer.parseInt(parts[k].strip());
             } catch (NumberFormatException e) {
-                usage(false, "--at takes X,Y (two whole numbers, panel coordinates), not '" + at + "'");
+                usage(false, "--at takes X,Y (two whole numbers, " + where + " coordinates), not '" + at + "'");
             }
         }
-        int last = PageCanvas.PANEL - 1;
         usage(xy[0] >= 0 && xy[0] <= last && xy[1] >= 0 && xy[1] <= last, "--at " + at
-                + " is outside the panel: x and y are 0 to " + last + ", from the panel's bottom-left pixel, y up");
+                + " is outside the " + where + ": x and y are 0 to " + last + ", from the " + where
+                + "'s bottom-left pixel, y up");
         return xy;
     }
 

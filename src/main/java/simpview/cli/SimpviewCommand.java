@@ -119,7 +119,7 @@ public final class SimpviewCommand implements Callable<Integer> {
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
                 sceneList(), ownScenes, threads.count());
-        SwingUtilities.invokeLater(() -> SimpviewWindow.open(options));
+        SwingUtilities.invokeLater(() -> SimpviewWindow.open(options).checkFoldersWith(CheckCommand::checkFolder));
         openedWindow = true;
         return ExitCode.OK;
     }

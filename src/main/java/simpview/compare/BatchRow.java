@@ -20,10 +20,11 @@ import java.util.List;
  * @param failing pixels beyond the tolerance even with slack (0 when not compared)
  * @param regions the largest of those patches, largest first
  * @param alternate the accepted alternate picture it matched best, relative to its folder, or "" for simpview's own
+ * @param size the side of the panel compared, in pixels: 650 for a page, 300 for a panel of the first assignment's
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
-        List<DiffRegion> regions, String alternate) {
+        List<DiffRegion> regions, String alternate, int size) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -38,7 +39,19 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return new BatchRow(file, target, report.comparison().exact(), report.comparison().withSlack(),
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
-                report.regions().pixels(), report.regions().largest(), alternate);
+                report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size());
+    }
+
+    /**
+     * One panel of a page of several (the first assignment's four), compared under {@code rule}: no margins of
+     * its own (the page was found by the white rings around its panels).
+     */
+    public static BatchRow panel(String file, String target, Comparison comparison, RubricRule rule, double score,
+            String diff, String note) {
+        DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
+        return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
+                comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
+                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size());
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -47,17 +60,27 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "");
+                List.of(), "", Comparison.N);
     }
 
     public static BatchRow skipped(String file, String why) {
-        return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "");
+        return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
+                Comparison.N);
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate);
+                regions, alternate, size);
+    }
+
+    /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */
+    public String verdictName() {
+        if (rule.metric() == Comparison.Metric.FLIP) {
+            return String.format(java.util.Locale.ROOT, "within FLIP %.3f", rule.flipThreshold());
+        }
+        return "within " + rule.tolerance() + "/255 " + (rule.deviation() == 0 ? "without slack"
+                : "with " + rule.deviation() + " px slack") + (rule.metric() == Comparison.Metric.BLUR ? ", blurred" : "");
     }
 
     /** Whether it was compared (PASS or FAIL). */

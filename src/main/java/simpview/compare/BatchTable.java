@@ -6,7 +6,8 @@ import java.util.List;
 public final class BatchTable {
 
     private static final String[] HEADINGS = {"file", "page", "identical", "within 1/255", "within 8/255",
-        "identical (slack)", "within 1/255 (slack)", "within 8/255 (slack)", "result", "margins", "diff", "note"};
+        "identical (slack)", "within 1/255 (slack)", "within 8/255 (slack)", "judged share", "result", "margins", "diff",
+        "note"};
 
     private BatchTable() {
     }
@@ -17,10 +18,21 @@ public final class BatchTable {
 
     /** The table, its heading saying the tolerance, minimum and slack ({@code deviation} pixels) the rows are judged by. */
     public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation) {
+        return markdown(rows, tolerance, minimum, deviation, Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
+    }
+
+    /** The same, judged by {@code metric}: with FLIP the judged share is that of pixels at most FLIP's threshold. */
+    public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation,
+            Comparison.Metric metric, double flipThreshold) {
         StringBuilder out = new StringBuilder();
         String slack = deviation == 0 ? "no slack" : deviation == 1 ? "one pixel of slack" : deviation + " pixels of slack";
-        out.append(String.format("Shares of panel pixels in percent; the result is on the share within %d/255 with "
-                + "%s, %s needed.%n%n", tolerance, slack, Percent.of(minimum / 100)));
+        String judged = metric == Comparison.Metric.FLIP
+                ? String.format(java.util.Locale.ROOT, "FLIP at most %.3f (the shares are colour distances)",
+                        flipThreshold)
+                : String.format("within %d/255 with %s%s", tolerance, slack,
+                        metric == Comparison.Metric.BLUR ? ", both panels blurred" : "");
+        out.append(String.format("Shares of panel pixels in percent; the result is on the judged share: %s, %s "
+                + "needed.%n%n", judged, Percent.of(minimum / 100)));
         if (rows.stream().anyMatch(r -> r.rule() != null && !"*".equals(r.rule().match()))) {
             out.setLength(out.length() - System.lineSeparator().length());
             out.append(String.format("Pages the rubric names are judged by its rules (tolerance, slack, minimum, "
@@ -32,7 +44,7 @@ public final class BatchTable {
         }
         out.append("\n|");
         for (int i = 0; i < HEADINGS.length; i++) {
-            out.append(i >= 2 && i <= 7 ? "---:|" : "---|");
+            out.append(i >= 2 && i <= 8 ? "---:|" : "---|");
         }
         out.append('\n');
         for (BatchRow row : rows) {
@@ -66,8 +78,11 @@ public final class BatchTable {
         for (BatchRow row : rows) {
             counts[row.result().ordinal()]++;
         }
-        return String.format("%d pictures: %d pass, %d fail, %d could not be compared, %d skipped",
-                rows.size(), counts[0], counts[1], counts[2], counts[3]);
+        long files = rows.stream().map(BatchRow::file).distinct().count();
+        // a page of the first assignment is a row per panel
+        String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + (files == 1 ? " picture)" : " pictures)");
+        return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
+                what, counts[0], counts[1], counts[2], counts[3]);
     }
 
     private static List<String> cells(BatchRow row, boolean markdown) {
@@ -80,6 +95,7 @@ public final class BatchTable {
                 shares ? Percent.number(row.slack().identical()) : "",
                 shares ? Percent.number(row.slack().within1()) : "",
                 shares ? Percent.number(row.slack().within8()) : "",
+                shares ? Percent.number(row.verdict()) : "",
                 row.result().name(), row.margins(), diff, row.note());
     }
 

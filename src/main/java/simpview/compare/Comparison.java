@@ -15,6 +15,12 @@ package simpview.compare;
  * the same edge counts as near; {@link #ours()} and {@link #theirs()} stay
  * the pictures as given, for showing.
  *
+ * <p>With {@link Metric#FLIP} the shares are still the colour distances (with
+ * slack) above, but whether a pixel matches is decided by its {@link Flip}
+ * value: at most {@link #FLIP_THRESHOLD}. The verdict's share
+ * ({@link #verdictShare}), the failing pixels and their regions then count
+ * by FLIP, not by the tolerance.
+ *
  * <p>Invariant: slack[i] <= direct[i]. The pixels are read, never kept
  * changed; the arrays here (and the blurred copies) are the only ones made.
  */
@@ -23,8 +29,20 @@ public final class Comparison {
     public static final int N = PanelPlace.SIZE;
     private static final int LEVELS = 256;
 
-    /** How distances are measured: on the pixels as they are, or after a small blur of both panels. */
-    public enum Metric { EXACT, BLUR }
+    /**
+     * How distances are measured: on the pixels as they are, after a small blur of both panels, or
+     * whether a pixel matches is decided by its perceptual difference (LDR-FLIP).
+     */
+    public enum Metric { EXACT, BLUR, FLIP }
+
+    /**
+     * The default FLIP value at or below which a pixel matches: just above the 0.128 FLIP gives inside a flat area
+     * whose colour is the default tolerance, 8/255, off mid grey (0.100 on black, 0.117 near white;
+     * {@link Flip#flat}). So where there is no edge FLIP forgives what the default tolerance forgives, and
+     * along an edge what the eye does not see when the two pictures are flipped between.
+     */
+    public static final double FLIP_THRESHOLD = 0.13;
+    private final double flipThreshold;
 
     /** Today's slack: one pixel. */
     public static final int DEFAULT_DEVIATION = 1;
@@ -33,18 +51,25 @@ public final class Comparison {
 
     private final int[] ours;
     private final int[] theirs;
+    private final int size;
     private final int deviation;
     private final Metric metric;
-    private final byte[] direct = new byte[N * N];
-    private final byte[] slack = new byte[N * N];
+    private final byte[] direct;
+    private final byte[] slack;
     private final int[] directCount = new int[LEVELS];
     private final int[] slackCount = new int[LEVELS];
+    private float[] flip;
+    private int flipFailing;
 
-    private Comparison(int[] ours, int[] theirs, int deviation, Metric metric) {
+    private Comparison(int[] ours, int[] theirs, int size, int deviation, Metric metric, double flipThreshold) {
+        this.flipThreshold = flipThreshold;
         this.ours = ours;
         this.theirs = theirs;
+        this.size = size;
         this.deviation = deviation;
         this.metric = metric;
+        this.direct = new byte[size * size];
+        this.slack = new byte[size * size];
     }
 
     /** Compares two panels of 650x650 0xRRGGBB pixels, row by row from the top, with one pixel of slack. */
@@ -57,29 +82,55 @@ public final class Comparison {
         if (ours.length != N * N || theirs.length != N * N) {
             throw new IllegalArgumentException("panels are 650x650 pixels");
         }
+        return of(ours, theirs, N, deviation, metric, FLIP_THRESHOLD);
+    }
+
+    /** The same, a pixel matching by FLIP at {@code flipThreshold} or less (with {@link Metric#FLIP}). */
+    public static Comparison of(int[] ours, int[] theirs, int deviation, Metric metric, double flipThreshold) {
+        return of(ours, theirs, N, deviation, metric, flipThreshold);
+    }
+
+    /**
+     * Compares two square panels of {@code size} x {@code size} pixels (the first assignment's are 300x300);
+     * with FLIP a pixel matches at {@code flipThreshold} or less (0 to 1).
+     */
+    public static Comparison of(int[] ours, int[] theirs, int size, int deviation, Metric metric, double flipThreshold) {
+        if (!(flipThreshold >= 0 && flipThreshold <= 1)) {
+            throw new IllegalArgumentException("a FLIP threshold is 0 to 1, not " + flipThreshold);
+        }
+        if (size < 1 || ours.length != size * size || theirs.length != size * size) {
+            throw new IllegalArgumentException("both panels must be " + size + "x" + size + " pixels");
+        }
         if (deviation < 0 || deviation > MAX_DEVIATION) {
             throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
         }
-        Comparison c = new Comparison(ours, theirs, deviation, metric);
+        Comparison c = new Comparison(ours, theirs, size, deviation, metric, flipThreshold);
         if (metric == Metric.BLUR) {
-            c.measure(Blur.of(ours), Blur.of(theirs));
+            c.measure(Blur.of(ours, size), Blur.of(theirs, size));
         } else {
             c.measure(ours, theirs);
+        }
+        if (metric == Metric.FLIP) {
+            c.flip = Flip.of(ours, theirs, size, size);
+            for (float v : c.flip) {
+                c.flipFailing += v > flipThreshold ? 1 : 0;
+            }
         }
         return c;
     }
 
     private void measure(int[] ours, int[] theirs) {
         int r = deviation;
-        for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                int i = y * N + x;
+        int n = size;
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int i = y * n + x;
                 int d = Rasters.distance(ours[i], theirs[i]);
                 int s = d;
                 if (d != 0 && r != 0) {
-                    int one = nearest(ours[i], theirs, x, y, r, d, 0);
+                    int one = nearest(ours[i], theirs, n, x, y, r, d, 0);
                     // The other way only matters where it is larger than the first: it may stop at that.
-                    s = one == d ? d : nearest(theirs[i], ours, x, y, r, d, one);
+                    s = one == d ? d : nearest(theirs[i], ours, n, x, y, r, d, one);
                 }
                 direct[i] = (byte) d;
                 slack[i] = (byte) s;
@@ -94,11 +145,11 @@ public final class Comparison {
      * (a square), at most {@code bound}; or, as soon as one is found at or below {@code floor}, the
      * floor (the caller takes the larger of this and the floor, so nothing smaller changes it).
      */
-    private static int nearest(int colour, int[] other, int x, int y, int r, int bound, int floor) {
+    private static int nearest(int colour, int[] other, int n, int x, int y, int r, int bound, int floor) {
         int best = bound;
-        for (int ny = Math.max(0, y - r); ny <= Math.min(N - 1, y + r); ny++) {
-            for (int nx = Math.max(0, x - r); nx <= Math.min(N - 1, x + r); nx++) {
-                best = Math.min(best, Rasters.distance(colour, other[ny * N + nx]));
+        for (int ny = Math.max(0, y - r); ny <= Math.min(n - 1, y + r); ny++) {
+            for (int nx = Math.max(0, x - r); nx <= Math.min(n - 1, x + r); nx++) {
+                best = Math.min(best, Rasters.distance(colour, other[ny * n + nx]));
                 if (best <= floor) {
                     return floor;
                 }
@@ -114,16 +165,47 @@ public final class Comparison {
         for (int level = 0; level <= Math.min(tolerance, LEVELS - 1); level++) {
             within += counts[level];
         }
-        return (double) within / (N * N);
+        return (double) within / (size * size);
     }
 
-    /** How many panel pixels differ by more than {@code tolerance} even with slack. */
+    /**
+     * The share the verdict is on: within {@code tolerance} with slack; with FLIP, the share of pixels
+     * whose FLIP value is at most the threshold.
+     */
+    public double verdictShare(int tolerance) {
+        return metric == Metric.FLIP ? 1 - (double) flipFailing / (size * size) : share(tolerance, true);
+    }
+
+    /** Whether pixel i fails: beyond {@code tolerance} even with slack; with FLIP, above the threshold. */
+    public boolean fails(int i, int tolerance) {
+        return metric == Metric.FLIP ? flip[i] > flipThreshold : (slack[i] & 0xFF) > tolerance;
+    }
+
+    /** Pixel i's FLIP value, 0 to 1; NaN unless the metric is FLIP. */
+    public double flip(int i) {
+        return flip == null ? Double.NaN : flip[i];
+    }
+
+    /** How many panel pixels fail: differ by more than {@code tolerance} even with slack, or with FLIP above its threshold. */
     public int failing(int tolerance) {
+        if (metric == Metric.FLIP) {
+            return flipFailing;
+        }
         int failing = 0;
         for (int level = Math.max(0, tolerance + 1); level < LEVELS; level++) {
             failing += slackCount[level];
         }
         return failing;
+    }
+
+    /** With FLIP, the value at or below which a pixel matches. */
+    public double flipThreshold() {
+        return flipThreshold;
+    }
+
+    /** The panels' side in pixels: 650 for a page's panel. */
+    public int size() {
+        return size;
     }
 
     /** The slack in pixels: the position deviation. */

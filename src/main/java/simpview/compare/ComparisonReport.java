@@ -33,9 +33,19 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                 rule.maxFailing());
     }
 
-    /** The share the verdict is on: within the tolerance, with one pixel of slack. */
+    /** The share the verdict is on: within the tolerance, with slack; with FLIP, at most FLIP's threshold. */
     public double verdictShare() {
-        return comparison.share(tolerance, true);
+        return comparison.verdictShare(tolerance);
+    }
+
+    private boolean flip() {
+        return comparison.metric() == Comparison.Metric.FLIP;
+    }
+
+    /** What the verdict's share counts: "within 8/255 with slack", or "within FLIP 0.130". */
+    public String verdictName() {
+        return flip() ? String.format(java.util.Locale.ROOT, "within FLIP %.3f", comparison.flipThreshold())
+                : "within " + tolerance + "/255 with slack";
     }
 
     public boolean passes() {
@@ -45,7 +55,8 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     /** "with 1 px slack", "with 2 px slack", "without slack"; and " (blurred)" for the perceptual metric. */
     public String slackName() {
         String slack = comparison.deviation() == 0 ? "no slack" : "with " + comparison.deviation() + " px slack";
-        return comparison.metric() == Comparison.Metric.BLUR ? slack + ", blurred" : slack;
+        return comparison.metric() == Comparison.Metric.BLUR ? slack + ", blurred"
+                : flip() ? slack + ", FLIP" : slack;
     }
 
     public String text() {
@@ -58,17 +69,25 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (comparison.metric() == Comparison.Metric.BLUR) {
             out.append("metric:  both panels blurred (3x3 binomial) before they are compared\n");
         }
+        if (flip()) {
+            out.append(String.format(java.util.Locale.ROOT, "metric:  FLIP (LDR, %.0f pixels per degree): a pixel matches "
+                    + "at FLIP %.3f or less; the shares below are colour distances%n", Flip.DEFAULT_PPD,
+                    comparison.flipThreshold()));
+        }
         out.append(String.format("%-22s%12s%18s%n", "panel pixels", "exactly",
                 comparison.deviation() == 0 ? "no slack" : "with " + comparison.deviation() + " px slack"));
         appendRow(out, "identical", exact.identical(), slack.identical());
         appendRow(out, "within 1/255", exact.within1(), slack.within1());
         appendRow(out, "within 8/255", exact.within8(), slack.within8());
-        if (tolerance != 0 && tolerance != 1 && tolerance != 8) {
+        if (flip()) {
+            out.append(String.format("%-22s%12s%18s%n", "within FLIP " + String.format(java.util.Locale.ROOT, "%.3f",
+                    comparison.flipThreshold()), "", Percent.of(verdictShare())));
+        } else if (tolerance != 0 && tolerance != 1 && tolerance != 8) {
             appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());
         }
         appendRegions(out);
-        out.append(String.format("%s: %s within %d/255 with slack (%s needed)%s%n", passes() ? "PASS" : "FAIL",
-                Percent.of(verdictShare()), tolerance, Percent.of(minimum / 100),
+        out.append(String.format("%s: %s %s (%s needed)%s%n", passes() ? "PASS" : "FAIL",
+                Percent.of(verdictShare()), verdictName(), Percent.of(minimum / 100),
                 maxFailing < 0 ? "" : String.format("; %,d pixels fail (at most %,d allowed)", regions.pixels(), maxFailing)));
         return out.toString();
     }
@@ -80,11 +99,13 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     private void appendRegions(StringBuilder out) {
         List<DiffRegion> largest = regions.largest();
         if (largest.isEmpty()) {
-            out.append("no pixel differs by more than ").append(tolerance).append("/255 with slack\n");
+            out.append(flip() ? "no pixel's FLIP value is above the threshold\n"
+                    : "no pixel differs by more than " + tolerance + "/255 with slack\n");
             return;
         }
-        out.append(String.format("%,d pixels in %,d patches differ by more than %d/255 even with slack; the largest%n"
-                + "(panel pixels: origin bottom-left, x right, y up):%n", regions.pixels(), regions.count(), tolerance));
+        out.append(String.format("%,d pixels in %,d patches %s; the largest%n"
+                + "(panel pixels: origin bottom-left, x right, y up):%n", regions.pixels(), regions.count(),
+                flip() ? "have a FLIP value above the threshold" : "differ by more than " + tolerance + "/255 even with slack"));
         for (int k = 0; k < largest.size(); k++) {
             out.append("  ").append(k + 1).append(". ").append(largest.get(k).describe()).append('\n');
         }

@@ -18,14 +18,14 @@ public final class DiffRegions {
     }
 
     public static Found of(Comparison comparison, int tolerance, int keep) {
-        int n = Comparison.N;
+        int n = comparison.size();
         boolean[] seen = new boolean[n * n];
         int[] stack = new int[n * n];
         List<DiffRegion> largest = new ArrayList<>();
         int count = 0;
         int pixels = 0;
         for (int i = 0; i < n * n; i++) {
-            if (!seen[i] && comparison.distanceWithSlack(i) > tolerance) {
+            if (!seen[i] && comparison.fails(i, tolerance)) {
                 DiffRegion region = fill(comparison, tolerance, i, seen, stack);
                 count++;
                 pixels += region.pixels();
@@ -45,7 +45,7 @@ public final class DiffRegions {
 
     /** Floods the patch holding pixel {@code start}; returns its bounds in panel coordinates (y up). */
     private static DiffRegion fill(Comparison comparison, int tolerance, int start, boolean[] seen, int[] stack) {
-        int n = Comparison.N;
+        int n = comparison.size();
         int size = 0;
         int pixels = 0;
         int minX = n;
@@ -66,7 +66,7 @@ public final class DiffRegions {
             for (int r = Math.max(0, row - 1); r <= Math.min(n - 1, row + 1); r++) {
                 for (int c = Math.max(0, x - 1); c <= Math.min(n - 1, x + 1); c++) {
                     int j = r * n + c;
-                    if (!seen[j] && comparison.distanceWithSlack(j) > tolerance) {
+                    if (!seen[j] && comparison.fails(j, tolerance)) {
                         seen[j] = true;
                         stack[size++] = j;
                     }

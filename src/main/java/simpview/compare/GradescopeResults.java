@@ -84,9 +84,8 @@ public final class GradescopeResults {
         }
         RubricRule rule = row.rule();
         StringBuilder out = new StringBuilder();
-        out.append(String.format(Locale.ROOT, "%s: %s of panel pixels within %d/255 with %d px slack (%s needed)",
-                row.result(), Percent.of(row.verdict()), rule.tolerance(), rule.deviation(),
-                Percent.of(rule.minShare() / 100)));
+        out.append(String.format(Locale.ROOT, "%s: %s of panel pixels %s (%s needed)",
+                row.result(), Percent.of(row.verdict()), row.verdictName(), Percent.of(rule.minShare() / 100)));
         if (rule.maxFailing() >= 0) {
             out.append(String.format(Locale.ROOT, "; %,d pixels fail (at most %,d allowed)", row.failing(), rule.maxFailing()));
         }
@@ -100,13 +99,15 @@ public final class GradescopeResults {
         if (row.regions().isEmpty()) {
             out.append("no region differs beyond the tolerance\n");
         } else {
-            out.append(String.format(Locale.ROOT, "%,d pixels differ beyond the tolerance; the largest regions "
+            out.append(String.format(Locale.ROOT, "%,d pixels " + (rule.metric() == Comparison.Metric.FLIP
+                    ? "are above FLIP's threshold" : "differ beyond the tolerance") + "; the largest regions "
                     + "(panel pixels, origin bottom-left, y up):%n", row.failing()));
             for (DiffRegion region : row.regions()) {
                 out.append("  ").append(region.describe()).append('\n');
             }
         }
-        out.append("margins: ").append(row.margins());
+        // a panel of the first assignment's pages has no margins of its own
+        out.append(row.margins().isEmpty() ? row.note() : "margins: " + row.margins());
         if (!row.diff().isEmpty()) {
             out.append("\ndiff image: ").append(row.diff());
         }

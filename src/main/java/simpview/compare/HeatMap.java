@@ -10,7 +10,9 @@ import java.util.Arrays;
  * one sees where one is); pixels that differ but within the tolerance are dark
  * blue; pixels beyond it that match with one pixel of slack (an edge or a line
  * one pixel off) are yellow; pixels beyond the tolerance even with slack are
- * red, the brighter the larger the difference.
+ * red, the brighter the larger the difference. With the FLIP metric, yellow
+ * is a pixel beyond the tolerance that FLIP forgives, and red one above
+ * FLIP's threshold, the brighter the larger its FLIP value.
  */
 public final class HeatMap {
 
@@ -33,6 +35,12 @@ public final class HeatMap {
             int grey = ((rgb >> 16 & 0xFF) + (rgb >> 8 & 0xFF) + (rgb & 0xFF)) / (3 * IDENTICAL_DIM);
             return grey << 16 | grey << 8 | grey;
         }
+        if (c.metric() == Comparison.Metric.FLIP) {
+            if (!c.fails(i, tolerance)) {
+                return d <= tolerance ? WITHIN : SLACK_ONLY;
+            }
+            return (128 + (int) Math.round(c.flip(i) * 127)) << 16;
+        }
         if (d <= tolerance) {
             return WITHIN;
         }
@@ -43,30 +51,35 @@ public final class HeatMap {
         return (128 + s / 2) << 16;
     }
 
-    /** Writes the heat map into {@code into}, 650x650 row by row from the top. */
+    /** The width of a diff image of panels of {@code size} pixels: three panels and two gaps. */
+    public static int diffWidth(int size) {
+        return 3 * size + 2 * GAP;
+    }
+
+    /** Writes the heat map into {@code into}, the panel's size squared, row by row from the top. */
     public static void fill(Comparison c, int tolerance, int[] into) {
-        for (int i = 0; i < Comparison.N * Comparison.N; i++) {
+        for (int i = 0; i < c.size() * c.size(); i++) {
             into[i] = colour(c, i, tolerance);
         }
     }
 
     /** Ours | theirs | heat map, each panel at 1:1, with a grey gap of 10 pixels between them. */
     public static BufferedImage diffImage(Comparison c, int tolerance) {
-        BufferedImage image = new BufferedImage(DIFF_WIDTH, Comparison.N, BufferedImage.TYPE_INT_RGB);
+        BufferedImage image = new BufferedImage(diffWidth(c.size()), c.size(), BufferedImage.TYPE_INT_RGB);
         fillDiff(c, tolerance, ((DataBufferInt) image.getRaster().getDataBuffer()).getData());
         return image;
     }
 
     /** The diff image as PNG file bytes, made without ImageIO (fast to start, fast to deflate). */
     public static byte[] diffPng(Comparison c, int tolerance) {
-        int[] pixels = new int[DIFF_WIDTH * Comparison.N];
+        int[] pixels = new int[diffWidth(c.size()) * c.size()];
         fillDiff(c, tolerance, pixels);
-        return PngCodec.encode(DIFF_WIDTH, Comparison.N, pixels);
+        return PngCodec.encode(diffWidth(c.size()), c.size(), pixels);
     }
 
     private static void fillDiff(Comparison c, int tolerance, int[] out) {
-        int n = Comparison.N;
-        int width = DIFF_WIDTH;
+        int n = c.size();
+        int width = diffWidth(n);
         int[] heat = new int[n * n];
         fill(c, tolerance, heat);
         for (int y = 0; y < n; y++) {

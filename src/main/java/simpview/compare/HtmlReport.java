@@ -89,8 +89,8 @@ public final class HtmlReport {
         h.append("<div id=\"legend\"><b>Heat map:</b> ");
         swatch(h, 0x303030, "identical (simpview's picture, dimmed)");
         swatch(h, HeatMap.WITHIN, "differs within the tolerance");
-        swatch(h, HeatMap.SLACK_ONLY, "beyond it, but matches with slack (an edge one pixel off)");
-        swatch(h, 0xE00000, "differs even with slack (brighter: more)");
+        swatch(h, HeatMap.SLACK_ONLY, "beyond it, but matches with slack (an edge one pixel off), or by FLIP");
+        swatch(h, 0xE00000, "differs even with slack, or above FLIP's threshold (brighter: more)");
         swatch(h, OUTLINE_COLOUR, "outline: the largest regions that differ");
         h.append("</div>\n");
     }
@@ -168,11 +168,11 @@ public final class HtmlReport {
         for (int z : new int[] {1, 2, 4, 8}) {
             h.append("<button type=\"button\" data-zoom=\"").append(z).append("\">").append(z).append("x</button> ");
         }
-        h.append("</p>\n<div class=\"view\"><div class=\"diff\" style=\"width:").append(HeatMap.DIFF_WIDTH)
-                .append("px;height:").append(Comparison.N).append("px\">");
-        h.append("<img alt=\"simpview's, theirs and the heat map\" width=\"").append(HeatMap.DIFF_WIDTH)
-                .append("\" height=\"").append(Comparison.N).append("\" src=\"").append(esc(src)).append("\">");
-        int n = Comparison.N;
+        int n = row.size();
+        h.append("</p>\n<div class=\"view\"><div class=\"diff\" style=\"width:").append(HeatMap.diffWidth(n))
+                .append("px;height:").append(n).append("px\">");
+        h.append("<img alt=\"simpview's, theirs and the heat map\" width=\"").append(HeatMap.diffWidth(n))
+                .append("\" height=\"").append(n).append("\" src=\"").append(esc(src)).append("\">");
         for (DiffRegion region : row.regions()) {
             for (int panel = 0; panel < 3; panel++) {
                 int left = panel * (n + HeatMap.GAP) + region.left();

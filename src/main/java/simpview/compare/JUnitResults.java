@@ -130,8 +130,8 @@ public final class JUnitResults {
 
     /** E.g. "92.90 % within 8/255 with 1 px slack, 99.00 % needed". */
     private static String shares(BatchRow row) {
-        return String.format(Locale.ROOT, "%s within %d/255 with %d px slack, %s needed%s", Percent.of(row.verdict()),
-                row.rule().tolerance(), row.rule().deviation(), Percent.of(row.rule().minShare() / 100),
+        return String.format(Locale.ROOT, "%s %s, %s needed%s", Percent.of(row.verdict()),
+                row.verdictName(), Percent.of(row.rule().minShare() / 100),
                 row.rule().maxFailing() >= 0 ? String.format(Locale.ROOT, "; %d pixels fail, at most %d allowed",
                         row.failing(), row.rule().maxFailing()) : "");
     }

@@ -13,7 +13,9 @@ import java.nio.file.Path;
  * lights is what is being compared. With {@link Comparison.Metric#BLUR} each
  * panel of both pictures is blurred first ({@link Blur}), so that another
  * valid antialiasing (the handout allows any method for panel 4) is measured
- * by what the eye sees at 1:1.
+ * by what the eye sees at 1:1. With {@link Comparison.Metric#FLIP} a pixel
+ * is within when its FLIP value ({@link Flip}, of the two panels) is at most
+ * {@link Comparison#FLIP_THRESHOLD}.
  */
 public final class PanelGridComparison {
 
@@ -21,7 +23,7 @@ public final class PanelGridComparison {
     public record Panel(int left, int top, int size) {
     }
 
-    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel. */
+    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel (with FLIP: at most its threshold). */
     public record PanelShares(double identical, double within) {
     }
 
@@ -58,30 +60,85 @@ public final class PanelGridComparison {
     /** The same, measured by {@code metric}. */
     public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
             Comparison.Metric metric) throws CompareException {
-        PngCodec.Pixels theirs = Picture.readPixels(picture);
-        int page = ours.getWidth();
-        int[] at = find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, picture.toString());
-        int[] mine = Rasters.rgb(ours);
+        return of(picture, ours, panels, tolerance, metric, Comparison.FLIP_THRESHOLD);
+    }
+
+    /** The same, with FLIP a pixel within at {@code flipThreshold} or less. */
+    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
+            Comparison.Metric metric, double flipThreshold) throws CompareException {
+        Cut cut = cut(picture, ours, panels);
         PanelShares[] shares = new PanelShares[panels.length];
         for (int k = 0; k < panels.length; k++) {
             Panel p = panels[k];
-            int[] a = cut(mine, page, p.left(), p.top(), p.size());
-            int[] b = cut(theirs.rgb(), theirs.width(), at[0] + p.left(), at[1] + p.top(), p.size());
+            int[] a = cut.ours()[k];
+            int[] b = cut.theirs()[k];
             if (metric == Comparison.Metric.BLUR) {
                 a = Blur.of(a, p.size());
                 b = Blur.of(b, p.size());
             }
             long identical = 0;
             long within = 0;
+            float[] flip = metric == Comparison.Metric.FLIP ? Flip.of(a, b, p.size(), p.size()) : null;
             for (int i = 0; i < a.length; i++) {
                 int d = Rasters.distance(a[i], b[i]);
                 identical += d == 0 ? 1 : 0;
-                within += d <= tolerance ? 1 : 0;
+                within += (flip == null ? d <= tolerance : flip[i] <= flipThreshold) ? 1 : 0;
             }
             double n = (double) p.size() * p.size();
             shares[k] = new PanelShares(identical / n, within / n);
         }
-        return new PanelGridComparison(at[0], at[1], shares);
+        return new PanelGridComparison(cut.pageLeft(), cut.pageTop(), shares);
+    }
+
+    /**
+     * A picture's page found and cut into its panels, beside simpview's page cut the same way.
+     *
+     * @param pageLeft where the page's top-left pixel is in the picture
+     * @param pageTop the same, its row
+     * @param ours simpview's panels, each size x size pixels row by row from the top
+     * @param theirs the picture's panels, the same
+     */
+    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs) {
+    }
+
+    /** Reads the picture, finds the page in it and cuts both pages into their panels. */
+    public static Cut cut(Path picture, BufferedImage ours, Panel[] panels) throws CompareException {
+        PngCodec.Pixels theirs = Picture.readPixels(picture);
+        return cut(theirs.rgb(), theirs.width(), theirs.height(), picture.toString(), ours, panels);
+    }
+
+    /** The same for a picture already read (for its 650x650 panel, which it may not really have). */
+    public static Cut cut(Picture theirs, BufferedImage ours, Panel[] panels) throws CompareException {
+        return cut(theirs.rgb(), theirs.width(), theirs.height(), theirs.name(), ours, panels);
+    }
+
+    /**
+     * Whether the picture holds a page of these panels, each framed by a white ring (a page of the
+     * first assignment's, which a search for one 650x650 panel can take for one). Cheap: most places
+     * fail at their first sample.
+     */
+    public static boolean holds(Picture theirs, int page, Panel[] panels) {
+        try {
+            find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, theirs.name());
+            return true;
+        } catch (CompareException e) {
+            return false;
+        }
+    }
+
+    private static Cut cut(int[] rgb, int width, int height, String name, BufferedImage ours, Panel[] panels)
+            throws CompareException {
+        int page = ours.getWidth();
+        int[] at = find(rgb, width, height, page, panels, name);
+        int[] mine = Rasters.rgb(ours);
+        int[][] a = new int[panels.length][];
+        int[][] b = new int[panels.length][];
+        for (int k = 0; k < panels.length; k++) {
+            Panel p = panels[k];
+            a[k] = cut(mine, page, p.left(), p.top(), p.size());
+            b[k] = cut(rgb, width, at[0] + p.left(), at[1] + p.top(), p.size());
+        }
+        return new Cut(at[0], at[1], a, b);
     }
 
     /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */

@@ -102,6 +102,11 @@ public final class Picture {
         }
     }
 
+    /** The whole picture's pixels, 0xRRGGBB row by row from the top (not a copy: do not change them). */
+    int[] rgb() {
+        return rgb;
+    }
+
     public String name() {
         return name;
     }

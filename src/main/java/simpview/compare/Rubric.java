@@ -147,6 +147,7 @@ public final class Rubric {
             Comparison.Metric metric = base == null ? null : base.metric();
             Path alternates = base == null ? null : base.alternates();
             String visibility = base == null ? null : base.visibility();
+            double flipThreshold = base == null ? Double.NaN : base.flipThreshold();
             while (json.hasNext()) {
                 String name = json.nextName();
                 switch (name) {
@@ -167,12 +168,14 @@ public final class Rubric {
                             "a whole number of pixels, 0 to 422500");
                     case "points" -> points = number(0, 1e6, false, "points, 0 or more");
                     case "zero_share" -> zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
-                    case "metric" -> metric = switch (string("\"exact\" or \"blur\"")) {
+                    case "metric" -> metric = switch (string("\"exact\", \"blur\" or \"flip\"")) {
                         case "exact" -> Comparison.Metric.EXACT;
                         case "blur" -> Comparison.Metric.BLUR;
-                        default -> throw error("\"metric\" must be \"exact\" or \"blur\"");
+                        case "flip" -> Comparison.Metric.FLIP;
+                        default -> throw error("\"metric\" must be \"exact\", \"blur\" or \"flip\"");
                     };
                     case "alternates" -> alternates = folder(string("a folder of extra accepted pictures"));
+                    case "flip_threshold" -> flipThreshold = number(0, 1, false, "a FLIP value, 0 to 1");
                     case "visibility" -> {
                         visibility = string("one of " + VISIBILITIES);
                         if (!VISIBILITIES.contains(visibility)) {
@@ -180,7 +183,8 @@ public final class Rubric {
                         }
                     }
                     default -> throw error("unknown key \"" + name + "\": expected match, tolerance, deviation, "
-                            + "min_share, max_failing_pixels, points, zero_share, metric, alternates or visibility");
+                            + "min_share, max_failing_pixels, points, zero_share, metric, flip_threshold, alternates or "
+                            + "visibility");
                 }
             }
             json.endObject();
@@ -188,7 +192,7 @@ public final class Rubric {
                 throw new CompareException("rubric " + file + ": the page rule " + where + " has no \"match\"");
             }
             return new RubricRule(match, tolerance, deviation, minShare, maxFailing, points, zeroShare, metric,
-                    alternates, visibility);
+                    alternates, visibility, flipThreshold);
         }
 
         private RubricRule fill(RubricRule r, RubricRule d) throws CompareException {
@@ -202,7 +206,8 @@ public final class Rubric {
                             : r.zeroShare(),
                     r.metric() == null ? d.metric() : r.metric(),
                     r.alternates() == null ? d.alternates() : r.alternates(),
-                    r.visibility() == null ? d.visibility() : r.visibility());
+                    r.visibility() == null ? d.visibility() : r.visibility(),
+                    Double.isNaN(r.flipThreshold()) ? d.flipThreshold() : r.flipThreshold());
             if (full.zeroShare() > full.minShare()) {
                 throw new CompareException(String.format(Locale.ROOT, "rubric %s: the rule for \"%s\" has zero_share %s "
                         + "above its min_share %s", file, r.match(), full.zeroShare(), full.minShare()));

@@ -14,21 +14,34 @@ import java.nio.file.Path;
  * @param maxFailing the most pixels that may fail (beyond the tolerance even with the deviation), or -1 for no limit
  * @param points the page's score when it passes (Gradescope's max_score)
  * @param zeroShare with partial scoring, the share (percent) at and below which the page scores nothing
- * @param metric exact, or after a small blur (antialiased panels)
+ * @param metric exact, after a small blur, or FLIP (antialiased panels)
  * @param alternates a folder of extra accepted references, or null
  * @param visibility Gradescope's visibility of the page's test
+ * @param flipThreshold with the FLIP metric, the value at or below which a pixel matches (0 to 1)
  */
 public record RubricRule(String match, int tolerance, int deviation, double minShare, int maxFailing, double points,
-        double zeroShare, Comparison.Metric metric, Path alternates, String visibility) {
+        double zeroShare, Comparison.Metric metric, Path alternates, String visibility, double flipThreshold) {
 
     /** Today's defaults: 8/255, one pixel, 99 %, no pixel limit, one point, exact. */
     public static RubricRule defaults(int tolerance, double minShare, int deviation, Comparison.Metric metric) {
-        return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(90, minShare), metric, null, "visible");
+        return defaults(tolerance, minShare, deviation, metric, Comparison.FLIP_THRESHOLD);
+    }
+
+    /** The same, FLIP's threshold given. */
+    public static RubricRule defaults(int tolerance, double minShare, int deviation, Comparison.Metric metric,
+            double flipThreshold) {
+        return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(90, minShare), metric, null, "visible",
+                flipThreshold);
+    }
+
+    /** A comparison of two square panels made under this rule: its deviation, metric and FLIP threshold. */
+    public Comparison compare(int[] ours, int[] theirs, int size) {
+        return Comparison.of(ours, theirs, size, deviation, metric, flipThreshold);
     }
 
     /** The verdict of a comparison made under this rule (with its deviation and metric). */
     public boolean passes(Comparison comparison) {
-        return comparison.share(tolerance, true) * 100 >= minShare - 1e-9
+        return comparison.verdictShare(tolerance) * 100 >= minShare - 1e-9
                 && (maxFailing < 0 || comparison.failing(tolerance) <= maxFailing);
     }
 
@@ -46,7 +59,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
         if (!partial) {
             return 0;
         }
-        double share = comparison.share(tolerance, true) * 100;
+        double share = comparison.verdictShare(tolerance) * 100;
         double part = minShare <= zeroShare ? (share >= minShare ? 1 : 0)
                 : Math.max(0, Math.min(1, (share - zeroShare) / (minShare - zeroShare)));
         int failing = comparison.failing(tolerance);

@@ -58,7 +58,10 @@ public final class StudentTable {
         }
         long pass = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
         long compared = rows.size() - skipped;
-        out.append(String.format(Locale.ROOT, "%d of %d pictures pass%s%s%n", pass, compared,
+        long files = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED).map(BatchRow::file).distinct().count();
+        // a page of the first assignment is a row per panel
+        String what = files == compared ? "pictures" : "pages and panels (" + files + (files == 1 ? " picture)" : " pictures)");
+        out.append(String.format(Locale.ROOT, "%d of %d %s pass%s%s%n", pass, compared, what,
                 skipped == 0 ? "" : String.format(Locale.ROOT, "; %d other files matched no page", skipped),
                 missing.isEmpty() ? "" : String.format(Locale.ROOT, "; %d pages without a picture", missing.size())));
         return out.toString();

@@ -24,6 +24,12 @@ public final class HistoryEntry {
     /** For a write that lost the depth test: the depth there and the primitive that put it there. */
     double storedDepth = Double.NaN;
     int storedOwner = NO_NUMBER;
+    /**
+     * A culled entry: the plane every vertex is outside of; a clipped one: the
+     * planes some vertex is outside of (those that cut it); as Camera's
+     * outcode bits. 0 for the other outcomes.
+     */
+    int planes;
     /** The colour as the drawing code computed it, term by term; null where there is nothing to explain. */
     Terms explanation;
 
@@ -66,6 +72,16 @@ public final class HistoryEntry {
 
     public int storedOwner() {
         return storedOwner;
+    }
+
+    /** The planes that culled or cut the primitive (Camera's outcode bits); 0 for a write. */
+    public int planes() {
+        return planes;
+    }
+
+    /** Their names, in the clipper's order ("hither", "left", ...). */
+    public List<String> planeNames() {
+        return VertexTable.planeNames(planes);
     }
 
     public Terms explanation() {

@@ -2,6 +2,7 @@ package simpview.inspect;
 
 import java.util.ArrayList;
 import java.util.List;
+import simpview.geometry.Clipper;
 import simpview.stage.Painter;
 import simpview.shading.Fog;
 import simpview.raster.FragmentLayout;
@@ -86,9 +87,20 @@ final class LitExplainer implements PixelWatch.Explainer {
     }
 
     /**
-     * The lit (clamped, clipped) vertex colours of the fan triangle holding
-     * the pixel's centre, and its perspective-correct weights there:
+     * Gouraud at the pixel. SPEC Part 2 lights each vertex of the polygon
+     * before clipping; clipping lerps those lit colours to the clipped
+     * vertices, and the fan triangle of the clipped polygon that holds the
+     * pixel's centre interpolates them perspective-correct:
      * {@code w_i = b_i q_i / sum_j b_j q_j} for the screen-space barycentric b.
+     * So the terms are the polygon's own vertices with their lit colours, and
+     * the pixel's weights against them, {@code u_k = sum_i w_i W_ik}, where
+     * row i of W says how much of each original vertex clipped vertex i is:
+     * found by clipping, with the same {@link Clipper} and camera, the
+     * polygon's positions carrying one-hot weights instead of colours (the
+     * same distances and crossings, so the same clipped vertices). Where the
+     * polygon was cut, the fan piece is shown too. The colour the drawing
+     * interpolated ("interpolated") is what the bytes come from; the weighted
+     * sum of the vertex colours is shown beside it ("weighted"), equal up to rounding.
      */
     private static void gouraud(PixelWatch watch, Terms terms) {
         double[] o = watch.outline();
@@ -108,19 +120,100 @@ final class LitExplainer implements PixelWatch.Explainer {
                 w[k] = b[k] * o[v[k] * s + 2];
                 total += w[k];
             }
-            List<Terms> vertices = new ArrayList<>();
+            List<Terms> piece = new ArrayList<>();
             for (int k = 0; k < 3; k++) {
                 w[k] /= total;
                 int at = v[k] * s;
                 double q = o[at + 2];
-                vertices.add(new Terms().put("vertex", v[k]).put("panel", o[at], o[at + 1])
+                piece.add(new Terms().put("vertex", v[k]).put("panel", o[at], o[at + 1])
                         .put("z", o[at + 3] / q)
                         .put("colour", o[at + 4] / q, o[at + 5] / q, o[at + 6] / q));
             }
+            double[][] rows = originals(watch, n);
+            if (rows == null) {
+                terms.put("lit_at", "the vertices of the fan triangle holding the pixel");
+                terms.put("vertex_colours", piece);
+                terms.put("weights", w);
+                return;
+            }
+            int m = watch.unclippedCount();
+            double[] p = watch.unclippedVertices();
+            int ps = watch.unclippedStride();
+            double[] u = new double[m];
+            double[] weighted = new double[3];
+            for (int k = 0; k < m; k++) {
+                for (int j = 0; j < 3; j++) {
+                    u[k] += w[j] * rows[v[j]][k];
+                }
+            }
+            List<Terms> vertices = new ArrayList<>();
+            for (int k = 0; k < m; k++) {
+                int at = k * ps;
+                double[] c = {p[at + 3], p[at + 4], p[at + 5]};
+                for (int j = 0; j < 3; j++) {
+                    weighted[j] += u[k] * c[j];
+                }
+                vertices.add(new Terms().put("vertex", k).put("camera", p[at], p[at + 1], p[at + 2]).put("colour", c));
+            }
+            terms.put("lit_at", "each vertex of the polygon, before clipping (SPEC Part 2)");
             terms.put("vertex_colours", vertices);
-            terms.put("weights", w);
+            terms.put("weights", u);
+            terms.put("weighted", weighted);
+            if (cut(watch, m)) {
+                for (int k = 0; k < 3; k++) {
+                    piece.get(k).put("of_the_vertices", rows[v[k]]);
+                }
+                terms.put("fan_piece", new Terms().put("why", "the clipper cut the polygon: the pixel is in this "
+                        + "triangle of the clipped polygon's fan, whose vertices' colours are lerped from the lit ones")
+                        .put("vertices", piece).put("weights", w));
+            } else if (m > 3) {
+                terms.put("fan_triangle", new Terms().put("vertices", piece).put("weights", w));
+            }
             return;
         }
+    }
+
+    /**
+     * Row i: clipped vertex i as weights of the polygon's m vertices before
+     * clipping; null when the primitive's vertices before clipping were not
+     * told or do not clip to the drawn outline's n vertices.
+     */
+    private static double[][] originals(PixelWatch watch, int n) {
+        int m = watch.unclippedCount();
+        if (m < 3) {
+            return null;
+        }
+        double[] p = watch.unclippedVertices();
+        int ps = watch.unclippedStride();
+        int stride = 3 + m;
+        double[] marked = new double[stride * m];
+        for (int k = 0; k < m; k++) {
+            System.arraycopy(p, k * ps, marked, k * stride, 3);
+            marked[k * stride + 3 + k] = 1;
+        }
+        Clipper clipper = new Clipper(stride);
+        int kept = clipper.clipPolygon(watch.camera(), marked, 0, m);
+        if (kept != n) {
+            return null;
+        }
+        double[] out = clipper.vertices();
+        double[][] rows = new double[n][];
+        for (int i = 0; i < n; i++) {
+            rows[i] = java.util.Arrays.copyOfRange(out, i * stride + 3, i * stride + 3 + m);
+        }
+        return rows;
+    }
+
+    /** Whether some vertex of the polygon before clipping was outside the view. */
+    private static boolean cut(PixelWatch watch, int m) {
+        double[] p = watch.unclippedVertices();
+        int ps = watch.unclippedStride();
+        for (int k = 0; k < m; k++) {
+            if (watch.camera().outcode(p[k * ps], p[k * ps + 1], p[k * ps + 2]) != 0) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Screen-space barycentric coordinates of (cx, cy) in triangle v of the outline, or null when outside. */

@@ -3,6 +3,7 @@ package simpview.inspect;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
+import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
@@ -13,7 +14,6 @@ import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.PrimitiveTrace;
-import simpview.surface.DepthCueDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.DrawableDecorator;
 import simpview.surface.PageCanvas;
@@ -30,6 +30,15 @@ import simpview.surface.ZBufferDrawable;
  * (inside the panel). Row by row from the bottom, as the z-buffer is kept.
  * The pixel history of any pixel has as many written and depth-failed
  * entries as its count here.
+ *
+ * <p>Only the depth test decides a count, so the replay stops there and
+ * makes no colour: depth-cued writes go through the scissor and the
+ * z-buffer (the program's own decorators) to a surface that keeps nothing
+ * and wants no colour; lit fragments are depth-tested here as the fragment
+ * stage tests them (z = (z q) (1 / q) at each pixel, the same operations in
+ * the same order, so the same bits; strictly nearer wins and is kept), and
+ * never lit. {@code OverdrawTest} holds the counts to the histories, whose
+ * fragments the fragment stage itself tests.
  */
 public final class Overdraw {
 
@@ -115,9 +124,8 @@ public final class Overdraw {
         @Override
         public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
             Camera view = Camera.PARALLEL;
-            Drawable coloured = ownColours ? canvas.panel() : new DepthCueDrawable(near, far, view, canvas.panel());
             return new ScissorDrawable(view, new CountedWrites(counts, new ZBufferDrawable(canvas.zbuffer(),
-                    new CountedWrites(won, coloured))));
+                    new CountedWrites(won, new Nowhere()))));
         }
 
         @Override
@@ -126,39 +134,58 @@ public final class Overdraw {
             int height = stage.height();
             double[] z = depths;
             return new FragmentSink() {
-                private double[] before = new double[width];
+                // k at each pixel of a span as an exact double, and each pixel's 1 / q and z: plain loops over
+                // arrays, which C2 compiles to packed operations, as the fragment stage's batches are.
+                private final double[] ramp = ramp(width);
+                private final double[] inverse = new double[width];
+                private final double[] zs = new double[width];
 
                 @Override
                 public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
                     if (y < 0 || y >= height) {
-                        stage.span(y, from, to, q0, dq, v0, dv);
                         return;
                     }
                     int start = Math.max(from, 0);
-                    int end = Math.min(to, width);
-                    int row = y * width;
-                    for (int x = start; x < end; x++) {
-                        counts[row + x]++;
-                        before[x] = z[row + x];
+                    int m = Math.min(to, width) - start;
+                    if (m <= 0) {
+                        return;
                     }
-                    stage.span(y, from, to, q0, dq, v0, dv);
-                    for (int x = start; x < end; x++) {
-                        if (Double.compare(z[row + x], before[x]) != 0) {
-                            won[row + x]++;
+                    double k0 = start - from;
+                    double z0 = v0[FragmentLayout.Z];
+                    double dz = dv[FragmentLayout.Z];
+                    double[] inv = inverse;
+                    double[] depth = zs;
+                    double[] r = ramp;
+                    for (int j = 0; j < m; j++) {
+                        inv[j] = 1 / (q0 + (k0 + r[j]) * dq);
+                    }
+                    for (int j = 0; j < m; j++) {
+                        depth[j] = (z0 + (k0 + r[j]) * dz) * inv[j];
+                    }
+                    int at = y * width + start;
+                    for (int j = 0; j < m; j++) {
+                        counts[at + j]++;
+                    }
+                    for (int j = 0; j < m; j++) {
+                        if (depth[j] > z[at + j]) {
+                            z[at + j] = depth[j];
+                            won[at + j]++;
                         }
                     }
                 }
 
                 @Override
                 public void pixel(int x, int y, double q, double[] v) {
-                    boolean inside = x >= 0 && x < width && y >= 0 && y < height;
-                    double was = inside ? z[y * width + x] : 0;
-                    if (inside) {
-                        counts[y * width + x]++;
+                    if (x < 0 || x >= width || y < 0 || y >= height) {
+                        return;
                     }
-                    stage.pixel(x, y, q, v);
-                    if (inside && Double.compare(z[y * width + x], was) != 0) {
-                        won[y * width + x]++;
+                    int i = y * width + x;
+                    double inv = 1 / q;
+                    double depth = v[FragmentLayout.Z] * inv;
+                    counts[i]++;
+                    if (depth > z[i]) {
+                        z[i] = depth;
+                        won[i]++;
                     }
                 }
             };
@@ -168,6 +195,46 @@ public final class Overdraw {
         public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
         }
 
+    }
+
+    /** 0, 1, 2, ... as doubles. */
+    private static double[] ramp(int n) {
+        double[] r = new double[n];
+        for (int i = 0; i < n; i++) {
+            r[i] = i;
+        }
+        return r;
+    }
+
+    /** The end of the counting chain: the panel's size, no colour wanted, nothing kept. */
+    private static final class Nowhere implements Drawable {
+        @Override
+        public int width() {
+            return PageCanvas.PANEL;
+        }
+
+        @Override
+        public int height() {
+            return PageCanvas.PANEL;
+        }
+
+        @Override
+        public boolean usesColour() {
+            return false;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+        }
+
+        @Override
+        public void fillSpan(Span span) {
+        }
+
+        @Override
+        public int getPixel(int x, int y) {
+            return 0;
+        }
     }
 
     /** Counts every write that reaches it inside the panel, then passes it on. */

@@ -142,9 +142,12 @@ public final class PixelReport {
                 } else if (e.outcome() == Outcome.SCISSORED) {
                     sb.append(": outside the view's depth range");
                 } else if (e.outcome() == Outcome.CULLED) {
-                    sb.append(": every vertex outside one plane of the view; its projection covers the pixel");
+                    sb.append(": every vertex outside the ").append(VertexTable.planes(e.planes()))
+                            .append(" plane; its part in front of the eye, projected, covers the pixel");
                 } else if (e.outcome() == Outcome.CLIPPED) {
-                    sb.append(": clipped away whole; its projection covers the pixel");
+                    sb.append(e.primitive() == HistoryEntry.NO_NUMBER ? ": clipped away whole" : ": drawn, but not here")
+                            .append(" (cut by ").append(VertexTable.planes(e.planes()))
+                            .append("); its part in front of the eye, projected, covers the pixel");
                 }
                 sb.append('\n');
             }
@@ -213,6 +216,15 @@ public final class PixelReport {
                     Json.number(sb, e.storedDepth());
                     sb.append(", \"stored_owner\": ").append(e.storedOwner() == HistoryEntry.NO_NUMBER ? "null"
                             : String.valueOf(shown(e.storedOwner())));
+                }
+                if (e.outcome() == Outcome.CULLED || e.outcome() == Outcome.CLIPPED) {
+                    sb.append(e.outcome() == Outcome.CULLED ? ", \"culled_by\": [" : ", \"cut_by\": [");
+                    List<String> planes = e.planeNames();
+                    for (int j = 0; j < planes.size(); j++) {
+                        sb.append(j == 0 ? "" : ", ");
+                        Json.string(sb, planes.get(j));
+                    }
+                    sb.append(']');
                 }
                 sb.append('}');
             }

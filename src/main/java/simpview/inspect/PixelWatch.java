@@ -47,6 +47,12 @@ final class PixelWatch implements PrimitiveTrace {
     /** The write on its way down the chain now. */
     private HistoryEntry current;
     private double depthBefore;
+    // The lit primitive at hand in camera space before clipping (LitGeometry's vertices: x, y, z, r, g, b, normal),
+    // told before it is read; and the entry it gets if its drawn part never reaches the pixel but its uncut one would.
+    private double[] unclipped = new double[9 * 8];
+    private int unclippedStride;
+    private int unclippedCount;
+    private HistoryEntry cutAway;
 
     /** What a watch asks of the scene's kind of drawing. */
     interface Explainer {
@@ -94,6 +100,8 @@ final class PixelWatch implements PrimitiveTrace {
         primitive = HistoryEntry.NO_NUMBER;
         current = null;
         sourceCtm = null;
+        unclippedCount = 0;
+        cutAway = null;
     }
 
     int x() {
@@ -105,7 +113,26 @@ final class PixelWatch implements PrimitiveTrace {
     }
 
     List<HistoryEntry> entries() {
+        settleCutAway();
         return entries;
+    }
+
+    /** The primitive cut by the clipper is done without a fragment at the pixel: its entry stands. */
+    private void settleCutAway() {
+        if (cutAway != null) {
+            entries.add(cutAway);
+            cutAway = null;
+        }
+    }
+
+    @Override
+    public void unclipped(double[] p, int at, int numbers, int count) {
+        if (unclipped.length < numbers * count) {
+            unclipped = new double[2 * numbers * count];
+        }
+        System.arraycopy(p, at, unclipped, 0, numbers * count);
+        unclippedStride = numbers;
+        unclippedCount = count;
     }
 
     // ---- the trace
@@ -113,6 +140,7 @@ final class PixelWatch implements PrimitiveTrace {
     @Override
     public void read(int index, Path commandFile, int commandLine, int primitiveKind, double[] p, int at,
             int numbers, int count) {
+        settleCutAway();
         primitive = index;
         file = commandFile;
         line = commandLine;
@@ -127,6 +155,39 @@ final class PixelWatch implements PrimitiveTrace {
         if (index == wanted) {
             keepSource();
         }
+        int cut = cutBy();
+        if (cut != 0 && Coverage.covers(camera.get(), kind, unclipped, 0, unclippedStride, unclippedCount, x, y)) {
+            // Kept until a fragment of it reaches the pixel (then it covered the pixel after all) or the next primitive.
+            cutAway = new HistoryEntry(index, chain(), kind, Outcome.CLIPPED);
+            cutAway.planes = cut;
+        }
+    }
+
+    /** The planes some vertex of the lit primitive at hand is outside of, before clipping (0: uncut, or not lit). */
+    private int cutBy() {
+        int cut = 0;
+        if (lit) {
+            Camera view = camera.get();
+            for (int k = 0; k < unclippedCount; k++) {
+                int o = k * unclippedStride;
+                cut |= view.outcode(unclipped[o], unclipped[o + 1], unclipped[o + 2]);
+            }
+        }
+        return cut;
+    }
+
+    /** The lit primitive at hand in camera space before clipping: vertices() of unclippedStride() numbers; read only. */
+    double[] unclippedVertices() {
+        return unclipped;
+    }
+
+    int unclippedStride() {
+        return unclippedStride;
+    }
+
+    /** How many vertices the lit primitive at hand had before clipping; 0 when not told (depth-cued). */
+    int unclippedCount() {
+        return lit ? unclippedCount : 0;
     }
 
     @Override
@@ -176,9 +237,21 @@ final class PixelWatch implements PrimitiveTrace {
     @Override
     public void skipped(Path commandFile, int commandLine, int primitiveKind, boolean culled, double[] p, int at,
             int numbers, int count) {
-        if (Coverage.covers(camera.get(), primitiveKind, p, at, numbers, count, x, y)) {
+        settleCutAway();
+        unclippedCount = 0;
+        Camera view = camera.get();
+        if (Coverage.covers(view, primitiveKind, p, at, numbers, count, x, y)) {
             HistoryEntry e = new HistoryEntry(HistoryEntry.NO_NUMBER, chainOf(commandFile, commandLine),
                     primitiveKind, culled ? Outcome.CULLED : Outcome.CLIPPED);
+            int common = ~0;
+            int any = 0;
+            for (int k = 0; k < count; k++) {
+                int o = at + k * numbers;
+                int code = view.outcode(p[o], p[o + 1], p[o + 2]);
+                common &= code;
+                any |= code;
+            }
+            e.planes = culled ? common : any;
             entries.add(e);
         }
     }
@@ -240,6 +313,9 @@ final class PixelWatch implements PrimitiveTrace {
 
     /** A fragment at the pixel, resolved, before the fragment stage tests it. */
     void fragment(double[] channels) {
+        if (cutAway != null && cutAway.primitive == primitive) {
+            cutAway = null; // its drawn part covers the pixel
+        }
         double z = channels[0];
         keepSource();
         current = new HistoryEntry(primitive, chain(), kind, Outcome.DEPTH_FAILED);
@@ -267,6 +343,11 @@ final class PixelWatch implements PrimitiveTrace {
 
     int kind() {
         return kind;
+    }
+
+    /** The scene's camera now. */
+    Camera camera() {
+        return camera.get();
     }
 
     /** The projected outline of the primitive at hand: vertices() of stride() numbers (panel x, y, q, then channels times q). */

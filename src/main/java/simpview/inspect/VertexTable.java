@@ -140,7 +140,7 @@ final class VertexTable {
         return t;
     }
 
-    private static int commonOutside(Camera camera, double[] cam, int n) {
+    static int commonOutside(Camera camera, double[] cam, int n) {
         int common = ~0;
         for (int k = 0; k < n; k++) {
             common &= camera.outcode(cam[3 * k], cam[3 * k + 1], cam[3 * k + 2]);
@@ -148,14 +148,20 @@ final class VertexTable {
         return common;
     }
 
-    private static String planes(int code) {
-        StringBuilder sb = new StringBuilder();
+    static String planes(int code) {
+        String names = String.join(", ", planeNames(code));
+        return names.isEmpty() ? "none" : names;
+    }
+
+    /** The planes of an outcode (Camera's bits), in the clipper's order: hither, yon, left, right, bottom, top. */
+    static List<String> planeNames(int code) {
+        List<String> names = new ArrayList<>();
         for (int p = 0; p < Camera.PLANES; p++) {
             if ((code & 1 << p) != 0) {
-                sb.append(sb.length() == 0 ? "" : ", ").append(PLANES[p]);
+                names.add(PLANES[p]);
             }
         }
-        return sb.length() == 0 ? "none" : sb.toString();
+        return names;
     }
 
     private static Terms rows(Matrix4 m) {

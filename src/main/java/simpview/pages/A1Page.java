@@ -1,6 +1,5 @@
 package simpview.pages;
 
-import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
 /**
@@ -24,10 +23,4 @@ public sealed interface A1Page extends Page permits LineTestPage, PolygonTestPag
 
     /** What step n drew, as given, over every panel it drew in. */
     A1Marks stepMarks(PageContext context, int step);
-
-    /** The whole page. It reads no files and never fails; the clause is Page's, kept for its callers. */
-    @Override
-    default void draw(PageCanvas canvas, PageContext context) throws SceneException {
-        drawSteps(canvas, context, Integer.MAX_VALUE);
-    }
 }

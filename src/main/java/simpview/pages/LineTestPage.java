@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.function.IntConsumer;
 import java.util.function.LongFunction;
 import simpview.geometry.Vertex;
 import simpview.raster.AlternatingLineRenderer;
@@ -69,6 +70,11 @@ public final class LineTestPage implements A1Page {
     }
 
     @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        drawSteps(canvas, context, Integer.MAX_VALUE);
+    }
+
+    @Override
     public int steps(PageContext context) {
         return lines(context.seed()).count();
     }
@@ -77,17 +83,34 @@ public final class LineTestPage implements A1Page {
     public void drawSteps(PageCanvas canvas, PageContext context, int steps) {
         Drawable[] panels = A1Layout.paint(canvas);
         A1Lines set = lines(context.seed());
-        double[] n = set.numbers();
         int count = Math.min(Math.max(steps, 0), set.count());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
-            LineRenderer drawer = drawer(k);
-            for (int i = 0; i < count; i++) {
-                drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panels[k - 1]);
-            }
+            drawPanel(k, set, count, panels[k - 1], null);
         }
     }
 
-    /** E.g. "line 24 of 90, (150, 150) to (145.289, 284.918), rounded to (145, 285); panel 3 by the Bresenham". */
+    /**
+     * Draws panel k's lines (k = 1..4) onto its panel, in order, by the
+     * panel's drawer; {@code beforeLine}, unless null, is told each line's
+     * index (0, 1, ...) before it is drawn (the inspector's replay of one pixel).
+     */
+    public static void drawPanel(int k, A1Lines set, Drawable panel, IntConsumer beforeLine) {
+        drawPanel(k, set, set.count(), panel, beforeLine);
+    }
+
+    /** The same, the first {@code count} lines only. */
+    private static void drawPanel(int k, A1Lines set, int count, Drawable panel, IntConsumer beforeLine) {
+        LineRenderer drawer = drawer(k);
+        double[] n = set.numbers();
+        for (int i = 0; i < count; i++) {
+            if (beforeLine != null) {
+                beforeLine.accept(i);
+            }
+            drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panel);
+        }
+    }
+
+    /** E.g. "line 24 of 90, (150, 150) to (145.289, 284.918), rounded (150, 150) to (145, 285), ...; panel 3 by the Bresenham". */
     @Override
     public String describeStep(PageContext context, int step) {
         A1Lines set = lines(context.seed());

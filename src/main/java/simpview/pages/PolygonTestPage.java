@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.function.IntConsumer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.surface.Drawable;
 import simpview.surface.GhostWritingDrawable;
@@ -43,6 +44,11 @@ public final class PolygonTestPage implements A1Page {
     }
 
     @Override
+    public void draw(PageCanvas canvas, PageContext context) {
+        drawSteps(canvas, context, Integer.MAX_VALUE);
+    }
+
+    @Override
     public int steps(PageContext context) {
         A1Polygons scenes = new A1Polygons(context.seed());
         int most = 0;
@@ -58,12 +64,31 @@ public final class PolygonTestPage implements A1Page {
         A1Polygons scenes = new A1Polygons(context.seed());
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
-            Drawable target = ghost ? new GhostWritingDrawable(panels[k - 1]) : panels[k - 1];
-            double[] n = scenes.scene(k);
-            int count = Math.min(Math.max(steps, 0), scenes.count(k));
-            for (int i = 0; i < count; i++) {
-                fill.drawPolygon(n, A1Polygons.at(i), target);
+            drawPanel(k, scenes, Math.min(Math.max(steps, 0), scenes.count(k)), panels[k - 1], fill, null);
+        }
+    }
+
+    /**
+     * Draws scene k's triangles (k = 1..4) onto its panel, in order, filled
+     * (through a {@link GhostWritingDrawable} on the ghost page);
+     * {@code beforeTriangle}, unless null, is told each triangle's index
+     * (0, 1, ...) before it is drawn (the inspector's replay of one pixel).
+     */
+    public void drawPanel(int k, A1Polygons scenes, Drawable panel, FilledPolygonRenderer fill,
+            IntConsumer beforeTriangle) {
+        drawPanel(k, scenes, scenes.count(k), panel, fill, beforeTriangle);
+    }
+
+    /** The same, the first {@code count} triangles only. */
+    private void drawPanel(int k, A1Polygons scenes, int count, Drawable panel, FilledPolygonRenderer fill,
+            IntConsumer beforeTriangle) {
+        Drawable target = ghost ? new GhostWritingDrawable(panel) : panel;
+        double[] n = scenes.scene(k);
+        for (int i = 0; i < count; i++) {
+            if (beforeTriangle != null) {
+                beforeTriangle.accept(i);
             }
+            fill.drawPolygon(n, A1Polygons.at(i), target);
         }
     }
 

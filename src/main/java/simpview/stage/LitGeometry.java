@@ -129,6 +129,9 @@ public final class LitGeometry implements GeometryStage {
             skipped(Painter.LINE, true, 2);
             return;
         }
+        if (trace != null && trace.wantsSource()) {
+            trace.unclipped(cam, 0, CAMERA_STRIDE, 2);
+        }
         if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
             skipped(Painter.LINE, false, 2);
         } else {
@@ -210,6 +213,9 @@ public final class LitGeometry implements GeometryStage {
         }
         faceNormals(n);
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
+        if (trace != null && trace.wantsSource()) {
+            trace.unclipped(cam, 0, CAMERA_STRIDE, n);
+        }
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);

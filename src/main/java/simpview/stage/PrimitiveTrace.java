@@ -59,6 +59,18 @@ public interface PrimitiveTrace {
     }
 
     /**
+     * The next primitive of a lit scene in camera space, after culling and
+     * lighting and before clipping: {@code vertices} of {@code stride}
+     * numbers each, x, y, z, then r, g, b (the lit colour under flat and
+     * gouraud shading, kd otherwise), then the unit normal; read, never kept.
+     * Told only to a trace that {@link #wantsSource}, and only for a
+     * primitive that is not culled; {@link #read} (or {@link #skipped}, when
+     * clipped away) follows.
+     */
+    default void unclipped(double[] p, int at, int stride, int vertices) {
+    }
+
+    /**
      * The scene is drawn again from the start (it turned out lit after it
      * had drawn depth-cued): forget every primitive told so far; numbering
      * starts at 0 again.

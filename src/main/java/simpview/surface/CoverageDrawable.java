@@ -4,9 +4,10 @@ package simpview.surface;
  * Writes with a coverage: each write becomes {@code c * colour + (1 - c) *
  * old} per channel (SPEC Part 3, "Colour and coverage"), c being the coverage
  * last set by {@link #cover}; 1 at the start, which writes the colour as it is.
- * Depth is passed on unchanged.
+ * Depth is passed on unchanged. Not final only for the inspector, whose
+ * probe is a CoverageDrawable that also tells what each write at its pixel was.
  */
-public final class CoverageDrawable extends DrawableDecorator {
+public class CoverageDrawable extends DrawableDecorator {
 
     private double coverage = 1;
 
@@ -17,6 +18,11 @@ public final class CoverageDrawable extends DrawableDecorator {
     /** The coverage of the writes from now on, in [0, 1]. */
     public void cover(double c) {
         coverage = c;
+    }
+
+    /** The coverage of the writes now. */
+    public final double coverage() {
+        return coverage;
     }
 
     /** The surface this one writes to. */

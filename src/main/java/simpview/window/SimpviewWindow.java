@@ -73,6 +73,7 @@ public final class SimpviewWindow {
     private final FileDialogs dialogs;
     private WindowOptions options;
     private String lastCheck;
+    private FolderCheck folderCheck = FolderCheck.NONE;
     private RenderedView shown;
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
@@ -661,20 +662,28 @@ public final class SimpviewWindow {
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */
+    /** What a dropped folder does from now on: the command line gives {@code simpview check}. Call on the EDT. */
+    public SimpviewWindow checkFoldersWith(FolderCheck check) {
+        this.folderCheck = check;
+        return this;
+    }
+
     /**
-     * A folder dropped (issue 21): {@code simpview check} for the pages, on its own thread
-     * (the pages drawn with this window's seed and scene folder); the table in a window of its own.
+     * A folder dropped (issue 21): {@code simpview check FOLDER} (its pages, the first assignment's,
+     * its own scenes with their pictures, its own compare.json), on its own thread (drawn with this
+     * window's seed and scene folder); the table in a window of its own.
      */
     void checkFolder(Path folder) {
         status.say("Checking the pictures in " + folder + " against the pages ...");
         PageContext context = options.pageContext();
+        FolderCheck check = folderCheck;
         Runnable work = () -> {
-            String table = FolderCheck.text(folder, context);
+            String table = check.text(folder, context);
             SwingUtilities.invokeLater(() -> showCheck(folder, table));
         };
-        Thread check = new Thread(work, "simpview-folder-check");
-        check.setDaemon(true);
-        check.start();
+        Thread thread = new Thread(work, "simpview-folder-check");
+        thread.setDaemon(true);
+        thread.start();
     }
 
     private void showCheck(Path folder, String table) {

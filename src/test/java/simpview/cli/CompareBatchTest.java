@@ -58,11 +58,11 @@ public class CompareBatchTest {
         assertTrue(rows.get(0).startsWith("file,page,identical,within 1/255,within 8/255,identical (slack)"), rows.get(0));
         assertTrue(rows.get(1).startsWith("bob/Page_2.png,2 (seed 361),"), rows.get(1));
         assertTrue(rows.get(1).contains(",FAIL,white,diffs/bob_Page_2-diff.png,"), rows.get(1));
-        assertTrue(rows.get(2).startsWith("page1.png,1 (seed 361),100.00,100.00,100.00,100.00,100.00,100.00,PASS,white,"
+        assertTrue(rows.get(2).startsWith("page1.png,1 (seed 361),100.00,100.00,100.00,100.00,100.00,100.00,100.00,PASS,white,"
                 + "diffs/page1-diff.png,"), rows.get(2));
-        assertTrue(rows.get(3).startsWith("page3.png,3 (seed 361),,,,,,,ERROR,,,"), rows.get(3));
+        assertTrue(rows.get(3).startsWith("page3.png,3 (seed 361),,,,,,,,ERROR,,,"), rows.get(3));
         assertTrue(rows.get(3).contains("page3.png: cannot be read as a picture, it is damaged or cut short"), rows.get(3));
-        assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
+        assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());
         assertTrue(Files.isRegularFile(out.resolve("diffs/page1-diff.png")));
@@ -113,7 +113,7 @@ public class CompareBatchTest {
         assertEquals(ExitCode.OK, run.exitCode(), run.err());
         List<String> rows = csvRows(out);
         assertEquals(4, rows.size(), rows.toString());
-        assertTrue(rows.get(1).startsWith("other.png,,,,,,,,SKIPPED,,,its name names none of the scenes"), rows.get(1));
+        assertTrue(rows.get(1).startsWith("other.png,,,,,,,,,SKIPPED,,,its name names none of the scenes"), rows.get(1));
         assertTrue(rows.get(2).startsWith("page_triBar_v2.png,triBar.simp,100.00,"), rows.get(2));
         assertTrue(rows.get(3).startsWith("tri.png,tri.simp,100.00,"), rows.get(3));
 

@@ -140,7 +140,7 @@ class GradingCommandTest {
         assertTrue(run.out().contains("1 of 2 pictures pass"), run.out());
 
         // The window's drop of a folder (issue 21) gives the same rows (it asks for all eight pages).
-        String[] window = simpview.window.instruments.FolderCheck.text(mine, PageContext.defaults()).split("\n");
+        String[] window = CheckCommand.checkFolder(mine, PageContext.defaults()).split("\n");
         assertEquals(List.of(lines[0], lines[1], lines[2]), List.of(window[0], window[1], window[2]));
 
         Files.delete(mine.resolve("Page_2.png"));

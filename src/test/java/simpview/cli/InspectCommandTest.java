@@ -122,6 +122,37 @@ class InspectCommandTest {
         assertFalse(missing.showsStackTrace(), missing.err());
     }
 
+    @Test
+    @SuppressWarnings("unchecked")
+    void theFirstAssignmentsPagesInPageCoordinates() throws Exception {
+        // Page 1's antialiased panel (4): its centre, panel pixel (150, 150), is image column 550, row 549.
+        CliRun run = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "550,200", "--json");
+        assertEquals(0, run.exitCode(), run.err());
+        Map<String, Object> json = (Map<String, Object>) new MiniJson(run.out().strip()).value();
+        Map<String, Object> panel = (Map<String, Object>) json.get("panel");
+        assertEquals(4.0, panel.get("number"));
+        assertEquals("antialiased", panel.get("drawer"));
+        assertEquals(150.0, panel.get("x"));
+        assertEquals(150.0, panel.get("y"));
+        List<Object> history = (List<Object>) json.get("history");
+        assertEquals(90, history.size());
+        Map<String, Object> last = (Map<String, Object>) history.get(history.size() - 1);
+        assertEquals("blended", last.get("outcome"));
+        assertTrue((Double) last.get("coverage") > 0);
+        assertEquals(((Map<String, Object>) json.get("pixel")).get("rgb"), last.get("new"));
+        assertEquals(List.of(150.0, 150.0), ((List<Object>) last.get("vertices")).get(0));
+        CliRun text = CliRun.of("inspect", "--assignment", "1", "--page", "5", "--at", "250,560");
+        assertEquals(0, text.exitCode(), text.err());
+        assertTrue(text.out().contains("panel 1 (ghost (white, opacity 0.14))"), text.out());
+        assertTrue(text.out().contains("blended with coverage 0.140000, rgb (255, 255, 255)"), text.out());
+        CliRun off = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "750,10");
+        assertEquals(2, off.exitCode());
+        assertTrue(off.err().contains("outside the page: x and y are 0 to 749"), off.err());
+        CliRun page = CliRun.of("inspect", "--assignment", "1", "--page", "6", "--at", "10,10");
+        assertEquals(2, page.exitCode());
+        assertTrue(page.err().contains("--page must be 1 to 5 for the first assignment"), page.err());
+    }
+
     /** A small JSON reader: objects, arrays, strings, numbers (as Double), true, false, null. */
     static final class MiniJson {
         private final String s;

@@ -33,7 +33,7 @@ class ResultFormatsTest {
     private static final int[] STRIPES = GradingFixtures.stripes(0);
     private static final RubricRule ONE = GradingFixtures.defaults();
     private static final RubricRule TWO = new RubricRule("2", 8, 1, 99, -1, 2.5, 90, Comparison.Metric.EXACT, null,
-            "after_due_date");
+            "after_due_date", Comparison.FLIP_THRESHOLD);
 
     private static List<BatchRow> rows(boolean partial) throws Exception {
         int[] spoiled = GradingFixtures.spoiled(STRIPES, 8_450); // 98 %: fails, 8/9 of the points when partial

@@ -54,6 +54,24 @@ class RubricTest {
     }
 
     @Test
+    void metricFlipAndItsThresholdEachDecide() throws Exception {
+        int[] grey = new int[Comparison.N * Comparison.N];
+        int[] lighter = new int[Comparison.N * Comparison.N];
+        java.util.Arrays.fill(grey, 0x808080);
+        java.util.Arrays.fill(lighter, 0x8C8C8C); // 12/255 lighter: FLIP 0.17 on every pixel
+        RubricRule wide = with("{\"match\": \"4\", \"tolerance\": 12}");
+        assertTrue(wide.passes(wide.compare(grey, lighter, Comparison.N)), "within 12/255");
+        RubricRule flip = with("{\"match\": \"4\", \"tolerance\": 12, \"metric\": \"flip\"}");
+        assertEquals(Comparison.FLIP_THRESHOLD, flip.flipThreshold());
+        assertFalse(flip.passes(flip.compare(grey, lighter, Comparison.N)), "above FLIP 0.13");
+        RubricRule lenient = with("{\"match\": \"4\", \"metric\": \"flip\", \"flip_threshold\": 0.2}");
+        assertEquals(0.2, lenient.flipThreshold());
+        assertTrue(lenient.passes(lenient.compare(grey, lighter, Comparison.N)));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"flip_threshold\": 2}]}").getMessage()
+                .contains("2.0 is not a FLIP value, 0 to 1"));
+    }
+
+    @Test
     void minShareAndMaxFailingPixelsEachDecide() throws Exception {
         // 2 % of the panel (8,450 pixels) spoiled beyond any slack.
         int[] spoiled = GradingFixtures.spoiled(STRIPES, 8_450);
@@ -152,7 +170,8 @@ class RubricTest {
         assertTrue(deviation.getMessage().contains("3.0 is not a position deviation of 0, 1 or 2 pixels"), deviation.getMessage());
         assertTrue(deviation.getMessage().contains("line 1, column"), deviation.getMessage());
         assertTrue(bad("{\"pages\": [{\"tolerance\": 3}]}").getMessage().contains("has no \"match\""));
-        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flip\"}]}").getMessage().contains("\"exact\" or \"blur\""));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flop\"}]}").getMessage()
+                .contains("\"exact\", \"blur\" or \"flip\""));
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"alternates\": \"nowhere\"}]}").getMessage().contains("no such folder"));
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": \"3\"}]}").getMessage().contains("expected points, 0 or more, found string"));
         assertTrue(bad("{\"pages\": [").getMessage().startsWith("rubric "), "cut short");

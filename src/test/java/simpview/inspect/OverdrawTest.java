@@ -53,4 +53,37 @@ class OverdrawTest {
         }
         assertTrue(overdrawn > 10, "too few pixels written more than once: " + overdrawn);
     }
+
+    @Test
+    void theCoursesPagesCountAsTheirHistories() throws Exception {
+        Path a3 = simpview.testing.CourseFiles.require("course-simp-a3");
+        Path a4 = simpview.testing.CourseFiles.require("course-simp-a4");
+        for (Path file : new Path[] {a4.resolve("page-d.simp"), a3.resolve("pageI.simp")}) {
+            InspectedScene scene = InspectedScene.of(file);
+            Overdraw.Counts both = Overdraw.counts(scene, models);
+            Random random = new Random(file.getFileName().toString().hashCode());
+            java.util.List<Integer> reachedPixels = new java.util.ArrayList<>();
+            for (int i = 0; i < both.reached().length; i++) {
+                if (both.reached()[i] > 0) {
+                    reachedPixels.add(i);
+                }
+            }
+            int drawn = 0;
+            for (int k = 0; k < 7; k++) {
+                // Six pixels that some write reached, one anywhere.
+                int i = k < 6 ? reachedPixels.get(random.nextInt(reachedPixels.size()))
+                        : random.nextInt(both.reached().length);
+                int x = i % PageCanvas.PANEL;
+                int y = i / PageCanvas.PANEL;
+                drawn += both.reached()[i] > 0 ? 1 : 0;
+                PixelReport report = inspector.inspect(scene, x, y);
+                long reached = report.history().stream().filter(e -> e.outcome() == Outcome.WRITTEN
+                        || e.outcome() == Outcome.DEPTH_FAILED).count();
+                long failed = report.history().stream().filter(e -> e.outcome() == Outcome.DEPTH_FAILED).count();
+                assertEquals(both.reached()[i], reached, file.getFileName() + " (" + x + ", " + y + ")");
+                assertEquals(both.failed()[i], failed, file.getFileName() + " (" + x + ", " + y + ") failures");
+            }
+            assertTrue(drawn >= 6, file.getFileName() + ": too few drawn pixels sampled: " + drawn);
+        }
+    }
 }

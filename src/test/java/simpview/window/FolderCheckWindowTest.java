@@ -17,9 +17,14 @@ import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneDrawer;
-import simpview.window.instruments.FolderCheck;
+import simpview.cli.CheckCommand;
+import simpview.pages.Assignment1;
 
-/** A folder dropped on the real window is checked as {@code simpview check} checks it (issue 21). */
+/**
+ * A folder dropped on the real window is checked as {@code simpview check FOLDER} checks it (issue 21):
+ * its pages, the first assignment's pages panel by panel, its own scenes with their pictures, and its own
+ * compare.json as the rubric.
+ */
 class FolderCheckWindowTest extends WindowTestCase {
 
     private static final long SEED = 361;
@@ -36,8 +41,50 @@ class FolderCheckWindowTest extends WindowTestCase {
             }
         }
         ImageIO.write(two, "png", mine.resolve("page2.png").toFile());
-        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        String table = drop(mine);
+        assertEquals(CheckCommand.checkFolder(mine, context.withSimpDir(TestScenes.courseSimpDir())), table);
+        assertTrue(table.contains("page1.png  page 1 (seed 361)  PASS"), table);
+        assertTrue(table.contains("page2.png  page 2 (seed 361)  FAIL"), table);
+        assertTrue(table.contains("no picture of page 8 found"), table);
+        assertTrue(table.endsWith("1 of 2 pictures pass; 6 pages without a picture\n"), table);
+        assertEquals("mine: 1 of 2 pictures pass; 6 pages without a picture",
+                driver.onEdt(() -> driver.window().status().text()));
+    }
 
+    @Test
+    void aDroppedFolderBringsItsScenesItsRubricAndTheFirstAssignmentsPages() throws Exception {
+        Path mine = Files.createDirectories(dir.resolve("mine"));
+        Files.writeString(mine.resolve("blank.simp"), "# draws nothing: a black panel\n");
+        BufferedImage blank = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                boolean panel = x >= 50 && x < 700 && y >= 50 && y < 700;
+                blank.setRGB(x, y, panel ? 0x000000 : 0xFFFFFF);
+            }
+        }
+        for (int x = 300; x < 320; x++) {
+            blank.setRGB(x, 400, 0xFFFFFF); // 20 stray pixels: 99.99 %, a pass by the defaults
+        }
+        ImageIO.write(blank, "png", mine.resolve("blank.png").toFile());
+        ImageIO.write(Assignment1.render(2, PageContext.defaults().withSeed(SEED)), "png", mine.resolve("a1-page2.png").toFile());
+        Files.writeString(mine.resolve("compare.json"), "{\"pages\": [{\"match\": \"blank\", \"max_failing_pixels\": 0}]}");
+
+        String table = drop(mine);
+        assertEquals(CheckCommand.checkFolder(mine, PageContext.defaults().withSeed(SEED)
+                .withSimpDir(TestScenes.courseSimpDir())), table);
+        assertTrue(table.startsWith("rubric: compare.json (the folder's own)\n"), table);
+        assertTrue(table.matches("(?s).*\nblank\\.png +blank\\.simp +FAIL +99\\.99 % +x 250-269, y 299-299 .*"),
+                "the folder's rubric allows no failing pixel: " + table);
+        for (int k = 1; k <= 4; k++) {
+            assertTrue(table.matches("(?s).*\na1-page2\\.png +A1 page 2 panel " + k + " .*PASS +100\\.00 % +none\n.*"), table);
+        }
+        assertTrue(table.endsWith("4 of 5 pages and panels (2 pictures) pass; 8 pages without a picture\n"), table);
+    }
+
+    /** Drops the folder on the window (opened here) and waits for its table. */
+    private String drop(Path mine) throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        driver.onEdt(() -> driver.window().checkFoldersWith(CheckCommand::checkFolder));
         Transferable folder = new Transferable() {
             @Override
             public DataFlavor[] getTransferDataFlavors() {
@@ -57,14 +104,6 @@ class FolderCheckWindowTest extends WindowTestCase {
         assertTrue(driver.onEdt(() -> driver.window().frame().getTransferHandler().importData(
                 new TransferHandler.TransferSupport(driver.window().frame().getRootPane(), folder))), "the window took the folder");
         driver.awaitEdt(() -> driver.window().lastCheck() != null, "the folder's table");
-
-        String table = driver.onEdt(() -> driver.window().lastCheck());
-        assertEquals(FolderCheck.text(mine, context.withSimpDir(TestScenes.courseSimpDir())), table);
-        assertTrue(table.contains("page1.png  page 1 (seed 361)  PASS"), table);
-        assertTrue(table.contains("page2.png  page 2 (seed 361)  FAIL"), table);
-        assertTrue(table.contains("no picture of page 8 found"), table);
-        assertTrue(table.endsWith("1 of 2 pictures pass; 6 pages without a picture\n"), table);
-        assertEquals("mine: 1 of 2 pictures pass; 6 pages without a picture",
-                driver.onEdt(() -> driver.window().status().text()));
+        return driver.onEdt(() -> driver.window().lastCheck());
     }
 }

@@ -5,6 +5,8 @@ import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.util.Arrays;
 import simpview.surface.PageCanvas;
 
 /**
@@ -12,8 +14,9 @@ import simpview.surface.PageCanvas;
  * its depth test ({@link simpview.inspect.Overdraw}), from black (none)
  * through blue, red and yellow to white (the most), with its scale in the
  * top margin: the colour ramp and the counts at its ends and middle. The
- * pixels are set one by one from the counts; the legend's text and bar are
- * drawn with Java2D, as the window's other overlays are.
+ * pixels and the scale's bar are written into the image's array from the
+ * counts (each count's colour worked out once); the legend's text is drawn
+ * with Java2D, as the window's other overlays' is.
  */
 public final class OverdrawPicture {
 
@@ -35,14 +38,28 @@ public final class OverdrawPicture {
         for (int c : counts) {
             max = Math.max(max, c);
         }
-        for (int y = 0; y < size; y++) {
-            for (int x = 0; x < size; x++) {
-                image.setRGB(x, y, 0xFFFFFF);
+        // Each count's colour once, then the pixels written straight into the image's array.
+        int[] colours = new int[max + 1];
+        for (int c = 0; c <= max; c++) {
+            colours[c] = heat(c, max);
+        }
+        int[] data = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        Arrays.fill(data, 0xFFFFFF);
+        for (int y = 0; y < panel; y++) {
+            int row = (margin + panel - 1 - y) * size + margin;
+            int from = y * panel;
+            for (int x = 0; x < panel; x++) {
+                int c = counts[from + x];
+                data[row + x] = c <= 0 ? 0 : colours[c];
             }
         }
-        for (int y = 0; y < panel; y++) {
-            for (int x = 0; x < panel; x++) {
-                image.setRGB(margin + x, margin + panel - 1 - y, heat(counts[y * panel + x], max));
+        int barLeft = margin;
+        int barWidth = panel;
+        for (int i = 0; i < barWidth; i++) {
+            int count = max == 0 ? 0 : Math.round((float) i * max / (barWidth - 1));
+            int colour = colours[count];
+            for (int y = 22; y < 32; y++) {
+                data[y * size + barLeft + i] = colour;
             }
         }
         Graphics2D g = image.createGraphics();
@@ -50,14 +67,6 @@ public final class OverdrawPicture {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.setColor(Color.BLACK);
         g.drawString(title, margin, 16);
-        int barLeft = margin;
-        int barWidth = panel;
-        for (int i = 0; i < barWidth; i++) {
-            int count = max == 0 ? 0 : Math.round((float) i * max / (barWidth - 1));
-            g.setColor(new Color(heat(count, max)));
-            g.fillRect(barLeft + i, 22, 1, 10);
-        }
-        g.setColor(Color.BLACK);
         g.drawString("0", barLeft, 46);
         String middle = String.valueOf(max / 2);
         g.drawString(middle, barLeft + barWidth / 2 - g.getFontMetrics().stringWidth(middle) / 2, 46);

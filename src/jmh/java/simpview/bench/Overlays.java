@@ -1,0 +1,150 @@
+package simpview.bench;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import simpview.inspect.InspectedScene;
+import simpview.inspect.Overdraw;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.surface.PageCanvas;
+import simpview.surface.Provenance;
+import simpview.window.instruments.BackFacePicture;
+import simpview.window.instruments.DepthPicture;
+import simpview.window.instruments.OverdrawPicture;
+import simpview.window.render.DrawSettings;
+import simpview.window.render.RenderJob;
+import simpview.window.render.RenderedView;
+import simpview.window.render.View;
+
+/**
+ * What each overlay of the window costs against the page's own drawing, in
+ * one run: {@code draw} is the page drawn as the command line draws it (one
+ * thread, no record); {@code windowDraw} as the window draws it (who drew
+ * each pixel and every primitive recorded, what the back-face and depth
+ * overlays read); {@code overdraw} and {@code failures} the V and Shift+V
+ * overlays (the scene replayed counting every write that reaches each
+ * pixel's depth test, then the heat map with its scale); {@code backFaces}
+ * the K overlay and {@code depth} the depth picture, from the facts the
+ * window's drawing recorded. Scenes: A4's page-d and A3's pageI from the
+ * course folders beside -Dsimpview.courseSimp, and A2's page 7 as the page
+ * draws it (depth-cued from its near colour). Sampled, in ms.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.SampleTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 4, time = 1)
+@Fork(1)
+public class Overlays {
+
+    @Param({"a4/page-d", "a3/pageI", "a2/page7"})
+    public String scene;
+
+    private final ObjLibrary models = new ObjLibrary();
+    private final PageCanvas canvas = new PageCanvas();
+    private final PageRenderer renderer = new PageRenderer();
+    private final PageRenderer windowRenderer = new PageRenderer();
+    private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+    private PageContext context;
+    private InspectedScene inspected;
+    private View view;
+    private Path file;
+    private RenderedView recorded;
+    private Overdraw.Counts counted;
+
+    @Setup(Level.Trial)
+    public void setUp() throws SceneException {
+        Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
+        context = new PageContext(PageContext.DEFAULT_SEED, courseSimp, PageContext.PROJECT_SCENES, SceneMonitor.NONE);
+        String[] parts = scene.split("/");
+        if (parts[0].equals("a2")) {
+            int page = Integer.parseInt(parts[1].substring("page".length()));
+            inspected = InspectedScene.page(page, context);
+            view = new View.OfPage(page);
+            file = null;
+        } else {
+            file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            if (!Files.isRegularFile(file)) {
+                throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
+            }
+            inspected = InspectedScene.of(file);
+            view = new View.OfScene(file);
+        }
+        draw();
+        recorded = windowDraw();
+        if (recorded == null || recorded.facts().owners() == null) {
+            throw new IllegalStateException(scene + ": the window's drawing recorded no owners");
+        }
+        Overdraw.Counts counts = Overdraw.counts(inspected, models);
+        counted = counts;
+        System.out.println(scene + ": up to " + Overdraw.max(counts.reached()) + " writes at a pixel, "
+                + BackFacePicture.of(recorded.image(), recorded.facts()).backFacing() + " back faces");
+    }
+
+    @Benchmark
+    public PageCanvas draw() throws SceneException {
+        if (file == null) {
+            return renderer.render(((View.OfPage) view).number(), context);
+        }
+        canvas.clear();
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(models), SceneMonitor.NONE);
+        return canvas;
+    }
+
+    @Benchmark
+    public RenderedView windowDraw() {
+        return new RenderJob(view, context, DrawSettings.WINDOW).run(windowRenderer, SceneDrawer.SIMP, models,
+                provenance);
+    }
+
+    @Benchmark
+    public BufferedImage overdraw() throws SceneException {
+        return OverdrawPicture.of(Overdraw.counts(inspected, models).reached());
+    }
+
+    @Benchmark
+    public BufferedImage failures() throws SceneException {
+        return OverdrawPicture.of(Overdraw.counts(inspected, models).failed(), "depth-test failures");
+    }
+
+    /** The overdraw overlay's replay alone, without its picture. */
+    @Benchmark
+    public Overdraw.Counts counts() throws SceneException {
+        return Overdraw.counts(inspected, models);
+    }
+
+    /** The overdraw overlay's picture alone, of counts made in the set-up. */
+    @Benchmark
+    public BufferedImage heatMap() {
+        return OverdrawPicture.of(counted.reached());
+    }
+
+    @Benchmark
+    public BackFacePicture.Tinted backFaces() {
+        return BackFacePicture.of(recorded.image(), recorded.facts());
+    }
+
+    @Benchmark
+    public BufferedImage depth() {
+        return DepthPicture.of(recorded.facts().depths(), recorded.facts().depthStart());
+    }
+}

@@ -1,0 +1,186 @@
+package simpview.inspect;
+
+import java.util.ArrayList;
+import java.util.List;
+import simpview.pages.A1Layout;
+import simpview.pages.A1Lines;
+import simpview.pages.A1Polygons;
+import simpview.pages.Assignment1;
+import simpview.pages.LineTestPage;
+import simpview.pages.Page;
+import simpview.pages.PolygonTestPage;
+import simpview.raster.FilledPolygonRenderer;
+import simpview.surface.CoverageDrawable;
+import simpview.surface.Drawable;
+import simpview.surface.DrawableDecorator;
+import simpview.surface.GhostWritingDrawable;
+import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
+import simpview.surface.Span;
+
+/**
+ * The history of one pixel of the first assignment's pages (SPEC Part 3):
+ * the page is painted as it is drawn (white, four black panels), and the
+ * pixel's panel drawn again by the page's own code
+ * ({@link LineTestPage#drawPanel}, {@link PolygonTestPage#drawPanel}) through
+ * a probe that lets only the writes at the pixel through and tells each: the
+ * line or triangle that made it, its colour, and the pixel's colour before
+ * and after. On the antialiased panel the probe is the
+ * {@link CoverageDrawable} the antialiased drawer blends through (so it sees
+ * each write's coverage and colour before the blend); on the ghost page it
+ * stands behind the {@link GhostWritingDrawable} (every write white at
+ * opacity {@value GhostWritingDrawable#OPACITY}). Its last write's new colour
+ * is the pixel's colour on the page.
+ */
+public final class A1Inspector {
+
+    private A1Inspector() {
+    }
+
+    /**
+     * Page {@code page} (1 to 5) of the first assignment drawn with {@code
+     * seed}, at page pixel (x, y): x right, y up from the page's bottom-left
+     * pixel, 0 to 749.
+     *
+     * @throws IllegalArgumentException for a page or pixel outside the page
+     */
+    public static A1Report inspect(int page, long seed, int x, int y) {
+        Page shown = Assignment1.page(page);
+        int last = PageCanvas.SIZE - 1;
+        if (x < 0 || x > last || y < 0 || y > last) {
+            throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is outside the page: x and y are 0 to "
+                    + last + ", from the page's bottom-left pixel, y up");
+        }
+        int column = x;
+        int row = last - y;
+        PageCanvas canvas = new PageCanvas();
+        Drawable[] panels = A1Layout.paint(canvas);
+        int panel = A1Layout.panelAt(column, row);
+        List<A1Report.Write> writes = new ArrayList<>();
+        String drawer = null;
+        int px = -1;
+        int py = -1;
+        if (panel != 0) {
+            px = column - A1Layout.left(panel);
+            py = A1Layout.top(panel) + A1Layout.PANEL - 1 - row;
+            Watch watch = new Watch(px, py, writes);
+            if (shown instanceof LineTestPage lines) {
+                drawer = LineTestPage.DRAWERS[panel - 1];
+                A1Lines set = lines.lines(seed);
+                watch.lines = set;
+                Drawable probe = new Probe(watch, panels[panel - 1]);
+                // The antialiased drawer blends through a CoverageDrawable it is given as it is.
+                Drawable target = panel == 4 ? new CoverageProbe(watch, probe) : probe;
+                LineTestPage.drawPanel(panel, set, target, i -> watch.primitive = i);
+            } else {
+                PolygonTestPage polygons = (PolygonTestPage) shown;
+                drawer = polygons.ghost() ? "ghost (white, opacity " + GhostWritingDrawable.OPACITY + ")" : "filled";
+                A1Polygons scenes = new A1Polygons(seed);
+                watch.triangles = scenes.scene(panel);
+                watch.ghost = polygons.ghost();
+                polygons.drawPanel(panel, scenes, new Probe(watch, panels[panel - 1]), new FilledPolygonRenderer(),
+                        i -> watch.primitive = i);
+            }
+            watch.count = shown instanceof LineTestPage ? watch.lines.count()
+                    : watch.triangles.length / (3 * simpview.geometry.Vertex.NUMBERS);
+            for (A1Report.Write w : writes) {
+                w.of = watch.count;
+            }
+        }
+        return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, x, y, column, row,
+                canvas.image().getRGB(column, row), panel, drawer, px, py, writes);
+    }
+
+    /** What the probes tell: the write at the pixel, the primitive at hand. */
+    private static final class Watch {
+        final int x;
+        final int y;
+        final List<A1Report.Write> writes;
+        int primitive;
+        int count;
+        A1Lines lines;
+        double[] triangles;
+        boolean ghost;
+        /** Set by the coverage probe for the write on its way: its colour before the blend and its coverage. */
+        boolean blending;
+        int incoming;
+        double coverage;
+
+        Watch(int x, int y, List<A1Report.Write> writes) {
+            this.x = x;
+            this.y = y;
+            this.writes = writes;
+        }
+
+        void wrote(double z, int old, int now) {
+            A1Report.Write w;
+            if (lines != null) {
+                w = A1Report.Write.line(primitive, lines.start(primitive), lines.end(primitive));
+            } else {
+                w = A1Report.Write.triangle(primitive, triangles, A1Polygons.at(primitive));
+            }
+            w.z = z;
+            w.old = old;
+            w.now = now;
+            if (blending) {
+                w.blended = true;
+                w.argb = incoming;
+                w.coverage = coverage;
+                blending = false;
+            } else if (ghost) {
+                w.blended = true;
+                w.argb = Rgb.WHITE.argb();
+                w.coverage = GhostWritingDrawable.OPACITY;
+            } else {
+                w.argb = now;
+            }
+            writes.add(w);
+        }
+    }
+
+    /** Just before the panel: writes at the pixel are told (old and new colour) and go on; the rest go no further. */
+    private static final class Probe extends DrawableDecorator {
+        private final Watch watch;
+
+        Probe(Watch watch, Drawable panel) {
+            super(panel);
+            this.watch = watch;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            if (x == watch.x && y == watch.y) {
+                int old = delegate.getPixel(x, y);
+                delegate.setPixel(x, y, z, argb);
+                watch.wrote(z, old, delegate.getPixel(x, y));
+            }
+        }
+
+        @Override
+        public void fillSpan(Span s) {
+            if (s.y == watch.y && s.x0 <= watch.x && watch.x < s.x1) {
+                setPixel(watch.x, s.y, s.zAt(watch.x), s.argbAt(watch.x));
+            }
+        }
+    }
+
+    /** The antialiased drawer's blend, telling the probe behind it each write's colour and coverage first. */
+    private static final class CoverageProbe extends CoverageDrawable {
+        private final Watch watch;
+
+        CoverageProbe(Watch watch, Drawable probe) {
+            super(probe);
+            this.watch = watch;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            if (x == watch.x && y == watch.y) {
+                watch.blending = true;
+                watch.incoming = argb;
+                watch.coverage = coverage();
+                super.setPixel(x, y, z, argb);
+            }
+        }
+    }
+}

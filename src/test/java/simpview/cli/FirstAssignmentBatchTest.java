@@ -1,0 +1,191 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.A1Layout;
+import simpview.pages.Assignment1;
+import simpview.pages.PageContext;
+import simpview.testing.CourseFiles;
+
+/**
+ * {@code compare --dir} and {@code check} compare the first assignment's pages
+ * found in a folder panel by panel: one row per panel in every result format.
+ */
+class FirstAssignmentBatchTest {
+
+    @TempDir
+    Path dir;
+
+    private static BufferedImage page(int number) {
+        return Assignment1.render(number, PageContext.defaults());
+    }
+
+    /** The page with a 40x40 block of panel k painted magenta (1,600 of its 90,000 pixels). */
+    private static BufferedImage spoiled(int number, int panel) {
+        BufferedImage image = page(number);
+        for (int y = 0; y < 40; y++) {
+            for (int x = 0; x < 40; x++) {
+                image.setRGB(A1Layout.left(panel) + 100 + x, A1Layout.top(panel) + 100 + y, 0xFF00FF);
+            }
+        }
+        return image;
+    }
+
+    /** The page as a window capture: at (1, 31) of a larger grey picture. */
+    private static BufferedImage captured(BufferedImage page) {
+        BufferedImage window = new BufferedImage(page.getWidth() + 12, page.getHeight() + 40, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < window.getHeight(); y++) {
+            for (int x = 0; x < window.getWidth(); x++) {
+                window.setRGB(x, y, 0xC0C0C0);
+            }
+        }
+        window.getGraphics().drawImage(page, 1, 31, null);
+        return window;
+    }
+
+    private static Path png(Path file, BufferedImage image) throws Exception {
+        Files.createDirectories(file.getParent());
+        ImageIO.write(image, "png", file.toFile());
+        return file;
+    }
+
+    private static String line(String text, String containing) {
+        return text.lines().filter(l -> l.contains(containing)).findFirst().orElse("(no line with " + containing + ")");
+    }
+
+    @Test
+    void namesAndFoldersOfTheFirstAssignmentAreKnown() {
+        for (String name : List.of("a1-page2.png", "a1page2.png", "A1_Page_2.png", "assignment1-page2.png",
+                "a1/page2.png", "alice/A1/page2_starburst.png", "assignment-1/page2.png")) {
+            assertTrue(CompareBatch.namesFirstAssignment(name), name);
+        }
+        for (String name : List.of("page2.png", "alice/page2.png", "a2/page2.png", "a12/page2.png", "page12.png")) {
+            assertFalse(CompareBatch.namesFirstAssignment(name), name);
+        }
+    }
+
+    @Test
+    void eachPanelIsARowInEveryResultFormat() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("alice/a1-page2.png"), spoiled(2, 3));
+        png(subs.resolve("bob/a1/page2.png"), captured(page(2)));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", out.toString(),
+                "--diffs", "failing", "--gradescope", out.resolve("results.json").toString(),
+                "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "alice's panel 3 fails: " + run.err());
+        assertTrue(run.err().contains("alice/a1-page2.png: FAIL 3 of 4 panels; lowest 98.22 % (A1 page 2 panel 3 "
+                + "(alternating DDA / Bresenham))"), run.err());
+
+        List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
+        assertEquals(1 + 8, csv.size(), String.join("\n", csv));
+        for (int k = 1; k <= 4; k++) {
+            String alice = csv.get(k);
+            String bob = csv.get(4 + k);
+            assertTrue(alice.startsWith("alice/a1-page2.png,A1 page 2 panel " + k + " ("), alice);
+            assertTrue(bob.startsWith("bob/a1/page2.png,A1 page 2 panel " + k + " ("), bob);
+            assertTrue(bob.contains(",100.00,PASS,"), bob);
+            assertTrue(bob.contains("page at x 1, y 31 of the picture"), bob);
+            // 1,600 of 90,000 pixels: 98.22 % (rounded down)
+            assertTrue(alice.contains(k == 3 ? ",98.22,FAIL," : ",100.00,PASS,"), alice);
+        }
+        assertTrue(Files.readString(out.resolve("compare.md")).contains("8 rows (2 pictures): 7 pass, 1 fail"));
+        assertTrue(Files.exists(out.resolve("diffs/alice_a1-page2-panel3-diff.png")));
+        BufferedImage diff = ImageIO.read(out.resolve("diffs/alice_a1-page2-panel3-diff.png").toFile());
+        assertEquals(3 * 300 + 20, diff.getWidth());
+        assertEquals(300, diff.getHeight());
+
+        JsonObject results = JsonParser.parseString(Files.readString(out.resolve("results.json"))).getAsJsonObject();
+        JsonArray tests = results.getAsJsonArray("tests");
+        // the eight panels, and a test scoring 0 for each of the pages of --pages 1-8 no picture matched
+        assertEquals(8 + 8, tests.size());
+        assertEquals(8, tests.asList().stream().filter(t -> t.getAsJsonObject().get("name").getAsString()
+                .startsWith("A1 page 2 panel ")).count());
+        assertEquals(7.0, results.get("score").getAsDouble());
+        JsonObject failing = tests.get(2).getAsJsonObject();
+        assertEquals("A1 page 2 panel 3 (alternating DDA / Bresenham) (alice/a1-page2.png)", failing.get("name").getAsString());
+        assertTrue(failing.get("output").getAsString().startsWith(
+                "FAIL: 98.22 % of panel pixels within 8/255 without slack (99.00 % needed)"), failing.get("output").getAsString());
+        assertTrue(failing.get("output").getAsString().contains("x 100-139, y 160-199 (40x40): 1,600 pixels"),
+                "the block in the panel's own coordinates, y up: " + failing.get("output").getAsString());
+
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertEquals(8, xml.split("<testcase name=\"A1 page 2 panel ", -1).length - 1, xml);
+        assertEquals(1, xml.split("type=\"below the minimum\"", -1).length - 1, xml);
+        assertTrue(xml.contains("<testcase name=\"A1 page 2 panel 4 (antialiased) (bob/a1/page2.png)\" classname=\"bob\">"
+                + "</testcase>"), xml);
+
+        String html = Files.readString(out.resolve("index.html"));
+        assertTrue(html.contains("width=\"920\" height=\"300\""), "the panel's diff image at 1:1");
+        assertEquals(8, html.split("<section class=\"detail\"", -1).length - 1, "a view of every panel");
+    }
+
+    @Test
+    void aRubricRuleForTheAntialiasedPanelsJudgesThemByFlipAndLeavesTheOthersExact() throws Exception {
+        Path subs = dir.resolve("subs");
+        Files.createDirectories(subs);
+        Files.copy(CourseFiles.require("reference/images/a1/page1.png"), subs.resolve("a1-page1.png"));
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"defaults\": {\"min_share\": 99.5},"
+                + " \"pages\": [{\"match\": \"a1-*-panel4\", \"metric\": \"flip\", \"deviation\": 0}]}");
+        CliRun exact = CliRun.of("check", subs.toString(), "--min", "99.5");
+        assertTrue(line(exact.out(), "panel 4 (antialiased)").matches(".*FAIL +99\\.02 %.*"), exact.out());
+        CliRun flip = CliRun.of("check", subs.toString(), "--rubric", rubric.toString());
+        // the course's antialiasing, FLIP forgives: 99.94 % of the panel at most 0.13
+        assertTrue(line(flip.out(), "panel 4 (antialiased)").matches(".*PASS +99\\.94 %.*"), flip.out());
+        // the other panels stay exact and without slack (FLIP would give the DDA panel 99.81 %)
+        assertTrue(line(flip.out(), "panel 1 (DDA)").matches(".*PASS +99\\.97 %.*"), flip.out());
+        assertTrue(line(flip.out(), "panel 2 (Bresenham)").matches(".*PASS +99\\.97 %.*"), flip.out());
+        assertEquals(ExitCode.OK, flip.exitCode());
+
+        Path picture = subs.resolve("a1-page1.png");
+        CliRun strict = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--metric", "flip",
+                "--flip-threshold", "0.02");
+        assertTrue(strict.out().contains("FLIP <= 0.020"), strict.out());
+        assertTrue(line(strict.out(), "4 antialiased").matches("4 antialiased +98\\.64 % +9[0-8]\\.[0-9]{2} %"),
+                "a threshold near 0 forgives little: " + strict.out());
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1",
+                "--flip-threshold", "0.2").exitCode(), "a threshold without the metric");
+        assertEquals(ExitCode.USAGE_ERROR, CliRun.of("check", subs.toString(), "--flip-threshold", "1.5").exitCode());
+    }
+
+    @Test
+    void aPictureNamedLikeOneOfTheEightPagesThatHoldsAFirstAssignmentPageIsComparedAsOne() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page2.png"), captured(page(2)));
+        png(subs.resolve("page3.png"), new simpview.pages.PageRenderer().renderImage(3, PageContext.defaults()));
+        CliRun check = CliRun.of("check", subs.toString(), "--pages", "2-3");
+        for (int k = 1; k <= 4; k++) {
+            assertTrue(line(check.out(), "A1 page 2 panel " + k).matches("page2\\.png +A1 page 2 panel .* PASS +100\\.00 % +none"),
+                    check.out());
+        }
+        assertTrue(line(check.out(), "page3.png").matches("page3\\.png +page 3 \\(seed 361\\) +PASS +100\\.00 % +none"),
+                "one of the eight pages stays one: " + check.out());
+        assertTrue(check.out().contains("no picture of page 2 (seed 361) found"), check.out());
+    }
+
+    @Test
+    void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
+        Path subs = dir.resolve("mine");
+        png(subs.resolve("a1-page1.png"), page(1));
+        png(subs.resolve("a1-page2.png"), page(2));
+        CliRun check = CliRun.of("check", subs.toString(), "--pages", "8");
+        assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
+        assertTrue(check.out().contains("8 of 8 pages and panels (2 pictures) pass"), check.out());
+        png(subs.resolve("a1-page7.png"), page(2));
+        CliRun seven = CliRun.of("check", subs.toString(), "--pages", "8");
+        assertTrue(seven.err().contains("a1-page7.png: SKIPPED: the first assignment has pages 1 to 5, not 7"), seven.err());
+    }
+}

@@ -1,0 +1,134 @@
+package simpview.inspect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import simpview.pages.Assignment1;
+import simpview.pages.PageContext;
+import simpview.scene.simp.SceneMonitor;
+
+/**
+ * The first assignment's pages, pixel by pixel: the replayed history ends in
+ * the page's own bytes, each write starts from the colour the one before
+ * left, and every blend is the handout's c * colour + (1 - c) * old,
+ * computed here per channel.
+ */
+class A1HistoryTest {
+
+    private static final long SEED = 7;
+    private static final int LAST = 749;
+
+    private static BufferedImage page(int n) {
+        return Assignment1.render(n, new PageContext(SEED, null, null, SceneMonitor.NONE));
+    }
+
+    @Test
+    void everyHistoryEndsInThePagesBytes() {
+        int blends = 0;
+        for (int n = 1; n <= Assignment1.COUNT; n++) {
+            BufferedImage image = page(n);
+            Random random = new Random(n);
+            List<int[]> lit = new java.util.ArrayList<>();
+            int[] all = image.getRGB(0, 0, LAST + 1, LAST + 1, null, 0, LAST + 1);
+            for (int row = 0; row <= LAST; row++) {
+                for (int column = 0; column <= LAST; column++) {
+                    int rgb = all[row * (LAST + 1) + column] & 0xFFFFFF;
+                    if (rgb != 0 && simpview.pages.A1Layout.panelAt(column, row) != 0) {
+                        lit.add(new int[] {column, LAST - row});
+                    }
+                }
+            }
+            int drawn = 0;
+            for (int k = 0; k < 30; k++) {
+                // Mostly pixels the page drew, some anywhere.
+                int[] xy = k % 6 == 0 ? new int[] {random.nextInt(LAST + 1), random.nextInt(LAST + 1)}
+                        : lit.get(random.nextInt(lit.size()));
+                int x = xy[0];
+                int y = xy[1];
+                int rgb = image.getRGB(x, LAST - y) & 0xFFFFFF;
+                A1Report report = A1Inspector.inspect(n, SEED, x, y);
+                List<A1Report.Write> writes = report.writes();
+                assertEquals(rgb, report.argb() & 0xFFFFFF, "page " + n + " (" + x + ", " + y + ")");
+                if (writes.isEmpty()) {
+                    assertEquals(report.panel() == 0 ? 0xFFFFFF : 0, rgb, "page " + n + " (" + x + ", " + y + ")");
+                    continue;
+                }
+                drawn++;
+                assertEquals(0, writes.get(0).old() & 0xFFFFFF, "a panel starts black");
+                for (int i = 1; i < writes.size(); i++) {
+                    assertEquals(writes.get(i - 1).now(), writes.get(i).old(), "each write starts where the last left");
+                }
+                assertEquals(rgb, writes.get(writes.size() - 1).now() & 0xFFFFFF, "the last write's new colour");
+                for (A1Report.Write w : writes) {
+                    boolean blending = n == 5 || report.panel() == 4 && n <= 3;
+                    assertEquals(blending ? Outcome.BLENDED : Outcome.WRITTEN, w.outcome(), report.text());
+                    if (blending) {
+                        blends++;
+                        double c = w.coverage();
+                        assertTrue(c > 0 && c <= 1, "coverage " + c);
+                        if (n == 5) {
+                            assertEquals(0.14, c);
+                            assertEquals(0xFFFFFF, w.argb() & 0xFFFFFF, "a ghost write is white");
+                        }
+                        assertEquals(blend(w.argb(), w.old(), c), w.now() & 0xFFFFFF, report.text());
+                    } else {
+                        assertEquals(w.argb(), w.now(), "a plain write is its colour");
+                    }
+                }
+            }
+            assertTrue(drawn >= 20, "page " + n + ": only " + drawn + " drawn pixels sampled");
+        }
+        assertTrue(blends > 50, "blends checked: " + blends);
+    }
+
+    /** SPEC Part 3's blend, per channel in [0, 1], rounded to the nearest level. */
+    private static int blend(int colour, int old, double c) {
+        int out = 0;
+        for (int shift = 16; shift >= 0; shift -= 8) {
+            double v = c * (colour >>> shift & 0xFF) / 255.0 + (1 - c) * (old >>> shift & 0xFF) / 255.0;
+            out |= (int) Math.min(255, Math.floor(v * 255 + 0.5)) << shift;
+        }
+        return out;
+    }
+
+    @Test
+    void theStarburstsCentreIsEveryLine() {
+        // Panel 1's pixel (150, 150): image column 50 + 150, row 50 + 299 - 150; page y = 749 - row.
+        A1Report dda = A1Inspector.inspect(1, SEED, 200, LAST - 199);
+        assertEquals(1, dda.panel());
+        assertEquals("DDA", dda.drawer());
+        assertEquals(150, dda.panelX());
+        assertEquals(150, dda.panelY());
+        assertEquals(90, dda.writes().size());
+        A1Report.Write first = dda.writes().get(0);
+        assertEquals(1, first.number());
+        assertEquals(90, first.of());
+        assertTrue(first.isLine());
+        assertEquals(150, first.ends()[0]);
+        assertEquals(285, first.ends()[2]);
+        assertTrue(dda.text().contains("line 1 of 90, (150, 150) to (285, 150)"), dda.text());
+        // Panel 4 (antialiased): (150, 150) is at image column 400 + 150, row 400 + 299 - 150.
+        A1Report smooth = A1Inspector.inspect(1, SEED, 550, LAST - 549);
+        assertEquals("antialiased", smooth.drawer());
+        assertEquals(90, smooth.writes().size());
+        for (A1Report.Write w : smooth.writes()) {
+            assertEquals(Outcome.BLENDED, w.outcome());
+        }
+        assertTrue(smooth.json().contains("\"outcome\": \"blended\", \"coverage\": "), smooth.json());
+    }
+
+    @Test
+    void marginsAndPixelsOffThePage() {
+        A1Report margin = A1Inspector.inspect(4, SEED, 10, 10);
+        assertEquals(0, margin.panel());
+        assertTrue(margin.writes().isEmpty());
+        assertTrue(margin.json().contains("\"panel\": null"), margin.json());
+        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(1, SEED, 750, 3));
+        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(6, SEED, 3, 3));
+    }
+}
