@@ -158,12 +158,20 @@ class A1CoursePicturesTest {
         assertTrue(share < 90, share + " %");
     }
 
+    /** Each page drawn once and each picture read once for the class (the tests within a class run one at a time). */
+    private static final java.util.Map<Integer, BufferedImage> OURS = new java.util.HashMap<>();
+    private static final java.util.Map<Integer, BufferedImage> THEIRS = new java.util.HashMap<>();
+
     private static int[] ours(int page, int panel) {
-        return A1Panels.ourPanel(A1Panels.ourPage(page), panel);
+        return A1Panels.ourPanel(OURS.computeIfAbsent(page, A1Panels::ourPage), panel);
     }
 
     private static int[] theirs(int page, int panel) throws IOException {
-        BufferedImage capture = A1Panels.coursePicture(CourseFiles.shared(), page);
+        BufferedImage capture = THEIRS.get(page);
+        if (capture == null) {
+            capture = A1Panels.coursePicture(CourseFiles.shared(), page);
+            THEIRS.put(page, capture);
+        }
         return A1Panels.coursePanel(capture, panel);
     }
 }
