@@ -23,6 +23,10 @@ public final class LitLineRasterizer {
         }
         int a = walk.reversed() ? to : from;
         int b = walk.reversed() ? from : to;
+        if (channels == FragmentLayout.COLOUR_CHANNELS) {
+            colourLine(v, a, b, sink);
+            return;
+        }
         while (walk.next()) {
             double t = walk.t();
             double s = 1 - t;
@@ -30,6 +34,37 @@ public final class LitLineRasterizer {
                 at[c] = s * v[a + 3 + c] + t * v[b + 3 + c];
             }
             sink.pixel(walk.x(), walk.y(), s * v[a + 2] + t * v[b + 2], at);
+        }
+    }
+
+    /**
+     * The walk begun, for a line of the four colour channels (every line and
+     * outline): the same lerps, with the ends' numbers read once into locals
+     * (the writes to at[] could alias v, so the loop above reads them again
+     * at every pixel).
+     */
+    private void colourLine(double[] v, int a, int b, FragmentSink sink) {
+        int ca = a + FragmentLayout.CHANNEL;
+        int cb = b + FragmentLayout.CHANNEL;
+        double qa = v[a + FragmentLayout.Q];
+        double qb = v[b + FragmentLayout.Q];
+        double za = v[ca + FragmentLayout.Z];
+        double zb = v[cb + FragmentLayout.Z];
+        double ra = v[ca + FragmentLayout.R];
+        double rb = v[cb + FragmentLayout.R];
+        double ga = v[ca + FragmentLayout.G];
+        double gb = v[cb + FragmentLayout.G];
+        double ba = v[ca + FragmentLayout.B];
+        double bb = v[cb + FragmentLayout.B];
+        double[] channel = at;
+        while (walk.next()) {
+            double t = walk.t();
+            double s = 1 - t;
+            channel[FragmentLayout.Z] = s * za + t * zb;
+            channel[FragmentLayout.R] = s * ra + t * rb;
+            channel[FragmentLayout.G] = s * ga + t * gb;
+            channel[FragmentLayout.B] = s * ba + t * bb;
+            sink.pixel(walk.x(), walk.y(), s * qa + t * qb, channel);
         }
     }
 }

@@ -29,23 +29,35 @@ final class BatchLighting {
     void shade(LitPoints t) {
         int n = t.count;
         Lighting l = lighting;
-        java.util.Arrays.fill(t.alone, 0, n, false);
         for (int i = 0; i < n; i++) {
             t.red[i] = t.kdRed[i] * l.ambientRed;
             t.green[i] = t.kdGreen[i] * l.ambientGreen;
             t.blue[i] = t.kdBlue[i] * l.ambientBlue;
         }
-        if (l.lightCount > 0) {
-            aim(t, n);
-            int end = l.lightCount * Lights.STRIDE;
-            for (int o = 0; o < end; o += Lights.STRIDE) {
-                light(t, n, o);
+        if (l.lightCount == 0) {
+            // The ambient term alone: no point is lit alone.
+            for (int i = 0; i < n; i++) {
+                t.red[i] = Lighting.clamp(t.red[i]);
+                t.green[i] = Lighting.clamp(t.green[i]);
+                t.blue[i] = Lighting.clamp(t.blue[i]);
             }
+            return;
+        }
+        aim(t, n);
+        int end = l.lightCount * Lights.STRIDE;
+        for (int o = 0; o < end; o += Lights.STRIDE) {
+            light(t, n, o);
         }
         for (int i = 0; i < n; i++) {
-            t.red[i] = Lighting.clamp(t.red[i]);
-            t.green[i] = Lighting.clamp(t.green[i]);
-            t.blue[i] = Lighting.clamp(t.blue[i]);
+            double r = t.red[i];
+            double g = t.green[i];
+            double b = t.blue[i];
+            // A NaN sum: some term had no value (Lighting adds 0 for it) or
+            // the terms cancelled; either way the point is lit alone.
+            t.alone[i] |= r != r | g != g | b != b;
+            t.red[i] = Lighting.clamp(r);
+            t.green[i] = Lighting.clamp(g);
+            t.blue[i] = Lighting.clamp(b);
         }
         for (int i = 0; i < n; i++) {
             if (t.alone[i]) {
@@ -86,9 +98,6 @@ final class BatchLighting {
                 ez[i] = 1;
             }
         }
-        System.arraycopy(t.nx, 0, t.normalX, 0, n);
-        System.arraycopy(t.ny, 0, t.normalY, 0, n);
-        System.arraycopy(t.nz, 0, t.normalZ, 0, n);
         squaredLengths(t.nx, t.ny, t.nz, t.normal2, n);
         squaredLengths(ex, ey, ez, t.eye2, n);
         double[] sn = t.inverseNormal; // |N| until the last step
@@ -112,13 +121,8 @@ final class BatchLighting {
             q[i] = (ex[i] * t.nx[i] + ey[i] * t.ny[i] + ez[i] * t.nz[i]) * q[i];
         }
         for (int i = 0; i < n; i++) {
-            if (!(usual(t.normal2[i]) && usual(t.eye2[i]))) {
-                // Lit alone at the end; meanwhile N = 0 makes N . L never above 0, so no light adds to it.
-                t.alone[i] = true;
-                t.normalX[i] = 0;
-                t.normalY[i] = 0;
-                t.normalZ[i] = 0;
-            }
+            // Lit alone at the end; what the steps make of it meanwhile is replaced.
+            t.alone[i] = !(usual(t.normal2[i]) & usual(t.eye2[i]));
         }
     }
 
@@ -131,7 +135,7 @@ final class BatchLighting {
 
     /** A squared length that Lighting uses as it is. */
     private static boolean usual(double length2) {
-        return length2 >= Lighting.LOW && length2 <= Lighting.HIGH;
+        return length2 >= Lighting.LOW & length2 <= Lighting.HIGH;
     }
 
     /** Adds the light at data[o] to every point: the body of Lighting.shade's light loop, step by step. */
@@ -149,7 +153,7 @@ final class BatchLighting {
             lz[i] = z - t.pz[i];
         }
         for (int i = 0; i < n; i++) {
-            t.dot[i] = t.normalX[i] * lx[i] + t.normalY[i] * ly[i] + t.normalZ[i] * lz[i];
+            t.dot[i] = t.nx[i] * lx[i] + t.ny[i] * ly[i] + t.nz[i] * lz[i];
         }
         squaredLengths(lx, ly, lz, t.distance2, n);
         double[] s = t.distance;
@@ -186,9 +190,10 @@ final class BatchLighting {
     private void raise(LitPoints t, int n) {
         double[] c = t.highlight;
         double[] result = t.raised;
+        // As Lighting.power, but a NaN stays NaN: only a point lit alone, or
+        // one whose sum the NaN then makes NaN (lit alone too), can have one.
         for (int i = 0; i < n; i++) {
-            double h = c[i];
-            c[i] = h > 0 ? Math.min(h, 1) : 0;
+            c[i] = Math.min(Math.max(c[i], 0), 1);
         }
         int e = lighting.exponent;
         if (e < 0) {
@@ -228,20 +233,19 @@ final class BatchLighting {
         boolean constant = data[o + Lights.B] == 0;
         double inverseA = data[o + Lights.INVERSE_A];
         double ks = l.ks;
+        // Lighting.contribution's test for a product with no value is left
+        // out: such a product makes the sum NaN, and shade() then lights the
+        // point alone. Without one, the sums are the same as with the test.
         for (int i = 0; i < n; i++) {
-            if (!(t.dot[i] > 0)) {
-                continue; // behind the surface, edge on, at the lit point, or N = 0
+            if (t.dot[i] > 0) { // not behind the surface, edge on, or at the lit point
+                t.alone[i] |= !usual(t.distance2[i]); // lit alone at the end
+                double cos = t.cosine[i];
+                double specular = ks * t.raised[i];
+                double f = constant ? inverseA : t.attenuation[i];
+                t.red[i] += red * f * (t.kdRed[i] * cos + specular);
+                t.green[i] += green * f * (t.kdGreen[i] * cos + specular);
+                t.blue[i] += blue * f * (t.kdBlue[i] * cos + specular);
             }
-            if (!usual(t.distance2[i])) {
-                t.alone[i] = true; // lit alone at the end
-                continue;
-            }
-            double cos = t.cosine[i];
-            double specular = ks * t.raised[i];
-            double f = constant ? inverseA : t.attenuation[i];
-            t.red[i] += Lighting.contribution(red * f, t.kdRed[i] * cos + specular);
-            t.green[i] += Lighting.contribution(green * f, t.kdGreen[i] * cos + specular);
-            t.blue[i] += Lighting.contribution(blue * f, t.kdBlue[i] * cos + specular);
         }
     }
 }

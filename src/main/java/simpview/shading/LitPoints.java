@@ -29,14 +29,10 @@ public final class LitPoints {
     final double[] green;
     final double[] blue;
 
-    // BatchLighting's scratch, per point. For the point: N as used (zero for
-    // a point lit alone), E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
+    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
     // |N|^2 and |E|^2. For the light being added: L, N . L, |L|^2, |L|,
     // 1 / |L|, cos, the highlight's base V . R (then max(0, V . R) at most 1,
     // then its squares), its power, and the attenuation.
-    final double[] normalX;
-    final double[] normalY;
-    final double[] normalZ;
     final double[] eyeX;
     final double[] eyeY;
     final double[] eyeZ;
@@ -79,9 +75,6 @@ public final class LitPoints {
         red = new double[capacity];
         green = new double[capacity];
         blue = new double[capacity];
-        normalX = new double[capacity];
-        normalY = new double[capacity];
-        normalZ = new double[capacity];
         eyeX = new double[capacity];
         eyeY = new double[capacity];
         eyeZ = new double[capacity];

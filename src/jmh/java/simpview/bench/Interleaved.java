@@ -1,0 +1,233 @@
+package simpview.bench;
+
+import java.io.File;
+import java.lang.reflect.Field;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.net.MalformedURLException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.TearDown;
+
+/**
+ * Two or more builds of simpview measured against each other in one process,
+ * invocation by invocation, so that a shared host's bursts of load fall on
+ * all of them alike: the ratio is what carries over, not the times.
+ *
+ * <p>Each build's classes (the {@code build/classes/java/jmh} and
+ * {@code main} folders of a build, given as its {@code build/classes/java}
+ * folder) get a class loader of their own, so each build's code is compiled
+ * and profiled apart. One JMH benchmark class of each is set up as JMH would
+ * ({@code @Param} fields at their first value or as given, the trial and
+ * iteration set-ups once), warmed, then its benchmark method is called for
+ * each build in turn, the order reversed every round, the invocation
+ * set-ups run untimed before each call. It prints each build's median, 10th
+ * percentile and best call, and the medians' ratios to the first build's.
+ *
+ * <p>The JIT compiles each build once per process, and how well it does
+ * varies from process to process by several per cent with the same code; so
+ * run it in a few processes and compare the figures across them (including,
+ * once, a build against a copy of itself).
+ *
+ * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.Interleaved
+ * CLASS METHOD SECONDS PARAMS DIR...}, CLASS a benchmark class as
+ * {@code simpview.bench.LitPages}, PARAMS as {@code scene=a3/pageI,threads=1}
+ * (or "" for the defaults), each DIR a build's {@code build/classes/java}.
+ * The course's files are found as the benchmarks find them
+ * ({@code -Dsimpview.courseSimp}).
+ */
+public final class Interleaved {
+
+    private Interleaved() {
+    }
+
+    /** One build's benchmark object and its methods. */
+    private record Build(String name, Object state, Method benchmark, List<Method> perInvocation,
+            List<Method> tearDowns) {
+
+        void call() throws ReflectiveOperationException {
+            for (Method m : perInvocation) {
+                m.invoke(state);
+            }
+            benchmark.invoke(state);
+        }
+    }
+
+    /** Loads simpview's classes from its own build, everything else (JMH, the JDK, libraries) from its parent. */
+    private static final class OwnFirst extends URLClassLoader {
+
+        OwnFirst(URL[] urls, ClassLoader parent) {
+            super(urls, parent);
+        }
+
+        @Override
+        protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+            if (!name.startsWith("simpview.") || name.startsWith(Interleaved.class.getName())) {
+                return super.loadClass(name, resolve);
+            }
+            synchronized (getClassLoadingLock(name)) {
+                Class<?> c = findLoadedClass(name);
+                if (c == null) {
+                    try {
+                        c = findClass(name);
+                    } catch (ClassNotFoundException e) {
+                        c = super.loadClass(name, false);
+                    }
+                }
+                if (resolve) {
+                    resolveClass(c);
+                }
+                return c;
+            }
+        }
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args.length < 5) {
+            System.err.println("usage: Interleaved CLASS METHOD SECONDS PARAMS DIR...");
+            System.exit(2);
+        }
+        double seconds = Double.parseDouble(args[2]);
+        List<Build> builds = new ArrayList<>();
+        for (int i = 4; i < args.length; i++) {
+            builds.add(load(args[i], args[0], args[1], args[3]));
+        }
+        long warmUntil = System.nanoTime() + (long) (Math.max(4, seconds / 3) * 1e9);
+        while (System.nanoTime() < warmUntil) {
+            for (Build b : builds) {
+                for (int k = 0; k < 20; k++) {
+                    b.call();
+                }
+            }
+        }
+        List<long[]> samples = new ArrayList<>();
+        for (int i = 0; i < builds.size(); i++) {
+            samples.add(new long[1024]);
+        }
+        int rounds = 0;
+        long until = System.nanoTime() + (long) (seconds * 1e9);
+        while (System.nanoTime() < until) {
+            for (int j = 0; j < builds.size(); j++) {
+                int i = rounds % 2 == 0 ? j : builds.size() - 1 - j;
+                Build b = builds.get(i);
+                for (Method m : b.perInvocation()) {
+                    m.invoke(b.state());
+                }
+                long start = System.nanoTime();
+                b.benchmark().invoke(b.state());
+                long took = System.nanoTime() - start;
+                long[] s = samples.get(i);
+                if (rounds == s.length) {
+                    s = Arrays.copyOf(s, 2 * s.length);
+                    samples.set(i, s);
+                }
+                s[rounds] = took;
+            }
+            rounds++;
+        }
+        double first = 0;
+        for (int i = 0; i < builds.size(); i++) {
+            long[] s = Arrays.copyOf(samples.get(i), rounds);
+            Arrays.sort(s);
+            double median = s[rounds / 2] / 1e6;
+            if (i == 0) {
+                first = median;
+            }
+            System.out.printf(Locale.ROOT, "%-16s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%n",
+                    builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first);
+        }
+        for (Build b : builds) {
+            for (Method m : b.tearDowns()) {
+                m.invoke(b.state());
+            }
+        }
+    }
+
+    private static Build load(String dir, String className, String method, String params)
+            throws ReflectiveOperationException, MalformedURLException {
+        File classes = new File(dir);
+        URL[] urls = {new File(classes, "jmh").toURI().toURL(), new File(classes, "main").toURI().toURL()};
+        ClassLoader loader = new OwnFirst(urls, Interleaved.class.getClassLoader());
+        Class<?> type = Class.forName(className, true, loader);
+        Object state = type.getDeclaredConstructor().newInstance();
+        Map<String, String> values = new LinkedHashMap<>();
+        for (Field f : type.getFields()) {
+            Param p = f.getAnnotation(Param.class);
+            if (p != null && p.value().length > 0) {
+                values.put(f.getName(), p.value()[0]);
+            }
+        }
+        for (String given : params.isEmpty() ? new String[0] : params.split(",")) {
+            String[] kv = given.split("=", 2);
+            if (kv.length != 2) {
+                throw new IllegalArgumentException("a parameter is name=value, not " + given);
+            }
+            if (values.containsKey(kv[0])) { // a parameter an older build lacks keeps its default there
+                values.put(kv[0], kv[1]);
+            }
+        }
+        for (Map.Entry<String, String> e : values.entrySet()) {
+            set(type.getField(e.getKey()), state, e.getValue());
+        }
+        List<Method> perInvocation = new ArrayList<>();
+        List<Method> tearDowns = new ArrayList<>();
+        for (Level level : new Level[] {Level.Trial, Level.Iteration, Level.Invocation}) {
+            for (Method m : type.getMethods()) {
+                Setup setup = m.getAnnotation(Setup.class);
+                if (setup != null && setup.value() == level) {
+                    if (level == Level.Invocation) {
+                        perInvocation.add(m);
+                    } else {
+                        invoke(m, state);
+                    }
+                }
+            }
+        }
+        for (Method m : type.getMethods()) {
+            if (m.getAnnotation(TearDown.class) != null) {
+                tearDowns.add(m);
+            }
+        }
+        return new Build(nameOf(classes), state, type.getMethod(method),
+                perInvocation, tearDowns);
+    }
+
+    /** A build's name: its folder, less a trailing build/classes/java or classes/java. */
+    private static String nameOf(File classes) {
+        String path = classes.getAbsolutePath().replace(File.separatorChar, '/');
+        for (String tail : new String[] {"/build/classes/java", "/classes/java"}) {
+            if (path.endsWith(tail)) {
+                path = path.substring(0, path.length() - tail.length());
+                break;
+            }
+        }
+        return path.substring(path.lastIndexOf('/') + 1);
+    }
+
+    private static void invoke(Method m, Object state) throws ReflectiveOperationException {
+        try {
+            m.invoke(state);
+        } catch (InvocationTargetException e) {
+            throw new IllegalStateException(m.getName() + " failed", e.getCause());
+        }
+    }
+
+    private static void set(Field f, Object state, String value) throws IllegalAccessException {
+        Class<?> t = f.getType();
+        Object v = t == int.class ? Integer.valueOf(value)
+                : t == boolean.class ? Boolean.valueOf(value)
+                : t == double.class ? Double.valueOf(value)
+                : t == long.class ? Long.valueOf(value)
+                : value;
+        f.set(state, v);
+    }
+}
