@@ -36,7 +36,42 @@ public final class A1Pixel {
                 ((PolygonTestPage) shown).ghost() ? "ghost (white, opacity 0.14)" : "filled");
     }
 
-    private static String line(A1Lines set, int panel, int x, int y) {
+    /**
+     * The line or triangle (0-based, in drawing order) that last wrote image
+     * pixel (ix, iy) of the page, with the panel it is in: {panel, index};
+     * null outside the panels or where nothing wrote.
+     */
+    public static int[] lastAt(int page, long seed, int ix, int iy) {
+        int panel = A1Layout.panelAt(ix, iy);
+        if (panel == 0) {
+            return null;
+        }
+        int x = ix - A1Layout.left(panel);
+        int y = A1Layout.top(panel) + A1Layout.PANEL - 1 - iy;
+        Page shown = Assignment1.page(page);
+        int[] hits = shown instanceof LineTestPage lines ? lastLine(lines.lines(seed), panel, x, y)
+                : lastTriangle(new A1Polygons(seed), panel, x, y);
+        return hits[0] < 0 ? null : new int[] {panel, hits[0]};
+    }
+
+    /**
+     * The magnifier's marks at image pixel (ix, iy): the line that last wrote
+     * it as given and between its rounded ends, or the triangle as given;
+     * {@link A1Marks#NONE} where nothing did.
+     */
+    public static A1Marks marksAt(int page, long seed, int ix, int iy) {
+        int[] last = lastAt(page, seed, ix, iy);
+        if (last == null) {
+            return A1Marks.NONE;
+        }
+        if (Assignment1.page(page) instanceof LineTestPage lines) {
+            return A1Marks.line(lines.lines(seed), last[1], last[0]);
+        }
+        return A1Marks.triangles(new A1Polygons(seed), last);
+    }
+
+    /** {the last line to write panel pixel (x, y), how many did}; -1 for none. */
+    private static int[] lastLine(A1Lines set, int panel, int x, int y) {
         Probe probe = new Probe(x, y);
         LineRenderer drawer = LineTestPage.drawer(panel);
         int last = -1;
@@ -49,6 +84,31 @@ public final class A1Pixel {
                 count++;
             }
         }
+        return new int[] {last, count};
+    }
+
+    /** {the last triangle to write panel pixel (x, y), how many did}; -1 for none. */
+    private static int[] lastTriangle(A1Polygons scenes, int panel, int x, int y) {
+        Probe probe = new Probe(x, y);
+        FilledPolygonRenderer fill = new FilledPolygonRenderer();
+        double[] n = scenes.scene(panel);
+        int last = -1;
+        int count = 0;
+        for (int i = 0; i < scenes.count(panel); i++) {
+            probe.hit = false;
+            fill.drawPolygon(n, A1Polygons.at(i), probe);
+            if (probe.hit) {
+                last = i;
+                count++;
+            }
+        }
+        return new int[] {last, count};
+    }
+
+    private static String line(A1Lines set, int panel, int x, int y) {
+        int[] hits = lastLine(set, panel, x, y);
+        int last = hits[0];
+        int count = hits[1];
         if (last < 0) {
             return "no line drew it (background)";
         }
@@ -74,19 +134,9 @@ public final class A1Pixel {
     }
 
     private static String triangle(A1Polygons scenes, int panel, int x, int y, String how) {
-        Probe probe = new Probe(x, y);
-        FilledPolygonRenderer fill = new FilledPolygonRenderer();
-        double[] n = scenes.scene(panel);
-        int last = -1;
-        int count = 0;
-        for (int i = 0; i < scenes.count(panel); i++) {
-            probe.hit = false;
-            fill.drawPolygon(n, A1Polygons.at(i), probe);
-            if (probe.hit) {
-                last = i;
-                count++;
-            }
-        }
+        int[] hits = lastTriangle(scenes, panel, x, y);
+        int last = hits[0];
+        int count = hits[1];
         if (last < 0) {
             return how + " · no triangle drew it (background)";
         }

@@ -9,7 +9,7 @@ public final class Assignment1 {
 
     public static final int COUNT = 5;
 
-    private static final List<Page> ALL = List.of(
+    private static final List<A1Page> ALL = List.of(
             LineTestPage.starburst(),
             LineTestPage.parallelogram(),
             LineTestPage.random(),
@@ -19,12 +19,12 @@ public final class Assignment1 {
     private Assignment1() {
     }
 
-    public static List<Page> all() {
+    public static List<A1Page> all() {
         return ALL;
     }
 
     /** Page n, 1-based. */
-    public static Page page(int number) {
+    public static A1Page page(int number) {
         if (number < 1 || number > COUNT) {
             throw new IllegalArgumentException("the first assignment has no page " + number + "; its pages are 1 to " + COUNT);
         }
@@ -33,13 +33,8 @@ public final class Assignment1 {
 
     /** Page n drawn on a fresh canvas: its pictures read no files, so it cannot fail. */
     public static BufferedImage render(int number, PageContext context) {
-        Page page = page(number);
         PageCanvas canvas = new PageCanvas();
-        try {
-            page.draw(canvas, context);
-        } catch (simpview.scene.SceneException e) {
-            throw new IllegalStateException("the first assignment's pages read no files", e);
-        }
+        page(number).drawSteps(canvas, context, Integer.MAX_VALUE);
         return canvas.image();
     }
 }

@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.util.function.IntConsumer;
 import java.util.function.LongFunction;
+import simpview.geometry.Vertex;
 import simpview.raster.AlternatingLineRenderer;
 import simpview.raster.AntialiasedLineRenderer;
 import simpview.raster.BresenhamLineRenderer;
@@ -15,7 +16,7 @@ import simpview.surface.PageCanvas;
  * same lines on all four panels, each panel with its drawer: 1 DDA,
  * 2 Bresenham, 3 alternating (DDA first), 4 antialiased.
  */
-public final class LineTestPage implements Page {
+public final class LineTestPage implements A1Page {
 
     /** What draws panel k (1..4), as the inspector and the docs name it. */
     public static final String[] DRAWERS = {"DDA", "Bresenham", "alternating DDA / Bresenham", "antialiased"};
@@ -70,10 +71,21 @@ public final class LineTestPage implements Page {
 
     @Override
     public void draw(PageCanvas canvas, PageContext context) {
+        drawSteps(canvas, context, Integer.MAX_VALUE);
+    }
+
+    @Override
+    public int steps(PageContext context) {
+        return lines(context.seed()).count();
+    }
+
+    @Override
+    public void drawSteps(PageCanvas canvas, PageContext context, int steps) {
         Drawable[] panels = A1Layout.paint(canvas);
         A1Lines set = lines(context.seed());
+        int count = Math.min(Math.max(steps, 0), set.count());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
-            drawPanel(k, set, panels[k - 1], null);
+            drawPanel(k, set, count, panels[k - 1], null);
         }
     }
 
@@ -83,13 +95,44 @@ public final class LineTestPage implements Page {
      * index (0, 1, ...) before it is drawn (the inspector's replay of one pixel).
      */
     public static void drawPanel(int k, A1Lines set, Drawable panel, IntConsumer beforeLine) {
+        drawPanel(k, set, set.count(), panel, beforeLine);
+    }
+
+    /** The same, the first {@code count} lines only. */
+    private static void drawPanel(int k, A1Lines set, int count, Drawable panel, IntConsumer beforeLine) {
         LineRenderer drawer = drawer(k);
         double[] n = set.numbers();
-        for (int i = 0; i < set.count(); i++) {
+        for (int i = 0; i < count; i++) {
             if (beforeLine != null) {
                 beforeLine.accept(i);
             }
             drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panel);
         }
+    }
+
+    /** E.g. "line 24 of 90, (150, 150) to (145.289, 284.918), rounded (150, 150) to (145, 285), ...; panel 3 by the Bresenham". */
+    @Override
+    public String describeStep(PageContext context, int step) {
+        A1Lines set = lines(context.seed());
+        int i = Math.min(Math.max(step, 1), set.count()) - 1;
+        Vertex p = set.start(i);
+        Vertex q = set.end(i);
+        return String.format(java.util.Locale.ROOT,
+                "line %d of %d, (%s, %s) to (%s, %s), rounded (%.0f, %.0f) to (%.0f, %.0f), in every panel; panel 3 by the %s",
+                i + 1, set.count(), number(p.x()), number(p.y()), number(q.x()), number(q.y()), Math.floor(p.x() + 0.5),
+                Math.floor(p.y() + 0.5), Math.floor(q.x() + 0.5), Math.floor(q.y() + 0.5), i % 2 == 0 ? "DDA" : "Bresenham");
+    }
+
+    @Override
+    public A1Marks stepMarks(PageContext context, int step) {
+        A1Lines set = lines(context.seed());
+        int i = Math.min(Math.max(step, 1), set.count()) - 1;
+        return A1Marks.line(set, i, 1, 2, 3, 4);
+    }
+
+    /** A coordinate as it was given, to three decimals where it has any. */
+    static String number(double v) {
+        return v == Math.rint(v) ? String.format(java.util.Locale.ROOT, "%.0f", v)
+                : String.format(java.util.Locale.ROOT, "%.3f", v);
     }
 }

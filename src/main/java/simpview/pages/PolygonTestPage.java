@@ -13,7 +13,7 @@ import simpview.surface.PageCanvas;
  * colour (page 4), or every triangle white at opacity 0.14 through a
  * {@link GhostWritingDrawable} (page 5, the same geometry and seed).
  */
-public final class PolygonTestPage implements Page {
+public final class PolygonTestPage implements A1Page {
 
     private final boolean ghost;
 
@@ -45,11 +45,26 @@ public final class PolygonTestPage implements Page {
 
     @Override
     public void draw(PageCanvas canvas, PageContext context) {
+        drawSteps(canvas, context, Integer.MAX_VALUE);
+    }
+
+    @Override
+    public int steps(PageContext context) {
+        A1Polygons scenes = new A1Polygons(context.seed());
+        int most = 0;
+        for (int k = 1; k <= A1Polygons.SCENES; k++) {
+            most = Math.max(most, scenes.count(k));
+        }
+        return most;
+    }
+
+    @Override
+    public void drawSteps(PageCanvas canvas, PageContext context, int steps) {
         Drawable[] panels = A1Layout.paint(canvas);
         A1Polygons scenes = new A1Polygons(context.seed());
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
-            drawPanel(k, scenes, panels[k - 1], fill, null);
+            drawPanel(k, scenes, Math.min(Math.max(steps, 0), scenes.count(k)), panels[k - 1], fill, null);
         }
     }
 
@@ -61,13 +76,42 @@ public final class PolygonTestPage implements Page {
      */
     public void drawPanel(int k, A1Polygons scenes, Drawable panel, FilledPolygonRenderer fill,
             IntConsumer beforeTriangle) {
+        drawPanel(k, scenes, scenes.count(k), panel, fill, beforeTriangle);
+    }
+
+    /** The same, the first {@code count} triangles only. */
+    private void drawPanel(int k, A1Polygons scenes, int count, Drawable panel, FilledPolygonRenderer fill,
+            IntConsumer beforeTriangle) {
         Drawable target = ghost ? new GhostWritingDrawable(panel) : panel;
         double[] n = scenes.scene(k);
-        for (int i = 0; i < scenes.count(k); i++) {
+        for (int i = 0; i < count; i++) {
             if (beforeTriangle != null) {
                 beforeTriangle.accept(i);
             }
             fill.drawPolygon(n, A1Polygons.at(i), target);
         }
+    }
+
+    /** E.g. "triangle 30: panel 1, 30 of 90; panel 2, 30 of 162; panel 3, 30 of 162; panel 4 whole (20)". */
+    @Override
+    public String describeStep(PageContext context, int step) {
+        A1Polygons scenes = new A1Polygons(context.seed());
+        StringBuilder sb = new StringBuilder("triangle " + step + ":");
+        for (int k = 1; k <= A1Polygons.SCENES; k++) {
+            int count = scenes.count(k);
+            sb.append(k == 1 ? " " : "; ").append("panel ").append(k)
+                    .append(step <= count ? ", " + step + " of " + count : " whole (" + count + ")");
+        }
+        return sb.toString();
+    }
+
+    @Override
+    public A1Marks stepMarks(PageContext context, int step) {
+        int[] pairs = new int[2 * A1Polygons.SCENES];
+        for (int k = 1; k <= A1Polygons.SCENES; k++) {
+            pairs[2 * (k - 1)] = k;
+            pairs[2 * (k - 1) + 1] = step - 1;
+        }
+        return A1Marks.triangles(new A1Polygons(context.seed()), pairs);
     }
 }

@@ -34,10 +34,17 @@ public final class AntialiasedLineRenderer implements LineRenderer {
     public static final double PAST_END = 0.5;
 
     private static final double DISC = Math.PI * RADIUS * RADIUS;
+    private static final double PER_DISC = 1 / DISC;
+    private static final double PER_RADIUS = 1 / RADIUS;
     /** No pixel whose centre is farther than this from the segment's line is touched. */
     private static final double REACH = HALF_WIDTH + RADIUS;
 
+    /** Lines up to this reach (in numerator units, about 1.2 x their length) remember their coverages. */
+    private static final int REMEMBERED = 4096;
+
     private final double[] ends = new double[2 * Vertex.NUMBERS];
+    /** A line's coverages by the numerator of their distance; -1 where not yet worked out. */
+    private final double[] byNumerator = new double[REMEMBERED + 1];
     private Drawable wrapped;
     private CoverageDrawable blend;
 
@@ -48,14 +55,15 @@ public final class AntialiasedLineRenderer implements LineRenderer {
      */
     public static double coverage(double distance) {
         double d = Math.abs(distance);
-        double c = 1 - (cap(HALF_WIDTH - d) + cap(HALF_WIDTH + d)) / DISC;
+        double c = 1 - (cap(HALF_WIDTH - d) + cap(HALF_WIDTH + d)) * PER_DISC;
         return c <= 0 ? 0 : Math.min(c, 1);
     }
 
     /**
      * The area of the disc beyond a line at signed distance h from its centre
      * (positive: the line does not reach the centre): the handout's pie wedge
-     * and triangle, {@code r^2 theta - h sqrt(r^2 - h^2)} with cos theta = h / r.
+     * and triangle, {@code r^2 theta - h sqrt(r^2 - h^2)} with cos theta = h / r
+     * ({@link ArcCosine}: within a few units in the last place of Math.acos).
      */
     private static double cap(double h) {
         if (h >= RADIUS) {
@@ -64,7 +72,9 @@ public final class AntialiasedLineRenderer implements LineRenderer {
         if (h <= -RADIUS) {
             return DISC;
         }
-        return RADIUS * RADIUS * Math.acos(h / RADIUS) - h * Math.sqrt(RADIUS * RADIUS - h * h);
+        double cos = h * PER_RADIUS;
+        double sin = ArcCosine.sine(cos);
+        return RADIUS * RADIUS * ArcCosine.of(cos, sin) - h * RADIUS * sin;
     }
 
     @Override
@@ -109,9 +119,23 @@ public final class AntialiasedLineRenderer implements LineRenderer {
         double qg = v[to + G];
         double qb = v[to + B];
         double qz = v[to + Z];
+        // A line of one colour is packed once (the lerp would give it again, or a last bit beside it).
+        boolean oneColour = pr == qr && pg == qg && pb == qb;
+        int colour = Colors.pack(pr, pg, pb);
         // A pixel at minor offset o from the line's minor coordinate at its
         // major one is o |u_major| from the line: only |o| < REACH / |u_major| can be touched.
         double minorReach = REACH / Math.abs(xMajor ? ux : uy);
+        // A pixel's distance from the line is |ox dy - oy dx| / length, the numerator an integer
+        // (integer ends, integer centres): the coverage depends on it alone, so each is worked out
+        // once a line. A one-pixel line's distance is |oy|.
+        double nx = length == 0 ? 1 : dx;
+        double ny = length == 0 ? 0 : dy;
+        double scale = length == 0 ? 1 : length;
+        double reachNumerator = REACH * scale;
+        boolean remember = reachNumerator < REMEMBERED;
+        if (remember) {
+            java.util.Arrays.fill(byNumerator, 0, (int) reachNumerator + 1, -1);
+        }
         for (double m = lo; m <= hi; m++) {
             double centre = minorA + (m - majorA) * slope;
             double first = Math.max(Math.ceil(centre - minorReach), 0);
@@ -125,11 +149,21 @@ public final class AntialiasedLineRenderer implements LineRenderer {
                 if (s < -PAST_END || s > length + PAST_END) {
                     continue;
                 }
-                double distance = ox * uy - oy * ux;
-                if (Math.abs(distance) >= REACH) {
+                double numerator = Math.abs(ox * ny - oy * nx);
+                if (numerator >= reachNumerator) {
                     continue;
                 }
-                double c = coverage(distance);
+                double c;
+                if (remember) {
+                    int key = (int) numerator;
+                    c = byNumerator[key];
+                    if (c < 0) {
+                        c = coverage(numerator / scale);
+                        byNumerator[key] = c;
+                    }
+                } else {
+                    c = coverage(numerator / scale);
+                }
                 if (c <= 0) {
                     continue;
                 }
@@ -137,7 +171,7 @@ public final class AntialiasedLineRenderer implements LineRenderer {
                 double k = 1 - t;
                 target.cover(c);
                 target.setPixel((int) px, (int) py, k * pz + t * qz,
-                        Colors.pack(k * pr + t * qr, k * pg + t * qg, k * pb + t * qb));
+                        oneColour ? colour : Colors.pack(k * pr + t * qr, k * pg + t * qg, k * pb + t * qb));
             }
         }
         target.cover(1);

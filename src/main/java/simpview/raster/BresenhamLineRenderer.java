@@ -1,26 +1,24 @@
 package simpview.raster;
 
 /**
- * Bresenham's line ({@link BresenhamWalk}): endpoints rounded as for the DDA,
- * the same start endpoint, integer midpoint decisions in the first octant
- * and the any-octant transform for the rest.
+ * Bresenham's line ({@link BresenhamWalk}), as the course's page 1 panel 2
+ * draws it: the midpoint algorithm in the first octant and the any-octant
+ * transform for the rest, from the same start endpoint as the DDA; the ends'
+ * major coordinates rounded, the decisions taken on the line through their
+ * minor coordinates as given; at an exact tie the minor coordinate is kept
+ * (on the start's side).
  *
- * <p>At an exact tie (the midpoint on the line) it steps the minor
- * coordinate, away from the start's side. The course's page 1 panel 2
- * cannot decide it: at the 60 ties of its spokes' rounded endpoints where it
- * lit one of the two pixels it stepped at 30 and kept at 30 (its Bresenham
- * follows the unrounded line there: docs/assignment1.md). Stepping makes
- * Bresenham agree with the DDA's half up on lines whose minor coordinate
- * rises. The two light the same pixels on every line without an exact tie;
- * at a tie of a falling line Bresenham steps down where the DDA rounds half
- * up, and the DDA's added-up sum may land a last bit beside the half.
+ * <p>On integer endpoints it is the integer midpoint algorithm, and lights
+ * the DDA's pixels on every line without an exact tie; at a tie it keeps
+ * where the DDA rounds half up (the other pixel on rising lines, the same on
+ * falling ones), and the DDA's added-up sum may land a last bit beside the
+ * half. On other endpoints the two differ wherever the line through the
+ * rounded ends and the one through the given ones round apart
+ * (docs/assignment1.md).
  */
 public final class BresenhamLineRenderer extends WalkingLineRenderer {
 
-    /** At an exact tie, step the minor coordinate. */
-    public static final boolean STEP_AT_TIE = true;
-
     public BresenhamLineRenderer() {
-        super(new BresenhamWalk(STEP_AT_TIE));
+        super(new BresenhamWalk());
     }
 }

@@ -1,24 +1,45 @@
 package simpview.raster;
 
-import java.math.BigInteger;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 
 /**
- * Bresenham's line: the integer midpoint algorithm of the first octant, with
- * the any-octant transform for the rest (the major axis and the minor
- * direction swapped or mirrored into it), from the same start endpoint as the
- * {@link DdaWalk}. At each step a decision variable says on which side of the
- * line the midpoint between the two candidate pixels lies; at an exact tie
- * (the midpoint on the line) it steps the minor coordinate when
- * {@code stepAtTie}, else keeps it.
+ * Bresenham's line, as the course's page 1 panel 2 draws it: the midpoint
+ * algorithm of the first octant, with the any-octant transform for the rest
+ * (the major axis and the minor direction swapped or mirrored into it), from
+ * the same start endpoint as the {@link DdaWalk} (the smaller rounded major
+ * coordinate). The major coordinates of the ends are rounded, {@code
+ * floor(v + 0.5)}, and give the pixels' count; the start pixel's minor
+ * coordinate is the rounded one; the decisions are taken on the line through
+ * the ends' minor coordinates <em>as given</em>. At each step the decision
+ * variable, in units of 1/(2 dx), says on which side of the line the
+ * midpoint between the two candidate pixels lies: it starts at {@code
+ * 2 dx f + 2 dy - dx}, f the start's minor offset from its pixel (in the
+ * first octant's direction), adds {@code 2 dy} per step and gives {@code
+ * 2 dx} back at a minor step. At an exact tie (the midpoint on the line) the
+ * walk keeps the minor coordinate, on the start's side.
  *
- * <p>Rounded endpoints must lie within 2^60 of the origin; a line with an end
- * beyond that draws nothing.
+ * <p>On integer endpoints this is the integer algorithm exactly ({@code 2 dy -
+ * dx}, {@code +2 dy}, {@code -2 dx}, integers held exactly in doubles), and
+ * both end pixels are the endpoints. On others the end pixel is the rounded
+ * endpoint's but where the end's minor coordinate lies exactly half-way
+ * between two pixels: there the tie rule keeps it on the start's side (the
+ * course's 60-degree spoke ends at column 217 for x = 217.5).
+ *
+ * <p>When the line starts off the surface, the hidden steps are taken too (so
+ * a clipped line has the same pixels as the whole one), unless there are more
+ * than {@value #MAX_STEPPED_SKIP}: then the walk jumps there by the closed
+ * form, evaluated exactly on the same numbers, which is the stepping's result
+ * whenever the stepping is exact (integer ends). Rounded endpoints must lie
+ * within 2^50 of the origin, so that the integer case stays exact; a line
+ * with an end beyond that draws nothing.
  */
 public final class BresenhamWalk implements LineWalk {
 
-    private static final double LIMIT = 0x1p60;
+    private static final double LIMIT = 0x1p50;
+    /** Above this many hidden steps the walk jumps instead of stepping. */
+    static final int MAX_STEPPED_SKIP = 1 << 20;
 
-    private final boolean stepAtTie;
     private boolean xMajor;
     private boolean reversed;
     private int minorLimit;
@@ -26,9 +47,10 @@ public final class BresenhamWalk implements LineWalk {
     private int remaining;
     private long minor;
     private long direction;
-    private long decision;
-    private long twiceMinorSpan;
-    private long twiceMajorSpan;
+    /** The decision for the next step: 2 dx (the line's minor offset at the next column - the pixel's - 1/2). */
+    private double decision;
+    private double twiceRise;
+    private double twiceSpan;
     private double halfStart;
     private double halfSteps;
     private boolean first;
@@ -36,17 +58,13 @@ public final class BresenhamWalk implements LineWalk {
     private int y;
     private double t;
 
-    /** A walk that, at an exact tie, steps the minor coordinate (true) or keeps it (false). */
-    public BresenhamWalk(boolean stepAtTie) {
-        this.stepAtTie = stepAtTie;
-    }
-
     @Override
     public boolean start(double px, double py, double qx, double qy, int width, int height) {
         double x0 = Math.floor(px + 0.5);
         double y0 = Math.floor(py + 0.5);
         double x1 = Math.floor(qx + 0.5);
         double y1 = Math.floor(qy + 0.5);
+        // Also false for NaN.
         if (!(Math.abs(x0) <= LIMIT && Math.abs(y0) <= LIMIT && Math.abs(x1) <= LIMIT && Math.abs(y1) <= LIMIT)) {
             return false;
         }
@@ -54,8 +72,9 @@ public final class BresenhamWalk implements LineWalk {
         reversed = xMajor ? x1 < x0 : y1 < y0;
         long major0 = (long) (xMajor ? (reversed ? x1 : x0) : (reversed ? y1 : y0));
         long major1 = (long) (xMajor ? (reversed ? x0 : x1) : (reversed ? y0 : y1));
+        double minorStart = xMajor ? (reversed ? qy : py) : (reversed ? qx : px);
+        double minorEnd = xMajor ? (reversed ? py : qy) : (reversed ? px : qx);
         long minor0 = (long) (xMajor ? (reversed ? y1 : y0) : (reversed ? x1 : x0));
-        long minor1 = (long) (xMajor ? (reversed ? y0 : y1) : (reversed ? x0 : x1));
         int majorLimit = xMajor ? width : height;
         minorLimit = xMajor ? height : width;
         long lo = Math.max(major0, 0);
@@ -64,16 +83,22 @@ public final class BresenhamWalk implements LineWalk {
             return false;
         }
         long span = major1 - major0;
-        long minorSpan = Math.abs(minor1 - minor0);
-        direction = minor1 >= minor0 ? 1 : -1;
-        twiceMajorSpan = 2 * span;
-        twiceMinorSpan = 2 * minorSpan;
+        direction = minorEnd >= minorStart ? 1 : -1;
+        double rise = Math.abs(minorEnd - minorStart);
+        // In [-1/2, 1/2]; exact, the pixel being within a half of the coordinate.
+        double offset = direction * (minorStart - minor0);
+        twiceSpan = 2.0 * span;
+        twiceRise = 2 * rise;
+        decision = twiceSpan * offset + twiceRise - span;
+        minor = minor0;
         long skip = lo - major0;
-        long steps = span == 0 ? 0 : offsetAt(skip, span, minorSpan);
-        minor = minor0 + direction * steps;
-        // The decision for the step after this one: 2 (k + 1) dy - 2 dx m - dx, wrapping
-        // arithmetic giving the exact value, which is small (|d| <= 2 dx + 2 dy).
-        decision = (skip + 1) * twiceMinorSpan - steps * twiceMajorSpan - span;
+        if (skip <= MAX_STEPPED_SKIP) {
+            for (long n = 0; n < skip; n++) {
+                step();
+            }
+        } else {
+            jump(skip, span, offset, rise);
+        }
         halfStart = 0.5 * major0;
         halfSteps = 0.5 * major1 - halfStart;
         major = (int) lo;
@@ -82,21 +107,28 @@ public final class BresenhamWalk implements LineWalk {
         return true;
     }
 
-    /**
-     * How many minor steps the midpoint walk has taken after k major steps:
-     * k dy / dx rounded to the nearest integer, ties as {@code stepAtTie} says,
-     * {@code floor((2 k dy + dx - (stepAtTie ? 0 : 1)) / (2 dx))}.
-     */
-    private long offsetAt(long k, long dx, long dy) {
-        long tie = stepAtTie ? 0 : 1;
-        long high = Math.multiplyHigh(2 * k, dy);
-        long low = 2 * k * dy;
-        if (high == 0 && low >= 0 && low <= Long.MAX_VALUE - dx) {
-            return Math.floorDiv(low + dx - tie, 2 * dx);
+    /** One major step's decision: a minor step when the midpoint lies strictly below the line. */
+    private void step() {
+        if (decision > 0) {
+            minor += direction;
+            decision -= twiceSpan;
         }
-        BigInteger n = BigInteger.valueOf(k).multiply(BigInteger.valueOf(2 * dy))
-                .add(BigInteger.valueOf(dx - tie));
-        return n.divide(BigInteger.valueOf(2 * dx)).longValueExact();
+        decision += twiceRise;
+    }
+
+    /**
+     * Where k steps take the walk, in closed form: the minor steps taken are
+     * {@code max(0, ceil((2 dx f + 2 k dy - dx) / (2 dx)))} (the line's offset
+     * rounded to the nearest integer, a tie kept), and the decision follows.
+     */
+    private void jump(long k, long span, double offset, double rise) {
+        BigDecimal twiceDx = BigDecimal.valueOf(span).multiply(BigDecimal.valueOf(2));
+        BigDecimal twiceDy = new BigDecimal(rise).multiply(BigDecimal.valueOf(2));
+        BigDecimal before = twiceDx.multiply(new BigDecimal(offset)).add(twiceDy.multiply(BigDecimal.valueOf(k)))
+                .subtract(BigDecimal.valueOf(span));
+        long steps = Math.max(0, before.divide(twiceDx, 0, RoundingMode.CEILING).longValueExact());
+        minor += direction * steps;
+        decision = before.add(twiceDy).subtract(twiceDx.multiply(BigDecimal.valueOf(steps))).doubleValue();
     }
 
     @Override
@@ -106,11 +138,7 @@ public final class BresenhamWalk implements LineWalk {
                 first = false;
             } else {
                 major++;
-                if (decision > 0 || decision == 0 && stepAtTie) {
-                    minor += direction;
-                    decision -= twiceMajorSpan;
-                }
-                decision += twiceMinorSpan;
+                step();
             }
             remaining--;
             if (minor >= 0 && minor < minorLimit) {

@@ -49,8 +49,7 @@ public final class Colors {
      */
     public static int mix(int colour, int old, double c) {
         double keep = 1 - c;
-        return pack(c * red(colour) / 255.0 + keep * red(old) / 255.0,
-                c * green(colour) / 255.0 + keep * green(old) / 255.0,
-                c * blue(colour) / 255.0 + keep * blue(old) / 255.0);
+        return 0xFF000000 | level(c * red(colour) + keep * red(old)) << 16
+                | level(c * green(colour) + keep * green(old)) << 8 | level(c * blue(colour) + keep * blue(old));
     }
 }

@@ -23,6 +23,12 @@ public final class GhostWritingDrawable extends DrawableDecorator {
         super(delegate);
     }
 
+    /** The colour written is always white at the opacity, whatever is asked: a filler may leave colour out. */
+    @Override
+    public boolean usesColour() {
+        return false;
+    }
+
     @Override
     public void setPixel(int x, int y, double z, int argb) {
         int old = delegate.getPixel(x, y);
@@ -33,7 +39,7 @@ public final class GhostWritingDrawable extends DrawableDecorator {
     @Override
     public void fillSpan(Span span) {
         for (int x = span.x0; x < span.x1; x++) {
-            setPixel(x, span.y, span.zAt(x), span.argbAt(x));
+            setPixel(x, span.y, span.zAt(x), 0);
         }
     }
 }

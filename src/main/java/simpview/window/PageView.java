@@ -27,6 +27,8 @@ public final class PageView extends JComponent {
     private static final long serialVersionUID = 1L;
     private static final Color AROUND = new Color(96, 96, 96);
     private static final Color MARK = new Color(255, 64, 255);
+    /** A first-assignment line between its rounded ends: beside the magenta of the line as given. */
+    static final Color ROUNDED = new Color(64, 224, 255);
 
     private final transient ZoomPan zoomPan = new ZoomPan(PageCanvas.SIZE, PageCanvas.MARGIN);
     private transient BufferedImage image = new PageCanvas().snapshot();
@@ -41,6 +43,8 @@ public final class PageView extends JComponent {
     private int pinnedY = -1;
     /** A primitive's outline in image coordinates (x0, y0, x1, y1, ...), or null. */
     private double[] outline;
+    /** A first-assignment page's lines and triangles as given, over its pixels; never null. */
+    private transient simpview.pages.A1Marks marks = simpview.pages.A1Marks.NONE;
     /** Outlines drawn over the whole page (wire over fill), each in image coordinates; null for none. */
     private transient java.util.List<double[]> wire;
     private static final Color WIRE = new Color(0, 255, 128, 200);
@@ -118,6 +122,16 @@ public final class PageView extends JComponent {
     void outline(double[] imagePoints) {
         outline = imagePoints;
         repaint();
+    }
+
+    /** Shows lines (as given and between their rounded ends) and triangles over a first-assignment page; null for none. */
+    void marks(simpview.pages.A1Marks shown) {
+        marks = shown == null ? simpview.pages.A1Marks.NONE : shown;
+        repaint();
+    }
+
+    simpview.pages.A1Marks marks() {
+        return marks;
     }
 
     /** Draws these outlines (image coordinates) over the page, or none (null). */
@@ -241,6 +255,46 @@ public final class PageView extends JComponent {
         g.draw(path);
     }
 
+    /**
+     * A first-assignment line as given (magenta, solid), between its rounded
+     * ends (cyan, dashed), each end a small ring: where the line really runs
+     * against the pixels each drawer lit. Triangles as given, outlined.
+     */
+    private void paintA1Marks(Graphics2D g) {
+        if (marks.isEmpty()) {
+            return;
+        }
+        g.setStroke(new BasicStroke(1.25f));
+        for (double[] points : marks.outlines()) {
+            Path2D.Double path = new Path2D.Double();
+            path.moveTo(zoomPan.screenX(points[0]), zoomPan.screenY(points[1]));
+            for (int k = 2; k + 1 < points.length; k += 2) {
+                path.lineTo(zoomPan.screenX(points[k]), zoomPan.screenY(points[k + 1]));
+            }
+            path.closePath();
+            g.draw(path);
+        }
+        g.setColor(ROUNDED);
+        g.setStroke(new BasicStroke(1.25f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        segments(g, marks.rounded());
+        g.setColor(MARK);
+        g.setStroke(new BasicStroke(1.5f));
+        segments(g, marks.given());
+    }
+
+    private void segments(Graphics2D g, double[] ends) {
+        double ring = Math.max(3, zoomPan.zoom() / 4);
+        for (int k = 0; k + 3 < ends.length; k += 4) {
+            double x0 = zoomPan.screenX(ends[k]);
+            double y0 = zoomPan.screenY(ends[k + 1]);
+            double x1 = zoomPan.screenX(ends[k + 2]);
+            double y1 = zoomPan.screenY(ends[k + 3]);
+            g.draw(new java.awt.geom.Line2D.Double(x0, y0, x1, y1));
+            g.draw(new java.awt.geom.Ellipse2D.Double(x0 - ring / 2, y0 - ring / 2, ring, ring));
+            g.draw(new java.awt.geom.Ellipse2D.Double(x1 - ring / 2, y1 - ring / 2, ring, ring));
+        }
+    }
+
     private void paintMarks(Graphics2D g) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setColor(MARK);
@@ -254,6 +308,7 @@ public final class PageView extends JComponent {
             g.setStroke(new BasicStroke(1.25f));
             g.draw(path);
         }
+        paintA1Marks(g);
         if (pinnedX >= 0) {
             double size = Math.max(zoomPan.zoom(), 3);
             double left = zoomPan.screenX(pinnedX + 0.5) - size / 2;

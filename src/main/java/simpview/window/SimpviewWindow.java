@@ -86,6 +86,8 @@ public final class SimpviewWindow {
     private int pinnedX = -1;
     private int pinnedY = -1;
     private final StatusStrip status = new StatusStrip(this::cancel);
+    private static final String STEPPING_WORKS_ON =
+            "Stepping through the drawing works on scenes (pages 4–8, opened scenes) and the first assignment's pages.";
     private final PageStepper stepper;
     /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
     private int assignment1Page;
@@ -431,7 +433,9 @@ public final class SimpviewWindow {
         status.inspect(pixel == null ? zoom : pageView.zoomPan().belowOneToOne() ? zoom + " · " + line
                 : line + " · " + zoom);
         if (settings.stepLimit() < 0) {
-            pageView.outline(PixelGrid.shows(pageView.zoomPan()) ? Inspector.outlineAt(shown, x, y) : null);
+            boolean magnified = PixelGrid.shows(pageView.zoomPan());
+            pageView.outline(magnified ? Inspector.outlineAt(shown, x, y) : null);
+            pageView.marks(magnified ? Inspector.marksAt(shown, x, y) : null);
         }
     }
 
@@ -593,6 +597,10 @@ public final class SimpviewWindow {
         int x = pinnedX >= 0 ? pinnedX : hoverX;
         int y = pinnedX >= 0 ? pinnedY : hoverY;
         int owner = Inspector.ownerAt(shown, x, y);
+        if (shown != null && shown.view() instanceof View.OfAssignment1Page page) {
+            int[] last = x < 0 || y < 0 ? null : simpview.pages.A1Pixel.lastAt(page.number(), shown.seed(), x, y);
+            owner = last == null ? -1 : last[1];
+        }
         if (owner < 0) {
             status.say("No primitive drew the pixel under the pointer: nothing to step to.");
             return;
@@ -603,11 +611,11 @@ public final class SimpviewWindow {
 
     /** Asks for a primitive number and steps the drawing to it (G). */
     private void goToPrimitive() {
-        if (!isScene(requested()) || shown == null) {
-            status.say("Stepping through the drawing works on scenes: pages 4–8 and opened scenes.");
+        if (!steps(requested()) || shown == null) {
+            status.say(STEPPING_WORKS_ON);
             return;
         }
-        int total = shown.facts().primitives().size();
+        int total = stepsInAll();
         String answer = askAfterKey("Go to primitive (1 to " + total + "):", 'g');
         if (answer == null) {
             return;
@@ -875,13 +883,31 @@ public final class SimpviewWindow {
                 || view instanceof View.OfPage page && Assignment2.page(page.number()) instanceof ScenePage;
     }
 
+    /** Whether the drawing of the view can be stepped: a scene's, or a first-assignment page's (SPEC Part 3). */
+    private boolean steps(View view) {
+        return isScene(view) || view instanceof View.OfAssignment1Page;
+    }
+
+    /**
+     * How many steps draw the whole view on screen: a scene's primitives, or
+     * a first-assignment page's lines or triangles, every panel stepping
+     * together (one more line of each line panel, one more triangle of each
+     * scene, a step).
+     */
+    private int stepsInAll() {
+        if (requested() instanceof View.OfAssignment1Page page) {
+            return Assignment1.page(page.number()).steps(options.pageContext());
+        }
+        return shown == null ? 0 : shown.facts().primitives().size();
+    }
+
     /** Steps the drawing by {@code by} primitives (the first step from the whole picture shows primitive 1). */
     private void step(int by) {
-        if (!isScene(requested())) {
-            status.say("Stepping through the drawing works on scenes: pages 4–8 and opened scenes.");
+        if (!steps(requested())) {
+            status.say(STEPPING_WORKS_ON);
             return;
         }
-        int total = shown == null ? 0 : shown.facts().primitives().size();
+        int total = stepsInAll();
         int from = settings.stepLimit() >= 0 ? settings.stepLimit() : by > 0 ? 0 : total + 1;
         int limit = Math.max(1, Math.min(Math.max(total, 1), from + by));
         settings = settings.withStepLimit(limit);
@@ -941,6 +967,18 @@ public final class SimpviewWindow {
     /** The line under the page while stepping: which primitive, from where; and its outline on the page. */
     private void showStep(RenderedView result) {
         int limit = settings.stepLimit();
+        if (result.view() instanceof View.OfAssignment1Page page) {
+            simpview.pages.A1Page a1 = Assignment1.page(page.number());
+            PageContext context = options.pageContext().withSeed(result.seed());
+            if (limit < 1) {
+                return; // not stepping: the magnifier's marks, if any, are the inspector's
+            }
+            int step = Math.min(limit, a1.steps(context));
+            status.say(a1.describeStep(context, step) + "   (] next · [ back · Shift: ten · \\ all)");
+            pageView.outline(null);
+            pageView.marks(a1.stepMarks(context, step));
+            return;
+        }
         Primitives primitives = result.facts().primitives();
         if (limit < 0 || limit > primitives.size() || limit == 0) {
             pageView.outline(null);

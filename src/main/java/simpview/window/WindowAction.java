@@ -92,7 +92,8 @@ public enum WindowAction {
             + "inspector", "menu C"),
     COPY_CHAIN(Menu.INSTRUMENTS, "Copy the pixel's include chain", "copy where the inspected pixel came from, "
             + "file:line by file:line (each part is also a link in the panel: a click copies it)", "menu shift C"),
-    STEP_ON(Menu.INSTRUMENTS, "Step on", "step the drawing one primitive on", "CLOSE_BRACKET"),
+    STEP_ON(Menu.INSTRUMENTS, "Step on", "step the drawing one primitive on (A1: one more line or triangle of "
+            + "every panel)", "CLOSE_BRACKET"),
     STEP_BACK(Menu.INSTRUMENTS, "Step back", "one primitive back", "OPEN_BRACKET"),
     STEP_ON_10(Menu.INSTRUMENTS, "Step on 10", "ten primitives on", "shift CLOSE_BRACKET"),
     STEP_BACK_10(Menu.INSTRUMENTS, "Step back 10", "ten primitives back", "shift OPEN_BRACKET"),

@@ -145,10 +145,10 @@ class FirstAssignmentBatchTest {
         CliRun flip = CliRun.of("check", subs.toString(), "--rubric", rubric.toString());
         // the course's antialiasing, FLIP forgives: 99.94 % of the panel at most 0.13
         assertTrue(line(flip.out(), "panel 4 (antialiased)").matches(".*PASS +99\\.94 %.*"), flip.out());
-        // the other panels stay exact and without slack
+        // the other panels stay exact and without slack (FLIP would give the DDA panel 99.81 %)
         assertTrue(line(flip.out(), "panel 1 (DDA)").matches(".*PASS +99\\.97 %.*"), flip.out());
-        assertTrue(line(flip.out(), "panel 2 (Bresenham)").matches(".*FAIL +96\\.61 %.*"), flip.out());
-        assertEquals(ExitCode.SCENE_ERROR, flip.exitCode());
+        assertTrue(line(flip.out(), "panel 2 (Bresenham)").matches(".*PASS +99\\.97 %.*"), flip.out());
+        assertEquals(ExitCode.OK, flip.exitCode());
 
         Path picture = subs.resolve("a1-page1.png");
         CliRun strict = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--metric", "flip",

@@ -7,14 +7,14 @@ import org.junit.jupiter.api.Test;
 
 class AlternatingLineRendererTest {
 
-    /** Lines 1, 3, 5 by the DDA, 2, 4 by Bresenham: each falling 2:-1 line shows which by its tie. */
+    /** Lines 1, 3, 5 by the DDA, 2, 4 by Bresenham: each rising 2:1 line shows which by its tie. */
     @Test
     void theFirstLineIsTheDdasThenTheyTakeTurns() {
         AlternatingLineRenderer alternating = AlternatingLineRenderer.ddaThenBresenham();
-        List<String> dda = List.of("0,5", "1,5", "2,4");
-        List<String> bresenham = List.of("0,5", "1,4", "2,4");
+        List<String> dda = List.of("0,0", "1,1", "2,1");
+        List<String> bresenham = List.of("0,0", "1,0", "2,1");
         for (int i = 0; i < 5; i++) {
-            assertEquals(i % 2 == 0 ? dda : bresenham, LineExpectations.drawn(alternating, 0, 5, 2, 4, 10), "line " + (i + 1));
+            assertEquals(i % 2 == 0 ? dda : bresenham, LineExpectations.drawn(alternating, 0, 0, 2, 1, 10), "line " + (i + 1));
         }
     }
 }

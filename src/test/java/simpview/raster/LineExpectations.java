@@ -1,5 +1,7 @@
 package simpview.raster;
 
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 import java.util.ArrayList;
 import java.util.List;
 import simpview.testing.RecordingDrawable;
@@ -65,6 +67,79 @@ final class LineExpectations {
             case AWAY_FROM_START -> num >= 0 ? twice : twice - 1;
             case TOWARD_START -> num >= 0 ? twice - 1 : twice;
         };
+    }
+
+    /**
+     * Bresenham's pixels on any endpoints, worked out exactly (decimal
+     * arithmetic on the doubles' exact values): the ends' major coordinates
+     * rounded half up, from the smaller one; the start pixel's minor
+     * coordinate rounded half up; at step k the minor coordinate of the line
+     * through the ends' given minor coordinates, {@code b0 + k (b1 - b0) / n},
+     * rounded to the nearest integer, a tie toward the start's side, and
+     * held to the last pixel's or one beyond it (a midpoint walk never steps
+     * back, nor by two: that matters only where the given ends are steeper
+     * than the rounded ones' octant). The major axis is the rounded ends'
+     * longer one.
+     */
+    static List<String> bresenham(double x0, double y0, double x1, double y1) {
+        long rx0 = (long) Math.floor(x0 + 0.5);
+        long ry0 = (long) Math.floor(y0 + 0.5);
+        long rx1 = (long) Math.floor(x1 + 0.5);
+        long ry1 = (long) Math.floor(y1 + 0.5);
+        boolean xMajor = Math.abs(rx1 - rx0) >= Math.abs(ry1 - ry0);
+        boolean swap = xMajor ? rx1 < rx0 : ry1 < ry0;
+        long a0 = xMajor ? (swap ? rx1 : rx0) : (swap ? ry1 : ry0);
+        long a1 = xMajor ? (swap ? rx0 : rx1) : (swap ? ry0 : ry1);
+        BigDecimal b0 = new BigDecimal(xMajor ? (swap ? y1 : y0) : (swap ? x1 : x0));
+        BigDecimal b1 = new BigDecimal(xMajor ? (swap ? y0 : y1) : (swap ? x0 : x1));
+        boolean rising = b1.compareTo(b0) >= 0;
+        BigDecimal half = new BigDecimal("0.5");
+        long startPixel = b0.add(half).setScale(0, RoundingMode.FLOOR).longValueExact();
+        long n = a1 - a0;
+        List<String> out = new ArrayList<>();
+        long minor = startPixel;
+        for (long k = 0; k <= n; k++) {
+            if (k > 0) {
+                // n times the line's minor coordinate at step k, exactly.
+                BigDecimal at = b0.multiply(BigDecimal.valueOf(n)).add(b1.subtract(b0).multiply(BigDecimal.valueOf(k)));
+                BigDecimal halfN = half.multiply(BigDecimal.valueOf(n));
+                BigDecimal bigN = BigDecimal.valueOf(n);
+                // Nearest, a tie toward the start: rising, ceil(v - 1/2); falling, floor(v + 1/2).
+                long nearest = rising
+                        ? at.subtract(halfN).divide(bigN, 0, RoundingMode.CEILING).longValueExact()
+                        : at.add(halfN).divide(bigN, 0, RoundingMode.FLOOR).longValueExact();
+                minor = rising ? Math.min(minor + 1, Math.max(minor, nearest)) : Math.max(minor - 1, Math.min(minor, nearest));
+            }
+            long x = xMajor ? a0 + k : minor;
+            long y = xMajor ? minor : a0 + k;
+            out.add(x + "," + y);
+        }
+        return out;
+    }
+
+    /**
+     * Bresenham's pixel at major coordinate {@code major} of a line whose given
+     * ends are no steeper than the rounded ones' octant (so nothing holds it
+     * back): the nearest integer to the line's minor coordinate there, a tie
+     * toward the start; as "x,y". For lines too long to list.
+     */
+    static String bresenhamAt(double x0, double y0, double x1, double y1, long major) {
+        long rx0 = (long) Math.floor(x0 + 0.5);
+        long ry0 = (long) Math.floor(y0 + 0.5);
+        long rx1 = (long) Math.floor(x1 + 0.5);
+        long ry1 = (long) Math.floor(y1 + 0.5);
+        boolean xMajor = Math.abs(rx1 - rx0) >= Math.abs(ry1 - ry0);
+        boolean swap = xMajor ? rx1 < rx0 : ry1 < ry0;
+        long a0 = xMajor ? (swap ? rx1 : rx0) : (swap ? ry1 : ry0);
+        long n = Math.abs(xMajor ? rx1 - rx0 : ry1 - ry0);
+        BigDecimal b0 = new BigDecimal(xMajor ? (swap ? y1 : y0) : (swap ? x1 : x0));
+        BigDecimal b1 = new BigDecimal(xMajor ? (swap ? y0 : y1) : (swap ? x0 : x1));
+        BigDecimal halfN = new BigDecimal("0.5").multiply(BigDecimal.valueOf(n));
+        BigDecimal at = b0.multiply(BigDecimal.valueOf(n)).add(b1.subtract(b0).multiply(BigDecimal.valueOf(major - a0)));
+        long minor = b1.compareTo(b0) >= 0
+                ? at.subtract(halfN).divide(BigDecimal.valueOf(n), 0, RoundingMode.CEILING).longValueExact()
+                : at.add(halfN).divide(BigDecimal.valueOf(n), 0, RoundingMode.FLOOR).longValueExact();
+        return xMajor ? major + "," + minor : minor + "," + major;
     }
 
     /** What the renderer wrote, in order, as "x,y". */

@@ -55,4 +55,37 @@ class CoverageAndGhostTest {
         assertEquals(0xFF242424, target.getPixel(2, 1));
         assertEquals(0xFF000000, target.getPixel(3, 1));
     }
+
+    /** A ghost span means what its pixels one by one mean, over any greys and colours, clipped by a panel. */
+    @Test
+    void aGhostSpanIsItsPixelsOneByOne() {
+        java.util.Random random = new java.util.Random(5);
+        ImageDrawable spans = image(Colors.BLACK);
+        ImageDrawable pixels = image(Colors.BLACK);
+        ImageDrawable[] both = {spans, pixels};
+        for (ImageDrawable d : both) {
+            for (int i = 0; i < 16; i++) {
+                d.setPixel(i % 4, i / 4, 0, 0xFF000000 | (i * 0x0B1D07 & 0xFFFFFF));
+            }
+        }
+        GhostWritingDrawable bySpan = new GhostWritingDrawable(new PanelDrawable(spans, 1, 0, 3));
+        GhostWritingDrawable byPixel = new GhostWritingDrawable(new PanelDrawable(pixels, 1, 0, 3));
+        Span span = new Span();
+        for (int trial = 0; trial < 40; trial++) {
+            span.y = random.nextInt(5) - 1;
+            span.x0 = random.nextInt(5) - 1;
+            span.x1 = span.x0 + random.nextInt(5);
+            span.xBase = span.x0;
+            bySpan.fillSpan(span);
+            for (int x = span.x0; x < span.x1; x++) {
+                byPixel.setPixel(x, span.y, 0, 0xFFFFFFFF);
+            }
+        }
+        for (int y = 0; y < 4; y++) {
+            for (int x = 0; x < 4; x++) {
+                assertEquals(pixels.getPixel(x, y), spans.getPixel(x, y), x + "," + y);
+            }
+        }
+        assertEquals(false, bySpan.usesColour(), "a ghost's colour is always white");
+    }
 }

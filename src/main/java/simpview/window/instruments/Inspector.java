@@ -123,6 +123,18 @@ public final class Inspector {
                 ? null : toImage(view.facts().primitives().outline(owner));
     }
 
+    /**
+     * On a first-assignment page, what the magnifier draws over the pixels at
+     * image pixel (ix, iy): the line that last wrote it as given and between
+     * its rounded ends, or its triangle as given; null elsewhere.
+     */
+    public static simpview.pages.A1Marks marksAt(RenderedView view, int ix, int iy) {
+        if (view == null || ix < 0 || iy < 0 || !(view.view() instanceof View.OfAssignment1Page page)) {
+            return null;
+        }
+        return A1Pixel.marksAt(page.number(), view.seed(), ix, iy);
+    }
+
     /** Panel points (x, y up) as image points (x, y down): a pixel centre stays a pixel centre. */
     public static double[] toImage(double[] panelPoints) {
         if (panelPoints == null) {

@@ -157,7 +157,9 @@ public final class RenderJob implements SceneMonitor {
                 renderer.render(page.number(), context);
             } else if (view instanceof View.OfAssignment1Page page) {
                 canvas.clear();
-                Assignment1.page(page.number()).draw(canvas, context);
+                // Stepping: every panel's first stepLimit lines or triangles.
+                Assignment1.page(page.number()).drawSteps(canvas, context,
+                        settings.stepLimit() >= 0 ? settings.stepLimit() : Integer.MAX_VALUE);
             } else {
                 canvas.clear();
                 drawer.draw(((View.OfScene) view).file(), canvas,
