@@ -1,5 +1,10 @@
 package simpview.bench;
 
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -32,6 +37,7 @@ import simpview.window.LineKeepingDownscale;
 import simpview.window.instruments.BackFacePicture;
 import simpview.window.instruments.DepthPicture;
 import simpview.window.instruments.OverdrawPicture;
+import simpview.window.instruments.Outlines;
 import simpview.window.render.DrawSettings;
 import simpview.window.render.RenderJob;
 import simpview.window.render.RenderedView;
@@ -167,5 +173,28 @@ public class Overlays {
     @Benchmark
     public BufferedImage downscaleTo400() {
         return LineKeepingDownscale.of(recorded.image(), 400.0 / 750);
+    }
+
+    /** Where wireOverFill draws: a page-sized picture, drawn over again at each call. */
+    private final BufferedImage overlay = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE, BufferedImage.TYPE_INT_RGB);
+
+    /**
+     * W, wire over fill: every recorded primitive's outline drawn over the
+     * page at 1:1 as the view draws it (one antialiased 1-px path, cut to the
+     * panel), the outlines gathered from the record each time.
+     */
+    @Benchmark
+    public BufferedImage wireOverFill() {
+        Graphics2D g = overlay.createGraphics();
+        try {
+            g.clip(new Rectangle2D.Double(PageCanvas.MARGIN, PageCanvas.MARGIN, PageCanvas.PANEL, PageCanvas.PANEL));
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setStroke(new BasicStroke(1f));
+            g.setColor(new Color(0x00FF80));
+            g.draw(Outlines.path(Outlines.wire(recorded.facts().primitives()), x -> x, y -> y));
+        } finally {
+            g.dispose();
+        }
+        return overlay;
     }
 }

@@ -10,6 +10,7 @@ import java.awt.RenderingHints;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
 import java.awt.geom.Path2D;
+import simpview.window.instruments.Outlines;
 import java.awt.image.BufferedImage;
 import javax.swing.JComponent;
 import simpview.surface.PageCanvas;
@@ -244,15 +245,7 @@ public final class PageView extends JComponent {
             return;
         }
         g.setColor(colour);
-        Path2D.Double path = new Path2D.Double();
-        for (double[] points : shapes) {
-            path.moveTo(zoomPan.screenX(points[0]), zoomPan.screenY(points[1]));
-            for (int k = 2; k + 1 < points.length; k += 2) {
-                path.lineTo(zoomPan.screenX(points[k]), zoomPan.screenY(points[k + 1]));
-            }
-            path.closePath();
-        }
-        g.draw(path);
+        g.draw(Outlines.path(shapes, zoomPan::screenX, zoomPan::screenY));
     }
 
     /**

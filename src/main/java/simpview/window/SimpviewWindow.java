@@ -60,6 +60,7 @@ import javax.swing.JTextField;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
+import simpview.window.instruments.Outlines;
 import simpview.surface.PageCanvas;
 import simpview.window.instruments.BackFacePicture;
 import simpview.window.instruments.Legend;
@@ -475,9 +476,14 @@ public final class SimpviewWindow {
                     + "it received, how its colour was made, and its primitive's vertices.");
             return;
         }
+        String theirs = comparedAt(ix, iy);
+        if (shown.view() instanceof View.OfAssignment1Page a1) {
+            // The first assignment's pixels go by page coordinates, y up: every panel is on the page.
+            inspectorPanel.inspectFirstAssignment(a1.number(), shown.seed(), ix, PageCanvas.SIZE - 1 - iy, theirs);
+            return;
+        }
         int x = ix - PageCanvas.MARGIN;
         int y = PageCanvas.MARGIN + PageCanvas.PANEL - 1 - iy;
-        String theirs = comparedAt(ix, iy);
         if (x < 0 || y < 0 || x >= PageCanvas.PANEL || y >= PageCanvas.PANEL) {
             inspectorPanel.say((theirs == null ? "" : theirs + "\n\n")
                     + "The pixel is in the margin: nothing is drawn there.");
@@ -515,8 +521,8 @@ public final class SimpviewWindow {
                 return InspectedScene.of(s.file()).withOwnColours(settings.ownColours());
             }
             if (view instanceof View.OfAssignment1Page) {
-                why.accept("The first assignment's pages are not replayed by the inspector (yet): the status line "
-                        + "names the pixel's panel, line drawer and line.");
+                why.accept("The overlays are drawn for scenes; on the first assignment's pages the inspector "
+                        + "panel (I) lists every write a pixel received, with its coverage.");
                 return null;
             }
             int number = ((View.OfPage) view).number();
@@ -836,14 +842,7 @@ public final class SimpviewWindow {
     }
 
     private void showWire() {
-        List<double[]> outlines = new ArrayList<>();
-        Primitives primitives = shown == null ? null : shown.facts().primitives();
-        for (int k = 0; primitives != null && k < primitives.size(); k++) {
-            double[] outline = primitives.outline(k);
-            if (outline != null) {
-                outlines.add(Inspector.toImage(outline));
-            }
-        }
+        List<double[]> outlines = Outlines.wire(shown == null ? null : shown.facts().primitives());
         if (outlines.isEmpty()) {
             pageView.wire(null);
             legendStrip.show("wire", null);

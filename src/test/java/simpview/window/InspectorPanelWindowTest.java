@@ -67,9 +67,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
         // Shift+V: at the centre the farthest triangle, drawn last, lost to the two before it: at most 1 loss.
-        driver.robot().keyPress(KeyEvent.VK_SHIFT);
-        driver.press(KeyEvent.VK_V);
-        driver.robot().keyRelease(KeyEvent.VK_SHIFT);
+        driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == 1, "the depth-test failures, at most 1");
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");

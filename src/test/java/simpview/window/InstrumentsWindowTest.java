@@ -56,7 +56,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
 
         driver.onEdt(() -> window().frame().setSize(560, 480));
         driver.awaitEdt(() -> window().pageView().getHeight() < 480, "the smaller frame laid out");
-        driver.robot().waitForIdle();
+        driver.settle();
         PageView view = window().pageView();
         ZoomPan zoomPan = view.zoomPan();
         int width = driver.onEdt(view::getWidth);
@@ -83,7 +83,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         Point viewCorner = driver.onEdt(() -> window().pageView().getLocationOnScreen());
         driver.onEdt(() -> window().pageView().zoomPan().zoomAbout(at.x - viewCorner.x, at.y - viewCorner.y, 8));
         driver.onEdt(() -> window().pageView().repaint());
-        driver.robot().waitForIdle();
+        driver.settle();
         Point left = driver.onScreen(52, 697);
         int lineX = left.x - 4 + 8; // the first screen column of pixel 53
         int y = left.y - 2;
@@ -102,7 +102,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
 
         driver.onEdt(() -> window().pageView().zoomPan().zoomAbout(at.x - viewCorner.x, at.y - viewCorner.y, 4));
         driver.onEdt(() -> window().pageView().repaint());
-        driver.robot().waitForIdle();
+        driver.settle();
         Point left4 = driver.onScreen(52, 697);
         assertEquals(0x000000, driver.robot().getPixelColor(left4.x - 2 + 4, left4.y).getRGB() & 0xFFFFFF,
                 "no grid at 4x");
@@ -125,8 +125,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
             }
         }
         Point p = driver.onScreen(PageCanvas.MARGIN + px, PageCanvas.MARGIN + PageCanvas.PANEL - 1 - py);
-        driver.robot().mouseMove(p.x, p.y);
-        driver.robot().waitForIdle();
+        driver.movePointer(p.x, p.y);
         int grey = (int) Math.round(ZBufferPage.GREYS[nearest] * 255);
         String z = Inspector.number(triangles[nearest][0].z());
         // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
@@ -144,8 +143,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
 
         // Pinned, it stays when the pointer moves on.
         driver.press(KeyEvent.VK_P);
-        driver.robot().mouseMove(p.x + 200, p.y + 200);
-        driver.robot().waitForIdle();
+        driver.movePointer(p.x + 200, p.y + 200);
         String pinned = driver.onEdt(() -> window().status().inspectorText());
         assertEquals("pinned · " + line, pinned);
     }

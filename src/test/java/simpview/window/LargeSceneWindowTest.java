@@ -91,7 +91,7 @@ public class LargeSceneWindowTest {
             long progressAt = (System.nanoTime() - opened) / 1_000_000;
             Thread.sleep(800); // let it draw for a while, under the probe's watch
             assertTrue(driver.onEdt(window::busy), "still drawing when Cancel is pressed");
-            // Measured before the click: Robot.waitForIdle holds up the EDT itself while it syncs with the X server.
+            // Measured before the click: waiting for the click to be handled runs work on the EDT too.
             stall = probe.maxStallMillis();
             machine = probe.maxSchedulingLateMillis();
             when = "starting " + probe.maxStallStartMillis() + " ms after the probe started; scene opened at "

@@ -49,7 +49,7 @@ public class ViewWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> window.inspectorPanel().component().isShowing()
                 && window.pageView().getWidth() >= PageCanvas.PANEL, "the panel shown beside the page");
-        driver.robot().waitForIdle();
+        driver.settle();
         ZoomPan zoomPan = window.pageView().zoomPan();
         assertEquals(1.0, (double) driver.onEdt(zoomPan::zoom), "the panel at 1:1");
         assertTrue(driver.onEdt(zoomPan::cropped), "the white margins cropped");
@@ -72,9 +72,7 @@ public class ViewWindowTest extends WindowTestCase {
         awaitPanel(window, "pixel (300, 249) of the panel");
 
         // Shift+G: go to panel pixel (325, 330), typed; it is pinned, the panel shows it, the image's row is said.
-        driver.robot().keyPress(KeyEvent.VK_SHIFT);
-        driver.press(KeyEvent.VK_G);
-        driver.robot().keyRelease(KeyEvent.VK_SHIFT);
+        driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_G);
         driver.awaitEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
                 instanceof javax.swing.JTextField, "the go-to-pixel dialog");
         // Typed without waiting for the toolkit to be idle after each key: under a modal dialog that wait
@@ -164,13 +162,15 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitShown(new View.OfScene(a3.resolve("pageB.simp")));
         driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_2));
         driver.awaitShown(new View.OfPage(3));
-        // On the first assignment's pages the panel follows the pointer too, and says it does not replay them.
+        // On the first assignment's pages the panel follows the pointer too: the pixel's panel drawn again, its writes.
         driver.onEdt(() -> window.perform(WindowAction.ASSIGNMENT_1));
         driver.awaitShown(new View.OfAssignment1Page(1));
         driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
         Point inPanel = driver.onScreen(200, 200);
         driver.robot().mouseMove(inPanel.x, inPanel.y);
-        driver.awaitEdt(() -> window.inspectorPanel().text().contains("not replayed by the inspector"), "the panel's word");
+        driver.awaitEdt(() -> window.inspectorPanel().text().contains("of the first assignment's page 1")
+                && window.inspectorPanel().text().contains("panel 1 (DDA)")
+                && window.inspectorPanel().text().contains("history: "), "the history of a pixel of page 1's panel 1");
         driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
         driver.robot().mouseMove(1, 1);
         // Help > Keys and gestures shows F1's help over the window; F1 hides it.

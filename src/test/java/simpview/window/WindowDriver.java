@@ -7,18 +7,25 @@ import simpview.window.render.View;
 
 import static org.junit.jupiter.api.Assertions.fail;
 
+import java.awt.AWTEvent;
 import java.awt.Component;
+import java.awt.MouseInfo;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Toolkit;
 import java.awt.Window;
+import java.awt.event.AWTEventListener;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
+import java.awt.event.MouseEvent;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
@@ -37,10 +44,91 @@ public final class WindowDriver {
 
     private final SimpviewWindow window;
     private final Robot robot;
+    private final InputSeen input = new InputSeen();
 
     private WindowDriver(SimpviewWindow window, Robot robot) {
         this.window = window;
         this.robot = robot;
+        Toolkit.getDefaultToolkit().addAWTEventListener(input,
+                AWTEvent.KEY_EVENT_MASK | AWTEvent.MOUSE_EVENT_MASK | AWTEvent.MOUSE_MOTION_EVENT_MASK);
+    }
+
+    /**
+     * The robot's keys and buttons as this JVM's event queue dispatched them.
+     * A wait for the window to have handled an input waits for that input
+     * here, rather than in Robot.waitForIdle: its sync with the X server can
+     * run into its own timeout, up to seconds a call, on an idle machine as
+     * much as on a busy one (a whole run's window tests took 122 s with it
+     * and a third of that without).
+     */
+    private static final class InputSeen implements AWTEventListener {
+        private final Map<Integer, AtomicLong> keyReleases = new ConcurrentHashMap<>();
+        private final AtomicLong buttonReleases = new AtomicLong();
+        private volatile Point pointer;
+
+        @Override
+        public void eventDispatched(AWTEvent event) {
+            if (event.getID() == KeyEvent.KEY_RELEASED) {
+                releases(((KeyEvent) event).getKeyCode()).incrementAndGet();
+            } else if (event instanceof MouseEvent mouse) {
+                if (mouse.getID() == MouseEvent.MOUSE_RELEASED) {
+                    buttonReleases.incrementAndGet();
+                }
+                pointer = mouse.getLocationOnScreen();
+            }
+        }
+
+        AtomicLong releases(int keyCode) {
+            return keyReleases.computeIfAbsent(keyCode, k -> new AtomicLong());
+        }
+    }
+
+    /**
+     * Until the event queue has run dry (what the robot's input set off,
+     * the repaints it asked for) and the X server has drawn what was painted.
+     */
+    void settle() {
+        try {
+            for (int round = 0; round < 50; round++) {
+                if (onEdt(() -> Toolkit.getDefaultToolkit().getSystemEventQueue().peekEvent() == null)) {
+                    break;
+                }
+            }
+            Toolkit.getDefaultToolkit().sync();
+        } catch (Exception e) {
+            throw new AssertionError("the event queue did not run dry", e);
+        }
+    }
+
+    /** Until the release of {@code keyCode} after the {@code before}-th has been dispatched, then settled. */
+    private void awaitKeyRelease(int keyCode, long before) {
+        AtomicLong count = input.releases(keyCode);
+        try {
+            await(() -> count.get() > before, "the window to receive " + KeyEvent.getKeyText(keyCode));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
+        settle();
+    }
+
+    /** Moves the pointer and, where it lands on one of this JVM's windows, waits for the window to see it there. */
+    void movePointer(int x, int y) throws Exception {
+        Point to = new Point(x, y);
+        boolean moves = !to.equals(MouseInfo.getPointerInfo().getLocation());
+        robot.mouseMove(x, y);
+        boolean overOurs = onEdt(() -> {
+            for (Window w : Window.getWindows()) {
+                if (w.isShowing() && w.getBounds().contains(to)) {
+                    return true;
+                }
+            }
+            return false;
+        });
+        if (moves && overOurs) {
+            await(() -> to.equals(input.pointer), "the window to see the pointer at " + x + ", " + y);
+        }
+        settle();
     }
 
     /** Opens the window and waits for its first page, or for the scene it was given. */
@@ -78,7 +166,7 @@ public final class WindowDriver {
         for (int attempt = 0; attempt < 10; attempt++) {
             int x = left + attempt;
             onEdt(() -> window.frame().setLocation(x, top));
-            robot.waitForIdle();
+            settle();
             if (pageIsWhereTheToolkitSaysItIs()) {
                 return;
             }
@@ -134,7 +222,7 @@ public final class WindowDriver {
     RenderedView awaitShown(View view) throws Exception {
         awaitEdt(() -> !window.busy() && window.shown() != null && window.shown().view().equals(view),
                 "showing " + view);
-        robot.waitForIdle();
+        settle();
         return onEdt(window::shown);
     }
 
@@ -175,11 +263,13 @@ public final class WindowDriver {
         awaitEdt(() -> component.isShowing() && component.getWidth() > 0 && component.getHeight() > 0
                 && hits(component), "the component to click to be laid out and on top");
         Point p = onEdt(() -> middleOnScreen(component));
+        long before = input.buttonReleases.get();
         robot.mouseMove(p.x, p.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        await(() -> input.buttonReleases.get() > before, "the window to receive the click");
         robot.mouseMove(1, 1);
-        robot.waitForIdle();
+        settle();
     }
 
     private static Point middleOnScreen(JComponent component) {
@@ -203,21 +293,30 @@ public final class WindowDriver {
         awaitEdt(() -> window.frame().isFocused(), "the window to have the keyboard");
     }
 
+    /** Presses and releases a key, then waits until the window has handled it. */
     void press(int keyCode) {
+        long before = input.releases(keyCode).get();
         robot.keyPress(keyCode);
         robot.keyRelease(keyCode);
-        robot.waitForIdle();
+        awaitKeyRelease(keyCode, before);
+    }
+
+    /** The same with {@code modifier} (a key code such as VK_SHIFT) held down. */
+    void pressWith(int modifier, int keyCode) {
+        long before = input.releases(modifier).get();
+        robot.keyPress(modifier);
+        press(keyCode);
+        robot.keyRelease(modifier);
+        awaitKeyRelease(modifier, before);
     }
 
     void pressWithControl(int keyCode) {
-        robot.keyPress(KeyEvent.VK_CONTROL);
-        press(keyCode);
-        robot.keyRelease(KeyEvent.VK_CONTROL);
+        pressWith(KeyEvent.VK_CONTROL, keyCode);
     }
 
     /** The page as the X server shows it: at 1:1 the 750x750 image, else the square it is zoomed into (what shows of it). */
     BufferedImage capturePage() throws Exception {
-        robot.waitForIdle();
+        settle();
         Rectangle page = onEdt(this::pageOnScreen);
         return robot.createScreenCapture(page);
     }
@@ -361,6 +460,7 @@ public final class WindowDriver {
 
     void close() throws Exception {
         onEdt(window::close);
-        robot.waitForIdle();
+        settle();
+        Toolkit.getDefaultToolkit().removeAWTEventListener(input);
     }
 }

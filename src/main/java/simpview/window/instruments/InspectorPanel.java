@@ -10,6 +10,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.ScrollPaneConstants;
 import javax.swing.SwingUtilities;
+import simpview.inspect.A1Inspector;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
@@ -27,6 +28,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import simpview.inspect.Overdraw;
@@ -187,38 +189,66 @@ public final class InspectorPanel {
     }
 
     public void inspect(InspectedScene scene, int x, int y, String note, String before) {
-        int mine = ++request;
-        answered = false;
-        text.setText((before == null ? "" : before + "\n\n") + "Replaying the scene for pixel (" + x + ", " + y
-                + ") ...");
-        Runnable job = () -> {
-            String report;
+        replay(before, "Replaying the scene for pixel (" + x + ", " + y + ") ...", () -> {
             Map<String, SourcePlace> named = new HashMap<>();
-            List<SourcePlace> chain = List.of();
             try {
                 PixelReport r = inspector.inspect(scene, x, y);
                 HistoryEntry owner = r.lastWritten();
-                report = (before == null ? "" : before + "\n\n") + (note == null ? "" : note + "\n\n")
-                        + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive());
                 for (HistoryEntry entry : r.history()) {
                     for (SourcePlace place : entry.chain()) {
                         named.put(place.file().getFileName() + ":" + place.line(), place);
                     }
                 }
-                chain = owner == null ? List.of() : owner.chain();
+                return new Answer((note == null ? "" : note + "\n\n")
+                        + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive()),
+                        named, owner == null ? List.of() : owner.chain());
             } catch (SceneException e) {
-                report = "The scene stops with an error, so the history ends there:\n" + e.getMessage();
-            } catch (RuntimeException e) {
-                report = "Could not replay the scene: " + e;
+                return new Answer("The scene stops with an error, so the history ends there:\n" + e.getMessage(),
+                        named, List.of());
             }
-            String shown = report;
-            List<SourcePlace> ownerPlaces = chain;
+        });
+    }
+
+    /**
+     * The same for page pixel (x, y) of the first assignment's page {@code
+     * page} drawn with {@code seed} (page coordinates: x right, y up from the
+     * page's bottom-left pixel): its panel drawn again through a one-pixel
+     * probe, every write with its coverage, as {@code simpview inspect
+     * --assignment 1} prints it.
+     */
+    public void inspectFirstAssignment(int page, long seed, int x, int y, String before) {
+        replay(before, "Drawing the panel again for page pixel (" + x + ", " + y + ") ...",
+                () -> new Answer(A1Inspector.inspect(page, seed, x, y).text(true, true), Map.of(), List.of()));
+    }
+
+    /** A replay's text, the places its chains name, and the owner's chain. */
+    private record Answer(String report, Map<String, SourcePlace> named, List<SourcePlace> ownerChain) {
+    }
+
+    /**
+     * Shows {@code waitingText} at once, then {@code work}'s answer (after
+     * {@code before}, or nothing) once the worker has it, unless a newer
+     * request came first.
+     */
+    private void replay(String before, String waitingText, Supplier<Answer> work) {
+        int mine = ++request;
+        answered = false;
+        String heading = before == null ? "" : before + "\n\n";
+        text.setText(heading + waitingText);
+        Runnable job = () -> {
+            Answer answer;
+            try {
+                answer = work.get();
+            } catch (RuntimeException e) {
+                answer = new Answer("Could not replay the scene: " + e, Map.of(), List.of());
+            }
+            Answer shown = answer;
             SwingUtilities.invokeLater(() -> {
                 if (mine == request) {
                     answered = true;
-                    places = named;
-                    ownerChain = ownerPlaces;
-                    text.setText(shown);
+                    places = shown.named();
+                    ownerChain = shown.ownerChain();
+                    text.setText(heading + shown.report());
                     text.setCaretPosition(0);
                 }
             });
