@@ -230,7 +230,9 @@ public final class PageView extends JComponent {
             double top = zoomPan.screenY(PageCanvas.MARGIN);
             double side = PageCanvas.PANEL * zoomPan.zoom();
             g.clip(new java.awt.geom.Rectangle2D.Double(left, top, side, side));
-            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            // Not antialiased: 1-px lines, a dozen times faster to draw than antialiased ones (Overlays.wireOverFill:
+            // page-d's 16,026 outlines 57 ms antialiased, 4.8 ms not, against 9.9 ms to draw the page).
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_OFF);
             g.setStroke(new BasicStroke(1f));
             outlines(g, wire, WIRE);
             outlines(g, culled, CULLED);
