@@ -14,6 +14,7 @@ import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.PrimitiveTrace;
+import simpview.surface.DiscardingDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.DrawableDecorator;
 import simpview.surface.PageCanvas;
@@ -125,7 +126,7 @@ public final class Overdraw {
         public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
             Camera view = Camera.PARALLEL;
             return new ScissorDrawable(view, new CountedWrites(counts, new ZBufferDrawable(canvas.zbuffer(),
-                    new CountedWrites(won, new Nowhere()))));
+                    new CountedWrites(won, new DiscardingDrawable()))));
         }
 
         @Override
@@ -204,37 +205,6 @@ public final class Overdraw {
             r[i] = i;
         }
         return r;
-    }
-
-    /** The end of the counting chain: the panel's size, no colour wanted, nothing kept. */
-    private static final class Nowhere implements Drawable {
-        @Override
-        public int width() {
-            return PageCanvas.PANEL;
-        }
-
-        @Override
-        public int height() {
-            return PageCanvas.PANEL;
-        }
-
-        @Override
-        public boolean usesColour() {
-            return false;
-        }
-
-        @Override
-        public void setPixel(int x, int y, double z, int argb) {
-        }
-
-        @Override
-        public void fillSpan(Span span) {
-        }
-
-        @Override
-        public int getPixel(int x, int y) {
-            return 0;
-        }
     }
 
     /** Counts every write that reaches it inside the panel, then passes it on. */

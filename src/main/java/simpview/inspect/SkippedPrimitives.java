@@ -15,6 +15,7 @@ import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.PrimitiveTrace;
+import simpview.surface.DiscardingDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -103,26 +104,7 @@ public final class SkippedPrimitives {
         /** Nothing is written: the outlines need only the geometry. */
         @Override
         public Drawable depthCued(PageCanvas canvas, Rgb near, Rgb far, boolean ownColours) {
-            return new Drawable() {
-                @Override
-                public int width() {
-                    return PageCanvas.PANEL;
-                }
-
-                @Override
-                public int height() {
-                    return PageCanvas.PANEL;
-                }
-
-                @Override
-                public void setPixel(int x, int y, double z, int argb) {
-                }
-
-                @Override
-                public int getPixel(int x, int y) {
-                    return 0;
-                }
-            };
+            return new DiscardingDrawable();
         }
 
         @Override
