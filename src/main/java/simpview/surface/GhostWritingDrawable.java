@@ -36,10 +36,24 @@ public final class GhostWritingDrawable extends DrawableDecorator {
                 | AFTER[Colors.blue(old)]);
     }
 
+    /**
+     * The same as a write per pixel, with each old colour's ghost worked out
+     * once for as long as the old colour stays the same along the span (the
+     * panels are flat areas of one grey between the edges).
+     */
     @Override
     public void fillSpan(Span span) {
+        int y = span.y;
+        int lastOld = 0;
+        int lastNew = 0;
         for (int x = span.x0; x < span.x1; x++) {
-            setPixel(x, span.y, span.zAt(x), 0);
+            int old = delegate.getPixel(x, y);
+            if (old != lastOld || x == span.x0) {
+                lastOld = old;
+                lastNew = 0xFF000000 | AFTER[Colors.red(old)] << 16 | AFTER[Colors.green(old)] << 8
+                        | AFTER[Colors.blue(old)];
+            }
+            delegate.setPixel(x, y, span.zAt(x), lastNew);
         }
     }
 }
