@@ -57,9 +57,9 @@ public final class WindowDriver {
      * The robot's keys and buttons as this JVM's event queue dispatched them.
      * A wait for the window to have handled an input waits for that input
      * here, rather than in Robot.waitForIdle: its sync with the X server can
-     * run into its own timeout, up to seconds a call, on an idle machine as
-     * much as on a busy one (a whole run's window tests took 122 s with it
-     * and a third of that without).
+     * run into its own timeout, up to 3 s a call, on an idle machine as
+     * much as on a busy one (a whole run's window tests took 122 s with it,
+     * 20 s without).
      */
     private static final class InputSeen implements AWTEventListener {
         private final Map<Integer, AtomicLong> keyReleases = new ConcurrentHashMap<>();
