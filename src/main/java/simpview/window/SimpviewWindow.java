@@ -50,6 +50,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
@@ -545,20 +546,8 @@ public final class SimpviewWindow {
             showPicture();
             return;
         }
-        if (shown == null) {
-            return;
-        }
-        InspectedScene scene = inspectedScene(status::say);
-        if (scene == null) {
-            return;
-        }
-        RenderedView of = shown;
-        status.say("Counting the writes of every pixel ...");
-        inspectorPanel.overdraw(scene, counts -> {
-            if (shown != of || counts == null) {
-                status.say(counts == null ? "The overdraw could not be counted: the scene has an error." : "");
-                return;
-            }
+        replayForOverlay("Counting the writes of every pixel ...",
+                "The overdraw could not be counted: the scene has an error.", inspectorPanel::overdraw, counts -> {
             int[] shownCounts = failures ? counts.failed() : counts.reached();
             overdrawShown = true;
             overdrawFailures = failures;
@@ -570,6 +559,32 @@ public final class SimpviewWindow {
             status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost writes at a pixel"
                     : "Overdraw: up to " + overdrawMax + " writes at a pixel")
                     + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
+        });
+    }
+
+    /**
+     * An overlay made by replaying the shown scene on the inspector's thread:
+     * says {@code working} meanwhile, then gives the answer to {@code show}
+     * on the EDT, unless the picture changed first (then nothing) or the
+     * scene has an error (then {@code failed} is said).
+     */
+    private <T> void replayForOverlay(String working, String failed,
+            BiConsumer<InspectedScene, Consumer<T>> replay, Consumer<T> show) {
+        if (shown == null) {
+            return;
+        }
+        InspectedScene scene = inspectedScene(status::say);
+        if (scene == null) {
+            return;
+        }
+        RenderedView of = shown;
+        status.say(working);
+        replay.accept(scene, answer -> {
+            if (shown != of || answer == null) {
+                status.say(answer == null ? failed : "");
+                return;
+            }
+            show.accept(answer);
         });
     }
 
@@ -801,20 +816,8 @@ public final class SimpviewWindow {
             legendStrip.show("skipped", null);
             return;
         }
-        if (shown == null) {
-            return;
-        }
-        InspectedScene scene = inspectedScene(status::say);
-        if (scene == null) {
-            return;
-        }
-        RenderedView of = shown;
-        status.say("Finding the primitives culled and clipped away ...");
-        inspectorPanel.skipped(scene, found -> {
-            if (shown != of || found == null) {
-                status.say(found == null ? "The scene has an error: no outlines." : "");
-                return;
-            }
+        replayForOverlay("Finding the primitives culled and clipped away ...",
+                "The scene has an error: no outlines.", inspectorPanel::skipped, found -> {
             List<double[]> culled = new ArrayList<>();
             List<double[]> clipped = new ArrayList<>();
             for (SkippedPrimitives.Skipped s : found.outlined()) {

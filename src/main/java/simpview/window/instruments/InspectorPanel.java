@@ -268,16 +268,7 @@ public final class InspectorPanel {
      * given to {@code show} on the EDT (null when the scene has an error).
      */
     public void overdraw(InspectedScene scene, Consumer<Overdraw.Counts> show) {
-        worker.submit(() -> {
-            Overdraw.Counts counts;
-            try {
-                counts = Overdraw.counts(scene, models);
-            } catch (SceneException | RuntimeException e) {
-                counts = null;
-            }
-            Overdraw.Counts shown = counts;
-            SwingUtilities.invokeLater(() -> show.accept(shown));
-        });
+        onWorker(() -> Overdraw.counts(scene, models), show);
     }
 
     /**
@@ -286,14 +277,24 @@ public final class InspectorPanel {
      * the scene has an error).
      */
     public void skipped(InspectedScene scene, Consumer<SkippedPrimitives.Found> show) {
+        onWorker(() -> SkippedPrimitives.of(scene, models), show);
+    }
+
+    /** A replay of a whole scene for an overlay, run on the inspector's thread. */
+    private interface SceneWork<T> {
+        T run() throws SceneException;
+    }
+
+    /** Runs {@code work} on the inspector's thread and gives its answer (null on an error) to {@code show} on the EDT. */
+    private <T> void onWorker(SceneWork<T> work, Consumer<T> show) {
         worker.submit(() -> {
-            SkippedPrimitives.Found found;
+            T answer;
             try {
-                found = SkippedPrimitives.of(scene, models);
+                answer = work.run();
             } catch (SceneException | RuntimeException e) {
-                found = null;
+                answer = null;
             }
-            SkippedPrimitives.Found shown = found;
+            T shown = answer;
             SwingUtilities.invokeLater(() -> show.accept(shown));
         });
     }
