@@ -41,7 +41,10 @@ import org.openjdk.jmh.annotations.TearDown;
  * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.Interleaved
  * CLASS METHOD SECONDS PARAMS DIR...}, CLASS a benchmark class as
  * {@code simpview.bench.LitPages}, PARAMS as {@code scene=a3/pageI,threads=1}
- * (or "" for the defaults), each DIR a build's {@code build/classes/java}.
+ * (or "" for the defaults), each DIR a build's {@code build/classes/java},
+ * perhaps followed by parameters of its own that override PARAMS for it
+ * ({@code build/classes/java@threads=2,perPicture=true}), so that one build
+ * can also be measured against itself set up another way.
  * The course's files are found as the benchmarks find them
  * ({@code -Dsimpview.courseSimp}).
  */
@@ -99,7 +102,10 @@ public final class Interleaved {
         double seconds = Double.parseDouble(args[2]);
         List<Build> builds = new ArrayList<>();
         for (int i = 4; i < args.length; i++) {
-            builds.add(load(args[i], args[0], args[1], args[3]));
+            String[] dirAndOwn = args[i].split("@", 2);
+            String params = dirAndOwn.length == 1 ? args[3]
+                    : args[3].isEmpty() ? dirAndOwn[1] : args[3] + "," + dirAndOwn[1];
+            builds.add(load(dirAndOwn[0], args[0], args[1], params, args[i]));
         }
         long warmUntil = System.nanoTime() + (long) (Math.max(4, seconds / 3) * 1e9);
         while (System.nanoTime() < warmUntil) {
@@ -142,7 +148,7 @@ public final class Interleaved {
             if (i == 0) {
                 first = median;
             }
-            System.out.printf(Locale.ROOT, "%-16s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%n",
+            System.out.printf(Locale.ROOT, "%-24s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%n",
                     builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first);
         }
         for (Build b : builds) {
@@ -152,7 +158,7 @@ public final class Interleaved {
         }
     }
 
-    private static Build load(String dir, String className, String method, String params)
+    private static Build load(String dir, String className, String method, String params, String label)
             throws ReflectiveOperationException, MalformedURLException {
         File classes = new File(dir);
         URL[] urls = {new File(classes, "jmh").toURI().toURL(), new File(classes, "main").toURI().toURL()};
@@ -197,7 +203,8 @@ public final class Interleaved {
                 tearDowns.add(m);
             }
         }
-        return new Build(nameOf(classes), state, type.getMethod(method),
+        String name = nameOf(classes) + (label.contains("@") ? label.substring(label.indexOf('@')) : "");
+        return new Build(name, state, type.getMethod(method),
                 perInvocation, tearDowns);
     }
 

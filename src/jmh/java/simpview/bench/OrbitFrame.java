@@ -38,8 +38,8 @@ import simpview.surface.DrawingThreads;
  * window draws a drag's frames without the inspector's record, and the frame
  * after the drag with it: @Param record=true adds the provenance decorator, a
  * fresh {@link PrimitiveLog} and the copy of the owners. @Param scene:
- * "page7" (depth-cued, turned about the view volume's centre) or
- * "a4/page-d" (lit: the camera
+ * "page7" (depth-cued, turned about the view volume's centre) or a course
+ * page of the third or fourth assignment, as "a3/pageI" or "a4/page-d" (lit: the camera
  * moves about the centre of what the unturned view showed, found in the
  * set-up by one traced drawing). Models are parsed once, in the set-up.
  * Not in it: the window's look through the scene's files for lit commands
@@ -55,7 +55,11 @@ import simpview.surface.DrawingThreads;
 @Fork(1)
 public class OrbitFrame {
 
-    @Param({"page7", "a4/page-d"})
+    @Param({"page7", "a3/pageA", "a3/pageB", "a3/pageC", "a3/pageD", "a3/pageE", "a3/pageF", "a3/pageG",
+            "a3/pageH", "a3/pageI", "a3/tomsPageJ",
+            "a4/page-a1", "a4/page-a2", "a4/page-a3", "a4/page-b1", "a4/page-b2", "a4/page-b3",
+            "a4/page-c1", "a4/page-c2", "a4/page-c3", "a4/page-d", "a4/page-e", "a4/page-f1", "a4/page-f2",
+            "a4/page-g", "a4/page-h"})
     public String scene;
 
     @Param({"true", "false"})
@@ -73,6 +77,15 @@ public class OrbitFrame {
     /** Threads drawing each frame's bands (1: drawn as read, on the benchmark's thread). */
     @Param({"1"})
     public int threads;
+
+    /**
+     * True: at most {@code threads}, each batch in bands or whole as
+     * {@link simpview.surface.BandChoice} finds it pays, as the window draws
+     * when no {@code --threads} is given; false: every batch in bands by all
+     * {@code threads}, as with {@code --threads N}.
+     */
+    @Param({"false"})
+    public boolean perPicture;
 
     private PageRenderer renderer;
     private DrawingThreads drawing;
@@ -111,7 +124,7 @@ public class OrbitFrame {
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
-        drawing = DrawingThreads.of(threads);
+        drawing = perPicture ? DrawingThreads.upTo(threads) : DrawingThreads.of(threads);
         renderer = new PageRenderer(drawing);
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.PROJECT_SCENES, monitor);

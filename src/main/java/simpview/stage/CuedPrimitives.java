@@ -4,6 +4,7 @@ import java.util.Arrays;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
@@ -34,7 +35,16 @@ public final class CuedPrimitives {
     private final DrawingThreads threads;
     private final RowBands bands;
     private final Band[] drawers;
+    /** The whole panel as one band, drawn by the caller's thread, for batches {@link BandChoice} keeps whole. */
+    private final RowBands whole;
+    private final Band wholeDrawer;
     private final Provenance provenance;
+    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}). */
+    private double pixels;
+    /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
+    private boolean firstBatch;
+    /** Told when the first batch was drawn whole: the rest of the scene is then drawn as it is read. */
+    private Runnable keptWhole;
     private int size;
     private byte[] kind = new byte[1024];
     private int[] owner = new int[1024];
@@ -55,6 +65,9 @@ public final class CuedPrimitives {
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
         }
+        this.whole = new RowBands(panel.height(), 1);
+        this.wholeDrawer = bands.count() == 1 ? drawers[0] : new Band(0, 0, panel.height(), panel);
+        this.firstBatch = threads.choosesPerPicture();
     }
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
@@ -75,8 +88,10 @@ public final class CuedPrimitives {
         owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
         lowY[size] = Math.floor(low - 1);
         highY[size] = Math.ceil(high + 1);
+        pixels += BandChoice.pixels(p, at + simpview.geometry.Vertex.X, corners, simpview.geometry.Vertex.NUMBERS,
+                what == Painter.FILLED, what == Painter.WIRE);
         size++;
-        if (size >= MOST_PRIMITIVES) {
+        if (size >= MOST_PRIMITIVES || firstBatch && size >= BandChoice.FIRST_BATCH) {
             flush();
         }
     }
@@ -90,16 +105,45 @@ public final class CuedPrimitives {
         numbers = Arrays.copyOf(numbers, capacity * Painter.STRIDE);
     }
 
-    /** Draws what is recorded, every band at once, and empties the record; returns when all is drawn. */
+    /**
+     * Draws what is recorded, every band at once (or as one band on this
+     * thread, when {@link BandChoice} says splitting it does not pay), and
+     * empties the record; returns when all is drawn.
+     */
     public void flush() {
         if (size == 0) {
             return;
         }
-        if (provenance != null) {
-            provenance.useBands(bands);
+        boolean split = BandChoice.splits(threads, size, pixels);
+        if (split) {
+            if (provenance != null) {
+                provenance.useBands(bands);
+            }
+            threads.forEach(drawers.length, b -> drawers[b].draw());
+        } else {
+            if (provenance != null) {
+                provenance.useBands(whole);
+            }
+            wholeDrawer.draw();
         }
-        threads.forEach(drawers.length, b -> drawers[b].draw());
         size = 0;
+        pixels = 0;
+        if (firstBatch) {
+            firstBatch = false;
+            if (!split && keptWhole != null) {
+                keptWhole.run();
+            }
+        }
+    }
+
+    /**
+     * {@code then} is run when the scene's first batch ({@link BandChoice#FIRST_BATCH}
+     * primitives, or the whole scene if it has fewer) is drawn whole, with the
+     * thread count chosen per picture: the owner then draws the rest of the
+     * scene as it reads it, on its own thread, without recording it.
+     */
+    public void whenKeptWhole(Runnable then) {
+        keptWhole = then;
     }
 
     /** One band's drawer: renderers of its own, the panel through its rows only. */

@@ -11,6 +11,7 @@ import simpview.shading.Fog;
 import simpview.shading.LitState;
 import simpview.shading.FragmentStage;
 import simpview.shading.PointShader;
+import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
@@ -43,7 +44,16 @@ public final class LitPrimitives {
     private final DrawingThreads threads;
     private final RowBands bands;
     private final Band[] drawers;
+    /** The whole panel as one band, drawn by the caller's thread, for batches {@link BandChoice} keeps whole. */
+    private final RowBands whole;
+    private final Band wholeDrawer;
     private final Provenance provenance;
+    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}). */
+    private double pixels;
+    /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
+    private boolean firstBatch;
+    /** Told when the first batch was drawn whole: the rest of the scene is then drawn as it is read. */
+    private Runnable keptWhole;
 
     private int size;
     private byte[] kind = new byte[1024];
@@ -77,6 +87,10 @@ public final class LitPrimitives {
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
         }
+        this.whole = new RowBands(zbuffer.height(), 1);
+        this.wholeDrawer = bands.count() == 1 ? drawers[0]
+                : new Band(0, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
+        this.firstBatch = threads.choosesPerPicture();
     }
 
     /**
@@ -130,9 +144,10 @@ public final class LitPrimitives {
         lookOf[size] = look;
         lowY[size] = Math.floor(low - 1);
         highY[size] = Math.ceil(high + 1);
+        pixels += BandChoice.pixels(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
         start[size + 1] = at + count;
         size++;
-        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS) {
+        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS || firstBatch && size >= BandChoice.FIRST_BATCH) {
             flush();
         }
     }
@@ -149,16 +164,45 @@ public final class LitPrimitives {
         highY = Arrays.copyOf(highY, capacity);
     }
 
-    /** Draws what is recorded, every band at once, and empties the record; returns when all is drawn. */
+    /**
+     * Draws what is recorded, every band at once (or as one band on this
+     * thread, when {@link BandChoice} says splitting it does not pay), and
+     * empties the record; returns when all is drawn.
+     */
     public void flush() {
         if (size == 0) {
             return;
         }
-        if (provenance != null) {
-            provenance.useBands(bands);
+        boolean split = BandChoice.splits(threads, size, pixels);
+        if (split) {
+            if (provenance != null) {
+                provenance.useBands(bands);
+            }
+            threads.forEach(drawers.length, b -> drawers[b].draw());
+        } else {
+            if (provenance != null) {
+                provenance.useBands(whole);
+            }
+            wholeDrawer.draw();
         }
-        threads.forEach(drawers.length, b -> drawers[b].draw());
         size = 0;
+        pixels = 0;
+        if (firstBatch) {
+            firstBatch = false;
+            if (!split && keptWhole != null) {
+                keptWhole.run();
+            }
+        }
+    }
+
+    /**
+     * {@code then} is run when the scene's first batch ({@link BandChoice#FIRST_BATCH}
+     * primitives, or the whole scene if it has fewer) is drawn whole, with the
+     * thread count chosen per picture: the owner then draws the rest of the
+     * scene as it reads it, on its own thread, without recording it.
+     */
+    public void whenKeptWhole(Runnable then) {
+        keptWhole = then;
     }
 
     /** One band's drawer: its own rasterizers and fragment stage, its rows only. */

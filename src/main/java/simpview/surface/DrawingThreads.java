@@ -20,6 +20,12 @@ import java.util.function.IntConsumer;
  *
  * <p>Which thread draws which band does not matter to the picture: a band's
  * pixels are written by that band's drawer only, in drawing order.
+ *
+ * <p>Made by {@link #of}, every picture is drawn in bands by all the threads
+ * (the count the user gave with {@code --threads}). Made by {@link #upTo}
+ * (no count given), each recorded batch of a picture is drawn in bands or as
+ * one band on the caller's thread, as {@link BandChoice} finds it pays; the
+ * picture is the same either way.
  */
 public final class DrawingThreads implements AutoCloseable {
 
@@ -27,16 +33,19 @@ public final class DrawingThreads implements AutoCloseable {
     private static final int BANDS_PER_THREAD = 3;
 
     private final int threads;
+    /** True when each batch's band count is chosen by {@link BandChoice}; false when every batch uses all threads. */
+    private final boolean perPicture;
     /** The workers; null for one thread. */
     private final ExecutorService workers;
     /** Wall time the callers of forEach spent in it, summed: the parallel part of drawing. */
     private long nanosInBands;
 
-    private DrawingThreads(int threads) {
+    private DrawingThreads(int threads, boolean perPicture) {
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
         this.threads = threads;
+        this.perPicture = perPicture && threads > 1;
         if (threads == 1) {
             workers = null;
             return;
@@ -49,23 +58,37 @@ public final class DrawingThreads implements AutoCloseable {
         });
     }
 
-    /** Drawing with {@code threads} threads (the caller's and threads - 1 workers). */
+    /** Drawing every picture with {@code threads} threads (the caller's and threads - 1 workers): a count given. */
     public static DrawingThreads of(int threads) {
-        return new DrawingThreads(threads);
+        return new DrawingThreads(threads, false);
+    }
+
+    /**
+     * Drawing with at most {@code threads} threads: each recorded batch in
+     * bands by all of them, or as one band by the caller alone, as
+     * {@link BandChoice} finds it pays (no count given: the default).
+     */
+    public static DrawingThreads upTo(int threads) {
+        return new DrawingThreads(threads, true);
     }
 
     /** The caller's thread alone. */
     public static DrawingThreads one() {
-        return new DrawingThreads(1);
+        return new DrawingThreads(1, false);
     }
 
-    /** As many threads as the JVM sees processors. */
+    /** At most as many threads as the JVM sees processors, chosen per picture ({@link #upTo}). */
     public static DrawingThreads perProcessor() {
-        return new DrawingThreads(Runtime.getRuntime().availableProcessors());
+        return upTo(Runtime.getRuntime().availableProcessors());
     }
 
     public int threads() {
         return threads;
+    }
+
+    /** True when each batch's band count is chosen by {@link BandChoice} (made by {@link #upTo}, more than one thread). */
+    public boolean choosesPerPicture() {
+        return perPicture;
     }
 
     /** True when there is only the caller's thread: then scenes are drawn as they are read, unrecorded. */
