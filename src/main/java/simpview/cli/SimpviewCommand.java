@@ -118,7 +118,7 @@ public final class SimpviewCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
-                sceneList(), ownScenes, threads.count());
+                sceneList(), ownScenes, threads.count(), threads.given());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options).checkFoldersWith(CheckCommand::checkFolder));
         openedWindow = true;
         return ExitCode.OK;

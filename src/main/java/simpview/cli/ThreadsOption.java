@@ -16,8 +16,8 @@ final class ThreadsOption {
     private CommandSpec spec;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "threads that draw each picture, 1 to " + MOST + " (default: one per processor); "
-                    + "every picture is the same to the bit at any N")
+            description = "threads that draw each picture, 1 to " + MOST + " (default: up to one per processor, "
+                    + "one alone for a scene of small faces); every picture is the same to the bit at any N")
     private Integer threads;
 
     /** The count asked for, or one per processor; a count out of range is a usage error. */
@@ -31,8 +31,16 @@ final class ThreadsOption {
         return threads;
     }
 
-    /** The threads, for the caller to close. */
+    /** True when the user gave {@code --threads}: then every picture is drawn by that many. */
+    boolean given() {
+        return threads != null;
+    }
+
+    /**
+     * The threads, for the caller to close: as many as given, or with none
+     * given up to one per processor, chosen per picture ({@link DrawingThreads#upTo}).
+     */
     DrawingThreads open() {
-        return DrawingThreads.of(count());
+        return given() ? DrawingThreads.of(count()) : DrawingThreads.upTo(count());
     }
 }

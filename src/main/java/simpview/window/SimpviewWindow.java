@@ -126,7 +126,7 @@ public final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
-        this.renderer = new BackgroundRenderer(drawer, options.threads());
+        this.renderer = new BackgroundRenderer(drawer, options.threads(), options.threadsGiven());
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }
 

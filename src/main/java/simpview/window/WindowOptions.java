@@ -13,10 +13,12 @@ import simpview.pages.PageContext;
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
  * @param ownScenes where the project's own scenes (pages 4 and 5) are
- * @param threads how many threads draw each picture (the window's render thread and its helpers)
+ * @param threads how many threads draw each picture (the window's render thread and its helpers), at most
+ * @param threadsGiven true when the user gave the count ({@code --threads}): every picture is drawn by that
+ *     many; false: each picture by as many as pay, up to {@code threads} ({@link simpview.surface.BandChoice})
  */
 public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
-        int threads) {
+        int threads, boolean threadsGiven) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
@@ -25,9 +27,9 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
         }
     }
 
-    /** Drawn by one thread per processor. */
+    /** Drawn by up to one thread per processor, as many as pay for each picture. */
     public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
-        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors());
+        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors(), false);
     }
 
     /** Started from the repository's folder: the project's scenes in simp/. */
@@ -45,7 +47,7 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven);
     }
 
     PageContext pageContext() {

@@ -35,13 +35,17 @@ public final class BackgroundRenderer {
 
     /** Draws on the render thread alone. */
     public BackgroundRenderer(SceneDrawer drawer) {
-        this(drawer, 1);
+        this(drawer, 1, true);
     }
 
-    /** Draws each picture with {@code threads} threads: the render thread and threads - 1 helpers. */
-    public BackgroundRenderer(SceneDrawer drawer, int threads) {
+    /**
+     * Draws each picture with {@code threads} threads, the render thread and
+     * threads - 1 helpers: all of them for every picture when the count was
+     * {@code given}, else as many as pay for each ({@link DrawingThreads#upTo}).
+     */
+    public BackgroundRenderer(SceneDrawer drawer, int threads, boolean given) {
         this.drawer = drawer;
-        this.drawing = DrawingThreads.of(threads);
+        this.drawing = given ? DrawingThreads.of(threads) : DrawingThreads.upTo(threads);
         this.renderer = new PageRenderer(drawing);
     }
 

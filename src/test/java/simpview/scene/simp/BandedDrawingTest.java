@@ -70,15 +70,23 @@ class BandedDrawingTest {
         Drawing one = draw(c, 1);
         assertTrue(one.logged() > 0, "something was drawn");
         for (int threads : new int[] {2, 7}) {
-            Drawing several = draw(c, threads);
-            assertEquals(one.logged(), several.logged(), "primitives logged on " + threads + " threads");
-            assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + threads + " threads");
-            assertArrayEquals(one.depths(), several.depths(), "depths on " + threads + " threads");
-            assertArrayEquals(one.owners(), several.owners(), "owners on " + threads + " threads");
+            // Every batch in bands (a count given), and as many as pay for each batch (none given).
+            for (boolean perPicture : new boolean[] {false, true}) {
+                String how = threads + " threads" + (perPicture ? ", chosen per picture" : "");
+                Drawing several = draw(c, perPicture ? DrawingThreads.upTo(threads) : DrawingThreads.of(threads));
+                assertEquals(one.logged(), several.logged(), "primitives logged on " + how);
+                assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + how);
+                assertArrayEquals(one.depths(), several.depths(), "depths on " + how);
+                assertArrayEquals(one.owners(), several.owners(), "owners on " + how);
+            }
         }
     }
 
     private static Drawing draw(Case c, int threads) throws Exception {
+        return draw(c, DrawingThreads.of(threads));
+    }
+
+    private static Drawing draw(Case c, DrawingThreads threads) throws Exception {
         PageCanvas canvas = new PageCanvas();
         Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
         canvas.recordProvenance(provenance);
@@ -89,7 +97,7 @@ class BandedDrawingTest {
                 return log;
             }
         };
-        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+        try (DrawingThreads drawing = threads) {
             canvas.drawWith(drawing);
             ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
                     ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);

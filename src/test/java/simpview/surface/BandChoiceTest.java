@@ -1,0 +1,102 @@
+package simpview.surface;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.SceneException;
+import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+
+/**
+ * The rule that picks, when no thread count was given, one band on the
+ * drawing thread for a scene of small faces and bands on every thread for a
+ * scene of large fills; a count that was given is always used.
+ */
+class BandChoiceTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void smallFacesAreDrawnWholeAndLargeFillsInBands() {
+        try (DrawingThreads chosen = DrawingThreads.upTo(2)) {
+            assertTrue(chosen.choosesPerPicture());
+            // A4 page-d's batch as recorded, turned: 16,026 faces over 241,691 pixels (15 a face).
+            assertFalse(BandChoice.splits(chosen, 16026, 241691));
+            // A4 page-f2's: 1,012 faces over 515,850 pixels (510 a face).
+            assertTrue(BandChoice.splits(chosen, 1012, 515850));
+            // Large faces, but too few pixels in all to be worth a second thread.
+            assertFalse(BandChoice.splits(chosen, 10, BandChoice.LEAST_PIXELS - 1));
+        }
+    }
+
+    @Test
+    void aCountGivenIsAlwaysUsed() {
+        try (DrawingThreads given = DrawingThreads.of(2); DrawingThreads one = DrawingThreads.one();
+                DrawingThreads upToOne = DrawingThreads.upTo(1)) {
+            assertFalse(given.choosesPerPicture());
+            assertTrue(BandChoice.splits(given, 16026, 241691), "two threads given: bands even for small faces");
+            assertTrue(BandChoice.splits(given, 1, 1));
+            assertFalse(BandChoice.splits(one, 1012, 515850), "one thread: never bands");
+            assertFalse(upToOne.choosesPerPicture());
+            assertFalse(BandChoice.splits(upToOne, 1012, 515850));
+        }
+    }
+
+    @Test
+    void pixelsAreAreasOfFillsAndLengthsOfLines() {
+        // x, y and one more number per corner (stride 3): a right triangle of legs 10 and 20, either winding.
+        double[] v = {5, 5, 0, 15, 5, 0, 5, 25, 0};
+        assertEquals(100, BandChoice.pixels(v, 0, 3, 3, true, false), 1e-12);
+        double[] w = {5, 5, 0, 5, 25, 0, 15, 5, 0};
+        assertEquals(100, BandChoice.pixels(w, 0, 3, 3, true, false), 1e-12);
+        // The line from the first corner to the second: 10 steps along x, both ends: 11 pixels.
+        assertEquals(11, BandChoice.pixels(v, 0, 2, 3, false, false), 1e-12);
+        // The outline: 11 + 21 + 21 (the hypotenuse's longer side is 20).
+        assertEquals(53, BandChoice.pixels(v, 0, 3, 3, false, true), 1e-12);
+    }
+
+    @Test
+    void aSceneOfSmallFacesIsDrawnOnTheCallersThreadAlone() throws Exception {
+        Path small = scene("small.simp", 1500, 1);
+        Path large = scene("large.simp", 30, 120);
+        assertEquals(0, timeInBands(small, DrawingThreads.upTo(2)), "small faces, no count given: no bands");
+        assertTrue(timeInBands(small, DrawingThreads.of(2)) > 0, "small faces, two threads given: bands");
+        assertTrue(timeInBands(large, DrawingThreads.upTo(2)) > 0, "large fills, no count given: bands");
+    }
+
+    /** The wall time the scene's drawing spent in bands drawn by several threads. */
+    private static long timeInBands(Path scene, DrawingThreads drawing) throws SceneException {
+        try (drawing) {
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(drawing);
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), new SceneMonitor() {
+            });
+            return drawing.nanosInBands();
+        }
+    }
+
+    /** A depth-cued scene of {@code count} triangles of side {@code side} (world units; the panel is 200 wide). */
+    private Path scene(String name, int count, double side) throws IOException {
+        StringBuilder s = new StringBuilder("filled\n");
+        for (int i = 0; i < count; i++) {
+            // Spread over the panel, each corner inside it, nearer the later ones.
+            double x = -95 + (i * 7.3) % (190 - side);
+            double y = -95 + (i * 3.1) % (190 - side);
+            double z = -190 + i % 180;
+            s.append(String.format(Locale.ROOT, "polygon (%.3f, %.3f, %.3f) (%.3f, %.3f, %.3f) (%.3f, %.3f, %.3f)%n",
+                    x, y, z, x + side, y, z, x, y + side, z));
+        }
+        Path file = dir.resolve(name);
+        Files.writeString(file, s);
+        return file;
+    }
+}
