@@ -3,25 +3,32 @@ package simpview.surface;
 /**
  * Whether a recorded batch of primitives is drawn split into bands, by all
  * the threads, or as one band, by the thread that draws: the rule for a
- * picture whose thread count the user did not give ({@link DrawingThreads#upTo}).
- * A count the user gave ({@link DrawingThreads#of}) is always used as it is.
+ * picture whose thread count the user did not give ({@link DrawingThreads#upTo},
+ * the default of the window, {@code render}, {@code compare} and {@code check}).
+ * A count the user gave ({@code --threads N}, {@link DrawingThreads#of}) is
+ * always used as it is.
  *
  * <p>The rule looks at what the batch will cost, from two numbers the record
  * keeps as it is filled: how many primitives it holds, and about how many
- * pixels they cover (each filled polygon's area, each line's length in
- * pixels, in panel coordinates; see {@link #pixels}). A band pays for every
- * primitive that touches it (the row test, the triangle's set-up, the shader
- * made for the band) and splitting the panel into bands wins only where the
- * pixels are the work. The course's pages fall into two groups far apart:
- * the filled pages (A3 C to H, A4's pages but d) cover 300 to 20,000 pixels
- * a primitive, where two threads draw 1.5-1.9 times as fast; the pages of
- * the dummy model's 28,716 faces (A3 pageI, A4 page-d) cover 3 to 11, where
- * two threads were slower than one. The line between them is drawn at
- * {@link #PIXELS_PER_PRIMITIVE}; a batch of fewer than {@link #LEAST_PIXELS}
- * pixels is not worth waking a second thread for.
+ * pixels they cover ({@link #pixels}: each filled polygon's area, each line's
+ * length in pixels). A band pays for every primitive that may touch it (the
+ * row test, the triangle's set-up, the shader made for the band), and the
+ * recording costs every primitive a copy, so bands win only where the pixels
+ * are the work. The course's pages, turned as the orbit turns them, fall
+ * into two groups: the dummy model's pages (A3 pageI, A4 page-d: 16,000 faces
+ * a batch) cover 11 to 22 pixels a face, and there two threads were slower
+ * than one; every other page covers 43 (A4 page-g) to 7,750 (A3 pageG). The
+ * line is drawn at {@link #PIXELS_PER_PRIMITIVE} = 30, and a batch of fewer
+ * than {@link #LEAST_PIXELS} pixels in all is not worth a second thread.
+ *
+ * <p>A scene's first batch is judged when {@link #FIRST_BATCH} primitives are
+ * recorded (or at its end, if it has fewer). Drawn whole, the rest of the
+ * scene is drawn as it is read, not recorded at all: so a page of small faces
+ * costs its one-thread time and one recorded batch. (With 1,024 primitives,
+ * the first batch splits only when it covers 50,000 pixels: 49 a primitive.)
  *
  * <p>The choice is about speed alone: a picture is the same to the bit drawn
- * in any number of bands (see {@link RowBands}).
+ * in any number of bands, or as it is read ({@link RowBands}).
  */
 public final class BandChoice {
 
@@ -29,7 +36,8 @@ public final class BandChoice {
      * Primitives in a scene's first batch: it is judged and drawn when this
      * many are recorded (or at the end of a smaller scene), and when it is
      * drawn whole the rest of the scene is drawn as it is read, by one thread,
-     * not recorded at all (the recording costs a small-face page some 20 %).
+     * not recorded at all (recording the whole of A4 page-d and drawing it as
+     * one band cost 21 % more than drawing it as read, as measured).
      */
     public static final int FIRST_BATCH = 1024;
     /** Batches covering fewer pixels a primitive than this are drawn as one band. */
