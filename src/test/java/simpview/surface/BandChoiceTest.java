@@ -1,9 +1,11 @@
 package simpview.surface;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -65,22 +67,31 @@ class BandChoiceTest {
     }
 
     @Test
-    void aSceneOfSmallFacesIsDrawnOnTheCallersThreadAlone() throws Exception {
-        Path small = scene("small.simp", 1500, 1);
-        Path large = scene("large.simp", 30, 120);
-        assertEquals(0, timeInBands(small, DrawingThreads.upTo(2)), "small faces, no count given: no bands");
-        assertTrue(timeInBands(small, DrawingThreads.of(2)) > 0, "small faces, two threads given: bands");
-        assertTrue(timeInBands(large, DrawingThreads.upTo(2)) > 0, "large fills, no count given: bands");
+    void aSceneOfSmallFacesIsDrawnOnTheCallersThreadAloneToTheSamePixels() throws Exception {
+        Path small = scene("small.simp", 1100, 1);
+        Path large = scene("large.simp", 12, 120);
+        int[] oneThread = pixels(small, DrawingThreads.one(), new long[1]);
+        assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
+                "the faces are drawn");
+        long[] inBands = new long[1];
+        // 1,100 faces: the first 1,024 recorded and drawn whole, the rest drawn as read; the same pixels.
+        assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), inBands));
+        assertEquals(0, inBands[0], "small faces, no count given: no bands");
+        assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), inBands));
+        assertTrue(inBands[0] > 0, "small faces, two threads given: bands");
+        pixels(large, DrawingThreads.upTo(2), inBands);
+        assertTrue(inBands[0] > 0, "large fills, no count given: bands");
     }
 
-    /** The wall time the scene's drawing spent in bands drawn by several threads. */
-    private static long timeInBands(Path scene, DrawingThreads drawing) throws SceneException {
+    /** The scene's pixels drawn by {@code drawing}; in inBands[0] the wall time it spent in bands. */
+    private static int[] pixels(Path scene, DrawingThreads drawing, long[] inBands) throws SceneException {
         try (drawing) {
             PageCanvas canvas = new PageCanvas();
             canvas.drawWith(drawing);
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), new SceneMonitor() {
             });
-            return drawing.nanosInBands();
+            inBands[0] = drawing.nanosInBands();
+            return ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
         }
     }
 
