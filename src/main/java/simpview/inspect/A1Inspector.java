@@ -89,7 +89,7 @@ public final class A1Inspector {
                 w.of = watch.count;
             }
         }
-        return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, x, y, column, row,
+        return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
                 canvas.image().getRGB(column, row), panel, drawer, px, py, writes);
     }
 
