@@ -3,6 +3,7 @@ package simpview.window;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 
 /**
@@ -16,15 +17,22 @@ import simpview.pages.PageContext;
  * @param threads how many threads draw each picture (the window's render thread and its helpers), at most
  * @param threadsGiven true when the user gave the count ({@code --threads}): every picture is drawn by that
  *     many; false: each picture by as many as pay, up to {@code threads} ({@link simpview.surface.BandChoice})
+ * @param a1Rule the first assignment's rule for its Bresenham panels and fills
  */
 public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
-        int threads, boolean threadsGiven) {
+        int threads, boolean threadsGiven, A1Rule a1Rule) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
+    }
+
+    /** SPEC's rule for the first assignment. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
+            int threads, boolean threadsGiven) {
+        this(seed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, A1Rule.SPEC);
     }
 
     /** Drawn by up to one thread per processor, as many as pay for each picture. */
@@ -47,10 +55,14 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, a1Rule);
+    }
+
+    WindowOptions withA1Rule(A1Rule rule) {
+        return new WindowOptions(seed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, rule);
     }
 
     PageContext pageContext() {
-        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir);
+        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir).withA1Rule(a1Rule);
     }
 }
