@@ -39,7 +39,9 @@ public final class CuedPrimitives {
     private final RowBands whole;
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}). */
+    /** True when the band count is chosen per batch: then the pixels are counted. */
+    private final boolean weighs;
+    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
     /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
     private boolean firstBatch;
@@ -67,7 +69,8 @@ public final class CuedPrimitives {
         }
         this.whole = new RowBands(panel.height(), 1);
         this.wholeDrawer = bands.count() == 1 ? drawers[0] : new Band(0, 0, panel.height(), panel);
-        this.firstBatch = threads.choosesPerPicture();
+        this.weighs = threads.choosesPerPicture();
+        this.firstBatch = weighs;
     }
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
@@ -88,8 +91,10 @@ public final class CuedPrimitives {
         owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
         lowY[size] = Math.floor(low - 1);
         highY[size] = Math.ceil(high + 1);
-        pixels += BandChoice.pixels(p, at + simpview.geometry.Vertex.X, corners, simpview.geometry.Vertex.NUMBERS,
-                what == Painter.FILLED, what == Painter.WIRE);
+        if (weighs) {
+            pixels += BandChoice.pixels(p, at + simpview.geometry.Vertex.X, corners, simpview.geometry.Vertex.NUMBERS,
+                    what == Painter.FILLED, what == Painter.WIRE);
+        }
         size++;
         if (size >= MOST_PRIMITIVES || firstBatch && size >= BandChoice.FIRST_BATCH) {
             flush();

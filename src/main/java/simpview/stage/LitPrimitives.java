@@ -48,7 +48,9 @@ public final class LitPrimitives {
     private final RowBands whole;
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}). */
+    /** True when the band count is chosen per batch: then the pixels are counted. */
+    private final boolean weighs;
+    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
     /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
     private boolean firstBatch;
@@ -90,7 +92,8 @@ public final class LitPrimitives {
         this.whole = new RowBands(zbuffer.height(), 1);
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
                 : new Band(0, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
-        this.firstBatch = threads.choosesPerPicture();
+        this.weighs = threads.choosesPerPicture();
+        this.firstBatch = weighs;
     }
 
     /**
@@ -144,7 +147,9 @@ public final class LitPrimitives {
         lookOf[size] = look;
         lowY[size] = Math.floor(low - 1);
         highY[size] = Math.ceil(high + 1);
-        pixels += BandChoice.pixels(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
+        if (weighs) {
+            pixels += BandChoice.pixels(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
+        }
         start[size + 1] = at + count;
         size++;
         if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS || firstBatch && size >= BandChoice.FIRST_BATCH) {
