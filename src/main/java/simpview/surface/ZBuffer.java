@@ -11,30 +11,12 @@ import java.util.Arrays;
  * ({@link #written}) before it returns from a write. So the buffer knows when
  * every entry is still at the far plane, and a reset then costs nothing: the
  * pages that draw without depth (1 and 2) do not pay for filling 3.4 MB.
- *
- * <p>Beside the depths, a floor for each run of {@link #SEGMENT} pixels of a
- * row (its segment): a depth that no pixel of the segment is farther than.
- * Every writer only ever makes a depth nearer (the depth test lets nothing
- * else through), so a floor once true stays true until the reset, which sets
- * every floor to the far plane with the depths. {@link ZBufferDrawable} raises
- * a segment's floor when one run of winners covers the segment whole, and
- * skips the part of a span over a segment that its depths at both ends do not
- * rise above (the depth along a span is monotone in x): no pixel there could
- * win. Nothing else reads or writes the floors.
  */
 public final class ZBuffer {
-
-    /** Pixels per segment of a row: 1 << {@link #SEGMENT_SHIFT}. */
-    static final int SEGMENT = 16;
-    static final int SEGMENT_SHIFT = 4;
 
     private final int width;
     private final int height;
     final double[] depth;
-    /** Segments per row: the last one may be short. */
-    final int segments;
-    /** The floor of segment s of row y at y * segments + s. */
-    final double[] floor;
     /** True only while every entry is {@link #resetTo}. */
     private boolean atFarPlane;
     private double resetTo = Double.NaN;
@@ -43,8 +25,6 @@ public final class ZBuffer {
         this.width = width;
         this.height = height;
         this.depth = new double[width * height];
-        this.segments = (width + SEGMENT - 1) >> SEGMENT_SHIFT;
-        this.floor = new double[segments * height];
         reset(-200);
     }
 
@@ -60,7 +40,6 @@ public final class ZBuffer {
     public void reset(double farthest) {
         if (!atFarPlane || Double.doubleToLongBits(farthest) != Double.doubleToLongBits(resetTo)) {
             Arrays.fill(depth, farthest);
-            Arrays.fill(floor, farthest);
             resetTo = farthest;
             atFarPlane = true;
         }
