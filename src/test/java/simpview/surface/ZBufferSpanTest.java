@@ -9,15 +9,16 @@ import org.junit.jupiter.api.Test;
 import simpview.testing.RecordingDrawable;
 
 /**
- * The z-buffer's segment floors change nothing: {@link ZBufferDrawable}'s
- * span path, which skips what a floor hides, writes exactly the pixels, in
- * the same order, with the same depth bits, as a plain depth test of every
- * pixel written here (sharing no code with it). The spans are long enough to
- * ask the floors, laid front to back over whole rows (so that floors rise and
- * hide), back to front, at equal depths, with NaN and infinite depths and
- * slopes, and over a width that leaves a short last segment.
+ * {@link ZBufferDrawable}'s span path (runs of winners, each passed on as one
+ * span) writes exactly the pixels, in the same order, with the same depth
+ * bits and colours, as a plain depth test of every pixel written here
+ * (sharing no code with it): over layers laid front to back over whole rows,
+ * back to front, at equal depths, with NaN and infinite depths and slopes,
+ * spans reaching past both sides, short and long. A shortcut in the span
+ * path (skipping pixels known to be hidden, as the segment floors tried for
+ * issue 22 did) is held to this.
  */
-class ZBufferFloorTest {
+class ZBufferSpanTest {
 
     private static final int WIDTH = 101;
     private static final int HEIGHT = 12;
@@ -87,11 +88,11 @@ class ZBufferFloorTest {
     }
 
     @Test
-    void aResetLowersTheFloorsWithTheDepths() {
+    void afterAResetAFartherSpanWinsAgain() {
         ZBuffer zbuffer = new ZBuffer(WIDTH, HEIGHT);
         RecordingDrawable under = new RecordingDrawable(WIDTH, HEIGHT);
         ZBufferDrawable tested = new ZBufferDrawable(zbuffer, under);
-        tested.fillSpan(span(3, 0, WIDTH, 0, -10, 0, 200)); // near: every floor of row 3 rises to -10
+        tested.fillSpan(span(3, 0, WIDTH, 0, -10, 0, 200)); // near: row 3 at -10
         zbuffer.reset(FAR);
         tested.fillSpan(span(3, 0, WIDTH, 0, -150, 0, 100)); // far, but nearer than the reset depths
         assertEquals(2 * WIDTH, under.writes().size(), "after a reset every pixel of a farther span wins again");
