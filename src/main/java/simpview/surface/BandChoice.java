@@ -15,9 +15,10 @@ package simpview.surface;
  * row test, the triangle's set-up, the shader made for the band), and the
  * recording costs every primitive a copy, so bands win only where the pixels
  * are the work. The course's pages, turned as the orbit turns them, fall
- * into two groups: the dummy model's pages (A3 pageI, A4 page-d: 16,000 faces
- * a batch) cover 11 to 22 pixels a face, and there two threads were slower
- * than one; every other page covers 43 (A4 page-g) to 7,750 (A3 pageG). The
+ * into two groups: the dummy model's pages (A3 pageI, A4 page-d) cover 11 to
+ * 29 pixels a face (their first 1,024 faces, or a whole batch of 16,000),
+ * and there two threads were slower than one; every other page's first
+ * batch covers 43 (A4 page-g) to 7,750 (A3 pageG). The
  * line is drawn at {@link #PIXELS_PER_PRIMITIVE} = 30, and a batch of fewer
  * than {@link #LEAST_PIXELS} pixels in all is not worth a second thread.
  *
@@ -66,8 +67,8 @@ public final class BandChoice {
 
     /**
      * About how many pixels a primitive covers, for {@link #splits}: a filled
-     * polygon's area (the shoelace formula over its n corners, x and y at
-     * {@code v[at + k * stride + x]} and {@code ... + x + 1}), and for lines
+     * polygon's area (the shoelace formula over its n corners, corner k's x
+     * at {@code v[at + k * stride]} and its y next to it), and for lines
      * ({@code filled} false) the length in pixels of its n - 1 edges, or of
      * all n when {@code closed} (an outline).
      */
