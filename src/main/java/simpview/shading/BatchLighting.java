@@ -29,38 +29,49 @@ final class BatchLighting {
     void shade(LitPoints t) {
         int n = t.count;
         Lighting l = lighting;
-        for (int i = 0; i < n; i++) {
-            t.red[i] = t.kdRed[i] * l.ambientRed;
-            t.green[i] = t.kdGreen[i] * l.ambientGreen;
-            t.blue[i] = t.kdBlue[i] * l.ambientBlue;
-        }
+        double ar = l.ambientRed;
+        double ag = l.ambientGreen;
+        double ab = l.ambientBlue;
         if (l.lightCount == 0) {
-            // The ambient term alone: no point is lit alone.
+            // The ambient term alone, clamped by min and max (which C2 packs);
+            // only a NaN, which they keep, is then clamped by Lighting's rule.
             for (int i = 0; i < n; i++) {
-                t.red[i] = Lighting.clamp(t.red[i]);
-                t.green[i] = Lighting.clamp(t.green[i]);
-                t.blue[i] = Lighting.clamp(t.blue[i]);
+                t.red[i] = Math.min(Math.max(t.kdRed[i] * ar, 0), 1);
+                t.green[i] = Math.min(Math.max(t.kdGreen[i] * ag, 0), 1);
+                t.blue[i] = Math.min(Math.max(t.kdBlue[i] * ab, 0), 1);
+            }
+            for (int i = 0; i < n; i++) {
+                double sum = t.red[i] + t.green[i] + t.blue[i];
+                if (sum != sum) {
+                    t.red[i] = Lighting.clamp(t.red[i]);
+                    t.green[i] = Lighting.clamp(t.green[i]);
+                    t.blue[i] = Lighting.clamp(t.blue[i]);
+                }
             }
             return;
+        }
+        for (int i = 0; i < n; i++) {
+            t.red[i] = t.kdRed[i] * ar;
+            t.green[i] = t.kdGreen[i] * ag;
+            t.blue[i] = t.kdBlue[i] * ab;
         }
         aim(t, n);
         int end = l.lightCount * Lights.STRIDE;
         for (int o = 0; o < end; o += Lights.STRIDE) {
             light(t, n, o);
         }
+        // Clamped by min and max: as Lighting.clamp, but a NaN stays NaN.
         for (int i = 0; i < n; i++) {
-            double r = t.red[i];
-            double g = t.green[i];
-            double b = t.blue[i];
-            // A NaN sum: some term had no value (Lighting adds 0 for it) or
-            // the terms cancelled; either way the point is lit alone.
-            t.alone[i] |= r != r | g != g | b != b;
-            t.red[i] = Lighting.clamp(r);
-            t.green[i] = Lighting.clamp(g);
-            t.blue[i] = Lighting.clamp(b);
+            t.red[i] = Math.min(Math.max(t.red[i], 0), 1);
+            t.green[i] = Math.min(Math.max(t.green[i], 0), 1);
+            t.blue[i] = Math.min(Math.max(t.blue[i], 0), 1);
         }
         for (int i = 0; i < n; i++) {
-            if (t.alone[i]) {
+            // Lit alone: a point with a length Lighting rescales (N, E or some
+            // L), or with a NaN sum (a term with no value, which Lighting adds
+            // as 0, or terms that cancelled); what the steps made of it is replaced.
+            double sum = t.red[i] + t.green[i] + t.blue[i];
+            if (!(t.smallest[i] >= Lighting.LOW & t.largest[i] <= Lighting.HIGH) | sum != sum) {
                 shadeAlone(t, i);
             }
         }
@@ -120,9 +131,11 @@ final class BatchLighting {
         for (int i = 0; i < n; i++) {
             q[i] = (ex[i] * t.nx[i] + ey[i] * t.ny[i] + ez[i] * t.nz[i]) * q[i];
         }
+        // The smallest and largest squared length of the point so far: it is
+        // lit alone at the end unless both are usual (each light adds |L|^2).
         for (int i = 0; i < n; i++) {
-            // Lit alone at the end; what the steps make of it meanwhile is replaced.
-            t.alone[i] = !(usual(t.normal2[i]) & usual(t.eye2[i]));
+            t.smallest[i] = Math.min(t.normal2[i], t.eye2[i]);
+            t.largest[i] = Math.max(t.normal2[i], t.eye2[i]);
         }
     }
 
@@ -131,11 +144,6 @@ final class BatchLighting {
         for (int i = 0; i < n; i++) {
             out[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
         }
-    }
-
-    /** A squared length that Lighting uses as it is. */
-    private static boolean usual(double length2) {
-        return length2 >= Lighting.LOW & length2 <= Lighting.HIGH;
     }
 
     /** Adds the light at data[o] to every point: the body of Lighting.shade's light loop, step by step. */
@@ -155,24 +163,28 @@ final class BatchLighting {
         for (int i = 0; i < n; i++) {
             t.dot[i] = t.nx[i] * lx[i] + t.ny[i] * ly[i] + t.nz[i] * lz[i];
         }
-        squaredLengths(lx, ly, lz, t.distance2, n);
         double[] s = t.distance;
-        double[] is = t.inverseDistance;
         for (int i = 0; i < n; i++) {
-            s[i] = Math.sqrt(t.distance2[i]);
+            // Every |L|^2 counts, also where the light does not reach: a
+            // point lit alone needlessly gets the same bits all the same.
+            double d2 = lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i];
+            s[i] = Math.sqrt(d2);
+            t.smallest[i] = Math.min(t.smallest[i], d2);
+            t.largest[i] = Math.max(t.largest[i], d2);
         }
+        double[] is = t.inverseDistance;
         for (int i = 0; i < n; i++) {
             is[i] = 1 / s[i];
         }
         for (int i = 0; i < n; i++) {
             t.cosine[i] = t.dot[i] * (t.inverseNormal[i] * is[i]);
         }
-        double[] h = t.highlight; // V . L, then V . R
+        double[] h = t.highlight;
         for (int i = 0; i < n; i++) {
-            h[i] = (t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i]) * (t.inverseEye[i] * is[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            h[i] = 2 * t.cosine[i] * t.vn[i] - h[i];
+            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it:
+            // max(0, V . R) at most 1 (min and max keep a NaN, see raise).
+            double vl = (t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i]) * (t.inverseEye[i] * is[i]);
+            h[i] = Math.min(Math.max(2 * t.cosine[i] * t.vn[i] - vl, 0), 1);
         }
         double a = data[o + Lights.A];
         double b = data[o + Lights.B];
@@ -182,69 +194,121 @@ final class BatchLighting {
                 t.attenuation[i] = 1 / (a + b * s[i]);
             }
         }
-        raise(t, n);
-        add(t, n, o);
+        add(t, n, o, raise(t, n));
     }
 
-    /** Lighting.power for every point's highlight: max(0, h) at most 1, to the p. */
-    private void raise(LitPoints t, int n) {
-        double[] c = t.highlight;
+    /**
+     * Lighting.power for every point's highlight (already max(0, V . R) at
+     * most 1): the array that holds it. As Lighting.power, but a NaN stays
+     * NaN: only a point lit alone, or one whose sum the NaN then makes NaN
+     * (lit alone too), can have one.
+     */
+    private double[] raise(LitPoints t, int n) {
+        double[] c = t.highlight; // then its squares
         double[] result = t.raised;
-        // As Lighting.power, but a NaN stays NaN: only a point lit alone, or
-        // one whose sum the NaN then makes NaN (lit alone too), can have one.
-        for (int i = 0; i < n; i++) {
-            c[i] = Math.min(Math.max(c[i], 0), 1);
-        }
         int e = lighting.exponent;
         if (e < 0) {
             double p = lighting.p;
             for (int i = 0; i < n; i++) {
                 result[i] = Math.pow(c[i], p);
             }
-            return;
+            return result;
         }
-        // Lighting.bySquaring, each step over every point; c holds the squares.
+        if (e == 0) {
+            for (int i = 0; i < n; i++) {
+                result[i] = 1;
+            }
+            return result;
+        }
+        // Lighting.bySquaring, each step over every point. Its result starts
+        // at 1, and 1 times the first square it takes is that square: so the
+        // squares up to e's lowest bit, then that square is the result so far.
+        while ((e & 1) == 0) {
+            for (int i = 0; i < n; i++) {
+                c[i] *= c[i];
+            }
+            e >>>= 1;
+        }
+        e >>>= 1;
+        if (e == 0) {
+            return c;
+        }
         for (int i = 0; i < n; i++) {
-            result[i] = 1;
+            double v = c[i];
+            result[i] = v;
+            c[i] = v * v;
         }
         while (true) {
-            if ((e & 1) != 0) {
+            boolean multiply = (e & 1) != 0;
+            e >>>= 1;
+            if (e == 0) { // e's highest bit
                 for (int i = 0; i < n; i++) {
                     result[i] *= c[i];
                 }
+                return result;
             }
-            e >>>= 1;
-            if (e == 0) {
-                return;
-            }
-            for (int i = 0; i < n; i++) {
-                c[i] *= c[i];
+            if (multiply) {
+                for (int i = 0; i < n; i++) {
+                    result[i] *= c[i];
+                    c[i] *= c[i];
+                }
+            } else {
+                for (int i = 0; i < n; i++) {
+                    c[i] *= c[i];
+                }
             }
         }
     }
 
-    /** Each point the light reaches gets its contribution; one at an unusual |L| is left to be lit alone. */
-    private void add(LitPoints t, int n, int o) {
+    /**
+     * Each point's contribution, added where the light reaches it (N . L &gt;
+     * 0) and times 0 elsewhere, with no branch, so that C2 packs it. Where
+     * the light does not reach, a finite contribution times 0 adds a zero,
+     * which leaves the sum as it was (but for the sign of a zero sum, which
+     * the clamp makes +0 either way); an infinite or NaN one makes the sum
+     * NaN, and the point is lit alone, as it is for a NaN where the light
+     * reaches (Lighting.contribution's test for a product with no value).
+     * Without either, the sums are Lighting's.
+     */
+    private void add(LitPoints t, int n, int o, double[] raised) {
         Lighting l = lighting;
         double[] data = l.lights.data();
         double red = data[o + Lights.RED];
         double green = data[o + Lights.GREEN];
         double blue = data[o + Lights.BLUE];
-        boolean constant = data[o + Lights.B] == 0;
-        double inverseA = data[o + Lights.INVERSE_A];
         double ks = l.ks;
-        // Lighting.contribution's test for a product with no value is left
-        // out: such a product makes the sum NaN, and shade() then lights the
-        // point alone. Without one, the sums are the same as with the test.
+        double[] reach = t.reach;
+        double[] specular = t.specular;
         for (int i = 0; i < n; i++) {
-            if (t.dot[i] > 0) { // not behind the surface, edge on, or at the lit point
-                t.alone[i] |= !usual(t.distance2[i]); // lit alone at the end
-                double cos = t.cosine[i];
-                double specular = ks * t.raised[i];
-                double f = constant ? inverseA : t.attenuation[i];
-                t.red[i] += red * f * (t.kdRed[i] * cos + specular);
-                t.green[i] += green * f * (t.kdGreen[i] * cos + specular);
-                t.blue[i] += blue * f * (t.kdBlue[i] * cos + specular);
+            // 1 where N . L > 0 (the least positive double times 2^2000 is
+            // above 1), 0 where not, NaN for a NaN N . L.
+            reach[i] = Math.min(Math.max(t.dot[i], 0) * 0x1p1000 * 0x1p1000, 1);
+            specular[i] = ks * raised[i];
+        }
+        if (data[o + Lights.B] == 0) {
+            double inverseA = data[o + Lights.INVERSE_A];
+            double rf = red * inverseA;
+            double gf = green * inverseA;
+            double bf = blue * inverseA;
+            for (int i = 0; i < n; i++) {
+                t.red[i] += rf * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.green[i] += gf * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.blue[i] += bf * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+        } else {
+            double[] f = t.attenuation;
+            for (int i = 0; i < n; i++) {
+                t.red[i] += red * f[i] * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.green[i] += green * f[i] * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.blue[i] += blue * f[i] * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
             }
         }
     }

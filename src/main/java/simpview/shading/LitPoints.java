@@ -45,15 +45,21 @@ public final class LitPoints {
     final double[] lightY;
     final double[] lightZ;
     final double[] dot;
-    final double[] distance2;
     final double[] distance;
     final double[] inverseDistance;
     final double[] cosine;
     final double[] highlight;
     final double[] raised;
     final double[] attenuation;
-    /** Points with a length Lighting rescales: lit alone, into aloneColour, once the steps are done. */
-    final boolean[] alone;
+    final double[] reach;
+    final double[] specular;
+    /**
+     * The smallest and largest of |N|^2, |E|^2 and every |L|^2: a point with
+     * one that Lighting rescales is lit alone, into aloneColour, once the
+     * steps are done.
+     */
+    final double[] smallest;
+    final double[] largest;
     final double[] aloneColour = new double[3];
 
     int count;
@@ -87,14 +93,16 @@ public final class LitPoints {
         lightY = new double[capacity];
         lightZ = new double[capacity];
         dot = new double[capacity];
-        distance2 = new double[capacity];
         distance = new double[capacity];
         inverseDistance = new double[capacity];
         cosine = new double[capacity];
         highlight = new double[capacity];
         raised = new double[capacity];
         attenuation = new double[capacity];
-        alone = new boolean[capacity];
+        reach = new double[capacity];
+        specular = new double[capacity];
+        smallest = new double[capacity];
+        largest = new double[capacity];
     }
 
     public int capacity() {
