@@ -250,10 +250,10 @@ public final class FragmentStage implements FragmentSink {
         double[] inv = spanInverse;
         double[] zs = spanDepth;
         for (int j = 0; j < m; j++) {
-            inv[j] = 1 / (q0 + (k0 + RAMP[j]) * dq);
-        }
-        for (int j = 0; j < m; j++) {
-            zs[j] = (z0 + (k0 + RAMP[j]) * dz) * inv[j];
+            double k = k0 + RAMP[j];
+            double w = 1 / (q0 + k * dq);
+            inv[j] = w;
+            zs[j] = (z0 + k * dz) * w;
         }
         int at = y * width + first;
         int n = 0;
@@ -273,34 +273,100 @@ public final class FragmentStage implements FragmentSink {
     /** The gathered pixels' kd, P and N, lit by the shader into points' red, green and blue. */
     private void phong(int n, double[] v0, double[] dv) {
         LitPoints t = points;
-        resolve(v0[PX], dv[PX], t.px, n);
-        resolve(v0[PY], dv[PY], t.py, n);
-        resolve(v0[NX], dv[NX], t.nx, n);
-        resolve(v0[NY], dv[NY], t.ny, n);
-        resolve(v0[NZ], dv[NZ], t.nz, n);
-        resolve(v0[R], dv[R], t.kdRed, n);
-        resolve(v0[G], dv[G], t.kdGreen, n);
-        resolve(v0[B], dv[B], t.kdBlue, n);
+        resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, n);
+        resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, n);
+        resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, n);
         t.count = n;
         shader.shade(t);
     }
 
-    /** One channel at each gathered pixel: (c0 + k dc) / q. */
-    private void resolve(double c0, double dc, double[] out, int n) {
+    /** Two channels at each gathered pixel: (c0 + k dc) / q. */
+    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, int n) {
+        double[] ks = batchK;
+        double[] inv = batchInverse;
         for (int i = 0; i < n; i++) {
-            out[i] = (c0 + batchK[i] * dc) * batchInverse[i];
+            double k = ks[i];
+            double w = inv[i];
+            a[i] = (a0 + k * da) * w;
+            b[i] = (b0 + k * db) * w;
         }
     }
 
-    /** Each gathered pixel's colour fogged at its depth and packed. */
+    /** Three channels at each gathered pixel: (c0 + k dc) / q. */
+    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, double c0, double dc,
+            double[] c, int n) {
+        double[] ks = batchK;
+        double[] inv = batchInverse;
+        for (int i = 0; i < n; i++) {
+            double k = ks[i];
+            double w = inv[i];
+            a[i] = (a0 + k * da) * w;
+            b[i] = (b0 + k * db) * w;
+            c[i] = (c0 + k * dc) * w;
+        }
+    }
+
+    /**
+     * Each gathered pixel's colour (in [0, 1], as lit) fogged at its depth
+     * and packed, as {@link #fogged} does it, in loops that C2 packs: the
+     * fog's t clamped by min and max, and round(c * 255) as the clamped level
+     * (c * 255 + 0.5 in [0, 255]) truncated.
+     *
+     * <p>Why the bits are fogged's. Where fogged keeps the colour (z at or
+     * beyond near, or t &gt;= 1) t comes out 1 (z - far &gt;= near - far, as
+     * rounding keeps the order), and 1 c + 0 fog is c; where it gives the fog
+     * colour (z &lt;= far) or takes t as 0, t is 0, and 0 c + 1 fog is the fog
+     * colour; a zero's sign may differ, which the level does not see. That
+     * needs near - far positive and finite and a finite fog colour (else
+     * pixel by pixel, as fogged). No z here is NaN: each passed the depth
+     * test. A NaN level truncates to 0, as Colors.level has it.
+     */
     private void pack(int n) {
         LitPoints t = points;
-        for (int i = 0; i < n; i++) {
-            lit[0] = t.red[i];
-            lit[1] = t.green[i];
-            lit[2] = t.blue[i];
-            colours[i] = fogged(batchZ[i], lit);
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
+        Fog f = fog;
+        if (!f.isNone()) {
+            double near = f.near();
+            double far = f.far();
+            double range = near - far;
+            double fr = f.r();
+            double fg = f.g();
+            double fb = f.b();
+            if (!(range > 0 && range < Double.POSITIVE_INFINITY && finite(fr) && finite(fg) && finite(fb))) {
+                for (int i = 0; i < n; i++) {
+                    lit[0] = red[i];
+                    lit[1] = green[i];
+                    lit[2] = blue[i];
+                    colours[i] = fogged(batchZ[i], lit);
+                }
+                return;
+            }
+            double[] ts = spanDepth; // free until the next batch
+            for (int i = 0; i < n; i++) {
+                ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
+            }
+            for (int i = 0; i < n; i++) {
+                double tt = ts[i];
+                double s = 1 - tt;
+                red[i] = tt * red[i] + s * fr;
+                green[i] = tt * green[i] + s * fg;
+                blue[i] = tt * blue[i] + s * fb;
+            }
         }
+        for (int i = 0; i < n; i++) {
+            red[i] = Math.min(Math.max(red[i] * 255 + 0.5, 0), 255);
+            green[i] = Math.min(Math.max(green[i] * 255 + 0.5, 0), 255);
+            blue[i] = Math.min(Math.max(blue[i] * 255 + 0.5, 0), 255);
+        }
+        for (int i = 0; i < n; i++) {
+            colours[i] = 0xFF000000 | (int) red[i] << 16 | (int) green[i] << 8 | (int) blue[i];
+        }
+    }
+
+    private static boolean finite(double v) {
+        return Math.abs(v) <= Double.MAX_VALUE;
     }
 
     /** Writes the n gathered pixels of row y, each run of neighbours in one call. */
