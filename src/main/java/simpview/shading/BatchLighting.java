@@ -20,6 +20,20 @@ package simpview.shading;
  */
 final class BatchLighting {
 
+    /**
+     * The length test without a branch. A point is lit alone (by Lighting)
+     * when one of |N|^2, |E|^2 and its lights' |L|^2 is outside [LOW, HIGH],
+     * as Lighting rescales it then. Instead of comparing each, the batch adds
+     * up |N|, |E|, 1 / |N|, 1 / |E|, and each light's |L| and 1 / |L|, times
+     * 2^777, and lights alone a point whose sum is infinite or NaN. A squared
+     * length above HIGH = 1e150 has its root above 1e75 (less an ulp or two),
+     * one below LOW its inverse root above 1e75, and 1e75 times 2^777 (3.2e233)
+     * is beyond the largest double: so every such point is lit alone. So may
+     * be one whose lengths are near those bounds or whose terms overflow
+     * together, needlessly, and it gets the same bits all the same.
+     */
+    private static final double LENGTHS = 0x1p777;
+
     private final Lighting lighting;
 
     BatchLighting(Lighting lighting) {
@@ -71,7 +85,7 @@ final class BatchLighting {
             // L), or with a NaN sum (a term with no value, which Lighting adds
             // as 0, or terms that cancelled); what the steps made of it is replaced.
             double sum = t.red[i] + t.green[i] + t.blue[i];
-            if (!(t.smallest[i] >= Lighting.LOW & t.largest[i] <= Lighting.HIGH) | sum != sum) {
+            if (!(t.lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
                 shadeAlone(t, i);
             }
         }
@@ -89,64 +103,57 @@ final class BatchLighting {
 
     /**
      * Lighting.aim for every point: E, then N and E's inverse lengths and
-     * V . N. Each loop is kept this small so that C2 unrolls it, which it
-     * must before it packs the points' operations.
+     * V . N; and the start of the point's length test (see {@link #LENGTHS}).
      */
     private void aim(LitPoints t, int n) {
         double[] ex = t.eyeX;
         double[] ey = t.eyeY;
         double[] ez = t.eyeZ;
+        double[] sn = t.inverseNormal; // |N| until the last step
+        double[] se = t.inverseEye; // |E| until the last step
         if (lighting.perspective) {
             for (int i = 0; i < n; i++) {
-                ex[i] = -t.px[i];
-                ey[i] = -t.py[i];
-                ez[i] = -t.pz[i];
+                double x = -t.px[i];
+                double y = -t.py[i];
+                double z = -t.pz[i];
+                ex[i] = x;
+                ey[i] = y;
+                ez[i] = z;
+                se[i] = Math.sqrt(x * x + y * y + z * z);
             }
         } else {
             for (int i = 0; i < n; i++) {
                 ex[i] = 0;
                 ey[i] = 0;
                 ez[i] = 1;
+                se[i] = 1; // the square root of 0 0 + 0 0 + 1 1
             }
         }
-        squaredLengths(t.nx, t.ny, t.nz, t.normal2, n);
-        squaredLengths(ex, ey, ez, t.eye2, n);
-        double[] sn = t.inverseNormal; // |N| until the last step
-        double[] se = t.inverseEye;
+        for (int i = 0; i < n; i++) {
+            sn[i] = Math.sqrt(t.nx[i] * t.nx[i] + t.ny[i] * t.ny[i] + t.nz[i] * t.nz[i]);
+        }
         double[] q = t.vn;
-        for (int i = 0; i < n; i++) {
-            sn[i] = Math.sqrt(t.normal2[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            se[i] = Math.sqrt(t.eye2[i]);
-        }
         for (int i = 0; i < n; i++) {
             q[i] = 1 / (sn[i] * se[i]);
         }
         for (int i = 0; i < n; i++) {
             double normal = sn[i];
-            sn[i] = se[i] * q[i];
-            se[i] = normal * q[i];
+            double eye = se[i];
+            double inverseNormal = eye * q[i];
+            double inverseEye = normal * q[i];
+            sn[i] = inverseNormal;
+            se[i] = inverseEye;
+            t.lengths[i] = (normal + eye + inverseNormal + inverseEye) * LENGTHS;
         }
         for (int i = 0; i < n; i++) {
             q[i] = (ex[i] * t.nx[i] + ey[i] * t.ny[i] + ez[i] * t.nz[i]) * q[i];
         }
-        // The smallest and largest squared length of the point so far: it is
-        // lit alone at the end unless both are usual (each light adds |L|^2).
-        for (int i = 0; i < n; i++) {
-            t.smallest[i] = Math.min(t.normal2[i], t.eye2[i]);
-            t.largest[i] = Math.max(t.normal2[i], t.eye2[i]);
-        }
     }
 
-    /** x x + y y + z z for every point. */
-    private static void squaredLengths(double[] x, double[] y, double[] z, double[] out, int n) {
-        for (int i = 0; i < n; i++) {
-            out[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
-        }
-    }
-
-    /** Adds the light at data[o] to every point: the body of Lighting.shade's light loop, step by step. */
+    /**
+     * Adds the light at data[o] to every point: the body of Lighting.shade's
+     * light loop, step by step; and |L| and 1 / |L| to the point's length test.
+     */
     private void light(LitPoints t, int n, int o) {
         double[] data = lighting.lights.data();
         double[] lx = t.lightX;
@@ -156,35 +163,36 @@ final class BatchLighting {
         double y = data[o + Lights.Y];
         double z = data[o + Lights.Z];
         for (int i = 0; i < n; i++) {
-            lx[i] = x - t.px[i];
-            ly[i] = y - t.py[i];
-            lz[i] = z - t.pz[i];
-        }
-        for (int i = 0; i < n; i++) {
-            t.dot[i] = t.nx[i] * lx[i] + t.ny[i] * ly[i] + t.nz[i] * lz[i];
+            double dx = x - t.px[i];
+            double dy = y - t.py[i];
+            double dz = z - t.pz[i];
+            lx[i] = dx;
+            ly[i] = dy;
+            lz[i] = dz;
+            t.dot[i] = t.nx[i] * dx + t.ny[i] * dy + t.nz[i] * dz;
         }
         double[] s = t.distance;
-        for (int i = 0; i < n; i++) {
-            // Every |L|^2 counts, also where the light does not reach: a
-            // point lit alone needlessly gets the same bits all the same.
-            double d2 = lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i];
-            s[i] = Math.sqrt(d2);
-            t.smallest[i] = Math.min(t.smallest[i], d2);
-            t.largest[i] = Math.max(t.largest[i], d2);
-        }
         double[] is = t.inverseDistance;
         for (int i = 0; i < n; i++) {
-            is[i] = 1 / s[i];
+            // Every |L| counts, also where the light does not reach: a point
+            // lit alone needlessly gets the same bits all the same.
+            double d = Math.sqrt(lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i]);
+            double w = 1 / d;
+            s[i] = d;
+            is[i] = w;
+            t.lengths[i] += (d + w) * LENGTHS;
         }
         for (int i = 0; i < n; i++) {
             t.cosine[i] = t.dot[i] * (t.inverseNormal[i] * is[i]);
         }
-        double[] h = t.highlight;
+        double[] h = t.highlight; // V . L, then max(0, V . R) at most 1
         for (int i = 0; i < n; i++) {
-            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it:
-            // max(0, V . R) at most 1 (min and max keep a NaN, see raise).
-            double vl = (t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i]) * (t.inverseEye[i] * is[i]);
-            h[i] = Math.min(Math.max(2 * t.cosine[i] * t.vn[i] - vl, 0), 1);
+            h[i] = (t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i]) * (t.inverseEye[i] * is[i]);
+        }
+        for (int i = 0; i < n; i++) {
+            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it
+            // (min and max keep a NaN, see raise).
+            h[i] = Math.min(Math.max(2 * t.cosine[i] * t.vn[i] - h[i], 0), 1);
         }
         double a = data[o + Lights.A];
         double b = data[o + Lights.B];
@@ -223,39 +231,61 @@ final class BatchLighting {
         // Lighting.bySquaring, each step over every point. Its result starts
         // at 1, and 1 times the first square it takes is that square: so the
         // squares up to e's lowest bit, then that square is the result so far.
-        while ((e & 1) == 0) {
-            for (int i = 0; i < n; i++) {
-                c[i] *= c[i];
-            }
-            e >>>= 1;
-        }
-        e >>>= 1;
+        int zeros = Integer.numberOfTrailingZeros(e);
+        square(c, n, zeros);
+        e >>>= zeros + 1;
         if (e == 0) {
             return c;
         }
-        for (int i = 0; i < n; i++) {
-            double v = c[i];
-            result[i] = v;
-            c[i] = v * v;
-        }
-        while (true) {
-            boolean multiply = (e & 1) != 0;
-            e >>>= 1;
-            if (e == 0) { // e's highest bit
+        boolean first = true;
+        while (e != 0) {
+            // The squares up to the next bit of e, then the result times that square.
+            int squares = Integer.numberOfTrailingZeros(e) + 1;
+            e >>>= squares;
+            if (first) {
                 for (int i = 0; i < n; i++) {
-                    result[i] *= c[i];
+                    double v = c[i];
+                    result[i] = v;
+                    c[i] = v * v;
                 }
-                return result;
+                squares--;
+                first = false;
             }
-            if (multiply) {
-                for (int i = 0; i < n; i++) {
-                    result[i] *= c[i];
-                    c[i] *= c[i];
-                }
-            } else {
-                for (int i = 0; i < n; i++) {
-                    c[i] *= c[i];
-                }
+            square(c, n, squares);
+            for (int i = 0; i < n; i++) {
+                result[i] *= c[i];
+            }
+        }
+        return result;
+    }
+
+    /**
+     * Each c squared {@code times} times in place, up to four squares in one
+     * loop: the same products, one after another, as a loop per square.
+     */
+    private static void square(double[] c, int n, int times) {
+        for (; times >= 4; times -= 4) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                v *= v;
+                v *= v;
+                c[i] = v * v;
+            }
+        }
+        if (times == 3) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                v *= v;
+                c[i] = v * v;
+            }
+        } else if (times == 2) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                c[i] = v * v;
+            }
+        } else if (times == 1) {
+            for (int i = 0; i < n; i++) {
+                c[i] *= c[i];
             }
         }
     }

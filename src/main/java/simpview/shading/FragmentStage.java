@@ -327,6 +327,7 @@ public final class FragmentStage implements FragmentSink {
         double[] green = t.green;
         double[] blue = t.blue;
         Fog f = fog;
+        boolean inUnit = true; // every colour, fogged or not, in [0, 1]
         if (!f.isNone()) {
             double near = f.near();
             double far = f.far();
@@ -343,6 +344,7 @@ public final class FragmentStage implements FragmentSink {
                 }
                 return;
             }
+            inUnit = unit(fr) && unit(fg) && unit(fb);
             double[] ts = spanDepth; // free until the next batch
             for (int i = 0; i < n; i++) {
                 ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
@@ -355,6 +357,15 @@ public final class FragmentStage implements FragmentSink {
                 blue[i] = tt * blue[i] + s * fb;
             }
         }
+        if (inUnit) {
+            // c * 255 + 0.5 is in [0.5, 255.5] (a rounding above at most), so
+            // it truncates into [0, 255] with no clamp.
+            for (int i = 0; i < n; i++) {
+                colours[i] = 0xFF000000 | (int) (red[i] * 255 + 0.5) << 16 | (int) (green[i] * 255 + 0.5) << 8
+                        | (int) (blue[i] * 255 + 0.5);
+            }
+            return;
+        }
         for (int i = 0; i < n; i++) {
             red[i] = Math.min(Math.max(red[i] * 255 + 0.5, 0), 255);
             green[i] = Math.min(Math.max(green[i] * 255 + 0.5, 0), 255);
@@ -363,6 +374,10 @@ public final class FragmentStage implements FragmentSink {
         for (int i = 0; i < n; i++) {
             colours[i] = 0xFF000000 | (int) red[i] << 16 | (int) green[i] << 8 | (int) blue[i];
         }
+    }
+
+    private static boolean unit(double v) {
+        return v >= 0 && v <= 1;
     }
 
     private static boolean finite(double v) {

@@ -39,8 +39,6 @@ public final class LitPoints {
     final double[] inverseNormal;
     final double[] inverseEye;
     final double[] vn;
-    final double[] normal2;
-    final double[] eye2;
     final double[] lightX;
     final double[] lightY;
     final double[] lightZ;
@@ -51,15 +49,14 @@ public final class LitPoints {
     final double[] highlight;
     final double[] raised;
     final double[] attenuation;
-    final double[] reach;
-    final double[] specular;
     /**
-     * The smallest and largest of |N|^2, |E|^2 and every |L|^2: a point with
-     * one that Lighting rescales is lit alone, into aloneColour, once the
+     * The point's lengths added up for the length test (BatchLighting.LENGTHS):
+     * infinite or NaN, and the point is lit alone, into aloneColour, once the
      * steps are done.
      */
-    final double[] smallest;
-    final double[] largest;
+    final double[] lengths;
+    final double[] reach;
+    final double[] specular;
     final double[] aloneColour = new double[3];
 
     int count;
@@ -87,8 +84,6 @@ public final class LitPoints {
         inverseNormal = new double[capacity];
         inverseEye = new double[capacity];
         vn = new double[capacity];
-        normal2 = new double[capacity];
-        eye2 = new double[capacity];
         lightX = new double[capacity];
         lightY = new double[capacity];
         lightZ = new double[capacity];
@@ -99,10 +94,9 @@ public final class LitPoints {
         highlight = new double[capacity];
         raised = new double[capacity];
         attenuation = new double[capacity];
+        lengths = new double[capacity];
         reach = new double[capacity];
         specular = new double[capacity];
-        smallest = new double[capacity];
-        largest = new double[capacity];
     }
 
     public int capacity() {
