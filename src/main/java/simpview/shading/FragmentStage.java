@@ -57,18 +57,20 @@ public final class FragmentStage implements FragmentSink {
     private final int height;
     private final Drawable panel;
     private final double[] lit = new double[3];
-    // A batch of a span's pixels: 1 / q and z at each; then those that pass
-    // the depth test: x, k (as double), 1 / q, z (P's z under phong, so the
-    // same array as points'), and the packed colour. Their colours and phong
-    // attributes are in points.
-    private final double[] spanInverse = new double[BATCH];
-    private final double[] spanDepth = new double[BATCH];
+    // A batch of a span's pixels: k (as double), 1 / q and z at each, then
+    // moved up in place to those that pass the depth test, with their x (z
+    // is P's z under phong, so the same array as points'); their packed
+    // colours, and the fog's t at each. Their colours and phong attributes
+    // are in points.
+    private final double[] fogT = new double[BATCH];
     private final LitPoints points = new LitPoints(BATCH);
     private final int[] batchX = new int[BATCH];
     private final double[] batchK = new double[BATCH];
     private final double[] batchInverse = new double[BATCH];
     private final double[] batchZ = points.pz;
     private final int[] colours = new int[BATCH];
+    // Whether every pixel of the batch last gathered passed the depth test.
+    private boolean whole;
     private PointShader shader;
     private Fog fog = Fog.NONE;
     // The rows written: all of them, or one band's.
@@ -153,7 +155,11 @@ public final class FragmentStage implements FragmentSink {
                 wrote = true;
                 phong(n, v0, dv);
                 pack(n);
-                writeRuns(y, n);
+                if (whole) {
+                    panel.setRun(first, y, n, batchZ, colours, 0);
+                } else {
+                    writeRuns(y, n);
+                }
             }
         }
         return wrote;
@@ -242,28 +248,50 @@ public final class FragmentStage implements FragmentSink {
     /**
      * Pixels first &lt;= x &lt; stop of the span: z = (z q) / q at each, the
      * depth test, and for each pixel that passes (its depth now stored) x,
-     * k, 1 / q and z gathered. Returns how many passed.
+     * k, 1 / q and z gathered, in place. Returns how many passed; when every
+     * one did, {@link #whole} is true and the x are first, first + 1, ...
+     * (batchX is not written).
      */
     private int gather(int y, int from, int first, int stop, double q0, double dq, double z0, double dz) {
         int m = stop - first;
         double k0 = first - from;
-        double[] inv = spanInverse;
-        double[] zs = spanDepth;
+        double[] ks = batchK;
+        double[] inv = batchInverse;
+        double[] zs = batchZ;
         for (int j = 0; j < m; j++) {
             double k = k0 + RAMP[j];
             double w = 1 / (q0 + k * dq);
+            ks[j] = k;
             inv[j] = w;
             zs[j] = (z0 + k * dz) * w;
         }
         int at = y * width + first;
-        int n = 0;
-        for (int j = 0; j < m; j++) {
+        double[] d = depth;
+        // The pixels that pass from the first on need no moving: only their depths are stored.
+        int j = 0;
+        while (j < m) {
+            double z = zs[j];
+            if (!(z > d[at + j])) {
+                break;
+            }
+            d[at + j] = z;
+            j++;
+        }
+        whole = j == m;
+        if (whole) {
+            return m;
+        }
+        for (int i = 0; i < j; i++) {
+            batchX[i] = first + i;
+        }
+        int n = j;
+        for (j++; j < m; j++) {
             double z = zs[j];
             if (nearer(at + j, z)) {
                 batchX[n] = first + j;
-                batchK[n] = k0 + RAMP[j];
-                batchInverse[n] = inv[j];
-                batchZ[n] = z;
+                ks[n] = ks[j];
+                inv[n] = inv[j];
+                zs[n] = z;
                 n++;
             }
         }
@@ -345,7 +373,7 @@ public final class FragmentStage implements FragmentSink {
                 return;
             }
             inUnit = unit(fr) && unit(fg) && unit(fb);
-            double[] ts = spanDepth; // free until the next batch
+            double[] ts = fogT;
             for (int i = 0; i < n; i++) {
                 ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
             }
