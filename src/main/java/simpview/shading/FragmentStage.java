@@ -301,8 +301,10 @@ public final class FragmentStage implements FragmentSink {
     /** The gathered pixels' kd, P and N, lit by the shader into points' red, green and blue. */
     private void phong(int n, double[] v0, double[] dv) {
         LitPoints t = points;
-        resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, n);
-        resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, n);
+        if (shader.usesPoint()) { // else the ambient term alone: P and N are not read
+            resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, n);
+            resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, n);
+        }
         resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, n);
         t.count = n;
         shader.shade(t);
