@@ -27,10 +27,12 @@ final class BatchLighting {
      * up |N|, |E|, 1 / |N|, 1 / |E|, and each light's |L| and 1 / |L|, times
      * 2^777, and lights alone a point whose sum is infinite or NaN. A squared
      * length above HIGH = 1e150 has its root above 1e75 (less an ulp or two),
-     * one below LOW its inverse root above 1e75, and 1e75 times 2^777 (3.2e233)
-     * is beyond the largest double: so every such point is lit alone. So may
-     * be one whose lengths are near those bounds or whose terms overflow
-     * together, needlessly, and it gets the same bits all the same.
+     * one below LOW its inverse root above 1e75, and 1e75 times 2^777 (7.9e233)
+     * is beyond the largest double (1.8e308); every term is +0 or more (a sum
+     * of squares is never -0), so one infinite term makes the sum infinite,
+     * and every such point is lit alone. So may be one whose lengths are near
+     * those bounds (within a factor of 4.4) or whose terms overflow together,
+     * needlessly, and it gets the same bits all the same.
      */
     private static final double LENGTHS = 0x1p777;
 

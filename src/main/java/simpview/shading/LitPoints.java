@@ -29,10 +29,11 @@ public final class LitPoints {
     final double[] green;
     final double[] blue;
 
-    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
-    // |N|^2 and |E|^2. For the light being added: L, N . L, |L|^2, |L|,
-    // 1 / |L|, cos, the highlight's base V . R (then max(0, V . R) at most 1,
-    // then its squares), its power, and the attenuation.
+    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N. For
+    // the light being added: L, N . L, |L|, 1 / |L|, cos, the highlight's
+    // base V . L (then max(0, V . R) at most 1, then its squares), its power,
+    // the attenuation, whether the light reaches the point (1 or 0) and ks
+    // times the power.
     final double[] eyeX;
     final double[] eyeY;
     final double[] eyeZ;
