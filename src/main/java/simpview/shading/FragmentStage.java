@@ -389,10 +389,17 @@ public final class FragmentStage implements FragmentSink {
         }
         if (inUnit) {
             // c * 255 + 0.5 is in [0.5, 255.5] (a rounding above at most), so
-            // it truncates into [0, 255] with no clamp.
+            // it truncates into [0, 255] with no clamp, and truncating it is
+            // flooring it. The three floors (which C2 packs, where it packs no
+            // conversion to int) make one whole number below 2^24, exactly,
+            // converted once.
+            double[] levels = fogT;
             for (int i = 0; i < n; i++) {
-                colours[i] = 0xFF000000 | (int) (red[i] * 255 + 0.5) << 16 | (int) (green[i] * 255 + 0.5) << 8
-                        | (int) (blue[i] * 255 + 0.5);
+                levels[i] = Math.floor(red[i] * 255 + 0.5) * 65536 + Math.floor(green[i] * 255 + 0.5) * 256
+                        + Math.floor(blue[i] * 255 + 0.5);
+            }
+            for (int i = 0; i < n; i++) {
+                colours[i] = 0xFF000000 | (int) levels[i];
             }
             return;
         }
