@@ -45,7 +45,7 @@ final class A1Before {
             A1Lines set = test.lines(context.seed());
             double[] n = set.numbers();
             for (int k = 1; k <= A1Layout.PANELS; k++) {
-                LineRenderer drawer = k == 4 ? new Antialiased() : LineTestPage.drawer(k);
+                LineRenderer drawer = k == 4 ? new Antialiased() : LineTestPage.drawer(k, context.a1Rule());
                 for (int i = 0; i < set.count(); i++) {
                     drawer.drawLine(n, A1Lines.from(i), A1Lines.to(i), panels[k - 1]);
                 }
@@ -53,7 +53,7 @@ final class A1Before {
             return;
         }
         boolean ghost = ((PolygonTestPage) simpview.pages.Assignment1.page(page)).ghost();
-        A1Polygons scenes = new A1Polygons(context.seed());
+        A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
             Drawable target = ghost ? new Ghost(panels[k - 1]) : panels[k - 1];

@@ -255,7 +255,8 @@ public final class CompareCommand implements Callable<Integer> {
         }
         PrintWriter out = spec.commandLine().getOut();
         out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
-                + (shown.usesSeed() ? ", seed " + context.seed() : ""));
+                + (shown.usesSeed() ? ", seed " + context.seed() : "")
+                + (context.a1Rule() == simpview.pages.A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
         out.println("page:    top-left at x " + comparison.pageLeft() + ", y " + comparison.pageTop()
                 + " of the picture, counted from its top-left");
         if (metric == Comparison.Metric.BLUR) {

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -82,6 +83,9 @@ final class InspectCommand implements Callable<Integer> {
     @Option(names = "--json", description = "one JSON object instead of text")
     private boolean json;
 
+    @Mixin
+    private A1RuleOption a1Rule;
+
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages (pages 4 to 8 do not use it)")
     private Long seed;
 
@@ -105,6 +109,7 @@ final class InspectCommand implements Callable<Integer> {
             return firstAssignment();
         }
         int[] xy = pixel(PageCanvas.PANEL - 1, "panel");
+        usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
         usage(primitive == null || vertices, "--primitive goes with --vertices");
         usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
@@ -160,7 +165,7 @@ final class InspectCommand implements Callable<Integer> {
         usage(simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
         usage(near == null && far == null, "--near-color and --far-color go with --scene only");
         long chosen = PageDrawing.context(parent.ownScenes(), seed, null, PageDrawing.warningsTo(err())).seed();
-        A1Report report = A1Inspector.inspect(what.page, chosen, xy[0], xy[1]);
+        A1Report report = A1Inspector.inspect(what.page, chosen, a1Rule.rule(), xy[0], xy[1]);
         PrintWriter out = spec.commandLine().getOut();
         boolean all = !history && !explain;
         if (json) {

@@ -1,6 +1,7 @@
 package simpview.cli;
 
 import java.nio.file.Path;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -13,7 +14,7 @@ import simpview.surface.Rgb;
 /**
  * The options of the commands that compare pictures with simpview's own
  * ({@code compare}, {@code check}): the seed and the course's folder the
- * pages are drawn with, the depth cue a scene is drawn with, and which of
+ * pages are drawn with (and the first assignment's rule), the depth cue a scene is drawn with, and which of
  * them go together.
  */
 final class OwnPicturesOptions {
@@ -26,6 +27,9 @@ final class OwnPicturesOptions {
 
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: simp)")
     private Path simpDir;
+
+    @Mixin
+    private A1RuleOption a1Rule;
 
     @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
             description = "colour at z = 0 for --scene, channels 0 to 1 (default: 1,1,1)")
@@ -43,11 +47,15 @@ final class OwnPicturesOptions {
         if (scene != null && (seed != null || simpDir != null)) {
             throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
         }
+        if (scene != null && a1Rule.given()) {
+            throw new ParameterException(spec.commandLine(), "--a1-rule goes with the first assignment's pages, not with --scene");
+        }
+        a1Rule.rule();
     }
 
     /** The pages' context these options ask for, the project's own scenes in {@code ownScenes}. */
     PageContext context(Path ownScenes, SceneMonitor monitor) {
-        return PageDrawing.context(ownScenes, seed, simpDir, monitor);
+        return a1Rule.applyTo(PageDrawing.context(ownScenes, seed, simpDir, monitor));
     }
 
     /** simpview's pictures to compare with, drawn as these options ask, by {@code drawing}. */

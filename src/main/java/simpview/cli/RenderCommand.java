@@ -113,6 +113,9 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     private ThreadsOption threads;
 
+    @Mixin
+    private A1RuleOption a1Rule;
+
     /** The threads drawing while the command runs: made and closed by call(). */
     private DrawingThreads drawingThreads;
 
@@ -153,6 +156,8 @@ public final class RenderCommand implements Callable<Integer> {
         usage(assignment == null || assignment == 1 || assignment == 2,
                 "--assignment must be 1 or 2 (the later assignments' pages are scenes: use --scenes), not " + assignment);
         usage(assignment == null || what.page != null || what.all, "--assignment goes with --page or --all");
+        usage(!a1Rule.given() || firstAssignment(), "--a1-rule goes with --assignment 1");
+        a1Rule.rule();
         usage(!firstAssignment() || simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
         int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
         usage(what.page == null || what.page >= 1 && what.page <= count,
@@ -179,6 +184,7 @@ public final class RenderCommand implements Callable<Integer> {
         usage(outDir != null && !outDir.toString().isEmpty() && out == null,
                 "--scenes writes one picture per scene: give --out-dir D, not --out");
         usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
+        usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
         try {
             sceneList = SceneList.of(what.scenes);
         } catch (IllegalArgumentException e) {
@@ -330,7 +336,7 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private PageContext context() {
-        return PageDrawing.context(parent.ownScenes(), seed, simpDir, monitor());
+        return a1Rule.applyTo(PageDrawing.context(parent.ownScenes(), seed, simpDir, monitor()));
     }
 
     private SceneMonitor monitor() {

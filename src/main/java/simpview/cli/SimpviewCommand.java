@@ -43,6 +43,9 @@ public final class SimpviewCommand implements Callable<Integer> {
     @Mixin
     private ThreadsOption threads;
 
+    @Mixin
+    private A1RuleOption a1Rule;
+
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
     private long seed = PageContext.DEFAULT_SEED;
 
@@ -118,7 +121,7 @@ public final class SimpviewCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
-                sceneList(), ownScenes, threads.count());
+                sceneList(), ownScenes, threads.count(), a1Rule.rule());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options).checkFoldersWith(CheckCommand::checkFolder));
         openedWindow = true;
         return ExitCode.OK;

@@ -5,6 +5,7 @@ import java.util.List;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Polygons;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.LineTestPage;
 import simpview.pages.Page;
@@ -39,12 +40,12 @@ public final class A1Inspector {
 
     /**
      * Page {@code page} (1 to 5) of the first assignment drawn with {@code
-     * seed}, at page pixel (x, y): x right, y up from the page's bottom-left
+     * seed} under {@code rule}, at page pixel (x, y): x right, y up from the page's bottom-left
      * pixel, 0 to 749.
      *
      * @throws IllegalArgumentException for a page or pixel outside the page
      */
-    public static A1Report inspect(int page, long seed, int x, int y) {
+    public static A1Report inspect(int page, long seed, A1Rule rule, int x, int y) {
         Page shown = Assignment1.page(page);
         int last = PageCanvas.SIZE - 1;
         if (x < 0 || x > last || y < 0 || y > last) {
@@ -65,17 +66,18 @@ public final class A1Inspector {
             py = A1Layout.top(panel) + A1Layout.PANEL - 1 - row;
             Watch watch = new Watch(px, py, writes);
             if (shown instanceof LineTestPage lines) {
-                drawer = LineTestPage.DRAWERS[panel - 1];
+                drawer = LineTestPage.drawerName(panel, rule);
                 A1Lines set = lines.lines(seed);
                 watch.lines = set;
                 Drawable probe = new Probe(watch, panels[panel - 1]);
                 // The antialiased drawer blends through a CoverageDrawable it is given as it is.
                 Drawable target = panel == 4 ? new CoverageProbe(watch, probe) : probe;
-                LineTestPage.drawPanel(panel, set, target, i -> watch.primitive = i);
+                LineTestPage.drawPanel(panel, rule, set, target, i -> watch.primitive = i);
             } else {
                 PolygonTestPage polygons = (PolygonTestPage) shown;
-                drawer = polygons.ghost() ? "ghost (white, opacity " + GhostWritingDrawable.OPACITY + ")" : "filled";
-                A1Polygons scenes = new A1Polygons(seed);
+                drawer = (polygons.ghost() ? "ghost (white, opacity " + GhostWritingDrawable.OPACITY + ")" : "filled")
+                        + rule.drawerNote();
+                A1Polygons scenes = new A1Polygons(seed, rule);
                 watch.triangles = scenes.scene(panel);
                 watch.ghost = polygons.ghost();
                 polygons.drawPanel(panel, scenes, new Probe(watch, panels[panel - 1]), new FilledPolygonRenderer(),
@@ -87,7 +89,7 @@ public final class A1Inspector {
                 w.of = watch.count;
             }
         }
-        return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, x, y, column, row,
+        return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
                 canvas.image().getRGB(column, row), panel, drawer, px, py, writes);
     }
 

@@ -3,6 +3,7 @@ package simpview.inspect;
 import java.util.List;
 import java.util.Locale;
 import simpview.geometry.Vertex;
+import simpview.pages.A1Rule;
 
 /**
  * What the replay of one pixel of a first-assignment page found: the pixel's
@@ -113,6 +114,7 @@ public final class A1Report {
     private final int page;
     private final String title;
     private final Long seed;
+    private final A1Rule rule;
     private final int x;
     private final int y;
     private final int column;
@@ -125,12 +127,13 @@ public final class A1Report {
     private final List<Write> writes;
     private final boolean lines;
 
-    A1Report(int page, String title, boolean lines, Long seed, int x, int y, int column, int row, int argb, int panel, String drawer,
-            int panelX, int panelY, List<Write> writes) {
+    A1Report(int page, String title, boolean lines, Long seed, A1Rule rule, int x, int y, int column, int row, int argb,
+            int panel, String drawer, int panelX, int panelY, List<Write> writes) {
         this.page = page;
         this.lines = lines;
         this.title = title;
         this.seed = seed;
+        this.rule = rule;
         this.x = x;
         this.y = y;
         this.column = column;
@@ -179,7 +182,8 @@ public final class A1Report {
     public String text(boolean withHistory, boolean withExplanation) {
         StringBuilder sb = new StringBuilder();
         sb.append("pixel (").append(x).append(", ").append(y).append(") of the first assignment's page ").append(page)
-                .append(" (").append(title).append(seed == null ? "" : ", seed " + seed).append("; image pixel ")
+                .append(" (").append(title).append(seed == null ? "" : ", seed " + seed)
+                .append(rule == A1Rule.SPEC ? "" : ", by " + rule.label()).append("; image pixel ")
                 .append(column).append(", row ").append(row).append("): rgb ").append(rgb(argb)).append('\n');
         if (panel == 0) {
             sb.append("in the page's white margins: nothing is drawn here\n");
@@ -222,7 +226,9 @@ public final class A1Report {
                 .append(array(argb)).append(", \"depth\": null}, \"assignment\": 1, \"page\": ").append(page)
                 .append(", \"title\": ");
         Json.string(sb, title);
-        sb.append(", \"seed\": ").append(seed == null ? "null" : seed.toString()).append(", \"panel\": ");
+        sb.append(", \"seed\": ").append(seed == null ? "null" : seed.toString()).append(", \"rule\": ");
+        Json.string(sb, rule.key());
+        sb.append(", \"panel\": ");
         if (panel == 0) {
             sb.append("null");
         } else {

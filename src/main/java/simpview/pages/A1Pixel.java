@@ -20,7 +20,7 @@ public final class A1Pixel {
     }
 
     /** The inspector's words for image pixel (ix, iy) of the first assignment's page, or null outside its panels. */
-    public static String describe(int page, long seed, int ix, int iy) {
+    public static String describe(int page, long seed, A1Rule rule, int ix, int iy) {
         int panel = A1Layout.panelAt(ix, iy);
         if (panel == 0) {
             return null;
@@ -30,10 +30,10 @@ public final class A1Pixel {
         String where = String.format(Locale.ROOT, "panel %d, x %d, y %d", panel, x, y);
         Page shown = Assignment1.page(page);
         if (shown instanceof LineTestPage lines) {
-            return where + " · " + LineTestPage.DRAWERS[panel - 1] + " · " + line(lines.lines(seed), panel, x, y);
+            return where + " · " + LineTestPage.drawerName(panel, rule) + " · " + line(lines.lines(seed), panel, rule, x, y);
         }
-        return where + " · " + triangle(new A1Polygons(seed), panel, x, y,
-                ((PolygonTestPage) shown).ghost() ? "ghost (white, opacity 0.14)" : "filled");
+        return where + " · " + triangle(new A1Polygons(seed, rule), panel, x, y,
+                (((PolygonTestPage) shown).ghost() ? "ghost (white, opacity 0.14)" : "filled") + rule.drawerNote());
     }
 
     /**
@@ -41,7 +41,7 @@ public final class A1Pixel {
      * pixel (ix, iy) of the page, with the panel it is in: {panel, index};
      * null outside the panels or where nothing wrote.
      */
-    public static int[] lastAt(int page, long seed, int ix, int iy) {
+    public static int[] lastAt(int page, long seed, A1Rule rule, int ix, int iy) {
         int panel = A1Layout.panelAt(ix, iy);
         if (panel == 0) {
             return null;
@@ -49,8 +49,8 @@ public final class A1Pixel {
         int x = ix - A1Layout.left(panel);
         int y = A1Layout.top(panel) + A1Layout.PANEL - 1 - iy;
         Page shown = Assignment1.page(page);
-        int[] hits = shown instanceof LineTestPage lines ? lastLine(lines.lines(seed), panel, x, y)
-                : lastTriangle(new A1Polygons(seed), panel, x, y);
+        int[] hits = shown instanceof LineTestPage lines ? lastLine(lines.lines(seed), panel, rule, x, y)
+                : lastTriangle(new A1Polygons(seed, rule), panel, x, y);
         return hits[0] < 0 ? null : new int[] {panel, hits[0]};
     }
 
@@ -59,21 +59,21 @@ public final class A1Pixel {
      * it as given and between its rounded ends, or the triangle as given;
      * {@link A1Marks#NONE} where nothing did.
      */
-    public static A1Marks marksAt(int page, long seed, int ix, int iy) {
-        int[] last = lastAt(page, seed, ix, iy);
+    public static A1Marks marksAt(int page, long seed, A1Rule rule, int ix, int iy) {
+        int[] last = lastAt(page, seed, rule, ix, iy);
         if (last == null) {
             return A1Marks.NONE;
         }
         if (Assignment1.page(page) instanceof LineTestPage lines) {
             return A1Marks.line(lines.lines(seed), last[1], last[0]);
         }
-        return A1Marks.triangles(new A1Polygons(seed), last);
+        return A1Marks.triangles(new A1Polygons(seed, rule), last);
     }
 
     /** {the last line to write panel pixel (x, y), how many did}; -1 for none. */
-    private static int[] lastLine(A1Lines set, int panel, int x, int y) {
+    private static int[] lastLine(A1Lines set, int panel, A1Rule rule, int x, int y) {
         Probe probe = new Probe(x, y);
-        LineRenderer drawer = LineTestPage.drawer(panel);
+        LineRenderer drawer = LineTestPage.drawer(panel, rule);
         int last = -1;
         int count = 0;
         for (int i = 0; i < set.count(); i++) {
@@ -105,8 +105,8 @@ public final class A1Pixel {
         return new int[] {last, count};
     }
 
-    private static String line(A1Lines set, int panel, int x, int y) {
-        int[] hits = lastLine(set, panel, x, y);
+    private static String line(A1Lines set, int panel, A1Rule rule, int x, int y) {
+        int[] hits = lastLine(set, panel, rule, x, y);
         int last = hits[0];
         int count = hits[1];
         if (last < 0) {

@@ -24,23 +24,21 @@ public final class A1Polygons {
     public static final double GRID_STEP = 30;
     public static final int MAX_SHIFT = 12;
     public static final int RANDOM_TRIANGLES = 20;
-    /**
-     * Every vertex is moved up by this before Part 1's fill rule samples
-     * pixel (i, j) at (i + 1/2, j + 1/2): so rows are sampled at integer y,
-     * as the course's pictures show its scanlines, with the top-left rule
-     * unchanged. Its mesh panel covers x 15..284 and y 16..285 of the grid's
-     * 15..285 square (the top edge in, the bottom out, at integer rows); with
-     * rows at + 1/2 it would be y 15..284, one row off. Measured
-     * (docs/assignment1.md), the share of the panel with the course's
-     * geometry: mesh 99.40 % with rows at + 1/2, 100 % at integer rows;
-     * starburst 99.65 and 99.82 %; moving columns by 1/2 too would make the
-     * starburst one-sided (99.70 %).
-     */
-    public static final double ROW_SHIFT = 0.5;
-
     private final double[][] scenes = new double[SCENES][];
+    /** How far every vertex is moved up ({@link A1Rule#rowShift()}). */
+    private final double rowShift;
 
-    public A1Polygons(long seed) {
+    /**
+     * The scenes for this seed, every vertex moved up by the rule's row
+     * shift: under {@link A1Rule#COURSE} by half a pixel, so that Part 1's
+     * fill rule, which samples pixel (i, j) at (i + 1/2, j + 1/2), samples
+     * rows at integer y, as the course's pictures show its scanlines (its
+     * mesh panel covers x 15..284 and y 16..285 of the grid's 15..285 square:
+     * the top edge in, the bottom out), with the top-left rule unchanged.
+     * Columns stay at centres: moving them too makes the starburst one-sided.
+     */
+    public A1Polygons(long seed, A1Rule rule) {
+        rowShift = rule.rowShift();
         Random random = new Random(seed);
         scenes[0] = starburst(random);
         scenes[1] = mesh(random, false);
@@ -61,7 +59,7 @@ public final class A1Polygons {
         return 3 * i * Vertex.NUMBERS;
     }
 
-    private static double[] starburst(Random random) {
+    private double[] starburst(Random random) {
         int n = A1Lines.SPOKES;
         double[] out = new double[n * 3 * Vertex.NUMBERS];
         double c = A1Lines.CENTRE;
@@ -77,7 +75,7 @@ public final class A1Polygons {
         return out;
     }
 
-    private static double[] mesh(Random random, boolean shifted) {
+    private double[] mesh(Random random, boolean shifted) {
         double[] x = new double[GRID * GRID];
         double[] y = new double[GRID * GRID];
         for (int j = 0; j < GRID; j++) {
@@ -108,7 +106,7 @@ public final class A1Polygons {
         return out;
     }
 
-    private static double[] randomTriangles(Random random) {
+    private double[] randomTriangles(Random random) {
         double[] out = new double[RANDOM_TRIANGLES * 3 * Vertex.NUMBERS];
         int range = A1Lines.RANGE;
         for (int i = 0; i < RANDOM_TRIANGLES; i++) {
@@ -119,12 +117,12 @@ public final class A1Polygons {
     }
 
     /** Triangle i, its colour drawn now from the random source. */
-    private static void put(double[] out, int i, Random random, double x0, double y0, double x1, double y1,
+    private void put(double[] out, int i, Random random, double x0, double y0, double x1, double y1,
             double x2, double y2) {
         double r = random.nextDouble();
         double g = random.nextDouble();
         double b = random.nextDouble();
-        double o = ROW_SHIFT;
+        double o = rowShift;
         new Vertex(x0, y0 + o, 0, r, g, b).writeTo(out, at(i));
         new Vertex(x1, y1 + o, 0, r, g, b).writeTo(out, at(i) + Vertex.NUMBERS);
         new Vertex(x2, y2 + o, 0, r, g, b).writeTo(out, at(i) + 2 * Vertex.NUMBERS);

@@ -5,7 +5,6 @@ import java.util.function.LongFunction;
 import simpview.geometry.Vertex;
 import simpview.raster.AlternatingLineRenderer;
 import simpview.raster.AntialiasedLineRenderer;
-import simpview.raster.BresenhamLineRenderer;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.LineRenderer;
 import simpview.surface.Drawable;
@@ -58,12 +57,17 @@ public final class LineTestPage implements A1Page {
         return lines.apply(seed);
     }
 
-    /** A fresh drawer for panel k (1..4); the alternating one counts from its first line. */
-    public static LineRenderer drawer(int panel) {
+    /** Panel k's drawer by name, with the rule where the rule changes it. */
+    public static String drawerName(int panel, A1Rule rule) {
+        return DRAWERS[panel - 1] + (panel == 2 || panel == 3 ? rule.drawerNote() : "");
+    }
+
+    /** A fresh drawer for panel k (1..4) under the rule; the alternating one counts from its first line. */
+    public static LineRenderer drawer(int panel, A1Rule rule) {
         return switch (panel) {
             case 1 -> new DdaLineRenderer();
-            case 2 -> new BresenhamLineRenderer();
-            case 3 -> AlternatingLineRenderer.ddaThenBresenham();
+            case 2 -> rule.bresenham();
+            case 3 -> new AlternatingLineRenderer(new DdaLineRenderer(), rule.bresenham());
             case 4 -> new AntialiasedLineRenderer();
             default -> throw new IllegalArgumentException("panels are 1 to 4, not " + panel);
         };
@@ -85,22 +89,23 @@ public final class LineTestPage implements A1Page {
         A1Lines set = lines(context.seed());
         int count = Math.min(Math.max(steps, 0), set.count());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
-            drawPanel(k, set, count, panels[k - 1], null);
+            drawPanel(k, context.a1Rule(), set, count, panels[k - 1], null);
         }
     }
 
     /**
      * Draws panel k's lines (k = 1..4) onto its panel, in order, by the
-     * panel's drawer; {@code beforeLine}, unless null, is told each line's
-     * index (0, 1, ...) before it is drawn (the inspector's replay of one pixel).
+     * panel's drawer under the rule; {@code beforeLine}, unless null, is told
+     * each line's index (0, 1, ...) before it is drawn (the inspector's
+     * replay of one pixel).
      */
-    public static void drawPanel(int k, A1Lines set, Drawable panel, IntConsumer beforeLine) {
-        drawPanel(k, set, set.count(), panel, beforeLine);
+    public static void drawPanel(int k, A1Rule rule, A1Lines set, Drawable panel, IntConsumer beforeLine) {
+        drawPanel(k, rule, set, set.count(), panel, beforeLine);
     }
 
     /** The same, the first {@code count} lines only. */
-    private static void drawPanel(int k, A1Lines set, int count, Drawable panel, IntConsumer beforeLine) {
-        LineRenderer drawer = drawer(k);
+    private static void drawPanel(int k, A1Rule rule, A1Lines set, int count, Drawable panel, IntConsumer beforeLine) {
+        LineRenderer drawer = drawer(k, rule);
         double[] n = set.numbers();
         for (int i = 0; i < count; i++) {
             if (beforeLine != null) {

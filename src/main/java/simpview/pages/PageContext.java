@@ -12,8 +12,10 @@ import simpview.scene.simp.SceneMonitor;
  * @param monitor progress, warnings and cancelling of scene pages
  * @param ownColours draw the scene pages with their vertices' own colours, without the depth cue
  *     (SPEC: "without depth cueing, that colour is used"); the pages themselves are cued
+ * @param a1Rule the rule of the first assignment's Bresenham panels and fills
  */
-public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor, boolean ownColours) {
+public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor, boolean ownColours,
+        A1Rule a1Rule) {
 
     public static final long DEFAULT_SEED = 361;
 
@@ -26,7 +28,7 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
 
     /** The pages as they are meant to look: depth-cued. */
     public PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
-        this(seed, simpDir, ownSimpDir, monitor, false);
+        this(seed, simpDir, ownSimpDir, monitor, false, A1Rule.SPEC);
     }
 
     /** The defaults with the project's scenes in {@link #PROJECT_SCENES}. */
@@ -40,18 +42,22 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
     }
 
     public PageContext withSeed(long newSeed) {
-        return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours);
+        return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours, a1Rule);
     }
 
     public PageContext withSimpDir(Path dir) {
-        return new PageContext(seed, dir, ownSimpDir, monitor, ownColours);
+        return new PageContext(seed, dir, ownSimpDir, monitor, ownColours, a1Rule);
     }
 
     public PageContext withMonitor(SceneMonitor newMonitor) {
-        return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours);
+        return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours, a1Rule);
+    }
+
+    public PageContext withA1Rule(A1Rule rule) {
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, rule);
     }
 
     public PageContext withOwnColours(boolean own) {
-        return new PageContext(seed, simpDir, ownSimpDir, monitor, own);
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, own, a1Rule);
     }
 }

@@ -8,8 +8,8 @@ import simpview.surface.PageCanvas;
 
 /**
  * The first assignment's pages 4 and 5 (SPEC Part 3): the four scenes of
- * {@link A1Polygons}, filled by Part 1's rule (rows sampled at integer y:
- * {@link A1Polygons#ROW_SHIFT}), each triangle its random
+ * {@link A1Polygons}, filled by Part 1's rule (under {@link A1Rule#COURSE}
+ * with rows sampled at integer y), each triangle its random
  * colour (page 4), or every triangle white at opacity 0.14 through a
  * {@link GhostWritingDrawable} (page 5, the same geometry and seed).
  */
@@ -50,7 +50,7 @@ public final class PolygonTestPage implements A1Page {
 
     @Override
     public int steps(PageContext context) {
-        A1Polygons scenes = new A1Polygons(context.seed());
+        A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
         int most = 0;
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
             most = Math.max(most, scenes.count(k));
@@ -61,7 +61,7 @@ public final class PolygonTestPage implements A1Page {
     @Override
     public void drawSteps(PageCanvas canvas, PageContext context, int steps) {
         Drawable[] panels = A1Layout.paint(canvas);
-        A1Polygons scenes = new A1Polygons(context.seed());
+        A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
             drawPanel(k, scenes, Math.min(Math.max(steps, 0), scenes.count(k)), panels[k - 1], fill, null);
@@ -95,7 +95,7 @@ public final class PolygonTestPage implements A1Page {
     /** E.g. "triangle 30: panel 1, 30 of 90; panel 2, 30 of 162; panel 3, 30 of 162; panel 4 whole (20)". */
     @Override
     public String describeStep(PageContext context, int step) {
-        A1Polygons scenes = new A1Polygons(context.seed());
+        A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
         StringBuilder sb = new StringBuilder("triangle " + step + ":");
         for (int k = 1; k <= A1Polygons.SCENES; k++) {
             int count = scenes.count(k);
@@ -112,6 +112,6 @@ public final class PolygonTestPage implements A1Page {
             pairs[2 * (k - 1)] = k;
             pairs[2 * (k - 1) + 1] = step - 1;
         }
-        return A1Marks.triangles(new A1Polygons(context.seed()), pairs);
+        return A1Marks.triangles(new A1Polygons(context.seed(), context.a1Rule()), pairs);
     }
 }

@@ -4,27 +4,32 @@ import java.math.BigDecimal;
 import java.math.RoundingMode;
 
 /**
- * Bresenham's line, as the course's page 1 panel 2 draws it: the midpoint
- * algorithm of the first octant, with the any-octant transform for the rest
- * (the major axis and the minor direction swapped or mirrored into it), from
- * the same start endpoint as the {@link DdaWalk} (the smaller rounded major
- * coordinate). The major coordinates of the ends are rounded, {@code
- * floor(v + 0.5)}, and give the pixels' count; the start pixel's minor
- * coordinate is the rounded one; the decisions are taken on the line through
- * the ends' minor coordinates <em>as given</em>. At each step the decision
- * variable, in units of 1/(2 dx), says on which side of the line the
- * midpoint between the two candidate pixels lies: it starts at {@code
- * 2 dx f + 2 dy - dx}, f the start's minor offset from its pixel (in the
- * first octant's direction), adds {@code 2 dy} per step and gives {@code
- * 2 dx} back at a minor step. At an exact tie (the midpoint on the line) the
- * walk keeps the minor coordinate, on the start's side.
- *
- * <p>On integer endpoints this is the integer algorithm exactly ({@code 2 dy -
- * dx}, {@code +2 dy}, {@code -2 dx}, integers held exactly in doubles), and
- * both end pixels are the endpoints. On others the end pixel is the rounded
- * endpoint's but where the end's minor coordinate lies exactly half-way
- * between two pixels: there the tie rule keeps it on the start's side (the
- * course's 60-degree spoke ends at column 217 for x = 217.5).
+ * Bresenham's line: the midpoint algorithm of the first octant, with the
+ * any-octant transform for the rest (the major axis and the minor direction
+ * swapped or mirrored into it), from the same start endpoint as the {@link
+ * DdaWalk} (the smaller rounded major coordinate). Every end is rounded,
+ * {@code floor(v + 0.5)}; the rounded major coordinates give the pixels'
+ * count and the start pixel. Which line the decisions are taken on is the
+ * walk's one choice:
+ * <ul>
+ * <li>{@link #integer()}, SPEC Part 3's words: the line through the rounded
+ *     ends, the integer midpoint algorithm ({@code 2 dy - dx}, {@code +2 dy},
+ *     {@code -2 dx}, integers held exactly in doubles); both end pixels are
+ *     the rounded endpoints;</li>
+ * <li>{@link #throughGivenMinor()}, as the course's own picture of its page 1
+ *     panel 2 shows its program drawing: the line through the ends' minor
+ *     coordinates <em>as given</em> (over the rounded major span). On integer
+ *     endpoints the two are the same walk.</li>
+ * </ul>
+ * At each step the decision variable, in units of 1/(2 dx), says on which
+ * side of the line the midpoint between the two candidate pixels lies: it
+ * starts at {@code 2 dx f + 2 dy - dx}, f the start's minor offset from its
+ * pixel (in the first octant's direction; 0 for the integer walk), adds
+ * {@code 2 dy} per step and gives {@code 2 dx} back at a minor step. At an
+ * exact tie (the midpoint on the line) the walk keeps the minor coordinate,
+ * on the start's side, as the course's picture does at its five ties (on the
+ * 60-degree spoke, whose end is x = 217.5: through the given minor
+ * coordinates the end pixel is then (217, 267), not the rounded (218, 267)).
  *
  * <p>When the line starts off the surface, the hidden steps are taken too (so
  * a clipped line has the same pixels as the whole one), unless there are more
@@ -40,6 +45,7 @@ public final class BresenhamWalk implements LineWalk {
     /** Above this many hidden steps the walk jumps instead of stepping. */
     static final int MAX_STEPPED_SKIP = 1 << 20;
 
+    private final boolean givenMinor;
     private boolean xMajor;
     private boolean reversed;
     private int minorLimit;
@@ -58,6 +64,25 @@ public final class BresenhamWalk implements LineWalk {
     private int y;
     private double t;
 
+    private BresenhamWalk(boolean givenMinor) {
+        this.givenMinor = givenMinor;
+    }
+
+    /** SPEC Part 3's Bresenham: the integer midpoint algorithm on the rounded ends. */
+    public static BresenhamWalk integer() {
+        return new BresenhamWalk(false);
+    }
+
+    /** The course's program's Bresenham: decisions on the line through the ends' minor coordinates as given. */
+    public static BresenhamWalk throughGivenMinor() {
+        return new BresenhamWalk(true);
+    }
+
+    /** Whether the decisions are taken on the ends' given minor coordinates (else on the rounded ones). */
+    public boolean givenMinor() {
+        return givenMinor;
+    }
+
     @Override
     public boolean start(double px, double py, double qx, double qy, int width, int height) {
         double x0 = Math.floor(px + 0.5);
@@ -72,8 +97,10 @@ public final class BresenhamWalk implements LineWalk {
         reversed = xMajor ? x1 < x0 : y1 < y0;
         long major0 = (long) (xMajor ? (reversed ? x1 : x0) : (reversed ? y1 : y0));
         long major1 = (long) (xMajor ? (reversed ? x0 : x1) : (reversed ? y0 : y1));
-        double minorStart = xMajor ? (reversed ? qy : py) : (reversed ? qx : px);
-        double minorEnd = xMajor ? (reversed ? py : qy) : (reversed ? px : qx);
+        double minorStart = givenMinor ? (xMajor ? (reversed ? qy : py) : (reversed ? qx : px))
+                : (xMajor ? (reversed ? y1 : y0) : (reversed ? x1 : x0));
+        double minorEnd = givenMinor ? (xMajor ? (reversed ? py : qy) : (reversed ? px : qx))
+                : (xMajor ? (reversed ? y0 : y1) : (reversed ? x0 : x1));
         long minor0 = (long) (xMajor ? (reversed ? y1 : y0) : (reversed ? x1 : x0));
         int majorLimit = xMajor ? width : height;
         minorLimit = xMajor ? height : width;

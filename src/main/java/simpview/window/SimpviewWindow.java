@@ -40,6 +40,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
+import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
 import simpview.pages.PageStepper;
@@ -319,6 +320,7 @@ public final class SimpviewWindow {
         return switch (action) {
             case DEPTH_VIEW -> depthView;
             case OWN_COLOURS -> settings.ownColours();
+            case A1_RULE -> options.a1Rule() == A1Rule.COURSE;
             case BACK_FACES -> backFacesShown;
             case OVERDRAW -> overdrawShown && !overdrawFailures;
             case DEPTH_FAILURES -> overdrawShown && overdrawFailures;
@@ -393,6 +395,7 @@ public final class SimpviewWindow {
             }
             case ASSIGNMENT_3 -> showCoursePages(3);
             case ASSIGNMENT_4 -> showCoursePages(4);
+            case A1_RULE -> toggleA1Rule();
             case SEED -> newSeed();
             case CANCEL -> cancel();
             case INSPECTOR -> toggleInspectorPanel();
@@ -480,7 +483,7 @@ public final class SimpviewWindow {
         String theirs = comparedAt(ix, iy);
         if (shown.view() instanceof View.OfAssignment1Page a1) {
             // The first assignment's pixels go by page coordinates, y up: every panel is on the page.
-            inspectorPanel.inspectFirstAssignment(a1.number(), shown.seed(), ix, PageCanvas.SIZE - 1 - iy, theirs);
+            inspectorPanel.inspectFirstAssignment(a1.number(), shown.seed(), shown.a1Rule(), ix, PageCanvas.SIZE - 1 - iy, theirs);
             return;
         }
         int x = ix - PageCanvas.MARGIN;
@@ -619,7 +622,7 @@ public final class SimpviewWindow {
         int y = pinnedX >= 0 ? pinnedY : hoverY;
         int owner = Inspector.ownerAt(shown, x, y);
         if (shown != null && shown.view() instanceof View.OfAssignment1Page page) {
-            int[] last = x < 0 || y < 0 ? null : simpview.pages.A1Pixel.lastAt(page.number(), shown.seed(), x, y);
+            int[] last = x < 0 || y < 0 ? null : simpview.pages.A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
             owner = last == null ? -1 : last[1];
         }
         if (owner < 0) {
@@ -1175,6 +1178,16 @@ public final class SimpviewWindow {
     }
 
     /** A fresh seed for pages 1 to 3; redraws the page if it is one of them. */
+    /** Switches the first assignment between SPEC's rule and the course's pictures' (A1Rule); A1 pages are drawn again. */
+    private void toggleA1Rule() {
+        A1Rule rule = options.a1Rule() == A1Rule.SPEC ? A1Rule.COURSE : A1Rule.SPEC;
+        options = options.withA1Rule(rule);
+        if (requested() instanceof View.OfAssignment1Page page) {
+            show(page);
+        }
+        status.say("The first assignment's Bresenham panels and fills now follow " + rule.label() + ".");
+    }
+
     void newSeed() {
         long seed = options.seed();
         while (seed == options.seed()) {

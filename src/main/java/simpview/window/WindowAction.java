@@ -80,6 +80,9 @@ public enum WindowAction {
             + "page scenes in course-simp-a3 beside the pages' folder, where they were left", "alt 3"),
     ASSIGNMENT_4(Menu.PAGE, "Assignment 4 (the course's scenes)", "the fourth assignment's pages, from "
             + "course-simp-a4", "alt 4"),
+    A1_RULE(Menu.PAGE, "The course's pictures' rule (A1)", "the first assignment's Bresenham panels and fills by "
+            + "the rule the course's pictures show (Bresenham on the ends' given minor coordinates, rows at integer "
+            + "y), not SPEC's (again: SPEC's)", "shift R"),
     SEED(Menu.PAGE, "New seed", "a new seed for the random pages (A2 1-3, A1 3-5)", "R"),
     CANCEL(Menu.PAGE, "Stop drawing", "stop drawing a long scene (the page on screen stays)", "ESCAPE"),
 

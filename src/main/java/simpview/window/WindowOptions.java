@@ -3,6 +3,7 @@ package simpview.window;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 
 /**
@@ -14,15 +15,22 @@ import simpview.pages.PageContext;
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
  * @param ownScenes where the project's own scenes (pages 4 and 5) are
  * @param threads how many threads draw each picture (the window's render thread and its helpers)
+ * @param a1Rule the first assignment's rule for its Bresenham panels and fills
  */
 public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
-        int threads) {
+        int threads, A1Rule a1Rule) {
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
+    }
+
+    /** SPEC's rule for the first assignment. */
+    public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
+            int threads) {
+        this(seed, simpDir, scene, sceneList, ownScenes, threads, A1Rule.SPEC);
     }
 
     /** Drawn by one thread per processor. */
@@ -45,10 +53,14 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, a1Rule);
+    }
+
+    WindowOptions withA1Rule(A1Rule rule) {
+        return new WindowOptions(seed, simpDir, scene, sceneList, ownScenes, threads, rule);
     }
 
     PageContext pageContext() {
-        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir);
+        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir).withA1Rule(a1Rule);
     }
 }

@@ -35,10 +35,18 @@ class Assignment1CompareTest {
         assertEquals(ExitCode.OK, run.exitCode(), run.err());
         assertTrue(run.out().contains("page:    top-left at x 1, y 31"), run.out());
         assertTrue(run.out().contains("4 antialiased                           100.00 %     100.00 %"), run.out());
-        CliRun starburst = CliRun.of("compare", CourseFiles.require("reference/images/a1/page1.png").toString(),
-                "--assignment", "1", "--page", "1");
+        // SPEC's integer Bresenham is not the course's program's: its panels 2 and 3 fall short.
+        String page1 = CourseFiles.require("reference/images/a1/page1.png").toString();
+        CliRun bySpec = CliRun.of("compare", page1, "--assignment", "1", "--page", "1");
+        assertTrue(bySpec.out().contains("2 Bresenham                              96.62 %      96.62 %"), bySpec.out());
+        assertEquals(ExitCode.SCENE_ERROR, bySpec.exitCode(), bySpec.out());
+        CliRun starburst = CliRun.of("compare", page1, "--assignment", "1", "--page", "1", "--a1-rule", "course");
+        assertTrue(starburst.out().contains("Starburst, by the course's pictures' rule"), starburst.out());
         assertTrue(starburst.out().contains("2 Bresenham                              99.98 %      99.98 %"), starburst.out());
         assertEquals(ExitCode.OK, starburst.exitCode(), "every panel reaches 99 % within 8/255");
+        CliRun wrong = CliRun.of("compare", page1, "--assignment", "1", "--page", "1", "--a1-rule", "mine");
+        assertEquals(ExitCode.USAGE_ERROR, wrong.exitCode());
+        assertTrue(wrong.err().contains("--a1-rule must be spec or course, not mine"), wrong.err());
     }
 
     /**

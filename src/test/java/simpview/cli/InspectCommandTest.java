@@ -145,6 +145,23 @@ class InspectCommandTest {
         assertEquals(0, text.exitCode(), text.err());
         assertTrue(text.out().contains("panel 1 (ghost (white, opacity 0.14))"), text.out());
         assertTrue(text.out().contains("blended with coverage 0.140000, rgb (255, 255, 255)"), text.out());
+        // The 92-degree spoke (line 24) in the Bresenham panel (2), at panel pixel (146, 275): SPEC's rule
+        // (the rounded ends) has moved to column 145 at row 272; the course's (the given ends) moves at row 279.
+        CliRun bySpec = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "546,675", "--json");
+        Map<String, Object> spec = (Map<String, Object>) new MiniJson(bySpec.out().strip()).value();
+        assertEquals("spec", spec.get("rule"));
+        assertEquals("Bresenham", ((Map<String, Object>) spec.get("panel")).get("drawer"));
+        assertEquals(List.of(), spec.get("history"));
+        CliRun byCourse = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "546,675", "--a1-rule",
+                "course", "--json");
+        Map<String, Object> course = (Map<String, Object>) new MiniJson(byCourse.out().strip()).value();
+        assertEquals("course", course.get("rule"));
+        assertEquals("Bresenham (the course's pictures' rule)", ((Map<String, Object>) course.get("panel")).get("drawer"));
+        List<Object> spoke = (List<Object>) course.get("history");
+        assertEquals(1, spoke.size());
+        assertEquals(24.0, ((Map<String, Object>) spoke.get(0)).get("primitive"));
+        assertEquals(2, CliRun.of("inspect", "--page", "5", "--at", "3,3", "--a1-rule", "course").exitCode(),
+                "--a1-rule is for the first assignment");
         CliRun off = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "750,10");
         assertEquals(2, off.exitCode());
         assertTrue(off.err().contains("outside the page: x and y are 0 to 749"), off.err());

@@ -8,6 +8,7 @@ import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.scene.simp.SceneMonitor;
@@ -51,7 +52,7 @@ class A1HistoryTest {
                 int x = xy[0];
                 int y = xy[1];
                 int rgb = image.getRGB(x, LAST - y) & 0xFFFFFF;
-                A1Report report = A1Inspector.inspect(n, SEED, x, y);
+                A1Report report = A1Inspector.inspect(n, SEED, A1Rule.SPEC, x, y);
                 List<A1Report.Write> writes = report.writes();
                 assertEquals(rgb, report.argb() & 0xFFFFFF, "page " + n + " (" + x + ", " + y + ")");
                 if (writes.isEmpty()) {
@@ -99,7 +100,7 @@ class A1HistoryTest {
     @Test
     void theStarburstsCentreIsEveryLine() {
         // Panel 1's pixel (150, 150): image column 50 + 150, row 50 + 299 - 150; page y = 749 - row.
-        A1Report dda = A1Inspector.inspect(1, SEED, 200, LAST - 199);
+        A1Report dda = A1Inspector.inspect(1, SEED, A1Rule.SPEC, 200, LAST - 199);
         assertEquals(1, dda.panel());
         assertEquals("DDA", dda.drawer());
         assertEquals(150, dda.panelX());
@@ -113,7 +114,7 @@ class A1HistoryTest {
         assertEquals(285, first.ends()[2]);
         assertTrue(dda.text().contains("line 1 of 90, (150, 150) to (285, 150)"), dda.text());
         // Panel 4 (antialiased): (150, 150) is at image column 400 + 150, row 400 + 299 - 150.
-        A1Report smooth = A1Inspector.inspect(1, SEED, 550, LAST - 549);
+        A1Report smooth = A1Inspector.inspect(1, SEED, A1Rule.SPEC, 550, LAST - 549);
         assertEquals("antialiased", smooth.drawer());
         assertEquals(90, smooth.writes().size());
         for (A1Report.Write w : smooth.writes()) {
@@ -124,11 +125,11 @@ class A1HistoryTest {
 
     @Test
     void marginsAndPixelsOffThePage() {
-        A1Report margin = A1Inspector.inspect(4, SEED, 10, 10);
+        A1Report margin = A1Inspector.inspect(4, SEED, A1Rule.SPEC, 10, 10);
         assertEquals(0, margin.panel());
         assertTrue(margin.writes().isEmpty());
         assertTrue(margin.json().contains("\"panel\": null"), margin.json());
-        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(1, SEED, 750, 3));
-        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(6, SEED, 3, 3));
+        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(1, SEED, A1Rule.SPEC, 750, 3));
+        assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(6, SEED, A1Rule.SPEC, 3, 3));
     }
 }

@@ -16,11 +16,21 @@ import simpview.surface.Colors;
 import simpview.testing.CountingDrawable;
 import simpview.testing.RecordingDrawable;
 
-/** Bresenham's line against the exact roundings of {@link LineExpectations}, and beside the DDA. */
+/**
+ * Bresenham's line against the exact roundings of {@link LineExpectations},
+ * and beside the DDA: SPEC Part 3's ({@code bresenham}, the integer algorithm
+ * on the rounded ends) and the course's program's ({@code course}, the
+ * decisions on the ends' given minor coordinates).
+ */
 class BresenhamLineRendererTest {
 
     private final BresenhamLineRenderer bresenham = new BresenhamLineRenderer();
+    private final BresenhamLineRenderer course = BresenhamLineRenderer.throughGivenMinor();
     private final DdaLineRenderer dda = new DdaLineRenderer();
+
+    private static double round(double v) {
+        return Math.floor(v + 0.5);
+    }
 
     @ParameterizedTest(name = "to ({0}, {1}), reversed {2}")
     @CsvSource({"7,3,false", "3,7,false", "-3,7,false", "-7,3,false", "-7,-3,false", "-3,-7,false",
@@ -33,6 +43,10 @@ class BresenhamLineRendererTest {
                 : LineExpectations.drawn(bresenham, 100, 100, 100 + dx, 100 + dy, 200);
         assertEquals(expected, drawn);
         assertEquals(LineExpectations.bresenham(100, 100, 100 + dx, 100 + dy), drawn);
+        // On integer ends the two rules are one walk.
+        assertEquals(drawn, reversed
+                ? LineExpectations.drawn(course, 100 + dx, 100 + dy, 100, 100, 200)
+                : LineExpectations.drawn(course, 100, 100, 100 + dx, 100 + dy, 200));
     }
 
     @Test
@@ -42,35 +56,61 @@ class BresenhamLineRendererTest {
         assertEquals(List.of("1,1", "2,2", "3,3", "4,4"), LineExpectations.drawn(bresenham, 4, 4, 1, 1, 10));
         assertEquals(List.of("1,4", "2,3", "3,2", "4,1"), LineExpectations.drawn(bresenham, 4, 1, 1, 4, 10));
         assertEquals(List.of("4,4"), LineExpectations.drawn(bresenham, 4.2, 4.3, 3.6, 4.4, 10));
+        assertEquals(List.of("4,4"), LineExpectations.drawn(course, 4.2, 4.3, 3.6, 4.4, 10));
     }
 
     /**
-     * The ends' major coordinates are rounded (the DDA's pixel count and start
-     * end), their minor ones are not: from (0, 0) to (10, 3.4) Bresenham
-     * follows the slope 0.34 and steps at x = 8 (2.72) where the DDA, on the
-     * rounded (10, 3), keeps (2.4).
+     * SPEC's rule rounds every end first: from (0, 0) to (11, 3.4) it is the
+     * integer algorithm from (0, 0) to (11, 3), pixel for pixel the DDA's
+     * there (3 k / 11 is never a half: no tie), where the course's rule, on
+     * the given slope 3.4 / 11, is a row higher at x = 5 (1.55 against 1.36)
+     * and at x = 9 (2.78 against 2.45).
      */
     @Test
-    void theMinorCoordinatesAreTakenAsGiven() {
-        List<String> drawn = LineExpectations.drawn(bresenham, 0, 0, 10, 3.4, 20);
+    void specsRuleRoundsEveryEndFirst() {
+        List<String> drawn = LineExpectations.drawn(bresenham, 0, 0, 11, 3.4, 20);
+        assertEquals(LineExpectations.bresenham(0, 0, 11, 3), drawn);
+        assertEquals(LineExpectations.drawn(dda, 0, 0, 11, 3.4, 20), drawn);
+        assertEquals(LineExpectations.drawn(bresenham, 0, 0, 11, 3, 20), drawn);
+        assertEquals("5,1", drawn.get(5));
+        assertEquals("5,2", LineExpectations.drawn(course, 0, 0, 11, 3.4, 20).get(5));
+        assertEquals("9,2", drawn.get(9));
+        assertEquals("9,3", LineExpectations.drawn(course, 0, 0, 11, 3.4, 20).get(9));
+        assertEquals(LineExpectations.drawn(bresenham, 10.5, 10.2, 12.7, 9.5, 20),
+                LineExpectations.drawn(bresenham, 11, 10, 13, 10, 20));
+    }
+
+    /**
+     * The course's program's rule rounds the ends' major coordinates (the
+     * DDA's pixel count and start end), not their minor ones: from (0, 0) to
+     * (10, 3.4) it follows the slope 0.34 and steps at x = 8 (2.72) where the
+     * DDA and SPEC's rule, on the rounded (10, 3), keep (2.4).
+     */
+    @Test
+    void theCoursesRuleTakesTheMinorCoordinatesAsGiven() {
+        List<String> drawn = LineExpectations.drawn(course, 0, 0, 10, 3.4, 20);
         assertEquals(List.of("0,0", "1,0", "2,1", "3,1", "4,1", "5,2", "6,2", "7,2", "8,3", "9,3", "10,3"), drawn);
         List<String> byDda = LineExpectations.drawn(dda, 0, 0, 10, 3.4, 20);
         assertEquals("8,2", byDda.get(8));
         assertEquals(drawn.subList(0, 8), byDda.subList(0, 8));
-        assertEquals(List.of("11,10", "12,10", "13,10"), LineExpectations.drawn(bresenham, 10.5, 10.2, 12.7, 9.5, 20));
+        assertEquals("8,2", LineExpectations.drawn(bresenham, 0, 0, 10, 3.4, 20).get(8));
+        assertEquals(List.of("11,10", "12,10", "13,10"), LineExpectations.drawn(course, 10.5, 10.2, 12.7, 9.5, 20));
     }
 
     /**
      * The course's 92-degree spoke, (150, 150) to (145.289, 284.918): on the
      * line through the given ends it moves from column 146 to 145 at row 279,
      * as in the course's page 1 panel 2; through the rounded (145, 285), as
-     * the DDA goes, at row 272.
+     * the DDA and SPEC's rule go, at row 272.
      */
     @Test
     void theCoursesNinetyTwoDegreeSpoke() {
         double ex = 150 + 135 * Math.cos(Math.toRadians(92));
         double ey = 150 + 135 * Math.sin(Math.toRadians(92));
-        List<String> drawn = LineExpectations.drawn(bresenham, 150, 150, ex, ey, 300);
+        List<String> bySpec = LineExpectations.drawn(bresenham, 150, 150, ex, ey, 300);
+        assertEquals("146,271", bySpec.get(271 - 150));
+        assertEquals("145,272", bySpec.get(272 - 150));
+        List<String> drawn = LineExpectations.drawn(course, 150, 150, ex, ey, 300);
         assertEquals("146,278", drawn.get(278 - 150));
         assertEquals("145,279", drawn.get(279 - 150));
         List<String> byDda = LineExpectations.drawn(dda, 150, 150, ex, ey, 300);
@@ -109,13 +149,15 @@ class BresenhamLineRendererTest {
     }
 
     /**
-     * An end whose minor coordinate lies exactly half-way is a tie too: (0, 0)
-     * to (10, 2.5) ends at (10, 2), not at the rounded (10, 3) where the DDA
-     * ends; as the course's 60-degree spoke ends at (217, 267).
+     * Under the course's rule an end whose minor coordinate lies exactly
+     * half-way is a tie too: (0, 0) to (10, 2.5) ends at (10, 2), not at the
+     * rounded (10, 3) where the DDA and SPEC's rule end; as the course's
+     * 60-degree spoke ends at (217, 267).
      */
     @Test
     void anEndHalfWayBetweenTwoPixelsIsKeptOnTheStartsSide() {
-        List<String> drawn = LineExpectations.drawn(bresenham, 0, 0, 10, 2.5, 20);
+        assertEquals("10,3", LineExpectations.drawn(bresenham, 0, 0, 10, 2.5, 20).get(10));
+        List<String> drawn = LineExpectations.drawn(course, 0, 0, 10, 2.5, 20);
         assertEquals("10,2", drawn.get(10));
         assertEquals("10,3", LineExpectations.drawn(dda, 0, 0, 10, 2.5, 20).get(10));
         assertEquals(LineExpectations.bresenham(0, 0, 10, 2.5), drawn);
@@ -136,8 +178,10 @@ class BresenhamLineRendererTest {
             double x1 = random.nextInt(8 * 60) / 8.0;
             double y1 = random.nextInt(8 * 60) / 8.0;
             List<String> expected = LineExpectations.bresenham(x0, y0, x1, y1);
-            assertEquals(expected, LineExpectations.drawn(bresenham, x0, y0, x1, y1, 64),
+            assertEquals(expected, LineExpectations.drawn(course, x0, y0, x1, y1, 64),
                     x0 + "," + y0 + " to " + x1 + "," + y1);
+            assertEquals(LineExpectations.bresenham(round(x0), round(y0), round(x1), round(y1)),
+                    LineExpectations.drawn(bresenham, x0, y0, x1, y1, 64), "SPEC's, " + x0 + "," + y0 + " to " + x1 + "," + y1);
             ties += LineExpectations.drawn(dda, x0, y0, x1, y1, 64).equals(expected) ? 0 : 1;
         }
         assertTrue(ties > 100, "the DDA differs on " + ties + " of them");
@@ -223,13 +267,17 @@ class BresenhamLineRendererTest {
         double y0 = 0.25;
         double x1 = 2999.625;
         double y1 = 750_600.5;
-        RecordingDrawable window = new RecordingDrawable(3000, 760_000);
-        bresenham.drawLine(Vertex.of(x0, y0, -1), Vertex.of(x1, y1, -1), window);
-        List<String> drawn = window.writes().stream().map(w -> w.x() + "," + w.y()).toList();
-        assertEquals(3000, drawn.size());
-        for (int x = 0; x < 3000; x += 1) {
-            assertEquals(LineExpectations.bresenhamAt(x0, y0, x1, y1, x), drawn.get(x), "x " + x);
+        for (BresenhamLineRenderer walk : List.of(course, bresenham)) {
+            RecordingDrawable window = new RecordingDrawable(3000, 760_000);
+            walk.drawLine(Vertex.of(x0, y0, -1), Vertex.of(x1, y1, -1), window);
+            List<String> drawn = window.writes().stream().map(w -> w.x() + "," + w.y()).toList();
+            assertEquals(3000, drawn.size());
+            for (int x = 0; x < 3000; x += 1) {
+                String expected = walk == course ? LineExpectations.bresenhamAt(x0, y0, x1, y1, x)
+                        : LineExpectations.bresenhamAt(round(x0), round(y0), round(x1), round(y1), x);
+                assertEquals(expected, drawn.get(x), "x " + x);
+            }
+            assertNotEquals(drawn.get(0), drawn.get(2999));
         }
-        assertNotEquals(drawn.get(0), drawn.get(2999));
     }
 }

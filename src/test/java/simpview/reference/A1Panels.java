@@ -7,6 +7,7 @@ import java.util.Locale;
 import javax.imageio.ImageIO;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
+import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 import simpview.surface.PageCanvas;
 
@@ -30,10 +31,10 @@ final class A1Panels {
         return ImageIO.read(shared.resolve("reference/images/a1/page" + page + ".png").toFile());
     }
 
-    static BufferedImage ourPage(int page) {
+    static BufferedImage ourPage(int page, A1Rule rule) {
         PageCanvas canvas = new PageCanvas();
         try {
-            Assignment1.page(page).draw(canvas, PageContext.defaults());
+            Assignment1.page(page).draw(canvas, PageContext.defaults().withA1Rule(rule));
         } catch (simpview.scene.SceneException e) {
             throw new AssertionError("the first assignment's pages read no files", e);
         }
@@ -107,23 +108,34 @@ final class A1Panels {
         return out;
     }
 
-    /** Prints every page's panel shares: identical, within 8/255, same geometry; with a folder, writes the pages there. */
+    /**
+     * Prints every page's panel shares under both rules: identical, within
+     * 8/255, same geometry; with a folder, writes the pages there (SPEC's rule
+     * as a1-pageN.png, the course's as a1-pageN-course.png where it draws the
+     * page otherwise).
+     */
     public static void main(String[] args) throws IOException {
         Path shared = Path.of(args.length > 0 ? args[0] : "../shared");
-        for (int page = 1; page <= Assignment1.COUNT; page++) {
-            BufferedImage ours = ourPage(page);
-            BufferedImage theirs = coursePicture(shared, page);
-            if (args.length > 1) {
-                ImageIO.write(beside(ours, theirs), "png", Path.of(args[1], "a1-page" + page + ".png").toFile());
+        for (A1Rule rule : A1Rule.values()) {
+            for (int page = 1; page <= Assignment1.COUNT; page++) {
+                BufferedImage ours = ourPage(page, rule);
+                BufferedImage theirs = coursePicture(shared, page);
+                boolean differs = rule == A1Rule.SPEC || !java.util.Arrays.equals(
+                        ours.getRGB(0, 0, ours.getWidth(), ours.getHeight(), null, 0, ours.getWidth()),
+                        ourPage(page, A1Rule.SPEC).getRGB(0, 0, ours.getWidth(), ours.getHeight(), null, 0, ours.getWidth()));
+                if (args.length > 1 && differs) {
+                    String name = "a1-page" + page + (rule == A1Rule.SPEC ? "" : "-" + rule.key()) + ".png";
+                    ImageIO.write(beside(ours, theirs), "png", Path.of(args[1], name).toFile());
+                }
+                StringBuilder line = new StringBuilder(rule.key() + " page " + page + ":");
+                for (int k = 1; k <= 4; k++) {
+                    int[] a = ourPanel(ours, k);
+                    int[] b = coursePanel(theirs, k);
+                    line.append(String.format(Locale.ROOT, "  panel %d %.2f / %.2f / %.2f", k, 100 * share(a, b, 0),
+                            100 * share(a, b, 8), 100 * sameGeometry(a, b)));
+                }
+                System.out.println(line);
             }
-            StringBuilder line = new StringBuilder("page " + page + ":");
-            for (int k = 1; k <= 4; k++) {
-                int[] a = ourPanel(ours, k);
-                int[] b = coursePanel(theirs, k);
-                line.append(String.format(Locale.ROOT, "  panel %d %.2f / %.2f / %.2f", k, 100 * share(a, b, 0),
-                        100 * share(a, b, 8), 100 * sameGeometry(a, b)));
-            }
-            System.out.println(line);
         }
     }
 }

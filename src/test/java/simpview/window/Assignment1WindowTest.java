@@ -8,6 +8,7 @@ import java.awt.Point;
 import java.awt.event.KeyEvent;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.pages.A1Marks;
@@ -36,6 +37,21 @@ public class Assignment1WindowTest extends WindowTestCase {
         assertEquals("simpview — assignment 1, page 1/5: Starburst", driver.onEdt(() -> driver.window().frame().getTitle()));
         assertEquals(0, Images.differingPixels(Assignment1.render(1, PageContext.defaults().withSeed(SEED)), first.image()));
         assertEquals(0, driver.screenDiffersFrom(first.image()), "the page on screen");
+        // Shift+R: the course's pictures' rule, and back to SPEC's.
+        driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_R);
+        driver.awaitEdt(() -> !driver.window().busy() && driver.window().shown().a1Rule() == A1Rule.COURSE,
+                "page 1 drawn by the course's rule");
+        driver.settle();
+        RenderedView course = driver.onEdt(driver.window()::shown);
+        assertEquals("simpview — assignment 1, page 1/5: Starburst — the course's pictures' rule",
+                driver.onEdt(() -> driver.window().frame().getTitle()));
+        assertEquals(0, Images.differingPixels(
+                Assignment1.render(1, PageContext.defaults().withSeed(SEED).withA1Rule(A1Rule.COURSE)), course.image()));
+        assertTrue(Images.differingPixels(first.image(), course.image()) > 100, "the Bresenham panels differ");
+        assertEquals(0, driver.screenDiffersFrom(course.image()), "the page on screen");
+        driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_R);
+        driver.awaitEdt(() -> !driver.window().busy() && driver.window().shown().a1Rule() == A1Rule.SPEC,
+                "page 1 drawn by SPEC's rule again");
         driver.press(KeyEvent.VK_LEFT);
         driver.awaitShown(new View.OfAssignment1Page(5));
         driver.press(KeyEvent.VK_RIGHT);

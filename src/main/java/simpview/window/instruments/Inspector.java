@@ -45,7 +45,7 @@ public final class Inspector {
         int rgb = view.image().getRGB(ix, iy);
         String colour = colour(rgb);
         if (view.view() instanceof View.OfAssignment1Page page) {
-            String facts = A1Pixel.describe(page.number(), view.seed(), ix, iy);
+            String facts = A1Pixel.describe(page.number(), view.seed(), view.a1Rule(), ix, iy);
             return facts == null ? "margin (image " + ix + ", " + iy + ") · " + colour
                     : facts.replaceFirst(" · ", " · " + colour + " · ");
         }
@@ -132,7 +132,7 @@ public final class Inspector {
         if (view == null || ix < 0 || iy < 0 || !(view.view() instanceof View.OfAssignment1Page page)) {
             return null;
         }
-        return A1Pixel.marksAt(page.number(), view.seed(), ix, iy);
+        return A1Pixel.marksAt(page.number(), view.seed(), view.a1Rule(), ix, iy);
     }
 
     /** Panel points (x, y up) as image points (x, y down): a pixel centre stays a pixel centre. */

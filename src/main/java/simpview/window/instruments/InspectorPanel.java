@@ -1,5 +1,6 @@
 package simpview.window.instruments;
 
+import simpview.pages.A1Rule;
 import java.awt.Dimension;
 import java.awt.Font;
 import java.util.concurrent.ExecutorService;
@@ -211,14 +212,14 @@ public final class InspectorPanel {
 
     /**
      * The same for page pixel (x, y) of the first assignment's page {@code
-     * page} drawn with {@code seed} (page coordinates: x right, y up from the
+     * page} drawn with {@code seed} under {@code rule} (page coordinates: x right, y up from the
      * page's bottom-left pixel): its panel drawn again through a one-pixel
      * probe, every write with its coverage, as {@code simpview inspect
      * --assignment 1} prints it.
      */
-    public void inspectFirstAssignment(int page, long seed, int x, int y, String before) {
+    public void inspectFirstAssignment(int page, long seed, A1Rule rule, int x, int y, String before) {
         replay(before, "Drawing the panel again for page pixel (" + x + ", " + y + ") ...",
-                () -> new Answer(A1Inspector.inspect(page, seed, x, y).text(true, true), Map.of(), List.of()));
+                () -> new Answer(A1Inspector.inspect(page, seed, rule, x, y).text(true, true), Map.of(), List.of()));
     }
 
     /** A replay's text, the places its chains name, and the owner's chain. */

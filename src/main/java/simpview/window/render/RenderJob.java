@@ -182,7 +182,7 @@ public final class RenderJob implements SceneMonitor {
                 canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
                 primitives(), filesRead(), drewSomething, shownCentre);
         canvas.recordProvenance(null);
-        return new RenderedView(view, seed(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+        return new RenderedView(view, seed(), context.a1Rule(), canvas.snapshot(), error, List.copyOf(warnings), facts);
     }
 
     /** What each primitive drawn was, in drawing order. */

@@ -2,6 +2,7 @@ package simpview.window.render;
 
 import java.awt.image.BufferedImage;
 import java.util.List;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.Page;
@@ -11,15 +12,17 @@ import simpview.pages.Page;
  *
  * @param view what was drawn
  * @param seed the seed it was drawn with
+ * @param a1Rule the first assignment's rule it was drawn with (its Bresenham panels and fills)
  * @param image a copy of the page, never the canvas being drawn on
  * @param error the scene error's message, or null; the image then holds what was drawn before it
  * @param warnings what the scene reported that is not an error
  * @param facts depths, who drew what, the files read: what the instruments show
  */
-public record RenderedView(View view, long seed, BufferedImage image, String error, List<String> warnings, PageFacts facts) {
+public record RenderedView(View view, long seed, A1Rule a1Rule, BufferedImage image, String error, List<String> warnings,
+        PageFacts facts) {
 
-    RenderedView(View view, long seed, BufferedImage image, String error, List<String> warnings) {
-        this(view, seed, image, error, warnings, PageFacts.NONE);
+    RenderedView(View view, long seed, A1Rule a1Rule, BufferedImage image, String error, List<String> warnings) {
+        this(view, seed, a1Rule, image, error, warnings, PageFacts.NONE);
     }
 
     /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
@@ -32,7 +35,8 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
         if (view instanceof View.OfAssignment1Page page) {
             Page shownPage = Assignment1.page(page.number());
             String title = "simpview — assignment 1, page " + page.number() + "/" + Assignment1.COUNT + ": "
-                    + shownPage.title() + (shownPage.usesSeed() ? " — seed " + seed : "");
+                    + shownPage.title() + (shownPage.usesSeed() ? " — seed " + seed : "")
+                    + (a1Rule == A1Rule.SPEC ? "" : " — " + a1Rule.label());
             return error == null ? title : title + " — error";
         }
         String title = "simpview — scene: " + ((View.OfScene) view).file().getFileName();
@@ -45,7 +49,8 @@ public record RenderedView(View view, long seed, BufferedImage image, String err
             return "page" + page.number() + (Assignment2.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
         }
         if (view instanceof View.OfAssignment1Page page) {
-            return "a1-page" + page.number() + (Assignment1.page(page.number()).usesSeed() ? "-seed" + seed : "") + ".png";
+            return "a1-page" + page.number() + (Assignment1.page(page.number()).usesSeed() ? "-seed" + seed : "")
+                    + (a1Rule == A1Rule.SPEC ? "" : "-" + a1Rule.key()) + ".png";
         }
         String name = ((View.OfScene) view).file().getFileName().toString();
         return name.replaceFirst("\\.simp$", "") + ".png";

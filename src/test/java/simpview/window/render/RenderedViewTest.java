@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 public class RenderedViewTest {
 
     private static RenderedView of(View view) {
-        return new RenderedView(view, 361, null, null, List.of());
+        return new RenderedView(view, 361, simpview.pages.A1Rule.SPEC, null, null, List.of());
     }
 
     @Test
