@@ -20,6 +20,22 @@ package simpview.shading;
  */
 final class BatchLighting {
 
+    /**
+     * The length test without a branch. A point is lit alone (by Lighting)
+     * when one of |N|^2, |E|^2 and its lights' |L|^2 is outside [LOW, HIGH],
+     * as Lighting rescales it then. Instead of comparing each, the batch adds
+     * up |N|, |E|, 1 / |N|, 1 / |E|, and each light's |L| and 1 / |L|, times
+     * 2^777, and lights alone a point whose sum is infinite or NaN. A squared
+     * length above HIGH = 1e150 has its root above 1e75 (less an ulp or two),
+     * one below LOW its inverse root above 1e75, and 1e75 times 2^777 (7.9e233)
+     * is beyond the largest double (1.8e308); every term is +0 or more (a sum
+     * of squares is never -0), so one infinite term makes the sum infinite,
+     * and every such point is lit alone. So may be one whose lengths are near
+     * those bounds (within a factor of 4.4) or whose terms overflow together,
+     * needlessly, and it gets the same bits all the same.
+     */
+    private static final double LENGTHS = 0x1p777;
+
     private final Lighting lighting;
 
     BatchLighting(Lighting lighting) {
@@ -29,38 +45,49 @@ final class BatchLighting {
     void shade(LitPoints t) {
         int n = t.count;
         Lighting l = lighting;
-        for (int i = 0; i < n; i++) {
-            t.red[i] = t.kdRed[i] * l.ambientRed;
-            t.green[i] = t.kdGreen[i] * l.ambientGreen;
-            t.blue[i] = t.kdBlue[i] * l.ambientBlue;
-        }
+        double ar = l.ambientRed;
+        double ag = l.ambientGreen;
+        double ab = l.ambientBlue;
         if (l.lightCount == 0) {
-            // The ambient term alone: no point is lit alone.
+            // The ambient term alone, clamped by min and max (which C2 packs);
+            // only a NaN, which they keep, is then clamped by Lighting's rule.
             for (int i = 0; i < n; i++) {
-                t.red[i] = Lighting.clamp(t.red[i]);
-                t.green[i] = Lighting.clamp(t.green[i]);
-                t.blue[i] = Lighting.clamp(t.blue[i]);
+                t.red[i] = Math.min(Math.max(t.kdRed[i] * ar, 0), 1);
+                t.green[i] = Math.min(Math.max(t.kdGreen[i] * ag, 0), 1);
+                t.blue[i] = Math.min(Math.max(t.kdBlue[i] * ab, 0), 1);
+            }
+            for (int i = 0; i < n; i++) {
+                double sum = t.red[i] + t.green[i] + t.blue[i];
+                if (sum != sum) {
+                    t.red[i] = Lighting.clamp(t.red[i]);
+                    t.green[i] = Lighting.clamp(t.green[i]);
+                    t.blue[i] = Lighting.clamp(t.blue[i]);
+                }
             }
             return;
+        }
+        for (int i = 0; i < n; i++) {
+            t.red[i] = t.kdRed[i] * ar;
+            t.green[i] = t.kdGreen[i] * ag;
+            t.blue[i] = t.kdBlue[i] * ab;
         }
         aim(t, n);
         int end = l.lightCount * Lights.STRIDE;
         for (int o = 0; o < end; o += Lights.STRIDE) {
             light(t, n, o);
         }
+        // Clamped by min and max: as Lighting.clamp, but a NaN stays NaN.
         for (int i = 0; i < n; i++) {
-            double r = t.red[i];
-            double g = t.green[i];
-            double b = t.blue[i];
-            // A NaN sum: some term had no value (Lighting adds 0 for it) or
-            // the terms cancelled; either way the point is lit alone.
-            t.alone[i] |= r != r | g != g | b != b;
-            t.red[i] = Lighting.clamp(r);
-            t.green[i] = Lighting.clamp(g);
-            t.blue[i] = Lighting.clamp(b);
+            t.red[i] = Math.min(Math.max(t.red[i], 0), 1);
+            t.green[i] = Math.min(Math.max(t.green[i], 0), 1);
+            t.blue[i] = Math.min(Math.max(t.blue[i], 0), 1);
         }
         for (int i = 0; i < n; i++) {
-            if (t.alone[i]) {
+            // Lit alone: a point with a length Lighting rescales (N, E or some
+            // L), or with a NaN sum (a term with no value, which Lighting adds
+            // as 0, or terms that cancelled); what the steps made of it is replaced.
+            double sum = t.red[i] + t.green[i] + t.blue[i];
+            if (!(t.lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
                 shadeAlone(t, i);
             }
         }
@@ -78,67 +105,57 @@ final class BatchLighting {
 
     /**
      * Lighting.aim for every point: E, then N and E's inverse lengths and
-     * V . N. Each loop is kept this small so that C2 unrolls it, which it
-     * must before it packs the points' operations.
+     * V . N; and the start of the point's length test (see {@link #LENGTHS}).
      */
     private void aim(LitPoints t, int n) {
         double[] ex = t.eyeX;
         double[] ey = t.eyeY;
         double[] ez = t.eyeZ;
+        double[] sn = t.inverseNormal; // |N| until the last step
+        double[] se = t.inverseEye; // |E| until the last step
         if (lighting.perspective) {
             for (int i = 0; i < n; i++) {
-                ex[i] = -t.px[i];
-                ey[i] = -t.py[i];
-                ez[i] = -t.pz[i];
+                double x = -t.px[i];
+                double y = -t.py[i];
+                double z = -t.pz[i];
+                ex[i] = x;
+                ey[i] = y;
+                ez[i] = z;
+                se[i] = Math.sqrt(x * x + y * y + z * z);
             }
         } else {
             for (int i = 0; i < n; i++) {
                 ex[i] = 0;
                 ey[i] = 0;
                 ez[i] = 1;
+                se[i] = 1; // the square root of 0 0 + 0 0 + 1 1
             }
         }
-        squaredLengths(t.nx, t.ny, t.nz, t.normal2, n);
-        squaredLengths(ex, ey, ez, t.eye2, n);
-        double[] sn = t.inverseNormal; // |N| until the last step
-        double[] se = t.inverseEye;
+        for (int i = 0; i < n; i++) {
+            sn[i] = Math.sqrt(t.nx[i] * t.nx[i] + t.ny[i] * t.ny[i] + t.nz[i] * t.nz[i]);
+        }
         double[] q = t.vn;
-        for (int i = 0; i < n; i++) {
-            sn[i] = Math.sqrt(t.normal2[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            se[i] = Math.sqrt(t.eye2[i]);
-        }
         for (int i = 0; i < n; i++) {
             q[i] = 1 / (sn[i] * se[i]);
         }
         for (int i = 0; i < n; i++) {
             double normal = sn[i];
-            sn[i] = se[i] * q[i];
-            se[i] = normal * q[i];
+            double eye = se[i];
+            double inverseNormal = eye * q[i];
+            double inverseEye = normal * q[i];
+            sn[i] = inverseNormal;
+            se[i] = inverseEye;
+            t.lengths[i] = (normal + eye + inverseNormal + inverseEye) * LENGTHS;
         }
         for (int i = 0; i < n; i++) {
             q[i] = (ex[i] * t.nx[i] + ey[i] * t.ny[i] + ez[i] * t.nz[i]) * q[i];
         }
-        for (int i = 0; i < n; i++) {
-            // Lit alone at the end; what the steps make of it meanwhile is replaced.
-            t.alone[i] = !(usual(t.normal2[i]) & usual(t.eye2[i]));
-        }
     }
 
-    /** x x + y y + z z for every point. */
-    private static void squaredLengths(double[] x, double[] y, double[] z, double[] out, int n) {
-        for (int i = 0; i < n; i++) {
-            out[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
-        }
-    }
-
-    /** A squared length that Lighting uses as it is. */
-    private static boolean usual(double length2) {
-        return length2 >= Lighting.LOW & length2 <= Lighting.HIGH;
-    }
-
-    /** Adds the light at data[o] to every point: the body of Lighting.shade's light loop, step by step. */
+    /**
+     * Adds the light at data[o] to every point: the body of Lighting.shade's
+     * light loop, step by step; and |L| and 1 / |L| to the point's length test.
+     */
     private void light(LitPoints t, int n, int o) {
         double[] data = lighting.lights.data();
         double[] lx = t.lightX;
@@ -148,31 +165,36 @@ final class BatchLighting {
         double y = data[o + Lights.Y];
         double z = data[o + Lights.Z];
         for (int i = 0; i < n; i++) {
-            lx[i] = x - t.px[i];
-            ly[i] = y - t.py[i];
-            lz[i] = z - t.pz[i];
+            double dx = x - t.px[i];
+            double dy = y - t.py[i];
+            double dz = z - t.pz[i];
+            lx[i] = dx;
+            ly[i] = dy;
+            lz[i] = dz;
+            t.dot[i] = t.nx[i] * dx + t.ny[i] * dy + t.nz[i] * dz;
         }
-        for (int i = 0; i < n; i++) {
-            t.dot[i] = t.nx[i] * lx[i] + t.ny[i] * ly[i] + t.nz[i] * lz[i];
-        }
-        squaredLengths(lx, ly, lz, t.distance2, n);
         double[] s = t.distance;
         double[] is = t.inverseDistance;
         for (int i = 0; i < n; i++) {
-            s[i] = Math.sqrt(t.distance2[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            is[i] = 1 / s[i];
+            // Every |L| counts, also where the light does not reach: a point
+            // lit alone needlessly gets the same bits all the same.
+            double d = Math.sqrt(lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i]);
+            double w = 1 / d;
+            s[i] = d;
+            is[i] = w;
+            t.lengths[i] += (d + w) * LENGTHS;
         }
         for (int i = 0; i < n; i++) {
             t.cosine[i] = t.dot[i] * (t.inverseNormal[i] * is[i]);
         }
-        double[] h = t.highlight; // V . L, then V . R
+        double[] h = t.highlight; // V . L, then max(0, V . R) at most 1
         for (int i = 0; i < n; i++) {
             h[i] = (t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i]) * (t.inverseEye[i] * is[i]);
         }
         for (int i = 0; i < n; i++) {
-            h[i] = 2 * t.cosine[i] * t.vn[i] - h[i];
+            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it
+            // (min and max keep a NaN, see raise).
+            h[i] = Math.min(Math.max(2 * t.cosine[i] * t.vn[i] - h[i], 0), 1);
         }
         double a = data[o + Lights.A];
         double b = data[o + Lights.B];
@@ -182,69 +204,143 @@ final class BatchLighting {
                 t.attenuation[i] = 1 / (a + b * s[i]);
             }
         }
-        raise(t, n);
-        add(t, n, o);
+        add(t, n, o, raise(t, n));
     }
 
-    /** Lighting.power for every point's highlight: max(0, h) at most 1, to the p. */
-    private void raise(LitPoints t, int n) {
-        double[] c = t.highlight;
+    /**
+     * Lighting.power for every point's highlight (already max(0, V . R) at
+     * most 1): the array that holds it. As Lighting.power, but a NaN stays
+     * NaN: only a point lit alone, or one whose sum the NaN then makes NaN
+     * (lit alone too), can have one.
+     */
+    private double[] raise(LitPoints t, int n) {
+        double[] c = t.highlight; // then its squares
         double[] result = t.raised;
-        // As Lighting.power, but a NaN stays NaN: only a point lit alone, or
-        // one whose sum the NaN then makes NaN (lit alone too), can have one.
-        for (int i = 0; i < n; i++) {
-            c[i] = Math.min(Math.max(c[i], 0), 1);
-        }
         int e = lighting.exponent;
         if (e < 0) {
             double p = lighting.p;
             for (int i = 0; i < n; i++) {
                 result[i] = Math.pow(c[i], p);
             }
-            return;
+            return result;
         }
-        // Lighting.bySquaring, each step over every point; c holds the squares.
-        for (int i = 0; i < n; i++) {
-            result[i] = 1;
+        if (e == 0) {
+            for (int i = 0; i < n; i++) {
+                result[i] = 1;
+            }
+            return result;
         }
-        while (true) {
-            if ((e & 1) != 0) {
+        // Lighting.bySquaring, each step over every point. Its result starts
+        // at 1, and 1 times the first square it takes is that square: so the
+        // squares up to e's lowest bit, then that square is the result so far.
+        int zeros = Integer.numberOfTrailingZeros(e);
+        square(c, n, zeros);
+        e >>>= zeros + 1;
+        if (e == 0) {
+            return c;
+        }
+        boolean first = true;
+        while (e != 0) {
+            // The squares up to the next bit of e, then the result times that square.
+            int squares = Integer.numberOfTrailingZeros(e) + 1;
+            e >>>= squares;
+            if (first) {
                 for (int i = 0; i < n; i++) {
-                    result[i] *= c[i];
+                    double v = c[i];
+                    result[i] = v;
+                    c[i] = v * v;
                 }
+                squares--;
+                first = false;
             }
-            e >>>= 1;
-            if (e == 0) {
-                return;
+            square(c, n, squares);
+            for (int i = 0; i < n; i++) {
+                result[i] *= c[i];
             }
+        }
+        return result;
+    }
+
+    /**
+     * Each c squared {@code times} times in place, up to four squares in one
+     * loop: the same products, one after another, as a loop per square.
+     */
+    private static void square(double[] c, int n, int times) {
+        for (; times >= 4; times -= 4) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                v *= v;
+                v *= v;
+                c[i] = v * v;
+            }
+        }
+        if (times == 3) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                v *= v;
+                c[i] = v * v;
+            }
+        } else if (times == 2) {
+            for (int i = 0; i < n; i++) {
+                double v = c[i] * c[i];
+                c[i] = v * v;
+            }
+        } else if (times == 1) {
             for (int i = 0; i < n; i++) {
                 c[i] *= c[i];
             }
         }
     }
 
-    /** Each point the light reaches gets its contribution; one at an unusual |L| is left to be lit alone. */
-    private void add(LitPoints t, int n, int o) {
+    /**
+     * Each point's contribution, added where the light reaches it (N . L &gt;
+     * 0) and times 0 elsewhere, with no branch, so that C2 packs it. Where
+     * the light does not reach, a finite contribution times 0 adds a zero,
+     * which leaves the sum as it was (but for the sign of a zero sum, which
+     * the clamp makes +0 either way); an infinite or NaN one makes the sum
+     * NaN, and the point is lit alone, as it is for a NaN where the light
+     * reaches (Lighting.contribution's test for a product with no value).
+     * Without either, the sums are Lighting's.
+     */
+    private void add(LitPoints t, int n, int o, double[] raised) {
         Lighting l = lighting;
         double[] data = l.lights.data();
         double red = data[o + Lights.RED];
         double green = data[o + Lights.GREEN];
         double blue = data[o + Lights.BLUE];
-        boolean constant = data[o + Lights.B] == 0;
-        double inverseA = data[o + Lights.INVERSE_A];
         double ks = l.ks;
-        // Lighting.contribution's test for a product with no value is left
-        // out: such a product makes the sum NaN, and shade() then lights the
-        // point alone. Without one, the sums are the same as with the test.
+        double[] reach = t.reach;
+        double[] specular = t.specular;
         for (int i = 0; i < n; i++) {
-            if (t.dot[i] > 0) { // not behind the surface, edge on, or at the lit point
-                t.alone[i] |= !usual(t.distance2[i]); // lit alone at the end
-                double cos = t.cosine[i];
-                double specular = ks * t.raised[i];
-                double f = constant ? inverseA : t.attenuation[i];
-                t.red[i] += red * f * (t.kdRed[i] * cos + specular);
-                t.green[i] += green * f * (t.kdGreen[i] * cos + specular);
-                t.blue[i] += blue * f * (t.kdBlue[i] * cos + specular);
+            // 1 where N . L > 0 (the least positive double times 2^2000 is
+            // above 1), 0 where not, NaN for a NaN N . L.
+            reach[i] = Math.min(Math.max(t.dot[i], 0) * 0x1p1000 * 0x1p1000, 1);
+            specular[i] = ks * raised[i];
+        }
+        if (data[o + Lights.B] == 0) {
+            double inverseA = data[o + Lights.INVERSE_A];
+            double rf = red * inverseA;
+            double gf = green * inverseA;
+            double bf = blue * inverseA;
+            for (int i = 0; i < n; i++) {
+                t.red[i] += rf * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.green[i] += gf * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.blue[i] += bf * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+        } else {
+            double[] f = t.attenuation;
+            for (int i = 0; i < n; i++) {
+                t.red[i] += red * f[i] * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.green[i] += green * f[i] * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
+            }
+            for (int i = 0; i < n; i++) {
+                t.blue[i] += blue * f[i] * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
             }
         }
     }

@@ -57,18 +57,20 @@ public final class FragmentStage implements FragmentSink {
     private final int height;
     private final Drawable panel;
     private final double[] lit = new double[3];
-    // A batch of a span's pixels: 1 / q and z at each; then those that pass
-    // the depth test: x, k (as double), 1 / q, z (P's z under phong, so the
-    // same array as points'), and the packed colour. Their colours and phong
-    // attributes are in points.
-    private final double[] spanInverse = new double[BATCH];
-    private final double[] spanDepth = new double[BATCH];
+    // A batch of a span's pixels: k (as double), 1 / q and z at each, then
+    // moved up in place to those that pass the depth test, with their x (z
+    // is P's z under phong, so the same array as points'); their packed
+    // colours, and the fog's t at each. Their colours and phong attributes
+    // are in points.
+    private final double[] fogT = new double[BATCH];
     private final LitPoints points = new LitPoints(BATCH);
     private final int[] batchX = new int[BATCH];
     private final double[] batchK = new double[BATCH];
     private final double[] batchInverse = new double[BATCH];
     private final double[] batchZ = points.pz;
     private final int[] colours = new int[BATCH];
+    // Whether every pixel of the batch last gathered passed the depth test.
+    private boolean whole;
     private PointShader shader;
     private Fog fog = Fog.NONE;
     // The rows written: all of them, or one band's.
@@ -153,7 +155,11 @@ public final class FragmentStage implements FragmentSink {
                 wrote = true;
                 phong(n, v0, dv);
                 pack(n);
-                writeRuns(y, n);
+                if (whole) {
+                    panel.setRun(first, y, n, batchZ, colours, 0);
+                } else {
+                    writeRuns(y, n);
+                }
             }
         }
         return wrote;
@@ -242,28 +248,50 @@ public final class FragmentStage implements FragmentSink {
     /**
      * Pixels first &lt;= x &lt; stop of the span: z = (z q) / q at each, the
      * depth test, and for each pixel that passes (its depth now stored) x,
-     * k, 1 / q and z gathered. Returns how many passed.
+     * k, 1 / q and z gathered, in place. Returns how many passed; when every
+     * one did, {@link #whole} is true and the x are first, first + 1, ...
+     * (batchX is not written).
      */
     private int gather(int y, int from, int first, int stop, double q0, double dq, double z0, double dz) {
         int m = stop - first;
         double k0 = first - from;
-        double[] inv = spanInverse;
-        double[] zs = spanDepth;
+        double[] ks = batchK;
+        double[] inv = batchInverse;
+        double[] zs = batchZ;
         for (int j = 0; j < m; j++) {
-            inv[j] = 1 / (q0 + (k0 + RAMP[j]) * dq);
-        }
-        for (int j = 0; j < m; j++) {
-            zs[j] = (z0 + (k0 + RAMP[j]) * dz) * inv[j];
+            double k = k0 + RAMP[j];
+            double w = 1 / (q0 + k * dq);
+            ks[j] = k;
+            inv[j] = w;
+            zs[j] = (z0 + k * dz) * w;
         }
         int at = y * width + first;
-        int n = 0;
-        for (int j = 0; j < m; j++) {
+        double[] d = depth;
+        // The pixels that pass from the first on need no moving: only their depths are stored.
+        int j = 0;
+        while (j < m) {
+            double z = zs[j];
+            if (!(z > d[at + j])) {
+                break;
+            }
+            d[at + j] = z;
+            j++;
+        }
+        whole = j == m;
+        if (whole) {
+            return m;
+        }
+        for (int i = 0; i < j; i++) {
+            batchX[i] = first + i;
+        }
+        int n = j;
+        for (j++; j < m; j++) {
             double z = zs[j];
             if (nearer(at + j, z)) {
                 batchX[n] = first + j;
-                batchK[n] = k0 + RAMP[j];
-                batchInverse[n] = inv[j];
-                batchZ[n] = z;
+                ks[n] = ks[j];
+                inv[n] = inv[j];
+                zs[n] = z;
                 n++;
             }
         }
@@ -273,34 +301,124 @@ public final class FragmentStage implements FragmentSink {
     /** The gathered pixels' kd, P and N, lit by the shader into points' red, green and blue. */
     private void phong(int n, double[] v0, double[] dv) {
         LitPoints t = points;
-        resolve(v0[PX], dv[PX], t.px, n);
-        resolve(v0[PY], dv[PY], t.py, n);
-        resolve(v0[NX], dv[NX], t.nx, n);
-        resolve(v0[NY], dv[NY], t.ny, n);
-        resolve(v0[NZ], dv[NZ], t.nz, n);
-        resolve(v0[R], dv[R], t.kdRed, n);
-        resolve(v0[G], dv[G], t.kdGreen, n);
-        resolve(v0[B], dv[B], t.kdBlue, n);
+        if (shader.usesPoint()) { // else the ambient term alone: P and N are not read
+            resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, n);
+            resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, n);
+        }
+        resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, n);
         t.count = n;
         shader.shade(t);
     }
 
-    /** One channel at each gathered pixel: (c0 + k dc) / q. */
-    private void resolve(double c0, double dc, double[] out, int n) {
+    /** Two channels at each gathered pixel: (c0 + k dc) / q. */
+    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, int n) {
+        double[] ks = batchK;
+        double[] inv = batchInverse;
         for (int i = 0; i < n; i++) {
-            out[i] = (c0 + batchK[i] * dc) * batchInverse[i];
+            double k = ks[i];
+            double w = inv[i];
+            a[i] = (a0 + k * da) * w;
+            b[i] = (b0 + k * db) * w;
         }
     }
 
-    /** Each gathered pixel's colour fogged at its depth and packed. */
+    /** Three channels at each gathered pixel: (c0 + k dc) / q. */
+    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, double c0, double dc,
+            double[] c, int n) {
+        double[] ks = batchK;
+        double[] inv = batchInverse;
+        for (int i = 0; i < n; i++) {
+            double k = ks[i];
+            double w = inv[i];
+            a[i] = (a0 + k * da) * w;
+            b[i] = (b0 + k * db) * w;
+            c[i] = (c0 + k * dc) * w;
+        }
+    }
+
+    /**
+     * Each gathered pixel's colour (in [0, 1], as lit) fogged at its depth
+     * and packed, as {@link #fogged} does it, in loops that C2 packs: the
+     * fog's t clamped by min and max, and round(c * 255) as the clamped level
+     * (c * 255 + 0.5 in [0, 255]) truncated.
+     *
+     * <p>Why the bits are fogged's. Where fogged keeps the colour (z at or
+     * beyond near, or t &gt;= 1) t comes out 1 (z - far &gt;= near - far, as
+     * rounding keeps the order), and 1 c + 0 fog is c; where it gives the fog
+     * colour (z &lt;= far) or takes t as 0, t is 0, and 0 c + 1 fog is the fog
+     * colour; a zero's sign may differ, which the level does not see. That
+     * needs near - far positive and finite and a finite fog colour (else
+     * pixel by pixel, as fogged). No z here is NaN: each passed the depth
+     * test. A NaN level truncates to 0, as Colors.level has it.
+     */
     private void pack(int n) {
         LitPoints t = points;
-        for (int i = 0; i < n; i++) {
-            lit[0] = t.red[i];
-            lit[1] = t.green[i];
-            lit[2] = t.blue[i];
-            colours[i] = fogged(batchZ[i], lit);
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
+        Fog f = fog;
+        boolean inUnit = true; // every colour, fogged or not, in [0, 1]
+        if (!f.isNone()) {
+            double near = f.near();
+            double far = f.far();
+            double range = near - far;
+            double fr = f.r();
+            double fg = f.g();
+            double fb = f.b();
+            if (!(range > 0 && range < Double.POSITIVE_INFINITY && finite(fr) && finite(fg) && finite(fb))) {
+                for (int i = 0; i < n; i++) {
+                    lit[0] = red[i];
+                    lit[1] = green[i];
+                    lit[2] = blue[i];
+                    colours[i] = fogged(batchZ[i], lit);
+                }
+                return;
+            }
+            inUnit = unit(fr) && unit(fg) && unit(fb);
+            double[] ts = fogT;
+            for (int i = 0; i < n; i++) {
+                ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
+            }
+            for (int i = 0; i < n; i++) {
+                double tt = ts[i];
+                double s = 1 - tt;
+                red[i] = tt * red[i] + s * fr;
+                green[i] = tt * green[i] + s * fg;
+                blue[i] = tt * blue[i] + s * fb;
+            }
         }
+        if (inUnit) {
+            // c * 255 + 0.5 is in [0.5, 255.5] (a rounding above at most), so
+            // it truncates into [0, 255] with no clamp, and truncating it is
+            // flooring it. The three floors (which C2 packs, where it packs no
+            // conversion to int) make one whole number below 2^24, exactly,
+            // converted once.
+            double[] levels = fogT;
+            for (int i = 0; i < n; i++) {
+                levels[i] = Math.floor(red[i] * 255 + 0.5) * 65536 + Math.floor(green[i] * 255 + 0.5) * 256
+                        + Math.floor(blue[i] * 255 + 0.5);
+            }
+            for (int i = 0; i < n; i++) {
+                colours[i] = 0xFF000000 | (int) levels[i];
+            }
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            red[i] = Math.min(Math.max(red[i] * 255 + 0.5, 0), 255);
+            green[i] = Math.min(Math.max(green[i] * 255 + 0.5, 0), 255);
+            blue[i] = Math.min(Math.max(blue[i] * 255 + 0.5, 0), 255);
+        }
+        for (int i = 0; i < n; i++) {
+            colours[i] = 0xFF000000 | (int) red[i] << 16 | (int) green[i] << 8 | (int) blue[i];
+        }
+    }
+
+    private static boolean unit(double v) {
+        return v >= 0 && v <= 1;
+    }
+
+    private static boolean finite(double v) {
+        return Math.abs(v) <= Double.MAX_VALUE;
     }
 
     /** Writes the n gathered pixels of row y, each run of neighbours in one call. */

@@ -157,6 +157,14 @@ public final class Lighting {
     }
 
     /**
+     * False when a colour is the ambient term alone (no light is prepared):
+     * then {@link #shade(LitPoints)} reads the points' kd only, not P or N.
+     */
+    public boolean usesPoint() {
+        return lightCount > 0;
+    }
+
+    /**
      * Sets the point's normal and eye vectors (each rescaled when its length
      * is tiny or huge, with its inverse length) and V . N; false for a zero
      * or non-finite normal, which gets the ambient term only.

@@ -29,31 +29,35 @@ public final class LitPoints {
     final double[] green;
     final double[] blue;
 
-    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N, and
-    // |N|^2 and |E|^2. For the light being added: L, N . L, |L|^2, |L|,
-    // 1 / |L|, cos, the highlight's base V . R (then max(0, V . R) at most 1,
-    // then its squares), its power, and the attenuation.
+    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N. For
+    // the light being added: L, N . L, |L|, 1 / |L|, cos, the highlight's
+    // base V . L (then max(0, V . R) at most 1, then its squares), its power,
+    // the attenuation, whether the light reaches the point (1 or 0) and ks
+    // times the power.
     final double[] eyeX;
     final double[] eyeY;
     final double[] eyeZ;
     final double[] inverseNormal;
     final double[] inverseEye;
     final double[] vn;
-    final double[] normal2;
-    final double[] eye2;
     final double[] lightX;
     final double[] lightY;
     final double[] lightZ;
     final double[] dot;
-    final double[] distance2;
     final double[] distance;
     final double[] inverseDistance;
     final double[] cosine;
     final double[] highlight;
     final double[] raised;
     final double[] attenuation;
-    /** Points with a length Lighting rescales: lit alone, into aloneColour, once the steps are done. */
-    final boolean[] alone;
+    /**
+     * The point's lengths added up for the length test (BatchLighting.LENGTHS):
+     * infinite or NaN, and the point is lit alone, into aloneColour, once the
+     * steps are done.
+     */
+    final double[] lengths;
+    final double[] reach;
+    final double[] specular;
     final double[] aloneColour = new double[3];
 
     int count;
@@ -81,20 +85,19 @@ public final class LitPoints {
         inverseNormal = new double[capacity];
         inverseEye = new double[capacity];
         vn = new double[capacity];
-        normal2 = new double[capacity];
-        eye2 = new double[capacity];
         lightX = new double[capacity];
         lightY = new double[capacity];
         lightZ = new double[capacity];
         dot = new double[capacity];
-        distance2 = new double[capacity];
         distance = new double[capacity];
         inverseDistance = new double[capacity];
         cosine = new double[capacity];
         highlight = new double[capacity];
         raised = new double[capacity];
         attenuation = new double[capacity];
-        alone = new boolean[capacity];
+        lengths = new double[capacity];
+        reach = new double[capacity];
+        specular = new double[capacity];
     }
 
     public int capacity() {

@@ -174,6 +174,11 @@ public final class LitState implements PointShader {
         lighting.shade(points);
     }
 
+    @Override
+    public boolean usesPoint() {
+        return lighting.usesPoint();
+    }
+
     /**
      * What lights a point now, as numbers, for a program that lights the
      * same scene elsewhere (the llvmpipe benchmark): ambient r, g, b, ks, p,
@@ -236,6 +241,11 @@ public final class LitState implements PointShader {
                 @Override
                 public void shade(LitPoints points) {
                     own.shade(points);
+                }
+
+                @Override
+                public boolean usesPoint() {
+                    return own.usesPoint();
                 }
             };
         };

@@ -13,4 +13,11 @@ public interface PointShader {
 
     /** Lights every point of the batch into its colour, each as {@link #shade} would alone. */
     void shade(LitPoints points);
+
+    /**
+     * False when the colour is the ambient term alone (no light), so that
+     * {@link #shade(LitPoints)} reads only the points' kd: their P and N may
+     * then be left unset.
+     */
+    boolean usesPoint();
 }

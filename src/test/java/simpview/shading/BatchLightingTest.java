@@ -92,6 +92,34 @@ class BatchLightingTest {
     }
 
     /**
+     * The batch's length test (a sum of lengths and inverse lengths that
+     * overflows) at the bounds of Lighting's: normals, eye distances and
+     * light distances whose squared length is a hair inside or outside
+     * [LOW, HIGH], each compared with the point lit alone.
+     */
+    @Test
+    void lengthsAtTheBoundsOfTheUsualRangeAreLitAsAlone() {
+        double[] squares = {Lighting.HIGH, Math.nextUp(Lighting.HIGH), Lighting.HIGH * 1.5, Lighting.HIGH / 4.5,
+            Lighting.LOW, Math.nextDown(Lighting.LOW), Lighting.LOW / 1.5, Lighting.LOW * 4.5};
+        for (double square : squares) {
+            double length = Math.sqrt(square);
+            for (boolean perspective : new boolean[] {true, false}) {
+                Lights lights = new Lights();
+                lights.add(0.3, -0.2, 0.1, 1, 1, 1, 1, 0.01);
+                lights.add(length, 2, -10, 0.5, 0.5, 0.5, 1, 0); // |L| = length from the first point
+                Lighting lighting = new Lighting(lights);
+                lighting.prepare(0.1, 0.2, 0.3, 0.5, 8, 2, perspective);
+                LitPoints points = new LitPoints(16);
+                points.add(0, 2, -10, 1, 0, 0.2, 0.5, 0.5, 0.5); // the second light at |L| = length, reaching it
+                points.add(1, 2, -10, 0, length * 0.6, length * 0.8, 0.5, 0.5, 0.5); // |N| = length
+                points.add(length * 0.6, 0, -length * 0.8, 0.1, 0.2, 0.9, 0.5, 0.5, 0.5); // |E| = length
+                points.add(-2, 1, -3, 0.3, 0.4, 0.9, 0.9, 0.1, 0.4); // ordinary
+                assertEachPointAsAlone(lighting, points);
+            }
+        }
+    }
+
+    /**
      * The same once the JIT has compiled the batch's loops to packed
      * operations: a full batch of ordinary points with a few awkward ones
      * among them, lit many thousands of times, checked all along.

@@ -60,10 +60,25 @@ class FragmentStageTest {
                     random.nextDouble(), random.nextDouble(), random.nextDouble(), 1, random.nextBoolean() ? 0 : 0.02);
         }
         if (random.nextBoolean()) {
-            state.setFog(new Fog(-8, -16, 0.1, 0.2, 0.3));
+            state.setFog(FOGS[random.nextInt(FOGS.length)]);
         }
         return state;
     }
+
+    /**
+     * Fogs that the phong batches take each way: colours in [0, 1] (no clamp
+     * of the levels), outside it (clamped), near and far the wrong way round
+     * or equal, a huge range, and colours that are not finite (pixel by pixel).
+     */
+    private static final Fog[] FOGS = {
+        new Fog(-8, -16, 0.1, 0.2, 0.3),
+        new Fog(-6, -14, 0, 1, 0.5),
+        new Fog(-8, -16, 1.5, -0.25, 3),
+        new Fog(-16, -8, 0.1, 0.2, 0.3),
+        new Fog(-10, -10, 0.4, 0.2, 0.9),
+        new Fog(1e308, -1e308, 0.1, 0.2, 0.3),
+        new Fog(-8, -16, 1e300, Double.NaN, Double.POSITIVE_INFINITY),
+    };
 
     @Property(tries = 150)
     void aSpanDrawsWhatItsPixelsDrawOneByOne(@ForAll long seed) {
