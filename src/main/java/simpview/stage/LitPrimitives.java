@@ -41,21 +41,11 @@ public final class LitPrimitives {
     private static final int MOST_PRIMITIVES = 16384;
     private static final int MOST_NUMBERS = 1 << 20;
 
-    private final DrawingThreads threads;
-    private final RowBands bands;
+    private final BatchDrawing batches;
     private final Band[] drawers;
     /** The whole panel as one band, drawn by the caller's thread, for batches {@link BandChoice} keeps whole. */
-    private final RowBands whole;
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** True when the band count is chosen per batch: then the pixels are counted. */
-    private final boolean weighs;
-    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}), when weighed. */
-    private double pixels;
-    /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
-    private boolean firstBatch;
-    /** Told when the first batch was drawn whole: the rest of the scene is then drawn as it is read. */
-    private Runnable keptWhole;
 
     private int size;
     private byte[] kind = new byte[1024];
@@ -82,18 +72,15 @@ public final class LitPrimitives {
      * record the panel writes owners into, or null.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        this.threads = threads;
-        this.bands = threads.bands(zbuffer.height());
+        this.batches = new BatchDrawing(threads, zbuffer.height(), provenance);
         this.provenance = provenance;
+        RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
         }
-        this.whole = new RowBands(zbuffer.height(), 1);
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
                 : new Band(0, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
-        this.weighs = threads.choosesPerPicture();
-        this.firstBatch = weighs;
     }
 
     /**
@@ -147,12 +134,10 @@ public final class LitPrimitives {
         lookOf[size] = look;
         lowY[size] = Math.floor(low - 1);
         highY[size] = Math.ceil(high + 1);
-        if (weighs) {
-            pixels += BandChoice.pixels(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
-        }
+        batches.weigh(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
         start[size + 1] = at + count;
         size++;
-        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS || firstBatch && size >= BandChoice.FIRST_BATCH) {
+        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS || batches.firstBatchFull(size)) {
             flush();
         }
     }
@@ -178,36 +163,17 @@ public final class LitPrimitives {
         if (size == 0) {
             return;
         }
-        boolean split = BandChoice.splits(threads, size, pixels);
-        if (split) {
-            if (provenance != null) {
-                provenance.useBands(bands);
-            }
-            threads.forEach(drawers.length, b -> drawers[b].draw());
-        } else {
-            if (provenance != null) {
-                provenance.useBands(whole);
-            }
-            wholeDrawer.draw();
-        }
+        batches.draw(size, b -> drawers[b].draw(), wholeDrawer::draw);
         size = 0;
-        pixels = 0;
-        if (firstBatch) {
-            firstBatch = false;
-            if (!split && keptWhole != null) {
-                keptWhole.run();
-            }
-        }
     }
 
     /**
-     * {@code then} is run when the scene's first batch ({@link BandChoice#FIRST_BATCH}
-     * primitives, or the whole scene if it has fewer) is drawn whole, with the
-     * thread count chosen per picture: the owner then draws the rest of the
-     * scene as it reads it, on its own thread, without recording it.
+     * {@code then} is run when the scene's first batch is drawn whole, with
+     * the thread count chosen per picture ({@link BatchDrawing#whenKeptWhole}):
+     * the owner then draws the rest of the scene as it reads it.
      */
     public void whenKeptWhole(Runnable then) {
-        keptWhole = then;
+        batches.whenKeptWhole(then);
     }
 
     /** One band's drawer: its own rasterizers and fragment stage, its rows only. */
