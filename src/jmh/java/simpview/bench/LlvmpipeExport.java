@@ -32,9 +32,12 @@ import simpview.surface.PageCanvas;
  * rasterizers (clipped and projected, as clip-space positions and the
  * attributes simpview interpolates), grouped by how they are lit, so that
  * OpenGL draws the same fragments with the same lighting in GLSL; then
- * times simpview's warm redraws of the page on 1 and on 2 threads (median
- * and best of 21, after 20 to warm up) and prints them, one line of
- * {@code page ms1 best1 ms2 best2 triangles skipped} per page.
+ * times simpview's warm redraws of the page on 1 and on 2 threads and
+ * prints them, one line of {@code page ms1 best1 ms2 best2 triangles
+ * skipped} per page: the median and best of 61, after {@value #WARM_SECONDS}
+ * s of redraws (at least 20) to warm up. That is as long as JMH's warm-up,
+ * so that the JIT has compiled the drawing before it is timed, as llvmpipe's
+ * shaders are compiled before its redraws are (draw.py warms the same way).
  *
  * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
  * to write NAME.bin into, then pages as "a3/pageF". Lines and wire outlines
@@ -71,17 +74,21 @@ public final class LlvmpipeExport {
         }
     }
 
-    /** Median and best of 21 warm redraws, in ms. */
+    /** How long each thread count is warmed by redraws before it is timed. */
+    private static final int WARM_SECONDS = 3;
+
+    /** Median and best of 61 warm redraws, in ms. */
     private static double[] time(Path file, int threads) throws Exception {
         ObjLibrary models = new ObjLibrary();
         try (DrawingThreads drawing = DrawingThreads.of(threads)) {
             PageCanvas canvas = new PageCanvas();
             canvas.drawWith(drawing);
-            for (int r = 0; r < 20; r++) {
+            long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
+            for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
                 canvas.clear();
                 ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
             }
-            double[] t = new double[21];
+            double[] t = new double[61];
             for (int r = 0; r < t.length; r++) {
                 long start = System.nanoTime();
                 canvas.clear();
