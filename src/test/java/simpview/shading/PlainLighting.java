@@ -70,6 +70,30 @@ final class PlainLighting {
         return colour;
     }
 
+    /**
+     * How near P is to a light's horizon: the least |N . L| over the lights
+     * (infinity with none, or with a zero normal). At N . L = 0 the formula
+     * jumps (a light adds its specular term just above it and nothing at or
+     * below it), so within rounding of 0 two exact evaluations may fall on
+     * either side.
+     */
+    double nearestHorizon(double[] point, double[] normal) {
+        double normalLength = length(normal);
+        double nearest = Double.POSITIVE_INFINITY;
+        if (normalLength == 0) {
+            return nearest;
+        }
+        double[] n = scaled(normal, 1 / normalLength);
+        for (double[] light : lights) {
+            double[] toLight = {light[0] - point[0], light[1] - point[1], light[2] - point[2]};
+            double d = length(toLight);
+            if (d > 0) {
+                nearest = Math.min(nearest, Math.abs(dot(n, scaled(toLight, 1 / d))));
+            }
+        }
+        return nearest;
+    }
+
     /** I clamped to [0, 1] per channel. */
     double[] colour(double[] point, double[] normal, double[] kd) {
         double[] colour = unclamped(point, normal, kd);
