@@ -82,37 +82,17 @@ final class LineExpectations {
      * longer one.
      */
     static List<String> bresenham(double x0, double y0, double x1, double y1) {
-        long rx0 = (long) Math.floor(x0 + 0.5);
-        long ry0 = (long) Math.floor(y0 + 0.5);
-        long rx1 = (long) Math.floor(x1 + 0.5);
-        long ry1 = (long) Math.floor(y1 + 0.5);
-        boolean xMajor = Math.abs(rx1 - rx0) >= Math.abs(ry1 - ry0);
-        boolean swap = xMajor ? rx1 < rx0 : ry1 < ry0;
-        long a0 = xMajor ? (swap ? rx1 : rx0) : (swap ? ry1 : ry0);
-        long a1 = xMajor ? (swap ? rx0 : rx1) : (swap ? ry0 : ry1);
-        BigDecimal b0 = new BigDecimal(xMajor ? (swap ? y1 : y0) : (swap ? x1 : x0));
-        BigDecimal b1 = new BigDecimal(xMajor ? (swap ? y0 : y1) : (swap ? x0 : x1));
-        boolean rising = b1.compareTo(b0) >= 0;
-        BigDecimal half = new BigDecimal("0.5");
-        long startPixel = b0.add(half).setScale(0, RoundingMode.FLOOR).longValueExact();
-        long n = a1 - a0;
+        Ends ends = Ends.of(x0, y0, x1, y1);
+        long startPixel = ends.b0.add(new BigDecimal("0.5")).setScale(0, RoundingMode.FLOOR).longValueExact();
         List<String> out = new ArrayList<>();
         long minor = startPixel;
-        for (long k = 0; k <= n; k++) {
+        for (long k = 0; k <= ends.n; k++) {
             if (k > 0) {
-                // n times the line's minor coordinate at step k, exactly.
-                BigDecimal at = b0.multiply(BigDecimal.valueOf(n)).add(b1.subtract(b0).multiply(BigDecimal.valueOf(k)));
-                BigDecimal halfN = half.multiply(BigDecimal.valueOf(n));
-                BigDecimal bigN = BigDecimal.valueOf(n);
-                // Nearest, a tie toward the start: rising, ceil(v - 1/2); falling, floor(v + 1/2).
-                long nearest = rising
-                        ? at.subtract(halfN).divide(bigN, 0, RoundingMode.CEILING).longValueExact()
-                        : at.add(halfN).divide(bigN, 0, RoundingMode.FLOOR).longValueExact();
-                minor = rising ? Math.min(minor + 1, Math.max(minor, nearest)) : Math.max(minor - 1, Math.min(minor, nearest));
+                long nearest = ends.nearest(k);
+                minor = ends.rising() ? Math.min(minor + 1, Math.max(minor, nearest))
+                        : Math.max(minor - 1, Math.min(minor, nearest));
             }
-            long x = xMajor ? a0 + k : minor;
-            long y = xMajor ? minor : a0 + k;
-            out.add(x + "," + y);
+            out.add(ends.pixel(ends.a0 + k, minor));
         }
         return out;
     }
@@ -124,22 +104,54 @@ final class LineExpectations {
      * toward the start; as "x,y". For lines too long to list.
      */
     static String bresenhamAt(double x0, double y0, double x1, double y1, long major) {
-        long rx0 = (long) Math.floor(x0 + 0.5);
-        long ry0 = (long) Math.floor(y0 + 0.5);
-        long rx1 = (long) Math.floor(x1 + 0.5);
-        long ry1 = (long) Math.floor(y1 + 0.5);
-        boolean xMajor = Math.abs(rx1 - rx0) >= Math.abs(ry1 - ry0);
-        boolean swap = xMajor ? rx1 < rx0 : ry1 < ry0;
-        long a0 = xMajor ? (swap ? rx1 : rx0) : (swap ? ry1 : ry0);
-        long n = Math.abs(xMajor ? rx1 - rx0 : ry1 - ry0);
-        BigDecimal b0 = new BigDecimal(xMajor ? (swap ? y1 : y0) : (swap ? x1 : x0));
-        BigDecimal b1 = new BigDecimal(xMajor ? (swap ? y0 : y1) : (swap ? x0 : x1));
-        BigDecimal halfN = new BigDecimal("0.5").multiply(BigDecimal.valueOf(n));
-        BigDecimal at = b0.multiply(BigDecimal.valueOf(n)).add(b1.subtract(b0).multiply(BigDecimal.valueOf(major - a0)));
-        long minor = b1.compareTo(b0) >= 0
-                ? at.subtract(halfN).divide(BigDecimal.valueOf(n), 0, RoundingMode.CEILING).longValueExact()
-                : at.add(halfN).divide(BigDecimal.valueOf(n), 0, RoundingMode.FLOOR).longValueExact();
-        return xMajor ? major + "," + minor : minor + "," + major;
+        Ends ends = Ends.of(x0, y0, x1, y1);
+        return ends.pixel(major, ends.nearest(major - ends.a0));
+    }
+
+    /**
+     * A line's ends as Bresenham's references see them: the ends rounded
+     * half up; the major axis the rounded ends' longer one, from the smaller
+     * rounded major coordinate a0 over n steps; the minor coordinates b0 and
+     * b1 as given, exactly.
+     */
+    private record Ends(boolean xMajor, long a0, long n, BigDecimal b0, BigDecimal b1) {
+
+        static Ends of(double x0, double y0, double x1, double y1) {
+            long rx0 = (long) Math.floor(x0 + 0.5);
+            long ry0 = (long) Math.floor(y0 + 0.5);
+            long rx1 = (long) Math.floor(x1 + 0.5);
+            long ry1 = (long) Math.floor(y1 + 0.5);
+            boolean xMajor = Math.abs(rx1 - rx0) >= Math.abs(ry1 - ry0);
+            boolean swap = xMajor ? rx1 < rx0 : ry1 < ry0;
+            long a0 = xMajor ? (swap ? rx1 : rx0) : (swap ? ry1 : ry0);
+            long n = Math.abs(xMajor ? rx1 - rx0 : ry1 - ry0);
+            BigDecimal b0 = new BigDecimal(xMajor ? (swap ? y1 : y0) : (swap ? x1 : x0));
+            BigDecimal b1 = new BigDecimal(xMajor ? (swap ? y0 : y1) : (swap ? x0 : x1));
+            return new Ends(xMajor, a0, n, b0, b1);
+        }
+
+        boolean rising() {
+            return b1.compareTo(b0) >= 0;
+        }
+
+        /**
+         * The integer nearest the line's minor coordinate at step k,
+         * {@code b0 + k (b1 - b0) / n}, exactly, a tie toward the start: rising,
+         * ceil(v - 1/2); falling, floor(v + 1/2).
+         */
+        long nearest(long k) {
+            BigDecimal bigN = BigDecimal.valueOf(n);
+            // n times the line's minor coordinate at step k.
+            BigDecimal at = b0.multiply(bigN).add(b1.subtract(b0).multiply(BigDecimal.valueOf(k)));
+            BigDecimal halfN = new BigDecimal("0.5").multiply(bigN);
+            return rising() ? at.subtract(halfN).divide(bigN, 0, RoundingMode.CEILING).longValueExact()
+                    : at.add(halfN).divide(bigN, 0, RoundingMode.FLOOR).longValueExact();
+        }
+
+        /** Pixel (major, minor) as "x,y". */
+        String pixel(long major, long minor) {
+            return xMajor ? major + "," + minor : minor + "," + major;
+        }
     }
 
     /** What the renderer wrote, in order, as "x,y". */
