@@ -28,6 +28,11 @@ final class A1RuleOption {
         return rule != null;
     }
 
+    /** An unknown word is a usage error, now: before anything is drawn or read. */
+    void check() {
+        rule();
+    }
+
     /** The rule asked for, SPEC's by default; an unknown word is a usage error. */
     A1Rule rule() {
         if (rule == null) {

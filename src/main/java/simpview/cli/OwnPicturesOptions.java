@@ -50,7 +50,7 @@ final class OwnPicturesOptions {
         if (scene != null && a1Rule.given()) {
             throw new ParameterException(spec.commandLine(), "--a1-rule goes with the first assignment's pages, not with --scene");
         }
-        a1Rule.rule();
+        a1Rule.check();
     }
 
     /** The pages' context these options ask for, the project's own scenes in {@code ownScenes}. */

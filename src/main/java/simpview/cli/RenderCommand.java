@@ -157,7 +157,7 @@ public final class RenderCommand implements Callable<Integer> {
                 "--assignment must be 1 or 2 (the later assignments' pages are scenes: use --scenes), not " + assignment);
         usage(assignment == null || what.page != null || what.all, "--assignment goes with --page or --all");
         usage(!a1Rule.given() || firstAssignment(), "--a1-rule goes with --assignment 1");
-        a1Rule.rule();
+        a1Rule.check();
         usage(!firstAssignment() || simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
         int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
         usage(what.page == null || what.page >= 1 && what.page <= count,
