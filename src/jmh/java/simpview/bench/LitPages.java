@@ -46,7 +46,7 @@ public class LitPages {
             "a4/page-g", "a4/page-h"})
     public String scene;
 
-    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread). */
+    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread; more: each batch drawn while the next is read). */
     @Param({"1"})
     public int threads;
 

@@ -74,7 +74,7 @@ public class OrbitFrame {
     private static final double YAW = 30;
     private static final double PITCH = 15;
 
-    /** Threads drawing each frame's bands (1: drawn as read, on the benchmark's thread). */
+    /** Threads drawing each frame's bands (1: drawn as read, on the benchmark's thread; more: each batch drawn while the next is read). */
     @Param({"1"})
     public int threads;
 

@@ -39,7 +39,7 @@ public class Pages {
     @Param({"1", "2", "3", "4", "5", "6", "7", "8"})
     public int page;
 
-    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread). */
+    /** Threads drawing each page's bands (1: drawn as read, on the benchmark's thread; more: each batch drawn while the next is read). */
     @Param({"1"})
     public int threads;
 

@@ -123,8 +123,8 @@ public class PhongFill {
     @Benchmark
     @OperationsPerInvocation(PageCanvas.PANEL * PageCanvas.PANEL)
     public PageCanvas fill() {
-        drawing.forEach(fragments.length, b -> rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL,
-                PageCanvas.PANEL, fragments[b]));
+        drawing.start(fragments.length, b -> rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL,
+                PageCanvas.PANEL, fragments[b])).finish();
         return canvas;
     }
 

@@ -7,33 +7,43 @@ import simpview.surface.Provenance;
 import simpview.surface.RowBands;
 
 /**
- * How a recorded batch of primitives is drawn, the same for the depth-cued
+ * How recorded batches of primitives are drawn, the same for the depth-cued
  * record ({@link CuedPrimitives}) and the lit one ({@link LitPrimitives}):
- * split into the panel's row bands, drawn by all the threads at once, or as
- * one band on the thread that records, as {@link BandChoice} finds it pays.
- * It weighs the batch as it is recorded (about how many pixels its primitives
- * cover, counted only when the thread count is chosen per picture), says when
- * the scene's first batch is full, and tells the record's owner when that
- * batch was kept whole: the rest of the scene is then drawn as it is read.
+ * one batch at a time, in recording order, each split into the panel's row
+ * bands or drawn as one band, as {@link BandChoice} finds it pays, while the
+ * recording thread goes on with the next batch.
+ *
+ * <p>The pipeline, for a record of two batches, A and B, used in turn:
+ * A is filled; handed off, the workers start drawing it; B is filled
+ * meanwhile; when B is handed off, A is finished first (the recording thread
+ * draws the bands of A no worker has begun, then waits for the rest), and
+ * only then does B start, so that A is free to be filled again. A batch
+ * kept as one band is drawn by a worker alone, beside the recording: on a
+ * page of many small faces the geometry stage and the rasterizers then take
+ * a core each. Batches never overlap, so each pixel sees the writes in
+ * drawing order and the picture is the same to the bit as one thread drawing
+ * the scene as it reads it.
+ *
+ * <p>It weighs each batch as it is recorded (about how many pixels its
+ * primitives cover, counted only when the thread count is chosen per
+ * picture).
  *
  * <p>Used on the one thread that records; the bands' drawers are the
- * record's own.
+ * record's own, and draw only the batch they are given.
  */
 final class BatchDrawing {
 
     private final DrawingThreads threads;
     private final RowBands bands;
-    /** The whole panel as one band, for batches drawn on the recording thread. */
+    /** The whole panel as one band, for batches not split. */
     private final RowBands whole;
     private final Provenance provenance;
     /** True when the band count is chosen per batch: then the pixels are counted. */
     private final boolean weighs;
-    /** About how many pixels the recorded primitives cover ({@link BandChoice#pixels}), when weighed. */
+    /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
-    /** True until the scene's first batch is drawn, when the thread count is chosen per picture. */
-    private boolean firstBatch;
-    /** Told when the first batch was drawn whole. */
-    private Runnable keptWhole;
+    /** The batch being drawn, or null. */
+    private DrawingThreads.InFlight drawing;
 
     /** For a panel {@code height} rows high, drawn by {@code threads}; {@code provenance} is the owners' record, or null. */
     BatchDrawing(DrawingThreads threads, int height, Provenance provenance) {
@@ -42,7 +52,9 @@ final class BatchDrawing {
         this.whole = new RowBands(height, 1);
         this.provenance = provenance;
         this.weighs = threads.choosesPerPicture();
-        this.firstBatch = weighs;
+        if (provenance != null) {
+            provenance.drawnFromRecords();
+        }
     }
 
     /** The row bands a split batch is drawn in, one drawer each. */
@@ -57,43 +69,30 @@ final class BatchDrawing {
         }
     }
 
-    /** True when a record of {@code size} primitives is the scene's first batch, full: to be drawn now. */
-    boolean firstBatchFull(int size) {
-        return firstBatch && size >= BandChoice.FIRST_BATCH;
-    }
-
     /**
-     * Draws a batch of {@code size} primitives: each band by {@code band}
-     * (given the band's number), all the threads at once, or the whole panel
-     * by {@code wholePanel} on this thread; returns when all is drawn, the
-     * weight back at nothing.
+     * Hands off a batch of {@code size} primitives, to be drawn band by band
+     * by {@code band} (given the band's number), by all the threads, or whole
+     * by {@code wholePanel}: the batch handed off before it is finished first,
+     * then this one is started and this returns, the weight back at nothing.
+     * The record that batch was drawn from is free again when this returns;
+     * this one's is in use until the next hand-off or {@link #finish}.
      */
-    void draw(int size, IntConsumer band, Runnable wholePanel) {
-        boolean split = BandChoice.splits(threads, size, pixels);
+    void handOff(int size, IntConsumer band, Runnable wholePanel) {
+        finish();
+        boolean split = BandChoice.splits(threads, pixels);
         if (provenance != null) {
             provenance.useBands(split ? bands : whole);
         }
-        if (split) {
-            threads.forEach(bands.count(), band);
-        } else {
-            wholePanel.run();
-        }
+        drawing = split ? threads.start(bands.count(), band) : threads.start(1, b -> wholePanel.run());
         pixels = 0;
-        if (firstBatch) {
-            firstBatch = false;
-            if (!split && keptWhole != null) {
-                keptWhole.run();
-            }
-        }
     }
 
-    /**
-     * {@code then} is run when the scene's first batch ({@link BandChoice#FIRST_BATCH}
-     * primitives, or the whole scene if it has fewer) is drawn whole, with the
-     * thread count chosen per picture: the record's owner then draws the rest
-     * of the scene as it reads it, on its own thread, without recording it.
-     */
-    void whenKeptWhole(Runnable then) {
-        keptWhole = then;
+    /** Returns when every batch handed off is drawn (this thread helping), throwing what a drawer failed with. */
+    void finish() {
+        if (drawing != null) {
+            DrawingThreads.InFlight last = drawing;
+            drawing = null;
+            last.finish();
+        }
     }
 }

@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import java.util.Arrays;
+import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
@@ -24,25 +25,24 @@ import simpview.surface.RowBands;
  * alone, never stepping from the row before, so a band's rows are exactly
  * the whole primitive's.
  *
- * <p>Drawn and emptied when full and at the end of the scene ({@link #flush});
- * filled on the one thread that draws the scene.
+ * <p>Two batches are kept: one is filled while the other is drawn
+ * ({@link BatchDrawing}). A batch is handed off when it is full, and the
+ * last at the end of the scene ({@link #flush}); filled on the one thread
+ * that draws the scene.
  */
 public final class CuedPrimitives {
 
-    /** Primitives after which the record is drawn and emptied. */
-    private static final int MOST_PRIMITIVES = 16384;
+    /** Primitives after which a batch is handed off. */
+    private static final int MOST_PRIMITIVES = 4096;
 
     private final BatchDrawing batches;
     private final Band[] drawers;
-    /** The whole panel as one band, drawn by the caller's thread, for batches {@link BandChoice} keeps whole. */
+    /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    private int size;
-    private byte[] kind = new byte[1024];
-    private int[] owner = new int[1024];
-    private double[] lowY = new double[1024];
-    private double[] highY = new double[1024];
-    private double[] numbers = new double[1024 * Painter.STRIDE];
+    /** The batch being filled, and the other: being drawn, or free. */
+    private Batch filling = new Batch();
+    private Batch other = new Batch();
 
     /**
      * Draws onto {@code panel} (panel coordinates, whatever the page does per
@@ -62,59 +62,75 @@ public final class CuedPrimitives {
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
     void add(int what, double[] p, int at) {
-        if (size == kind.length) {
-            grow();
-        }
-        System.arraycopy(p, at, numbers, size * Painter.STRIDE, Painter.STRIDE);
-        int corners = what == Painter.LINE ? 2 : 3;
-        double low = Double.POSITIVE_INFINITY;
-        double high = Double.NEGATIVE_INFINITY;
-        for (int k = 0; k < corners; k++) {
-            double y = p[at + k * simpview.geometry.Vertex.NUMBERS + simpview.geometry.Vertex.Y];
-            low = Math.min(low, y);
-            high = Math.max(high, y);
-        }
-        kind[size] = (byte) what;
-        owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
-        lowY[size] = Math.floor(low - 1);
-        highY[size] = Math.ceil(high + 1);
-        batches.weigh(p, at + simpview.geometry.Vertex.X, corners, simpview.geometry.Vertex.NUMBERS,
-                what == Painter.FILLED, what == Painter.WIRE);
-        size++;
-        if (size >= MOST_PRIMITIVES || batches.firstBatchFull(size)) {
-            flush();
+        Batch b = filling;
+        int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
+        batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED, what == Painter.WIRE);
+        if (b.size >= MOST_PRIMITIVES) {
+            handOff();
         }
     }
 
-    private void grow() {
-        int capacity = 2 * kind.length;
-        kind = Arrays.copyOf(kind, capacity);
-        owner = Arrays.copyOf(owner, capacity);
-        lowY = Arrays.copyOf(lowY, capacity);
-        highY = Arrays.copyOf(highY, capacity);
-        numbers = Arrays.copyOf(numbers, capacity * Painter.STRIDE);
-    }
-
-    /**
-     * Draws what is recorded, every band at once (or as one band on this
-     * thread, when {@link BandChoice} says splitting it does not pay), and
-     * empties the record; returns when all is drawn.
-     */
-    public void flush() {
-        if (size == 0) {
+    /** Hands the batch filled off to be drawn, and goes on filling the other (free once handOff returns). */
+    private void handOff() {
+        Batch b = filling;
+        if (b.size == 0) {
             return;
         }
-        batches.draw(size, b -> drawers[b].draw(), wholeDrawer::draw);
-        size = 0;
+        batches.handOff(b.size, band -> drawers[band].draw(b), () -> wholeDrawer.draw(b));
+        filling = other;
+        other = b;
+        filling.size = 0;
     }
 
     /**
-     * {@code then} is run when the scene's first batch is drawn whole, with
-     * the thread count chosen per picture ({@link BatchDrawing#whenKeptWhole}):
-     * the owner then draws the rest of the scene as it reads it.
+     * Draws what is recorded, every band at once (or as one band, when
+     * {@link BandChoice} says splitting it does not pay), and returns when
+     * all is drawn.
      */
-    public void whenKeptWhole(Runnable then) {
-        batches.whenKeptWhole(then);
+    public void flush() {
+        handOff();
+        batches.finish();
+    }
+
+    /** One batch of recorded primitives, in primitive arrays: filled by the reading thread, then read by the drawers. */
+    private static final class Batch {
+        int size;
+        byte[] kind = new byte[1024];
+        int[] owner = new int[1024];
+        double[] lowY = new double[1024];
+        double[] highY = new double[1024];
+        double[] numbers = new double[1024 * Painter.STRIDE];
+
+        /** Records the primitive, drawn for primitive {@code by}; returns its corners. */
+        int add(int what, double[] p, int at, int by) {
+            if (size == kind.length) {
+                grow();
+            }
+            System.arraycopy(p, at, numbers, size * Painter.STRIDE, Painter.STRIDE);
+            int corners = what == Painter.LINE ? 2 : 3;
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < corners; k++) {
+                double y = p[at + k * Vertex.NUMBERS + Vertex.Y];
+                low = Math.min(low, y);
+                high = Math.max(high, y);
+            }
+            kind[size] = (byte) what;
+            owner[size] = by;
+            lowY[size] = Math.floor(low - 1);
+            highY[size] = Math.ceil(high + 1);
+            size++;
+            return corners;
+        }
+
+        private void grow() {
+            int capacity = 2 * kind.length;
+            kind = Arrays.copyOf(kind, capacity);
+            owner = Arrays.copyOf(owner, capacity);
+            lowY = Arrays.copyOf(lowY, capacity);
+            highY = Arrays.copyOf(highY, capacity);
+            numbers = Arrays.copyOf(numbers, capacity * Painter.STRIDE);
+        }
     }
 
     /** One band's drawer: renderers of its own, the panel through its rows only. */
@@ -134,16 +150,16 @@ public final class CuedPrimitives {
                     new WireframePolygonRenderer(new DdaLineRenderer()));
         }
 
-        void draw() {
-            for (int k = 0; k < size; k++) {
+        void draw(Batch b) {
+            for (int k = 0; k < b.size; k++) {
                 // Conservative: a primitive is skipped only when all of it lies a row or more outside.
-                if (highY[k] < from || lowY[k] >= to) {
+                if (b.highY[k] < from || b.lowY[k] >= to) {
                     continue;
                 }
                 if (provenance != null) {
-                    provenance.begin(band, owner[k]);
+                    provenance.begin(band, b.owner[k]);
                 }
-                painter.draw(kind[k], numbers, k * Painter.STRIDE);
+                painter.draw(b.kind[k], b.numbers, k * Painter.STRIDE);
             }
         }
     }

@@ -109,15 +109,11 @@ public final class LitGeometry implements GeometryStage {
 
     /**
      * From now on the primitives are recorded in {@code to}, to be drawn by
-     * its threads, instead of drawn at once (null: at once again), until
-     * {@code to} draws the scene's first batch whole ({@link LitPrimitives#whenKeptWhole}):
-     * then at once again. Call before the scene is read.
+     * its threads, instead of drawn at once (null: at once again). Call
+     * before the scene is read.
      */
     public void recordTo(LitPrimitives to) {
         record = to;
-        if (to != null) {
-            to.whenKeptWhole(() -> record = null);
-        }
     }
 
     @Override

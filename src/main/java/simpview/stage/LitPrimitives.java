@@ -28,39 +28,28 @@ import simpview.surface.ZBuffer;
  * the same order as when one thread draws the scene as it is read, and its
  * colour, depth and owner are the same to the bit.
  *
- * <p>The record is drawn and emptied when it is full and at the end of the
- * scene ({@link #flush}), so a scene of any size takes bounded room. Used on
- * the one thread that reads the scene; only {@link #flush} uses the others.
+ * <p>Two batches are kept: one is filled while the other is drawn
+ * ({@link BatchDrawing}). A batch is handed off when it is full, and the
+ * last at the end of the scene ({@link #flush}), so a scene of any size takes
+ * bounded room. Filled on the one thread that reads the scene.
  */
 public final class LitPrimitives {
 
     static final byte FILL = 0;
     static final byte LINE = 1;
     static final byte OUTLINE = 2;
-    /** Primitives, or numbers, after which the record is drawn and emptied. */
-    private static final int MOST_PRIMITIVES = 16384;
-    private static final int MOST_NUMBERS = 1 << 20;
+    /** Primitives, or numbers, after which a batch is handed off. */
+    private static final int MOST_PRIMITIVES = 4096;
+    private static final int MOST_NUMBERS = 1 << 18;
 
     private final BatchDrawing batches;
     private final Band[] drawers;
-    /** The whole panel as one band, drawn by the caller's thread, for batches {@link BandChoice} keeps whole. */
+    /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-
-    private int size;
-    private byte[] kind = new byte[1024];
-    private int[] vertices = new int[1024];
-    private byte[] channels = new byte[1024];
-    private int[] start = new int[1025];
-    private int[] owner = new int[1024];
-    private int[] lookOf = new int[1024];
-    private double[] lowY = new double[1024];
-    private double[] highY = new double[1024];
-    private double[] numbers = new double[1 << 14];
-    /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
-    private final List<Fog> fogs = new ArrayList<>();
-    private final List<Supplier<PointShader>> shaders = new ArrayList<>();
-    private int lastLook = -1;
+    /** The batch being filled, and the other: being drawn, or free. */
+    private Batch filling = new Batch();
+    private Batch other = new Batch();
     /** The lighting last frozen, and what from. */
     private Supplier<PointShader> frozen;
     private LitState frozenFrom;
@@ -95,85 +84,122 @@ public final class LitPrimitives {
             frozenVersion = phong.lightingVersion();
             frozen = phong.frozenShader();
         }
-        Supplier<PointShader> shader = phong == null ? null : frozen;
-        if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)) {
-            fogs.add(fog);
-            shaders.add(shader);
-            lastLook = fogs.size() - 1;
-        }
-        return lastLook;
+        return filling.look(fog, phong == null ? null : frozen);
     }
 
     /**
      * Records a primitive: its n vertices from v[0] (layout of {@link FragmentLayout}),
      * its channels, kind and look, and the primitive the provenance record
-     * says is being drawn (the owner of what it draws).
+     * says is being read (the owner of what it draws).
      */
     void add(byte what, double[] v, int n, int channelCount, int look) {
-        int stride = FragmentLayout.stride(channelCount);
-        int count = n * stride;
-        if (size == kind.length) {
-            grow();
-        }
-        int at = start[size];
-        if (at + count > numbers.length) {
-            numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
-        }
-        System.arraycopy(v, 0, numbers, at, count);
-        double low = Double.POSITIVE_INFINITY;
-        double high = Double.NEGATIVE_INFINITY;
-        for (int k = 0; k < n; k++) {
-            double y = v[k * stride + FragmentLayout.Y];
-            low = Math.min(low, y);
-            high = Math.max(high, y);
-        }
-        kind[size] = what;
-        vertices[size] = n;
-        channels[size] = (byte) channelCount;
-        owner[size] = provenance == null ? Provenance.BACKGROUND : provenance.current();
-        lookOf[size] = look;
-        lowY[size] = Math.floor(low - 1);
-        highY[size] = Math.ceil(high + 1);
-        batches.weigh(v, FragmentLayout.X, n, stride, what == FILL, what == OUTLINE);
-        start[size + 1] = at + count;
-        size++;
-        if (size >= MOST_PRIMITIVES || start[size] >= MOST_NUMBERS || batches.firstBatchFull(size)) {
-            flush();
+        Batch b = filling;
+        b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current());
+        batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL, what == OUTLINE);
+        if (b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
+            handOff();
         }
     }
 
-    private void grow() {
-        int capacity = 2 * kind.length;
-        kind = Arrays.copyOf(kind, capacity);
-        vertices = Arrays.copyOf(vertices, capacity);
-        channels = Arrays.copyOf(channels, capacity);
-        start = Arrays.copyOf(start, capacity + 1);
-        owner = Arrays.copyOf(owner, capacity);
-        lookOf = Arrays.copyOf(lookOf, capacity);
-        lowY = Arrays.copyOf(lowY, capacity);
-        highY = Arrays.copyOf(highY, capacity);
-    }
-
-    /**
-     * Draws what is recorded, every band at once (or as one band on this
-     * thread, when {@link BandChoice} says splitting it does not pay), and
-     * empties the record; returns when all is drawn.
-     */
-    public void flush() {
-        if (size == 0) {
+    /** Hands the batch filled off to be drawn, and goes on filling the other (free once handOff returns). */
+    private void handOff() {
+        Batch b = filling;
+        if (b.size == 0) {
             return;
         }
-        batches.draw(size, b -> drawers[b].draw(), wholeDrawer::draw);
-        size = 0;
+        batches.handOff(b.size, band -> drawers[band].draw(b), () -> wholeDrawer.draw(b));
+        filling = other;
+        other = b;
+        filling.clear();
     }
 
     /**
-     * {@code then} is run when the scene's first batch is drawn whole, with
-     * the thread count chosen per picture ({@link BatchDrawing#whenKeptWhole}):
-     * the owner then draws the rest of the scene as it reads it.
+     * Draws what is recorded, every band at once (or as one band, when
+     * {@link BandChoice} says splitting it does not pay), and returns when
+     * all is drawn.
      */
-    public void whenKeptWhole(Runnable then) {
-        batches.whenKeptWhole(then);
+    public void flush() {
+        handOff();
+        batches.finish();
+    }
+
+    /**
+     * One batch of recorded primitives and the looks they use, in primitive
+     * arrays: filled by the reading thread, then read by the band drawers
+     * while the other batch is filled.
+     */
+    private static final class Batch {
+        int size;
+        byte[] kind = new byte[1024];
+        int[] vertices = new int[1024];
+        byte[] channels = new byte[1024];
+        int[] start = new int[1025];
+        int[] owner = new int[1024];
+        int[] lookOf = new int[1024];
+        double[] lowY = new double[1024];
+        double[] highY = new double[1024];
+        double[] numbers = new double[1 << 14];
+        /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
+        final List<Fog> fogs = new ArrayList<>();
+        final List<Supplier<PointShader>> shaders = new ArrayList<>();
+        int lastLook = -1;
+
+        void clear() {
+            size = 0;
+            fogs.clear();
+            shaders.clear();
+            lastLook = -1;
+        }
+
+        int look(Fog fog, Supplier<PointShader> shader) {
+            if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)) {
+                fogs.add(fog);
+                shaders.add(shader);
+                lastLook = fogs.size() - 1;
+            }
+            return lastLook;
+        }
+
+        void add(byte what, double[] v, int n, int channelCount, int look, int by) {
+            int stride = FragmentLayout.stride(channelCount);
+            int count = n * stride;
+            if (size == kind.length) {
+                grow();
+            }
+            int at = start[size];
+            if (at + count > numbers.length) {
+                numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
+            }
+            System.arraycopy(v, 0, numbers, at, count);
+            double low = Double.POSITIVE_INFINITY;
+            double high = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < n; k++) {
+                double y = v[k * stride + FragmentLayout.Y];
+                low = Math.min(low, y);
+                high = Math.max(high, y);
+            }
+            kind[size] = what;
+            vertices[size] = n;
+            channels[size] = (byte) channelCount;
+            owner[size] = by;
+            lookOf[size] = look;
+            lowY[size] = Math.floor(low - 1);
+            highY[size] = Math.ceil(high + 1);
+            start[size + 1] = at + count;
+            size++;
+        }
+
+        private void grow() {
+            int capacity = 2 * kind.length;
+            kind = Arrays.copyOf(kind, capacity);
+            vertices = Arrays.copyOf(vertices, capacity);
+            channels = Arrays.copyOf(channels, capacity);
+            start = Arrays.copyOf(start, capacity + 1);
+            owner = Arrays.copyOf(owner, capacity);
+            lookOf = Arrays.copyOf(lookOf, capacity);
+            lowY = Arrays.copyOf(lowY, capacity);
+            highY = Arrays.copyOf(highY, capacity);
+        }
     }
 
     /** One band's drawer: its own rasterizers and fragment stage, its rows only. */
@@ -184,7 +210,7 @@ public final class LitPrimitives {
         private final FragmentStage fragments;
         private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
         private final LitLineRasterizer lines = new LitLineRasterizer();
-        /** The look the fragment stage is set to, and the shader this band made for it. */
+        /** The look (of the batch at hand) the fragment stage is set to, and the shader this band made for it. */
         private int look = -1;
         private Supplier<PointShader> madeFrom;
         private PointShader shader;
@@ -198,22 +224,24 @@ public final class LitPrimitives {
             fill.rows(from, to);
         }
 
-        void draw() {
+        void draw(Batch b) {
             int width = fragments.width();
             int height = fragments.height();
-            for (int k = 0; k < size; k++) {
+            double[] numbers = b.numbers;
+            look = -1;
+            for (int k = 0; k < b.size; k++) {
                 // Conservative: a primitive is skipped only when all of it lies a row or more outside.
-                if (highY[k] < from || lowY[k] >= to) {
+                if (b.highY[k] < from || b.lowY[k] >= to) {
                     continue;
                 }
                 if (provenance != null) {
-                    provenance.begin(band, owner[k]);
+                    provenance.begin(band, b.owner[k]);
                 }
-                setLook(lookOf[k]);
-                int at = start[k];
-                int n = vertices[k];
-                int ch = channels[k];
-                switch (kind[k]) {
+                setLook(b, b.lookOf[k]);
+                int at = b.start[k];
+                int n = b.vertices[k];
+                int ch = b.channels[k];
+                switch (b.kind[k]) {
                     case FILL -> fill.fill(numbers, at, n, ch, width, height, fragments);
                     case LINE -> lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
                     default -> {
@@ -227,21 +255,21 @@ public final class LitPrimitives {
             }
         }
 
-        private void setLook(int l) {
+        private void setLook(Batch b, int l) {
             if (l == look) {
                 return;
             }
             look = l;
-            Supplier<PointShader> s = shaders.get(l);
+            Supplier<PointShader> s = b.shaders.get(l);
             if (s == null) {
-                fragments.colours(fogs.get(l));
+                fragments.colours(b.fogs.get(l));
                 return;
             }
             if (s != madeFrom) {
                 madeFrom = s;
                 shader = s.get();
             }
-            fragments.phong(shader, fogs.get(l));
+            fragments.phong(shader, b.fogs.get(l));
         }
     }
 }

@@ -49,14 +49,10 @@ public final class Painter implements PrimitiveSink {
 
     /**
      * From now on records the primitives in {@code to}, to be drawn by its
-     * threads (null: draws them at once), until {@code to} draws the scene's
-     * first batch whole ({@link CuedPrimitives#whenKeptWhole}): then at once again.
+     * threads (null: draws them at once).
      */
     public void recordTo(CuedPrimitives to) {
         record = to;
-        if (to != null) {
-            to.whenKeptWhole(() -> record = null);
-        }
     }
 
     /** Draws the primitive whose numbers start at p[at], as numbers: no object per primitive. */

@@ -16,6 +16,16 @@ public final class Provenance {
     private final int width;
     private final int height;
     final int[] owner;
+    /** The primitive being read: the owner of what is drawn for it, as {@link #begin(int)} said. */
+    private int reading = BACKGROUND;
+    /**
+     * False while the scene is drawn as it is read: then {@link #begin(int)}
+     * says what is being drawn, on every row. True once its primitives are
+     * recorded and drawn later ({@link #drawnFromRecords}): then only the
+     * drawers say it, band by band ({@link #begin(int, int)}), while the
+     * reading thread goes on with later primitives.
+     */
+    private boolean recorded;
     /**
      * The primitive being drawn, one per band of rows: each band's thread
      * says which of its primitives it draws (see {@link #begin(int, int)}).
@@ -41,15 +51,35 @@ public final class Provenance {
         return height;
     }
 
-    /** Every pixel back to the background; no primitive being drawn. */
+    /** Every pixel back to the background; no primitive being read or drawn; drawn as read again. */
     public void reset() {
         Arrays.fill(owner, BACKGROUND);
-        Arrays.fill(current, BACKGROUND);
+        reading = BACKGROUND;
+        recorded = false;
+        current = new int[] {BACKGROUND};
+        Arrays.fill(bandOfRow, 0);
     }
 
-    /** The writes from now on, on every row, are primitive {@code primitive}'s (0, 1, 2, ... in drawing order). */
+    /**
+     * Primitive {@code primitive} (0, 1, 2, ... in drawing order) is being
+     * read: what is drawn for it from now on is its, on every row, unless the
+     * scene is drawn from records (then the drawers say so).
+     */
     public void begin(int primitive) {
-        Arrays.fill(current, primitive);
+        reading = primitive;
+        if (!recorded) {
+            Arrays.fill(current, primitive);
+        }
+    }
+
+    /**
+     * From now on, until {@link #reset}, the scene's primitives are recorded
+     * as they are read and drawn later, by drawers that say which one they
+     * draw ({@link #begin(int, int)}); {@link #begin(int)} then only says
+     * which is being read. Call while nothing is being drawn.
+     */
+    public void drawnFromRecords() {
+        recorded = true;
     }
 
     /**
@@ -77,9 +107,9 @@ public final class Provenance {
         current[band] = primitive;
     }
 
-    /** The primitive being drawn, as the last {@link #begin(int)} said (band 0's, when split into bands). */
+    /** The primitive being read, as the last {@link #begin(int)} said: the owner a record gives what it records. */
     public int current() {
-        return current[0];
+        return reading;
     }
 
     /** The primitive being drawn on row y, 0 &lt;= y &lt; height. */

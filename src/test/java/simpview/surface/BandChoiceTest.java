@@ -18,9 +18,9 @@ import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 
 /**
- * The rule that picks, when no thread count was given, one band on the
- * drawing thread for a scene of small faces and bands on every thread for a
- * scene of large fills; a count that was given is always used.
+ * The rule that picks, when no thread count was given, one band (drawn by a
+ * worker while the next batch is read) for a batch of little work and bands
+ * on every thread for the rest; a count that was given is always used.
  */
 class BandChoiceTest {
 
@@ -28,15 +28,16 @@ class BandChoiceTest {
     Path dir;
 
     @Test
-    void smallFacesAreDrawnWholeAndLargeFillsInBands() {
+    void batchesOfLittleWorkAreDrawnWholeAndTheRestInBands() {
         try (DrawingThreads chosen = DrawingThreads.upTo(2)) {
             assertTrue(chosen.choosesPerPicture());
-            // A4 page-d's batch as recorded, turned: 16,026 faces over 241,691 pixels (15 a face).
-            assertFalse(BandChoice.splits(chosen, 16026, 241691));
+            // A4 page-d's batch of 4,096 faces, turned: about 62,000 pixels (15 a face).
+            assertTrue(BandChoice.splits(chosen, 61_800));
             // A4 page-f2's: 1,012 faces over 515,850 pixels (510 a face).
-            assertTrue(BandChoice.splits(chosen, 1012, 515850));
-            // Large faces, but too few pixels in all to be worth a second thread.
-            assertFalse(BandChoice.splits(chosen, 10, BandChoice.LEAST_PIXELS - 1));
+            assertTrue(BandChoice.splits(chosen, 515_850));
+            // Too few pixels in all to be worth a second thread (1,000 of A4 page-d's faces: about 15,000).
+            assertFalse(BandChoice.splits(chosen, BandChoice.LEAST_PIXELS - 1));
+            assertFalse(BandChoice.splits(chosen, 15_000));
         }
     }
 
@@ -45,11 +46,10 @@ class BandChoiceTest {
         try (DrawingThreads given = DrawingThreads.of(2); DrawingThreads one = DrawingThreads.one();
                 DrawingThreads upToOne = DrawingThreads.upTo(1)) {
             assertFalse(given.choosesPerPicture());
-            assertTrue(BandChoice.splits(given, 16026, 241691), "two threads given: bands even for small faces");
-            assertTrue(BandChoice.splits(given, 1, 1));
-            assertFalse(BandChoice.splits(one, 1012, 515850), "one thread: never bands");
+            assertTrue(BandChoice.splits(given, 1), "two threads given: bands even for a batch of one pixel");
+            assertFalse(BandChoice.splits(one, 515_850), "one thread: never bands");
             assertFalse(upToOne.choosesPerPicture());
-            assertFalse(BandChoice.splits(upToOne, 1012, 515850));
+            assertFalse(BandChoice.splits(upToOne, 515_850));
         }
     }
 
@@ -67,30 +67,33 @@ class BandChoiceTest {
     }
 
     @Test
-    void aSceneOfSmallFacesIsDrawnOnTheCallersThreadAloneToTheSamePixels() throws Exception {
-        Path small = scene("small.simp", 1100, 1);
+    void aSceneOfLittleWorkIsDrawnAsOneBandBesideTheReadingToTheSamePixels() throws Exception {
+        Path small = scene("small.simp", 4200, 1);
         Path large = scene("large.simp", 12, 120);
         int[] oneThread = pixels(small, DrawingThreads.one(), new long[1]);
         assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
                 "the faces are drawn");
-        long[] inBands = new long[1];
-        // 1,100 faces: the first 1,024 recorded and drawn whole, the rest drawn as read; the same pixels.
-        assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), inBands));
-        assertEquals(0, inBands[0], "small faces, no count given: no bands");
-        assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), inBands));
-        assertTrue(inBands[0] > 0, "small faces, two threads given: bands");
-        pixels(large, DrawingThreads.upTo(2), inBands);
-        assertTrue(inBands[0] > 0, "large fills, no count given: bands");
+        long[] tasks = new long[1];
+        // 4,200 faces: a batch of 4,096 handed off and drawn whole, then the other 104; the same pixels.
+        assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
+        assertEquals(2, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task, no bands");
+        try (DrawingThreads two = DrawingThreads.of(2)) {
+            int bands = two.bands(PageCanvas.PANEL).count();
+            assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
+            assertEquals(2 * bands, tasks[0], "small faces, two threads given: both batches in bands");
+            pixels(large, DrawingThreads.upTo(2), tasks);
+            assertEquals(bands, tasks[0], "large fills, no count given: bands");
+        }
     }
 
-    /** The scene's pixels drawn by {@code drawing}; in inBands[0] the wall time it spent in bands. */
-    private static int[] pixels(Path scene, DrawingThreads drawing, long[] inBands) throws SceneException {
+    /** The scene's pixels drawn by {@code drawing}; in tasks[0] how many tasks (bands or whole batches) it ran. */
+    private static int[] pixels(Path scene, DrawingThreads drawing, long[] tasks) throws SceneException {
         try (drawing) {
             PageCanvas canvas = new PageCanvas();
             canvas.drawWith(drawing);
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), new SceneMonitor() {
             });
-            inBands[0] = drawing.nanosInBands();
+            tasks[0] = drawing.tasks();
             return ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
         }
     }

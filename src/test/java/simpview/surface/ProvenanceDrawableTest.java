@@ -97,6 +97,28 @@ class ProvenanceDrawableTest {
     }
 
     /** Keeps nothing; stands for the rest of the chain. */
+    @Test
+    void fromRecordsTheReadingAndTheDrawingAreApart() {
+        Provenance provenance = new Provenance(SIZE, SIZE);
+        Drawable panel = new ProvenanceDrawable(provenance, new BufferedSink());
+        provenance.begin(3);
+        panel.setPixel(1, 1, 0, Colors.BLACK);
+        assertEquals(3, provenance.ownerAt(1, 1), "drawn as read: what is read is what is drawn");
+        provenance.drawnFromRecords();
+        provenance.useBands(new RowBands(SIZE, 2));
+        provenance.begin(0, 7); // a drawer of the lower band draws primitive 7 ...
+        provenance.begin(40); // ... while the reading thread reads primitive 40
+        assertEquals(40, provenance.current());
+        panel.setPixel(2, 2, 0, Colors.BLACK);
+        panel.setPixel(2, SIZE - 1, 0, Colors.BLACK);
+        assertEquals(7, provenance.ownerAt(2, 2), "the drawer's primitive, not the one being read");
+        assertEquals(Provenance.BACKGROUND, provenance.ownerAt(2, SIZE - 1), "the upper band's drawer said nothing yet");
+        provenance.reset();
+        provenance.begin(5);
+        panel.setPixel(3, 3, 0, Colors.BLACK);
+        assertEquals(5, provenance.ownerAt(3, 3), "reset: drawn as read again");
+    }
+
     private static final class BufferedSink implements Drawable {
         @Override
         public int width() {
