@@ -1,6 +1,7 @@
 package simpview.stage;
 
-import java.util.function.IntConsumer;
+import java.util.function.Consumer;
+import java.util.function.ObjIntConsumer;
 import simpview.surface.BandChoice;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
@@ -28,10 +29,20 @@ import simpview.surface.RowBands;
  * primitives cover, counted only when the thread count is chosen per
  * picture).
  *
- * <p>Used on the one thread that records; the bands' drawers are the
- * record's own, and draw only the batch they are given.
+ * <p>It keeps the record's two batches and which one is being filled. Used
+ * on the one thread that records; the bands' drawers are the record's own,
+ * and draw only the batch they are given.
  */
-final class BatchDrawing {
+final class BatchDrawing<B extends BatchDrawing.Recorded> {
+
+    /** One batch of a record's primitives, in the record's own arrays. */
+    interface Recorded {
+        /** How many primitives it holds. */
+        int size();
+
+        /** Empties it, to be filled again. */
+        void clear();
+    }
 
     private final DrawingThreads threads;
     private final RowBands bands;
@@ -42,12 +53,21 @@ final class BatchDrawing {
     private final boolean weighs;
     /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
-    /** The batch being drawn, or null. */
+    /** The batch being filled, and the other: being drawn, or free. */
+    private B filling;
+    private B other;
+    /** The drawing of the batch handed off last, or null. */
     private DrawingThreads.InFlight drawing;
 
-    /** For a panel {@code height} rows high, drawn by {@code threads}; {@code provenance} is the owners' record, or null. */
-    BatchDrawing(DrawingThreads threads, int height, Provenance provenance) {
+    /**
+     * For a panel {@code height} rows high, drawn by {@code threads};
+     * {@code provenance} is the owners' record, or null; the record's two
+     * batches, {@code first} filled first.
+     */
+    BatchDrawing(DrawingThreads threads, int height, Provenance provenance, B first, B second) {
         this.threads = threads;
+        this.filling = first;
+        this.other = second;
         this.bands = threads.bands(height);
         this.whole = new RowBands(height, 1);
         this.provenance = provenance;
@@ -69,22 +89,35 @@ final class BatchDrawing {
         }
     }
 
+    /** The batch to record into. */
+    B filling() {
+        return filling;
+    }
+
     /**
-     * Hands off a batch of {@code size} primitives, to be drawn band by band
-     * by {@code band} (given the band's number), by all the threads, or whole
-     * by {@code wholePanel}: the batch handed off before it is finished first,
-     * then this one is started and this returns, the weight back at nothing.
-     * The record that batch was drawn from is free again when this returns;
-     * this one's is in use until the next hand-off or {@link #finish}.
+     * Hands off the batch being filled, if it holds anything, to be drawn
+     * band by band by {@code band} (given the batch and the band's number), by
+     * all the threads, or whole by {@code wholePanel}: the batch handed off
+     * before it is finished first, then this one is started, and the other
+     * batch, free now, is emptied to be filled next; the weight is back at
+     * nothing.
      */
-    void handOff(int size, IntConsumer band, Runnable wholePanel) {
+    void handOff(ObjIntConsumer<B> band, Consumer<B> wholePanel) {
+        B b = filling;
+        if (b.size() == 0) {
+            return;
+        }
         finish();
         boolean split = BandChoice.splits(threads, pixels);
         if (provenance != null) {
             provenance.useBands(split ? bands : whole);
         }
-        drawing = split ? threads.start(bands.count(), band) : threads.start(1, b -> wholePanel.run());
+        drawing = split ? threads.start(bands.count(), i -> band.accept(b, i))
+                : threads.start(1, i -> wholePanel.accept(b));
         pixels = 0;
+        filling = other;
+        other = b;
+        filling.clear();
     }
 
     /** Returns when every batch handed off is drawn (this thread helping), throwing what a drawer failed with. */

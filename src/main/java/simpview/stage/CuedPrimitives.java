@@ -35,14 +35,11 @@ public final class CuedPrimitives {
     /** Primitives after which a batch is handed off. */
     private static final int MOST_PRIMITIVES = 4096;
 
-    private final BatchDrawing batches;
+    private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** The batch being filled, and the other: being drawn, or free. */
-    private Batch filling = new Batch();
-    private Batch other = new Batch();
 
     /**
      * Draws onto {@code panel} (panel coordinates, whatever the page does per
@@ -50,7 +47,7 @@ public final class CuedPrimitives {
      * writes owners into, or null.
      */
     public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing(threads, panel.height(), provenance);
+        this.batches = new BatchDrawing<>(threads, panel.height(), provenance, new Batch(), new Batch());
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
@@ -62,7 +59,7 @@ public final class CuedPrimitives {
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
     void add(int what, double[] p, int at) {
-        Batch b = filling;
+        Batch b = batches.filling();
         int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
         batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED, what == Painter.WIRE);
         if (b.size >= MOST_PRIMITIVES) {
@@ -70,16 +67,9 @@ public final class CuedPrimitives {
         }
     }
 
-    /** Hands the batch filled off to be drawn, and goes on filling the other (free once handOff returns). */
+    /** Hands the batch filled off to be drawn; the other is filled next. */
     private void handOff() {
-        Batch b = filling;
-        if (b.size == 0) {
-            return;
-        }
-        batches.handOff(b.size, band -> drawers[band].draw(b), () -> wholeDrawer.draw(b));
-        filling = other;
-        other = b;
-        filling.size = 0;
+        batches.handOff((b, band) -> drawers[band].draw(b), wholeDrawer::draw);
     }
 
     /**
@@ -93,13 +83,23 @@ public final class CuedPrimitives {
     }
 
     /** One batch of recorded primitives, in primitive arrays: filled by the reading thread, then read by the drawers. */
-    private static final class Batch {
+    private static final class Batch implements BatchDrawing.Recorded {
         int size;
         byte[] kind = new byte[1024];
         int[] owner = new int[1024];
         double[] lowY = new double[1024];
         double[] highY = new double[1024];
         double[] numbers = new double[1024 * Painter.STRIDE];
+
+        @Override
+        public int size() {
+            return size;
+        }
+
+        @Override
+        public void clear() {
+            size = 0;
+        }
 
         /** Records the primitive, drawn for primitive {@code by}; returns its corners. */
         int add(int what, double[] p, int at, int by) {

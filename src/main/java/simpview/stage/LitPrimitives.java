@@ -42,14 +42,11 @@ public final class LitPrimitives {
     private static final int MOST_PRIMITIVES = 4096;
     private static final int MOST_NUMBERS = 1 << 18;
 
-    private final BatchDrawing batches;
+    private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** The batch being filled, and the other: being drawn, or free. */
-    private Batch filling = new Batch();
-    private Batch other = new Batch();
     /** The lighting last frozen, and what from. */
     private Supplier<PointShader> frozen;
     private LitState frozenFrom;
@@ -61,7 +58,7 @@ public final class LitPrimitives {
      * record the panel writes owners into, or null.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing(threads, zbuffer.height(), provenance);
+        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, new Batch(), new Batch());
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
@@ -84,7 +81,7 @@ public final class LitPrimitives {
             frozenVersion = phong.lightingVersion();
             frozen = phong.frozenShader();
         }
-        return filling.look(fog, phong == null ? null : frozen);
+        return batches.filling().look(fog, phong == null ? null : frozen);
     }
 
     /**
@@ -93,7 +90,7 @@ public final class LitPrimitives {
      * says is being read (the owner of what it draws).
      */
     void add(byte what, double[] v, int n, int channelCount, int look) {
-        Batch b = filling;
+        Batch b = batches.filling();
         b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current());
         batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL, what == OUTLINE);
         if (b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
@@ -101,16 +98,9 @@ public final class LitPrimitives {
         }
     }
 
-    /** Hands the batch filled off to be drawn, and goes on filling the other (free once handOff returns). */
+    /** Hands the batch filled off to be drawn; the other is filled next. */
     private void handOff() {
-        Batch b = filling;
-        if (b.size == 0) {
-            return;
-        }
-        batches.handOff(b.size, band -> drawers[band].draw(b), () -> wholeDrawer.draw(b));
-        filling = other;
-        other = b;
-        filling.clear();
+        batches.handOff((b, band) -> drawers[band].draw(b), wholeDrawer::draw);
     }
 
     /**
@@ -128,7 +118,7 @@ public final class LitPrimitives {
      * arrays: filled by the reading thread, then read by the band drawers
      * while the other batch is filled.
      */
-    private static final class Batch {
+    private static final class Batch implements BatchDrawing.Recorded {
         int size;
         byte[] kind = new byte[1024];
         int[] vertices = new int[1024];
@@ -144,7 +134,13 @@ public final class LitPrimitives {
         final List<Supplier<PointShader>> shaders = new ArrayList<>();
         int lastLook = -1;
 
-        void clear() {
+        @Override
+        public int size() {
+            return size;
+        }
+
+        @Override
+        public void clear() {
             size = 0;
             fogs.clear();
             shaders.clear();
