@@ -22,6 +22,7 @@ import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
+import simpview.surface.BandQueue;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.RowBands;
@@ -61,6 +62,8 @@ public class PhongFill {
     private LitPolygonRasterizer[] rasterizers;
     private FragmentStage[] fragments;
     private DrawingThreads drawing;
+    /** The quad as one batch in one slot (of two), drawn band by band. */
+    private BandQueue queue;
 
     /** Threads filling the bands (1: the whole panel on the benchmark's thread). */
     @Param({"1"})
@@ -80,6 +83,17 @@ public class PhongFill {
         state.addLight(-8, 6, -4, 0.8, 0.6, 0.5, 1, 0.01);
         drawing = DrawingThreads.of(threads);
         RowBands bands = drawing.bands(PageCanvas.PANEL);
+        queue = drawing.queue(bands.count(), 2, new BandQueue.Drawer() {
+            @Override
+            public void band(int slot, int b) {
+                rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL, PageCanvas.PANEL, fragments[b]);
+            }
+
+            @Override
+            public void whole(int slot) {
+                throw new IllegalStateException("the quad is always drawn in bands");
+            }
+        });
         rasterizers = new LitPolygonRasterizer[bands.count()];
         fragments = new FragmentStage[bands.count()];
         for (int b = 0; b < bands.count(); b++) {
@@ -123,8 +137,9 @@ public class PhongFill {
     @Benchmark
     @OperationsPerInvocation(PageCanvas.PANEL * PageCanvas.PANEL)
     public PageCanvas fill() {
-        drawing.start(fragments.length, b -> rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL,
-                PageCanvas.PANEL, fragments[b])).finish();
+        queue.slot();
+        queue.publish(false);
+        queue.finish();
         return canvas;
     }
 

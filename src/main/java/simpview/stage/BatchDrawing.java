@@ -1,8 +1,12 @@
 package simpview.stage;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.Consumer;
 import java.util.function.ObjIntConsumer;
+import java.util.function.Supplier;
 import simpview.surface.BandChoice;
+import simpview.surface.BandQueue;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
 import simpview.surface.RowBands;
@@ -10,30 +14,36 @@ import simpview.surface.RowBands;
 /**
  * How recorded batches of primitives are drawn, the same for the depth-cued
  * record ({@link CuedPrimitives}) and the lit one ({@link LitPrimitives}):
- * one batch at a time, in recording order, each split into the panel's row
- * bands or drawn as one band, as {@link BandChoice} finds it pays, while the
- * recording thread goes on with the next batch.
+ * in recording order, band by band, while the recording thread goes on with
+ * the next batch ({@link BandQueue}). A batch is handed off when the record
+ * finds it full, or when it covers {@link #MOST_PIXELS}, so that a page of a
+ * few large fills is drawn while the rest of it is read; each batch is
+ * split into the panel's row bands or drawn as one band, as
+ * {@link BandChoice} finds it pays. A batch kept as one band is drawn by one
+ * thread alone, beside the recording: on a page of many small faces the
+ * geometry stage and the rasterizers then take a core each. Each pixel sees
+ * the writes in drawing order, so the picture is the same to the bit as one
+ * thread drawing the scene as it reads it.
  *
- * <p>The pipeline, for a record of two batches, A and B, used in turn:
- * A is filled; handed off, the workers start drawing it; B is filled
- * meanwhile; when B is handed off, A is finished first (the recording thread
- * draws the bands of A no worker has begun, then waits for the rest), and
- * only then does B start, so that A is free to be filled again. A batch
- * kept as one band is drawn by a worker alone, beside the recording: on a
- * page of many small faces the geometry stage and the rasterizers then take
- * a core each. Batches never overlap, so each pixel sees the writes in
- * drawing order and the picture is the same to the bit as one thread drawing
- * the scene as it reads it.
- *
- * <p>It weighs each batch as it is recorded (about how many pixels its
- * primitives cover, counted only when the thread count is chosen per
- * picture).
- *
- * <p>It keeps the record's two batches and which one is being filled. Used
- * on the one thread that records; the bands' drawers are the record's own,
- * and draw only the batch they are given.
+ * <p>It keeps the record's ring of batches and which one is being filled,
+ * and weighs each batch as it is recorded (about how many pixels its
+ * primitives cover). Used on the one thread that records; the bands'
+ * drawers are the record's own, and draw only the batch they are given.
  */
 final class BatchDrawing<B extends BatchDrawing.Recorded> {
+
+    /**
+     * A batch covering this many pixels is handed off, however few its
+     * primitives: the first large fills of a page are drawn while its later
+     * primitives are read. Measured on the course's fill-bound pages
+     * (docs/performance.md, session 5).
+     */
+    static final double MOST_PIXELS = 120_000;
+    /**
+     * Batches in the ring: one being filled and two being drawn, so the
+     * recording runs up to two batches ahead of the slowest band.
+     */
+    private static final int SLOTS = 3;
 
     /** One batch of a record's primitives, in the record's own arrays. */
     interface Recorded {
@@ -46,35 +56,46 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     private final DrawingThreads threads;
     private final RowBands bands;
-    /** The whole panel as one band, for batches not split. */
-    private final RowBands whole;
-    private final Provenance provenance;
-    /** True when the band count is chosen per batch: then the pixels are counted. */
+    /** The ring: batch k in slot k mod SLOTS. */
+    private final List<B> ring = new ArrayList<>();
+    private final BandQueue queue;
+    /** True when there are threads to draw beside the recording: then each batch's pixels are counted. */
     private final boolean weighs;
     /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
-    /** The batch being filled, and the other: being drawn, or free. */
+    /** The batch being filled. */
     private B filling;
-    private B other;
-    /** The drawing of the batch handed off last, or null. */
-    private DrawingThreads.InFlight drawing;
 
     /**
      * For a panel {@code height} rows high, drawn by {@code threads};
-     * {@code provenance} is the owners' record, or null; the record's two
-     * batches, {@code first} filled first.
+     * {@code provenance} is the owners' record, or null; {@code newBatch}
+     * makes the ring's batches; a batch is drawn by {@code band} (given the
+     * batch and the band's number) when split, or by {@code wholePanel}.
      */
-    BatchDrawing(DrawingThreads threads, int height, Provenance provenance, B first, B second) {
+    BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Supplier<B> newBatch,
+            ObjIntConsumer<B> band, Consumer<B> wholePanel) {
         this.threads = threads;
-        this.filling = first;
-        this.other = second;
         this.bands = threads.bands(height);
-        this.whole = new RowBands(height, 1);
-        this.provenance = provenance;
-        this.weighs = threads.choosesPerPicture();
+        this.weighs = !threads.isOne();
+        for (int k = 0; k < SLOTS; k++) {
+            ring.add(newBatch.get());
+        }
+        this.queue = threads.queue(bands.count(), SLOTS, new BandQueue.Drawer() {
+            @Override
+            public void band(int slot, int number) {
+                band.accept(ring.get(slot), number);
+            }
+
+            @Override
+            public void whole(int slot) {
+                wholePanel.accept(ring.get(slot));
+            }
+        });
         if (provenance != null) {
             provenance.drawnFromRecords();
+            provenance.useBands(bands);
         }
+        this.filling = ring.get(queue.slot());
     }
 
     /** The row bands a split batch is drawn in, one drawer each. */
@@ -82,11 +103,16 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         return bands;
     }
 
-    /** Adds a primitive to the batch's weight: {@link BandChoice#pixels} of its n corners, when weighed. */
-    void weigh(double[] v, int at, int n, int stride, boolean filled, boolean closed) {
+    /**
+     * Adds a primitive to the batch's weight, {@link BandChoice#pixels} of
+     * its n corners, when weighed; true when the batch now covers
+     * {@link #MOST_PIXELS} or more, and is worth handing off.
+     */
+    boolean weigh(double[] v, int at, int n, int stride, boolean filled, boolean closed) {
         if (weighs) {
             pixels += BandChoice.pixels(v, at, n, stride, filled, closed);
         }
+        return pixels >= MOST_PIXELS;
     }
 
     /** The batch to record into. */
@@ -95,37 +121,23 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     }
 
     /**
-     * Hands off the batch being filled, if it holds anything, to be drawn
-     * band by band by {@code band} (given the batch and the band's number), by
-     * all the threads, or whole by {@code wholePanel}: the batch handed off
-     * before it is finished first, then this one is started, and the other
-     * batch, free now, is emptied to be filled next; the weight is back at
-     * nothing.
+     * Hands off the batch being filled, if it holds anything, to be drawn in
+     * bands by all the threads, or whole (as {@link BandChoice} says), and
+     * takes the next batch of the ring to fill, once every band has drawn
+     * what was in it; the weight is back at nothing.
      */
-    void handOff(ObjIntConsumer<B> band, Consumer<B> wholePanel) {
-        B b = filling;
-        if (b.size() == 0) {
+    void handOff() {
+        if (filling.size() == 0) {
             return;
         }
-        finish();
-        boolean split = BandChoice.splits(threads, pixels);
-        if (provenance != null) {
-            provenance.useBands(split ? bands : whole);
-        }
-        drawing = split ? threads.start(bands.count(), i -> band.accept(b, i))
-                : threads.start(1, i -> wholePanel.accept(b));
+        queue.publish(!BandChoice.splits(threads, pixels));
         pixels = 0;
-        filling = other;
-        other = b;
+        filling = ring.get(queue.slot());
         filling.clear();
     }
 
     /** Returns when every batch handed off is drawn (this thread helping), throwing what a drawer failed with. */
     void finish() {
-        if (drawing != null) {
-            DrawingThreads.InFlight last = drawing;
-            drawing = null;
-            last.finish();
-        }
+        queue.finish();
     }
 }

@@ -47,33 +47,42 @@ public final class CuedPrimitives {
      * writes owners into, or null.
      */
     public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing<>(threads, panel.height(), provenance, new Batch(), new Batch());
+        this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch::new, this::drawBand,
+                this::drawWhole);
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
         }
-        this.wholeDrawer = bands.count() == 1 ? drawers[0] : new Band(0, 0, panel.height(), panel);
+        this.wholeDrawer = bands.count() == 1 ? drawers[0] : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel);
     }
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
     void add(int what, double[] p, int at) {
         Batch b = batches.filling();
         int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
-        batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED, what == Painter.WIRE);
-        if (b.size >= MOST_PRIMITIVES) {
+        boolean heavy = batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED, what == Painter.WIRE);
+        if (heavy || b.size >= MOST_PRIMITIVES) {
             handOff();
         }
     }
 
     /** Hands the batch filled off to be drawn; the other is filled next. */
     private void handOff() {
-        batches.handOff((b, band) -> drawers[band].draw(b), wholeDrawer::draw);
+        batches.handOff();
+    }
+
+    private void drawBand(Batch b, int band) {
+        drawers[band].draw(b);
+    }
+
+    private void drawWhole(Batch b) {
+        wholeDrawer.draw(b);
     }
 
     /**
-     * Draws what is recorded, every band at once (or as one band, when
+     * Draws what is recorded, band by band (or as one band, when
      * {@link BandChoice} says splitting it does not pay), and returns when
      * all is drawn.
      */

@@ -58,7 +58,8 @@ public final class LitPrimitives {
      * record the panel writes owners into, or null.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, new Batch(), new Batch());
+        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch::new, this::drawBand,
+                this::drawWhole);
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
@@ -66,7 +67,7 @@ public final class LitPrimitives {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(0, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
+                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
     }
 
     /**
@@ -92,19 +93,27 @@ public final class LitPrimitives {
     void add(byte what, double[] v, int n, int channelCount, int look) {
         Batch b = batches.filling();
         b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current());
-        batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL, what == OUTLINE);
-        if (b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
+        boolean heavy = batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL, what == OUTLINE);
+        if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
             handOff();
         }
     }
 
     /** Hands the batch filled off to be drawn; the other is filled next. */
     private void handOff() {
-        batches.handOff((b, band) -> drawers[band].draw(b), wholeDrawer::draw);
+        batches.handOff();
+    }
+
+    private void drawBand(Batch b, int band) {
+        drawers[band].draw(b);
+    }
+
+    private void drawWhole(Batch b) {
+        wholeDrawer.draw(b);
     }
 
     /**
-     * Draws what is recorded, every band at once (or as one band, when
+     * Draws what is recorded, band by band (or as one band, when
      * {@link BandChoice} says splitting it does not pay), and returns when
      * all is drawn.
      */

@@ -59,7 +59,7 @@ public final class BandChoice {
         int edges = closed || filled ? n : n - 1;
         for (int k = 0; k < edges; k++) {
             int i = at + k * stride;
-            int j = at + ((k + 1) % n) * stride;
+            int j = k + 1 < n ? i + stride : at;
             double x0 = v[i];
             double y0 = v[i + 1];
             double x1 = v[j];

@@ -1,18 +1,13 @@
 package simpview.surface;
 
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.CancellationException;
-import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.IntConsumer;
 
 /**
  * The threads that draw one picture's bands of rows together: the thread
- * that calls {@link #start} and {@code threads - 1} workers named
+ * that reads the scene and {@code threads - 1} workers named
  * {@code simpview-band-1}, {@code simpview-band-2}, ... Made and closed by
  * whoever draws (a page renderer, a command, a benchmark) and handed to the
  * scene it draws; never shared through a global. One thread has no worker at
@@ -25,9 +20,8 @@ import java.util.function.IntConsumer;
  * (the count the user gave with {@code --threads}). Made by {@link #upTo}
  * (no count given), each recorded batch of a picture is drawn in bands or as
  * one band by one thread, as {@link BandChoice} finds it pays; the picture is
- * the same either way. A batch is started ({@link #start}) while the caller
- * goes on reading the next one, and finished by the caller, which takes the
- * bands no worker has begun.
+ * the same either way. Batches are handed to a {@link BandQueue}, drawn
+ * while the caller goes on reading the next one.
  */
 public final class DrawingThreads implements AutoCloseable {
 
@@ -46,9 +40,9 @@ public final class DrawingThreads implements AutoCloseable {
     private final boolean perPicture;
     /** The workers; null for one thread. */
     private final ExecutorService workers;
-    /** Wall time from each start to the end of its finish, summed: the parallel part of drawing. */
+    /** Wall time from each picture's first batch to the end of its finish, summed: the parallel part of drawing. */
     private long nanosInBands;
-    /** Tasks given to {@link #start}, summed. */
+    /** Tasks handed to queues (bands of batches, batches drawn whole), summed. */
     private long tasks;
 
     private DrawingThreads(int threads, boolean perPicture) {
@@ -113,119 +107,39 @@ public final class DrawingThreads implements AutoCloseable {
     }
 
     /**
-     * Starts {@code task} for each of 0, 1, ..., count - 1 on the workers and
-     * returns at once, so that the caller can go on with other work (reading
-     * the next batch of a scene) while they draw; {@link InFlight#finish} then
-     * has the caller take the tasks no worker has begun, and returns when all
-     * are done. With one thread every task is run here, before this returns.
-     * At most one may be in flight at a time (finish it before the next start).
+     * A queue of batches drawn in this picture's {@code bands} bands by these
+     * threads, the batches in a ring of {@code slots} (2 or more), drawn by
+     * {@code drawer} (see {@link BandQueue}).
      */
-    public InFlight start(int count, IntConsumer task) {
+    public BandQueue queue(int bands, int slots, BandQueue.Drawer drawer) {
+        return new BandQueue(this, bands, slots, drawer);
+    }
+
+    /** Runs {@code work} on a worker (there are workers: more than one thread). */
+    Future<?> submit(Runnable work) {
+        return workers.submit(work);
+    }
+
+    /** Adds to the counters: {@code count} tasks handed in, {@code nanos} of drawing in bands. */
+    void counted(long count, long nanos) {
         tasks += count;
-        InFlight run = new InFlight(count, task);
-        if (workers == null) {
-            run.drain();
-            return run;
-        }
-        int helpers = Math.min(threads - 1, count);
-        for (int k = 0; k < helpers; k++) {
-            run.running.add(workers.submit(run::drain));
-        }
-        return run;
+        nanosInBands += nanos;
     }
 
     /**
-     * The wall time from each {@link #start} to the end
-     * of its finish, summed: how long some band was being drawn, against the
-     * whole drawing's time (the rest, reading and the geometry stage while
-     * nothing is drawn, runs on one thread alone). For benchmarks; read on the
-     * thread that starts them.
+     * The wall time from each picture's first batch handed in to the end of
+     * its {@link BandQueue#finish}, summed: how long bands were being drawn,
+     * against the whole drawing's time (the rest, reading and the geometry
+     * stage before the first batch, runs on one thread alone). For
+     * benchmarks; read on the thread that draws.
      */
     public long nanosInBands() {
         return nanosInBands;
     }
 
-    /** How many tasks (bands, or batches drawn whole) were run so far: for benchmarks and tests, as {@link #nanosInBands}. */
+    /** How many tasks (bands of batches, and batches drawn whole) were handed in so far: for benchmarks and tests, as {@link #nanosInBands}. */
     public long tasks() {
         return tasks;
-    }
-
-    /** Tasks started by {@link #start}: the caller finishes them. */
-    public final class InFlight {
-        private final long started = System.nanoTime();
-        private final int count;
-        private final IntConsumer task;
-        private final AtomicInteger next = new AtomicInteger();
-        private final List<Future<?>> running = new ArrayList<>();
-        private boolean finished;
-
-        private InFlight(int count, IntConsumer task) {
-            this.count = count;
-            this.task = task;
-        }
-
-        private void drain() {
-            for (int i = next.getAndIncrement(); i < count; i = next.getAndIncrement()) {
-                task.accept(i);
-            }
-        }
-
-        /**
-         * Runs on this thread the tasks no worker has begun, waits for the
-         * rest, and throws the first failure once all have stopped. Only the
-         * thread that started them calls it; a second call does nothing.
-         */
-        public void finish() {
-            if (finished) {
-                return;
-            }
-            finished = true;
-            try {
-                awaitAll();
-            } finally {
-                nanosInBands += System.nanoTime() - started;
-            }
-        }
-
-        private void awaitAll() {
-            Throwable failure = null;
-            try {
-                drain();
-            } catch (RuntimeException | Error e) {
-                next.set(count); // the others stop after the task at hand
-                failure = e;
-            }
-            // Every worker is waited for, even when interrupted: none may still be drawing when this returns.
-            boolean interrupted = false;
-            for (Future<?> f : running) {
-                while (true) {
-                    try {
-                        f.get();
-                        break;
-                    } catch (ExecutionException e) {
-                        failure = failure == null ? e.getCause() : failure;
-                        break;
-                    } catch (CancellationException e) {
-                        failure = failure == null ? e : failure; // closed while drawing
-                        break;
-                    } catch (InterruptedException e) {
-                        interrupted = true;
-                    }
-                }
-            }
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
-            if (failure instanceof RuntimeException r) {
-                throw r;
-            }
-            if (failure instanceof Error e) {
-                throw e;
-            }
-            if (failure != null) {
-                throw new IllegalStateException(failure);
-            }
-        }
     }
 
     /** Stops the workers (they finish nothing new); the caller's thread is untouched. */

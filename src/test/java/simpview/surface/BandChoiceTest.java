@@ -81,8 +81,10 @@ class BandChoiceTest {
             int bands = two.bands(PageCanvas.PANEL).count();
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
             assertEquals(2 * bands, tasks[0], "small faces, two threads given: both batches in bands");
-            pixels(large, DrawingThreads.upTo(2), tasks);
-            assertEquals(bands, tasks[0], "large fills, no count given: bands");
+            // Each fill is 450 pixels on a side, 101,250 pixels: a batch is handed off once it covers
+            // 120,000 (BatchDrawing.MOST_PIXELS), every second fill, so that drawing starts while the rest is read.
+            assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.upTo(2), tasks));
+            assertEquals(6 * bands, tasks[0], "12 large fills, no count given: 6 batches, each in bands");
         }
     }
 

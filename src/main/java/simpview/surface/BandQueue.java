@@ -1,0 +1,365 @@
+package simpview.surface;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+
+/**
+ * Batches of primitives drawn band by band by all the threads, each band's
+ * batches in the order they were handed in, while the thread that hands
+ * them in (the one reading the scene) fills the next: band b of a batch is
+ * drawn as soon as band b of the batch before it is, whatever the other
+ * bands are doing, so no thread waits at a batch's end for the slowest band.
+ * Each pixel belongs to one band and sees its writes in drawing order, so
+ * the picture is the same to the bit as one thread drawing the scene as it
+ * reads it.
+ *
+ * <p>The batches live in a ring of {@code slots} the caller owns: batch k in
+ * slot k mod slots. The caller fills the slot {@link #slot} gives, hands it
+ * in with {@link #publish}, and asks for the next slot, which is free once
+ * every band has drawn the batch that was in it; waiting for it, the caller
+ * draws bands itself. A batch may instead be drawn whole, as one band, by
+ * one thread ({@link BandChoice}): it is drawn once every band has drawn
+ * every batch before it, and every band's next batch waits for it.
+ *
+ * <p>Which thread draws which band does not change the picture; for speed,
+ * each thread first draws its own bands (band b is thread b mod threads's,
+ * the caller being thread 0), so that a band's rows stay in one core's
+ * cache from batch to batch, and takes another's only when its own are
+ * drawn, the least drawn first.
+ *
+ * <p>Used by one thread, the one that fills the batches; the workers are
+ * {@link DrawingThreads}'s, started at a picture's first batch and let go
+ * by {@link #finish}. Everything the threads share is guarded by one lock,
+ * taken twice per band of a batch; the drawing itself runs outside it.
+ */
+public final class BandQueue {
+
+    /** Draws the batches: what the queue hands each thread. */
+    public interface Drawer {
+        /** Draws band {@code band}'s rows of the batch in {@code slot}. */
+        void band(int slot, int band);
+
+        /** Draws the batch in {@code slot} over the whole panel. */
+        void whole(int slot);
+    }
+
+    /** What {@link #claim} returns when nothing can be drawn now. */
+    private static final int NOTHING = -1;
+
+    private final DrawingThreads threads;
+    private final int bands;
+    private final int slots;
+    private final Drawer drawer;
+    private final ReentrantLock lock = new ReentrantLock();
+    /** Signalled when a batch is handed in, a band or whole batch is drawn, or the picture is done. */
+    private final Condition changed = lock.newCondition();
+
+    // Guarded by lock.
+    /** How many batches each band has drawn (a batch drawn whole counts for every band). */
+    private final int[] drawn;
+    /** True while a thread draws the band. */
+    private final boolean[] claimed;
+    /** True when the batch in the slot is drawn whole. */
+    private final boolean[] whole;
+    /** True while a thread draws a batch whole. */
+    private boolean wholeClaimed;
+    /** Batches handed in so far. */
+    private int published;
+    /** Threads waiting for a change. */
+    private int waiting;
+    /** True when no picture is being drawn: the workers return. */
+    private boolean stopping = true;
+    /** What a drawer threw first, or null. */
+    private Throwable failure;
+    /** The workers started for the picture at hand. */
+    private final List<Future<?>> running = new ArrayList<>();
+    /** When the picture's first batch was handed in. */
+    private long since;
+
+    /**
+     * For a panel drawn in {@code bands} bands (1 or more) by
+     * {@code threads}, batches in a ring of {@code slots} (2 or more),
+     * drawn by {@code drawer}.
+     */
+    BandQueue(DrawingThreads threads, int bands, int slots, Drawer drawer) {
+        if (bands < 1 || slots < 2) {
+            throw new IllegalArgumentException(bands + " bands, " + slots + " slots");
+        }
+        this.threads = threads;
+        this.bands = bands;
+        this.slots = slots;
+        this.drawer = drawer;
+        this.drawn = new int[bands];
+        this.claimed = new boolean[bands];
+        this.whole = new boolean[slots];
+    }
+
+    /** How many slots the ring has: the caller keeps that many batches. */
+    public int slots() {
+        return slots;
+    }
+
+    /**
+     * The slot to fill next, once it is free: every band has drawn the batch
+     * that was in it (this thread drawing bands meanwhile). Throws what a
+     * drawer failed with, once every thread has stopped.
+     */
+    public int slot() {
+        lock.lock();
+        try {
+            int next = published;
+            while (failure == null && lowest() < next - slots + 1) {
+                helpOrWait();
+            }
+            if (failure == null) {
+                return next % slots;
+            }
+        } finally {
+            lock.unlock();
+        }
+        finish(); // throws the failure
+        throw new IllegalStateException("a drawer failed, and finish did not say so");
+    }
+
+    /**
+     * Hands in the batch filled in the slot {@link #slot} gave, to be drawn
+     * band by band, or whole when {@code drawnWhole}; returns at once (with
+     * no worker, after drawing it).
+     */
+    public void publish(boolean drawnWhole) {
+        lock.lock();
+        try {
+            whole[published % slots] = drawnWhole;
+            published++;
+            if (stopping) {
+                stopping = false;
+                since = System.nanoTime();
+                for (int w = 1; w < threads.threads(); w++) {
+                    int home = w;
+                    running.add(threads.submit(() -> work(home)));
+                }
+            }
+            if (waiting > 0) {
+                changed.signalAll();
+            }
+        } finally {
+            lock.unlock();
+        }
+        threads.counted(drawnWhole ? 1 : bands, 0);
+        if (threads.isOne()) {
+            finish();
+        }
+    }
+
+    /**
+     * Returns when every batch handed in is drawn (this thread drawing
+     * bands meanwhile) and the workers have returned; throws the first
+     * failure of a drawer once every thread has stopped drawing. The queue
+     * can be used again after a failure; the failed picture's undrawn rest
+     * is left undrawn.
+     */
+    public void finish() {
+        List<Future<?>> workers;
+        Throwable failed;
+        long start;
+        lock.lock();
+        try {
+            while (failure == null ? lowest() < published : !nothingClaimed()) {
+                helpOrWait();
+            }
+            if (stopping) {
+                return;
+            }
+            stopping = true;
+            changed.signalAll();
+            workers = new ArrayList<>(running);
+            running.clear();
+            failed = failure;
+            failure = null;
+            Arrays.fill(drawn, published);
+            start = since;
+        } finally {
+            lock.unlock();
+        }
+        failed = awaitAll(workers, failed);
+        threads.counted(0, System.nanoTime() - start);
+        if (failed instanceof RuntimeException r) {
+            throw r;
+        }
+        if (failed instanceof Error e) {
+            throw e;
+        }
+        if (failed != null) {
+            throw new IllegalStateException(failed);
+        }
+    }
+
+    /** Every worker is waited for, even when interrupted: none may still be drawing when this returns. */
+    private static Throwable awaitAll(List<Future<?>> workers, Throwable failed) {
+        boolean interrupted = false;
+        for (Future<?> f : workers) {
+            while (true) {
+                try {
+                    f.get();
+                    break;
+                } catch (ExecutionException e) {
+                    failed = failed == null ? e.getCause() : failed;
+                    break;
+                } catch (CancellationException e) {
+                    break; // closed before it ran: the caller drew its share
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        return failed;
+    }
+
+    /** A worker's loop: draws what it can, its own bands first, and waits for more until the picture is drawn. */
+    private void work(int home) {
+        lock.lock();
+        try {
+            while (!stopping) {
+                int item = claim(home);
+                if (item != NOTHING) {
+                    draw(item);
+                    continue;
+                }
+                waiting++;
+                try {
+                    changed.await();
+                } catch (InterruptedException e) {
+                    return; // closed: the caller draws whatever is left
+                } finally {
+                    waiting--;
+                }
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * With the lock held, on the caller's thread: draws something if it can,
+     * or else waits for a change. An interrupt does not stop it (the picture
+     * must not be left half drawn by others); the thread stays interrupted.
+     */
+    private void helpOrWait() {
+        int item = claim(0);
+        if (item != NOTHING) {
+            draw(item);
+            return;
+        }
+        waiting++;
+        try {
+            changed.awaitUninterruptibly();
+        } finally {
+            waiting--;
+        }
+    }
+
+    /**
+     * With the lock held: takes something to draw, for thread {@code home}:
+     * a band of its own whose next batch is handed in, else another thread's,
+     * the least drawn first; else a batch to be drawn whole, once every band
+     * has reached it and none is being drawn. Returns the batch times
+     * (bands + 1) plus the band, or plus bands for a batch drawn whole;
+     * NOTHING when there is nothing to draw now, or a drawer has failed.
+     */
+    private int claim(int home) {
+        if (failure != null) {
+            return NOTHING;
+        }
+        int best = NOTHING;
+        boolean bestMine = false;
+        int lowest = Integer.MAX_VALUE;
+        boolean anyClaimed = false;
+        int count = threads.threads();
+        for (int b = 0; b < bands; b++) {
+            int k = drawn[b];
+            lowest = Math.min(lowest, k);
+            anyClaimed |= claimed[b];
+            if (claimed[b] || k >= published || whole[k % slots]) {
+                continue;
+            }
+            boolean mine = b % count == home;
+            if (best == NOTHING || (mine && !bestMine) || (mine == bestMine && k < drawn[best])) {
+                best = b;
+                bestMine = mine;
+            }
+        }
+        if (best != NOTHING) {
+            claimed[best] = true;
+            return drawn[best] * (bands + 1) + best;
+        }
+        if (!anyClaimed && !wholeClaimed && lowest < published && whole[lowest % slots]) {
+            wholeClaimed = true; // every band is at this batch: none can pass a batch drawn whole
+            return lowest * (bands + 1) + bands;
+        }
+        return NOTHING;
+    }
+
+    /**
+     * With the lock held: draws what {@link #claim} gave, the lock let go
+     * meanwhile, then marks it drawn and wakes whoever waits.
+     */
+    private void draw(int item) {
+        int batch = item / (bands + 1);
+        int band = item % (bands + 1);
+        Throwable failed = null;
+        lock.unlock();
+        try {
+            if (band == bands) {
+                drawer.whole(batch % slots);
+            } else {
+                drawer.band(batch % slots, band);
+            }
+        } catch (RuntimeException | Error e) {
+            failed = e;
+        } finally {
+            lock.lock();
+        }
+        if (band == bands) {
+            Arrays.fill(drawn, batch + 1);
+            wholeClaimed = false;
+        } else {
+            drawn[band] = batch + 1;
+            claimed[band] = false;
+        }
+        if (failed != null && failure == null) {
+            failure = failed;
+        }
+        if (waiting > 0) {
+            changed.signalAll();
+        }
+    }
+
+    private int lowest() {
+        int low = Integer.MAX_VALUE;
+        for (int k : drawn) {
+            low = Math.min(low, k);
+        }
+        return low;
+    }
+
+    private boolean nothingClaimed() {
+        if (wholeClaimed) {
+            return false;
+        }
+        for (boolean c : claimed) {
+            if (c) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

@@ -1,0 +1,202 @@
+package simpview.surface;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Random;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicIntegerArray;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The band queue: every band of every batch drawn once, each band's batches
+ * in order, batches drawn whole apart from everything, no wait at a batch's
+ * end, slots given back only when drawn, failures passed on.
+ */
+class BandQueueTest {
+
+    /** Logs what was drawn: per band, the batches in the order drawn (a batch drawn whole logged for every band). */
+    private static final class Log implements BandQueue.Drawer {
+        final int bands;
+        /** The batch in each slot, set by the test before it hands the slot in. */
+        final int[] batchIn;
+        final List<List<Integer>> perBand = new ArrayList<>();
+        final Set<String> threads = ConcurrentHashMap.newKeySet();
+        /** Bands being drawn now, and batches drawn whole now: a whole batch must see none of either. */
+        final AtomicIntegerArray busy = new AtomicIntegerArray(2);
+
+        Log(int bands, int slots) {
+            this.bands = bands;
+            this.batchIn = new int[slots];
+            for (int b = 0; b < bands; b++) {
+                perBand.add(Collections.synchronizedList(new ArrayList<>()));
+            }
+        }
+
+        @Override
+        public void band(int slot, int band) {
+            busy.incrementAndGet(0);
+            assertEquals(0, busy.get(1), "a band drawn while a batch is drawn whole");
+            threads.add(Thread.currentThread().getName());
+            perBand.get(band).add(batchIn[slot]);
+            busy.decrementAndGet(0);
+        }
+
+        @Override
+        public void whole(int slot) {
+            busy.incrementAndGet(1);
+            assertEquals(0, busy.get(0), "a batch drawn whole while bands are drawn");
+            threads.add(Thread.currentThread().getName());
+            for (List<Integer> band : perBand) {
+                band.add(batchIn[slot]);
+            }
+            busy.decrementAndGet(1);
+        }
+    }
+
+    @Test
+    void everyBandOfEveryBatchIsDrawnOnceInOrderOnNamedThreads() {
+        for (int threadCount : new int[] {1, 2, 3, 7}) {
+            try (DrawingThreads threads = DrawingThreads.of(threadCount)) {
+                Log log = new Log(5, 3);
+                BandQueue queue = threads.queue(5, 3, log);
+                Random random = new Random(22);
+                boolean[] drawnWhole = new boolean[60];
+                for (int k = 0; k < 60; k++) {
+                    int slot = queue.slot();
+                    log.batchIn[slot] = k;
+                    drawnWhole[k] = random.nextInt(4) == 0;
+                    queue.publish(drawnWhole[k]);
+                }
+                queue.finish();
+                for (int b = 0; b < 5; b++) {
+                    List<Integer> order = new ArrayList<>();
+                    for (int k = 0; k < 60; k++) {
+                        order.add(k);
+                    }
+                    assertEquals(order, log.perBand.get(b), threadCount + " threads, band " + b);
+                }
+                String caller = Thread.currentThread().getName();
+                for (String name : log.threads) {
+                    assertTrue(name.equals(caller) || name.startsWith("simpview-band-"), name);
+                }
+                int whole = 0;
+                for (boolean w : drawnWhole) {
+                    whole += w ? 1 : 0;
+                }
+                assertEquals(whole + 5L * (60 - whole), threads.tasks());
+            }
+        }
+    }
+
+    @Test
+    void aBandGoesOnToTheNextBatchWhileAnotherBandIsStillOnTheLast() throws InterruptedException {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            CountDownLatch nextBatchDrawn = new CountDownLatch(1);
+            int[] batchIn = new int[3];
+            boolean[] waited = new boolean[1];
+            BandQueue queue = threads.queue(2, 3, new BandQueue.Drawer() {
+                @Override
+                public void band(int slot, int band) {
+                    if (batchIn[slot] == 0 && band == 0) {
+                        try {
+                            // With a wait at each batch's end, band 1 of batch 1 could not be drawn before this returns.
+                            waited[0] = nextBatchDrawn.await(20, TimeUnit.SECONDS);
+                        } catch (InterruptedException e) {
+                            Thread.currentThread().interrupt();
+                        }
+                    }
+                    if (batchIn[slot] == 1 && band == 1) {
+                        nextBatchDrawn.countDown();
+                    }
+                }
+
+                @Override
+                public void whole(int slot) {
+                    throw new AssertionError("nothing is drawn whole here");
+                }
+            });
+            for (int k = 0; k < 2; k++) {
+                batchIn[queue.slot()] = k;
+                queue.publish(false);
+            }
+            queue.finish();
+            assertTrue(waited[0], "band 1 of batch 1 was drawn while band 0 of batch 0 was being drawn");
+        }
+    }
+
+    @Test
+    void aSlotIsGivenBackOnlyOnceEveryBandHasDrawnIt() {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            Log log = new Log(4, 2);
+            BandQueue queue = threads.queue(4, 2, log);
+            for (int k = 0; k < 30; k++) {
+                int slot = queue.slot();
+                for (int b = 0; b < 4; b++) {
+                    // The batch that was in the slot, k - 2, is drawn by every band before the slot is given back.
+                    assertTrue(log.perBand.get(b).size() >= k - 1, "batch " + k + ", band " + b);
+                }
+                log.batchIn[slot] = k;
+                queue.publish(false);
+            }
+            queue.finish();
+        }
+    }
+
+    @Test
+    void oneThreadDrawsEachBatchAsItIsHandedIn() {
+        try (DrawingThreads threads = DrawingThreads.one()) {
+            Log log = new Log(3, 2);
+            BandQueue queue = threads.queue(3, 2, log);
+            log.batchIn[queue.slot()] = 0;
+            queue.publish(false);
+            for (int b = 0; b < 3; b++) {
+                assertEquals(List.of(0), log.perBand.get(b));
+            }
+            assertEquals(Set.of(Thread.currentThread().getName()), log.threads);
+            queue.finish();
+        }
+    }
+
+    @Test
+    void aFailureIsThrownOnceAllHaveStoppedAndTheQueueIsUsableAgain() {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            int[] batchIn = new int[2];
+            AtomicIntegerArray drawn = new AtomicIntegerArray(16);
+            BandQueue queue = threads.queue(8, 2, new BandQueue.Drawer() {
+                @Override
+                public void band(int slot, int band) {
+                    drawn.incrementAndGet(batchIn[slot]);
+                    if (batchIn[slot] == 1 && band == 5) {
+                        throw new IllegalStateException("band 5 of batch 1");
+                    }
+                }
+
+                @Override
+                public void whole(int slot) {
+                    drawn.incrementAndGet(batchIn[slot]);
+                }
+            });
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> {
+                for (int k = 0; k < 10; k++) {
+                    batchIn[queue.slot()] = k;
+                    queue.publish(false);
+                }
+                queue.finish();
+            });
+            assertEquals("band 5 of batch 1", e.getMessage());
+            int before = drawn.get(15);
+            batchIn[queue.slot()] = 15;
+            queue.publish(true);
+            queue.finish();
+            assertEquals(before + 1, drawn.get(15), "drawn again after the failure");
+        }
+    }
+}
