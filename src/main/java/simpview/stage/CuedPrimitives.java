@@ -25,9 +25,9 @@ import simpview.surface.RowBands;
  * alone, never stepping from the row before, so a band's rows are exactly
  * the whole primitive's.
  *
- * <p>Two batches are kept: one is filled while the other is drawn
- * ({@link BatchDrawing}). A batch is handed off when it is full, and the
- * last at the end of the scene ({@link #flush}); filled on the one thread
+ * <p>A ring of batches is kept: one is filled while the others are drawn
+ * ({@link BatchDrawing}). A batch is handed off when it is full or covers
+ * many pixels, and the last at the end of the scene ({@link #flush}); filled on the one thread
  * that draws the scene.
  */
 public final class CuedPrimitives {
@@ -55,22 +55,19 @@ public final class CuedPrimitives {
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
         }
-        this.wholeDrawer = bands.count() == 1 ? drawers[0] : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel);
+        this.wholeDrawer = bands.count() == 1 ? drawers[0]
+                : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel);
     }
 
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
     void add(int what, double[] p, int at) {
         Batch b = batches.filling();
         int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
-        boolean heavy = batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED, what == Painter.WIRE);
+        boolean heavy = batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED,
+                what == Painter.WIRE);
         if (heavy || b.size >= MOST_PRIMITIVES) {
-            handOff();
+            batches.handOff();
         }
-    }
-
-    /** Hands the batch filled off to be drawn; the other is filled next. */
-    private void handOff() {
-        batches.handOff();
     }
 
     private void drawBand(Batch b, int band) {
@@ -87,7 +84,7 @@ public final class CuedPrimitives {
      * all is drawn.
      */
     public void flush() {
-        handOff();
+        batches.handOff();
         batches.finish();
     }
 

@@ -28,9 +28,9 @@ import simpview.surface.ZBuffer;
  * the same order as when one thread draws the scene as it is read, and its
  * colour, depth and owner are the same to the bit.
  *
- * <p>Two batches are kept: one is filled while the other is drawn
- * ({@link BatchDrawing}). A batch is handed off when it is full, and the
- * last at the end of the scene ({@link #flush}), so a scene of any size takes
+ * <p>A ring of batches is kept: one is filled while the others are drawn
+ * ({@link BatchDrawing}). A batch is handed off when it is full or covers
+ * many pixels, and the last at the end of the scene ({@link #flush}), so a scene of any size takes
  * bounded room. Filled on the one thread that reads the scene.
  */
 public final class LitPrimitives {
@@ -93,15 +93,11 @@ public final class LitPrimitives {
     void add(byte what, double[] v, int n, int channelCount, int look) {
         Batch b = batches.filling();
         b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current());
-        boolean heavy = batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL, what == OUTLINE);
+        boolean heavy = batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL,
+                what == OUTLINE);
         if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
-            handOff();
+            batches.handOff();
         }
-    }
-
-    /** Hands the batch filled off to be drawn; the other is filled next. */
-    private void handOff() {
-        batches.handOff();
     }
 
     private void drawBand(Batch b, int band) {
@@ -118,7 +114,7 @@ public final class LitPrimitives {
      * all is drawn.
      */
     public void flush() {
-        handOff();
+        batches.handOff();
         batches.finish();
     }
 

@@ -8,10 +8,10 @@ package simpview.surface;
  * A count the user gave ({@code --threads N}, {@link DrawingThreads#of}) is
  * always used as it is.
  *
- * <p>Batches are drawn while the next one is recorded (the stage's
- * {@code BatchDrawing}): one kept whole is drawn by a worker alone, beside
- * the reading; one split is drawn by the workers, and by the reading thread
- * once it has filled the next batch. Splitting costs each band the row test
+ * <p>Batches are drawn while the next ones are recorded ({@link BandQueue}):
+ * one kept whole is drawn by one thread alone, beside the reading; one split
+ * is drawn band by band by the workers, and by the reading thread whenever
+ * it waits for a batch to fill. Splitting costs each band the row test
  * of every primitive and the set-up of every triangle that crosses into it,
  * which pays unless the batch is little work in all: a batch of fewer than
  * {@link #LEAST_PIXELS} pixels ({@link #pixels}: each filled polygon's

@@ -27,8 +27,8 @@ public final class DrawingThreads implements AutoCloseable {
 
     /**
      * Bands per thread: more bands than threads even out pages whose content
-     * is not spread evenly, and shorten the wait at the end of a batch for
-     * the last band; each band costs the row test of every primitive and the
+     * is not spread evenly, and shorten the wait at a picture's end for the
+     * last band; each band costs the row test of every primitive and the
      * set-up of each triangle that crosses into it. 8 measured faster than 3
      * on the course's lit pages on two threads (0.84 to 0.99 of the time)
      * and the same on A2's (docs/performance.md, session 4).
