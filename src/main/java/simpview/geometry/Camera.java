@@ -131,6 +131,17 @@ public final class Camera {
         return perspective ? 1 / -z : 1;
     }
 
+    /**
+     * True when (x, y, z) is inside every plane: each {@link #distance}, the
+     * same expressions, {@code >= 0} (so NaN is never inside). One call for
+     * the clipper's common case, a vertex in view.
+     */
+    public boolean inside(double x, double y, double z) {
+        double w = perspective ? -z : 1;
+        return hither - z >= 0 && z - yon >= 0 && x - xlow * w >= 0 && xhigh * w - x >= 0
+                && y - ylow * w >= 0 && yhigh * w - y >= 0;
+    }
+
     /** The signed distance of (x, y, z) to plane {@code plane}: {@code >= 0} inside the view. */
     public double distance(int plane, double x, double y, double z) {
         double w = perspective ? -z : 1;

@@ -47,6 +47,9 @@ public final class Clipper {
         ensure(n + Camera.PLANES);
         System.arraycopy(p, at, front, 0, n * stride);
         count = n;
+        if (allInside(camera)) {
+            return n; // every pass would keep every vertex as it is
+        }
         for (int plane = 0; plane < Camera.PLANES && count > 0; plane++) {
             if (anyOutside(camera, plane)) {
                 clipAgainst(plane);
@@ -62,6 +65,18 @@ public final class Clipper {
 
     public int stride() {
         return stride;
+    }
+
+    /** True when every vertex of the current polygon is inside every plane: then no pass changes it. */
+    private boolean allInside(Camera camera) {
+        double[] v = front;
+        for (int k = 0; k < count; k++) {
+            int o = k * stride;
+            if (!camera.inside(v[o], v[o + 1], v[o + 2])) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Fills {@link #distances} for the current polygon; true when some vertex is outside. */

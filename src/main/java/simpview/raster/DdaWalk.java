@@ -10,12 +10,25 @@ package simpview.raster;
  * one), unless there are more than {@value #MAX_ADDED_SKIP} of them: then the
  * minor coordinate jumps there by one multiplication, which may differ from
  * the sum in the last bit.
+ *
+ * <p>A walk may be kept to a window of rows ({@link #rows}, a band drawn by
+ * one thread): it then visits exactly the pixels of the whole walk that lie
+ * on those rows. A line along y starts at the window's first row, the steps
+ * before it added one by one after the jump above (if any), so its minor
+ * coordinate there has the same bits; a line along x stops once its rounded
+ * y, which only ever moves one way, has left the window.
  */
 public final class DdaWalk implements LineWalk {
 
     /** Above this many hidden steps the walk jumps instead of adding. */
     static final int MAX_ADDED_SKIP = 1 << 20;
 
+    /** The rows visited: rowFrom &lt;= y &lt; rowTo. */
+    private int rowFrom;
+    private int rowTo = Integer.MAX_VALUE;
+    /** The minor coordinates visited: minorFrom &lt;= m &lt; minorTo. */
+    private int minorFrom;
+    private int minorTo;
     private boolean xMajor;
     private boolean reversed;
     private int minorLimit;
@@ -30,6 +43,12 @@ public final class DdaWalk implements LineWalk {
     private int x;
     private int y;
     private double t;
+
+    /** From now on only rows from &lt;= y &lt; to are visited (a band's); all rows by default. */
+    public void rows(int from, int to) {
+        rowFrom = from;
+        rowTo = to;
+    }
 
     @Override
     public boolean start(double px, double py, double qx, double qy, int width, int height) {
@@ -51,9 +70,16 @@ public final class DdaWalk implements LineWalk {
         minorLimit = xMajor ? height : width;
         double lo = Math.max(major0, 0);
         double hi = Math.min(major1, majorLimit - 1);
-        if (lo > hi) {
+        // Along y, the window's rows clip the major axis; the steps up to its first row are added below.
+        double windowLo = xMajor ? lo : Math.max(lo, rowFrom);
+        if (!xMajor) {
+            hi = Math.min(hi, (double) rowTo - 1);
+        }
+        if (windowLo > hi) {
             return false;
         }
+        minorFrom = xMajor ? Math.max(rowFrom, 0) : 0;
+        minorTo = xMajor ? Math.min(rowTo, minorLimit) : minorLimit;
         // Halves keep the differences finite for any finite ends; scaling by a
         // power of two is exact, so the quotients are the same bits as unhalved.
         halfStart = 0.5 * major0;
@@ -68,8 +94,11 @@ public final class DdaWalk implements LineWalk {
         } else {
             minor = minor0 + slope * skip;
         }
-        major = (int) lo;
-        remaining = (int) (hi - lo) + 1;
+        for (double n = lo; n < windowLo; n++) {
+            minor += slope;
+        }
+        major = (int) windowLo;
+        remaining = (int) (hi - windowLo) + 1;
         first = true;
         return true;
     }
@@ -85,11 +114,14 @@ public final class DdaWalk implements LineWalk {
             }
             remaining--;
             double m = Math.floor(minor + 0.5);
-            if (m >= 0 && m < minorLimit) {
+            if (m >= minorFrom && m < minorTo) {
                 x = xMajor ? major : (int) m;
                 y = xMajor ? (int) m : major;
                 t = halfSteps == 0 ? 0 : (0.5 * major - halfStart) / halfSteps;
                 return true;
+            }
+            if (xMajor && (slope >= 0 && m >= minorTo || slope <= 0 && m < minorFrom)) {
+                remaining = 0; // y has left the window for good
             }
         }
         return false;

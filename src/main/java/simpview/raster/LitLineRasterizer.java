@@ -16,6 +16,11 @@ public final class LitLineRasterizer {
     private final DdaWalk walk = new DdaWalk();
     private final double[] at = new double[LitPolygonRasterizer.MAX_CHANNELS];
 
+    /** From now on only rows from &lt;= y &lt; to are drawn (a band's): the same pixels of those rows as the whole line. */
+    public void rows(int from, int to) {
+        walk.rows(from, to);
+    }
+
     /** The line from the vertex at v[from] to the vertex at v[to] on a width x height panel. */
     public void draw(double[] v, int from, int to, int channels, int width, int height, FragmentSink sink) {
         if (!walk.start(v[from], v[from + 1], v[to], v[to + 1], width, height)) {

@@ -223,6 +223,7 @@ public final class LitPrimitives {
             this.fragments = fragments;
             fragments.rows(from, to);
             fill.rows(from, to);
+            lines.rows(from, to);
         }
 
         void draw(Batch b) {

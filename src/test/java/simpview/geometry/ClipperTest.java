@@ -143,4 +143,22 @@ class ClipperTest {
         assertTrue(kept > 8, "the circle of radius 25 at z = -20 crosses the +-20 window on every side: " + kept);
         assertInside(EYE, kept);
     }
+
+    @Test
+    void insideIsEveryPlanesDistanceAtLeastZero() {
+        java.util.Random random = new java.util.Random(11);
+        double[] special = {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 0, -0.0, -1, 1, -100, 20};
+        for (Camera camera : new Camera[] {EYE, Camera.PARALLEL}) {
+            for (int i = 0; i < 20_000; i++) {
+                double x = i % 7 == 0 ? special[random.nextInt(special.length)] : -150 + 300 * random.nextDouble();
+                double y = i % 11 == 0 ? special[random.nextInt(special.length)] : -150 + 300 * random.nextDouble();
+                double z = i % 13 == 0 ? special[random.nextInt(special.length)] : -250 + 260 * random.nextDouble();
+                boolean everyPlane = true;
+                for (int plane = 0; plane < Camera.PLANES; plane++) {
+                    everyPlane &= camera.distance(plane, x, y, z) >= 0;
+                }
+                assertEquals(everyPlane, camera.inside(x, y, z), x + ", " + y + ", " + z);
+            }
+        }
+    }
 }
