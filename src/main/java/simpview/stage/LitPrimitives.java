@@ -47,6 +47,10 @@ public final class LitPrimitives {
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
+    private final ZBuffer zbuffer;
+    private final RowBands bands;
+    /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
+    private final boolean[] depthReset;
     /** The lighting last frozen, and what from. */
     private Supplier<PointShader> frozen;
     private LitState frozenFrom;
@@ -55,13 +59,19 @@ public final class LitPrimitives {
     /**
      * Draws on {@code panel} (panel coordinates), depth-tested against
      * {@code zbuffer}, with {@code threads}; {@code provenance} is the
-     * record the panel writes owners into, or null.
+     * record the panel writes owners into, or null. The z-buffer starts at
+     * -infinity: each band's drawer resets its rows before it first draws
+     * (whatever the rows held before), and {@link #flush} the rows no drawer
+     * reached.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch::new, this::drawBand,
                 this::drawWhole);
         this.provenance = provenance;
-        RowBands bands = batches.bands();
+        this.zbuffer = zbuffer;
+        zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
+        this.bands = batches.bands();
+        this.depthReset = new boolean[bands.count()];
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
@@ -116,6 +126,17 @@ public final class LitPrimitives {
     public void flush() {
         batches.handOff();
         batches.finish();
+        for (int b = 0; b < depthReset.length; b++) {
+            resetDepth(b);
+        }
+    }
+
+    /** Band b's rows of the z-buffer reset, if they are not yet: on the thread drawing them. */
+    private void resetDepth(int b) {
+        if (!depthReset[b]) {
+            zbuffer.resetRows(bands.start(b), bands.end(b));
+            depthReset[b] = true;
+        }
     }
 
     /**
@@ -227,6 +248,13 @@ public final class LitPrimitives {
         }
 
         void draw(Batch b) {
+            if (band == Provenance.EVERY_BAND) {
+                for (int i = 0; i < depthReset.length; i++) {
+                    resetDepth(i);
+                }
+            } else {
+                resetDepth(band);
+            }
             int width = fragments.width();
             int height = fragments.height();
             double[] numbers = b.numbers;

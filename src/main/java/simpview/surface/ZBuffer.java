@@ -45,6 +45,22 @@ public final class ZBuffer {
         }
     }
 
+    /**
+     * Every entry is to be {@code farthest}, set row by row by whoever draws
+     * each row ({@link #resetRows}) before it tests any: the drawer of a band
+     * of rows resets its own, on its own thread, where its drawing will find
+     * them in cache.
+     */
+    public void resetByRows(double farthest) {
+        resetTo = farthest;
+        atFarPlane = false;
+    }
+
+    /** Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} gave. */
+    public void resetRows(int from, int to) {
+        Arrays.fill(depth, from * width, to * width, resetTo);
+    }
+
     /** The depth every entry had after the last reset. */
     public double farthest() {
         return resetTo;

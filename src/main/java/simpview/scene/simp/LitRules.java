@@ -202,23 +202,26 @@ final class LitRules implements RuleSet {
         }
     }
 
-    /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
     /** The state as the commands so far left it: read, never to be changed. */
     LitState state() {
         return state;
     }
 
     /**
-     * With more than one of {@code threads}: from now on the primitives are
-     * recorded and drawn band by band, depth-tested against {@code zbuffer}
-     * onto {@code panel} (the fragment stage's), owners into
-     * {@code provenance} (or null). Call before the scene is read.
+     * Resets {@code zbuffer} to -infinity and, with more than one of
+     * {@code threads}, from now on records the primitives to be drawn band by
+     * band, depth-tested against {@code zbuffer} onto {@code panel} (the
+     * fragment stage's), owners into {@code provenance} (or null); then each
+     * band's drawer resets its own rows of the z-buffer, on its own thread.
+     * Call before the scene is read.
      */
     void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        if (!threads.isOne()) {
-            record = new LitPrimitives(threads, zbuffer, panel, provenance);
-            geometry.recordTo(record);
+        if (threads.isOne()) {
+            zbuffer.reset(Double.NEGATIVE_INFINITY);
+            return;
         }
+        record = new LitPrimitives(threads, zbuffer, panel, provenance); // resets the z-buffer band by band
+        geometry.recordTo(record);
     }
 
     @Override
@@ -228,6 +231,7 @@ final class LitRules implements RuleSet {
         }
     }
 
+    /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
     double[] shownCentre() {
         return geometry.shownCentre();
     }

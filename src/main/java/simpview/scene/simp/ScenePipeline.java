@@ -210,16 +210,17 @@ public final class ScenePipeline {
 
     /** The lit rules on the canvas: its z-buffer from -infinity, fragments onto its panel. */
     private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
-        canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
         Drawable panel = canvas.litPanel();
         FragmentStage fragments = new FragmentStage(canvas.zbuffer(), panel);
         LitRules lit = new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
         DrawingWatch watch = monitor.watch();
         if (watch != null) {
             // Drawn on this thread alone: the watch sees each fragment as the rasterizers make it.
+            canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
             lit.fragmentsThrough(watch.fragments(fragments));
             watch.began(files::chain, lit.state());
         } else {
+            // Resets the z-buffer: at once on one thread, band by band by the bands' drawers with several.
             lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
         }
         return lit;
