@@ -100,11 +100,6 @@ public final class BandQueue {
         this.whole = new boolean[slots];
     }
 
-    /** How many slots the ring has: the caller keeps that many batches. */
-    public int slots() {
-        return slots;
-    }
-
     /**
      * The slot to fill next, once it is free: every band has drawn the batch
      * that was in it (this thread drawing bands meanwhile). Throws what a
