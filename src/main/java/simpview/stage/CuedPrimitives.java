@@ -27,8 +27,8 @@ import simpview.surface.RowBands;
  *
  * <p>A ring of batches is kept: one is filled while the others are drawn
  * ({@link BatchDrawing}). A batch is handed off when it is full or covers
- * many pixels, and the last at the end of the scene ({@link #flush}); filled on the one thread
- * that draws the scene.
+ * many pixels, and the last at the end of the scene ({@link #flush});
+ * filled on the one thread that draws the scene.
  */
 public final class CuedPrimitives {
 

@@ -30,8 +30,9 @@ import simpview.surface.ZBuffer;
  *
  * <p>A ring of batches is kept: one is filled while the others are drawn
  * ({@link BatchDrawing}). A batch is handed off when it is full or covers
- * many pixels, and the last at the end of the scene ({@link #flush}), so a scene of any size takes
- * bounded room. Filled on the one thread that reads the scene.
+ * many pixels, and the last at the end of the scene ({@link #flush}), so a
+ * scene of any size takes bounded room. Filled on the one thread that reads
+ * the scene.
  */
 public final class LitPrimitives {
 
