@@ -16,8 +16,8 @@ import simpview.surface.RowBands;
  * record ({@link CuedPrimitives}) and the lit one ({@link LitPrimitives}):
  * in recording order, band by band, while the recording thread goes on with
  * the next batch ({@link BandQueue}). A batch is handed off when the record
- * finds it full, or when it covers {@link #MOST_PIXELS}, so that a page of a
- * few large fills is drawn while the rest of it is read; each batch is
+ * finds it full, or when it covers as many pixels as the record says is
+ * worth a batch of its own, so that a page of a few large fills is drawn while the rest of it is read; each batch is
  * split into the panel's row bands or drawn as one band, as
  * {@link BandChoice} finds it pays. A batch kept as one band is drawn by one
  * thread alone, beside the recording: on a page of many small faces the
@@ -32,13 +32,6 @@ import simpview.surface.RowBands;
  */
 final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
-    /**
-     * A batch covering this many pixels is handed off, however few its
-     * primitives: the first large fills of a page are drawn while its later
-     * primitives are read. Measured on the course's fill-bound pages
-     * (docs/performance.md, session 5).
-     */
-    static final double MOST_PIXELS = 120_000;
     /**
      * Batches in the ring: one being filled and two being drawn, so the
      * recording runs up to two batches ahead of the slowest band.
@@ -63,6 +56,8 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     private final boolean weighs;
     /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
+    /** A batch covering this many pixels is handed off, however few its primitives. */
+    private final double mostPixels;
     /** The batch being filled. */
     private B filling;
 
@@ -70,11 +65,13 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * For a panel {@code height} rows high, drawn by {@code threads};
      * {@code provenance} is the owners' record, or null; {@code newBatch}
      * makes the ring's batches; a batch is drawn by {@code band} (given the
-     * batch and the band's number) when split, or by {@code wholePanel}.
+     * batch and the band's number) when split, or by {@code wholePanel}; a
+     * batch is handed off once it covers {@code mostPixels}.
      */
     BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Supplier<B> newBatch,
-            ObjIntConsumer<B> band, Consumer<B> wholePanel) {
+            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels) {
         this.threads = threads;
+        this.mostPixels = mostPixels;
         this.bands = threads.bands(height);
         this.weighs = !threads.isOne();
         for (int k = 0; k < SLOTS; k++) {
@@ -105,14 +102,14 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     /**
      * Adds a primitive to the batch's weight, {@link BandChoice#pixels} of
-     * its n corners, when weighed; true when the batch now covers
-     * {@link #MOST_PIXELS} or more, and is worth handing off.
+     * its n corners, when weighed; true when the batch now covers the
+     * pixels that make it worth handing off.
      */
     boolean weigh(double[] v, int at, int n, int stride, boolean filled, boolean closed) {
         if (weighs) {
             pixels += BandChoice.pixels(v, at, n, stride, filled, closed);
         }
-        return pixels >= MOST_PIXELS;
+        return pixels >= mostPixels;
     }
 
     /** The batch to record into. */

@@ -26,14 +26,21 @@ import simpview.surface.RowBands;
  * the whole primitive's.
  *
  * <p>A ring of batches is kept: one is filled while the others are drawn
- * ({@link BatchDrawing}). A batch is handed off when it is full or covers
- * many pixels, and the last at the end of the scene ({@link #flush});
- * filled on the one thread that draws the scene.
+ * ({@link BatchDrawing}). A batch is handed off when it is full, and the
+ * last at the end of the scene ({@link #flush}); filled on the one thread
+ * that draws the scene.
  */
 public final class CuedPrimitives {
 
     /** Primitives after which a batch is handed off. */
     private static final int MOST_PRIMITIVES = 4096;
+    /**
+     * Pixels after which a batch is handed off, however few its primitives:
+     * never, a depth-cued batch goes by its count alone. Its pixels are cheap,
+     * and handing off every 120,000 of them, as the lit record does, made A2's
+     * page 7 slower (docs/performance.md, session 5).
+     */
+    private static final double MOST_PIXELS = Double.POSITIVE_INFINITY;
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
@@ -48,7 +55,7 @@ public final class CuedPrimitives {
      */
     public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch::new, this::drawBand,
-                this::drawWhole);
+                this::drawWhole, MOST_PIXELS);
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];

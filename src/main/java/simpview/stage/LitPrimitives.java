@@ -42,6 +42,13 @@ public final class LitPrimitives {
     /** Primitives, or numbers, after which a batch is handed off. */
     private static final int MOST_PRIMITIVES = 4096;
     private static final int MOST_NUMBERS = 1 << 18;
+    /**
+     * Pixels after which a batch is handed off, however few its primitives:
+     * the first large fills of a page are drawn while its later primitives
+     * are read. Measured on the course's fill-bound pages (docs/performance.md,
+     * session 5).
+     */
+    private static final double MOST_PIXELS = 120_000;
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
@@ -67,7 +74,7 @@ public final class LitPrimitives {
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch::new, this::drawBand,
-                this::drawWhole);
+                this::drawWhole, MOST_PIXELS);
         this.provenance = provenance;
         this.zbuffer = zbuffer;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);

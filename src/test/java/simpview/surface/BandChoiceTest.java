@@ -81,10 +81,33 @@ class BandChoiceTest {
             int bands = two.bands(PageCanvas.PANEL).count();
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
             assertEquals(2 * bands, tasks[0], "small faces, two threads given: both batches in bands");
-            // Each fill is 450 pixels on a side, 101,250 pixels: a batch is handed off once it covers
-            // 120,000 (BatchDrawing.MOST_PIXELS), every second fill, so that drawing starts while the rest is read.
+            // A depth-cued batch is handed off by its count alone, however many pixels it covers.
             assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.upTo(2), tasks));
-            assertEquals(6 * bands, tasks[0], "12 large fills, no count given: 6 batches, each in bands");
+            assertEquals(bands, tasks[0], "12 large depth-cued fills, no count given: one batch, in bands");
+        }
+    }
+
+    @Test
+    void aLitBatchIsHandedOffOnceItCoversManyPixelsToTheSamePixels() throws Exception {
+        StringBuilder s = new StringBuilder("ambient 1 1 1\ncamera -1 -1 1 1 -1 -100\n");
+        for (int i = 0; i < 6; i++) {
+            // Corners at (-d, -d), (d, -d), (-d, d) at depth d reach the window's corners: half the panel,
+            // 211,250 pixels, more than the 120,000 after which a lit batch is handed off (LitPrimitives).
+            double d = 2 + 0.25 * i;
+            double red = i / 6.0;
+            s.append(String.format(Locale.ROOT, "polygon (%.2f, %.2f, %.2f, %.3f, 1, 0) (%.2f, %.2f, %.2f, %.3f, 1, 0)"
+                    + " (%.2f, %.2f, %.2f, %.3f, 1, 0)%n", -d, -d, -d, red, d, -d, -d, red, -d, d, -d, red));
+        }
+        Path fills = dir.resolve("fills.simp");
+        Files.writeString(fills, s);
+        long[] tasks = new long[1];
+        int[] oneThread = pixels(fills, DrawingThreads.one(), new long[1]);
+        assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count()
+                > 100_000, "the fills are drawn");
+        try (DrawingThreads two = DrawingThreads.of(2)) {
+            int bands = two.bands(PageCanvas.PANEL).count();
+            assertArrayEquals(oneThread, pixels(fills, DrawingThreads.upTo(2), tasks));
+            assertEquals(6 * bands, tasks[0], "6 lit fills of 211,250 pixels: each its own batch, in bands");
         }
     }
 
