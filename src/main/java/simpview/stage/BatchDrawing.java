@@ -52,7 +52,11 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     /** The ring: batch k in slot k mod SLOTS. */
     private final List<B> ring = new ArrayList<>();
     private final BandQueue queue;
-    /** True when there are threads to draw beside the recording: then each batch's pixels are counted. */
+    /**
+     * True when a batch's pixels decide something: whether it is split (the
+     * thread count chosen per picture) or when it is handed off (a record
+     * with a pixel threshold), with threads to draw beside the recording.
+     */
     private final boolean weighs;
     /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
     private double pixels;
@@ -73,7 +77,8 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         this.threads = threads;
         this.mostPixels = mostPixels;
         this.bands = threads.bands(height);
-        this.weighs = !threads.isOne();
+        this.weighs = !threads.isOne()
+                && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
         for (int k = 0; k < SLOTS; k++) {
             ring.add(newBatch.get());
         }
@@ -93,6 +98,38 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
             provenance.useBands(bands);
         }
         this.filling = ring.get(queue.slot());
+    }
+
+    /**
+     * The lowest row a recorded primitive may touch, of its n corners whose
+     * y are v[y], v[y + stride], ...: a row below the lowest corner, so that
+     * a band skips the primitive only when all of it lies a row or more
+     * outside ({@link #mayTouch}).
+     */
+    static double lowRow(double[] v, int y, int n, int stride) {
+        double low = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            low = Math.min(low, v[y + k * stride]);
+        }
+        return Math.floor(low - 1);
+    }
+
+    /** The highest row a recorded primitive may touch: a row above its highest corner, as {@link #lowRow}. */
+    static double highRow(double[] v, int y, int n, int stride) {
+        double high = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            high = Math.max(high, v[y + k * stride]);
+        }
+        return Math.ceil(high + 1);
+    }
+
+    /**
+     * True when a primitive between rows {@code low} and {@code high}
+     * ({@link #lowRow}, {@link #highRow}) may touch rows from &lt;= y &lt; to:
+     * it is skipped only when it surely lies outside (a NaN row never does).
+     */
+    static boolean mayTouch(double low, double high, int from, int to) {
+        return !(high < from || low >= to);
     }
 
     /** The row bands a split batch is drawn in, one drawer each. */

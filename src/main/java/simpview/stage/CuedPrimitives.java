@@ -121,17 +121,10 @@ public final class CuedPrimitives {
             }
             System.arraycopy(p, at, numbers, size * Painter.STRIDE, Painter.STRIDE);
             int corners = what == Painter.LINE ? 2 : 3;
-            double low = Double.POSITIVE_INFINITY;
-            double high = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < corners; k++) {
-                double y = p[at + k * Vertex.NUMBERS + Vertex.Y];
-                low = Math.min(low, y);
-                high = Math.max(high, y);
-            }
             kind[size] = (byte) what;
             owner[size] = by;
-            lowY[size] = Math.floor(low - 1);
-            highY[size] = Math.ceil(high + 1);
+            lowY[size] = BatchDrawing.lowRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
+            highY[size] = BatchDrawing.highRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
             size++;
             return corners;
         }
@@ -165,8 +158,7 @@ public final class CuedPrimitives {
 
         void draw(Batch b) {
             for (int k = 0; k < b.size; k++) {
-                // Conservative: a primitive is skipped only when all of it lies a row or more outside.
-                if (b.highY[k] < from || b.lowY[k] >= to) {
+                if (!BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
                     continue;
                 }
                 if (provenance != null) {

@@ -201,20 +201,13 @@ public final class LitPrimitives {
                 numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
             }
             System.arraycopy(v, 0, numbers, at, count);
-            double low = Double.POSITIVE_INFINITY;
-            double high = Double.NEGATIVE_INFINITY;
-            for (int k = 0; k < n; k++) {
-                double y = v[k * stride + FragmentLayout.Y];
-                low = Math.min(low, y);
-                high = Math.max(high, y);
-            }
             kind[size] = what;
             vertices[size] = n;
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
-            lowY[size] = Math.floor(low - 1);
-            highY[size] = Math.ceil(high + 1);
+            lowY[size] = BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride);
+            highY[size] = BatchDrawing.highRow(v, FragmentLayout.Y, n, stride);
             start[size + 1] = at + count;
             size++;
         }
@@ -268,8 +261,7 @@ public final class LitPrimitives {
             double[] numbers = b.numbers;
             look = -1;
             for (int k = 0; k < b.size; k++) {
-                // Conservative: a primitive is skipped only when all of it lies a row or more outside.
-                if (b.highY[k] < from || b.lowY[k] >= to) {
+                if (!BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
                     continue;
                 }
                 if (provenance != null) {

@@ -229,13 +229,8 @@ public final class BandQueue {
                     draw(item);
                     continue;
                 }
-                waiting++;
-                try {
-                    changed.await();
-                } catch (InterruptedException e) {
+                if (!awaitChange(true)) {
                     return; // closed: the caller draws whatever is left
-                } finally {
-                    waiting--;
                 }
             }
         } finally {
@@ -254,9 +249,26 @@ public final class BandQueue {
             draw(item);
             return;
         }
+        awaitChange(false);
+    }
+
+    /**
+     * With the lock held: waits for a change, counted among the waiters so
+     * that changes signal only when someone waits. An interruptible wait
+     * returns false when interrupted; the other waits through interrupts and
+     * leaves the thread interrupted.
+     */
+    private boolean awaitChange(boolean interruptible) {
         waiting++;
         try {
-            changed.awaitUninterruptibly();
+            if (interruptible) {
+                changed.await();
+            } else {
+                changed.awaitUninterruptibly();
+            }
+            return true;
+        } catch (InterruptedException e) {
+            return false;
         } finally {
             waiting--;
         }
