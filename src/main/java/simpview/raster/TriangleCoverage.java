@@ -56,19 +56,33 @@ final class TriangleCoverage {
         setUpEdge(edges[0], x1, y1, bx, by);
         setUpEdge(edges[1], bx, by, cx, cy);
         setUpEdge(edges[2], cx, cy, x1, y1);
-        minY = Math.min(y1, Math.min(y2, y3));
-        maxY = Math.max(y1, Math.max(y2, y3));
+        // A finite area means finite vertices (an infinite or NaN one makes
+        // it infinite or NaN), so these orders need compares only, not
+        // Math.min and max, whose NaN and signed-zero rules cost more and
+        // would change nothing here: a zero's sign is lost to the rows' casts.
+        minY = lower(y1, lower(y2, y3));
+        maxY = higher(y1, higher(y2, y3));
         return true;
+    }
+
+    private static double lower(double a, double b) {
+        return a < b ? a : b;
+    }
+
+    private static double higher(double a, double b) {
+        return a > b ? a : b;
     }
 
     /** The lowest row whose centre line the triangle may reach, within [0, height]. */
     int firstRow(int height) {
-        return (int) Math.max(0, Math.min(height, Math.ceil(minY - 0.5)));
+        double row = Math.ceil(minY - 0.5);
+        return row <= 0 ? 0 : row < height ? (int) row : height;
     }
 
     /** The highest such row, within [-1, height - 1]. */
     int lastRow(int height) {
-        return (int) Math.max(-1, Math.min(height - 1, Math.floor(maxY - 0.5)));
+        double row = Math.floor(maxY - 0.5);
+        return row <= -1 ? -1 : row < height - 1 ? (int) row : height - 1;
     }
 
     /** The covered run of a row, the intersection of one half-row per edge, into from and to; false when empty. */
@@ -219,9 +233,13 @@ final class TriangleCoverage {
             return (int) i;
         }
 
-        /** A guess clamped to [0, width]; NaN becomes 0. */
+        /**
+         * A guess clamped to [0, width]; NaN becomes 0. Compares, not
+         * Math.min: no NaN is left to order, and this runs for every edge of
+         * every row.
+         */
         private static double clampIndex(double estimate, int width) {
-            return estimate >= 0 ? Math.min(estimate, width) : 0;
+            return estimate >= 0 ? (estimate < width ? estimate : width) : 0;
         }
     }
 

@@ -213,7 +213,7 @@ public final class Lighting {
 
     /** max(0, x)^p, x taken as at most 1 (so 0^0 = 1, and NaN counts as 0). */
     private double power(double x) {
-        double c = x > 0 ? Math.min(x, 1) : 0;
+        double c = x > 0 ? (x < 1 ? x : 1) : 0;
         return exponent >= 0 ? bySquaring(c, exponent) : Math.pow(c, p);
     }
 
