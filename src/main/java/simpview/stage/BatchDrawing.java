@@ -49,8 +49,9 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     private final DrawingThreads threads;
     private final RowBands bands;
-    /** The ring: batch k in slot k mod SLOTS. */
-    private final List<B> ring = new ArrayList<>();
+    /** The ring: batch k in slot k mod SLOTS; the last picture's, when the threads kept it. */
+    private final Class<B> kind;
+    private final List<B> ring;
     private final BandQueue queue;
     /**
      * True when a batch's pixels decide something: whether it is split (the
@@ -68,19 +69,30 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     /**
      * For a panel {@code height} rows high, drawn by {@code threads};
      * {@code provenance} is the owners' record, or null; {@code newBatch}
-     * makes the ring's batches; a batch is drawn by {@code band} (given the
+     * makes the ring's batches (of class {@code kind}) when the threads kept
+     * none from the last picture; a batch is drawn by {@code band} (given the
      * batch and the band's number) when split, or by {@code wholePanel}; a
      * batch is handed off once it covers {@code mostPixels}.
      */
-    BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Supplier<B> newBatch,
+    BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Class<B> kind, Supplier<B> newBatch,
             ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels) {
         this.threads = threads;
         this.mostPixels = mostPixels;
         this.bands = threads.bands(height);
         this.weighs = !threads.isOne()
                 && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
-        for (int k = 0; k < SLOTS; k++) {
-            ring.add(newBatch.get());
+        this.kind = kind;
+        List<B> kept = threads.takeBatches(kind);
+        if (kept != null && kept.size() == SLOTS) {
+            ring = kept;
+            for (B b : ring) {
+                b.clear();
+            }
+        } else {
+            ring = new ArrayList<>();
+            for (int k = 0; k < SLOTS; k++) {
+                ring.add(newBatch.get());
+            }
         }
         this.queue = threads.queue(bands.count(), SLOTS, new BandQueue.Drawer() {
             @Override
@@ -170,8 +182,16 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         filling.clear();
     }
 
-    /** Returns when every batch handed off is drawn (this thread helping), throwing what a drawer failed with. */
+    /**
+     * Returns when every batch handed off is drawn (this thread helping),
+     * throwing what a drawer failed with; the ring is then given back to the
+     * threads for the next picture, as no thread draws from it any more.
+     */
     void finish() {
-        queue.finish();
+        try {
+            queue.finish();
+        } finally {
+            threads.keepBatches(kind, ring);
+        }
     }
 }

@@ -73,7 +73,7 @@ public final class LitPrimitives {
      * reached.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch::new, this::drawBand,
+        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new, this::drawBand,
                 this::drawWhole, MOST_PIXELS);
         this.provenance = provenance;
         this.zbuffer = zbuffer;

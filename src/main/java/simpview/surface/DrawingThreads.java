@@ -1,5 +1,9 @@
 package simpview.surface;
 
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -44,6 +48,8 @@ public final class DrawingThreads implements AutoCloseable {
     private long nanosInBands;
     /** Tasks handed to queues (bands of batches, batches drawn whole), summed. */
     private long tasks;
+    /** Each record's ring of batches, by the batches' class, kept from its last picture for the next. */
+    private final Map<Class<?>, List<?>> keptBatches = new HashMap<>();
 
     private DrawingThreads(int threads, boolean perPicture) {
         if (threads < 1) {
@@ -113,6 +119,31 @@ public final class DrawingThreads implements AutoCloseable {
      */
     public BandQueue queue(int bands, int slots, BandQueue.Drawer drawer) {
         return new BandQueue(this, bands, slots, drawer);
+    }
+
+    /**
+     * The ring of batches a record of this class gave back with
+     * {@link #keepBatches} when it last finished a picture drawn by these
+     * threads, whose arrays have grown to what the pictures need, so that
+     * the next picture neither allocates nor grows them again. Handed to one
+     * picture at a time: null when none is kept, or when a picture drawing
+     * now has it.
+     */
+    public synchronized <B> List<B> takeBatches(Class<B> batch) {
+        List<?> ring = keptBatches.remove(batch);
+        if (ring == null) {
+            return null;
+        }
+        List<B> batches = new ArrayList<>(ring.size());
+        for (Object b : ring) {
+            batches.add(batch.cast(b));
+        }
+        return batches;
+    }
+
+    /** Keeps a finished picture's ring of batches for the next picture ({@link #takeBatches}); none of them may be in use. */
+    public synchronized <B> void keepBatches(Class<B> batch, List<B> ring) {
+        keptBatches.put(batch, ring);
     }
 
     /** Runs {@code work} on a worker (there are workers: more than one thread). */

@@ -2,8 +2,11 @@ package simpview.surface;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** The threads that draw bands: how many, and bands that cover every row (the drawing itself: BandQueueTest). */
@@ -18,6 +21,21 @@ class DrawingThreadsTest {
         try (DrawingThreads two = DrawingThreads.upTo(2)) {
             assertFalse(two.isOne());
             assertTrue(two.choosesPerPicture());
+        }
+    }
+
+    @Test
+    void keptBatchesAreHandedToOnePictureAtATime() {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            assertNull(threads.takeBatches(StringBuilder.class), "nothing kept yet");
+            List<StringBuilder> ring = List.of(new StringBuilder("a"), new StringBuilder("b"));
+            threads.keepBatches(StringBuilder.class, ring);
+            assertNull(threads.takeBatches(Object.class), "kept by the batches' own class only");
+            List<StringBuilder> taken = threads.takeBatches(StringBuilder.class);
+            assertEquals(2, taken.size());
+            assertSame(ring.get(0), taken.get(0));
+            assertSame(ring.get(1), taken.get(1));
+            assertNull(threads.takeBatches(StringBuilder.class), "taken: the next picture makes its own");
         }
     }
 

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import simpview.scene.obj.ObjLibrary;
@@ -73,20 +74,48 @@ class BandedDrawingTest {
         // the default on two cores; a scene of small faces drawn whole, then as it is read).
         String[] hows = {"2 threads", "7 threads", "up to 2 threads, chosen per picture"};
         for (String how : hows) {
-            DrawingThreads threads = how.startsWith("up to") ? DrawingThreads.upTo(2)
-                    : DrawingThreads.of(Integer.parseInt(how.substring(0, 1)));
-            Drawing several = draw(c, threads);
-            assertEquals(one.logged(), several.logged(), "primitives logged on " + how);
-            assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + how);
-            assertArrayEquals(one.depths(), several.depths(), "depths on " + how);
-            assertArrayEquals(one.owners(), several.owners(), "owners on " + how);
+            try (DrawingThreads threads = how.startsWith("up to") ? DrawingThreads.upTo(2)
+                    : DrawingThreads.of(Integer.parseInt(how.substring(0, 1)))) {
+                assertSame(one, draw(c, threads), how);
+            }
         }
     }
 
-    private static Drawing draw(Case c, int threads) throws Exception {
-        return draw(c, DrawingThreads.of(threads));
+    /**
+     * The threads keep each record's batches from one picture to the next
+     * (DrawingThreads.keepBatches): what a picture left in them, of its own
+     * scene or another, lit or depth-cued, never reaches the next one.
+     */
+    @Test
+    void threadsThatDrewOtherScenesBeforeDrawWhatOneDraws() throws Exception {
+        List<Case> all = cases().toList();
+        List<Drawing> ones = new ArrayList<>();
+        for (Case c : all) {
+            ones.add(draw(c, 1));
+        }
+        try (DrawingThreads two = DrawingThreads.of(2)) {
+            for (int round = 1; round <= 2; round++) {
+                for (int i = 0; i < all.size(); i++) {
+                    assertSame(ones.get(i), draw(all.get(i), two), all.get(i) + ", round " + round + " on the same threads");
+                }
+            }
+        }
     }
 
+    private static void assertSame(Drawing one, Drawing several, String how) {
+        assertEquals(one.logged(), several.logged(), "primitives logged on " + how);
+        assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + how);
+        assertArrayEquals(one.depths(), several.depths(), "depths on " + how);
+        assertArrayEquals(one.owners(), several.owners(), "owners on " + how);
+    }
+
+    private static Drawing draw(Case c, int threads) throws Exception {
+        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+            return draw(c, drawing);
+        }
+    }
+
+    /** One drawing of the case by {@code threads}, which it leaves open. */
     private static Drawing draw(Case c, DrawingThreads threads) throws Exception {
         PageCanvas canvas = new PageCanvas();
         Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
@@ -98,12 +127,10 @@ class BandedDrawingTest {
                 return log;
             }
         };
-        try (DrawingThreads drawing = threads) {
-            canvas.drawWith(drawing);
-            ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
-                    ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
-            assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
-        }
+        canvas.drawWith(threads);
+        ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
+                ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
+        assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
         int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
         double[] z = canvas.zbuffer().copyDepths();
         long[] depths = new long[z.length];
