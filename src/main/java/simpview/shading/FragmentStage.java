@@ -83,7 +83,7 @@ public final class FragmentStage implements FragmentSink {
             throw new IllegalArgumentException("z-buffer and panel differ in size");
         }
         this.zbuffer = zbuffer;
-        this.depth = zbuffer.depths();
+        this.depth = zbuffer.depthsToReset();
         this.width = zbuffer.width();
         this.height = zbuffer.height();
         this.panel = panel;
@@ -134,6 +134,7 @@ public final class FragmentStage implements FragmentSink {
         if (y < rowFrom || y >= rowTo) {
             return;
         }
+        zbuffer.settle(); // nothing to do after the reset a lit scene makes
         int end = Math.min(to, width);
         boolean wrote = shader == null ? colourSpan(y, from, Math.max(from, 0), end, q0, dq, v0, dv)
                 : phongSpan(y, from, end, q0, dq, v0, dv);
@@ -439,6 +440,7 @@ public final class FragmentStage implements FragmentSink {
         if (x < 0 || x >= width || y < rowFrom || y >= rowTo) {
             return;
         }
+        zbuffer.settle();
         int i = y * width + x;
         double inv = 1 / q;
         double z = v[Z] * inv;

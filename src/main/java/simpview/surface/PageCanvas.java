@@ -32,14 +32,19 @@ public final class PageCanvas {
         clear();
     }
 
-    /** White margins, black panel, z-buffer at the far plane. Each pixel is written once. */
+    /**
+     * White margins, black panel, z-buffer at the far plane. Each pixel is
+     * written once; the z-buffer is filled when first read or tested
+     * ({@link ZBuffer#resetWhenNeeded}), which a lit scene, resetting it to
+     * -infinity itself, never does.
+     */
     public void clear() {
         imageDrawable.fillRect(0, 0, SIZE, MARGIN, Colors.WHITE);
         imageDrawable.fillRect(0, MARGIN + PANEL, SIZE, SIZE, Colors.WHITE);
         imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
         imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
-        zbuffer.reset(Camera.PARALLEL.yon());
+        zbuffer.resetWhenNeeded(Camera.PARALLEL.yon());
         if (provenance != null) {
             provenance.reset();
         }

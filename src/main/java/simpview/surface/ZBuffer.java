@@ -11,6 +11,14 @@ import java.util.Arrays;
  * ({@link #written}) before it returns from a write. So the buffer knows when
  * every entry is still at the far plane, and a reset then costs nothing: the
  * pages that draw without depth (1 and 2) do not pay for filling 3.4 MB.
+ *
+ * <p>A reset may also be owed ({@link #resetWhenNeeded}, the canvas's clear):
+ * the entries are filled by the first that reads or tests them
+ * ({@link #settle}: every reader here, and the {@link ZBufferDrawable}'s
+ * writes), on whichever thread that is, once, before any of them goes on. A
+ * lit scene resets the buffer to -infinity itself before it tests a depth
+ * ({@link #reset}, {@link #resetByRows}), and that reset replaces the owed one:
+ * so a lit page fills the buffer once, not twice (-200, then -infinity).
  */
 public final class ZBuffer {
 
@@ -20,6 +28,12 @@ public final class ZBuffer {
     /** True only while every entry is {@link #resetTo}. */
     private boolean atFarPlane;
     private double resetTo = Double.NaN;
+    /**
+     * True while every entry is to be {@link #resetTo} but is not yet: set on
+     * the thread that clears, before any drawing thread starts; read by every
+     * write of several threads at once, and cleared by the first, which fills.
+     */
+    private volatile boolean owed;
 
     public ZBuffer(int width, int height) {
         this.width = width;
@@ -43,6 +57,40 @@ public final class ZBuffer {
             resetTo = farthest;
             atFarPlane = true;
         }
+        owed = false;
+    }
+
+    /**
+     * Every entry back to {@code farthest} by the time anyone reads or tests
+     * one ({@link #settle}), unless a {@link #reset} or {@link #resetByRows}
+     * comes first and replaces it. Nothing to do when every entry already is.
+     */
+    public void resetWhenNeeded(double farthest) {
+        if (atFarPlane && Double.doubleToLongBits(farthest) == Double.doubleToLongBits(resetTo)) {
+            return;
+        }
+        resetTo = farthest;
+        atFarPlane = false;
+        owed = true;
+    }
+
+    /**
+     * Makes the reset owed, if one is ({@link #resetWhenNeeded}): called
+     * before the depths are read or tested. Safe from several threads at
+     * once: the first fills, the others wait for it.
+     */
+    public void settle() {
+        if (owed) {
+            fillOwed();
+        }
+    }
+
+    private synchronized void fillOwed() {
+        if (owed) {
+            Arrays.fill(depth, resetTo);
+            atFarPlane = true;
+            owed = false;
+        }
     }
 
     /**
@@ -54,6 +102,7 @@ public final class ZBuffer {
     public void resetByRows(double farthest) {
         resetTo = farthest;
         atFarPlane = false;
+        owed = false;
     }
 
     /** Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} gave. */
@@ -75,22 +124,37 @@ public final class ZBuffer {
         }
     }
 
-    /** The raw depths, row by row from the bottom, for a stage that tests and writes them itself. */
+    /**
+     * The raw depths, row by row from the bottom, for a stage that tests and
+     * writes them itself, an owed reset made first ({@link #settle}).
+     */
     public double[] depths() {
+        settle();
         return depth;
     }
 
-    /** True when no depth has been written since the last reset. */
+    /**
+     * The raw depths for a stage that resets them itself ({@link #reset} or
+     * {@link #resetByRows}) before it tests any, and settles them when it may
+     * meet a reset still owed: the lit fragment stage.
+     */
+    public double[] depthsToReset() {
+        return depth;
+    }
+
+    /** True when no depth has been written since the last reset (and none is owed). */
     boolean atFarPlane() {
         return atFarPlane;
     }
 
     /** A copy of every depth, row by row (row y at y * width). */
     public double[] copyDepths() {
+        settle();
         return depth.clone();
     }
 
     public double depthAt(int x, int y) {
+        settle();
         return depth[y * width + x];
     }
 }

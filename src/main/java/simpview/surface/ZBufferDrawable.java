@@ -48,6 +48,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
         if (x < 0 || x >= width || y < 0 || y >= height) {
             return;
         }
+        zbuffer.settle();
         int i = y * width + x;
         if (z > depth[i]) {
             depth[i] = z;
@@ -66,6 +67,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
         if (s.y < 0 || s.y >= height) {
             return;
         }
+        zbuffer.settle();
         int x0 = s.x0;
         int x1 = s.x1;
         int to = Math.min(x1, width);

@@ -102,6 +102,41 @@ class BandedDrawingTest {
         }
     }
 
+    /**
+     * One canvas drawing every case in turn, cleared between them (as the
+     * window's is): its z-buffer's reset is owed by each clear and made by the
+     * first depth-cued write or replaced by the lit reset, and each picture is
+     * the one a fresh canvas gets, on one thread and on two.
+     */
+    @Test
+    void aCanvasClearedAfterEveryOtherSceneDrawsWhatAFreshOneDraws() throws Exception {
+        List<Case> all = cases().filter(c -> c.limit() < 0).toList();
+        for (int threads : new int[] {1, 2}) {
+            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                PageCanvas canvas = new PageCanvas();
+                canvas.drawWith(drawing);
+                for (int round = 1; round <= 2; round++) {
+                    for (Case c : all) {
+                        canvas.clear();
+                        ScenePipeline.draw(c.scene(), canvas, ScenePipeline.Options.byCommands(new ObjLibrary()),
+                                SceneMonitor.NONE);
+                        PageCanvas fresh = new PageCanvas();
+                        ScenePipeline.draw(c.scene(), fresh, ScenePipeline.Options.byCommands(new ObjLibrary()),
+                                SceneMonitor.NONE);
+                        String how = c + ", round " + round + " on " + threads + " thread(s)";
+                        assertArrayEquals(pixels(fresh), pixels(canvas), "pixels of " + how);
+                        assertArrayEquals(fresh.zbuffer().copyDepths(), canvas.zbuffer().copyDepths(),
+                                "depths of " + how);
+                    }
+                }
+            }
+        }
+    }
+
+    private static int[] pixels(PageCanvas canvas) {
+        return ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
+    }
+
     private static void assertSame(Drawing one, Drawing several, String how) {
         assertEquals(one.logged(), several.logged(), "primitives logged on " + how);
         assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + how);
