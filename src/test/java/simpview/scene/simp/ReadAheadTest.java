@@ -36,6 +36,8 @@ import simpview.surface.Rgb;
  */
 class ReadAheadTest {
 
+    /** The start of every scene file's name here. */
+    private static final String OURS = "read-ahead-";
     private static final long ALWAYS = 0;
     private static final long NEVER = Long.MAX_VALUE;
 
@@ -102,14 +104,22 @@ class ReadAheadTest {
         run.drawn.add(sb.toString());
     }
 
+    /**
+     * A reader thread of this test's own scenes (named after the file it
+     * reads): other test classes run at the same time, with readers of their own.
+     */
+    private static boolean isOurs(Thread t) {
+        return t.getName().startsWith("simp reader " + OURS);
+    }
+
     private static boolean readerThreadAlive() {
         return Thread.getAllStackTraces().keySet().stream()
-                .anyMatch(t -> t.getName().startsWith("simp reader") && t.isAlive() && t != Thread.currentThread());
+                .anyMatch(t -> isOurs(t) && t.isAlive() && t != Thread.currentThread());
     }
 
     private static void assertNoReaderThread() {
         for (Thread t : Thread.getAllStackTraces().keySet()) {
-            assertFalse(t.getName().startsWith("simp reader") && t.isAlive(), "left behind: " + t.getName());
+            assertFalse(isOurs(t) && t.isAlive(), "left behind: " + t.getName());
         }
     }
 
@@ -125,13 +135,13 @@ class ReadAheadTest {
 
     /** A scene of {@code count} random primitives in braces, with includes and style changes, then {@code tail}. */
     private Path scene(int count, String... tail) throws IOException {
-        Files.write(dir.resolve("part.simp"), List.of("wire", "line (0,0,-5) (10,10,-50) (1,0,0) (0,1,0)",
+        Files.write(dir.resolve(OURS + "part.simp"), List.of("wire", "line (0,0,-5) (10,10,-50) (1,0,0) (0,1,0)",
                 "polygon (1,2,-3) (4,-5,-6) (7,8,-9)", "filled"));
         Random random = new Random(count);
         StringBuilder sb = new StringBuilder("{\nrotate Y 30\n");
         for (int k = 0; k < count; k++) {
             if (k % 97 == 0) {
-                sb.append("file part\n");
+                sb.append("file " + OURS + "part\n");
             } else if (k % 31 == 0) {
                 sb.append("{\ntranslate ").append(random.nextInt(20) - 10).append(" 1, 0\n");
             } else if (k % 53 == 0) {
@@ -144,7 +154,7 @@ class ReadAheadTest {
         for (String line : tail) {
             sb.append(line).append('\n');
         }
-        Path top = dir.resolve("top.simp");
+        Path top = dir.resolve(OURS + "top.simp");
         Files.write(top, sb.toString().getBytes(StandardCharsets.UTF_8));
         return top;
     }
@@ -167,7 +177,7 @@ class ReadAheadTest {
         assertTrue(5000 > ReadAhead.BATCHES * PrimitiveBatch.CAPACITY);
         assertTrue(ahead.readerAtSecondPrimitive, "no reader thread was running while the scene was drawn");
         assertFalse(serial.readerAtSecondPrimitive, "a reader thread ran although reading ahead was off");
-        assertTrue(serial.monitor.get(serial.monitor.size() - 1).startsWith("warning top.simp: "));
+        assertTrue(serial.monitor.get(serial.monitor.size() - 1).startsWith("warning " + OURS + "top.simp: "));
     }
 
     @Test
@@ -194,7 +204,7 @@ class ReadAheadTest {
             Run ahead = run(top, ALWAYS, Integer.MAX_VALUE, k -> false);
             assertSameRun(serial, ahead);
             SceneException e = (SceneException) ahead.ended;
-            assertEquals("top.simp", e.file().getFileName().toString());
+            assertEquals(OURS + "top.simp", e.file().getFileName().toString());
             assertEquals("expected a number, found 'x'", e.problem());
         }
     }
@@ -207,7 +217,7 @@ class ReadAheadTest {
         Run serial = run(top, NEVER, Integer.MAX_VALUE, k -> false);
         assertSameRun(serial, run(top, ALWAYS, Integer.MAX_VALUE, k -> false));
         assertTrue(((SceneException) serial.ended).problem().startsWith("'}' has no '{'"));
-        Path missing = dir.resolve("missing.simp");
+        Path missing = dir.resolve(OURS + "missing.simp");
         assertSameRun(run(missing, NEVER, Integer.MAX_VALUE, k -> false),
                 run(missing, ALWAYS, Integer.MAX_VALUE, k -> false));
     }
