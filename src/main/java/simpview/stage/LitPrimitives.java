@@ -110,7 +110,8 @@ public final class LitPrimitives {
      */
     void add(byte what, double[] v, int n, int channelCount, int look) {
         Batch b = batches.filling();
-        b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current());
+        b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
+                bands);
         boolean heavy = batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL,
                 what == OUTLINE);
         if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
@@ -167,6 +168,13 @@ public final class LitPrimitives {
         final List<Fog> fogs = new ArrayList<>();
         final List<Supplier<PointShader>> shaders = new ArrayList<>();
         int lastLook = -1;
+        /**
+         * For each band, the primitives that may touch its rows
+         * ({@link BatchDrawing#mayTouch}), in drawing order: a band's drawer
+         * reads its own list, not every primitive of the batch.
+         */
+        int[][] inBand = new int[0][];
+        int[] inBandCount = new int[0];
 
         @Override
         public int size() {
@@ -179,6 +187,7 @@ public final class LitPrimitives {
             fogs.clear();
             shaders.clear();
             lastLook = -1;
+            Arrays.fill(inBandCount, 0);
         }
 
         int look(Fog fog, Supplier<PointShader> shader) {
@@ -190,7 +199,7 @@ public final class LitPrimitives {
             return lastLook;
         }
 
-        void add(byte what, double[] v, int n, int channelCount, int look, int by) {
+        void add(byte what, double[] v, int n, int channelCount, int look, int by, RowBands bands) {
             int stride = FragmentLayout.stride(channelCount);
             int count = n * stride;
             if (size == kind.length) {
@@ -206,10 +215,47 @@ public final class LitPrimitives {
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
-            lowY[size] = BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride);
-            highY[size] = BatchDrawing.highRow(v, FragmentLayout.Y, n, stride);
+            double low = BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride);
+            double high = BatchDrawing.highRow(v, FragmentLayout.Y, n, stride);
+            lowY[size] = low;
+            highY[size] = high;
             start[size + 1] = at + count;
+            bin(size, low, high, bands);
             size++;
+        }
+
+        /**
+         * Primitive k in the list of every band it may touch: the bands b
+         * with mayTouch(low, high, start(b), end(b)), which are one run, as
+         * the bands are rows in order. low and high are whole numbers or
+         * infinite; a NaN one never skips a band.
+         */
+        private void bin(int k, double low, double high, RowBands bands) {
+            int count = bands.count();
+            if (inBandCount.length != count) {
+                inBand = new int[count][256];
+                inBandCount = new int[count];
+            }
+            int rows = bands.rows();
+            int first;
+            int last;
+            if (low != low || high != high) {
+                first = 0;
+                last = count - 1;
+            } else if (!(low < rows) || high < 0) {
+                return; // wholly below or above the panel
+            } else {
+                first = low < 0 ? 0 : bands.bandOf((int) low);
+                last = high >= rows - 1 ? count - 1 : bands.bandOf((int) high);
+            }
+            for (int b = first; b <= last; b++) {
+                int m = inBandCount[b];
+                if (m == inBand[b].length) {
+                    inBand[b] = Arrays.copyOf(inBand[b], 2 * m);
+                }
+                inBand[b][m] = k;
+                inBandCount[b] = m + 1;
+            }
         }
 
         private void grow() {
@@ -256,30 +302,42 @@ public final class LitPrimitives {
             } else {
                 resetDepth(band);
             }
+            look = -1;
+            if (band == Provenance.EVERY_BAND) {
+                for (int k = 0; k < b.size; k++) {
+                    if (BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
+                        draw(b, k);
+                    }
+                }
+            } else {
+                int[] mine = b.inBand[band];
+                int m = b.inBandCount[band];
+                for (int j = 0; j < m; j++) {
+                    draw(b, mine[j]);
+                }
+            }
+        }
+
+        /** Primitive k of the batch, in this band's rows. */
+        private void draw(Batch b, int k) {
+            if (provenance != null) {
+                provenance.begin(band, b.owner[k]);
+            }
+            setLook(b, b.lookOf[k]);
             int width = fragments.width();
             int height = fragments.height();
             double[] numbers = b.numbers;
-            look = -1;
-            for (int k = 0; k < b.size; k++) {
-                if (!BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
-                    continue;
-                }
-                if (provenance != null) {
-                    provenance.begin(band, b.owner[k]);
-                }
-                setLook(b, b.lookOf[k]);
-                int at = b.start[k];
-                int n = b.vertices[k];
-                int ch = b.channels[k];
-                switch (b.kind[k]) {
-                    case FILL -> fill.fill(numbers, at, n, ch, width, height, fragments);
-                    case LINE -> lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
-                    default -> {
-                        int stride = FragmentLayout.stride(ch);
-                        for (int i = 0; i < n; i++) {
-                            lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
-                                    fragments);
-                        }
+            int at = b.start[k];
+            int n = b.vertices[k];
+            int ch = b.channels[k];
+            switch (b.kind[k]) {
+                case FILL -> fill.fill(numbers, at, n, ch, width, height, fragments);
+                case LINE -> lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
+                default -> {
+                    int stride = FragmentLayout.stride(ch);
+                    for (int i = 0; i < n; i++) {
+                        lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
+                                fragments);
                     }
                 }
             }
