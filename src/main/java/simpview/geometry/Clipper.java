@@ -23,6 +23,8 @@ public final class Clipper {
     private final int stride;
     private double[] front;
     private double[] back;
+    /** Where the last result is: front, or the caller's own array when nothing of it was clipped. */
+    private double[] result;
     private double[] distances;
     private int count;
 
@@ -34,6 +36,7 @@ public final class Clipper {
         this.stride = stride;
         front = new double[stride * 16];
         back = new double[stride * 16];
+        result = front;
         distances = new double[16];
     }
 
@@ -41,15 +44,20 @@ public final class Clipper {
      * Clips the polygon of {@code n} vertices in {@code p} from {@code at}.
      *
      * @return the number of vertices left (0 when nothing of it is in view);
-     *     they are in {@link #vertices()}, from index 0
+     *     they are in {@link #vertices()}, from index 0: that is {@code p}
+     *     itself when it starts at 0 and every vertex is inside every plane
+     *     (no pass would change it), read before p is changed
      */
     public int clipPolygon(Camera camera, double[] p, int at, int n) {
+        if (at == 0 && allInside(camera, p, n)) {
+            result = p; // every pass would keep every vertex as it is
+            count = n;
+            return n;
+        }
         ensure(n + Camera.PLANES);
+        result = front;
         System.arraycopy(p, at, front, 0, n * stride);
         count = n;
-        if (allInside(camera)) {
-            return n; // every pass would keep every vertex as it is
-        }
         for (int plane = 0; plane < Camera.PLANES && count > 0; plane++) {
             if (anyOutside(camera, plane)) {
                 clipAgainst(plane);
@@ -58,19 +66,18 @@ public final class Clipper {
         return count;
     }
 
-    /** The vertices of the last clipped polygon or line, stride numbers each. */
+    /** The vertices of the last clipped polygon or line, stride numbers each, from index 0. */
     public double[] vertices() {
-        return front;
+        return result;
     }
 
     public int stride() {
         return stride;
     }
 
-    /** True when every vertex of the current polygon is inside every plane: then no pass changes it. */
-    private boolean allInside(Camera camera) {
-        double[] v = front;
-        for (int k = 0; k < count; k++) {
+    /** True when each of the n vertices of v is inside every plane: then no pass changes the polygon. */
+    private boolean allInside(Camera camera, double[] v, int n) {
+        for (int k = 0; k < n; k++) {
             int o = k * stride;
             if (!camera.inside(v[o], v[o + 1], v[o + 2])) {
                 return false;
@@ -112,6 +119,7 @@ public final class Clipper {
         }
         front = out;
         back = in;
+        result = out;
         count = kept;
     }
 
@@ -134,6 +142,7 @@ public final class Clipper {
      */
     public boolean clipLine(Camera camera, double[] p, int from, int to) {
         ensure(2);
+        result = front;
         double t0 = 0;
         double t1 = 1;
         for (int plane = 0; plane < Camera.PLANES; plane++) {

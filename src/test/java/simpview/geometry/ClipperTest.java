@@ -2,6 +2,8 @@ package simpview.geometry;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
@@ -42,6 +44,28 @@ class ClipperTest {
         for (int i = 0; i < p.length; i++) {
             assertEquals(p[i], clipper.vertices()[i]);
         }
+    }
+
+    @Test
+    void aPolygonInsideIsReadFromTheCallersArrayAndAClippedOneFromTheClippers() {
+        double[] inside = polygon(0, 0, -10, 1, 1, 0, -10, 2, 0, 1, -10, 3);
+        assertEquals(3, clip(EYE, inside));
+        assertSame(inside, clipper.vertices(), "nothing clipped: not copied");
+        double[] cut = polygon(0, 0, 1, 10, 0, 0, -3, 30, 0.5, 0, -3, 30);
+        int n = clip(EYE, cut);
+        assertNotSame(cut, clipper.vertices());
+        assertInside(EYE, n);
+        // Starting elsewhere than 0, a polygon inside is copied, so that its vertices start at 0.
+        double[] shifted = new double[4 + inside.length];
+        System.arraycopy(inside, 0, shifted, 4, inside.length);
+        assertEquals(3, clipper.clipPolygon(EYE, shifted, 4, 3));
+        assertNotSame(shifted, clipper.vertices());
+        for (int i = 0; i < inside.length; i++) {
+            assertEquals(inside[i], clipper.vertices()[i]);
+        }
+        // A line is always the clipper's own.
+        assertTrue(clipper.clipLine(EYE, inside, 0, 4));
+        assertNotSame(inside, clipper.vertices());
     }
 
     @Test
