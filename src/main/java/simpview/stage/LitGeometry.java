@@ -221,6 +221,16 @@ public final class LitGeometry implements GeometryStage {
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
+        if (record != null && trace == null) {
+            // Projected straight into the record's batch: no copy of the vertices.
+            double[] into = record.room(kept, channels);
+            if (project(clipper.vertices(), kept, channels, into, record.roomAt()) == kept) {
+                int look = wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
+                        : record.look(state.fog(), state);
+                record.addInRoom(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, kept, channels, look);
+            }
+            return;
+        }
         int m = project(clipper.vertices(), kept, channels);
         if (m < kept) {
             return; // a vertex that cannot be projected (not finite)
@@ -344,14 +354,21 @@ public final class LitGeometry implements GeometryStage {
      * @return how many could be projected (all of them unless one is not finite)
      */
     private int project(double[] v, int n, int channels) {
-        Camera camera = state.camera();
         int stride = FragmentLayout.stride(channels);
         if (screen.length < n * stride) {
             screen = new double[2 * n * stride];
         }
+        return project(v, n, channels, screen, 0);
+    }
+
+    /** The same into {@code out} from {@code at}, which has room for them. */
+    private int project(double[] v, int n, int channels, double[] out, int at) {
+        Camera camera = state.camera();
+        int stride = FragmentLayout.stride(channels);
+        double[] screen = out;
         for (int k = 0; k < n; k++) {
             int i = k * CAMERA_STRIDE;
-            int o = k * stride;
+            int o = at + k * stride;
             double x = v[i + CX];
             double y = v[i + CY];
             double z = v[i + CZ];

@@ -110,9 +110,39 @@ public final class LitPrimitives {
      */
     void add(byte what, double[] v, int n, int channelCount, int look) {
         Batch b = batches.filling();
-        b.add(what, v, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
+        int count = n * FragmentLayout.stride(channelCount);
+        System.arraycopy(v, 0, b.room(count), b.start[b.size], count);
+        b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
                 bands);
-        boolean heavy = batches.weigh(v, FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL,
+        handOffIfFull(b, v, 0, n, channelCount, what);
+    }
+
+    /**
+     * Room in the batch being filled for a primitive of n vertices and these
+     * channels: the array its vertices are to be written to, from
+     * {@link #roomAt}, before {@link #addInRoom} records them.
+     */
+    double[] room(int n, int channelCount) {
+        return batches.filling().room(n * FragmentLayout.stride(channelCount));
+    }
+
+    /** Where in {@link #room}'s array the primitive's first vertex goes. */
+    int roomAt() {
+        Batch b = batches.filling();
+        return b.start[b.size];
+    }
+
+    /** Records the primitive whose n vertices were written to the room, as {@link #add} records one. */
+    void addInRoom(byte what, int n, int channelCount, int look) {
+        Batch b = batches.filling();
+        int at = b.start[b.size];
+        b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
+                bands);
+        handOffIfFull(b, b.numbers, at, n, channelCount, what);
+    }
+
+    private void handOffIfFull(Batch b, double[] v, int at, int n, int channelCount, byte what) {
+        boolean heavy = batches.weigh(v, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL,
                 what == OUTLINE);
         if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
             batches.handOff();
@@ -199,24 +229,31 @@ public final class LitPrimitives {
             return lastLook;
         }
 
-        void add(byte what, double[] v, int n, int channelCount, int look, int by, RowBands bands) {
+        /** The numbers array, with room for {@code count} more numbers from start[size]. */
+        double[] room(int count) {
+            int at = start[size];
+            if (at + count > numbers.length) {
+                numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
+            }
+            return numbers;
+        }
+
+        /** Records the primitive whose n vertices are in numbers from start[size] (written to its room). */
+        void addInPlace(byte what, int n, int channelCount, int look, int by, RowBands bands) {
             int stride = FragmentLayout.stride(channelCount);
             int count = n * stride;
             if (size == kind.length) {
                 grow();
             }
             int at = start[size];
-            if (at + count > numbers.length) {
-                numbers = Arrays.copyOf(numbers, Math.max(2 * numbers.length, at + count));
-            }
-            System.arraycopy(v, 0, numbers, at, count);
+            double[] v = numbers;
             kind[size] = what;
             vertices[size] = n;
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
-            double low = BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride);
-            double high = BatchDrawing.highRow(v, FragmentLayout.Y, n, stride);
+            double low = BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride);
+            double high = BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride);
             lowY[size] = low;
             highY[size] = high;
             start[size + 1] = at + count;
