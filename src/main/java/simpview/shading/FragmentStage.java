@@ -77,7 +77,12 @@ public final class FragmentStage implements FragmentSink {
     private int rowFrom;
     private int rowTo;
 
-    /** Writes to {@code panel} (panel coordinates, y up), depth-tested against {@code zbuffer}. */
+    /**
+     * Writes to {@code panel} (panel coordinates, y up), depth-tested against
+     * {@code zbuffer}, which its user resets ({@link ZBuffer#reset} or
+     * {@link ZBuffer#resetByRows}) before the first fragment: a reset the
+     * canvas's clear owes is not made for it, as a lit scene replaces it.
+     */
     public FragmentStage(ZBuffer zbuffer, Drawable panel) {
         if (zbuffer.width() != panel.width() || zbuffer.height() != panel.height()) {
             throw new IllegalArgumentException("z-buffer and panel differ in size");
@@ -134,7 +139,6 @@ public final class FragmentStage implements FragmentSink {
         if (y < rowFrom || y >= rowTo) {
             return;
         }
-        zbuffer.settle(); // nothing to do after the reset a lit scene makes
         int end = Math.min(to, width);
         boolean wrote = shader == null ? colourSpan(y, from, Math.max(from, 0), end, q0, dq, v0, dv)
                 : phongSpan(y, from, end, q0, dq, v0, dv);
@@ -440,7 +444,6 @@ public final class FragmentStage implements FragmentSink {
         if (x < 0 || x >= width || y < rowFrom || y >= rowTo) {
             return;
         }
-        zbuffer.settle();
         int i = y * width + x;
         double inv = 1 / q;
         double z = v[Z] * inv;

@@ -225,9 +225,8 @@ public final class LitGeometry implements GeometryStage {
             // Projected straight into the record's batch: no copy of the vertices.
             double[] into = record.room(kept, channels);
             if (project(clipper.vertices(), kept, channels, into, record.roomAt()) == kept) {
-                int look = wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
-                        : record.look(state.fog(), state);
-                record.addInRoom(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, kept, channels, look);
+                record.addInRoom(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, kept, channels,
+                        recordedLook(wire, channels));
             }
             return;
         }
@@ -239,9 +238,8 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         if (record != null) {
-            int look = wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
-                    : record.look(state.fog(), state);
-            record.add(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, screen, kept, channels, look);
+            record.add(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, screen, kept, channels,
+                    recordedLook(wire, channels));
             return;
         }
         int width = fragments.width();
@@ -255,6 +253,12 @@ public final class LitGeometry implements GeometryStage {
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
+    }
+
+    /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
+    private int recordedLook(boolean wire, int channels) {
+        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
+                : record.look(state.fog(), state);
     }
 
     /**

@@ -134,9 +134,9 @@ public final class ZBuffer {
     }
 
     /**
-     * The raw depths for a stage that resets them itself ({@link #reset} or
-     * {@link #resetByRows}) before it tests any, and settles them when it may
-     * meet a reset still owed: the lit fragment stage.
+     * The raw depths for a stage whose user resets them ({@link #reset} or
+     * {@link #resetByRows}) before it tests any, which replaces a reset
+     * still owed: the lit fragment stage. Nothing owed is made here.
      */
     public double[] depthsToReset() {
         return depth;
