@@ -54,8 +54,8 @@ public final class CuedPrimitives {
      * writes owners into, or null.
      */
     public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new, this::drawBand,
-                this::drawWhole, MOST_PIXELS);
+        this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
+                this::drawBand, this::drawWhole, MOST_PIXELS);
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];

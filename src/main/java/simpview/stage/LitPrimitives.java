@@ -73,8 +73,8 @@ public final class LitPrimitives {
      * reached.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
-        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new, this::drawBand,
-                this::drawWhole, MOST_PIXELS);
+        this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
+                this::drawBand, this::drawWhole, MOST_PIXELS);
         this.provenance = provenance;
         this.zbuffer = zbuffer;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);

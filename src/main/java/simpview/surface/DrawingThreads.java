@@ -141,7 +141,10 @@ public final class DrawingThreads implements AutoCloseable {
         return batches;
     }
 
-    /** Keeps a finished picture's ring of batches for the next picture ({@link #takeBatches}); none of them may be in use. */
+    /**
+     * Keeps a finished picture's ring of batches for the next picture
+     * ({@link #takeBatches}); none of them may be in use.
+     */
     public synchronized <B> void keepBatches(Class<B> batch, List<B> ring) {
         keptBatches.put(batch, ring);
     }

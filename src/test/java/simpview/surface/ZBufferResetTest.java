@@ -8,7 +8,10 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
-/** The reset a canvas's clear owes its z-buffer: made by the first to read or test a depth, or replaced by a lit reset. */
+/**
+ * The reset a canvas's clear owes its z-buffer: made by the first to read or
+ * test a depth, or replaced by a lit reset.
+ */
 class ZBufferResetTest {
 
     private static final int SIZE = PageCanvas.PANEL;

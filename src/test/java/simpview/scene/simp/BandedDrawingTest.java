@@ -76,7 +76,7 @@ class BandedDrawingTest {
         for (String how : hows) {
             try (DrawingThreads threads = how.startsWith("up to") ? DrawingThreads.upTo(2)
                     : DrawingThreads.of(Integer.parseInt(how.substring(0, 1)))) {
-                assertSame(one, draw(c, threads), how);
+                assertSameDrawing(one, draw(c, threads), how);
             }
         }
     }
@@ -96,7 +96,8 @@ class BandedDrawingTest {
         try (DrawingThreads two = DrawingThreads.of(2)) {
             for (int round = 1; round <= 2; round++) {
                 for (int i = 0; i < all.size(); i++) {
-                    assertSame(ones.get(i), draw(all.get(i), two), all.get(i) + ", round " + round + " on the same threads");
+                    assertSameDrawing(ones.get(i), draw(all.get(i), two),
+                            all.get(i) + ", round " + round + " on the same threads");
                 }
             }
         }
@@ -137,7 +138,7 @@ class BandedDrawingTest {
         return ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
     }
 
-    private static void assertSame(Drawing one, Drawing several, String how) {
+    private static void assertSameDrawing(Drawing one, Drawing several, String how) {
         assertEquals(one.logged(), several.logged(), "primitives logged on " + how);
         assertArrayEquals(one.pixels(), several.pixels(), "pixels on " + how);
         assertArrayEquals(one.depths(), several.depths(), "depths on " + how);
@@ -166,7 +167,7 @@ class BandedDrawingTest {
         ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
                 ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
         assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
-        int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
+        int[] pixels = pixels(canvas);
         double[] z = canvas.zbuffer().copyDepths();
         long[] depths = new long[z.length];
         for (int i = 0; i < z.length; i++) {
