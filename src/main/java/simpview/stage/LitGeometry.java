@@ -369,7 +369,6 @@ public final class LitGeometry implements GeometryStage {
     private int project(double[] v, int n, int channels, double[] out, int at) {
         Camera camera = state.camera();
         int stride = FragmentLayout.stride(channels);
-        double[] screen = out;
         for (int k = 0; k < n; k++) {
             int i = k * CAMERA_STRIDE;
             int o = at + k * stride;
@@ -382,19 +381,19 @@ public final class LitGeometry implements GeometryStage {
             if (!Double.isFinite(sx) || !Double.isFinite(sy) || !Double.isFinite(q)) {
                 return k;
             }
-            screen[o + FragmentLayout.X] = sx;
-            screen[o + FragmentLayout.Y] = sy;
-            screen[o + FragmentLayout.Q] = q;
-            screen[o + FragmentLayout.CHANNEL + FragmentLayout.Z] = z * q;
-            screen[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * q;
-            screen[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * q;
-            screen[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * q;
+            out[o + FragmentLayout.X] = sx;
+            out[o + FragmentLayout.Y] = sy;
+            out[o + FragmentLayout.Q] = q;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.Z] = z * q;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * q;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * q;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * q;
             if (channels == FragmentLayout.PHONG_CHANNELS) {
-                screen[o + FragmentLayout.CHANNEL + FragmentLayout.PX] = x * q;
-                screen[o + FragmentLayout.CHANNEL + FragmentLayout.PY] = y * q;
-                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NX] = v[i + CNX] * q;
-                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NY] = v[i + CNY] * q;
-                screen[o + FragmentLayout.CHANNEL + FragmentLayout.NZ] = v[i + CNZ] * q;
+                out[o + FragmentLayout.CHANNEL + FragmentLayout.PX] = x * q;
+                out[o + FragmentLayout.CHANNEL + FragmentLayout.PY] = y * q;
+                out[o + FragmentLayout.CHANNEL + FragmentLayout.NX] = v[i + CNX] * q;
+                out[o + FragmentLayout.CHANNEL + FragmentLayout.NY] = v[i + CNY] * q;
+                out[o + FragmentLayout.CHANNEL + FragmentLayout.NZ] = v[i + CNZ] * q;
             }
         }
         return n;

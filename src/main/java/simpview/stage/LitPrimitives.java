@@ -109,12 +109,8 @@ public final class LitPrimitives {
      * says is being read (the owner of what it draws).
      */
     void add(byte what, double[] v, int n, int channelCount, int look) {
-        Batch b = batches.filling();
-        int count = n * FragmentLayout.stride(channelCount);
-        System.arraycopy(v, 0, b.room(count), b.start[b.size], count);
-        b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
-                bands);
-        handOffIfFull(b, v, 0, n, channelCount, what);
+        System.arraycopy(v, 0, room(n, channelCount), roomAt(), n * FragmentLayout.stride(channelCount));
+        addInRoom(what, n, channelCount, look);
     }
 
     /**
@@ -132,18 +128,18 @@ public final class LitPrimitives {
         return b.start[b.size];
     }
 
-    /** Records the primitive whose n vertices were written to the room, as {@link #add} records one. */
+    /**
+     * Records the primitive whose n vertices were written to the room, as
+     * {@link #add} does (which copies them there first), and hands the batch
+     * off once it is full or covers {@link #MOST_PIXELS}.
+     */
     void addInRoom(byte what, int n, int channelCount, int look) {
         Batch b = batches.filling();
         int at = b.start[b.size];
         b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
                 bands);
-        handOffIfFull(b, b.numbers, at, n, channelCount, what);
-    }
-
-    private void handOffIfFull(Batch b, double[] v, int at, int n, int channelCount, byte what) {
-        boolean heavy = batches.weigh(v, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount), what == FILL,
-                what == OUTLINE);
+        boolean heavy = batches.weigh(b.numbers, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount),
+                what == FILL, what == OUTLINE);
         if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
             batches.handOff();
         }
@@ -332,21 +328,18 @@ public final class LitPrimitives {
         }
 
         void draw(Batch b) {
+            look = -1;
             if (band == Provenance.EVERY_BAND) {
                 for (int i = 0; i < depthReset.length; i++) {
                     resetDepth(i);
                 }
-            } else {
-                resetDepth(band);
-            }
-            look = -1;
-            if (band == Provenance.EVERY_BAND) {
                 for (int k = 0; k < b.size; k++) {
                     if (BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
                         draw(b, k);
                     }
                 }
             } else {
+                resetDepth(band);
                 int[] mine = b.inBand[band];
                 int m = b.inBandCount[band];
                 for (int j = 0; j < m; j++) {
