@@ -38,6 +38,16 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      */
     private static final int SLOTS = 3;
 
+    /**
+     * Primitives after which a picture's first batch is handed off, with
+     * threads to draw beside the recording; each later batch may hold twice
+     * as many as the one before, up to the record's own most. So the other
+     * threads start drawing soon after the picture does, instead of waiting
+     * for a full batch while the scene's first part is read, and a long
+     * scene still goes in few batches.
+     */
+    private static final int FIRST_PRIMITIVES = 16;
+
     /** One batch of a record's primitives, in the record's own arrays. */
     interface Recorded {
         /** How many primitives it holds. */
@@ -63,6 +73,10 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     private double pixels;
     /** A batch covering this many pixels is handed off, however few its primitives. */
     private final double mostPixels;
+    /** The most primitives a batch may hold, the record's own. */
+    private final int mostPrimitives;
+    /** Primitives after which the batch being filled is handed off ({@link #FIRST_PRIMITIVES}). */
+    private int primitivesLimit;
     /** The batch being filled. */
     private B filling;
 
@@ -72,12 +86,15 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * makes the ring's batches (of class {@code kind}) when the threads kept
      * none from the last picture; a batch is drawn by {@code band} (given the
      * batch and the band's number) when split, or by {@code wholePanel}; a
-     * batch is handed off once it covers {@code mostPixels}.
+     * batch is handed off once it covers {@code mostPixels} or holds
+     * {@code mostPrimitives} (fewer at first, see {@link #FIRST_PRIMITIVES}).
      */
     BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Class<B> kind, Supplier<B> newBatch,
-            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels) {
+            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels, int mostPrimitives) {
         this.threads = threads;
         this.mostPixels = mostPixels;
+        this.mostPrimitives = mostPrimitives;
+        this.primitivesLimit = threads.isOne() ? mostPrimitives : Math.min(FIRST_PRIMITIVES, mostPrimitives);
         this.bands = threads.bands(height);
         this.weighs = !threads.isOne()
                 && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
@@ -161,6 +178,11 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         return pixels >= mostPixels;
     }
 
+    /** True when the batch being filled holds as many primitives as it may before it is handed off. */
+    boolean full() {
+        return filling.size() >= primitivesLimit;
+    }
+
     /** The batch to record into. */
     B filling() {
         return filling;
@@ -178,6 +200,7 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         }
         queue.publish(!BandChoice.splits(threads, pixels));
         pixels = 0;
+        primitivesLimit = (int) Math.min((long) primitivesLimit * 2, mostPrimitives);
         filling = ring.get(queue.slot());
         filling.clear();
     }

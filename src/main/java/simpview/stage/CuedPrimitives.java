@@ -55,7 +55,7 @@ public final class CuedPrimitives {
      */
     public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS);
+                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
         RowBands bands = batches.bands();
         this.drawers = new Band[bands.count()];
@@ -72,7 +72,7 @@ public final class CuedPrimitives {
         int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
         boolean heavy = batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED,
                 what == Painter.WIRE);
-        if (heavy || b.size >= MOST_PRIMITIVES) {
+        if (heavy || batches.full()) {
             batches.handOff();
         }
     }

@@ -74,7 +74,7 @@ public final class LitPrimitives {
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS);
+                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
         this.zbuffer = zbuffer;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
@@ -140,7 +140,7 @@ public final class LitPrimitives {
                 bands);
         boolean heavy = batches.weigh(b.numbers, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount),
                 what == FILL, what == OUTLINE);
-        if (heavy || b.size >= MOST_PRIMITIVES || b.start[b.size] >= MOST_NUMBERS) {
+        if (heavy || batches.full() || b.start[b.size] >= MOST_NUMBERS) {
             batches.handOff();
         }
     }

@@ -56,7 +56,53 @@ class BatchDrawingTest {
         }
     }
 
+    @Test
+    void withThreadsBesideTheRecordingTheFirstBatchesAreSmallAndEachHoldsTwiceTheOneBefore() {
+        List<Counted> made = new ArrayList<>();
+        List<Counted> drawn = new ArrayList<>();
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            BatchDrawing<Counted> p = picture(threads, made, drawn, 100);
+            List<Integer> sizes = new ArrayList<>();
+            for (int k = 0; k < 6; k++) {
+                sizes.add(fillUntilFull(p));
+                p.handOff();
+            }
+            p.finish();
+            assertEquals(List.of(16, 32, 64, 100, 100, 100), sizes, "16, then twice as many, up to the most");
+            assertEquals(6 * threads.bands(100).count(), drawn.size(), "every batch handed off was drawn in every band");
+        }
+    }
+
+    @Test
+    void onOneThreadEveryBatchHoldsTheMost() {
+        List<Counted> made = new ArrayList<>();
+        List<Counted> drawn = new ArrayList<>();
+        try (DrawingThreads threads = DrawingThreads.of(1)) {
+            BatchDrawing<Counted> p = picture(threads, made, drawn, 100);
+            for (int k = 0; k < 3; k++) {
+                assertEquals(100, fillUntilFull(p), "batch " + k);
+                p.handOff();
+            }
+            p.finish();
+        }
+    }
+
+    /** Adds primitives to the batch being filled until the drawing says it is full: how many it took. */
+    private static int fillUntilFull(BatchDrawing<Counted> p) {
+        Counted b = p.filling();
+        while (!p.full()) {
+            b.size++;
+            assertTrue(b.size <= 1000, "a batch that is never full");
+        }
+        return b.size;
+    }
+
     private static BatchDrawing<Counted> picture(DrawingThreads threads, List<Counted> made, List<Counted> drawn) {
+        return picture(threads, made, drawn, 4096);
+    }
+
+    private static BatchDrawing<Counted> picture(DrawingThreads threads, List<Counted> made, List<Counted> drawn,
+            int mostPrimitives) {
         return new BatchDrawing<>(threads, 100, null, Counted.class, () -> {
             Counted c = new Counted();
             made.add(c);
@@ -69,6 +115,6 @@ class BatchDrawingTest {
             synchronized (drawn) {
                 drawn.add(b);
             }
-        }, Double.POSITIVE_INFINITY);
+        }, Double.POSITIVE_INFINITY, mostPrimitives);
     }
 }

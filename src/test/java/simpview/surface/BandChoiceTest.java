@@ -74,13 +74,14 @@ class BandChoiceTest {
         assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
                 "the faces are drawn");
         long[] tasks = new long[1];
-        // 4,200 faces: a batch of 4,096 handed off and drawn whole, then the other 104; the same pixels.
+        // 4,200 faces: batches of 16, 32, ... 2,048 faces (4,080 in all, BatchDrawing), each handed off and
+        // drawn whole, then the other 120; the same pixels.
         assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
-        assertEquals(2, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task, no bands");
+        assertEquals(9, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task, no bands");
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
-            assertEquals(2 * bands, tasks[0], "small faces, two threads given: both batches in bands");
+            assertEquals(9 * bands, tasks[0], "small faces, two threads given: every batch in bands");
             // A depth-cued batch is handed off by its count alone, however many pixels it covers.
             assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.upTo(2), tasks));
             assertEquals(bands, tasks[0], "12 large depth-cued fills, no count given: one batch, in bands");
