@@ -6,6 +6,7 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 
 /**
  * What went wrong with a file, in the words of a person: "file not found",
@@ -37,11 +38,22 @@ public final class FileProblem {
      * bytes for ever.
      */
     public static String notAFile(Path real) {
-        if (Files.isRegularFile(real)) {
+        try {
+            return notAFile(Files.readAttributes(real, BasicFileAttributes.class));
+        } catch (IOException | SecurityException e) {
+            return NOT_REGULAR;
+        }
+    }
+
+    /** As {@link #notAFile(Path)}, from the file's attributes already read. */
+    public static String notAFile(BasicFileAttributes attributes) {
+        if (attributes.isRegularFile()) {
             return null;
         }
-        return Files.isDirectory(real) ? "not a file but a folder" : "not a regular file (a device or a pipe?)";
+        return attributes.isDirectory() ? "not a file but a folder" : NOT_REGULAR;
     }
+
+    private static final String NOT_REGULAR = "not a regular file (a device or a pipe?)";
 
     private static String lowerFirst(String s) {
         return s.length() > 1 && Character.isUpperCase(s.charAt(0)) && Character.isLowerCase(s.charAt(1))

@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -73,14 +74,9 @@ final class FileStack implements AutoCloseable {
     /** Starts with the scene's top file. */
     void openTop(Path named) throws SceneException {
         Path file = withExtension(named);
-        reach(file);
-        Path real = realFile(file, problem -> new SceneException(file, 0, 0, "", problem));
-        try {
-            topFileBytes = Files.size(real);
-        } catch (IOException e) {
-            topFileBytes = 0; // reading reports the problem properly
-        }
-        push(open(file, real), real);
+        Resolved top = resolve(file, null, problem -> new SceneException(file, 0, 0, "", problem));
+        topFileBytes = top.size;
+        push(open(file, top), top.real);
     }
 
     /**
@@ -135,16 +131,16 @@ final class FileStack implements AutoCloseable {
         SimpReader from = top();
         Name name = new Name(from.file().getParent(), c.fileName);
         Found found = found(name, from, c);
-        if (onStack.contains(found.real)) {
-            throw from.error(c.argumentIndex, "file cycle: " + chain(found.real));
+        if (onStack.contains(found.resolved.real)) {
+            throw from.error(c.argumentIndex, "file cycle: " + chain(found.resolved.real));
         }
         SimpReader reader;
         try {
-            reader = open(found.path, found.real);
+            reader = open(found.path, found.resolved);
         } catch (SceneException e) {
             throw from.error(c.argumentIndex, e.problem());
         }
-        push(reader, found.real);
+        push(reader, found.resolved.real);
     }
 
     /**
@@ -158,9 +154,10 @@ final class FileStack implements AutoCloseable {
         if (known != null) {
             return known;
         }
-        Path candidate = locate(c.fileName, ".simp", from, c);
-        Path real = realFile(candidate, problem -> from.error(c.argumentIndex, problem));
-        Found result = new Found(candidate, real);
+        Located located = locate(c.fileName, ".simp", from, c);
+        Resolved resolved = resolve(located.path, located.alsoWatched,
+                problem -> from.error(c.argumentIndex, problem));
+        Found result = new Found(located.path, resolved);
         found.put(name, result);
         return result;
     }
@@ -169,8 +166,21 @@ final class FileStack implements AutoCloseable {
     private record Name(Path dir, String name) {
     }
 
-    /** The path to show in messages, and the real path that identifies the file. */
-    private record Found(Path path, Path real) {
+    /** The path to show in messages, and where it really leads. */
+    private record Found(Path path, Resolved resolved) {
+    }
+
+    /**
+     * Where a name was found ({@link #locate}), and the other place to
+     * watch with it, or null: the one beside the including file, when the
+     * name was found in the working directory (a file appearing there would
+     * take over).
+     */
+    private record Located(Path path, Path alsoWatched) {
+    }
+
+    /** A file to read: its real path, which identifies it, and its size when it was reached. */
+    private record Resolved(Path real, long size) {
     }
 
     /**
@@ -178,9 +188,10 @@ final class FileStack implements AutoCloseable {
      * the file {@code from}, stands for: looked for in the folder of the file
      * holding the command, then in the working directory (where the course's
      * programs looked), by {@link FilePlaces}. When it is in neither, the
-     * error names every place looked.
+     * error names every place looked, and both are noted as reached; when
+     * it is found, the caller notes it (and the place that would take over).
      */
-    private Path locate(String name, String extension, SimpReader from, Command c) throws SceneException {
+    private Located locate(String name, String extension, SimpReader from, Command c) throws SceneException {
         FilePlaces places;
         try {
             places = FilePlaces.of(from.file(), name, extension, workingDir);
@@ -195,16 +206,18 @@ final class FileStack implements AutoCloseable {
             throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
                     + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
         }
-        reach(found);
-        if (!places.hereIsWorking() && found.equals(places.working())) {
-            reach(places.here()); // a file appearing beside the including one would take over
-        }
-        return found;
+        boolean takesOver = !places.hereIsWorking() && found.equals(places.working());
+        return new Located(found, takesOver ? places.here() : null);
     }
 
     /** The .obj file an {@code obj} command of the file being read names, found as {@code file} names are. */
     Path locateModel(Command c) throws SceneException {
-        return locate(c.fileName, ".obj", top(), c);
+        Located located = locate(c.fileName, ".obj", top(), c);
+        reach(located.path);
+        if (located.alsoWatched != null) {
+            reach(located.alsoWatched);
+        }
+        return located.path;
     }
 
     /** "file:line" of the command being carried out, for messages. */
@@ -221,9 +234,14 @@ final class FileStack implements AutoCloseable {
         } catch (IOException | SecurityException e) {
             key = file.toAbsolutePath().normalize();
         }
+        reach(file, key, FileStamp.of(file));
+    }
+
+    /** Notes {@code file}, really {@code key}, as it is now ({@code stamp}), unless it is noted already. */
+    private void reach(Path file, Path key, FileStamp stamp) {
         if (reachedKeys.add(key)) {
             reached.add(file);
-            stamps.add(FileStamp.of(file));
+            stamps.add(stamp);
         }
     }
 
@@ -248,26 +266,47 @@ final class FileStack implements AutoCloseable {
     }
 
     /**
-     * Where {@code candidate} really leads, if that is a file to read. The top
-     * file and an included one are checked here alike, so a missing file or a
-     * folder gets the same words wherever it is named; {@code error} places
-     * the problem (a top file has no line, an include its command's column).
+     * Where {@code candidate} really leads, if that is a file to read, noted
+     * as reached (and {@code alsoWatched} after it, if not null), whether or
+     * not it can be read. The top file and an included one are checked here
+     * alike, so a missing file or a folder gets the same words wherever it is
+     * named; {@code error} places the problem (a top file has no line, an
+     * include its command's column). The real path is looked up and the
+     * attributes read once: the stamp, the check that it is a file and its
+     * size all come from them.
      */
-    private static Path realFile(Path candidate, Function<String, SceneException> error) throws SceneException {
+    private Resolved resolve(Path candidate, Path alsoWatched, Function<String, SceneException> error)
+            throws SceneException {
         String shown = candidate.toAbsolutePath().normalize().toString();
         Path real;
+        BasicFileAttributes attributes;
         try {
             real = candidate.toRealPath();
-        } catch (NoSuchFileException e) {
-            throw error.apply("file not found: " + shown);
-        } catch (IOException e) {
-            throw error.apply("cannot open " + shown + ": " + FileProblem.of(candidate, e));
+            attributes = Files.readAttributes(real, BasicFileAttributes.class);
+        } catch (IOException | SecurityException e) {
+            reach(candidate);
+            reachAlso(alsoWatched);
+            if (e instanceof NoSuchFileException) {
+                throw error.apply("file not found: " + shown);
+            }
+            if (e instanceof IOException io) {
+                throw error.apply("cannot open " + shown + ": " + FileProblem.of(candidate, io));
+            }
+            throw error.apply("cannot open " + shown + ": " + e.getMessage());
         }
-        String notAFile = FileProblem.notAFile(real);
+        reach(candidate, real, FileStamp.of(attributes));
+        reachAlso(alsoWatched);
+        String notAFile = FileProblem.notAFile(attributes);
         if (notAFile != null) {
             throw error.apply(notAFile + ": " + shown);
         }
-        return real;
+        return new Resolved(real, attributes.size());
+    }
+
+    private void reachAlso(Path alsoWatched) {
+        if (alsoWatched != null) {
+            reach(alsoWatched); // a file appearing beside the including one would take over
+        }
     }
 
     /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */
@@ -279,7 +318,9 @@ final class FileStack implements AutoCloseable {
         return sb.append(real.getFileName()).toString();
     }
 
-    private SimpReader open(Path file, Path real) throws SceneException {
+    /** A reader of {@code file}: its bytes kept from an earlier include, or read whole when small, else streamed. */
+    private SimpReader open(Path file, Resolved resolved) throws SceneException {
+        Path real = resolved.real;
         byte[] cached = smallFiles.get(real);
         if (cached != null) {
             Recording recording = recordings.get(real);
@@ -287,7 +328,7 @@ final class FileStack implements AutoCloseable {
                     : SimpReader.recording(file, cached);
         }
         try {
-            long size = Files.size(real);
+            long size = resolved.size; // as the file was when it was reached: readAllBytes reads what is there now
             if (size <= smallFileLimit && cachedBytes + size <= CACHE_BUDGET) {
                 byte[] content = Files.readAllBytes(real);
                 smallFiles.put(real, content);
