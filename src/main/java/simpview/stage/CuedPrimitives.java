@@ -32,7 +32,7 @@ import simpview.surface.RowBands;
  */
 public final class CuedPrimitives {
 
-    /** Primitives after which a batch is handed off. */
+    /** The most primitives a batch holds; a picture's first batches hold fewer ({@link BatchDrawing}). */
     private static final int MOST_PRIMITIVES = 4096;
     /**
      * Pixels after which a batch is handed off, however few its primitives:

@@ -39,7 +39,10 @@ public final class LitPrimitives {
     static final byte FILL = 0;
     static final byte LINE = 1;
     static final byte OUTLINE = 2;
-    /** Primitives, or numbers, after which a batch is handed off. */
+    /**
+     * The most primitives, or numbers, a batch holds; a picture's first
+     * batches hold fewer primitives ({@link BatchDrawing}).
+     */
     private static final int MOST_PRIMITIVES = 4096;
     private static final int MOST_NUMBERS = 1 << 18;
     /**

@@ -292,7 +292,7 @@ final class FileStack implements AutoCloseable {
             if (e instanceof IOException io) {
                 throw error.apply("cannot open " + shown + ": " + FileProblem.of(candidate, io));
             }
-            throw error.apply("cannot open " + shown + ": " + e.getMessage());
+            throw error.apply("cannot open " + shown + ": access denied");
         }
         reach(candidate, real, FileStamp.of(attributes));
         reachAlso(alsoWatched);
