@@ -17,7 +17,7 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
@@ -27,9 +27,9 @@ import simpview.surface.DrawingThreads;
  * One course page of the third or fourth assignment (@Param scene, as
  * "a3/pageI" or "a4/page-d"), from course-simp-a3 and course-simp-a4 beside
  * -Dsimpview.courseSimp: clear the canvas, then draw the lit scene, as the
- * window does. Its .obj models are parsed once in the set-up and kept by the
- * library (as the program keeps them while their files are unchanged), so
- * one op is the warm redraw. Sampled, in ms.
+ * window does. Its .simp files and .obj models are read once in the set-up
+ * and kept by its {@code SceneLibrary} (as the window keeps them while their
+ * files are unchanged), so one op is the warm redraw. Sampled, in ms.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)
@@ -52,7 +52,7 @@ public class LitPages {
 
     private DrawingThreads drawing;
     private final PageCanvas canvas = new PageCanvas();
-    private final ObjLibrary models = new ObjLibrary();
+    private final SceneLibrary library = new SceneLibrary();
     private Path file;
 
     @Setup(Level.Trial)
@@ -66,7 +66,7 @@ public class LitPages {
             throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
         }
         clearAndDraw(); // parses the models, and fails the trial at once if the scene cannot be drawn
-        if (models.parseCount() == 0 && scene.endsWith("pageI")) {
+        if (library.models().parseCount() == 0 && scene.endsWith("pageI")) {
             throw new IllegalStateException("pageI drew no model");
         }
     }
@@ -79,7 +79,7 @@ public class LitPages {
     @Benchmark
     public PageCanvas clearAndDraw() throws SceneException {
         canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
         return canvas;
     }
 }

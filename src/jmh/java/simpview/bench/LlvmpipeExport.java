@@ -14,6 +14,7 @@ import java.util.Locale;
 import simpview.geometry.Camera;
 import simpview.raster.FragmentLayout;
 import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SimpClient;
@@ -79,20 +80,20 @@ public final class LlvmpipeExport {
 
     /** Median and best of 61 warm redraws, in ms. */
     private static double[] time(Path file, int threads) throws Exception {
-        ObjLibrary models = new ObjLibrary();
+        SceneLibrary library = new SceneLibrary();
         try (DrawingThreads drawing = DrawingThreads.of(threads)) {
             PageCanvas canvas = new PageCanvas();
             canvas.drawWith(drawing);
             long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
             for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
                 canvas.clear();
-                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
             }
             double[] t = new double[61];
             for (int r = 0; r < t.length; r++) {
                 long start = System.nanoTime();
                 canvas.clear();
-                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+                ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
                 t[r] = (System.nanoTime() - start) / 1e6;
             }
             Arrays.sort(t);

@@ -24,7 +24,7 @@ import simpview.pages.PageRenderer;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
@@ -89,7 +89,7 @@ public class OrbitFrame {
 
     private PageRenderer renderer;
     private DrawingThreads drawing;
-    private final ObjLibrary models = new ObjLibrary();
+    private final SceneLibrary library = new SceneLibrary();
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
     private final Turned monitor = new Turned();
     private PageContext context;
@@ -164,7 +164,7 @@ public class OrbitFrame {
             renderer.render(7, context);
         } else {
             canvas.clear();
-            ScenePipeline.draw(litFile, canvas, ScenePipeline.Options.lit(models), monitor);
+            ScenePipeline.draw(litFile, canvas, ScenePipeline.Options.lit(library), monitor);
         }
         if (!copy) {
             return null;

@@ -27,7 +27,7 @@ import simpview.inspect.SkippedPrimitives;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneDrawer;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -71,7 +71,7 @@ public class Overlays {
     @Param({"a4/page-d", "a3/pageI", "a2/page7"})
     public String scene;
 
-    private final ObjLibrary models = new ObjLibrary();
+    private final SceneLibrary library = new SceneLibrary();
     private final PageCanvas canvas = new PageCanvas();
     private final PageRenderer renderer = new PageRenderer();
     private final PageRenderer windowRenderer = new PageRenderer();
@@ -106,7 +106,7 @@ public class Overlays {
         if (recorded == null || recorded.facts().owners() == null) {
             throw new IllegalStateException(scene + ": the window's drawing recorded no owners");
         }
-        Overdraw.Counts counts = Overdraw.counts(inspected, models);
+        Overdraw.Counts counts = Overdraw.counts(inspected, library);
         counted = counts;
         System.out.println(scene + ": up to " + Overdraw.max(counts.reached()) + " writes at a pixel, "
                 + BackFacePicture.of(recorded.image(), recorded.facts()).backFacing() + " back faces");
@@ -118,30 +118,30 @@ public class Overlays {
             return renderer.render(((View.OfPage) view).number(), context);
         }
         canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(models), SceneMonitor.NONE);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(library), SceneMonitor.NONE);
         return canvas;
     }
 
     @Benchmark
     public RenderedView windowDraw() {
-        return new RenderJob(view, context, DrawSettings.WINDOW).run(windowRenderer, SceneDrawer.SIMP, models,
+        return new RenderJob(view, context, DrawSettings.WINDOW).run(windowRenderer, SceneDrawer.SIMP, library,
                 provenance);
     }
 
     @Benchmark
     public BufferedImage overdraw() throws SceneException {
-        return OverdrawPicture.of(Overdraw.counts(inspected, models).reached());
+        return OverdrawPicture.of(Overdraw.counts(inspected, library).reached());
     }
 
     @Benchmark
     public BufferedImage failures() throws SceneException {
-        return OverdrawPicture.of(Overdraw.counts(inspected, models).failed(), "depth-test failures");
+        return OverdrawPicture.of(Overdraw.counts(inspected, library).failed(), "depth-test failures");
     }
 
     /** The overdraw overlay's replay alone, without its picture. */
     @Benchmark
     public Overdraw.Counts counts() throws SceneException {
-        return Overdraw.counts(inspected, models);
+        return Overdraw.counts(inspected, library);
     }
 
     /** The overdraw overlay's picture alone, of counts made in the set-up. */
@@ -162,7 +162,7 @@ public class Overlays {
 
     @Benchmark
     public SkippedPrimitives.Found culledAndClipped() throws SceneException {
-        return SkippedPrimitives.of(inspected, models);
+        return SkippedPrimitives.of(inspected, library);
     }
 
     @Benchmark

@@ -25,8 +25,11 @@ import simpview.surface.DrawingThreads;
 /**
  * One whole page, as the window shows it: clear (image and z-buffer) and
  * draw. Pages 1 to 3 with the default seed; 4 and 5 from the project's
- * simp/ folder; 6 to 8 from the course folder, -Dsimpview.courseSimp.
- * Sampled, so the summary can report the median time.
+ * simp/ folder; 6 to 8 from the course folder, -Dsimpview.courseSimp. The
+ * scene pages' files are read in the set-up and kept by the context's
+ * {@code SceneLibrary} (as the window keeps them while they are unchanged),
+ * so one op is the warm redraw. Sampled, so the summary can report the
+ * median time.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)

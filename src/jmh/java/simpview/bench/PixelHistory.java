@@ -19,7 +19,7 @@ import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
@@ -46,7 +46,7 @@ public class PixelHistory {
     @Param({"a4/page-d", "a3/pageI"})
     public String scene;
 
-    private final ObjLibrary models = new ObjLibrary();
+    private final SceneLibrary library = new SceneLibrary();
     private final PageCanvas canvas = new PageCanvas();
     private PixelInspector inspector;
     private PixelInspector historyOnly;
@@ -63,8 +63,8 @@ public class PixelHistory {
         if (!Files.isRegularFile(file)) {
             throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
         }
-        inspector = new PixelInspector(models, SceneMonitor.NONE);
-        historyOnly = new PixelInspector(models, SceneMonitor.NONE).explaining(false);
+        inspector = new PixelInspector(library, SceneMonitor.NONE);
+        historyOnly = new PixelInspector(library, SceneMonitor.NONE).explaining(false);
         inspected = InspectedScene.of(file);
         draw();
         // The drawn pixel with the most writes near the centre: rings outwards from it.
@@ -106,7 +106,7 @@ public class PixelHistory {
     @Benchmark
     public PageCanvas draw() throws SceneException {
         canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(models), SceneMonitor.NONE);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(library), SceneMonitor.NONE);
         return canvas;
     }
 }

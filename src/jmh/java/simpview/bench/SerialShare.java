@@ -4,7 +4,7 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.file.Path;
 import java.util.Locale;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
@@ -41,7 +41,7 @@ public final class SerialShare {
         for (int i = 1; i < args.length; i++) {
             String[] parts = args[i].split("/");
             Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
-            ObjLibrary models = new ObjLibrary();
+            SceneLibrary library = new SceneLibrary();
             try (DrawingThreads one = DrawingThreads.one(); DrawingThreads two = DrawingThreads.of(2)) {
                 PageCanvas canvas = new PageCanvas();
                 long bestOne = Long.MAX_VALUE;
@@ -51,10 +51,10 @@ public final class SerialShare {
                 long cpuTwo = 0;
                 for (int r = 0; r < rounds; r++) {
                     long cpu = cpu();
-                    bestOne = Math.min(bestOne, redraw(canvas, one, file, models));
+                    bestOne = Math.min(bestOne, redraw(canvas, one, file, library));
                     long between = cpu();
                     long before = two.nanosInBands();
-                    long t = redraw(canvas, two, file, models);
+                    long t = redraw(canvas, two, file, library);
                     long bands = two.nanosInBands() - before;
                     if (r >= rounds / 2) { // the second half, warm
                         long after = cpu();
@@ -92,12 +92,12 @@ public final class SerialShare {
         return 1 / (s + (1 - s) / n);
     }
 
-    private static long redraw(PageCanvas canvas, DrawingThreads threads, Path file, ObjLibrary models)
+    private static long redraw(PageCanvas canvas, DrawingThreads threads, Path file, SceneLibrary library)
             throws Exception {
         canvas.drawWith(threads);
         long start = System.nanoTime();
         canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(models), SceneMonitor.NONE);
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
         return System.nanoTime() - start;
     }
 }

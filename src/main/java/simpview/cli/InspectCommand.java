@@ -127,7 +127,7 @@ final class InspectCommand implements Callable<Integer> {
                 scene = near == null && far == null ? InspectedScene.of(what.scene)
                         : InspectedScene.cued(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
             }
-            PixelInspector inspector = new PixelInspector(new simpview.scene.obj.ObjLibrary(),
+            PixelInspector inspector = new PixelInspector(new simpview.scene.simp.SceneLibrary(),
                     PageDrawing.warningsTo(err()));
             usage(primitive == null || primitive >= 1, "--primitive counts from 1, as the window's stepping does");
             int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;

@@ -1,7 +1,7 @@
 package simpview.cli;
 
 import simpview.scene.simp.ScenePipeline;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -22,8 +22,8 @@ public final class PageDrawing {
 
     private final PageRenderer renderer;
     private final SceneMonitor monitor;
-    /** The models of this run's lit scenes: each .obj file read once however many scenes draw it. */
-    private final ObjLibrary models = new ObjLibrary();
+    /** The files of this run's scenes: each .simp or .obj file read once however many scenes draw it. */
+    private final SceneLibrary library = new SceneLibrary();
 
     /** Draws with {@code threads}, which the caller owns and closes. */
     PageDrawing(SceneMonitor monitor, DrawingThreads threads) {
@@ -33,7 +33,7 @@ public final class PageDrawing {
 
     /** Page n; on a scene error the canvas keeps what was drawn before it and the error is thrown on. */
     PageCanvas page(int number, PageContext context) throws SceneException {
-        return renderer.render(number, context.withMonitor(monitor));
+        return renderer.render(number, context.withMonitor(monitor).withLibrary(library));
     }
 
     /**
@@ -45,7 +45,7 @@ public final class PageDrawing {
      */
     ScenePipeline.Drawn scene(Path file, Rgb near, Rgb far, boolean ownColours) throws SceneException {
         boolean cueGiven = near != null || far != null;
-        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models)
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(library)
                 .withCue(near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far)
                 .withOwnColours(ownColours)
                 .withRules(cueGiven ? ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING : ScenePipeline.Rules.BY_COMMANDS);

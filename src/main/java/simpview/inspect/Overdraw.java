@@ -6,7 +6,7 @@ import simpview.geometry.Camera;
 import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.DrawingWatch;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -46,9 +46,9 @@ public final class Overdraw {
     private Overdraw() {
     }
 
-    /** The counts of the scene, drawn as {@code scene} says, its models from {@code models}. */
-    public static int[] of(InspectedScene scene, ObjLibrary models) throws SceneException {
-        return counts(scene, models).reached();
+    /** The counts of the scene, drawn as {@code scene} says, its files from {@code library}. */
+    public static int[] of(InspectedScene scene, SceneLibrary library) throws SceneException {
+        return counts(scene, library).reached();
     }
 
     /**
@@ -59,12 +59,12 @@ public final class Overdraw {
     }
 
     /** Both counts of the scene, drawn as {@code scene} says. */
-    public static Counts counts(InspectedScene scene, ObjLibrary models) throws SceneException {
+    public static Counts counts(InspectedScene scene, SceneLibrary library) throws SceneException {
         PageCanvas canvas = new PageCanvas();
         int[] counts = new int[PageCanvas.PANEL * PageCanvas.PANEL];
         int[] won = new int[counts.length];
         Counting counting = new Counting(counts, won, canvas.zbuffer().depths());
-        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
         ScenePipeline.draw(scene.file(), canvas, options, counting);
         int[] failed = new int[counts.length];

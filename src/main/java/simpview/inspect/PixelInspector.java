@@ -5,7 +5,7 @@ import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.DrawingWatch;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -38,18 +38,18 @@ import simpview.surface.ZBufferDrawable;
 public final class PixelInspector {
 
     private final PageCanvas canvas = new PageCanvas();
-    private final ObjLibrary models;
+    private final SceneLibrary library;
     private final SceneMonitor monitor;
     private boolean explaining = true;
 
     /** Models kept by this inspector across replays, warnings dropped. */
     public PixelInspector() {
-        this(new ObjLibrary(), SceneMonitor.NONE);
+        this(new SceneLibrary(), SceneMonitor.NONE);
     }
 
     /** @param monitor told the scene's warnings (its trace and turn are the inspector's own) */
-    public PixelInspector(ObjLibrary models, SceneMonitor monitor) {
-        this.models = models;
+    public PixelInspector(SceneLibrary library, SceneMonitor monitor) {
+        this.library = library;
         this.monitor = monitor;
     }
 
@@ -89,7 +89,7 @@ public final class PixelInspector {
         watch.want(primitive);
         watch.explaining(explaining);
         Replay replay = new Replay(watch);
-        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
         ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, options, replay);
         int argb = canvas.panel().getPixel(x, y);

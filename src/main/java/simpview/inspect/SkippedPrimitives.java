@@ -7,7 +7,7 @@ import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.DrawingWatch;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
@@ -50,10 +50,10 @@ public final class SkippedPrimitives {
     private SkippedPrimitives() {
     }
 
-    /** The scene's skipped primitives, drawn as {@code scene} says, its models from {@code models}. */
-    public static Found of(InspectedScene scene, ObjLibrary models) throws SceneException {
+    /** The scene's skipped primitives, drawn as {@code scene} says, its files from {@code library}. */
+    public static Found of(InspectedScene scene, SceneLibrary library) throws SceneException {
         Collecting collecting = new Collecting();
-        ScenePipeline.Options options = ScenePipeline.Options.byCommands(models).withRules(scene.rules())
+        ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
         ScenePipeline.draw(scene.file(), new PageCanvas(), options, collecting);
         return new Found(List.copyOf(collecting.found), collecting.unprojectable);

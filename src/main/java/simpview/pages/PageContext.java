@@ -1,6 +1,7 @@
 package simpview.pages;
 
 import java.nio.file.Path;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 
 /**
@@ -13,9 +14,11 @@ import simpview.scene.simp.SceneMonitor;
  * @param ownColours draw the scene pages with their vertices' own colours, without the depth cue
  *     (SPEC: "without depth cueing, that colour is used"); the pages themselves are cued
  * @param a1Rule the rule of the first assignment's Bresenham panels and fills
+ * @param library the scene pages' files, kept from picture to picture while unchanged: give a context
+ *     made afresh for each picture the library of whoever draws them ({@link #withLibrary})
  */
 public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor, boolean ownColours,
-        A1Rule a1Rule) {
+        A1Rule a1Rule, SceneLibrary library) {
 
     public static final long DEFAULT_SEED = 361;
 
@@ -26,9 +29,9 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
      */
     public static final Path PROJECT_SCENES = Path.of("simp");
 
-    /** The pages as they are meant to look: depth-cued. */
+    /** The pages as they are meant to look: depth-cued, from a library of their own. */
     public PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor) {
-        this(seed, simpDir, ownSimpDir, monitor, false, A1Rule.SPEC);
+        this(seed, simpDir, ownSimpDir, monitor, false, A1Rule.SPEC, new SceneLibrary());
     }
 
     /** The defaults with the project's scenes in {@link #PROJECT_SCENES}. */
@@ -42,22 +45,26 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
     }
 
     public PageContext withSeed(long newSeed) {
-        return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours, a1Rule);
+        return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours, a1Rule, library);
     }
 
     public PageContext withSimpDir(Path dir) {
-        return new PageContext(seed, dir, ownSimpDir, monitor, ownColours, a1Rule);
+        return new PageContext(seed, dir, ownSimpDir, monitor, ownColours, a1Rule, library);
     }
 
     public PageContext withMonitor(SceneMonitor newMonitor) {
-        return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours, a1Rule);
+        return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours, a1Rule, library);
     }
 
     public PageContext withA1Rule(A1Rule rule) {
-        return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, rule);
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, rule, library);
     }
 
     public PageContext withOwnColours(boolean own) {
-        return new PageContext(seed, simpDir, ownSimpDir, monitor, own, a1Rule);
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, own, a1Rule, library);
+    }
+
+    public PageContext withLibrary(SceneLibrary kept) {
+        return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, a1Rule, kept);
     }
 }

@@ -3,7 +3,6 @@ package simpview.pages;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -61,7 +60,7 @@ public final class ScenePage implements Page {
                     + dir.toAbsolutePath().normalize()
                     + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.depthCued(near, new ObjLibrary())
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.depthCued(near, context.library())
                 .withOwnColours(context.ownColours()), context.monitor());
     }
 }

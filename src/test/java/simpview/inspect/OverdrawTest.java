@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,7 +9,6 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.reference.RandomLitScenes;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
 
@@ -21,8 +21,8 @@ class OverdrawTest {
     @TempDir
     Path dir;
 
-    private final ObjLibrary models = new ObjLibrary();
-    private final PixelInspector inspector = new PixelInspector(models, SceneMonitor.NONE);
+    private final SceneLibrary library = new SceneLibrary();
+    private final PixelInspector inspector = new PixelInspector(library, SceneMonitor.NONE);
 
     @Test
     void historyAndOverdrawAgree() throws Exception {
@@ -31,7 +31,7 @@ class OverdrawTest {
             InspectedScene lit = InspectedScene.of(RandomLitScenes.write(dir, seed));
             InspectedScene cued = InspectedScene.of(RandomCuedScenes.write(dir, seed));
             for (InspectedScene scene : new InspectedScene[] {lit, cued}) {
-                Overdraw.Counts both = Overdraw.counts(scene, models);
+                Overdraw.Counts both = Overdraw.counts(scene, library);
                 int[] counts = both.reached();
                 Random random = new Random(seed);
                 for (int k = 0; k < 16; k++) {
@@ -60,7 +60,7 @@ class OverdrawTest {
         Path a4 = simpview.testing.CourseFiles.require("course-simp-a4");
         for (Path file : new Path[] {a4.resolve("page-d.simp"), a3.resolve("pageI.simp")}) {
             InspectedScene scene = InspectedScene.of(file);
-            Overdraw.Counts both = Overdraw.counts(scene, models);
+            Overdraw.Counts both = Overdraw.counts(scene, library);
             Random random = new Random(file.getFileName().toString().hashCode());
             java.util.List<Integer> reachedPixels = new java.util.ArrayList<>();
             for (int i = 0; i < both.reached().length; i++) {

@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -17,7 +18,6 @@ import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
@@ -37,8 +37,8 @@ class PixelHistoryTest {
     @TempDir
     Path dir;
 
-    private static final ObjLibrary MODELS = new ObjLibrary();
-    private final PixelInspector inspector = new PixelInspector(MODELS, simpview.scene.simp.SceneMonitor.NONE);
+    private static final SceneLibrary LIBRARY = new SceneLibrary();
+    private final PixelInspector inspector = new PixelInspector(LIBRARY, simpview.scene.simp.SceneMonitor.NONE);
 
     @Test
     void litScenesOfEveryKind() throws Exception {
@@ -169,7 +169,7 @@ class PixelHistoryTest {
                 return log;
             }
         };
-        ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, ScenePipeline.Options.byCommands(MODELS)
+        ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, ScenePipeline.Options.byCommands(LIBRARY)
                 .withRules(scene.rules()).withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours()), monitor);
         int n = PageCanvas.PANEL * PageCanvas.PANEL;
         int[] pixels = new int[n];

@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -9,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.scene.obj.ObjLibrary;
 
 /**
  * The primitives that reach no rasterizer, projected by hand: SPEC's camera
@@ -39,7 +39,7 @@ class SkippedPrimitivesTest {
                 // line 7: left of the left plane (x < z) and through the eye's plane: culled, outlined by its
                 // part in front of the eye
                 + "polygon (-20, 0, -10) (-20, 1, -10) (-20, 0, 5)\n");
-        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new ObjLibrary());
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new SceneLibrary());
         assertEquals(3, found.outlined().size());
         assertEquals(1, found.unprojectable());
         SkippedPrimitives.Skipped far = found.outlined().get(0);
@@ -72,7 +72,7 @@ class SkippedPrimitivesTest {
         Path scene = dir.resolve("cued.simp");
         Files.writeString(scene, "polygon (60, -90, -300) (90, -90, -300) (90, -60, -300)\n"
                 + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
-        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new ObjLibrary());
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new SceneLibrary());
         assertEquals(1, found.outlined().size());
         assertTrue(found.outlined().get(0).culled());
         assertEquals(0, found.unprojectable());

@@ -119,7 +119,7 @@ class LitLightingTest {
 
     private PageCanvas draw(String... lines) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        ScenePipeline.draw(write("scene.simp", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
+        ScenePipeline.draw(write("scene.simp", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE);
         return canvas;
     }
 

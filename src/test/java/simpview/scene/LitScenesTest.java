@@ -31,14 +31,14 @@ class LitScenesTest {
 
     private PageCanvas draw(String... lines) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        ScenePipeline.draw(write("s", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE);
+        ScenePipeline.draw(write("s", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE);
         return canvas;
     }
 
     private SceneException failure(String... lines) throws Exception {
         Path file = write("bad", lines);
         return assertThrows(SceneException.class,
-                () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), SceneMonitor.NONE));
+                () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE));
     }
 
     private static int[] rgb(PageCanvas canvas, int x, int y) {
@@ -182,7 +182,7 @@ class LitScenesTest {
         PageCanvas canvas = new PageCanvas();
         ScenePipeline.draw(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
                 "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas,
-                ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), monitor);
+                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), monitor);
         assertEquals(java.util.List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 warnings);
         assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");

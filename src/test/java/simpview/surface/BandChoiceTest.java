@@ -1,5 +1,6 @@
 package simpview.surface;
 
+import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -13,7 +14,6 @@ import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 
@@ -117,7 +117,7 @@ class BandChoiceTest {
         try (drawing) {
             PageCanvas canvas = new PageCanvas();
             canvas.drawWith(drawing);
-            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), new SceneMonitor() {
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()), new SceneMonitor() {
             });
             tasks[0] = drawing.tasks();
             return ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();

@@ -1,8 +1,8 @@
 package simpview.testing;
 
+import simpview.scene.simp.SceneLibrary;
 import java.nio.file.Path;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
@@ -16,7 +16,7 @@ public final class DrawnScenes {
     /** Draws {@code file} by the rules its commands call for onto {@code canvas} (cleared first). */
     public static ScenePipeline.Drawn draw(Path file, PageCanvas canvas) throws SceneException {
         canvas.clear();
-        return ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), SceneMonitor.NONE);
+        return ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()), SceneMonitor.NONE);
     }
 
     /** What drawing {@code file} by its commands' rules drew. */

@@ -48,7 +48,7 @@ public final class LitGoldens {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 PageCanvas canvas = new PageCanvas();
                 canvas.drawWith(drawing);
-                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()),
+                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()),
                         SceneMonitor.NONE);
                 return canvas.snapshot();
             }

@@ -26,24 +26,26 @@ import simpview.scene.text.LineSource;
  * <p>File descriptors: only the top {@link #MAX_OPEN} readers keep their file
  * open; a deeper one is suspended (closed, its offset remembered) and reopens
  * where it was when it is on top again. Small files, which scenes include
- * over and over (a cube, a sphere), are read whole once and kept in memory
- * for the rest of the scene, up to a fixed budget: their bytes, and once
- * read to the end, their commands, which later includes replay without
- * scanning the bytes again. Where a name leads is also looked up only once.
+ * over and over (a cube, a sphere), are read whole, and once read to the
+ * end their bytes and commands are kept in a {@link SimpLibrary}: later
+ * includes, and later pictures given the same library, replay them without
+ * reading or scanning the file again. Where a name leads is looked up only
+ * once a scene.
  */
 final class FileStack implements AutoCloseable {
 
     static final int MAX_OPEN = 8;
     static final int SMALL_FILE = LineSource.CHUNK;
-    private static final long CACHE_BUDGET = 8L << 20;
 
     private final List<SimpReader> readers = new ArrayList<>();
-    private final List<Path> realPaths = new ArrayList<>();
+    /** The file each reader reads, as it was resolved. */
+    private final List<Resolved> resolvedReaders = new ArrayList<>();
     private final Set<Path> onStack = new HashSet<>();
-    private final Map<Path, byte[]> smallFiles = new HashMap<>();
     private final Map<Name, Found> found = new HashMap<>();
-    private final Map<Path, Recording> recordings = new HashMap<>();
     private final long smallFileLimit;
+    private final SimpLibrary library;
+    /** The real paths of the files whose bytes this scene has read: replayed on their stamps from then on. */
+    private final Set<Path> readThisPicture = new HashSet<>();
     /** The working directory names are also looked for in (where the course's programs looked), absolute. */
     private final Path workingDir;
     /** Every file the scene read or looked for, each once, in the order met: what a window watches. */
@@ -51,7 +53,6 @@ final class FileStack implements AutoCloseable {
     private final List<Path> reached = new ArrayList<>();
     /** Each reached file as it was when it was reached, before it was read. */
     private final List<FileStamp> stamps = new ArrayList<>();
-    private long cachedBytes;
     private long linesOfFinishedFiles;
     /** The top file's size when it was opened, for the share of it read so far. */
     private long topFileBytes;
@@ -62,21 +63,25 @@ final class FileStack implements AutoCloseable {
 
     /** @param smallFileLimit files up to this many bytes are read whole and kept; -1 streams every file */
     FileStack(long smallFileLimit) {
-        this(smallFileLimit, Path.of("").toAbsolutePath());
+        this(smallFileLimit, Path.of("").toAbsolutePath(), new SimpLibrary());
     }
 
-    /** @param workingDir the folder names are looked for in after the including file's, absolute */
-    FileStack(long smallFileLimit, Path workingDir) {
+    /**
+     * @param workingDir the folder names are looked for in after the including file's, absolute
+     * @param library where small files read whole are kept, and looked for first
+     */
+    FileStack(long smallFileLimit, Path workingDir, SimpLibrary library) {
         this.smallFileLimit = smallFileLimit;
         this.workingDir = workingDir;
+        this.library = library;
     }
 
     /** Starts with the scene's top file. */
     void openTop(Path named) throws SceneException {
         Path file = withExtension(named);
         Resolved top = resolve(file, null, problem -> new SceneException(file, 0, 0, "", problem));
-        topFileBytes = top.size;
-        push(open(file, top), top.real);
+        topFileBytes = top.stamp.size();
+        push(open(file, top), top);
     }
 
     /**
@@ -140,7 +145,7 @@ final class FileStack implements AutoCloseable {
         } catch (SceneException e) {
             throw from.error(c.argumentIndex, e.problem());
         }
-        push(reader, found.resolved.real);
+        push(reader, found.resolved);
     }
 
     /**
@@ -179,8 +184,11 @@ final class FileStack implements AutoCloseable {
     private record Located(Path path, Path alsoWatched) {
     }
 
-    /** A file to read: its real path, which identifies it, and its size when it was reached. */
-    private record Resolved(Path real, long size) {
+    /**
+     * A file to read: its real path, which identifies it, its stamp when it
+     * was reached, and whether it had settled then ({@link SimpLibrary}).
+     */
+    private record Resolved(Path real, FileStamp stamp, boolean settled) {
     }
 
     /**
@@ -278,6 +286,7 @@ final class FileStack implements AutoCloseable {
     private Resolved resolve(Path candidate, Path alsoWatched, Function<String, SceneException> error)
             throws SceneException {
         String shown = candidate.toAbsolutePath().normalize().toString();
+        long lookedAt = System.currentTimeMillis();
         Path real;
         BasicFileAttributes attributes;
         try {
@@ -294,13 +303,14 @@ final class FileStack implements AutoCloseable {
             }
             throw error.apply("cannot open " + shown + ": access denied");
         }
-        reach(candidate, real, FileStamp.of(attributes));
+        FileStamp stamp = FileStamp.of(attributes);
+        reach(candidate, real, stamp);
         reachAlso(alsoWatched);
         String notAFile = FileProblem.notAFile(attributes);
         if (notAFile != null) {
             throw error.apply(notAFile + ": " + shown);
         }
-        return new Resolved(real, attributes.size());
+        return new Resolved(real, stamp, library.settled(attributes, lookedAt));
     }
 
     private void reachAlso(Path alsoWatched) {
@@ -312,60 +322,51 @@ final class FileStack implements AutoCloseable {
     /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */
     private String chain(Path real) {
         StringBuilder sb = new StringBuilder();
-        for (int k = realPaths.indexOf(real); k < readers.size(); k++) {
+        int first = 0;
+        while (!resolvedReaders.get(first).real.equals(real)) {
+            first++;
+        }
+        for (int k = first; k < readers.size(); k++) {
             sb.append(readers.get(k).file().getFileName()).append(" → ");
         }
         return sb.append(real.getFileName()).toString();
     }
 
-    /** A reader of {@code file}: its bytes kept from an earlier include, or read whole when small, else streamed. */
+    /**
+     * A reader of {@code file}: a small one from the library (its commands
+     * replayed when kept and unchanged, else read whole and recorded), a
+     * bigger one streamed. A small file's size is the one it had when it was
+     * reached; readAllBytes reads what is there now.
+     */
     private SimpReader open(Path file, Resolved resolved) throws SceneException {
-        Path real = resolved.real;
-        byte[] cached = smallFiles.get(real);
-        if (cached != null) {
-            Recording recording = recordings.get(real);
-            return recording != null ? SimpReader.replaying(file, cached, recording)
-                    : SimpReader.recording(file, cached);
+        if (resolved.stamp.size() > smallFileLimit) {
+            return SimpReader.open(file);
         }
         try {
-            long size = resolved.size; // as the file was when it was reached: readAllBytes reads what is there now
-            if (size <= smallFileLimit && cachedBytes + size <= CACHE_BUDGET) {
-                byte[] content = Files.readAllBytes(real);
-                smallFiles.put(real, content);
-                cachedBytes += content.length;
-                return SimpReader.recording(file, content);
-            }
+            return library.open(file, resolved.real, resolved.stamp, resolved.settled, readThisPicture);
         } catch (IOException e) {
             throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + e.getMessage());
         }
-        return SimpReader.open(file);
     }
 
-    private void push(SimpReader reader, Path real) throws SceneException {
+    private void push(SimpReader reader, Resolved resolved) throws SceneException {
         readers.add(reader);
-        realPaths.add(real);
-        onStack.add(real);
+        resolvedReaders.add(resolved);
+        onStack.add(resolved.real);
         int deepestOpen = readers.size() - 1 - MAX_OPEN;
         if (deepestOpen >= 0) {
             readers.get(deepestOpen).suspend();
         }
     }
 
+    /** Ends the top file; a small one read to its end without an error is kept in the library. */
     private void pop() {
         SimpReader done = readers.remove(readers.size() - 1);
         done.close();
         linesOfFinishedFiles += done.linesRead();
-        Path real = realPaths.remove(realPaths.size() - 1);
-        onStack.remove(real);
-        keep(real, done.finishedRecording());
-    }
-
-    /** Keeps a small file's commands, once read to the end without an error, while the budget lasts. */
-    private void keep(Path real, Recording recording) {
-        if (recording != null && !recordings.containsKey(real) && cachedBytes + recording.bytes() <= CACHE_BUDGET) {
-            recordings.put(real, recording);
-            cachedBytes += recording.bytes();
-        }
+        Resolved resolved = resolvedReaders.remove(resolvedReaders.size() - 1);
+        onStack.remove(resolved.real);
+        library.keep(resolved.real, resolved.stamp, resolved.settled, done);
     }
 
     private SimpReader top() {

@@ -3,7 +3,6 @@ package simpview.scene.simp;
 import java.nio.file.Path;
 import java.util.List;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.shading.FragmentStage;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
@@ -21,7 +20,8 @@ import simpview.surface.Rgb;
  * <li>a canvas its caller has just cleared ({@link PageCanvas#clear}): white
  *     margins, black panel, the z-buffer at the far plane;
  * <li>the files read once each, command by command ({@link SimpInterpreter},
- *     {@link FileStack}), every command carried out by {@link SimpClient}:
+ *     {@link FileStack}), or replayed from the options' {@link SceneLibrary}
+ *     while unchanged, every command carried out by {@link SimpClient}:
  *     the CTM and the stacks, then each primitive by the scene's rules;
  * <li>depth-cued rules (SPEC Part 1, {@link DepthCuedRules}): world space,
  *     culling, panel space, DDA lines and top-left-rule triangles, through
@@ -64,25 +64,27 @@ public final class ScenePipeline {
      * @param far its colour at z = -200
      * @param ownColours depth-cued scenes in their vertices' own colours (white where none), without the cue
      * @param rules which rules the scene may be drawn by
-     * @param models where lit scenes' obj models come from: kept by whoever draws, across pictures
+     * @param library where the scene's small .simp files and its obj models come from, and are kept:
+     *     by whoever draws, across pictures
      * @param workingDir where {@code file} and {@code obj} names are looked for after the including
      *     file's folder (the course's programs looked in the working directory), absolute
      */
-    public record Options(Rgb near, Rgb far, boolean ownColours, Rules rules, ObjLibrary models, Path workingDir) {
+    public record Options(Rgb near, Rgb far, boolean ownColours, Rules rules, SceneLibrary library,
+            Path workingDir) {
 
         /** A scene as its commands say, depth-cued from white to black when it is not lit. */
-        public static Options byCommands(ObjLibrary models) {
-            return new Options(Rgb.WHITE, Rgb.BLACK, false, Rules.BY_COMMANDS, models, processWorkingDir());
+        public static Options byCommands(SceneLibrary library) {
+            return new Options(Rgb.WHITE, Rgb.BLACK, false, Rules.BY_COMMANDS, library, processWorkingDir());
         }
 
         /** By the lit rules from the first command on. */
-        public static Options lit(ObjLibrary models) {
-            return byCommands(models).withRules(Rules.LIT);
+        public static Options lit(SceneLibrary library) {
+            return byCommands(library).withRules(Rules.LIT);
         }
 
         /** A page's scene: always depth-cued from {@code near} to black. */
-        public static Options depthCued(Rgb near, ObjLibrary models) {
-            return byCommands(models).withRules(Rules.DEPTH_CUED).withCue(near, Rgb.BLACK);
+        public static Options depthCued(Rgb near, SceneLibrary library) {
+            return byCommands(library).withRules(Rules.DEPTH_CUED).withCue(near, Rgb.BLACK);
         }
 
         private static Path processWorkingDir() {
@@ -90,19 +92,19 @@ public final class ScenePipeline {
         }
 
         public Options withCue(Rgb newNear, Rgb newFar) {
-            return new Options(newNear, newFar, ownColours, rules, models, workingDir);
+            return new Options(newNear, newFar, ownColours, rules, library, workingDir);
         }
 
         public Options withOwnColours(boolean own) {
-            return new Options(near, far, own, rules, models, workingDir);
+            return new Options(near, far, own, rules, library, workingDir);
         }
 
         public Options withRules(Rules newRules) {
-            return new Options(near, far, ownColours, newRules, models, workingDir);
+            return new Options(near, far, ownColours, newRules, library, workingDir);
         }
 
         public Options withWorkingDir(Path dir) {
-            return new Options(near, far, ownColours, rules, models, dir.toAbsolutePath());
+            return new Options(near, far, ownColours, rules, library, dir.toAbsolutePath());
         }
     }
 
@@ -128,7 +130,7 @@ public final class ScenePipeline {
      */
     public static Drawn draw(Path file, PageCanvas canvas, Options options, SceneMonitor monitor)
             throws SceneException {
-        FileStack files = new FileStack(FileStack.SMALL_FILE, options.workingDir());
+        FileStack files = files(options);
         String litAfterDrawing = null;
         try {
             SimpClient client = options.rules() == Rules.LIT ? litFromTheStart(canvas, options, files, monitor)
@@ -150,6 +152,11 @@ public final class ScenePipeline {
         return drawnAgainLit(file, canvas, options, monitor, litAfterDrawing);
     }
 
+    /** The scene's files, read from the options' library and kept in it. */
+    private static FileStack files(Options options) {
+        return new FileStack(FileStack.SMALL_FILE, options.workingDir(), options.library().scenes());
+    }
+
     /** A scene that turned lit after it had drawn depth-cued: the whole of it again, lit from its first command. */
     private static Drawn drawnAgainLit(Path file, PageCanvas canvas, Options options, SceneMonitor monitor,
             String litBecause) throws SceneException {
@@ -158,7 +165,7 @@ public final class ScenePipeline {
         if (trace != null) {
             trace.restart();
         }
-        FileStack files = new FileStack(FileStack.SMALL_FILE, options.workingDir());
+        FileStack files = files(options);
         try {
             SimpClient client = litFromTheStart(canvas, options, files, monitor);
             run(client, monitor, file);
@@ -212,7 +219,7 @@ public final class ScenePipeline {
     private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
         Drawable panel = canvas.litPanel();
         FragmentStage fragments = new FragmentStage(canvas.zbuffer(), panel);
-        LitRules lit = new LitRules(fragments, options.models(), files, monitor.trace(), monitor.viewTurn());
+        LitRules lit = new LitRules(fragments, options.library().models(), files, monitor.trace(), monitor.viewTurn());
         DrawingWatch watch = monitor.watch();
         if (watch != null) {
             // Drawn on this thread alone: the watch sees each fragment as the rasterizers make it.

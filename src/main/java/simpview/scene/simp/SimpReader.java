@@ -34,6 +34,8 @@ public final class SimpReader implements AutoCloseable {
     /** The commands read so far, kept to be replayed (small files only), or those being replayed. */
     private Recording recording;
     private boolean replaying;
+    /** The bytes a recording or replaying reader reads; null when streamed. */
+    private byte[] content;
     /** Commands replayed so far. */
     private int replayed;
     private byte[] b;
@@ -63,6 +65,7 @@ public final class SimpReader implements AutoCloseable {
     static SimpReader recording(Path file, byte[] content) {
         SimpReader r = of(file, content);
         r.recording = new Recording(lineCount(content));
+        r.content = content;
         return r;
     }
 
@@ -80,7 +83,13 @@ public final class SimpReader implements AutoCloseable {
         SimpReader r = of(file, content);
         r.recording = recording;
         r.replaying = true;
+        r.content = content;
         return r;
+    }
+
+    /** This file's bytes and commands, once it has been read (not replayed) to its end without an error; else null. */
+    SimpLibrary.Read newlyRecorded() {
+        return replaying || finishedRecording() == null ? null : new SimpLibrary.Read(content, recording);
     }
 
     /** The recording of this file, once it has been read to its end without an error; else null. */

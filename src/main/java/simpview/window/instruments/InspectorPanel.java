@@ -34,7 +34,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SourcePlace;
 
 /**
@@ -60,9 +60,9 @@ public final class InspectorPanel {
         t.setDaemon(true);
         return t;
     });
-    /** The replay's inspector, with its own models: used on the worker thread only. */
-    private final ObjLibrary models = new ObjLibrary();
-    private final PixelInspector inspector = new PixelInspector(models, SceneMonitor.NONE);
+    /** The replay's inspector, with its own scene files and models: used on the worker thread only. */
+    private final SceneLibrary library = new SceneLibrary();
+    private final PixelInspector inspector = new PixelInspector(library, SceneMonitor.NONE);
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
@@ -269,7 +269,7 @@ public final class InspectorPanel {
      * given to {@code show} on the EDT (null when the scene has an error).
      */
     public void overdraw(InspectedScene scene, Consumer<Overdraw.Counts> show) {
-        onWorker(() -> Overdraw.counts(scene, models), show);
+        onWorker(() -> Overdraw.counts(scene, library), show);
     }
 
     /**
@@ -278,7 +278,7 @@ public final class InspectorPanel {
      * the scene has an error).
      */
     public void skipped(InspectedScene scene, Consumer<SkippedPrimitives.Found> show) {
-        onWorker(() -> SkippedPrimitives.of(scene, models), show);
+        onWorker(() -> SkippedPrimitives.of(scene, library), show);
     }
 
     /** A replay of a whole scene for an overlay, run on the inspector's thread. */

@@ -1,6 +1,6 @@
 package simpview.window.render;
 
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneDrawer;
 
 import java.util.concurrent.ExecutorService;
@@ -30,8 +30,8 @@ public final class BackgroundRenderer {
     private final SceneDrawer drawer;
     /** Who drew each pixel of the picture being drawn; only this thread writes it (each band its own rows). */
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
-    /** The window's obj models, kept across redraws while their files are unchanged; only this thread uses it. */
-    private final ObjLibrary models = new ObjLibrary();
+    /** The window's scene files and obj models, kept across redraws while unchanged; only this thread uses it. */
+    private final SceneLibrary library = new SceneLibrary();
 
     /** Draws on the render thread alone. */
     public BackgroundRenderer(SceneDrawer drawer) {
@@ -52,7 +52,7 @@ public final class BackgroundRenderer {
     /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
     public void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
         thread.execute(() -> {
-            RenderedView result = job.run(renderer, drawer, models, provenance);
+            RenderedView result = job.run(renderer, drawer, library, provenance);
             SwingUtilities.invokeLater(() -> done.accept(job, result));
         });
     }

@@ -3,7 +3,7 @@ package simpview.window.render;
 import simpview.scene.simp.SceneDrawer;
 import simpview.scene.FileStamp;
 import simpview.scene.simp.ScenePipeline;
-import simpview.scene.obj.ObjLibrary;
+import simpview.scene.simp.SceneLibrary;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -140,9 +140,11 @@ public final class RenderJob implements SceneMonitor {
 
     /**
      * Draws on the render thread's canvas and returns a copy of the result,
-     * or null when the job was cancelled.
+     * or null when the job was cancelled; the scene files come from, and are
+     * kept in, the render thread's {@code library}.
      */
-    public RenderedView run(PageRenderer renderer, SceneDrawer drawer, ObjLibrary models, Provenance provenance) {
+    public RenderedView run(PageRenderer renderer, SceneDrawer drawer, SceneLibrary library,
+            Provenance provenance) {
         if (cancelled) {
             return null;
         }
@@ -154,7 +156,7 @@ public final class RenderJob implements SceneMonitor {
         boolean drewSomething = true;
         try {
             if (view instanceof View.OfPage page) {
-                renderer.render(page.number(), context);
+                renderer.render(page.number(), context.withLibrary(library));
             } else if (view instanceof View.OfAssignment1Page page) {
                 canvas.clear();
                 // Stepping: every panel's first stepLimit lines or triangles.
@@ -163,7 +165,7 @@ public final class RenderJob implements SceneMonitor {
             } else {
                 canvas.clear();
                 drawer.draw(((View.OfScene) view).file(), canvas,
-                        ScenePipeline.Options.byCommands(models).withOwnColours(settings.ownColours()), this);
+                        ScenePipeline.Options.byCommands(library).withOwnColours(settings.ownColours()), this);
             }
         } catch (SceneException e) {
             error = e.getMessage();

@@ -12,7 +12,6 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import simpview.scene.obj.ObjLibrary;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.DrawingThreads;
@@ -119,10 +118,10 @@ class BandedDrawingTest {
                 for (int round = 1; round <= 2; round++) {
                     for (Case c : all) {
                         canvas.clear();
-                        ScenePipeline.draw(c.scene(), canvas, ScenePipeline.Options.byCommands(new ObjLibrary()),
+                        ScenePipeline.draw(c.scene(), canvas, ScenePipeline.Options.byCommands(new SceneLibrary()),
                                 SceneMonitor.NONE);
                         PageCanvas fresh = new PageCanvas();
-                        ScenePipeline.draw(c.scene(), fresh, ScenePipeline.Options.byCommands(new ObjLibrary()),
+                        ScenePipeline.draw(c.scene(), fresh, ScenePipeline.Options.byCommands(new SceneLibrary()),
                                 SceneMonitor.NONE);
                         String how = c + ", round " + round + " on " + threads + " thread(s)";
                         assertArrayEquals(pixels(fresh), pixels(canvas), "pixels of " + how);
@@ -165,7 +164,7 @@ class BandedDrawingTest {
         };
         canvas.drawWith(threads);
         ScenePipeline.Drawn drawn = ScenePipeline.draw(c.scene(), canvas,
-                ScenePipeline.Options.byCommands(new ObjLibrary()), monitor);
+                ScenePipeline.Options.byCommands(new SceneLibrary()), monitor);
         assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
         int[] pixels = pixels(canvas);
         double[] z = canvas.zbuffer().copyDepths();

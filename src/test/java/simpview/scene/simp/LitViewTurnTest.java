@@ -11,7 +11,6 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.geometry.Axis;
 import simpview.geometry.Matrix4;
-import simpview.scene.obj.ObjLibrary;
 import simpview.surface.PageCanvas;
 
 /**
@@ -71,7 +70,7 @@ class LitViewTurnTest {
     private static BufferedImage draw(Path scene, Matrix4 turn) throws Exception {
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
-        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.obj.ObjLibrary()), new SceneMonitor() {
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
             @Override
             public Matrix4 viewTurn() {
                 return turn;

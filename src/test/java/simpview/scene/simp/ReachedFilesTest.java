@@ -2,7 +2,6 @@ package simpview.scene.simp;
 
 import java.util.ArrayList;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.surface.PageCanvas;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -45,7 +44,7 @@ class ReachedFilesTest {
 
     /** The files drawing {@code top} reached, an error or not, with {@link #working} as the working directory. */
     private List<Path> reached(Path top) {
-        return reached(top, ScenePipeline.Options.byCommands(new ObjLibrary()).withWorkingDir(working));
+        return reached(top, ScenePipeline.Options.byCommands(new SceneLibrary()).withWorkingDir(working));
     }
 
     private static List<Path> reached(Path top, ScenePipeline.Options options) {
@@ -107,7 +106,7 @@ class ReachedFilesTest {
         Path top = write(scenes.resolve("lit.simp"), "obj \"no-such-model-3f9\"\n");
         assertEquals(List.of(top, scenes.resolve("no-such-model-3f9.obj"),
                 Path.of("no-such-model-3f9.obj").toAbsolutePath()),
-                reached(top, ScenePipeline.Options.byCommands(new ObjLibrary())));
+                reached(top, ScenePipeline.Options.byCommands(new SceneLibrary())));
     }
 
     @Test

@@ -15,7 +15,6 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.SceneException;
-import simpview.scene.obj.ObjLibrary;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -39,7 +38,7 @@ class ScenePipelineTest {
 
     private ScenePipeline.Drawn draw(Path file, PageCanvas canvas, ScenePipeline.Rules rules) throws SceneException {
         canvas.clear();
-        return ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()).withRules(rules),
+        return ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()).withRules(rules),
                 monitor);
     }
 
@@ -159,7 +158,7 @@ class ScenePipelineTest {
         };
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
-        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary()), told);
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()), told);
         assertTrue(shares.size() >= 4, shares.toString());
         for (int i = 1; i < shares.size(); i++) {
             assertTrue(shares.get(i) >= shares.get(i - 1), shares.toString());
@@ -173,7 +172,7 @@ class ScenePipelineTest {
         Path scene = write("near.simp", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
-        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new ObjLibrary())
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new SceneLibrary())
                 .withCue(new Rgb(0, 1, 0), Rgb.BLACK), monitor);
         assertEquals(0x00FF00, canvas.image().getRGB(375, 400) & 0xFFFFFF, "green at z = 0");
     }

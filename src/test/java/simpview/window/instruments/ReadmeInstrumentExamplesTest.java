@@ -1,5 +1,6 @@
 package simpview.window.instruments;
 
+import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -7,7 +8,6 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneDrawer;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
@@ -28,7 +28,7 @@ class ReadmeInstrumentExamplesTest {
         Path course = CourseFiles.requireSimpDir();
         PageContext context = PageContext.defaults().withSimpDir(course);
         RenderJob job = new RenderJob(new View.OfPage(7), context, DrawSettings.WINDOW);
-        RenderedView seven = job.run(new PageRenderer(), SceneDrawer.SIMP, new ObjLibrary(),
+        RenderedView seven = job.run(new PageRenderer(), SceneDrawer.SIMP, new SceneLibrary(),
                 new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
         String readme = Files.readString(Path.of("README.md"));
         // Panel pixel (325, 400): image pixel (50 + 325, 50 + 649 - 400).

@@ -1,7 +1,9 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneLibrary;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -24,8 +26,43 @@ public class RenderJobTest {
     Path dir;
 
     private RenderedView draw(View view, DrawSettings settings) {
+        return draw(view, settings, new PageRenderer(), new SceneLibrary());
+    }
+
+    /** As the render thread draws: its renderer and its library kept from job to job. */
+    private RenderedView draw(View view, DrawSettings settings, PageRenderer renderer, SceneLibrary library) {
         RenderJob job = new RenderJob(view, PageContext.defaults().withSimpDir(dir), settings);
-        return job.run(new PageRenderer(), SceneDrawer.SIMP, new simpview.scene.obj.ObjLibrary(), new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
+        return job.run(renderer, SceneDrawer.SIMP, library, new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
+    }
+
+    private static int[] pixels(RenderedView view) {
+        return view.image().getRGB(0, 0, view.image().getWidth(), view.image().getHeight(), null, 0,
+                view.image().getWidth());
+    }
+
+    @Test
+    void theRenderThreadsLibraryKeepsAPagesFilesFromPictureToPicture() {
+        PageRenderer renderer = new PageRenderer();
+        SceneLibrary library = new SceneLibrary();
+        RenderedView first = draw(new View.OfPage(5), DrawSettings.WINDOW, renderer, library);
+        int scans = library.scenes().scanCount();
+        assertTrue(scans >= 2, "page5.simp and the files it includes: " + scans);
+        RenderedView again = draw(new View.OfPage(5), DrawSettings.WINDOW, renderer, library);
+        assertEquals(scans, library.scenes().scanCount(), "the second picture replays them");
+        assertArrayEquals(pixels(first), pixels(again));
+        assertEquals(first.facts().files(), again.facts().files());
+        assertArrayEquals(pixels(first), pixels(draw(new View.OfPage(5), DrawSettings.WINDOW)),
+                "the same as a picture with a library of its own");
+    }
+
+    @Test
+    void aSceneSavedBetweenPicturesIsDrawnAsSaved() throws Exception {
+        PageRenderer renderer = new PageRenderer();
+        SceneLibrary library = new SceneLibrary();
+        Path scene = Files.writeString(dir.resolve("edited.simp"), "line (-50, -50, -10) (50, 50, -10)\n");
+        assertEquals(1, draw(new View.OfScene(scene), DrawSettings.WINDOW, renderer, library).facts().primitives().size());
+        Files.writeString(scene, "line (-50, -50, -10) (50, 50, -10)\nline (-50, 50, -10) (50, -50, -10)\n");
+        assertEquals(2, draw(new View.OfScene(scene), DrawSettings.WINDOW, renderer, library).facts().primitives().size());
     }
 
     @Test
