@@ -1,7 +1,7 @@
 package simpview.cli;
 
-import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SceneLibrary;
+import simpview.scene.simp.ScenePipeline;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;

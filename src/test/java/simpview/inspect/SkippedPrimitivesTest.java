@@ -1,6 +1,5 @@
 package simpview.inspect;
 
-import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -10,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.simp.SceneLibrary;
 
 /**
  * The primitives that reach no rasterizer, projected by hand: SPEC's camera

@@ -1,8 +1,8 @@
 package simpview.testing;
 
-import simpview.scene.simp.SceneLibrary;
 import java.nio.file.Path;
 import simpview.scene.SceneException;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;

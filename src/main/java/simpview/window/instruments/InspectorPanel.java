@@ -17,6 +17,7 @@ import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.scene.SceneException;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import java.awt.Cursor;
 import java.awt.Point;
@@ -34,7 +35,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
-import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SourcePlace;
 
 /**

@@ -1,6 +1,5 @@
 package simpview.window.render;
 
-import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneDrawer;
 
 import java.util.concurrent.ExecutorService;
@@ -8,6 +7,7 @@ import java.util.concurrent.Executors;
 import java.util.function.BiConsumer;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageRenderer;
+import simpview.scene.simp.SceneLibrary;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;

@@ -2,8 +2,8 @@ package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
 import simpview.scene.FileStamp;
-import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SceneLibrary;
+import simpview.scene.simp.ScenePipeline;
 
 import java.io.IOException;
 import java.nio.file.Files;

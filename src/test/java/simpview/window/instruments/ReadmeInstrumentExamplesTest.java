@@ -1,6 +1,5 @@
 package simpview.window.instruments;
 
-import simpview.scene.simp.SceneLibrary;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -9,6 +8,7 @@ import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneLibrary;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.testing.CourseFiles;

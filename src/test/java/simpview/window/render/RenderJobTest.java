@@ -1,7 +1,6 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
-import simpview.scene.simp.SceneLibrary;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -16,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
+import simpview.scene.simp.SceneLibrary;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 
