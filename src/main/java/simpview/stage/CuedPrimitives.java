@@ -11,6 +11,7 @@ import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
 import simpview.surface.RowBandDrawable;
 import simpview.surface.RowBands;
+import simpview.surface.ZBuffer;
 
 /**
  * A depth-cued scene drawn by several threads: the primitives the
@@ -47,17 +48,28 @@ public final class CuedPrimitives {
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
+    /** The z-buffer whose owed reset the drawers make row by row, or null when there is none to make. */
+    private final ZBuffer zbuffer;
+    private final RowBands bands;
+    /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
+    private final boolean[] depthReset;
 
     /**
      * Draws onto {@code panel} (panel coordinates, whatever the page does per
      * pixel) with {@code threads}; {@code provenance} is the record the panel
-     * writes owners into, or null.
+     * writes owners into, or null. When the panel tests against {@code zbuffer}
+     * (else null) and the canvas's clear owes it a reset, each band's drawer
+     * resets its own rows before it first draws, and {@link #flush} the rows
+     * no drawer reached: the reset is shared by the threads, not made by
+     * whichever tests a depth first while the others wait.
      */
-    public CuedPrimitives(DrawingThreads threads, Drawable panel, Provenance provenance) {
+    public CuedPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
-        RowBands bands = batches.bands();
+        this.zbuffer = zbuffer != null && zbuffer.resetOwedByRows() ? zbuffer : null;
+        this.bands = batches.bands();
+        this.depthReset = new boolean[bands.count()];
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
@@ -78,11 +90,23 @@ public final class CuedPrimitives {
     }
 
     private void drawBand(Batch b, int band) {
+        resetDepth(band);
         drawers[band].draw(b);
     }
 
     private void drawWhole(Batch b) {
+        for (int band = 0; band < depthReset.length; band++) {
+            resetDepth(band);
+        }
         wholeDrawer.draw(b);
+    }
+
+    /** Band b's rows of the z-buffer reset, if that is owed and not made yet: on the thread drawing them. */
+    private void resetDepth(int band) {
+        if (zbuffer != null && !depthReset[band]) {
+            zbuffer.resetRows(bands.start(band), bands.end(band));
+            depthReset[band] = true;
+        }
     }
 
     /**
@@ -93,6 +117,9 @@ public final class CuedPrimitives {
     public void flush() {
         batches.handOff();
         batches.finish();
+        for (int band = 0; band < depthReset.length; band++) {
+            resetDepth(band);
+        }
     }
 
     /** One batch of recorded primitives, in primitive arrays: filled by the reading thread, then read by the drawers. */

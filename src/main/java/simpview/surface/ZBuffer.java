@@ -18,7 +18,9 @@ import java.util.Arrays;
  * writes), on whichever thread that is, once, before any of them goes on. A
  * lit scene resets the buffer to -infinity itself before it tests a depth
  * ({@link #reset}, {@link #resetByRows}), and that reset replaces the owed one:
- * so a lit page fills the buffer once, not twice (-200, then -infinity).
+ * so a lit page fills the buffer once, not twice (-200, then -infinity). A
+ * depth-cued scene drawn in bands has its drawers make the owed reset row by
+ * row instead ({@link #resetOwedByRows}).
  */
 public final class ZBuffer {
 
@@ -105,7 +107,22 @@ public final class ZBuffer {
         owed = false;
     }
 
-    /** Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} gave. */
+    /**
+     * The reset owed, if one is ({@link #resetWhenNeeded}), to be made row by
+     * row by whoever draws each row ({@link #resetRows}) before it tests any,
+     * as {@link #resetByRows} has it: true when one was owed, false when every
+     * entry already is at the far plane (nothing to reset). Called before any
+     * drawing thread starts.
+     */
+    public boolean resetOwedByRows() {
+        if (!owed) {
+            return false;
+        }
+        owed = false;
+        return true;
+    }
+
+    /** Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} or {@link #resetWhenNeeded} gave. */
     public void resetRows(int from, int to) {
         Arrays.fill(depth, from * width, to * width, resetTo);
     }

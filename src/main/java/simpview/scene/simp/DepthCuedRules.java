@@ -13,6 +13,7 @@ import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
+import simpview.surface.ZBuffer;
 
 /**
  * A scene by the depth-cued rules (SPEC Part 1): each line and polygon goes
@@ -98,11 +99,14 @@ final class DepthCuedRules implements RuleSet {
     /**
      * With more than one of {@code threads}: from now on the primitives are
      * recorded and drawn band by band onto {@code panel} (the painter's),
-     * owners into {@code provenance} (or null). Call before the scene is read.
+     * owners into {@code provenance} (or null). {@code zbuffer} is the one
+     * the panel tests against, whose reset owed by the canvas's clear the
+     * bands' drawers then make row by row, or null (the panel's own, made by
+     * its first test). Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, Drawable panel, Provenance provenance) {
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
         if (!threads.isOne()) {
-            record = new CuedPrimitives(threads, panel, provenance);
+            record = new CuedPrimitives(threads, zbuffer, panel, provenance);
             painter.recordTo(record);
         }
     }

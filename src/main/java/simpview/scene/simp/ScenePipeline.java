@@ -198,7 +198,7 @@ public final class ScenePipeline {
         if (watch != null) {
             watch.began(files::chain, null); // and drawn on this thread alone: the watch sees each write as it is made
         } else {
-            cued.drawWith(canvas.drawingThreads(), panel, canvas.provenance());
+            cued.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
         }
         SimpClient.OnLit onLit = switch (options.rules()) {
             case BY_COMMANDS, LIT -> SimpClient.OnLit.TURN_LIT;
@@ -253,7 +253,7 @@ public final class ScenePipeline {
         FileStack files = new FileStack();
         try {
             DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
-            cued.drawWith(threads, panel, provenance);
+            cued.drawWith(threads, null, panel, provenance);
             run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
             monitor.stampsAsRead(files.stampsAsRead());
