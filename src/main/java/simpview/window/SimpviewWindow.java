@@ -350,7 +350,7 @@ public final class SimpviewWindow {
             case OPEN -> chooseScene();
             case COMPARE -> comparison.choosePicture(dialogFolder());
             case SAVE -> save();
-            case REDRAW -> reload();
+            case REDRAW -> drawAgainFromDisk();
             case CLOSE, QUIT -> close();
             case ZOOM_IN -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1));
             case ZOOM_OUT -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1));
@@ -1013,6 +1013,12 @@ public final class SimpviewWindow {
     /** Draws what is on screen again (F5, a save of one of its files), keeping zoom and pan. */
     void reload() {
         show(requested());
+    }
+
+    /** The view drawn again with nothing kept from before: every file it reads is read from disk afresh. */
+    private void drawAgainFromDisk() {
+        renderer.forgetFiles();
+        reload();
     }
 
     /**

@@ -57,6 +57,15 @@ public final class BackgroundRenderer {
         });
     }
 
+    /**
+     * Makes the next picture read every file from disk again: the kept scene
+     * files and models are dropped on the render thread, after the jobs
+     * submitted before and before those submitted after.
+     */
+    public void forgetFiles() {
+        thread.execute(library::clear);
+    }
+
     public void shutdown() {
         thread.shutdownNow();
         drawing.close();
