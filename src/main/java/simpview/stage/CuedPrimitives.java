@@ -115,10 +115,13 @@ public final class CuedPrimitives {
      * all is drawn.
      */
     public void flush() {
-        batches.handOff();
-        batches.finish();
-        for (int band = 0; band < depthReset.length; band++) {
-            resetDepth(band);
+        try {
+            batches.handOff();
+            batches.finish();
+        } finally {
+            for (int band = 0; band < depthReset.length; band++) {
+                resetDepth(band); // also when a drawer failed: no row keeps the last picture's depths
+            }
         }
     }
 

@@ -1018,6 +1018,7 @@ public final class SimpviewWindow {
     /** The view drawn again with nothing kept from before: every file it reads is read from disk afresh. */
     private void drawAgainFromDisk() {
         renderer.forgetFiles();
+        inspectorPanel.forgetFiles();
         reload();
     }
 

@@ -316,6 +316,11 @@ public final class InspectorPanel {
         return answered;
     }
 
+    /** The next replays read every file from disk again: the kept ones are dropped on the inspector's thread. */
+    public void forgetFiles() {
+        worker.submit(library::clear);
+    }
+
     public void shutdown() {
         worker.shutdownNow();
     }
