@@ -10,10 +10,13 @@ import static simpview.raster.FragmentLayout.PY;
 import static simpview.raster.FragmentLayout.R;
 import static simpview.raster.FragmentLayout.Z;
 
+import java.util.Arrays;
 import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.surface.Colors;
 import simpview.surface.Drawable;
+import simpview.surface.Provenance;
+import simpview.surface.WaitingPixels;
 import simpview.surface.ZBuffer;
 
 /**
@@ -36,6 +39,8 @@ public final class FragmentStage implements FragmentSink {
 
     /** Pixels of a span done together. */
     static final int BATCH = 64;
+    /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
+    private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
      * Phong spans shorter than this are lit pixel by pixel: a batch's steps
      * cost more to set up than they save on a few pixels (small triangles,
@@ -77,6 +82,26 @@ public final class FragmentStage implements FragmentSink {
     private int rowFrom;
     private int rowTo;
 
+    // Phong shading deferred ({@link #shadeLater}): the pixels that wait, by
+    // the index of the kept span each waits for; null when every pixel is
+    // shaded as it passes the depth test.
+    private WaitingPixels waiting;
+    // True when this stage's phong pixels wait; false when it shades at once
+    // but still clears a pixel's wait when it writes it (a batch drawn whole).
+    private boolean defers;
+    private Provenance owners;
+    // The kept phong spans that won a pixel: q0, dq, then v0 and dv of the
+    // phong channels; where k counts from; who drew them; their look.
+    private int spanCount;
+    private double[] spanNumbers = new double[64 * SPAN_NUMBERS];
+    private int[] spanFrom = new int[64];
+    private int[] spanOwner = new int[64];
+    private PointShader[] spanShader = new PointShader[64];
+    private Fog[] spanFog = new Fog[64];
+    // A kept span's starts and slopes, laid out as the rasterizers give them.
+    private final double[] keptV0 = new double[FragmentLayout.PHONG_CHANNELS];
+    private final double[] keptDv = new double[FragmentLayout.PHONG_CHANNELS];
+
     /**
      * Writes to {@code panel} (panel coordinates, y up), depth-tested against
      * {@code zbuffer}, which its user resets ({@link ZBuffer#reset} or
@@ -107,6 +132,156 @@ public final class FragmentStage implements FragmentSink {
 
     public int height() {
         return height;
+    }
+
+    /**
+     * From now on a phong pixel that passes the depth test is not shaded at
+     * once: it waits, in {@code waiting} (the panel's), for
+     * {@link #shadeWaiting} at the picture's end,
+     * which shades each pixel once, by the last span that won it. A write of
+     * a known colour ends a pixel's wait. With {@code defer} false the stage
+     * shades at once and only ends the waits it overwrites (a stage drawing
+     * batches kept whole, while the bands' stages defer). The owner each
+     * waiting pixel gets is the one {@code owners} (or null) has for its row
+     * when it wins. The picture is the same to the bit: a pixel's colour is
+     * its last winning fragment's, and a point is lit the same alone or in a
+     * batch of any size.
+     */
+    public void shadeLater(WaitingPixels waiting, boolean defer, Provenance owners) {
+        if (waiting.width() != width || waiting.height() != height) {
+            throw new IllegalArgumentException("waiting pixels for another panel");
+        }
+        this.waiting = waiting;
+        this.defers = defer;
+        this.owners = owners;
+    }
+
+    /** True when this stage's phong pixels wait to be shaded at the picture's end ({@link #shadeLater}). */
+    public boolean shadesLater() {
+        return defers;
+    }
+
+    /** Ends every wait in this stage's rows, whatever an earlier picture left there: before its first fragment. */
+    public void clearWaits() {
+        if (waiting != null) {
+            waiting.clearRows(rowFrom, rowTo);
+        }
+    }
+
+    /**
+     * Shades every pixel of this stage's rows that waits ({@link #shadeLater}),
+     * a run of one span's pixels at a time, and ends the waits: after the
+     * last fragment of the picture, on the thread that draws these rows.
+     */
+    public void shadeWaiting() {
+        if (waiting == null || !defers) {
+            return;
+        }
+        PointShader shaderBefore = shader;
+        Fog fogBefore = fog;
+        WaitingPixels w = waiting;
+        for (int y = rowFrom; y < rowTo; y++) {
+            int x = w.firstIn(y);
+            int end = w.endIn(y);
+            while (x < end) {
+                int span = w.at(x, y);
+                if (span == WaitingPixels.NONE) {
+                    x++;
+                    continue;
+                }
+                int first = x;
+                do {
+                    x++;
+                } while (x < end && w.at(x, y) == span);
+                shadeRun(span, y, first, x);
+            }
+            w.clearRows(y, y + 1);
+        }
+        spanCount = 0;
+        shader = shaderBefore;
+        fog = fogBefore;
+    }
+
+    /** Pixels first &lt;= x &lt; stop of row y, all waiting for the kept span: shaded and written, a batch at a time. */
+    private void shadeRun(int span, int y, int first, int stop) {
+        int o = span * SPAN_NUMBERS;
+        double q0 = spanNumbers[o];
+        double dq = spanNumbers[o + 1];
+        System.arraycopy(spanNumbers, o + 2, keptV0, 0, FragmentLayout.PHONG_CHANNELS);
+        System.arraycopy(spanNumbers, o + 2 + FragmentLayout.PHONG_CHANNELS, keptDv, 0,
+                FragmentLayout.PHONG_CHANNELS);
+        int from = spanFrom[span];
+        shader = spanShader[span];
+        fog = spanFog[span];
+        if (owners != null) {
+            owners.beginAt(y, spanOwner[span]);
+        }
+        double z0 = keptV0[Z];
+        double dz = keptDv[Z];
+        for (int at = first; at < stop; at += BATCH) {
+            int n = Math.min(BATCH, stop - at);
+            double k0 = at - from;
+            for (int j = 0; j < n; j++) {
+                double k = k0 + RAMP[j];
+                double w = 1 / (q0 + k * dq);
+                batchK[j] = k;
+                batchInverse[j] = w;
+                batchZ[j] = (z0 + k * dz) * w;
+            }
+            phong(n, keptV0, keptDv);
+            pack(n);
+            panel.setRun(at, y, n, batchZ, colours, 0);
+        }
+    }
+
+    /**
+     * A phong span whose pixels wait: the depth test at each, and each that
+     * passes marked as waiting for this span (kept at its first such pixel).
+     * The same z and test as {@link #gather} and {@link #phongPixels}.
+     */
+    private boolean waitingSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        int row = y * width;
+        int span = WaitingPixels.NONE;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            if (span == WaitingPixels.NONE) {
+                span = keepSpan(y, from, q0, dq, v0, dv);
+            }
+            waiting.wait(x, y, span);
+        }
+        return span != WaitingPixels.NONE;
+    }
+
+    /** Keeps the phong span being drawn on row y (its set-up, look and owner); returns its index. */
+    private int keepSpan(int y, int from, double q0, double dq, double[] v0, double[] dv) {
+        int k = spanCount;
+        if (k == spanFrom.length) {
+            int capacity = 2 * k;
+            spanNumbers = Arrays.copyOf(spanNumbers, capacity * SPAN_NUMBERS);
+            spanFrom = Arrays.copyOf(spanFrom, capacity);
+            spanOwner = Arrays.copyOf(spanOwner, capacity);
+            spanShader = Arrays.copyOf(spanShader, capacity);
+            spanFog = Arrays.copyOf(spanFog, capacity);
+        }
+        int o = k * SPAN_NUMBERS;
+        spanNumbers[o] = q0;
+        spanNumbers[o + 1] = dq;
+        System.arraycopy(v0, 0, spanNumbers, o + 2, FragmentLayout.PHONG_CHANNELS);
+        System.arraycopy(dv, 0, spanNumbers, o + 2 + FragmentLayout.PHONG_CHANNELS, FragmentLayout.PHONG_CHANNELS);
+        spanFrom[k] = from;
+        spanOwner[k] = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
+        spanShader[k] = shader;
+        spanFog[k] = fog;
+        spanCount = k + 1;
+        return k;
     }
 
     /** The next primitives carry their colour (flat, gouraud, wire, lines), fogged by {@code fog}. */
@@ -150,14 +325,23 @@ public final class FragmentStage implements FragmentSink {
     /** A phong span, a batch at a time, or pixel by pixel when short; true when a pixel was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
+        if (defers && end - start >= SHORT_PHONG_SPAN && shader.usesPoint()) {
+            // Worth the wait: lights to add up at each of many pixels. A short
+            // span, or the ambient term alone, costs less shaded at once.
+            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
+        }
         if (end - start < SHORT_PHONG_SPAN) {
             return phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         boolean wrote = false;
+        boolean mayWait = waits(y);
         for (int first = start; first < end; first += BATCH) {
             int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z]);
             if (n > 0) {
                 wrote = true;
+                if (mayWait) {
+                    endWaits(y, first, n);
+                }
                 phong(n, v0, dv);
                 pack(n);
                 if (whole) {
@@ -198,6 +382,7 @@ public final class FragmentStage implements FragmentSink {
         PointShader s = shader;
         int row = y * width;
         boolean wrote = false;
+        boolean mayWait = waits(y);
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -206,6 +391,9 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             wrote = true;
+            if (mayWait) {
+                waiting.end(x, y);
+            }
             s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
                     (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
                     (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
@@ -234,6 +422,7 @@ public final class FragmentStage implements FragmentSink {
         double db = dv[B];
         int row = y * width;
         boolean wrote = false;
+        boolean mayWait = waits(y);
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -242,6 +431,9 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             wrote = true;
+            if (mayWait) {
+                waiting.end(x, y);
+            }
             lit[0] = (r0 + k * dr) * inv;
             lit[1] = (g0 + k * dg) * inv;
             lit[2] = (b0 + k * db) * inv;
@@ -426,6 +618,22 @@ public final class FragmentStage implements FragmentSink {
         return Math.abs(v) <= Double.MAX_VALUE;
     }
 
+    /** True when some pixel of row y may wait ({@link #shadeLater}): a write there must end its wait. */
+    private boolean waits(int y) {
+        return waiting != null && waiting.firstIn(y) < waiting.endIn(y);
+    }
+
+    /** The n pixels of row y just gathered from x = first on, to be written now: they wait no more. */
+    private void endWaits(int y, int first, int n) {
+        if (whole) {
+            waiting.end(y, first, first + n);
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            waiting.end(batchX[i], y);
+        }
+    }
+
     /** Writes the n gathered pixels of row y, each run of neighbours in one call. */
     private void writeRuns(int y, int n) {
         int i = 0;
@@ -451,6 +659,9 @@ public final class FragmentStage implements FragmentSink {
             return;
         }
         zbuffer.written();
+        if (waiting != null) {
+            waiting.end(x, y);
+        }
         double r = v[R] * inv;
         double g = v[G] * inv;
         double b = v[B] * inv;

@@ -206,6 +206,18 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     }
 
     /**
+     * Hands off the batch being filled, empty or not, to be drawn in bands,
+     * never whole: a picture's last, after which each band's drawer can
+     * finish its rows.
+     */
+    void handOffLast() {
+        queue.publish(false);
+        pixels = 0;
+        filling = ring.get(queue.slot());
+        filling.clear();
+    }
+
+    /**
      * Returns when every batch handed off is drawn (this thread helping),
      * throwing what a drawer failed with; the ring is then given back to the
      * threads for the next picture, as no thread draws from it any more.

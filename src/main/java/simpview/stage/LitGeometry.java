@@ -10,6 +10,7 @@ import simpview.raster.LitLineRasterizer;
 import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
+import simpview.shading.PointShader;
 
 /**
  * The geometry stage of a lit scene (SPEC Part 2), top to bottom for every
@@ -55,6 +56,9 @@ public final class LitGeometry implements GeometryStage {
 
     private final LitState state;
     private final FragmentStage fragments;
+    /** The lighting frozen for phong pixels shaded later, and the state's lighting version it was frozen at. */
+    private PointShader frozen;
+    private int frozenVersion;
     /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
     private FragmentSink raster;
     private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
@@ -287,10 +291,26 @@ public final class LitGeometry implements GeometryStage {
                 return FragmentLayout.COLOUR_CHANNELS;
             }
             default -> {
-                fragments.phong(state, state.fog());
+                fragments.phong(phongShader(), state.fog());
                 return FragmentLayout.PHONG_CHANNELS;
             }
         }
+    }
+
+    /**
+     * What lights phong pixels: the state itself, or, when the fragment
+     * stage shades them later ({@link FragmentStage#shadeLater}), the
+     * state's lighting as it is now, frozen, made again only once it changed.
+     */
+    private PointShader phongShader() {
+        if (!fragments.shadesLater()) {
+            return state;
+        }
+        if (frozen == null || frozenVersion != state.lightingVersion()) {
+            frozen = state.frozenShader().get();
+            frozenVersion = state.lightingVersion();
+        }
+        return frozen;
     }
 
     /** One colour for the polygon: lit at the centroid, with the mean kd and the mean own normal or the face's. */

@@ -16,6 +16,7 @@ import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
 import simpview.surface.RowBands;
+import simpview.surface.WaitingPixels;
 import simpview.surface.ZBuffer;
 
 /**
@@ -62,6 +63,8 @@ public final class LitPrimitives {
     private final RowBands bands;
     /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
     private final boolean[] depthReset;
+    /** True once a look lights points: the bands' stages may then hold pixels waiting to be shaded. */
+    private boolean shadesLater;
     /** The lighting last frozen, and what from. */
     private Supplier<PointShader> frozen;
     private LitState frozenFrom;
@@ -75,7 +78,8 @@ public final class LitPrimitives {
      * (whatever the rows held before), and {@link #flush} the rows no drawer
      * reached.
      */
-    public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+    public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance,
+            WaitingPixels waiting) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
@@ -86,9 +90,13 @@ public final class LitPrimitives {
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
+            drawers[b].fragments.shadeLater(waiting, true, provenance);
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
                 : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
+        if (wholeDrawer != drawers[0]) {
+            wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
+        }
     }
 
     /**
@@ -98,6 +106,7 @@ public final class LitPrimitives {
      * one of these changed.
      */
     int look(Fog fog, LitState phong) {
+        shadesLater |= phong != null && phong.usesPoint();
         if (phong != null && (phong != frozenFrom || phong.lightingVersion() != frozenVersion)) {
             frozenFrom = phong;
             frozenVersion = phong.lightingVersion();
@@ -163,16 +172,21 @@ public final class LitPrimitives {
      */
     public void flush() {
         batches.handOff();
+        if (shadesLater) {
+            batches.filling().last = true;
+            batches.handOffLast(); // each band's drawer then shades its rows' waiting pixels
+        }
         batches.finish();
         for (int b = 0; b < depthReset.length; b++) {
             resetDepth(b);
         }
     }
 
-    /** Band b's rows of the z-buffer reset, if they are not yet: on the thread drawing them. */
+    /** Band b's rows of the z-buffer reset, and their waits ended, if they are not yet: on the thread drawing them. */
     private void resetDepth(int b) {
         if (!depthReset[b]) {
             zbuffer.resetRows(bands.start(b), bands.end(b));
+            drawers[b].fragments.clearWaits();
             depthReset[b] = true;
         }
     }
@@ -204,6 +218,8 @@ public final class LitPrimitives {
          */
         int[][] inBand = new int[0][];
         int[] inBandCount = new int[0];
+        /** True for a picture's last batch, handed off empty: its drawers shade their rows' waiting pixels. */
+        boolean last;
 
         @Override
         public int size() {
@@ -213,6 +229,7 @@ public final class LitPrimitives {
         @Override
         public void clear() {
             size = 0;
+            last = false;
             fogs.clear();
             shaders.clear();
             lastLook = -1;
@@ -343,6 +360,10 @@ public final class LitPrimitives {
                 }
             } else {
                 resetDepth(band);
+                if (b.last) {
+                    fragments.shadeWaiting();
+                    return;
+                }
                 int[] mine = b.inBand[band];
                 int m = b.inBandCount[band];
                 for (int j = 0; j < m; j++) {

@@ -21,6 +21,8 @@ public final class PageCanvas {
     private final ZBuffer zbuffer;
     /** Who drew each panel pixel, when someone asked to know; null costs nothing. */
     private Provenance provenance;
+    /** See {@link #waitingPixels}: made at the first lit picture. */
+    private WaitingPixels waiting;
     /** The threads scenes are drawn on this canvas with: the owner's, given to it; one (the caller's) by default. */
     private DrawingThreads threads = DrawingThreads.one();
 
@@ -86,6 +88,14 @@ public final class PageCanvas {
     /** What the z-buffer passes its winning writes to: {@code next}, behind the provenance record if there is one. */
     private Drawable afterZBuffer(Drawable next) {
         return provenance == null ? next : new ProvenanceDrawable(provenance, next);
+    }
+
+    /** The panel's pixels that wait to be shaded at a lit picture's end: made once, at the first that asks. */
+    public WaitingPixels waitingPixels() {
+        if (waiting == null) {
+            waiting = new WaitingPixels(PANEL, PANEL);
+        }
+        return waiting;
     }
 
     public BufferedImage image() {

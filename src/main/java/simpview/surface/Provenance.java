@@ -114,6 +114,23 @@ public final class Provenance {
         }
     }
 
+    /**
+     * The primitive a write to row y would be recorded as now: what a stage
+     * that writes the pixel later ({@code FragmentStage.shadeLater}) keeps.
+     */
+    public int drawingAt(int y) {
+        return currentAt(y);
+    }
+
+    /**
+     * The writes from now on to the rows of row y's band are primitive
+     * {@code primitive}'s: as {@link #begin(int, int)} for that band, by the
+     * thread drawing it (a stage writing late what it kept from earlier).
+     */
+    public void beginAt(int y, int primitive) {
+        current[bandOfRow[y]] = primitive;
+    }
+
     /** The primitive being read, as the last {@link #begin(int)} said: the owner a record gives what it records. */
     public int current() {
         return reading;

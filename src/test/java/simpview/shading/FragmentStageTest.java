@@ -17,6 +17,7 @@ import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
 import simpview.surface.Provenance;
 import simpview.surface.ProvenanceDrawable;
+import simpview.surface.WaitingPixels;
 import simpview.surface.ZBuffer;
 
 /**
@@ -116,6 +117,90 @@ class FragmentStageTest {
         assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
         assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
         assertArrayEquals(byPixel.provenance().copyOwners(), bySpan.provenance().copyOwners(), "the provenance");
+    }
+
+    /**
+     * Phong pixels that wait to be shaded at the end ({@link FragmentStage#shadeLater})
+     * draw what pixels shaded as they pass the depth test draw: colours, depths
+     * and owners, with phong spans long and short, coloured spans and lone
+     * pixels over and under them, on a few rows so that they overdraw.
+     */
+    @Property(tries = 150, seed = "1203009")
+    void pixelsShadedAtTheEndDrawWhatPixelsShadedAtOnceDraw(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = scene(random);
+        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // a light: phong pixels then wait
+        PointShader frozen = state.frozenShader().get();
+        Stage atOnce = Stage.make(state, true);
+        Stage atEnd = Stage.make(state, true);
+        atEnd.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, atEnd.provenance());
+        atEnd.fragments().clearWaits();
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] v = new double[CHANNELS];
+        int spans = 1 + random.nextInt(60);
+        for (int s = 0; s < spans; s++) {
+            boolean phong = random.nextInt(3) > 0;
+            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+                if (phong) {
+                    stage.fragments().phong(frozen, state.fog());
+                } else {
+                    stage.fragments().colours(state.fog());
+                }
+                stage.provenance().begin(s);
+            }
+            int y = 10 + random.nextInt(4);
+            int from = random.nextInt(SIZE + 40) - 30;
+            int to = from + (random.nextBoolean() ? random.nextInt(12) : random.nextInt(SIZE + 10));
+            double q0 = 1 / (4 + random.nextDouble() * 12);
+            double dq = (random.nextDouble() - 0.5) * 1e-4;
+            for (int c = 0; c < CHANNELS; c++) {
+                double value = c == FragmentLayout.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
+                v0[c] = value * q0;
+                dv[c] = (random.nextDouble() - 0.5) * 1e-3;
+            }
+            if (random.nextInt(5) == 0) {
+                int x = from + random.nextInt(Math.max(1, to - from));
+                for (int c = 0; c < CHANNELS; c++) {
+                    v[c] = v0[c];
+                }
+                atOnce.fragments().pixel(x, y, q0, v);
+                atEnd.fragments().pixel(x, y, q0, v);
+            } else {
+                atOnce.fragments().span(y, from, to, q0, dq, v0, dv);
+                atEnd.fragments().span(y, from, to, q0, dq, v0, dv);
+            }
+        }
+        atEnd.fragments().shadeWaiting();
+        assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()), "the picture");
+        assertArrayEquals(atOnce.zbuffer().copyDepths(), atEnd.zbuffer().copyDepths(), "the depths");
+        assertArrayEquals(atOnce.provenance().copyOwners(), atEnd.provenance().copyOwners(), "the provenance");
+    }
+
+    @Test
+    void aLongLitPhongSpanWaitsUntilTheEndAndIsThenWhatItWouldHaveBeen() {
+        LitState state = scene(new Random(5));
+        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0);
+        PointShader frozen = state.frozenShader().get();
+        Stage atOnce = Stage.make(state, true);
+        Stage atEnd = Stage.make(state, true);
+        WaitingPixels waiting = new WaitingPixels(SIZE, SIZE);
+        atEnd.fragments().shadeLater(waiting, true, null);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        v0[FragmentLayout.Z] = -5;
+        v0[FragmentLayout.NZ] = 1;
+        v0[FragmentLayout.R] = 1;
+        atOnce.fragments().phong(frozen, state.fog());
+        atEnd.fragments().phong(frozen, state.fog());
+        atOnce.fragments().span(10, 0, 100, 1, 0, v0, dv);
+        atEnd.fragments().span(10, 0, 100, 1, 0, v0, dv);
+        assertEquals(0, atEnd.image().getRGB(50, 10) & 0xFFFFFF, "not written yet");
+        assertEquals(0, waiting.at(50, 10), "it waits for the first span kept");
+        atEnd.fragments().shadeWaiting();
+        assertEquals(WaitingPixels.NONE, waiting.at(50, 10));
+        assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()));
+        assertTrue((atEnd.image().getRGB(50, 10) & 0xFFFFFF) != 0, "lit");
     }
 
     @Test

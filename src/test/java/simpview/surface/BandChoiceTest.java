@@ -108,6 +108,7 @@ class BandChoiceTest {
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();
             assertArrayEquals(oneThread, pixels(fills, DrawingThreads.upTo(2), tasks));
+            // Lit by the ambient term alone: no pixel waits to be shaded, so no last batch is handed off for it.
             assertEquals(6 * bands, tasks[0], "6 lit fills of 211,250 pixels: each its own batch, in bands");
         }
     }

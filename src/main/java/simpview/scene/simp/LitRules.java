@@ -16,6 +16,7 @@ import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
+import simpview.surface.WaitingPixels;
 import simpview.surface.ZBuffer;
 
 /**
@@ -39,6 +40,8 @@ final class LitRules implements RuleSet {
     private String firstPrimitiveAt;
     /** The record several threads draw from, or null: drawn at once, on this thread. */
     private LitPrimitives record;
+    /** Where the fragments go when drawn at once. */
+    private final FragmentStage fragments;
 
     /**
      * @param fragments where the fragments go: the canvas's z-buffer (reset to -infinity) and panel
@@ -48,6 +51,7 @@ final class LitRules implements RuleSet {
      */
     LitRules(FragmentStage fragments, ObjLibrary models, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
         this.geometry = new LitGeometry(state, fragments);
+        this.fragments = fragments;
         this.models = models;
         this.files = files;
         this.traced = trace != null;
@@ -213,14 +217,18 @@ final class LitRules implements RuleSet {
      * band, depth-tested against {@code zbuffer} onto {@code panel} (the
      * fragment stage's), owners into {@code provenance} (or null); then each
      * band's drawer resets its own rows of the z-buffer, on its own thread.
-     * Call before the scene is read.
+     * Phong pixels wait in {@code waiting} (the panel's, which the drawers
+     * clear first) to be shaded once each at the scene's end
+     * ({@link FragmentStage#shadeLater}). Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance, WaitingPixels waiting) {
         if (threads.isOne()) {
             zbuffer.reset(Double.NEGATIVE_INFINITY);
+            fragments.shadeLater(waiting, true, provenance);
+            fragments.clearWaits();
             return;
         }
-        record = new LitPrimitives(threads, zbuffer, panel, provenance); // resets the z-buffer band by band
+        record = new LitPrimitives(threads, zbuffer, panel, provenance, waiting); // resets the z-buffer band by band
         geometry.recordTo(record);
     }
 
@@ -228,6 +236,8 @@ final class LitRules implements RuleSet {
     public void flush() {
         if (record != null) {
             record.flush();
+        } else {
+            fragments.shadeWaiting();
         }
     }
 

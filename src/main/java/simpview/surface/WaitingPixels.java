@@ -1,0 +1,96 @@
+package simpview.surface;
+
+import java.util.Arrays;
+
+/**
+ * The panel's pixels that wait to be shaded at a lit picture's end: for each
+ * one, the number of the span that last won it (its fragment stage's own
+ * numbering), {@link #NONE} for the others; and per row the columns that may
+ * hold a waiting pixel, so that a row with none costs nothing to write or to
+ * clear. Kept by the canvas from picture to picture; each row is written only
+ * by the thread drawing it.
+ */
+public final class WaitingPixels {
+
+    /** The pixel waits for nothing. */
+    public static final int NONE = -1;
+
+    private final int width;
+    private final int height;
+    /** Per pixel, row by row from the bottom: the span it waits for, or NONE. */
+    final int[] span;
+    /** Per row: waiting pixels lie in from[y] &lt;= x &lt; to[y] (empty when from &gt;= to). */
+    final int[] from;
+    final int[] to;
+
+    public WaitingPixels(int width, int height) {
+        this.width = width;
+        this.height = height;
+        this.span = new int[width * height];
+        this.from = new int[height];
+        this.to = new int[height];
+        Arrays.fill(span, NONE);
+        Arrays.fill(from, width);
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    /** Pixel (x, y) waits for span {@code s} (a number of 0 or more). */
+    public void wait(int x, int y, int s) {
+        span[y * width + x] = s;
+        if (x < from[y]) {
+            from[y] = x;
+        }
+        if (x >= to[y]) {
+            to[y] = x + 1;
+        }
+    }
+
+    /** The span pixel (x, y) waits for, or {@link #NONE}. */
+    public int at(int x, int y) {
+        return x >= from[y] && x < to[y] ? span[y * width + x] : NONE;
+    }
+
+    /** Pixels x0 &lt;= x &lt; x1 of row y are written now: they wait no more. */
+    public void end(int y, int x0, int x1) {
+        int a = Math.max(x0, from[y]);
+        int b = Math.min(x1, to[y]);
+        if (a < b) {
+            Arrays.fill(span, y * width + a, y * width + b, NONE);
+        }
+    }
+
+    /** Pixel (x, y) is written now: it waits no more. */
+    public void end(int x, int y) {
+        if (x >= from[y] && x < to[y]) {
+            span[y * width + x] = NONE;
+        }
+    }
+
+    /** The first column of row y that may hold a waiting pixel. */
+    public int firstIn(int y) {
+        return from[y];
+    }
+
+    /** One past the last column of row y that may hold a waiting pixel. */
+    public int endIn(int y) {
+        return to[y];
+    }
+
+    /** Rows y0 &lt;= y &lt; y1 wait for nothing any more, whatever an earlier picture left there. */
+    public void clearRows(int y0, int y1) {
+        for (int y = y0; y < y1; y++) {
+            if (from[y] < to[y]) {
+                Arrays.fill(span, y * width + from[y], y * width + to[y], NONE);
+            }
+            from[y] = width;
+            to[y] = 0;
+        }
+    }
+}
