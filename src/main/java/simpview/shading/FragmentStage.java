@@ -39,6 +39,16 @@ public final class FragmentStage implements FragmentSink {
 
     /** Pixels of a span done together. */
     static final int BATCH = 64;
+    /**
+     * The fewest lights for which a long phong span's pixels wait to be shaded
+     * at the end ({@link #shadeLater}). The wait costs about the same at
+     * every pixel (keeping the span, marking the pixel, its 1 / q and z again
+     * at the end); what it saves is the shading of the pixels overwritten
+     * later, which grows with the lights. Measured on the course's pages, one
+     * thread against shading at once (session 9): one light (A4 page-d)
+     * 1.05x slower, two (page-e) and three (page-f2, page-h) 0.86-0.89x.
+     */
+    static final int LIGHTS_TO_WAIT = 2;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
     private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
@@ -156,6 +166,11 @@ public final class FragmentStage implements FragmentSink {
         this.owners = owners;
     }
 
+    /** True when a long span lit by {@code shader} is shaded at the end by a stage that defers ({@link #LIGHTS_TO_WAIT}). */
+    public static boolean paysToWait(PointShader shader) {
+        return shader.lightCount() >= LIGHTS_TO_WAIT;
+    }
+
     /** True when this stage's phong pixels wait to be shaded at the picture's end ({@link #shadeLater}). */
     public boolean shadesLater() {
         return defers;
@@ -235,27 +250,28 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * A phong span whose pixels wait: the depth test at each, and each that
-     * passes marked as waiting for this span (kept at its first such pixel).
-     * The same z and test as {@link #gather} and {@link #phongPixels}.
+     * A phong span whose pixels wait: the depth test at each, a batch at a
+     * time ({@link #gather}, as a span shaded at once), and each that passes
+     * marked as waiting for this span (kept at its first such pixel).
      */
     private boolean waitingSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
-        double z0 = v0[Z];
-        double dz = dv[Z];
-        int row = y * width;
         int span = WaitingPixels.NONE;
-        for (int x = start; x < end; x++) {
-            int k = x - from;
-            double inv = 1 / (q0 + k * dq);
-            double z = (z0 + k * dz) * inv;
-            if (!nearer(row + x, z)) {
+        for (int first = start; first < end; first += BATCH) {
+            int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z]);
+            if (n == 0) {
                 continue;
             }
             if (span == WaitingPixels.NONE) {
                 span = keepSpan(y, from, q0, dq, v0, dv);
             }
-            waiting.wait(x, y, span);
+            if (whole) {
+                waiting.wait(y, first, first + n, span);
+            } else {
+                for (int i = 0; i < n; i++) {
+                    waiting.wait(batchX[i], y, span);
+                }
+            }
         }
         return span != WaitingPixels.NONE;
     }
@@ -325,9 +341,7 @@ public final class FragmentStage implements FragmentSink {
     /** A phong span, a batch at a time, or pixel by pixel when short; true when a pixel was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
-        if (defers && end - start >= SHORT_PHONG_SPAN && shader.usesPoint()) {
-            // Worth the wait: lights to add up at each of many pixels. A short
-            // span, or the ambient term alone, costs less shaded at once.
+        if (defers && end - start >= SHORT_PHONG_SPAN && paysToWait(shader)) {
             return waitingSpan(y, from, start, end, q0, dq, v0, dv);
         }
         if (end - start < SHORT_PHONG_SPAN) {
@@ -620,7 +634,8 @@ public final class FragmentStage implements FragmentSink {
 
     /** True when some pixel of row y may wait ({@link #shadeLater}): a write there must end its wait. */
     private boolean waits(int y) {
-        return waiting != null && waiting.firstIn(y) < waiting.endIn(y);
+        // A stage that defers has waits in its rows only once it kept a span (clearWaits ended the others).
+        return waiting != null && (spanCount > 0 || !defers) && waiting.firstIn(y) < waiting.endIn(y);
     }
 
     /** The n pixels of row y just gathered from x = first on, to be written now: they wait no more. */
@@ -659,7 +674,7 @@ public final class FragmentStage implements FragmentSink {
             return;
         }
         zbuffer.written();
-        if (waiting != null) {
+        if (waits(y)) {
             waiting.end(x, y);
         }
         double r = v[R] * inv;

@@ -160,6 +160,11 @@ public final class Lighting {
      * False when a colour is the ambient term alone (no light is prepared):
      * then {@link #shade(LitPoints)} reads the points' kd only, not P or N.
      */
+    /** How many lights a point adds up. */
+    public int lightCount() {
+        return lightCount;
+    }
+
     public boolean usesPoint() {
         return lightCount > 0;
     }

@@ -159,6 +159,7 @@ public final class LitState implements PointShader {
         return shading;
     }
 
+    @Override
     public int lightCount() {
         return lights.count();
     }
@@ -246,6 +247,11 @@ public final class LitState implements PointShader {
                 @Override
                 public boolean usesPoint() {
                     return own.usesPoint();
+                }
+
+                @Override
+                public int lightCount() {
+                    return own.lightCount();
                 }
             };
         };

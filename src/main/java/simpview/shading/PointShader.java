@@ -20,4 +20,9 @@ public interface PointShader {
      * then be left unset.
      */
     boolean usesPoint();
+
+    /** How many lights a point adds up (0: the ambient term alone, as {@link #usesPoint} false). */
+    default int lightCount() {
+        return usesPoint() ? 1 : 0;
+    }
 }

@@ -207,8 +207,8 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     /**
      * Hands off the batch being filled, empty or not, to be drawn in bands,
-     * never whole: a picture's last, after which each band's drawer can
-     * finish its rows.
+     * never whole: a picture's last, whose band drawers then finish their
+     * rows.
      */
     void handOffLast() {
         queue.publish(false);

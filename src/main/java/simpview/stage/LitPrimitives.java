@@ -106,7 +106,7 @@ public final class LitPrimitives {
      * one of these changed.
      */
     int look(Fog fog, LitState phong) {
-        shadesLater |= phong != null && phong.usesPoint();
+        shadesLater |= phong != null && FragmentStage.paysToWait(phong);
         if (phong != null && (phong != frozenFrom || phong.lightingVersion() != frozenVersion)) {
             frozenFrom = phong;
             frozenVersion = phong.lightingVersion();
@@ -171,10 +171,11 @@ public final class LitPrimitives {
      * all is drawn.
      */
     public void flush() {
-        batches.handOff();
         if (shadesLater) {
             batches.filling().last = true;
-            batches.handOffLast(); // each band's drawer then shades its rows' waiting pixels
+            batches.handOffLast(); // in bands: each band's drawer then shades its rows' waiting pixels
+        } else {
+            batches.handOff();
         }
         batches.finish();
         for (int b = 0; b < depthReset.length; b++) {
@@ -218,7 +219,7 @@ public final class LitPrimitives {
          */
         int[][] inBand = new int[0][];
         int[] inBandCount = new int[0];
-        /** True for a picture's last batch, handed off empty: its drawers shade their rows' waiting pixels. */
+        /** True for a picture's last batch (drawn in bands, maybe empty): its drawers then shade their rows' waiting pixels. */
         boolean last;
 
         @Override
@@ -360,14 +361,13 @@ public final class LitPrimitives {
                 }
             } else {
                 resetDepth(band);
-                if (b.last) {
-                    fragments.shadeWaiting();
-                    return;
-                }
                 int[] mine = b.inBand[band];
                 int m = b.inBandCount[band];
                 for (int j = 0; j < m; j++) {
                     draw(b, mine[j]);
+                }
+                if (b.last) {
+                    fragments.shadeWaiting();
                 }
             }
         }

@@ -52,6 +52,17 @@ public final class WaitingPixels {
         }
     }
 
+    /** Pixels x0 &lt;= x &lt; x1 of row y wait for span {@code s}. */
+    public void wait(int y, int x0, int x1, int s) {
+        Arrays.fill(span, y * width + x0, y * width + x1, s);
+        if (x0 < from[y]) {
+            from[y] = x0;
+        }
+        if (x1 > to[y]) {
+            to[y] = x1;
+        }
+    }
+
     /** The span pixel (x, y) waits for, or {@link #NONE}. */
     public int at(int x, int y) {
         return x >= from[y] && x < to[y] ? span[y * width + x] : NONE;

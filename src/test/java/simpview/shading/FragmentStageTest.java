@@ -129,7 +129,8 @@ class FragmentStageTest {
     void pixelsShadedAtTheEndDrawWhatPixelsShadedAtOnceDraw(@ForAll long seed) {
         Random random = new Random(seed);
         LitState state = scene(random);
-        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // a light: phong pixels then wait
+        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // two lights at least: phong pixels then wait
+        state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
         PointShader frozen = state.frozenShader().get();
         Stage atOnce = Stage.make(state, true);
         Stage atEnd = Stage.make(state, true);
@@ -181,6 +182,7 @@ class FragmentStageTest {
     void aLongLitPhongSpanWaitsUntilTheEndAndIsThenWhatItWouldHaveBeen() {
         LitState state = scene(new Random(5));
         state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0);
+        state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
         PointShader frozen = state.frozenShader().get();
         Stage atOnce = Stage.make(state, true);
         Stage atEnd = Stage.make(state, true);
