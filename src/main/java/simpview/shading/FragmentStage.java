@@ -235,6 +235,8 @@ public final class FragmentStage implements FragmentSink {
         double dz = keptDv[Z];
         for (int at = first; at < stop; at += BATCH) {
             int n = Math.min(BATCH, stop - at);
+            // gather's first loop, written out again: the two calling one shared
+            // method measured 1.02-1.04x slower on page-e, one thread (session 9).
             double k0 = at - from;
             for (int j = 0; j < n; j++) {
                 double k = k0 + RAMP[j];

@@ -81,6 +81,18 @@ class FragmentStageTest {
         new Fog(-8, -16, 1e300, Double.NaN, Double.POSITIVE_INFINITY),
     };
 
+    /** A random span's channels into v0 and dv (as times q), and its q0 and dq. */
+    private static double[] randomSpan(Random random, double[] v0, double[] dv) {
+        double q0 = 1 / (4 + random.nextDouble() * 12);
+        double dq = (random.nextDouble() - 0.5) * 1e-4;
+        for (int c = 0; c < CHANNELS; c++) {
+            double value = c == FragmentLayout.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
+            v0[c] = value * q0;
+            dv[c] = (random.nextDouble() - 0.5) * 1e-3;
+        }
+        return new double[] {q0, dq};
+    }
+
     @Property(tries = 150, seed = "1202002")
     void aSpanDrawsWhatItsPixelsDrawOneByOne(@ForAll long seed) {
         Random random = new Random(seed);
@@ -96,13 +108,9 @@ class FragmentStageTest {
             int y = random.nextInt(SIZE + 4) - 2;
             int from = random.nextInt(SIZE + 40) - 30;
             int to = from + random.nextInt(SIZE + 10);
-            double q0 = 1 / (4 + random.nextDouble() * 12);
-            double dq = (random.nextDouble() - 0.5) * 1e-4;
-            for (int c = 0; c < CHANNELS; c++) {
-                double value = c == FragmentLayout.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
-                v0[c] = value * q0;
-                dv[c] = (random.nextDouble() - 0.5) * 1e-3;
-            }
+            double[] q = randomSpan(random, v0, dv);
+            double q0 = q[0];
+            double dq = q[1];
             bySpan.provenance().begin(s);
             byPixel.provenance().begin(s);
             bySpan.fragments().span(y, from, to, q0, dq, v0, dv);
@@ -153,13 +161,9 @@ class FragmentStageTest {
             int y = 10 + random.nextInt(4);
             int from = random.nextInt(SIZE + 40) - 30;
             int to = from + (random.nextBoolean() ? random.nextInt(12) : random.nextInt(SIZE + 10));
-            double q0 = 1 / (4 + random.nextDouble() * 12);
-            double dq = (random.nextDouble() - 0.5) * 1e-4;
-            for (int c = 0; c < CHANNELS; c++) {
-                double value = c == FragmentLayout.Z ? -(4 + random.nextDouble() * 12) : random.nextDouble() * 2 - 1;
-                v0[c] = value * q0;
-                dv[c] = (random.nextDouble() - 0.5) * 1e-3;
-            }
+            double[] q = randomSpan(random, v0, dv);
+            double q0 = q[0];
+            double dq = q[1];
             if (random.nextInt(5) == 0) {
                 int x = from + random.nextInt(Math.max(1, to - from));
                 for (int c = 0; c < CHANNELS; c++) {
