@@ -63,7 +63,7 @@ public final class LitPrimitives {
     private final RowBands bands;
     /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
     private final boolean[] depthReset;
-    /** True once a look lights points: the bands' stages may then hold pixels waiting to be shaded. */
+    /** True once a look's lights make its pixels wait ({@link FragmentStage#paysToWait}): the bands' stages may then hold some. */
     private boolean shadesLater;
     /** The lighting last frozen, and what from. */
     private Supplier<PointShader> frozen;
