@@ -76,7 +76,9 @@ public final class LitPrimitives {
      * record the panel writes owners into, or null. The z-buffer starts at
      * -infinity: each band's drawer resets its rows before it first draws
      * (whatever the rows held before), and {@link #flush} the rows no drawer
-     * reached.
+     * reached. Long phong spans of two lights or more wait in {@code waiting}
+     * (the panel's) and each band's drawer shades its rows' at the end
+     * ({@link FragmentStage#shadeLater}); a batch kept whole is shaded at once.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance,
             WaitingPixels waiting) {
