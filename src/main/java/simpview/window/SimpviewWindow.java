@@ -110,7 +110,7 @@ public final class SimpviewWindow {
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
             legend -> legendStrip.show("compare", legend));
     // the pixel's history, explanation and vertices (issue 20)
-    private final InspectorPanel inspectorPanel = new InspectorPanel();
+    private final InspectorPanel inspectorPanel;
     private boolean overdrawShown;
     /** The overdraw overlay shows the depth-test failures (Shift+V), not every write (V). */
     private boolean overdrawFailures;
@@ -128,6 +128,7 @@ public final class SimpviewWindow {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
         this.renderer = new BackgroundRenderer(drawer, options.threads(), options.threadsGiven());
+        this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }
 

@@ -60,9 +60,10 @@ public final class InspectorPanel {
         t.setDaemon(true);
         return t;
     });
-    /** The replay's inspector, with its own scene files and models: used on the worker thread only. */
-    private final SceneLibrary library = new SceneLibrary();
-    private final PixelInspector inspector = new PixelInspector(library, SceneMonitor.NONE);
+    /** Where the replays' scene files and models come from: the window's, shared with its render thread. */
+    private final SceneLibrary library;
+    /** The replay's inspector: used on the worker thread only. */
+    private final PixelInspector inspector;
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
@@ -77,7 +78,10 @@ public final class InspectorPanel {
     /** A part of a chain as the text spells it: a file name, a colon, a line number. */
     private static final Pattern PART = Pattern.compile("[^\\s›()\"]+\\.(simp|obj):\\d+");
 
-    public InspectorPanel() {
+    /** A panel whose replays read their files through {@code library} (thread safe: the window's render thread's). */
+    public InspectorPanel(SceneLibrary library) {
+        this.library = library;
+        this.inspector = new PixelInspector(library, SceneMonitor.NONE);
         text.setEditable(false);
         text.setLineWrap(true);
         text.setWrapStyleWord(true);
@@ -316,7 +320,7 @@ public final class InspectorPanel {
         return answered;
     }
 
-    /** The next replays read every file from disk again: the kept ones are dropped on the inspector's thread. */
+    /** The next replays read every file from disk again: the kept ones are dropped on the inspector's thread, before them. */
     public void forgetFiles() {
         worker.submit(library::clear);
     }

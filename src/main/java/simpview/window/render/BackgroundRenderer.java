@@ -30,7 +30,7 @@ public final class BackgroundRenderer {
     private final SceneDrawer drawer;
     /** Who drew each pixel of the picture being drawn; only this thread writes it (each band its own rows). */
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
-    /** The window's scene files and obj models, kept across redraws while unchanged; only this thread uses it. */
+    /** The window's scene files and obj models, kept across redraws while unchanged (thread safe). */
     private final SceneLibrary library = new SceneLibrary();
 
     /** Draws on the render thread alone. */
@@ -55,6 +55,14 @@ public final class BackgroundRenderer {
             RenderedView result = job.run(renderer, drawer, library, provenance);
             SwingUtilities.invokeLater(() -> done.accept(job, result));
         });
+    }
+
+    /**
+     * The files its pictures read, kept across redraws: thread safe, so that
+     * whoever else draws the window's scenes (its inspector) may share them.
+     */
+    public SceneLibrary library() {
+        return library;
     }
 
     /**
