@@ -195,14 +195,9 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * what was in it; the weight is back at nothing.
      */
     void handOff() {
-        if (filling.size() == 0) {
-            return;
+        if (filling.size() > 0) {
+            publish(!BandChoice.splits(threads, pixels));
         }
-        queue.publish(!BandChoice.splits(threads, pixels));
-        pixels = 0;
-        primitivesLimit = (int) Math.min((long) primitivesLimit * 2, mostPrimitives);
-        filling = ring.get(queue.slot());
-        filling.clear();
     }
 
     /**
@@ -211,8 +206,14 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * rows.
      */
     void handOffLast() {
-        queue.publish(false);
+        publish(false);
+    }
+
+    /** Publishes the batch being filled, whole or in bands, and takes the next of the ring, empty, to fill. */
+    private void publish(boolean whole) {
+        queue.publish(whole);
         pixels = 0;
+        primitivesLimit = (int) Math.min((long) primitivesLimit * 2, mostPrimitives);
         filling = ring.get(queue.slot());
         filling.clear();
     }

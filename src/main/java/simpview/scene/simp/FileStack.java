@@ -222,9 +222,7 @@ final class FileStack implements AutoCloseable {
     Path locateModel(Command c) throws SceneException {
         Located located = locate(c.fileName, ".obj", top(), c);
         reach(located.path);
-        if (located.alsoWatched != null) {
-            reach(located.alsoWatched);
-        }
+        reachAlso(located.alsoWatched);
         return located.path;
     }
 
