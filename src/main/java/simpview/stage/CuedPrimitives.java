@@ -48,11 +48,8 @@ public final class CuedPrimitives {
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** The z-buffer whose owed reset the drawers make row by row, or null when there is none to make. */
-    private final ZBuffer zbuffer;
-    private final RowBands bands;
-    /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
-    private final boolean[] depthReset;
+    /** Each band's rows of the z-buffer reset, when the canvas's clear owes that: by its drawer, before it first draws. */
+    private final BandPreparation depthReset;
 
     /**
      * Draws onto {@code panel} (panel coordinates, whatever the page does per
@@ -67,9 +64,9 @@ public final class CuedPrimitives {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
-        this.zbuffer = zbuffer != null && zbuffer.resetOwedByRows() ? zbuffer : null;
-        this.bands = batches.bands();
-        this.depthReset = new boolean[bands.count()];
+        RowBands bands = batches.bands();
+        this.depthReset = new BandPreparation(bands.count(), zbuffer != null && zbuffer.resetOwedByRows()
+                ? b -> zbuffer.resetRows(bands.start(b), bands.end(b)) : b -> { });
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
@@ -90,23 +87,13 @@ public final class CuedPrimitives {
     }
 
     private void drawBand(Batch b, int band) {
-        resetDepth(band);
+        depthReset.band(band);
         drawers[band].draw(b);
     }
 
     private void drawWhole(Batch b) {
-        for (int band = 0; band < depthReset.length; band++) {
-            resetDepth(band);
-        }
+        depthReset.everyBand();
         wholeDrawer.draw(b);
-    }
-
-    /** Band b's rows of the z-buffer reset, if that is owed and not made yet: on the thread drawing them. */
-    private void resetDepth(int band) {
-        if (zbuffer != null && !depthReset[band]) {
-            zbuffer.resetRows(bands.start(band), bands.end(band));
-            depthReset[band] = true;
-        }
     }
 
     /**
@@ -119,9 +106,7 @@ public final class CuedPrimitives {
             batches.handOff();
             batches.finish();
         } finally {
-            for (int band = 0; band < depthReset.length; band++) {
-                resetDepth(band); // also when a drawer failed: no row keeps the last picture's depths
-            }
+            depthReset.everyBand(); // also when a drawer failed: no row keeps the last picture's depths
         }
     }
 

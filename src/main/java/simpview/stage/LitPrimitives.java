@@ -59,10 +59,9 @@ public final class LitPrimitives {
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    private final ZBuffer zbuffer;
     private final RowBands bands;
-    /** True once band b's rows of the z-buffer are reset: by its drawer, before it draws its first primitive. */
-    private final boolean[] depthReset;
+    /** Each band's rows of the z-buffer reset, and their waits ended: by its drawer, before it first draws. */
+    private final BandPreparation depthReset;
     /** True once a look's lights make its pixels wait ({@link FragmentStage#paysToWait}): the bands' stages may then hold some. */
     private boolean shadesLater;
     /** The lighting last frozen, and what from. */
@@ -85,10 +84,8 @@ public final class LitPrimitives {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
-        this.zbuffer = zbuffer;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
         this.bands = batches.bands();
-        this.depthReset = new boolean[bands.count()];
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
@@ -99,6 +96,10 @@ public final class LitPrimitives {
         if (wholeDrawer != drawers[0]) {
             wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
         }
+        this.depthReset = new BandPreparation(bands.count(), b -> {
+            zbuffer.resetRows(bands.start(b), bands.end(b));
+            drawers[b].fragments.clearWaits();
+        });
     }
 
     /**
@@ -180,18 +181,7 @@ public final class LitPrimitives {
             batches.handOff();
         }
         batches.finish();
-        for (int b = 0; b < depthReset.length; b++) {
-            resetDepth(b);
-        }
-    }
-
-    /** Band b's rows of the z-buffer reset, and their waits ended, if they are not yet: on the thread drawing them. */
-    private void resetDepth(int b) {
-        if (!depthReset[b]) {
-            zbuffer.resetRows(bands.start(b), bands.end(b));
-            drawers[b].fragments.clearWaits();
-            depthReset[b] = true;
-        }
+        depthReset.everyBand();
     }
 
     /**
@@ -353,16 +343,14 @@ public final class LitPrimitives {
         void draw(Batch b) {
             look = -1;
             if (band == Provenance.EVERY_BAND) {
-                for (int i = 0; i < depthReset.length; i++) {
-                    resetDepth(i);
-                }
+                depthReset.everyBand();
                 for (int k = 0; k < b.size; k++) {
                     if (BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
                         draw(b, k);
                     }
                 }
             } else {
-                resetDepth(band);
+                depthReset.band(band);
                 int[] mine = b.inBand[band];
                 int m = b.inBandCount[band];
                 for (int j = 0; j < m; j++) {
