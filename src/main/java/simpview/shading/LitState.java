@@ -38,6 +38,9 @@ public final class LitState implements PointShader {
     private final Lighting lighting = new Lighting(lights);
     /** Counts the changes to what lights a point: see {@link #lightingVersion}. */
     private int lightingVersion;
+    /** The lighting last frozen ({@link #frozenShader}), and the version it was frozen at. */
+    private Supplier<PointShader> frozen;
+    private int frozenVersion;
 
     public Camera camera() {
         return camera;
@@ -219,9 +222,18 @@ public final class LitState implements PointShader {
      * What lights a point now (ambient, ks and p, the lights so far, the
      * view), kept apart from later changes to the state: each shader the
      * supplier makes lights as this state does now, to the bit, with scratch
-     * of its own, so each drawing thread takes its own.
+     * of its own, so each drawing thread takes its own. The same supplier
+     * while the lighting is unchanged ({@link #lightingVersion}).
      */
     public Supplier<PointShader> frozenShader() {
+        if (frozen == null || frozenVersion != lightingVersion) {
+            frozen = freeze();
+            frozenVersion = lightingVersion;
+        }
+        return frozen;
+    }
+
+    private Supplier<PointShader> freeze() {
         Lights now = lights.copy();
         double ar = ambientR;
         double ag = ambientG;

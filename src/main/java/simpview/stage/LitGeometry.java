@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import java.nio.file.Path;
+import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
@@ -56,9 +57,9 @@ public final class LitGeometry implements GeometryStage {
 
     private final LitState state;
     private final FragmentStage fragments;
-    /** The lighting frozen for phong pixels shaded later, and the state's lighting version it was frozen at. */
+    /** The lighting frozen for phong pixels shaded later, and what it was made from. */
     private PointShader frozen;
-    private int frozenVersion;
+    private Supplier<PointShader> frozenFrom;
     /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
     private FragmentSink raster;
     private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
@@ -306,9 +307,10 @@ public final class LitGeometry implements GeometryStage {
         if (!fragments.shadesLater()) {
             return state;
         }
-        if (frozen == null || frozenVersion != state.lightingVersion()) {
-            frozen = state.frozenShader().get();
-            frozenVersion = state.lightingVersion();
+        Supplier<PointShader> now = state.frozenShader(); // the same while the lighting is unchanged
+        if (now != frozenFrom) {
+            frozenFrom = now;
+            frozen = now.get();
         }
         return frozen;
     }

@@ -64,10 +64,6 @@ public final class LitPrimitives {
     private final BandPreparation depthReset;
     /** True once a look's lights make its pixels wait ({@link FragmentStage#paysToWait}): the bands' stages may then hold some. */
     private boolean shadesLater;
-    /** The lighting last frozen, and what from. */
-    private Supplier<PointShader> frozen;
-    private LitState frozenFrom;
-    private int frozenVersion;
 
     /**
      * Draws on {@code panel} (panel coordinates), depth-tested against
@@ -110,12 +106,7 @@ public final class LitPrimitives {
      */
     int look(Fog fog, LitState phong) {
         shadesLater |= phong != null && FragmentStage.paysToWait(phong);
-        if (phong != null && (phong != frozenFrom || phong.lightingVersion() != frozenVersion)) {
-            frozenFrom = phong;
-            frozenVersion = phong.lightingVersion();
-            frozen = phong.frozenShader();
-        }
-        return batches.filling().look(fog, phong == null ? null : frozen);
+        return batches.filling().look(fog, phong == null ? null : phong.frozenShader());
     }
 
     /**
