@@ -268,7 +268,7 @@ public final class FragmentStage implements FragmentSink {
                 span = keepSpan(y, from, q0, dq, v0, dv);
             }
             if (whole) {
-                waiting.wait(y, first, first + n, span);
+                waiting.waitRun(y, first, first + n, span);
             } else {
                 for (int i = 0; i < n; i++) {
                     waiting.wait(batchX[i], y, span);
@@ -643,7 +643,7 @@ public final class FragmentStage implements FragmentSink {
     /** The n pixels of row y just gathered from x = first on, to be written now: they wait no more. */
     private void endWaits(int y, int first, int n) {
         if (whole) {
-            waiting.end(y, first, first + n);
+            waiting.endRun(y, first, first + n);
             return;
         }
         for (int i = 0; i < n; i++) {

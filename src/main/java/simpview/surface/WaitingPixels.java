@@ -53,7 +53,7 @@ public final class WaitingPixels {
     }
 
     /** Pixels x0 &lt;= x &lt; x1 of row y wait for span {@code s}. */
-    public void wait(int y, int x0, int x1, int s) {
+    public void waitRun(int y, int x0, int x1, int s) {
         Arrays.fill(span, y * width + x0, y * width + x1, s);
         if (x0 < from[y]) {
             from[y] = x0;
@@ -69,7 +69,7 @@ public final class WaitingPixels {
     }
 
     /** Pixels x0 &lt;= x &lt; x1 of row y are written now: they wait no more. */
-    public void end(int y, int x0, int x1) {
+    public void endRun(int y, int x0, int x1) {
         int a = Math.max(x0, from[y]);
         int b = Math.min(x1, to[y]);
         if (a < b) {
