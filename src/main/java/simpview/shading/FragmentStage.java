@@ -33,7 +33,9 @@ import simpview.surface.ZBuffer;
  * <p>One stage may draw only a band of the panel's rows ({@link #rows}): a
  * picture drawn by several threads has one stage per band.
  *
- * <p>State set per primitive; the per-pixel loop allocates nothing.
+ * <p>State set per primitive; the per-pixel loop allocates nothing. A
+ * stage can draw picture after picture ({@link FragmentStages}: kept by the
+ * drawing threads), its arrays kept at the size they grew to.
  */
 public final class FragmentStage implements FragmentSink {
 
@@ -66,11 +68,12 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
-    private final ZBuffer zbuffer;
-    private final double[] depth;
+    // The canvas's, set for each picture (startPicture): every canvas is the same size.
+    private ZBuffer zbuffer;
+    private double[] depth;
     private final int width;
     private final int height;
-    private final Drawable panel;
+    private Drawable panel;
     private final double[] lit = new double[3];
     // A batch of a span's pixels: k (as double), 1 / q and z at each, then
     // moved up in place to those that pass the depth test, with their x (z
@@ -128,6 +131,35 @@ public final class FragmentStage implements FragmentSink {
         this.height = zbuffer.height();
         this.panel = panel;
         this.rowTo = height;
+    }
+
+    /**
+     * Ready for a new picture on {@code zbuffer} (this stage's size), writing
+     * to {@code panel}: what the last picture set (rows, look, waits, kept
+     * spans) is dropped, and the stage is as a new one made for them.
+     */
+    void startPicture(ZBuffer newZbuffer, Drawable newPanel) {
+        if (newZbuffer.width() != width || newZbuffer.height() != height || newPanel.width() != width
+                || newPanel.height() != height) {
+            throw new IllegalArgumentException("a stage for a panel of another size");
+        }
+        zbuffer = newZbuffer;
+        depth = newZbuffer.depthsToReset();
+        panel = newPanel;
+        rowFrom = 0;
+        rowTo = height;
+        whole = false;
+        shader = null;
+        fog = Fog.NONE;
+        waiting = null;
+        defers = false;
+        owners = null;
+        forgetSpans();
+    }
+
+    /** Size of the z-buffers and panels this stage can draw on. */
+    boolean drawsOn(ZBuffer z) {
+        return z.width() == width && z.height() == height;
     }
 
     /** From now on writes only the rows {@code from <= y < to}, within the panel (one band of a picture). */
@@ -212,7 +244,7 @@ public final class FragmentStage implements FragmentSink {
             }
             w.clearRows(y, y + 1);
         }
-        spanCount = 0;
+        forgetSpans();
         shader = shaderBefore;
         fog = fogBefore;
     }
@@ -276,6 +308,13 @@ public final class FragmentStage implements FragmentSink {
             }
         }
         return span != WaitingPixels.NONE;
+    }
+
+    /** No span kept, and the looks of those that were let go. */
+    private void forgetSpans() {
+        Arrays.fill(spanShader, 0, spanCount, null);
+        Arrays.fill(spanFog, 0, spanCount, null);
+        spanCount = 0;
     }
 
     /** Keeps the phong span being drawn on row y (its set-up, look and owner); returns its index. */

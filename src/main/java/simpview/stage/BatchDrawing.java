@@ -99,7 +99,7 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         this.weighs = !threads.isOne()
                 && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
         this.kind = kind;
-        List<B> kept = threads.takeBatches(kind);
+        List<B> kept = threads.takeKept(kind);
         if (kept != null && kept.size() == SLOTS) {
             ring = kept;
             for (B b : ring) {
@@ -227,7 +227,7 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         try {
             queue.finish();
         } finally {
-            threads.keepBatches(kind, ring);
+            threads.keep(kind, ring);
         }
     }
 }

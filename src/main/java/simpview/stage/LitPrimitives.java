@@ -10,6 +10,7 @@ import simpview.raster.LitPolygonRasterizer;
 import simpview.shading.Fog;
 import simpview.shading.LitState;
 import simpview.shading.FragmentStage;
+import simpview.shading.FragmentStages;
 import simpview.shading.PointShader;
 import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
@@ -74,9 +75,10 @@ public final class LitPrimitives {
      * reached. Long phong spans of two lights or more wait in {@code waiting}
      * (the panel's) and each band's drawer shades its rows' at the end
      * ({@link FragmentStage#shadeLater}); a batch kept whole is shaded at once.
+     * The drawers' fragment stages come from {@code stages}.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance,
-            WaitingPixels waiting) {
+            WaitingPixels waiting, FragmentStages stages) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
@@ -84,11 +86,11 @@ public final class LitPrimitives {
         this.bands = batches.bands();
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
-            drawers[b] = new Band(b, bands.start(b), bands.end(b), new FragmentStage(zbuffer, panel));
+            drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel));
             drawers[b].fragments.shadeLater(waiting, true, provenance);
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), new FragmentStage(zbuffer, panel));
+                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), stages.next(panel));
         if (wholeDrawer != drawers[0]) {
             wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
         }

@@ -48,8 +48,12 @@ public final class DrawingThreads implements AutoCloseable {
     private long nanosInBands;
     /** Tasks handed to queues (bands of batches, batches drawn whole), summed. */
     private long tasks;
-    /** Each record's ring of batches, by the batches' class, kept from its last picture for the next. */
-    private final Map<Class<?>, List<?>> keptBatches = new HashMap<>();
+    /**
+     * What a picture's drawing made and gave back for the next picture, by
+     * class: each record's ring of batches, the fragment stages of the lit
+     * drawers.
+     */
+    private final Map<Class<?>, List<?>> kept = new HashMap<>();
 
     private DrawingThreads(int threads, boolean perPicture) {
         if (threads < 1) {
@@ -122,31 +126,32 @@ public final class DrawingThreads implements AutoCloseable {
     }
 
     /**
-     * The ring of batches a record of this class gave back with
-     * {@link #keepBatches} when it last finished a picture drawn by these
-     * threads, whose arrays have grown to what the pictures need, so that
-     * the next picture neither allocates nor grows them again. Handed to one
-     * picture at a time: null when none is kept, or when a picture drawing
-     * now has it.
+     * The objects of this class a picture drawn by these threads gave back
+     * with {@link #keep} when it finished (a record's ring of batches, whose
+     * arrays have grown to what the pictures need, the drawers' fragment
+     * stages), so that the next picture neither allocates nor grows them
+     * again. Handed to one picture at a time: null when none are kept, or
+     * when a picture drawing now has them.
      */
-    public synchronized <B> List<B> takeBatches(Class<B> batch) {
-        List<?> ring = keptBatches.remove(batch);
-        if (ring == null) {
+    public synchronized <T> List<T> takeKept(Class<T> kind) {
+        List<?> objects = kept.remove(kind);
+        if (objects == null) {
             return null;
         }
-        List<B> batches = new ArrayList<>(ring.size());
-        for (Object b : ring) {
-            batches.add(batch.cast(b));
+        List<T> taken = new ArrayList<>(objects.size());
+        for (Object o : objects) {
+            taken.add(kind.cast(o));
         }
-        return batches;
+        return taken;
     }
 
     /**
-     * Keeps a finished picture's ring of batches for the next picture
-     * ({@link #takeBatches}); none of them may be in use.
+     * Keeps a finished picture's objects of this class for the next picture
+     * ({@link #takeKept}), in place of any kept before; none of them may be
+     * in use.
      */
-    public synchronized <B> void keepBatches(Class<B> batch, List<B> ring) {
-        keptBatches.put(batch, ring);
+    public synchronized <T> void keep(Class<T> kind, List<T> objects) {
+        kept.put(kind, objects);
     }
 
     /** Runs {@code work} on a worker (there are workers: more than one thread). */

@@ -25,17 +25,17 @@ class DrawingThreadsTest {
     }
 
     @Test
-    void keptBatchesAreHandedToOnePictureAtATime() {
+    void keptObjectsAreHandedToOnePictureAtATime() {
         try (DrawingThreads threads = DrawingThreads.of(2)) {
-            assertNull(threads.takeBatches(StringBuilder.class), "nothing kept yet");
+            assertNull(threads.takeKept(StringBuilder.class), "nothing kept yet");
             List<StringBuilder> ring = List.of(new StringBuilder("a"), new StringBuilder("b"));
-            threads.keepBatches(StringBuilder.class, ring);
-            assertNull(threads.takeBatches(Object.class), "kept by the batches' own class only");
-            List<StringBuilder> taken = threads.takeBatches(StringBuilder.class);
+            threads.keep(StringBuilder.class, ring);
+            assertNull(threads.takeKept(Object.class), "kept by their own class only");
+            List<StringBuilder> taken = threads.takeKept(StringBuilder.class);
             assertEquals(2, taken.size());
             assertSame(ring.get(0), taken.get(0));
             assertSame(ring.get(1), taken.get(1));
-            assertNull(threads.takeBatches(StringBuilder.class), "taken: the next picture makes its own");
+            assertNull(threads.takeKept(StringBuilder.class), "taken: the next picture makes its own");
         }
     }
 

@@ -9,6 +9,7 @@ import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
+import simpview.shading.FragmentStages;
 import simpview.shading.LitState;
 import simpview.stage.LitGeometry;
 import simpview.stage.LitPrimitives;
@@ -42,6 +43,8 @@ final class LitRules implements RuleSet {
     private LitPrimitives record;
     /** Where the fragments go when drawn at once. */
     private final FragmentStage fragments;
+    /** The picture's fragment stages, given back to its threads at its end; null when they are not kept. */
+    private FragmentStages stages;
 
     /**
      * @param fragments where the fragments go: the canvas's z-buffer (reset to -infinity) and panel
@@ -219,16 +222,20 @@ final class LitRules implements RuleSet {
      * band's drawer resets its own rows of the z-buffer, on its own thread.
      * Phong pixels wait in {@code waiting} (the panel's, which the drawers
      * clear first) to be shaded once each at the scene's end
-     * ({@link FragmentStage#shadeLater}). Call before the scene is read.
+     * ({@link FragmentStage#shadeLater}). The fragment stages come from
+     * {@code stages} (this one's among them), given back at the scene's end.
+     * Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance, WaitingPixels waiting) {
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance, WaitingPixels waiting,
+            FragmentStages stages) {
+        this.stages = stages;
         if (threads.isOne()) {
             zbuffer.reset(Double.NEGATIVE_INFINITY);
             fragments.shadeLater(waiting, true, provenance);
             fragments.clearWaits();
             return;
         }
-        record = new LitPrimitives(threads, zbuffer, panel, provenance, waiting); // resets the z-buffer band by band
+        record = new LitPrimitives(threads, zbuffer, panel, provenance, waiting, stages); // resets the z-buffer band by band
         geometry.recordTo(record);
     }
 
@@ -238,6 +245,9 @@ final class LitRules implements RuleSet {
             record.flush();
         } else {
             fragments.shadeWaiting();
+        }
+        if (stages != null) {
+            stages.keep(); // drawn: no thread uses them any more
         }
     }
 

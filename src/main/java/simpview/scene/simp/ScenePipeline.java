@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import simpview.scene.SceneException;
 import simpview.shading.FragmentStage;
+import simpview.shading.FragmentStages;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
@@ -218,7 +219,8 @@ public final class ScenePipeline {
     /** The lit rules on the canvas: its z-buffer from -infinity, fragments onto its panel. */
     private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
         Drawable panel = canvas.litPanel();
-        FragmentStage fragments = new FragmentStage(canvas.zbuffer(), panel);
+        FragmentStages stages = FragmentStages.keptBy(canvas.drawingThreads(), canvas.zbuffer());
+        FragmentStage fragments = stages.next(panel);
         LitRules lit = new LitRules(fragments, options.library().models(), files, monitor.trace(), monitor.viewTurn());
         DrawingWatch watch = monitor.watch();
         if (watch != null) {
@@ -228,7 +230,8 @@ public final class ScenePipeline {
             watch.began(files::chain, lit.state());
         } else {
             // Resets the z-buffer: at once on one thread, band by band by the bands' drawers with several.
-            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance(), canvas.waitingPixels());
+            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance(), canvas.waitingPixels(),
+                    stages);
         }
         return lit;
     }

@@ -81,9 +81,10 @@ class BandedDrawingTest {
     }
 
     /**
-     * The threads keep each record's batches from one picture to the next
-     * (DrawingThreads.keepBatches): what a picture left in them, of its own
-     * scene or another, lit or depth-cued, never reaches the next one.
+     * The threads keep each record's batches and the lit pictures' fragment
+     * stages from one picture to the next (DrawingThreads.keep): what a
+     * picture left in them, of its own scene or another, lit or depth-cued,
+     * never reaches the next one, on one thread or two.
      */
     @Test
     void threadsThatDrewOtherScenesBeforeDrawWhatOneDraws() throws Exception {
@@ -92,11 +93,13 @@ class BandedDrawingTest {
         for (Case c : all) {
             ones.add(draw(c, 1));
         }
-        try (DrawingThreads two = DrawingThreads.of(2)) {
-            for (int round = 1; round <= 2; round++) {
-                for (int i = 0; i < all.size(); i++) {
-                    assertSameDrawing(ones.get(i), draw(all.get(i), two),
-                            all.get(i) + ", round " + round + " on the same threads");
+        for (int threads : new int[] {1, 2}) {
+            try (DrawingThreads same = DrawingThreads.of(threads)) {
+                for (int round = 1; round <= 2; round++) {
+                    for (int i = 0; i < all.size(); i++) {
+                        assertSameDrawing(ones.get(i), draw(all.get(i), same),
+                                all.get(i) + ", round " + round + " on the same " + threads + " thread(s)");
+                    }
                 }
             }
         }
