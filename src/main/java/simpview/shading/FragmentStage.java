@@ -628,8 +628,16 @@ public final class FragmentStage implements FragmentSink {
             }
             inUnit = unit(fr) && unit(fg) && unit(fb);
             double[] ts = fogT;
-            for (int i = 0; i < n; i++) {
-                ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
+            if (far <= 0 && range >= 1) {
+                // (z - far) / range is then never -inf (z never is), so
+                // positive is max to the bit.
+                for (int i = 0; i < n; i++) {
+                    ts[i] = Math.min(BatchLighting.positive((batchZ[i] - far) / range), 1);
+                }
+            } else {
+                for (int i = 0; i < n; i++) {
+                    ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
+                }
             }
             for (int i = 0; i < n; i++) {
                 double tt = ts[i];

@@ -31,6 +31,14 @@ class BatchLightingTest {
         return (random.nextDouble() * 2 - 1) * range;
     }
 
+    private static double ambient(Random random, boolean wild, double awkward) {
+        return wild ? number(random, 2, awkward) : random.nextDouble() * 0.3;
+    }
+
+    private static double kd(Random random, boolean wild, double awkward) {
+        return wild ? number(random, 1.5, awkward) : random.nextDouble();
+    }
+
     @Property(tries = 400, seed = "1202001")
     void aBatchLitTogetherEqualsEachPointLitAloneBitForBit(@ForAll long seed) {
         Random random = new Random(seed);
@@ -45,8 +53,11 @@ class BatchLightingTest {
         }
         Lighting lighting = new Lighting(lights);
         double p = random.nextBoolean() ? EXPONENTS[random.nextInt(EXPONENTS.length)] : random.nextDouble() * 200;
-        lighting.prepare(random.nextDouble() * 0.3, random.nextDouble() * 0.3, random.nextDouble() * 0.3,
-                random.nextDouble(), p, lightCount, random.nextBoolean());
+        // The ambient light and kd now and then outside [0, 1], or awkward,
+        // so that colours need clamping (also with the ambient term alone).
+        boolean wild = random.nextInt(3) == 0;
+        lighting.prepare(ambient(random, wild, awkward), ambient(random, wild, awkward),
+                ambient(random, wild, awkward), random.nextDouble(), p, lightCount, random.nextBoolean());
         LitPoints points = new LitPoints(1 + random.nextInt(80));
         int count = 1 + random.nextInt(points.capacity());
         for (int i = 0; i < count; i++) {
@@ -56,7 +67,8 @@ class BatchLightingTest {
             double py = atLight ? lights.y(0) : number(random, 40, awkward);
             double pz = atLight ? lights.z(0) : -Math.abs(number(random, 100, awkward));
             points.add(px, py, pz, number(random, 1, awkward), number(random, 1, awkward),
-                    number(random, 1, awkward), random.nextDouble(), random.nextDouble(), random.nextDouble());
+                    number(random, 1, awkward), kd(random, wild, awkward), kd(random, wild, awkward),
+                    kd(random, wild, awkward));
         }
         assertEachPointAsAlone(lighting, points);
     }
@@ -86,6 +98,30 @@ class BatchLightingTest {
                 points.add(1, 2, -10, Double.NEGATIVE_INFINITY, 0, 1, 0.5, 0.5, 0.5);
                 points.add(1, 2, -10, 0, 0, 1, Double.POSITIVE_INFINITY, 0.5, Double.NaN);
                 points.add(-2, 1, -3, 0.3, 0.4, 0.9, 0.9, 0.1, 0.4); // ordinary, after them all
+                assertEachPointAsAlone(lighting, points);
+            }
+        }
+    }
+
+    /**
+     * Colours that need clamping, or just not: every awkward kd (and 0.5)
+     * times ambient lights inside and outside [0, 1], -0 and NaN among them,
+     * with no light (the ambient term alone) and with one.
+     */
+    @Test
+    void coloursAtAndBeyondTheClampsBoundsAreLitAsAlone() {
+        double[] ambients = {0.3, 1, 0, -0.0, -0.5, 2, 1e-300, Double.MAX_VALUE, Double.NaN};
+        for (int lightCount = 0; lightCount <= 1; lightCount++) {
+            Lights lights = new Lights();
+            lights.add(0.3, -0.2, 0.1, 1, 1, 1, 1, 0.01);
+            for (double ambient : ambients) {
+                Lighting lighting = new Lighting(lights);
+                lighting.prepare(ambient, 1 - ambient, 0.5, 0.5, 8, lightCount, true);
+                LitPoints points = new LitPoints(AWKWARD.length + 1);
+                for (double kd : AWKWARD) {
+                    points.add(1, 2, -10, 0, 0.6, 0.8, kd, 0.5, -kd);
+                }
+                points.add(1, 2, -10, 0, 0.6, 0.8, 1 + 1e-16, Math.nextUp(1.0), Math.nextDown(0.0));
                 assertEachPointAsAlone(lighting, points);
             }
         }
