@@ -11,6 +11,14 @@ public final class ImageDrawable implements Drawable {
 
     /** Spans shorter than this skip the clamp-free path: 6 conversions to check it, 3 per pixel to clamp. */
     private static final int SHORT_SPAN = 3;
+    /** 0, 1, 2, ...: k + RAMP[j] is k + j, exactly. */
+    private static final double[] RAMP = new double[1024];
+
+    static {
+        for (int j = 0; j < RAMP.length; j++) {
+            RAMP[j] = j;
+        }
+    }
 
     private final BufferedImage image;
     private final int[] pixels;
@@ -111,8 +119,56 @@ public final class ImageDrawable implements Drawable {
         return first >= 0 && first <= 255 && last >= 0 && last <= 255;
     }
 
-    /** Colors.packLevels without the clamp: every channel is known to stay in [0, 255]. */
+    /**
+     * Colors.packLevels without the clamp: every channel is known to stay in
+     * [0, 255]. Where each channel's c + k dc + 0.5 is also at least 0 at both
+     * ends (so everywhere, as it is monotone in k), truncating it is flooring
+     * it, and the three floors make one whole number below 2^24, exactly:
+     * floor(r) 65536 + floor(g) 256 + floor(b), converted once per pixel, in
+     * a loop that C2 packs (it packs floors, not conversions to int, and k
+     * comes from RAMP: nor int to double), then the conversions. Measured
+     * 2.6-3.4x faster than three conversions a pixel (session 10).
+     */
     private void packUnclamped(Span s, int row, int from, int to) {
+        double r = s.r;
+        double dr = s.dr;
+        double g = s.g;
+        double dg = s.dg;
+        double b = s.b;
+        double db = s.db;
+        int k0 = from - s.xBase;
+        int k1 = to - 1 - s.xBase;
+        if (!(atLeastZero(r, dr, k0, k1) && atLeastZero(g, dg, k0, k1) && atLeastZero(b, db, k0, k1))) {
+            packTruncated(s, row, from, to);
+            return;
+        }
+        if (s.levels.length < Math.min(to - from, RAMP.length)) {
+            s.levels = new double[Math.min(Math.max(to - from, 2 * s.levels.length), RAMP.length)];
+        }
+        double[] levels = s.levels;
+        int[] p = pixels;
+        for (int at = from; at < to; at += RAMP.length) {
+            int n = Math.min(RAMP.length, to - at);
+            double kAt = at - s.xBase;
+            for (int j = 0; j < n; j++) {
+                double k = kAt + RAMP[j];
+                levels[j] = Math.floor(r + k * dr + 0.5) * 65536 + Math.floor(g + k * dg + 0.5) * 256
+                        + Math.floor(b + k * db + 0.5);
+            }
+            int i = row + at;
+            for (int j = 0; j < n; j++) {
+                p[i + j] = 0xFF000000 | (int) levels[j];
+            }
+        }
+    }
+
+    /** True when c + k * dc + 0.5 is at least 0 (so not NaN) at k = k0 and k = k1. */
+    private static boolean atLeastZero(double c, double dc, int k0, int k1) {
+        return c + k0 * dc + 0.5 >= 0 && c + k1 * dc + 0.5 >= 0;
+    }
+
+    /** packUnclamped's pixels, a channel at a time truncated, as Colors.packLevels without the clamp. */
+    private void packTruncated(Span s, int row, int from, int to) {
         int[] p = pixels;
         double r = s.r;
         double dr = s.dr;

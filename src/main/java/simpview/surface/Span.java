@@ -26,6 +26,11 @@ public final class Span {
     public double dg;
     public double b;
     public double db;
+    /**
+     * Room for the image's levels of this span's pixels ({@link ImageDrawable}),
+     * grown as needed: a Span is one renderer's, on one thread, and so is this.
+     */
+    double[] levels = new double[0];
 
     public double zAt(int x) {
         return z + (x - xBase) * dz;
