@@ -39,15 +39,8 @@ import simpview.surface.ZBuffer;
  */
 public final class FragmentStage implements FragmentSink {
 
-    /**
-     * Pixels of a span done together. A batch's loops have a scalar start and
-     * end around their packed middle, so longer batches light more of their
-     * pixels packed (three lights: 22.5 ns a point at 64, 19.4 at 128); but
-     * 256 overflows the first-level cache with the batch's arrays. 128
-     * measured 0.95-0.98 of 64's time on the course's lit pages, one thread
-     * and two, and 256 1.14-1.17 on A3's (session 10).
-     */
-    static final int BATCH = 128;
+    /** Pixels of a span done together. */
+    static final int BATCH = 64;
     /**
      * The fewest lights for which a long phong span's pixels wait to be shaded
      * at the end ({@link #shadeLater}). The wait costs about the same at
