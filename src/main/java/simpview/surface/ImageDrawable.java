@@ -139,7 +139,7 @@ public final class ImageDrawable implements Drawable {
         int k0 = from - s.xBase;
         int k1 = to - 1 - s.xBase;
         if (!(atLeastZero(r, dr, k0, k1) && atLeastZero(g, dg, k0, k1) && atLeastZero(b, db, k0, k1))) {
-            packTruncated(s, row, from, to);
+            packTruncated(row, from, to, k0, r, dr, g, dg, b, db);
             return;
         }
         if (s.levels.length < Math.min(to - from, RAMP.length)) {
@@ -167,16 +167,14 @@ public final class ImageDrawable implements Drawable {
         return c + k0 * dc + 0.5 >= 0 && c + k1 * dc + 0.5 >= 0;
     }
 
-    /** packUnclamped's pixels, a channel at a time truncated, as Colors.packLevels without the clamp. */
-    private void packTruncated(Span s, int row, int from, int to) {
+    /**
+     * packUnclamped's pixels from k = k0 on, a channel at a time truncated, as
+     * Colors.packLevels without the clamp.
+     */
+    private void packTruncated(int row, int from, int to, int k0, double r, double dr, double g, double dg,
+            double b, double db) {
         int[] p = pixels;
-        double r = s.r;
-        double dr = s.dr;
-        double g = s.g;
-        double dg = s.dg;
-        double b = s.b;
-        double db = s.db;
-        int k = from - s.xBase;
+        int k = k0;
         for (int i = row + from; i < row + to; i++, k++) {
             p[i] = 0xFF000000 | (int) (r + k * dr + 0.5) << 16 | (int) (g + k * dg + 0.5) << 8
                     | (int) (b + k * db + 0.5);
