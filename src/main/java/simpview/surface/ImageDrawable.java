@@ -142,10 +142,7 @@ public final class ImageDrawable implements Drawable {
             packTruncated(row, from, to, k0, r, dr, g, dg, b, db);
             return;
         }
-        if (s.levels.length < Math.min(to - from, RAMP.length)) {
-            s.levels = new double[Math.min(Math.max(to - from, 2 * s.levels.length), RAMP.length)];
-        }
-        double[] levels = s.levels;
+        double[] levels = levels(s, to - from);
         int[] p = pixels;
         for (int at = from; at < to; at += RAMP.length) {
             int n = Math.min(RAMP.length, to - at);
@@ -215,11 +212,38 @@ public final class ImageDrawable implements Drawable {
             return false;
         }
         int[] p = pixels;
-        int k = from - s.xBase;
-        for (int i = row + from; i < row + to; i++, k++) {
-            p[i] = fixed | (int) (c + k * dc + 0.5) * copies;
+        int k0 = from - s.xBase;
+        if (!atLeastZero(c, dc, k0, to - 1 - s.xBase)) {
+            int k = k0;
+            for (int i = row + from; i < row + to; i++, k++) {
+                p[i] = fixed | (int) (c + k * dc + 0.5) * copies;
+            }
+            return true;
+        }
+        // As packUnclamped: the level floored (it is at least 0) times copies, a whole number below 2^24.
+        double[] levels = levels(s, to - from);
+        double times = copies;
+        for (int at = from; at < to; at += RAMP.length) {
+            int n = Math.min(RAMP.length, to - at);
+            double kAt = at - s.xBase;
+            for (int j = 0; j < n; j++) {
+                levels[j] = Math.floor(c + (kAt + RAMP[j]) * dc + 0.5) * times;
+            }
+            int i = row + at;
+            for (int j = 0; j < n; j++) {
+                p[i + j] = fixed | (int) levels[j];
+            }
         }
         return true;
+    }
+
+    /** The span's room for the levels of up to RAMP.length of its {@code count} pixels. */
+    private static double[] levels(Span s, int count) {
+        int n = Math.min(count, RAMP.length);
+        if (s.levels.length < n) {
+            s.levels = new double[Math.min(Math.max(n, 2 * s.levels.length), RAMP.length)];
+        }
+        return s.levels;
     }
 
     private void packClamped(Span s, int row, int from, int to) {
