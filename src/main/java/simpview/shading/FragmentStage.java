@@ -68,7 +68,7 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
-    // The canvas's, set for each picture (startPicture): every canvas is the same size.
+    // The picture's: set anew for each (startPicture), on a canvas of this stage's size.
     private ZBuffer zbuffer;
     private double[] depth;
     private final int width;
@@ -157,7 +157,7 @@ public final class FragmentStage implements FragmentSink {
         forgetSpans();
     }
 
-    /** Size of the z-buffers and panels this stage can draw on. */
+    /** True when {@code z} is of this stage's size, so that a picture on it can be drawn by this stage. */
     boolean drawsOn(ZBuffer z) {
         return z.width() == width && z.height() == height;
     }

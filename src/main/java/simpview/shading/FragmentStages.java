@@ -65,8 +65,12 @@ public final class FragmentStages {
     /**
      * Gives every stage of this picture back to the threads for the next
      * one: once the picture is drawn and no thread draws with them any more.
+     * A second call gives nothing back (and keeps what the first gave).
      */
     public void keep() {
+        if (used.isEmpty() && spare.isEmpty()) {
+            return;
+        }
         List<FragmentStage> all = new ArrayList<>(used.size() + spare.size());
         all.addAll(used);
         all.addAll(spare);

@@ -35,6 +35,7 @@ class FragmentStagesTest {
             FragmentStage a = first.next(panel);
             FragmentStage b = first.next(panel);
             first.keep();
+            first.keep(); // gives nothing back a second time, and keeps what the first gave
 
             FragmentStages second = FragmentStages.keptBy(threads, new ZBuffer(SIZE, SIZE));
             FragmentStages meanwhile = FragmentStages.keptBy(threads, zbuffer);
