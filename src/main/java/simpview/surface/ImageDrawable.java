@@ -139,8 +139,8 @@ public final class ImageDrawable implements Drawable {
     /**
      * Colors.packLevels without the clamp: every channel is known to stay in
      * [0, 255]. With {@code floors} each channel's c + k dc + 0.5 is also at
-     * least 0 at both ends (so everywhere, as it is monotone in k): truncating it is flooring
-     * it, and the three floors make one whole number below 2^24, exactly:
+     * least 0 at both ends (so everywhere, as it is monotone in k): truncating
+     * it is flooring it, and the three floors make one whole number below 2^24, exactly:
      * floor(r) 65536 + floor(g) 256 + floor(b), converted once per pixel, in
      * a loop that C2 packs (it packs floors, not conversions to int, and k
      * comes from RAMP: nor int to double), then the conversions. Measured
