@@ -608,7 +608,9 @@ public final class FragmentStage implements FragmentSink {
      * colour; a zero's sign may differ, which the level does not see. That
      * needs near - far positive and finite and a finite fog colour (else
      * pixel by pixel, as fogged). No z here is NaN: each passed the depth
-     * test. A NaN level truncates to 0, as Colors.level has it.
+     * test. Where a fog colour is outside [0, 1] the levels are clamped and
+     * cast, and a NaN one truncates to 0, as Colors.level has it; else every
+     * level is a whole number in [0, 255] (the lit colours are in [0, 1]).
      */
     private void pack(int n) {
         LitPoints t = points;
@@ -659,14 +661,14 @@ public final class FragmentStage implements FragmentSink {
             // it truncates into [0, 255] with no clamp, and truncating it is
             // flooring it. The three floors (which C2 packs, where it packs no
             // conversion to int) make one whole number below 2^24, exactly,
-            // converted once.
+            // converted once (Colors.whole: the cast, faster).
             double[] levels = fogT;
             for (int i = 0; i < n; i++) {
                 levels[i] = Math.floor(red[i] * 255 + 0.5) * 65536 + Math.floor(green[i] * 255 + 0.5) * 256
                         + Math.floor(blue[i] * 255 + 0.5);
             }
             for (int i = 0; i < n; i++) {
-                colours[i] = 0xFF000000 | (int) levels[i];
+                colours[i] = 0xFF000000 | Colors.whole(levels[i]);
             }
             return;
         }

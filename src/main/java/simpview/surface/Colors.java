@@ -14,6 +14,17 @@ public final class Colors {
         return level(channel * 255);
     }
 
+    /**
+     * {@code (int) w} for a whole number w in [0, 2^31), by another way: 2^52
+     * added (exactly: the sum's mantissa is w), and the sum's low 32 bits. A
+     * loop of these measured 0.35 ns a value against 0.50 for the casts
+     * (session 10): the packed-pixel loops convert levels with it. Only for
+     * whole numbers in that range.
+     */
+    public static int whole(double w) {
+        return (int) Double.doubleToRawLongBits(w + 0x1p52);
+    }
+
     /** A channel already in byte levels, rounded half up and clamped; NaN is 0. */
     public static int level(double level) {
         // (int) truncates toward zero, which equals floor for level + 0.5 >= 0;

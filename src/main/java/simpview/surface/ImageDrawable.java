@@ -169,7 +169,7 @@ public final class ImageDrawable implements Drawable {
             }
             int i = row + at;
             for (int j = 0; j < n; j++) {
-                p[i + j] = 0xFF000000 | (int) levels[j];
+                p[i + j] = 0xFF000000 | Colors.whole(levels[j]);
             }
         }
     }
@@ -242,7 +242,7 @@ public final class ImageDrawable implements Drawable {
             }
             int i = row + at;
             for (int j = 0; j < n; j++) {
-                p[i + j] = fixed | (int) levels[j];
+                p[i + j] = fixed | Colors.whole(levels[j]);
             }
         }
         return true;
