@@ -209,6 +209,18 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         publish(false);
     }
 
+    /**
+     * Hands off an empty batch, before anything is recorded, to be drawn in
+     * bands: the other threads start at once, and each band's drawer makes
+     * its rows ready (what the record's {@code band} does before it draws)
+     * while the first batch is read. The first batch's limit stays.
+     */
+    void prepareBands() {
+        int first = primitivesLimit;
+        publish(false);
+        primitivesLimit = first;
+    }
+
     /** Publishes the batch being filled, whole or in bands, and takes the next of the ring, empty, to fill. */
     private void publish(boolean whole) {
         queue.publish(whole);

@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import java.util.Arrays;
+import java.util.function.Supplier;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
@@ -8,6 +9,7 @@ import simpview.raster.WireframePolygonRenderer;
 import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
+import simpview.surface.OwedRows;
 import simpview.surface.Provenance;
 import simpview.surface.RowBandDrawable;
 import simpview.surface.RowBands;
@@ -48,8 +50,16 @@ public final class CuedPrimitives {
     /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
     private final Band wholeDrawer;
     private final Provenance provenance;
-    /** Each band's rows of the z-buffer reset, when the canvas's clear owes that: by its drawer, before it first draws. */
-    private final BandPreparation depthReset;
+    private final RowBands bands;
+    private final ZBuffer zbuffer;
+    private final Supplier<OwedRows> panelRows;
+    /**
+     * Each band's rows as the canvas's clear owes them (the z-buffer reset,
+     * the panel filled): by its drawer, before it first draws. Null until the
+     * first primitive: a scene that turns lit before drawing any drops its
+     * depth-cued record, and what the clear owes stays owed to the canvas.
+     */
+    private BandPreparation preparation;
 
     /**
      * Draws onto {@code panel} (panel coordinates, whatever the page does per
@@ -58,15 +68,19 @@ public final class CuedPrimitives {
      * (else null) and the canvas's clear owes it a reset, each band's drawer
      * resets its own rows before it first draws, and {@link #flush} the rows
      * no drawer reached: the reset is shared by the threads, not made by
-     * whichever tests a depth first while the others wait.
+     * whichever tests a depth first while the others wait. The panel's rows
+     * that the clear owes (asked of {@code panelRows}) are made the same way.
+     * Both are taken at the first primitive, and the drawers start on them
+     * then, while the scene's first batch is read.
      */
-    public CuedPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+    public CuedPrimitives(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
+            Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
-        RowBands bands = batches.bands();
-        this.depthReset = new BandPreparation(bands.count(), zbuffer != null && zbuffer.resetOwedByRows()
-                ? b -> zbuffer.resetRows(bands.start(b), bands.end(b)) : b -> { });
+        this.bands = batches.bands();
+        this.zbuffer = zbuffer;
+        this.panelRows = panelRows;
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
@@ -75,8 +89,28 @@ public final class CuedPrimitives {
                 : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel);
     }
 
+    /**
+     * Takes what the canvas's clear owes, to be made band by band, and hands
+     * off an empty batch: the drawers start on it while the first batch is
+     * read.
+     */
+    private void start() {
+        boolean resets = zbuffer != null && zbuffer.resetOwedByRows();
+        OwedRows rows = panelRows.get();
+        preparation = new BandPreparation(bands.count(), b -> {
+            if (resets) {
+                zbuffer.resetRows(bands.start(b), bands.end(b));
+            }
+            rows.make(bands.start(b), bands.end(b));
+        });
+        batches.prepareBands();
+    }
+
     /** Records the primitive whose numbers start at p[at] ({@link Painter#STRIDE} of them), a line's two vertices first. */
     void add(int what, double[] p, int at) {
+        if (preparation == null) {
+            start();
+        }
         Batch b = batches.filling();
         int corners = b.add(what, p, at, provenance == null ? Provenance.BACKGROUND : provenance.current());
         boolean heavy = batches.weigh(p, at + Vertex.X, corners, Vertex.NUMBERS, what == Painter.FILLED,
@@ -87,12 +121,12 @@ public final class CuedPrimitives {
     }
 
     private void drawBand(Batch b, int band) {
-        depthReset.band(band);
+        preparation.band(band);
         drawers[band].draw(b);
     }
 
     private void drawWhole(Batch b) {
-        depthReset.everyBand();
+        preparation.everyBand();
         wholeDrawer.draw(b);
     }
 
@@ -102,11 +136,15 @@ public final class CuedPrimitives {
      * all is drawn.
      */
     public void flush() {
+        if (preparation == null) {
+            batches.finish(); // nothing recorded, nothing taken: the threads keep the ring
+            return;
+        }
         try {
             batches.handOff();
             batches.finish();
         } finally {
-            depthReset.everyBand(); // also when a drawer failed: no row keeps the last picture's depths
+            preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
         }
     }
 

@@ -15,6 +15,7 @@ import simpview.shading.PointShader;
 import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
+import simpview.surface.OwedRows;
 import simpview.surface.Provenance;
 import simpview.surface.RowBands;
 import simpview.surface.WaitingPixels;
@@ -61,8 +62,12 @@ public final class LitPrimitives {
     private final Band wholeDrawer;
     private final Provenance provenance;
     private final RowBands bands;
-    /** Each band's rows of the z-buffer reset, and their waits ended: by its drawer, before it first draws. */
-    private final BandPreparation depthReset;
+    /**
+     * Each band's rows of the z-buffer reset, their waits ended and the
+     * panel's rows the canvas's clear owes made: by its drawer, before it
+     * first draws.
+     */
+    private final BandPreparation preparation;
     /** True once a look's lights make its pixels wait ({@link FragmentStage#paysToWait}): the bands' stages may then hold some. */
     private boolean shadesLater;
 
@@ -72,13 +77,16 @@ public final class LitPrimitives {
      * record the panel writes owners into, or null. The z-buffer starts at
      * -infinity: each band's drawer resets its rows before it first draws
      * (whatever the rows held before), and {@link #flush} the rows no drawer
-     * reached. Long phong spans of two lights or more wait in {@code waiting}
-     * (the panel's) and each band's drawer shades its rows' at the end
-     * ({@link FragmentStage#shadeLater}); a batch kept whole is shaded at once.
-     * The drawers' fragment stages come from {@code stages}.
+     * reached. The panel's rows that the canvas's clear owes
+     * ({@code panelRows}) are made the same way; the drawers start on them at
+     * once, while the scene's first batch is read. Long phong spans of two
+     * lights or more wait in {@code waiting} (the panel's) and each band's
+     * drawer shades its rows' at the end ({@link FragmentStage#shadeLater}); a
+     * batch kept whole is shaded at once. The drawers' fragment stages come
+     * from {@code stages}.
      */
-    public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance,
-            WaitingPixels waiting, FragmentStages stages) {
+    public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, OwedRows panelRows, Drawable panel,
+            Provenance provenance, WaitingPixels waiting, FragmentStages stages) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
@@ -94,10 +102,12 @@ public final class LitPrimitives {
         if (wholeDrawer != drawers[0]) {
             wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
         }
-        this.depthReset = new BandPreparation(bands.count(), b -> {
+        this.preparation = new BandPreparation(bands.count(), b -> {
             zbuffer.resetRows(bands.start(b), bands.end(b));
+            panelRows.make(bands.start(b), bands.end(b));
             drawers[b].fragments.clearWaits();
         });
+        batches.prepareBands();
     }
 
     /**
@@ -173,8 +183,11 @@ public final class LitPrimitives {
         } else {
             batches.handOff();
         }
-        batches.finish();
-        depthReset.everyBand();
+        try {
+            batches.finish();
+        } finally {
+            preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
+        }
     }
 
     /**
@@ -336,18 +349,20 @@ public final class LitPrimitives {
         void draw(Batch b) {
             look = -1;
             if (band == Provenance.EVERY_BAND) {
-                depthReset.everyBand();
+                preparation.everyBand();
                 for (int k = 0; k < b.size; k++) {
                     if (BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
                         draw(b, k);
                     }
                 }
             } else {
-                depthReset.band(band);
-                int[] mine = b.inBand[band];
-                int m = b.inBandCount[band];
-                for (int j = 0; j < m; j++) {
-                    draw(b, mine[j]);
+                preparation.band(band);
+                if (b.size > 0) { // an empty batch may never have been binned
+                    int[] mine = b.inBand[band];
+                    int m = b.inBandCount[band];
+                    for (int j = 0; j < m; j++) {
+                        draw(b, mine[j]);
+                    }
                 }
                 if (b.last) {
                     fragments.shadeWaiting();

@@ -6,6 +6,11 @@ import java.awt.image.DataBufferInt;
 /**
  * The end of every chain: a BufferedImage written through its int[] raster.
  * Image coordinates: origin top-left, y down. Writes outside are dropped.
+ *
+ * <p>Rows may be owed a fill ({@link #oweRows}): a page canvas's clear,
+ * made when the image is next read or written (each way in settles it
+ * first), or handed to a picture's band drawers to make row by row on
+ * their own threads ({@link #fillOwedByRows}).
  */
 public final class ImageDrawable implements Drawable {
 
@@ -24,6 +29,18 @@ public final class ImageDrawable implements Drawable {
     private final int[] pixels;
     private final int width;
     private final int height;
+    /** What each owed row is to be: width pixels, kept, not copied. */
+    private int[] owedRow;
+    /** Rows owedFrom &lt;= y &lt; owedTo are owed {@link #owedRow}; an empty range when none is. */
+    private int owedFrom;
+    private int owedTo;
+    /**
+     * True while the owed rows are to be made by the next read or write
+     * ({@link #settle}), not by rows: set on the thread that clears, before
+     * any drawing thread starts; read by every write, of several threads at
+     * once too, and cleared by the first, which fills.
+     */
+    private volatile boolean owed;
 
     public ImageDrawable(BufferedImage image) {
         int type = image.getType();
@@ -36,8 +53,72 @@ public final class ImageDrawable implements Drawable {
         this.height = image.getHeight();
     }
 
+    /** The image, any owed rows made first. */
     public BufferedImage image() {
+        settle();
         return image;
+    }
+
+    /**
+     * Rows from &lt;= y &lt; to are to be {@code row}'s pixels ({@link #width}
+     * of them; kept, not copied, so not to be changed): made when the image
+     * is next read or written, or by rows ({@link #fillOwedByRows}). Rows
+     * owed before and not covered now are made first.
+     */
+    public void oweRows(int from, int to, int[] row) {
+        if (row.length != width) {
+            throw new IllegalArgumentException("a row of " + row.length + " pixels for an image " + width + " wide");
+        }
+        int first = Math.max(from, 0);
+        int end = Math.max(Math.min(to, height), first);
+        if (owed && (first > owedFrom || end < owedTo)) {
+            settle();
+        }
+        owedRow = row;
+        owedFrom = first;
+        owedTo = end;
+        owed = first < end;
+    }
+
+    /**
+     * Hands the owed rows, if any are, to whoever draws each row, who makes
+     * its own ({@link #fillOwedRows}) before it reads or writes there: true
+     * when rows were owed. From now on reads and writes do not make them.
+     * Called on the thread that owes them, before any row is drawn.
+     */
+    public boolean fillOwedByRows() {
+        boolean were = owed;
+        owed = false;
+        return were;
+    }
+
+    /**
+     * The owed rows among from &lt;= y &lt; to made, once {@link #fillOwedByRows}
+     * handed them over; each by the one thread that draws it.
+     */
+    public void fillOwedRows(int from, int to) {
+        int end = Math.min(to, owedTo);
+        for (int y = Math.max(from, owedFrom); y < end; y++) {
+            System.arraycopy(owedRow, 0, pixels, y * width, width);
+        }
+    }
+
+    /**
+     * The owed rows made, if they are owed to the next read or write. Safe
+     * from several threads at once: the first fills, the others wait for it.
+     */
+    private void settle() {
+        if (owed) {
+            fillOwed();
+        }
+    }
+
+    private synchronized void fillOwed() {
+        if (owed) {
+            fillOwedRows(owedFrom, owedTo);
+            owedTo = owedFrom;
+            owed = false;
+        }
     }
 
     @Override
@@ -52,6 +133,7 @@ public final class ImageDrawable implements Drawable {
 
     @Override
     public void setPixel(int x, int y, double z, int argb) {
+        settle();
         if (x >= 0 && x < width && y >= 0 && y < height) {
             pixels[y * width + x] = argb;
         }
@@ -60,6 +142,7 @@ public final class ImageDrawable implements Drawable {
     /** The part of the run inside the image, copied into the raster in one go. */
     @Override
     public void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
+        settle();
         if (y < 0 || y >= height) {
             return;
         }
@@ -72,6 +155,7 @@ public final class ImageDrawable implements Drawable {
 
     @Override
     public int getPixel(int x, int y) {
+        settle();
         if (x >= 0 && x < width && y >= 0 && y < height) {
             return pixels[y * width + x] | 0xFF000000;
         }
@@ -89,6 +173,7 @@ public final class ImageDrawable implements Drawable {
      */
     @Override
     public void fillSpan(Span s) {
+        settle();
         if (s.y < 0 || s.y >= height) {
             return;
         }
@@ -267,6 +352,9 @@ public final class ImageDrawable implements Drawable {
 
     /** Fills the rectangle [x0, x1) x [y0, y1) with one colour. */
     public void fillRect(int x0, int y0, int x1, int y1, int argb) {
+        if (owed && y0 < owedTo && y1 > owedFrom) {
+            fillOwed(); // the rows owed that this does not cover
+        }
         for (int y = Math.max(y0, 0); y < Math.min(y1, height); y++) {
             java.util.Arrays.fill(pixels, y * width + Math.max(x0, 0), y * width + Math.min(x1, width), argb);
         }

@@ -19,6 +19,8 @@ public final class PageCanvas {
     private final ImageDrawable imageDrawable;
     private final PanelDrawable panel;
     private final ZBuffer zbuffer;
+    /** A row of the image through the panel as the clear leaves it: white margins, black panel. */
+    private final int[] clearedRow = new int[SIZE];
     /** Who drew each panel pixel, when someone asked to know; null costs nothing. */
     private Provenance provenance;
     /** See {@link #waitingPixels}: made at the first lit picture. */
@@ -31,21 +33,24 @@ public final class PageCanvas {
         imageDrawable = new ImageDrawable(image);
         panel = new PanelDrawable(imageDrawable, MARGIN, MARGIN, PANEL);
         zbuffer = new ZBuffer(PANEL, PANEL);
+        java.util.Arrays.fill(clearedRow, Colors.WHITE);
+        java.util.Arrays.fill(clearedRow, MARGIN, MARGIN + PANEL, Colors.BLACK);
         clear();
     }
 
     /**
-     * White margins, black panel, z-buffer at the far plane. Each pixel is
-     * written once; the z-buffer is filled when first read or tested
-     * ({@link ZBuffer#resetWhenNeeded}), which a lit scene, resetting it to
-     * -infinity itself, never does.
+     * White margins, black panel, z-buffer at the far plane. The rows above
+     * and below the panel are filled now; the rows through it are owed
+     * ({@link ImageDrawable#oweRows}), made when the image is first read or
+     * written, or by a picture's band drawers, each its own rows
+     * ({@link #owedPanelRows}). The z-buffer is filled when first read or
+     * tested ({@link ZBuffer#resetWhenNeeded}), which a lit scene, resetting
+     * it to -infinity itself, never does.
      */
     public void clear() {
         imageDrawable.fillRect(0, 0, SIZE, MARGIN, Colors.WHITE);
         imageDrawable.fillRect(0, MARGIN + PANEL, SIZE, SIZE, Colors.WHITE);
-        imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
-        imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
-        imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
+        imageDrawable.oweRows(MARGIN, MARGIN + PANEL, clearedRow);
         zbuffer.resetWhenNeeded(Camera.PARALLEL.yon());
         if (provenance != null) {
             provenance.reset();
@@ -98,8 +103,22 @@ public final class PageCanvas {
         return waiting;
     }
 
+    /** The page's image, what the clear owes of it made first. */
     public BufferedImage image() {
-        return image;
+        return imageDrawable.image();
+    }
+
+    /**
+     * The rows through the panel that the clear still owes, handed to a
+     * picture's band drawers ({@link OwedRows}): from now on whoever draws
+     * panel rows makes them first, and reading or writing the image no
+     * longer does. Called before the picture draws anything.
+     */
+    public OwedRows owedPanelRows() {
+        if (!imageDrawable.fillOwedByRows()) {
+            return OwedRows.NONE;
+        }
+        return (from, to) -> imageDrawable.fillOwedRows(MARGIN + PANEL - to, MARGIN + PANEL - from);
     }
 
     /** The panel, in panel coordinates: origin bottom-left, y up. */
@@ -134,7 +153,7 @@ public final class PageCanvas {
     /** A copy of the page as it is now: the pixels copied as one array (a window's turning frame makes one each). */
     public BufferedImage snapshot() {
         BufferedImage copy = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
-        int[] from = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        int[] from = ((DataBufferInt) image().getRaster().getDataBuffer()).getData();
         int[] to = ((DataBufferInt) copy.getRaster().getDataBuffer()).getData();
         System.arraycopy(from, 0, to, 0, from.length);
         return copy;

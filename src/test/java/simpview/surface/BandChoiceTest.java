@@ -75,16 +75,17 @@ class BandChoiceTest {
                 "the faces are drawn");
         long[] tasks = new long[1];
         // 4,200 faces: batches of 16, 32, ... 2,048 faces (4,080 in all, BatchDrawing), each handed off and
-        // drawn whole, then the other 120; the same pixels.
-        assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
-        assertEquals(9, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task, no bands");
+        // drawn whole, then the other 120; the same pixels. Before the first, an empty batch in bands: each
+        // band's drawer makes its rows ready (what the canvas's clear owes) while the first batch is read.
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();
+            assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
+            assertEquals(bands + 9, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task");
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
-            assertEquals(9 * bands, tasks[0], "small faces, two threads given: every batch in bands");
+            assertEquals(bands + 9 * bands, tasks[0], "small faces, two threads given: every batch in bands");
             // A depth-cued batch is handed off by its count alone, however many pixels it covers.
             assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.upTo(2), tasks));
-            assertEquals(bands, tasks[0], "12 large depth-cued fills, no count given: one batch, in bands");
+            assertEquals(bands + bands, tasks[0], "12 large depth-cued fills, no count given: one batch, in bands");
         }
     }
 
@@ -108,8 +109,9 @@ class BandChoiceTest {
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();
             assertArrayEquals(oneThread, pixels(fills, DrawingThreads.upTo(2), tasks));
-            // Lit by the ambient term alone: no pixel waits to be shaded, so no last batch is handed off for it.
-            assertEquals(6 * bands, tasks[0], "6 lit fills of 211,250 pixels: each its own batch, in bands");
+            // Lit by the ambient term alone: no pixel waits to be shaded, so no last batch is handed off for it;
+            // the first, empty, makes the bands' rows ready.
+            assertEquals(bands + 6 * bands, tasks[0], "6 lit fills of 211,250 pixels: each its own batch, in bands");
         }
     }
 

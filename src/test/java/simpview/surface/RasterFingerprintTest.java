@@ -130,7 +130,7 @@ class RasterFingerprintTest {
                 record = null;
             } else {
                 painter = new Painter(target, lines, filled, filled);
-                record = new CuedPrimitives(threads, null, target, null);
+                record = new CuedPrimitives(threads, null, () -> OwedRows.NONE, target, null);
                 painter.recordTo(record);
             }
         }

@@ -11,7 +11,9 @@ import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
+import java.util.function.Supplier;
 import simpview.surface.DrawingThreads;
+import simpview.surface.OwedRows;
 import simpview.surface.Provenance;
 import simpview.surface.ZBuffer;
 
@@ -102,11 +104,15 @@ final class DepthCuedRules implements RuleSet {
      * owners into {@code provenance} (or null). {@code zbuffer} is the one
      * the panel tests against, whose reset owed by the canvas's clear the
      * bands' drawers then make row by row, or null (the panel's own, made by
-     * its first test). Call before the scene is read.
+     * its first test); the panel's rows the canvas's clear owes, asked of
+     * {@code panelRows} at the first primitive drawn in bands, are made the
+     * same way.
+     * Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance) {
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
+            Provenance provenance) {
         if (!threads.isOne()) {
-            record = new CuedPrimitives(threads, zbuffer, panel, provenance);
+            record = new CuedPrimitives(threads, zbuffer, panelRows, panel, provenance);
             painter.recordTo(record);
         }
     }

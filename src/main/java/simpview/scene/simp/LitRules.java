@@ -15,7 +15,9 @@ import simpview.stage.LitGeometry;
 import simpview.stage.LitPrimitives;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
+import java.util.function.Supplier;
 import simpview.surface.DrawingThreads;
+import simpview.surface.OwedRows;
 import simpview.surface.Provenance;
 import simpview.surface.WaitingPixels;
 import simpview.surface.ZBuffer;
@@ -219,15 +221,16 @@ final class LitRules implements RuleSet {
      * {@code threads}, from now on records the primitives to be drawn band by
      * band, depth-tested against {@code zbuffer} onto {@code panel} (the
      * fragment stage's), owners into {@code provenance} (or null); then each
-     * band's drawer resets its own rows of the z-buffer, on its own thread.
-     * Phong pixels wait in {@code waiting} (the panel's, which the drawers
+     * band's drawer resets its own rows of the z-buffer, on its own thread,
+     * and makes those the canvas's clear owes of the panel (asked of
+     * {@code panelRows} only then). Phong pixels wait in {@code waiting} (the panel's, which the drawers
      * clear first) to be shaded once each at the scene's end
      * ({@link FragmentStage#shadeLater}). The fragment stages come from
      * {@code stages} (this one's among them), given back at the scene's end.
      * Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Drawable panel, Provenance provenance, WaitingPixels waiting,
-            FragmentStages stages) {
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
+            Provenance provenance, WaitingPixels waiting, FragmentStages stages) {
         this.stages = stages;
         if (threads.isOne()) {
             zbuffer.reset(Double.NEGATIVE_INFINITY);
@@ -235,7 +238,8 @@ final class LitRules implements RuleSet {
             fragments.clearWaits();
             return;
         }
-        record = new LitPrimitives(threads, zbuffer, panel, provenance, waiting, stages); // resets the z-buffer band by band
+        // Resets the z-buffer band by band, and makes the panel's owed rows so.
+        record = new LitPrimitives(threads, zbuffer, panelRows.get(), panel, provenance, waiting, stages);
         geometry.recordTo(record);
     }
 

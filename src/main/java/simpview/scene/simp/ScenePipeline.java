@@ -8,6 +8,7 @@ import simpview.shading.FragmentStages;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
+import simpview.surface.OwedRows;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.Rgb;
@@ -199,7 +200,7 @@ public final class ScenePipeline {
         if (watch != null) {
             watch.began(files::chain, null); // and drawn on this thread alone: the watch sees each write as it is made
         } else {
-            cued.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance());
+            cued.drawWith(canvas.drawingThreads(), canvas.zbuffer(), canvas::owedPanelRows, panel, canvas.provenance());
         }
         SimpClient.OnLit onLit = switch (options.rules()) {
             case BY_COMMANDS, LIT -> SimpClient.OnLit.TURN_LIT;
@@ -230,8 +231,8 @@ public final class ScenePipeline {
             watch.began(files::chain, lit.state());
         } else {
             // Resets the z-buffer: at once on one thread, band by band by the bands' drawers with several.
-            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), panel, canvas.provenance(), canvas.waitingPixels(),
-                    stages);
+            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), canvas::owedPanelRows, panel, canvas.provenance(),
+                    canvas.waitingPixels(), stages);
         }
         return lit;
     }
@@ -256,7 +257,7 @@ public final class ScenePipeline {
         FileStack files = new FileStack();
         try {
             DepthCuedRules cued = new DepthCuedRules(panel, files, monitor.trace(), monitor.viewTurn());
-            cued.drawWith(threads, null, panel, provenance);
+            cued.drawWith(threads, null, () -> OwedRows.NONE, panel, provenance);
             run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
             monitor.stampsAsRead(files.stampsAsRead());

@@ -5,13 +5,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.DataBufferInt;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import simpview.scene.SceneException;
 import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.DrawingThreads;
@@ -133,6 +139,58 @@ class BandedDrawingTest {
                     }
                 }
             }
+        }
+    }
+
+    /**
+     * A canvas cleared after a full picture, then given a scene that draws
+     * nothing, or one that stops at an error after a primitive: the rows the
+     * clear owes are made by the band drawers, or at the picture's end for
+     * those no drawer reached, so the page is what a fresh canvas shows, on
+     * one thread and on two; nothing of the picture before is left.
+     */
+    @Test
+    void aCanvasClearedBeforeAnEmptyOrBrokenSceneShowsWhatAFreshOneDoes(@TempDir Path dir) throws Exception {
+        String triangle = "{\n scale 100 100 1\n polygon (0, 0, -50) (1, 0, -50) (0, 1, -50)\n}\n";
+        String lit = "ambient 0.5 0.5 0.5\nsurface 0.8 0.4 0.2 0 1\n";
+        Map<String, String> scenes = new LinkedHashMap<>();
+        scenes.put("empty.simp", "# nothing to draw\n");
+        scenes.put("broken.simp", "filled\n" + triangle + "polygon (1, 2\n");
+        scenes.put("lit-empty.simp", lit);
+        scenes.put("lit-broken.simp", lit + "filled\n" + triangle + "polygon (oops\n");
+        Path before = GoldenCase.ownSimpDir().resolve("page5.simp");
+        for (int threads : new int[] {1, 2}) {
+            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                PageCanvas canvas = new PageCanvas();
+                canvas.drawWith(drawing);
+                for (Map.Entry<String, String> scene : scenes.entrySet()) {
+                    Path file = Files.writeString(dir.resolve(scene.getKey()), scene.getValue());
+                    canvas.clear();
+                    ScenePipeline.draw(before, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()),
+                            SceneMonitor.NONE);
+                    canvas.clear();
+                    boolean failed = drawToItsEnd(file, canvas);
+                    PageCanvas fresh = new PageCanvas();
+                    int[] cleared = pixels(fresh);
+                    assertEquals(failed, drawToItsEnd(file, fresh), "the same end on a fresh canvas");
+                    String how = scene.getKey() + " on " + threads + " thread(s)";
+                    assertEquals(scene.getKey().contains("broken"), failed, how + " stops at its error");
+                    assertArrayEquals(pixels(fresh), pixels(canvas), "pixels of " + how);
+                    assertArrayEquals(fresh.zbuffer().copyDepths(), canvas.zbuffer().copyDepths(), "depths of " + how);
+                    assertEquals(!scene.getKey().contains("empty"), !Arrays.equals(cleared, pixels(fresh)),
+                            how + " draws its triangle, or nothing");
+                }
+            }
+        }
+    }
+
+    /** Draws the scene on the canvas; true when it stopped at an error. */
+    private static boolean drawToItsEnd(Path file, PageCanvas canvas) {
+        try {
+            ScenePipeline.draw(file, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()), SceneMonitor.NONE);
+            return false;
+        } catch (SceneException e) {
+            return true;
         }
     }
 
