@@ -1,11 +1,6 @@
 package simpview.surface;
 
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
-import java.util.concurrent.CancellationException;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
@@ -49,6 +44,9 @@ public final class BandQueue {
         void whole(int slot);
     }
 
+    /** How long a thread waiting for a change spins before it parks ({@link #awaitChange}). */
+    private static final long SPIN_NANOS = 50_000;
+
     /** What {@link #claim} returns when nothing can be drawn now. */
     private static final int NOTHING = -1;
 
@@ -71,14 +69,18 @@ public final class BandQueue {
     private boolean wholeClaimed;
     /** Batches handed in so far. */
     private int published;
-    /** Threads waiting for a change. */
+    /** Threads waiting for a change, parked. */
     private int waiting;
+    /**
+     * Changes so far (a batch handed in, a band or batch drawn, the picture
+     * done): written with the lock held, read by a thread spinning without
+     * it ({@link #awaitChange}).
+     */
+    private volatile int changes;
     /** True when no picture is being drawn: the workers return. */
     private boolean stopping = true;
     /** What a drawer threw first, or null. */
     private Throwable failure;
-    /** The workers started for the picture at hand. */
-    private final List<Future<?>> running = new ArrayList<>();
     /** When the picture's first batch was handed in. */
     private long since;
 
@@ -137,12 +139,10 @@ public final class BandQueue {
                 since = System.nanoTime();
                 for (int w = 1; w < threads.threads(); w++) {
                     int home = w;
-                    running.add(threads.submit(() -> work(home)));
+                    threads.start(() -> work(home));
                 }
             }
-            if (waiting > 0) {
-                changed.signalAll();
-            }
+            signalChange();
         } finally {
             lock.unlock();
         }
@@ -154,13 +154,14 @@ public final class BandQueue {
 
     /**
      * Returns when every batch handed in is drawn (this thread drawing
-     * bands meanwhile) and the workers have returned; throws the first
-     * failure of a drawer once every thread has stopped drawing. The queue
-     * can be used again after a failure; the failed picture's undrawn rest
-     * is left undrawn.
+     * bands meanwhile), so that no thread draws any more; throws the first
+     * failure of a drawer once every thread has stopped drawing. The workers
+     * are let go and return on their own: waiting for them to be seen
+     * returning took two wake-ups one after the other, 0.1-0.15 ms of A2's
+     * page 5 (docs/performance.md, session 11). The queue can be used again
+     * after a failure; the failed picture's undrawn rest is left undrawn.
      */
     public void finish() {
-        List<Future<?>> workers;
         Throwable failed;
         long start;
         lock.lock();
@@ -172,9 +173,7 @@ public final class BandQueue {
                 return;
             }
             stopping = true;
-            changed.signalAll();
-            workers = new ArrayList<>(running);
-            running.clear();
+            signalChange();
             failed = failure;
             failure = null;
             Arrays.fill(drawn, published);
@@ -182,7 +181,6 @@ public final class BandQueue {
         } finally {
             lock.unlock();
         }
-        failed = awaitAll(workers, failed);
         threads.counted(0, System.nanoTime() - start);
         if (failed instanceof RuntimeException r) {
             throw r;
@@ -193,30 +191,6 @@ public final class BandQueue {
         if (failed != null) {
             throw new IllegalStateException(failed);
         }
-    }
-
-    /** Every worker is waited for, even when interrupted: none may still be drawing when this returns. */
-    private static Throwable awaitAll(List<Future<?>> workers, Throwable failed) {
-        boolean interrupted = false;
-        for (Future<?> f : workers) {
-            while (true) {
-                try {
-                    f.get();
-                    break;
-                } catch (ExecutionException e) {
-                    failed = failed == null ? e.getCause() : failed;
-                    break;
-                } catch (CancellationException e) {
-                    break; // closed before it ran: the caller drew its share
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
-        }
-        return failed;
     }
 
     /** A worker's loop: draws what it can, its own bands first, and waits for more until the picture is drawn. */
@@ -253,12 +227,40 @@ public final class BandQueue {
     }
 
     /**
-     * With the lock held: waits for a change, counted among the waiters so
-     * that changes signal only when someone waits. An interruptible wait
-     * returns false when interrupted; the other waits through interrupts and
-     * leaves the thread interrupted.
+     * With the lock held: tells whoever waits that something changed, the
+     * spinning ({@link #changes}) and the parked.
+     */
+    private void signalChange() {
+        changes++;
+        if (waiting > 0) {
+            changed.signalAll();
+        }
+    }
+
+    /**
+     * With the lock held: waits for a change. First it spins a while
+     * without the lock ({@link #SPIN_NANOS}): a parked thread took 30-50
+     * us to wake on this machine's cores, as long as drawing a band of
+     * a small batch, and the reading thread hands in the next batch, or a
+     * band drawer ends its band, within that as often as not. Then it
+     * parks, counted among the waiters so that changes signal only when
+     * someone waits. An interruptible wait returns false when interrupted;
+     * the other waits through interrupts and leaves the thread interrupted.
      */
     private boolean awaitChange(boolean interruptible) {
+        int seen = changes;
+        lock.unlock();
+        try {
+            long until = System.nanoTime() + SPIN_NANOS;
+            while (changes == seen && System.nanoTime() - until < 0) {
+                Thread.onSpinWait();
+            }
+        } finally {
+            lock.lock();
+        }
+        if (changes != seen) {
+            return true;
+        }
         waiting++;
         try {
             if (interruptible) {
@@ -345,9 +347,7 @@ public final class BandQueue {
         if (failed != null && failure == null) {
             failure = failed;
         }
-        if (waiting > 0) {
-            changed.signalAll();
-        }
+        signalChange();
     }
 
     private int lowest() {

@@ -4,9 +4,15 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CyclicBarrier;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 
 /** The threads that draw bands: how many, and bands that cover every row (the drawing itself: BandQueueTest). */
@@ -22,6 +28,37 @@ class DrawingThreadsTest {
             assertFalse(two.isOne());
             assertTrue(two.choosesPerPicture());
         }
+    }
+
+    /**
+     * The workers are threads of their own, named, each running a task at
+     * a time; closing stops them (each found parked or spinning returns) and
+     * refuses new tasks.
+     */
+    @Test
+    void workersAreNamedThreadsThatCloseStops() throws Exception {
+        DrawingThreads threads = DrawingThreads.of(3);
+        Set<Thread> ran = ConcurrentHashMap.newKeySet();
+        CyclicBarrier together = new CyclicBarrier(3);
+        for (int k = 0; k < 2; k++) {
+            threads.start(() -> {
+                ran.add(Thread.currentThread());
+                try {
+                    together.await(10, TimeUnit.SECONDS);
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+        }
+        together.await(10, TimeUnit.SECONDS); // both tasks running at once: on two workers
+        assertEquals(Set.of("simpview-band-1", "simpview-band-2"),
+                ran.stream().map(Thread::getName).collect(Collectors.toSet()));
+        threads.close();
+        for (Thread worker : ran) {
+            worker.join(10_000);
+            assertFalse(worker.isAlive(), worker.getName() + " stopped");
+        }
+        assertThrows(IllegalStateException.class, () -> threads.start(() -> { }));
     }
 
     @Test
