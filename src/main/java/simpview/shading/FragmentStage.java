@@ -442,6 +442,7 @@ public final class FragmentStage implements FragmentSink {
         double nz0 = v0[NZ];
         double dnz = dv[NZ];
         PointShader s = shader;
+        boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
         int row = y * width;
         boolean wrote = false;
         boolean mayWait = waits(y);
@@ -456,9 +457,13 @@ public final class FragmentStage implements FragmentSink {
             if (mayWait) {
                 waiting.end(x, y);
             }
-            s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
-                    (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
-                    (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            if (point) {
+                s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                        (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
+                        (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            } else {
+                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            }
             panel.setPixel(x, y, z, fogged(z, lit));
         }
         return wrote;
