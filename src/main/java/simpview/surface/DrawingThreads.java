@@ -95,7 +95,14 @@ public final class DrawingThreads implements AutoCloseable {
             } catch (InterruptedException e) {
                 return; // closed
             }
-            task.run();
+            try {
+                task.run();
+            } catch (RuntimeException | Error e) {
+                // Not a drawer's failure (the queue keeps those for the drawing thread): a fault of the queue
+                // itself. Told to the handler; the worker stays for the next picture.
+                Thread self = Thread.currentThread();
+                self.getUncaughtExceptionHandler().uncaughtException(self, e);
+            }
         }
     }
 
@@ -182,9 +189,10 @@ public final class DrawingThreads implements AutoCloseable {
 
     /**
      * Runs {@code work} on a worker (there are workers: more than one
-     * thread), once one is free; not once closed. What it throws reaches
-     * the worker's uncaught-exception handler: a drawer's failure does not,
-     * being the queue's to throw on the drawing thread.
+     * thread), once one is free; not once closed. What it throws is told to
+     * the worker's uncaught-exception handler, and the worker goes on: a
+     * drawer's failure never is, being the queue's to throw on the drawing
+     * thread.
      */
     void start(Runnable work) {
         if (closed) {

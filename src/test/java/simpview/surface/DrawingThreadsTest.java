@@ -10,8 +10,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.CyclicBarrier;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 
@@ -59,6 +61,23 @@ class DrawingThreadsTest {
             assertFalse(worker.isAlive(), worker.getName() + " stopped");
         }
         assertThrows(IllegalStateException.class, () -> threads.start(() -> { }));
+    }
+
+    /** A task that throws (a fault of the queue, not a drawer's) is told to the handler, and the worker stays. */
+    @Test
+    void aWorkerOutlivesATaskThatThrows() throws Exception {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            AtomicReference<Throwable> told = new AtomicReference<>();
+            IllegalStateException fault = new IllegalStateException("a fault of the queue");
+            threads.start(() -> {
+                Thread.currentThread().setUncaughtExceptionHandler((t, e) -> told.set(e));
+                throw fault;
+            });
+            CountDownLatch ran = new CountDownLatch(1);
+            threads.start(ran::countDown);
+            assertTrue(ran.await(10, TimeUnit.SECONDS), "the next task ran on the same worker");
+            assertSame(fault, told.get());
+        }
     }
 
     @Test
