@@ -42,6 +42,7 @@ public final class MeshPage implements Page {
                 ? new FilledPolygonRenderer()
                 : new WireframePolygonRenderer(new DdaLineRenderer());
         Drawable panel = canvas.panel();
+        panel.settle(); // what the clear owes, made before the first write rather than by it
         new PerturbedMesh(context.seed()).forEachTriangle((a, b, c) -> renderer.drawPolygon(a, b, c, panel));
     }
 }

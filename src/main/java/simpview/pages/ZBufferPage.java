@@ -37,6 +37,7 @@ public final class ZBufferPage implements Page {
     @Override
     public void draw(PageCanvas canvas, PageContext context) {
         Drawable target = canvas.depthTested();
+        target.settle(); // what the clear owes, made before the z-test loop rather than by its first write
         FilledPolygonRenderer renderer = new FilledPolygonRenderer();
         Provenance provenance = canvas.provenance();
         Vertex[][] triangles = triangles(context.seed());

@@ -53,6 +53,7 @@ public final class CuedPrimitives {
     private final RowBands bands;
     private final ZBuffer zbuffer;
     private final Supplier<OwedRows> panelRows;
+    private final Drawable panel;
     /**
      * Each band's rows as the canvas's clear owes them (the z-buffer reset,
      * the panel filled): by its drawer, before it first draws. Null until the
@@ -81,6 +82,7 @@ public final class CuedPrimitives {
         this.bands = batches.bands();
         this.zbuffer = zbuffer;
         this.panelRows = panelRows;
+        this.panel = panel;
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
@@ -90,13 +92,15 @@ public final class CuedPrimitives {
     }
 
     /**
-     * Takes what the canvas's clear owes, to be made band by band, and hands
-     * off an empty batch: the drawers start on it while the first batch is
-     * read.
+     * Takes what the canvas's clear owes, to be made band by band, makes on
+     * this thread what the panel owes otherwise (a chain of a test's own onto
+     * a canvas), and hands off an empty batch: the drawers start on it while
+     * the first batch is read.
      */
     private void start() {
         boolean resets = zbuffer != null && zbuffer.resetOwedByRows();
         OwedRows rows = panelRows.get();
+        panel.settle();
         preparation = new BandPreparation(bands.count(), b -> {
             if (resets) {
                 zbuffer.resetRows(bands.start(b), bands.end(b));

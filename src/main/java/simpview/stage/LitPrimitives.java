@@ -107,6 +107,7 @@ public final class LitPrimitives {
             panelRows.make(bands.start(b), bands.end(b));
             drawers[b].fragments.clearWaits();
         });
+        panel.settle(); // what the panel owes besides the rows taken (nothing, drawn on a canvas)
         batches.prepareBands();
     }
 

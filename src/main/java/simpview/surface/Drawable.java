@@ -40,6 +40,15 @@ public interface Drawable {
     /** The colour now at (x, y), 0xAARRGGBB; 0 outside the surface. */
     int getPixel(int x, int y);
 
+    /**
+     * Makes now, on this thread, what the surface owes from a clear (an
+     * image's owed rows, {@link ImageDrawable#oweRows}): called before
+     * several threads write at once. Reads and writes make it too, on one
+     * thread. The default owes nothing; a decorator asks its delegate.
+     */
+    default void settle() {
+    }
+
     /** Writes every pixel of the span; the default goes pixel by pixel. */
     default void fillSpan(Span span) {
         for (int x = span.x0; x < span.x1; x++) {

@@ -43,6 +43,11 @@ public abstract class DrawableDecorator implements Drawable {
     }
 
     @Override
+    public void settle() {
+        delegate.settle();
+    }
+
+    @Override
     public void fillSpan(Span span) {
         delegate.fillSpan(span);
     }

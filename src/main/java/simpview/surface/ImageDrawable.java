@@ -8,9 +8,10 @@ import java.awt.image.DataBufferInt;
  * Image coordinates: origin top-left, y down. Writes outside are dropped.
  *
  * <p>Rows may be owed a fill ({@link #oweRows}): a page canvas's clear,
- * made when the image is next read or written (each way in settles it
- * first), or handed to a picture's band drawers to make row by row on
- * their own threads ({@link #fillOwedByRows}).
+ * made when the image is next read or written on one thread (each way in
+ * settles it first), or by {@link #settle} before several threads write at
+ * once, or handed to a picture's band drawers to make row by row on their
+ * own threads ({@link #fillOwedByRows}).
  */
 public final class ImageDrawable implements Drawable {
 
@@ -36,11 +37,13 @@ public final class ImageDrawable implements Drawable {
     private int owedTo;
     /**
      * True while the owed rows are to be made by the next read or write
-     * ({@link #settle}), not by rows: set on the thread that clears, before
-     * any drawing thread starts; read by every write, of several threads at
-     * once too, and cleared by the first, which fills.
+     * ({@link #settle}), not by rows: set and read on the thread that clears
+     * and draws, before other threads write ({@link #settle()}, or
+     * {@link #fillOwedByRows}). A plain field: read by every write, a
+     * volatile one made A2's page 3 up to 1.4x slower, drawn through a chain
+     * that inlines this class's fillSpan in its z-test loop (session 11).
      */
-    private volatile boolean owed;
+    private boolean owed;
 
     public ImageDrawable(BufferedImage image) {
         int type = image.getType();
@@ -104,21 +107,36 @@ public final class ImageDrawable implements Drawable {
     }
 
     /**
-     * The owed rows made, if they are owed to the next read or write. Safe
-     * from several threads at once: the first fills, the others wait for it.
+     * Makes the owed rows now, if they are owed to the next read or write:
+     * what the thread that clears calls before several threads write at
+     * once (which they may do only then), or before it draws (a page of its
+     * own drawing), as every read and write does first ({@link #made}).
      */
-    private void settle() {
+    @Override
+    public void settle() {
         if (owed) {
             fillOwed();
         }
     }
 
-    private synchronized void fillOwed() {
+    /**
+     * The owed rows made, if they are owed: what each read and write does
+     * first. Its own method, apart from {@link #settle}: its branch is never
+     * taken when the rows are settled before drawing or handed to bands, as
+     * they are on every page of the course, so the JIT compiles the fill out
+     * of the writes' loops. Sharing settle's branch, taken once a picture,
+     * made A2's page 3 1.06-1.11x slower (session 11).
+     */
+    private void made() {
         if (owed) {
-            fillOwedRows(owedFrom, owedTo);
-            owedTo = owedFrom;
-            owed = false;
+            fillOwed();
         }
+    }
+
+    private void fillOwed() {
+        fillOwedRows(owedFrom, owedTo);
+        owedTo = owedFrom;
+        owed = false;
     }
 
     @Override
@@ -133,7 +151,7 @@ public final class ImageDrawable implements Drawable {
 
     @Override
     public void setPixel(int x, int y, double z, int argb) {
-        settle();
+        made();
         if (x >= 0 && x < width && y >= 0 && y < height) {
             pixels[y * width + x] = argb;
         }
@@ -142,7 +160,7 @@ public final class ImageDrawable implements Drawable {
     /** The part of the run inside the image, copied into the raster in one go. */
     @Override
     public void setRun(int x, int y, int count, double[] depths, int[] colours, int at) {
-        settle();
+        made();
         if (y < 0 || y >= height) {
             return;
         }
@@ -155,7 +173,7 @@ public final class ImageDrawable implements Drawable {
 
     @Override
     public int getPixel(int x, int y) {
-        settle();
+        made();
         if (x >= 0 && x < width && y >= 0 && y < height) {
             return pixels[y * width + x] | 0xFF000000;
         }
@@ -173,7 +191,7 @@ public final class ImageDrawable implements Drawable {
      */
     @Override
     public void fillSpan(Span s) {
-        settle();
+        made();
         if (s.y < 0 || s.y >= height) {
             return;
         }

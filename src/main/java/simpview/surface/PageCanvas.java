@@ -39,18 +39,26 @@ public final class PageCanvas {
     }
 
     /**
-     * White margins, black panel, z-buffer at the far plane. The rows above
-     * and below the panel are filled now; the rows through it are owed
-     * ({@link ImageDrawable#oweRows}), made when the image is first read or
-     * written, or by a picture's band drawers, each its own rows
-     * ({@link #owedPanelRows}). The z-buffer is filled when first read or
+     * White margins, black panel, z-buffer at the far plane. A canvas drawn
+     * on one thread fills every pixel now. One drawn by several fills the
+     * rows above and below the panel now and owes the rows through it
+     * ({@link ImageDrawable#oweRows}): a picture's band drawers make them,
+     * each its own rows ({@link #owedPanelRows}), or the first read or write
+     * of the image, on one thread ({@link Drawable#settle} before several
+     * write at once otherwise). The z-buffer is filled when first read or
      * tested ({@link ZBuffer#resetWhenNeeded}), which a lit scene, resetting
      * it to -infinity itself, never does.
      */
     public void clear() {
         imageDrawable.fillRect(0, 0, SIZE, MARGIN, Colors.WHITE);
         imageDrawable.fillRect(0, MARGIN + PANEL, SIZE, SIZE, Colors.WHITE);
-        imageDrawable.oweRows(MARGIN, MARGIN + PANEL, clearedRow);
+        if (threads.isOne()) {
+            imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
+            imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
+            imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
+        } else {
+            imageDrawable.oweRows(MARGIN, MARGIN + PANEL, clearedRow);
+        }
         zbuffer.resetWhenNeeded(Camera.PARALLEL.yon());
         if (provenance != null) {
             provenance.reset();

@@ -135,17 +135,22 @@ class OwedRowsTest {
     }
 
     /**
-     * Threads writing at once through the image right after a clear (a
-     * depth-cued scene drawn in bands onto a chain of its own): the first
-     * makes the owed rows, the others wait for it, so no write is lost.
+     * Threads writing at once through the image after a clear (a chain of
+     * a test's own drawn in bands): settled first, on the thread that
+     * cleared, so no write is lost to the fill.
      */
     @Test
-    void threadsWritingAtOnceLoseNoWriteToTheOwedRows() throws Exception {
+    void rowsSettledBeforeThreadsWriteAtOnceLoseNoWrite() throws Exception {
         int size = 200;
-        ImageDrawable big = new ImageDrawable(new BufferedImage(size, size, BufferedImage.TYPE_INT_RGB));
+        BufferedImage picture = new BufferedImage(size, size, BufferedImage.TYPE_INT_RGB);
+        int[] every = ((DataBufferInt) picture.getRaster().getDataBuffer()).getData();
+        ImageDrawable big = new ImageDrawable(picture);
         int[] black = new int[size];
         for (int round = 0; round < 20; round++) {
+            Arrays.fill(every, RED);
             big.oweRows(0, size, black);
+            big.settle();
+            assertEquals(0, every[size * size - 1], "made on this thread");
             int threads = 4;
             List<Thread> running = new ArrayList<>();
             for (int t = 0; t < threads; t++) {
@@ -163,33 +168,45 @@ class OwedRowsTest {
             for (Thread writer : running) {
                 writer.join();
             }
-            int[] every = ((DataBufferInt) big.image().getRaster().getDataBuffer()).getData();
             int[] white = new int[every.length];
             Arrays.fill(white, 0xFFFFFF);
             assertArrayEquals(white, every, "round " + round);
         }
     }
 
+    /** A canvas drawn on one thread clears every pixel at once: nothing is owed, nothing handed to bands. */
+    @Test
+    void aCanvasOfOneThreadClearsAtOnce() {
+        PageCanvas canvas = new PageCanvas();
+        canvas.panel().setPixel(3, 3, 0, RED);
+        canvas.clear();
+        assertSame(OwedRows.NONE, canvas.owedPanelRows());
+        assertEquals(0xFF000000, canvas.image().getRGB(PageCanvas.MARGIN + 3, PageCanvas.MARGIN + PageCanvas.PANEL - 4));
+    }
+
     @Test
     void aCanvasHandsItsPanelRowsToTheBandsYUp() {
-        PageCanvas canvas = new PageCanvas();
-        Drawable panel = canvas.panel();
-        for (int y = 0; y < PageCanvas.PANEL; y++) {
-            panel.setPixel(3, y, 0, RED);
+        try (DrawingThreads two = DrawingThreads.of(2)) {
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(two);
+            Drawable panel = canvas.panel();
+            for (int y = 0; y < PageCanvas.PANEL; y++) {
+                panel.setPixel(3, y, 0, RED);
+            }
+            canvas.clear();
+            OwedRows rows = canvas.owedPanelRows();
+            assertSame(OwedRows.NONE, canvas.owedPanelRows(), "handed over once");
+            rows.make(0, 10);
+            BufferedImage page = canvas.image();
+            int bottom = PageCanvas.MARGIN + PageCanvas.PANEL - 1;
+            int x = PageCanvas.MARGIN + 3;
+            assertEquals(0xFF000000, page.getRGB(x, bottom), "panel row 0, made black");
+            assertEquals(0xFF000000, page.getRGB(x, bottom - 9), "panel row 9");
+            assertEquals(0xFFFFFFFF, page.getRGB(0, bottom - 9), "its margin, white");
+            assertEquals(0xFFFF0000, page.getRGB(x, bottom - 10), "panel row 10 is not the band's");
+            assertEquals(0xFFFFFFFF, page.getRGB(x, 0), "the top margin, filled by the clear");
+            rows.make(10, PageCanvas.PANEL);
+            assertEquals(0xFF000000, page.getRGB(x, PageCanvas.MARGIN), "the panel's top row");
         }
-        canvas.clear();
-        OwedRows rows = canvas.owedPanelRows();
-        assertSame(OwedRows.NONE, canvas.owedPanelRows(), "handed over once");
-        rows.make(0, 10);
-        BufferedImage page = canvas.image();
-        int bottom = PageCanvas.MARGIN + PageCanvas.PANEL - 1;
-        int x = PageCanvas.MARGIN + 3;
-        assertEquals(0xFF000000, page.getRGB(x, bottom), "panel row 0, made black");
-        assertEquals(0xFF000000, page.getRGB(x, bottom - 9), "panel row 9");
-        assertEquals(0xFFFFFFFF, page.getRGB(0, bottom - 9), "its margin, white");
-        assertEquals(0xFFFF0000, page.getRGB(x, bottom - 10), "panel row 10 is not the band's");
-        assertEquals(0xFFFFFFFF, page.getRGB(x, 0), "the top margin, filled by the clear");
-        rows.make(10, PageCanvas.PANEL);
-        assertEquals(0xFF000000, page.getRGB(x, PageCanvas.MARGIN), "the panel's top row");
     }
 }

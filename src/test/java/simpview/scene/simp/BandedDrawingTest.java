@@ -2,6 +2,7 @@ package simpview.scene.simp;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.DataBufferInt;
@@ -12,6 +13,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -22,7 +24,11 @@ import simpview.stage.PrimitiveLog;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.surface.Drawable;
+import simpview.surface.DrawableDecorator;
 import simpview.surface.Provenance;
+import simpview.surface.Rgb;
+import simpview.surface.Span;
 import simpview.testing.CourseFiles;
 import simpview.testing.GoldenCase;
 
@@ -180,6 +186,76 @@ class BandedDrawingTest {
                     assertEquals(!scene.getKey().contains("empty"), !Arrays.equals(cleared, pixels(fresh)),
                             how + " draws its triangle, or nothing");
                 }
+            }
+        }
+    }
+
+    /**
+     * A canvas drawn by two threads, cleared after a full picture, then
+     * given a scene by a chain of the caller's own, in bands
+     * (ScenePipeline.drawDepthCued): the rows its clear owes are made on
+     * the reading thread before the bands start, so the page is what a
+     * canvas of one thread shows.
+     */
+    @Test
+    void aChainOfTheCallersOwnOntoACanvasOfTwoThreadsDrawsWhatOneThreadDraws() throws Exception {
+        Path scene = GoldenCase.ownSimpDir().resolve("page4.simp");
+        PageCanvas one = new PageCanvas();
+        ScenePipeline.drawDepthCued(scene, one.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE);
+        try (DrawingThreads two = DrawingThreads.of(2)) {
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(two);
+            for (int round = 1; round <= 2; round++) {
+                canvas.clear();
+                ScenePipeline.draw(GoldenCase.ownSimpDir().resolve("page5.simp"), canvas,
+                        ScenePipeline.Options.byCommands(new SceneLibrary()), SceneMonitor.NONE);
+                canvas.clear();
+                ScenePipeline.drawDepthCued(scene, canvas.depthCued(Rgb.WHITE, Rgb.BLACK), SceneMonitor.NONE, two,
+                        null);
+                assertArrayEquals(pixels(one), pixels(canvas), "pixels, round " + round);
+                assertArrayEquals(one.zbuffer().copyDepths(), canvas.zbuffer().copyDepths(), "depths, round " + round);
+            }
+            // How: the chain is settled on the reading thread before any band writes.
+            canvas.clear();
+            SettleWatch watched = new SettleWatch(canvas.depthCued(Rgb.WHITE, Rgb.BLACK));
+            ScenePipeline.drawDepthCued(scene, watched, SceneMonitor.NONE, two, null);
+            assertSame(Thread.currentThread(), watched.settledOn, "settled on the reading thread");
+            assertEquals(0, watched.writesBefore.get(), "before any band wrote");
+        }
+    }
+
+    /** A chain's head that notes where it was first settled, and how many writes came before. */
+    private static final class SettleWatch extends DrawableDecorator {
+        volatile Thread settledOn;
+        final AtomicInteger writesBefore = new AtomicInteger();
+
+        SettleWatch(Drawable delegate) {
+            super(delegate);
+        }
+
+        @Override
+        public void settle() {
+            if (settledOn == null) {
+                settledOn = Thread.currentThread();
+            }
+            super.settle();
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            noteWrite();
+            super.setPixel(x, y, z, argb);
+        }
+
+        @Override
+        public void fillSpan(Span span) {
+            noteWrite();
+            super.fillSpan(span);
+        }
+
+        private void noteWrite() {
+            if (settledOn == null) {
+                writesBefore.incrementAndGet();
             }
         }
     }
