@@ -19,4 +19,14 @@ public interface FragmentSink {
 
     /** One pixel with its q and channels. */
     void pixel(int x, int y, double q, double[] v);
+
+    /**
+     * How many of a fragment's first channels, of the {@code channels} it
+     * carries, this sink reads now: a rasterizer need not interpolate the
+     * rest (their entries in a span's arrays are then left as they were).
+     * The default reads them all.
+     */
+    default int channelsRead(int channels) {
+        return channels;
+    }
 }

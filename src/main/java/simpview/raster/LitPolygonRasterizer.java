@@ -50,11 +50,16 @@ public final class LitPolygonRasterizer {
         fill(v, 0, n, channels, width, height, sink);
     }
 
-    /** The same for the polygon whose first vertex starts at v[at]. */
+    /**
+     * The same for the polygon whose first vertex starts at v[at]; only the
+     * channels the sink reads ({@link FragmentSink#channelsRead}) are
+     * interpolated.
+     */
     public void fill(double[] v, int at, int n, int channels, int width, int height, FragmentSink sink) {
         int stride = FragmentLayout.stride(channels);
+        int read = Math.min(channels, sink.channelsRead(channels));
         for (int k = 1; k + 1 < n; k++) {
-            triangle(v, at, at + k * stride, at + (k + 1) * stride, channels, width, height, sink);
+            triangle(v, at, at + k * stride, at + (k + 1) * stride, read, width, height, sink);
         }
     }
 

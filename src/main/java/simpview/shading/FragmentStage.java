@@ -725,6 +725,16 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
+    /**
+     * All the channels, but a look lit by the ambient term alone reads z and
+     * kd only ({@link FragmentLayout#COLOUR_CHANNELS}): its P and N are never
+     * read, at a pixel lit alone or in a batch.
+     */
+    @Override
+    public int channelsRead(int channels) {
+        return shader != null && !shader.usesPoint() ? Math.min(channels, FragmentLayout.COLOUR_CHANNELS) : channels;
+    }
+
     @Override
     public void pixel(int x, int y, double q, double[] v) {
         if (x < 0 || x >= width || y < rowFrom || y >= rowTo) {
