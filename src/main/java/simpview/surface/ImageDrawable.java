@@ -65,8 +65,9 @@ public final class ImageDrawable implements Drawable {
     /**
      * Rows from &lt;= y &lt; to are to be {@code row}'s pixels ({@link #width}
      * of them; kept, not copied, so not to be changed): made when the image
-     * is next read or written, or by rows ({@link #fillOwedByRows}). Rows
-     * owed before and not covered now are made first.
+     * is next read or written on one thread, or by {@link #settle}, or by
+     * rows ({@link #fillOwedByRows}). Rows owed before and not covered now
+     * are made first.
      */
     public void oweRows(int from, int to, int[] row) {
         if (row.length != width) {
