@@ -16,8 +16,9 @@ public interface PointShader {
 
     /**
      * False when the colour is the ambient term alone (no light), so that
-     * {@link #shade(LitPoints)} reads only the points' kd: their P and N may
-     * then be left unset.
+     * both ways of shading read only kd: a batch's P and N may then be left
+     * unset, and one point's given as anything (FragmentStage gives 0, and
+     * its rasterizer does not interpolate them).
      */
     boolean usesPoint();
 
