@@ -1,5 +1,6 @@
 package simpview.scene.simp;
 
+import java.util.function.Supplier;
 import simpview.geometry.Matrix4;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
@@ -11,7 +12,6 @@ import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
-import java.util.function.Supplier;
 import simpview.surface.DrawingThreads;
 import simpview.surface.OwedRows;
 import simpview.surface.Provenance;

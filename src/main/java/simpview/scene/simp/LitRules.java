@@ -15,7 +15,6 @@ import simpview.stage.LitGeometry;
 import simpview.stage.LitPrimitives;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
-import java.util.function.Supplier;
 import simpview.surface.DrawingThreads;
 import simpview.surface.OwedRows;
 import simpview.surface.Provenance;
@@ -222,14 +221,14 @@ final class LitRules implements RuleSet {
      * band, depth-tested against {@code zbuffer} onto {@code panel} (the
      * fragment stage's), owners into {@code provenance} (or null); then each
      * band's drawer resets its own rows of the z-buffer, on its own thread,
-     * and makes those the canvas's clear owes of the panel (asked of
-     * {@code panelRows} only then). Phong pixels wait in {@code waiting} (the panel's, which the drawers
+     * and makes its rows of {@code panelRows}, those the canvas's clear owes
+     * of the panel (nothing on one thread, whose canvas clears at once). Phong pixels wait in {@code waiting} (the panel's, which the drawers
      * clear first) to be shaded once each at the scene's end
      * ({@link FragmentStage#shadeLater}). The fragment stages come from
      * {@code stages} (this one's among them), given back at the scene's end.
      * Call before the scene is read.
      */
-    void drawWith(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
+    void drawWith(DrawingThreads threads, ZBuffer zbuffer, OwedRows panelRows, Drawable panel,
             Provenance provenance, WaitingPixels waiting, FragmentStages stages) {
         this.stages = stages;
         if (threads.isOne()) {
@@ -239,7 +238,7 @@ final class LitRules implements RuleSet {
             return;
         }
         // Resets the z-buffer band by band, and makes the panel's owed rows so.
-        record = new LitPrimitives(threads, zbuffer, panelRows.get(), panel, provenance, waiting, stages);
+        record = new LitPrimitives(threads, zbuffer, panelRows, panel, provenance, waiting, stages);
         geometry.recordTo(record);
     }
 

@@ -231,7 +231,7 @@ public final class ScenePipeline {
             watch.began(files::chain, lit.state());
         } else {
             // Resets the z-buffer: at once on one thread, band by band by the bands' drawers with several.
-            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), canvas::owedPanelRows, panel, canvas.provenance(),
+            lit.drawWith(canvas.drawingThreads(), canvas.zbuffer(), canvas.owedPanelRows(), panel, canvas.provenance(),
                     canvas.waitingPixels(), stages);
         }
         return lit;
