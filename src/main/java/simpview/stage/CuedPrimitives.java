@@ -1,6 +1,8 @@
 package simpview.stage;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
@@ -54,6 +56,13 @@ public final class CuedPrimitives {
     private final ZBuffer zbuffer;
     private final Supplier<OwedRows> panelRows;
     private final Drawable panel;
+    private final DrawingThreads threads;
+    /**
+     * The drawers' renderers, in the order the drawers were made: taken from
+     * those the threads kept from their last picture, and given back once
+     * this one is drawn, as the lit record's rasterizers are.
+     */
+    private final List<Renderers> renderers;
     /**
      * Each band's rows as the canvas's clear owes them (the z-buffer reset,
      * the panel filled): by its drawer, before it first draws. Null until the
@@ -83,12 +92,24 @@ public final class CuedPrimitives {
         this.zbuffer = zbuffer;
         this.panelRows = panelRows;
         this.panel = panel;
+        this.threads = threads;
+        List<Renderers> kept = threads.takeKept(Renderers.class);
+        this.renderers = kept == null ? new ArrayList<>() : kept;
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
-            drawers[b] = new Band(b, bands.start(b), bands.end(b), panel);
+            drawers[b] = new Band(b, bands.start(b), bands.end(b), panel, renderers(b));
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel);
+                : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel, renderers(drawers.length));
+    }
+
+    /** The k-th drawer's renderers: kept ones, or new. */
+    private Renderers renderers(int k) {
+        if (k == renderers.size()) {
+            renderers.add(new Renderers(new DdaLineRenderer(), new FilledPolygonRenderer(),
+                    new WireframePolygonRenderer(new DdaLineRenderer())));
+        }
+        return renderers.get(k);
     }
 
     /**
@@ -142,14 +163,19 @@ public final class CuedPrimitives {
     public void flush() {
         if (preparation == null) {
             batches.finish(); // nothing recorded, nothing taken: the threads keep the ring
-            return;
+        } else {
+            try {
+                batches.handOff();
+                batches.finish();
+            } finally {
+                preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
+            }
         }
-        try {
-            batches.handOff();
-            batches.finish();
-        } finally {
-            preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
-        }
+        threads.keep(Renderers.class, renderers); // drawn: no drawer uses them any more
+    }
+
+    /** One drawer's renderers: scratch state only, set up anew for each primitive (and the fill for each band's rows). */
+    private record Renderers(DdaLineRenderer lines, FilledPolygonRenderer filled, WireframePolygonRenderer wire) {
     }
 
     /** One batch of recorded primitives, in primitive arrays: filled by the reading thread, then read by the drawers. */
@@ -203,14 +229,13 @@ public final class CuedPrimitives {
         private final int to;
         private final Painter painter;
 
-        Band(int band, int from, int to, Drawable panel) {
+        Band(int band, int from, int to, Drawable panel, Renderers renderers) {
             this.band = band;
             this.from = from;
             this.to = to;
-            FilledPolygonRenderer filled = new FilledPolygonRenderer();
-            filled.rows(from, to);
-            this.painter = new Painter(new RowBandDrawable(from, to, panel), new DdaLineRenderer(), filled,
-                    new WireframePolygonRenderer(new DdaLineRenderer()));
+            renderers.filled().rows(from, to);
+            this.painter = new Painter(new RowBandDrawable(from, to, panel), renderers.lines(), renderers.filled(),
+                    renderers.wire());
         }
 
         void draw(Batch b) {

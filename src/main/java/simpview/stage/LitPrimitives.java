@@ -70,6 +70,15 @@ public final class LitPrimitives {
     private final BandPreparation preparation;
     /** True once a look's lights make its pixels wait ({@link FragmentStage#paysToWait}): the bands' stages may then hold some. */
     private boolean shadesLater;
+    /**
+     * The drawers' rasterizers, in the order the drawers were made: taken
+     * from those the threads kept from their last picture, and given back
+     * once this one is drawn, as the fragment stages are. Seventeen pairs
+     * made anew took the reading thread about 3 % of a two-thread picture of
+     * A4 page-h before any band could start (session 13).
+     */
+    private final List<Rasterizers> rasterizers;
+    private final DrawingThreads threads;
 
     /**
      * Draws on {@code panel} (panel coordinates), depth-tested against
@@ -90,15 +99,19 @@ public final class LitPrimitives {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
                 this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
         this.provenance = provenance;
+        this.threads = threads;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
         this.bands = batches.bands();
         this.drawers = new Band[bands.count()];
+        List<Rasterizers> kept = threads.takeKept(Rasterizers.class);
+        this.rasterizers = kept == null ? new ArrayList<>() : kept;
         for (int b = 0; b < drawers.length; b++) {
-            drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel));
+            drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel), rasterizers(b));
             drawers[b].fragments.shadeLater(waiting, true, provenance);
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), stages.next(panel));
+                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), stages.next(panel),
+                        rasterizers(drawers.length));
         if (wholeDrawer != drawers[0]) {
             wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
         }
@@ -109,6 +122,14 @@ public final class LitPrimitives {
         });
         panel.settle(); // what the panel owes besides the rows taken (nothing, drawn on a canvas)
         batches.prepareBands();
+    }
+
+    /** The k-th drawer's rasterizers: a kept pair, or a new one. */
+    private Rasterizers rasterizers(int k) {
+        if (k == rasterizers.size()) {
+            rasterizers.add(new Rasterizers(new LitPolygonRasterizer(), new LitLineRasterizer()));
+        }
+        return rasterizers.get(k);
     }
 
     /**
@@ -189,6 +210,11 @@ public final class LitPrimitives {
         } finally {
             preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
         }
+        threads.keep(Rasterizers.class, rasterizers); // drawn: no drawer uses them any more
+    }
+
+    /** One drawer's rasterizers: scratch state only, set up anew for each primitive and each band's rows. */
+    private record Rasterizers(LitPolygonRasterizer fill, LitLineRasterizer lines) {
     }
 
     /**
@@ -330,18 +356,20 @@ public final class LitPrimitives {
         private final int from;
         private final int to;
         private final FragmentStage fragments;
-        private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
-        private final LitLineRasterizer lines = new LitLineRasterizer();
+        private final LitPolygonRasterizer fill;
+        private final LitLineRasterizer lines;
         /** The look (of the batch at hand) the fragment stage is set to, and the shader this band made for it. */
         private int look = -1;
         private Supplier<PointShader> madeFrom;
         private PointShader shader;
 
-        Band(int band, int from, int to, FragmentStage fragments) {
+        Band(int band, int from, int to, FragmentStage fragments, Rasterizers rasterizers) {
             this.band = band;
             this.from = from;
             this.to = to;
             this.fragments = fragments;
+            this.fill = rasterizers.fill();
+            this.lines = rasterizers.lines();
             fragments.rows(from, to);
             fill.rows(from, to);
             lines.rows(from, to);
