@@ -1,8 +1,9 @@
 """The llvmpipe side of simpview's side-by-side benchmark.
 
 Draws the pages that simpview.bench.LlvmpipeExport wrote (NAME.bin: the
-filled triangles simpview's geometry stage hands its rasterizers, grouped by
-how they are lit) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
+triangles and line segments simpview's geometry stage hands its
+rasterizers, grouped in drawing order by how they are lit and by which of
+the two they are) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
 context), with simpview's lighting formula, fog and depth test in GLSL, per
 pixel. Warm: the triangles are uploaded and the shaders compiled first,
 and 3 s of redraws (at least 20) run before 61 are timed (clear colour and
@@ -122,16 +123,18 @@ def load(path):
     at = 0
     groups = int(np.frombuffer(raw, "<i4", 1, at)[0])
     at += 4
-    uniforms, counts, vertices = [], [], []
+    uniforms, modes, counts, vertices = [], [], [], []
     for _ in range(groups):
         uniforms.append(np.frombuffer(raw, "<f4", UNIFORMS, at).copy())
         at += 4 * UNIFORMS
+        modes.append(GL.GL_LINES if int(np.frombuffer(raw, "<i4", 1, at)[0]) == 1 else GL.GL_TRIANGLES)
+        at += 4
         n = int(np.frombuffer(raw, "<i4", 1, at)[0])
         at += 4
         vertices.append(np.frombuffer(raw, "<f4", n * FLOATS, at))
         at += 4 * n * FLOATS
         counts.append(n)
-    return uniforms, counts, np.concatenate(vertices) if vertices else np.zeros(0, "<f4")
+    return uniforms, modes, counts, np.concatenate(vertices) if vertices else np.zeros(0, "<f4")
 
 
 def write_png(path, rgba):
@@ -157,7 +160,7 @@ def main():
     GL.glDepthFunc(GL.GL_LESS)  # strictly nearer wins, as simpview's z-buffer
     GL.glClearColor(0, 0, 0, 1)
     for name in sys.argv[2:]:
-        uniforms, counts, data = load(os.path.join(folder, name + ".bin"))
+        uniforms, modes, counts, data = load(os.path.join(folder, name + ".bin"))
         vao = GL.glGenVertexArrays(1)
         GL.glBindVertexArray(vao)
         vbo = GL.glGenBuffers(1)
@@ -171,9 +174,9 @@ def main():
 
         def redraw():
             GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
-            for u, first, count in zip(uniforms, firsts, counts):
+            for u, mode, first, count in zip(uniforms, modes, firsts, counts):
                 GL.glUniform1fv(where, UNIFORMS, u)
-                GL.glDrawArrays(GL.GL_TRIANGLES, first, count)
+                GL.glDrawArrays(mode, first, count)
             GL.glFinish()
 
         # Warmed as the simpview side is (LlvmpipeExport): 3 s of redraws, at least 20.

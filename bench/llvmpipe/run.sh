@@ -11,7 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root="$here/../.."
 course=${1:-$root/../shared}
 [ $# -gt 0 ] && shift
-pages=${*:-"a3/pageC a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ a4/page-d a4/page-e a4/page-f2 a4/page-h"}
+pages=${*:-"a3/pageA a3/pageC a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ a4/page-d a4/page-e a4/page-f2 a4/page-h"}
 out="$root/build/llvmpipe"
 mkdir -p "$out"
 (cd "$root" && gradle --no-daemon -q jmhClasses)

@@ -29,30 +29,36 @@ import simpview.surface.PageCanvas;
 
 /**
  * The simpview side of the llvmpipe benchmark (bench/llvmpipe/): for each
- * lit course page, writes the filled triangles its geometry stage hands the
+ * lit course page, writes the primitives its geometry stage hands the
  * rasterizers (clipped and projected, as clip-space positions and the
- * attributes simpview interpolates), grouped by how they are lit, so that
- * OpenGL draws the same fragments with the same lighting in GLSL; then
+ * attributes simpview interpolates): filled polygons as triangles, lines and
+ * wire outlines as line segments (an outline's every edge), grouped in
+ * drawing order by how they are lit and by which of the two they are, so
+ * that OpenGL draws the same primitives with the same lighting in GLSL (its
+ * lines by its own rule, the diamond exit, where simpview's follow the
+ * course's DDA: about the same pixels, not the same to the pixel); then
  * times simpview's warm redraws of the page on 1 and on 2 threads and
- * prints them, one line of {@code page ms1 best1 ms2 best2 triangles
+ * prints them, one line of {@code page ms1 best1 ms2 best2 triangles lines
  * skipped} per page: the median and best of 61, after {@value #WARM_SECONDS}
  * s of redraws (at least 20) to warm up. That is as long as JMH's warm-up,
  * so that the JIT has compiled the drawing before it is timed, as llvmpipe's
  * shaders are compiled before its redraws are (draw.py warms the same way).
  *
  * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
- * to write NAME.bin into, then pages as "a3/pageF". Lines and wire outlines
- * are not exported (they are counted): OpenGL would draw them by its own
- * line rules.
+ * to write NAME.bin into, then pages as "a3/pageF". A primitive of another
+ * kind (none so far) is not exported, only counted as skipped.
  *
  * <p>File (little-endian): int groups; per group 80 floats of uniforms (see
- * {@link #uniforms}), int vertices, then 13 floats per vertex: clip x, y,
- * z, w, camera z, r, g, b (kd under phong, else the lit colour), P x, P y,
- * N x, N y, N z.
+ * {@link #uniforms}), int mode (0 triangles, 1 line segments), int
+ * vertices, then 13 floats per vertex: clip x, y, z, w, camera z, r, g, b
+ * (kd under phong, else the lit colour), P x, P y, N x, N y, N z.
  */
 public final class LlvmpipeExport {
 
     static final int UNIFORMS = 80;
+    /** A group's mode in the file: triangles, three vertices each, or line segments, two each. */
+    static final int TRIANGLES = 0;
+    static final int SEGMENTS = 1;
     static final int MOST_LIGHTS = 8;
     private static final int FLOATS = 13;
 
@@ -70,8 +76,8 @@ public final class LlvmpipeExport {
             export.write(out.resolve(args[i].replace('/', '-') + ".bin"));
             double[] one = time(file, 1);
             double[] two = time(file, 2);
-            System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %d %d", args[i], one[0], one[1],
-                    two[0], two[1], export.triangles, export.skipped));
+            System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %d %d %d", args[i], one[0],
+                    one[1], two[0], two[1], export.triangles, export.lines, export.skipped));
         }
     }
 
@@ -117,38 +123,54 @@ public final class LlvmpipeExport {
         /** The client whose primitives are followed: its lit state is the one in force for each. */
         SimpClient client;
         private final List<float[]> groupUniforms = new ArrayList<>();
+        private final List<Integer> groupModes = new ArrayList<>();
         private final List<FloatList> groupVertices = new ArrayList<>();
         private Fog lastFog;
         private int lastVersion = -1;
         private boolean lastPhong;
+        private int lastMode;
         int triangles;
+        int lines;
         int skipped;
 
 
         @Override
         public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
-            if (kind != Painter.FILLED) {
+            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
                 skipped++;
                 return;
             }
+            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
             LitState state = client.litState();
             int channels = stride - FragmentLayout.CHANNEL;
             boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
             if (groupVertices.isEmpty() || state.fog() != lastFog || state.lightingVersion() != lastVersion
-                    || phong != lastPhong) {
+                    || phong != lastPhong || mode != lastMode) {
                 lastFog = state.fog();
                 lastVersion = state.lightingVersion();
                 lastPhong = phong;
+                lastMode = mode;
                 groupUniforms.add(uniforms(state, phong));
+                groupModes.add(mode);
                 groupVertices.add(new FloatList());
             }
             FloatList v = groupVertices.get(groupVertices.size() - 1);
             Camera camera = state.camera();
-            for (int k = 1; k + 1 < vertices; k++) {
-                vertex(v, camera, p, at, stride, channels);
-                vertex(v, camera, p, at + k * stride, stride, channels);
-                vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
-                triangles++;
+            if (kind == Painter.FILLED) {
+                for (int k = 1; k + 1 < vertices; k++) {
+                    vertex(v, camera, p, at, stride, channels);
+                    vertex(v, camera, p, at + k * stride, stride, channels);
+                    vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
+                    triangles++;
+                }
+            } else {
+                // A line's one segment, or each edge of an outline, as simpview draws them.
+                int segments = kind == Painter.LINE ? 1 : vertices;
+                for (int k = 0; k < segments; k++) {
+                    vertex(v, camera, p, at + k * stride, stride, channels);
+                    vertex(v, camera, p, at + ((k + 1) % vertices) * stride, stride, channels);
+                    lines++;
+                }
             }
         }
 
@@ -189,6 +211,7 @@ public final class LlvmpipeExport {
                 d.write(ints(groupVertices.size()));
                 for (int g = 0; g < groupVertices.size(); g++) {
                     d.write(floats(groupUniforms.get(g), groupUniforms.get(g).length));
+                    d.write(ints(groupModes.get(g)));
                     FloatList v = groupVertices.get(g);
                     d.write(ints(v.size / FLOATS));
                     d.write(floats(v.data, v.size));
