@@ -46,8 +46,13 @@ public final class ScissorDrawable extends DrawableDecorator {
     }
 
     /**
-     * z is linear along the span and its evaluation is monotone in x, so the
-     * pixels inside the depth range form one run: trim it from both ends.
+     * z is linear along the span and its evaluation is monotone in x (the
+     * exact x - xBase times dz, plus z: each step rounds monotonically), so
+     * the pixels inside the depth range form one run: trim it from both ends.
+     * An end outside the range is searched for where the run starts or stops
+     * (the pixels stepped one by one measured 3 % of A2 page 7's time: 0.14
+     * M of its 2.09 M are out of range), with the same test at every pixel it
+     * looks at, so the run is the one the pixel-by-pixel trim finds.
      */
     @Override
     public void fillSpan(Span s) {
@@ -58,11 +63,11 @@ public final class ScissorDrawable extends DrawableDecorator {
         int x1 = s.x1;
         int from = Math.max(x0, 0);
         int to = Math.min(x1, width);
-        while (from < to && !inDepth(s.zAt(from))) {
-            from++;
+        if (from < to && !inDepth(s.zAt(from))) {
+            from = runStart(s, from, to);
         }
-        while (to > from && !inDepth(s.zAt(to - 1))) {
-            to--;
+        if (from < to && !inDepth(s.zAt(to - 1))) {
+            to = runEnd(s, from, to);
         }
         if (from < to) {
             s.x0 = from;
@@ -71,5 +76,73 @@ public final class ScissorDrawable extends DrawableDecorator {
             s.x0 = x0;
             s.x1 = x1;
         }
+    }
+
+    /**
+     * The first pixel of [from, to) in the depth range, or to; pixel from is
+     * not. With a finite z and dz, the depths move toward the range (else no
+     * pixel reaches it) and cross its nearer bound once: galloping, then
+     * halving, finds the first pixel across it, which is the run's first if
+     * it is not beyond the other bound already. Otherwise (a NaN or infinite
+     * z or dz) pixel by pixel.
+     */
+    private int runStart(Span s, int from, int to) {
+        double z = s.zAt(from);
+        double dz = s.dz;
+        if (!(Math.abs(s.z) <= Double.MAX_VALUE && Math.abs(dz) <= Double.MAX_VALUE)) {
+            int x = from + 1;
+            while (x < to && !inDepth(s.zAt(x))) {
+                x++;
+            }
+            return x;
+        }
+        boolean tooNear = z > near;
+        if (tooNear ? !(dz < 0) : !(dz > 0)) {
+            return to; // moving away from the range, or not at all
+        }
+        // across(x): z(x) has reached the bound it starts beyond; false at from, then true onward.
+        int lo = from;
+        int step = 1;
+        int hi = from + 1;
+        while (hi < to && !(tooNear ? s.zAt(hi) <= near : s.zAt(hi) >= far)) {
+            lo = hi;
+            step <<= 1;
+            hi = to - lo > step ? lo + step : to;
+        }
+        while (hi - lo > 1) {
+            int mid = (lo + hi) >>> 1;
+            if (tooNear ? s.zAt(mid) <= near : s.zAt(mid) >= far) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return hi < to && inDepth(s.zAt(hi)) ? hi : to;
+    }
+
+    /**
+     * One past the last pixel of the run that starts at from (in the depth
+     * range) and ends before to - 1 (which is not): past the run, every
+     * pixel is out of range, as the depths move on monotonically. Galloping
+     * back from to - 1, then halving.
+     */
+    private int runEnd(Span s, int from, int to) {
+        int hi = to - 1;
+        int step = 1;
+        int lo = hi - 1;
+        while (lo > from && !inDepth(s.zAt(lo))) {
+            hi = lo;
+            step <<= 1;
+            lo = hi - from > step ? hi - step : from;
+        }
+        while (hi - lo > 1) {
+            int mid = (lo + hi) >>> 1;
+            if (inDepth(s.zAt(mid))) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return hi;
     }
 }
