@@ -33,19 +33,11 @@ public final class FileProblem {
     }
 
     /**
-     * Why {@code real}, an existing path, is not a file to read as text, or
-     * null when it is one: a folder, or a device or pipe, which may stream
-     * bytes for ever.
+     * Why a path with these attributes (read once by the caller, who also
+     * stamps the file with them) is not a file to read as text, or null when
+     * it is one: a folder, or a device or pipe, which may stream bytes for
+     * ever.
      */
-    public static String notAFile(Path real) {
-        try {
-            return notAFile(Files.readAttributes(real, BasicFileAttributes.class));
-        } catch (IOException | SecurityException e) {
-            return NOT_REGULAR;
-        }
-    }
-
-    /** As {@link #notAFile(Path)}, from the file's attributes already read. */
     public static String notAFile(BasicFileAttributes attributes) {
         if (attributes.isRegularFile()) {
             return null;

@@ -102,14 +102,14 @@ public final class ObjLibrary {
         BasicFileAttributes attributes;
         try {
             real = file.toRealPath();
-            String notAFile = FileProblem.notAFile(real);
-            if (notAFile != null) {
-                throw new SceneException(file, 0, 0, "", "cannot read the obj file "
-                        + file.toAbsolutePath().normalize() + ": " + notAFile);
-            }
-            attributes = Files.readAttributes(real, BasicFileAttributes.class);
+            attributes = Files.readAttributes(real, BasicFileAttributes.class); // once: the check and the stamp
         } catch (IOException e) {
             throw cannotOpen(file, e);
+        }
+        String notAFile = FileProblem.notAFile(attributes);
+        if (notAFile != null) {
+            throw new SceneException(file, 0, 0, "", "cannot read the obj file "
+                    + file.toAbsolutePath().normalize() + ": " + notAFile);
         }
         FileStamp stamp = FileStamp.of(attributes);
         boolean settled = KeptFiles.settled(attributes, lookedAt, settleMillis);

@@ -85,8 +85,14 @@ final class LitRules implements RuleSet {
         }
     }
 
-    /** The rasterizers' fragments go through {@code sink} on their way to the fragment stage (the inspector's probe). */
-    void fragmentsThrough(simpview.raster.FragmentSink sink) {
+    /**
+     * The rasterizers' fragments go through {@code sink} on their way to the
+     * fragment stage (the inspector's probe), drawn on this thread; the
+     * fragment stages come from {@code stages} (this one's among them), given
+     * back at the scene's end, as {@link #drawWith} gives them back.
+     */
+    void fragmentsThrough(simpview.raster.FragmentSink sink, FragmentStages stages) {
+        this.stages = stages;
         geometry.fragmentsThrough(sink);
     }
 

@@ -227,7 +227,7 @@ public final class ScenePipeline {
         if (watch != null) {
             // Drawn on this thread alone: the watch sees each fragment as the rasterizers make it.
             canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-            lit.fragmentsThrough(watch.fragments(fragments));
+            lit.fragmentsThrough(watch.fragments(fragments), stages);
             watch.began(files::chain, lit.state());
         } else {
             // Resets the z-buffer: at once on one thread, band by band by the bands' drawers with several.

@@ -47,6 +47,18 @@ class ObjLibraryTest {
     }
 
     @Test
+    void aFolderOrAMissingFileIsAnErrorThatSaysSo() throws Exception {
+        ObjLibrary library = new ObjLibrary();
+        Path folder = Files.createDirectory(dir.resolve("models.obj"));
+        SceneException notAFile = assertThrows(SceneException.class, () -> draw(library, folder));
+        assertTrue(notAFile.getMessage().contains("cannot read the obj file " + folder + ": not a file but a folder"),
+                notAFile.getMessage());
+        SceneException missing = assertThrows(SceneException.class, () -> draw(library, dir.resolve("none.obj")));
+        assertTrue(missing.getMessage().contains("none.obj"), missing.getMessage());
+        assertEquals(0, library.parseCount());
+    }
+
+    @Test
     void aSecondDrawOfAnUnchangedFileReplaysWithoutParsing() throws Exception {
         Path file = write("a.obj", TRIANGLES);
         ObjLibrary library = new ObjLibrary();

@@ -12,9 +12,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Supplier;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
+import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
+import simpview.surface.Drawable;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -53,6 +58,39 @@ class ScenePipelineTest {
         draw(scene, lit, ScenePipeline.Rules.LIT);
         assertArrayEquals(lit.image().getRGB(0, 0, 750, 750, null, 0, 750),
                 byCommands.image().getRGB(0, 0, 750, 750, null, 0, 750), "the same picture as lit from the start");
+    }
+
+    @Test
+    void aWatchedLitSceneGivesItsFragmentStagesBackForTheNextPicture() throws Exception {
+        Path scene = write("watched.simp", "translate 0 0 -5", "ambient 1 1 1", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
+        PageCanvas canvas = new PageCanvas();
+        List<FragmentStage> watched = new ArrayList<>();
+        SceneMonitor watching = new SceneMonitor() {
+            @Override
+            public DrawingWatch watch() {
+                return new DrawingWatch() {
+                    @Override
+                    public Drawable depthCued(PageCanvas c, Rgb near, Rgb far, boolean ownColours) {
+                        throw new AssertionError("the scene is lit");
+                    }
+
+                    @Override
+                    public FragmentSink fragments(FragmentStage stage) {
+                        watched.add(stage);
+                        return stage;
+                    }
+
+                    @Override
+                    public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
+                    }
+                };
+            }
+        };
+        canvas.clear();
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new SceneLibrary()), watching);
+        assertEquals(1, watched.size());
+        List<FragmentStage> kept = canvas.drawingThreads().takeKept(FragmentStage.class);
+        assertEquals(watched, kept, "the watched picture's stage, given back to the threads");
     }
 
     @Test
