@@ -87,15 +87,17 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * none from the last picture; a batch is drawn by {@code band} (given the
      * batch and the band's number) when split, or by {@code wholePanel}; a
      * batch is handed off once it covers {@code mostPixels} or holds
-     * {@code mostPrimitives} (fewer at first, see {@link #FIRST_PRIMITIVES}).
+     * {@code mostPrimitives} (fewer at first, see {@link #FIRST_PRIMITIVES});
+     * the panel is split into {@code bandsPerThread} bands per thread.
      */
     BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Class<B> kind, Supplier<B> newBatch,
-            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels, int mostPrimitives) {
+            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels, int mostPrimitives,
+            int bandsPerThread) {
         this.threads = threads;
         this.mostPixels = mostPixels;
         this.mostPrimitives = mostPrimitives;
         this.primitivesLimit = threads.isOne() ? mostPrimitives : Math.min(FIRST_PRIMITIVES, mostPrimitives);
-        this.bands = threads.bands(height);
+        this.bands = threads.bands(height, bandsPerThread);
         this.weighs = !threads.isOne()
                 && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
         this.kind = kind;

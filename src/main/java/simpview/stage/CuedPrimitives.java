@@ -46,6 +46,16 @@ public final class CuedPrimitives {
      * page 7 slower (docs/performance.md, session 5).
      */
     private static final double MOST_PIXELS = Double.POSITIVE_INFINITY;
+    /**
+     * Bands per thread: fewer than a lit picture's ({@link
+     * DrawingThreads#BANDS_PER_THREAD}), as A2's triangles are large (page
+     * 7's 590 were set up 2,087 times in 16 bands) and each pixel cheap, so
+     * a band's set-ups weigh more against what it evens out. Two threads,
+     * 4 against 8, in two processes each (the builds in both orders): A2
+     * page 5 0.947 and 0.961, page 7 0.970 and 0.947, page 6 0.924 and 0.968,
+     * pages 3, 4 and 8 0.83-0.96 (session 14).
+     */
+    private static final int BANDS_PER_THREAD = 4;
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
@@ -86,7 +96,7 @@ public final class CuedPrimitives {
     public CuedPrimitives(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
             Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
+                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES, BANDS_PER_THREAD);
         this.provenance = provenance;
         this.bands = batches.bands();
         this.zbuffer = zbuffer;

@@ -97,7 +97,7 @@ public final class LitPrimitives {
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, OwedRows panelRows, Drawable panel,
             Provenance provenance, WaitingPixels waiting, FragmentStages stages) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES);
+                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES, DrawingThreads.BANDS_PER_THREAD);
         this.provenance = provenance;
         this.threads = threads;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);

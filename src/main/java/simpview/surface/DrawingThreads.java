@@ -27,14 +27,17 @@ import java.util.concurrent.LinkedBlockingQueue;
 public final class DrawingThreads implements AutoCloseable {
 
     /**
-     * Bands per thread: more bands than threads even out pages whose content
-     * is not spread evenly, and shorten the wait at a picture's end for the
-     * last band; each band costs the row test of every primitive and the
-     * set-up of each triangle that crosses into it. 8 measured faster than 3
-     * on the course's lit pages on two threads (0.84 to 0.99 of the time)
-     * and the same on A2's (docs/performance.md, session 4).
+     * Bands per thread unless a record asks for another number
+     * ({@link #bands(int, int)}): more bands than threads even out pages
+     * whose content is not spread evenly, and shorten the wait at a
+     * picture's end for the last band; each band costs the row test of
+     * every primitive and the set-up of each triangle that crosses into it.
+     * 8 measured faster than 3 on the course's lit pages on two threads
+     * (0.84 to 0.99 of the time, docs/performance.md, session 4), and than 4
+     * (A3 pageE, pageF and A4 page-e 1.10-1.15 of 8's time with 4, session
+     * 14).
      */
-    private static final int BANDS_PER_THREAD = 8;
+    public static final int BANDS_PER_THREAD = 8;
 
     /**
      * How long a worker with nothing to do spins, looking for the next
@@ -144,9 +147,14 @@ public final class DrawingThreads implements AutoCloseable {
         return threads == 1;
     }
 
-    /** The bands a picture of {@code rows} rows is split into for these threads. */
+    /** The bands a picture of {@code rows} rows is split into for these threads: {@link #BANDS_PER_THREAD} each. */
     public RowBands bands(int rows) {
-        return new RowBands(rows, Math.max(1, Math.min(rows, threads * BANDS_PER_THREAD)));
+        return bands(rows, BANDS_PER_THREAD);
+    }
+
+    /** The bands a picture of {@code rows} rows is split into for these threads: {@code perThread} each, at most a row each. */
+    public RowBands bands(int rows, int perThread) {
+        return new RowBands(rows, Math.max(1, Math.min(rows, threads * perThread)));
     }
 
     /**

@@ -115,6 +115,6 @@ class BatchDrawingTest {
             synchronized (drawn) {
                 drawn.add(b);
             }
-        }, Double.POSITIVE_INFINITY, mostPrimitives);
+        }, Double.POSITIVE_INFINITY, mostPrimitives, DrawingThreads.BANDS_PER_THREAD);
     }
 }

@@ -110,6 +110,8 @@ class DrawingThreadsTest {
         }
         try (DrawingThreads seven = DrawingThreads.of(7)) {
             assertEquals(56, seven.bands(650).count());
+            assertEquals(28, seven.bands(650, 4).count(), "a record's own bands per thread");
+            assertEquals(20, seven.bands(20, 4).count(), "never more bands than rows");
         }
     }
 }
