@@ -155,8 +155,37 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     }
 
     /**
+     * The lowest row a filled polygon of n corners (y as {@link #lowRow})
+     * may cover, exactly: ceil(lowest - 0.5), the first row whose centre is
+     * at or above its lowest corner, as {@code TriangleCoverage.firstRow}
+     * finds it for each triangle of the polygon's fan from the same numbers.
+     * Each triangle's lowest corner is at or above the polygon's, and the
+     * ceiling keeps the order, so no triangle covers a lower row. Where
+     * {@link #lowRow} keeps a row's margin (for lines), this keeps a band
+     * from setting up a triangle that only comes near its rows: on A3's
+     * tomsPageJ, 4,372 set-ups in 16 bands against 3,280 on one thread.
+     */
+    static double lowFillRow(double[] v, int y, int n, int stride) {
+        double low = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            low = Math.min(low, v[y + k * stride]);
+        }
+        return Math.ceil(low - 0.5);
+    }
+
+    /** The highest row a filled polygon may cover, exactly: floor(highest - 0.5), as {@link #lowFillRow}. */
+    static double highFillRow(double[] v, int y, int n, int stride) {
+        double high = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            high = Math.max(high, v[y + k * stride]);
+        }
+        return Math.floor(high - 0.5);
+    }
+
+    /**
      * True when a primitive between rows {@code low} and {@code high}
-     * ({@link #lowRow}, {@link #highRow}) may touch rows from &lt;= y &lt; to:
+     * ({@link #lowRow}, {@link #highRow}, or {@link #lowFillRow},
+     * {@link #highFillRow}) may touch rows from &lt;= y &lt; to:
      * it is skipped only when it surely lies outside (a NaN row never does).
      */
     static boolean mayTouch(double low, double high, int from, int to) {

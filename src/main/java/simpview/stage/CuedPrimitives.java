@@ -216,8 +216,11 @@ public final class CuedPrimitives {
             int corners = what == Painter.LINE ? 2 : 3;
             kind[size] = (byte) what;
             owner[size] = by;
-            lowY[size] = BatchDrawing.lowRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
-            highY[size] = BatchDrawing.highRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
+            boolean filled = what == Painter.FILLED;
+            lowY[size] = filled ? BatchDrawing.lowFillRow(p, at + Vertex.Y, corners, Vertex.NUMBERS)
+                    : BatchDrawing.lowRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
+            highY[size] = filled ? BatchDrawing.highFillRow(p, at + Vertex.Y, corners, Vertex.NUMBERS)
+                    : BatchDrawing.highRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
             size++;
             return corners;
         }

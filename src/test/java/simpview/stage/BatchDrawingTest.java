@@ -5,7 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
+import simpview.raster.FragmentLayout;
+import simpview.raster.FragmentSink;
+import simpview.raster.LitPolygonRasterizer;
 import simpview.surface.DrawingThreads;
 
 /** A record's ring of batches, kept by the threads from one picture to the next. */
@@ -95,6 +99,67 @@ class BatchDrawingTest {
             assertTrue(b.size <= 1000, "a batch that is never full");
         }
         return b.size;
+    }
+
+    /**
+     * A filled polygon's rows as the bands are told them (lowFillRow,
+     * highFillRow) hold every row the rasterizer covers, so a band that
+     * skips it misses no pixel: random polygons of 3 to 6 corners, on and
+     * near pixel centres and edges; and they are narrower than the rows
+     * kept for lines (lowRow, highRow), by a row or more at each end.
+     */
+    @Test
+    void aFilledPolygonsRowsHoldEveryRowItCovers() {
+        Random random = new Random(14);
+        LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
+        int stride = FragmentLayout.stride(1);
+        int[] rows = new int[2];
+        FragmentSink sink = new FragmentSink() {
+            @Override
+            public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
+                rows[0] = Math.min(rows[0], y);
+                rows[1] = Math.max(rows[1], y);
+            }
+
+            @Override
+            public void pixel(int x, int y, double q, double[] v) {
+                span(y, x, x + 1, q, 0, v, v);
+            }
+        };
+        for (int k = 0; k < 20_000; k++) {
+            int n = 3 + random.nextInt(4);
+            double[] v = new double[n * stride];
+            double cx = 20 + 60 * random.nextDouble();
+            double cy = 20 + 60 * random.nextDouble();
+            double size = random.nextInt(3) == 0 ? 2 : 25;
+            for (int i = 0; i < n; i++) {
+                double angle = 2 * Math.PI * (i + random.nextDouble() * 0.9) / n;
+                double x = cx + size * Math.cos(angle);
+                double y = cy + size * Math.sin(angle);
+                if (random.nextBoolean()) { // on a pixel centre's line or a pixel edge
+                    y = Math.floor(y) + (random.nextBoolean() ? 0.5 : 0);
+                }
+                v[i * stride + FragmentLayout.X] = x;
+                v[i * stride + FragmentLayout.Y] = y;
+                v[i * stride + FragmentLayout.Q] = 1;
+            }
+            double low = BatchDrawing.lowFillRow(v, FragmentLayout.Y, n, stride);
+            double high = BatchDrawing.highFillRow(v, FragmentLayout.Y, n, stride);
+            assertTrue(low > BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride)
+                    && high < BatchDrawing.highRow(v, FragmentLayout.Y, n, stride), "polygon " + k);
+            rows[0] = Integer.MAX_VALUE;
+            rows[1] = Integer.MIN_VALUE;
+            rasterizer.fill(v, n, 1, 100, 100, sink);
+            if (rows[0] > rows[1]) {
+                continue; // no pixel centre inside
+            }
+            assertTrue(low <= rows[0] && rows[1] <= high, "polygon " + k + ": rows " + rows[0] + "-" + rows[1]
+                    + " outside " + low + "-" + high);
+            for (int b = 0; b < 10; b++) {
+                boolean touches = rows[0] < 10 * b + 10 && rows[1] >= 10 * b;
+                assertTrue(!touches || BatchDrawing.mayTouch(low, high, 10 * b, 10 * b + 10), "polygon " + k);
+            }
+        }
     }
 
     private static BatchDrawing<Counted> picture(DrawingThreads threads, List<Counted> made, List<Counted> drawn) {
