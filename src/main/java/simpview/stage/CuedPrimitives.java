@@ -55,7 +55,7 @@ public final class CuedPrimitives {
      * page 5 0.947 and 0.961, page 7 0.970 and 0.947, page 6 0.924 and 0.968,
      * pages 3, 4 and 8 0.83-0.96 (session 14).
      */
-    private static final int BANDS_PER_THREAD = 4;
+    public static final int BANDS_PER_THREAD = 4;
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;

@@ -16,6 +16,7 @@ import simpview.scene.SceneException;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
+import simpview.stage.CuedPrimitives;
 
 /**
  * The rule that picks, when no thread count was given, one band (drawn by a
@@ -78,7 +79,7 @@ class BandChoiceTest {
         // drawn whole, then the other 120; the same pixels. Before the first, an empty batch in bands: each
         // band's drawer makes its rows ready (what the canvas's clear owes) while the first batch is read.
         try (DrawingThreads two = DrawingThreads.of(2)) {
-            int bands = two.bands(PageCanvas.PANEL).count();
+            int bands = two.bands(PageCanvas.PANEL, CuedPrimitives.BANDS_PER_THREAD).count(); // depth-cued scenes
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
             assertEquals(bands + 9, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task");
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
