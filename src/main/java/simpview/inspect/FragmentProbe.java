@@ -60,4 +60,10 @@ final class FragmentProbe implements FragmentSink {
         stage.pixel(px, py, q, v);
         watch.fragmentDone();
     }
+
+    /** Passed on: the stage may write a primitive's short spans only when told it is done. */
+    @Override
+    public void primitiveDone() {
+        stage.primitiveDone();
+    }
 }

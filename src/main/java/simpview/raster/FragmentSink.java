@@ -21,6 +21,16 @@ public interface FragmentSink {
     void pixel(int x, int y, double q, double[] v);
 
     /**
+     * The primitive whose spans came since the last call is done: a sink
+     * may write its pixels together then ({@code FragmentStage} does, for
+     * short phong spans), and must have written them all when this returns.
+     * The filled rasterizer calls it after each polygon; the default does
+     * nothing.
+     */
+    default void primitiveDone() {
+    }
+
+    /**
      * How many of a fragment's first channels, of the {@code channels} it
      * carries, this sink reads now: a rasterizer need not interpolate the
      * rest (their entries in a span's arrays are then left as they were).

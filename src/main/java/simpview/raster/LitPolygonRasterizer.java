@@ -61,6 +61,7 @@ public final class LitPolygonRasterizer {
         for (int k = 1; k + 1 < n; k++) {
             triangle(v, at, at + k * stride, at + (k + 1) * stride, read, width, height, sink);
         }
+        sink.primitiveDone();
     }
 
     private void triangle(double[] v, int i1, int i2, int i3, int channels, int width, int height,

@@ -60,12 +60,16 @@ public final class FragmentStage implements FragmentSink {
      */
     static final int SHORT_PHONG_SPAN = 16;
     /**
-     * The same for the ambient term alone (no light: no square root nor
-     * division a pixel, so a batch pays sooner). The A3 pages, all ambient,
-     * measured 0.94-0.99 of their time with 6 against 16, one thread
-     * (session 10; 2 gained less).
+     * The same for the ambient term alone, but a short span's pixels are not
+     * lit one by one: they wait with the rest of the primitive's short spans
+     * to be lit, fogged and written together ({@link #ambientPixels}), so that
+     * a small triangle's few pixels a row make one batch. One thread, against
+     * pixel by pixel below 6 (session 14): A3 tomsPageJ (spans of 2.3 pixels
+     * on average) 0.85-0.86 of its time with 16, 0.87 with 6, 0.83 with 64;
+     * pageE 0.97 with 16 and 1.04 with 64, pageF 0.99 and 1.08 (their longer
+     * spans are better a batch of their own, written in runs).
      */
-    static final int SHORT_AMBIENT_SPAN = 6;
+    static final int SHORT_AMBIENT_SPAN = 16;
     /** 0, 1, 2, ...: k0 + RAMP[j] is k0 + j, exactly. */
     private static final double[] RAMP = new double[BATCH];
 
@@ -96,6 +100,13 @@ public final class FragmentStage implements FragmentSink {
     private final int[] colours = new int[BATCH];
     // Whether every pixel of the batch last gathered passed the depth test.
     private boolean whole;
+    // The pixels of short phong spans that passed the depth test (their
+    // depths stored) and wait in points' arrays to be lit, fogged and written
+    // together ({@link #writePending}): pendingCount of them, at
+    // (pendingX[i], pendingY[i]), z in batchZ.
+    private int pendingCount;
+    private final int[] pendingX = new int[BATCH];
+    private final int[] pendingY = new int[BATCH];
     private PointShader shader;
     private Fog fog = Fog.NONE;
     // The rows written: all of them, or one band's.
@@ -156,6 +167,7 @@ public final class FragmentStage implements FragmentSink {
         rowFrom = 0;
         rowTo = height;
         whole = false;
+        pendingCount = 0;
         shader = null;
         fog = Fog.NONE;
         waiting = null;
@@ -228,6 +240,7 @@ public final class FragmentStage implements FragmentSink {
      * last fragment of the picture, on the thread that draws these rows.
      */
     public void shadeWaiting() {
+        writePending();
         if (waiting == null || !defers) {
             return;
         }
@@ -350,12 +363,14 @@ public final class FragmentStage implements FragmentSink {
 
     /** The next primitives carry their colour (flat, gouraud, wire, lines), fogged by {@code fog}. */
     public void colours(Fog fog) {
+        writePending(); // lit and fogged by the look they were drawn with
         this.shader = null;
         this.fog = fog;
     }
 
     /** The next primitives are phong-shaded by {@code shader} at every pixel, then fogged. */
     public void phong(PointShader shader, Fog fog) {
+        writePending(); // lit and fogged by the look they were drawn with
         this.shader = shader;
         this.fog = fog;
     }
@@ -371,7 +386,12 @@ public final class FragmentStage implements FragmentSink {
      * then their attributes, their colour (lit together), and the write, one
      * call per run of neighbours (k is taken to double exactly, as k0 + j).
      * Each pixel is still written once, and only the panel's own pixels, so
-     * the order of the writes cannot change the picture.
+     * the order of the writes cannot change the picture. A short phong span's
+     * pixels are tested one at a time, and those that pass wait, with their
+     * attributes, until the primitive is done (or BATCH of them wait), to be
+     * lit, fogged and written together ({@link #writePending}); no two of
+     * one primitive's pixels are the same pixel, and every other write of
+     * this stage, and every change of look, comes after they are written.
      */
     @Override
     public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
@@ -389,11 +409,14 @@ public final class FragmentStage implements FragmentSink {
     /** A phong span, a batch at a time, or pixel by pixel when short; true when a pixel was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
-        if (defers && end - start >= SHORT_PHONG_SPAN && paysToWait(shader)) {
-            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
+        boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
+        if (end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN)) {
+            return ambient ? ambientPixels(y, from, start, end, q0, dq, v0, dv)
+                    : litPixels(y, from, start, end, q0, dq, v0, dv);
         }
-        if (end - start < (shader.lightCount() == 0 ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN)) {
-            return phongPixels(y, from, start, end, q0, dq, v0, dv);
+        writePending(); // the batches below use the same arrays
+        if (defers && paysToWait(shader)) {
+            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
         }
         boolean wrote = false;
         boolean mayWait = waits(y);
@@ -417,11 +440,88 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * A short phong span, pixel by pixel: kd, P and N resolved at each pixel
-     * that passes the depth test, and lit there alone. True when a pixel was
-     * written.
+     * A short phong span lit by the ambient term alone, pixel by pixel: the
+     * depth test at each, and kd resolved at each that passes, into the
+     * points that wait to be lit together ({@link #writePending}, at once
+     * when BATCH of them wait, else when the primitive is done). A point's
+     * kd and z are those pixel() would light it with (P and N are not read),
+     * and a batch lights it to the same bits. (With lights, pixels wait this way measured slower on
+     * A4 page-d, 1.015 of its time, one thread: {@link #litPixels}.) True
+     * when a pixel passed.
      */
-    private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
+    private boolean ambientPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double r0 = v0[R];
+        double dr = dv[R];
+        double g0 = v0[G];
+        double dg = dv[G];
+        double b0 = v0[B];
+        double db = dv[B];
+        LitPoints t = points;
+        int row = y * width;
+        boolean wrote = false;
+        boolean mayWait = waits(y);
+        int n = pendingCount;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            wrote = true;
+            if (mayWait) {
+                waiting.end(x, y);
+            }
+            pendingX[n] = x;
+            pendingY[n] = y;
+            batchZ[n] = z;
+            t.kdRed[n] = (r0 + k * dr) * inv;
+            t.kdGreen[n] = (g0 + k * dg) * inv;
+            t.kdBlue[n] = (b0 + k * db) * inv;
+            if (++n == BATCH) {
+                pendingCount = n;
+                writePending();
+                n = 0;
+            }
+        }
+        pendingCount = n;
+        return wrote;
+    }
+
+    /**
+     * The pixels that wait ({@link #ambientPixels}) lit by the shader, fogged
+     * and packed together ({@link #pack}), and written in the order they
+     * passed the depth test; none wait after.
+     */
+    private void writePending() {
+        int n = pendingCount;
+        if (n == 0) {
+            return;
+        }
+        pendingCount = 0;
+        LitPoints t = points;
+        t.count = n;
+        shader.shade(t);
+        pack(n);
+        for (int i = 0; i < n; i++) {
+            panel.setPixel(pendingX[i], pendingY[i], batchZ[i], colours[i]);
+        }
+    }
+
+    @Override
+    public void primitiveDone() {
+        writePending();
+    }
+
+    /**
+     * A short phong span lit by lights (the shader reads P and N), pixel by
+     * pixel: kd, P and N resolved at each pixel that passes the depth test,
+     * and lit there alone. True when a pixel was written.
+     */
+    private boolean litPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
         double z0 = v0[Z];
         double dz = dv[Z];
@@ -442,7 +542,6 @@ public final class FragmentStage implements FragmentSink {
         double nz0 = v0[NZ];
         double dnz = dv[NZ];
         PointShader s = shader;
-        boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
         int row = y * width;
         boolean wrote = false;
         boolean mayWait = waits(y);
@@ -457,13 +556,9 @@ public final class FragmentStage implements FragmentSink {
             if (mayWait) {
                 waiting.end(x, y);
             }
-            if (point) {
-                s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
-                        (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
-                        (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
-            } else {
-                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
-            }
+            s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                    (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
+                    (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
             panel.setPixel(x, y, z, fogged(z, lit));
         }
         return wrote;
@@ -737,6 +832,7 @@ public final class FragmentStage implements FragmentSink {
 
     @Override
     public void pixel(int x, int y, double q, double[] v) {
+        writePending();
         if (x < 0 || x >= width || y < rowFrom || y >= rowTo) {
             return;
         }

@@ -66,6 +66,18 @@ class FragmentStageTest {
         return state;
     }
 
+    /** As {@link #scene}, with no light: the ambient term alone. */
+    private static LitState ambientScene(Random random) {
+        LitState state = new LitState();
+        state.setCamera(Camera.perspective(-1, -1, 1, 1, -0.1, -200), Matrix4.identity());
+        state.setAmbient(0.2 + random.nextDouble(), 0.1, 0.3);
+        state.setSurface(0.8, 0.6, 0.4, random.nextDouble(), 16);
+        if (random.nextBoolean()) {
+            state.setFog(FOGS[random.nextInt(FOGS.length)]);
+        }
+        return state;
+    }
+
     /**
      * Fogs that the phong batches take each way: colours in [0, 1] (no clamp
      * of the levels), outside it (clamped), near and far the wrong way round
@@ -114,6 +126,7 @@ class FragmentStageTest {
             bySpan.provenance().begin(s);
             byPixel.provenance().begin(s);
             bySpan.fragments().span(y, from, to, q0, dq, v0, dv);
+            bySpan.fragments().primitiveDone(); // each span a primitive of its own: they overlap
             for (int x = from; x < to; x++) {
                 int k = x - from;
                 for (int c = 0; c < CHANNELS; c++) {
@@ -121,6 +134,7 @@ class FragmentStageTest {
                 }
                 byPixel.fragments().pixel(x, y, q0 + k * dq, v);
             }
+            byPixel.fragments().primitiveDone();
         }
         assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
         assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
@@ -175,11 +189,60 @@ class FragmentStageTest {
                 atOnce.fragments().span(y, from, to, q0, dq, v0, dv);
                 atEnd.fragments().span(y, from, to, q0, dq, v0, dv);
             }
+            atOnce.fragments().primitiveDone();
+            atEnd.fragments().primitiveDone();
         }
         atEnd.fragments().shadeWaiting();
         assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()), "the picture");
         assertArrayEquals(atOnce.zbuffer().copyDepths(), atEnd.zbuffer().copyDepths(), "the depths");
         assertArrayEquals(atOnce.provenance().copyOwners(), atEnd.provenance().copyOwners(), "the provenance");
+    }
+
+    /**
+     * A primitive's short phong spans (one per row, as a rasterizer gives
+     * them) draw what the same pixels draw one by one: with and without
+     * lights, more pixels than a batch holds, and a second primitive over the
+     * first. Lit by the ambient term alone, they wait until the primitive is
+     * done (or a BATCH of them waits) and are written then.
+     */
+    @Property(tries = 60, seed = "1204014")
+    void aPrimitivesShortSpansWaitUntilItIsDoneAndDrawWhatItsPixelsDraw(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = random.nextBoolean() ? scene(random) : ambientScene(random);
+        Stage bySpan = Stage.make(state, true);
+        Stage byPixel = Stage.make(state, true);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] v = new double[CHANNELS];
+        for (int primitive = 0; primitive < 2; primitive++) {
+            bySpan.provenance().begin(primitive);
+            byPixel.provenance().begin(primitive);
+            double[] q = randomSpan(random, v0, dv);
+            int rows = 1 + random.nextInt(SIZE);
+            int written = 0;
+            for (int y = 0; y < rows; y++) {
+                int from = random.nextInt(SIZE) - 2;
+                int to = from + random.nextInt(6);
+                // The same plane at every row: k counts from each span's own from, as a rasterizer's spans do.
+                bySpan.fragments().span(y, from, to, q[0], q[1], v0, dv);
+                for (int x = from; x < to; x++) {
+                    int k = x - from;
+                    for (int c = 0; c < CHANNELS; c++) {
+                        v[c] = v0[c] + k * dv[c];
+                    }
+                    byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
+                    written += x >= 0 && x < SIZE ? 1 : 0;
+                }
+            }
+            if (primitive == 0 && written < FragmentStage.BATCH && !state.frozenShader().get().usesPoint()) {
+                assertArrayEquals(pixels(Stage.make(state, true).image()), pixels(bySpan.image()),
+                        "nothing written before the primitive is done");
+            }
+            bySpan.fragments().primitiveDone();
+        }
+        assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
+        assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
+        assertArrayEquals(byPixel.provenance().copyOwners(), bySpan.provenance().copyOwners(), "the provenance");
     }
 
     @Test
