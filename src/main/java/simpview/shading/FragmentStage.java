@@ -67,9 +67,20 @@ public final class FragmentStage implements FragmentSink {
      * pixel by pixel below 6 (session 14): A3 tomsPageJ (spans of 2.3 pixels
      * on average) 0.85-0.86 of its time with 16, 0.87 with 6, 0.83 with 64;
      * pageE 0.97 with 16 and 1.04 with 64, pageF 0.99 and 1.08 (their longer
-     * spans are better a batch of their own, written in runs).
+     * spans are better a batch of their own, written in runs); with
+     * {@link #FEWEST_LIT_TOGETHER} as it is, tomsPageJ 0.86, pageH 0.95,
+     * pageE 0.97, pageC, pageG and pageI 0.99-1.01.
      */
     static final int SHORT_AMBIENT_SPAN = 16;
+    /**
+     * Fewer waiting ambient pixels than this are lit one by one when their
+     * primitive is done, as a batch's loops cost more than they save on so
+     * few; and after a primitive with fewer, the next one's are lit one by
+     * one as they pass (a mesh's faces are alike). A3 pageI's dummy, 28,716
+     * faces of a few pixels each, took 1.058-1.074 of its time on one thread
+     * with every short span's pixels waiting, and 0.99-1.01 so (session 14).
+     */
+    static final int FEWEST_LIT_TOGETHER = 6;
     /** 0, 1, 2, ...: k0 + RAMP[j] is k0 + j, exactly. */
     private static final double[] RAMP = new double[BATCH];
 
@@ -107,6 +118,11 @@ public final class FragmentStage implements FragmentSink {
     private int pendingCount;
     private final int[] pendingX = new int[BATCH];
     private final int[] pendingY = new int[BATCH];
+    // Whether short ambient spans' pixels wait (else each is lit as it
+    // passes): they do while the last primitive done had FEWEST_LIT_TOGETHER
+    // of them or more; and how many the primitive at hand had so far.
+    private boolean shortPixelsWait = true;
+    private int shortPixels;
     private PointShader shader;
     private Fog fog = Fog.NONE;
     // The rows written: all of them, or one band's.
@@ -168,6 +184,8 @@ public final class FragmentStage implements FragmentSink {
         rowTo = height;
         whole = false;
         pendingCount = 0;
+        shortPixelsWait = true;
+        shortPixels = 0;
         shader = null;
         fog = Fog.NONE;
         waiting = null;
@@ -443,7 +461,9 @@ public final class FragmentStage implements FragmentSink {
      * A short phong span lit by the ambient term alone, pixel by pixel: the
      * depth test at each, and kd resolved at each that passes, into the
      * points that wait to be lit together ({@link #writePending}, at once
-     * when BATCH of them wait, else when the primitive is done). A point's
+     * when BATCH of them wait, else when the primitive is done); or, after a
+     * primitive of fewer than {@link #FEWEST_LIT_TOGETHER} such pixels, lit
+     * and written there one by one. A point's
      * kd and z are those pixel() would light it with (P and N are not read),
      * and a batch lights it to the same bits. (With lights, pixels wait this way measured slower on
      * A4 page-d, 1.015 of its time, one thread: {@link #litPixels}.) True
@@ -460,6 +480,8 @@ public final class FragmentStage implements FragmentSink {
         double b0 = v0[B];
         double db = dv[B];
         LitPoints t = points;
+        PointShader s = shader;
+        boolean later = shortPixelsWait;
         int row = y * width;
         boolean wrote = false;
         boolean mayWait = waits(y);
@@ -472,8 +494,14 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             wrote = true;
+            shortPixels++;
             if (mayWait) {
                 waiting.end(x, y);
+            }
+            if (!later) {
+                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+                panel.setPixel(x, y, z, fogged(z, lit));
+                continue;
             }
             pendingX[n] = x;
             pendingY[n] = y;
@@ -503,6 +531,15 @@ public final class FragmentStage implements FragmentSink {
         }
         pendingCount = 0;
         LitPoints t = points;
+        if (n < FEWEST_LIT_TOGETHER) {
+            PointShader s = shader;
+            for (int i = 0; i < n; i++) {
+                double z = batchZ[i];
+                s.shade(0, 0, z, 0, 0, 0, t.kdRed[i], t.kdGreen[i], t.kdBlue[i], lit);
+                panel.setPixel(pendingX[i], pendingY[i], z, fogged(z, lit));
+            }
+            return;
+        }
         t.count = n;
         shader.shade(t);
         pack(n);
@@ -511,9 +548,16 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
+    /**
+     * Writes the primitive's waiting pixels; the next primitive's short
+     * ambient spans wait too if this one's had enough pixels to light
+     * together, else they are lit one by one (a mesh's faces are alike).
+     */
     @Override
     public void primitiveDone() {
         writePending();
+        shortPixelsWait = shortPixels >= FEWEST_LIT_TOGETHER;
+        shortPixels = 0;
     }
 
     /**
