@@ -463,11 +463,11 @@ public final class FragmentStage implements FragmentSink {
      * points that wait to be lit together ({@link #writePending}, at once
      * when BATCH of them wait, else when the primitive is done); or, after a
      * primitive of fewer than {@link #FEWEST_LIT_TOGETHER} such pixels, lit
-     * and written there one by one. A point's
-     * kd and z are those pixel() would light it with (P and N are not read),
-     * and a batch lights it to the same bits. (With lights, pixels wait this way measured slower on
-     * A4 page-d, 1.015 of its time, one thread: {@link #litPixels}.) True
-     * when a pixel passed.
+     * and written there one by one. A point's kd and z are those pixel()
+     * would light it with (P and N are not read), and a batch lights it to
+     * the same bits. (With lights, pixels that waited this way measured
+     * slower on A4 page-d, 1.015 of its time, one thread: {@link #litPixels}.)
+     * True when a pixel passed.
      */
     private boolean ambientPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
