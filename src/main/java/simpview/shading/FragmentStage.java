@@ -65,9 +65,9 @@ public final class FragmentStage implements FragmentSink {
      * to be lit, fogged and written together ({@link #ambientPixels}), so that
      * a small triangle's few pixels a row make one batch. One thread, against
      * pixel by pixel below 6 (session 14): A3 tomsPageJ (spans of 2.3 pixels
-     * on average) 0.85-0.86 of its time with 16, 0.87 with 6, 0.83 with 64;
-     * pageE 0.97 with 16 and 1.04 with 64, pageF 0.99 and 1.08 (their longer
-     * spans are better a batch of their own, written in runs); with
+     * on average) 0.83-0.85 of its time with 16, 0.87 with 6, 0.83 with 64;
+     * pageE 0.94-0.99 with 16 and 1.04 with 64, pageF 0.99 and 1.08 (their
+     * longer spans are better a batch of their own, written in runs); with
      * {@link #FEWEST_LIT_TOGETHER} as it is, tomsPageJ 0.86, pageH 0.95,
      * pageE 0.97, pageC, pageG and pageI 0.99-1.01.
      */
