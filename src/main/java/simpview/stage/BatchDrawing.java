@@ -133,60 +133,46 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     /**
      * The lowest row a recorded primitive may touch, of its n corners whose
-     * y are v[y], v[y + stride], ...: a row below the lowest corner, so that
-     * a band skips the primitive only when all of it lies a row or more
-     * outside ({@link #mayTouch}).
+     * y are v[y], v[y + stride], ...
+     * <ul>
+     * <li>A line or outline: a row below the lowest corner, so that a band
+     * skips it only when all of it lies a row or more outside
+     * ({@link #mayTouch}).
+     * <li>A filled polygon ({@code filled}), exactly: ceil(lowest - 0.5), the
+     * first row whose centre is at or above its lowest corner, as
+     * {@code TriangleCoverage.firstRow} finds it for each triangle of the
+     * polygon's fan from the same numbers. Each triangle's lowest corner is
+     * at or above the polygon's, and the ceiling keeps the order, so no
+     * triangle covers a lower row. This keeps a band from setting up a
+     * triangle that only comes near its rows: on A3's tomsPageJ, 4,372
+     * set-ups in 16 bands with a line's margin against 3,280 on one thread,
+     * and 4,062 so.
+     * </ul>
      */
-    static double lowRow(double[] v, int y, int n, int stride) {
+    static double lowRow(double[] v, int y, int n, int stride, boolean filled) {
         double low = Double.POSITIVE_INFINITY;
         for (int k = 0; k < n; k++) {
             low = Math.min(low, v[y + k * stride]);
         }
-        return Math.floor(low - 1);
-    }
-
-    /** The highest row a recorded primitive may touch: a row above its highest corner, as {@link #lowRow}. */
-    static double highRow(double[] v, int y, int n, int stride) {
-        double high = Double.NEGATIVE_INFINITY;
-        for (int k = 0; k < n; k++) {
-            high = Math.max(high, v[y + k * stride]);
-        }
-        return Math.ceil(high + 1);
+        return filled ? Math.ceil(low - 0.5) : Math.floor(low - 1);
     }
 
     /**
-     * The lowest row a filled polygon of n corners (y as {@link #lowRow})
-     * may cover, exactly: ceil(lowest - 0.5), the first row whose centre is
-     * at or above its lowest corner, as {@code TriangleCoverage.firstRow}
-     * finds it for each triangle of the polygon's fan from the same numbers.
-     * Each triangle's lowest corner is at or above the polygon's, and the
-     * ceiling keeps the order, so no triangle covers a lower row. Where
-     * {@link #lowRow} keeps a row's margin (for lines), this keeps a band
-     * from setting up a triangle that only comes near its rows: on A3's
-     * tomsPageJ, 4,372 set-ups in 16 bands against 3,280 on one thread, and
-     * 4,062 with this bound.
+     * The highest row a recorded primitive may touch, as {@link #lowRow}: a
+     * row above its highest corner, or for a filled polygon exactly
+     * floor(highest - 0.5).
      */
-    static double lowFillRow(double[] v, int y, int n, int stride) {
-        double low = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < n; k++) {
-            low = Math.min(low, v[y + k * stride]);
-        }
-        return Math.ceil(low - 0.5);
-    }
-
-    /** The highest row a filled polygon may cover, exactly: floor(highest - 0.5), as {@link #lowFillRow}. */
-    static double highFillRow(double[] v, int y, int n, int stride) {
+    static double highRow(double[] v, int y, int n, int stride, boolean filled) {
         double high = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < n; k++) {
             high = Math.max(high, v[y + k * stride]);
         }
-        return Math.floor(high - 0.5);
+        return filled ? Math.floor(high - 0.5) : Math.ceil(high + 1);
     }
 
     /**
      * True when a primitive between rows {@code low} and {@code high}
-     * ({@link #lowRow}, {@link #highRow}, or {@link #lowFillRow},
-     * {@link #highFillRow}) may touch rows from &lt;= y &lt; to:
+     * ({@link #lowRow}, {@link #highRow}) may touch rows from &lt;= y &lt; to:
      * it is skipped only when it surely lies outside (a NaN row never does).
      */
     static boolean mayTouch(double low, double high, int from, int to) {

@@ -217,10 +217,8 @@ public final class CuedPrimitives {
             kind[size] = (byte) what;
             owner[size] = by;
             boolean filled = what == Painter.FILLED;
-            lowY[size] = filled ? BatchDrawing.lowFillRow(p, at + Vertex.Y, corners, Vertex.NUMBERS)
-                    : BatchDrawing.lowRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
-            highY[size] = filled ? BatchDrawing.highFillRow(p, at + Vertex.Y, corners, Vertex.NUMBERS)
-                    : BatchDrawing.highRow(p, at + Vertex.Y, corners, Vertex.NUMBERS);
+            lowY[size] = BatchDrawing.lowRow(p, at + Vertex.Y, corners, Vertex.NUMBERS, filled);
+            highY[size] = BatchDrawing.highRow(p, at + Vertex.Y, corners, Vertex.NUMBERS, filled);
             size++;
             return corners;
         }

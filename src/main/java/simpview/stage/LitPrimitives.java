@@ -294,11 +294,8 @@ public final class LitPrimitives {
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
-            boolean filled = what == FILL;
-            double low = filled ? BatchDrawing.lowFillRow(v, at + FragmentLayout.Y, n, stride)
-                    : BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride);
-            double high = filled ? BatchDrawing.highFillRow(v, at + FragmentLayout.Y, n, stride)
-                    : BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride);
+            double low = BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride, what == FILL);
+            double high = BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride, what == FILL);
             lowY[size] = low;
             highY[size] = high;
             start[size + 1] = at + count;

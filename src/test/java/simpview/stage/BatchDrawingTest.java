@@ -102,11 +102,11 @@ class BatchDrawingTest {
     }
 
     /**
-     * A filled polygon's rows as the bands are told them (lowFillRow,
-     * highFillRow) hold every row the rasterizer covers, so a band that
+     * A filled polygon's rows as the bands are told them (lowRow and
+     * highRow, filled) hold every row the rasterizer covers, so a band that
      * skips it misses no pixel: random polygons of 3 to 6 corners, on and
      * near pixel centres and edges; and they are narrower than the rows
-     * kept for lines (lowRow, highRow), by a row or more at each end.
+     * kept for lines, by a row or more at each end.
      */
     @Test
     void aFilledPolygonsRowsHoldEveryRowItCovers() {
@@ -143,10 +143,10 @@ class BatchDrawingTest {
                 v[i * stride + FragmentLayout.Y] = y;
                 v[i * stride + FragmentLayout.Q] = 1;
             }
-            double low = BatchDrawing.lowFillRow(v, FragmentLayout.Y, n, stride);
-            double high = BatchDrawing.highFillRow(v, FragmentLayout.Y, n, stride);
-            assertTrue(low > BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride)
-                    && high < BatchDrawing.highRow(v, FragmentLayout.Y, n, stride), "polygon " + k);
+            double low = BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride, true);
+            double high = BatchDrawing.highRow(v, FragmentLayout.Y, n, stride, true);
+            assertTrue(low > BatchDrawing.lowRow(v, FragmentLayout.Y, n, stride, false)
+                    && high < BatchDrawing.highRow(v, FragmentLayout.Y, n, stride, false), "polygon " + k);
             rows[0] = Integer.MAX_VALUE;
             rows[1] = Integer.MIN_VALUE;
             rasterizer.fill(v, n, 1, 100, 100, sink);
