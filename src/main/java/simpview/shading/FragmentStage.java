@@ -62,7 +62,7 @@ public final class FragmentStage implements FragmentSink {
     /**
      * The same for the ambient term alone, but a short span's pixels are not
      * lit one by one: they wait with the rest of the primitive's short spans
-     * to be lit, fogged and written together ({@link #ambientPixels}), so that
+     * to be lit, fogged and written together ({@link #phongPixels}), so that
      * a small triangle's few pixels a row make one batch. One thread, against
      * pixel by pixel below 6 (session 14): A3 tomsPageJ (spans of 2.3 pixels
      * on average) 0.83-0.85 of its time with 16, 0.87 with 6, 0.83 with 64;
@@ -429,8 +429,7 @@ public final class FragmentStage implements FragmentSink {
         int start = Math.max(from, 0);
         boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
         if (end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN)) {
-            return ambient ? ambientPixels(y, from, start, end, q0, dq, v0, dv)
-                    : litPixels(y, from, start, end, q0, dq, v0, dv);
+            return phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         writePending(); // the batches below use the same arrays
         if (defers && paysToWait(shader)) {
@@ -458,69 +457,7 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * A short phong span lit by the ambient term alone, pixel by pixel: the
-     * depth test at each, and kd resolved at each that passes, into the
-     * points that wait to be lit together ({@link #writePending}, at once
-     * when BATCH of them wait, else when the primitive is done); or, after a
-     * primitive of fewer than {@link #FEWEST_LIT_TOGETHER} such pixels, lit
-     * and written there one by one. A point's kd and z are those pixel()
-     * would light it with (P and N are not read), and a batch lights it to
-     * the same bits. (With lights, pixels that waited this way measured
-     * slower on A4 page-d, 1.015 of its time, one thread: {@link #litPixels}.)
-     * True when a pixel passed.
-     */
-    private boolean ambientPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
-            double[] dv) {
-        double z0 = v0[Z];
-        double dz = dv[Z];
-        double r0 = v0[R];
-        double dr = dv[R];
-        double g0 = v0[G];
-        double dg = dv[G];
-        double b0 = v0[B];
-        double db = dv[B];
-        LitPoints t = points;
-        PointShader s = shader;
-        boolean later = shortPixelsWait;
-        int row = y * width;
-        boolean wrote = false;
-        boolean mayWait = waits(y);
-        int n = pendingCount;
-        for (int x = start; x < end; x++) {
-            int k = x - from;
-            double inv = 1 / (q0 + k * dq);
-            double z = (z0 + k * dz) * inv;
-            if (!nearer(row + x, z)) {
-                continue;
-            }
-            wrote = true;
-            shortPixels++;
-            if (mayWait) {
-                waiting.end(x, y);
-            }
-            if (!later) {
-                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
-                panel.setPixel(x, y, z, fogged(z, lit));
-                continue;
-            }
-            pendingX[n] = x;
-            pendingY[n] = y;
-            batchZ[n] = z;
-            t.kdRed[n] = (r0 + k * dr) * inv;
-            t.kdGreen[n] = (g0 + k * dg) * inv;
-            t.kdBlue[n] = (b0 + k * db) * inv;
-            if (++n == BATCH) {
-                pendingCount = n;
-                writePending();
-                n = 0;
-            }
-        }
-        pendingCount = n;
-        return wrote;
-    }
-
-    /**
-     * The pixels that wait ({@link #ambientPixels}) lit by the shader, fogged
+     * The pixels that wait ({@link #phongPixels}) lit by the shader, fogged
      * and packed together ({@link #pack}), and written in the order they
      * passed the depth test; none wait after.
      */
@@ -561,11 +498,18 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * A short phong span lit by lights (the shader reads P and N), pixel by
-     * pixel: kd, P and N resolved at each pixel that passes the depth test,
-     * and lit there alone. True when a pixel was written.
+     * A short phong span, pixel by pixel: the depth test at each, and kd, P
+     * and N resolved at each pixel that passes (P and N only where the
+     * shader reads them). Lit there alone; or, lit by the ambient term alone,
+     * kd and z wait in the points to be lit together ({@link #writePending},
+     * at once when BATCH of them wait, else when the primitive is done),
+     * unless the primitive before had fewer than {@link #FEWEST_LIT_TOGETHER}
+     * such pixels. A point's numbers are those pixel() would light it with,
+     * and a batch lights it to the same bits. (With lights, pixels that
+     * waited measured slower on A4 page-d, 1.015 of its time, one thread.)
+     * True when a pixel passed.
      */
-    private boolean litPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
+    private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
         double z0 = v0[Z];
         double dz = dv[Z];
@@ -586,9 +530,13 @@ public final class FragmentStage implements FragmentSink {
         double nz0 = v0[NZ];
         double dnz = dv[NZ];
         PointShader s = shader;
+        boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
+        boolean later = !point && shortPixelsWait;
+        LitPoints t = points;
         int row = y * width;
-        boolean wrote = false;
+        int passed = 0;
         boolean mayWait = waits(y);
+        int n = pendingCount;
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -596,16 +544,38 @@ public final class FragmentStage implements FragmentSink {
             if (!nearer(row + x, z)) {
                 continue;
             }
-            wrote = true;
+            passed++;
             if (mayWait) {
                 waiting.end(x, y);
             }
-            s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
-                    (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
-                    (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            if (later) {
+                pendingX[n] = x;
+                pendingY[n] = y;
+                batchZ[n] = z;
+                t.kdRed[n] = (r0 + k * dr) * inv;
+                t.kdGreen[n] = (g0 + k * dg) * inv;
+                t.kdBlue[n] = (b0 + k * db) * inv;
+                if (++n == BATCH) {
+                    pendingCount = n;
+                    writePending();
+                    n = 0;
+                }
+                continue;
+            }
+            if (point) {
+                s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                        (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
+                        (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            } else {
+                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+            }
             panel.setPixel(x, y, z, fogged(z, lit));
         }
-        return wrote;
+        pendingCount = n;
+        if (!point) {
+            shortPixels += passed;
+        }
+        return passed > 0;
     }
 
     /**
