@@ -42,13 +42,19 @@ public final class FragmentStage implements FragmentSink {
     /** Pixels of a span done together. */
     static final int BATCH = 64;
     /**
-     * The fewest lights for which a long phong span's pixels wait to be shaded
-     * at the end ({@link #shadeLater}). The wait costs about the same at
-     * every pixel (keeping the span, marking the pixel, its 1 / q and z again
-     * at the end); what it saves is the shading of the pixels overwritten
-     * later, which grows with the lights. Measured on the course's pages, one
-     * thread against shading at once (session 9): one light (A4 page-d)
-     * 1.05x slower, two (page-e) and three (page-f2, page-h) 0.86-0.89x.
+     * The fewest lights for which a phong span's pixels wait to be shaded at
+     * the end ({@link #shadeLater}). The wait costs about the same at every
+     * pixel (keeping the span, marking the pixel, its 1 / q and z again at
+     * the end); what it saves is the shading of the pixels overwritten later,
+     * which grows with the lights, and at the end a look's pixels are lit in
+     * full batches ({@link #WAITING_BATCH}). Measured on the course's pages,
+     * one thread against shading at once (session 9, long spans): one light
+     * (A4 page-d) 1.05x slower, two (page-e) and three (page-f2, page-h)
+     * 0.86-0.89x. Short spans wait too since the full batches (session 15:
+     * page-f2 0.92, page-e 0.95, page-h 0.95 of the time with them lit one
+     * pixel at a time). With one light, spans of 16 pixels or more waiting
+     * made A4 page-a3, page-b3 and page-f1 0.70-0.89 of their time, but
+     * page-d 1.02-1.07, so one light still shades at once.
      */
     static final int LIGHTS_TO_WAIT = 2;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
@@ -81,11 +87,29 @@ public final class FragmentStage implements FragmentSink {
      * with every short span's pixels waiting, and 0.99-1.01 so (session 14).
      */
     static final int FEWEST_LIT_TOGETHER = 6;
+    /**
+     * Waiting pixels lit together at the picture's end ({@link #shadeWaiting}):
+     * the most in one batch, made of the runs of every span of one look. C2
+     * compiles a batch's loops by how many points they saw: at about 64 and
+     * fewer into 256-bit vectors, one a turn, with scalar starts and ends;
+     * beyond into 512-bit vectors, unrolled. Three lights took 10.4 ns a
+     * point in batches of 64, 8.1 in batches of 128 and 7.7 in batches of 256
+     * (one process each, this host, session 15); the runs of the course's
+     * pages averaged 33-38 pixels. 256 points' arrays would not fit the
+     * first-level cache beside the rest (session 10: slower on A3's pages).
+     */
+    static final int WAITING_BATCH = 128;
+    /**
+     * Looks searched for a kept span's before it is given a new one
+     * ({@link #lookOf}): a scene of many looks, each drawn once, costs no
+     * more a span.
+     */
+    private static final int LOOKS_SEARCHED = 8;
     /** 0, 1, 2, ...: k0 + RAMP[j] is k0 + j, exactly. */
-    private static final double[] RAMP = new double[BATCH];
+    private static final double[] RAMP = new double[WAITING_BATCH];
 
     static {
-        for (int j = 0; j < BATCH; j++) {
+        for (int j = 0; j < WAITING_BATCH; j++) {
             RAMP[j] = j;
         }
     }
@@ -102,13 +126,15 @@ public final class FragmentStage implements FragmentSink {
     // is P's z under phong, so the same array as points'); their packed
     // colours, and the fog's t at each. Their colours and phong attributes
     // are in points.
-    private final double[] fogT = new double[BATCH];
-    private final LitPoints points = new LitPoints(BATCH);
+    // A span's batches use the first BATCH places; the waiting pixels lit at
+    // the end, WAITING_BATCH.
+    private final double[] fogT = new double[WAITING_BATCH];
+    private final LitPoints points = new LitPoints(WAITING_BATCH);
     private final int[] batchX = new int[BATCH];
-    private final double[] batchK = new double[BATCH];
-    private final double[] batchInverse = new double[BATCH];
+    private final double[] batchK = new double[WAITING_BATCH];
+    private final double[] batchInverse = new double[WAITING_BATCH];
     private final double[] batchZ = points.pz;
-    private final int[] colours = new int[BATCH];
+    private final int[] colours = new int[WAITING_BATCH];
     // Whether every pixel of the batch last gathered passed the depth test.
     private boolean whole;
     // The pixels of short phong spans that passed the depth test (their
@@ -138,16 +164,32 @@ public final class FragmentStage implements FragmentSink {
     private boolean defers;
     private Provenance owners;
     // The kept phong spans that won a pixel: q0, dq, then v0 and dv of the
-    // phong channels; where k counts from; who drew them; their look.
+    // phong channels; where k counts from; who drew them; their look (an
+    // index into lookShader and lookFog).
     private int spanCount;
     private double[] spanNumbers = new double[64 * SPAN_NUMBERS];
     private int[] spanFrom = new int[64];
     private int[] spanOwner = new int[64];
-    private PointShader[] spanShader = new PointShader[64];
-    private Fog[] spanFog = new Fog[64];
-    // A kept span's starts and slopes, laid out as the rasterizers give them.
-    private final double[] keptV0 = new double[FragmentLayout.PHONG_CHANNELS];
-    private final double[] keptDv = new double[FragmentLayout.PHONG_CHANNELS];
+    private int[] spanLook = new int[64];
+    // The kept spans' looks, each shader and fog once (but see lookOf).
+    private int lookCount;
+    private PointShader[] lookShader = new PointShader[8];
+    private Fog[] lookFog = new Fog[8];
+    // The runs of waiting pixels at the picture's end, in row order: row,
+    // first x, end x and span, RUN_NUMBERS to a run; then their indices by
+    // look (runOrder), each look's from lookStart[look].
+    private static final int RUN_NUMBERS = 4;
+    private int[] runNumbers = new int[256 * RUN_NUMBERS];
+    private int[] runOrder = new int[256];
+    private int[] lookStart = new int[9];
+    // A batch of waiting pixels: its pieces of runs, each at x, y, so long,
+    // from place at in the batch, of span pieceSpan.
+    private int pieceCount;
+    private final int[] pieceX = new int[WAITING_BATCH];
+    private final int[] pieceY = new int[WAITING_BATCH];
+    private final int[] pieceLength = new int[WAITING_BATCH];
+    private final int[] pieceAt = new int[WAITING_BATCH];
+    private final int[] pieceSpan = new int[WAITING_BATCH];
 
     /**
      * Writes to {@code panel} (panel coordinates, y up), depth-tested against
@@ -235,7 +277,7 @@ public final class FragmentStage implements FragmentSink {
         this.owners = owners;
     }
 
-    /** True when a long span lit by {@code shader} is shaded at the end by a stage that defers ({@link #LIGHTS_TO_WAIT}). */
+    /** True when phong spans lit by {@code shader} wait for the end, if the stage defers ({@link #LIGHTS_TO_WAIT}). */
     public static boolean paysToWait(PointShader shader) {
         return shader.lightCount() >= LIGHTS_TO_WAIT;
     }
@@ -253,9 +295,14 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * Shades every pixel of this stage's rows that waits ({@link #shadeLater}),
-     * a run of one span's pixels at a time, and ends the waits: after the
-     * last fragment of the picture, on the thread that draws these rows.
+     * Shades every pixel of this stage's rows that waits ({@link #shadeLater})
+     * and ends the waits: after the last fragment of the picture, on the
+     * thread that draws these rows. The pixels are lit a look at a time, in
+     * batches of up to {@link #WAITING_BATCH} made of the runs of that look's
+     * spans, row after row, and each run is written where it is. No two
+     * waiting pixels are the same pixel, so the order of the writes cannot
+     * change the picture or the owners; and a point is lit to the same bits
+     * in a batch of any size.
      */
     public void shadeWaiting() {
         writePending();
@@ -264,7 +311,43 @@ public final class FragmentStage implements FragmentSink {
         }
         PointShader shaderBefore = shader;
         Fog fogBefore = fog;
+        findRuns();
+        for (int look = 0; look < lookCount; look++) {
+            shader = lookShader[look];
+            fog = lookFog[look];
+            int filled = 0;
+            for (int r = lookStart[look]; r < lookStart[look + 1]; r++) {
+                int o = runOrder[r] * RUN_NUMBERS;
+                int y = runNumbers[o];
+                int span = runNumbers[o + 3];
+                for (int x = runNumbers[o + 1], stop = runNumbers[o + 2]; x < stop;) {
+                    int n = Math.min(stop - x, WAITING_BATCH - filled);
+                    addPiece(span, y, x, n, filled);
+                    filled += n;
+                    x += n;
+                    if (filled == WAITING_BATCH) {
+                        shadePieces(filled);
+                        filled = 0;
+                    }
+                }
+            }
+            if (filled > 0) {
+                shadePieces(filled);
+            }
+        }
+        forgetSpans();
+        shader = shaderBefore;
+        fog = fogBefore;
+    }
+
+    /**
+     * The runs of waiting pixels of this stage's rows (neighbours that wait
+     * for one span), found row by row, and their order by look
+     * (runOrder, lookStart); the waits end.
+     */
+    private void findRuns() {
         WaitingPixels w = waiting;
+        int count = 0;
         for (int y = rowFrom; y < rowTo; y++) {
             int x = w.firstIn(y);
             int end = w.endIn(y);
@@ -278,47 +361,96 @@ public final class FragmentStage implements FragmentSink {
                 do {
                     x++;
                 } while (x < end && w.at(x, y) == span);
-                shadeRun(span, y, first, x);
+                if (count == runOrder.length) {
+                    runOrder = Arrays.copyOf(runOrder, 2 * count);
+                    runNumbers = Arrays.copyOf(runNumbers, 2 * count * RUN_NUMBERS);
+                }
+                int o = count * RUN_NUMBERS;
+                runNumbers[o] = y;
+                runNumbers[o + 1] = first;
+                runNumbers[o + 2] = x;
+                runNumbers[o + 3] = span;
+                count++;
             }
             w.clearRows(y, y + 1);
         }
-        forgetSpans();
-        shader = shaderBefore;
-        fog = fogBefore;
+        // A counting sort by look, each look's runs in row order.
+        if (lookStart.length < lookCount + 1) {
+            lookStart = new int[lookCount + 1];
+        }
+        Arrays.fill(lookStart, 0, lookCount + 1, 0);
+        for (int r = 0; r < count; r++) {
+            lookStart[spanLook[runNumbers[r * RUN_NUMBERS + 3]] + 1]++;
+        }
+        for (int look = 0; look < lookCount; look++) {
+            lookStart[look + 1] += lookStart[look];
+        }
+        for (int r = 0; r < count; r++) {
+            int look = spanLook[runNumbers[r * RUN_NUMBERS + 3]];
+            runOrder[lookStart[look]++] = r;
+        }
+        // Each start was moved on to the next look's start: moved back.
+        for (int look = lookCount; look > 0; look--) {
+            lookStart[look] = lookStart[look - 1];
+        }
+        lookStart[0] = 0;
     }
 
-    /** Pixels first &lt;= x &lt; stop of row y, all waiting for the kept span: shaded and written, a batch at a time. */
-    private void shadeRun(int span, int y, int first, int stop) {
+    /**
+     * Pixels x &lt;= x' &lt; x + n of row y, waiting for the kept span, put in
+     * the batch from place {@code at} on: k, 1 / q, z, kd and, where the
+     * look reads them, P and N, each as pixel() has it.
+     */
+    private void addPiece(int span, int y, int x, int n, int at) {
+        int p = pieceCount++;
+        pieceX[p] = x;
+        pieceY[p] = y;
+        pieceLength[p] = n;
+        pieceAt[p] = at;
+        pieceSpan[p] = span;
         int o = span * SPAN_NUMBERS;
-        double q0 = spanNumbers[o];
-        double dq = spanNumbers[o + 1];
-        System.arraycopy(spanNumbers, o + 2, keptV0, 0, FragmentLayout.PHONG_CHANNELS);
-        System.arraycopy(spanNumbers, o + 2 + FragmentLayout.PHONG_CHANNELS, keptDv, 0,
-                FragmentLayout.PHONG_CHANNELS);
-        int from = spanFrom[span];
-        shader = spanShader[span];
-        fog = spanFog[span];
-        if (owners != null) {
-            owners.beginAt(y, spanOwner[span]);
+        double[] numbers = spanNumbers;
+        double q0 = numbers[o];
+        double dq = numbers[o + 1];
+        int v0 = o + 2;
+        int dv = v0 + FragmentLayout.PHONG_CHANNELS;
+        double z0 = numbers[v0 + Z];
+        double dz = numbers[dv + Z];
+        // gather's first loop, written out again: the two calling one shared
+        // method measured 1.02-1.04x slower on page-e, one thread (session 9).
+        double k0 = x - spanFrom[span];
+        int stop = at + n;
+        for (int j = at; j < stop; j++) {
+            double k = k0 + RAMP[j - at];
+            double w = 1 / (q0 + k * dq);
+            batchK[j] = k;
+            batchInverse[j] = w;
+            batchZ[j] = (z0 + k * dz) * w;
         }
-        double z0 = keptV0[Z];
-        double dz = keptDv[Z];
-        for (int at = first; at < stop; at += BATCH) {
-            int n = Math.min(BATCH, stop - at);
-            // gather's first loop, written out again: the two calling one shared
-            // method measured 1.02-1.04x slower on page-e, one thread (session 9).
-            double k0 = at - from;
-            for (int j = 0; j < n; j++) {
-                double k = k0 + RAMP[j];
-                double w = 1 / (q0 + k * dq);
-                batchK[j] = k;
-                batchInverse[j] = w;
-                batchZ[j] = (z0 + k * dz) * w;
+        LitPoints t = points;
+        if (shader.usesPoint()) {
+            resolve(numbers[v0 + PX], numbers[dv + PX], t.px, numbers[v0 + PY], numbers[dv + PY], t.py, at, stop);
+            resolve(numbers[v0 + NX], numbers[dv + NX], t.nx, numbers[v0 + NY], numbers[dv + NY], t.ny,
+                    numbers[v0 + NZ], numbers[dv + NZ], t.nz, at, stop);
+        }
+        resolve(numbers[v0 + R], numbers[dv + R], t.kdRed, numbers[v0 + G], numbers[dv + G], t.kdGreen,
+                numbers[v0 + B], numbers[dv + B], t.kdBlue, at, stop);
+    }
+
+    /** The batch's first n points lit by the look, fogged, packed and written, a piece at a time. */
+    private void shadePieces(int n) {
+        LitPoints t = points;
+        t.count = n;
+        shader.shade(t);
+        pack(n);
+        for (int p = 0; p < pieceCount; p++) {
+            int y = pieceY[p];
+            if (owners != null) {
+                owners.beginAt(y, spanOwner[pieceSpan[p]]);
             }
-            phong(n, keptV0, keptDv);
-            pack(n);
-            panel.setRun(at, y, n, batchZ, colours, 0);
+            panel.setRun(pieceX[p], y, pieceLength[p], batchZ, colours, pieceAt[p]);
         }
+        pieceCount = 0;
     }
 
     /**
@@ -350,8 +482,9 @@ public final class FragmentStage implements FragmentSink {
 
     /** No span kept, and the looks of those that were let go. */
     private void forgetSpans() {
-        Arrays.fill(spanShader, 0, spanCount, null);
-        Arrays.fill(spanFog, 0, spanCount, null);
+        Arrays.fill(lookShader, 0, lookCount, null);
+        Arrays.fill(lookFog, 0, lookCount, null);
+        lookCount = 0;
         spanCount = 0;
     }
 
@@ -363,8 +496,7 @@ public final class FragmentStage implements FragmentSink {
             spanNumbers = Arrays.copyOf(spanNumbers, capacity * SPAN_NUMBERS);
             spanFrom = Arrays.copyOf(spanFrom, capacity);
             spanOwner = Arrays.copyOf(spanOwner, capacity);
-            spanShader = Arrays.copyOf(spanShader, capacity);
-            spanFog = Arrays.copyOf(spanFog, capacity);
+            spanLook = Arrays.copyOf(spanLook, capacity);
         }
         int o = k * SPAN_NUMBERS;
         spanNumbers[o] = q0;
@@ -373,10 +505,30 @@ public final class FragmentStage implements FragmentSink {
         System.arraycopy(dv, 0, spanNumbers, o + 2 + FragmentLayout.PHONG_CHANNELS, FragmentLayout.PHONG_CHANNELS);
         spanFrom[k] = from;
         spanOwner[k] = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
-        spanShader[k] = shader;
-        spanFog[k] = fog;
+        spanLook[k] = lookOf(shader, fog);
         spanCount = k + 1;
         return k;
+    }
+
+    /**
+     * The index of the look drawn with this shader and fog, the same
+     * objects; a new one when it is none of the last {@link #LOOKS_SEARCHED}
+     * (two indices for one look light its runs in two batches, to the same
+     * bits).
+     */
+    private int lookOf(PointShader s, Fog f) {
+        for (int look = lookCount - 1; look >= 0 && look >= lookCount - LOOKS_SEARCHED; look--) {
+            if (lookShader[look] == s && lookFog[look] == f) {
+                return look;
+            }
+        }
+        if (lookCount == lookShader.length) {
+            lookShader = Arrays.copyOf(lookShader, 2 * lookCount);
+            lookFog = Arrays.copyOf(lookFog, 2 * lookCount);
+        }
+        lookShader[lookCount] = s;
+        lookFog[lookCount] = f;
+        return lookCount++;
     }
 
     /** The next primitives carry their colour (flat, gouraud, wire, lines), fogged by {@code fog}. */
@@ -424,17 +576,18 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
-    /** A phong span, a batch at a time, or pixel by pixel when short; true when a pixel was written. */
+    /** A phong span: kept for the end, or a batch at a time, or pixel by pixel when short; true if one was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
+        if (defers && paysToWait(shader)) {
+            writePending(); // the batches below use the same arrays
+            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
+        }
         boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
         if (end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN)) {
             return phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         writePending(); // the batches below use the same arrays
-        if (defers && paysToWait(shader)) {
-            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
-        }
         boolean wrote = false;
         boolean mayWait = waits(y);
         for (int first = start; first < end; first += BATCH) {
@@ -505,8 +658,9 @@ public final class FragmentStage implements FragmentSink {
      * at once when BATCH of them wait, else when the primitive is done),
      * unless the primitive before had fewer than {@link #FEWEST_LIT_TOGETHER}
      * such pixels. A point's numbers are those pixel() would light it with,
-     * and a batch lights it to the same bits. (With lights, pixels that
-     * waited measured slower on A4 page-d, 1.015 of its time, one thread.)
+     * and a batch lights it to the same bits. (With a light, pixels that
+     * waited measured slower on A4 page-d, 1.015 of its time, one thread;
+     * with {@link #LIGHTS_TO_WAIT} lights a span waits for the end instead.)
      * True when a pixel passed.
      */
     private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
@@ -675,19 +829,19 @@ public final class FragmentStage implements FragmentSink {
     private void phong(int n, double[] v0, double[] dv) {
         LitPoints t = points;
         if (shader.usesPoint()) { // else the ambient term alone: P and N are not read
-            resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, n);
-            resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, n);
+            resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, 0, n);
+            resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, 0, n);
         }
-        resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, n);
+        resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, 0, n);
         t.count = n;
         shader.shade(t);
     }
 
-    /** Two channels at each gathered pixel: (c0 + k dc) / q. */
-    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, int n) {
+    /** Two channels at the batch's pixels from &lt;= i &lt; to: (c0 + k dc) / q. */
+    private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, int from, int to) {
         double[] ks = batchK;
         double[] inv = batchInverse;
-        for (int i = 0; i < n; i++) {
+        for (int i = from; i < to; i++) {
             double k = ks[i];
             double w = inv[i];
             a[i] = (a0 + k * da) * w;
@@ -695,12 +849,12 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
-    /** Three channels at each gathered pixel: (c0 + k dc) / q. */
+    /** Three channels at the batch's pixels from &lt;= i &lt; to: (c0 + k dc) / q. */
     private void resolve(double a0, double da, double[] a, double b0, double db, double[] b, double c0, double dc,
-            double[] c, int n) {
+            double[] c, int from, int to) {
         double[] ks = batchK;
         double[] inv = batchInverse;
-        for (int i = 0; i < n; i++) {
+        for (int i = from; i < to; i++) {
             double k = ks[i];
             double w = inv[i];
             a[i] = (a0 + k * da) * w;

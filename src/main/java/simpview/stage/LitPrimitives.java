@@ -88,7 +88,7 @@ public final class LitPrimitives {
      * (whatever the rows held before), and {@link #flush} the rows no drawer
      * reached. The panel's rows that the canvas's clear owes
      * ({@code panelRows}) are made the same way; the drawers start on them at
-     * once, while the scene's first batch is read. Long phong spans of two
+     * once, while the scene's first batch is read. Phong spans of two
      * lights or more wait in {@code waiting} (the panel's) and each band's
      * drawer shades its rows' at the end ({@link FragmentStage#shadeLater}); a
      * batch kept whole is shaded at once. The drawers' fragment stages come

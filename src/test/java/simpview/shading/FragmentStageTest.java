@@ -199,6 +199,55 @@ class FragmentStageTest {
     }
 
     /**
+     * Waiting pixels of several looks, lit at the end a look at a time in
+     * batches of runs from many rows, draw what they draw shaded at once:
+     * looks that come back after others (more of them than the stage
+     * searches for a kept span's look), runs cut at a batch's end, and spans
+     * that hide others' waiting pixels.
+     */
+    @Property(tries = 60, seed = "1204015")
+    void waitingPixelsOfSeveralLooksDrawWhatTheyDrawShadedAtOnce(@ForAll long seed) {
+        Random random = new Random(seed);
+        int lookCount = 1 + random.nextInt(12);
+        PointShader[] shaders = new PointShader[lookCount];
+        Fog[] fogs = new Fog[lookCount];
+        for (int i = 0; i < lookCount; i++) {
+            LitState state = scene(random);
+            state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // two lights at least: phong pixels then wait
+            state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+            shaders[i] = state.frozenShader().get();
+            fogs[i] = state.fog();
+        }
+        LitState first = scene(random);
+        Stage atOnce = Stage.make(first, true);
+        Stage atEnd = Stage.make(first, true);
+        atEnd.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, atEnd.provenance());
+        atEnd.fragments().clearWaits();
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        int spans = 1 + random.nextInt(400);
+        for (int s = 0; s < spans; s++) {
+            int look = random.nextInt(lookCount);
+            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+                stage.fragments().phong(shaders[look], fogs[look]);
+                stage.provenance().begin(s);
+            }
+            int y = random.nextInt(SIZE);
+            int from = random.nextInt(SIZE + 40) - 30;
+            int to = from + (random.nextBoolean() ? random.nextInt(20) : random.nextInt(SIZE + 10));
+            double[] q = randomSpan(random, v0, dv);
+            atOnce.fragments().span(y, from, to, q[0], q[1], v0, dv);
+            atEnd.fragments().span(y, from, to, q[0], q[1], v0, dv);
+            atOnce.fragments().primitiveDone();
+            atEnd.fragments().primitiveDone();
+        }
+        atEnd.fragments().shadeWaiting();
+        assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()), "the picture");
+        assertArrayEquals(atOnce.zbuffer().copyDepths(), atEnd.zbuffer().copyDepths(), "the depths");
+        assertArrayEquals(atOnce.provenance().copyOwners(), atEnd.provenance().copyOwners(), "the provenance");
+    }
+
+    /**
      * A primitive's short phong spans (one per row, as a rasterizer gives
      * them) draw what the same pixels draw one by one: with and without
      * lights, more pixels than a batch holds, and a second primitive over the
