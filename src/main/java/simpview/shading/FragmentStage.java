@@ -349,18 +349,12 @@ public final class FragmentStage implements FragmentSink {
         WaitingPixels w = waiting;
         int count = 0;
         for (int y = rowFrom; y < rowTo; y++) {
-            int x = w.firstIn(y);
-            int end = w.endIn(y);
-            while (x < end) {
-                int span = w.at(x, y);
+            for (int first = w.firstIn(y), end = w.endIn(y), x; first < end; first = x) {
+                int span = w.at(first, y);
+                x = w.runEnd(first, y);
                 if (span == WaitingPixels.NONE) {
-                    x++;
                     continue;
                 }
-                int first = x;
-                do {
-                    x++;
-                } while (x < end && w.at(x, y) == span);
                 if (count == runOrder.length) {
                     runOrder = Arrays.copyOf(runOrder, 2 * count);
                     runNumbers = Arrays.copyOf(runNumbers, 2 * count * RUN_NUMBERS);

@@ -68,6 +68,26 @@ public final class WaitingPixels {
         return x >= from[y] && x < to[y] ? span[y * width + x] : NONE;
     }
 
+    /**
+     * One past the last pixel of the run from (x, y) on that waits for what
+     * (x, y) waits for (or for nothing), within row y's waiting pixels:
+     * firstIn(y) &lt;= x &lt; endIn(y).
+     */
+    public int runEnd(int x, int y) {
+        int end = to[y];
+        if (x < from[y] || x >= end) {
+            throw new IndexOutOfBoundsException("x " + x + " outside row " + y + "'s waiting pixels");
+        }
+        int[] s = span;
+        int row = y * width;
+        int waitsFor = s[row + x];
+        int e = x + 1;
+        while (e < end && s[row + e] == waitsFor) {
+            e++;
+        }
+        return e;
+    }
+
     /** Pixels x0 &lt;= x &lt; x1 of row y are written now: they wait no more. */
     public void endRun(int y, int x0, int x1) {
         int a = Math.max(x0, from[y]);
