@@ -48,6 +48,14 @@ class FragmentStageTest {
             }
             return new Stage(fragments, image, zbuffer, provenance);
         }
+
+        /** A phong stage whose pixels wait to be shaded at the end ({@link FragmentStage#shadeLater}). */
+        static Stage deferring(LitState state) {
+            Stage stage = make(state, true);
+            stage.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, stage.provenance());
+            stage.fragments().clearWaits();
+            return stage;
+        }
     }
 
     private static LitState scene(Random random) {
@@ -155,9 +163,7 @@ class FragmentStageTest {
         state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
         PointShader frozen = state.frozenShader().get();
         Stage atOnce = Stage.make(state, true);
-        Stage atEnd = Stage.make(state, true);
-        atEnd.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, atEnd.provenance());
-        atEnd.fragments().clearWaits();
+        Stage atEnd = Stage.deferring(state);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         double[] v = new double[CHANNELS];
@@ -220,9 +226,7 @@ class FragmentStageTest {
         }
         LitState first = scene(random);
         Stage atOnce = Stage.make(first, true);
-        Stage atEnd = Stage.make(first, true);
-        atEnd.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, atEnd.provenance());
-        atEnd.fragments().clearWaits();
+        Stage atEnd = Stage.deferring(first);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         int spans = 1 + random.nextInt(400);
