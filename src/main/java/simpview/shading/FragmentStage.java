@@ -42,21 +42,26 @@ public final class FragmentStage implements FragmentSink {
     /** Pixels of a span done together. */
     static final int BATCH = 64;
     /**
-     * The fewest lights for which a phong span's pixels wait to be shaded at
-     * the end ({@link #shadeLater}). The wait costs about the same at every
-     * pixel (keeping the span, marking the pixel, its 1 / q and z again at
-     * the end); what it saves is the shading of the pixels overwritten later,
-     * which grows with the lights, and at the end a look's pixels are lit in
-     * full batches ({@link #WAITING_BATCH}). Measured on the course's pages,
-     * one thread against shading at once (session 9, long spans): one light
-     * (A4 page-d) 1.05x slower, two (page-e) and three (page-f2, page-h)
-     * 0.86-0.89x. Short spans wait too since the full batches (session 15:
-     * page-f2 0.92, page-e 0.95, page-h 0.95 of the time with them lit one
-     * pixel at a time). With one light, spans of 16 pixels or more waiting
-     * made A4 page-a3, page-b3 and page-f1 0.70-0.89 of their time, but
-     * page-d 1.02-1.07, so one light still shades at once.
+     * The fewest lights for which a long phong span's pixels wait to be
+     * shaded at the end ({@link #shadeLater}). The wait costs about the same
+     * at every pixel (keeping the span, marking the pixel, its 1 / q and z
+     * again at the end); what it saves is the shading of the pixels
+     * overwritten later, which grows with the lights, and at the end a look's
+     * pixels are lit in full batches ({@link #WAITING_BATCH}). One light, one
+     * thread, against shading at once (session 15, with the full batches and
+     * no wait ended as a write passes): A4 page-f1 0.86, page-b3 0.81-0.83,
+     * page-a3 0.85, page-d and page-g 0.97-1.00. (Session 9, a run a batch and
+     * every wait ended at once: one light, page-d, 1.05x slower.)
      */
-    static final int LIGHTS_TO_WAIT = 2;
+    static final int LIGHTS_TO_WAIT = 1;
+    /**
+     * The fewest lights for which a short phong span's pixels wait too:
+     * session 15, against lighting them one by one, page-f2 0.92, page-e
+     * 0.95, page-h 0.95 of the time. With one light, short spans waiting made
+     * A4 page-g 1.04-1.09 of its time and page-d 1.02-1.04: spans of a pixel
+     * or two cost more to keep than to light.
+     */
+    static final int LIGHTS_FOR_SHORT_TO_WAIT = 2;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
     private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
@@ -159,9 +164,10 @@ public final class FragmentStage implements FragmentSink {
     // the index of the kept span each waits for; null when every pixel is
     // shaded as it passes the depth test.
     private WaitingPixels waiting;
-    // True when this stage's phong pixels wait; false when it shades at once
-    // but still clears a pixel's wait when it writes it (a batch drawn whole).
-    private boolean defers;
+    // The pixels that may wait in this stage's rows, its own or another
+    // stage's: told of every write of a known colour (writtenOver); null
+    // when none may.
+    private WaitingPixels told;
     private Provenance owners;
     // The kept phong spans that won a pixel: q0, dq, then v0 and dv of the
     // phong channels; where k counts from; who drew them; their look (an
@@ -176,9 +182,10 @@ public final class FragmentStage implements FragmentSink {
     private PointShader[] lookShader = new PointShader[8];
     private Fog[] lookFog = new Fog[8];
     // The runs of waiting pixels at the picture's end, in row order: row,
-    // first x, end x and span, RUN_NUMBERS to a run; then their indices by
+    // first x, end x, span, and 1 where the row may have been written over
+    // (0 where not), RUN_NUMBERS to a run; then their indices by
     // look (runOrder), each look's from lookStart[look].
-    private static final int RUN_NUMBERS = 4;
+    private static final int RUN_NUMBERS = 5;
     private int[] runNumbers = new int[256 * RUN_NUMBERS];
     private int[] runOrder = new int[256];
     private int[] lookStart = new int[9];
@@ -231,7 +238,7 @@ public final class FragmentStage implements FragmentSink {
         shader = null;
         fog = Fog.NONE;
         waiting = null;
-        defers = false;
+        told = null;
         owners = null;
         forgetSpans();
     }
@@ -259,32 +266,52 @@ public final class FragmentStage implements FragmentSink {
      * From now on a phong pixel that passes the depth test is not shaded at
      * once: it waits, in {@code waiting} (the panel's), for
      * {@link #shadeWaiting} at the picture's end,
-     * which shades each pixel once, by the last span that won it. A write of
-     * a known colour ends a pixel's wait. With {@code defer} false the stage
-     * shades at once and only ends the waits it overwrites (a stage drawing
-     * batches kept whole, while the bands' stages defer). The owner each
-     * waiting pixel gets is the one {@code owners} (or null) has for its row
-     * when it wins. The picture is the same to the bit: a pixel's colour is
-     * its last winning fragment's, and a point is lit the same alone or in a
-     * batch of any size.
+     * which shades each pixel the last span that won it still holds: one
+     * whose depth is still the z that span gave it. A later write there, of
+     * this stage or of another that draws the same rows (a batch kept whole,
+     * {@link #writesOver}), was nearer, so it left a larger depth; it only
+     * marks its row, so that the depths are looked at there alone. The
+     * owner each waiting pixel gets is the one {@code owners} (or null) has
+     * for its row when it wins. The picture is the same to the bit: a pixel's
+     * colour is its last winning fragment's, and a point is lit the same
+     * alone or in a batch of any size.
      */
-    public void shadeLater(WaitingPixels waiting, boolean defer, Provenance owners) {
+    public void shadeLater(WaitingPixels waiting, Provenance owners) {
         if (waiting.width() != width || waiting.height() != height) {
             throw new IllegalArgumentException("waiting pixels for another panel");
         }
         this.waiting = waiting;
-        this.defers = defer;
+        this.told = waiting;
         this.owners = owners;
     }
 
-    /** True when phong spans lit by {@code shader} wait for the end, if the stage defers ({@link #LIGHTS_TO_WAIT}). */
+    /**
+     * This stage shades at once, in rows where other stages' pixels may wait
+     * in {@code waiting} (a stage drawing the batches kept whole): it tells
+     * them of its writes ({@link WaitingPixels#writtenOver}).
+     */
+    public void writesOver(WaitingPixels waiting) {
+        if (waiting.width() != width || waiting.height() != height) {
+            throw new IllegalArgumentException("waiting pixels for another panel");
+        }
+        this.told = waiting;
+    }
+
+    /** Row y was written with a known colour: a pixel there that waits may be taken from its span. */
+    private void wroteOver(int y) {
+        if (told != null) {
+            told.writtenOver(y);
+        }
+    }
+
+    /** True when a stage that shades later keeps phong spans {@code shader} lights, the long ones at least. */
     public static boolean paysToWait(PointShader shader) {
         return shader.lightCount() >= LIGHTS_TO_WAIT;
     }
 
     /** True when this stage's phong pixels wait to be shaded at the picture's end ({@link #shadeLater}). */
     public boolean shadesLater() {
-        return defers;
+        return waiting != null;
     }
 
     /** Ends every wait in this stage's rows, whatever an earlier picture left there: before its first fragment. */
@@ -306,7 +333,7 @@ public final class FragmentStage implements FragmentSink {
      */
     public void shadeWaiting() {
         writePending();
-        if (waiting == null || !defers) {
+        if (waiting == null) {
             return;
         }
         PointShader shaderBefore = shader;
@@ -320,10 +347,10 @@ public final class FragmentStage implements FragmentSink {
                 int o = runOrder[r] * RUN_NUMBERS;
                 int y = runNumbers[o];
                 int span = runNumbers[o + 3];
+                boolean writtenOver = runNumbers[o + 4] != 0;
                 for (int x = runNumbers[o + 1], stop = runNumbers[o + 2]; x < stop;) {
                     int n = Math.min(stop - x, WAITING_BATCH - filled);
-                    addPiece(span, y, x, n, filled);
-                    filled += n;
+                    filled = addPiece(span, y, x, n, filled, writtenOver);
                     x += n;
                     if (filled == WAITING_BATCH) {
                         shadePieces(filled);
@@ -364,6 +391,7 @@ public final class FragmentStage implements FragmentSink {
                 runNumbers[o + 1] = first;
                 runNumbers[o + 2] = x;
                 runNumbers[o + 3] = span;
+                runNumbers[o + 4] = w.mayBeWrittenOver(y) ? 1 : 0;
                 count++;
             }
             w.clearRows(y, y + 1);
@@ -391,17 +419,16 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * Pixels x &lt;= x' &lt; x + n of row y, waiting for the kept span, put in
-     * the batch from place {@code at} on: k, 1 / q, z, kd and, where the
-     * look reads them, P and N, each as pixel() has it.
+     * Pixels x &lt;= x' &lt; x + n of row y, marked as waiting for the kept
+     * span, put in the batch from place {@code at} on, those the span still
+     * holds: k, 1 / q, z, kd and, where the look reads them, P and N, each as
+     * pixel() has it; returns the place after the last. The span holds them
+     * all unless the row was {@code writtenOver}; then those whose depth is
+     * still the z it gave them: a later write there was nearer, so its depth
+     * is larger (a NaN z never won), and a later span that waits marked the
+     * pixel as its own.
      */
-    private void addPiece(int span, int y, int x, int n, int at) {
-        int p = pieceCount++;
-        pieceX[p] = x;
-        pieceY[p] = y;
-        pieceLength[p] = n;
-        pieceAt[p] = at;
-        pieceSpan[p] = span;
+    private int addPiece(int span, int y, int x, int n, int at, boolean writtenOver) {
         int o = span * SPAN_NUMBERS;
         double[] numbers = spanNumbers;
         double q0 = numbers[o];
@@ -421,6 +448,11 @@ public final class FragmentStage implements FragmentSink {
             batchInverse[j] = w;
             batchZ[j] = (z0 + k * dz) * w;
         }
+        if (writtenOver) {
+            stop = keptPieces(span, y, x, n, at);
+        } else {
+            addPieceRun(span, y, x, n, at);
+        }
         LitPoints t = points;
         if (shader.usesPoint()) {
             resolve(numbers[v0 + PX], numbers[dv + PX], t.px, numbers[v0 + PY], numbers[dv + PY], t.py, at, stop);
@@ -429,6 +461,54 @@ public final class FragmentStage implements FragmentSink {
         }
         resolve(numbers[v0 + R], numbers[dv + R], t.kdRed, numbers[v0 + G], numbers[dv + G], t.kdGreen,
                 numbers[v0 + B], numbers[dv + B], t.kdBlue, at, stop);
+        return stop;
+    }
+
+    /**
+     * Of the n pixels from x on just put in the batch at {@code at}, those
+     * whose depth is still their z: kept as pieces to be written, each run
+     * of them one piece, moved up in place (k, 1 / q and z); returns the
+     * place after the last kept.
+     */
+    private int keptPieces(int span, int y, int x, int n, int at) {
+        double[] d = depth;
+        int i = y * width + x - at; // the depth index of place j is i + j
+        int stop = at + n;
+        int kept = at;
+        int j = at;
+        while (j < stop) {
+            while (j < stop && batchZ[j] != d[i + j]) {
+                j++; // overwritten since it waited
+            }
+            int first = j;
+            while (j < stop && batchZ[j] == d[i + j]) {
+                j++;
+            }
+            if (first == j) {
+                break;
+            }
+            addPieceRun(span, y, x + first - at, j - first, kept);
+            if (kept == first) {
+                kept = j; // the usual: nothing before it was dropped
+                continue;
+            }
+            for (int m = first; m < j; m++, kept++) {
+                batchK[kept] = batchK[m];
+                batchInverse[kept] = batchInverse[m];
+                batchZ[kept] = batchZ[m];
+            }
+        }
+        return kept;
+    }
+
+    /** A piece of the batch: n pixels from (x, y), from place {@code at}, of the kept span. */
+    private void addPieceRun(int span, int y, int x, int n, int at) {
+        int p = pieceCount++;
+        pieceX[p] = x;
+        pieceY[p] = y;
+        pieceLength[p] = n;
+        pieceAt[p] = at;
+        pieceSpan[p] = span;
     }
 
     /** The batch's first n points lit by the look, fogged, packed and written, a piece at a time. */
@@ -573,24 +653,21 @@ public final class FragmentStage implements FragmentSink {
     /** A phong span: kept for the end, or a batch at a time, or pixel by pixel when short; true if one was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
-        if (defers && paysToWait(shader)) {
+        boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
+        boolean isShort = end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN);
+        if (waiting != null && shader.lightCount() >= (isShort ? LIGHTS_FOR_SHORT_TO_WAIT : LIGHTS_TO_WAIT)) {
             writePending(); // the batches below use the same arrays
             return waitingSpan(y, from, start, end, q0, dq, v0, dv);
         }
-        boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
-        if (end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN)) {
+        if (isShort) {
             return phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         writePending(); // the batches below use the same arrays
         boolean wrote = false;
-        boolean mayWait = waits(y);
         for (int first = start; first < end; first += BATCH) {
             int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z]);
             if (n > 0) {
                 wrote = true;
-                if (mayWait) {
-                    endWaits(y, first, n);
-                }
                 phong(n, v0, dv);
                 pack(n);
                 if (whole) {
@@ -599,6 +676,9 @@ public final class FragmentStage implements FragmentSink {
                     writeRuns(y, n);
                 }
             }
+        }
+        if (wrote) {
+            wroteOver(y);
         }
         return wrote;
     }
@@ -654,7 +734,7 @@ public final class FragmentStage implements FragmentSink {
      * such pixels. A point's numbers are those pixel() would light it with,
      * and a batch lights it to the same bits. (With a light, pixels that
      * waited measured slower on A4 page-d, 1.015 of its time, one thread;
-     * with {@link #LIGHTS_TO_WAIT} lights a span waits for the end instead.)
+     * with {@link #LIGHTS_FOR_SHORT_TO_WAIT} lights it waits for the end.)
      * True when a pixel passed.
      */
     private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
@@ -683,7 +763,6 @@ public final class FragmentStage implements FragmentSink {
         LitPoints t = points;
         int row = y * width;
         int passed = 0;
-        boolean mayWait = waits(y);
         int n = pendingCount;
         for (int x = start; x < end; x++) {
             int k = x - from;
@@ -693,9 +772,6 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             passed++;
-            if (mayWait) {
-                waiting.end(x, y);
-            }
             if (later) {
                 pendingX[n] = x;
                 pendingY[n] = y;
@@ -723,6 +799,9 @@ public final class FragmentStage implements FragmentSink {
         if (!point) {
             shortPixels += passed;
         }
+        if (passed > 0) {
+            wroteOver(y);
+        }
         return passed > 0;
     }
 
@@ -746,7 +825,6 @@ public final class FragmentStage implements FragmentSink {
         double db = dv[B];
         int row = y * width;
         boolean wrote = false;
-        boolean mayWait = waits(y);
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -755,13 +833,13 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             wrote = true;
-            if (mayWait) {
-                waiting.end(x, y);
-            }
             lit[0] = (r0 + k * dr) * inv;
             lit[1] = (g0 + k * dg) * inv;
             lit[2] = (b0 + k * db) * inv;
             panel.setPixel(x, y, z, fogged(z, lit));
+        }
+        if (wrote) {
+            wroteOver(y);
         }
         return wrote;
     }
@@ -952,23 +1030,6 @@ public final class FragmentStage implements FragmentSink {
         return Math.abs(v) <= Double.MAX_VALUE;
     }
 
-    /** True when some pixel of row y may wait ({@link #shadeLater}): a write there must end its wait. */
-    private boolean waits(int y) {
-        // A stage that defers has waits in its rows only once it kept a span (clearWaits ended the others).
-        return waiting != null && (spanCount > 0 || !defers) && waiting.firstIn(y) < waiting.endIn(y);
-    }
-
-    /** The n pixels of row y just gathered from x = first on, to be written now: they wait no more. */
-    private void endWaits(int y, int first, int n) {
-        if (whole) {
-            waiting.endRun(y, first, first + n);
-            return;
-        }
-        for (int i = 0; i < n; i++) {
-            waiting.end(batchX[i], y);
-        }
-    }
-
     /** Writes the n gathered pixels of row y, each run of neighbours in one call. */
     private void writeRuns(int y, int n) {
         int i = 0;
@@ -1005,9 +1066,7 @@ public final class FragmentStage implements FragmentSink {
             return;
         }
         zbuffer.written();
-        if (waits(y)) {
-            waiting.end(x, y);
-        }
+        wroteOver(y);
         double r = v[R] * inv;
         double g = v[G] * inv;
         double b = v[B] * inv;

@@ -93,11 +93,20 @@ public final class LitState implements PointShader {
         kdB = b;
     }
 
+    /**
+     * The surface colour, ks and p. The lighting changes only when ks or p
+     * does (kd reaches a point as its own channel): a scene that gives each
+     * of its objects a surface of the same ks and p keeps one lighting, so
+     * its phong pixels are lit as one look ({@link #frozenShader}).
+     */
     public void setSurface(double r, double g, double b, double specular, double exponent) {
         setSurface(r, g, b);
-        ks = specular;
-        p = exponent;
-        prepare();
+        if (Double.doubleToRawLongBits(specular) != Double.doubleToRawLongBits(ks)
+                || Double.doubleToRawLongBits(exponent) != Double.doubleToRawLongBits(p)) {
+            ks = specular;
+            p = exponent;
+            prepare();
+        }
     }
 
     public void setFog(Fog f) {

@@ -88,10 +88,11 @@ public final class LitPrimitives {
      * (whatever the rows held before), and {@link #flush} the rows no drawer
      * reached. The panel's rows that the canvas's clear owes
      * ({@code panelRows}) are made the same way; the drawers start on them at
-     * once, while the scene's first batch is read. Phong spans of two
-     * lights or more wait in {@code waiting} (the panel's) and each band's
-     * drawer shades its rows' at the end ({@link FragmentStage#shadeLater}); a
-     * batch kept whole is shaded at once. The drawers' fragment stages come
+     * once, while the scene's first batch is read. Lit phong spans wait in
+     * {@code waiting} (the panel's) and each band's drawer shades its rows'
+     * at the end ({@link FragmentStage#shadeLater}); a batch kept whole is
+     * shaded at once and marks the rows it writes
+     * ({@link FragmentStage#writesOver}). The drawers' fragment stages come
      * from {@code stages}.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, OwedRows panelRows, Drawable panel,
@@ -107,13 +108,13 @@ public final class LitPrimitives {
         this.rasterizers = kept == null ? new ArrayList<>() : kept;
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel), rasterizers(b));
-            drawers[b].fragments.shadeLater(waiting, true, provenance);
+            drawers[b].fragments.shadeLater(waiting, provenance);
         }
         this.wholeDrawer = bands.count() == 1 ? drawers[0]
                 : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), stages.next(panel),
                         rasterizers(drawers.length));
         if (wholeDrawer != drawers[0]) {
-            wholeDrawer.fragments.shadeLater(waiting, false, provenance); // shades at once, ending the waits it overwrites
+            wholeDrawer.fragments.writesOver(waiting); // shades at once, telling the bands' waits
         }
         this.preparation = new BandPreparation(bands.count(), b -> {
             zbuffer.resetRows(bands.start(b), bands.end(b));

@@ -4,8 +4,10 @@ import java.util.Arrays;
 
 /**
  * The panel's pixels that wait to be shaded at a lit picture's end: for each
- * one, the number of the span that last won it (its fragment stage's own
- * numbering), {@link #NONE} for the others; and per row the columns that may
+ * one, the number of the last span that won it and waits (its fragment
+ * stage's own numbering; a nearer write of a known colour may have taken the
+ * pixel since, which the stage tells by its depth), {@link #NONE} for the
+ * others; and per row the columns that may
  * hold a waiting pixel, so that a row with none costs nothing to write or to
  * clear. Kept by the canvas from picture to picture; each row is written only
  * by the thread drawing it.
@@ -22,6 +24,8 @@ public final class WaitingPixels {
     /** Per row: waiting pixels lie in from[y] &lt;= x &lt; to[y] (empty when from &gt;= to). */
     final int[] from;
     final int[] to;
+    /** Per row: a write of a known colour was made there since the row last had no wait. */
+    private final boolean[] writtenOver;
 
     public WaitingPixels(int width, int height) {
         this.width = width;
@@ -29,6 +33,7 @@ public final class WaitingPixels {
         this.span = new int[width * height];
         this.from = new int[height];
         this.to = new int[height];
+        this.writtenOver = new boolean[height];
         Arrays.fill(span, NONE);
         Arrays.fill(from, width);
     }
@@ -88,20 +93,18 @@ public final class WaitingPixels {
         return e;
     }
 
-    /** Pixels x0 &lt;= x &lt; x1 of row y are written now: they wait no more. */
-    public void endRun(int y, int x0, int x1) {
-        int a = Math.max(x0, from[y]);
-        int b = Math.min(x1, to[y]);
-        if (a < b) {
-            Arrays.fill(span, y * width + a, y * width + b, NONE);
-        }
+    /**
+     * A pixel of row y was written with a known colour (by a stage that
+     * shades at once): a pixel there that waits may have been taken from its
+     * span since, which the stage shading it tells by its depth.
+     */
+    public void writtenOver(int y) {
+        writtenOver[y] = true;
     }
 
-    /** Pixel (x, y) is written now: it waits no more. */
-    public void end(int x, int y) {
-        if (x >= from[y] && x < to[y]) {
-            span[y * width + x] = NONE;
-        }
+    /** True when a pixel of row y may have been taken from the span it waits for ({@link #writtenOver}). */
+    public boolean mayBeWrittenOver(int y) {
+        return writtenOver[y];
     }
 
     /** The first column of row y that may hold a waiting pixel. */
@@ -122,6 +125,7 @@ public final class WaitingPixels {
             }
             from[y] = width;
             to[y] = 0;
+            writtenOver[y] = false;
         }
     }
 }

@@ -52,7 +52,7 @@ class FragmentStageTest {
         /** A phong stage whose pixels wait to be shaded at the end ({@link FragmentStage#shadeLater}). */
         static Stage deferring(LitState state) {
             Stage stage = make(state, true);
-            stage.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), true, stage.provenance());
+            stage.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), stage.provenance());
             stage.fragments().clearWaits();
             return stage;
         }
@@ -101,6 +101,13 @@ class FragmentStageTest {
         new Fog(-8, -16, 1e300, Double.NaN, Double.POSITIVE_INFINITY),
     };
 
+    /** The two stages drew the same picture, depths and owners, to the bit. */
+    private static void assertSameDrawing(Stage expected, Stage actual) {
+        assertArrayEquals(pixels(expected.image()), pixels(actual.image()), "the picture");
+        assertArrayEquals(expected.zbuffer().copyDepths(), actual.zbuffer().copyDepths(), "the depths");
+        assertArrayEquals(expected.provenance().copyOwners(), actual.provenance().copyOwners(), "the provenance");
+    }
+
     /** A random span's channels into v0 and dv (as times q), and its q0 and dq. */
     private static double[] randomSpan(Random random, double[] v0, double[] dv) {
         double q0 = 1 / (4 + random.nextDouble() * 12);
@@ -144,9 +151,7 @@ class FragmentStageTest {
             }
             byPixel.fragments().primitiveDone();
         }
-        assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
-        assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
-        assertArrayEquals(byPixel.provenance().copyOwners(), bySpan.provenance().copyOwners(), "the provenance");
+        assertSameDrawing(byPixel, bySpan);
     }
 
     /**
@@ -199,17 +204,16 @@ class FragmentStageTest {
             atEnd.fragments().primitiveDone();
         }
         atEnd.fragments().shadeWaiting();
-        assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()), "the picture");
-        assertArrayEquals(atOnce.zbuffer().copyDepths(), atEnd.zbuffer().copyDepths(), "the depths");
-        assertArrayEquals(atOnce.provenance().copyOwners(), atEnd.provenance().copyOwners(), "the provenance");
+        assertSameDrawing(atOnce, atEnd);
     }
 
     /**
      * Waiting pixels of several looks, lit at the end a look at a time in
      * batches of runs from many rows, draw what they draw shaded at once:
      * looks that come back after others (more of them than the stage
-     * searches for a kept span's look), runs cut at a batch's end, and spans
-     * that hide others' waiting pixels.
+     * searches for a kept span's look), runs cut at a batch's end, spans
+     * that hide others' waiting pixels, and spans shaded at once (the
+     * ambient term, known colours) over and under them.
      */
     @Property(tries = 60, seed = "1204015")
     void waitingPixelsOfSeveralLooksDrawWhatTheyDrawShadedAtOnce(@ForAll long seed) {
@@ -229,11 +233,18 @@ class FragmentStageTest {
         Stage atEnd = Stage.deferring(first);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
+        PointShader ambient = ambientScene(random).frozenShader().get();
         int spans = 1 + random.nextInt(400);
         for (int s = 0; s < spans; s++) {
-            int look = random.nextInt(lookCount);
+            int look = random.nextInt(lookCount + 2); // the last two shaded at once: the ambient term, colours
             for (Stage stage : new Stage[] {atOnce, atEnd}) {
-                stage.fragments().phong(shaders[look], fogs[look]);
+                if (look < lookCount) {
+                    stage.fragments().phong(shaders[look], fogs[look]);
+                } else if (look == lookCount) {
+                    stage.fragments().phong(ambient, first.fog());
+                } else {
+                    stage.fragments().colours(first.fog());
+                }
                 stage.provenance().begin(s);
             }
             int y = random.nextInt(SIZE);
@@ -246,9 +257,7 @@ class FragmentStageTest {
             atEnd.fragments().primitiveDone();
         }
         atEnd.fragments().shadeWaiting();
-        assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()), "the picture");
-        assertArrayEquals(atOnce.zbuffer().copyDepths(), atEnd.zbuffer().copyDepths(), "the depths");
-        assertArrayEquals(atOnce.provenance().copyOwners(), atEnd.provenance().copyOwners(), "the provenance");
+        assertSameDrawing(atOnce, atEnd);
     }
 
     /**
@@ -293,9 +302,7 @@ class FragmentStageTest {
             }
             bySpan.fragments().primitiveDone();
         }
-        assertArrayEquals(pixels(byPixel.image()), pixels(bySpan.image()), "the picture");
-        assertArrayEquals(byPixel.zbuffer().copyDepths(), bySpan.zbuffer().copyDepths(), "the depths");
-        assertArrayEquals(byPixel.provenance().copyOwners(), bySpan.provenance().copyOwners(), "the provenance");
+        assertSameDrawing(byPixel, bySpan);
     }
 
     @Test
@@ -307,7 +314,7 @@ class FragmentStageTest {
         Stage atOnce = Stage.make(state, true);
         Stage atEnd = Stage.make(state, true);
         WaitingPixels waiting = new WaitingPixels(SIZE, SIZE);
-        atEnd.fragments().shadeLater(waiting, true, null);
+        atEnd.fragments().shadeLater(waiting, null);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         v0[FragmentLayout.Z] = -5;

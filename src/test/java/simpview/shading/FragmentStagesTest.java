@@ -85,7 +85,7 @@ class FragmentStagesTest {
             FragmentStages last = FragmentStages.keptBy(threads, before);
             FragmentStage used = last.next(panel(new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB)));
             used.rows(0, 5);
-            used.shadeLater(new WaitingPixels(SIZE, SIZE), true, null);
+            used.shadeLater(new WaitingPixels(SIZE, SIZE), null);
             used.phong(shader, Fog.NONE);
             used.span(2, 0, 100, 1, 0, v0, dv); // waits, never shaded
             last.keep();

@@ -43,7 +43,7 @@ class WaitingPixelsTest {
                 int x1 = Math.min(width, x0 + 1 + random.nextInt(12));
                 w.waitRun(0, x0, x1, random.nextInt(3));
                 if (random.nextInt(4) == 0) {
-                    w.endRun(0, x0 + random.nextInt(x1 - x0), x1);
+                    w.waitRun(0, x0 + random.nextInt(x1 - x0), x1, 3);
                 }
             }
             for (int x = w.firstIn(0); x < w.endIn(0); x = w.runEnd(x, 0)) {

@@ -239,7 +239,7 @@ final class LitRules implements RuleSet {
         this.stages = stages;
         if (threads.isOne()) {
             zbuffer.reset(Double.NEGATIVE_INFINITY);
-            fragments.shadeLater(waiting, true, provenance);
+            fragments.shadeLater(waiting, provenance);
             fragments.clearWaits();
             return;
         }
