@@ -65,26 +65,26 @@ public final class FragmentStage implements FragmentSink {
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
     private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
-     * Phong spans shorter than this are lit pixel by pixel: a batch's steps
-     * cost more to set up than they save on a few pixels (small triangles,
-     * as dummy.obj's, measured slower by batches).
-     */
-    static final int SHORT_PHONG_SPAN = 16;
-    /**
-     * The same for the ambient term alone, but a short span's pixels are not
-     * lit one by one: they wait with the rest of the primitive's short spans
-     * to be lit, fogged and written together ({@link #phongPixels}), so that
-     * a small triangle's few pixels a row make one batch. One thread, against
+     * Phong spans shorter than this are not a batch of their own: a batch's
+     * steps cost more to set up than they save on a few pixels (small
+     * triangles, as dummy.obj's, measured slower by batches). Their pixels
+     * wait with the rest of the primitive's short spans to be lit, fogged and
+     * written together ({@link #phongPixels}), so that a small triangle's few
+     * pixels a row make one batch. The ambient term alone, one thread, against
      * pixel by pixel below 6 (session 14): A3 tomsPageJ (spans of 2.3 pixels
      * on average) 0.83-0.85 of its time with 16, 0.87 with 6, 0.83 with 64;
      * pageE 0.94-0.99 with 16 and 1.04 with 64, pageF 0.99 and 1.08 (their
      * longer spans are better a batch of their own, written in runs); with
      * {@link #FEWEST_LIT_TOGETHER} as it is, tomsPageJ 0.86, pageH 0.95,
-     * pageE 0.97, pageC, pageG and pageI 0.99-1.01.
+     * pageE 0.97, pageC, pageG and pageI 0.99-1.01. With one light (session
+     * 15, against lighting each pixel alone): A4 page-g 0.95-0.96, page-d,
+     * page-a3, page-b3, page-c3 and page-f1 0.98-1.00. (Session 14 measured
+     * page-d 1.015 that way, before the lighting's loops were compiled for
+     * the full batches at the end.)
      */
-    static final int SHORT_AMBIENT_SPAN = 16;
+    static final int SHORT_SPAN = 16;
     /**
-     * Fewer waiting ambient pixels than this are lit one by one when their
+     * Fewer waiting short-span pixels than this are lit one by one when their
      * primitive is done, as a batch's loops cost more than they save on so
      * few; and after a primitive with fewer, the next one's are lit one by
      * one as they pass (a mesh's faces are alike). A3 pageI's dummy, 28,716
@@ -149,7 +149,7 @@ public final class FragmentStage implements FragmentSink {
     private int pendingCount;
     private final int[] pendingX = new int[BATCH];
     private final int[] pendingY = new int[BATCH];
-    // Whether short ambient spans' pixels wait (else each is lit as it
+    // Whether short spans' pixels wait (else each is lit as it
     // passes): they do while the last primitive done had FEWEST_LIT_TOGETHER
     // of them or more; and how many the primitive at hand had so far.
     private boolean shortPixelsWait = true;
@@ -653,8 +653,7 @@ public final class FragmentStage implements FragmentSink {
     /** A phong span: kept for the end, or a batch at a time, or pixel by pixel when short; true if one was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
-        boolean ambient = !shader.usesPoint(); // the ambient term alone: P and N are not read
-        boolean isShort = end - start < (ambient ? SHORT_AMBIENT_SPAN : SHORT_PHONG_SPAN);
+        boolean isShort = end - start < SHORT_SPAN;
         if (waiting != null && shader.lightCount() >= (isShort ? LIGHTS_FOR_SHORT_TO_WAIT : LIGHTS_TO_WAIT)) {
             writePending(); // the batches below use the same arrays
             return waitingSpan(y, from, start, end, q0, dq, v0, dv);
@@ -699,7 +698,7 @@ public final class FragmentStage implements FragmentSink {
             PointShader s = shader;
             for (int i = 0; i < n; i++) {
                 double z = batchZ[i];
-                s.shade(0, 0, z, 0, 0, 0, t.kdRed[i], t.kdGreen[i], t.kdBlue[i], lit);
+                s.shade(t.px[i], t.py[i], z, t.nx[i], t.ny[i], t.nz[i], t.kdRed[i], t.kdGreen[i], t.kdBlue[i], lit);
                 panel.setPixel(pendingX[i], pendingY[i], z, fogged(z, lit));
             }
             return;
@@ -714,7 +713,7 @@ public final class FragmentStage implements FragmentSink {
 
     /**
      * Writes the primitive's waiting pixels; the next primitive's short
-     * ambient spans wait too if this one's had enough pixels to light
+     * spans wait too if this one's had enough pixels to light
      * together, else they are lit one by one (a mesh's faces are alike).
      */
     @Override
@@ -727,15 +726,14 @@ public final class FragmentStage implements FragmentSink {
     /**
      * A short phong span, pixel by pixel: the depth test at each, and kd, P
      * and N resolved at each pixel that passes (P and N only where the
-     * shader reads them). Lit there alone; or, lit by the ambient term alone,
-     * kd and z wait in the points to be lit together ({@link #writePending},
-     * at once when BATCH of them wait, else when the primitive is done),
-     * unless the primitive before had fewer than {@link #FEWEST_LIT_TOGETHER}
-     * such pixels. A point's numbers are those pixel() would light it with,
-     * and a batch lights it to the same bits. (With a light, pixels that
-     * waited measured slower on A4 page-d, 1.015 of its time, one thread;
-     * with {@link #LIGHTS_FOR_SHORT_TO_WAIT} lights it waits for the end.)
-     * True when a pixel passed.
+     * shader reads them). They wait in the points to be lit together
+     * ({@link #writePending}, at once when BATCH of them wait, else when the
+     * primitive is done), unless the primitive before had fewer than
+     * {@link #FEWEST_LIT_TOGETHER} such pixels: then each is lit there alone.
+     * A point's numbers are those pixel() would light it with, and a batch
+     * lights it to the same bits. (With {@link #LIGHTS_FOR_SHORT_TO_WAIT}
+     * lights a short span waits for the picture's end instead.) True when a
+     * pixel passed.
      */
     private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
@@ -759,7 +757,7 @@ public final class FragmentStage implements FragmentSink {
         double dnz = dv[NZ];
         PointShader s = shader;
         boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
-        boolean later = !point && shortPixelsWait;
+        boolean later = shortPixelsWait;
         LitPoints t = points;
         int row = y * width;
         int passed = 0;
@@ -779,6 +777,13 @@ public final class FragmentStage implements FragmentSink {
                 t.kdRed[n] = (r0 + k * dr) * inv;
                 t.kdGreen[n] = (g0 + k * dg) * inv;
                 t.kdBlue[n] = (b0 + k * db) * inv;
+                if (point) {
+                    t.px[n] = (px0 + k * dpx) * inv;
+                    t.py[n] = (py0 + k * dpy) * inv;
+                    t.nx[n] = (nx0 + k * dnx) * inv;
+                    t.ny[n] = (ny0 + k * dny) * inv;
+                    t.nz[n] = (nz0 + k * dnz) * inv;
+                }
                 if (++n == BATCH) {
                     pendingCount = n;
                     writePending();
@@ -796,9 +801,7 @@ public final class FragmentStage implements FragmentSink {
             panel.setPixel(x, y, z, fogged(z, lit));
         }
         pendingCount = n;
-        if (!point) {
-            shortPixels += passed;
-        }
+        shortPixels += passed;
         if (passed > 0) {
             wroteOver(y);
         }
