@@ -11,7 +11,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 root="$here/../.."
 course=${1:-$root/../shared}
 [ $# -gt 0 ] && shift
-pages=${*:-"a3/pageA a3/pageC a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ a4/page-d a4/page-e a4/page-f2 a4/page-h"}
+# By default every lit course page: A3's ten and A4's fifteen.
+pages=${*:-"a3/pageA a3/pageB a3/pageC a3/pageD a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ
+ a4/page-a1 a4/page-a2 a4/page-a3 a4/page-b1 a4/page-b2 a4/page-b3 a4/page-c1 a4/page-c2 a4/page-c3
+ a4/page-d a4/page-e a4/page-f1 a4/page-f2 a4/page-g a4/page-h"}
 out="$root/build/llvmpipe"
 mkdir -p "$out"
 (cd "$root" && gradle --no-daemon -q jmhClasses)
