@@ -182,10 +182,9 @@ public final class FragmentStage implements FragmentSink {
     private PointShader[] lookShader = new PointShader[8];
     private Fog[] lookFog = new Fog[8];
     // The runs of waiting pixels at the picture's end, in row order: row,
-    // first x, end x, span, and 1 where the row may have been written over
-    // (0 where not), RUN_NUMBERS to a run; then their indices by
+    // first x, end x and span, RUN_NUMBERS to a run; then their indices by
     // look (runOrder), each look's from lookStart[look].
-    private static final int RUN_NUMBERS = 5;
+    private static final int RUN_NUMBERS = 4;
     private int[] runNumbers = new int[256 * RUN_NUMBERS];
     private int[] runOrder = new int[256];
     private int[] lookStart = new int[9];
@@ -347,10 +346,9 @@ public final class FragmentStage implements FragmentSink {
                 int o = runOrder[r] * RUN_NUMBERS;
                 int y = runNumbers[o];
                 int span = runNumbers[o + 3];
-                boolean writtenOver = runNumbers[o + 4] != 0;
                 for (int x = runNumbers[o + 1], stop = runNumbers[o + 2]; x < stop;) {
                     int n = Math.min(stop - x, WAITING_BATCH - filled);
-                    filled = addPiece(span, y, x, n, filled, writtenOver);
+                    filled = addPiece(span, y, x, n, filled);
                     x += n;
                     if (filled == WAITING_BATCH) {
                         shadePieces(filled);
@@ -362,6 +360,7 @@ public final class FragmentStage implements FragmentSink {
                 shadePieces(filled);
             }
         }
+        clearWaits();
         forgetSpans();
         shader = shaderBefore;
         fog = fogBefore;
@@ -370,7 +369,7 @@ public final class FragmentStage implements FragmentSink {
     /**
      * The runs of waiting pixels of this stage's rows (neighbours that wait
      * for one span), found row by row, and their order by look
-     * (runOrder, lookStart); the waits end.
+     * (runOrder, lookStart).
      */
     private void findRuns() {
         WaitingPixels w = waiting;
@@ -391,10 +390,8 @@ public final class FragmentStage implements FragmentSink {
                 runNumbers[o + 1] = first;
                 runNumbers[o + 2] = x;
                 runNumbers[o + 3] = span;
-                runNumbers[o + 4] = w.mayBeWrittenOver(y) ? 1 : 0;
                 count++;
             }
-            w.clearRows(y, y + 1);
         }
         // A counting sort by look, each look's runs in row order.
         if (lookStart.length < lookCount + 1) {
@@ -423,12 +420,12 @@ public final class FragmentStage implements FragmentSink {
      * span, put in the batch from place {@code at} on, those the span still
      * holds: k, 1 / q, z, kd and, where the look reads them, P and N, each as
      * pixel() has it; returns the place after the last. The span holds them
-     * all unless the row was {@code writtenOver}; then those whose depth is
-     * still the z it gave them: a later write there was nearer, so its depth
-     * is larger (a NaN z never won), and a later span that waits marked the
-     * pixel as its own.
+     * all unless the row was written over ({@link WaitingPixels#writtenOver});
+     * then those whose depth is still the z it gave them: a later write there
+     * was nearer, so its depth is larger (a NaN z never won), and a later
+     * span that waits marked the pixel as its own.
      */
-    private int addPiece(int span, int y, int x, int n, int at, boolean writtenOver) {
+    private int addPiece(int span, int y, int x, int n, int at) {
         int o = span * SPAN_NUMBERS;
         double[] numbers = spanNumbers;
         double q0 = numbers[o];
@@ -448,7 +445,7 @@ public final class FragmentStage implements FragmentSink {
             batchInverse[j] = w;
             batchZ[j] = (z0 + k * dz) * w;
         }
-        if (writtenOver) {
+        if (waiting.mayBeWrittenOver(y)) {
             stop = keptPieces(span, y, x, n, at);
         } else {
             addPieceRun(span, y, x, n, at);
