@@ -74,6 +74,14 @@ class FragmentStageTest {
         return state;
     }
 
+    /** As {@link #scene}, with two lights more: its phong pixels wait where a stage shades later. */
+    private static LitState sceneThatWaits(Random random) {
+        LitState state = scene(random);
+        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0);
+        state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+        return state;
+    }
+
     /** As {@link #scene}, with no light: the ambient term alone. */
     private static LitState ambientScene(Random random) {
         LitState state = new LitState();
@@ -163,9 +171,7 @@ class FragmentStageTest {
     @Property(tries = 150, seed = "1203009")
     void pixelsShadedAtTheEndDrawWhatPixelsShadedAtOnceDraw(@ForAll long seed) {
         Random random = new Random(seed);
-        LitState state = scene(random);
-        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // two lights at least: phong pixels then wait
-        state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+        LitState state = sceneThatWaits(random);
         PointShader frozen = state.frozenShader().get();
         Stage atOnce = Stage.make(state, true);
         Stage atEnd = Stage.deferring(state);
@@ -222,9 +228,7 @@ class FragmentStageTest {
         PointShader[] shaders = new PointShader[lookCount];
         Fog[] fogs = new Fog[lookCount];
         for (int i = 0; i < lookCount; i++) {
-            LitState state = scene(random);
-            state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0); // two lights at least: phong pixels then wait
-            state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+            LitState state = sceneThatWaits(random);
             shaders[i] = state.frozenShader().get();
             fogs[i] = state.fog();
         }
@@ -307,9 +311,7 @@ class FragmentStageTest {
 
     @Test
     void aLongLitPhongSpanWaitsUntilTheEndAndIsThenWhatItWouldHaveBeen() {
-        LitState state = scene(new Random(5));
-        state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0);
-        state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+        LitState state = sceneThatWaits(new Random(5));
         PointShader frozen = state.frozenShader().get();
         Stage atOnce = Stage.make(state, true);
         Stage atEnd = Stage.make(state, true);
