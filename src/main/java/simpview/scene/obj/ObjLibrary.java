@@ -4,8 +4,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
-import java.util.HashSet;
-import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
 import simpview.scene.FileChecksum;
 import simpview.scene.FileProblem;
@@ -31,7 +29,8 @@ import simpview.scene.SceneException;
  * models are guarded by a lock held only to look up and to store; parsing
  * and replaying run outside it (two threads drawing the same new file may
  * both parse it). The file is looked at before it is read, so a change made
- * while it is read is seen at the next draw.
+ * while it is read is seen at the next draw; a picture looks at a file once
+ * ({@link ObjFilesSeen}), so within one picture, at the next picture's.
  *
  * <p>A model is trusted on the file's stamp alone once the file has
  * settled ({@link KeptFiles}). Until then each draw also compares a CRC-32C
@@ -86,38 +85,32 @@ public final class ObjLibrary {
      *     before it have gone to the sink), or the sink threw
      */
     public ObjCounts draw(Path file, ObjSink sink) throws SceneException {
-        return draw(file, sink, new HashSet<>());
+        return draw(file, sink, new ObjFilesSeen());
     }
 
     /**
-     * As {@link #draw(Path, ObjSink)}, for one of the pictures a scene draws:
-     * a file whose bytes this picture has read already ({@code readThisPicture},
-     * the picture's own set, kept by its caller) is replayed on its stamp
-     * alone, so a model drawn twice in one picture is read once. A save while
-     * the picture is drawn is seen by the next one.
+     * As {@link #draw(Path, ObjSink)}, for one of the pictures a scene draws
+     * ({@code seen}, the picture's own, kept by its caller): a file this
+     * picture has looked at already is not looked at again, and one whose
+     * bytes it has read already is replayed on its stamp alone, so a model
+     * drawn twice in one picture is looked up and read once. A save while the
+     * picture is drawn is seen by the next one.
      */
-    public ObjCounts draw(Path file, ObjSink sink, Set<Path> readThisPicture) throws SceneException {
-        long lookedAt = System.currentTimeMillis();
-        Path real;
-        BasicFileAttributes attributes;
-        try {
-            real = file.toRealPath();
-            attributes = Files.readAttributes(real, BasicFileAttributes.class); // once: the check and the stamp
-        } catch (IOException e) {
-            throw cannotOpen(file, e);
+    public ObjCounts draw(Path file, ObjSink sink, ObjFilesSeen seen) throws SceneException {
+        ObjFilesSeen.Look look = seen.look(file);
+        if (look == null) {
+            look = lookAt(file);
+            seen.looked(file, look);
         }
-        String notAFile = FileProblem.notAFile(attributes);
-        if (notAFile != null) {
-            throw new SceneException(file, 0, 0, "", "cannot read the obj file "
-                    + file.toAbsolutePath().normalize() + ": " + notAFile);
-        }
+        Path real = look.real();
+        BasicFileAttributes attributes = look.attributes();
         FileStamp stamp = FileStamp.of(attributes);
-        boolean settled = KeptFiles.settled(attributes, lookedAt, settleMillis);
+        boolean settled = KeptFiles.settled(attributes, look.lookedAt(), settleMillis);
         KeptFiles.Kept<Parsed> kept = models.get(real, stamp);
-        if (kept != null && (kept.settled() || readThisPicture.contains(real))) {
+        if (kept != null && (kept.settled() || seen.hasRead(real))) {
             return replay(kept.value().model(), sink);
         }
-        readThisPicture.add(real);
+        seen.reading(real);
         if (kept != null && kept.value().checksum() == checksum(file, real)) {
             if (settled) {
                 models.settle(real, kept);
@@ -136,6 +129,25 @@ public final class ObjLibrary {
             models.keep(real, stamp, settled, new Parsed(settled ? 0 : parser.checksum(), parsed));
         }
         return counts;
+    }
+
+    /** The file's real path and attributes, looked up once: the check that it is a file, and the stamp. */
+    private static ObjFilesSeen.Look lookAt(Path file) throws SceneException {
+        long lookedAt = System.currentTimeMillis();
+        Path real;
+        BasicFileAttributes attributes;
+        try {
+            real = file.toRealPath();
+            attributes = Files.readAttributes(real, BasicFileAttributes.class);
+        } catch (IOException e) {
+            throw cannotOpen(file, e);
+        }
+        String notAFile = FileProblem.notAFile(attributes);
+        if (notAFile != null) {
+            throw new SceneException(file, 0, 0, "", "cannot read the obj file "
+                    + file.toAbsolutePath().normalize() + ": " + notAFile);
+        }
+        return new ObjFilesSeen.Look(real, attributes, lookedAt);
     }
 
     private static ObjCounts replay(ObjModel model, ObjSink sink) throws SceneException {

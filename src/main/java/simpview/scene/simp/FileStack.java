@@ -42,6 +42,8 @@ final class FileStack implements AutoCloseable {
     private final List<Resolved> resolvedReaders = new ArrayList<>();
     private final Set<Path> onStack = new HashSet<>();
     private final Map<Name, Found> found = new HashMap<>();
+    /** Where each .obj name led, for {@link #locateModel}. */
+    private final Map<Name, Path> models = new HashMap<>();
     private final long smallFileLimit;
     private final SimpLibrary library;
     /** The real paths of the files whose bytes this scene has read: replayed on their stamps from then on. */
@@ -167,7 +169,7 @@ final class FileStack implements AutoCloseable {
         return result;
     }
 
-    /** A file name as a {@code file} command in a file of folder {@code dir} gives it (dir may be null). */
+    /** A file name as a command in a file of folder {@code dir} gives it (dir may be null). */
     private record Name(Path dir, String name) {
     }
 
@@ -218,11 +220,22 @@ final class FileStack implements AutoCloseable {
         return new Located(found, takesOver ? places.here() : null);
     }
 
-    /** The .obj file an {@code obj} command of the file being read names, found as {@code file} names are. */
+    /**
+     * The .obj file an {@code obj} command of the file being read names,
+     * found as {@code file} names are, and looked up once per scene as they
+     * are ({@link #found}): a page may draw one model a hundred times.
+     */
     Path locateModel(Command c) throws SceneException {
-        Located located = locate(c.fileName, ".obj", top(), c);
+        SimpReader from = top();
+        Name name = new Name(from.file().getParent(), c.fileName);
+        Path known = models.get(name);
+        if (known != null) {
+            return known;
+        }
+        Located located = locate(c.fileName, ".obj", from, c);
         reach(located.path);
         reachAlso(located.alsoWatched);
+        models.put(name, located.path);
         return located.path;
     }
 

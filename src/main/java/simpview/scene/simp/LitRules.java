@@ -1,11 +1,10 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
-import java.util.HashSet;
-import java.util.Set;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
+import simpview.scene.obj.ObjFilesSeen;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
@@ -32,8 +31,8 @@ final class LitRules implements RuleSet {
     private final LitState state = new LitState();
     private final LitGeometry geometry;
     private final ObjLibrary models;
-    /** The obj files this picture has read: a model drawn again is not read again ({@link ObjLibrary#draw}). */
-    private final Set<Path> modelsRead = new HashSet<>();
+    /** The obj files this picture has looked at and read: a model drawn again is neither again ({@link ObjLibrary#draw}). */
+    private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     private final FileStack files;
     private final boolean traced;
     private final PrimitiveTrace trace;
@@ -153,7 +152,7 @@ final class LitRules implements RuleSet {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
-        models.draw(file, geometry::face, modelsRead);
+        models.draw(file, geometry::face, modelsSeen);
         return true;
     }
 

@@ -151,13 +151,27 @@ class ObjLibraryTest {
     void aFreshModelDrawnTwiceInOnePictureIsReadOnce() throws Exception {
         Path file = write("a.obj", TRIANGLES);
         ObjLibrary library = new ObjLibrary();
-        java.util.Set<Path> picture = new java.util.HashSet<>();
+        ObjFilesSeen picture = new ObjFilesSeen();
         library.draw(file, face -> { }, picture);
         library.draw(file, face -> { }, picture);
         assertEquals(1, library.parseCount());
         assertEquals(0, library.contentCheckCount(), "the picture has read its bytes already");
-        library.draw(file, face -> { }, new java.util.HashSet<>());
+        library.draw(file, face -> { }, new ObjFilesSeen());
         assertEquals(1, library.contentCheckCount(), "the next picture compares them again");
+    }
+
+    @Test
+    void aPictureLooksAtAModelFileOnce() throws Exception {
+        Path file = write("a.obj", TRIANGLES);
+        ObjLibrary library = new ObjLibrary();
+        ObjFilesSeen picture = new ObjFilesSeen();
+        ObjCounts first = library.draw(file, face -> { }, picture);
+        Files.delete(file);
+        assertEquals(first, library.draw(file, face -> { }, picture), "the model as the picture first saw it");
+        assertEquals(1, library.parseCount());
+        SceneException gone = assertThrows(SceneException.class,
+                () -> library.draw(file, face -> { }, new ObjFilesSeen()));
+        assertTrue(gone.problem().startsWith("cannot open the obj file"), gone.problem());
     }
 
     @Test

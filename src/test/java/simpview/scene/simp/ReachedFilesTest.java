@@ -2,13 +2,16 @@ package simpview.scene.simp;
 
 import java.util.ArrayList;
 import simpview.scene.SceneException;
+import simpview.stage.PrimitiveTrace;
 import simpview.surface.PageCanvas;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
 import java.nio.file.Files;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
@@ -156,5 +159,42 @@ class ReachedFilesTest {
         Path spaced = write(scenes.resolve("a b.simp"), "wire\n");
         Path top = write(scenes.resolve("top.simp"), "file \"a b\"  \nfile\tcube\r\n");
         assertEquals(List.of(top, spaced, scenes.resolve("cube.simp"), working.resolve("cube.simp")), reached(top));
+    }
+
+    @Test
+    void aModelIsLookedUpOnceAPictureHoweverOftenItIsDrawn() throws Exception {
+        Path model = write(scenes.resolve("m.obj"), MODEL);
+        Path top = write(scenes.resolve("twice.simp"),
+                "camera -1 -1 1 1 -1 -100\ntranslate 0 0 -5\nobj m\nobj \"m\"\n");
+        SceneLibrary library = new SceneLibrary();
+        List<Integer> read = new ArrayList<>();
+        SceneMonitor deletingAfterTheFirstFace = new SceneMonitor() {
+            @Override
+            public PrimitiveTrace trace() {
+                return new PrimitiveTrace() {
+                    @Override
+                    public void read(int index, Path file, int line, int kind, double[] p, int at, int stride,
+                            int vertices) {
+                        read.add(index);
+                        try {
+                            Files.deleteIfExists(model);
+                        } catch (IOException e) {
+                            throw new UncheckedIOException(e);
+                        }
+                    }
+
+                    @Override
+                    public boolean drawing(int index) {
+                        return true;
+                    }
+                };
+            }
+        };
+        ScenePipeline.Options options = ScenePipeline.Options.lit(library).withWorkingDir(working);
+        ScenePipeline.draw(top, new PageCanvas(), options, deletingAfterTheFirstFace);
+        assertEquals(List.of(0, 1), read, "the second obj draws the model the picture looked up, gone since");
+        SceneException next = assertThrows(SceneException.class,
+                () -> ScenePipeline.draw(top, new PageCanvas(), options, SceneMonitor.NONE));
+        assertEquals(3, next.line(), "the next picture looks again: " + next.getMessage());
     }
 }
