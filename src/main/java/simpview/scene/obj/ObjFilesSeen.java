@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
+import simpview.scene.FileStamp;
 
 /**
  * The .obj files one picture has drawn ({@link ObjLibrary#draw}): where each
@@ -26,9 +27,10 @@ public final class ObjFilesSeen {
      *
      * @param real its real path, which names its kept model
      * @param attributes its attributes then
+     * @param stamp its stamp then, made once a picture: making one formats the time
      * @param lookedAt when, in milliseconds since the epoch
      */
-    record Look(Path real, BasicFileAttributes attributes, long lookedAt) {
+    record Look(Path real, BasicFileAttributes attributes, FileStamp stamp, long lookedAt) {
     }
 
     private final Map<Path, Look> looks = new HashMap<>();

@@ -103,9 +103,8 @@ public final class ObjLibrary {
             seen.looked(file, look);
         }
         Path real = look.real();
-        BasicFileAttributes attributes = look.attributes();
-        FileStamp stamp = FileStamp.of(attributes);
-        boolean settled = KeptFiles.settled(attributes, look.lookedAt(), settleMillis);
+        FileStamp stamp = look.stamp();
+        boolean settled = KeptFiles.settled(look.attributes(), look.lookedAt(), settleMillis);
         KeptFiles.Kept<Parsed> kept = models.get(real, stamp);
         if (kept != null && (kept.settled() || seen.hasRead(real))) {
             return replay(kept.value().model(), sink);
@@ -147,7 +146,7 @@ public final class ObjLibrary {
             throw new SceneException(file, 0, 0, "", "cannot read the obj file "
                     + file.toAbsolutePath().normalize() + ": " + notAFile);
         }
-        return new ObjFilesSeen.Look(real, attributes, lookedAt);
+        return new ObjFilesSeen.Look(real, attributes, FileStamp.of(attributes), lookedAt);
     }
 
     private static ObjCounts replay(ObjModel model, ObjSink sink) throws SceneException {
