@@ -13,14 +13,15 @@ import simpview.surface.PageCanvas;
 /**
  * The serial share of a lit page drawn by two threads, measured rather than
  * inferred: the same page redrawn on one thread (as read, nothing recorded)
- * and on two, alternating, in one process; the best of many redraws of
- * each, to see past a shared host. Of a two-thread redraw, the time outside
+ * and on two, alternating, in one process, once both are warm
+ * ({@link #WARM_NANOS}); the best of many redraws of each, to see past a
+ * shared host. Of a two-thread redraw, the time outside
  * the bands ({@link DrawingThreads#nanosInBands}) is what one thread does
  * alone: reading, the geometry stage, recording. Its share of the
  * one-thread time is Amdahl's s, and 1 / (s + (1 - s) / n) its prediction
  * for n cores (an upper bound: it assumes bands of equal work). The CPU
- * time of both ways (this thread's and the band helpers', over the warm half
- * of the redraws) shows what drawing in bands costs beside the one-thread
+ * time of both ways (this thread's and the band helpers', over the second
+ * half of the redraws) shows what drawing in bands costs beside the one-thread
  * path, apart from the host's load.
  *
  * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.SerialShare DIR scene...},
@@ -28,6 +29,14 @@ import simpview.surface.PageCanvas;
  * "a3/pageF". Not a JMH benchmark: a measurement of where the time goes.
  */
 public final class SerialShare {
+
+    /**
+     * How long each page is redrawn both ways, alternating, before the
+     * redraws that count: 80 redraws of a 2 ms page are 0.3 s, before C2 has
+     * compiled the two-thread path, and A4 page-g's best came out at 1.01x
+     * where warm redraws give 1.76x (session 16).
+     */
+    private static final long WARM_NANOS = 3_000_000_000L;
 
     private SerialShare() {
     }
@@ -44,6 +53,10 @@ public final class SerialShare {
             SceneLibrary library = new SceneLibrary();
             try (DrawingThreads one = DrawingThreads.one(); DrawingThreads two = DrawingThreads.of(2)) {
                 PageCanvas canvas = new PageCanvas();
+                for (long warmUntil = System.nanoTime() + WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
+                    redraw(canvas, one, file, library);
+                    redraw(canvas, two, file, library);
+                }
                 long bestOne = Long.MAX_VALUE;
                 long bestTwo = Long.MAX_VALUE;
                 long serialOfBest = 0;
@@ -56,7 +69,7 @@ public final class SerialShare {
                     long before = two.nanosInBands();
                     long t = redraw(canvas, two, file, library);
                     long bands = two.nanosInBands() - before;
-                    if (r >= rounds / 2) { // the second half, warm
+                    if (r >= rounds / 2) { // the second half
                         long after = cpu();
                         cpuOne += between - cpu;
                         cpuTwo += after - between;
