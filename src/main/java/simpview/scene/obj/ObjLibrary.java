@@ -1,11 +1,10 @@
 package simpview.scene.obj;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.util.concurrent.atomic.AtomicInteger;
 import simpview.scene.FileChecksum;
+import simpview.scene.FileLook;
 import simpview.scene.FileProblem;
 import simpview.scene.FileStamp;
 import simpview.scene.KeptFiles;
@@ -97,14 +96,14 @@ public final class ObjLibrary {
      * picture is drawn is seen by the next one.
      */
     public ObjCounts draw(Path file, ObjSink sink, ObjFilesSeen seen) throws SceneException {
-        ObjFilesSeen.Look look = seen.look(file);
+        FileLook look = seen.look(file);
         if (look == null) {
             look = lookAt(file);
             seen.looked(file, look);
         }
         Path real = look.real();
         FileStamp stamp = look.stamp();
-        boolean settled = KeptFiles.settled(look.attributes(), look.lookedAt(), settleMillis);
+        boolean settled = look.settled(settleMillis);
         KeptFiles.Kept<Parsed> kept = models.get(real, stamp);
         if (kept != null && (kept.settled() || seen.hasRead(real))) {
             return replay(kept.value().model(), sink);
@@ -131,22 +130,19 @@ public final class ObjLibrary {
     }
 
     /** The file's real path and attributes, looked up once: the check that it is a file, and the stamp. */
-    private static ObjFilesSeen.Look lookAt(Path file) throws SceneException {
-        long lookedAt = System.currentTimeMillis();
-        Path real;
-        BasicFileAttributes attributes;
+    private static FileLook lookAt(Path file) throws SceneException {
+        FileLook look;
         try {
-            real = file.toRealPath();
-            attributes = Files.readAttributes(real, BasicFileAttributes.class);
+            look = FileLook.at(file);
         } catch (IOException e) {
             throw cannotOpen(file, e);
         }
-        String notAFile = FileProblem.notAFile(attributes);
+        String notAFile = FileProblem.notAFile(look.attributes());
         if (notAFile != null) {
             throw new SceneException(file, 0, 0, "", "cannot read the obj file "
                     + file.toAbsolutePath().normalize() + ": " + notAFile);
         }
-        return new ObjFilesSeen.Look(real, attributes, FileStamp.of(attributes), lookedAt);
+        return look;
     }
 
     private static ObjCounts replay(ObjModel model, ObjSink sink) throws SceneException {

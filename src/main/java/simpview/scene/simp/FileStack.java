@@ -5,7 +5,6 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -13,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import simpview.scene.FileLook;
 import simpview.scene.FileProblem;
 import simpview.scene.FileStamp;
 import simpview.scene.SceneException;
@@ -297,12 +297,9 @@ final class FileStack implements AutoCloseable {
     private Resolved resolve(Path candidate, Path alsoWatched, Function<String, SceneException> error)
             throws SceneException {
         String shown = candidate.toAbsolutePath().normalize().toString();
-        long lookedAt = System.currentTimeMillis();
-        Path real;
-        BasicFileAttributes attributes;
+        FileLook look;
         try {
-            real = candidate.toRealPath();
-            attributes = Files.readAttributes(real, BasicFileAttributes.class);
+            look = FileLook.at(candidate);
         } catch (IOException | SecurityException e) {
             reach(candidate);
             reachAlso(alsoWatched);
@@ -314,14 +311,13 @@ final class FileStack implements AutoCloseable {
             }
             throw error.apply("cannot open " + shown + ": access denied");
         }
-        FileStamp stamp = FileStamp.of(attributes);
-        reach(candidate, real, stamp);
+        reach(candidate, look.real(), look.stamp());
         reachAlso(alsoWatched);
-        String notAFile = FileProblem.notAFile(attributes);
+        String notAFile = FileProblem.notAFile(look.attributes());
         if (notAFile != null) {
             throw error.apply(notAFile + ": " + shown);
         }
-        return new Resolved(real, stamp, library.settled(attributes, lookedAt));
+        return new Resolved(look.real(), look.stamp(), library.settled(look));
     }
 
     private void reachAlso(Path alsoWatched) {

@@ -3,10 +3,10 @@ package simpview.scene.simp;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.util.Arrays;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
+import simpview.scene.FileLook;
 import simpview.scene.FileStamp;
 import simpview.scene.KeptFiles;
 
@@ -58,9 +58,9 @@ public final class SimpLibrary {
         this.settleMillis = settleMillis;
     }
 
-    /** True when a file of these attributes, looked at {@code lookedAt}, is settled: its stamp alone tells a change. */
-    boolean settled(BasicFileAttributes attributes, long lookedAt) {
-        return KeptFiles.settled(attributes, lookedAt, settleMillis);
+    /** True when the file looked at is settled: its stamp alone tells a change. */
+    boolean settled(FileLook look) {
+        return look.settled(settleMillis);
     }
 
     /**
