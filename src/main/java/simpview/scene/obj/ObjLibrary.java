@@ -28,8 +28,8 @@ import simpview.scene.SceneException;
  * models are guarded by a lock held only to look up and to store; parsing
  * and replaying run outside it (two threads drawing the same new file may
  * both parse it). The file is looked at before it is read, so a change made
- * while it is read is seen at the next draw; a picture looks at a file once
- * ({@link ObjFilesSeen}), so within one picture, at the next picture's.
+ * while it is read is seen at the next picture: a picture looks at each file
+ * once ({@link ObjFilesSeen}).
  *
  * <p>A model is trusted on the file's stamp alone once the file has
  * settled ({@link KeptFiles}). Until then each draw also compares a CRC-32C

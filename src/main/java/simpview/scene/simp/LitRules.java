@@ -31,7 +31,7 @@ final class LitRules implements RuleSet {
     private final LitState state = new LitState();
     private final LitGeometry geometry;
     private final ObjLibrary models;
-    /** The obj files this picture has looked at and read: a model drawn again is neither again ({@link ObjLibrary#draw}). */
+    /** The obj files this picture has looked at and read: a model drawn again is not looked up or read again. */
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     private final FileStack files;
     private final boolean traced;
