@@ -54,6 +54,8 @@ public final class BandQueue {
     private final int bands;
     private final int slots;
     private final Drawer drawer;
+    /** Who is told what the threads do, or null. */
+    private final BandWatch watch;
     private final ReentrantLock lock = new ReentrantLock();
     /** Signalled when a batch is handed in, a band or whole batch is drawn, or the picture is done. */
     private final Condition changed = lock.newCondition();
@@ -87,9 +89,9 @@ public final class BandQueue {
     /**
      * For a panel drawn in {@code bands} bands (1 or more) by
      * {@code threads}, batches in a ring of {@code slots} (2 or more),
-     * drawn by {@code drawer}.
+     * drawn by {@code drawer}, watched by {@code watch} (or null).
      */
-    BandQueue(DrawingThreads threads, int bands, int slots, Drawer drawer) {
+    BandQueue(DrawingThreads threads, int bands, int slots, Drawer drawer, BandWatch watch) {
         if (bands < 1 || slots < 2) {
             throw new IllegalArgumentException(bands + " bands, " + slots + " slots");
         }
@@ -97,6 +99,7 @@ public final class BandQueue {
         this.bands = bands;
         this.slots = slots;
         this.drawer = drawer;
+        this.watch = watch;
         this.drawn = new int[bands];
         this.claimed = new boolean[bands];
         this.whole = new boolean[slots];
@@ -133,6 +136,9 @@ public final class BandQueue {
         lock.lock();
         try {
             whole[published % slots] = drawnWhole;
+            if (watch != null) {
+                watch.handedIn(published, drawnWhole);
+            }
             published++;
             if (stopping) {
                 stopping = false;
@@ -262,6 +268,9 @@ public final class BandQueue {
             return true;
         }
         waiting++;
+        if (watch != null) {
+            watch.parked();
+        }
         try {
             if (interruptible) {
                 changed.await();
@@ -272,6 +281,9 @@ public final class BandQueue {
         } catch (InterruptedException e) {
             return false;
         } finally {
+            if (watch != null) {
+                watch.woken();
+            }
             waiting--;
         }
     }
@@ -326,6 +338,9 @@ public final class BandQueue {
         int band = item % (bands + 1);
         Throwable failed = null;
         lock.unlock();
+        if (watch != null) {
+            watch.drawing(batch, band == bands ? -1 : band);
+        }
         try {
             if (band == bands) {
                 drawer.whole(batch % slots);
@@ -335,6 +350,9 @@ public final class BandQueue {
         } catch (RuntimeException | Error e) {
             failed = e;
         } finally {
+            if (watch != null) {
+                watch.drawn(batch, band == bands ? -1 : band);
+            }
             lock.lock();
         }
         if (band == bands) {

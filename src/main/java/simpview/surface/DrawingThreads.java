@@ -67,6 +67,8 @@ public final class DrawingThreads implements AutoCloseable {
      * drawers.
      */
     private final Map<Class<?>, List<?>> kept = new HashMap<>();
+    /** Who is told what the queues' threads do, or null: nobody. */
+    private volatile BandWatch watch;
 
     private DrawingThreads(int threads, boolean perPicture) {
         if (threads < 1) {
@@ -163,7 +165,16 @@ public final class DrawingThreads implements AutoCloseable {
      * {@code drawer} (see {@link BandQueue}).
      */
     public BandQueue queue(int bands, int slots, BandQueue.Drawer drawer) {
-        return new BandQueue(this, bands, slots, drawer);
+        return new BandQueue(this, bands, slots, drawer, watch);
+    }
+
+    /**
+     * From the next queue made on, tells {@code by} what the queues' threads
+     * do (null: nobody, the default): for a timeline of where a picture's
+     * time goes ({@link BandWatch}).
+     */
+    public void watchedBy(BandWatch by) {
+        watch = by;
     }
 
     /**

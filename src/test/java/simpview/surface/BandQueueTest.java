@@ -96,6 +96,96 @@ class BandQueueTest {
         }
     }
 
+    /** A watch that keeps what it is told, each line with the thread it came on. */
+    private static final class Told implements BandWatch {
+        final List<String> lines = Collections.synchronizedList(new ArrayList<>());
+
+        private void add(String what) {
+            lines.add(Thread.currentThread().getName() + " " + what);
+        }
+
+        @Override
+        public void handedIn(int batch, boolean whole) {
+            add("handedIn " + batch + (whole ? " whole" : ""));
+        }
+
+        @Override
+        public void drawing(int batch, int band) {
+            add("drawing " + batch + "/" + band);
+        }
+
+        @Override
+        public void drawn(int batch, int band) {
+            add("drawn " + batch + "/" + band);
+        }
+
+        @Override
+        public void parked() {
+            add("parked");
+        }
+
+        @Override
+        public void woken() {
+            add("woken");
+        }
+    }
+
+    @Test
+    void aWatchIsToldEveryHandOffAndEveryDrawOnTheThreadThatDrawsIt() {
+        try (DrawingThreads threads = DrawingThreads.of(2)) {
+            Told told = new Told();
+            threads.watchedBy(told);
+            Log log = new Log(5, 3);
+            BandQueue queue = threads.queue(5, 3, log);
+            Random random = new Random(16);
+            List<String> handedIn = new ArrayList<>();
+            int draws = 0;
+            for (int k = 0; k < 40; k++) {
+                int slot = queue.slot();
+                log.batchIn[slot] = k;
+                boolean whole = random.nextInt(4) == 0;
+                handedIn.add("handedIn " + k + (whole ? " whole" : ""));
+                draws += whole ? 1 : 5;
+                queue.publish(whole);
+            }
+            queue.finish();
+            threads.watchedBy(null);
+            String caller = Thread.currentThread().getName();
+            List<String> lines = new ArrayList<>(told.lines);
+            List<String> handOffs = new ArrayList<>();
+            java.util.Map<String, String> drawingOn = new java.util.HashMap<>();
+            java.util.Map<String, Boolean> parkedOn = new java.util.HashMap<>();
+            Set<String> drawnItems = new java.util.HashSet<>();
+            for (String line : lines) {
+                String thread = line.substring(0, line.indexOf(' '));
+                String what = line.substring(thread.length() + 1);
+                if (what.startsWith("handedIn")) {
+                    assertEquals(caller, thread, "batches are handed in by the caller");
+                    handOffs.add(what);
+                } else if (what.startsWith("drawing ")) {
+                    assertEquals(null, drawingOn.put(thread, what.substring(8)), thread + " draws two at once");
+                } else if (what.startsWith("drawn ")) {
+                    String item = what.substring(6);
+                    assertEquals(item, drawingOn.remove(thread), thread + " ended what it had not begun");
+                    assertTrue(drawnItems.add(item), item + " drawn twice");
+                    String[] parts = item.split("/");
+                    boolean whole = handedIn.get(Integer.parseInt(parts[0])).endsWith("whole");
+                    assertEquals(whole, parts[1].equals("-1"), item);
+                } else if (what.equals("parked")) {
+                    assertEquals(null, parkedOn.put(thread, true), thread + " parked twice");
+                } else {
+                    assertEquals("woken", what);
+                    assertEquals(Boolean.TRUE, parkedOn.remove(thread), thread + " woke unparked");
+                }
+            }
+            assertEquals(handedIn, handOffs);
+            assertEquals(draws, drawnItems.size());
+            assertTrue(drawingOn.isEmpty(), "every draw ended: " + drawingOn);
+            // A worker parked at the end may wake after finish returns: its last park may be unmatched.
+            assertTrue(parkedOn.keySet().stream().allMatch(t -> t.startsWith("simpview-band-")), "" + parkedOn);
+        }
+    }
+
     @Test
     void aBandGoesOnToTheNextBatchWhileAnotherBandIsStillOnTheLast() throws InterruptedException {
         try (DrawingThreads threads = DrawingThreads.of(2)) {

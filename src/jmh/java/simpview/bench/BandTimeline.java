@@ -1,0 +1,170 @@
+package simpview.bench;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import simpview.scene.simp.SceneLibrary;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.ScenePipeline;
+import simpview.surface.BandWatch;
+import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
+
+/**
+ * Where a lit page's time goes on two threads, picture by picture: the page
+ * is redrawn until warm ({@link #WARM_NANOS}, then {@link #WATCHED_WARM_NANOS}
+ * watched), then {@link #PICTURES} redraws are watched ({@link BandWatch}),
+ * and the table gives the least and most over them of each picture's time,
+ * its batches, and of each thread the time it spent drawing bands and parked.
+ * The reading thread's "other" is the rest of its time: reading the scene,
+ * the geometry stage, recording, and spinning before it parks. A worker's
+ * time neither drawing nor parked is spent spinning. The watch's own calls
+ * (a lock and a clock read each) make a picture a little slower than the
+ * benchmarks do.
+ *
+ * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.BandTimeline DIR scene...},
+ * DIR the folder holding course-simp-a3 and course-simp-a4, a scene as
+ * "a4/page-g". Not a JMH benchmark: a measurement of where the time goes.
+ */
+public final class BandTimeline {
+
+    /** How long each page is redrawn before the redraws watched, for C2 to compile the two-thread path. */
+    private static final long WARM_NANOS = 3_000_000_000L;
+
+    /** How long each page is then redrawn watched, before the redraws that count. */
+    private static final long WATCHED_WARM_NANOS = 1_000_000_000L;
+
+    /** Redraws watched per page. */
+    private static final int PICTURES = 5;
+
+    private BandTimeline() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path folder = Path.of(args[0]);
+        System.out.println("| page | picture | batches | reading thread: drawing | parked | other "
+                + "| worker: drawing | parked |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|");
+        for (int i = 1; i < args.length; i++) {
+            String[] parts = args[i].split("/");
+            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            SceneLibrary library = new SceneLibrary();
+            try (DrawingThreads two = DrawingThreads.of(2)) {
+                PageCanvas canvas = new PageCanvas();
+                canvas.drawWith(two);
+                for (long warmUntil = System.nanoTime() + WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
+                    redraw(canvas, file, library);
+                }
+                Timeline timeline = new Timeline(Thread.currentThread());
+                two.watchedBy(timeline);
+                for (long warmUntil = System.nanoTime() + WATCHED_WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
+                    redraw(canvas, file, library); // the watch's calls compiled too
+                }
+                Range[] columns = new Range[7];
+                for (int c = 0; c < columns.length; c++) {
+                    columns[c] = new Range();
+                }
+                for (int p = 0; p < PICTURES; p++) {
+                    timeline.clear();
+                    long start = System.nanoTime();
+                    redraw(canvas, file, library);
+                    long picture = System.nanoTime() - start;
+                    columns[0].add(picture);
+                    columns[1].add(timeline.batches * 1000L);
+                    columns[2].add(timeline.drawing[0]);
+                    columns[3].add(timeline.parked[0]);
+                    columns[4].add(picture - timeline.drawing[0] - timeline.parked[0]);
+                    columns[5].add(timeline.drawing[1]);
+                    columns[6].add(timeline.parked[1]);
+                }
+                two.watchedBy(null);
+                StringBuilder row = new StringBuilder("| ").append(args[i]);
+                for (int c = 0; c < columns.length; c++) {
+                    row.append(" | ").append(c == 1 ? columns[c].asCount() : columns[c].asMicros());
+                }
+                System.out.println(row.append(" |"));
+            }
+        }
+    }
+
+    private static void redraw(PageCanvas canvas, Path file, SceneLibrary library) throws Exception {
+        canvas.clear();
+        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
+    }
+
+    /** The least and most of a column over the pictures watched. */
+    private static final class Range {
+        private long least = Long.MAX_VALUE;
+        private long most = Long.MIN_VALUE;
+
+        void add(long v) {
+            least = Math.min(least, v);
+            most = Math.max(most, v);
+        }
+
+        String asMicros() {
+            return least == most ? micros(least) : micros(least) + "-" + micros(most);
+        }
+
+        String asCount() {
+            return least == most ? Long.toString(least / 1000) : least / 1000 + "-" + most / 1000;
+        }
+
+        private static String micros(long nanos) {
+            return String.format(Locale.ROOT, "%.0f", nanos / 1e3);
+        }
+    }
+
+    /**
+     * The watch: each thread's time drawing and parked in the picture, summed
+     * as the calls come (thread 0 the reading thread, 1 every worker).
+     */
+    private static final class Timeline implements BandWatch {
+        private final Thread reader;
+        private final long[] drawing = new long[2];
+        private final long[] parked = new long[2];
+        private final long[] drawingSince = new long[2];
+        private final long[] parkedSince = new long[2];
+        private int batches;
+
+        Timeline(Thread reader) {
+            this.reader = reader;
+        }
+
+        synchronized void clear() {
+            java.util.Arrays.fill(drawing, 0);
+            java.util.Arrays.fill(parked, 0);
+            batches = 0;
+        }
+
+        private int thread() {
+            return Thread.currentThread() == reader ? 0 : 1;
+        }
+
+        @Override
+        public synchronized void handedIn(int batch, boolean whole) {
+            batches++;
+        }
+
+        @Override
+        public synchronized void drawing(int batch, int band) {
+            drawingSince[thread()] = System.nanoTime();
+        }
+
+        @Override
+        public synchronized void drawn(int batch, int band) {
+            int t = thread();
+            drawing[t] += System.nanoTime() - drawingSince[t];
+        }
+
+        @Override
+        public synchronized void parked() {
+            parkedSince[thread()] = System.nanoTime();
+        }
+
+        @Override
+        public synchronized void woken() {
+            int t = thread();
+            parked[t] += System.nanoTime() - parkedSince[t];
+        }
+    }
+}
