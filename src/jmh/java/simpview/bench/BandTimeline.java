@@ -13,8 +13,10 @@ import simpview.surface.PageCanvas;
  * Where a lit page's time goes on two threads, picture by picture: the page
  * is redrawn until warm ({@link #WARM_NANOS}, then {@link #WATCHED_WARM_NANOS}
  * watched), then {@link #PICTURES} redraws are watched ({@link BandWatch}),
- * and the table gives the least and most over them of each picture's time,
- * its batches, and of each thread the time it spent drawing bands and parked.
+ * and the table gives the median over them of each picture's time, its
+ * batches, and of each thread the time it spent drawing bands and parked:
+ * medians, because now and then a picture is drawn by one thread alone
+ * while the other does not get a core (on this 2-core host, a few in 20).
  * The reading thread's "other" is the rest of its time: reading the scene,
  * the geometry stage, recording, and spinning before it parks. A worker's
  * time neither drawing nor parked is spent spinning. The watch's own calls
@@ -33,8 +35,8 @@ public final class BandTimeline {
     /** How long each page is then redrawn watched, before the redraws that count. */
     private static final long WATCHED_WARM_NANOS = 1_000_000_000L;
 
-    /** Redraws watched per page. */
-    private static final int PICTURES = 5;
+    /** Redraws watched per page, of which the medians are shown. */
+    private static final int PICTURES = 21;
 
     private BandTimeline() {
     }
@@ -51,7 +53,9 @@ public final class BandTimeline {
             try (DrawingThreads two = DrawingThreads.of(2)) {
                 PageCanvas canvas = new PageCanvas();
                 canvas.drawWith(two);
-                for (long warmUntil = System.nanoTime() + WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
+                // The first page three times as long: C2 still compiles the whole pipeline beside it.
+                long warm = i == 1 ? 3 * WARM_NANOS : WARM_NANOS;
+                for (long warmUntil = System.nanoTime() + warm; System.nanoTime() - warmUntil < 0;) {
                     redraw(canvas, file, library);
                 }
                 Timeline timeline = new Timeline(Thread.currentThread());
@@ -59,27 +63,27 @@ public final class BandTimeline {
                 for (long warmUntil = System.nanoTime() + WATCHED_WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
                     redraw(canvas, file, library); // the watch's calls compiled too
                 }
-                Range[] columns = new Range[7];
-                for (int c = 0; c < columns.length; c++) {
-                    columns[c] = new Range();
-                }
+                long[][] columns = new long[7][PICTURES];
                 for (int p = 0; p < PICTURES; p++) {
                     timeline.clear();
                     long start = System.nanoTime();
                     redraw(canvas, file, library);
                     long picture = System.nanoTime() - start;
-                    columns[0].add(picture);
-                    columns[1].add(timeline.batches * 1000L);
-                    columns[2].add(timeline.drawing[0]);
-                    columns[3].add(timeline.parked[0]);
-                    columns[4].add(picture - timeline.drawing[0] - timeline.parked[0]);
-                    columns[5].add(timeline.drawing[1]);
-                    columns[6].add(timeline.parked[1]);
+                    columns[0][p] = picture;
+                    columns[1][p] = timeline.batches;
+                    columns[2][p] = timeline.drawing[0];
+                    columns[3][p] = timeline.parked[0];
+                    columns[4][p] = picture - timeline.drawing[0] - timeline.parked[0];
+                    columns[5][p] = timeline.drawing[1];
+                    columns[6][p] = timeline.parked[1];
                 }
                 two.watchedBy(null);
                 StringBuilder row = new StringBuilder("| ").append(args[i]);
                 for (int c = 0; c < columns.length; c++) {
-                    row.append(" | ").append(c == 1 ? columns[c].asCount() : columns[c].asMicros());
+                    java.util.Arrays.sort(columns[c]);
+                    long median = columns[c][PICTURES / 2];
+                    row.append(" | ").append(c == 1 ? Long.toString(median) // batches; the rest in ns, shown in us
+                            : String.format(Locale.ROOT, "%.0f", median / 1e3));
                 }
                 System.out.println(row.append(" |"));
             }
@@ -89,29 +93,6 @@ public final class BandTimeline {
     private static void redraw(PageCanvas canvas, Path file, SceneLibrary library) throws Exception {
         canvas.clear();
         ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
-    }
-
-    /** The least and most of a column over the pictures watched. */
-    private static final class Range {
-        private long least = Long.MAX_VALUE;
-        private long most = Long.MIN_VALUE;
-
-        void add(long v) {
-            least = Math.min(least, v);
-            most = Math.max(most, v);
-        }
-
-        String asMicros() {
-            return least == most ? micros(least) : micros(least) + "-" + micros(most);
-        }
-
-        String asCount() {
-            return least == most ? Long.toString(least / 1000) : least / 1000 + "-" + most / 1000;
-        }
-
-        private static String micros(long nanos) {
-            return String.format(Locale.ROOT, "%.0f", nanos / 1e3);
-        }
     }
 
     /**
