@@ -47,8 +47,7 @@ public final class BandTimeline {
                 + "| worker: drawing | parked |");
         System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|");
         for (int i = 1; i < args.length; i++) {
-            String[] parts = args[i].split("/");
-            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            Path file = LitPages.sceneFile(folder, args[i]);
             SceneLibrary library = new SceneLibrary();
             try (DrawingThreads two = DrawingThreads.of(2)) {
                 PageCanvas canvas = new PageCanvas();

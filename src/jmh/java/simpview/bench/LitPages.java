@@ -60,8 +60,7 @@ public class LitPages {
         drawing = DrawingThreads.of(threads);
         canvas.drawWith(drawing);
         Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
-        String[] parts = scene.split("/");
-        file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+        file = sceneFile(courseSimp.toAbsolutePath().getParent(), scene);
         if (!Files.isRegularFile(file)) {
             throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
         }
@@ -74,6 +73,16 @@ public class LitPages {
     @TearDown(Level.Trial)
     public void tearDown() {
         drawing.close();
+    }
+
+    /**
+     * The .simp file of a lit course page named as the scene parameter names
+     * it ("a3/pageI"), in {@code folder}, which holds course-simp-a3 and
+     * course-simp-a4: for this benchmark and the measurements beside it.
+     */
+    static Path sceneFile(Path folder, String scene) {
+        String[] parts = scene.split("/");
+        return folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
     }
 
     @Benchmark

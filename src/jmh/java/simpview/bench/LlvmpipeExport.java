@@ -70,8 +70,7 @@ public final class LlvmpipeExport {
         Path out = Path.of(args[1]);
         Files.createDirectories(out);
         for (int i = 2; i < args.length; i++) {
-            String[] parts = args[i].split("/");
-            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            Path file = LitPages.sceneFile(folder, args[i]);
             Export export = export(file);
             export.write(out.resolve(args[i].replace('/', '-') + ".bin"));
             double[] one = time(file, 1);

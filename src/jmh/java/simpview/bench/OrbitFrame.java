@@ -131,8 +131,7 @@ public class OrbitFrame {
         renderer.canvas().recordProvenance(record ? provenance : null);
         double[] centre = {0, 0, -100};
         if (!scene.equals("page7")) {
-            String[] parts = scene.split("/");
-            litFile = course.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            litFile = LitPages.sceneFile(course.toAbsolutePath().getParent(), scene);
             if (!Files.isRegularFile(litFile)) {
                 throw new IllegalStateException("no " + litFile + ": the course's files belong beside the project");
             }

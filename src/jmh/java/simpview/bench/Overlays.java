@@ -94,7 +94,7 @@ public class Overlays {
             view = new View.OfPage(page);
             file = null;
         } else {
-            file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            file = LitPages.sceneFile(courseSimp.toAbsolutePath().getParent(), scene);
             if (!Files.isRegularFile(file)) {
                 throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
             }

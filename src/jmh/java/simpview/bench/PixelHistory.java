@@ -58,8 +58,7 @@ public class PixelHistory {
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
         Path courseSimp = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
-        String[] parts = scene.split("/");
-        file = courseSimp.resolveSibling("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+        file = LitPages.sceneFile(courseSimp.toAbsolutePath().getParent(), scene);
         if (!Files.isRegularFile(file)) {
             throw new IllegalStateException("no " + file + ": the course's files belong beside the project");
         }

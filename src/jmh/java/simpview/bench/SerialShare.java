@@ -48,8 +48,7 @@ public final class SerialShare {
                 + "| CPU per redraw, 1 thread | CPU per redraw, 2 threads (sum) |");
         System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         for (int i = 1; i < args.length; i++) {
-            String[] parts = args[i].split("/");
-            Path file = folder.resolve("course-simp-" + parts[0]).resolve(parts[1] + ".simp");
+            Path file = LitPages.sceneFile(folder, args[i]);
             SceneLibrary library = new SceneLibrary();
             try (DrawingThreads one = DrawingThreads.one(); DrawingThreads two = DrawingThreads.of(2)) {
                 PageCanvas canvas = new PageCanvas();
