@@ -12,7 +12,11 @@ package simpview.surface;
  */
 public interface BandWatch {
 
-    /** Batch {@code batch} (counted from 0 in each queue: a lit picture makes its own) is handed in, to be drawn in bands or {@code whole}. */
+    /**
+     * Batch {@code batch} is handed in, to be drawn in bands or
+     * {@code whole}; batches are counted from 0 in each queue, and a picture
+     * drawn from a record makes its own queue.
+     */
     void handedIn(int batch, boolean whole);
 
     /** This thread starts drawing band {@code band} of batch {@code batch}; band -1: the batch drawn whole. */
