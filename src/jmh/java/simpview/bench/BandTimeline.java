@@ -3,8 +3,6 @@ package simpview.bench;
 import java.nio.file.Path;
 import java.util.Locale;
 import simpview.scene.simp.SceneLibrary;
-import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.ScenePipeline;
 import simpview.surface.BandWatch;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
@@ -55,18 +53,18 @@ public final class BandTimeline {
                 // The first page three times as long: C2 still compiles the whole pipeline beside it.
                 long warm = i == 1 ? 3 * WARM_NANOS : WARM_NANOS;
                 for (long warmUntil = System.nanoTime() + warm; System.nanoTime() - warmUntil < 0;) {
-                    redraw(canvas, file, library);
+                    LitPages.redraw(canvas, file, library);
                 }
                 Timeline timeline = new Timeline(Thread.currentThread());
                 two.watchedBy(timeline);
                 for (long warmUntil = System.nanoTime() + WATCHED_WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
-                    redraw(canvas, file, library); // the watch's calls compiled too
+                    LitPages.redraw(canvas, file, library); // the watch's calls compiled too
                 }
                 long[][] columns = new long[7][PICTURES];
                 for (int p = 0; p < PICTURES; p++) {
                     timeline.clear();
                     long start = System.nanoTime();
-                    redraw(canvas, file, library);
+                    LitPages.redraw(canvas, file, library);
                     long picture = System.nanoTime() - start;
                     columns[0][p] = picture;
                     columns[1][p] = timeline.batches;
@@ -87,11 +85,6 @@ public final class BandTimeline {
                 System.out.println(row.append(" |"));
             }
         }
-    }
-
-    private static void redraw(PageCanvas canvas, Path file, SceneLibrary library) throws Exception {
-        canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
     }
 
     /**

@@ -5,8 +5,6 @@ import java.lang.management.ThreadMXBean;
 import java.nio.file.Path;
 import java.util.Locale;
 import simpview.scene.simp.SceneLibrary;
-import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 
@@ -108,8 +106,7 @@ public final class SerialShare {
             throws Exception {
         canvas.drawWith(threads);
         long start = System.nanoTime();
-        canvas.clear();
-        ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
+        LitPages.redraw(canvas, file, library);
         return System.nanoTime() - start;
     }
 }
