@@ -337,9 +337,10 @@ public final class BandQueue {
         int batch = item / (bands + 1);
         int band = item % (bands + 1);
         Throwable failed = null;
+        int watched = band == bands ? -1 : band; // as the watch names a batch drawn whole
         lock.unlock();
         if (watch != null) {
-            watch.drawing(batch, band == bands ? -1 : band);
+            watch.drawing(batch, watched);
         }
         try {
             if (band == bands) {
@@ -351,7 +352,7 @@ public final class BandQueue {
             failed = e;
         } finally {
             if (watch != null) {
-                watch.drawn(batch, band == bands ? -1 : band);
+                watch.drawn(batch, watched);
             }
             lock.lock();
         }
