@@ -180,7 +180,9 @@ public final class Command {
         colored = stride == 6;
         clamped = false;
         for (int k = 0; k < n; k++) {
-            System.arraycopy(numbers, stride * k, xyz, 3 * k, 3);
+            xyz[3 * k] = numbers[stride * k];
+            xyz[3 * k + 1] = numbers[stride * k + 1];
+            xyz[3 * k + 2] = numbers[stride * k + 2];
             if (colored) {
                 for (int c = 0; c < 3; c++) {
                     double v = numbers[stride * k + 3 + c];
