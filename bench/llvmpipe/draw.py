@@ -1,16 +1,25 @@
 """The llvmpipe side of simpview's side-by-side benchmark.
 
-Draws the pages that simpview.bench.LlvmpipeExport wrote (NAME.bin: the
+Draws one page that simpview.bench.LlvmpipeExport wrote (NAME.bin: the
 triangles and line segments simpview's geometry stage hands its
 rasterizers, grouped in drawing order by how they are lit and by which of
 the two they are) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
 context), with simpview's lighting formula, fog and depth test in GLSL, per
 pixel. Warm: the triangles are uploaded and the shaders compiled first,
-and 3 s of redraws (at least 20) run before 61 are timed (clear colour and
-depth, one draw call per group, glFinish). Prints one line per page: NAME median_ms best_ms.
+and 3 s of redraws (at least 20) run; then it prints "ready".
 
-Usage: python draw.py DIR NAME...   (with SIMPVIEW_LLVMPIPE_PNG=1 also writes
-DIR/NAME-llvmpipe.png, the panel as llvmpipe drew it, to look at beside simpview's)
+Then it takes turns with simpview, which started it: for each line "turn"
+read from stdin, one redraw untimed and TIMED_IN_A_TURN timed (clear colour
+and depth, one draw call per group, glFinish), their times printed on one
+line, in ms. It returns at the end of stdin. The two sides never draw at the
+same time, and their turns alternate over the whole run, so both see the
+host's cores as they are then (on this machine the same two-thread picture
+takes 20-25 % longer for a second or so at a time, see docs/performance.md,
+session 17).
+
+Usage: python draw.py DIR NAME   (with SIMPVIEW_LLVMPIPE_PNG=1 also writes
+DIR/NAME-llvmpipe.png at the end, the panel as llvmpipe drew it, to look at
+beside simpview's)
 """
 import os
 import struct
@@ -26,6 +35,7 @@ from OpenGL import GL, arrays, osmesa  # noqa: E402
 SIZE = 650
 UNIFORMS = 80
 FLOATS = 13
+TIMED_IN_A_TURN = 5
 
 VERTEX = """
 #version 330 core
@@ -150,7 +160,7 @@ def write_png(path, rgba):
 
 
 def main():
-    folder = sys.argv[1]
+    folder, name = sys.argv[1], sys.argv[2]
     ctx, buf = context()
     prog = program()
     GL.glUseProgram(prog)
@@ -159,45 +169,48 @@ def main():
     GL.glEnable(GL.GL_DEPTH_TEST)
     GL.glDepthFunc(GL.GL_LESS)  # strictly nearer wins, as simpview's z-buffer
     GL.glClearColor(0, 0, 0, 1)
-    for name in sys.argv[2:]:
-        uniforms, modes, counts, data = load(os.path.join(folder, name + ".bin"))
-        vao = GL.glGenVertexArrays(1)
-        GL.glBindVertexArray(vao)
-        vbo = GL.glGenBuffers(1)
-        GL.glBindBuffer(GL.GL_ARRAY_BUFFER, vbo)
-        GL.glBufferData(GL.GL_ARRAY_BUFFER, data.nbytes, data, GL.GL_STATIC_DRAW)
-        stride = 4 * FLOATS
-        for index, (size, offset) in enumerate([(4, 0), (4, 16), (4, 32), (1, 48)]):
-            GL.glEnableVertexAttribArray(index)
-            GL.glVertexAttribPointer(index, size, GL.GL_FLOAT, GL.GL_FALSE, stride, GL.GLvoidp(offset))
-        firsts = np.cumsum([0] + counts[:-1]).tolist()
+    uniforms, modes, counts, data = load(os.path.join(folder, name + ".bin"))
+    vao = GL.glGenVertexArrays(1)
+    GL.glBindVertexArray(vao)
+    vbo = GL.glGenBuffers(1)
+    GL.glBindBuffer(GL.GL_ARRAY_BUFFER, vbo)
+    GL.glBufferData(GL.GL_ARRAY_BUFFER, data.nbytes, data, GL.GL_STATIC_DRAW)
+    stride = 4 * FLOATS
+    for index, (size, offset) in enumerate([(4, 0), (4, 16), (4, 32), (1, 48)]):
+        GL.glEnableVertexAttribArray(index)
+        GL.glVertexAttribPointer(index, size, GL.GL_FLOAT, GL.GL_FALSE, stride, GL.GLvoidp(offset))
+    firsts = np.cumsum([0] + counts[:-1]).tolist()
 
-        def redraw():
-            GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
-            for u, mode, first, count in zip(uniforms, modes, firsts, counts):
-                GL.glUniform1fv(where, UNIFORMS, u)
-                GL.glDrawArrays(mode, first, count)
-            GL.glFinish()
+    def redraw():
+        GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
+        for u, mode, first, count in zip(uniforms, modes, firsts, counts):
+            GL.glUniform1fv(where, UNIFORMS, u)
+            GL.glDrawArrays(mode, first, count)
+        GL.glFinish()
 
-        # Warmed as the simpview side is (LlvmpipeExport): 3 s of redraws, at least 20.
-        warm_until = time.perf_counter() + 3
-        warmed = 0
-        while warmed < 20 or time.perf_counter() < warm_until:
-            redraw()
-            warmed += 1
+    # Warmed as the simpview side is (LlvmpipeExport): 3 s of redraws, at least 20.
+    warm_until = time.perf_counter() + 3
+    warmed = 0
+    while warmed < 20 or time.perf_counter() < warm_until:
+        redraw()
+        warmed += 1
+    print("ready", flush=True)
+    for line in sys.stdin:
+        if line.strip() != "turn":
+            raise SystemExit("draw.py: expected a line 'turn', got " + repr(line))
+        redraw()  # untimed: the cores may still be simpview's for a moment
         times = []
-        for _ in range(61):
+        for _ in range(TIMED_IN_A_TURN):
             start = time.perf_counter()
             redraw()
             times.append((time.perf_counter() - start) * 1000)
-        times.sort()
-        print("%s %.3f %.3f" % (name, times[len(times) // 2], times[0]), flush=True)
-        if os.environ.get("SIMPVIEW_LLVMPIPE_PNG"):
-            pixels = GL.glReadPixels(0, 0, SIZE, SIZE, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE)
-            write_png(os.path.join(folder, name + "-llvmpipe.png"),
-                      np.frombuffer(pixels, np.uint8).reshape(SIZE, SIZE, 4))
-        GL.glDeleteBuffers(1, [vbo])
-        GL.glDeleteVertexArrays(1, [vao])
+        print(" ".join("%.4f" % t for t in times), flush=True)
+    if os.environ.get("SIMPVIEW_LLVMPIPE_PNG"):
+        pixels = GL.glReadPixels(0, 0, SIZE, SIZE, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE)
+        write_png(os.path.join(folder, name + "-llvmpipe.png"),
+                  np.frombuffer(pixels, np.uint8).reshape(SIZE, SIZE, 4))
+    GL.glDeleteBuffers(1, [vbo])
+    GL.glDeleteVertexArrays(1, [vao])
     osmesa.OSMesaDestroyContext(ctx)
 
 

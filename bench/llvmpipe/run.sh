@@ -1,10 +1,10 @@
 #!/bin/sh
-# simpview against Mesa's llvmpipe on the same lit course pages, in one run,
-# page by page: simpview's warm redraws on 1 and 2 threads (LlvmpipeExport,
-# which also writes the page's triangles), then at once llvmpipe's warm
-# redraws of those triangles (draw.py), so both see the host as it is then;
-# then the table of both, with the load average before and after.
-# Run setup.sh once first.
+# simpview against Mesa's llvmpipe on the same lit course pages, page by page:
+# LlvmpipeExport writes the page's triangles, times simpview's warm redraws
+# on 1 thread, then on 2 threads taking turns with llvmpipe's redraws of
+# those triangles (draw.py, which it starts), so that both see the host's
+# cores as they are then; then the table of both, with the load average
+# before and after. Run setup.sh once first.
 # Usage: bench/llvmpipe/run.sh [COURSE_DIR] [page ...]   (COURSE_DIR holds course-simp-a3 and -a4)
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,12 +19,11 @@ out="$root/build/llvmpipe"
 mkdir -p "$out"
 (cd "$root" && gradle --no-daemon -q jmhClasses)
 cp="$root/build/classes/java/main:$root/build/classes/java/jmh:$root/build/resources/main"
-: > "$out/simpview.txt"
-: > "$out/llvmpipe.txt"
+: > "$out/times.txt"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for p in $pages; do
-    java -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$p" >> "$out/simpview.txt"
-    "$root/build/llvmpipe-venv/bin/python" "$here/draw.py" "$out" "$(echo "$p" | tr / -)" >> "$out/llvmpipe.txt"
+    java -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
+        "$here/draw.py" "$p" >> "$out/times.txt"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
-python3 "$here/table.py" "$out/simpview.txt" "$out/llvmpipe.txt"
+python3 "$here/table.py" "$out/times.txt"

@@ -50,6 +50,16 @@ import org.openjdk.jmh.annotations.TearDown;
  */
 public final class Interleaved {
 
+    /**
+     * Calls of a build timed one after another in its turn, after one
+     * untimed call. A benchmark drawing on two threads leaves its worker
+     * spinning for a while after each call, waiting for the next picture
+     * (DrawingThreads); the next build's first call shares the cores with
+     * that spinning worker, and starts its own parked one. Its later calls
+     * are drawn as a benchmark's back-to-back calls are.
+     */
+    private static final int TIMED_IN_A_TURN = 3;
+
     private Interleaved() {
     }
 
@@ -123,22 +133,28 @@ public final class Interleaved {
         long until = System.nanoTime() + (long) (seconds * 1e9);
         while (System.nanoTime() < until) {
             for (int j = 0; j < builds.size(); j++) {
-                int i = rounds % 2 == 0 ? j : builds.size() - 1 - j;
+                int i = (rounds / TIMED_IN_A_TURN) % 2 == 0 ? j : builds.size() - 1 - j;
                 Build b = builds.get(i);
-                for (Method m : b.perInvocation()) {
-                    m.invoke(b.state());
+                for (int call = 0; call <= TIMED_IN_A_TURN; call++) {
+                    for (Method m : b.perInvocation()) {
+                        m.invoke(b.state());
+                    }
+                    long start = System.nanoTime();
+                    b.benchmark().invoke(b.state());
+                    long took = System.nanoTime() - start;
+                    if (call == 0) {
+                        continue; // the turn's first call, untimed
+                    }
+                    long[] s = samples.get(i);
+                    int at = rounds + call - 1;
+                    if (at >= s.length) {
+                        s = Arrays.copyOf(s, 2 * s.length);
+                        samples.set(i, s);
+                    }
+                    s[at] = took;
                 }
-                long start = System.nanoTime();
-                b.benchmark().invoke(b.state());
-                long took = System.nanoTime() - start;
-                long[] s = samples.get(i);
-                if (rounds == s.length) {
-                    s = Arrays.copyOf(s, 2 * s.length);
-                    samples.set(i, s);
-                }
-                s[rounds] = took;
             }
-            rounds++;
+            rounds += TIMED_IN_A_TURN;
         }
         double first = 0;
         for (int i = 0; i < builds.size(); i++) {

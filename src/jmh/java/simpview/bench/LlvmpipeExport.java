@@ -1,10 +1,15 @@
 package simpview.bench;
 
+import java.io.BufferedReader;
 import java.io.DataOutputStream;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -36,16 +41,27 @@ import simpview.surface.PageCanvas;
  * that OpenGL draws the same primitives with the same lighting in GLSL (its
  * lines by its own rule, the diamond exit, where simpview's follow the
  * course's DDA: about the same pixels, not the same to the pixel); then
- * times simpview's warm redraws of the page on 1 and on 2 threads and
- * prints them, one line of {@code page ms1 best1 ms2 best2 triangles lines
- * skipped} per page: the median and best of 61, after {@value #WARM_SECONDS}
- * s of redraws (at least 20) to warm up. That is as long as JMH's warm-up,
- * so that the JIT has compiled the drawing before it is timed, as llvmpipe's
- * shaders are compiled before its redraws are (draw.py warms the same way).
+ * times simpview's warm redraws of the page on 1 thread (the median and best
+ * of 61), and on 2 threads taking turns with llvmpipe's (draw.py, started
+ * here): {@value #TURNS} turns each, one after the other, of one untimed
+ * redraw and {@value #TIMED_IN_A_TURN} timed. Each side is warmed by
+ * {@value #WARM_SECONDS} s of redraws (at least 20) first. That is as long
+ * as JMH's warm-up, so that the JIT has compiled the drawing before it is
+ * timed, as llvmpipe's shaders are compiled before its redraws are.
+ *
+ * <p>Why turns: on this machine a two-thread picture takes 20-25 % longer
+ * for a second or so at a time (docs/performance.md, session 17), one
+ * thread's much less; 61 redraws of each side one after the other fell in
+ * one such spell or not, and the ratio of the two moved by as much between
+ * runs. Taking turns, both sides see the same spells.
+ *
+ * <p>Prints one line per page: {@code page ms1 best1 ms2 best2 llvmpipeMs
+ * llvmpipeBest triangles lines skipped} (medians and bests, in ms).
  *
  * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
- * to write NAME.bin into, then pages as "a3/pageF". A primitive of another
- * kind (none so far) is not exported, only counted as skipped.
+ * to write NAME.bin into, the Python that has PyOpenGL, draw.py, then pages
+ * as "a3/pageF". A primitive of another kind (none so far) is not exported,
+ * only counted as skipped.
  *
  * <p>File (little-endian): int groups; per group 80 floats of uniforms (see
  * {@link #uniforms}), int mode (0 triangles, 1 line segments), int
@@ -67,20 +83,85 @@ public final class LlvmpipeExport {
     public static void main(String[] args) throws Exception {
         Path folder = Path.of(args[0]);
         Path out = Path.of(args[1]);
+        String python = args[2];
+        String drawPy = args[3];
         Files.createDirectories(out);
-        for (int i = 2; i < args.length; i++) {
+        for (int i = 4; i < args.length; i++) {
             Path file = LitPages.sceneFile(folder, args[i]);
             Export export = export(file);
-            export.write(out.resolve(args[i].replace('/', '-') + ".bin"));
+            String name = args[i].replace('/', '-');
+            export.write(out.resolve(name + ".bin"));
             double[] one = time(file, 1);
-            double[] two = time(file, 2);
-            System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %d %d %d", args[i], one[0],
-                    one[1], two[0], two[1], export.triangles, export.lines, export.skipped));
+            double[][] two = inTurns(file, new ProcessBuilder(python, drawPy, out.toString(), name));
+            System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %.3f %.3f %d %d %d", args[i],
+                    one[0], one[1], two[0][0], two[0][1], two[1][0], two[1][1], export.triangles, export.lines,
+                    export.skipped));
         }
     }
 
     /** How long each thread count is warmed by redraws before it is timed. */
     private static final int WARM_SECONDS = 3;
+    /** Turns each side takes, two threads against llvmpipe. */
+    private static final int TURNS = 60;
+    /** Redraws timed in a turn, after one untimed (draw.py's TIMED_IN_A_TURN). */
+    private static final int TIMED_IN_A_TURN = 5;
+
+    /**
+     * simpview's warm redraws on two threads and llvmpipe's ({@code llvmpipe}
+     * starts draw.py on the page), taking turns: the median and best of each,
+     * simpview's first.
+     */
+    private static double[][] inTurns(Path file, ProcessBuilder llvmpipe) throws Exception {
+        Process drawer = llvmpipe.redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        SceneLibrary library = new SceneLibrary();
+        try (DrawingThreads drawing = DrawingThreads.of(2);
+                BufferedReader from = new BufferedReader(
+                        new InputStreamReader(drawer.getInputStream(), StandardCharsets.US_ASCII));
+                Writer to = new OutputStreamWriter(drawer.getOutputStream(), StandardCharsets.US_ASCII)) {
+            if (!"ready".equals(from.readLine())) {
+                throw new IllegalStateException("draw.py did not get ready: " + llvmpipe.command());
+            }
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(drawing);
+            long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
+            for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
+                LitPages.redraw(canvas, file, library);
+            }
+            double[] ours = new double[TURNS * TIMED_IN_A_TURN];
+            double[] theirs = new double[TURNS * TIMED_IN_A_TURN];
+            for (int turn = 0; turn < TURNS; turn++) {
+                LitPages.redraw(canvas, file, library); // untimed: the cores may still be llvmpipe's for a moment
+                for (int r = 0; r < TIMED_IN_A_TURN; r++) {
+                    long start = System.nanoTime();
+                    LitPages.redraw(canvas, file, library);
+                    ours[turn * TIMED_IN_A_TURN + r] = (System.nanoTime() - start) / 1e6;
+                }
+                to.write("turn\n");
+                to.flush();
+                String line = from.readLine();
+                String[] times = line == null ? new String[0] : line.trim().split(" ");
+                if (times.length != TIMED_IN_A_TURN) {
+                    throw new IllegalStateException("draw.py answered a turn with " + line);
+                }
+                for (int r = 0; r < TIMED_IN_A_TURN; r++) {
+                    theirs[turn * TIMED_IN_A_TURN + r] = Double.parseDouble(times[r]);
+                }
+            }
+            to.close(); // draw.py returns
+            if (drawer.waitFor() != 0) {
+                throw new IllegalStateException("draw.py failed: " + llvmpipe.command());
+            }
+            return new double[][] {medianAndBest(ours), medianAndBest(theirs)};
+        } finally {
+            drawer.destroy();
+        }
+    }
+
+    /** The median and the least of {@code t}, which it sorts. */
+    private static double[] medianAndBest(double[] t) {
+        Arrays.sort(t);
+        return new double[] {t[t.length / 2], t[0]};
+    }
 
     /** Median and best of 61 warm redraws, in ms. */
     private static double[] time(Path file, int threads) throws Exception {
@@ -98,8 +179,7 @@ public final class LlvmpipeExport {
                 LitPages.redraw(canvas, file, library);
                 t[r] = (System.nanoTime() - start) / 1e6;
             }
-            Arrays.sort(t);
-            return new double[] {t[t.length / 2], t[0]};
+            return medianAndBest(t);
         }
     }
 
