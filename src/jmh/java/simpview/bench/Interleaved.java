@@ -28,8 +28,9 @@ import org.openjdk.jmh.annotations.TearDown;
  * folder) get a class loader of their own, so each build's code is compiled
  * and profiled apart. One JMH benchmark class of each is set up as JMH would
  * ({@code @Param} fields at their first value or as given, the trial and
- * iteration set-ups once), warmed, then its benchmark method is called for
- * each build in turn, the order reversed every round, the invocation
+ * iteration set-ups once), warmed, then the builds take turns, the order
+ * reversed every round: in its turn a build's benchmark method is called
+ * once untimed, then {@link #TIMED_IN_A_TURN} times timed, the invocation
  * set-ups run untimed before each call. It prints each build's median, 10th
  * percentile and best call, and the medians' ratios to the first build's.
  *
