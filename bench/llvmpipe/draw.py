@@ -35,7 +35,7 @@ from OpenGL import GL, arrays, osmesa  # noqa: E402
 SIZE = 650
 UNIFORMS = 80
 FLOATS = 13
-TIMED_IN_A_TURN = 5
+TIMED_IN_A_TURN = 20
 
 VERTEX = """
 #version 330 core

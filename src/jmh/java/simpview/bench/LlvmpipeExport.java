@@ -102,9 +102,9 @@ public final class LlvmpipeExport {
     /** How long each thread count is warmed by redraws before it is timed. */
     private static final int WARM_SECONDS = 3;
     /** Turns each side takes, two threads against llvmpipe. */
-    private static final int TURNS = 60;
+    private static final int TURNS = 20;
     /** Redraws timed in a turn, after one untimed (draw.py's TIMED_IN_A_TURN). */
-    private static final int TIMED_IN_A_TURN = 5;
+    private static final int TIMED_IN_A_TURN = 20;
 
     /**
      * simpview's warm redraws on two threads and llvmpipe's ({@code llvmpipe}
@@ -114,10 +114,10 @@ public final class LlvmpipeExport {
     private static double[][] inTurns(Path file, ProcessBuilder llvmpipe) throws Exception {
         Process drawer = llvmpipe.redirectError(ProcessBuilder.Redirect.INHERIT).start();
         SceneLibrary library = new SceneLibrary();
+        Writer to = new OutputStreamWriter(drawer.getOutputStream(), StandardCharsets.US_ASCII);
         try (DrawingThreads drawing = DrawingThreads.of(2);
                 BufferedReader from = new BufferedReader(
-                        new InputStreamReader(drawer.getInputStream(), StandardCharsets.US_ASCII));
-                Writer to = new OutputStreamWriter(drawer.getOutputStream(), StandardCharsets.US_ASCII)) {
+                        new InputStreamReader(drawer.getInputStream(), StandardCharsets.US_ASCII))) {
             if (!"ready".equals(from.readLine())) {
                 throw new IllegalStateException("draw.py did not get ready: " + llvmpipe.command());
             }
@@ -147,7 +147,7 @@ public final class LlvmpipeExport {
                     theirs[turn * TIMED_IN_A_TURN + r] = Double.parseDouble(times[r]);
                 }
             }
-            to.close(); // draw.py returns
+            to.close(); // the end of draw.py's stdin: it returns
             if (drawer.waitFor() != 0) {
                 throw new IllegalStateException("draw.py failed: " + llvmpipe.command());
             }
