@@ -136,7 +136,7 @@ final class FileStack implements AutoCloseable {
     /** Acts on a {@code file} command just read from the top file. */
     void include(Command c) throws SceneException {
         SimpReader from = top();
-        Name name = new Name(from.file().getParent(), c.fileName);
+        Name name = Name.of(from, c);
         Found found = found(name, from, c);
         if (onStack.contains(found.resolved.real)) {
             throw from.error(c.argumentIndex, "file cycle: " + chain(found.resolved.real));
@@ -171,6 +171,11 @@ final class FileStack implements AutoCloseable {
 
     /** A file name as a command in a file of folder {@code dir} gives it (dir may be null). */
     private record Name(Path dir, String name) {
+
+        /** The name command c of the file {@code from} gives: how the scene keeps where a file or model name led. */
+        static Name of(SimpReader from, Command c) {
+            return new Name(from.file().getParent(), c.fileName);
+        }
     }
 
     /** The path to show in messages, and where it really leads. */
@@ -227,7 +232,7 @@ final class FileStack implements AutoCloseable {
      */
     Path locateModel(Command c) throws SceneException {
         SimpReader from = top();
-        Name name = new Name(from.file().getParent(), c.fileName);
+        Name name = Name.of(from, c);
         Path known = models.get(name);
         if (known != null) {
             return known;
