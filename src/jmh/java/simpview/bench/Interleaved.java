@@ -47,10 +47,10 @@ import org.openjdk.jmh.annotations.TearDown;
  * ({@code build/classes/java@threads=2,perPicture=true}), so that one build
  * can also be measured against itself set up another way.
  * The course's files are found as the benchmarks find them
- * ({@code -Dsimpview.courseSimp}). Give it {@code -XX:+UseParallelGC}, the
- * collector simpview's start scripts and the JMH runs use (build.gradle's
- * {@code drawingGc}): with the JVM's default, G1, the pages draw 4-10 %
- * slower.
+ * ({@code -Dsimpview.courseSimp}). Give it {@code -XX:+UseParallelGC
+ * -XX:-UseAdaptiveSizePolicy}, as simpview's start scripts and the JMH runs
+ * have it (build.gradle's {@code drawingJvmArgs}): with the JVM's default,
+ * G1, the pages draw 4-10 % slower.
  */
 public final class Interleaved {
 
