@@ -22,8 +22,8 @@ cp="$root/build/classes/java/main:$root/build/classes/java/jmh:$root/build/resou
 : > "$out/times.txt"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for p in $pages; do
-    # The collector simpview's start scripts give it (build.gradle, drawingJvmArgs).
-    java -XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
+    # The JVM options simpview's start scripts give it (build.gradle, drawingJvmArgs).
+    java -XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy -XX:-UseCompressedOops -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
         "$here/draw.py" "$p" >> "$out/times.txt"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

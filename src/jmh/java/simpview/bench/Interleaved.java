@@ -47,10 +47,11 @@ import org.openjdk.jmh.annotations.TearDown;
  * ({@code build/classes/java@threads=2,perPicture=true}), so that one build
  * can also be measured against itself set up another way.
  * The course's files are found as the benchmarks find them
- * ({@code -Dsimpview.courseSimp}). Give it {@code -XX:+UseParallelGC
- * -XX:-UseAdaptiveSizePolicy}, as simpview's start scripts and the JMH runs
- * have it (build.gradle's {@code drawingJvmArgs}): with the JVM's default,
- * G1, the pages draw 4-10 % slower.
+ * ({@code -Dsimpview.courseSimp}). Give it the JVM options simpview's start
+ * scripts and the JMH runs have (build.gradle's {@code drawingJvmArgs}:
+ * {@code -XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy
+ * -XX:-UseCompressedOops}): with the JVM's defaults the pages draw 7-15 %
+ * slower.
  */
 public final class Interleaved {
 
