@@ -21,9 +21,10 @@ mkdir -p "$out"
 cp="$root/build/classes/java/main:$root/build/classes/java/jmh:$root/build/resources/main"
 : > "$out/times.txt"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+# The JVM options simpview's start scripts give it (build.gradle, drawingJvmArgs).
+jvm="-XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy -XX:-UseCompressedOops"
 for p in $pages; do
-    # The JVM options simpview's start scripts give it (build.gradle, drawingJvmArgs).
-    java -XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy -XX:-UseCompressedOops -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
+    java $jvm -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
         "$here/draw.py" "$p" >> "$out/times.txt"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
