@@ -91,7 +91,7 @@ public final class LlvmpipeExport {
             Export export = export(file);
             String name = args[i].replace('/', '-');
             export.write(out.resolve(name + ".bin"));
-            double[] one = time(file, 1);
+            double[] one = timeOneThread(file);
             double[][] two = inTurns(file, new ProcessBuilder(python, drawPy, out.toString(), name));
             System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %.3f %.3f %d %d %d", args[i],
                     one[0], one[1], two[0][0], two[0][1], two[1][0], two[1][1], export.triangles, export.lines,
@@ -121,20 +121,13 @@ public final class LlvmpipeExport {
             if (!"ready".equals(from.readLine())) {
                 throw new IllegalStateException("draw.py did not get ready: " + llvmpipe.command());
             }
-            PageCanvas canvas = new PageCanvas();
-            canvas.drawWith(drawing);
-            long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
-            for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
-                LitPages.redraw(canvas, file, library);
-            }
+            PageCanvas canvas = warmed(file, drawing, library);
             double[] ours = new double[TURNS * TIMED_IN_A_TURN];
             double[] theirs = new double[TURNS * TIMED_IN_A_TURN];
             for (int turn = 0; turn < TURNS; turn++) {
                 LitPages.redraw(canvas, file, library); // untimed: the cores may still be llvmpipe's for a moment
                 for (int r = 0; r < TIMED_IN_A_TURN; r++) {
-                    long start = System.nanoTime();
-                    LitPages.redraw(canvas, file, library);
-                    ours[turn * TIMED_IN_A_TURN + r] = (System.nanoTime() - start) / 1e6;
+                    ours[turn * TIMED_IN_A_TURN + r] = timedRedraw(canvas, file, library);
                 }
                 to.write("turn\n");
                 to.flush();
@@ -163,24 +156,38 @@ public final class LlvmpipeExport {
         return new double[] {t[t.length / 2], t[0]};
     }
 
-    /** Median and best of 61 warm redraws, in ms. */
-    private static double[] time(Path file, int threads) throws Exception {
+    /** Median and best of 61 warm redraws on one thread, in ms. */
+    private static double[] timeOneThread(Path file) throws Exception {
         SceneLibrary library = new SceneLibrary();
-        try (DrawingThreads drawing = DrawingThreads.of(threads)) {
-            PageCanvas canvas = new PageCanvas();
-            canvas.drawWith(drawing);
-            long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
-            for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
-                LitPages.redraw(canvas, file, library);
-            }
+        try (DrawingThreads drawing = DrawingThreads.of(1)) {
+            PageCanvas canvas = warmed(file, drawing, library);
             double[] t = new double[61];
             for (int r = 0; r < t.length; r++) {
-                long start = System.nanoTime();
-                LitPages.redraw(canvas, file, library);
-                t[r] = (System.nanoTime() - start) / 1e6;
+                t[r] = timedRedraw(canvas, file, library);
             }
             return medianAndBest(t);
         }
+    }
+
+    /**
+     * A canvas drawn on by {@code drawing}, after {@value #WARM_SECONDS} s of
+     * redraws of the page (at least 20), as draw.py warms llvmpipe.
+     */
+    private static PageCanvas warmed(Path file, DrawingThreads drawing, SceneLibrary library) throws Exception {
+        PageCanvas canvas = new PageCanvas();
+        canvas.drawWith(drawing);
+        long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
+        for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
+            LitPages.redraw(canvas, file, library);
+        }
+        return canvas;
+    }
+
+    /** One redraw of the page, in ms. */
+    private static double timedRedraw(PageCanvas canvas, Path file, SceneLibrary library) throws Exception {
+        long start = System.nanoTime();
+        LitPages.redraw(canvas, file, library);
+        return (System.nanoTime() - start) / 1e6;
     }
 
     private static Export export(Path file) throws Exception {
