@@ -42,26 +42,39 @@ public final class FragmentStage implements FragmentSink {
     /** Pixels of a span done together. */
     static final int BATCH = 64;
     /**
-     * The fewest lights for which a long phong span's pixels wait to be
-     * shaded at the end ({@link #shadeLater}). The wait costs about the same
-     * at every pixel (keeping the span, marking the pixel, its 1 / q and z
-     * again at the end); what it saves is the shading of the pixels
-     * overwritten later, which grows with the lights, and at the end a look's
-     * pixels are lit in full batches ({@link #WAITING_BATCH}). One light, one
-     * thread, against shading at once (session 15, with the full batches and
-     * no wait ended as a write passes): A4 page-f1 0.86, page-b3 0.81-0.83,
-     * page-a3 0.85, page-d and page-g 0.97-1.00. (Session 9, a run a batch and
-     * every wait ended at once: one light, page-d, 1.05x slower.)
+     * The fewest lights for which a phong span's pixels wait to be shaded at
+     * the end ({@link #shadeLater}): a long span's for the span, kept; a
+     * short span's as {@link #LIGHTS_TO_KEEP_SHORT_SPANS} has it. What the
+     * wait saves is the shading of the pixels overwritten later, which grows
+     * with the lights, and at the end a look's pixels are lit in full batches
+     * ({@link #WAITING_BATCH}) where a primitive's short spans make batches
+     * of a few. Long spans, one light, one thread, against shading at once
+     * (session 15): A4 page-f1 0.86, page-b3 0.81-0.83, page-a3 0.85, page-d
+     * and page-g 0.97-1.00.
      */
     static final int LIGHTS_TO_WAIT = 1;
     /**
-     * The fewest lights for which a short phong span's pixels wait too:
-     * session 15, against lighting them one by one, page-f2 0.92, page-e
-     * 0.95, page-h 0.95 of the time. With one light, short spans waiting made
-     * A4 page-g 1.04-1.09 of its time and page-d 1.02-1.04: spans of a pixel
-     * or two cost more to keep than to light.
+     * The fewest lights for which a short phong span waits as a long one
+     * does, kept, its pixels marked as waiting for it
+     * ({@link #keptShortSpan}); with fewer (but {@link #LIGHTS_TO_WAIT} or
+     * more) each pixel that passes waits on its own, with the numbers it is
+     * lit with ({@link #waitingShortSpan}, {@link WaitingPoints}). A kept
+     * span costs its numbers and, at the end, finding its run and resolving
+     * it; a waiting point costs its numbers at once, whether or not it is
+     * overwritten later. Against short spans lit with their primitive
+     * (session 19, {@code Interleaved}, copies of the old build within
+     * 0.95-1.03): one light, one thread, A4 page-f1 0.93, page-d 0.93, page-g
+     * 0.97; two threads, page-f1 0.95, page-d 0.94, page-c3 0.96, page-g
+     * 0.97, page-a3, page-b3 and page-c1 0.99-1.02. Every one-light short span
+     * kept instead: page-f1 0.88-0.89, page-a3 0.91, page-b3 0.95, but page-g
+     * 1.05-1.09, its cylinders' spans of two pixels on average each a span
+     * to keep and a run to find; every one waiting as points: page-g 0.99-1.01
+     * and page-f1 0.94-0.95, but with two lights or more page-e 1.05, page-f2
+     * 1.03-1.04 and page-h 1.07. Two lights and more, kept and tested pixel by
+     * pixel, with {@link #SMALL_PIECE}, against kept and tested a batch at a
+     * time: page-f2 0.97, page-e 0.99, page-h 1.00 (copy 1.03).
      */
-    static final int LIGHTS_FOR_SHORT_TO_WAIT = 2;
+    static final int LIGHTS_TO_KEEP_SHORT_SPANS = 2;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
     private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
@@ -104,6 +117,15 @@ public final class FragmentStage implements FragmentSink {
      * first-level cache beside the rest (session 10: slower on A3's pages).
      */
     static final int WAITING_BATCH = 128;
+    /**
+     * Pieces of a batch at the end shorter than this are resolved pixel by
+     * pixel ({@link #addSmallPiece}), not by the loops over the batch that C2
+     * packs, which cost more to enter than a few pixels take (the runs of
+     * kept short spans: with every one-light short span kept, A4 page-g took
+     * 1.12 of the time of short spans lit with their primitive so, and 1.16
+     * by the loops; session 19).
+     */
+    private static final int SMALL_PIECE = 8;
     /**
      * Looks searched for a kept span's before it is given a new one
      * ({@link #lookOf}): a scene of many looks, each drawn once, costs no
@@ -196,6 +218,12 @@ public final class FragmentStage implements FragmentSink {
     private final int[] pieceLength = new int[WAITING_BATCH];
     private final int[] pieceAt = new int[WAITING_BATCH];
     private final int[] pieceSpan = new int[WAITING_BATCH];
+    // The pixels of short spans that wait (their points), and a batch of
+    // them at the end: where each is and who drew it.
+    private final WaitingPoints waitingPoints = new WaitingPoints();
+    private final int[] pointX = new int[WAITING_BATCH];
+    private final int[] pointY = new int[WAITING_BATCH];
+    private final int[] pointOwner = new int[WAITING_BATCH];
 
     /**
      * Writes to {@code panel} (panel coordinates, y up), depth-tested against
@@ -263,10 +291,12 @@ public final class FragmentStage implements FragmentSink {
 
     /**
      * From now on a phong pixel that passes the depth test is not shaded at
-     * once: it waits, in {@code waiting} (the panel's), for
-     * {@link #shadeWaiting} at the picture's end,
-     * which shades each pixel the last span that won it still holds: one
-     * whose depth is still the z that span gave it. A later write there, of
+     * once: it waits, in {@code waiting} (the panel's) or, of a short span
+     * lit by fewer than {@link #LIGHTS_TO_KEEP_SHORT_SPANS} lights, as a
+     * point of its own ({@link WaitingPoints}), for {@link #shadeWaiting} at
+     * the picture's end, which shades each pixel the last span or point that
+     * won it still holds: one whose depth is still the z it gave it. A later
+     * write there, of
      * this stage or of another that draws the same rows (a batch kept whole,
      * {@link #writesOver}), was nearer, so it left a larger depth; it only
      * marks its row, so that the depths are looked at there alone. The
@@ -325,7 +355,8 @@ public final class FragmentStage implements FragmentSink {
      * and ends the waits: after the last fragment of the picture, on the
      * thread that draws these rows. The pixels are lit a look at a time, in
      * batches of up to {@link #WAITING_BATCH} made of the runs of that look's
-     * spans, row after row, and each run is written where it is. No two
+     * spans, row after row, and each run is written where it is; then the
+     * waiting points, a look at a time, each pixel written alone. No two
      * waiting pixels are the same pixel, so the order of the writes cannot
      * change the picture or the owners; and a point is lit to the same bits
      * in a batch of any size.
@@ -360,6 +391,7 @@ public final class FragmentStage implements FragmentSink {
                 shadePieces(filled);
             }
         }
+        shadeWaitingPoints();
         clearWaits();
         forgetSpans();
         shader = shaderBefore;
@@ -436,6 +468,9 @@ public final class FragmentStage implements FragmentSink {
         double dz = numbers[dv + Z];
         // gather's first loop, written out again: the two calling one shared
         // method measured 1.02-1.04x slower on page-e, one thread (session 9).
+        if (n < SMALL_PIECE) {
+            return addSmallPiece(span, y, x, n, at);
+        }
         double k0 = x - spanFrom[span];
         int stop = at + n;
         for (int j = at; j < stop; j++) {
@@ -459,6 +494,81 @@ public final class FragmentStage implements FragmentSink {
         resolve(numbers[v0 + R], numbers[dv + R], t.kdRed, numbers[v0 + G], numbers[dv + G], t.kdGreen,
                 numbers[v0 + B], numbers[dv + B], t.kdBlue, at, stop);
         return stop;
+    }
+
+    /**
+     * As {@link #addPiece}, pixel by pixel, for a piece of fewer than
+     * {@link #SMALL_PIECE} pixels: each pixel's k, 1 / q and z as there (and
+     * as pixel() has them), the depth looked at where the row was written
+     * over, and kd, P and N of each the span still holds; each run of those
+     * one piece.
+     */
+    private int addSmallPiece(int span, int y, int x, int n, int at) {
+        int o = span * SPAN_NUMBERS;
+        double[] numbers = spanNumbers;
+        double q0 = numbers[o];
+        double dq = numbers[o + 1];
+        int v0 = o + 2;
+        int dv = v0 + FragmentLayout.PHONG_CHANNELS;
+        double z0 = numbers[v0 + Z];
+        double dz = numbers[dv + Z];
+        double r0 = numbers[v0 + R];
+        double dr = numbers[dv + R];
+        double g0 = numbers[v0 + G];
+        double dg = numbers[dv + G];
+        double b0 = numbers[v0 + B];
+        double db = numbers[dv + B];
+        double px0 = numbers[v0 + PX];
+        double dpx = numbers[dv + PX];
+        double py0 = numbers[v0 + PY];
+        double dpy = numbers[dv + PY];
+        double nx0 = numbers[v0 + NX];
+        double dnx = numbers[dv + NX];
+        double ny0 = numbers[v0 + NY];
+        double dny = numbers[dv + NY];
+        double nz0 = numbers[v0 + NZ];
+        double dnz = numbers[dv + NZ];
+        boolean overwritten = waiting.mayBeWrittenOver(y);
+        boolean point = shader.usesPoint();
+        LitPoints t = points;
+        double[] d = depth;
+        int row = y * width;
+        int from = spanFrom[span];
+        int j = at;
+        int runStart = -1; // the first x of the run of kept pixels at hand, -1 for none
+        int runAt = at;
+        for (int col = x, end = x + n; col < end; col++) {
+            double k = col - from;
+            double w = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * w;
+            if (overwritten && z != d[row + col]) {
+                if (runStart >= 0) {
+                    addPieceRun(span, y, runStart, col - runStart, runAt);
+                    runStart = -1;
+                }
+                continue;
+            }
+            if (runStart < 0) {
+                runStart = col;
+                runAt = j;
+            }
+            batchZ[j] = z;
+            t.kdRed[j] = (r0 + k * dr) * w;
+            t.kdGreen[j] = (g0 + k * dg) * w;
+            t.kdBlue[j] = (b0 + k * db) * w;
+            if (point) {
+                t.px[j] = (px0 + k * dpx) * w;
+                t.py[j] = (py0 + k * dpy) * w;
+                t.nx[j] = (nx0 + k * dnx) * w;
+                t.ny[j] = (ny0 + k * dny) * w;
+                t.nz[j] = (nz0 + k * dnz) * w;
+            }
+            j++;
+        }
+        if (runStart >= 0) {
+            addPieceRun(span, y, runStart, x + n - runStart, runAt);
+        }
+        return j;
     }
 
     /**
@@ -551,12 +661,166 @@ public final class FragmentStage implements FragmentSink {
         return span != WaitingPixels.NONE;
     }
 
+    /**
+     * A short phong span whose pixels wait for the span, kept as a long one
+     * is: pixel by pixel, as {@link #phongPixels} tests them, each that
+     * passes marked as waiting for this span (kept at its first such pixel).
+     */
+    private boolean keptShortSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        int row = y * width;
+        int span = WaitingPixels.NONE;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            if (span == WaitingPixels.NONE) {
+                span = keepSpan(y, from, q0, dq, v0, dv);
+            }
+            waiting.wait(x, y, span);
+        }
+        return span != WaitingPixels.NONE;
+    }
+
+    /**
+     * A short phong span whose pixels wait: pixel by pixel, as
+     * {@link #phongPixels} tests them and resolves kd, P and N, each pixel
+     * that passes put with them in {@link #waitingPoints}, with its owner and
+     * look, to be lit at the end if it is still its own
+     * ({@link #shadeWaitingPoints}). True when a pixel passed.
+     */
+    private boolean waitingShortSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double r0 = v0[R];
+        double dr = dv[R];
+        double g0 = v0[G];
+        double dg = dv[G];
+        double b0 = v0[B];
+        double db = dv[B];
+        double px0 = v0[PX];
+        double dpx = dv[PX];
+        double py0 = v0[PY];
+        double dpy = dv[PY];
+        double nx0 = v0[NX];
+        double dnx = dv[NX];
+        double ny0 = v0[NY];
+        double dny = dv[NY];
+        double nz0 = v0[NZ];
+        double dnz = dv[NZ];
+        WaitingPoints w = waitingPoints;
+        int row = y * width;
+        int look = -1; // found at the first pixel that passes
+        int owner = Provenance.BACKGROUND;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            if (look < 0) {
+                look = lookOf(shader, fog);
+                owner = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
+            }
+            int i = w.add();
+            w.x[i] = x;
+            w.y[i] = y;
+            w.owner[i] = owner;
+            w.look[i] = look;
+            w.z[i] = z;
+            w.kdRed[i] = (r0 + k * dr) * inv;
+            w.kdGreen[i] = (g0 + k * dg) * inv;
+            w.kdBlue[i] = (b0 + k * db) * inv;
+            w.px[i] = (px0 + k * dpx) * inv;
+            w.py[i] = (py0 + k * dpy) * inv;
+            w.nx[i] = (nx0 + k * dnx) * inv;
+            w.ny[i] = (ny0 + k * dny) * inv;
+            w.nz[i] = (nz0 + k * dnz) * inv;
+        }
+        if (look < 0) {
+            return false;
+        }
+        wroteOver(y); // a long span's pixel that waits here may be taken
+        return true;
+    }
+
+    /**
+     * The waiting points ({@link #waitingShortSpan}) whose pixel is still
+     * theirs (its depth still their z), lit a look at a time in batches of up
+     * to {@link #WAITING_BATCH}, fogged, packed and written, each with its
+     * owner; none wait after. No two are the same pixel, nor one a waiting
+     * run's, so the order of the writes cannot change the picture.
+     */
+    private void shadeWaitingPoints() {
+        WaitingPoints w = waitingPoints;
+        if (w.count == 0) {
+            return;
+        }
+        w.sortByLook(lookCount);
+        LitPoints t = points;
+        double[] d = depth;
+        for (int look = 0; look < lookCount; look++) {
+            shader = lookShader[look];
+            fog = lookFog[look];
+            int filled = 0;
+            for (int o = w.lookStart[look], stop = w.lookStart[look + 1]; o < stop; o++) {
+                int i = w.order[o];
+                double z = w.z[i];
+                if (z != d[w.y[i] * width + w.x[i]]) {
+                    continue; // taken since it passed
+                }
+                pointX[filled] = w.x[i];
+                pointY[filled] = w.y[i];
+                pointOwner[filled] = w.owner[i];
+                batchZ[filled] = z;
+                t.kdRed[filled] = w.kdRed[i];
+                t.kdGreen[filled] = w.kdGreen[i];
+                t.kdBlue[filled] = w.kdBlue[i];
+                t.px[filled] = w.px[i];
+                t.py[filled] = w.py[i];
+                t.nx[filled] = w.nx[i];
+                t.ny[filled] = w.ny[i];
+                t.nz[filled] = w.nz[i];
+                if (++filled == WAITING_BATCH) {
+                    shadePoints(filled);
+                    filled = 0;
+                }
+            }
+            if (filled > 0) {
+                shadePoints(filled);
+            }
+        }
+        w.clear();
+    }
+
+    /** The batch's first n points lit by the look, fogged, packed and written, each with its owner. */
+    private void shadePoints(int n) {
+        LitPoints t = points;
+        t.count = n;
+        shader.shade(t);
+        pack(n);
+        for (int i = 0; i < n; i++) {
+            if (owners != null) {
+                owners.beginAt(pointY[i], pointOwner[i]);
+            }
+            panel.setPixel(pointX[i], pointY[i], batchZ[i], colours[i]);
+        }
+    }
+
     /** No span kept, and the looks of those that were let go. */
     private void forgetSpans() {
         Arrays.fill(lookShader, 0, lookCount, null);
         Arrays.fill(lookFog, 0, lookCount, null);
         lookCount = 0;
         spanCount = 0;
+        waitingPoints.clear();
     }
 
     /** Keeps the phong span being drawn on row y (its set-up, look and owner); returns its index. */
@@ -651,9 +915,13 @@ public final class FragmentStage implements FragmentSink {
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
         boolean isShort = end - start < SHORT_SPAN;
-        if (waiting != null && shader.lightCount() >= (isShort ? LIGHTS_FOR_SHORT_TO_WAIT : LIGHTS_TO_WAIT)) {
+        if (waiting != null && shader.lightCount() >= LIGHTS_TO_WAIT) {
             writePending(); // the batches below use the same arrays
-            return waitingSpan(y, from, start, end, q0, dq, v0, dv);
+            if (!isShort) {
+                return waitingSpan(y, from, start, end, q0, dq, v0, dv);
+            }
+            return shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS ? keptShortSpan(y, from, start, end, q0, dq, v0, dv)
+                    : waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
         }
         if (isShort) {
             return phongPixels(y, from, start, end, q0, dq, v0, dv);
@@ -728,9 +996,9 @@ public final class FragmentStage implements FragmentSink {
      * primitive is done), unless the primitive before had fewer than
      * {@link #FEWEST_LIT_TOGETHER} such pixels: then each is lit there alone.
      * A point's numbers are those pixel() would light it with, and a batch
-     * lights it to the same bits. (With {@link #LIGHTS_FOR_SHORT_TO_WAIT}
-     * lights a short span waits for the picture's end instead.) True when a
-     * pixel passed.
+     * lights it to the same bits. (Where pixels wait for the picture's end,
+     * a lit short span's do too: {@link #LIGHTS_TO_KEEP_SHORT_SPANS}.) True
+     * when a pixel passed.
      */
     private boolean phongPixels(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {

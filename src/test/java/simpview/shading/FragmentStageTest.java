@@ -59,11 +59,14 @@ class FragmentStageTest {
     }
 
     private static LitState scene(Random random) {
+        return scene(random, random.nextInt(4));
+    }
+
+    private static LitState scene(Random random, int lights) {
         LitState state = new LitState();
         state.setCamera(Camera.perspective(-1, -1, 1, 1, -0.1, -200), Matrix4.identity());
         state.setAmbient(0.2, 0.1, 0.3);
         state.setSurface(0.8, 0.6, 0.4, random.nextDouble(), random.nextBoolean() ? 16 : 7.5);
-        int lights = random.nextInt(4);
         for (int i = 0; i < lights; i++) {
             state.addLight(random.nextDouble() * 20 - 10, random.nextDouble() * 20 - 10, random.nextDouble() * 10 - 12,
                     random.nextDouble(), random.nextDouble(), random.nextDouble(), 1, random.nextBoolean() ? 0 : 0.02);
@@ -74,11 +77,29 @@ class FragmentStageTest {
         return state;
     }
 
-    /** As {@link #scene}, with two lights more: its phong pixels wait where a stage shades later. */
+    /**
+     * As {@link #scene}, with two lights more, or a third of the time with
+     * one light in all: its phong pixels wait where a stage shades later (a
+     * short span's as points with one light, kept as a span with more).
+     */
     private static LitState sceneThatWaits(Random random) {
-        LitState state = scene(random);
+        boolean oneLight = random.nextInt(3) == 0;
+        LitState state = scene(random, oneLight ? 0 : random.nextInt(4));
         state.addLight(3, 4, -2, 0.9, 0.8, 0.7, 1, 0);
+        if (!oneLight) {
+            state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+        }
+        return state;
+    }
+
+    /** One light, attenuated, and fog: a short span's pixels wait as points. */
+    private static LitState oneLightScene() {
+        LitState state = new LitState();
+        state.setCamera(Camera.perspective(-1, -1, 1, 1, -0.1, -200), Matrix4.identity());
+        state.setAmbient(0.2, 0.1, 0.3);
+        state.setSurface(0.8, 0.6, 0.4, 0.5, 16);
         state.addLight(-5, 2, -1, 0.3, 0.6, 0.2, 1, 0.01);
+        state.setFog(FOGS[0]);
         return state;
     }
 
@@ -332,6 +353,44 @@ class FragmentStageTest {
         assertEquals(WaitingPixels.NONE, waiting.at(50, 10));
         assertArrayEquals(pixels(atOnce.image()), pixels(atEnd.image()));
         assertTrue((atEnd.image().getRGB(50, 10) & 0xFFFFFF) != 0, "lit");
+    }
+
+    /**
+     * With one light, a short span's pixels wait as points: nothing is
+     * written until the end, a nearer long span (kept, its run written first
+     * at the end) and a nearer short span take pixels from the first, a
+     * farther one takes none, and the end draws what shading at once draws,
+     * owners too.
+     */
+    @Test
+    void aShortSpanLitByOneLightWaitsAsPointsUntilTheEnd() {
+        LitState state = oneLightScene();
+        PointShader frozen = state.frozenShader().get();
+        assertEquals(1, frozen.lightCount());
+        Stage atOnce = Stage.make(state, true);
+        Stage atEnd = Stage.deferring(state);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        v0[FragmentLayout.NZ] = 1;
+        v0[FragmentLayout.R] = 1;
+        v0[FragmentLayout.G] = 0.5;
+        dv[FragmentLayout.NX] = 0.05;
+        double[] depths = {-5, -4.5, -4, -6}; // the first's pixels taken by the next two, not by the last
+        int[] froms = {10, 12, 13, 8};
+        int[] tos = {15, 12 + FragmentStage.SHORT_SPAN, 18, 13}; // the second a long span
+        for (int s = 0; s < depths.length; s++) {
+            v0[FragmentLayout.Z] = depths[s];
+            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+                stage.fragments().phong(frozen, state.fog());
+                stage.provenance().begin(s);
+                stage.fragments().span(20, froms[s], tos[s], 1, 0, v0, dv);
+                stage.fragments().primitiveDone();
+            }
+        }
+        assertArrayEquals(pixels(Stage.make(state, true).image()), pixels(atEnd.image()), "nothing written yet");
+        atEnd.fragments().shadeWaiting();
+        assertSameDrawing(atOnce, atEnd);
+        assertTrue((atEnd.image().getRGB(14, 20) & 0xFFFFFF) != 0, "lit");
     }
 
     @Test
