@@ -17,12 +17,13 @@ pages=${*:-"a3/pageA a3/pageB a3/pageC a3/pageD a3/pageE a3/pageF a3/pageG a3/pa
  a4/page-d a4/page-e a4/page-f1 a4/page-f2 a4/page-g a4/page-h"}
 out="$root/build/llvmpipe"
 mkdir -p "$out"
-(cd "$root" && gradle --no-daemon -q jmhClasses)
+(cd "$root" && gradle --no-daemon -q jmhClasses drawingJvmOptions)
 cp="$root/build/classes/java/main:$root/build/classes/java/jmh:$root/build/resources/main"
 : > "$out/times.txt"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-# The JVM options simpview's start scripts give it (build.gradle, drawingJvmArgs).
-jvm="-XX:+UseParallelGC -XX:-UseAdaptiveSizePolicy -XX:-UseCompressedOops"
+# The JVM options simpview's start scripts give it (build.gradle's drawingJvmArgs,
+# written out by its drawingJvmOptions task).
+jvm=$(cat "$root/build/drawing-jvm-options.txt")
 for p in $pages; do
     java $jvm -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
         "$here/draw.py" "$p" >> "$out/times.txt"
