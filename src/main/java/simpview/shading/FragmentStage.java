@@ -296,10 +296,10 @@ public final class FragmentStage implements FragmentSink {
      * point of its own ({@link WaitingPoints}), for {@link #shadeWaiting} at
      * the picture's end, which shades each pixel the last span or point that
      * won it still holds: one whose depth is still the z it gave it. A later
-     * write there, of
-     * this stage or of another that draws the same rows (a batch kept whole,
-     * {@link #writesOver}), was nearer, so it left a larger depth; it only
-     * marks its row, so that the depths are looked at there alone. The
+     * write there, of this stage or of another that draws the same rows (a
+     * batch kept whole, {@link #writesOver}), was nearer, so it left a larger
+     * depth; it only marks its row, so that the depths are looked at there
+     * alone (a waiting point's depth is always looked at). The
      * owner each waiting pixel gets is the one {@code owners} (or null) has
      * for its row when it wins. The picture is the same to the bit: a pixel's
      * colour is its last winning fragment's, and a point is lit the same
@@ -458,6 +458,9 @@ public final class FragmentStage implements FragmentSink {
      * span that waits marked the pixel as its own.
      */
     private int addPiece(int span, int y, int x, int n, int at) {
+        if (n < SMALL_PIECE) {
+            return addSmallPiece(span, y, x, n, at);
+        }
         int o = span * SPAN_NUMBERS;
         double[] numbers = spanNumbers;
         double q0 = numbers[o];
@@ -468,9 +471,6 @@ public final class FragmentStage implements FragmentSink {
         double dz = numbers[dv + Z];
         // gather's first loop, written out again: the two calling one shared
         // method measured 1.02-1.04x slower on page-e, one thread (session 9).
-        if (n < SMALL_PIECE) {
-            return addSmallPiece(span, y, x, n, at);
-        }
         double k0 = x - spanFrom[span];
         int stop = at + n;
         for (int j = at; j < stop; j++) {
@@ -692,7 +692,9 @@ public final class FragmentStage implements FragmentSink {
      * {@link #phongPixels} tests them and resolves kd, P and N, each pixel
      * that passes put with them in {@link #waitingPoints}, with its owner and
      * look, to be lit at the end if it is still its own
-     * ({@link #shadeWaitingPoints}). True when a pixel passed.
+     * ({@link #shadeWaitingPoints}). True when a pixel passed. (A loop of its
+     * own: as a choice in phongPixels' loop, page-g took 1.04 of its time on
+     * one thread and 1.09 on two; session 19.)
      */
     private boolean waitingShortSpan(int y, int from, int start, int end, double q0, double dq, double[] v0,
             double[] dv) {
@@ -755,8 +757,10 @@ public final class FragmentStage implements FragmentSink {
      * The waiting points ({@link #waitingShortSpan}) whose pixel is still
      * theirs (its depth still their z), lit a look at a time in batches of up
      * to {@link #WAITING_BATCH}, fogged, packed and written, each with its
-     * owner; none wait after. No two are the same pixel, nor one a waiting
-     * run's, so the order of the writes cannot change the picture.
+     * owner; none wait after. Of the points and runs that waited at one
+     * pixel, only the last to win it still holds it, so each pixel is
+     * written once at most and the order of the writes cannot change the
+     * picture.
      */
     private void shadeWaitingPoints() {
         WaitingPoints w = waitingPoints;
@@ -920,8 +924,10 @@ public final class FragmentStage implements FragmentSink {
             if (!isShort) {
                 return waitingSpan(y, from, start, end, q0, dq, v0, dv);
             }
-            return shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS ? keptShortSpan(y, from, start, end, q0, dq, v0, dv)
-                    : waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
+            if (shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS) {
+                return keptShortSpan(y, from, start, end, q0, dq, v0, dv);
+            }
+            return waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
         }
         if (isShort) {
             return phongPixels(y, from, start, end, q0, dq, v0, dv);
