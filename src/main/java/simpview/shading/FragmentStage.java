@@ -72,7 +72,7 @@ public final class FragmentStage implements FragmentSink {
      * and page-f1 0.94-0.95, but with two lights or more page-e 1.05, page-f2
      * 1.03-1.04 and page-h 1.07. Two lights and more, kept and tested pixel by
      * pixel, with {@link #SMALL_PIECE}, against kept and tested a batch at a
-     * time: page-f2 0.97, page-e 0.99, page-h 1.00 (copy 1.03).
+     * time: page-f2 0.97, page-e 0.99, page-h 1.03 (its copy 1.03).
      */
     static final int LIGHTS_TO_KEEP_SHORT_SPANS = 2;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
