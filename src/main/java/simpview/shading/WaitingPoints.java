@@ -33,9 +33,6 @@ final class WaitingPoints {
     double[] nx = new double[256];
     double[] ny = new double[256];
     double[] nz = new double[256];
-    /** The points' indices by look, each look's in the order they came: from lookStart[look] to lookStart[look + 1]. */
-    int[] order = new int[256];
-    int[] lookStart = new int[9];
 
     /** Room for one more point: its index. */
     int add() {
@@ -61,31 +58,6 @@ final class WaitingPoints {
         nx = Arrays.copyOf(nx, capacity);
         ny = Arrays.copyOf(ny, capacity);
         nz = Arrays.copyOf(nz, capacity);
-        order = new int[capacity];
-    }
-
-    /** Fills order and lookStart for looks 0 to looks - 1: a counting sort, stable. */
-    void sortByLook(int looks) {
-        if (lookStart.length < looks + 1) {
-            lookStart = new int[looks + 1];
-        }
-        int[] start = lookStart;
-        Arrays.fill(start, 0, looks + 1, 0);
-        int n = count;
-        for (int i = 0; i < n; i++) {
-            start[look[i] + 1]++;
-        }
-        for (int l = 0; l < looks; l++) {
-            start[l + 1] += start[l];
-        }
-        for (int i = 0; i < n; i++) {
-            order[start[look[i]]++] = i;
-        }
-        // Each start was moved on to the next look's start: moved back.
-        for (int l = looks; l > 0; l--) {
-            start[l] = start[l - 1];
-        }
-        start[0] = 0;
     }
 
     /** None wait. */
