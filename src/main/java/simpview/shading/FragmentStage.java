@@ -620,10 +620,7 @@ public final class FragmentStage implements FragmentSink {
 
     /** The batch's first n points lit by the look, fogged, packed and written, a piece at a time. */
     private void shadePieces(int n) {
-        LitPoints t = points;
-        t.count = n;
-        shader.shade(t);
-        pack(n);
+        lightAndPack(n);
         for (int p = 0; p < pieceCount; p++) {
             int y = pieceY[p];
             if (owners != null) {
@@ -811,10 +808,7 @@ public final class FragmentStage implements FragmentSink {
 
     /** The batch's first n points lit by the look, fogged, packed and written, each with its owner. */
     private void shadePoints(int n) {
-        LitPoints t = points;
-        t.count = n;
-        shader.shade(t);
-        pack(n);
+        lightAndPack(n);
         for (int i = 0; i < n; i++) {
             if (owners != null) {
                 owners.beginAt(pointY[i], pointOwner[i]);
@@ -925,7 +919,8 @@ public final class FragmentStage implements FragmentSink {
         int start = Math.max(from, 0);
         boolean isShort = end - start < SHORT_SPAN;
         if (waiting != null && shader.lightCount() >= LIGHTS_TO_WAIT) {
-            writePending(); // the batches below use the same arrays
+            // No pixel is pending here: in a look whose spans wait, phongPixels
+            // is never used, and a change of look writes what was pending.
             if (!isShort) {
                 return waitingSpan(y, from, start, end, q0, dq, v0, dv);
             }
@@ -944,7 +939,6 @@ public final class FragmentStage implements FragmentSink {
             if (n > 0) {
                 wrote = true;
                 phong(n, v0, dv);
-                pack(n);
                 if (whole) {
                     panel.setRun(first, y, n, batchZ, colours, 0);
                 } else {
@@ -979,9 +973,7 @@ public final class FragmentStage implements FragmentSink {
             }
             return;
         }
-        t.count = n;
-        shader.shade(t);
-        pack(n);
+        lightAndPack(n);
         for (int i = 0; i < n; i++) {
             panel.setPixel(pendingX[i], pendingY[i], batchZ[i], colours[i]);
         }
@@ -1176,7 +1168,7 @@ public final class FragmentStage implements FragmentSink {
         return n;
     }
 
-    /** The gathered pixels' kd, P and N, lit by the shader into points' red, green and blue. */
+    /** The gathered pixels' kd, P and N, lit by the shader, fogged and packed ({@link #lightAndPack}). */
     private void phong(int n, double[] v0, double[] dv) {
         LitPoints t = points;
         if (shader.usesPoint()) { // else the ambient term alone: P and N are not read
@@ -1184,8 +1176,15 @@ public final class FragmentStage implements FragmentSink {
             resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, 0, n);
         }
         resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, 0, n);
+        lightAndPack(n);
+    }
+
+    /** The batch's first n points lit by the shader, then fogged and packed into colours ({@link #pack}). */
+    private void lightAndPack(int n) {
+        LitPoints t = points;
         t.count = n;
         shader.shade(t);
+        pack(n);
     }
 
     /** Two channels at the batch's pixels from &lt;= i &lt; to: (c0 + k dc) / q. */
