@@ -39,4 +39,28 @@ public interface FragmentSink {
     default int channelsRead(int channels) {
         return channels;
     }
+
+    /**
+     * Whether a span of row y with these q and z (channel {@link FragmentLayout#Z}
+     * over q, as in {@link #span}) may pass the sink's tests now: false only
+     * when {@link #span} with them would change nothing, whatever its other
+     * channels. A rasterizer need not interpolate the other channels of a
+     * triangle until a span of it may pass, nor hand the sink the spans
+     * before. Asking changes nothing. The default says yes.
+     */
+    default boolean anyNearer(int y, int from, int to, double q0, double dq, double z0, double dz) {
+        return true;
+    }
+
+    /**
+     * Whether what the sink holds already hides every fragment whose z is at
+     * most {@code z} in rows {@code firstRow..lastRow}, columns
+     * {@code firstColumn..lastColumn} (within the panel; an empty box is
+     * hidden): true only when no such fragment would change anything there.
+     * A rasterizer that bounds a triangle's z over the box need not draw it
+     * then. Asking changes nothing. The default says no.
+     */
+    default boolean hides(int firstRow, int lastRow, int firstColumn, int lastColumn, double z) {
+        return false;
+    }
 }

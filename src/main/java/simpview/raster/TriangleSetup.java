@@ -91,4 +91,44 @@ final class TriangleSetup {
     double dy(int row) {
         return row + 0.5 - ay;
     }
+
+    /**
+     * Above every z a sink computes at a pixel of this triangle from the
+     * planes of q and of z times q (at pixel k of a span,
+     * {@code (z0 + k dz) * (1 / (q0 + k dq))}, each value a span's, as
+     * {@link Plane#highest} bounds it), so that a pixel whose depth is at
+     * least this already is never passed by the triangle; NaN when q is not
+     * positive over the triangle's box, as the clipper leaves it. The bound
+     * is over the box of the vertices, widened by {@link TriangleCoverage#boxSlack}.
+     */
+    double highestDepth(Plane q, Plane zq) {
+        TriangleCoverage t = coverage;
+        double slack = t.boxSlack();
+        double cx = (t.minX() + t.maxX()) * 0.5 - ax;
+        double cy = (t.minY() + t.maxY()) * 0.5 - ay;
+        double hw = (t.maxX() - t.minX()) * 0.5 + slack;
+        double hh = (t.maxY() - t.minY()) * 0.5 + slack;
+        double qLow = q.lowest(cx, cy, hw, hh);
+        if (!(qLow > 0)) {
+            return Double.NaN;
+        }
+        double high = zq.highest(cx, cy, hw, hh);
+        // z = zq / q, q positive: largest at the least q if zq may be
+        // positive, else at the most q. The division, the reciprocal and the
+        // product each round by 2^-53, far inside the margin added.
+        double z = high >= 0 ? high / qLow : high / q.highest(cx, cy, hw, hh);
+        return z + Math.abs(z) * Plane.MARGIN;
+    }
+
+    /** The first column of the widened box of the vertices, within [0, width]. */
+    int firstColumn(int width) {
+        double column = Math.ceil(coverage.minX() - 0.5 - coverage.boxSlack());
+        return column <= 0 ? 0 : column < width ? (int) column : width;
+    }
+
+    /** Its last, within [-1, width - 1]. */
+    int lastColumn(int width) {
+        double column = Math.floor(coverage.maxX() - 0.5 + coverage.boxSlack());
+        return column <= -1 ? -1 : column < width - 1 ? (int) column : width - 1;
+    }
 }

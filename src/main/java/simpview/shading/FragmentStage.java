@@ -914,6 +914,54 @@ public final class FragmentStage implements FragmentSink {
         }
     }
 
+    /**
+     * The depth test of {@link #span}, the same z at each pixel to the bit,
+     * until a pixel passes; nothing is written. Every span's pixel that
+     * passes passes the depth test first, so a span none of whose pixels
+     * would pass it changes nothing.
+     */
+    @Override
+    public boolean anyNearer(int y, int from, int to, double q0, double dq, double z0, double dz) {
+        if (y < rowFrom || y >= rowTo) {
+            return false;
+        }
+        int end = Math.min(to, width);
+        int row = y * width;
+        double[] d = depth;
+        for (int x = Math.max(from, 0); x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            if ((z0 + k * dz) * inv > d[row + x]) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * True when every depth of the box, within this stage's rows, is at
+     * least z: a fragment passes only where its z is above the depth there
+     * ({@link #nearer}), so no fragment of z at most z passes in the box.
+     * A NaN depth or z is never at least another: not hidden.
+     */
+    @Override
+    public boolean hides(int firstRow, int lastRow, int firstColumn, int lastColumn, double z) {
+        int fromRow = Math.max(firstRow, rowFrom);
+        int toRow = Math.min(lastRow, rowTo - 1);
+        int fromColumn = Math.max(firstColumn, 0);
+        int toColumn = Math.min(lastColumn, width - 1);
+        double[] d = depth;
+        for (int y = fromRow; y <= toRow; y++) {
+            int row = y * width;
+            for (int x = fromColumn; x <= toColumn; x++) {
+                if (!(d[row + x] >= z)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
     /** A phong span: kept for the end, or a batch at a time, or pixel by pixel when short; true if one was written. */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);

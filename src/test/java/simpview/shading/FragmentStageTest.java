@@ -13,6 +13,8 @@ import org.junit.jupiter.api.Test;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.raster.FragmentLayout;
+import simpview.raster.FragmentSink;
+import simpview.raster.LitPolygonRasterizer;
 import simpview.surface.Drawable;
 import simpview.surface.ImageDrawable;
 import simpview.surface.Provenance;
@@ -391,6 +393,186 @@ class FragmentStageTest {
         atEnd.fragments().shadeWaiting();
         assertSameDrawing(atOnce, atEnd);
         assertTrue((atEnd.image().getRGB(14, 20) & 0xFFFFFF) != 0, "lit");
+    }
+
+    /** Forwards the spans, but not the questions: every triangle is walked and every span given. */
+    private record Unasked(FragmentSink sink) implements FragmentSink {
+        @Override
+        public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
+            sink.span(y, from, to, q0, dq, v0, dv);
+        }
+
+        @Override
+        public void pixel(int x, int y, double q, double[] v) {
+            sink.pixel(x, y, q, v);
+        }
+
+        @Override
+        public void primitiveDone() {
+            sink.primitiveDone();
+        }
+
+        @Override
+        public int channelsRead(int channels) {
+            return sink.channelsRead(channels);
+        }
+    }
+
+    /** Forwards everything, and counts the answers that let a rasterizer skip work. */
+    private static final class Asked implements FragmentSink {
+        final FragmentSink sink;
+        int hidden;
+        int noneNearer;
+
+        Asked(FragmentSink sink) {
+            this.sink = sink;
+        }
+
+        @Override
+        public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
+            sink.span(y, from, to, q0, dq, v0, dv);
+        }
+
+        @Override
+        public void pixel(int x, int y, double q, double[] v) {
+            sink.pixel(x, y, q, v);
+        }
+
+        @Override
+        public void primitiveDone() {
+            sink.primitiveDone();
+        }
+
+        @Override
+        public int channelsRead(int channels) {
+            return sink.channelsRead(channels);
+        }
+
+        @Override
+        public boolean anyNearer(int y, int from, int to, double q0, double dq, double z0, double dz) {
+            boolean nearer = sink.anyNearer(y, from, to, q0, dq, z0, dz);
+            noneNearer += nearer ? 0 : 1;
+            return nearer;
+        }
+
+        @Override
+        public boolean hides(int firstRow, int lastRow, int firstColumn, int lastColumn, double z) {
+            boolean hides = sink.hides(firstRow, lastRow, firstColumn, lastColumn, z);
+            hidden += hides ? 1 : 0;
+            return hides;
+        }
+    }
+
+    /**
+     * A triangle or quad of the given size in pixels about (cx, cy), its
+     * corners' z on a tilted plane about z, laid out for the rasterizer.
+     */
+    private static double[] polygon(Random random, int n, double cx, double cy, double size, double z) {
+        int stride = FragmentLayout.stride(CHANNELS);
+        double[] v = new double[n * stride];
+        double tiltX = (random.nextDouble() - 0.5) * 0.2;
+        double tiltY = (random.nextDouble() - 0.5) * 0.2;
+        double q = 1 / (4 + random.nextDouble() * 12);
+        boolean oneQ = random.nextBoolean();
+        for (int k = 0; k < n; k++) {
+            double angle = 2 * Math.PI * k / n + random.nextDouble() * 0.5;
+            double x = cx + size * Math.cos(angle);
+            double y = cy + size * Math.sin(angle);
+            double qk = oneQ ? q : q * (1 + (random.nextDouble() - 0.5) * 0.1);
+            double[] channels = new double[CHANNELS];
+            channels[FragmentLayout.Z] = z + tiltX * (x - cx) + tiltY * (y - cy);
+            channels[FragmentLayout.R] = random.nextDouble();
+            channels[FragmentLayout.G] = random.nextDouble();
+            channels[FragmentLayout.B] = random.nextDouble();
+            channels[FragmentLayout.PX] = (x - SIZE / 2.0) / SIZE;
+            channels[FragmentLayout.PY] = (y - SIZE / 2.0) / SIZE;
+            channels[FragmentLayout.NX] = random.nextDouble() - 0.5;
+            channels[FragmentLayout.NY] = random.nextDouble() - 0.5;
+            channels[FragmentLayout.NZ] = 1;
+            v[k * stride + FragmentLayout.X] = x;
+            v[k * stride + FragmentLayout.Y] = y;
+            v[k * stride + FragmentLayout.Q] = qk;
+            for (int c = 0; c < CHANNELS; c++) {
+                v[k * stride + FragmentLayout.CHANNEL + c] = channels[c] * qk;
+            }
+        }
+        return v;
+    }
+
+    /**
+     * Triangles the rasterizer skips, as hidden behind what is drawn or as
+     * rows none of whose pixels is nearer, draw what they draw walked and
+     * given in full: mesh-like runs of small polygons drawn over one another
+     * at depths apart by nothing, by a few units in the last place, by a
+     * billionth and by units, some slivers, some over the panel's edges;
+     * phong and coloured, shaded at once and at the end.
+     */
+    @Test
+    void trianglesSkippedAsHiddenDrawWhatTheyDrawGivenInFull() {
+        Random random = new Random(1205021);
+        int hidden = 0;
+        int noneNearer = 0;
+        for (int trial = 0; trial < 40; trial++) {
+            LitState state = random.nextBoolean() ? sceneThatWaits(random) : scene(random);
+            boolean atEnd = random.nextBoolean();
+            Stage asked = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            Stage unasked = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            Asked askedSink = new Asked(asked.fragments());
+            FragmentSink unaskedSink = new Unasked(unasked.fragments());
+            LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
+            LitPolygonRasterizer unaskedRasterizer = new LitPolygonRasterizer();
+            double[] offsets = {0, Math.ulp(8.0), -Math.ulp(8.0), 3 * Math.ulp(8.0), -3 * Math.ulp(8.0), 1e-9, -1e-9, 1, -1};
+            int polygons = 20 + random.nextInt(200);
+            for (int p = 0; p < polygons; p++) {
+                boolean phong = random.nextInt(4) > 0;
+                for (Stage stage : new Stage[] {asked, unasked}) {
+                    if (phong) {
+                        stage.fragments().phong(state.frozenShader().get(), state.fog());
+                    } else {
+                        stage.fragments().colours(state.fog());
+                    }
+                    stage.provenance().begin(p);
+                }
+                // About the same places again and again, as a mesh's layers are.
+                double cx = 20 + random.nextInt(6) * 20 + random.nextDouble();
+                double cy = 20 + random.nextInt(6) * 20 + random.nextDouble();
+                double size = random.nextInt(8) == 0 ? 80 : 1 + random.nextDouble() * 6;
+                double z = -8 + offsets[random.nextInt(offsets.length)];
+                int n = 3 + random.nextInt(2);
+                double[] v = polygon(random, n, cx, cy, size, z);
+                if (random.nextInt(10) == 0) {
+                    int stride = FragmentLayout.stride(CHANNELS);
+                    v[2 * stride + FragmentLayout.X] = (v[FragmentLayout.X] + v[stride + FragmentLayout.X]) / 2 + 1e-7;
+                    v[2 * stride + FragmentLayout.Y] = (v[FragmentLayout.Y] + v[stride + FragmentLayout.Y]) / 2;
+                }
+                int channels = phong ? CHANNELS : FragmentLayout.COLOUR_CHANNELS;
+                if (!phong) {
+                    v = colourLayout(v, n);
+                }
+                rasterizer.fill(v, n, channels, SIZE, SIZE, askedSink);
+                unaskedRasterizer.fill(v, n, channels, SIZE, SIZE, unaskedSink);
+            }
+            if (atEnd) {
+                asked.fragments().shadeWaiting();
+                unasked.fragments().shadeWaiting();
+            }
+            assertSameDrawing(unasked, asked);
+            hidden += askedSink.hidden;
+            noneNearer += askedSink.noneNearer;
+        }
+        assertTrue(hidden > 200, hidden + " triangles skipped as hidden");
+        assertTrue(noneNearer > 200, noneNearer + " rows with no pixel nearer");
+    }
+
+    /** The same polygon with only the colour channels (z, kd). */
+    private static double[] colourLayout(double[] phong, int n) {
+        int from = FragmentLayout.stride(CHANNELS);
+        int to = FragmentLayout.stride(FragmentLayout.COLOUR_CHANNELS);
+        double[] v = new double[n * to];
+        for (int k = 0; k < n; k++) {
+            System.arraycopy(phong, k * from, v, k * to, to);
+        }
+        return v;
     }
 
     @Test
