@@ -348,6 +348,13 @@ public final class LitGeometry implements GeometryStage {
 
     /** Step 3: the face normal (p2 - p1) x (p3 - p1), unit or zero, given to every vertex without its own. */
     private void faceNormals(int n) {
+        boolean allOwn = true;
+        for (int k = 0; k < n; k++) {
+            allOwn &= ownNormal[k];
+        }
+        if (allOwn) {
+            return;
+        }
         int b = CAMERA_STRIDE;
         int c = 2 * CAMERA_STRIDE;
         double e1x = cam[b + CX] - cam[CX];
