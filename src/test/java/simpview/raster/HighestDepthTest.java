@@ -126,6 +126,18 @@ class HighestDepthTest {
         return triangle(new double[] {x0, x0 + w, flip ? x0 + w : x0}, new double[] {y0, y0, y0 + h}, q, z);
     }
 
+    /** The triangle's bound, its set-up left in {@code setup}; null when it is degenerate. */
+    private static Double bound(double[] v, TriangleSetup setup) {
+        if (!setup.set(v, 0, STRIDE, 2 * STRIDE, FragmentLayout.X, FragmentLayout.Y)) {
+            return null;
+        }
+        Plane q = new Plane();
+        Plane zq = new Plane();
+        setup.plane(q, v, FragmentLayout.Q);
+        setup.plane(zq, v, FragmentLayout.CHANNEL + FragmentLayout.Z);
+        return setup.highestDepth(q, zq);
+    }
+
     @Test
     void everyPixelsZIsBelowTheBoundAndInTheBox() {
         Random random = new Random(1205020);
@@ -134,14 +146,10 @@ class HighestDepthTest {
         for (int i = 0; i < 4000; i++) {
             double[] v = randomTriangle(random);
             TriangleSetup setup = new TriangleSetup();
-            if (!setup.set(v, 0, STRIDE, 2 * STRIDE, FragmentLayout.X, FragmentLayout.Y)) {
+            Double bound = bound(v, setup);
+            if (bound == null) {
                 continue;
             }
-            Plane q = new Plane();
-            Plane zq = new Plane();
-            setup.plane(q, v, FragmentLayout.Q);
-            setup.plane(zq, v, FragmentLayout.CHANNEL + FragmentLayout.Z);
-            double bound = setup.highestDepth(q, zq);
             Pixels pixels = new Pixels();
             new LitPolygonRasterizer().fill(v, 3, CHANNELS, SIZE, SIZE, pixels);
             if (pixels.count == 0) {
@@ -164,12 +172,7 @@ class HighestDepthTest {
         double[] v = triangle(new double[] {10.2, 90.7, 40.1}, new double[] {12.3, 20.9, 80.4},
                 new double[] {0.25, 0.25, 0.25}, new double[] {-40, -40, -40});
         TriangleSetup setup = new TriangleSetup();
-        assertTrue(setup.set(v, 0, STRIDE, 2 * STRIDE, FragmentLayout.X, FragmentLayout.Y));
-        Plane q = new Plane();
-        Plane zq = new Plane();
-        setup.plane(q, v, FragmentLayout.Q);
-        setup.plane(zq, v, FragmentLayout.CHANNEL + FragmentLayout.Z);
-        double bound = setup.highestDepth(q, zq);
+        double bound = bound(v, setup);
         assertTrue(bound >= -40 && bound < -40 + 1e-9, "bound " + bound);
         assertEquals(10, setup.firstColumn(SIZE));
         assertEquals(90, setup.lastColumn(SIZE));
@@ -179,12 +182,6 @@ class HighestDepthTest {
     void aTriangleWhoseQIsNotPositiveHasNoBound() {
         double[] v = triangle(new double[] {10, 90, 40}, new double[] {12, 20, 80},
                 new double[] {0.25, -0.25, 0.25}, new double[] {-40, -40, -40});
-        TriangleSetup setup = new TriangleSetup();
-        assertTrue(setup.set(v, 0, STRIDE, 2 * STRIDE, FragmentLayout.X, FragmentLayout.Y));
-        Plane q = new Plane();
-        Plane zq = new Plane();
-        setup.plane(q, v, FragmentLayout.Q);
-        setup.plane(zq, v, FragmentLayout.CHANNEL + FragmentLayout.Z);
-        assertTrue(Double.isNaN(setup.highestDepth(q, zq)));
+        assertTrue(Double.isNaN(bound(v, new TriangleSetup())));
     }
 }

@@ -396,35 +396,10 @@ class FragmentStageTest {
     }
 
     /** Forwards the spans, but not the questions: every triangle is walked and every span given. */
-    private record Unasked(FragmentSink sink) implements FragmentSink {
-        @Override
-        public void span(int y, int from, int to, double q0, double dq, double[] v0, double[] dv) {
-            sink.span(y, from, to, q0, dq, v0, dv);
-        }
-
-        @Override
-        public void pixel(int x, int y, double q, double[] v) {
-            sink.pixel(x, y, q, v);
-        }
-
-        @Override
-        public void primitiveDone() {
-            sink.primitiveDone();
-        }
-
-        @Override
-        public int channelsRead(int channels) {
-            return sink.channelsRead(channels);
-        }
-    }
-
-    /** Forwards everything, and counts the answers that let a rasterizer skip work. */
-    private static final class Asked implements FragmentSink {
+    private static class Unasked implements FragmentSink {
         final FragmentSink sink;
-        int hidden;
-        int noneNearer;
 
-        Asked(FragmentSink sink) {
+        Unasked(FragmentSink sink) {
             this.sink = sink;
         }
 
@@ -446,6 +421,16 @@ class FragmentStageTest {
         @Override
         public int channelsRead(int channels) {
             return sink.channelsRead(channels);
+        }
+    }
+
+    /** Forwards the questions too, and counts the answers that let a rasterizer skip work. */
+    private static final class Asked extends Unasked {
+        int hidden;
+        int noneNearer;
+
+        Asked(FragmentSink sink) {
+            super(sink);
         }
 
         @Override
