@@ -82,6 +82,32 @@ class PixelHistoryTest {
         }
     }
 
+    /**
+     * A triangle the picture skips whole, as hidden behind what is drawn
+     * (LitPolygonRasterizer asks the fragment stage before it gives a span),
+     * is still in the history, whose replay asks nothing: its fragment at the
+     * pixel fails the depth test there, naming the depth before it.
+     */
+    @Test
+    void aTriangleHiddenWholeIsInTheHistory() throws Exception {
+        Path scene = dir.resolve("hidden.simp");
+        java.nio.file.Files.writeString(scene, String.join("\n",
+                "camera -1 -1 1 1 -0.1 -200",
+                "ambient 0.5 0.5 0.5",
+                "phong",
+                "polygon (-4, -4, -10) (4, -4, -10) (0, 4, -10)",
+                "polygon (-1, -1, -20) (1, -1, -20) (0, 1, -20)",
+                ""));
+        int centre = PageCanvas.PANEL / 2;
+        PixelReport report = inspector.inspect(InspectedScene.of(scene), centre, centre);
+        List<HistoryEntry> history = report.history();
+        assertEquals(2, history.size(), report.text(true, false));
+        assertEquals(Outcome.WRITTEN, history.get(0).outcome());
+        assertEquals(Outcome.DEPTH_FAILED, history.get(1).outcome());
+        assertEquals(history.get(0).z(), history.get(1).storedDepth(), 0);
+        assertEquals(history.get(0).primitive(), report.lastWritten().primitive());
+    }
+
     /** Checks sampled pixels, half of them drawn ones; returns how many drawn pixels were checked. */
     private int check(InspectedScene scene, int samples, long seed) throws SceneException {
         Drawn drawn = draw(scene);
