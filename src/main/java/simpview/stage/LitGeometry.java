@@ -346,7 +346,11 @@ public final class LitGeometry implements GeometryStage {
         }
     }
 
-    /** Step 3: the face normal (p2 - p1) x (p3 - p1), unit or zero, given to every vertex without its own. */
+    /**
+     * Step 3: the face normal (p2 - p1) x (p3 - p1), unit or zero, given to
+     * every vertex without its own; not made when every vertex has its own
+     * (flat shading reads it only when one has not).
+     */
     private void faceNormals(int n) {
         boolean allOwn = true;
         for (int k = 0; k < n; k++) {
