@@ -30,6 +30,14 @@ final class TriangleCoverage {
     private double maxX;
     private double minY;
     private double maxY;
+    /**
+     * How much the box of the vertices is widened on every side: more than a
+     * pixel centre can lie outside the triangle and still be covered, its
+     * edge tests rounded (about 2^-51 of its distance from the edge's first
+     * endpoint): 2^-30 of the coordinates' sizes, and 2^-30 of a pixel. Made
+     * once in {@link #set}: both column ends and a lit triangle's depth bound use it.
+     */
+    private double boxSlack;
     /** Twice the triangle's area, positive. */
     double area;
     /** True when the vertices were given clockwise: the counter-clockwise order is 1, 3, 2. */
@@ -66,6 +74,7 @@ final class TriangleCoverage {
         maxX = higher(x1, higher(x2, x3));
         minY = lower(y1, lower(y2, y3));
         maxY = higher(y1, higher(y2, y3));
+        boxSlack = 0x1p-30 * (1 + Math.abs(minX) + Math.abs(maxX) + Math.abs(minY) + Math.abs(maxY));
         return true;
     }
 
@@ -83,14 +92,21 @@ final class TriangleCoverage {
         return row <= 0 ? 0 : row < height ? (int) row : height;
     }
 
-    /**
-     * How much the box of the vertices is widened on every side: more than a
-     * pixel centre can lie outside the triangle and still be covered, its
-     * edge tests rounded (about 2^-51 of its distance from the edge's first
-     * endpoint): 2^-30 of the coordinates' sizes, and 2^-30 of a pixel.
-     */
+    /** How much the box of the vertices is widened on every side ({@link #boxSlack}). */
     double boxSlack() {
-        return 0x1p-30 * (1 + Math.abs(minX) + Math.abs(maxX) + Math.abs(minY) + Math.abs(maxY));
+        return boxSlack;
+    }
+
+    /** The first column of the widened box of the vertices, within [0, width]. */
+    int firstColumn(int width) {
+        double column = Math.ceil(minX - 0.5 - boxSlack);
+        return column <= 0 ? 0 : column < width ? (int) column : width;
+    }
+
+    /** Its last, within [-1, width - 1]. */
+    int lastColumn(int width) {
+        double column = Math.floor(maxX - 0.5 + boxSlack);
+        return column <= -1 ? -1 : column < width - 1 ? (int) column : width - 1;
     }
 
     double minX() {

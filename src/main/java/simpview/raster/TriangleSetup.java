@@ -122,13 +122,11 @@ final class TriangleSetup {
 
     /** The first column of the widened box of the vertices, within [0, width]. */
     int firstColumn(int width) {
-        double column = Math.ceil(coverage.minX() - 0.5 - coverage.boxSlack());
-        return column <= 0 ? 0 : column < width ? (int) column : width;
+        return coverage.firstColumn(width);
     }
 
     /** Its last, within [-1, width - 1]. */
     int lastColumn(int width) {
-        double column = Math.floor(coverage.maxX() - 0.5 + coverage.boxSlack());
-        return column <= -1 ? -1 : column < width - 1 ? (int) column : width - 1;
+        return coverage.lastColumn(width);
     }
 }
