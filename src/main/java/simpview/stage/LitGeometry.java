@@ -318,7 +318,6 @@ public final class LitGeometry implements GeometryStage {
     /** One colour for the polygon: lit at the centroid, with the mean kd and the mean own normal or the face's. */
     private void flat(int n) {
         double px = 0, py = 0, pz = 0, kr = 0, kg = 0, kb = 0, nx = 0, ny = 0, nz = 0;
-        boolean allOwn = true;
         for (int k = 0; k < n; k++) {
             int o = k * CAMERA_STRIDE;
             px += cam[o + CX];
@@ -330,9 +329,8 @@ public final class LitGeometry implements GeometryStage {
             nx += cam[o + CNX];
             ny += cam[o + CNY];
             nz += cam[o + CNZ];
-            allOwn &= ownNormal[k];
         }
-        if (!allOwn) {
+        if (!allOwnNormals(n)) {
             nx = faceNx;
             ny = faceNy;
             nz = faceNz;
@@ -352,11 +350,7 @@ public final class LitGeometry implements GeometryStage {
      * (flat shading reads it only when one has not).
      */
     private void faceNormals(int n) {
-        boolean allOwn = true;
-        for (int k = 0; k < n; k++) {
-            allOwn &= ownNormal[k];
-        }
-        if (allOwn) {
+        if (allOwnNormals(n)) {
             return;
         }
         int b = CAMERA_STRIDE;
@@ -383,6 +377,15 @@ public final class LitGeometry implements GeometryStage {
                 cam[o + CNZ] = faceNz;
             }
         }
+    }
+
+    /** True when each of the n vertices has its own normal: then no face normal is made or read. */
+    private boolean allOwnNormals(int n) {
+        boolean all = true;
+        for (int k = 0; k < n; k++) {
+            all &= ownNormal[k];
+        }
+        return all;
     }
 
     /**
