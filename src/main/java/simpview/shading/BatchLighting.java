@@ -22,12 +22,19 @@ package simpview.shading;
  * unrolls it (on JDK 17) only while its body is under {@code
  * LoopUnrollLimit}, 60 nodes by default, where each array read or written
  * costs several. A loop over ten arrays stays one point at a time. So a
- * step reads and writes few arrays, even where that means storing a value
- * and reading it back in the next loop (a stored double is the same bits):
- * the light's L and N . L, and |L| and 1 / |L|, and V . L and its scale,
- * are each two loops. Split so, with two lights, a point measured 0.87 of
- * its time in one loop each (session 12), as fast as the loops in one
- * with the limit raised to 240.
+ * step reads and writes at most seven arrays, storing a value and reading
+ * it back in the next step where it must (a stored double is the same
+ * bits). Each loop costs a batch about 0.2 ns a point on the machine of
+ * docs/performance.md whatever its arithmetic, so what a step can work out
+ * again from the points is not stored: L = light - P is made in each of the
+ * three steps that read it, E (-P or (0, 0, 1)) is never stored, and the
+ * reach and ks times the power are made where the light is added, the
+ * first light's sum starting from the ambient term there. With one
+ * attenuated light and p = 8, these 16 loops take 4.3-4.4 ns a point where
+ * 22 took 4.8-4.9, to the same bits (session 21; its three square roots and
+ * three divisions alone take 1.5 ns). The whole light in one loop was
+ * never packed (20 ns a point), and in three loops only in part, even with
+ * the limit raised to 1,000 (11 ns).
  */
 final class BatchLighting {
 
@@ -98,15 +105,10 @@ final class BatchLighting {
             }
             return;
         }
-        for (int i = 0; i < n; i++) {
-            red[i] = t.kdRed[i] * ar;
-            green[i] = t.kdGreen[i] * ag;
-            blue[i] = t.kdBlue[i] * ab;
-        }
         aim(t, n);
         int end = l.lightCount * Lights.STRIDE;
         for (int o = 0; o < end; o += Lights.STRIDE) {
-            light(t, n, o);
+            light(t, n, o, o == 0);
         }
         // Clamped (positive, then min): as Lighting.clamp, but a NaN stays NaN, and -inf becomes NaN.
         for (int i = 0; i < n; i++) {
@@ -140,103 +142,95 @@ final class BatchLighting {
     }
 
     /**
-     * Lighting.aim for every point: E, then N and E's inverse lengths and
-     * V . N; and the start of the point's length test (see {@link #LENGTHS}).
+     * Lighting.aim for every point: N's and E's inverse lengths and V . N;
+     * and the start of the point's length test (see {@link #LENGTHS}). E is
+     * not stored: it is -P under a perspective view, whose products and sums
+     * are those of P with their signs turned (exactly; only a zero's sign may
+     * differ, which max(0, V . R) does not see: see {@link #light}), and
+     * (0, 0, 1) under a parallel one, each product kept as Lighting makes it.
      */
     private void aim(LitPoints t, int n) {
-        double[] ex = t.eyeX;
-        double[] ey = t.eyeY;
-        double[] ez = t.eyeZ;
-        double[] sn = t.inverseNormal; // |N| until the last step
-        double[] se = t.inverseEye; // |E| until the last step
-        if (lighting.perspective) {
+        double[] px = t.px;
+        double[] py = t.py;
+        double[] pz = t.pz;
+        double[] nx = t.nx;
+        double[] ny = t.ny;
+        double[] nz = t.nz;
+        double[] sn = t.inverseNormal; // |N| until the third step
+        double[] se = t.inverseEye; // |E| until the third step
+        double[] q = t.vn; // 1 / (|N| |E|) until the last step
+        boolean perspective = lighting.perspective;
+        if (perspective) {
             for (int i = 0; i < n; i++) {
-                double x = -t.px[i];
-                double y = -t.py[i];
-                double z = -t.pz[i];
-                ex[i] = x;
-                ey[i] = y;
-                ez[i] = z;
-                se[i] = Math.sqrt(x * x + y * y + z * z);
+                se[i] = Math.sqrt(px[i] * px[i] + py[i] * py[i] + pz[i] * pz[i]);
             }
         } else {
             for (int i = 0; i < n; i++) {
-                ex[i] = 0;
-                ey[i] = 0;
-                ez[i] = 1;
                 se[i] = 1; // the square root of 0 0 + 0 0 + 1 1
             }
         }
         for (int i = 0; i < n; i++) {
-            sn[i] = Math.sqrt(t.nx[i] * t.nx[i] + t.ny[i] * t.ny[i] + t.nz[i] * t.nz[i]);
-        }
-        double[] q = t.vn;
-        for (int i = 0; i < n; i++) {
-            q[i] = 1 / (sn[i] * se[i]);
+            sn[i] = Math.sqrt(nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i]);
         }
         for (int i = 0; i < n; i++) {
             double normal = sn[i];
             double eye = se[i];
-            double inverseNormal = eye * q[i];
-            double inverseEye = normal * q[i];
+            double inverse = 1 / (normal * eye);
+            double inverseNormal = eye * inverse;
+            double inverseEye = normal * inverse;
+            q[i] = inverse;
             sn[i] = inverseNormal;
             se[i] = inverseEye;
             t.lengths[i] = (normal + eye + inverseNormal + inverseEye) * LENGTHS;
         }
-        for (int i = 0; i < n; i++) {
-            q[i] = (ex[i] * t.nx[i] + ey[i] * t.ny[i] + ez[i] * t.nz[i]) * q[i];
+        if (perspective) {
+            for (int i = 0; i < n; i++) {
+                q[i] = -(px[i] * nx[i] + py[i] * ny[i] + pz[i] * nz[i]) * q[i];
+            }
+        } else {
+            for (int i = 0; i < n; i++) {
+                q[i] = (0 * nx[i] + 0 * ny[i] + 1 * nz[i]) * q[i];
+            }
         }
     }
 
     /**
-     * Adds the light at data[o] to every point: the body of Lighting.shade's
-     * light loop, step by step; and |L| and 1 / |L| to the point's length test.
+     * Adds the light at data[o] to every point (the first light: to the
+     * ambient term, kd times Ia, made here): the body of Lighting.shade's
+     * light loop, step by step; and |L| and 1 / |L| to the point's length
+     * test. L = light - P is worked out again in each step that reads it
+     * (the same bits each time) rather than kept. V . L under a perspective
+     * view is -(P . L), exactly -(E . L) but for a zero's sign; V . N too
+     * (aim). Both reach only V . R = 2 cos (V . N) - V . L, taken as
+     * max(0, V . R): where a zero's sign differs, a nonzero term leaves the
+     * difference unseen, and a difference of zeros is a zero, which max
+     * makes +0 either way.
      */
-    private void light(LitPoints t, int n, int o) {
+    private void light(LitPoints t, int n, int o, boolean first) {
         double[] data = lighting.lights.data();
-        double[] lx = t.lightX;
-        double[] ly = t.lightY;
-        double[] lz = t.lightZ;
         double x = data[o + Lights.X];
         double y = data[o + Lights.Y];
         double z = data[o + Lights.Z];
+        double[] px = t.px;
+        double[] py = t.py;
+        double[] pz = t.pz;
+        double[] dot = t.dot;
         for (int i = 0; i < n; i++) {
-            lx[i] = x - t.px[i];
-            ly[i] = y - t.py[i];
-            lz[i] = z - t.pz[i];
-        }
-        for (int i = 0; i < n; i++) {
-            t.dot[i] = t.nx[i] * lx[i] + t.ny[i] * ly[i] + t.nz[i] * lz[i];
+            dot[i] = t.nx[i] * (x - px[i]) + t.ny[i] * (y - py[i]) + t.nz[i] * (z - pz[i]);
         }
         double[] s = t.distance;
         double[] is = t.inverseDistance;
         for (int i = 0; i < n; i++) {
             // Every |L| counts, also where the light does not reach: a point
             // lit alone needlessly gets the same bits all the same.
-            s[i] = Math.sqrt(lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            double d = s[i];
+            double lx = x - px[i];
+            double ly = y - py[i];
+            double lz = z - pz[i];
+            double d = Math.sqrt(lx * lx + ly * ly + lz * lz);
             double w = 1 / d;
+            s[i] = d;
             is[i] = w;
             t.lengths[i] += (d + w) * LENGTHS;
-        }
-        for (int i = 0; i < n; i++) {
-            t.cosine[i] = t.dot[i] * (t.inverseNormal[i] * is[i]);
-        }
-        double[] h = t.highlight; // V . L, then max(0, V . R) at most 1
-        for (int i = 0; i < n; i++) {
-            h[i] = t.eyeX[i] * lx[i] + t.eyeY[i] * ly[i] + t.eyeZ[i] * lz[i];
-        }
-        for (int i = 0; i < n; i++) {
-            h[i] = h[i] * (t.inverseEye[i] * is[i]);
-        }
-        for (int i = 0; i < n; i++) {
-            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it:
-            // at least 0 (positive), at most 1 (see positive; a NaN stays
-            // NaN, see raise).
-            double r = 2 * t.cosine[i] * t.vn[i] - h[i];
-            h[i] = Math.min(positive(r), 1);
         }
         double a = data[o + Lights.A];
         double b = data[o + Lights.B];
@@ -246,7 +240,28 @@ final class BatchLighting {
                 t.attenuation[i] = 1 / (a + b * s[i]);
             }
         }
-        add(t, n, o, raise(t, n));
+        double[] cosine = t.cosine;
+        for (int i = 0; i < n; i++) {
+            cosine[i] = dot[i] * (t.inverseNormal[i] * is[i]);
+        }
+        double[] h = t.highlight; // V . L, then max(0, V . R) at most 1
+        if (lighting.perspective) {
+            for (int i = 0; i < n; i++) {
+                h[i] = -(px[i] * (x - px[i]) + py[i] * (y - py[i]) + pz[i] * (z - pz[i])) * (t.inverseEye[i] * is[i]);
+            }
+        } else {
+            for (int i = 0; i < n; i++) {
+                h[i] = (0 * (x - px[i]) + 0 * (y - py[i]) + 1 * (z - pz[i])) * (t.inverseEye[i] * is[i]);
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            // V . R = 2 cos (V . N) - V . L, then as Lighting.power takes it:
+            // at least 0 (positive), at most 1 (see positive; a NaN stays
+            // NaN, see raise).
+            double r = 2 * cosine[i] * t.vn[i] - h[i];
+            h[i] = Math.min(positive(r), 1);
+        }
+        add(t, n, o, raise(t, n), first);
     }
 
     /**
@@ -336,55 +351,65 @@ final class BatchLighting {
 
     /**
      * Each point's contribution, added where the light reaches it (N . L &gt;
-     * 0) and times 0 elsewhere, with no branch, so that C2 packs it. Where
-     * the light does not reach, a finite contribution times 0 adds a zero,
-     * which leaves the sum as it was (but for the sign of a zero sum, which
-     * the clamp makes +0 either way); an infinite or NaN one makes the sum
-     * NaN, and the point is lit alone, as it is for a NaN where the light
+     * 0) and times 0 elsewhere, with no branch, so that C2 packs it: the
+     * reach is 1 where N . L &gt; 0 (the least positive double times 2^2000
+     * is above 1), 0 where not, NaN for a NaN N . L (see positive). Where the
+     * light does not reach, a finite contribution times 0 adds a zero, which
+     * leaves the sum as it was (but for the sign of a zero sum, which the
+     * clamp makes +0 either way); an infinite or NaN one makes the sum NaN,
+     * and the point is lit alone, as it is for a NaN where the light
      * reaches (Lighting.contribution's test for a product with no value).
-     * Without either, the sums are Lighting's.
+     * Without either, the sums are Lighting's. The first light's sum starts
+     * from the ambient term, kd times Ia.
      */
-    private void add(LitPoints t, int n, int o, double[] raised) {
+    private void add(LitPoints t, int n, int o, double[] raised, boolean first) {
         Lighting l = lighting;
         double[] data = l.lights.data();
-        double red = data[o + Lights.RED];
-        double green = data[o + Lights.GREEN];
-        double blue = data[o + Lights.BLUE];
-        double ks = l.ks;
-        double[] reach = t.reach;
-        double[] specular = t.specular;
-        for (int i = 0; i < n; i++) {
-            // 1 where N . L > 0 (the least positive double times 2^2000 is
-            // above 1), 0 where not, NaN for a NaN N . L (see positive).
-            double d = t.dot[i];
-            reach[i] = Math.min(positive(d) * 0x1p1000 * 0x1p1000, 1);
-            specular[i] = ks * raised[i];
-        }
-        if (data[o + Lights.B] == 0) {
-            double inverseA = data[o + Lights.INVERSE_A];
-            double rf = red * inverseA;
-            double gf = green * inverseA;
-            double bf = blue * inverseA;
+        // Unattenuated, Ii fi is Ii times 1 / a, kept with the light.
+        boolean attenuated = data[o + Lights.B] != 0;
+        double inverseA = data[o + Lights.INVERSE_A];
+        double red = attenuated ? data[o + Lights.RED] : data[o + Lights.RED] * inverseA;
+        double green = attenuated ? data[o + Lights.GREEN] : data[o + Lights.GREEN] * inverseA;
+        double blue = attenuated ? data[o + Lights.BLUE] : data[o + Lights.BLUE] * inverseA;
+        addChannel(t, n, t.red, t.kdRed, first, l.ambientRed, red, attenuated, raised);
+        addChannel(t, n, t.green, t.kdGreen, first, l.ambientGreen, green, attenuated, raised);
+        addChannel(t, n, t.blue, t.kdBlue, first, l.ambientBlue, blue, attenuated, raised);
+    }
+
+    /**
+     * One channel of {@link #add}: into sum, each point's (Ii fi) times (kd
+     * cos + ks times the raised highlight) times the reach, fi the point's
+     * attenuation where {@code attenuated} (else already in the intensity);
+     * added to kd times {@code ambient} for the first light, to the sum so
+     * far for the others.
+     */
+    private void addChannel(LitPoints t, int n, double[] sum, double[] kd, boolean first, double ambient,
+            double intensity, boolean attenuated, double[] raised) {
+        double ks = lighting.ks;
+        double[] cosine = t.cosine;
+        double[] dot = t.dot;
+        double[] f = t.attenuation;
+        if (attenuated && first) {
             for (int i = 0; i < n; i++) {
-                t.red[i] += rf * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
+                sum[i] = kd[i] * ambient + intensity * f[i] * (kd[i] * cosine[i] + ks * raised[i]) * reach(dot[i]);
             }
+        } else if (attenuated) {
             for (int i = 0; i < n; i++) {
-                t.green[i] += gf * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
+                sum[i] += intensity * f[i] * (kd[i] * cosine[i] + ks * raised[i]) * reach(dot[i]);
             }
+        } else if (first) {
             for (int i = 0; i < n; i++) {
-                t.blue[i] += bf * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
+                sum[i] = kd[i] * ambient + intensity * (kd[i] * cosine[i] + ks * raised[i]) * reach(dot[i]);
             }
         } else {
-            double[] f = t.attenuation;
             for (int i = 0; i < n; i++) {
-                t.red[i] += red * f[i] * (t.kdRed[i] * t.cosine[i] + specular[i]) * reach[i];
-            }
-            for (int i = 0; i < n; i++) {
-                t.green[i] += green * f[i] * (t.kdGreen[i] * t.cosine[i] + specular[i]) * reach[i];
-            }
-            for (int i = 0; i < n; i++) {
-                t.blue[i] += blue * f[i] * (t.kdBlue[i] * t.cosine[i] + specular[i]) * reach[i];
+                sum[i] += intensity * (kd[i] * cosine[i] + ks * raised[i]) * reach(dot[i]);
             }
         }
+    }
+
+    /** 1 where N . L &gt; 0, 0 where not, NaN for a NaN N . L (see {@link #add}). */
+    private static double reach(double dot) {
+        return Math.min(positive(dot) * 0x1p1000 * 0x1p1000, 1);
     }
 }

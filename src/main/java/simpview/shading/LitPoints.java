@@ -29,20 +29,13 @@ public final class LitPoints {
     final double[] green;
     final double[] blue;
 
-    // BatchLighting's scratch, per point. For the point: E (P to the eye), 1 / |N|, 1 / |E|, V . N. For
-    // the light being added: L, N . L, |L|, 1 / |L|, cos, the highlight's
-    // base V . L (then max(0, V . R) at most 1, then its squares), its power,
-    // the attenuation, whether the light reaches the point (1 or 0) and ks
-    // times the power.
-    final double[] eyeX;
-    final double[] eyeY;
-    final double[] eyeZ;
+    // BatchLighting's scratch, per point. For the point: 1 / |N|, 1 / |E|,
+    // V . N. For the light being added: N . L, |L|, 1 / |L|, cos, the
+    // highlight's base V . L (then max(0, V . R) at most 1, then its
+    // squares), its power and the attenuation.
     final double[] inverseNormal;
     final double[] inverseEye;
     final double[] vn;
-    final double[] lightX;
-    final double[] lightY;
-    final double[] lightZ;
     final double[] dot;
     final double[] distance;
     final double[] inverseDistance;
@@ -56,8 +49,6 @@ public final class LitPoints {
      * steps are done.
      */
     final double[] lengths;
-    final double[] reach;
-    final double[] specular;
     final double[] aloneColour = new double[3];
 
     int count;
@@ -79,15 +70,9 @@ public final class LitPoints {
         red = new double[capacity];
         green = new double[capacity];
         blue = new double[capacity];
-        eyeX = new double[capacity];
-        eyeY = new double[capacity];
-        eyeZ = new double[capacity];
         inverseNormal = new double[capacity];
         inverseEye = new double[capacity];
         vn = new double[capacity];
-        lightX = new double[capacity];
-        lightY = new double[capacity];
-        lightZ = new double[capacity];
         dot = new double[capacity];
         distance = new double[capacity];
         inverseDistance = new double[capacity];
@@ -96,8 +81,6 @@ public final class LitPoints {
         raised = new double[capacity];
         attenuation = new double[capacity];
         lengths = new double[capacity];
-        reach = new double[capacity];
-        specular = new double[capacity];
     }
 
     public int capacity() {
