@@ -113,10 +113,13 @@ public final class FragmentStage implements FragmentSink {
      * beyond into 512-bit vectors, unrolled. Three lights took 10.4 ns a
      * point in batches of 64, 8.1 in batches of 128 and 7.7 in batches of 256
      * (one process each, this host, session 15); the runs of the course's
-     * pages averaged 33-38 pixels. 256 points' arrays would not fit the
-     * first-level cache beside the rest (session 10: slower on A3's pages).
+     * pages averaged 33-38 pixels. Batches of 256 cost page-g 2-5 % while
+     * the lighting had 31 arrays a batch (session 19); with its 23 (session
+     * 21), A4 page-f2, page-e and page-f1 took 0.90-0.96 of their time
+     * against batches of 128, and the other pages measured the same within
+     * their copies (docs/performance.md).
      */
-    static final int WAITING_BATCH = 128;
+    static final int WAITING_BATCH = 256;
     /**
      * Pieces of a batch at the end shorter than this are resolved pixel by
      * pixel ({@link #addSmallPiece}), not by the loops over the batch that C2
