@@ -29,10 +29,16 @@ import org.openjdk.jmh.annotations.TearDown;
  * and profiled apart. One JMH benchmark class of each is set up as JMH would
  * ({@code @Param} fields at their first value or as given, the trial and
  * iteration set-ups once), warmed, then the builds take turns, the order
- * reversed every round: in its turn a build's benchmark method is called
- * once untimed, then {@link #TIMED_IN_A_TURN} times timed, the invocation
- * set-ups run untimed before each call. It prints each build's median, 10th
- * percentile and best call, and the medians' ratios to the first build's.
+ * rotated by one every round, so that each build takes each place in turn
+ * and, of three builds or more, none follows itself: in its turn a build's
+ * benchmark method is called once untimed, then {@link #TIMED_IN_A_TURN}
+ * times timed, the invocation set-ups run untimed before each call. It
+ * prints each build's median, 10th percentile and best call, and the
+ * medians' ratios to the first build's. (With the order reversed every
+ * round instead, the first and the last build had every other turn right
+ * after one of their own, and the builds between them never: on A4 page-g
+ * the second of three ran 2-8 % slower than the others, copies of one build
+ * alike; docs/performance.md, session 21.)
  *
  * <p>The JIT compiles each build once per process, and how well it does
  * varies from process to process by several per cent with the same code; so
@@ -138,7 +144,7 @@ public final class Interleaved {
         long until = System.nanoTime() + (long) (seconds * 1e9);
         while (System.nanoTime() < until) {
             for (int j = 0; j < builds.size(); j++) {
-                int i = (rounds / TIMED_IN_A_TURN) % 2 == 0 ? j : builds.size() - 1 - j;
+                int i = (j + rounds / TIMED_IN_A_TURN) % builds.size();
                 Build b = builds.get(i);
                 for (int call = 0; call <= TIMED_IN_A_TURN; call++) {
                     for (Method m : b.perInvocation()) {
