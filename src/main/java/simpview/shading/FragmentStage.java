@@ -75,6 +75,21 @@ public final class FragmentStage implements FragmentSink {
      * time: page-f2 0.97, page-e 0.99, page-h 1.03 (its copy 1.03).
      */
     static final int LIGHTS_TO_KEEP_SHORT_SPANS = 2;
+    /**
+     * With fewer lights than {@link #LIGHTS_TO_KEEP_SHORT_SPANS}, a stage
+     * keeps its short spans too (as with more) for a picture after one whose
+     * short spans that passed had this many pixels that passed each or more
+     * on average: a span to keep and a run to find then cost less than the
+     * points. How pixels wait never changes what they become, so the choice
+     * is made from the stage's last picture, each picture's short spans
+     * waiting one way. Against points for every one-light short span (session
+     * 21, one thread): every one kept, A4 page-f1 (5.7 pixels a passing short
+     * span) 0.950, but page-g (2.2) 1.105 and page-d (2.7) 1.053; chosen so,
+     * on one and two threads, page-f1 0.966 and 0.981, page-a3 0.947 and
+     * 0.943, page-b3 0.944 and 0.962, page-g, page-d and page-c3 within
+     * their copies.
+     */
+    static final int PIXELS_TO_KEEP_SHORT_SPANS = 4;
     /** Numbers kept per phong span: q0, dq, and the phong channels' starts and slopes. */
     private static final int SPAN_NUMBERS = 2 + 2 * FragmentLayout.PHONG_CHANNELS;
     /**
@@ -179,6 +194,12 @@ public final class FragmentStage implements FragmentSink {
     // of them or more; and how many the primitive at hand had so far.
     private boolean shortPixelsWait = true;
     private int shortPixels;
+    // Whether this picture's one-light short spans are kept as long ones
+    // (PIXELS_TO_KEEP_SHORT_SPANS), and this picture's short spans that
+    // waited and passed, with their pixels that passed, for the next one's.
+    private boolean keepShortSpans;
+    private int waitedShortSpans;
+    private int waitedShortPixels;
     private PointShader shader;
     private Fog fog = Fog.NONE;
     // The rows written: all of them, or one band's.
@@ -249,7 +270,9 @@ public final class FragmentStage implements FragmentSink {
     /**
      * Ready for a new picture on {@code zbuffer} (this stage's size), writing
      * to {@code panel}: what the last picture set (rows, look, waits, kept
-     * spans) is dropped, and the stage is as a new one made for them.
+     * spans) is dropped, and the stage is as a new one made for them, but
+     * for how its one-light short spans wait ({@link #PIXELS_TO_KEEP_SHORT_SPANS}),
+     * which draws the same.
      */
     void startPicture(ZBuffer newZbuffer, Drawable newPanel) {
         if (newZbuffer.width() != width || newZbuffer.height() != height || newPanel.width() != width
@@ -265,6 +288,10 @@ public final class FragmentStage implements FragmentSink {
         pendingCount = 0;
         shortPixelsWait = true;
         shortPixels = 0;
+        // The one setting kept from the last picture: how short spans wait, not what they draw.
+        keepShortSpans = waitedShortSpans > 0 && waitedShortPixels >= PIXELS_TO_KEEP_SHORT_SPANS * waitedShortSpans;
+        waitedShortSpans = 0;
+        waitedShortPixels = 0;
         shader = null;
         fog = Fog.NONE;
         waiting = null;
@@ -295,7 +322,8 @@ public final class FragmentStage implements FragmentSink {
     /**
      * From now on a phong pixel that passes the depth test is not shaded at
      * once: it waits, in {@code waiting} (the panel's) or, of a short span
-     * lit by fewer than {@link #LIGHTS_TO_KEEP_SHORT_SPANS} lights, as a
+     * lit by fewer than {@link #LIGHTS_TO_KEEP_SHORT_SPANS} lights (unless
+     * the stage keeps those, {@link #PIXELS_TO_KEEP_SHORT_SPANS}), as a
      * point of its own ({@link WaitingPoints}), for {@link #shadeWaiting} at
      * the picture's end, which shades each pixel the last span or point that
      * won it still holds: one whose depth is still the z it gave it. A later
@@ -672,6 +700,7 @@ public final class FragmentStage implements FragmentSink {
         double dz = dv[Z];
         int row = y * width;
         int span = WaitingPixels.NONE;
+        int passed = 0;
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -683,8 +712,14 @@ public final class FragmentStage implements FragmentSink {
                 span = keepSpan(y, from, q0, dq, v0, dv);
             }
             waiting.wait(x, y, span);
+            passed++;
         }
-        return span != WaitingPixels.NONE;
+        if (span == WaitingPixels.NONE) {
+            return false;
+        }
+        waitedShortSpans++;
+        waitedShortPixels += passed;
+        return true;
     }
 
     /**
@@ -717,6 +752,7 @@ public final class FragmentStage implements FragmentSink {
         double nz0 = v0[NZ];
         double dnz = dv[NZ];
         WaitingPoints w = waitingPoints;
+        int before = w.count;
         int row = y * width;
         int look = -1; // found at the first pixel that passes
         int owner = Provenance.BACKGROUND;
@@ -749,6 +785,8 @@ public final class FragmentStage implements FragmentSink {
         if (look < 0) {
             return false;
         }
+        waitedShortSpans++;
+        waitedShortPixels += w.count - before;
         wroteOver(y); // a long span's pixel that waits here may be taken
         return true;
     }
@@ -975,7 +1013,7 @@ public final class FragmentStage implements FragmentSink {
             if (!isShort) {
                 return waitingSpan(y, from, start, end, q0, dq, v0, dv);
             }
-            if (shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS) {
+            if (keepShortSpans || shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS) {
                 return keptShortSpan(y, from, start, end, q0, dq, v0, dv);
             }
             return waitingShortSpan(y, from, start, end, q0, dq, v0, dv);

@@ -395,6 +395,77 @@ class FragmentStageTest {
         assertTrue((atEnd.image().getRGB(14, 20) & 0xFFFFFF) != 0, "lit");
     }
 
+    /**
+     * A stage whose last picture's one-light short spans passed many pixels
+     * each keeps this picture's as spans (marked as waiting, not points),
+     * and draws what a new stage, whose short spans wait as points, draws:
+     * short and long spans over and under one another, with and without fog.
+     */
+    @Property(tries = 60, seed = "1205021")
+    void oneLightShortSpansKeptAfterAPictureOfLongOnesDrawWhatPointsDraw(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = scene(random, 1);
+        PointShader frozen = state.frozenShader().get();
+        assertEquals(1, frozen.lightCount());
+        Stage points = Stage.deferring(state);
+        WaitingPixels waits = new WaitingPixels(SIZE, SIZE);
+        Stage kept = keepingShortSpans(state, frozen, waits);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] q = randomSpan(random, v0, dv);
+        for (Stage stage : new Stage[] {points, kept}) {
+            stage.fragments().phong(frozen, state.fog());
+            stage.fragments().span(100, 40, 45, q[0], q[1], v0, dv);
+            stage.fragments().primitiveDone();
+        }
+        assertTrue(waits.at(44, 100) != WaitingPixels.NONE, "the short span waits as a span, not as points");
+        int spans = 1 + random.nextInt(50);
+        for (int s = 0; s < spans; s++) {
+            int y = 10 + random.nextInt(4);
+            int from = random.nextInt(SIZE + 20) - 10;
+            int length = random.nextBoolean() ? 1 + random.nextInt(FragmentStage.SHORT_SPAN - 1) : random.nextInt(SIZE);
+            q = randomSpan(random, v0, dv);
+            for (Stage stage : new Stage[] {points, kept}) {
+                stage.fragments().phong(frozen, state.fog());
+                stage.provenance().begin(s);
+                stage.fragments().span(y, from, from + length, q[0], q[1], v0, dv);
+                stage.fragments().primitiveDone();
+            }
+        }
+        points.fragments().shadeWaiting();
+        kept.fragments().shadeWaiting();
+        assertSameDrawing(points, kept);
+    }
+
+    /**
+     * A deferring stage that has drawn a picture of one-light short spans of
+     * ten pixels, all passing, and now starts a new picture on a surface of
+     * its own, its pixels waiting in {@code waits}: its short spans are kept.
+     */
+    private static Stage keepingShortSpans(LitState state, PointShader frozen, WaitingPixels waits) {
+        Stage first = Stage.deferring(state);
+        FragmentStage fragments = first.fragments();
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        v0[FragmentLayout.Z] = -5;
+        v0[FragmentLayout.NZ] = 1;
+        v0[FragmentLayout.R] = 1;
+        fragments.phong(frozen, state.fog());
+        for (int y = 0; y < 8; y++) {
+            fragments.span(y, 20, 30, 1, 0, v0, dv);
+            fragments.primitiveDone();
+        }
+        fragments.shadeWaiting();
+        BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        ZBuffer zbuffer = new ZBuffer(SIZE, SIZE);
+        zbuffer.reset(-200);
+        Provenance provenance = new Provenance(SIZE, SIZE);
+        fragments.startPicture(zbuffer, new ProvenanceDrawable(provenance, new ImageDrawable(image)));
+        fragments.shadeLater(waits, provenance);
+        fragments.clearWaits();
+        return new Stage(fragments, image, zbuffer, provenance);
+    }
+
     /** Forwards the spans, but not the questions: every triangle is walked and every span given. */
     private static class Unasked implements FragmentSink {
         final FragmentSink sink;
