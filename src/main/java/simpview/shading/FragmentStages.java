@@ -16,7 +16,9 @@ import simpview.surface.ZBuffer;
  * and seventeen new stages.
  *
  * <p>Each stage handed out is as a new one ({@link FragmentStage#startPicture}),
- * so what a picture draws does not depend on what the stages drew before.
+ * so what a picture draws does not depend on what the stages drew before
+ * (only how a stage's one-light short spans wait does, which draws the
+ * same: {@link FragmentStage#PIXELS_TO_KEEP_SHORT_SPANS}).
  * Used by the thread that reads the picture's scene, never by two pictures
  * at once: the threads hand what they keep to one picture at a time.
  */
