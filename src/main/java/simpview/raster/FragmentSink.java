@@ -21,6 +21,19 @@ public interface FragmentSink {
     void pixel(int x, int y, double q, double[] v);
 
     /**
+     * The polygon whose spans come next, until {@link #primitiveDone}: its n
+     * corners, the first at v[at], each {@code stride} numbers on, as
+     * {@link FragmentLayout} lays them out. The array is read before
+     * primitiveDone returns, never kept after. A sink may take a guess from
+     * it about the spans to come, for speed (FragmentStage groups the pixels
+     * of faces no light reaches), never anything that changes what they draw.
+     * The filled rasterizer calls it before each polygon's spans; the default
+     * does nothing.
+     */
+    default void polygon(double[] v, int at, int n, int stride) {
+    }
+
+    /**
      * The primitive whose spans came since the last call is done: a sink
      * may write its pixels together then ({@code FragmentStage} does, for
      * short phong spans), and must have written them all when this returns.

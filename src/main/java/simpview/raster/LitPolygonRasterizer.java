@@ -63,6 +63,7 @@ public final class LitPolygonRasterizer {
         }
         int stride = FragmentLayout.stride(channels);
         int read = Math.max(1, Math.min(channels, sink.channelsRead(channels)));
+        sink.polygon(v, at, n, stride);
         for (int k = 1; k + 1 < n; k++) {
             triangle(v, at, at + k * stride, at + (k + 1) * stride, read, width, height, sink);
         }

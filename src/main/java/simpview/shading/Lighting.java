@@ -33,6 +33,13 @@ public final class Lighting {
     /** Squared lengths inside [LOW, HIGH] are used as they are; others are rescaled first. */
     static final double LOW = 1e-150;
     static final double HIGH = 1e150;
+    /**
+     * How far behind the surface {@link #unlitAt} wants each light: the
+     * cosine of the angle between N and L below minus this. On a flat face
+     * N . L has one sign all over; on a curved one it changes sign near where
+     * the light grazes it, which the margin keeps out of the guess.
+     */
+    static final double PLAINLY_BEHIND = 0.1;
     /** Integer exponents up to this are raised by repeated squaring (within 2e-13 of Math.pow). */
     static final int MAX_SQUARING_EXPONENT = 1024;
 
@@ -154,6 +161,35 @@ public final class Lighting {
      */
     public void shade(LitPoints points) {
         batch.shade(points);
+    }
+
+    /**
+     * A guess, for lighting points in batches: true when every light is
+     * plainly behind the surface at point P with normal N (any length), so
+     * that it reaches neither P nor, most likely, the points around it on one
+     * face: N . L below -{@value #PLAINLY_BEHIND} |N| |L| (L = light - P, the
+     * cosine of the angle between N and L below -{@value #PLAINLY_BEHIND}).
+     * False with no light, and for any NaN on the way. Nothing drawn depends
+     * on the answer ({@link LitPoints#unlit}).
+     */
+    public boolean unlitAt(double px, double py, double pz, double nx, double ny, double nz) {
+        if (lightCount == 0) {
+            return false;
+        }
+        double[] data = lights.data();
+        double n2 = nx * nx + ny * ny + nz * nz;
+        int end = lightCount * Lights.STRIDE;
+        for (int o = 0; o < end; o += Lights.STRIDE) {
+            double lx = data[o + Lights.X] - px;
+            double ly = data[o + Lights.Y] - py;
+            double lz = data[o + Lights.Z] - pz;
+            double nl = nx * lx + ny * ly + nz * lz;
+            // nl < -c |N| |L|, squared: no square root.
+            if (!(nl < 0 && nl * nl > PLAINLY_BEHIND * PLAINLY_BEHIND * n2 * (lx * lx + ly * ly + lz * lz))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

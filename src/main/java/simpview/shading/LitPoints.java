@@ -52,6 +52,14 @@ public final class LitPoints {
     final double[] aloneColour = new double[3];
 
     int count;
+    /**
+     * True when whoever filled the batch expects no light to reach any of its
+     * points (FragmentStage's guess, from the polygon they lie on):
+     * BatchLighting then only makes sure of it, point by point, and lights
+     * alone each point a light does reach. A guess either way: the colours
+     * are the same bits.
+     */
+    boolean unlit;
 
     /** An empty batch that holds up to {@code capacity} points. */
     public LitPoints(int capacity) {

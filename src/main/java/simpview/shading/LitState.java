@@ -192,6 +192,11 @@ public final class LitState implements PointShader {
         return lighting.usesPoint();
     }
 
+    @Override
+    public boolean unlitAt(double px, double py, double pz, double nx, double ny, double nz) {
+        return lighting.unlitAt(px, py, pz, nx, ny, nz);
+    }
+
     /**
      * What lights a point now, as numbers, for a program that lights the
      * same scene elsewhere (the llvmpipe benchmark): ambient r, g, b, ks, p,
@@ -273,6 +278,11 @@ public final class LitState implements PointShader {
                 @Override
                 public int lightCount() {
                     return own.lightCount();
+                }
+
+                @Override
+                public boolean unlitAt(double px, double py, double pz, double nx, double ny, double nz) {
+                    return own.unlitAt(px, py, pz, nx, ny, nz);
                 }
             };
         };

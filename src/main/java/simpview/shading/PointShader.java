@@ -22,6 +22,16 @@ public interface PointShader {
      */
     boolean usesPoint();
 
+    /**
+     * A guess: true when no light likely reaches point P with normal N, nor
+     * the points of its face around it (see {@link Lighting#unlitAt}). A
+     * fragment stage groups such points in batches of their own; nothing drawn
+     * depends on the answer. The default never guesses so.
+     */
+    default boolean unlitAt(double px, double py, double pz, double nx, double ny, double nz) {
+        return false;
+    }
+
     /** How many lights a point adds up (0: the ambient term alone, as {@link #usesPoint} false). */
     default int lightCount() {
         return usesPoint() ? 1 : 0;

@@ -14,7 +14,10 @@ import org.junit.jupiter.api.Test;
  * ordinary scenes, and on batches where any number may be one of the edge
  * cases Lighting's javadoc lists (zero, tiny and huge normals and distances,
  * the light at the lit point, the eye at the lit point, infinities, NaN,
- * huge intensities, zero attenuation, p = 0, integer and fractional p).
+ * huge intensities, zero attenuation, p = 0, integer and fractional p). Each
+ * batch is lit twice: as usual, and as a batch guessed unlit
+ * ({@link LitPoints#unlit}), whatever its lights do: the guess must never
+ * show.
  */
 class BatchLightingTest {
 
@@ -158,7 +161,8 @@ class BatchLightingTest {
     /**
      * The same once the JIT has compiled the batch's loops to packed
      * operations: a full batch of ordinary points with a few awkward ones
-     * among them, lit many thousands of times, checked all along.
+     * among them, lit many thousands of times, guessed unlit every other
+     * time, checked all along.
      */
     @Test
     void compiledHotTheBatchStillEqualsEachPointAlone() {
@@ -177,6 +181,7 @@ class BatchLightingTest {
             if (round % 1000 == 0) {
                 assertEachPointAsAlone(lighting, points);
             } else {
+                points.unlit = round % 2 == 1; // both ways compiled hot
                 lighting.shade(points);
             }
         }
@@ -211,18 +216,77 @@ class BatchLightingTest {
         assertThrows(IllegalArgumentException.class, () -> new LitPoints(0));
     }
 
-    /** Lights the batch, then checks each point's colour against the point lit alone, to the bit. */
+    /**
+     * Faces turned away from every light, as a cube's are: guessed unlit,
+     * each point's own normal (a few ulps apart from the face's, or a hair
+     * over the edge to the light, or tiny) and position, among points the
+     * lights do reach, and a batch of them all alone.
+     */
+    @Test
+    void aBatchGuessedUnlitGivesEachPointItsBitsWhereverTheLightsAre() {
+        Random random = new Random(1205022);
+        for (int trial = 0; trial < 200; trial++) {
+            Lights lights = new Lights();
+            int lightCount = 1 + random.nextInt(3);
+            for (int i = 0; i < lightCount; i++) {
+                lights.add(number(random, 20, 0), number(random, 20, 0), -30 - random.nextDouble() * 10, 1, 0.8, 0.6,
+                        1, random.nextBoolean() ? 0 : 0.02);
+            }
+            Lighting lighting = new Lighting(lights);
+            lighting.prepare(ambient(random, false, 0), ambient(random, false, 0), ambient(random, false, 0),
+                    random.nextDouble(), EXPONENTS[random.nextInt(EXPONENTS.length)], lightCount, random.nextBoolean());
+            LitPoints points = new LitPoints(64);
+            int count = 1 + random.nextInt(64);
+            boolean allAway = random.nextBoolean();
+            for (int i = 0; i < count; i++) {
+                double nz = 1 + Math.ulp(1.0) * random.nextInt(5);
+                int kind = allAway ? 0 : random.nextInt(4);
+                double nx = kind == 1 ? 3 : number(random, 1e-3, 0); // kind 1: turned to the side
+                if (kind == 2) {
+                    nz = -nz; // turned to the lights
+                } else if (kind == 3) {
+                    nz *= 1e-160; // tiny: Lighting rescales it
+                    nx *= 1e-160;
+                }
+                points.add(number(random, 5, 0), number(random, 5, 0), -5 - random.nextDouble() * 10, nx,
+                        number(random, 1e-3, 0) * (kind == 3 ? 1e-160 : 1), nz, kd(random, false, 0),
+                        kd(random, false, 0), kd(random, false, 0));
+            }
+            assertEachPointAsAlone(lighting, points);
+        }
+        // A huge N whose N . L is 0 as given, and above 0 as Lighting rescales
+        // it (by its largest part): lit, though the batch's own N . L says not.
+        Lights one = new Lights();
+        one.add(0, 0, 0, 1, 1, 1, 1, 0);
+        Lighting lighting = new Lighting(one);
+        lighting.prepare(0.1, 0.1, 0.1, 0.5, 8, 1, true);
+        LitPoints points = new LitPoints(2);
+        points.add(-6.425485839826166, 8.117399161206349, -8.260792656744275, 8.957307212181264e199,
+                -2.10353007153653e199, -9.034271527463752e199, 0.5, 0.5, 0.5);
+        points.add(-1, 2, -10, 0, 0, -1, 0.5, 0.5, 0.5); // turned away: unlit indeed
+        assertEachPointAsAlone(lighting, points);
+    }
+
+    /**
+     * Lights the batch, then checks each point's colour against the point lit
+     * alone, to the bit; then the same with the batch guessed unlit.
+     */
     private static void assertEachPointAsAlone(Lighting lighting, LitPoints points) {
-        lighting.shade(points);
-        double[] alone = new double[3];
-        for (int i = 0; i < points.count(); i++) {
-            lighting.shade(points.px[i], points.py[i], points.pz[i], points.nx[i], points.ny[i], points.nz[i],
-                    points.kdRed[i], points.kdGreen[i], points.kdBlue[i], alone, 0);
-            double[] together = {points.red(i), points.green(i), points.blue(i)};
-            for (int c = 0; c < 3; c++) {
-                assertEquals(Double.doubleToRawLongBits(alone[c]), Double.doubleToRawLongBits(together[c]),
-                        "point " + i + " channel " + c + ": alone " + alone[c] + ", in the batch " + together[c]);
+        for (boolean unlit : new boolean[] {false, true}) {
+            points.unlit = unlit;
+            lighting.shade(points);
+            double[] alone = new double[3];
+            for (int i = 0; i < points.count(); i++) {
+                lighting.shade(points.px[i], points.py[i], points.pz[i], points.nx[i], points.ny[i], points.nz[i],
+                        points.kdRed[i], points.kdGreen[i], points.kdBlue[i], alone, 0);
+                double[] together = {points.red(i), points.green(i), points.blue(i)};
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(Double.doubleToRawLongBits(alone[c]), Double.doubleToRawLongBits(together[c]),
+                            "point " + i + " channel " + c + (unlit ? ", guessed unlit" : "") + ": alone " + alone[c]
+                                    + ", in the batch " + together[c]);
+                }
             }
         }
+        points.unlit = false;
     }
 }

@@ -620,6 +620,123 @@ class FragmentStageTest {
         assertTrue(noneNearer > 200, noneNearer + " rows with no pixel nearer");
     }
 
+    /**
+     * Polygons a stage guesses unlit (told of each, {@link FragmentStage#polygon})
+     * draw what they draw untold: faces turned from every light, to them,
+     * edge on, and curved ones whose corners disagree (N tilted across them),
+     * shaded at the end and at once, among coloured ones. Fails unless some
+     * batches were lit as guessed unlit.
+     */
+    @Test
+    void polygonsGuessedUnlitDrawWhatTheyDrawUntold() {
+        Random random = new Random(1205023);
+        int unlitBatches = 0;
+        for (int trial = 0; trial < 40; trial++) {
+            LitState state = scene(random, 0);
+            int lights = 1 + random.nextInt(2);
+            for (int i = 0; i < lights; i++) {
+                state.addLight(random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, -30 + random.nextInt(2) * 28,
+                        0.9, 0.7, 0.5, 1, random.nextBoolean() ? 0 : 0.02);
+            }
+            boolean atEnd = random.nextBoolean();
+            Stage told = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            Stage untold = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            BatchCount shader = new BatchCount(state.frozenShader().get());
+            LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
+            LitPolygonRasterizer untoldRasterizer = new LitPolygonRasterizer();
+            FragmentSink untoldSink = new Unasked(untold.fragments()); // not told of polygons
+            int polygons = 10 + random.nextInt(60);
+            for (int p = 0; p < polygons; p++) {
+                boolean phong = random.nextInt(5) > 0;
+                for (Stage stage : new Stage[] {told, untold}) {
+                    if (phong) {
+                        stage.fragments().phong(shader, state.fog());
+                    } else {
+                        stage.fragments().colours(state.fog());
+                    }
+                    stage.provenance().begin(p);
+                }
+                int n = 3 + random.nextInt(2);
+                double size = random.nextInt(4) == 0 ? 60 : 3 + random.nextDouble() * 20;
+                double[] v = polygon(random, n, 20 + random.nextDouble() * 110, 20 + random.nextDouble() * 110, size,
+                        -8 + random.nextDouble());
+                turn(v, n, random);
+                int channels = phong ? CHANNELS : FragmentLayout.COLOUR_CHANNELS;
+                if (!phong) {
+                    v = colourLayout(v, n);
+                }
+                rasterizer.fill(v, n, channels, SIZE, SIZE, told.fragments());
+                untoldRasterizer.fill(v, n, channels, SIZE, SIZE, untoldSink);
+            }
+            if (atEnd) {
+                told.fragments().shadeWaiting();
+                untold.fragments().shadeWaiting();
+            }
+            assertSameDrawing(untold, told);
+            unlitBatches += shader.unlit;
+        }
+        assertTrue(unlitBatches > 20, unlitBatches + " batches lit as guessed unlit");
+    }
+
+    /**
+     * The polygon's normals (of +z, as {@link #polygon} makes them) turned:
+     * to -z, or edge on, or each corner its own way, or left.
+     */
+    private static void turn(double[] v, int n, Random random) {
+        int stride = FragmentLayout.stride(CHANNELS);
+        int how = random.nextInt(4);
+        for (int k = 0; k < n; k++) {
+            int c = k * stride + FragmentLayout.CHANNEL;
+            double q = v[k * stride + FragmentLayout.Q];
+            if (how == 0) {
+                v[c + FragmentLayout.NZ] = -v[c + FragmentLayout.NZ];
+            } else if (how == 1) {
+                v[c + FragmentLayout.NX] = (random.nextBoolean() ? 1e-3 : -1e-3) * q;
+                v[c + FragmentLayout.NY] = q;
+                v[c + FragmentLayout.NZ] = 0;
+            } else if (how == 2) {
+                v[c + FragmentLayout.NZ] = (random.nextDouble() * 2 - 1) * q;
+            }
+        }
+    }
+
+    /** A shader that counts the batches it lights as guessed unlit. */
+    private static final class BatchCount implements PointShader {
+        private final PointShader shader;
+        int unlit;
+
+        BatchCount(PointShader shader) {
+            this.shader = shader;
+        }
+
+        @Override
+        public void shade(double px, double py, double pz, double nx, double ny, double nz, double kr, double kg,
+                double kb, double[] out) {
+            shader.shade(px, py, pz, nx, ny, nz, kr, kg, kb, out);
+        }
+
+        @Override
+        public void shade(LitPoints points) {
+            unlit += points.unlit ? 1 : 0;
+            shader.shade(points);
+        }
+
+        @Override
+        public boolean usesPoint() {
+            return shader.usesPoint();
+        }
+
+        @Override
+        public int lightCount() {
+            return shader.lightCount();
+        }
+
+        @Override
+        public boolean unlitAt(double px, double py, double pz, double nx, double ny, double nz) {
+            return shader.unlitAt(px, py, pz, nx, ny, nz);
+        }
+    }
+
     /** The same polygon with only the colour channels (z, kd). */
     private static double[] colourLayout(double[] phong, int n) {
         int from = FragmentLayout.stride(CHANNELS);

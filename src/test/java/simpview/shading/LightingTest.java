@@ -275,4 +275,36 @@ class LightingTest {
             assertEquals(1, Lighting.bySquaring(1, e));
         }
     }
+
+    /**
+     * The guess of which points no light reaches: each light at an angle of
+     * more than about 95.7 degrees from N (a cosine below -0.1), worked out
+     * by hand; a grazing light, a light in front, no light or a NaN make it
+     * false; N's length does not count.
+     */
+    @Test
+    void aPointIsGuessedUnlitOnlyWhenEveryLightIsPlainlyBehindIt() {
+        Lights lights = new Lights();
+        lights.add(0, 0, -20, 1, 1, 1, 1, 0); // 10 behind the point at z -10, whose N is +z
+        lights.add(30, 0, -10 - 30 * Math.tan(Math.toRadians(10)), 1, 1, 1, 1, 0); // 10 degrees below its plane
+        Lighting lighting = new Lighting(lights);
+        lighting.prepare(0.1, 0.1, 0.1, 0.5, 8, 0, true);
+        assertTrue(!lighting.unlitAt(0, 0, -10, 0, 0, 1), "no light");
+        lighting.prepare(0.1, 0.1, 0.1, 0.5, 8, 1, true);
+        assertTrue(lighting.unlitAt(0, 0, -10, 0, 0, 1), "straight behind: cosine -1");
+        assertTrue(lighting.unlitAt(0, 0, -10, 0, 0, 1e-9), "a short N");
+        assertTrue(lighting.unlitAt(0, 0, -10, 0, 0, 1e9), "a long N");
+        assertTrue(!lighting.unlitAt(0, 0, -10, 0, 0, -1), "straight in front");
+        assertTrue(!lighting.unlitAt(0, 0, -10, 0, 0, 0), "a zero N");
+        assertTrue(!lighting.unlitAt(0, 0, -10, Double.NaN, 0, 1), "a NaN N");
+        assertTrue(!lighting.unlitAt(0, 0, -20, 0, 0, 1), "at the light");
+        lighting.prepare(0.1, 0.1, 0.1, 0.5, 8, 2, true);
+        // The second light's cosine from +z is -sin 10 degrees, -0.17: behind, plainly.
+        assertTrue(lighting.unlitAt(0, 0, -10, 0, 0, 1), "both behind");
+        // N turned 5 degrees towards the second light (to +x): its cosine is -sin 5 degrees, -0.087, a graze.
+        double t = Math.toRadians(5);
+        assertTrue(!lighting.unlitAt(0, 0, -10, Math.sin(t), 0, Math.cos(t)), "the second grazing");
+        // Turned 5 degrees away from it: -sin 15 degrees, -0.26.
+        assertTrue(lighting.unlitAt(0, 0, -10, -Math.sin(t), 0, Math.cos(t)), "both behind, turned");
+    }
 }
