@@ -18,13 +18,16 @@ package simpview.shading;
  * is lit again alone, by Lighting's own scalar code, so every edge case
  * keeps the one implementation it has.
  *
- * <p>Why the steps are small: C2 packs a loop only after unrolling it, and
- * unrolls it (on JDK 17) only while its body is under {@code
- * LoopUnrollLimit}, 60 nodes by default, where each array read or written
- * costs several. A loop over ten arrays stays one point at a time. So a
- * step reads and writes at most seven arrays, storing a value and reading
- * it back in the next step where it must (a stored double is the same
- * bits). Each loop costs a batch about 0.2 ns a point on the machine of
+ * <p>Why the steps are small: C2 (JDK 17) packs some loops and not others,
+ * and not by how many arrays they touch alone. In a scratch program
+ * (session 22) a loop of products and sums reading ten arrays and writing
+ * one was packed (0.38 ns a point), while one with two square roots, a
+ * division and four arrays written, over nine in all, was not (4.5 ns);
+ * within this class, aim's four loops in two and three of a light's in one
+ * were not either (7.0 and 5.5 ns a point for a whole light, against 4.0).
+ * So a step reads and writes at most seven arrays, storing a value and
+ * reading it back in the next step where it must (a stored double is the
+ * same bits). Each loop costs a batch about 0.2 ns a point on the machine of
  * docs/performance.md whatever its arithmetic, so what a step can work out
  * again from the points is not stored: L = light - P is made in each of the
  * three steps that read it, E (-P or (0, 0, 1)) is never stored, and the
