@@ -87,17 +87,9 @@ final class BatchLighting {
         double[] green = t.green;
         double[] blue = t.blue;
         if (l.lightCount == 0) {
-            // The ambient term alone, clamped (positive, then min); only a NaN,
-            // which the clamp keeps (or makes, of -inf), is then clamped by
-            // Lighting's rule.
-            for (int i = 0; i < n; i++) {
-                double r = t.kdRed[i] * ar;
-                double g = t.kdGreen[i] * ag;
-                double b = t.kdBlue[i] * ab;
-                red[i] = Math.min(positive(r), 1);
-                green[i] = Math.min(positive(g), 1);
-                blue[i] = Math.min(positive(b), 1);
-            }
+            // The ambient term alone, clamped; only a NaN, which the clamp
+            // keeps (or makes, of -inf), is then clamped by Lighting's rule.
+            ambientTerm(t, n);
             for (int i = 0; i < n; i++) {
                 double sum = red[i] + green[i] + blue[i];
                 if (sum != sum) {
@@ -126,11 +118,38 @@ final class BatchLighting {
             green[i] = Math.min(positive(g), 1);
             blue[i] = Math.min(positive(b), 1);
         }
+        // Lit alone: a point with a length Lighting rescales (N, E or some L),
+        // or with a NaN sum (a term with no value, which Lighting adds as 0,
+        // terms that cancelled, or a sum of -inf).
+        shadeUnusualAlone(t, n);
+    }
+
+    /** Each point's kd times Ia, clamped (positive, then min): as Lighting.clamp, but a NaN stays NaN, and -inf becomes NaN. */
+    private void ambientTerm(LitPoints t, int n) {
+        Lighting l = lighting;
+        double ar = l.ambientRed;
+        double ag = l.ambientGreen;
+        double ab = l.ambientBlue;
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
         for (int i = 0; i < n; i++) {
-            // Lit alone: a point with a length Lighting rescales (N, E or some
-            // L), or with a NaN sum (a term with no value, which Lighting adds
-            // as 0, terms that cancelled, or a sum of -inf); what the steps
-            // made of it is replaced.
+            red[i] = Math.min(positive(t.kdRed[i] * ar), 1);
+            green[i] = Math.min(positive(t.kdGreen[i] * ag), 1);
+            blue[i] = Math.min(positive(t.kdBlue[i] * ab), 1);
+        }
+    }
+
+    /**
+     * Each point whose length test failed (t.lengths infinite or NaN) or
+     * whose colour is NaN lit again by Lighting alone, replacing what the
+     * steps made of it.
+     */
+    private void shadeUnusualAlone(LitPoints t, int n) {
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
+        for (int i = 0; i < n; i++) {
             double sum = red[i] + green[i] + blue[i];
             if (!(t.lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
                 shadeAlone(t, i);
@@ -182,23 +201,8 @@ final class BatchLighting {
                 lengths[i] += positive(dot) * 0x1p1000 * 0x1p1000 * 0x1p1000;
             }
         }
-        double ar = l.ambientRed;
-        double ag = l.ambientGreen;
-        double ab = l.ambientBlue;
-        double[] red = t.red;
-        double[] green = t.green;
-        double[] blue = t.blue;
-        for (int i = 0; i < n; i++) {
-            red[i] = Math.min(positive(t.kdRed[i] * ar), 1);
-            green[i] = Math.min(positive(t.kdGreen[i] * ag), 1);
-            blue[i] = Math.min(positive(t.kdBlue[i] * ab), 1);
-        }
-        for (int i = 0; i < n; i++) {
-            double sum = red[i] + green[i] + blue[i];
-            if (!(lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
-                shadeAlone(t, i);
-            }
-        }
+        ambientTerm(t, n);
+        shadeUnusualAlone(t, n);
     }
 
     /** Point i lit by Lighting alone, its colour replacing what the steps made of it. */
