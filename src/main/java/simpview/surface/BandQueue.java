@@ -47,6 +47,18 @@ public final class BandQueue {
     /** How long a thread waiting for a change spins before it parks ({@link #awaitChange}). */
     private static final long SPIN_NANOS = 50_000;
 
+    /**
+     * How long the thread that hands in the batches spins in {@link #finish},
+     * waiting for a picture's last bands, before it parks, when each drawing
+     * thread has a processor of its own (else {@link #SPIN_NANOS}: a
+     * spinning thread would take a core a drawer needs). The last bands take
+     * tenths of a millisecond, and a thread parked after SPIN_NANOS took
+     * 30-50 us to wake, added to every picture: on A4 page-f1 on two
+     * threads, finish returned 29-50 us after the last band was drawn, and
+     * 9 us spinning on (session 22).
+     */
+    private static final long FINISH_SPIN_NANOS = 2_000_000;
+
     /** What {@link #claim} returns when nothing can be drawn now. */
     private static final int NOTHING = -1;
 
@@ -85,6 +97,8 @@ public final class BandQueue {
     private Throwable failure;
     /** When the picture's first batch was handed in. */
     private long since;
+    /** How long {@link #finish} spins before it parks: {@link #FINISH_SPIN_NANOS} or {@link #SPIN_NANOS}. */
+    private final long finishSpin;
 
     /**
      * For a panel drawn in {@code bands} bands (1 or more) by
@@ -103,6 +117,8 @@ public final class BandQueue {
         this.drawn = new int[bands];
         this.claimed = new boolean[bands];
         this.whole = new boolean[slots];
+        this.finishSpin = threads.threads() <= Runtime.getRuntime().availableProcessors() ? FINISH_SPIN_NANOS
+                : SPIN_NANOS;
     }
 
     /**
@@ -173,7 +189,7 @@ public final class BandQueue {
         lock.lock();
         try {
             while (failure == null ? lowest() < published : !nothingClaimed()) {
-                helpOrWait();
+                helpOrWait(finishSpin);
             }
             if (stopping) {
                 return;
@@ -224,12 +240,17 @@ public final class BandQueue {
      * must not be left half drawn by others); the thread stays interrupted.
      */
     private void helpOrWait() {
+        helpOrWait(SPIN_NANOS);
+    }
+
+    /** As {@link #helpOrWait()}, spinning {@code spin} ns before it parks. */
+    private void helpOrWait(long spin) {
         int item = claim(0);
         if (item != NOTHING) {
             draw(item);
             return;
         }
-        awaitChange(false);
+        awaitChange(false, spin);
     }
 
     /**
@@ -244,20 +265,28 @@ public final class BandQueue {
     }
 
     /**
-     * With the lock held: waits for a change. First it spins a while
-     * without the lock ({@link #SPIN_NANOS}): a parked thread took 30-50
-     * us to wake on this machine's cores, as long as drawing a band of
-     * a small batch, and the reading thread hands in the next batch, or a
-     * band drawer ends its band, within that as often as not. Then it
-     * parks, counted among the waiters so that changes signal only when
-     * someone waits. An interruptible wait returns false when interrupted;
-     * the other waits through interrupts and leaves the thread interrupted.
+     * With the lock held: waits for a change, spinning {@link #SPIN_NANOS}
+     * first ({@link #awaitChange(boolean, long)}).
      */
     private boolean awaitChange(boolean interruptible) {
+        return awaitChange(interruptible, SPIN_NANOS);
+    }
+
+    /**
+     * With the lock held: waits for a change. First it spins {@code spin} ns
+     * without the lock: a parked thread took 30-50 us to wake on this
+     * machine's cores, as long as drawing a band of a small batch, and the
+     * reading thread hands in the next batch, or a band drawer ends its band,
+     * within {@link #SPIN_NANOS} as often as not. Then it parks, counted among
+     * the waiters so that changes signal only when someone waits. An
+     * interruptible wait returns false when interrupted; the other waits
+     * through interrupts and leaves the thread interrupted.
+     */
+    private boolean awaitChange(boolean interruptible, long spin) {
         int seen = changes;
         lock.unlock();
         try {
-            long until = System.nanoTime() + SPIN_NANOS;
+            long until = System.nanoTime() + spin;
             while (changes == seen && System.nanoTime() - until < 0) {
                 Thread.onSpinWait();
             }
