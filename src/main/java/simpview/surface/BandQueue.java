@@ -131,7 +131,7 @@ public final class BandQueue {
         try {
             int next = published;
             while (failure == null && lowest() < next - slots + 1) {
-                helpOrWait();
+                helpOrWait(SPIN_NANOS);
             }
             if (failure == null) {
                 return next % slots;
@@ -225,7 +225,7 @@ public final class BandQueue {
                     draw(item);
                     continue;
                 }
-                if (!awaitChange(true)) {
+                if (!awaitChange(true, SPIN_NANOS)) {
                     return; // closed: the caller draws whatever is left
                 }
             }
@@ -236,14 +236,10 @@ public final class BandQueue {
 
     /**
      * With the lock held, on the caller's thread: draws something if it can,
-     * or else waits for a change. An interrupt does not stop it (the picture
-     * must not be left half drawn by others); the thread stays interrupted.
+     * or else waits for a change, spinning {@code spin} ns before it parks.
+     * An interrupt does not stop it (the picture must not be left half drawn
+     * by others); the thread stays interrupted.
      */
-    private void helpOrWait() {
-        helpOrWait(SPIN_NANOS);
-    }
-
-    /** As {@link #helpOrWait()}, spinning {@code spin} ns before it parks. */
     private void helpOrWait(long spin) {
         int item = claim(0);
         if (item != NOTHING) {
@@ -262,14 +258,6 @@ public final class BandQueue {
         if (waiting > 0) {
             changed.signalAll();
         }
-    }
-
-    /**
-     * With the lock held: waits for a change, spinning {@link #SPIN_NANOS}
-     * first ({@link #awaitChange(boolean, long)}).
-     */
-    private boolean awaitChange(boolean interruptible) {
-        return awaitChange(interruptible, SPIN_NANOS);
     }
 
     /**
