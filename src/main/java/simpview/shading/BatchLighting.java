@@ -1,5 +1,7 @@
 package simpview.shading;
 
+import java.util.Arrays;
+
 /**
  * {@link Lighting#shade(LitPoints)}: a batch of points lit with what its
  * {@link Lighting} was prepared with, each point to the same bits as
@@ -78,6 +80,7 @@ final class BatchLighting {
     }
 
     void shade(LitPoints t) {
+        t.black = false;
         int n = t.count;
         Lighting l = lighting;
         double ar = l.ambientRed;
@@ -201,8 +204,36 @@ final class BatchLighting {
                 lengths[i] += positive(dot) * 0x1p1000 * 0x1p1000 * 0x1p1000;
             }
         }
+        if (l.ambientRed == 0 && l.ambientGreen == 0 && l.ambientBlue == 0 && noneUnusual(t, n)) {
+            // What ambientTerm and shadeUnusualAlone would make, in three fills (LitPoints.black).
+            Arrays.fill(t.red, 0, n, 0.0);
+            Arrays.fill(t.green, 0, n, 0.0);
+            Arrays.fill(t.blue, 0, n, 0.0);
+            t.black = true;
+            return;
+        }
         ambientTerm(t, n);
         shadeUnusualAlone(t, n);
+    }
+
+    /**
+     * True when no point of the unlit batch is lit alone and every kd is
+     * finite: the sum of the length tests and of kd times 0 is finite. Then,
+     * under an ambient light of zeros, {@link #ambientTerm} makes each
+     * channel +0 (kd times 0 is a zero, positive makes it +0) and
+     * {@link #shadeUnusualAlone} changes nothing. A sum that overflows only
+     * sends the batch the usual way.
+     */
+    private static boolean noneUnusual(LitPoints t, int n) {
+        double[] lengths = t.lengths;
+        double[] kdRed = t.kdRed;
+        double[] kdGreen = t.kdGreen;
+        double[] kdBlue = t.kdBlue;
+        double sum = 0;
+        for (int i = 0; i < n; i++) {
+            sum += lengths[i] + (kdRed[i] + kdGreen[i] + kdBlue[i]) * 0;
+        }
+        return sum < Double.POSITIVE_INFINITY;
     }
 
     /** Point i lit by Lighting alone, its colour replacing what the steps made of it. */

@@ -60,6 +60,15 @@ public final class LitPoints {
      * are the same bits.
      */
     boolean unlit;
+    /**
+     * True when every point's colour came out +0 in each channel: set by
+     * BatchLighting for a batch guessed unlit that no light reaches, under
+     * an ambient light of zeros (the course's usual start), and cleared by it
+     * otherwise. Whoever fills the batch clears it before any shader lights
+     * it, and may then skip what makes black black again (fog towards black,
+     * the levels): FragmentStage's pack.
+     */
+    boolean black;
 
     /** An empty batch that holds up to {@code capacity} points. */
     public LitPoints(int capacity) {

@@ -268,6 +268,47 @@ class BatchLightingTest {
     }
 
     /**
+     * Under an ambient light of zeros (+0 and -0), a batch guessed unlit that
+     * no light reaches comes out +0 in every channel and says so
+     * ({@link LitPoints#black}), kd outside [0, 1] and negative too; one with
+     * a single point a light reaches, a NaN or infinite kd, or a normal that
+     * Lighting rescales, is lit the usual way and says not; and under any
+     * other ambient light none is black. Each point gets its bits alone.
+     */
+    @Test
+    void underNoAmbientLightABatchNoLightReachesComesOutBlackAndSaysSo() {
+        Lights lights = new Lights();
+        lights.add(0, 0, 0, 8, 8, 12, 1, 0.2); // at the eye: a face turned to -z is turned from it
+        double[][] ambients = {{0, 0, 0}, {-0.0, 0, -0.0}, {0, 0, 1e-300}, {0, Double.NaN, 0}};
+        for (double[] ambient : ambients) {
+            boolean none = ambient[2] == 0 && ambient[1] == 0;
+            for (int odd = -1; odd < 5; odd++) {
+                Lighting lighting = new Lighting(lights);
+                lighting.prepare(ambient[0], ambient[1], ambient[2], 0.3, 8, 1, true);
+                LitPoints points = new LitPoints(16);
+                for (int i = 0; i < 12; i++) {
+                    points.add(i - 6, 2, -10 - i, 0.01 * i, 0, -1, 0.2 * i, -0.5, 1e300);
+                }
+                switch (odd) {
+                    case 0 -> points.add(1, 2, -10, 0, 0, 1, 0.5, 0.5, 0.5); // turned to the light
+                    case 1 -> points.add(1, 2, -10, 0, 0, -1, 0.5, Double.NaN, 0.5);
+                    case 2 -> points.add(1, 2, -10, 0, 0, -1, Double.NEGATIVE_INFINITY, 0.5, 0.5);
+                    case 3 -> points.add(1, 2, -10, 0, 0, -1e-160, 0.5, 0.5, 0.5); // rescaled, still turned away
+                    case 4 -> points.add(-6.425485839826166, 8.117399161206349, -8.260792656744275,
+                            8.957307212181264e199, -2.10353007153653e199, -9.034271527463752e199, 0.5, 0.5, 0.5);
+                    default -> { } // all turned away
+                }
+                points.unlit = true;
+                points.black = !points.black; // whatever it was, the shading says
+                lighting.shade(points);
+                assertEquals(none && odd < 0, points.black, "ambient " + java.util.Arrays.toString(ambient)
+                        + ", odd point " + odd);
+                assertEachPointAsAlone(lighting, points);
+            }
+        }
+    }
+
+    /**
      * Lights the batch, then checks each point's colour against the point lit
      * alone, to the bit; then the same with the batch guessed unlit.
      */

@@ -624,15 +624,24 @@ class FragmentStageTest {
      * Polygons a stage guesses unlit (told of each, {@link FragmentStage#polygon})
      * draw what they draw untold: faces turned from every light, to them,
      * edge on, and curved ones whose corners disagree (N tilted across them),
-     * shaded at the end and at once, among coloured ones. Fails unless some
-     * batches were lit as guessed unlit.
+     * shaded at the end and at once, among coloured ones; every other time
+     * under no ambient light, where batches no light reaches come out black
+     * ({@link LitPoints#black}), with no fog, fog towards black, and fog the
+     * stage takes pixel by pixel or towards another colour. Fails unless some
+     * batches were lit as guessed unlit, and some came out black.
      */
     @Test
     void polygonsGuessedUnlitDrawWhatTheyDrawUntold() {
         Random random = new Random(1205023);
+        Fog[] withNoAmbient = {Fog.NONE, new Fog(-8, -16, 0, 0, -0.0), new Fog(-10, -10, 0, 0, 0), FOGS[0]};
         int unlitBatches = 0;
+        int blackBatches = 0;
         for (int trial = 0; trial < 40; trial++) {
             LitState state = scene(random, 0);
+            if (trial % 2 == 1) {
+                state.setAmbient(0, -0.0, 0);
+                state.setFog(withNoAmbient[random.nextInt(withNoAmbient.length)]);
+            }
             int lights = 1 + random.nextInt(2);
             for (int i = 0; i < lights; i++) {
                 state.addLight(random.nextDouble() * 4 - 2, random.nextDouble() * 4 - 2, -30 + random.nextInt(2) * 28,
@@ -674,8 +683,10 @@ class FragmentStageTest {
             }
             assertSameDrawing(untold, told);
             unlitBatches += shader.unlit;
+            blackBatches += shader.black;
         }
         assertTrue(unlitBatches > 20, unlitBatches + " batches lit as guessed unlit");
+        assertTrue(blackBatches > 10, blackBatches + " batches lit black");
     }
 
     /**
@@ -704,6 +715,7 @@ class FragmentStageTest {
     private static final class BatchCount implements PointShader {
         private final PointShader shader;
         int unlit;
+        int black;
 
         BatchCount(PointShader shader) {
             this.shader = shader;
@@ -719,6 +731,7 @@ class FragmentStageTest {
         public void shade(LitPoints points) {
             unlit += points.unlit ? 1 : 0;
             shader.shade(points);
+            black += points.black ? 1 : 0;
         }
 
         @Override
