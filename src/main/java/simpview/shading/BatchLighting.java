@@ -146,15 +146,26 @@ final class BatchLighting {
     /**
      * Each point whose length test failed (t.lengths infinite or NaN) or
      * whose colour is NaN lit again by Lighting alone, replacing what the
-     * steps made of it.
+     * steps made of it. First one sum over the batch, in a loop with no
+     * branch: where it is finite, no point is such (each term is +0 or more,
+     * or NaN), and the loop with its branch is not run (a sum that overflows
+     * only runs it): A4 page-g 0.97 of its time, page-f1 0.99 (session 23).
      */
     private void shadeUnusualAlone(LitPoints t, int n) {
         double[] red = t.red;
         double[] green = t.green;
         double[] blue = t.blue;
+        double[] lengths = t.lengths;
+        double all = 0;
+        for (int i = 0; i < n; i++) {
+            all += lengths[i] + (red[i] + green[i] + blue[i]);
+        }
+        if (all < Double.POSITIVE_INFINITY) {
+            return;
+        }
         for (int i = 0; i < n; i++) {
             double sum = red[i] + green[i] + blue[i];
-            if (!(t.lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
+            if (!(lengths[i] < Double.POSITIVE_INFINITY) | sum != sum) {
                 shadeAlone(t, i);
             }
         }
