@@ -131,22 +131,40 @@ final class TriangleCoverage {
         return row <= -1 ? -1 : row < height - 1 ? (int) row : height - 1;
     }
 
-    /** The covered run of a row, the intersection of one half-row per edge, into from and to; false when empty. */
+    /**
+     * The covered run of a row, the intersection of one half-row per edge,
+     * into from and to; false when empty.
+     *
+     * <p>Of two edges on one side, one binds on a row and the other's
+     * half-row holds the run: so the first edge's end is found, and the
+     * second is asked only whether it holds that end pixel (one exact test;
+     * its half-row is an interval that reaches the panel's edge, so it then
+     * holds the run). Only where not is its own end found, and it is asked
+     * first from then on: a triangle's rows come in order, and past the
+     * corner between them the other edge binds. A2's page 7 (590 triangles,
+     * 59,422 rows): 0.95-0.97 of its time (session 23).
+     */
     boolean row(int row, int width) {
         double py = row + 0.5;
         if (flat != null && !flat.inside(flat.rowTerm(py), 0.5)) {
             return false; // a horizontal edge excludes or admits the whole row
         }
         int start = left0.firstInside(py, width);
-        if (left1 != null) {
-            start = Math.max(start, left1.firstInside(py, width));
+        if (left1 != null && start < width && !left1.insideLeft(left1.rowTerm(py), start + 0.5)) {
+            start = left1.firstInside(py, width);
+            Edge binding = left1;
+            left1 = left0;
+            left0 = binding;
         }
         int end = width;
         if (start < end) {
             end = right0.endOfInside(py, width);
         }
-        if (right1 != null && start < end) {
-            end = Math.min(end, right1.endOfInside(py, width));
+        if (right1 != null && start < end && !right1.insideRight(right1.rowTerm(py), end - 0.5)) {
+            end = right1.endOfInside(py, width);
+            Edge binding = right1;
+            right1 = right0;
+            right0 = binding;
         }
         from = start;
         to = end;
