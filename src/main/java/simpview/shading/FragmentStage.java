@@ -1479,12 +1479,23 @@ public final class FragmentStage implements FragmentSink {
                     ts[i] = Math.min(Math.max((batchZ[i] - far) / range, 0), 1);
                 }
             }
-            for (int i = 0; i < n; i++) {
-                double tt = ts[i];
-                double s = 1 - tt;
-                red[i] = tt * red[i] + s * fr;
-                green[i] = tt * green[i] + s * fg;
-                blue[i] = tt * blue[i] + s * fb;
+            if (fr == 0 && fg == 0 && fb == 0) {
+                // Fog towards black (the course's usual): (1 - t) 0 is a zero,
+                // and adding it changes no level (at most a zero's sign).
+                for (int i = 0; i < n; i++) {
+                    double tt = ts[i];
+                    red[i] = tt * red[i];
+                    green[i] = tt * green[i];
+                    blue[i] = tt * blue[i];
+                }
+            } else {
+                for (int i = 0; i < n; i++) {
+                    double tt = ts[i];
+                    double s = 1 - tt;
+                    red[i] = tt * red[i] + s * fr;
+                    green[i] = tt * green[i] + s * fg;
+                    blue[i] = tt * blue[i] + s * fb;
+                }
             }
         }
         if (inUnit) {
