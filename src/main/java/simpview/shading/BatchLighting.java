@@ -93,6 +93,13 @@ final class BatchLighting {
             // The ambient term alone, clamped; only a NaN, which the clamp
             // keeps (or makes, of -inf), is then clamped by Lighting's rule.
             ambientTerm(t, n);
+            double all = 0; // NaN where some colour is: the loop below only then
+            for (int i = 0; i < n; i++) {
+                all += red[i] + green[i] + blue[i];
+            }
+            if (all == all) {
+                return;
+            }
             for (int i = 0; i < n; i++) {
                 double sum = red[i] + green[i] + blue[i];
                 if (sum != sum) {
