@@ -163,11 +163,7 @@ final class BatchLighting {
         double[] green = t.green;
         double[] blue = t.blue;
         double[] lengths = t.lengths;
-        double all = 0;
-        for (int i = 0; i < n; i++) {
-            all += lengths[i] + (red[i] + green[i] + blue[i]);
-        }
-        if (all < Double.POSITIVE_INFINITY) {
+        if (finiteSum(lengths, red, green, blue, 1, n)) {
             return;
         }
         for (int i = 0; i < n; i++) {
@@ -222,8 +218,12 @@ final class BatchLighting {
                 lengths[i] += positive(dot) * 0x1p1000 * 0x1p1000 * 0x1p1000;
             }
         }
-        if (l.ambientRed == 0 && l.ambientGreen == 0 && l.ambientBlue == 0 && noneUnusual(t, n)) {
-            // What ambientTerm and shadeUnusualAlone would make, in three fills (LitPoints.black).
+        // Under an ambient light of zeros, where no point is lit alone and every
+        // kd is finite (kd times 0 is then a zero), ambientTerm makes each
+        // channel +0 (positive turns -0 into +0) and shadeUnusualAlone changes
+        // nothing: three fills instead (LitPoints.black).
+        if (l.ambientRed == 0 && l.ambientGreen == 0 && l.ambientBlue == 0
+                && finiteSum(t.lengths, t.kdRed, t.kdGreen, t.kdBlue, 0, n)) {
             Arrays.fill(t.red, 0, n, 0.0);
             Arrays.fill(t.green, 0, n, 0.0);
             Arrays.fill(t.blue, 0, n, 0.0);
@@ -235,21 +235,18 @@ final class BatchLighting {
     }
 
     /**
-     * True when no point of the unlit batch is lit alone and every kd is
-     * finite: the sum of the length tests and of kd times 0 is finite. Then,
-     * under an ambient light of zeros, {@link #ambientTerm} makes each
-     * channel +0 (kd times 0 is a zero, positive makes it +0) and
-     * {@link #shadeUnusualAlone} changes nothing. A sum that overflows only
-     * sends the batch the usual way.
+     * True when lengths[i] + (a[i] + b[i] + c[i]) times {@code scale}, summed
+     * over the batch in a loop with no branch, is finite. Then every length
+     * test passed (each term is +0 or more where it passed, infinite or NaN
+     * where not); with scale 0, every a, b and c is finite (a NaN or an
+     * infinity makes the product NaN); with scale 1 and colours (in [0, 1]
+     * or NaN), none is NaN. A sum that overflows only says false, which a
+     * caller takes as "look point by point".
      */
-    private static boolean noneUnusual(LitPoints t, int n) {
-        double[] lengths = t.lengths;
-        double[] kdRed = t.kdRed;
-        double[] kdGreen = t.kdGreen;
-        double[] kdBlue = t.kdBlue;
+    private static boolean finiteSum(double[] lengths, double[] a, double[] b, double[] c, double scale, int n) {
         double sum = 0;
         for (int i = 0; i < n; i++) {
-            sum += lengths[i] + (kdRed[i] + kdGreen[i] + kdBlue[i]) * 0;
+            sum += lengths[i] + (a[i] + b[i] + c[i]) * scale;
         }
         return sum < Double.POSITIVE_INFINITY;
     }

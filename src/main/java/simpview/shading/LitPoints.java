@@ -63,7 +63,7 @@ public final class LitPoints {
     /**
      * True when every point's colour came out +0 in each channel: set by
      * BatchLighting for a batch guessed unlit that no light reaches, under
-     * an ambient light of zeros (the course's usual start), and cleared by it
+     * an ambient light of zeros (SIMP's start), and cleared by it
      * otherwise. Whoever fills the batch clears it before any shader lights
      * it, and may then skip what makes black black again (fog towards black,
      * the levels): FragmentStage's pack.

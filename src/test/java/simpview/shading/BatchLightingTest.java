@@ -3,6 +3,7 @@ package simpview.shading;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import java.util.Arrays;
 import java.util.Random;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
@@ -301,7 +302,7 @@ class BatchLightingTest {
                 points.unlit = true;
                 points.black = !points.black; // whatever it was, the shading says
                 lighting.shade(points);
-                assertEquals(none && odd < 0, points.black, "ambient " + java.util.Arrays.toString(ambient)
+                assertEquals(none && odd < 0, points.black, "ambient " + Arrays.toString(ambient)
                         + ", odd point " + odd);
                 assertEachPointAsAlone(lighting, points);
             }
