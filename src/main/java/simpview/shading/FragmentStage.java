@@ -825,7 +825,9 @@ public final class FragmentStage implements FragmentSink {
      * thread; session 19.) Of the points and runs that waited at one
      * pixel, only the last to win it still holds it, so each pixel is
      * written once at most and the order of the writes cannot change the
-     * picture.
+     * picture. Each run of points still theirs, of one look, is copied into
+     * the batch at once, array by array: A4 page-g 0.96-0.97 of its time
+     * (session 23).
      */
     private void shadeWaitingPoints() {
         WaitingPoints w = waitingPoints;
@@ -833,9 +835,11 @@ public final class FragmentStage implements FragmentSink {
         double[] d = depth;
         int filled = 0;
         int batchLook = -1;
-        for (int i = 0, n = w.count; i < n; i++) {
-            double z = w.z[i];
-            if (z != d[w.y[i] * width + w.x[i]]) {
+        int n = w.count;
+        int i = 0;
+        while (i < n) {
+            if (w.z[i] != d[w.y[i] * width + w.x[i]]) {
+                i++;
                 continue; // taken since it passed
             }
             int look = w.look[i];
@@ -848,19 +852,28 @@ public final class FragmentStage implements FragmentSink {
                 shader = lookShader[look];
                 fog = lookFog[look];
             }
-            pointX[filled] = w.x[i];
-            pointY[filled] = w.y[i];
-            pointOwner[filled] = w.owner[i];
-            batchZ[filled] = z;
-            t.kdRed[filled] = w.kdRed[i];
-            t.kdGreen[filled] = w.kdGreen[i];
-            t.kdBlue[filled] = w.kdBlue[i];
-            t.px[filled] = w.px[i];
-            t.py[filled] = w.py[i];
-            t.nx[filled] = w.nx[i];
-            t.ny[filled] = w.ny[i];
-            t.nz[filled] = w.nz[i];
-            if (++filled == WAITING_BATCH) {
+            // The run of points from i on still theirs, of this look, that fits: copied at once.
+            int stop = Math.min(n, i + WAITING_BATCH - filled);
+            int j = i + 1;
+            while (j < stop && w.look[j] == look && w.z[j] == d[w.y[j] * width + w.x[j]]) {
+                j++;
+            }
+            int m = j - i;
+            System.arraycopy(w.x, i, pointX, filled, m);
+            System.arraycopy(w.y, i, pointY, filled, m);
+            System.arraycopy(w.owner, i, pointOwner, filled, m);
+            System.arraycopy(w.z, i, batchZ, filled, m);
+            System.arraycopy(w.kdRed, i, t.kdRed, filled, m);
+            System.arraycopy(w.kdGreen, i, t.kdGreen, filled, m);
+            System.arraycopy(w.kdBlue, i, t.kdBlue, filled, m);
+            System.arraycopy(w.px, i, t.px, filled, m);
+            System.arraycopy(w.py, i, t.py, filled, m);
+            System.arraycopy(w.nx, i, t.nx, filled, m);
+            System.arraycopy(w.ny, i, t.ny, filled, m);
+            System.arraycopy(w.nz, i, t.nz, filled, m);
+            filled += m;
+            i = j;
+            if (filled == WAITING_BATCH) {
                 shadePoints(filled);
                 filled = 0;
             }
