@@ -83,31 +83,8 @@ final class BatchLighting {
         t.black = false;
         int n = t.count;
         Lighting l = lighting;
-        double ar = l.ambientRed;
-        double ag = l.ambientGreen;
-        double ab = l.ambientBlue;
-        double[] red = t.red;
-        double[] green = t.green;
-        double[] blue = t.blue;
         if (l.lightCount == 0) {
-            // The ambient term alone, clamped; only a NaN, which the clamp
-            // keeps (or makes, of -inf), is then clamped by Lighting's rule.
-            ambientTerm(t, n);
-            double all = 0; // NaN where some colour is: the loop below only then
-            for (int i = 0; i < n; i++) {
-                all += red[i] + green[i] + blue[i];
-            }
-            if (all == all) {
-                return;
-            }
-            for (int i = 0; i < n; i++) {
-                double sum = red[i] + green[i] + blue[i];
-                if (sum != sum) {
-                    red[i] = Lighting.clamp(t.kdRed[i] * ar);
-                    green[i] = Lighting.clamp(t.kdGreen[i] * ag);
-                    blue[i] = Lighting.clamp(t.kdBlue[i] * ab);
-                }
-            }
+            shadeAmbientAlone(t, n);
             return;
         }
         if (t.unlit) {
@@ -120,6 +97,9 @@ final class BatchLighting {
             light(t, n, o, o == 0);
         }
         // Clamped (positive, then min): as Lighting.clamp, but a NaN stays NaN, and -inf becomes NaN.
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
         for (int i = 0; i < n; i++) {
             double r = red[i];
             double g = green[i];
@@ -132,6 +112,35 @@ final class BatchLighting {
         // or with a NaN sum (a term with no value, which Lighting adds as 0,
         // terms that cancelled, or a sum of -inf).
         shadeUnusualAlone(t, n);
+    }
+
+    /**
+     * With no light: the ambient term alone, clamped; only a NaN, which the
+     * clamp keeps (or makes, of -inf), is then clamped by Lighting's rule,
+     * looked for where the batch's sum of colours is NaN (the colours are in
+     * [0, 1] or NaN, so the sum cannot overflow).
+     */
+    private void shadeAmbientAlone(LitPoints t, int n) {
+        ambientTerm(t, n);
+        double[] red = t.red;
+        double[] green = t.green;
+        double[] blue = t.blue;
+        double all = 0;
+        for (int i = 0; i < n; i++) {
+            all += red[i] + green[i] + blue[i];
+        }
+        if (all == all) {
+            return;
+        }
+        Lighting l = lighting;
+        for (int i = 0; i < n; i++) {
+            double sum = red[i] + green[i] + blue[i];
+            if (sum != sum) {
+                red[i] = Lighting.clamp(t.kdRed[i] * l.ambientRed);
+                green[i] = Lighting.clamp(t.kdGreen[i] * l.ambientGreen);
+                blue[i] = Lighting.clamp(t.kdBlue[i] * l.ambientBlue);
+            }
+        }
     }
 
     /** Each point's kd times Ia, clamped (positive, then min): as Lighting.clamp, but a NaN stays NaN, and -inf becomes NaN. */
