@@ -1,11 +1,12 @@
 """The llvmpipe side of simpview's side-by-side benchmark.
 
 Draws one page that simpview.bench.LlvmpipeExport wrote (NAME.bin: the
-triangles and line segments simpview's geometry stage hands its
-rasterizers, grouped in drawing order by how they are lit and by which of
-the two they are) through Mesa's llvmpipe, headless (OSMesa, a 4.5 core
-context), with simpview's lighting formula, fog and depth test in GLSL, per
-pixel. Warm: the triangles are uploaded and the shaders compiled first,
+triangles and line segments simpview hands its rasterizers, grouped in
+drawing order by how they are lit and by which of the two they are)
+through Mesa's llvmpipe, headless (OSMesa, a 4.5 core context), with
+simpview's lighting formula, fog (A2's depth cue is one) and depth test in
+GLSL, per pixel; a group whose u[14] is 1 (A2's pages 1 and 2, which
+simpview draws on the panel itself) with no depth test. Warm: the triangles are uploaded and the shaders compiled first,
 and 3 s of redraws (at least 20) run; then it prints "ready".
 
 Then it takes turns with simpview, which started it: for each line "turn"
@@ -167,7 +168,6 @@ def main():
     where = GL.glGetUniformLocation(prog, "u")
     GL.glViewport(0, 0, SIZE, SIZE)
     GL.glEnable(GL.GL_DEPTH_TEST)
-    GL.glDepthFunc(GL.GL_LESS)  # strictly nearer wins, as simpview's z-buffer
     GL.glClearColor(0, 0, 0, 1)
     uniforms, modes, counts, data = load(os.path.join(folder, name + ".bin"))
     vao = GL.glGenVertexArrays(1)
@@ -180,10 +180,13 @@ def main():
         GL.glEnableVertexAttribArray(index)
         GL.glVertexAttribPointer(index, size, GL.GL_FLOAT, GL.GL_FALSE, stride, GL.GLvoidp(offset))
     firsts = np.cumsum([0] + counts[:-1]).tolist()
+    # Strictly nearer wins, as simpview's z-buffer; or every fragment, in drawing order.
+    tests = [GL.GL_ALWAYS if u[14] > 0.5 else GL.GL_LESS for u in uniforms]
 
     def redraw():
         GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
-        for u, mode, first, count in zip(uniforms, modes, firsts, counts):
+        for u, test, mode, first, count in zip(uniforms, tests, modes, firsts, counts):
+            GL.glDepthFunc(test)
             GL.glUniform1fv(where, UNIFORMS, u)
             GL.glDrawArrays(mode, first, count)
         GL.glFinish()

@@ -17,7 +17,16 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import simpview.geometry.Camera;
+import simpview.geometry.Vertex;
 import simpview.raster.FragmentLayout;
+import simpview.pages.Assignment2;
+import simpview.pages.MeshPage;
+import simpview.pages.Page;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.PerturbedMesh;
+import simpview.pages.ScenePage;
+import simpview.pages.ZBufferPage;
 import simpview.scene.obj.ObjLibrary;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
@@ -30,24 +39,36 @@ import simpview.stage.Painter;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 
 /**
  * The simpview side of the llvmpipe benchmark (bench/llvmpipe/): for each
- * lit course page, writes the primitives its geometry stage hands the
- * rasterizers (clipped and projected, as clip-space positions and the
- * attributes simpview interpolates): filled polygons as triangles, lines and
- * wire outlines as line segments (an outline's every edge), grouped in
- * drawing order by how they are lit and by which of the two they are, so
- * that OpenGL draws the same primitives with the same lighting in GLSL (its
- * lines by its own rule, the diamond exit, where simpview's follow the
- * course's DDA: about the same pixels, not the same to the pixel); then
- * times simpview's warm redraws of the page on 1 thread (the median and best
- * of 61), and on 2 threads taking turns with llvmpipe's (draw.py, started
- * here): {@value #TURNS} turns each, one after the other, of one untimed
- * redraw and {@value #TIMED_IN_A_TURN} timed. Each side is warmed by
+ * course page, writes the primitives simpview hands its rasterizers: for a
+ * lit page (A3, A4) what its geometry stage gives them (clipped and
+ * projected, as clip-space positions and the attributes simpview
+ * interpolates), for one of A2's eight pages the panel-space triangles and
+ * lines its renderers draw (pages 1 to 3 from the page's own mesh or
+ * triangles, 4 to 8 from the depth-cued scene's geometry stage). Filled
+ * polygons go as triangles, lines and wire outlines as line segments (an
+ * outline's every edge), grouped in drawing order by how they are lit and
+ * by which of the two they are, so that OpenGL draws the same primitives
+ * with the same lighting, fog or depth cue in GLSL (its lines by its own
+ * rule, the diamond exit, where simpview's follow the course's DDA: about
+ * the same pixels, not the same to the pixel); then times simpview's warm
+ * redraws of the page on 1 thread (the median and best of 61), and on 2
+ * threads taking turns with llvmpipe's (draw.py, started here):
+ * {@value #TURNS} turns each, one after the other, of one untimed redraw and
+ * {@value #TIMED_IN_A_TURN} timed. Each side is warmed by
  * {@value #WARM_SECONDS} s of redraws (at least 20) first. That is as long
  * as JMH's warm-up, so that the JIT has compiled the drawing before it is
  * timed, as llvmpipe's shaders are compiled before its redraws are.
+ *
+ * <p>A2's depth cue is the fog of draw.py's shader: the cue's near colour as
+ * every vertex's colour, fogged from z = 0 (near) to z = -200 (far) towards
+ * the cue's far colour (black), which is SPEC Part 1's
+ * {@code far + (near - far) (z + 200) / 200} per fragment. Pages 1 and 2
+ * draw with no depth test (simpview draws them on the panel itself), so
+ * their groups ask draw.py for none.
  *
  * <p>Why turns: on this machine a two-thread picture takes 20-25 % longer
  * for a second or so at a time (docs/performance.md, session 17), one
@@ -58,10 +79,12 @@ import simpview.surface.PageCanvas;
  * <p>Prints one line per page: {@code page ms1 best1 ms2 best2 llvmpipeMs
  * llvmpipeBest triangles lines skipped} (medians and bests, in ms).
  *
- * <p>Args: the folder holding course-simp-a3 and course-simp-a4, the folder
- * to write NAME.bin into, the Python that has PyOpenGL, draw.py, then pages
- * as "a3/pageF". A primitive of another kind (none so far) is not exported,
- * only counted as skipped.
+ * <p>Args: the folder holding course-simp (A2's pages 6 to 8),
+ * course-simp-a3 and course-simp-a4, the folder to write NAME.bin into, the
+ * Python that has PyOpenGL, draw.py, then pages as "a3/pageF" or "a2/page7".
+ * A2's pages 4 and 5 are the project's own scenes, read from simp/ of the
+ * working folder (the repository's, as run.sh runs it). A primitive of
+ * another kind (none so far) is not exported, only counted as skipped.
  *
  * <p>File (little-endian): int groups; per group 80 floats of uniforms (see
  * {@link #uniforms}), int mode (0 triangles, 1 line segments), int
@@ -87,12 +110,12 @@ public final class LlvmpipeExport {
         String drawPy = args[3];
         Files.createDirectories(out);
         for (int i = 4; i < args.length; i++) {
-            Path file = LitPages.sceneFile(folder, args[i]);
-            Export export = export(file);
+            ComparedPage page = ComparedPage.of(folder, args[i]);
+            Export export = page.export();
             String name = args[i].replace('/', '-');
             export.write(out.resolve(name + ".bin"));
-            double[] one = timeOneThread(file);
-            double[][] two = inTurns(file, new ProcessBuilder(python, drawPy, out.toString(), name));
+            double[] one = timeOneThread(page);
+            double[][] two = inTurns(page, new ProcessBuilder(python, drawPy, out.toString(), name));
             System.out.println(String.format(Locale.ROOT, "%s %.3f %.3f %.3f %.3f %.3f %.3f %d %d %d", args[i],
                     one[0], one[1], two[0][0], two[0][1], two[1][0], two[1][1], export.triangles, export.lines,
                     export.skipped));
@@ -107,13 +130,12 @@ public final class LlvmpipeExport {
     private static final int TIMED_IN_A_TURN = 20;
 
     /**
-     * simpview's warm redraws on two threads and llvmpipe's ({@code llvmpipe}
-     * starts draw.py on the page), taking turns: the median and best of each,
-     * simpview's first.
+     * simpview's warm redraws of the page on two threads and llvmpipe's
+     * ({@code llvmpipe} starts draw.py on it), taking turns: the median and
+     * best of each, simpview's first.
      */
-    private static double[][] inTurns(Path file, ProcessBuilder llvmpipe) throws Exception {
+    private static double[][] inTurns(ComparedPage page, ProcessBuilder llvmpipe) throws Exception {
         Process drawer = llvmpipe.redirectError(ProcessBuilder.Redirect.INHERIT).start();
-        SceneLibrary library = new SceneLibrary();
         Writer to = new OutputStreamWriter(drawer.getOutputStream(), StandardCharsets.US_ASCII);
         try (DrawingThreads drawing = DrawingThreads.of(2);
                 BufferedReader from = new BufferedReader(
@@ -121,13 +143,13 @@ public final class LlvmpipeExport {
             if (!"ready".equals(from.readLine())) {
                 throw new IllegalStateException("draw.py did not get ready: " + llvmpipe.command());
             }
-            PageCanvas canvas = warmed(file, drawing, library);
+            Redraw redraw = warmed(page, drawing);
             double[] ours = new double[TURNS * TIMED_IN_A_TURN];
             double[] theirs = new double[TURNS * TIMED_IN_A_TURN];
             for (int turn = 0; turn < TURNS; turn++) {
-                LitPages.redraw(canvas, file, library); // untimed: the cores may still be llvmpipe's for a moment
+                redraw.redraw(); // untimed: the cores may still be llvmpipe's for a moment
                 for (int r = 0; r < TIMED_IN_A_TURN; r++) {
-                    ours[turn * TIMED_IN_A_TURN + r] = timedRedraw(canvas, file, library);
+                    ours[turn * TIMED_IN_A_TURN + r] = timed(redraw);
                 }
                 to.write("turn\n");
                 to.flush();
@@ -156,137 +178,224 @@ public final class LlvmpipeExport {
         return new double[] {t[t.length / 2], t[0]};
     }
 
-    /** Median and best of 61 warm redraws on one thread, in ms. */
-    private static double[] timeOneThread(Path file) throws Exception {
-        SceneLibrary library = new SceneLibrary();
+    /** Median and best of 61 warm redraws of the page on one thread, in ms. */
+    private static double[] timeOneThread(ComparedPage page) throws Exception {
         try (DrawingThreads drawing = DrawingThreads.of(1)) {
-            PageCanvas canvas = warmed(file, drawing, library);
+            Redraw redraw = warmed(page, drawing);
             double[] t = new double[61];
             for (int r = 0; r < t.length; r++) {
-                t[r] = timedRedraw(canvas, file, library);
+                t[r] = timed(redraw);
             }
             return medianAndBest(t);
         }
     }
 
     /**
-     * A canvas drawn on by {@code drawing}, after {@value #WARM_SECONDS} s of
-     * redraws of the page (at least 20), as draw.py warms llvmpipe.
+     * The page's redraw with {@code drawing}, after {@value #WARM_SECONDS} s
+     * of redraws (at least 20), as draw.py warms llvmpipe.
      */
-    private static PageCanvas warmed(Path file, DrawingThreads drawing, SceneLibrary library) throws Exception {
-        PageCanvas canvas = new PageCanvas();
-        canvas.drawWith(drawing);
+    private static Redraw warmed(ComparedPage page, DrawingThreads drawing) throws Exception {
+        Redraw redraw = page.redraw(drawing);
         long warmUntil = System.nanoTime() + WARM_SECONDS * 1_000_000_000L;
         for (int r = 0; r < 20 || System.nanoTime() < warmUntil; r++) {
-            LitPages.redraw(canvas, file, library);
+            redraw.redraw();
         }
-        return canvas;
+        return redraw;
     }
 
-    /** One redraw of the page, in ms. */
-    private static double timedRedraw(PageCanvas canvas, Path file, SceneLibrary library) throws Exception {
+    /** One redraw, in ms. */
+    private static double timed(Redraw redraw) throws Exception {
         long start = System.nanoTime();
-        LitPages.redraw(canvas, file, library);
+        redraw.redraw();
         return (System.nanoTime() - start) / 1e6;
     }
 
-    private static Export export(Path file) throws Exception {
-        PageCanvas canvas = new PageCanvas();
-        canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
-        Export export = new Export();
-        SimpClient client = SimpClient.lit(new FragmentStage(canvas.zbuffer(), canvas.litPanel()), new ObjLibrary(),
-                export);
-        export.client = client;
-        new SimpInterpreter(client, SceneMonitor.NONE).run(file);
-        return export;
+    /** One warm redraw of a page, as the window makes it: its canvas cleared, then the page drawn. */
+    @FunctionalInterface
+    private interface Redraw {
+        void redraw() throws Exception;
     }
 
-    /** Follows the primitives as they reach the rasterizers, in drawing order. */
-    private static final class Export implements PrimitiveTrace {
-        /** The client whose primitives are followed: its lit state is the one in force for each. */
-        SimpClient client;
+    /** A course page as the benchmark draws it on both sides. */
+    private interface ComparedPage {
+
+        /** The page named as "a3/pageF", "a4/page-d" or "a2/page7", its files in or under {@code folder}. */
+        static ComparedPage of(Path folder, String name) {
+            if (name.startsWith("a2/page")) {
+                int number = Integer.parseInt(name.substring("a2/page".length()));
+                Assignment2.page(number); // fails at once for a page that does not exist
+                return new A2Page(number, folder.resolve("course-simp"));
+            }
+            return new LitPage(LitPages.sceneFile(folder, name));
+        }
+
+        /** Its primitives, as simpview's rasterizers get them, for draw.py. */
+        Export export() throws Exception;
+
+        /** Its redraw on a canvas of its own, drawn with {@code drawing}. */
+        Redraw redraw(DrawingThreads drawing);
+    }
+
+    /** A lit course page (A3, A4): its scene file, redrawn as {@link LitPages} does. */
+    private record LitPage(Path file) implements ComparedPage {
+
+        @Override
+        public Export export() throws Exception {
+            PageCanvas canvas = new PageCanvas();
+            canvas.zbuffer().reset(Double.NEGATIVE_INFINITY);
+            Export export = new Export();
+            LitTrace trace = new LitTrace(export);
+            SimpClient client = SimpClient.lit(new FragmentStage(canvas.zbuffer(), canvas.litPanel()),
+                    new ObjLibrary(), trace);
+            trace.client = client;
+            new SimpInterpreter(client, SceneMonitor.NONE).run(file);
+            return export;
+        }
+
+        @Override
+        public Redraw redraw(DrawingThreads drawing) {
+            PageCanvas canvas = new PageCanvas();
+            canvas.drawWith(drawing);
+            SceneLibrary library = new SceneLibrary();
+            return () -> LitPages.redraw(canvas, file, library);
+        }
+    }
+
+    /**
+     * One of A2's eight pages, as {@link Pages} draws it (the default seed;
+     * the project's scenes from simp/, the course's from {@code courseScenes}).
+     */
+    private record A2Page(int number, Path courseScenes) implements ComparedPage {
+
+        private PageContext context(SceneMonitor monitor) {
+            return new PageContext(PageContext.DEFAULT_SEED, courseScenes, PageContext.PROJECT_SCENES, monitor);
+        }
+
+        @Override
+        public Export export() throws Exception {
+            Export export = new Export();
+            Page page = Assignment2.page(number);
+            if (page instanceof MeshPage) {
+                // Page 1 each triangle's outline (WireframePolygonRenderer's three
+                // lerped DDA lines), page 2 the triangles blerped; on the panel, no depth test.
+                boolean filled = ((MeshPage) page).isFilled();
+                export.group(cued(false, false), filled ? TRIANGLES : SEGMENTS);
+                new PerturbedMesh(PageContext.DEFAULT_SEED).forEachTriangle((a, b, c) -> {
+                    if (filled) {
+                        export.triangle(a, b, c);
+                    } else {
+                        export.segment(a, b);
+                        export.segment(b, c);
+                        export.segment(c, a);
+                    }
+                });
+            } else if (page instanceof ZBufferPage) {
+                export.group(cued(false, true), TRIANGLES);
+                for (Vertex[] t : ZBufferPage.triangles(PageContext.DEFAULT_SEED)) {
+                    export.triangle(t[0], t[1], t[2]);
+                }
+            } else {
+                // A scene: its primitives as its geometry stage hands them to the painter, cued.
+                ScenePage scene = (ScenePage) page;
+                export.colour(scene.near());
+                CuedTrace trace = new CuedTrace(export, cued(true, true));
+                PageCanvas canvas = new PageCanvas();
+                page.draw(canvas, context(new SceneMonitor() {
+                    @Override
+                    public PrimitiveTrace trace() {
+                        return trace;
+                    }
+                }));
+            }
+            return export;
+        }
+
+        @Override
+        public Redraw redraw(DrawingThreads drawing) {
+            PageRenderer renderer = new PageRenderer(drawing);
+            PageContext context = context(SceneMonitor.NONE);
+            return () -> renderer.render(number, context);
+        }
+    }
+
+    /**
+     * The uniforms of an A2 group: not lit; cued or not, from near (z = 0,
+     * the cue's near colour, which is every vertex's: {@link Export#colour})
+     * towards black at far (z = -200); with or without the depth test (u[14]
+     * 1: without).
+     */
+    private static float[] cued(boolean cue, boolean depthTest) {
+        float[] u = new float[UNIFORMS];
+        Camera view = Camera.PARALLEL;
+        if (cue) {
+            u[1] = 1;
+            u[2] = (float) view.hither();
+            u[3] = (float) view.yon();
+            u[4] = (float) Rgb.BLACK.r();
+            u[5] = (float) Rgb.BLACK.g();
+            u[6] = (float) Rgb.BLACK.b();
+        }
+        u[14] = depthTest ? 0 : 1;
+        return u;
+    }
+
+    /** The groups of primitives written for draw.py, in drawing order. */
+    private static final class Export {
         private final List<float[]> groupUniforms = new ArrayList<>();
         private final List<Integer> groupModes = new ArrayList<>();
         private final List<FloatList> groupVertices = new ArrayList<>();
-        private Fog lastFog;
-        private int lastVersion = -1;
-        private boolean lastPhong;
-        private int lastMode;
+        /** The colour every vertex of the group at hand is given (a cued A2 scene's near colour), or null: its own. */
+        private Rgb colour;
         int triangles;
         int lines;
         int skipped;
 
-
-        @Override
-        public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
-            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
-                skipped++;
-                return;
-            }
-            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
-            LitState state = client.litState();
-            int channels = stride - FragmentLayout.CHANNEL;
-            boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
-            if (groupVertices.isEmpty() || state.fog() != lastFog || state.lightingVersion() != lastVersion
-                    || phong != lastPhong || mode != lastMode) {
-                lastFog = state.fog();
-                lastVersion = state.lightingVersion();
-                lastPhong = phong;
-                lastMode = mode;
-                groupUniforms.add(uniforms(state, phong));
-                groupModes.add(mode);
-                groupVertices.add(new FloatList());
-            }
-            FloatList v = groupVertices.get(groupVertices.size() - 1);
-            Camera camera = state.camera();
-            if (kind == Painter.FILLED) {
-                for (int k = 1; k + 1 < vertices; k++) {
-                    vertex(v, camera, p, at, stride, channels);
-                    vertex(v, camera, p, at + k * stride, stride, channels);
-                    vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
-                    triangles++;
-                }
-            } else {
-                // A line's one segment, or each edge of an outline, as simpview draws them.
-                int segments = kind == Painter.LINE ? 1 : vertices;
-                for (int k = 0; k < segments; k++) {
-                    vertex(v, camera, p, at + k * stride, stride, channels);
-                    vertex(v, camera, p, at + ((k + 1) % vertices) * stride, stride, channels);
-                    lines++;
-                }
-            }
+        /** From now on the primitives go to a new group: these uniforms, triangles or segments. */
+        void group(float[] uniforms, int mode) {
+            groupUniforms.add(uniforms);
+            groupModes.add(mode);
+            groupVertices.add(new FloatList());
         }
 
-        private static void vertex(FloatList out, Camera camera, double[] p, int at, int stride, int channels) {
-            double q = p[at + FragmentLayout.Q];
-            double w = 1 / q;
-            double x = p[at + FragmentLayout.X] / PageCanvas.PANEL * 2 - 1;
-            double y = p[at + FragmentLayout.Y] / PageCanvas.PANEL * 2 - 1;
-            int c = at + FragmentLayout.CHANNEL;
-            double z = p[c + FragmentLayout.Z] * w;
-            double ndc;
-            if (camera.isPerspective()) {
-                double near = 1 / -camera.hither();
-                double far = 1 / -camera.yon();
-                ndc = 1 - 2 * (q - far) / (near - far);
-            } else {
-                ndc = 1 - 2 * (z - camera.yon()) / (camera.hither() - camera.yon());
-            }
-            out.add(x * w, y * w, ndc * w, w);
-            out.add(z, p[c + FragmentLayout.R] * w, p[c + FragmentLayout.G] * w, p[c + FragmentLayout.B] * w);
-            if (channels == FragmentLayout.PHONG_CHANNELS) {
-                out.add(p[c + FragmentLayout.PX] * w, p[c + FragmentLayout.PY] * w, p[c + FragmentLayout.NX] * w,
-                        p[c + FragmentLayout.NY] * w);
-                out.add(p[c + FragmentLayout.NZ] * w);
-            } else {
-                out.add(0, 0, 0, 0);
-                out.add(0);
-            }
+        boolean isEmpty() {
+            return groupVertices.isEmpty();
         }
 
-        @Override
-        public boolean drawing(int index) {
-            return true;
+        FloatList vertices() {
+            return groupVertices.get(groupVertices.size() - 1);
+        }
+
+        /** Every later A2 vertex is given this colour (null: its own). */
+        void colour(Rgb every) {
+            colour = every;
+        }
+
+        void triangle(Vertex a, Vertex b, Vertex c) {
+            panelVertex(a);
+            panelVertex(b);
+            panelVertex(c);
+            triangles++;
+        }
+
+        void segment(Vertex a, Vertex b) {
+            panelVertex(a);
+            panelVertex(b);
+            lines++;
+        }
+
+        /** An A2 vertex: panel x and y, world z (the parallel view's depth), its colour. */
+        private void panelVertex(Vertex v) {
+            double x = v.x() / PageCanvas.PANEL * 2 - 1;
+            double y = v.y() / PageCanvas.PANEL * 2 - 1;
+            FloatList out = vertices();
+            out.add(x, y, depth(Camera.PARALLEL, 1, v.z()), 1);
+            if (colour == null) {
+                out.add(v.z(), v.r(), v.g(), v.b());
+            } else {
+                out.add(v.z(), colour.r(), colour.g(), colour.b());
+            }
+            out.add(0, 0, 0, 0);
+            out.add(0);
         }
 
         void write(Path file) throws IOException {
@@ -303,10 +412,145 @@ public final class LlvmpipeExport {
         }
     }
 
+    /** Follows a depth-cued scene's primitives as its geometry stage hands them to the painter, in drawing order. */
+    private static final class CuedTrace implements PrimitiveTrace {
+        private final Export export;
+        private final float[] uniforms;
+        private final Vertex[] corners = new Vertex[3];
+        private int lastMode = -1;
+
+        CuedTrace(Export export, float[] uniforms) {
+            this.export = export;
+            this.uniforms = uniforms;
+        }
+
+        @Override
+        public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
+            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
+                export.skipped++;
+                return;
+            }
+            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
+            if (mode != lastMode) {
+                lastMode = mode;
+                export.group(uniforms, mode);
+            }
+            for (int k = 0; k < vertices; k++) {
+                corners[k] = Vertex.readFrom(p, at + k * stride);
+            }
+            if (kind == Painter.FILLED) {
+                export.triangle(corners[0], corners[1], corners[2]);
+            } else {
+                int segments = kind == Painter.LINE ? 1 : vertices;
+                for (int k = 0; k < segments; k++) {
+                    export.segment(corners[k], corners[(k + 1) % vertices]);
+                }
+            }
+        }
+
+        @Override
+        public boolean drawing(int index) {
+            return true;
+        }
+    }
+
+    /** Follows a lit scene's primitives as they reach the rasterizers, in drawing order. */
+    private static final class LitTrace implements PrimitiveTrace {
+        private final Export export;
+        /** The client whose primitives are followed: its lit state is the one in force for each. */
+        SimpClient client;
+        private Fog lastFog;
+        private int lastVersion = -1;
+        private boolean lastPhong;
+        private int lastMode;
+
+        LitTrace(Export export) {
+            this.export = export;
+        }
+
+        @Override
+        public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
+            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
+                export.skipped++;
+                return;
+            }
+            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
+            LitState state = client.litState();
+            int channels = stride - FragmentLayout.CHANNEL;
+            boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
+            if (export.isEmpty() || state.fog() != lastFog || state.lightingVersion() != lastVersion
+                    || phong != lastPhong || mode != lastMode) {
+                lastFog = state.fog();
+                lastVersion = state.lightingVersion();
+                lastPhong = phong;
+                lastMode = mode;
+                export.group(uniforms(state, phong), mode);
+            }
+            FloatList v = export.vertices();
+            Camera camera = state.camera();
+            if (kind == Painter.FILLED) {
+                for (int k = 1; k + 1 < vertices; k++) {
+                    vertex(v, camera, p, at, stride, channels);
+                    vertex(v, camera, p, at + k * stride, stride, channels);
+                    vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
+                    export.triangles++;
+                }
+            } else {
+                // A line's one segment, or each edge of an outline, as simpview draws them.
+                int segments = kind == Painter.LINE ? 1 : vertices;
+                for (int k = 0; k < segments; k++) {
+                    vertex(v, camera, p, at + k * stride, stride, channels);
+                    vertex(v, camera, p, at + ((k + 1) % vertices) * stride, stride, channels);
+                    export.lines++;
+                }
+            }
+        }
+
+        private static void vertex(FloatList out, Camera camera, double[] p, int at, int stride, int channels) {
+            double q = p[at + FragmentLayout.Q];
+            double w = 1 / q;
+            double x = p[at + FragmentLayout.X] / PageCanvas.PANEL * 2 - 1;
+            double y = p[at + FragmentLayout.Y] / PageCanvas.PANEL * 2 - 1;
+            int c = at + FragmentLayout.CHANNEL;
+            double z = p[c + FragmentLayout.Z] * w;
+            out.add(x * w, y * w, depth(camera, q, z) * w, w);
+            out.add(z, p[c + FragmentLayout.R] * w, p[c + FragmentLayout.G] * w, p[c + FragmentLayout.B] * w);
+            if (channels == FragmentLayout.PHONG_CHANNELS) {
+                out.add(p[c + FragmentLayout.PX] * w, p[c + FragmentLayout.PY] * w, p[c + FragmentLayout.NX] * w,
+                        p[c + FragmentLayout.NY] * w);
+                out.add(p[c + FragmentLayout.NZ] * w);
+            } else {
+                out.add(0, 0, 0, 0);
+                out.add(0);
+            }
+        }
+
+        @Override
+        public boolean drawing(int index) {
+            return true;
+        }
+    }
+
     /**
-     * The uniforms of a group: phong (1 or 0), fog on (1 or 0), fog near,
-     * far, r, g, b, ambient r, g, b, ks, p, perspective, lights; then from 16,
-     * 8 floats per light (camera-space x, y, z, intensity r, g, b, A, B).
+     * OpenGL's depth of a vertex, -1 on the near plane and 1 on the far one:
+     * from q (1 / w) in perspective, as simpview's depth test orders the
+     * pixels there, from camera z in the parallel view (A2's, q 1).
+     */
+    private static double depth(Camera camera, double q, double z) {
+        if (camera.isPerspective()) {
+            double near = 1 / -camera.hither();
+            double far = 1 / -camera.yon();
+            return 1 - 2 * (q - far) / (near - far);
+        }
+        return 1 - 2 * (z - camera.yon()) / (camera.hither() - camera.yon());
+    }
+
+    /**
+     * The uniforms of a lit group: phong (1 or 0), fog on (1 or 0), fog
+     * near, far, r, g, b, ambient r, g, b, ks, p, perspective, lights, then
+     * u[14] 0 (depth-tested; 1 draws with no depth test, A2's pages 1 and 2:
+     * {@link #cued}); from 16, 8 floats per light (camera-space x, y, z,
+     * intensity r, g, b, A, B).
      */
     static float[] uniforms(LitState state, boolean phong) {
         float[] u = new float[UNIFORMS];

@@ -26,6 +26,11 @@ public final class MeshPage implements Page {
         return new MeshPage(true);
     }
 
+    /** True for page 2's filled mesh, false for page 1's wireframe. */
+    public boolean isFilled() {
+        return filled;
+    }
+
     @Override
     public String title() {
         return filled ? "Filled mesh (blerp)" : "Wireframe mesh (lerp)";
