@@ -30,11 +30,15 @@ import simpview.surface.DrawingThreads;
  * window does. Its .simp files and .obj models are read once in the set-up
  * and kept by its {@code SceneLibrary} (as the window keeps them while their
  * files are unchanged), so one op is the warm redraw. Sampled, in ms.
+ * Warmed for 8 s: with {@code -p threads=2} a page settles only after
+ * 5-9 s (both cores draw while C2 compiles; A4 page-d's warm-up iterations
+ * 7.2, 3.3, 3.0, 2.9, 2.9, 2.8, 2.7, 2.7, 2.6, 2.6 ms, session 24), one
+ * thread after 2-4.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.SampleTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
-@Warmup(iterations = 3, time = 1)
+@Warmup(iterations = 8, time = 1)
 @Measurement(iterations = 4, time = 1)
 @Fork(1)
 public class LitPages {
