@@ -350,6 +350,22 @@ public final class LlvmpipeExport {
         int lines;
         int skipped;
 
+        /**
+         * How a primitive of this kind is drawn: filled polygons as
+         * triangles, lines and wire outlines as segments; -1, counted as
+         * skipped, for any other kind.
+         */
+        int modeOf(int kind) {
+            if (kind == Painter.FILLED) {
+                return TRIANGLES;
+            }
+            if (kind == Painter.LINE || kind == Painter.WIRE) {
+                return SEGMENTS;
+            }
+            skipped++;
+            return -1;
+        }
+
         /** From now on the primitives go to a new group: these uniforms, triangles or segments. */
         void group(float[] uniforms, int mode) {
             groupUniforms.add(uniforms);
@@ -426,11 +442,10 @@ public final class LlvmpipeExport {
 
         @Override
         public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
-            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
-                export.skipped++;
+            int mode = export.modeOf(kind);
+            if (mode < 0) {
                 return;
             }
-            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
             if (mode != lastMode) {
                 lastMode = mode;
                 export.group(uniforms, mode);
@@ -470,11 +485,10 @@ public final class LlvmpipeExport {
 
         @Override
         public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
-            if (kind != Painter.FILLED && kind != Painter.LINE && kind != Painter.WIRE) {
-                export.skipped++;
+            int mode = export.modeOf(kind);
+            if (mode < 0) {
                 return;
             }
-            int mode = kind == Painter.FILLED ? TRIANGLES : SEGMENTS;
             LitState state = client.litState();
             int channels = stride - FragmentLayout.CHANNEL;
             boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
