@@ -17,6 +17,11 @@ pages=${*:-"a2/page1 a2/page2 a2/page3 a2/page4 a2/page5 a2/page6 a2/page7 a2/pa
  a3/pageA a3/pageB a3/pageC a3/pageD a3/pageE a3/pageF a3/pageG a3/pageH a3/pageI a3/tomsPageJ
  a4/page-a1 a4/page-a2 a4/page-a3 a4/page-b1 a4/page-b2 a4/page-b3 a4/page-c1 a4/page-c2 a4/page-c3
  a4/page-d a4/page-e a4/page-f1 a4/page-f2 a4/page-g a4/page-h"}
+python="$root/build/llvmpipe-venv/bin/python"
+if [ ! -x "$python" ]; then
+    echo "run.sh: no $python: run bench/llvmpipe/setup.sh first" >&2
+    exit 2
+fi
 out="$root/build/llvmpipe"
 mkdir -p "$out"
 (cd "$root" && gradle --no-daemon -q jmhClasses drawingJvmOptions)
@@ -28,7 +33,7 @@ echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 jvm=$(cat "$root/build/drawing-jvm-options.txt")
 cd "$root" # A2's pages 4 and 5 are the project's own scenes, in simp/
 for p in $pages; do
-    java $jvm -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$root/build/llvmpipe-venv/bin/python" \
+    java $jvm -cp "$cp" simpview.bench.LlvmpipeExport "$course" "$out" "$python" \
         "$here/draw.py" "$p" >> "$out/times.txt"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
