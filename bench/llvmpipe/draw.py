@@ -6,8 +6,9 @@ drawing order by how they are lit and by which of the two they are)
 through Mesa's llvmpipe, headless (OSMesa, a 4.5 core context), with
 simpview's lighting formula, fog (A2's depth cue is one) and depth test in
 GLSL, per pixel; a group whose u[14] is 1 (A2's pages 1 and 2, which
-simpview draws on the panel itself) with no depth test. Warm: the triangles are uploaded and the shaders compiled first,
-and 3 s of redraws (at least 20) run; then it prints "ready".
+simpview draws on the panel itself) with no depth test. Warm: the
+triangles are uploaded and the shaders compiled first, and 3 s of redraws
+(at least 20) run; then it prints "ready".
 
 Then it takes turns with simpview, which started it: for each line "turn"
 read from stdin, one redraw untimed and TIMED_IN_A_TURN timed (clear colour
