@@ -344,7 +344,7 @@ public final class LlvmpipeExport {
         private final List<float[]> groupUniforms = new ArrayList<>();
         private final List<Integer> groupModes = new ArrayList<>();
         private final List<FloatList> groupVertices = new ArrayList<>();
-        /** The colour every vertex of the group at hand is given (a cued A2 scene's near colour), or null: its own. */
+        /** The colour every A2 vertex is given from now on (a cued scene's near colour), or null: its own. */
         private Rgb colour;
         int triangles;
         int lines;
