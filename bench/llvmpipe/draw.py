@@ -183,11 +183,14 @@ def main():
     firsts = np.cumsum([0] + counts[:-1]).tolist()
     # Strictly nearer wins, as simpview's z-buffer; or every fragment, in drawing order.
     tests = [GL.GL_ALWAYS if u[14] > 0.5 else GL.GL_LESS for u in uniforms]
+    depth_test = [None]  # the one in force: set only where it changes, so a page of one costs no call a redraw
 
     def redraw():
         GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT)
         for u, test, mode, first, count in zip(uniforms, tests, modes, firsts, counts):
-            GL.glDepthFunc(test)
+            if test != depth_test[0]:
+                GL.glDepthFunc(test)
+                depth_test[0] = test
             GL.glUniform1fv(where, UNIFORMS, u)
             GL.glDrawArrays(mode, first, count)
         GL.glFinish()
