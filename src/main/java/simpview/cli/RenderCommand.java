@@ -43,7 +43,8 @@ import simpview.surface.DrawingThreads;
             "  simpview render --scene house.simp --own-colors --out house.png",
             "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
             "  simpview render --contact-sheet --out docs/pages.png",
-            "  simpview render --contact-sheet --out lit.png simp/lit-shading.simp simp/lit-lights.simp"},
+            "  simpview render --contact-sheet --out lit.png \\",
+            "      simp/lit-shading.simp simp/lit-lights.simp"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
 public final class RenderCommand implements Callable<Integer> {
