@@ -62,6 +62,22 @@ public class LitCommandLineTest {
     }
 
     @Test
+    void anErrorInAModelNamesTheLinesThatReadIt() throws IOException {
+        Files.writeString(dir.resolve("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 5\n");
+        scene("figure", "# the model", "obj \"bad\"");
+        Path page = scene("page", "ambient 1 1 1", "{", "  file \"figure\"", "}");
+        CliRun run = CliRun.of("render", "--scene", page.toString(), "--out", dir.resolve("x.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertTrue(run.err().startsWith(dir.resolve("bad.obj") + ":3:7, included from figure.simp:2, included from "
+                + "page.simp:3: vertex index 5 names nothing"), run.err());
+        Path alone = scene("alone", "ambient 1 1 1", "obj \"bad\"");
+        CliRun direct = CliRun.of("render", "--scene", alone.toString(), "--out", dir.resolve("x.png").toString());
+        assertTrue(direct.err().startsWith(dir.resolve("bad.obj") + ":3:7, included from alone.simp:2: "),
+                direct.err());
+        assertTrue(!run.showsStackTrace() && !Files.exists(dir.resolve("x.png")), run.err());
+    }
+
+    @Test
     void aListThatNamesNoSceneIsAUsageError() {
         CliRun run = CliRun.of("render", "--scenes", dir.resolve("nothing").toString(), "--out-dir", dir.toString());
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode());

@@ -118,14 +118,20 @@ final class FileStack implements AutoCloseable {
 
     /**
      * {@code e}, an error met while reading the top file, saying which lines
-     * included that file: "cube.simp:3:1, included from page4.simp:12".
+     * included that file: "cube.simp:3:1, included from page4.simp:12". An
+     * error in another file (an {@code obj} command's model) names the top
+     * file's line that read it too: "bad.obj:3:7, included from page-d.simp:20".
      */
     SceneException placed(SceneException e) {
-        if (readers.size() < 2 || !top().file().equals(e.file())) {
+        if (readers.isEmpty() || e.file() == null) {
+            return e;
+        }
+        int innermost = top().file().equals(e.file()) ? readers.size() - 2 : readers.size() - 1;
+        if (innermost < 0) {
             return e;
         }
         StringBuilder chain = new StringBuilder();
-        for (int k = readers.size() - 2; k >= 0; k--) {
+        for (int k = innermost; k >= 0; k--) {
             SimpReader including = readers.get(k);
             chain.append(chain.length() == 0 ? "" : ", included from ")
                     .append(including.file().getFileName()).append(':').append(including.lineNumber());
