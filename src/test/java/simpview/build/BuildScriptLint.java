@@ -41,6 +41,8 @@ final class BuildScriptLint {
             GradleRule.removed("jcenter()", "\\bjcenter\\s*\\(", "9.0", "mavenCentral()"),
             GradleRule.removed("the Convention API (project.convention)", "\\bconvention\\b", "9.0",
                     "the extension (application { }, java { }, base { })"),
+            GradleRule.removed("Project.buildDir (deprecated from 8.3: every build warns)", "\\bbuildDir\\b", "8.3",
+                    "project.layout.buildDirectory (Gradle 4.3+)"),
             GradleRule.removed("CopySpec fileMode and dirMode", "\\b(fileMode|dirMode)\\b", "9.0",
                     "filePermissions, dirPermissions (Gradle 8.3+)"),
             GradleRule.convention("a convention property set at the top of the script",

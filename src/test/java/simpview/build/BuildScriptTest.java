@@ -25,6 +25,8 @@ import org.junit.jupiter.api.Test;
  */
 class BuildScriptTest {
 
+    private static final String BUILD_DIR = "Project.buildDir (deprecated from 8.3: every build warns)";
+
     @Test
     void theBuildFileUsesOnlyWhatEverySupportedGradleHas() throws IOException {
         Path file = Path.of(System.getProperty("simpview.projectDir", ".")).resolve("build.gradle");
@@ -51,11 +53,15 @@ class BuildScriptTest {
                 "63 a source set's <name>Compile or <name>Runtime configuration",
                 "65 a source set's <name>Compile or <name>Runtime configuration",
                 "67 a source set's <name>Compile or <name>Runtime configuration",
+                "71 " + BUILD_DIR,
                 // line 92 sets the console launcher's main only where Gradle is below 4.6: allowed
                 "118 JavaExec's main",
                 "129 JavaExec's main",
+                "132 " + BUILD_DIR,
+                "133 " + BUILD_DIR,
                 "144 Project.exec and Project.javaexec",
                 "146 JavaExec's main",
+                "147 " + BUILD_DIR,
                 "152 a convention property set at the top of the script"));
         assertEquals(expected, found, findings.stream().map(Object::toString).collect(Collectors.joining("\n")));
     }
@@ -101,6 +107,17 @@ class BuildScriptTest {
         assertEquals(List.of("1 archiveFileName and the other archive properties",
                 "1 lazy task configuration (tasks.register, tasks.named, configureEach)",
                 "2 annotation processor configurations", "3 useJUnitPlatform()"), found);
+    }
+
+    @Test
+    void aDoubleQuotedStringsInterpolationsAreCode() {
+        String script = """
+                args "$buildDir/big"
+                args "${buildDir}/big", "x"
+                args '$buildDir/big', "buildDir", "\\$buildDir", "$version-${project.name}"
+                """;
+        List<String> found = BuildScriptLint.check(script).stream().map(f -> f.line() + " " + f.construct()).toList();
+        assertEquals(List.of("1 " + BUILD_DIR, "2 " + BUILD_DIR), found);
     }
 
     @Test

@@ -15,7 +15,11 @@ final class GroovyText {
         return blank(s, true, false);
     }
 
-    /** The script with the characters inside quotes turned into spaces. */
+    /**
+     * The script with the characters inside quotes turned into spaces, but
+     * for a double-quoted string's interpolations ({@code $name.name},
+     * {@code ${...}}), which are code.
+     */
     static String withoutStrings(String s) {
         return blank(s, false, true);
     }
@@ -35,7 +39,13 @@ final class GroovyText {
                 int end = stringEnd(s, i);
                 int quote = s.startsWith(String.valueOf(c).repeat(3), i) ? 3 : 1;
                 if (strings) {
-                    spaces(out, i + quote, Math.max(i + quote, end - quote));
+                    int from = i + quote;
+                    int to = Math.max(from, end - quote);
+                    if (c == '"') {
+                        blankKeepingInterpolations(s, out, from, to);
+                    } else {
+                        spaces(out, from, to);
+                    }
                 }
                 i = end;
             } else {
@@ -72,6 +82,38 @@ final class GroovyText {
             }
         }
         return s.length();
+    }
+
+    /** Blanks s[from, to), a double-quoted string's inside, but for its interpolations. */
+    private static void blankKeepingInterpolations(String s, StringBuilder out, int from, int to) {
+        int i = from;
+        while (i < to) {
+            char c = s.charAt(i);
+            int kept = i;
+            if (c == '\\') {
+                i = Math.min(to, i + 2);
+            } else if (c == '$' && i + 1 < to && s.charAt(i + 1) == '{') {
+                int depth = 0;
+                while (i < to) {
+                    char d = s.charAt(i++);
+                    if (d == '{') {
+                        depth++;
+                    } else if (d == '}' && --depth == 0) {
+                        break;
+                    }
+                }
+                continue;
+            } else if (c == '$' && i + 1 < to && Character.isJavaIdentifierStart(s.charAt(i + 1))) {
+                i++;
+                while (i < to && (Character.isJavaIdentifierPart(s.charAt(i)) || s.charAt(i) == '.')) {
+                    i++;
+                }
+                continue;
+            } else {
+                i++;
+            }
+            spaces(out, kept, i);
+        }
     }
 
     private static void spaces(StringBuilder out, int from, int to) {
