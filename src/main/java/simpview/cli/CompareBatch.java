@@ -557,14 +557,15 @@ public final class CompareBatch {
 
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
         RubricRule base = rubric.defaults();
-        String markdown = BatchTable.markdown(rows, base.tolerance(), base.minShare(), base.deviation(), base.metric(),
-                base.flipThreshold());
+        List<Map.Entry<String, Wanted>> missing = Wanted.missingBySubmission(wanted, rows);
+        String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
+                base.metric(), base.flipThreshold());
         Path outDir = outputs.outDir();
         try {
             if (outDir != null) {
                 Files.createDirectories(outDir);
                 Files.writeString(outDir.resolve(TABLE), markdown, StandardCharsets.UTF_8);
-                Files.writeString(outDir.resolve(CSV), BatchTable.csv(rows), StandardCharsets.UTF_8);
+                Files.writeString(outDir.resolve(CSV), BatchTable.csv(rows, missing), StandardCharsets.UTF_8);
             }
             if (outputs.gradescope() != null) {
                 write(outputs.gradescope(), GradescopeResults.json(rows, wanted, seconds));

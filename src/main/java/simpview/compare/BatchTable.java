@@ -1,8 +1,14 @@
 package simpview.compare;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
-/** A batch's rows as a Markdown table and as CSV, one row per submitted picture. */
+/**
+ * A batch's rows as a Markdown table and as CSV, one row per submitted
+ * picture, then one per page asked for that a submission has no picture of
+ * (result MISSING).
+ */
 public final class BatchTable {
 
     private static final String[] HEADINGS = {"file", "page", "identical", "within 1/255", "within 8/255",
@@ -18,12 +24,16 @@ public final class BatchTable {
 
     /** The table, its heading saying the tolerance, minimum and slack ({@code deviation} pixels) the rows are judged by. */
     public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation) {
-        return markdown(rows, tolerance, minimum, deviation, Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
+        return markdown(rows, List.of(), tolerance, minimum, deviation, Comparison.Metric.EXACT,
+                Comparison.FLIP_THRESHOLD);
     }
 
-    /** The same, judged by {@code metric}: with FLIP the judged share is that of pixels at most FLIP's threshold. */
-    public static String markdown(List<BatchRow> rows, int tolerance, double minimum, int deviation,
-            Comparison.Metric metric, double flipThreshold) {
+    /**
+     * The same with the pages each submission lacks ({@link Wanted#missingBySubmission}), judged by
+     * {@code metric}: with FLIP the judged share is that of pixels at most FLIP's threshold.
+     */
+    public static String markdown(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, int tolerance,
+            double minimum, int deviation, Comparison.Metric metric, double flipThreshold) {
         StringBuilder out = new StringBuilder();
         String slack = deviation == 0 ? "no slack" : deviation == 1 ? "one pixel of slack" : deviation + " pixels of slack";
         String judged = metric == Comparison.Metric.FLIP
@@ -47,29 +57,50 @@ public final class BatchTable {
             out.append(i >= 2 && i <= 8 ? "---:|" : "---|");
         }
         out.append('\n');
-        for (BatchRow row : rows) {
+        for (List<String> cells : lines(rows, missing, true)) {
             out.append('|');
-            for (String cell : cells(row, true)) {
+            for (String cell : cells) {
                 String oneLine = cell.replace("\r", "").replace("\n", " / ");
                 out.append(' ').append(oneLine.replace("|", "\\|")).append(" |");
             }
             out.append('\n');
         }
-        out.append('\n').append(summary(rows)).append('\n');
+        out.append('\n').append(summary(rows, missing)).append('\n');
         return out.toString();
     }
 
     public static String csv(List<BatchRow> rows) {
+        return csv(rows, List.of());
+    }
+
+    /** The same rows, and the pages each submission lacks, as CSV. */
+    public static String csv(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
         StringBuilder out = new StringBuilder();
         out.append(String.join(",", HEADINGS)).append("\r\n");
-        for (BatchRow row : rows) {
-            List<String> cells = cells(row, false);
+        for (List<String> cells : lines(rows, missing, false)) {
             for (int i = 0; i < cells.size(); i++) {
                 out.append(i == 0 ? "" : ",").append(quoted(cells.get(i)));
             }
             out.append("\r\n");
         }
         return out.toString();
+    }
+
+    /** The cells of every row, then of every page a submission lacks. */
+    private static List<List<String>> lines(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing,
+            boolean markdown) {
+        List<List<String>> lines = new ArrayList<>();
+        for (BatchRow row : rows) {
+            lines.add(cells(row, markdown));
+        }
+        for (Map.Entry<String, Wanted> lack : missing) {
+            String submission = lack.getKey();
+            String page = GradescopeResults.name(lack.getValue().target());
+            boolean named = !submission.isEmpty() && !submission.equals(JUnitResults.TOP);
+            lines.add(List.of(named ? submission + "/" : "", lack.getValue().target(), "", "", "", "", "", "", "",
+                    "MISSING", "", "", "no picture of " + page + (named ? " in " + submission : "") + " was found"));
+        }
+        return lines;
     }
 
     /** E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped". */
@@ -83,6 +114,12 @@ public final class BatchTable {
         String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + (files == 1 ? " picture)" : " pictures)");
         return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
                 what, counts[0], counts[1], counts[2], counts[3]);
+    }
+
+    /** The same, then how many pages asked for have no picture: "...; 3 pages asked for without a picture". */
+    public static String summary(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
+        return summary(rows) + (missing.isEmpty() ? ""
+                : "; " + missing.size() + (missing.size() == 1 ? " page" : " pages") + " asked for without a picture");
     }
 
     private static List<String> cells(BatchRow row, boolean markdown) {

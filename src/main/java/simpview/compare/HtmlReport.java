@@ -4,8 +4,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -40,23 +38,8 @@ public final class HtmlReport {
      */
     public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir) throws IOException {
         Files.createDirectories(htmlDir);
-        Files.writeString(htmlDir.resolve(INDEX), page(rows, missingBySubmission(wanted, rows), htmlDir, outDir),
+        Files.writeString(htmlDir.resolve(INDEX), page(rows, Wanted.missingBySubmission(wanted, rows), htmlDir, outDir),
                 StandardCharsets.UTF_8);
-    }
-
-    /** What each submission (first folder of the path) lacks, as (submission, page) pairs; all of it when there are no rows. */
-    static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows) {
-        Map<String, List<BatchRow>> bySubmission = new LinkedHashMap<>();
-        for (BatchRow row : rows) {
-            bySubmission.computeIfAbsent(JUnitResults.submission(row.file()), k -> new ArrayList<>()).add(row);
-        }
-        List<Map.Entry<String, Wanted>> missing = new ArrayList<>();
-        if (bySubmission.isEmpty()) {
-            wanted.forEach(w -> missing.add(Map.entry("", w)));
-        }
-        bySubmission.forEach((submission, its) ->
-                Wanted.missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w))));
-        return missing;
     }
 
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {
@@ -64,11 +47,8 @@ public final class HtmlReport {
         h.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows))).append("</title>\n")
                 .append("<style>\n").append(STYLE).append("</style>\n</head>\n<body>\n");
-        h.append("<h1>simpview compare</h1>\n<p id=\"summary\">").append(esc(BatchTable.summary(rows)));
-        if (!missing.isEmpty()) {
-            h.append("; ").append(missing.size()).append(" pages asked for without a picture");
-        }
-        h.append("</p>\n");
+        h.append("<h1>simpview compare</h1>\n<p id=\"summary\">").append(esc(BatchTable.summary(rows, missing)))
+                .append("</p>\n");
         legend(h);
         table(h, rows, missing);
         h.append("<p class=\"hint\">Click a column's heading to sort by it (again: the other way); "

@@ -54,7 +54,9 @@ public class CompareBatchTest {
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "a failing and a broken picture: " + run.err());
         assertFalse(run.showsStackTrace(), run.err());
         List<String> rows = csvRows(out);
-        assertEquals(5, rows.size(), "a heading and one row per picture: " + rows);
+        // a heading, one row per picture, then one per page of --pages each submission lacks: bob (his
+        // folder) has only page 2, the top folder pages 1, 3 and 10
+        assertEquals(5 + 7 + 6, rows.size(), "a heading, one row per picture, one per page lacking: " + rows);
         assertTrue(rows.get(0).startsWith("file,page,identical,within 1/255,within 8/255,identical (slack)"), rows.get(0));
         assertTrue(rows.get(1).startsWith("bob/Page_2.png,2 (seed 361),"), rows.get(1));
         assertTrue(rows.get(1).contains(",FAIL,white,diffs/bob_Page_2-diff.png,"), rows.get(1));
@@ -63,6 +65,11 @@ public class CompareBatchTest {
         assertTrue(rows.get(3).startsWith("page3.png,3 (seed 361),,,,,,,,ERROR,,,"), rows.get(3));
         assertTrue(rows.get(3).contains("page3.png: cannot be read as a picture, it is damaged or cut short"), rows.get(3));
         assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
+        assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(5));
+        assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(11));
+        assertEquals(",2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) was found", rows.get(12));
+        assertEquals(",4,,,,,,,,MISSING,,,no picture of page 4 was found", rows.get(13));
+        assertTrue(rows.subList(5, 18).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());
         assertTrue(Files.isRegularFile(out.resolve("diffs/page1-diff.png")));
@@ -71,7 +78,10 @@ public class CompareBatchTest {
         assertEquals(table, run.out().substring(0, table.length()), "the table is printed too");
         assertTrue(table.contains("| page1.png | 1 (seed 361) | 100.00 |"), table);
         assertTrue(table.contains("[diff](diffs/bob_Page_2-diff.png)"), table);
-        assertTrue(table.contains("4 pictures: 1 pass, 1 fail, 1 could not be compared, 1 skipped"), table);
+        assertTrue(table.contains("4 pictures: 1 pass, 1 fail, 1 could not be compared, 1 skipped; "
+                + "13 pages asked for without a picture"), table);
+        assertTrue(table.contains("| bob/ | 7 |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 7 in bob was found |"),
+                table);
         assertTrue(run.err().contains("/4] page1.png: PASS 100.00 %"), run.err());
         assertTrue(run.err().contains("/4] page3.png: ERROR: "), run.err());
     }
@@ -124,6 +134,31 @@ public class CompareBatchTest {
         assertEquals(4, against.size());
         assertTrue(against.stream().skip(1).allMatch(r -> r.contains(",tri.simp,")), against.toString());
         assertTrue(against.get(3).contains(",PASS,"), against.toString());
+    }
+
+    @Test
+    void aSceneOneSubmissionHandedInAndAnotherDidNotIsAMissingRow() throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Path tri = Files.writeString(scenes.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        Path bar = Files.writeString(scenes.resolve("bar.simp"), "polygon (-90,-10,-5) (90,-10,-5) (90,10,-5)\n");
+        Path class_ = dir.resolve("class");
+        for (String who : new String[] {"alice", "bob"}) {
+            Path picture = Files.createDirectories(class_.resolve(who)).resolve("tri.png");
+            assertEquals(ExitCode.OK, CliRun.of("render", "--scene", tri.toString(), "--out", picture.toString()).exitCode());
+        }
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", bar.toString(), "--out",
+                class_.resolve("alice/bar.png").toString()).exitCode());
+        Path out = dir.resolve("out");
+
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
+                out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), "every picture handed in passes: " + run.err());
+        List<String> rows = csvRows(out);
+        assertEquals(List.of("alice/bar.png", "alice/tri.png", "bob/tri.png", "bob/"),
+                rows.stream().skip(1).map(r -> r.substring(0, r.indexOf(','))).toList(), rows.toString());
+        assertEquals("bob/,bar.simp,,,,,,,,MISSING,,,no picture of bar.simp in bob was found", rows.get(4));
+        assertTrue(run.out().contains("3 pictures: 3 pass, 0 fail, 0 could not be compared, 0 skipped; "
+                + "1 page asked for without a picture"), run.out());
     }
 
     @Test

@@ -90,7 +90,9 @@ class FirstAssignmentBatchTest {
                 + "(alternating DDA / Bresenham))"), run.err());
 
         List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
-        assertEquals(1 + 8, csv.size(), String.join("\n", csv));
+        // a heading, the two pictures' eight panels, and each of --pages 1-8 that alice and bob lack
+        assertEquals(1 + 8 + 2 * 8, csv.size(), String.join("\n", csv));
+        assertTrue(csv.subList(9, 25).stream().allMatch(r -> r.contains(",MISSING,")), String.join("\n", csv));
         for (int k = 1; k <= 4; k++) {
             String alice = csv.get(k);
             String bob = csv.get(4 + k);
