@@ -45,7 +45,7 @@ public final class HtmlReport {
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
-                .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows))).append("</title>\n")
+                .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows, missing))).append("</title>\n")
                 .append("<style>\n").append(STYLE).append("</style>\n</head>\n<body>\n");
         h.append("<h1>simpview compare</h1>\n<p id=\"summary\">").append(esc(BatchTable.summary(rows, missing)))
                 .append("</p>\n");
