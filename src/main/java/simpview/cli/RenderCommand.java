@@ -41,6 +41,7 @@ import simpview.surface.DrawingThreads;
             "  simpview render --assignment 1 --all --seed 7 --out-dir a1/",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
             "  simpview render --scene house.simp --own-colors --out house.png",
+            "  simpview render --scene house.simp --out-dir pictures/",
             "  simpview render --scenes ../shared/course-simp-a3 --out-dir a3/",
             "  simpview render --contact-sheet --out docs/pages.png",
             "  simpview render --contact-sheet --out lit.png \\",
@@ -92,7 +93,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "F.png", description = "the PNG to write (--page, --scene, --contact-sheet)")
     private Path out;
 
-    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write to (--all: page1.png ... page8.png; --scenes: NAME.png)")
+    @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write to (--all: page1.png ... page8.png; --page N: pageN.png; "
+            + "--scene and --scenes: NAME.png)")
     private Path outDir;
 
     @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
@@ -163,12 +165,18 @@ public final class RenderCommand implements Callable<Integer> {
         int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
         usage(what.page == null || what.page >= 1 && what.page <= count,
                 "--page must be 1 to " + count + (firstAssignment() ? " for the first assignment" : "") + ", not " + what.page);
-        usage(what.all ? outDir != null : out != null,
-                what.all ? "--all needs --out-dir D" : "missing --out F.png");
-        usage(what.all ? out == null : outDir == null,
-                what.all ? "--all writes eight files: use --out-dir, not --out" : "--out-dir goes with --all only");
+        boolean oneFile = what.page != null || what.scene != null; // --out F.png, or --out-dir D and its name
+        usage(what.all ? outDir != null : out != null || oneFile && outDir != null,
+                what.all ? "--all needs --out-dir D" : oneFile ? "missing --out F.png (or --out-dir D)" : "missing --out F.png");
+        usage(what.all ? out == null : oneFile ? out == null || outDir == null : outDir == null,
+                what.all ? "--all writes eight files: use --out-dir, not --out"
+                        : oneFile ? "give --out F.png or --out-dir D, not both" : "--contact-sheet writes one file: use --out, not --out-dir");
         usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
+        if (oneFile && out == null) {
+            out = outDir.resolve(what.scene != null ? SceneList.pictureName(what.scene)
+                    : (firstAssignment() ? "a1-page" : "page") + what.page + ".png");
+        }
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
         usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");

@@ -14,6 +14,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -102,7 +103,8 @@ public class MainCommandLineTest {
         "render --page two --out x.png",
         "render --all --out x.png",
         "render --all --page 2 --out-dir d",
-        "render --page 2 --out-dir d",
+        "render --page 2 --out x.png --out-dir d",
+        "render --contact-sheet --out-dir d",
         "render --page 2 --near-color 0,1,0 --out x.png",
         "render --scene a.simp --seed 3 --out x.png",
         "render --scene a.simp --near-color 1,2 --out x.png",
@@ -205,6 +207,25 @@ public class MainCommandLineTest {
         CliRun intoFolder = CliRun.of("render", "--page", "1", "--out", dir.toString());
         assertEquals(ExitCode.SCENE_ERROR, intoFolder.exitCode());
         assertTrue(intoFolder.err().contains("cannot write " + dir), intoFolder.err());
+    }
+
+    @Test
+    void aPageOrASceneGivenAFolderIsWrittenThereUnderItsName() throws Exception {
+        Path folder = dir.resolve("pictures");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "2", "--seed", "7", "--out-dir", folder.toString())
+                .exitCode());
+        BufferedImage expected = new PageRenderer().renderImage(2, PageContext.defaults().withSeed(7));
+        assertEquals(0, Images.differingPixels(expected, ImageIO.read(folder.resolve("page2.png").toFile())));
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "3", "--out-dir",
+                folder.toString()).exitCode());
+        assertTrue(Files.isRegularFile(folder.resolve("a1-page3.png")));
+        Path scene = Files.writeString(dir.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        CliRun run = CliRun.of("render", "--scene", scene.toString(), "--out-dir", folder.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        try (var files = Files.list(folder)) {
+            assertEquals(List.of("a1-page3.png", "page2.png", "tri.png"),
+                    files.map(f -> f.getFileName().toString()).sorted().toList());
+        }
     }
 
     @Test
