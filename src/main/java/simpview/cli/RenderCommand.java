@@ -165,12 +165,19 @@ public final class RenderCommand implements Callable<Integer> {
         int count = firstAssignment() ? Assignment1.COUNT : Assignment2.COUNT;
         usage(what.page == null || what.page >= 1 && what.page <= count,
                 "--page must be 1 to " + count + (firstAssignment() ? " for the first assignment" : "") + ", not " + what.page);
-        boolean oneFile = what.page != null || what.scene != null; // --out F.png, or --out-dir D and its name
-        usage(what.all ? outDir != null : out != null || oneFile && outDir != null,
-                what.all ? "--all needs --out-dir D" : oneFile ? "missing --out F.png (or --out-dir D)" : "missing --out F.png");
-        usage(what.all ? out == null : oneFile ? out == null || outDir == null : outDir == null,
-                what.all ? "--all writes eight files: use --out-dir, not --out"
-                        : oneFile ? "give --out F.png or --out-dir D, not both" : "--contact-sheet writes one file: use --out, not --out-dir");
+        // --all writes into --out-dir; --page and --scene write --out, or into --out-dir under their own
+        // name; a contact sheet writes --out.
+        boolean oneFile = what.page != null || what.scene != null;
+        if (what.all) {
+            usage(out == null, "--all writes eight files: use --out-dir D, not --out");
+            usage(outDir != null, "--all needs --out-dir D");
+        } else if (oneFile) {
+            usage(out != null || outDir != null, "missing --out F.png (or --out-dir D)");
+            usage(out == null || outDir == null, "give --out F.png or --out-dir D, not both");
+        } else {
+            usage(outDir == null, "--contact-sheet writes one file: use --out F.png, not --out-dir");
+            usage(out != null, "missing --out F.png");
+        }
         usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         if (oneFile && out == null) {

@@ -19,6 +19,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
@@ -207,6 +208,20 @@ public class MainCommandLineTest {
         CliRun intoFolder = CliRun.of("render", "--page", "1", "--out", dir.toString());
         assertEquals(ExitCode.SCENE_ERROR, intoFolder.exitCode());
         assertTrue(intoFolder.err().contains("cannot write " + dir), intoFolder.err());
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "render --all --out x.png | --all writes eight files: use --out-dir D, not --out",
+        "render --all | --all needs --out-dir D",
+        "render --page 2 | missing --out F.png (or --out-dir D)",
+        "render --scene a.simp --out x.png --out-dir d | give --out F.png or --out-dir D, not both",
+        "render --contact-sheet --out-dir d | --contact-sheet writes one file: use --out F.png, not --out-dir",
+        "render --contact-sheet | missing --out F.png"})
+    void aMisplacedOutputSaysWhereItGoes(String line, String message) {
+        CliRun run = CliRun.of(line.split(" "));
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertEquals("simpview: " + message, run.err().lines().findFirst().orElse(""), run.err());
     }
 
     @Test
