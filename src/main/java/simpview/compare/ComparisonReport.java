@@ -103,9 +103,13 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                     : "no pixel differs by more than " + tolerance + "/255 with slack\n");
             return;
         }
-        out.append(String.format("%,d pixels in %,d patches %s; the largest%n"
-                + "(panel pixels: origin bottom-left, x right, y up):%n", regions.pixels(), regions.count(),
-                flip() ? "have a FLIP value above the threshold" : "differ by more than " + tolerance + "/255 even with slack"));
+        boolean onePixel = regions.pixels() == 1;
+        boolean onePatch = regions.count() == 1;
+        String what = flip() ? (onePixel ? "has" : "have") + " a FLIP value above the threshold"
+                : (onePixel ? "differs" : "differ") + " by more than " + tolerance + "/255 even with slack";
+        out.append(String.format("%,d %s in %,d %s %s%s%n(panel pixels: origin bottom-left, x right, y up):%n",
+                regions.pixels(), onePixel ? "pixel" : "pixels", regions.count(), onePatch ? "patch" : "patches", what,
+                onePatch ? "" : "; the largest"));
         for (int k = 0; k < largest.size(); k++) {
             out.append("  ").append(k + 1).append(". ").append(largest.get(k).describe()).append('\n');
         }

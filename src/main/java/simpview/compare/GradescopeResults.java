@@ -99,9 +99,11 @@ public final class GradescopeResults {
         if (row.regions().isEmpty()) {
             out.append("no region differs beyond the tolerance\n");
         } else {
-            out.append(String.format(Locale.ROOT, "%,d pixels " + (rule.metric() == Comparison.Metric.FLIP
-                    ? "are above FLIP's threshold" : "differ beyond the tolerance") + "; the largest regions "
-                    + "(panel pixels, origin bottom-left, y up):%n", row.failing()));
+            boolean one = row.failing() == 1;
+            out.append(String.format(Locale.ROOT, "%,d %s " + (rule.metric() == Comparison.Metric.FLIP
+                    ? (one ? "is" : "are") + " above FLIP's threshold" : (one ? "differs" : "differ") + " beyond the tolerance")
+                    + "; the largest regions (panel pixels, origin bottom-left, y up):%n", row.failing(),
+                    one ? "pixel" : "pixels"));
             for (DiffRegion region : row.regions()) {
                 out.append("  ").append(region.describe()).append('\n');
             }

@@ -122,9 +122,24 @@ public class CompareCommandTest {
         CliRun pass = CliRun.of("compare", file.toString(), "--page", "3");
         assertEquals(ExitCode.OK, pass.exitCode(), "4,000 of 422,500 pixels off is above 99 %: " + pass.out());
         assertTrue(pass.out().contains("  1. x 200-299, y 500-539 (100x40): 4,000 pixels"), pass.out());
+        assertTrue(pass.out().contains("4,000 pixels in 1 patch differ by more than 8/255 even with slack\n"), pass.out());
         CliRun fail = CliRun.of("compare", file.toString(), "--page", "3", "--min", "99.5%");
         assertEquals(ExitCode.SCENE_ERROR, fail.exitCode());
         assertTrue(fail.out().contains("FAIL: 99.05 % within 8/255 with slack (99.50 % needed)"), fail.out());
+    }
+
+    @Test
+    void oneLonePixelOffIsOnePixelInOnePatch() throws Exception {
+        BufferedImage page = page(3);
+        page.setRGB(50 + 10, 699 - 20, 0xFF00FF);
+        page.setRGB(50 + 600, 699 - 610, 0xFF00FF);
+        CliRun one = CliRun.of("compare", png("one.png", page).toString(), "--page", "3");
+        assertTrue(one.out().contains("2 pixels in 2 patches differ by more than 8/255 even with slack; the largest\n"),
+                one.out());
+        assertTrue(one.out().contains(". x 10-10, y 20-20 (1x1): 1 pixel\n"), one.out());
+        page.setRGB(50 + 600, 699 - 610, page(3).getRGB(50 + 600, 699 - 610));
+        CliRun alone = CliRun.of("compare", png("alone.png", page).toString(), "--page", "3");
+        assertTrue(alone.out().contains("1 pixel in 1 patch differs by more than 8/255 even with slack\n"), alone.out());
     }
 
     @Test
