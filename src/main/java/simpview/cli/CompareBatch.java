@@ -219,7 +219,7 @@ public final class CompareBatch {
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, outputs.outDir(),
                 outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
-        err.printf(Locale.ROOT, "%d pictures in %.2f s%n", pictures.size(), seconds);
+        err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
         // shows who lacks a page that others handed in).
         java.util.LinkedHashSet<CompareTarget> all = new java.util.LinkedHashSet<>(wanted);

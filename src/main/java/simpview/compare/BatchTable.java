@@ -111,15 +111,15 @@ public final class BatchTable {
         }
         long files = rows.stream().map(BatchRow::file).distinct().count();
         // a page of the first assignment is a row per panel
-        String what = files == rows.size() ? rows.size() + " pictures" : rows.size() + " rows (" + files + (files == 1 ? " picture)" : " pictures)");
+        String what = files == rows.size() ? Count.of(rows.size(), "picture")
+                : Count.of(rows.size(), "row") + " (" + Count.of(files, "picture") + ")";
         return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
                 what, counts[0], counts[1], counts[2], counts[3]);
     }
 
     /** The same, then how many pages asked for have no picture: "...; 3 pages asked for without a picture". */
     public static String summary(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
-        return summary(rows) + (missing.isEmpty() ? ""
-                : "; " + missing.size() + (missing.size() == 1 ? " page" : " pages") + " asked for without a picture");
+        return summary(rows) + (missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " asked for without a picture");
     }
 
     private static List<String> cells(BatchRow row, boolean markdown) {

@@ -88,7 +88,8 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         appendRegions(out);
         out.append(String.format("%s: %s %s (%s needed)%s%n", passes() ? "PASS" : "FAIL",
                 Percent.of(verdictShare()), verdictName(), Percent.of(minimum / 100),
-                maxFailing < 0 ? "" : String.format("; %,d pixels fail (at most %,d allowed)", regions.pixels(), maxFailing)));
+                maxFailing < 0 ? "" : "; " + Count.with(regions.pixels(), "pixel", "fails", "fail")
+                        + String.format(" (at most %,d allowed)", maxFailing)));
         return out.toString();
     }
 
@@ -103,13 +104,12 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                     : "no pixel differs by more than " + tolerance + "/255 with slack\n");
             return;
         }
-        boolean onePixel = regions.pixels() == 1;
-        boolean onePatch = regions.count() == 1;
-        String what = flip() ? (onePixel ? "has" : "have") + " a FLIP value above the threshold"
-                : (onePixel ? "differs" : "differ") + " by more than " + tolerance + "/255 even with slack";
-        out.append(String.format("%,d %s in %,d %s %s%s%n(panel pixels: origin bottom-left, x right, y up):%n",
-                regions.pixels(), onePixel ? "pixel" : "pixels", regions.count(), onePatch ? "patch" : "patches", what,
-                onePatch ? "" : "; the largest"));
+        long pixels = regions.pixels();
+        String what = flip() ? (pixels == 1 ? "has" : "have") + " a FLIP value above the threshold"
+                : (pixels == 1 ? "differs" : "differ") + " by more than " + tolerance + "/255 even with slack";
+        out.append(String.format("%s in %s %s%s%n(panel pixels: origin bottom-left, x right, y up):%n",
+                Count.of(pixels, "pixel"), Count.of(regions.count(), "patch", "patches"), what,
+                regions.count() == 1 ? "" : "; the largest"));
         for (int k = 0; k < largest.size(); k++) {
             out.append("  ").append(k + 1).append(". ").append(largest.get(k).describe()).append('\n');
         }

@@ -9,7 +9,7 @@ public record DiffRegion(int left, int bottom, int right, int top, int pixels) {
 
     /** E.g. "x 120-180, y 300-342 (61x43): 1,234 pixels". */
     public String describe() {
-        return String.format("x %d-%d, y %d-%d (%dx%d): %,d %s",
-                left, right, bottom, top, right - left + 1, top - bottom + 1, pixels, pixels == 1 ? "pixel" : "pixels");
+        return String.format("x %d-%d, y %d-%d (%dx%d): %s",
+                left, right, bottom, top, right - left + 1, top - bottom + 1, Count.of(pixels, "pixel"));
     }
 }

@@ -87,7 +87,8 @@ public final class GradescopeResults {
         out.append(String.format(Locale.ROOT, "%s: %s of panel pixels %s (%s needed)",
                 row.result(), Percent.of(row.verdict()), row.verdictName(), Percent.of(rule.minShare() / 100)));
         if (rule.maxFailing() >= 0) {
-            out.append(String.format(Locale.ROOT, "; %,d pixels fail (at most %,d allowed)", row.failing(), rule.maxFailing()));
+            out.append("; " + Count.with(row.failing(), "pixel", "fails", "fail")
+                    + String.format(Locale.ROOT, " (at most %,d allowed)", rule.maxFailing()));
         }
         out.append(String.format(Locale.ROOT, "%nidentical %s, within 1/255 %s, within 8/255 %s exactly; "
                 + "%s, %s, %s with slack%n", Percent.of(row.exact().identical()), Percent.of(row.exact().within1()),
@@ -99,11 +100,10 @@ public final class GradescopeResults {
         if (row.regions().isEmpty()) {
             out.append("no region differs beyond the tolerance\n");
         } else {
-            boolean one = row.failing() == 1;
-            out.append(String.format(Locale.ROOT, "%,d %s " + (rule.metric() == Comparison.Metric.FLIP
-                    ? (one ? "is" : "are") + " above FLIP's threshold" : (one ? "differs" : "differ") + " beyond the tolerance")
-                    + "; the largest regions (panel pixels, origin bottom-left, y up):%n", row.failing(),
-                    one ? "pixel" : "pixels"));
+            out.append(rule.metric() == Comparison.Metric.FLIP
+                    ? Count.with(row.failing(), "pixel", "is", "are") + " above FLIP's threshold"
+                    : Count.with(row.failing(), "pixel", "differs", "differ") + " beyond the tolerance");
+            out.append(String.format(Locale.ROOT, "; the largest regions (panel pixels, origin bottom-left, y up):%n"));
             for (DiffRegion region : row.regions()) {
                 out.append("  ").append(region.describe()).append('\n');
             }

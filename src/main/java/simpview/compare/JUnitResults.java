@@ -132,8 +132,8 @@ public final class JUnitResults {
     private static String shares(BatchRow row) {
         return String.format(Locale.ROOT, "%s %s, %s needed%s", Percent.of(row.verdict()),
                 row.verdictName(), Percent.of(row.rule().minShare() / 100),
-                row.rule().maxFailing() >= 0 ? String.format(Locale.ROOT, "; %d pixels fail, at most %d allowed",
-                        row.failing(), row.rule().maxFailing()) : "");
+                row.rule().maxFailing() >= 0 ? "; " + Count.with(row.failing(), "pixel", "fails", "fail")
+                        + String.format(Locale.ROOT, ", at most %d allowed", row.rule().maxFailing()) : "");
     }
 
     /** The submission a picture belongs to: the first folder of its path, or "." at the top. */

@@ -60,10 +60,11 @@ public final class StudentTable {
         long compared = rows.size() - skipped;
         long files = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED).map(BatchRow::file).distinct().count();
         // a page of the first assignment is a row per panel
-        String what = files == compared ? "pictures" : "pages and panels (" + files + (files == 1 ? " picture)" : " pictures)");
+        // "1 of 1 pictures pass": a tally, in the plural whatever its count
+        String what = files == compared ? "pictures" : "pages and panels (" + Count.of(files, "picture") + ")";
         out.append(String.format(Locale.ROOT, "%d of %d %s pass%s%s%n", pass, compared, what,
-                skipped == 0 ? "" : String.format(Locale.ROOT, "; %d other files matched no page", skipped),
-                missing.isEmpty() ? "" : String.format(Locale.ROOT, "; %d pages without a picture", missing.size())));
+                skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " matched no page",
+                missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " without a picture"));
         return out.toString();
     }
 
