@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -105,17 +106,26 @@ public class CompareBatchTest {
                 Double.parseDouble(cells[2]));
     }
 
+    /** A folder of two scenes: a triangle, tri.simp, and a bar, {@code barName}.simp. */
+    private Path scenes(String barName) throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        Files.writeString(scenes.resolve(barName + ".simp"), "polygon (-90,-10,-5) (90,-10,-5) (90,10,-5)\n");
+        return scenes;
+    }
+
+    /** The scene as simpview draws it, into {@code picture} (its folders made). */
+    private static void render(Path scene, Path picture) {
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out", picture.toString()).exitCode());
+    }
+
     @Test
     void aSceneFolderIsMatchedToPicturesByName() throws Exception {
-        Path scenes = Files.createDirectories(dir.resolve("scenes"));
-        Path tri = Files.writeString(scenes.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
-        Path bar = Files.writeString(scenes.resolve("triBar.simp"), "polygon (-90,-10,-5) (90,-10,-5) (90,10,-5)\n");
+        Path scenes = scenes("triBar");
+        Path tri = scenes.resolve("tri.simp");
         Path submissions = dir.resolve("pics");
-        Files.createDirectories(submissions);
-        Path triPicture = submissions.resolve("tri.png");
-        Path barPicture = submissions.resolve("page_triBar_v2.png");
-        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", tri.toString(), "--out", triPicture.toString()).exitCode());
-        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", bar.toString(), "--out", barPicture.toString()).exitCode());
+        render(tri, submissions.resolve("tri.png"));
+        render(scenes.resolve("triBar.simp"), submissions.resolve("page_triBar_v2.png"));
         png(submissions.resolve("other.png"), page(1));
         Path out = dir.resolve("out");
 
@@ -138,16 +148,11 @@ public class CompareBatchTest {
 
     @Test
     void aSceneOneSubmissionHandedInAndAnotherDidNotIsAMissingRow() throws Exception {
-        Path scenes = Files.createDirectories(dir.resolve("scenes"));
-        Path tri = Files.writeString(scenes.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
-        Path bar = Files.writeString(scenes.resolve("bar.simp"), "polygon (-90,-10,-5) (90,-10,-5) (90,10,-5)\n");
+        Path scenes = scenes("bar");
         Path class_ = dir.resolve("class");
-        for (String who : new String[] {"alice", "bob"}) {
-            Path picture = Files.createDirectories(class_.resolve(who)).resolve("tri.png");
-            assertEquals(ExitCode.OK, CliRun.of("render", "--scene", tri.toString(), "--out", picture.toString()).exitCode());
-        }
-        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", bar.toString(), "--out",
-                class_.resolve("alice/bar.png").toString()).exitCode());
+        render(scenes.resolve("tri.simp"), class_.resolve("alice/tri.png"));
+        render(scenes.resolve("tri.simp"), class_.resolve("bob/tri.png"));
+        render(scenes.resolve("bar.simp"), class_.resolve("alice/bar.png"));
         Path out = dir.resolve("out");
 
         CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
