@@ -13,13 +13,13 @@ public final class Count {
         return of(n, one, one + "s");
     }
 
-    /** "1 pixel fails", "3 pixels fail": the count, its noun and a verb that agrees with it. */
-    public static String with(long n, String noun, String verbOfOne, String verbOfMany) {
-        return of(n, noun) + " " + (n == 1 ? verbOfOne : verbOfMany);
-    }
-
     /** The same for a noun whose plural is not one + "s": {@code of(3, "patch", "patches")}. */
     public static String of(long n, String one, String many) {
         return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
+    }
+
+    /** "1 pixel fails", "3 pixels fail": the count, its noun and a verb that agrees with it. */
+    public static String with(long n, String noun, String verbOfOne, String verbOfMany) {
+        return of(n, noun) + " " + (n == 1 ? verbOfOne : verbOfMany);
     }
 }
