@@ -102,6 +102,11 @@ public final class CheckCommand implements Callable<Integer> {
         if (pages != null && scene != null) {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
+        if (!Files.isDirectory(dir)) {
+            throw new ParameterException(spec.commandLine(), Files.exists(dir)
+                    ? dir + " is a file, not a folder (one picture: simpview compare " + dir + " --page N)"
+                    : dir + ": no such folder");
+        }
         pictures.check(scene);
         if (flipThreshold != null && metric != Comparison.Metric.FLIP && rubric == null) {
             throw new ParameterException(spec.commandLine(), "--flip-threshold goes with --metric flip (or a rubric whose "
@@ -122,7 +127,7 @@ public final class CheckCommand implements Callable<Integer> {
         try (DrawingThreads drawing = threads.open()) {
             OwnPictures own = pictures.ownPictures(parent.ownScenes(),
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
-            CompareBatch batch = new CompareBatch(own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
+            CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
                     CompareBatch.DiffImages.FAILING);
             if (scene != null) {
@@ -153,7 +158,7 @@ public final class CheckCommand implements Callable<Integer> {
         }
         try (DrawingThreads drawing = DrawingThreads.one()) {
             OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
-            CompareBatch batch = new CompareBatch(own, judged, false, new PrintWriter(out, true), errors);
+            CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors);
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE));
         }

@@ -92,8 +92,12 @@ public final class CompareBatch {
     private final boolean partial;
     private final PrintWriter out;
     private final PrintWriter err;
+    /** What its messages start with: the command that runs it ("simpview compare: "). */
+    private final String says;
 
-    CompareBatch(OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
+    /** A batch of {@code command} ("compare", "check"), which its messages name. */
+    CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
+        this.says = "simpview " + command + ": ";
         this.own = own;
         this.rubric = rubric;
         this.partial = partial;
@@ -179,12 +183,12 @@ public final class CompareBatch {
                     relative -> new Match(CompareTarget.scene(scene), null));
         }
         if (!Files.isDirectory(scene)) {
-            err.println("simpview compare: --scene " + scene + ": no such file or folder");
+            err.println(says + "--scene " + scene + ": no such file or folder");
             return ExitCode.USAGE_ERROR;
         }
         Map<String, Path> scenes = scenesIn(scene);
         if (scenes.isEmpty()) {
-            err.println("simpview compare: --scene " + scene + ": no .simp files in that folder");
+            err.println(says + "--scene " + scene + ": no .simp files in that folder");
             return ExitCode.USAGE_ERROR;
         }
         // A folder also holds scenes the pages include (cube.simp): the ones asked for are those a rubric
@@ -205,7 +209,7 @@ public final class CompareBatch {
         try {
             pictures = picturesIn(dir);
         } catch (IOException | UncheckedIOException e) {
-            err.println("simpview compare: --dir " + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
+            err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
         }
         long start = System.nanoTime();
@@ -266,7 +270,7 @@ public final class CompareBatch {
                 try {
                     files = picturesIn(rule.alternates());
                 } catch (IOException | UncheckedIOException e) {
-                    err.println("simpview compare: alternates " + rule.alternates() + ": cannot be listed");
+                    err.println(says + "alternates " + rule.alternates() + ": cannot be listed");
                     files = List.of();
                 }
                 for (Path file : files) {
@@ -278,7 +282,7 @@ public final class CompareBatch {
                         try {
                             return Picture.read(f);
                         } catch (CompareException e) {
-                            err.println("simpview compare: alternate left out: " + e.getMessage());
+                            err.println(says + "alternate left out: " + e.getMessage());
                             return e;
                         }
                     });
@@ -577,7 +581,7 @@ public final class CompareBatch {
                 HtmlReport.write(rows, wanted, outputs.html(), outDir);
             }
         } catch (IOException e) {
-            err.println("simpview compare: cannot write the results: " + e.getMessage());
+            err.println(says + "cannot write the results: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         }
         if (outputs.student()) {
@@ -589,7 +593,7 @@ public final class CompareBatch {
             }
         }
         if (rows.isEmpty()) {
-            err.println("simpview compare: no pictures (.png, .jpg, .gif, .bmp) found");
+            err.println(says + "no pictures (.png, .jpg, .gif, .bmp) found");
             return ExitCode.SCENE_ERROR;
         }
         boolean allPass = rows.stream().allMatch(r -> r.result() != BatchRow.Result.FAIL && r.result() != BatchRow.Result.ERROR);

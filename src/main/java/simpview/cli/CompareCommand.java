@@ -5,6 +5,7 @@ import simpview.compare.PngFiles;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.Locale;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -164,7 +165,7 @@ public final class CompareCommand implements Callable<Integer> {
                     err().println("simpview compare: " + e.getMessage());
                     return ExitCode.USAGE_ERROR;
                 }
-                CompareBatch batch = new CompareBatch(own, judged, partial, spec.commandLine().getOut(), err());
+                CompareBatch batch = new CompareBatch("compare", own, judged, partial, spec.commandLine().getOut(), err());
                 CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
                         gradescope, junit, html, false, diffs);
                 return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
@@ -178,6 +179,9 @@ public final class CompareCommand implements Callable<Integer> {
         usage(image == null ^ dir == null, image == null ? "give a picture to compare, or --dir D" : "give a picture or --dir D, not both");
         boolean batch = dir != null;
         if (batch) {
+            usage(Files.isDirectory(dir), Files.exists(dir)
+                    ? "--dir " + dir + " is a file, not a folder (one picture: simpview compare " + dir + " --page N)"
+                    : "--dir " + dir + ": no such folder");
             usage(pages == null ^ scene == null, "--dir needs either --pages RANGE or --scene F.simp|D");
             usage(page == null, "--page goes with one picture; with --dir use --pages RANGE");
             usage(diff == null, "with --dir the diff images go to --out-dir");
@@ -185,7 +189,8 @@ public final class CompareCommand implements Callable<Integer> {
                     "--dir needs --out-dir D (the tables and diff images), or --html, --gradescope or --junit");
             usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         } else {
-            usage(page == null ^ scene == null, "say what to compare with: --page N or --scene F.simp");
+            usage(page != null || scene != null, "say what to compare with: --page N or --scene F.simp");
+            usage(page == null || scene == null, "give --page N or --scene F.simp, not both");
             usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
             usage(rubric == null && gradescope == null && junit == null && html == null && !partial
                     && diffs == CompareBatch.DiffImages.ALL,

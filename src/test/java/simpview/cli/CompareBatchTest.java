@@ -174,4 +174,30 @@ public class CompareBatchTest {
         assertTrue(run.err().contains("--dir " + dir.resolve("nope") + ": no such folder"), run.err());
         assertFalse(run.showsStackTrace());
     }
+
+    @Test
+    void aFileWhereAFolderGoesIsAUsageErrorNamingTheCommand() throws Exception {
+        Path picture = png(dir.resolve("mine.png"), page(1));
+        Path nope = dir.resolve("nope");
+        Path empty = Files.createDirectories(dir.resolve("empty"));
+        String[][] cases = {
+            {"compare --dir " + picture + " --pages 1-8 --out-dir " + dir.resolve("o"),
+                "simpview: --dir " + picture + " is a file, not a folder (one picture: simpview compare " + picture
+                        + " --page N)", "compare"},
+            {"check " + picture, "simpview: " + picture + " is a file, not a folder (one picture: simpview compare "
+                    + picture + " --page N)", "check"},
+            {"check " + nope, "simpview: " + nope + ": no such folder", "check"},
+            {"compare " + picture + " --page 6 --scene a.simp", "simpview: give --page N or --scene F.simp, not both",
+                "compare"}};
+        for (String[] c : cases) {
+            CliRun run = CliRun.of(c[0].split(" "));
+            assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), c[0] + ": " + run.err());
+            assertEquals(c[1], run.err().lines().findFirst().orElse(""), c[0]);
+            assertTrue(run.err().contains("See 'simpview " + c[2] + " --help'"), run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+        }
+        CliRun none = CliRun.of("check", empty.toString());
+        assertEquals(ExitCode.SCENE_ERROR, none.exitCode(), none.err());
+        assertTrue(none.err().contains("simpview check: no pictures (.png, .jpg, .gif, .bmp) found"), none.err());
+    }
 }
