@@ -89,7 +89,7 @@ final class InspectCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages (pages 4 to 8 do not use it)")
     private Long seed;
 
-    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp")
+    @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
     private Path simpDir;
 
     @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,

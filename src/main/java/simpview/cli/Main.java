@@ -68,7 +68,9 @@ public final class Main {
                 .setExecutionExceptionHandler(Main::reportUnexpected)
                 .setParameterExceptionHandler(Main::reportUsageError);
         sayWhereTheScenesAre(commandLine, command.ownScenes());
-        sayWhereTheScenesAre(commandLine.getSubcommands().get("render"), command.ownScenes());
+        for (String name : List.of("render", "compare", "check", "inspect")) {
+            sayWhereTheScenesAre(commandLine.getSubcommands().get(name), command.ownScenes());
+        }
         // picocli's own exit code for invalid input is already ExitCode.USAGE_ERROR (2).
         int code = commandLine.execute(args);
         out.flush();

@@ -1,6 +1,5 @@
 package simpview.inspect;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import simpview.pages.Page;
 import simpview.pages.PageContext;
@@ -51,11 +50,7 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
             throw new IllegalArgumentException("page " + number + " (" + page.title()
                     + ") is drawn by the program, not from a scene file: inspect reads pages 4 to 8 and scenes");
         }
-        Path file = scene.file(context);
-        if (!Files.isRegularFile(file)) {
-            throw new SceneException(file, 0, 0, "", scene.fileName() + " was not found in "
-                    + file.toAbsolutePath().normalize().getParent());
-        }
+        Path file = scene.existingFile(context);
         return new InspectedScene(file, scene.near(), Rgb.BLACK, context.ownColours(), ScenePipeline.Rules.DEPTH_CUED);
     }
 

@@ -42,24 +42,29 @@ public final class ScenePage implements Page {
         return near;
     }
 
-    public String fileName() {
-        return fileName;
-    }
-
     /** The scene file this page reads in {@code context}. */
     public Path file(PageContext context) {
         return (ownScene ? context.ownSimpDir() : context.simpDir()).resolve(fileName);
     }
 
-    @Override
-    public void draw(PageCanvas canvas, PageContext context) throws SceneException {
-        Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
+    /**
+     * The page's scene file, when it is there; else the error that says
+     * where it was looked for and, for a course's file, how to name its folder.
+     */
+    public Path existingFile(PageContext context) throws SceneException {
         Path file = file(context);
         if (!Files.isRegularFile(file)) {
+            Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
             throw new SceneException(file, 0, 0, "", fileName + " was not found in "
                     + dir.toAbsolutePath().normalize()
                     + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
         }
+        return file;
+    }
+
+    @Override
+    public void draw(PageCanvas canvas, PageContext context) throws SceneException {
+        Path file = existingFile(context);
         ScenePipeline.draw(file, canvas, ScenePipeline.Options.depthCued(near, context.library())
                 .withOwnColours(context.ownColours()), context.monitor());
     }

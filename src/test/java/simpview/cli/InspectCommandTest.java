@@ -120,6 +120,11 @@ class InspectCommandTest {
         assertEquals(1, missing.exitCode());
         assertTrue(missing.err().contains("none.simp"), missing.err());
         assertFalse(missing.showsStackTrace(), missing.err());
+        Path empty = Files.createDirectories(dir.resolve("empty"));
+        CliRun course = CliRun.of("inspect", "--page", "7", "--simp-dir", empty.toString(), "--at", "325,400");
+        assertEquals(1, course.exitCode());
+        assertTrue(course.err().contains("page7.simp was not found in " + empty.toAbsolutePath().normalize()
+                + "; name the folder of the course's scene files with --simp-dir DIR"), course.err());
     }
 
     @Test
