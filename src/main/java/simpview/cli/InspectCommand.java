@@ -33,7 +33,7 @@ import simpview.surface.Rgb;
                 + "(the report names the panel)."},
         footer = {"", "Examples:",
             "  simpview inspect --page 7 --simp-dir course/ --at 325,325",
-            "  simpview inspect --scene course-a4/page-d.simp --at 300,280 --explain",
+            "  simpview inspect --scene course-a4/page-d.simp --at 455,330 --explain",
             "  simpview inspect --scene pageI.simp --at 320,300 --history --json",
             "  simpview inspect --assignment 1 --page 1 --at 540,200 --json"},
         exitCodeListHeading = "%nExit codes:%n",

@@ -39,12 +39,13 @@ public final class PageDrawing {
     /**
      * A scene as a whole page: lit by its own rules, or depth-cued from near
      * (default white) to far (default black), or with {@code ownColours} in
-     * the vertices' own colours without the cue. Given depth-cue colours, a
-     * lit scene is not drawn ({@link ScenePipeline.Drawn#drawn} false: see
-     * {@link #cueColoursProblem}). The picture is on {@link #canvas()}.
+     * the vertices' own colours without the cue. Given depth-cue colours or
+     * own colours, both of depth-cued scenes only, a lit scene is not drawn
+     * ({@link ScenePipeline.Drawn#drawn} false: see {@link #cueColoursProblem}).
+     * The picture is on {@link #canvas()}.
      */
     ScenePipeline.Drawn scene(Path file, Rgb near, Rgb far, boolean ownColours) throws SceneException {
-        boolean cueGiven = near != null || far != null;
+        boolean cueGiven = near != null || far != null || ownColours;
         ScenePipeline.Options options = ScenePipeline.Options.byCommands(library)
                 .withCue(near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far)
                 .withOwnColours(ownColours)
@@ -59,10 +60,13 @@ public final class PageDrawing {
         return renderer.canvas();
     }
 
-    /** Why {@code file}, which drew nothing, could not take the depth-cue colours given: it is lit. */
-    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn) {
-        return "--near-color and --far-color are for depth-cued scenes, and " + file.getFileName()
-                + " is lit (" + drawn.litBecause() + ")";
+    /**
+     * Why {@code file}, which drew nothing, could not take the options given
+     * ("--near-color and --far-color", "--own-colors"): it is lit.
+     */
+    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn, String options) {
+        return options + " " + (options.contains(" and ") ? "are" : "is") + " for depth-cued scenes, and "
+                + file.getFileName() + " is lit (" + drawn.litBecause() + ")";
     }
 
     /** The pages' context from the command line's options (null where not given), warnings to {@code monitor}. */

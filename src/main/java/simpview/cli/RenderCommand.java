@@ -197,9 +197,11 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** --scenes: the list must name scenes, and the pictures go to a folder. */
     private void checkScenes() {
-        usage(outDir != null && !outDir.toString().isEmpty() && out == null,
-                "--scenes writes one picture per scene: give --out-dir D, not --out");
+        usage(out == null, "--scenes writes one picture per scene: give --out-dir D, not --out");
+        usage(outDir != null, "--scenes needs --out-dir D (one picture per scene, NAME.png)");
+        usage(!outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
+        usage(!ownColours, "--own-colors goes with --scene only");
         usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
         try {
             sceneList = SceneList.of(what.scenes);
@@ -211,10 +213,11 @@ public final class RenderCommand implements Callable<Integer> {
     /** The scenes of --scenes, once checked. */
     private List<Path> sceneList;
 
-    /** Depth-cue colours given, and the scene's first lit command showed it is lit: a usage error (exit 2). */
-    private static void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
+    /** Depth-cue or own colours given, and the scene's first lit command showed it is lit: a usage error (exit 2). */
+    private void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
         if (!drawn.drawn()) {
-            throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn));
+            throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn,
+                    ownColours ? "--own-colors" : "--near-color and --far-color"));
         }
     }
 

@@ -59,6 +59,14 @@ public class LitCommandLineTest {
                 "--far-color", "0,0,1");
         assertEquals(ExitCode.USAGE_ERROR, compare.exitCode());
         assertTrue(compare.err().contains("lit.simp:2 camera"), compare.err());
+        CliRun own = CliRun.of("render", "--scene", lit.toString(), "--own-colors", "--out", dir.resolve("y.png").toString());
+        assertEquals(ExitCode.USAGE_ERROR, own.exitCode());
+        assertTrue(own.err().contains("--own-colors is for depth-cued scenes, and lit.simp is lit (lit.simp:2 camera)"),
+                own.err());
+        assertTrue(!Files.exists(dir.resolve("y.png")), "nothing written");
+        CliRun scenes = CliRun.of("render", "--scenes", lit.toString(), "--own-colors", "--out-dir", dir.toString());
+        assertEquals(ExitCode.USAGE_ERROR, scenes.exitCode());
+        assertTrue(scenes.err().contains("--own-colors goes with --scene only"), scenes.err());
     }
 
     @Test

@@ -217,7 +217,9 @@ public class MainCommandLineTest {
         "render --page 2 | missing --out F.png (or --out-dir D)",
         "render --scene a.simp --out x.png --out-dir d | give --out F.png or --out-dir D, not both",
         "render --contact-sheet --out-dir d | --contact-sheet writes one file: use --out F.png, not --out-dir",
-        "render --contact-sheet | missing --out F.png"})
+        "render --contact-sheet | missing --out F.png",
+        "render --scenes a.simp | --scenes needs --out-dir D (one picture per scene, NAME.png)",
+        "render --scenes a.simp --out x.png | --scenes writes one picture per scene: give --out-dir D, not --out"})
     void aMisplacedOutputSaysWhereItGoes(String line, String message) {
         CliRun run = CliRun.of(line.split(" "));
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
