@@ -83,6 +83,11 @@ public final class Main {
         CommandLine commandLine = e.getCommandLine();
         PrintWriter err = commandLine.getErr();
         err.println("simpview: " + e.getMessage());
+        if (commandLine.getParent() == null && args != null && args.length > 0) {
+            // a slip in the command's name: its options were read as the window's
+            SimpviewCommand.mistypedCommand(args[0], commandLine.getSubcommands().keySet()).ifPresent(
+                    command -> err.println("Did you mean 'simpview " + command + "' for '" + args[0] + "'?"));
+        }
         if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
             for (String word : unmatched.getUnmatched()) {
                 java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());

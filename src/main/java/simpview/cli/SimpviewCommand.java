@@ -112,8 +112,34 @@ public final class SimpviewCommand implements Callable<Integer> {
         return openedWindow;
     }
 
+    /**
+     * The command {@code word} is a slip for ("comapre": "compare"), when it
+     * names no file or folder (with .simp or without) and is near one.
+     */
+    static Optional<String> mistypedCommand(String word, java.util.Collection<String> commands) {
+        if (word.startsWith("-") || word.contains("/") || word.contains(java.io.File.separator) || word.contains(".")) {
+            return Optional.empty();
+        }
+        try {
+            Path path = Path.of(word);
+            if (Files.exists(path) || Files.exists(Path.of(word + ".simp"))) {
+                return Optional.empty();
+            }
+        } catch (java.nio.file.InvalidPathException e) {
+            return Optional.empty();
+        }
+        return simpview.scene.Nearest.to(word, commands);
+    }
+
     @Override
     public Integer call() {
+        if (!scenes.isEmpty()) {
+            String first = scenes.get(0).toString();
+            if (mistypedCommand(first, spec.commandLine().getSubcommands().keySet()).isPresent()) {
+                // Main's report of the usage error says which command was meant
+                throw new ParameterException(spec.commandLine(), "no command or scene file '" + first + "'");
+            }
+        }
         if (displayMissing.getAsBoolean()) {
             spec.commandLine().getErr().println(
                     "simpview: no display to open a window on; write PNG files with 'simpview render --all --out-dir DIR' "

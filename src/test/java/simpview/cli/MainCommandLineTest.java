@@ -212,6 +212,19 @@ public class MainCommandLineTest {
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
+        "comapre mine.png | no command or scene file 'comapre' | compare",
+        "rendr --all --out-dir x | Unknown options: '--all', '--out-dir' | render",
+        "chekc | no command or scene file 'chekc' | check"})
+    void aSlipInTheCommandsNameSaysWhichWasMeant(String line, String problem, String meant) {
+        CliRun run = CliRun.with(() -> true, line.split(" "));
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        List<String> lines = run.err().lines().toList();
+        assertEquals("simpview: " + problem, lines.get(0), run.err());
+        assertEquals("Did you mean 'simpview " + meant + "' for '" + line.split(" ")[0] + "'?", lines.get(1), run.err());
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
         "render --all --out x.png | --all writes eight files: use --out-dir D, not --out",
         "render --all | --all needs --out-dir D",
         "render --page 2 | missing --out F.png (or --out-dir D)",
