@@ -133,7 +133,7 @@ public final class JUnitResults {
         return String.format(Locale.ROOT, "%s %s, %s needed%s", Percent.of(row.verdict()),
                 row.verdictName(), Percent.of(row.rule().minShare() / 100),
                 row.rule().maxFailing() >= 0 ? "; " + Count.with(row.failing(), "pixel", "fails", "fail")
-                        + String.format(Locale.ROOT, ", at most %d allowed", row.rule().maxFailing()) : "");
+                        + String.format(Locale.ROOT, ", at most %,d allowed", row.rule().maxFailing()) : "");
     }
 
     /** The submission a picture belongs to: the first folder of its path, or "." at the top. */

@@ -98,7 +98,7 @@ public final class Picture {
         } catch (AccessDeniedException e) {
             throw new CompareException(file + ": permission denied", e);
         } catch (IOException e) {
-            throw new CompareException(file + ": cannot be read (" + e.getMessage() + ")", e);
+            throw new CompareException(file + ": cannot be read: " + simpview.scene.FileProblem.of(file, e), e);
         }
     }
 

@@ -71,7 +71,7 @@ public final class Rubric {
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new CompareException("rubric " + file + ": cannot be read (" + e.getMessage() + ")");
+            throw new CompareException("rubric " + file + ": cannot be read: " + simpview.scene.FileProblem.of(file, e));
         }
         try (Reader reader = new java.io.StringReader(text)) {
             JsonReader json = new JsonReader(reader);
