@@ -106,7 +106,8 @@ public final class RenderCommand implements Callable<Integer> {
     private Rgb far;
 
     @Parameters(paramLabel = "SCENE", arity = "0..*",
-            description = "--contact-sheet: scenes to tile instead of the pages, each drawn as --scene draws it")
+            description = "--contact-sheet: scenes to tile instead of the pages (a folder: its .simp files), each drawn "
+                    + "as --scene draws it")
     private List<Path> scenes = new ArrayList<>();
 
     @Option(names = {"--own-colors", "--own-colours"},
@@ -319,17 +320,27 @@ public final class RenderCommand implements Callable<Integer> {
             }
         }
         if (tiles.isEmpty()) {
+            err().println(out + " not written: no page rendered");
             return ExitCode.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
         return tiles.size() == Assignment2.COUNT ? written : ExitCode.SCENE_ERROR;
     }
 
-    /** The scenes given, in that order, each labelled with its file name; one that fails is named and left out. */
+    /**
+     * The scenes given (a folder: its .simp files, in natural order), in that
+     * order, each labelled with its file name; one that fails is named and left out.
+     */
     private int renderSceneSheet() {
+        List<Path> sheet;
+        try {
+            sheet = SceneList.of(scenes);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
-        for (Path scene : scenes) {
+        for (Path scene : sheet) {
             try {
                 drawing.scene(scene, null, null, false);
                 tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()), drawing.canvas().snapshot()));
@@ -338,10 +349,11 @@ public final class RenderCommand implements Callable<Integer> {
             }
         }
         if (tiles.isEmpty()) {
+            err().println(out + " not written: no scene rendered");
             return ExitCode.SCENE_ERROR;
         }
         int written = write(ContactSheet.compose(tiles), out);
-        return tiles.size() == scenes.size() ? written : ExitCode.SCENE_ERROR;
+        return tiles.size() == sheet.size() ? written : ExitCode.SCENE_ERROR;
     }
 
     private int write(BufferedImage image, Path file) {

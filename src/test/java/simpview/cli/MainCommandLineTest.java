@@ -320,6 +320,39 @@ public class MainCommandLineTest {
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
         assertTrue(run.err().startsWith(bad + " left out: "), run.err());
         assertEquals(ContactSheet.GAP + ContactSheet.TILE + ContactSheet.GAP, ImageIO.read(out.toFile()).getWidth());
+        Path none = dir.resolve("none.png");
+        CliRun all = CliRun.of("render", "--contact-sheet", "--out", none.toString(), bad.toString());
+        assertEquals(ExitCode.SCENE_ERROR, all.exitCode());
+        assertTrue(all.err().endsWith(none + " not written: no scene rendered" + System.lineSeparator()), all.err());
+        assertFalse(Files.exists(none));
+    }
+
+    @Test
+    void aFolderOnTheSheetIsItsScenesInNaturalOrder() throws Exception {
+        Path folder = Files.createDirectories(dir.resolve("scenes"));
+        // page1 at z = -50, page2 at -100, page10 at -150: 3/4, 1/2 and 1/4 white
+        String[] names = {"page10", "page2", "page1"};
+        int[] depths = {150, 100, 50};
+        for (int k = 0; k < names.length; k++) {
+            Files.writeString(folder.resolve(names[k] + ".simp"), String.format(
+                    "polygon (-50, -50, -%1$d) (50, -50, -%1$d) (0, 50, -%1$d)%n", depths[k]));
+        }
+        Files.writeString(folder.resolve("notes.txt"), "not a scene");
+        Path out = dir.resolve("sheet.png");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), folder.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        int cell = ContactSheet.TILE + ContactSheet.GAP;
+        BufferedImage sheet = ImageIO.read(out.toFile());
+        assertEquals(ContactSheet.GAP + 3 * cell, sheet.getWidth());
+        int[] greys = new int[3];
+        for (int k = 0; k < 3; k++) {
+            greys[k] = sheet.getRGB(ContactSheet.GAP + k * cell + 187, ContactSheet.GAP + 187) & 0xFF;
+        }
+        assertTrue(greys[0] == 0xBF && greys[1] < greys[0] && greys[2] < greys[1] && greys[2] > 0,
+                "page1, page2, page10, ever farther: " + java.util.Arrays.toString(greys));
+        CliRun empty = CliRun.of("render", "--contact-sheet", "--out", out.toString(),
+                Files.createDirectories(dir.resolve("nothing")).toString());
+        assertEquals(ExitCode.USAGE_ERROR, empty.exitCode(), empty.err());
     }
 
     @Test
