@@ -26,6 +26,7 @@ import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.PageContext;
+import simpview.pages.A1Polygons;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
@@ -279,7 +280,7 @@ public final class CompareCommand implements Callable<Integer> {
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {
             PanelGridComparison.PanelShares shares = comparison.shares(k);
-            String what = (k + 1) + " " + (shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : "scene " + (k + 1));
+            String what = (k + 1) + " " + (shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : A1Polygons.NAMES.get(k));
             out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", what, 100 * shares.identical(), 100 * shares.within());
             passes &= 100 * shares.within() >= min;
         }

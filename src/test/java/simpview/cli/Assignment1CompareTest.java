@@ -29,6 +29,21 @@ class Assignment1CompareTest {
     }
 
     @Test
+    void thePolygonPagesNameEachPanelsScene() {
+        Path page = dir.resolve("a1-page5.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "5", "--out", page.toString()).exitCode());
+        CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "5");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        int k = 0;
+        for (String scene : new String[] {"starburst", "mesh", "perturbed mesh", "random triangles"}) {
+            k++;
+            String line = k + " " + scene;
+            assertTrue(run.out().lines().anyMatch(l -> l.startsWith(line + "  ") && l.endsWith("100.00 %     100.00 %")),
+                    run.out());
+        }
+    }
+
+    @Test
     void theCoursesCaptureIsFoundAndJudgedPanelByPanel() {
         Path picture = CourseFiles.require("reference/images/a1/page2.png");
         CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "2");
