@@ -136,6 +136,10 @@ final class InspectCommand implements Callable<Integer> {
                 throw new UsageProblem("--near-color and --far-color are for depth-cued scenes, and "
                         + what.scene.getFileName() + " is lit (" + report.litBecause() + ")");
             }
+            if (primitive != null && report.vertices(wanted) == null) {
+                throw new UsageProblem("--primitive " + primitive + ": the scene has no primitive " + primitive
+                        + " (they count from 1 in drawing order, as the window steps)");
+            }
             int table = HistoryEntry.NO_NUMBER;
             if (vertices || all) {
                 HistoryEntry owner = report.lastWritten();

@@ -91,6 +91,22 @@ class InspectCommandTest {
     }
 
     @Test
+    void aPrimitiveByItsNumberAndOneTheSceneHasNot() throws Exception {
+        Path scene = write("two.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "polygon (-90, -90, -20) (-80, -90, -20) (-85, -80, -20)\n");
+        CliRun second = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "2");
+        assertEquals(0, second.exitCode(), second.err());
+        assertTrue(second.out().contains("vertices of primitive 2:"), second.out());
+        assertTrue(second.out().contains("written: (-90, -90, -20)"), second.out());
+        CliRun none = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "3");
+        assertEquals(ExitCode.USAGE_ERROR, none.exitCode(), none.out());
+        assertTrue(none.err().startsWith("simpview: --primitive 3: the scene has no primitive 3"), none.err());
+        assertEquals("", none.out());
+        CliRun zero = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "0");
+        assertEquals(ExitCode.USAGE_ERROR, zero.exitCode(), zero.err());
+    }
+
+    @Test
     void aPixelOutsideThePanelIsAUsageError() throws Exception {
         Path scene = write("s.simp", "polygon (0, 0, -1) (1, 0, -1) (0, 1, -1)\n");
         for (String at : new String[] {"650,10", "-1,3", "3", "a,b"}) {
