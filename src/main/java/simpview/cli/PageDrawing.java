@@ -61,11 +61,11 @@ public final class PageDrawing {
     }
 
     /**
-     * Why {@code file}, which drew nothing, could not take the options given
-     * ("--near-color and --far-color", "--own-colors"): it is lit.
+     * Why {@code file}, which drew nothing, could not take the depth-cue
+     * colours or, with {@code ownColours}, the own colours given: it is lit.
      */
-    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn, String options) {
-        return options + " " + (options.contains(" and ") ? "are" : "is") + " for depth-cued scenes, and "
+    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn, boolean ownColours) {
+        return (ownColours ? "--own-colors is" : "--near-color and --far-color are") + " for depth-cued scenes, and "
                 + file.getFileName() + " is lit (" + drawn.litBecause() + ")";
     }
 

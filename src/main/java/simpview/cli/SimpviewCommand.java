@@ -5,9 +5,12 @@ import simpview.window.WindowOptions;
 
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
+import java.io.File;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
@@ -22,6 +25,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.SceneList;
+import simpview.scene.Nearest;
 
 /** {@code simpview [--seed S] [--simp-dir D] [SCENE]}: opens the window. */
 @Command(name = "simpview",
@@ -116,8 +120,8 @@ public final class SimpviewCommand implements Callable<Integer> {
      * The command {@code word} is a slip for ("comapre": "compare"), when it
      * names no file or folder (with .simp or without) and is near one.
      */
-    static Optional<String> mistypedCommand(String word, java.util.Collection<String> commands) {
-        if (word.startsWith("-") || word.contains("/") || word.contains(java.io.File.separator) || word.contains(".")) {
+    static Optional<String> mistypedCommand(String word, Collection<String> commands) {
+        if (word.startsWith("-") || word.contains("/") || word.contains(File.separator) || word.contains(".")) {
             return Optional.empty();
         }
         try {
@@ -125,10 +129,10 @@ public final class SimpviewCommand implements Callable<Integer> {
             if (Files.exists(path) || Files.exists(Path.of(word + ".simp"))) {
                 return Optional.empty();
             }
-        } catch (java.nio.file.InvalidPathException e) {
+        } catch (InvalidPathException e) {
             return Optional.empty();
         }
-        return simpview.scene.Nearest.to(word, commands);
+        return Nearest.to(word, commands);
     }
 
     @Override
