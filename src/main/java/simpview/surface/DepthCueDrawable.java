@@ -10,25 +10,44 @@ import simpview.geometry.Camera;
  */
 public final class DepthCueDrawable extends DrawableDecorator {
 
-    // Per channel, in byte levels: colour(z) = far + slope * (z - farZ).
+    /*
+     * In byte levels, per channel: level(z) = (far * range + rise * (z - farZ)) / range,
+     * far and rise = near - far in levels (255 times the colour), range the
+     * depth range (200 in Part 1). The division comes last, so that a level
+     * the formula puts exactly on a half is computed as that half, and
+     * rounds up as SPEC's round(c * 255) does: z = -100 from white to black
+     * is 255 * 100 / 200 = 127.5 exactly, level 128. (With the slope
+     * 255 / 200 = 1.275 taken first, which no double holds, it came out
+     * 127.49999999999999, level 127; so did every face at z = -20, -60,
+     * -100, -140 and -180.) For colours whose levels are whole numbers, as
+     * 0 and 1 give, the numerator is exact and so is every half. A span's
+     * steps along x keep the slope: only its first pixel is placed so.
+     */
     private final double farR;
     private final double farG;
     private final double farB;
+    private final double riseR;
+    private final double riseG;
+    private final double riseB;
     private final double slopeR;
     private final double slopeG;
     private final double slopeB;
     private final double farZ;
+    private final double range;
 
     public DepthCueDrawable(Rgb near, Rgb far, Camera camera, Drawable delegate) {
         super(delegate);
         farZ = camera.yon();
-        double depthRange = camera.hither() - farZ;
-        farR = 255 * far.r();
-        farG = 255 * far.g();
-        farB = 255 * far.b();
-        slopeR = 255 * (near.r() - far.r()) / depthRange;
-        slopeG = 255 * (near.g() - far.g()) / depthRange;
-        slopeB = 255 * (near.b() - far.b()) / depthRange;
+        range = camera.hither() - farZ;
+        farR = 255 * far.r() * range;
+        farG = 255 * far.g() * range;
+        farB = 255 * far.b() * range;
+        riseR = 255 * (near.r() - far.r());
+        riseG = 255 * (near.g() - far.g());
+        riseB = 255 * (near.b() - far.b());
+        slopeR = riseR / range;
+        slopeG = riseG / range;
+        slopeB = riseB / range;
     }
 
     /** The colour of every write is replaced, so none is needed from above. */
@@ -40,16 +59,16 @@ public final class DepthCueDrawable extends DrawableDecorator {
     @Override
     public void setPixel(int x, int y, double z, int argb) {
         double depth = z - farZ;
-        delegate.setPixel(x, y, z, Colors.packLevels(farR + slopeR * depth,
-                farG + slopeG * depth, farB + slopeB * depth));
+        delegate.setPixel(x, y, z, Colors.packLevels((farR + riseR * depth) / range,
+                (farG + riseG * depth) / range, (farB + riseB * depth) / range));
     }
 
     @Override
     public void fillSpan(Span s) {
         double depth = s.z - farZ;
-        s.r = farR + slopeR * depth;
-        s.g = farG + slopeG * depth;
-        s.b = farB + slopeB * depth;
+        s.r = (farR + riseR * depth) / range;
+        s.g = (farG + riseG * depth) / range;
+        s.b = (farB + riseB * depth) / range;
         s.dr = slopeR * s.dz;
         s.dg = slopeG * s.dz;
         s.db = slopeB * s.dz;

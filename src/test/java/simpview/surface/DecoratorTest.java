@@ -108,6 +108,37 @@ class DecoratorTest {
         assertEquals(Colors.pack(0.6, 0.3, 0.1), cue.getPixel(2, 0));
     }
 
+    /**
+     * SPEC's round(c * 255) of far + (near - far) (z + 200) / 200: from white
+     * to black, z = -20, -60, -100, -140 and -180 put c * 255 exactly on a
+     * half (229.5, 178.5, 127.5, 76.5, 25.5), which rounds up; so do whole
+     * spans at those depths, and a span's run of pixels at one depth.
+     */
+    @Test
+    void aDepthWhoseLevelIsExactlyAHalfRoundsUp() {
+        int[] depths = {-20, -60, -100, -140, -180};
+        int[] levels = {230, 179, 128, 77, 26};
+        DepthCueDrawable cue = new DepthCueDrawable(Rgb.WHITE, Rgb.BLACK, Camera.PARALLEL, new ImageDrawable(
+                new BufferedImage(5, 2, BufferedImage.TYPE_INT_RGB)));
+        for (int k = 0; k < depths.length; k++) {
+            cue.setPixel(k, 0, depths[k], 0);
+            Span span = new Span();
+            span.y = 1;
+            span.x0 = k;
+            span.x1 = k + 1;
+            span.xBase = k;
+            span.z = depths[k];
+            cue.fillSpan(span);
+            assertEquals(levels[k] * 0x010101, cue.getPixel(k, 0) & 0xFFFFFF, "setPixel at z = " + depths[k]);
+            assertEquals(levels[k] * 0x010101, cue.getPixel(k, 1) & 0xFFFFFF, "a span at z = " + depths[k]);
+        }
+        // Black to white the other way round: 255 - those, less a half, rounds up too.
+        DepthCueDrawable back = new DepthCueDrawable(Rgb.BLACK, Rgb.WHITE, Camera.PARALLEL, new ImageDrawable(
+                new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB)));
+        back.setPixel(0, 0, -100, 0);
+        assertEquals(128 * 0x010101, back.getPixel(0, 0) & 0xFFFFFF);
+    }
+
     @Test
     void writesOutsideThePanelNeverReachTheMargins() {
         PageCanvas canvas = new PageCanvas();
