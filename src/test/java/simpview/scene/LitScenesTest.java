@@ -171,6 +171,28 @@ class LitScenesTest {
     }
 
     @Test
+    void aNumberThatMayNotBeWhatItIsHasTheCaretUnderIt() throws Exception {
+        // the column is where the number starts, however the numbers are separated; a file replayed
+        // from the library (the second drawing) points at the same place
+        String[][] cases = {
+            {"ambient 0 0 -0.1", "13"},
+            {"light 1 1 1 1 -2", "15"},
+            {"surface 1 1 1 -0.3 2", "15"},
+            {"light (1, 1, 1) 0, 0", "17"},
+            {"depth -10 -50 (0, -1, 0)", "19"},
+            {"light 1 -1 1 1 0", "9"}};
+        for (String[] c : cases) {
+            Path file = write("bad", c[0]);
+            simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+            for (int drawing = 0; drawing < 2; drawing++) {
+                SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(file, new PageCanvas(),
+                        ScenePipeline.Options.lit(library), SceneMonitor.NONE));
+                assertEquals(Integer.parseInt(c[1]), e.column(), c[0] + ": " + e.getMessage());
+            }
+        }
+    }
+
+    @Test
     void aColourOutsideZeroToOneIsClampedWithOneWarningNamingTheFirstLine() throws Exception {
         java.util.List<String> warnings = new java.util.ArrayList<>();
         SceneMonitor monitor = new SceneMonitor() {

@@ -182,7 +182,7 @@ final class LitRules implements RuleSet {
         notNegative(c, 0, 5, "light intensity and attenuation");
         double[] n = c.numbers;
         if (n[3] == 0 && n[4] == 0) {
-            throw error(c, c.argumentIndex, "attenuation A and B are both 0: the light would be infinitely bright");
+            throw errorAtNumber(c, 3, "attenuation A and B are both 0: the light would be infinitely bright");
         }
         state.addLight(ctm.get(0, 3), ctm.get(1, 3), ctm.get(2, 3), n[0], n[1], n[2], n[3], n[4]);
         return false;
@@ -196,13 +196,18 @@ final class LitRules implements RuleSet {
     private void notNegative(Command c, int from, int to, String what) throws SceneException {
         for (int i = from; i < to; i++) {
             if (c.numbers[i] < 0) {
-                throw error(c, c.argumentIndex, what + " may not be negative, found " + c.numbers[i]);
+                throw errorAtNumber(c, i, what + " may not be negative, found " + c.numbers[i]);
             }
         }
     }
 
     private SceneException error(Command c, int at, String problem) {
         return files.current().error(at, problem);
+    }
+
+    /** An error at the command's number n (from 0), the caret under it. */
+    private SceneException errorAtNumber(Command c, int n, String problem) {
+        return files.current().errorAtNumber(c.argumentIndex, n, problem);
     }
 
     /** Notes the first primitive, which no camera may follow; tells a followed stage where it stands. */

@@ -447,6 +447,21 @@ public final class SimpReader implements AutoCloseable {
         return source.suspended() ? "" : text(source.lineStart(), end);
     }
 
+    /**
+     * An error at number n (from 0) of the current line's command, whose
+     * numbers start at byte index {@code from}: the caret under that number.
+     */
+    SceneException errorAtNumber(int from, int n, String problem) {
+        int i = skipSeparators(from);
+        for (int k = 0; k < n && i < end; k++) {
+            while (i < end && !isSeparator(b[i])) {
+                i++;
+            }
+            i = skipSeparators(i);
+        }
+        return error(i, problem);
+    }
+
     /** An error at byte index i of the current line. */
     SceneException error(int i, String problem) {
         SceneException binary = notText();
