@@ -211,6 +211,39 @@ class LitScenesTest {
     }
 
     @Test
+    void aModelsColourOutsideZeroToOneIsClampedWithTheSameWarning() throws Exception {
+        Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 2 0 0\nv 0 50 -100 1 -1 0\nf 1 2 3\n");
+        for (int drawing = 0; drawing < 2; drawing++) { // the model parsed, then kept and replayed
+            java.util.List<String> warnings = new java.util.ArrayList<>();
+            SceneMonitor monitor = new SceneMonitor() {
+                @Override
+                public void warning(String message) {
+                    warnings.add(message);
+                }
+            };
+            simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+            PageCanvas canvas = new PageCanvas();
+            Path scene = write("m", "ambient 1 1 1", "obj \"m\"", "obj \"m\"");
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
+            assertEquals(java.util.List.of(
+                    "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)",
+                    "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)"), warnings);
+            assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
+        }
+        Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
+        java.util.List<String> none = new java.util.ArrayList<>();
+        ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\""), new PageCanvas(),
+                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
+                    @Override
+                    public void warning(String message) {
+                        none.add(message);
+                    }
+                });
+        assertEquals(java.util.List.of(), none, "colours within 0 to 1 warn of nothing");
+    }
+
+    @Test
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");
         Path top = write("top", "# includes a lit part", "{", "file \"part\"", "}");

@@ -103,6 +103,7 @@ final class ObjFaceList {
                 Arrays.copyOf(starts, faceCount + 1),
                 Arrays.copyOf(vertexRefs, refCount),
                 normalRefs == null ? null : Arrays.copyOf(normalRefs, refCount),
-                Arrays.copyOf(lines, faceCount));
+                Arrays.copyOf(lines, faceCount),
+                vertices.firstClampedColour);
     }
 }

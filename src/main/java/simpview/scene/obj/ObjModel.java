@@ -30,9 +30,11 @@ public final class ObjModel {
     private final int[] normalRefs;
     /** The line of each face in its file. */
     private final int[] faceLines;
+    /** The line of the first vertex with a colour channel outside [0, 1], or 0 ({@link ObjCounts}). */
+    private final int firstClampedColour;
 
     ObjModel(double[] positions, double[] colours, double[] normals,
-            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines) {
+            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour) {
         this.positions = positions;
         this.colours = colours;
         this.normals = normals;
@@ -40,6 +42,7 @@ public final class ObjModel {
         this.vertexRefs = vertexRefs;
         this.normalRefs = normalRefs;
         this.faceLines = faceLines;
+        this.firstClampedColour = firstClampedColour;
     }
 
     /** Reads a whole file into a model, however big (for a bounded cache use {@link ObjLibrary}). */
@@ -75,7 +78,7 @@ public final class ObjModel {
     }
 
     public ObjCounts counts() {
-        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount());
+        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour);
     }
 
     /** The bytes of its arrays, what a cache of models counts. */

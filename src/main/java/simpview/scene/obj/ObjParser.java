@@ -113,7 +113,7 @@ final class ObjParser {
         } finally {
             close();
         }
-        return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount);
+        return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour);
     }
 
     private void close() {
@@ -185,7 +185,7 @@ final class ObjParser {
             }
         }
         if (n > 4) {
-            vertices.addVertex(x, y, z, numbers[colour], numbers[colour + 1], numbers[colour + 2]);
+            vertices.addVertex(x, y, z, numbers[colour], numbers[colour + 1], numbers[colour + 2], source.lineNumber());
         } else {
             vertices.addVertex(x, y, z);
         }

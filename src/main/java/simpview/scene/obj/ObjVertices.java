@@ -18,6 +18,8 @@ final class ObjVertices {
     double[] normals = new double[FIRST_CAPACITY];
     int vertexCount;
     int normalCount;
+    /** The line of the first vertex with a colour channel outside [0, 1], or 0. */
+    int firstClampedColour;
 
     void addVertex(double x, double y, double z) {
         if (3 * vertexCount == positions.length) {
@@ -32,8 +34,12 @@ final class ObjVertices {
         }
     }
 
-    void addVertex(double x, double y, double z, double r, double g, double b) {
+    /** A coloured vertex, from line {@code line}. */
+    void addVertex(double x, double y, double z, double r, double g, double b, int line) {
         addVertex(x, y, z);
+        if (firstClampedColour == 0 && !(within(r) && within(g) && within(b))) {
+            firstClampedColour = line;
+        }
         if (colours == null) {
             colours = new double[positions.length];
             Arrays.fill(colours, Double.NaN);
@@ -42,6 +48,10 @@ final class ObjVertices {
         colours[i] = r;
         colours[i + 1] = g;
         colours[i + 2] = b;
+    }
+
+    private static boolean within(double c) {
+        return c >= 0 && c <= 1;
     }
 
     void addNormal(double x, double y, double z) {

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
+import simpview.scene.obj.ObjCounts;
 import simpview.scene.obj.ObjFilesSeen;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.Fog;
@@ -33,6 +34,8 @@ final class LitRules implements RuleSet {
     private final ObjLibrary models;
     /** The obj files this picture has looked at and read: a model drawn again is not looked up or read again. */
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
+    /** Where the first model colour outside 0 to 1 stands ("dummy.obj:12"), or null. */
+    private String firstClampedColour;
     private final FileStack files;
     private final boolean traced;
     private final PrimitiveTrace trace;
@@ -152,8 +155,16 @@ final class LitRules implements RuleSet {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
-        models.draw(file, geometry::face, modelsSeen);
+        ObjCounts counts = models.draw(file, geometry::face, modelsSeen);
+        if (firstClampedColour == null && counts.firstClampedColour() > 0) {
+            firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
+        }
         return true;
+    }
+
+    @Override
+    public String firstClampedColour() {
+        return firstClampedColour;
     }
 
     private boolean surface(Command c) throws SceneException {

@@ -22,6 +22,14 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     long culledCount();
 
     /**
+     * Where the first colour outside 0 to 1 that these rules read themselves
+     * (an .obj model's, "dummy.obj:12") was clamped, or null.
+     */
+    default String firstClampedColour() {
+        return null;
+    }
+
+    /**
      * Draws what is still recorded, when several threads draw (see
      * {@link #drawWith}); nothing otherwise. Called once the scene is read,
      * also after an error, so what was read before it is drawn.

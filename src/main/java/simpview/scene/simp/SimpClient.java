@@ -250,8 +250,9 @@ public final class SimpClient {
     /** What the scene should be told once it is drawn: clamped colours, ignored lit commands. */
     public List<String> warnings() {
         List<String> w = new ArrayList<>();
-        if (firstClamped != null) {
-            w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
+        String clamped = firstClamped != null ? firstClamped : rules.firstClampedColour();
+        if (clamped != null) {
+            w.add(clamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }
         if (firstIgnored != null) {
             w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");

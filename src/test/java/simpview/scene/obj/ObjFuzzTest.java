@@ -33,6 +33,8 @@ class ObjFuzzTest {
         final StringBuilder text = new StringBuilder();
         final List<double[]> positions = new ArrayList<>();
         final List<double[]> colours = new ArrayList<>();
+        /** The line of the first vertex with a colour channel outside [0, 1], or 0. */
+        int firstClampedColour;
         final List<double[]> normals = new ArrayList<>();
         final List<Face> faces = new ArrayList<>();
         int textures;
@@ -85,6 +87,11 @@ class ObjFuzzTest {
             positions.add(wv == 1 ? new double[] {n[0], n[1], n[2]} : new double[] {n[0] / wv, n[1] / wv, n[2] / wv});
             int c = w ? 4 : 3;
             colours.add(colour ? new double[] {n[c], n[c + 1], n[c + 2]} : null);
+            for (int k = c; colour && firstClampedColour == 0 && k < c + 3; k++) {
+                if (n[k] < 0 || n[k] > 1) {
+                    firstClampedColour = line + 1; // emit counts this line
+                }
+            }
             emit(s.toString());
         }
 
@@ -161,7 +168,7 @@ class ObjFuzzTest {
         CollectedFaces streamed = new CollectedFaces();
         ObjCounts counts = ObjReader.stream(ObjReaderTest.NAME, bytes, streamed);
         assertEquals(m.faces, streamed.faces, m.text::toString);
-        assertEquals(new ObjCounts(m.positions.size(), m.normals.size(), m.faces.size()), counts);
+        assertEquals(new ObjCounts(m.positions.size(), m.normals.size(), m.faces.size(), m.firstClampedColour), counts);
         CollectedFaces replayed = new CollectedFaces();
         ObjModel.of(ObjReaderTest.NAME, bytes).replay(replayed);
         assertEquals(m.faces, replayed.faces);
