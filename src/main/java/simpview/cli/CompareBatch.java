@@ -561,7 +561,10 @@ public final class CompareBatch {
 
     private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
         RubricRule base = rubric.defaults();
-        List<Map.Entry<String, Wanted>> missing = Wanted.missingBySubmission(wanted, rows);
+        // A student's folder (check) is one submission, however its pictures are foldered; a class's, one a folder.
+        List<Map.Entry<String, Wanted>> missing = outputs.student()
+                ? Wanted.missing(wanted, rows).stream().map(w -> Map.entry("", w)).toList()
+                : Wanted.missingBySubmission(wanted, rows);
         String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
                 base.metric(), base.flipThreshold());
         Path outDir = outputs.outDir();

@@ -167,6 +167,19 @@ public class CompareBatchTest {
     }
 
     @Test
+    void aStudentsFolderIsOneSubmissionHoweverItsPicturesAreFoldered() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("part1/page1.png"), page(1));
+        png(mine.resolve("part2/page2.png"), page(2));
+        Path out = dir.resolve("r");
+        CliRun run = CliRun.of("check", mine.toString(), "--pages", "1-3", "--out-dir", out.toString());
+        assertTrue(run.out().contains("no picture of page 3 (seed 361) found"), run.out());
+        List<String> rows = csvRows(out);
+        assertEquals(1 + 2 + 1, rows.size(), "a heading, the two pictures, page 3 missing once: " + rows);
+        assertEquals(",3 (seed 361),,,,,,,,MISSING,,,no picture of page 3 (seed 361) was found", rows.get(3));
+    }
+
+    @Test
     void aFolderThatIsNotThereIsAClearError() {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());
