@@ -6,6 +6,7 @@ import simpview.scene.simp.ScenePipeline;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -328,14 +329,21 @@ public final class RenderCommand implements Callable<Integer> {
 
     /**
      * The scenes given (a folder: its .simp files, in natural order), in that
-     * order, each labelled with its file name; one that fails is named and left out.
+     * order, each labelled with its file name; one that fails, or is not
+     * there, is named and left out.
      */
     private int renderSceneSheet() {
-        List<Path> sheet;
-        try {
-            sheet = SceneList.of(scenes);
-        } catch (IllegalArgumentException e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
+        List<Path> sheet = new ArrayList<>();
+        for (Path named : scenes) {
+            if (!Files.isDirectory(named)) {
+                sheet.add(named);
+                continue;
+            }
+            try {
+                sheet.addAll(SceneList.of(List.of(named)));
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), e.getMessage());
+            }
         }
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
