@@ -83,10 +83,15 @@ public final class Main {
         CommandLine commandLine = e.getCommandLine();
         PrintWriter err = commandLine.getErr();
         err.println("simpview: " + e.getMessage());
-        if (commandLine.getParent() == null && args != null && args.length > 0) {
+        if (commandLine.getParent() == null && args != null) {
             // a slip in the command's name: its options were read as the window's
-            SimpviewCommand.mistypedCommand(args[0], commandLine.getSubcommands().keySet()).ifPresent(
-                    command -> err.println("Did you mean 'simpview " + command + "' for '" + args[0] + "'?"));
+            for (String word : args) {
+                java.util.Optional<String> meant = SimpviewCommand.mistypedCommand(word, commandLine.getSubcommands().keySet());
+                if (meant.isPresent()) {
+                    err.println("Did you mean 'simpview " + meant.get() + "' for '" + word + "'?");
+                    break;
+                }
+            }
         }
         if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
             for (String word : unmatched.getUnmatched()) {
