@@ -214,13 +214,16 @@ public class MainCommandLineTest {
     @CsvSource(delimiter = '|', value = {
         "comapre mine.png | no command or scene file 'comapre' | compare",
         "rendr --all --out-dir x | Unknown options: '--all', '--out-dir' | render",
-        "chekc | no command or scene file 'chekc' | check"})
+        "chekc | no command or scene file 'chekc' | check",
+        "--seed 7 comapre | no command or scene file 'comapre' | compare"})
     void aSlipInTheCommandsNameSaysWhichWasMeant(String line, String problem, String meant) {
         CliRun run = CliRun.with(() -> true, line.split(" "));
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
         List<String> lines = run.err().lines().toList();
         assertEquals("simpview: " + problem, lines.get(0), run.err());
-        assertEquals("Did you mean 'simpview " + meant + "' for '" + line.split(" ")[0] + "'?", lines.get(1), run.err());
+        String slip = java.util.Arrays.stream(line.split(" ")).filter(w -> !w.startsWith("-") && !w.equals("7"))
+                .findFirst().orElseThrow();
+        assertEquals("Did you mean 'simpview " + meant + "' for '" + slip + "'?", lines.get(1), run.err());
     }
 
     @ParameterizedTest
@@ -316,9 +319,12 @@ public class MainCommandLineTest {
         Path good = Files.writeString(dir.resolve("good.simp"), "ambient 1 1 1\n");
         Path bad = Files.writeString(dir.resolve("bad.simp"), "rotate W 5\n");
         Path out = dir.resolve("scenes.png");
-        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), bad.toString(), good.toString());
+        Path missing = dir.resolve("missing.simp");
+        CliRun run = CliRun.of("render", "--contact-sheet", "--out", out.toString(), bad.toString(), good.toString(),
+                missing.toString());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
         assertTrue(run.err().startsWith(bad + " left out: "), run.err());
+        assertTrue(run.err().contains(missing + " left out: "), run.err());
         assertEquals(ContactSheet.GAP + ContactSheet.TILE + ContactSheet.GAP, ImageIO.read(out.toFile()).getWidth());
         Path none = dir.resolve("none.png");
         CliRun all = CliRun.of("render", "--contact-sheet", "--out", none.toString(), bad.toString());

@@ -241,6 +241,18 @@ class LitScenesTest {
                     }
                 });
         assertEquals(java.util.List.of(), none, "colours within 0 to 1 warn of nothing");
+        // the first in reading order, a model's or the scene's own
+        Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 2 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
+        java.util.List<String> first = new java.util.ArrayList<>();
+        ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\"", "line (0 0 -5 1.5 0 0) (1 1 -5 0 0 0)"),
+                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
+                    @Override
+                    public void warning(String message) {
+                        first.add(message);
+                    }
+                });
+        assertEquals(java.util.List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                first);
     }
 
     @Test

@@ -23,7 +23,9 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
 
     /**
      * Where the first colour outside 0 to 1 that these rules read themselves
-     * (an .obj model's, "dummy.obj:12") was clamped, or null.
+     * (an .obj model's, "dummy.obj:12") was clamped, or null; asked after
+     * each lit command, so that the scene's warning names the first in
+     * reading order.
      */
     default String firstClampedColour() {
         return null;

@@ -157,6 +157,9 @@ public final class SimpClient {
         }
         boolean drewNow = ((LitRules) rules).execute(c, ctm, style);
         drew |= drewNow;
+        if (firstClamped == null) {
+            firstClamped = rules.firstClampedColour(); // a model's, read by this command
+        }
         return drewNow;
     }
 
@@ -250,9 +253,8 @@ public final class SimpClient {
     /** What the scene should be told once it is drawn: clamped colours, ignored lit commands. */
     public List<String> warnings() {
         List<String> w = new ArrayList<>();
-        String clamped = firstClamped != null ? firstClamped : rules.firstClampedColour();
-        if (clamped != null) {
-            w.add(clamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
+        if (firstClamped != null) {
+            w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }
         if (firstIgnored != null) {
             w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");
