@@ -18,8 +18,9 @@ public final class DepthCueDrawable extends DrawableDecorator {
      * rounds up as SPEC's round(c * 255) does: z = -100 from white to black
      * is 255 * 100 / 200 = 127.5 exactly, level 128. (With the slope
      * 255 / 200 = 1.275 taken first, which no double holds, it came out
-     * 127.49999999999999, level 127; so did every face at z = -20, -60,
-     * -100, -140 and -180.) For colours whose levels are whole numbers, as
+     * 127.49999999999999, level 127, and z = -20 229.49999999999997, level
+     * 229; the other halves, at z = -60, -140 and -180, happened to come out
+     * exact.) For colours whose levels are whole numbers, as
      * 0 and 1 give, the numerator is exact and so is every half. A span's
      * steps along x keep the slope: only its first pixel is placed so.
      */
