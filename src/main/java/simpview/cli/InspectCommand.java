@@ -133,8 +133,7 @@ final class InspectCommand implements Callable<Integer> {
             int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;
             PixelReport report = inspector.inspect(scene, xy[0], xy[1], wanted);
             if (!report.drawn()) {
-                throw new UsageProblem("--near-color and --far-color are for depth-cued scenes, and "
-                        + what.scene.getFileName() + " is lit (" + report.litBecause() + ")");
+                throw new UsageProblem(PageDrawing.cueColoursProblem(what.scene, report.litBecause(), false));
             }
             if (primitive != null && report.vertices(wanted) == null) {
                 throw new UsageProblem("--primitive " + primitive + ": the scene has no primitive " + primitive

@@ -44,7 +44,7 @@ public final class OwnPictures {
             } else {
                 ScenePipeline.Drawn scene = drawing.scene(target.scene(), near, far, false);
                 if (!scene.drawn()) {
-                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene, false));
+                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene.litBecause(), false));
                 }
                 canvas = drawing.canvas();
             }

@@ -62,11 +62,12 @@ public final class PageDrawing {
 
     /**
      * Why {@code file}, which drew nothing, could not take the depth-cue
-     * colours or, with {@code ownColours}, the own colours given: it is lit.
+     * colours or, with {@code ownColours}, the own colours given: it is lit,
+     * {@code litBecause} ("pageA.simp:3 camera").
      */
-    static String cueColoursProblem(Path file, ScenePipeline.Drawn drawn, boolean ownColours) {
+    static String cueColoursProblem(Path file, String litBecause, boolean ownColours) {
         return (ownColours ? "--own-colors is" : "--near-color and --far-color are") + " for depth-cued scenes, and "
-                + file.getFileName() + " is lit (" + drawn.litBecause() + ")";
+                + file.getFileName() + " is lit (" + litBecause + ")";
     }
 
     /** The pages' context from the command line's options (null where not given), warnings to {@code monitor}. */

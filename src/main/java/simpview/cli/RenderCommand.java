@@ -218,7 +218,7 @@ public final class RenderCommand implements Callable<Integer> {
     /** Depth-cue or own colours given, and the scene's first lit command showed it is lit: a usage error (exit 2). */
     private void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
         if (!drawn.drawn()) {
-            throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn, ownColours));
+            throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn.litBecause(), ownColours));
         }
     }
 
