@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import picocli.CommandLine;
 import simpview.pages.PageContext;
 
@@ -86,7 +87,7 @@ public final class Main {
         if (commandLine.getParent() == null && args != null) {
             // a slip in the command's name: its options were read as the window's
             for (String word : args) {
-                java.util.Optional<String> meant = SimpviewCommand.mistypedCommand(word, commandLine.getSubcommands().keySet());
+                Optional<String> meant = SimpviewCommand.mistypedCommand(word, commandLine.getSubcommands().keySet());
                 if (meant.isPresent()) {
                     err.println("Did you mean 'simpview " + meant.get() + "' for '" + word + "'?");
                     break;

@@ -24,9 +24,10 @@ public final class DepthCueDrawable extends DrawableDecorator {
      * 0 and 1 give, the numerator is exact and so is every half. A span's
      * steps along x keep the slope: only its first pixel is placed so.
      */
-    private final double farR;
-    private final double farG;
-    private final double farB;
+    /** far times range, per channel: the numerator's constant part. */
+    private final double farRangeR;
+    private final double farRangeG;
+    private final double farRangeB;
     private final double riseR;
     private final double riseG;
     private final double riseB;
@@ -40,9 +41,9 @@ public final class DepthCueDrawable extends DrawableDecorator {
         super(delegate);
         farZ = camera.yon();
         range = camera.hither() - farZ;
-        farR = 255 * far.r() * range;
-        farG = 255 * far.g() * range;
-        farB = 255 * far.b() * range;
+        farRangeR = 255 * far.r() * range;
+        farRangeG = 255 * far.g() * range;
+        farRangeB = 255 * far.b() * range;
         riseR = 255 * (near.r() - far.r());
         riseG = 255 * (near.g() - far.g());
         riseB = 255 * (near.b() - far.b());
@@ -60,16 +61,16 @@ public final class DepthCueDrawable extends DrawableDecorator {
     @Override
     public void setPixel(int x, int y, double z, int argb) {
         double depth = z - farZ;
-        delegate.setPixel(x, y, z, Colors.packLevels((farR + riseR * depth) / range,
-                (farG + riseG * depth) / range, (farB + riseB * depth) / range));
+        delegate.setPixel(x, y, z, Colors.packLevels((farRangeR + riseR * depth) / range,
+                (farRangeG + riseG * depth) / range, (farRangeB + riseB * depth) / range));
     }
 
     @Override
     public void fillSpan(Span s) {
         double depth = s.z - farZ;
-        s.r = (farR + riseR * depth) / range;
-        s.g = (farG + riseG * depth) / range;
-        s.b = (farB + riseB * depth) / range;
+        s.r = (farRangeR + riseR * depth) / range;
+        s.g = (farRangeG + riseG * depth) / range;
+        s.b = (farRangeB + riseB * depth) / range;
         s.dr = slopeR * s.dz;
         s.dg = slopeG * s.dz;
         s.db = slopeB * s.dz;
