@@ -345,78 +345,86 @@ public final class SimpviewWindow {
         };
     }
 
-    /** What each entry of the table does: a key, its menu entry and the tests all come here. */
+    /** Does what the table's entry says: a key, its menu entry and the tests all come here. */
     void perform(WindowAction action) {
-        switch (action) {
-            case OPEN -> chooseScene();
-            case COMPARE -> comparison.choosePicture(dialogFolder());
-            case SAVE -> save();
-            case REDRAW -> drawAgainFromDisk();
-            case CLOSE, QUIT -> close();
-            case ZOOM_IN -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1));
-            case ZOOM_OUT -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1));
-            case ACTUAL_SIZE -> zoom(ZoomPan::actualSize);
-            case FIT -> zoom(ZoomPan::fit);
-            case CROP -> zoom(ZoomPan::fitPanel);
-            case DEPTH_VIEW -> toggleDepthView();
-            case OWN_COLOURS -> toggleOwnColours();
-            case BACK_FACES -> toggleBackFaces();
-            case OVERDRAW -> toggleOverdraw(false);
-            case DEPTH_FAILURES -> toggleOverdraw(true);
-            case CULLED -> toggleSkipped();
-            case WIRE -> toggleWire();
-            case COMPARE_FLIP -> comparison.flip();
-            case COMPARE_HEAT -> comparison.heat();
-            case COMPARE_STOP -> comparison.stop();
-            case HIDE_ERROR -> pageView.toggleErrorHidden();
-            case UNTURN -> unturn();
-            case NEXT -> next();
-            case PREVIOUS -> previous();
-            case FIRST -> end(true);
-            case LAST -> end(false);
-            case PAGE_1 -> jump(1);
-            case PAGE_2 -> jump(2);
-            case PAGE_3 -> jump(3);
-            case PAGE_4 -> jump(4);
-            case PAGE_5 -> jump(5);
-            case PAGE_6 -> jump(6);
-            case PAGE_7 -> jump(7);
-            case PAGE_8 -> jump(8);
-            case ASSIGNMENT -> switchAssignment();
-            case ASSIGNMENT_1 -> {
+        actionOf(action).run();
+    }
+
+    /**
+     * What each entry of the table does. A switch expression with no
+     * default, so that a new entry does not build until it has its action.
+     */
+    private Runnable actionOf(WindowAction action) {
+        return switch (action) {
+            case OPEN -> () -> chooseScene();
+            case COMPARE -> () -> comparison.choosePicture(dialogFolder());
+            case SAVE -> () -> save();
+            case REDRAW -> () -> drawAgainFromDisk();
+            case CLOSE, QUIT -> () -> close();
+            case ZOOM_IN -> () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1));
+            case ZOOM_OUT -> () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1));
+            case ACTUAL_SIZE -> () -> zoom(ZoomPan::actualSize);
+            case FIT -> () -> zoom(ZoomPan::fit);
+            case CROP -> () -> zoom(ZoomPan::fitPanel);
+            case DEPTH_VIEW -> () -> toggleDepthView();
+            case OWN_COLOURS -> () -> toggleOwnColours();
+            case BACK_FACES -> () -> toggleBackFaces();
+            case OVERDRAW -> () -> toggleOverdraw(false);
+            case DEPTH_FAILURES -> () -> toggleOverdraw(true);
+            case CULLED -> () -> toggleSkipped();
+            case WIRE -> () -> toggleWire();
+            case COMPARE_FLIP -> () -> comparison.flip();
+            case COMPARE_HEAT -> () -> comparison.heat();
+            case COMPARE_STOP -> () -> comparison.stop();
+            case HIDE_ERROR -> () -> pageView.toggleErrorHidden();
+            case UNTURN -> () -> unturn();
+            case NEXT -> () -> next();
+            case PREVIOUS -> () -> previous();
+            case FIRST -> () -> end(true);
+            case LAST -> () -> end(false);
+            case PAGE_1 -> () -> jump(1);
+            case PAGE_2 -> () -> jump(2);
+            case PAGE_3 -> () -> jump(3);
+            case PAGE_4 -> () -> jump(4);
+            case PAGE_5 -> () -> jump(5);
+            case PAGE_6 -> () -> jump(6);
+            case PAGE_7 -> () -> jump(7);
+            case PAGE_8 -> () -> jump(8);
+            case ASSIGNMENT -> () -> switchAssignment();
+            case ASSIGNMENT_1 -> () -> {
                 if (assignment1Page == 0) {
                     coursePages = null;
                     switchAssignment();
                 }
-            }
-            case ASSIGNMENT_2 -> {
+            };
+            case ASSIGNMENT_2 -> () -> {
                 if (assignment1Page > 0 || coursePages != null) {
                     stepTo(stepper.current());
                 }
-            }
-            case ASSIGNMENT_3 -> showCoursePages(3);
-            case ASSIGNMENT_4 -> showCoursePages(4);
-            case A1_RULE -> toggleA1Rule();
-            case SEED -> newSeed();
-            case CANCEL -> cancel();
-            case INSPECTOR -> toggleInspectorPanel();
-            case PIN -> togglePin();
-            case GO_TO_PIXEL -> askForPixel();
-            case COPY -> copyInspected();
-            case COPY_CHAIN -> copyChain();
-            case STEP_ON -> step(1);
-            case STEP_BACK -> step(-1);
-            case STEP_ON_10 -> step(10);
-            case STEP_BACK_10 -> step(-10);
-            case STEP_ON_100 -> step(100);
-            case STEP_BACK_100 -> step(-100);
-            case STEP_ON_1000 -> step(1000);
-            case STEP_BACK_1000 -> step(-1000);
-            case STEP_OFF -> stepOff();
-            case GO_TO_PRIMITIVE -> goToPrimitive();
-            case STEP_TO_OWNER -> stepToOwner();
-            case HELP -> help.setVisible(!help.isVisible());
-        }
+            };
+            case ASSIGNMENT_3 -> () -> showCoursePages(3);
+            case ASSIGNMENT_4 -> () -> showCoursePages(4);
+            case A1_RULE -> () -> toggleA1Rule();
+            case SEED -> () -> newSeed();
+            case CANCEL -> () -> cancel();
+            case INSPECTOR -> () -> toggleInspectorPanel();
+            case PIN -> () -> togglePin();
+            case GO_TO_PIXEL -> () -> askForPixel();
+            case COPY -> () -> copyInspected();
+            case COPY_CHAIN -> () -> copyChain();
+            case STEP_ON -> () -> step(1);
+            case STEP_BACK -> () -> step(-1);
+            case STEP_ON_10 -> () -> step(10);
+            case STEP_BACK_10 -> () -> step(-10);
+            case STEP_ON_100 -> () -> step(100);
+            case STEP_BACK_100 -> () -> step(-100);
+            case STEP_ON_1000 -> () -> step(1000);
+            case STEP_BACK_1000 -> () -> step(-1000);
+            case STEP_OFF -> () -> stepOff();
+            case GO_TO_PRIMITIVE -> () -> goToPrimitive();
+            case STEP_TO_OWNER -> () -> stepToOwner();
+            case HELP -> () -> help.setVisible(!help.isVisible());
+        };
     }
 
     private void zoom(Consumer<ZoomPan> change) {

@@ -12,8 +12,9 @@ import javax.swing.KeyStroke;
  * the keys, the menu bar and the key help (F1) are all built from. Each
  * entry names its menu, its label there, what it does (for F1 and the
  * README), and its keys: the first is the menu's accelerator, the rest do the
- * same. {@code SimpviewWindow.perform} says what each does, in a switch with
- * no default: a new entry does not build until it has its action.
+ * same. {@code SimpviewWindow.actionOf} says what each does, in a switch
+ * expression with no default: a new entry does not build until it has its
+ * action.
  *
  * <p>Keys are written as {@link KeyStroke#getKeyStroke(String)} reads them;
  * "menu" stands for the platform's menu-shortcut key (Ctrl, or Command on a

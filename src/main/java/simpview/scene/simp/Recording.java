@@ -63,7 +63,12 @@ final class Recording {
         size++;
     }
 
-    /** How many numbers c carries: a count and the numbers as written, or the axis and the angle. */
+    /**
+     * How many numbers c carries: a count and the numbers as written, or the
+     * axis and the angle. A switch expression: a new Shape does not build
+     * until it has its count here, and then {@link #copy} and {@link #get}
+     * below want its numbers too.
+     */
     private static int numbersOf(Command c) {
         return switch (c.kind.shape) {
             case NUMBERS -> 1 + c.count;
@@ -72,6 +77,7 @@ final class Recording {
         };
     }
 
+    /** Writes c's numbers from to[at] on, as {@link #get} reads them back; returns where they end. */
     private static int copy(Command c, double[] to, int at) {
         switch (c.kind.shape) {
             case NUMBERS -> {

@@ -256,12 +256,13 @@ public final class SimpReader implements AutoCloseable {
             throw error(start, "unknown command '" + word + "'" + Keywords.suggestion(word) + "; expected " + Keywords.all());
         }
         c.kind = kind;
-        switch (kind.shape) {
-            case NONE -> expectEnd(wordEnd);
+        // An expression, so that a new Shape does not build until it is read here.
+        expectEnd(switch (kind.shape) {
+            case NONE -> wordEnd;
             case NUMBERS -> numbers(arguments(wordEnd, c), c);
-            case AXIS_ANGLE -> expectEnd(rotation(arguments(wordEnd, c), c));
-            case NAME -> expectEnd(fileName(arguments(wordEnd, c), c));
-        }
+            case AXIS_ANGLE -> rotation(arguments(wordEnd, c), c);
+            case NAME -> fileName(arguments(wordEnd, c), c);
+        });
         if (kind.vertices() > 0) {
             c.splitVertices();
         }
@@ -288,8 +289,10 @@ public final class SimpReader implements AutoCloseable {
      * The numbers of the line to its end: blanks, commas and parentheses only
      * separate them, however they are grouped. Their count must be one the
      * command takes.
+     *
+     * @return the end of the line
      */
-    private void numbers(int from, Command c) throws SceneException {
+    private int numbers(int from, Command c) throws SceneException {
         Kind kind = c.kind;
         int most = kind.mostNumbers();
         int n = 0;
@@ -310,6 +313,7 @@ public final class SimpReader implements AutoCloseable {
             throw error(end, wrongCount(kind, n));
         }
         c.count = n;
+        return end;
     }
 
     private int rotation(int from, Command c) throws SceneException {
