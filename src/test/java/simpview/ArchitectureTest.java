@@ -35,7 +35,7 @@ class ArchitectureTest {
             "window.render", "window.instruments", "window",
             "cli");
 
-    private static final Pattern PACKAGE = Pattern.compile("^package simpview\\.([a-z.]+);", Pattern.MULTILINE);
+    private static final Pattern PACKAGE = Pattern.compile("^package simpview(?:\\.([a-z.]+))?;", Pattern.MULTILINE);
     /** An import, or a type named in full in the code: simpview.pkg.Type. */
     private static final Pattern USE = Pattern.compile("\\bsimpview\\.([a-z][a-z.]*)\\.[A-Z]");
 
@@ -43,13 +43,18 @@ class ArchitectureTest {
     }
 
     private static List<Source> sources() throws IOException {
+        return sources(MAIN);
+    }
+
+    /** The Java files below root, each with its package below simpview ("" for simpview itself). */
+    private static List<Source> sources(Path root) throws IOException {
         List<Source> all = new ArrayList<>();
-        try (Stream<Path> files = Files.walk(MAIN)) {
+        try (Stream<Path> files = Files.walk(root)) {
             for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
                 String text = Files.readString(file);
                 Matcher m = PACKAGE.matcher(text);
                 assertTrue(m.find(), file + " has a package");
-                all.add(new Source(file, m.group(1), text));
+                all.add(new Source(file, m.group(1) == null ? "" : m.group(1), text));
             }
         }
         return all;
@@ -87,15 +92,24 @@ class ArchitectureTest {
         assertEquals(List.of(), wrong);
     }
 
+    /**
+     * No type of any source set (the program, its tests, benchmarks and
+     * tools) is named like a package of any of them: {@code Pages} beside
+     * {@code simpview.pages} would read as that package's own.
+     */
     @Test
     void noTypeSharesANameWithAPackage() throws IOException {
+        List<Source> all = new ArrayList<>(sources());
+        for (Path root : List.of(Path.of("src/test/java"), Path.of("src/jmh/java"), Path.of("src/tools/java"))) {
+            all.addAll(sources(root));
+        }
         Set<String> segments = new TreeSet<>();
-        for (String layer : LAYERS) {
-            segments.addAll(List.of(layer.split("\\.")));
+        for (Source s : all) {
+            segments.addAll(List.of(s.pkg().split("\\.")));
         }
         List<String> clashes = new ArrayList<>();
         Pattern type = Pattern.compile("\\b(?:class|interface|record|enum)\\s+([A-Z]\\w*)");
-        for (Source s : sources()) {
+        for (Source s : all) {
             Matcher m = type.matcher(s.text());
             while (m.find()) {
                 if (segments.contains(m.group(1).toLowerCase(Locale.ROOT))) {
@@ -106,11 +120,6 @@ class ArchitectureTest {
         assertEquals(List.of(), clashes);
     }
 
-    /**
-     * Test classes run two at a time (junit-platform.properties): one of
-     * simpview.window that opens windows (a driver, a robot, a frame) must run
-     * alone.
-     */
     /**
      * Every jqwik property names its own seed, so that a run's random inputs
      * are the same on every machine and every run: a property that finds a
@@ -134,6 +143,11 @@ class ArchitectureTest {
         assertEquals(List.of(), unseeded, "properties without a seed");
     }
 
+    /**
+     * Test classes run two at a time (junit-platform.properties): one of
+     * simpview.window that opens windows (a driver, a robot, a frame) must run
+     * alone.
+     */
     @Test
     void everyWindowTestRunsAlone() throws IOException {
         List<String> shared = new ArrayList<>();

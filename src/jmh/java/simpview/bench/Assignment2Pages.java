@@ -37,7 +37,7 @@ import simpview.surface.DrawingThreads;
 @Warmup(iterations = 3, time = 1)
 @Measurement(iterations = 4, time = 1)
 @Fork(1)
-public class Pages {
+public class Assignment2Pages {
 
     @Param({"1", "2", "3", "4", "5", "6", "7", "8"})
     public int page;

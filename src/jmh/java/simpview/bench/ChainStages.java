@@ -72,7 +72,7 @@ public class ChainStages {
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
         switch (scene) {
-            case "mesh" -> mesh = Geometry.mesh().numbers;
+            case "mesh" -> mesh = Workload.mesh().numbers;
             case "page5" -> file = PageContext.PROJECT_SCENES.resolve("page5.simp");
             case "page7" -> file = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"), "page7.simp");
             default -> throw new IllegalArgumentException("no scene " + scene);

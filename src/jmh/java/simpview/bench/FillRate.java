@@ -32,16 +32,16 @@ public class FillRate extends AgainstJava2D {
 
     private Drawable target;
     private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
-    private Geometry.Triangles triangles;
+    private Workload.Triangles triangles;
 
     @Override
     protected void prepare() {
         target = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
-        triangles = Geometry.fullPanel();
+        triangles = Workload.fullPanel();
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.PANEL_PIXELS)
+    @OperationsPerInvocation(Workload.PANEL_PIXELS)
     public PageCanvas simpview() {
         double[] p = triangles.numbers;
         renderer.drawPolygon(p, 0, target);
@@ -50,7 +50,7 @@ public class FillRate extends AgainstJava2D {
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.PANEL_PIXELS)
+    @OperationsPerInvocation(Workload.PANEL_PIXELS)
     public BufferedImage java2d() {
         for (int t = 0; t < 2; t++) {
             java2d.g.setColor(triangles.colors[t]);

@@ -24,7 +24,7 @@ import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 
 /**
- * What the window's inspector costs: a page drawn as {@link Pages} draws it
+ * What the window's inspector costs: a page drawn as {@link Assignment2Pages} draws it
  * ("off": no record, no trace, the command line's drawing), and drawn with
  * the provenance decorator after the z-buffer and a {@link PrimitiveLog} of
  * every primitive's file, line and outline ("record"), as the window draws.

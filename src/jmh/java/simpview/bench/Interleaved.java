@@ -75,7 +75,7 @@ public final class Interleaved {
     }
 
     /** One build's benchmark object and its methods. */
-    private record Build(String name, Object state, Method benchmark, List<Method> perInvocation,
+    private record LoadedBuild(String name, Object state, Method benchmark, List<Method> perInvocation,
             List<Method> tearDowns) {
 
         void call() throws ReflectiveOperationException {
@@ -121,7 +121,7 @@ public final class Interleaved {
             System.exit(2);
         }
         double seconds = Double.parseDouble(args[2]);
-        List<Build> builds = new ArrayList<>();
+        List<LoadedBuild> builds = new ArrayList<>();
         for (int i = 4; i < args.length; i++) {
             String[] dirAndOwn = args[i].split("@", 2);
             String params = dirAndOwn.length == 1 ? args[3]
@@ -130,7 +130,7 @@ public final class Interleaved {
         }
         long warmUntil = System.nanoTime() + (long) (Math.max(4, seconds / 3) * 1e9);
         while (System.nanoTime() < warmUntil) {
-            for (Build b : builds) {
+            for (LoadedBuild b : builds) {
                 for (int k = 0; k < 20; k++) {
                     b.call();
                 }
@@ -145,7 +145,7 @@ public final class Interleaved {
         while (System.nanoTime() < until) {
             for (int j = 0; j < builds.size(); j++) {
                 int i = (j + rounds / TIMED_IN_A_TURN) % builds.size();
-                Build b = builds.get(i);
+                LoadedBuild b = builds.get(i);
                 for (int call = 0; call <= TIMED_IN_A_TURN; call++) {
                     for (Method m : b.perInvocation()) {
                         m.invoke(b.state());
@@ -178,14 +178,14 @@ public final class Interleaved {
             System.out.printf(Locale.ROOT, "%-24s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%n",
                     builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first);
         }
-        for (Build b : builds) {
+        for (LoadedBuild b : builds) {
             for (Method m : b.tearDowns()) {
                 m.invoke(b.state());
             }
         }
     }
 
-    private static Build load(String dir, String className, String method, String params, String label)
+    private static LoadedBuild load(String dir, String className, String method, String params, String label)
             throws ReflectiveOperationException, MalformedURLException {
         File classes = new File(dir);
         URL[] urls = {new File(classes, "jmh").toURI().toURL(), new File(classes, "main").toURI().toURL()};
@@ -231,7 +231,7 @@ public final class Interleaved {
             }
         }
         String name = nameOf(classes) + (label.contains("@") ? label.substring(label.indexOf('@')) : "");
-        return new Build(name, state, type.getMethod(method),
+        return new LoadedBuild(name, state, type.getMethod(method),
                 perInvocation, tearDowns);
     }
 

@@ -34,24 +34,24 @@ public class Lines extends AgainstJava2D {
     private Drawable panel;
     private Drawable depthCued;
     private final DdaLineRenderer renderer = new DdaLineRenderer();
-    private Geometry.Lines lines;
+    private Workload.Lines lines;
 
     @Override
     protected void prepare() {
         panel = canvas.panel();
         depthCued = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
-        lines = Geometry.randomLines();
+        lines = Workload.randomLines();
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.LINES)
+    @OperationsPerInvocation(Workload.LINES)
     public PageCanvas simpviewPanel() {
         draw(panel);
         return canvas;
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.LINES)
+    @OperationsPerInvocation(Workload.LINES)
     public PageCanvas simpviewDepthCued() {
         draw(depthCued);
         return canvas;
@@ -65,7 +65,7 @@ public class Lines extends AgainstJava2D {
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.LINES)
+    @OperationsPerInvocation(Workload.LINES)
     public BufferedImage java2d() {
         int[] c = lines.imageCoords;
         int n = lines.count();

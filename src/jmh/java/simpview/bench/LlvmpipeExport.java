@@ -262,7 +262,7 @@ public final class LlvmpipeExport {
     }
 
     /**
-     * One of A2's eight pages, as {@link Pages} draws it (the default seed;
+     * One of A2's eight pages, as {@link Assignment2Pages} draws it (the default seed;
      * the project's scenes from simp/, the course's from {@code courseScenes}).
      */
     private record A2Page(int number, Path courseScenes) implements ComparedPage {

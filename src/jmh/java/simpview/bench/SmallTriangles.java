@@ -33,16 +33,16 @@ public class SmallTriangles extends AgainstJava2D {
 
     private Drawable target;
     private final FilledPolygonRenderer renderer = new FilledPolygonRenderer();
-    private Geometry.Triangles mesh;
+    private Workload.Triangles mesh;
 
     @Override
     protected void prepare() {
         target = canvas.depthCued(Rgb.WHITE, Rgb.BLACK);
-        mesh = Geometry.mesh();
+        mesh = Workload.mesh();
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.MESH_TRIANGLES)
+    @OperationsPerInvocation(Workload.MESH_TRIANGLES)
     public PageCanvas simpview() {
         // The triangles as plain numbers, as a scene hands them over.
         double[] p = mesh.numbers;
@@ -54,7 +54,7 @@ public class SmallTriangles extends AgainstJava2D {
     }
 
     @Benchmark
-    @OperationsPerInvocation(Geometry.MESH_TRIANGLES)
+    @OperationsPerInvocation(Workload.MESH_TRIANGLES)
     public BufferedImage java2d() {
         int n = mesh.count();
         for (int t = 0; t < n; t++) {

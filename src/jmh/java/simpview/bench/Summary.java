@@ -48,7 +48,7 @@ public final class Summary {
     private static List<Row> rows() {
         List<Row> rows = new ArrayList<>();
         for (int page = 1; page <= 8; page++) {
-            rows.add(row("Page " + page + ", clear + draw", B + "Pages.clearAndDraw", String.valueOf(page),
+            rows.add(row("Page " + page + ", clear + draw", B + "Assignment2Pages.clearAndDraw", String.valueOf(page),
                     null, "ms", true, "<= 2 ms", (ours, ratio) -> ours <= 2));
         }
         rows.add(row("Full-panel fill: 2 triangles, blerp + z-buffer + depth cue (Java2D: flat fillPolygon)",

@@ -12,7 +12,7 @@ import simpview.surface.PageCanvas;
  * (origin top-left of the 750x750 page, y down), with integer vertices so that
  * both draw exactly the same geometry.
  */
-final class Geometry {
+final class Workload {
 
     static final int PANEL = PageCanvas.PANEL;
     static final int MARGIN = PageCanvas.MARGIN;
@@ -24,7 +24,7 @@ final class Geometry {
 
     static final int LINES = 100_000;
 
-    private Geometry() {
+    private Workload() {
     }
 
     /** Image x of panel pixel edge x. */

@@ -72,8 +72,8 @@ public final class CompareBatch {
         }
     }
 
-    /** A reference a picture may match: simpview's own (name "") or an accepted alternate. */
-    private record Reference(String name, int[] panel) {
+    /** A panel a picture may match: simpview's own (name "") or an accepted alternate. */
+    private record AcceptedPanel(String name, int[] panel) {
     }
 
     /**
@@ -219,7 +219,7 @@ public final class CompareBatch {
         }
         Map<CompareTarget, Object> drawn = drawAll(matches);
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
-        Map<CompareTarget, List<Reference>> alternates = alternatesOf(drawn.keySet(), namer);
+        Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, outputs.outDir(),
                 outputs.diffs());
         double seconds = (System.nanoTime() - start) / 1e9;
@@ -258,13 +258,13 @@ public final class CompareBatch {
      * names a page or scene (as submissions do) is for that one only; one that names
      * none is for every target of the rule. An unreadable alternate is said and left out.
      */
-    private Map<CompareTarget, List<Reference>> alternatesOf(Iterable<CompareTarget> targets,
+    private Map<CompareTarget, List<AcceptedPanel>> alternatesOf(Iterable<CompareTarget> targets,
             Function<String, Optional<String>> namer) {
-        Map<CompareTarget, List<Reference>> all = new HashMap<>();
+        Map<CompareTarget, List<AcceptedPanel>> all = new HashMap<>();
         Map<Path, Object> read = new HashMap<>();
         for (CompareTarget target : targets) {
             RubricRule rule = ruleOf(target);
-            List<Reference> refs = new ArrayList<>();
+            List<AcceptedPanel> refs = new ArrayList<>();
             if (rule.alternates() != null) {
                 List<Path> files;
                 try {
@@ -287,7 +287,7 @@ public final class CompareBatch {
                         }
                     });
                     if (picture instanceof Picture p) {
-                        refs.add(new Reference(rule.alternates().relativize(file).toString(), p.panel()));
+                        refs.add(new AcceptedPanel(rule.alternates().relativize(file).toString(), p.panel()));
                     }
                 }
             }
@@ -323,10 +323,10 @@ public final class CompareBatch {
         return drawn;
     }
 
-    /** The comparisons, on as many threads as there are cores; rows in the pictures' order. */
+    /** The comparisons, on a thread a core up to four; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Object> drawn, Map<Integer, BufferedImage> firstAssignment,
-            Map<CompareTarget, List<Reference>> alternates, Path outDir, DiffImages diffs) {
+            Map<CompareTarget, List<AcceptedPanel>> alternates, Path outDir, DiffImages diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
@@ -377,7 +377,8 @@ public final class CompareBatch {
      * named page2.png), it is compared as that, panel by panel; else as the page it names.
      */
     private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Object ours,
-            List<Reference> alternates, Map<Integer, BufferedImage> firstAssignment, Path outDir, DiffImages diffs) {
+            List<AcceptedPanel> alternates, Map<Integer, BufferedImage> firstAssignment, Path outDir,
+            DiffImages diffs) {
         if (!target.isPage() || target.page() > Assignment1.COUNT || ours instanceof String) {
             return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
         }
@@ -425,8 +426,8 @@ public final class CompareBatch {
      * and when it does not pass, against each accepted alternate: the first that passes is its
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
-    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours, List<Reference> alternates,
-            Path outDir, DiffImages diffs, Picture read) {
+    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours,
+            List<AcceptedPanel> alternates, Path outDir, DiffImages diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
@@ -440,12 +441,12 @@ public final class CompareBatch {
                 return BatchRow.broken(relative, label, e.getMessage(), rule);
             }
         }
-        List<Reference> references = new ArrayList<>();
-        references.add(new Reference("", ((Picture) ours).panel()));
+        List<AcceptedPanel> references = new ArrayList<>();
+        references.add(new AcceptedPanel("", ((Picture) ours).panel()));
         references.addAll(alternates);
         ComparisonReport best = null;
         String bestName = "";
-        for (Reference reference : references) {
+        for (AcceptedPanel reference : references) {
             Comparison comparison = rule.compare(reference.panel(), theirs.panel(), Comparison.N);
             ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
             if (best == null || report.passes()) {

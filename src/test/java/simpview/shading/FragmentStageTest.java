@@ -35,8 +35,8 @@ class FragmentStageTest {
     private static final int CHANNELS = FragmentLayout.PHONG_CHANNELS;
 
     /** One stage, its surface, and what it keeps. */
-    private record Stage(FragmentStage fragments, BufferedImage image, ZBuffer zbuffer, Provenance provenance) {
-        static Stage make(LitState state, boolean phong) {
+    private record StageSetup(FragmentStage fragments, BufferedImage image, ZBuffer zbuffer, Provenance provenance) {
+        static StageSetup make(LitState state, boolean phong) {
             BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
             ZBuffer zbuffer = new ZBuffer(SIZE, SIZE);
             zbuffer.reset(-200);
@@ -48,12 +48,12 @@ class FragmentStageTest {
             } else {
                 fragments.colours(state.fog());
             }
-            return new Stage(fragments, image, zbuffer, provenance);
+            return new StageSetup(fragments, image, zbuffer, provenance);
         }
 
         /** A phong stage whose pixels wait to be shaded at the end ({@link FragmentStage#shadeLater}). */
-        static Stage deferring(LitState state) {
-            Stage stage = make(state, true);
+        static StageSetup deferring(LitState state) {
+            StageSetup stage = make(state, true);
             stage.fragments().shadeLater(new WaitingPixels(SIZE, SIZE), stage.provenance());
             stage.fragments().clearWaits();
             return stage;
@@ -133,7 +133,7 @@ class FragmentStageTest {
     };
 
     /** The two stages drew the same picture, depths and owners, to the bit. */
-    private static void assertSameDrawing(Stage expected, Stage actual) {
+    private static void assertSameDrawing(StageSetup expected, StageSetup actual) {
         assertArrayEquals(pixels(expected.image()), pixels(actual.image()), "the picture");
         assertArrayEquals(expected.zbuffer().copyDepths(), actual.zbuffer().copyDepths(), "the depths");
         assertArrayEquals(expected.provenance().copyOwners(), actual.provenance().copyOwners(), "the provenance");
@@ -156,8 +156,8 @@ class FragmentStageTest {
         Random random = new Random(seed);
         LitState state = scene(random);
         boolean phong = random.nextInt(3) > 0;
-        Stage bySpan = Stage.make(state, phong);
-        Stage byPixel = Stage.make(state, phong);
+        StageSetup bySpan = StageSetup.make(state, phong);
+        StageSetup byPixel = StageSetup.make(state, phong);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         double[] v = new double[CHANNELS];
@@ -196,15 +196,15 @@ class FragmentStageTest {
         Random random = new Random(seed);
         LitState state = sceneThatWaits(random);
         PointShader frozen = state.frozenShader().get();
-        Stage atOnce = Stage.make(state, true);
-        Stage atEnd = Stage.deferring(state);
+        StageSetup atOnce = StageSetup.make(state, true);
+        StageSetup atEnd = StageSetup.deferring(state);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         double[] v = new double[CHANNELS];
         int spans = 1 + random.nextInt(60);
         for (int s = 0; s < spans; s++) {
             boolean phong = random.nextInt(3) > 0;
-            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+            for (StageSetup stage : new StageSetup[] {atOnce, atEnd}) {
                 if (phong) {
                     stage.fragments().phong(frozen, state.fog());
                 } else {
@@ -256,15 +256,15 @@ class FragmentStageTest {
             fogs[i] = state.fog();
         }
         LitState first = scene(random);
-        Stage atOnce = Stage.make(first, true);
-        Stage atEnd = Stage.deferring(first);
+        StageSetup atOnce = StageSetup.make(first, true);
+        StageSetup atEnd = StageSetup.deferring(first);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         PointShader ambient = ambientScene(random).frozenShader().get();
         int spans = 1 + random.nextInt(400);
         for (int s = 0; s < spans; s++) {
             int look = random.nextInt(lookCount + 2); // the last two shaded at once: the ambient term, colours
-            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+            for (StageSetup stage : new StageSetup[] {atOnce, atEnd}) {
                 if (look < lookCount) {
                     stage.fragments().phong(shaders[look], fogs[look]);
                 } else if (look == lookCount) {
@@ -298,8 +298,8 @@ class FragmentStageTest {
     void aPrimitivesShortSpansWaitUntilItIsDoneAndDrawWhatItsPixelsDraw(@ForAll long seed) {
         Random random = new Random(seed);
         LitState state = random.nextBoolean() ? scene(random) : ambientScene(random);
-        Stage bySpan = Stage.make(state, true);
-        Stage byPixel = Stage.make(state, true);
+        StageSetup bySpan = StageSetup.make(state, true);
+        StageSetup byPixel = StageSetup.make(state, true);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         double[] v = new double[CHANNELS];
@@ -324,7 +324,7 @@ class FragmentStageTest {
                 }
             }
             if (primitive == 0 && written < FragmentStage.BATCH) {
-                assertArrayEquals(pixels(Stage.make(state, true).image()), pixels(bySpan.image()),
+                assertArrayEquals(pixels(StageSetup.make(state, true).image()), pixels(bySpan.image()),
                         "nothing written before the primitive is done");
             }
             bySpan.fragments().primitiveDone();
@@ -336,8 +336,8 @@ class FragmentStageTest {
     void aLongLitPhongSpanWaitsUntilTheEndAndIsThenWhatItWouldHaveBeen() {
         LitState state = sceneThatWaits(new Random(5));
         PointShader frozen = state.frozenShader().get();
-        Stage atOnce = Stage.make(state, true);
-        Stage atEnd = Stage.make(state, true);
+        StageSetup atOnce = StageSetup.make(state, true);
+        StageSetup atEnd = StageSetup.make(state, true);
         WaitingPixels waiting = new WaitingPixels(SIZE, SIZE);
         atEnd.fragments().shadeLater(waiting, null);
         double[] v0 = new double[CHANNELS];
@@ -369,8 +369,8 @@ class FragmentStageTest {
         LitState state = oneLightScene();
         PointShader frozen = state.frozenShader().get();
         assertEquals(1, frozen.lightCount());
-        Stage atOnce = Stage.make(state, true);
-        Stage atEnd = Stage.deferring(state);
+        StageSetup atOnce = StageSetup.make(state, true);
+        StageSetup atEnd = StageSetup.deferring(state);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         v0[FragmentLayout.NZ] = 1;
@@ -382,14 +382,14 @@ class FragmentStageTest {
         int[] tos = {15, 12 + FragmentStage.SHORT_SPAN, 18, 13}; // the second a long span
         for (int s = 0; s < depths.length; s++) {
             v0[FragmentLayout.Z] = depths[s];
-            for (Stage stage : new Stage[] {atOnce, atEnd}) {
+            for (StageSetup stage : new StageSetup[] {atOnce, atEnd}) {
                 stage.fragments().phong(frozen, state.fog());
                 stage.provenance().begin(s);
                 stage.fragments().span(20, froms[s], tos[s], 1, 0, v0, dv);
                 stage.fragments().primitiveDone();
             }
         }
-        assertArrayEquals(pixels(Stage.make(state, true).image()), pixels(atEnd.image()), "nothing written yet");
+        assertArrayEquals(pixels(StageSetup.make(state, true).image()), pixels(atEnd.image()), "nothing written yet");
         atEnd.fragments().shadeWaiting();
         assertSameDrawing(atOnce, atEnd);
         assertTrue((atEnd.image().getRGB(14, 20) & 0xFFFFFF) != 0, "lit");
@@ -407,13 +407,13 @@ class FragmentStageTest {
         LitState state = scene(random, 1);
         PointShader frozen = state.frozenShader().get();
         assertEquals(1, frozen.lightCount());
-        Stage points = Stage.deferring(state);
+        StageSetup points = StageSetup.deferring(state);
         WaitingPixels waits = new WaitingPixels(SIZE, SIZE);
-        Stage kept = keepingShortSpans(state, frozen, waits);
+        StageSetup kept = keepingShortSpans(state, frozen, waits);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         double[] q = randomSpan(random, v0, dv);
-        for (Stage stage : new Stage[] {points, kept}) {
+        for (StageSetup stage : new StageSetup[] {points, kept}) {
             stage.fragments().phong(frozen, state.fog());
             stage.fragments().span(100, 40, 45, q[0], q[1], v0, dv);
             stage.fragments().primitiveDone();
@@ -425,7 +425,7 @@ class FragmentStageTest {
             int from = random.nextInt(SIZE + 20) - 10;
             int length = random.nextBoolean() ? 1 + random.nextInt(FragmentStage.SHORT_SPAN - 1) : random.nextInt(SIZE);
             q = randomSpan(random, v0, dv);
-            for (Stage stage : new Stage[] {points, kept}) {
+            for (StageSetup stage : new StageSetup[] {points, kept}) {
                 stage.fragments().phong(frozen, state.fog());
                 stage.provenance().begin(s);
                 stage.fragments().span(y, from, from + length, q[0], q[1], v0, dv);
@@ -442,8 +442,8 @@ class FragmentStageTest {
      * ten pixels, all passing, and now starts a new picture on a surface of
      * its own, its pixels waiting in {@code waits}: its short spans are kept.
      */
-    private static Stage keepingShortSpans(LitState state, PointShader frozen, WaitingPixels waits) {
-        Stage first = Stage.deferring(state);
+    private static StageSetup keepingShortSpans(LitState state, PointShader frozen, WaitingPixels waits) {
+        StageSetup first = StageSetup.deferring(state);
         FragmentStage fragments = first.fragments();
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
@@ -463,7 +463,7 @@ class FragmentStageTest {
         fragments.startPicture(zbuffer, new ProvenanceDrawable(provenance, new ImageDrawable(image)));
         fragments.shadeLater(waits, provenance);
         fragments.clearWaits();
-        return new Stage(fragments, image, zbuffer, provenance);
+        return new StageSetup(fragments, image, zbuffer, provenance);
     }
 
     /** Forwards the spans, but not the questions: every triangle is walked and every span given. */
@@ -571,8 +571,8 @@ class FragmentStageTest {
         for (int trial = 0; trial < 40; trial++) {
             LitState state = random.nextBoolean() ? sceneThatWaits(random) : scene(random);
             boolean atEnd = random.nextBoolean();
-            Stage asked = atEnd ? Stage.deferring(state) : Stage.make(state, true);
-            Stage unasked = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            StageSetup asked = atEnd ? StageSetup.deferring(state) : StageSetup.make(state, true);
+            StageSetup unasked = atEnd ? StageSetup.deferring(state) : StageSetup.make(state, true);
             Asked askedSink = new Asked(asked.fragments());
             FragmentSink unaskedSink = new Unasked(unasked.fragments());
             LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
@@ -581,7 +581,7 @@ class FragmentStageTest {
             int polygons = 20 + random.nextInt(200);
             for (int p = 0; p < polygons; p++) {
                 boolean phong = random.nextInt(4) > 0;
-                for (Stage stage : new Stage[] {asked, unasked}) {
+                for (StageSetup stage : new StageSetup[] {asked, unasked}) {
                     if (phong) {
                         stage.fragments().phong(state.frozenShader().get(), state.fog());
                     } else {
@@ -648,8 +648,8 @@ class FragmentStageTest {
                         0.9, 0.7, 0.5, 1, random.nextBoolean() ? 0 : 0.02);
             }
             boolean atEnd = random.nextBoolean();
-            Stage told = atEnd ? Stage.deferring(state) : Stage.make(state, true);
-            Stage untold = atEnd ? Stage.deferring(state) : Stage.make(state, true);
+            StageSetup told = atEnd ? StageSetup.deferring(state) : StageSetup.make(state, true);
+            StageSetup untold = atEnd ? StageSetup.deferring(state) : StageSetup.make(state, true);
             BatchCount shader = new BatchCount(state.frozenShader().get());
             LitPolygonRasterizer rasterizer = new LitPolygonRasterizer();
             LitPolygonRasterizer untoldRasterizer = new LitPolygonRasterizer();
@@ -657,7 +657,7 @@ class FragmentStageTest {
             int polygons = 10 + random.nextInt(60);
             for (int p = 0; p < polygons; p++) {
                 boolean phong = random.nextInt(5) > 0;
-                for (Stage stage : new Stage[] {told, untold}) {
+                for (StageSetup stage : new StageSetup[] {told, untold}) {
                     if (phong) {
                         stage.fragments().phong(shader, state.fog());
                     } else {
@@ -764,7 +764,7 @@ class FragmentStageTest {
     @Test
     void aFullRowIsDrawnAndASecondFartherOneLeavesItAlone() {
         LitState state = scene(new Random(5));
-        Stage stage = Stage.make(state, true);
+        StageSetup stage = StageSetup.make(state, true);
         double[] v0 = new double[CHANNELS];
         double[] dv = new double[CHANNELS];
         v0[FragmentLayout.Z] = -5;

@@ -30,7 +30,7 @@ final class BlockLetters {
      * to 7, z = 0 back to -DEPTH.
      */
     static String word(String word) {
-        SimpWriter w = Shapes.header("the block letters \"" + word + "\": cells of 1 unit, "
+        SimpWriter w = Solids.header("the block letters \"" + word + "\": cells of 1 unit, "
                 + (word.length() * (WIDTH + GAP) - GAP) + " wide, " + HEIGHT + " high, made of unit cubes");
         for (int k = 0; k < word.length(); k++) {
             String[] glyph = GLYPHS.get(word.charAt(k));

@@ -23,11 +23,11 @@ public final class ShapeGenerator {
     /** File name to content, in a fixed order. */
     public static Map<String, String> shapes() {
         Map<String, String> files = new LinkedHashMap<>();
-        files.put("cube.simp", Shapes.cube());
-        files.put("sphere.simp", Shapes.sphere(24, 16));
-        files.put("cylinder.simp", Shapes.cylinder(24));
-        files.put("cone.simp", Shapes.cone(24));
-        files.put("pyramid.simp", Shapes.pyramid());
+        files.put("cube.simp", Solids.cube());
+        files.put("sphere.simp", Solids.sphere(24, 16));
+        files.put("cylinder.simp", Solids.cylinder(24));
+        files.put("cone.simp", Solids.cone(24));
+        files.put("pyramid.simp", Solids.pyramid());
         files.put("letters.simp", BlockLetters.word("SIMP"));
         files.put("torus.obj", Models.torus(1, 0.4, 40, 20));
         files.put("crystal.obj", Models.crystal(6));

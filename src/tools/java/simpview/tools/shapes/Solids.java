@@ -7,9 +7,9 @@ package simpview.tools.shapes;
  * stand on y = 0 with radius (or half-width) 1 and height 1.
  * StrictMath keeps the output the same on every machine.
  */
-final class Shapes {
+final class Solids {
 
-    private Shapes() {
+    private Solids() {
     }
 
     /** The unit cube, every coordinate 0 or 1: two triangles per face. */
