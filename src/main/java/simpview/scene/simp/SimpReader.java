@@ -173,18 +173,7 @@ public final class SimpReader implements AutoCloseable {
         linesRead++;
         b = source.buffer();
         end = source.lineEnd();
-        if (source.lineNumber() == 1) {
-            skipByteOrderMark();
-        }
         return true;
-    }
-
-    /** A UTF-8 byte order mark is not part of the first line's text. */
-    private void skipByteOrderMark() {
-        int s = source.lineStart();
-        if (end - s >= 3 && b[s] == (byte) 0xEF && b[s + 1] == (byte) 0xBB && b[s + 2] == (byte) 0xBF) {
-            source.skipAtLineStart(3);
-        }
     }
 
     /** Closes the file but remembers the place; reading on reopens it. */

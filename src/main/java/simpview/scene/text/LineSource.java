@@ -112,7 +112,6 @@ public final class LineSource {
         return lineEnd;
     }
 
-    /** The 1-based number of the current line. */
     /**
      * Puts the reader back on a line it read before (a replayed command of a
      * file kept in memory): its number and where it starts in the buffer.
@@ -123,16 +122,12 @@ public final class LineSource {
         lineEnd = end;
     }
 
-    /** The line starts {@code n} bytes later (a byte order mark is not part of its text). */
-    public void skipAtLineStart(int n) {
-        lineStart += n;
-    }
-
     /** Where the current line starts in the file, in bytes from its first. */
     public long lineOffset() {
         return bufferOffset + lineStart;
     }
 
+    /** The 1-based number of the current line. */
     public int lineNumber() {
         return lineNumber;
     }
@@ -196,6 +191,11 @@ public final class LineSource {
         lineStart = start;
         lineEnd = e;
         lineNumber++;
+        // A UTF-8 byte order mark (Windows' Notepad writes one) is not part of the first line's text.
+        if (lineNumber == 1 && e - start >= 3 && buf[start] == (byte) 0xEF && buf[start + 1] == (byte) 0xBB
+                && buf[start + 2] == (byte) 0xBF) {
+            lineStart = start + 3;
+        }
     }
 
     /** Keeps the unread bytes and reads more after them; grows the buffer for a long line. */

@@ -48,6 +48,17 @@ class ObjReaderTest {
                 onlyFace("v 1.5 -2 3e2\nv 4 5 6\nv -.25 0 7\nf 1 2 3\n"));
     }
 
+    /**
+     * A byte order mark (Windows' Notepad saves one) is not part of the first
+     * line: before it was skipped, that line's vertex was read as an unknown
+     * word and left out, so every index after it named the next vertex.
+     */
+    @Test
+    void aByteOrderMarkIsNotPartOfTheFirstVertex() throws SceneException {
+        assertEquals(List.of(at(0, 0, 0, 0), at(1, 0, 0, 1), at(0, 1, 0, 2)),
+                onlyFace("\uFEFFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    }
+
     @Test
     void wDividesThePoint() throws SceneException {
         assertEquals(List.of(at(1, 2, 3, 0), at(-1, -2, -3, 1), at(10, 20, 30, 2)),
