@@ -170,6 +170,31 @@ class LitScenesTest {
         assertTrue(e.problem().startsWith("file not found: nothing.obj; looked for "), e.problem());
     }
 
+    /**
+     * Run from the scene's own folder (the usual case), a missing file gets
+     * the words, the column and the hint it gets from anywhere else, with the
+     * one place looked: it had been left to the opening, which named the file
+     * as the top file's include, with no column and no hint.
+     */
+    @Test
+    void aMissingFileInTheWorkingDirectoryGetsTheSameWords() throws Exception {
+        ScenePipeline.Options here = ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary())
+                .withWorkingDir(dir);
+        Path obj = write("obj", "camera -1 -1 1 1 -1 -100", "obj \"x.obj\"");
+        SceneException e = assertThrows(SceneException.class,
+                () -> ScenePipeline.draw(obj, new PageCanvas(), here, SceneMonitor.NONE));
+        assertEquals(obj, e.file());
+        assertEquals(2, e.line());
+        assertEquals(5, e.column());
+        assertEquals("file not found: x.obj.obj (.obj is added to the name for you); looked for "
+                + dir.resolve("x.obj.obj").toAbsolutePath().normalize(), e.problem());
+        Path simp = write("file", "file nothere");
+        e = assertThrows(SceneException.class, () -> ScenePipeline.draw(simp, new PageCanvas(), here, SceneMonitor.NONE));
+        assertEquals(6, e.column());
+        assertEquals("file not found: nothere.simp; looked for " + dir.resolve("nothere.simp").toAbsolutePath().normalize(),
+                e.problem());
+    }
+
     @Test
     void aNumberThatMayNotBeWhatItIsHasTheCaretUnderIt() throws Exception {
         // the column is where the number starts, however the numbers are separated; a file replayed

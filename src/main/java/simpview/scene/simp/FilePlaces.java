@@ -38,14 +38,14 @@ record FilePlaces(String fileName, Path here, Path working) {
 
     /**
      * The file the reader reads: the one beside the including file when it
-     * exists (or when that folder is the working directory), else the one in
-     * the working directory when that exists; null when it is in neither.
+     * exists, else the one in the working directory when that exists; null
+     * when it is in neither (the same words wherever the program runs).
      */
     Path found() {
-        if (Files.exists(here) || hereIsWorking()) {
+        if (Files.exists(here)) {
             return here;
         }
-        return Files.exists(working) ? working : null;
+        return !hereIsWorking() && Files.exists(working) ? working : null;
     }
 
     /** True when both places are one, the including file lying in the working directory. */

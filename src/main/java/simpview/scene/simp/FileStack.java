@@ -224,8 +224,9 @@ final class FileStack implements AutoCloseable {
             reach(places.here());
             reach(places.working());
             String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
-            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for "
-                    + places.here().toAbsolutePath().normalize() + " and " + places.working().normalize());
+            String here = places.here().toAbsolutePath().normalize().toString();
+            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for " + here
+                    + (places.hereIsWorking() ? "" : " and " + places.working().normalize()));
         }
         boolean takesOver = !places.hereIsWorking() && found.equals(places.working());
         return new Located(found, takesOver ? places.here() : null);
