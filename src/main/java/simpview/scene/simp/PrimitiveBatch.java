@@ -25,8 +25,6 @@ final class PrimitiveBatch implements PrimitiveSink {
     double topFileShare;
     /** True when the scene ended with this batch. */
     boolean last;
-    /** '{' left open at the end of the scene (when {@link #last}). */
-    int openBraces;
     /** The client's warnings at the end of the scene (when {@link #last}). */
     List<String> warnings = List.of();
     /** What ended the reading after this batch's primitives, or null. */
@@ -50,7 +48,6 @@ final class PrimitiveBatch implements PrimitiveSink {
         size = 0;
         linesRead = 0;
         last = false;
-        openBraces = 0;
         warnings = List.of();
         failure = null;
     }

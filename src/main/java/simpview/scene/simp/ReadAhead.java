@@ -72,7 +72,6 @@ final class ReadAhead implements AutoCloseable {
                 }
             }
             batch.linesRead = files.linesRead();
-            batch.openBraces = client.openBraces();
             batch.warnings = client.warnings();
             batch.last = true;
         } catch (InterruptedException e) {

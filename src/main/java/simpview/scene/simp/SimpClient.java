@@ -1,6 +1,6 @@
 package simpview.scene.simp;
 
-import simpview.shading.LitState;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
@@ -13,6 +13,7 @@ import simpview.raster.WireframePolygonRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.FragmentStage;
+import simpview.shading.LitState;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
 import simpview.surface.Drawable;
@@ -59,6 +60,9 @@ public final class SimpClient {
     private String firstClamped;
     /** A lit command met and ignored ({@link OnLit#IGNORE}): where the first stood, or null. */
     private String firstIgnored;
+    /** The file and line of the outermost '{' still open (while the matrix stack is not empty). */
+    private Path outermostOpenFile;
+    private int outermostOpenLine;
     /** Where the command that made the scene lit stands, "pageA.simp:3 camera", or null. */
     private String litBecause;
 
@@ -109,6 +113,10 @@ public final class SimpClient {
     public boolean execute(Command c) throws SceneException {
         return switch (c.kind) {
             case PUSH -> {
+                if (matrices.isEmpty()) {
+                    outermostOpenFile = files.current().file();
+                    outermostOpenLine = files.current().lineNumber();
+                }
                 matrices.push(ctm);
                 yield false;
             }
@@ -245,12 +253,7 @@ public final class SimpClient {
         return style;
     }
 
-    /** Depth of the matrix stack: '{' not yet closed. */
-    public int openBraces() {
-        return matrices.depth();
-    }
-
-    /** What the scene should be told once it is drawn: clamped colours, ignored lit commands. */
+    /** What the scene should be told once it is drawn: clamped colours, ignored lit commands, '{' left open. */
     public List<String> warnings() {
         List<String> w = new ArrayList<>();
         if (firstClamped != null) {
@@ -258,6 +261,12 @@ public final class SimpClient {
         }
         if (firstIgnored != null) {
             w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");
+        }
+        int open = matrices.depth();
+        if (open > 0) {
+            w.add(outermostOpenFile.getFileName() + ":" + outermostOpenLine
+                    + ": '{' never closed by the end of the scene" + (open > 1 ? ", nor the " + (open - 1)
+                    + " opened after it" : ""));
         }
         return w;
     }

@@ -78,7 +78,7 @@ public final class SimpInterpreter {
                     }
                 }
             }
-            finish(file, files.linesRead(), client.openBraces(), client.warnings());
+            finish(files.linesRead(), client.warnings());
         } finally {
             if (!handedOver) {
                 files.close();
@@ -122,7 +122,7 @@ public final class SimpInterpreter {
                     ReadAhead.rethrow(batch.failure);
                 }
                 if (batch.last) {
-                    finish(file, batch.linesRead, batch.openBraces, batch.warnings);
+                    finish(batch.linesRead, batch.warnings);
                     return;
                 }
                 report(batch.linesRead, batch.topFileShare);
@@ -139,14 +139,11 @@ public final class SimpInterpreter {
         }
     }
 
-    private void finish(Path file, long linesRead, int openBraces, List<String> warnings) {
+    private void finish(long linesRead, List<String> warnings) {
         monitor.linesRead(linesRead);
         monitor.topFileRead(1);
         for (String w : warnings) {
             monitor.warning(w);
-        }
-        if (openBraces > 0) {
-            monitor.warning(file.getFileName() + ": " + openBraces + " '{' never closed by the end of the file");
         }
     }
 }

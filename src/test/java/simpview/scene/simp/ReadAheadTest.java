@@ -177,7 +177,8 @@ class ReadAheadTest {
         assertTrue(5000 > ReadAhead.BATCHES * PrimitiveBatch.CAPACITY);
         assertTrue(ahead.readerAtSecondPrimitive, "no reader thread was running while the scene was drawn");
         assertFalse(serial.readerAtSecondPrimitive, "a reader thread ran although reading ahead was off");
-        assertTrue(serial.monitor.get(serial.monitor.size() - 1).startsWith("warning " + OURS + "top.simp: "));
+        String last = serial.monitor.get(serial.monitor.size() - 1);
+        assertTrue(last.startsWith("warning " + OURS + "top.simp:1: '{' never closed"), last);
     }
 
     @Test

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -89,8 +90,17 @@ class SimpClientTest {
         scene.write("s", "{", "{", "}", "line (0,0,-1) (1,1,-1)");
         scene.run("s");
         assertEquals(1, scene.lines.size());
-        assertEquals(1, scene.warnings.size());
-        assertTrue(scene.warnings.get(0).contains("1 '{' never closed"), scene.warnings.get(0));
+        assertEquals(List.of("s.simp:1: '{' never closed by the end of the scene"), scene.warnings);
+    }
+
+    /** The warning names the file and line of the outermost '{' left open, in an included file too. */
+    @Test
+    void anUnclosedBraceIsNamedWhereItStands() throws Exception {
+        scene.write("inner", "# opens three, closes one", "{", "{", "{", "line (0,0,-1) (1,1,-1)", "}");
+        scene.write("s", "{", "}", "file inner");
+        scene.run("s");
+        assertEquals(List.of("inner.simp:2: '{' never closed by the end of the scene, nor the 1 opened after it"),
+                scene.warnings);
     }
 
     @Test
@@ -160,7 +170,6 @@ class SimpClientTest {
         scene.run("s");
         assertEquals(1, scene.lines.size());
         assertEquals(Matrix4.identity(), scene.client.ctm());
-        assertEquals(0, scene.client.openBraces());
         assertTrue(scene.warnings.isEmpty());
     }
 
