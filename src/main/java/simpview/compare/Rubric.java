@@ -2,7 +2,6 @@ package simpview.compare;
 
 import com.google.gson.stream.JsonReader;
 import com.google.gson.stream.JsonToken;
-import com.google.gson.stream.MalformedJsonException;
 import java.io.IOException;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
@@ -76,11 +75,39 @@ public final class Rubric {
         try (Reader reader = new java.io.StringReader(text)) {
             JsonReader json = new JsonReader(reader);
             return new Parser(file, json).rubric(base);
-        } catch (MalformedJsonException e) {
-            throw new CompareException("rubric " + file + ": not valid JSON: " + e.getMessage());
         } catch (IOException | IllegalStateException | NumberFormatException e) {
-            throw new CompareException("rubric " + file + ": " + e.getMessage());
+            throw new CompareException("rubric " + file + ": " + notJson(e.getMessage()));
         }
+    }
+
+    private static final java.util.regex.Pattern GSON_PLACE =
+            java.util.regex.Pattern.compile("^(.*?) at line (\\d+) column (\\d+) path (\\S+)$");
+
+    /**
+     * Gson's account of JSON it could not read ("End of input at line 2
+     * column 1 path $.pages[0]", "Use JsonReader.setLenient(true) to accept
+     * malformed JSON at ..."), in words, the place first as {@link Parser}
+     * gives it.
+     */
+    static String notJson(String gson) {
+        java.util.regex.Matcher m = GSON_PLACE.matcher(gson);
+        if (!m.find()) {
+            return "not valid JSON: " + gson;
+        }
+        String what = m.group(1);
+        String words;
+        if (what.equals("End of input")) {
+            words = "the file ends before its JSON does (a ']' or '}' missing?)";
+        } else if (what.equals("Unterminated object")) {
+            words = "an object's '}', or a ',' between two of its entries, is missing";
+        } else if (what.equals("Unterminated array")) {
+            words = "a list's ']', or a ',' between two of its items, is missing";
+        } else if (what.startsWith("Use JsonReader.setLenient")) {
+            words = "not valid JSON here (a word without its quotes, a missing comma, or a comment?)";
+        } else {
+            words = "not valid JSON: " + what;
+        }
+        return "line " + m.group(2) + ", column " + m.group(3) + " (" + m.group(4) + "): " + words;
     }
 
     /** The streaming parse, one object at a time, each error with its place. */
@@ -241,8 +268,23 @@ public final class Rubric {
         private void expect(JsonToken token, String what) throws IOException, CompareException {
             JsonToken found = json.peek();
             if (found != token) {
-                throw error("expected " + what + ", found " + found.name().toLowerCase(Locale.ROOT).replace('_', ' '));
+                throw error("expected " + what + ", found " + inWords(found));
             }
+        }
+
+        private static String inWords(JsonToken token) {
+            return switch (token) {
+                case BEGIN_ARRAY -> "a list ('[')";
+                case END_ARRAY -> "the end of a list (']')";
+                case BEGIN_OBJECT -> "an object ('{')";
+                case END_OBJECT -> "the end of an object ('}')";
+                case NAME -> "a key";
+                case STRING -> "a string";
+                case NUMBER -> "a number";
+                case BOOLEAN -> "true or false";
+                case NULL -> "null";
+                case END_DOCUMENT -> "the end of the file";
+            };
         }
 
         private CompareException error(String message) {

@@ -173,10 +173,24 @@ class RubricTest {
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"metric\": \"flop\"}]}").getMessage()
                 .contains("\"exact\", \"blur\" or \"flip\""));
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"alternates\": \"nowhere\"}]}").getMessage().contains("no such folder"));
-        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": \"3\"}]}").getMessage().contains("expected points, 0 or more, found string"));
-        assertTrue(bad("{\"pages\": [").getMessage().startsWith("rubric "), "cut short");
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": \"3\"}]}").getMessage().contains("expected points, 0 or more, found a string"));
+        assertTrue(bad("{\"pages\": [").getMessage().endsWith(
+                "line 1, column 12 ($.pages[0]): the file ends before its JSON does (a ']' or '}' missing?)"), "cut short");
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"min_share\": 95, \"zero_share\": 96}]}").getMessage()
                 .contains("zero_share 96.0 above its min_share 95.0"));
+    }
+
+    /** JSON that is not JSON is told in words, where it goes wrong, without the JSON library's advice. */
+    @Test
+    void jsonThatIsNotJsonIsToldInWords() throws Exception {
+        assertTrue(bad("[1, 2]").getMessage().endsWith(
+                "line 1, column 2 ($): expected an object with \"defaults\" and \"pages\", found a list ('[')"));
+        assertTrue(bad("{pages: []}").getMessage().endsWith(": not valid JSON here (a word without its quotes, "
+                + "a missing comma, or a comment?)"), bad("{pages: []}").getMessage());
+        assertTrue(bad("{\"pages\": [] \"defaults\": {}}").getMessage().endsWith(
+                "line 1, column 15 ($.pages): an object's '}', or a ',' between two of its entries, is missing"));
+        assertTrue(bad("").getMessage().contains("the file ends before its JSON does"));
+        assertFalse(bad("{\"pages\": [], // c\n}").getMessage().contains("setLenient"));
     }
 
     private String placeOf(String json) throws Exception {
