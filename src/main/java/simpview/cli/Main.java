@@ -83,7 +83,7 @@ public final class Main {
     private static int reportUsageError(CommandLine.ParameterException e, String[] args) {
         CommandLine commandLine = e.getCommandLine();
         PrintWriter err = commandLine.getErr();
-        err.println("simpview: " + e.getMessage());
+        err.println("simpview: " + UsageWords.of(e, commandLine.getCommandSpec().qualifiedName()));
         if (commandLine.getParent() == null && args != null) {
             // a slip in the command's name: its options were read as the window's
             for (String word : args) {

@@ -124,6 +124,23 @@ public class MainCommandLineTest {
         assertFalse(run.showsStackTrace(), run.err());
     }
 
+    /** The parser's own words (groups by their synopsis, Java's types, argument indexes) are put in a student's. */
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "render --page 3 --page 4 --out-dir o | simpview: give only one of --page, --all, --scene, --scenes or "
+                + "--contact-sheet: found --page=3 and --page=4",
+        "render --page 3 --all --out-dir o | simpview: give only one of --page or --all",
+        "render --all --threads abc --out-dir o | simpview: Invalid value for option '--threads': 'abc' is not a "
+                + "whole number",
+        "--seed x | simpview: Invalid value for option '--seed': 'x' is not a whole number",
+        "check a b | simpview: 'b': one argument more than simpview check takes",
+        "check a b c | simpview: 'b', 'c': more arguments than simpview check takes"})
+    void theParsersWordsArePutPlainly(String line, String said) {
+        CliRun run = CliRun.of(line.trim().split(" "));
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertEquals(said.trim(), run.err().lines().findFirst().orElse(""));
+    }
+
     @Test
     void aUsageErrorOfRenderPointsAtRenderHelpAndSuggestsTheNearestOption() {
         CliRun run = CliRun.of("render", "--pge", "3", "--out", "x.png");

@@ -1,0 +1,76 @@
+package simpview.cli;
+
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import picocli.CommandLine.MaxValuesExceededException;
+import picocli.CommandLine.MutuallyExclusiveArgsException;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.UnmatchedArgumentException;
+
+/**
+ * A usage error in a student's words rather than the parser's: picocli's
+ * own messages name argument groups by their synopsis, Java's types ("not
+ * an int") and argument indexes. Messages simpview wrote itself pass
+ * through as they are.
+ */
+final class UsageWords {
+
+    /** A matched member of an exclusive group, as picocli lists it: "(--page=N | --all ...)={--page=3}". */
+    private static final Pattern MATCHED = Pattern.compile("=\\{([^}]*)\\}");
+    private static final Pattern OPTION = Pattern.compile("--[a-z0-9][a-z0-9-]*");
+    private static final Pattern UNMATCHED = Pattern.compile("^Unmatched arguments? (?:at|from) index \\d+: (.*)$");
+    private static final List<String[]> TYPES = List.of(
+            new String[] {"' is not an int", "' is not a whole number"},
+            new String[] {"' is not a long", "' is not a whole number"},
+            new String[] {"' is not a double", "' is not a number"},
+            new String[] {"' is not a float", "' is not a number"});
+
+    private UsageWords() {
+    }
+
+    /** The message of {@code e} for the user; {@code command} is the command's full name, "simpview check". */
+    static String of(ParameterException e, String command) {
+        String message = e.getMessage();
+        if (e instanceof MaxValuesExceededException && message.startsWith("Error: expected only one match")) {
+            // "(--page=N | --all | ...)={--page=3} and (--page=N | --all | ...)={--page=4}"
+            int firstMatch = message.indexOf(")={");
+            List<String> found = MATCHED.matcher(message).results().map(r -> r.group(1)).toList();
+            if (firstMatch > 0 && !found.isEmpty()) {
+                return "give only one of " + options(message.substring(0, firstMatch)) + ": found "
+                        + String.join(" and ", found);
+            }
+        }
+        if (e instanceof MutuallyExclusiveArgsException && message.startsWith("Error: ")) {
+            // "--page=N, --all are mutually exclusive (specify only one)"
+            return "give only one of " + options(message);
+        }
+        if (e instanceof UnmatchedArgumentException) {
+            Matcher m = UNMATCHED.matcher(message);
+            if (m.matches()) {
+                return m.group(1) + (m.group(1).contains(", ") ? ": more arguments than " : ": one argument more than ")
+                        + command + " takes";
+            }
+        }
+        for (String[] type : TYPES) {
+            if (message.endsWith(type[0])) {
+                return message.substring(0, message.length() - type[0].length()) + type[1];
+            }
+        }
+        return message;
+    }
+
+    /** The options named in {@code text}, each once: "--page, --all or --scene". */
+    private static String options(String text) {
+        Set<String> options = new LinkedHashSet<>();
+        Matcher names = OPTION.matcher(text);
+        while (names.find()) {
+            options.add(names.group());
+        }
+        List<String> all = List.copyOf(options);
+        return all.size() == 1 ? all.get(0)
+                : String.join(", ", all.subList(0, all.size() - 1)) + " or " + all.get(all.size() - 1);
+    }
+}
