@@ -71,27 +71,36 @@ public final class Camera {
      */
     public static Camera perspective(double xlow, double ylow, double xhigh, double yhigh,
             double hither, double yon) {
-        String problem = problem(xlow, ylow, xhigh, yhigh, hither, yon);
+        Problem problem = problem(xlow, ylow, xhigh, yhigh, hither, yon);
         if (problem != null) {
-            throw new IllegalArgumentException(problem);
+            throw new IllegalArgumentException(problem.words());
         }
         return new Camera(true, xlow, ylow, xhigh, yhigh, hither, yon);
     }
 
+    /**
+     * What is wrong with a camera's numbers.
+     *
+     * @param number the first number at fault, from 0 (xlow, ylow, xhigh, yhigh, hither, yon)
+     */
+    public record Problem(int number, String words) {
+    }
+
     /** What is wrong with these camera numbers, or null when they make a camera. */
-    public static String problem(double xlow, double ylow, double xhigh, double yhigh, double hither,
+    public static Problem problem(double xlow, double ylow, double xhigh, double yhigh, double hither,
             double yon) {
         if (!(xlow < xhigh)) {
-            return "the window needs xlow < xhigh, found " + xlow + " and " + xhigh;
+            return new Problem(0, "the window needs xlow < xhigh, found " + xlow + " and " + xhigh);
         }
         if (!(ylow < yhigh)) {
-            return "the window needs ylow < yhigh, found " + ylow + " and " + yhigh;
+            return new Problem(1, "the window needs ylow < yhigh, found " + ylow + " and " + yhigh);
         }
         if (!(0 > hither && hither > yon)) {
-            return "the planes need 0 > hither > yon, found hither " + hither + " and yon " + yon;
+            return new Problem(0 > hither ? 5 : 4,
+                    "the planes need 0 > hither > yon, found hither " + hither + " and yon " + yon);
         }
         if (!Double.isFinite(PANEL_SIZE / Math.max(xhigh - xlow, yhigh - ylow))) {
-            return "the window is too small or too large to map onto the panel";
+            return new Problem(0, "the window is too small or too large to map onto the panel");
         }
         return null;
     }

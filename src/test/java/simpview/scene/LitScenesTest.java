@@ -147,6 +147,10 @@ class LitScenesTest {
         assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0",
                 failure("camera -1 -1 1 1 0 -200").problem());
         assertTrue(failure("camera 1 -1 -1 1 -1 -200").problem().contains("xlow < xhigh"));
+        // the caret under the number at fault: ylow, hither at 0 or above, else yon
+        assertEquals(11, failure("camera -1 1 1 -1 -1 -200").column());
+        assertEquals(18, failure("camera -1 -1 1 1 0 -200").column());
+        assertEquals(23, failure("camera -1 -1 1 1 -100 -1").column());
         SceneException singular = failure("scale 1 0 1", "camera -1 -1 1 1 -1 -200");
         assertEquals(2, singular.line());
         assertTrue(singular.problem().contains("cannot be inverted"), singular.problem());

@@ -137,9 +137,9 @@ final class LitRules implements RuleSet {
                     + firstPrimitiveAt + " drew one before it");
         }
         double[] n = c.numbers;
-        String problem = Camera.problem(n[0], n[1], n[2], n[3], n[4], n[5]);
+        Camera.Problem problem = Camera.problem(n[0], n[1], n[2], n[3], n[4], n[5]);
         if (problem != null) {
-            throw error(c, c.argumentIndex, problem);
+            throw errorAtNumber(c, problem.number(), problem.words());
         }
         Matrix4 w = ctm.inverse();
         if (w == null) {

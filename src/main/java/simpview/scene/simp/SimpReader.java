@@ -292,7 +292,8 @@ public final class SimpReader implements AutoCloseable {
                         + "'" : "expected a number, found " + found(i));
             }
             if (n == most) {
-                throw error(i, wrongCount(kind, n + 1));
+                int found = n + wordsFrom(i);
+                throw error(i, wrongCount(kind, found) + decimalCommaHint(from, kind, found));
             }
             i = number(i);
             c.numbers[n++] = decimal.value();
@@ -411,8 +412,39 @@ public final class SimpReader implements AutoCloseable {
     // ---- messages ----------------------------------------------------------------------------
 
     private static String wrongCount(Kind kind, int found) {
-        String got = found > kind.mostNumbers() ? "more" : found == 0 ? "none" : found + (found == 1 ? " number" : " numbers");
+        String got = found == 0 ? "none" : found + (found == 1 ? " number" : " numbers");
         return "wrong number of arguments: " + kind.spelling + " takes " + kind.takesText() + ", found " + got;
+    }
+
+    /** How many words (runs between separators) the line holds from i on. */
+    private int wordsFrom(int i) {
+        int words = 0;
+        for (int j = skipSeparators(i); j < end; j = skipSeparators(j)) {
+            words++;
+            while (j < end && !isSeparator(b[j])) {
+                j++;
+            }
+        }
+        return words;
+    }
+
+    /**
+     * A hint when the commas that stand between two digits (from {@code from}
+     * on, outside parentheses, where a point's numbers are written so) look
+     * like decimal commas: read as decimal points, the line would have a count
+     * of numbers the command takes. SIMP reads each as two numbers.
+     */
+    private String decimalCommaHint(int from, Kind kind, int found) {
+        int commas = 0;
+        boolean inPoint = false;
+        for (int j = Math.max(from, 1); j + 1 < end; j++) {
+            inPoint = b[j] == '(' || (inPoint && b[j] != ')');
+            if (!inPoint && b[j] == ',' && b[j - 1] >= '0' && b[j - 1] <= '9' && b[j + 1] >= '0' && b[j + 1] <= '9') {
+                commas++;
+            }
+        }
+        return commas > 0 && kind.takes(found - commas)
+                ? " (a comma separates two numbers: one and a half is 1.5, not 1,5)" : "";
     }
 
     private String found(int i) {

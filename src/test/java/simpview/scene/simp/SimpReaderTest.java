@@ -231,7 +231,22 @@ class SimpReaderTest {
 
     @Test
     void tooManyNumbers() {
-        assertError("scale 1 2 3 4", 1, 13, "wrong number of arguments: scale takes 3 numbers, found more");
+        assertError("scale 1 2 3 4", 1, 13, "wrong number of arguments: scale takes 3 numbers, found 4 numbers");
+    }
+
+    /**
+     * Commas between digits outside a point's parentheses that, read as
+     * decimal points, would make a count the command takes: a hint, as SIMP
+     * reads each as two numbers. Commas within points get none.
+     */
+    @Test
+    void aDecimalCommaGetsAHint() {
+        assertError("translate 1,5 0 0", 1, 17, "wrong number of arguments: translate takes 3 numbers, found 4 numbers "
+                + "(a comma separates two numbers: one and a half is 1.5, not 1,5)");
+        assertError("translate 1,5 0 0 7", 1, 17, "wrong number of arguments: translate takes 3 numbers, found 5 numbers");
+        assertError("polygon (0,0,-1) (1,0,-1) (0,1,-1) (1 1 -1) (2 2 -1) (3 3 -1) (4 4 -1)", 1, 64,
+                "wrong number of arguments: polygon takes 9 numbers (3 points) or 18 (3 points, each followed by its "
+                + "colour), found 21 numbers");
     }
 
     @Test
@@ -246,7 +261,7 @@ class SimpReaderTest {
 
     @Test
     void tooManyPoints() {
-        assertError("line (0,0,0) (1,0,0) (1,1,1) (0,1,0) (2,2,2)", 1, 39, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found more");
+        assertError("line (0,0,0) (1,0,0) (1,1,1) (0,1,0) (2,2,2)", 1, 39, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 15 numbers");
     }
 
     @Test
