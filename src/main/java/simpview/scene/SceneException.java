@@ -10,6 +10,8 @@ import java.nio.file.Path;
 public final class SceneException extends Exception {
 
     private static final long serialVersionUID = 1L;
+    /** The most characters of a line an error shows. */
+    private static final int SHOWN = 120;
 
     private final Path file;
     private final int line;
@@ -76,10 +78,15 @@ public final class SceneException extends Exception {
         }
         sb.append(": ").append(problem);
         if (line > 0 && lineText != null && !lineText.isEmpty()) {
-            String shown = lineText.replace('\t', ' ');
+            String text = lineText.replace('\t', ' ');
+            int caret = Math.min(Math.max(column - 1, 0), text.length());
+            // A long line is shown around the caret, its cut ends marked.
+            int from = Math.max(0, Math.min(caret - SHOWN / 2, text.length() - SHOWN));
+            int to = Math.min(text.length(), from + SHOWN);
+            String shown = (from > 0 ? "…" : "") + text.substring(from, to) + (to < text.length() ? "…" : "");
             sb.append('\n').append("    ").append(shown);
             if (column > 0) {
-                sb.append('\n').append("    ").append(" ".repeat(Math.min(column - 1, shown.length()))).append('^');
+                sb.append('\n').append("    ").append(" ".repeat(caret - from + (from > 0 ? 1 : 0))).append('^');
             }
         }
         return sb.toString();
