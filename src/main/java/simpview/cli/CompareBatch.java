@@ -6,7 +6,6 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -34,6 +33,7 @@ import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
+import simpview.compare.OutputFiles;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Rubric;
@@ -571,21 +571,20 @@ public final class CompareBatch {
         Path outDir = outputs.outDir();
         try {
             if (outDir != null) {
-                Files.createDirectories(outDir);
-                Files.writeString(outDir.resolve(TABLE), markdown, StandardCharsets.UTF_8);
-                Files.writeString(outDir.resolve(CSV), BatchTable.csv(rows, missing), StandardCharsets.UTF_8);
+                OutputFiles.writeString(outDir.resolve(TABLE), markdown);
+                OutputFiles.writeString(outDir.resolve(CSV), BatchTable.csv(rows, missing));
             }
             if (outputs.gradescope() != null) {
-                write(outputs.gradescope(), GradescopeResults.json(rows, wanted, seconds));
+                OutputFiles.writeString(outputs.gradescope(), GradescopeResults.json(rows, wanted, seconds));
             }
             if (outputs.junit() != null) {
-                write(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
+                OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
             }
             if (outputs.html() != null) {
                 HtmlReport.write(rows, wanted, outputs.html(), outDir);
             }
         } catch (IOException e) {
-            err.println(says + "cannot write the results: " + e.getMessage());
+            err.println(says + e.getMessage()); // "cannot write report/compare.md: ...", and why
             return ExitCode.SCENE_ERROR;
         }
         if (outputs.student()) {
@@ -605,14 +604,6 @@ public final class CompareBatch {
             return ExitCode.SCENE_ERROR;
         }
         return allPass ? ExitCode.OK : ExitCode.SCENE_ERROR;
-    }
-
-    private static void write(Path file, String text) throws IOException {
-        Path parent = file.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
-        Files.writeString(file, text, StandardCharsets.UTF_8);
     }
 
     /** The pictures under {@code dir}, in natural order of their paths (page2 before page10). */

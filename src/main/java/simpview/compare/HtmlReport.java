@@ -1,8 +1,6 @@
 package simpview.compare;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -37,9 +35,8 @@ public final class HtmlReport {
      * {@code outDir} (they are linked from where they are, not copied).
      */
     public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir) throws IOException {
-        Files.createDirectories(htmlDir);
-        Files.writeString(htmlDir.resolve(INDEX), page(rows, Wanted.missingBySubmission(wanted, rows), htmlDir, outDir),
-                StandardCharsets.UTF_8);
+        OutputFiles.writeString(htmlDir.resolve(INDEX),
+                page(rows, Wanted.missingBySubmission(wanted, rows), htmlDir, outDir));
     }
 
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {

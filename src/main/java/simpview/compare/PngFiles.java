@@ -3,10 +3,6 @@ package simpview.compare;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.FileSystemException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import javax.imageio.stream.ImageOutputStream;
@@ -19,7 +15,8 @@ public final class PngFiles {
     }
 
     /**
-     * Writes {@code image} to {@code file}, making missing parent folders.
+     * Writes {@code image} to {@code file}, making missing parent folders;
+     * the file is replaced only once the whole picture is written ({@link OutputFiles}).
      *
      * @throws IOException whose message says which file and why, e.g.
      *     "cannot write out/x.png: permission denied"
@@ -32,16 +29,7 @@ public final class PngFiles {
 
     /** Writes a PNG already encoded (compare's diff images), with the same messages. */
     public static void writeEncoded(byte[] png, Path file) throws IOException {
-        Path target = file.toAbsolutePath();
-        try {
-            Path parent = target.getParent();
-            if (parent != null) {
-                Files.createDirectories(parent);
-            }
-            Files.write(target, png);
-        } catch (IOException e) {
-            throw new IOException("cannot write " + file + ": " + reason(e, target), e);
-        }
+        OutputFiles.write(file, out -> out.write(png));
     }
 
     /** True for a name ending in .png (any case), or with no extension at all. */
@@ -65,22 +53,5 @@ public final class PngFiles {
             }
         }
         return bytes.toByteArray();
-    }
-
-    private static String reason(IOException e, Path target) {
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
-        }
-        if (e instanceof FileAlreadyExistsException already) {
-            return already.getFile() + " is in the way: it is a file, not a folder";
-        }
-        if (e instanceof FileSystemException fs && fs.getReason() != null) {
-            boolean elsewhere = fs.getFile() != null && !Path.of(fs.getFile()).equals(target);
-            return fs.getReason() + (elsewhere ? " (" + fs.getFile() + ")" : "");
-        }
-        if (e instanceof FileSystemException fs) {
-            return "no such file or folder: " + fs.getFile();
-        }
-        return e.getMessage();
     }
 }

@@ -1,0 +1,134 @@
+package simpview.compare;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * The one place every file simpview writes (pictures, diff images, tables,
+ * reports) is written, whole or not at all: into a temporary file beside it,
+ * then moved into place. A write that fails half-way (a full disk) leaves the
+ * file that was there before as it was, and no temporary behind. Its
+ * messages say which file and why, in words a user can act on.
+ */
+public final class OutputFiles {
+
+    /** What goes into a file: written to {@code out}, which the caller closes. */
+    @FunctionalInterface
+    public interface Content {
+        void writeTo(OutputStream out) throws IOException;
+    }
+
+    /** The end of a temporary's name; a picture's is never this, so a folder being compared never lists one. */
+    static final String TEMPORARY_ENDING = ".tmp";
+    /** How much of the file's name a temporary keeps, so that its name stays within a file system's limit. */
+    private static final int NAME_KEPT = 100;
+
+    private OutputFiles() {
+    }
+
+    /**
+     * Writes {@code content} to {@code file}, making missing parent folders;
+     * the file is replaced only once all of it is written.
+     *
+     * @throws IOException whose message says which file and why, e.g.
+     *     "cannot write out/x.png: permission denied"
+     */
+    public static void write(Path file, Content content) throws IOException {
+        Path target = file.toAbsolutePath();
+        if (Files.isDirectory(target)) {
+            throw new IOException("cannot write " + file + ": it is a folder");
+        }
+        // A link is followed, as writing through it would: the file it names is replaced, not the link.
+        Path place = Files.isSymbolicLink(target) ? target.toRealPath() : target;
+        Path temporary = null;
+        try {
+            Path parent = place.getParent();
+            if (parent != null) {
+                Files.createDirectories(parent);
+            }
+            temporary = temporaryBeside(place);
+            try (OutputStream out = Files.newOutputStream(temporary, StandardOpenOption.WRITE)) {
+                content.writeTo(out);
+            }
+            moveIntoPlace(temporary, place);
+            temporary = null;
+        } catch (IOException e) {
+            throw new IOException("cannot write " + file + ": " + reason(e, target), e);
+        } finally {
+            if (temporary != null) {
+                deleteQuietly(temporary);
+            }
+        }
+    }
+
+    /** Writes {@code text} as UTF-8, as {@link #write} writes. */
+    public static void writeString(Path file, String text) throws IOException {
+        write(file, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
+    }
+
+    /**
+     * Why {@code e} kept {@code target} from being written, in words:
+     * "permission denied", "out is in the way: it is a file, not a folder".
+     */
+    static String reason(IOException e, Path target) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileAlreadyExistsException already) {
+            return already.getFile() + " is in the way: it is a file, not a folder";
+        }
+        if (e instanceof FileSystemException fs && fs.getReason() != null) {
+            boolean elsewhere = fs.getFile() != null && !Path.of(fs.getFile()).equals(target)
+                    && !fs.getFile().endsWith(TEMPORARY_ENDING);
+            return fs.getReason() + (elsewhere ? " (" + fs.getFile() + ")" : "");
+        }
+        if (e instanceof FileSystemException fs) {
+            return "no such file or folder: " + fs.getFile();
+        }
+        return e.getMessage() == null || e.getMessage().isBlank() ? "the system could not write it" : e.getMessage();
+    }
+
+    /** A new empty file beside {@code place}, named after it: ".page3.png.k2x9q1.tmp". */
+    private static Path temporaryBeside(Path place) throws IOException {
+        String name = place.getFileName().toString();
+        String kept = name.length() > NAME_KEPT ? name.substring(0, NAME_KEPT) : name;
+        while (true) {
+            String random = Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36);
+            Path temporary = place.resolveSibling("." + kept + "." + random + TEMPORARY_ENDING);
+            try {
+                // not Files.createTempFile: its file may be read by its owner only, and the move would keep that
+                Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+                return temporary;
+            } catch (FileAlreadyExistsException taken) {
+                // another name, then
+            }
+        }
+    }
+
+    /** Moves the finished temporary over the file, atomically where the file system can. */
+    private static void moveIntoPlace(Path temporary, Path place) throws IOException {
+        try {
+            Files.move(temporary, place, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(temporary, place, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    private static void deleteQuietly(Path temporary) {
+        try {
+            Files.deleteIfExists(temporary);
+        } catch (IOException e) {
+            // the write's own failure is the one reported
+        }
+    }
+}
