@@ -129,7 +129,7 @@ public final class CheckCommand implements Callable<Integer> {
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
-                    CompareBatch.DiffImages.FAILING);
+                    CompareBatch.DiffImages.FAILING, new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }
@@ -160,7 +160,7 @@ public final class CheckCommand implements Callable<Integer> {
             OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors);
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
-                    CompareBatch.DiffImages.NONE));
+                    CompareBatch.DiffImages.NONE, new OutputPaths()));
         }
         String table = out.toString();
         if (table.isEmpty() || err.toString().contains("no pictures (")) {

@@ -79,9 +79,12 @@ public final class CompareBatch {
     /**
      * Where the results go. {@code outDir} (null: no files but the ones named) holds the
      * tables and diff images; the others are written when not null. {@code student}: print
-     * the student's table ({@code simpview check}) instead of the teacher's.
+     * the student's table ({@code simpview check}) instead of the teacher's. {@code files}:
+     * the files the command reads besides the pictures (its rubric, its scene), which the
+     * batch adds the pictures to and holds every file it writes against.
      */
-    record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student, DiffImages diffs) {
+    record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student, DiffImages diffs,
+            OutputPaths files) {
     }
 
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
@@ -212,6 +215,7 @@ public final class CompareBatch {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
         }
+        claimOutputs(dir, pictures, outputs);
         long start = System.nanoTime();
         List<Match> matches = new ArrayList<>();
         for (Path picture : pictures) {
@@ -242,6 +246,51 @@ public final class CompareBatch {
             }
         }
         return writeResults(rows, asked, outputs, seconds);
+    }
+
+    /**
+     * Every file the batch will write, held against those it reads (the pictures, the accepted
+     * alternates and the command's own) and against each other, before anything is compared.
+     *
+     * @throws UsageProblem when one would overwrite a file read, or two are one file
+     */
+    private void claimOutputs(Path dir, List<Path> pictures, Outputs outputs) {
+        OutputPaths files = outputs.files();
+        pictures.forEach(picture -> files.reads(picture, "a picture to compare"));
+        java.util.Set<Path> alternates = new java.util.HashSet<>();
+        rubric.rules().forEach(rule -> alternates.add(rule.alternates()));
+        alternates.add(rubric.defaults().alternates());
+        alternates.remove(null);
+        for (Path folder : alternates) {
+            try {
+                picturesIn(folder).forEach(picture -> files.reads(picture, "an accepted alternate picture"));
+            } catch (IOException | UncheckedIOException e) {
+                // said when the alternates are read
+            }
+        }
+        Path outDir = outputs.outDir();
+        String tables = outDir != null && outDir.equals(outputs.html()) ? "--html" : "--out-dir";
+        if (outDir != null) {
+            files.writes(outDir.resolve(TABLE), tables).writes(outDir.resolve(CSV), tables);
+        }
+        files.writes(outputs.gradescope(), "--gradescope").writes(outputs.junit(), "--junit");
+        if (outputs.html() != null) {
+            files.writes(outputs.html().resolve(HtmlReport.INDEX), "--html");
+        }
+        if (outDir != null && outputs.diffs() != DiffImages.NONE) {
+            for (Path picture : pictures) {
+                String relative = dir.relativize(picture).toString();
+                for (int panel = 0; panel <= A1Layout.PANELS; panel++) {
+                    files.notRead(outDir.resolve(diffName(relative, panel)), tables);
+                }
+            }
+        }
+    }
+
+    /** A picture's diff image under the out folder: of its panel (0), or of the first assignment's panel. */
+    private static String diffName(String relative, int panel) {
+        return DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "")
+                + (panel == 0 ? "" : "-panel" + panel) + "-diff.png";
     }
 
     /** The rubric's key of a target: "page6" for page 6, "pageC" for pageC.simp. */
@@ -461,7 +510,7 @@ public final class CompareBatch {
         if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && best.passes()) {
             return BatchRow.compared(relative, label, best, "", rule, score, bestName);
         }
-        String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "") + "-diff.png";
+        String diff = diffName(relative, 0);
         try {
             PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), outDir.resolve(diff));
         } catch (IOException e) {
@@ -528,8 +577,7 @@ public final class CompareBatch {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note));
                 continue;
             }
-            String diff = DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "")
-                    + "-panel" + k + "-diff.png";
+            String diff = diffName(relative, k);
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), outDir.resolve(diff));
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));

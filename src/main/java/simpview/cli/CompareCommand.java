@@ -168,7 +168,8 @@ public final class CompareCommand implements Callable<Integer> {
                 }
                 CompareBatch batch = new CompareBatch("compare", own, judged, partial, spec.commandLine().getOut(), err());
                 CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
-                        gradescope, junit, html, false, diffs);
+                        gradescope, junit, html, false, diffs,
+                        new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene"));
                 return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
             }
             return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
@@ -197,6 +198,8 @@ public final class CompareCommand implements Callable<Integer> {
                     && diffs == CompareBatch.DiffImages.ALL,
                     "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
+            usage(diff == null || PngFiles.isPngName(diff), "--diff " + diff + ": " + PngFiles.PNG_ONLY);
+            new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene").writes(diff, "--diff");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
         boolean first = assignment != null && assignment == 1;

@@ -182,10 +182,12 @@ public final class RenderCommand implements Callable<Integer> {
         }
         usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
+        String outOption = out != null ? "--out" : "--out-dir";
         if (oneFile && out == null) {
             out = outDir.resolve(what.scene != null ? SceneList.pictureName(what.scene)
                     : (firstAssignment() ? "a1-page" : "page") + what.page + ".png");
         }
+        new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
         usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
@@ -194,7 +196,7 @@ public final class RenderCommand implements Callable<Integer> {
         usage(!ownColours || !pages, "--own-colors goes with --scene only");
         usage(!ownColours || near == null && far == null,
                 "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
-        usage(out == null || PngFiles.isPngName(out), "--out " + out + ": simpview writes PNG files only; name it .png");
+        usage(out == null || PngFiles.isPngName(out), "--out " + out + ": " + PngFiles.PNG_ONLY);
     }
 
     /** --scenes: the list must name scenes, and the pictures go to a folder. */
@@ -210,6 +212,9 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             usage(false, e.getMessage());
         }
+        OutputPaths files = new OutputPaths();
+        sceneList.forEach(scene -> files.reads(scene, "a scene to draw"));
+        sceneList.forEach(scene -> files.writes(outDir.resolve(SceneList.pictureName(scene)), "--out-dir"));
     }
 
     /** The scenes of --scenes, once checked. */
@@ -345,6 +350,9 @@ public final class RenderCommand implements Callable<Integer> {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
         }
+        OutputPaths files = new OutputPaths();
+        sheet.forEach(scene -> files.reads(scene, "a scene to draw"));
+        files.writes(out, "--out");
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         for (Path scene : sheet) {

@@ -77,6 +77,27 @@ public final class OutputFiles {
     }
 
     /**
+     * The path {@code file} is known by, so that two names of one file are
+     * equal: its real path as far as it exists (links followed), and the
+     * rest as given, normalized.
+     */
+    public static Path identity(Path file) {
+        Path absolute = file.toAbsolutePath().normalize();
+        Path existing = absolute;
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        if (existing == null) {
+            return absolute;
+        }
+        try {
+            return existing.toRealPath().resolve(existing.relativize(absolute));
+        } catch (IOException e) {
+            return absolute;
+        }
+    }
+
+    /**
      * Why {@code e} kept {@code target} from being written, in words:
      * "permission denied", "out is in the way: it is a file, not a folder".
      */

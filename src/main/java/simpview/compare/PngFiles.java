@@ -11,6 +11,9 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 /** Writes finished pages as PNG files, with messages a user can act on. */
 public final class PngFiles {
 
+    /** Why a name not ending in .png is refused for a picture simpview writes ({@link #isPngName}). */
+    public static final String PNG_ONLY = "simpview writes PNG files only; name it .png";
+
     private PngFiles() {
     }
 
