@@ -1,5 +1,6 @@
 package simpview.cli;
 
+import simpview.compare.OutputFiles;
 import simpview.compare.PngFiles;
 import simpview.scene.simp.ScenePipeline;
 
@@ -9,7 +10,11 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -63,7 +68,8 @@ public final class RenderCommand implements Callable<Integer> {
         Path scene;
 
         @Option(names = "--scenes", arity = "1..*", paramLabel = "F|DIR", required = true,
-                description = "every scene named (a folder: its .simp files), each as NAME.png in --out-dir")
+                description = "every scene named (a folder: its .simp files), each as NAME.png in --out-dir; scenes of "
+                        + "one name from different folders as FOLDER-NAME.png (course-simp-a3-cube.png)")
         List<Path> scenes;
 
         @Option(names = "--contact-sheet", required = true,
@@ -212,13 +218,29 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             usage(false, e.getMessage());
         }
+        // a scene named twice (a folder and a file of it) is drawn once
+        Map<Path, Path> distinct = new LinkedHashMap<>();
+        sceneList.forEach(scene -> distinct.putIfAbsent(OutputFiles.identity(scene), scene));
+        sceneList = List.copyOf(distinct.values());
+        List<String> names = SceneList.pictureNames(sceneList);
         OutputPaths files = new OutputPaths();
         sceneList.forEach(scene -> files.reads(scene, "a scene to draw"));
-        sceneList.forEach(scene -> files.writes(outDir.resolve(SceneList.pictureName(scene)), "--out-dir"));
+        Map<String, Path> drawnAs = new HashMap<>();
+        pictures = new ArrayList<>();
+        for (int i = 0; i < sceneList.size(); i++) {
+            Path picture = outDir.resolve(names.get(i));
+            Path other = drawnAs.putIfAbsent(names.get(i).toLowerCase(Locale.ROOT), sceneList.get(i));
+            usage(other == null, "the scenes " + other + " and " + sceneList.get(i) + " would both be written to "
+                    + picture + "; render them into different --out-dir folders");
+            files.writes(picture, "--out-dir");
+            pictures.add(picture);
+        }
     }
 
-    /** The scenes of --scenes, once checked. */
+    /** The scenes of --scenes, once checked, each named once. */
     private List<Path> sceneList;
+    /** Where each scene of {@link #sceneList} is written. */
+    private List<Path> pictures;
 
     /** Depth-cue or own colours given, and the scene's first lit command showed it is lit: a usage error (exit 2). */
     private void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
@@ -281,7 +303,8 @@ public final class RenderCommand implements Callable<Integer> {
     private int renderScenes() {
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);
         int code = ExitCode.OK;
-        for (Path scene : sceneList) {
+        for (int i = 0; i < sceneList.size(); i++) {
+            Path scene = sceneList.get(i);
             BufferedImage image;
             try {
                 ScenePipeline.Drawn drawn = drawing.scene(scene, near, far, false);
@@ -292,7 +315,7 @@ public final class RenderCommand implements Callable<Integer> {
                 code = ExitCode.SCENE_ERROR;
                 continue;
             }
-            if (write(image, outDir.resolve(SceneList.pictureName(scene))) != ExitCode.OK) {
+            if (write(image, pictures.get(i)) != ExitCode.OK) {
                 return ExitCode.SCENE_ERROR;
             }
         }

@@ -6,7 +6,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 
 /**
  * Scenes named on the command line, as pages in the order given: a folder
@@ -76,6 +79,28 @@ public final class SceneList {
     public static String pictureName(Path scene) {
         String name = scene.getFileName().toString();
         return (name.endsWith(".simp") ? name.substring(0, name.length() - 5) : name) + ".png";
+    }
+
+    /**
+     * The names the scenes' pictures take in one folder, in order: each its
+     * {@link #pictureName}, but where scenes of different folders share a
+     * name (ignoring case, as some file systems do: cube.simp of
+     * course-simp-a3 and of course-simp-a4), each of those is named by its
+     * folder too, FOLDER-NAME.png (course-simp-a3-cube.png).
+     */
+    public static List<String> pictureNames(List<Path> scenes) {
+        Map<String, Integer> named = new HashMap<>();
+        for (Path scene : scenes) {
+            named.merge(pictureName(scene).toLowerCase(Locale.ROOT), 1, Integer::sum);
+        }
+        List<String> names = new ArrayList<>();
+        for (Path scene : scenes) {
+            String name = pictureName(scene);
+            Path folder = scene.toAbsolutePath().normalize().getParent();
+            boolean shared = named.get(name.toLowerCase(Locale.ROOT)) > 1;
+            names.add(shared && folder != null && folder.getFileName() != null ? folder.getFileName() + "-" + name : name);
+        }
+        return names;
     }
 
     private static int compareNaturally(String a, String b) {

@@ -1,0 +1,95 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.surface.PageCanvas;
+
+/** {@code render --scenes}: one picture per scene, and never two scenes' pictures at one path. */
+class RenderCommandTest {
+
+    @TempDir
+    Path dir;
+
+    /** A scene of one triangle over the page's centre, at depth z: depth-cued, each z its own grey. */
+    private Path scene(String name, int z) throws IOException {
+        Path file = dir.resolve(name);
+        Files.createDirectories(file.getParent());
+        return Files.writeString(file, "polygon (-80,-80," + z + ") (80,-80," + z + ") (0,80," + z + ")\n");
+    }
+
+    private static int centre(Path picture) throws IOException {
+        BufferedImage image = ImageIO.read(picture.toFile());
+        return image.getRGB(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2) & 0xFFFFFF;
+    }
+
+    private static List<String> names(Path folder) throws IOException {
+        try (Stream<Path> files = Files.list(folder)) {
+            return files.map(f -> f.getFileName().toString()).sorted().toList();
+        }
+    }
+
+    @Test
+    void scenesOfOneNameFromTwoFoldersAreNamedByTheirFolders() throws Exception {
+        Path red = scene("mix/b.simp", -10);
+        Path green = scene("mix2/b.simp", -150);
+        scene("mix/c.simp", -50);
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", red.toString(), green.toString(), dir.resolve("mix").toString(),
+                "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        // mix/b.simp, named twice (itself and in its folder), is drawn once
+        assertEquals(List.of("c.png", "mix-b.png", "mix2-b.png"), names(out));
+        assertEquals(centre(render(red)), centre(out.resolve("mix-b.png")));
+        assertEquals(centre(render(green)), centre(out.resolve("mix2-b.png")));
+        assertFalse(centre(out.resolve("mix-b.png")) == centre(out.resolve("mix2-b.png")), "two scenes, two pictures");
+    }
+
+    @Test
+    void scenesOfOneNameAsLettersOfEitherCaseAreNamedByTheirFoldersToo() throws Exception {
+        Path upper = scene("a3/Cube.simp", -10);
+        Path lower = scene("a4/cube.simp", -150);
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", upper.toString(), lower.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertEquals(List.of("a3-Cube.png", "a4-cube.png"), names(out));
+    }
+
+    @Test
+    void scenesWhoseFoldersShareANameTooAreRefused() throws Exception {
+        Path one = scene("x/mix/b.simp", -10);
+        Path two = scene("y/mix/b.simp", -150);
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", one.toString(), two.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertEquals("simpview: the scenes " + one + " and " + two + " would both be written to "
+                + out.resolve("mix-b.png") + "; render them into different --out-dir folders",
+                run.err().lines().findFirst().orElse(""));
+        assertFalse(Files.exists(out));
+    }
+
+    @Test
+    void theHelpSaysHowScenesOfOneNameAreNamed() {
+        CliRun run = CliRun.of("render", "--help");
+        assertTrue(run.out().replaceAll("\\s+", " ").contains("scenes of one name from different folders as "
+                + "FOLDER-NAME.png (course-simp-a3-cube.png)"), run.out());
+    }
+
+    /** The scene as render --scene draws it alone. */
+    private Path render(Path scene) {
+        Path picture = dir.resolve("alone").resolve(scene.getParent().getFileName() + ".png");
+        CliRun run = CliRun.of("render", "--scene", scene.toString(), "--out", picture.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        return picture;
+    }
+}
