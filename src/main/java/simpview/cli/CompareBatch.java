@@ -85,6 +85,41 @@ public final class CompareBatch {
      */
     record Outputs(Path outDir, Path gradescope, Path junit, Path html, boolean student, DiffImages diffs,
             OutputPaths files) {
+
+        /**
+         * Why the results could not be written where they go, as far as can be known before anything is
+         * written ("--out-dir r: /home/t/r is in the way: it is a file, not a folder"); null when nothing
+         * is known to stop them.
+         */
+        String problem() {
+            Map<Path, String> files = new java.util.LinkedHashMap<>();
+            if (outDir != null) {
+                String by = outDirOption() + " " + outDir;
+                files.put(outDir.resolve(TABLE), by);
+                files.put(outDir.resolve(CSV), by);
+            }
+            if (html != null) {
+                files.put(html.resolve(HtmlReport.INDEX), "--html " + html);
+            }
+            if (gradescope != null) {
+                files.put(gradescope, "--gradescope " + gradescope);
+            }
+            if (junit != null) {
+                files.put(junit, "--junit " + junit);
+            }
+            for (Map.Entry<Path, String> file : files.entrySet()) {
+                String why = OutputFiles.fileProblem(file.getKey());
+                if (why != null) {
+                    return file.getValue() + ": " + why;
+                }
+            }
+            return null;
+        }
+
+        /** The option that names the folder of the tables and diff images: --out-dir, or --html without it. */
+        String outDirOption() {
+            return outDir != null && outDir.equals(html) ? "--html" : "--out-dir";
+        }
     }
 
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
@@ -216,6 +251,11 @@ public final class CompareBatch {
             return ExitCode.USAGE_ERROR;
         }
         claimOutputs(dir, pictures, outputs);
+        String unwritable = outputs.problem();
+        if (unwritable != null) {
+            err.println(says + "cannot write the results: " + unwritable);
+            return ExitCode.SCENE_ERROR;
+        }
         long start = System.nanoTime();
         List<Match> matches = new ArrayList<>();
         for (Path picture : pictures) {
@@ -269,7 +309,7 @@ public final class CompareBatch {
             }
         }
         Path outDir = outputs.outDir();
-        String tables = outDir != null && outDir.equals(outputs.html()) ? "--html" : "--out-dir";
+        String tables = outputs.outDirOption();
         if (outDir != null) {
             files.writes(outDir.resolve(TABLE), tables).writes(outDir.resolve(CSV), tables);
         }

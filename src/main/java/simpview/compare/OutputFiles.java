@@ -77,6 +77,34 @@ public final class OutputFiles {
     }
 
     /**
+     * Why a file could not be written at {@code file}, or null when nothing
+     * is known to stop it: it is a folder, a file is in the way of its folder,
+     * or its folder may not be written to. Looked at without writing anything.
+     */
+    public static String fileProblem(Path file) {
+        Path target = file.toAbsolutePath().normalize();
+        if (Files.isDirectory(target)) {
+            return target + " is a folder";
+        }
+        return target.getParent() == null ? null : folderProblem(target.getParent());
+    }
+
+    /** Why files could not be written into {@code folder} (made when missing), or null: as {@link #fileProblem}. */
+    public static String folderProblem(Path folder) {
+        Path existing = folder.toAbsolutePath().normalize();
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        if (existing == null) {
+            return null;
+        }
+        if (!Files.isDirectory(existing)) {
+            return existing + " is in the way: it is a file, not a folder";
+        }
+        return Files.isWritable(existing) ? null : "permission denied (" + existing + ")";
+    }
+
+    /**
      * The path {@code file} is known by, so that two names of one file are
      * equal: its real path as far as it exists (links followed), and the
      * rest as given, normalized.
