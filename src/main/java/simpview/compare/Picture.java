@@ -79,7 +79,7 @@ public final class Picture {
         if (image == null) {
             throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
         }
-        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.rgb(image));
+        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image));
     }
 
     private static CompareException damaged(Path file, String why, Exception cause) {

@@ -1,8 +1,12 @@
 package simpview.compare;
 
+import java.awt.color.ColorSpace;
+import java.awt.color.ICC_ColorSpace;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBuffer;
 import java.awt.image.DataBufferByte;
 import java.awt.image.DataBufferInt;
+import java.awt.image.Raster;
 
 /**
  * A picture's pixels as one int[] of 0xRRGGBB, row by row from the top. The
@@ -35,6 +39,60 @@ final class Rasters {
             }
         }
         return out;
+    }
+
+    /**
+     * A picture file's pixels as a viewer shows them. ImageIO gives a grey picture Java's linear grey
+     * colour space, and a CMYK JPEG without a profile a CMYK space of its own, and getRGB would take
+     * their levels for light and convert them: here a grey level v is (v, v, v) (16-bit levels scaled
+     * to 255, rounded, as getRGB scales 16-bit RGB), and CMYK is mixed as browsers mix it, each of red,
+     * green and blue (255 - ink) * (255 - black) / 255, rounded. A CMYK picture with its own profile,
+     * and every other one (or one of float or 32-bit levels), is read through getRGB.
+     */
+    static int[] shown(BufferedImage image) {
+        ColorSpace space = image.getColorModel().getColorSpace();
+        int type = image.getRaster().getDataBuffer().getDataType();
+        if (type != DataBuffer.TYPE_BYTE && type != DataBuffer.TYPE_USHORT) {
+            return rgb(image);
+        }
+        if (space.getType() == ColorSpace.TYPE_GRAY) {
+            int[] grey = levels(image, 0);
+            for (int i = 0; i < grey.length; i++) {
+                grey[i] *= 0x010101;
+            }
+            return grey;
+        }
+        if (space.getType() == ColorSpace.TYPE_CMYK && !(space instanceof ICC_ColorSpace)) {
+            int[] cyan = levels(image, 0);
+            int[] magenta = levels(image, 1);
+            int[] yellow = levels(image, 2);
+            int[] black = levels(image, 3);
+            int[] out = new int[cyan.length];
+            for (int i = 0; i < out.length; i++) {
+                int white = 255 - black[i];
+                out[i] = mix(cyan[i], white) << 16 | mix(magenta[i], white) << 8 | mix(yellow[i], white);
+            }
+            return out;
+        }
+        return rgb(image);
+    }
+
+    /** One band's samples, row by row from the top, scaled to 0-255 (rounded) from however many bits it has. */
+    private static int[] levels(BufferedImage image, int band) {
+        Raster raster = image.getRaster();
+        int[] samples = raster.getSamples(0, 0, image.getWidth(), image.getHeight(), band, (int[]) null);
+        int max = (1 << image.getColorModel().getComponentSize(band)) - 1;
+        if (max != 255) {
+            for (int i = 0; i < samples.length; i++) {
+                samples[i] = (samples[i] * 255 + max / 2) / max;
+            }
+        }
+        return samples;
+    }
+
+    /** What is left of a channel's light under {@code ink} (0-255), of {@code white} (255 less the black ink). */
+    private static int mix(int ink, int white) {
+        return ((255 - ink) * white + 127) / 255;
     }
 
     /** Of that type, and its buffer holds exactly this picture (not a sub-image of a larger one). */
