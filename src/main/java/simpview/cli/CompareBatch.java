@@ -245,7 +245,10 @@ public final class CompareBatch {
             Function<String, Match> matcher) {
         List<Path> pictures;
         try {
-            pictures = picturesIn(dir);
+            List<Path> written = ownFolders(dir, outputs);
+            pictures = picturesIn(dir).stream().map(dir::relativize)
+                    .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p))
+                    .map(dir::resolve).toList();
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
@@ -703,6 +706,40 @@ public final class CompareBatch {
                     .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(), dir.relativize(b).toString()))
                     .toList();
         }
+    }
+
+    /**
+     * The folders under {@code dir} that this batch writes into, relative to it: an output folder
+     * (--out-dir, --html) inside {@code dir} whole, or when it is {@code dir} itself its diffs folder.
+     * Their pictures are the diff images of an earlier run, not pictures to compare.
+     */
+    private static List<Path> ownFolders(Path dir, Outputs outputs) throws IOException {
+        Path root = dir.toRealPath();
+        List<Path> own = new ArrayList<>();
+        for (Path output : new Path[] {outputs.outDir(), outputs.html()}) {
+            if (output == null || !Files.isDirectory(output)) {
+                continue; // not there yet: no pictures in it
+            }
+            Path place = output.toRealPath();
+            if (place.startsWith(root)) {
+                Path inside = root.relativize(place);
+                own.add(inside.toString().isEmpty() ? Path.of(DIFFS) : inside);
+            }
+        }
+        return own;
+    }
+
+    /**
+     * Whether a picture (relative to {@code dir}) is in the diffs folder of some batch's output folder, one
+     * beside its compare.csv: another run's diff images (check with --out-dir, then compare with another).
+     */
+    private static boolean inOutputsDiffs(Path dir, Path picture) {
+        for (Path folder = picture.getParent(); folder != null; folder = folder.getParent()) {
+            if (folder.getFileName().toString().equals(DIFFS) && Files.isRegularFile(dir.resolve(folder).resolveSibling(CSV))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static Map<String, Path> scenesIn(Path folder) {

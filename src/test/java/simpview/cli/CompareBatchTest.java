@@ -180,6 +180,39 @@ public class CompareBatchTest {
     }
 
     @Test
+    void aSecondCheckLeavesOutTheReportTheFirstWroteInsideTheFolder() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page4.png"), page(5));
+        String[] check = {"check", mine.toString(), "--pages", "4", "--out-dir", mine.resolve("report").toString()};
+        assertEquals(ExitCode.SCENE_ERROR, CliRun.of(check).exitCode(), "page 5 is not page 4");
+        assertTrue(Files.isRegularFile(mine.resolve("report/diffs/page4-diff.png")));
+        png(mine.resolve("page4.png"), page(4));
+        CliRun again = CliRun.of(check);
+        assertEquals(ExitCode.OK, again.exitCode(), again.out() + again.err());
+        assertTrue(again.out().contains("1 of 1 pictures pass"), again.out());
+        assertEquals(2, csvRows(mine.resolve("report")).size(), "a heading and page4.png");
+    }
+
+    @Test
+    void aBatchWritingIntoItsOwnFolderLeavesOutItsDiffImagesAndThoseOfOtherRuns() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page4.png"), page(4));
+        String[] compare = {"compare", "--dir", mine.toString(), "--pages", "4", "--out-dir", mine.toString()};
+        for (int run = 1; run <= 2; run++) {
+            CliRun same = CliRun.of(compare);
+            assertEquals(ExitCode.OK, same.exitCode(), "run " + run + ": " + same.out() + same.err());
+            assertEquals(2, csvRows(mine).size(), "run " + run + ": a heading and page4.png");
+        }
+        assertTrue(Files.isRegularFile(mine.resolve("diffs/page4-diff.png")));
+        // check's report elsewhere in the folder: a diffs folder beside a compare.csv is a batch's output
+        CliRun.of("check", mine.toString(), "--pages", "4", "--out-dir", mine.resolve("report").toString());
+        png(mine.resolve("report/diffs/page4-diff.png"), page(5));
+        CliRun after = CliRun.of(compare);
+        assertEquals(ExitCode.OK, after.exitCode(), after.out() + after.err());
+        assertEquals(2, csvRows(mine).size(), "a heading and page4.png");
+    }
+
+    @Test
     void aFolderThatIsNotThereIsAClearError() {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());
