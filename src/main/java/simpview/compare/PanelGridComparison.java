@@ -104,12 +104,12 @@ public final class PanelGridComparison {
     /** Reads the picture, finds the page in it and cuts both pages into their panels. */
     public static Cut cut(Path picture, BufferedImage ours, Panel[] panels) throws CompareException {
         PngCodec.Pixels theirs = Picture.readPixels(picture);
-        return cut(theirs.rgb(), theirs.width(), theirs.height(), picture.toString(), ours, panels);
+        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), picture.toString(), ours, panels);
     }
 
     /** The same for a picture already read (for its 650x650 panel, which it may not really have). */
     public static Cut cut(Picture theirs, BufferedImage ours, Panel[] panels) throws CompareException {
-        return cut(theirs.rgb(), theirs.width(), theirs.height(), theirs.name(), ours, panels);
+        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), theirs.name(), ours, panels);
     }
 
     /**
@@ -126,10 +126,14 @@ public final class PanelGridComparison {
         }
     }
 
-    private static Cut cut(int[] rgb, int width, int height, String name, BufferedImage ours, Panel[] panels)
-            throws CompareException {
+    private static Cut cut(int[] rgb, byte[] alpha, int width, int height, String name, BufferedImage ours,
+            Panel[] panels) throws CompareException {
         int page = ours.getWidth();
         int[] at = find(rgb, width, height, page, panels, name);
+        for (int k = 0; k < panels.length; k++) {
+            Picture.requireOpaque(alpha, width, at[0] + panels[k].left(), at[1] + panels[k].top(), panels[k].size(),
+                    name, "panel " + (k + 1));
+        }
         int[] mine = Rasters.rgb(ours);
         int[][] a = new int[panels.length][];
         int[][] b = new int[panels.length][];

@@ -6,11 +6,14 @@ import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import javax.imageio.ImageIO;
 
 /**
  * A picture to compare: where its panel is, the panel's pixels (650x650
- * 0xRRGGBB, row by row from the top) and the picture's margins.
+ * 0xRRGGBB, row by row from the top) and the picture's margins. A picture read
+ * from a file whose panel is not opaque is refused: a viewer shows what lies
+ * behind such pixels, not their colours.
  */
 public final class Picture {
 
@@ -20,10 +23,12 @@ public final class Picture {
     private final PanelPlace place;
     private final int[] panel;
     private final int[] rgb;
+    private final byte[] alpha;
 
-    private Picture(String name, int[] rgb, int width, int height, PanelPlace place) {
+    private Picture(String name, int[] rgb, byte[] alpha, int width, int height, PanelPlace place) {
         this.name = name;
         this.rgb = rgb;
+        this.alpha = alpha;
         this.width = width;
         this.height = height;
         this.place = place;
@@ -38,14 +43,15 @@ public final class Picture {
         PngCodec.Pixels pixels = readPixels(file);
         String name = file.toString();
         PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
-        return new Picture(name, pixels.rgb(), pixels.width(), pixels.height(), place);
+        requireOpaque(pixels.alpha(), pixels.width(), place.left(), place.top(), PanelPlace.SIZE, name, "the panel");
+        return new Picture(name, pixels.rgb(), pixels.alpha(), pixels.width(), pixels.height(), place);
     }
 
     /** A picture in memory (a page, a capture), its panel found as in a file. */
     public static Picture of(BufferedImage image, String name) throws CompareException {
         int[] rgb = Rasters.rgb(image);
         PanelPlace place = PanelFinder.find(rgb, image.getWidth(), image.getHeight(), name);
-        return new Picture(name, rgb, image.getWidth(), image.getHeight(), place);
+        return new Picture(name, rgb, null, image.getWidth(), image.getHeight(), place);
     }
 
     /** One of simpview's own 750x750 pages: the panel is where the page puts it, nothing is searched. */
@@ -54,7 +60,7 @@ public final class Picture {
             throw new IllegalArgumentException("a page is 750x750, not " + page.getWidth() + "x" + page.getHeight());
         }
         PanelPlace place = new PanelPlace(PanelFinder.PAGE_MARGIN, PanelFinder.PAGE_MARGIN, "a 750x750 page");
-        return new Picture(name, Rasters.rgb(page), page.getWidth(), page.getHeight(), place);
+        return new Picture(name, Rasters.rgb(page), null, page.getWidth(), page.getHeight(), place);
     }
 
     /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
@@ -79,7 +85,33 @@ public final class Picture {
         if (image == null) {
             throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
         }
-        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image));
+        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image), Rasters.alpha(image));
+    }
+
+    /**
+     * Refuses a square of a picture (its panel, a panel of a page) holding pixels that are not opaque.
+     *
+     * @param alpha the picture's alpha, rows of {@code width}; null when it has none
+     * @param what the square, as the message names it: "the panel", "panel 2"
+     */
+    static void requireOpaque(byte[] alpha, int width, int left, int top, int size, String name, String what)
+            throws CompareException {
+        if (alpha == null) {
+            return;
+        }
+        int seeThrough = 0;
+        for (int y = top; y < top + size; y++) {
+            for (int x = left; x < left + size; x++) {
+                if (alpha[y * width + x] != (byte) 255) {
+                    seeThrough++;
+                }
+            }
+        }
+        if (seeThrough > 0) {
+            throw new CompareException(String.format(Locale.ROOT, "%s: %,d of %s's %,d pixels %s not opaque (alpha "
+                    + "below 255), and a viewer shows what lies behind them, not their colours: save the picture "
+                    + "without transparency", name, seeThrough, what, size * size, seeThrough == 1 ? "is" : "are"));
+        }
     }
 
     private static CompareException damaged(Path file, String why, Exception cause) {
@@ -105,6 +137,11 @@ public final class Picture {
     /** The whole picture's pixels, 0xRRGGBB row by row from the top (not a copy: do not change them). */
     int[] rgb() {
         return rgb;
+    }
+
+    /** Their alpha, 0-255 the same way, or null when the picture has none (not a copy). */
+    byte[] alpha() {
+        return alpha;
     }
 
     public String name() {

@@ -13,8 +13,9 @@ import java.util.zip.Inflater;
  * Reads and writes the PNG files compare meets most, without ImageIO (whose
  * start-up costs more than a whole comparison): 8-bit grey, grey+alpha, RGB,
  * RGBA and palette pictures, not interlaced, straight into 0xRRGGBB pixels
- * (alpha is ignored, as it is for every picture compared). Anything else is
- * {@link Unsupported}, and the caller falls back to ImageIO.
+ * and their alpha apart. Anything else (and a grey or RGB picture with one
+ * transparent colour) is {@link Unsupported}, and the caller falls back to
+ * ImageIO.
  */
 final class PngCodec {
 
@@ -27,8 +28,11 @@ final class PngCodec {
         }
     }
 
-    /** A decoded picture: width x height pixels, row by row from the top. */
-    record Pixels(int width, int height, int[] rgb) {
+    /**
+     * A decoded picture: width x height pixels, row by row from the top, and their alpha (0-255) the
+     * same way, or null when the picture has no transparency.
+     */
+    record Pixels(int width, int height, int[] rgb, byte[] alpha) {
     }
 
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10};
@@ -60,6 +64,7 @@ final class PngCodec {
         in.position(SIGNATURE.length);
         Header header = null;
         byte[] palette = null;
+        byte[] transparency = null;
         ByteArrayOutputStream idat = new ByteArrayOutputStream(file.length);
         while (true) {
             Chunk chunk = Chunk.next(in, file);
@@ -67,8 +72,14 @@ final class PngCodec {
                 case "IHDR" -> header = Header.of(file, chunk);
                 case "PLTE" -> palette = Arrays.copyOfRange(file, chunk.start(), chunk.start() + chunk.length());
                 case "IDAT" -> idat.write(file, chunk.start(), chunk.length());
+                case "tRNS" -> {
+                    if (need(header).colourType() != 3) {
+                        throw new Unsupported("a transparent colour");
+                    }
+                    transparency = Arrays.copyOfRange(file, chunk.start(), chunk.start() + chunk.length());
+                }
                 case "IEND" -> {
-                    return unfilter(need(header), palette, inflate(idat.toByteArray(), need(header)));
+                    return unfilter(need(header), palette, transparency, inflate(idat.toByteArray(), need(header)));
                 }
                 default -> {
                     // ancillary chunks (gamma, text, time ...) change no pixel compare looks at
@@ -157,22 +168,30 @@ final class PngCodec {
         }
     }
 
-    /** Undoes the five PNG row filters in place and packs the pixels as 0xRRGGBB. */
-    private static Pixels unfilter(Header h, byte[] palette, byte[] raw) throws CompareException {
+    /**
+     * Undoes the five PNG row filters in place and packs the pixels as 0xRRGGBB, and their alpha apart
+     * (of a palette picture, from its tRNS chunk: the alpha of its first colours, the rest opaque).
+     */
+    private static Pixels unfilter(Header h, byte[] palette, byte[] transparency, byte[] raw) throws CompareException {
         int bpp = h.channels();
         int stride = h.width() * bpp;
         if (h.colourType() == 3 && palette == null) {
             throw new CompareException("a palette picture without a PLTE chunk");
         }
         int[] rgb = new int[h.width() * h.height()];
+        boolean seeThrough = h.colourType() == 4 || h.colourType() == 6 || transparency != null;
+        byte[] alpha = seeThrough ? new byte[rgb.length] : null;
         for (int y = 0; y < h.height(); y++) {
             int row = y * (stride + 1) + 1;
             int prior = row - stride - 1;
             int filter = raw[row - 1];
             unfilterRow(raw, row, y == 0 ? -1 : prior, stride, bpp, filter);
             pack(h, palette, raw, row, rgb, y * h.width());
+            if (alpha != null) {
+                alphaOf(h, transparency, raw, row, alpha, y * h.width());
+            }
         }
-        return new Pixels(h.width(), h.height(), rgb);
+        return new Pixels(h.width(), h.height(), rgb, alpha);
     }
 
     /** One row's filter undone; {@code prior} is the row above, or -1 for the first row. One loop per filter. */
@@ -233,6 +252,19 @@ final class PngCodec {
         } else {
             for (int x = 0, p = row; x < w; x++, p += bpp) {
                 rgb[at + x] = (raw[p] & 0xFF) * 0x010101;
+            }
+        }
+    }
+
+    /** One row's alpha: the last byte of each grey+alpha or RGBA pixel, or its palette colour's. */
+    private static void alphaOf(Header h, byte[] transparency, byte[] raw, int row, byte[] alpha, int at) {
+        int bpp = h.channels();
+        for (int x = 0, p = row; x < h.width(); x++, p += bpp) {
+            if (h.colourType() != 3) {
+                alpha[at + x] = raw[p + bpp - 1];
+            } else {
+                int index = raw[p] & 0xFF;
+                alpha[at + x] = index < transparency.length ? transparency[index] : (byte) 255;
             }
         }
     }

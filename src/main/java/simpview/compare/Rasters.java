@@ -90,6 +90,23 @@ final class Rasters {
         return samples;
     }
 
+    /**
+     * A picture's alpha, 0-255 row by row from the top (as getRGB gives it, whatever the colour model),
+     * or null when the picture has no transparency.
+     */
+    static byte[] alpha(BufferedImage image) {
+        if (!image.getColorModel().hasAlpha()) {
+            return null;
+        }
+        int w = image.getWidth();
+        int[] argb = image.getRGB(0, 0, w, image.getHeight(), null, 0, w);
+        byte[] alpha = new byte[argb.length];
+        for (int i = 0; i < argb.length; i++) {
+            alpha[i] = (byte) (argb[i] >>> 24);
+        }
+        return alpha;
+    }
+
     /** What is left of a channel's light under {@code ink} (0-255), of {@code white} (255 less the black ink). */
     private static int mix(int ink, int white) {
         return ((255 - ink) * white + 127) / 255;

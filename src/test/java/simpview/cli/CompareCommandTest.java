@@ -200,6 +200,24 @@ public class CompareCommandTest {
         }
     }
 
+    @Test
+    void aTransparentPageIsRefusedAndSaysWhy() throws Exception {
+        BufferedImage page = page(4);
+        BufferedImage clear = new BufferedImage(page.getWidth(), page.getHeight(), BufferedImage.TYPE_INT_ARGB);
+        for (int y = 0; y < page.getHeight(); y++) {
+            for (int x = 0; x < page.getWidth(); x++) {
+                clear.setRGB(x, y, page.getRGB(x, y) & 0xFFFFFF);
+            }
+        }
+        Path file = png("page4.png", clear);
+        CliRun run = CliRun.of("compare", file.toString(), "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertEquals("simpview compare: " + file + ": 422,500 of the panel's 422,500 pixels are not opaque (alpha below "
+                + "255), and a viewer shows what lies behind them, not their colours: save the picture without "
+                + "transparency", run.err().strip());
+        assertEquals("", run.out());
+    }
+
     private byte[] truncatedPng() throws Exception {
         byte[] whole = Files.readAllBytes(png("whole.png", page(1)));
         byte[] half = new byte[whole.length / 2];

@@ -59,6 +59,16 @@ class PngCodecTest {
     }
 
     @Test
+    void alphaIsReadAsImageIoReadsIt() throws Exception {
+        byte[] file = png(noisy(BufferedImage.TYPE_INT_ARGB, 97, 61));
+        BufferedImage image = ImageIO.read(new ByteArrayInputStream(file));
+        byte[] alpha = PngCodec.decode(file).alpha();
+        for (int i = 0; i < alpha.length; i++) {
+            assertEquals(image.getRGB(i % 97, i / 97) >>> 24, alpha[i] & 0xFF, "pixel " + i);
+        }
+    }
+
+    @Test
     void greyIsTakenAsItsStoredLevels() throws Exception {
         BufferedImage grey = new BufferedImage(20, 10, BufferedImage.TYPE_BYTE_GRAY);
         grey.getRaster().setSample(3, 4, 0, 77);
