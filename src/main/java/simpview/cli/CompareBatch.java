@@ -9,13 +9,19 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -92,7 +98,7 @@ public final class CompareBatch {
          * is known to stop them.
          */
         String problem() {
-            Map<Path, String> files = new java.util.LinkedHashMap<>();
+            Map<Path, String> files = new LinkedHashMap<>();
             if (outDir != null) {
                 String by = outDirOption() + " " + outDir;
                 files.put(outDir.resolve(TABLE), by);
@@ -273,7 +279,7 @@ public final class CompareBatch {
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
         // shows who lacks a page that others handed in).
-        java.util.LinkedHashSet<CompareTarget> all = new java.util.LinkedHashSet<>(wanted);
+        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(wanted);
         for (Match match : matches) {
             if (match.target() != null) {
                 all.add(match.target());
@@ -283,7 +289,7 @@ public final class CompareBatch {
         for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
         }
-        for (int page : new java.util.TreeSet<>(firstAssignment.keySet())) {
+        for (int page : new TreeSet<>(firstAssignment.keySet())) {
             for (int k = 1; k <= A1Layout.PANELS; k++) {
                 asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
             }
@@ -300,7 +306,7 @@ public final class CompareBatch {
     private void claimOutputs(Path dir, List<Path> pictures, Outputs outputs) {
         OutputPaths files = outputs.files();
         pictures.forEach(picture -> files.reads(picture, "a picture to compare"));
-        java.util.Set<Path> alternates = new java.util.HashSet<>();
+        Set<Path> alternates = new HashSet<>();
         rubric.rules().forEach(rule -> alternates.add(rule.alternates()));
         alternates.add(rubric.defaults().alternates());
         alternates.remove(null);
@@ -500,7 +506,7 @@ public final class CompareBatch {
             return progress(rows.get(0));
         }
         BatchRow worst = rows.stream().filter(BatchRow::compared)
-                .min(java.util.Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
+                .min(Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
         long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
         return (passing == rows.size() ? "PASS" : "FAIL") + " " + passing + " of " + rows.size() + " panels; lowest "
                 + Percent.of(worst.verdict()) + " (" + worst.target() + ")";
@@ -735,7 +741,8 @@ public final class CompareBatch {
      */
     private static boolean inOutputsDiffs(Path dir, Path picture) {
         for (Path folder = picture.getParent(); folder != null; folder = folder.getParent()) {
-            if (folder.getFileName().toString().equals(DIFFS) && Files.isRegularFile(dir.resolve(folder).resolveSibling(CSV))) {
+            if (folder.getFileName().toString().equals(DIFFS)
+                    && Files.isRegularFile(dir.resolve(folder).resolveSibling(CSV))) {
                 return true;
             }
         }
