@@ -95,15 +95,20 @@ class PictureFormatsTest {
     @Test
     void aSixteenBitGreyPngWithAlphaOfThePagePasses() throws Exception {
         BufferedImage page = page3();
+        passes(page, written(greyWithAlpha16(page, 65535), "png", "page3.png"));
+    }
+
+    /** A grey page (its blue levels) as 16-bit grey with every pixel's alpha {@code alpha} (of 65535). */
+    static BufferedImage greyWithAlpha16(BufferedImage page, int alpha) {
         ComponentColorModel model = new ComponentColorModel(ColorSpace.getInstance(ColorSpace.CS_GRAY), true, false,
                 Transparency.TRANSLUCENT, DataBuffer.TYPE_USHORT);
         WritableRaster raster = model.createCompatibleWritableRaster(page.getWidth(), page.getHeight());
         for (int y = 0; y < page.getHeight(); y++) {
             for (int x = 0; x < page.getWidth(); x++) {
-                raster.setPixel(x, y, new int[] {(page.getRGB(x, y) & 0xFF) * 257, 65535});
+                raster.setPixel(x, y, new int[] {(page.getRGB(x, y) & 0xFF) * 257, alpha});
             }
         }
-        passes(page, written(new BufferedImage(model, raster, false, null), "png", "page3.png"));
+        return new BufferedImage(model, raster, false, null);
     }
 
     @Test

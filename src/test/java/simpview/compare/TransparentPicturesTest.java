@@ -6,13 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.Transparency;
-import java.awt.color.ColorSpace;
 import java.awt.image.BufferedImage;
-import java.awt.image.ComponentColorModel;
-import java.awt.image.DataBuffer;
 import java.awt.image.IndexColorModel;
-import java.awt.image.WritableRaster;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
@@ -110,16 +105,7 @@ class TransparentPicturesTest {
 
     @Test
     void aSixteenBitGreyPictureWithAlphaIsRefused() throws Exception {
-        BufferedImage page = page(3);
-        ComponentColorModel model = new ComponentColorModel(ColorSpace.getInstance(ColorSpace.CS_GRAY), true, false,
-                Transparency.TRANSLUCENT, DataBuffer.TYPE_USHORT);
-        WritableRaster raster = model.createCompatibleWritableRaster(page.getWidth(), page.getHeight());
-        for (int y = 0; y < page.getHeight(); y++) {
-            for (int x = 0; x < page.getWidth(); x++) {
-                raster.setPixel(x, y, new int[] {(page.getRGB(x, y) & 0xFF) * 257, 1000});
-            }
-        }
-        Path file = png(new BufferedImage(model, raster, false, null), "page3.png");
+        Path file = png(PictureFormatsTest.greyWithAlpha16(page(3), 1000), "page3.png");
         assertTrue(refusal(file).contains(": 422,500 of the panel's 422,500 pixels are not opaque"), refusal(file));
     }
 
