@@ -351,7 +351,8 @@ final class ObjParser {
     /** An error at byte index i of the current line. */
     private SceneException error(int i, String problem) {
         int column = text(lineStart, Math.min(i, end)).length() + 1;
-        return new SceneException(file(), source.lineNumber(), column, text(lineStart, end), problem);
+        return new SceneException(file(), source.lineNumber(), column, text(lineStart, end),
+                problem + source.lineEndHint());
     }
 
 }

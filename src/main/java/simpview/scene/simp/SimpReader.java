@@ -494,7 +494,7 @@ public final class SimpReader implements AutoCloseable {
             return binary;
         }
         int column = text(source.lineStart(), Math.min(i, end)).length() + 1;
-        return new SceneException(file(), source.lineNumber(), column, lineText(), problem);
+        return new SceneException(file(), source.lineNumber(), column, lineText(), problem + source.lineEndHint());
     }
 
 }

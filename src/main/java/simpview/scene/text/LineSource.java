@@ -127,6 +127,21 @@ public final class LineSource {
         return bufferOffset + lineStart;
     }
 
+    /**
+     * For a message about the current line: a hint when it holds a carriage
+     * return, which only a file whose lines end in CR alone (old Mac files)
+     * leaves inside a line, so that the whole file reads as one line; else "".
+     */
+    public String lineEndHint() {
+        for (int i = lineStart; i < lineEnd; i++) {
+            if (buf[i] == '\r') {
+                return " (this file's lines end in a carriage return alone, so it reads as one line: "
+                        + "save it with LF or CR LF line ends)";
+            }
+        }
+        return "";
+    }
+
     /** The 1-based number of the current line. */
     public int lineNumber() {
         return lineNumber;

@@ -33,6 +33,16 @@ class ObjErrorsTest {
         return streamed;
     }
 
+    /** A file whose lines end in CR alone reads as one line: its error says so. */
+    @Test
+    void linesEndingInACarriageReturnAloneAreNamedSo() {
+        SceneException e = fails("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+        assertEquals("expected a number, found '0 v' (this file's lines end in a carriage return alone, so it reads "
+                + "as one line: save it with LF or CR LF line ends)", e.problem());
+        assertEquals(7, e.column());
+        assertTrue(e.getMessage().endsWith("\n    v 0 0 0 v 1 0 0 v 0 1 0 f 1 2 3\n          ^"), e.getMessage());
+    }
+
     private static void assertError(String model, int line, int column, String problem) {
         SceneException e = fails(model);
         assertEquals(problem, e.problem(), "problem");

@@ -225,6 +225,15 @@ class SimpReaderTest {
     }
 
     @Test
+    void linesEndingInACarriageReturnAloneAreNamedSo() {
+        SceneException e = error("scale 1 2 3\rwire\r");
+        assertEquals("expected a number, found '3 wire' (this file's lines end in a carriage return alone, so it reads "
+                + "as one line: save it with LF or CR LF line ends)", e.problem());
+        assertEquals(11, e.column());
+        assertEquals(List.of("    scale 1 2 3 wire", "              ^"), e.getMessage().lines().skip(1).toList());
+    }
+
+    @Test
     void tooFewNumbers() {
         assertError("translate 1 2", 1, 14, "wrong number of arguments: translate takes 3 numbers, found 2 numbers");
     }
