@@ -151,7 +151,14 @@ final class InspectCommand implements Callable<Integer> {
                 out.print(report.text(history || all, explain || all, table));
             }
             out.flush();
-            return ExitCode.OK;
+            if (report.error() == null) {
+                return ExitCode.OK;
+            }
+            // the report went as far as the error and names it; JSON's reader may not show it to a person
+            if (json) {
+                err().println(report.error().getMessage());
+            }
+            return ExitCode.SCENE_ERROR;
         } catch (SceneException e) {
             err().println(e.getMessage());
             return ExitCode.SCENE_ERROR;

@@ -68,7 +68,7 @@ public final class PixelInspector {
      * scene, and what the pixel shows at the end.
      *
      * @throws IllegalArgumentException when (x, y) is outside the panel
-     * @throws SceneException when the scene has an error (the history then goes up to it)
+     * @throws SceneException when the scene cannot be read at all (its file is not there)
      */
     public PixelReport inspect(InspectedScene scene, int x, int y) throws SceneException {
         return inspect(scene, x, y, HistoryEntry.NO_NUMBER);
@@ -78,6 +78,10 @@ public final class PixelInspector {
      * As {@link #inspect(InspectedScene, int, int)}, also keeping primitive
      * {@code primitive}'s vertices for {@link PixelReport#vertices(int)}
      * whether or not it reaches the pixel ({@link HistoryEntry#NO_NUMBER}: only those that do).
+     * A scene with an error is inspected as far as the error, as the page
+     * shows it drawn that far: {@link PixelReport#error} names it.
+     *
+     * @throws SceneException when the scene cannot be read at all (its file is not there)
      */
     public PixelReport inspect(InspectedScene scene, int x, int y, int primitive) throws SceneException {
         if (x < 0 || x >= PageCanvas.PANEL || y < 0 || y >= PageCanvas.PANEL) {
@@ -91,9 +95,19 @@ public final class PixelInspector {
         Replay replay = new Replay(watch);
         ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
-        ScenePipeline.Drawn drawn = ScenePipeline.draw(scene.file(), canvas, options, replay);
+        ScenePipeline.Drawn drawn;
+        SceneException error = null;
+        try {
+            drawn = ScenePipeline.draw(scene.file(), canvas, options, replay);
+        } catch (SceneException e) {
+            if (e.line() == 0 && e.file() != null && e.file().equals(scene.file())) {
+                throw e; // nothing of it was read: there is no history to tell
+            }
+            error = e;
+            drawn = new ScenePipeline.Drawn(replay.lit, null, true, List.of());
+        }
         int argb = canvas.panel().getPixel(x, y);
-        return new PixelReport(scene, drawn, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(),
+        return new PixelReport(scene, drawn, error, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(),
                 watch::source);
     }
 
@@ -106,6 +120,8 @@ public final class PixelInspector {
     private final class Replay implements SceneMonitor, DrawingWatch {
         private final PixelWatch watch;
         private CueExplainer cue;
+        /** Whether the rules last begun are the lit ones: what the report says of a scene that stops at an error. */
+        private boolean lit;
 
         Replay(PixelWatch watch) {
             this.watch = watch;
@@ -144,6 +160,7 @@ public final class PixelInspector {
 
         @Override
         public void began(Supplier<List<SourcePlace>> chain, LitState lit) {
+            this.lit = lit != null;
             watch.begin(chain, lit, cue);
         }
     }

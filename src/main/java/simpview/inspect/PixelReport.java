@@ -1,13 +1,15 @@
 package simpview.inspect;
 
 import java.util.List;
-import simpview.stage.Painter;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SourcePlace;
+import simpview.stage.Painter;
 import simpview.surface.PageCanvas;
 
 /**
  * What a replay found at one pixel: its final colour and depth, and every
- * write attempted at it in drawing order. Printed as text or as JSON.
+ * write attempted at it in drawing order; for a scene with an error, as far
+ * as the error, which it names. Printed as text or as JSON.
  */
 public final class PixelReport {
 
@@ -22,10 +24,14 @@ public final class PixelReport {
     private final java.util.function.IntFunction<PrimitiveSource> sources;
 
     private final simpview.scene.simp.ScenePipeline.Drawn drawn;
+    private final SceneException error;
 
-    PixelReport(InspectedScene scene, simpview.scene.simp.ScenePipeline.Drawn drawn, int x, int y, int argb,
-            double depth, List<HistoryEntry> history, java.util.function.IntFunction<PrimitiveSource> sources) {
+    /** @param error what stopped the scene, the history going as far as it; null when it was drawn to its end */
+    PixelReport(InspectedScene scene, simpview.scene.simp.ScenePipeline.Drawn drawn, SceneException error, int x,
+            int y, int argb, double depth, List<HistoryEntry> history,
+            java.util.function.IntFunction<PrimitiveSource> sources) {
         this.drawn = drawn;
+        this.error = error;
         this.sources = sources;
         this.scene = scene;
         this.x = x;
@@ -70,6 +76,11 @@ public final class PixelReport {
 
     public List<HistoryEntry> history() {
         return history;
+    }
+
+    /** The error the scene stops at, as the page stops there; null when it was drawn to its end. */
+    public SceneException error() {
+        return error;
     }
 
     /** The last write that went through: the pixel's owner; null for a background pixel. */
@@ -139,6 +150,9 @@ public final class PixelReport {
                 if (e.outcome() == Outcome.DEPTH_FAILED) {
                     sb.append(": stored depth ").append(Json.number(e.storedDepth())).append(e.storedOwner()
                             == HistoryEntry.NO_NUMBER ? " (nothing drawn yet)" : " of primitive " + shown(e.storedOwner()));
+                    if (e.z() == e.storedDepth()) {
+                        sb.append(", as deep: a write must be strictly nearer, so the first of the two stays");
+                    }
                 } else if (e.outcome() == Outcome.SCISSORED) {
                     sb.append(": outside the view's depth range");
                 } else if (e.outcome() == Outcome.CULLED) {
@@ -151,6 +165,10 @@ public final class PixelReport {
                 }
                 sb.append('\n');
             }
+        }
+        if (error != null) {
+            sb.append("the scene stops with an error here, as the page does, so the history ends:\n  ")
+                    .append(error.getMessage().replace("\n", "\n  ")).append('\n');
         }
         Terms explanation = explanation();
         if (withExplanation) {
@@ -187,7 +205,12 @@ public final class PixelReport {
         Json.number(sb, depth);
         HistoryEntry owner = lastWritten();
         sb.append(", \"owner\": ").append(owner == null ? "null" : String.valueOf(shown(owner.primitive())));
-        sb.append("}, \"lit\": ").append(drawn.lit());
+        sb.append("}, \"lit\": ").append(drawn.lit()).append(", \"error\": ");
+        if (error == null) {
+            sb.append("null");
+        } else {
+            Json.string(sb, error.getMessage());
+        }
         if (withHistory) {
             sb.append(", \"history\": [");
             for (int k = 0; k < history.size(); k++) {

@@ -127,6 +127,35 @@ class InspectCommandTest {
         assertTrue(run.err().contains("is lit (lit.simp:1 camera)"), run.err());
     }
 
+    /**
+     * A scene that stops with an error is inspected as far as the error, as
+     * the page shows it drawn that far: the history, then the error (exit 1).
+     * Of two writes at one depth the second fails, and the text says why.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void aSceneWithAnErrorIsInspectedAsFarAsTheError() throws Exception {
+        Path scene = write("broken.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\nbogus 1 2\n");
+        CliRun text = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--history");
+        assertEquals(ExitCode.SCENE_ERROR, text.exitCode(), text.err());
+        assertTrue(text.out().contains("history: 2 writes attempted"), text.out());
+        assertTrue(text.out().contains("stored depth -10 of primitive 1, as deep: a write must be strictly nearer, "
+                + "so the first of the two stays"), text.out());
+        assertTrue(text.out().contains("the scene stops with an error here, as the page does, so the history ends:\n"
+                + "  " + scene + ":3:1: unknown command 'bogus'"), text.out());
+        CliRun json = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--json");
+        assertEquals(ExitCode.SCENE_ERROR, json.exitCode());
+        Map<String, Object> parsed = (Map<String, Object>) new MiniJson(json.out().strip()).value();
+        assertTrue(((String) parsed.get("error")).startsWith(scene + ":3:1: unknown command 'bogus'"), json.out());
+        assertEquals(2, ((List<Object>) parsed.get("history")).size());
+        assertTrue(json.err().contains("unknown command 'bogus'"), json.err());
+        Map<String, Object> whole = (Map<String, Object>) new MiniJson(CliRun.of("inspect", "--scene",
+                write("whole.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n").toString(), "--at",
+                "325,325", "--json").out().strip()).value();
+        assertTrue(whole.containsKey("error") && whole.get("error") == null, "a scene drawn to its end: error null");
+    }
+
     @Test
     void pagesThatAreNotScenesAndMissingScenes() throws Exception {
         CliRun page = CliRun.of("inspect", "--page", "2", "--at", "10,10");

@@ -196,21 +196,22 @@ public final class InspectorPanel {
     public void inspect(InspectedScene scene, int x, int y, String note, String before) {
         replay(before, "Replaying the scene for pixel (" + x + ", " + y + ") ...", () -> {
             Map<String, SourcePlace> named = new HashMap<>();
+            PixelReport r;
             try {
-                PixelReport r = inspector.inspect(scene, x, y);
-                HistoryEntry owner = r.lastWritten();
-                for (HistoryEntry entry : r.history()) {
-                    for (SourcePlace place : entry.chain()) {
-                        named.put(place.file().getFileName() + ":" + place.line(), place);
-                    }
-                }
-                return new Answer((note == null ? "" : note + "\n\n")
-                        + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive()),
-                        named, owner == null ? List.of() : owner.chain());
+                // a scene with an error is inspected as far as the error, which the report names
+                r = inspector.inspect(scene, x, y);
             } catch (SceneException e) {
-                return new Answer("The scene stops with an error, so the history ends there:\n" + e.getMessage(),
-                        named, List.of());
+                return new Answer("The scene cannot be read:\n" + e.getMessage(), named, List.of());
             }
+            HistoryEntry owner = r.lastWritten();
+            for (HistoryEntry entry : r.history()) {
+                for (SourcePlace place : entry.chain()) {
+                    named.put(place.file().getFileName() + ":" + place.line(), place);
+                }
+            }
+            return new Answer((note == null ? "" : note + "\n\n")
+                    + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive()),
+                    named, owner == null ? List.of() : owner.chain());
         });
     }
 
