@@ -108,7 +108,13 @@ final class VertexTable {
         double px = camera.panelX(x, z);
         double py = camera.panelY(y, z);
         v.put("panel", px, py);
-        v.put("pixel", (int) Math.floor(px + 0.5), (int) Math.floor(py + 0.5));
+        double pixelX = Math.floor(px + 0.5);
+        double pixelY = Math.floor(py + 0.5);
+        if (Math.abs(pixelX) < Integer.MAX_VALUE && Math.abs(pixelY) < Integer.MAX_VALUE) {
+            v.put("pixel", (int) pixelX, (int) pixelY);
+        } else {
+            v.put("pixel", "none: too far outside the panel to name");
+        }
     }
 
     /** SPEC's DDA for a line between two panel points: start pixel, direction, slope and step count. */

@@ -156,6 +156,19 @@ class InspectCommandTest {
         assertTrue(whole.containsKey("error") && whole.get("error") == null, "a scene drawn to its end: error null");
     }
 
+    /** A vertex too far out for an int pixel is said so, not printed as -2147483648; --page names its 4 to 8. */
+    @Test
+    void aVertexFarOutsideAndAPageBeyondTheScenes() throws Exception {
+        Path scene = write("far.simp", "polygon (-1e300, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,325", "--vertices");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.out().contains("pixel: none: too far outside the panel to name"), run.out());
+        assertFalse(run.out().contains("-2147483648"), run.out());
+        CliRun page = CliRun.of("inspect", "--page", "9", "--at", "10,10");
+        assertEquals(ExitCode.USAGE_ERROR, page.exitCode());
+        assertTrue(page.err().contains("--page must be 4 to 8 (the pages drawn from scene files), not 9"), page.err());
+    }
+
     @Test
     void pagesThatAreNotScenesAndMissingScenes() throws Exception {
         CliRun page = CliRun.of("inspect", "--page", "2", "--at", "10,10");
