@@ -94,6 +94,8 @@ public final class SimpviewWindow {
     private final PageStepper stepper;
     /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
     private int assignment1Page;
+    /** The first assignment's page last shown (1 to 5): where Alt+1 and A come back to. */
+    private int lastAssignment1Page = 1;
     /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
     private CoursePageSet coursePages;
     private final Map<Integer, CoursePageSet> courseSets = new HashMap<>();
@@ -554,9 +556,13 @@ public final class SimpviewWindow {
      */
     private void toggleOverdraw(boolean failures) {
         if (overdrawShown) {
-            overdrawShown = false;
+            boolean same = overdrawFailures == failures;
             showPicture();
-            return;
+            if (same) {
+                status.say(StatusStrip.HINTS);
+                return;
+            }
+            // the other count asked for while one is shown: it takes the place of the one shown
         }
         replayForOverlay("Counting the writes of every pixel ...",
                 "The overdraw could not be counted: the scene has an error.", inspectorPanel::overdraw, counts -> {
@@ -604,6 +610,7 @@ public final class SimpviewWindow {
     private void toggleBackFaces() {
         if (backFacesShown) {
             showPicture();
+            status.say(StatusStrip.HINTS);
             return;
         }
         if (shown == null) {
@@ -826,6 +833,7 @@ public final class SimpviewWindow {
         if (pageView.skippedShown()) {
             pageView.skipped(null, null);
             legendStrip.show("skipped", null);
+            status.say(StatusStrip.HINTS);
             return;
         }
         replayForOverlay("Finding the primitives culled and clipped away ...",
@@ -851,6 +859,7 @@ public final class SimpviewWindow {
         if (pageView.wireShown()) {
             pageView.wire(null);
             legendStrip.show("wire", null);
+            status.say(StatusStrip.HINTS);
             return;
         }
         showWire();
@@ -1118,7 +1127,7 @@ public final class SimpviewWindow {
         if (coursePages != null || assignment1Page > 0) {
             stepTo(stepper.current());
         } else {
-            showAssignment1(1);
+            showAssignment1(lastAssignment1Page);
         }
     }
 
@@ -1126,6 +1135,7 @@ public final class SimpviewWindow {
         coursePages = null;
         forgetViewState();
         assignment1Page = page;
+        lastAssignment1Page = page;
         show(new View.OfAssignment1Page(page));
     }
 
@@ -1253,7 +1263,7 @@ public final class SimpviewWindow {
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (coursePage && result.warnings().isEmpty()) {
-            status.say(coursePages.describe() + " · → ← Home End 1-9: its pages · Alt+2: the eight pages");
+            status.say(coursePages.describe() + " · → ← Home End 1-8: its pages · Alt+2: the eight pages");
         }
         if (orbit.turned()) {
             status.say(orbit.describe());

@@ -75,12 +75,15 @@ public final class StatusStrip {
         // shown or not: only while a job is showing may it move.
         bar.setIndeterminate(false);
         text.setText(message);
+        // a line longer than the window is cut with "...": the whole of it shows on hovering
+        text.setToolTipText(message);
         cards.show(panel, TEXT);
     }
 
     /** The inspector's line: the pixel under the pointer (or pinned), the zoom. */
     void inspect(String line) {
         inspector.setText(line == null || line.isEmpty() ? " " : line);
+        inspector.setToolTipText(line == null || line.isEmpty() ? null : line);
     }
 
     String inspectorText() {

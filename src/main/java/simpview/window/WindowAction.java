@@ -25,7 +25,8 @@ public enum WindowAction {
     OPEN(Menu.FILE, "Open scene…", "open a scene as an extra view (or drop a .simp file on the window)", "menu O"),
     COMPARE(Menu.FILE, "Open picture to compare…",
             "compare the page with a picture, a PNG of yours (or drop it on the window)", "menu shift O"),
-    SAVE(Menu.FILE, "Save as PNG…", "save what is shown as PNG (.png is added to a name without one)", "menu S"),
+    SAVE(Menu.FILE, "Save as PNG…", "save the page as drawn as PNG, without overlays or the depth view (.png is "
+            + "added to a name without one)", "menu S"),
     REDRAW(Menu.FILE, "Draw again", "draw again, every file read from disk afresh (the files are also watched "
             + "and drawn again when saved)", "F5"),
     CLOSE(Menu.FILE, "Close", "close the window", "menu W"),

@@ -73,9 +73,15 @@ public final class ZoomPan {
         centre();
     }
 
-    /** One image pixel per screen pixel, centred on what is in the middle of the view now. */
+    /**
+     * One image pixel per screen pixel, centred on what is in the middle of
+     * the view now; when the whole image fits at 1:1, centred in the view.
+     */
     public void actualSize() {
         zoomAbout(viewWidth / 2.0, viewHeight / 2.0, 1);
+        if (imageSize <= viewWidth && imageSize <= viewHeight) {
+            centre();
+        }
     }
 
     /** The zoom at which the whole image fits the viewport: an integer when 1:1 fits, else a fraction. */

@@ -65,7 +65,13 @@ public class Assignment1WindowTest extends WindowTestCase {
         driver.awaitShown(new View.OfAssignment1Page(5));
         driver.clickPage();
         driver.awaitShown(new View.OfAssignment1Page(1));
-        // Back to the eight pages, where the window left them.
+        driver.press(KeyEvent.VK_4);
+        driver.awaitShown(new View.OfAssignment1Page(4));
+        // Back to the eight pages, where the window left them, and to the first assignment's where it left those.
+        driver.press(KeyEvent.VK_A);
+        driver.awaitShown(new View.OfPage(2));
+        driver.press(KeyEvent.VK_A);
+        driver.awaitShown(new View.OfAssignment1Page(4));
         driver.press(KeyEvent.VK_A);
         driver.awaitShown(new View.OfPage(2));
         driver.press(KeyEvent.VK_RIGHT);

@@ -69,8 +69,12 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         // Shift+V: at the centre the farthest triangle, drawn last, lost to the two before it: at most 1 loss.
         driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == 1, "the depth-test failures, at most 1");
+        // V while the failures are shown: the overdraw takes their place; V again: the page
+        driver.press(KeyEvent.VK_V);
+        driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw instead of the failures");
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
+        assertEquals(StatusStrip.HINTS, driver.onEdt(() -> window.status().messageText()), "no word of the overlay left");
 
         // K: the back faces: only the last triangle, (60, 60) (60, 90) (90, 60), is clockwise.
         driver.press(KeyEvent.VK_K);

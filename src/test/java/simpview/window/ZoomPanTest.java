@@ -126,6 +126,18 @@ public class ZoomPanTest {
         assertEquals("1:1", zoomPan.describe());
     }
 
+    /** After zooming in and panning, Z in a view the whole page fits at 1:1 centres it, as fit does. */
+    @Test
+    void actualSizeCentresAPageThatFits() {
+        ZoomPan zoomPan = in(800, 760);
+        zoomPan.wheel(100, 100, -2);
+        zoomPan.pan(37, -12);
+        zoomPan.actualSize();
+        assertEquals(1.0, zoomPan.zoom());
+        assertEquals(25.0, zoomPan.originX());
+        assertEquals(5.0, zoomPan.originY());
+    }
+
     @Test
     void aResizeInFitModeRefits() {
         ZoomPan zoomPan = in(750, 750);
