@@ -616,6 +616,11 @@ public final class SimpviewWindow {
         if (shown == null) {
             return;
         }
+        if (shown.view() instanceof View.OfAssignment1Page) {
+            status.say("Back faces are a scene's (pages 4-8, opened scenes): the first assignment's triangles are "
+                    + "filled whichever way round they are given.");
+            return;
+        }
         BackFacePicture.Tinted tinted =
                 BackFacePicture.of(shown.image(), shown.facts());
         if (tinted == null) {
@@ -811,6 +816,9 @@ public final class SimpviewWindow {
                 return;
             }
             chain = line.substring(line.indexOf("drawn by primitive"));
+            Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
+            status.say("Copied: " + chain + " (with the panel open, I, the copy is the whole include chain)");
+            return;
         }
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
         status.say("Copied: " + chain);
@@ -887,6 +895,11 @@ public final class SimpviewWindow {
     }
 
     private void toggleDepthView() {
+        if (!depthView && shown != null && shown.view() instanceof View.OfAssignment1Page) {
+            status.say("The first assignment's pages have no depths to show: their panels are drawn without a "
+                    + "z-buffer (SPEC Part 3).");
+            return;
+        }
         depthView = !depthView;
         showPicture();
         inspect();
@@ -1018,8 +1031,9 @@ public final class SimpviewWindow {
         backFacesShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
-            pageView.show(depthView && facts.depths() != null ? DepthPicture.of(facts.depths(), facts.depthStart())
-                    : shown.image(), shown.error(), facts.drewSomething());
+            boolean depths = depthView && facts.depths() != null && !(shown.view() instanceof View.OfAssignment1Page);
+            pageView.show(depths ? DepthPicture.of(facts.depths(), facts.depthStart()) : shown.image(), shown.error(),
+                    facts.drewSomething());
         }
         legendStrip.clear();
         pageView.skipped(null, null);

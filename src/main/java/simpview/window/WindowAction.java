@@ -96,8 +96,9 @@ public enum WindowAction {
             + "it", "shift G"),
     COPY(Menu.INSTRUMENTS, "Copy", "copy the text selected in the inspector panel, else the status line's "
             + "inspector", "menu C"),
-    COPY_CHAIN(Menu.INSTRUMENTS, "Copy the pixel's include chain", "copy where the inspected pixel came from, "
-            + "file:line by file:line (each part is also a link in the panel: a click copies it)", "menu shift C"),
+    COPY_CHAIN(Menu.INSTRUMENTS, "Copy the pixel's include chain", "copy where the inspected pixel came from: "
+            + "with the inspector panel (I) open, file:line by file:line through the includes (each part is also a "
+            + "link in the panel: a click copies it); without it, its primitive's own file:line", "menu shift C"),
     STEP_ON(Menu.INSTRUMENTS, "Step on", "step the drawing one primitive on (A1: one more line or triangle of "
             + "every panel)", "CLOSE_BRACKET"),
     STEP_BACK(Menu.INSTRUMENTS, "Step back", "one primitive back", "OPEN_BRACKET"),

@@ -67,6 +67,14 @@ public class Assignment1WindowTest extends WindowTestCase {
         driver.awaitShown(new View.OfAssignment1Page(1));
         driver.press(KeyEvent.VK_4);
         driver.awaitShown(new View.OfAssignment1Page(4));
+        // D and K are a scene's: here they say so, and the page stays as drawn
+        driver.press(KeyEvent.VK_D);
+        driver.awaitEdt(() -> driver.window().status().messageText().startsWith(
+                "The first assignment's pages have no depths to show"), "D refused on a first-assignment page");
+        driver.press(KeyEvent.VK_K);
+        driver.awaitEdt(() -> driver.window().status().messageText().startsWith("Back faces are a scene's"),
+                "K refused on a first-assignment page");
+        assertEquals(0, driver.screenDiffersFrom(driver.onEdt(driver.window()::shown).image()), "the page on screen");
         // Back to the eight pages, where the window left them, and to the first assignment's where it left those.
         driver.press(KeyEvent.VK_A);
         driver.awaitShown(new View.OfPage(2));
