@@ -11,9 +11,10 @@ import java.util.List;
 /**
  * The key help (F1), drawn in a box over the whole window (its glass pane:
  * over the page and the inspector panel, the pointer's events passing
- * through): as many columns as the window's height needs, each row's keys,
- * then what they do, cut short with "…" only where the window is too narrow
- * for the whole text.
+ * through): in the fewest columns in which each row's keys, then what they
+ * do wrapped to the column's width, fit the window; in a window too small
+ * for that, as many columns as its height needs, the words cut short with
+ * "…".
  */
 public final class HelpOverlay extends javax.swing.JComponent {
 
@@ -40,13 +41,122 @@ public final class HelpOverlay extends javax.swing.JComponent {
     private static final Color HEADING = new Color(255, 220, 140);
     private static final Color KEYS = new Color(160, 200, 255);
     private static final int PAD = 10;
-    /** The widest a column's "does" text is drawn before it is cut. */
+    /** The widest a column's "does" text is drawn: wrapped beyond it, or cut when the window is too small. */
     private static final int DOES_WIDTH = 440;
+    /** The narrowest a column's "does" text is wrapped to; narrower, it is cut instead. */
+    private static final int MIN_DOES_WIDTH = 160;
 
     static void paint(Graphics2D g, int width, int height) {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setFont(FONT);
         FontMetrics metrics = g.getFontMetrics();
+        if (!paintWrapped(g, metrics, width, height)) {
+            paintCut(g, metrics, width, height);
+        }
+    }
+
+    /**
+     * The rows in the fewest columns (up to four) in which each row's words,
+     * wrapped to the column's width, fit the window's height; false when
+     * none does (a small window), with nothing drawn.
+     */
+    private static boolean paintWrapped(Graphics2D g, FontMetrics metrics, int width, int height) {
+        int line = metrics.getHeight();
+        List<KeyHelp.Row> rows = KeyHelp.ROWS;
+        int keys = 0;
+        for (KeyHelp.Row row : rows) {
+            keys = row.heading() ? keys : Math.max(keys, metrics.stringWidth(row.input()));
+        }
+        int room = Math.max(1, (height - 3 * PAD) / line - 1);
+        for (int columns = 1; columns <= 4; columns++) {
+            int doesRoom = Math.min(DOES_WIDTH, (width - PAD - columns * (keys + 3 * PAD)) / columns);
+            if (doesRoom < MIN_DOES_WIDTH) {
+                return false;
+            }
+            List<List<String>> wrapped = new ArrayList<>();
+            for (KeyHelp.Row row : rows) {
+                wrapped.add(row.heading() ? List.of(row.does()) : wrap(row.does(), metrics, doesRoom));
+            }
+            // rows in order, a column full when the next row's lines would pass the bottom
+            List<Integer> starts = new ArrayList<>(List.of(0));
+            int used = 0;
+            int tallest = 0;
+            for (int r = 0; r < rows.size(); r++) {
+                int lines = wrapped.get(r).size();
+                if (used > 0 && used + lines > room) {
+                    starts.add(r);
+                    used = 0;
+                }
+                used += lines;
+                tallest = Math.max(tallest, used);
+            }
+            if (starts.size() > columns || tallest > room) {
+                continue;
+            }
+            int boxWidth = Math.min(width, PAD + starts.size() * (keys + 3 * PAD + doesRoom));
+            int boxHeight = Math.min(height, (tallest + 1) * line + 2 * PAD);
+            int left = Math.max(0, (width - boxWidth) / 2);
+            int top = Math.max(0, (height - boxHeight) / 2);
+            box(g, metrics, left, top, boxWidth, boxHeight, HEADING_TEXT);
+            starts.add(rows.size());
+            for (int c = 0; c + 1 < starts.size(); c++) {
+                int x = left + PAD + c * (keys + 3 * PAD + doesRoom);
+                int baseline = top + PAD + metrics.getAscent();
+                for (int r = starts.get(c); r < starts.get(c + 1); r++) {
+                    KeyHelp.Row row = rows.get(r);
+                    baseline += line;
+                    if (row.heading()) {
+                        g.setColor(HEADING);
+                        g.drawString(row.does(), x, baseline);
+                        continue;
+                    }
+                    g.setColor(KEYS);
+                    g.drawString(row.input(), x, baseline);
+                    g.setColor(Color.WHITE);
+                    List<String> words = wrapped.get(r);
+                    for (int k = 0; k < words.size(); k++) {
+                        g.drawString(words.get(k), x + keys + PAD, baseline);
+                        baseline += k + 1 < words.size() ? line : 0;
+                    }
+                }
+            }
+            return true;
+        }
+        return false;
+    }
+
+    private static final String HEADING_TEXT = "simpview — keys, menus and gestures (F1 hides this)";
+
+    /** The help's box and its heading. */
+    private static void box(Graphics2D g, FontMetrics metrics, int left, int top, int width, int height,
+            String heading) {
+        g.setColor(BOX);
+        g.fillRect(left, top, width, height);
+        g.setColor(HEADING);
+        g.drawString(heading, left + PAD, top + PAD + metrics.getAscent());
+    }
+
+    /** {@code text} in lines of at most {@code room} pixels, broken between words (a word wider than that alone). */
+    static List<String> wrap(String text, FontMetrics metrics, int room) {
+        List<String> lines = new ArrayList<>();
+        StringBuilder current = new StringBuilder();
+        for (String word : text.split(" ")) {
+            String longer = current.length() == 0 ? word : current + " " + word;
+            if (current.length() > 0 && metrics.stringWidth(longer) > room) {
+                lines.add(current.toString());
+                current.setLength(0);
+                current.append(word);
+            } else {
+                current.setLength(0);
+                current.append(longer);
+            }
+        }
+        lines.add(current.toString());
+        return lines;
+    }
+
+    /** A window too small for the words wrapped: as many columns as its height needs, the words cut with "…". */
+    private static void paintCut(Graphics2D g, FontMetrics metrics, int width, int height) {
         int line = metrics.getHeight();
         List<KeyHelp.Row> rows = KeyHelp.ROWS;
         int perColumn = Math.max(1, (height - 3 * PAD) / line - 1);
@@ -69,6 +179,10 @@ public final class HelpOverlay extends javax.swing.JComponent {
         }
         // What is left of the width goes to the words, evenly; a narrow window cuts them (the keys stay whole).
         int doesRoom = Math.max(80, Math.min(DOES_WIDTH, (width - PAD - inputs) / columns));
+        boolean cutShort = false;
+        for (KeyHelp.Row row : rows) {
+            cutShort |= !row.heading() && metrics.stringWidth(row.does()) > doesRoom;
+        }
         int boxWidth = PAD;
         for (int c = 0; c < columns; c++) {
             for (KeyHelp.Row row : split.get(c)) {
@@ -80,10 +194,8 @@ public final class HelpOverlay extends javax.swing.JComponent {
         int boxHeight = Math.min(height, (perColumn + 1) * line + 2 * PAD);
         int left = Math.max(0, (width - boxWidth) / 2);
         int top = Math.max(0, (height - boxHeight) / 2);
-        g.setColor(BOX);
-        g.fillRect(left, top, boxWidth, boxHeight);
-        g.setColor(HEADING);
-        g.drawString("simpview — keys, menus and gestures (F1 hides this)", left + PAD, top + PAD + metrics.getAscent());
+        box(g, metrics, left, top, boxWidth, boxHeight, cutShort
+                ? HEADING_TEXT + " · cut short: a larger window shows it whole" : HEADING_TEXT);
         int x = left + PAD;
         for (int c = 0; c < columns; c++) {
             int baseline = top + PAD + metrics.getAscent();
