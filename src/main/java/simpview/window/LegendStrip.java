@@ -20,6 +20,8 @@ final class LegendStrip extends JComponent {
 
     private static final long serialVersionUID = 1L;
     private static final Font FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
+    /** What the legend is drawn in when the menu bar leaves it less room than it wants. */
+    private static final Font SMALL = FONT.deriveFont(10f);
     private static final int PAD = 4;
 
     /** The legends shown, by the overlay that shows each, in the order they came. */
@@ -39,6 +41,8 @@ final class LegendStrip extends JComponent {
             legends.put(of, shown);
         }
         setVisible(!legends.isEmpty());
+        // however little room the menu bar leaves it, the whole legend shows on hovering
+        setToolTipText(legends.isEmpty() ? null : words());
         revalidate();
         repaint();
     }
@@ -46,6 +50,7 @@ final class LegendStrip extends JComponent {
     /** Takes every legend away. */
     void clear() {
         legends.clear();
+        setToolTipText(null);
         setVisible(false);
         revalidate();
         repaint();
@@ -67,9 +72,24 @@ final class LegendStrip extends JComponent {
         return text.toString();
     }
 
+    /** The legends in words alone: "heat map: same, only 1 px off, ...". */
+    private String words() {
+        StringBuilder words = new StringBuilder();
+        for (Legend legend : legends.values()) {
+            words.append(words.length() == 0 ? "" : " | ").append(legend.title()).append(": ");
+            words.append(String.join(", ", legend.entries().stream().map(Legend.Entry::means).toList()));
+        }
+        return words.toString();
+    }
+
     @Override
     public Dimension getPreferredSize() {
-        FontMetrics metrics = getFontMetrics(FONT);
+        return size(FONT);
+    }
+
+    /** The room the legends want in {@code font}: as high as the font's line, so that the menu bar keeps its height. */
+    private Dimension size(Font font) {
+        FontMetrics metrics = getFontMetrics(font);
         int width = 2 * PAD;
         for (Legend legend : legends.values()) {
             int swatch = metrics.getAscent();
@@ -78,7 +98,7 @@ final class LegendStrip extends JComponent {
                 width += swatch + PAD + metrics.stringWidth(entry.means()) + 3 * PAD;
             }
         }
-        return new Dimension(width, metrics.getHeight() + 2 * PAD);
+        return new Dimension(width, metrics.getHeight());
     }
 
     @Override
@@ -96,26 +116,32 @@ final class LegendStrip extends JComponent {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             g.setColor(new Color(32, 32, 48));
             g.fillRect(0, 0, getWidth(), getHeight());
-            g.setFont(FONT);
+            // the room to the menu bar's end, which may be less than the strip was laid out with
+            int room = getParent() == null ? getWidth() : Math.min(getWidth(), getParent().getWidth() - getX());
+            boolean small = size(FONT).width > room;
+            boolean titled = !small || size(SMALL).width <= room;
+            g.setFont(small ? SMALL : FONT);
             FontMetrics metrics = g.getFontMetrics();
             int baseline = (getHeight() - metrics.getHeight()) / 2 + metrics.getAscent();
             int swatch = metrics.getAscent();
             int swatchTop = baseline - swatch + 1;
             int x = PAD;
             for (Legend legend : legends.values()) {
-            g.setColor(Color.WHITE);
-            g.drawString(legend.title() + ":", x, baseline);
-            x += metrics.stringWidth(legend.title() + ":") + 2 * PAD;
-            for (Legend.Entry entry : legend.entries()) {
-                g.setColor(new Color(entry.rgb()));
-                g.fillRect(x, swatchTop, swatch, swatch);
-                g.setColor(Color.GRAY);
-                g.drawRect(x, swatchTop, swatch, swatch);
-                x += swatch + PAD;
-                g.setColor(Color.WHITE);
-                g.drawString(entry.means(), x, baseline);
-                x += metrics.stringWidth(entry.means()) + 3 * PAD;
-            }
+                if (titled) {
+                    g.setColor(Color.WHITE);
+                    g.drawString(legend.title() + ":", x, baseline);
+                    x += metrics.stringWidth(legend.title() + ":") + 2 * PAD;
+                }
+                for (Legend.Entry entry : legend.entries()) {
+                    g.setColor(new Color(entry.rgb()));
+                    g.fillRect(x, swatchTop, swatch, swatch);
+                    g.setColor(Color.GRAY);
+                    g.drawRect(x, swatchTop, swatch, swatch);
+                    x += swatch + PAD;
+                    g.setColor(Color.WHITE);
+                    g.drawString(entry.means(), x, baseline);
+                    x += metrics.stringWidth(entry.means()) + 3 * PAD;
+                }
             }
         } finally {
             g.dispose();
