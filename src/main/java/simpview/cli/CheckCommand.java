@@ -129,7 +129,8 @@ public final class CheckCommand implements Callable<Integer> {
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
-                    CompareBatch.DiffImages.FAILING, new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
+                    CompareBatch.DiffImages.FAILING,
+                    new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }

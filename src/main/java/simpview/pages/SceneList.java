@@ -98,7 +98,8 @@ public final class SceneList {
             String name = pictureName(scene);
             Path folder = scene.toAbsolutePath().normalize().getParent();
             boolean shared = named.get(name.toLowerCase(Locale.ROOT)) > 1;
-            names.add(shared && folder != null && folder.getFileName() != null ? folder.getFileName() + "-" + name : name);
+            boolean byFolder = shared && folder != null && folder.getFileName() != null;
+            names.add(byFolder ? folder.getFileName() + "-" + name : name);
         }
         return names;
     }
