@@ -103,21 +103,7 @@ public final class HelpOverlay extends javax.swing.JComponent {
                 int x = left + PAD + c * (keys + 3 * PAD + doesRoom);
                 int baseline = top + PAD + metrics.getAscent();
                 for (int r = starts.get(c); r < starts.get(c + 1); r++) {
-                    KeyHelp.Row row = rows.get(r);
-                    baseline += line;
-                    if (row.heading()) {
-                        g.setColor(HEADING);
-                        g.drawString(row.does(), x, baseline);
-                        continue;
-                    }
-                    g.setColor(KEYS);
-                    g.drawString(row.input(), x, baseline);
-                    g.setColor(Color.WHITE);
-                    List<String> words = wrapped.get(r);
-                    for (int k = 0; k < words.size(); k++) {
-                        g.drawString(words.get(k), x + keys + PAD, baseline);
-                        baseline += k + 1 < words.size() ? line : 0;
-                    }
+                    baseline = row(g, rows.get(r), wrapped.get(r), x, x + keys + PAD, baseline + line, line);
                 }
             }
             return true;
@@ -126,6 +112,29 @@ public final class HelpOverlay extends javax.swing.JComponent {
     }
 
     private static final String HEADING_TEXT = "simpview — keys, menus and gestures (F1 hides this)";
+
+    /**
+     * One row from {@code baseline} down: a heading, or its keys at {@code x}
+     * and the lines of what they do at {@code wordsX}; returns the baseline
+     * of its last line.
+     */
+    private static int row(Graphics2D g, KeyHelp.Row row, List<String> words, int x, int wordsX, int baseline,
+            int line) {
+        if (row.heading()) {
+            g.setColor(HEADING);
+            g.drawString(row.does(), x, baseline);
+            return baseline;
+        }
+        g.setColor(KEYS);
+        g.drawString(row.input(), x, baseline);
+        g.setColor(Color.WHITE);
+        int at = baseline;
+        for (int k = 0; k < words.size(); k++) {
+            g.drawString(words.get(k), wordsX, at);
+            at += k + 1 < words.size() ? line : 0;
+        }
+        return at;
+    }
 
     /** The help's box and its heading. */
     private static void box(Graphics2D g, FontMetrics metrics, int left, int top, int width, int height,
@@ -200,16 +209,8 @@ public final class HelpOverlay extends javax.swing.JComponent {
         for (int c = 0; c < columns; c++) {
             int baseline = top + PAD + metrics.getAscent();
             for (KeyHelp.Row row : split.get(c)) {
-                baseline += line;
-                if (row.heading()) {
-                    g.setColor(HEADING);
-                    g.drawString(row.does(), x, baseline);
-                    continue;
-                }
-                g.setColor(KEYS);
-                g.drawString(row.input(), x, baseline);
-                g.setColor(Color.WHITE);
-                g.drawString(cut(row.does(), metrics, doesRoom), x + inputWidths[c] + PAD, baseline);
+                baseline = row(g, row, List.of(cut(row.does(), metrics, doesRoom)), x, x + inputWidths[c] + PAD,
+                        baseline + line, line);
             }
             x += inputWidths[c] + doesWidths[c] + 3 * PAD;
         }
