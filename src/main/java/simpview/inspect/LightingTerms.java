@@ -19,11 +19,17 @@ final class LightingTerms {
 
     /** Puts P, N, kd, V, the ambient term, every light's terms and their sum into {@code terms}; returns the sum. */
     static double[] explain(LitState state, double[] point, double[] normal, double[] kd, Terms terms) {
+        return explain(state, point, normal, "N_interpolated", kd, terms);
+    }
+
+    /** The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed"). */
+    static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
+            Terms terms) {
         double[] n = unit(normal);
         boolean perspective = state.camera().isPerspective();
         double[] v = perspective ? unit(new double[] {-point[0], -point[1], -point[2]}) : new double[] {0, 0, 1};
         terms.put("P", point);
-        terms.put("N_interpolated", normal);
+        terms.put(normalName, normal);
         terms.put("N_length", length(normal));
         terms.put("N", n);
         terms.put("kd", kd);

@@ -63,6 +63,15 @@ final class LitExplainer implements PixelWatch.Explainer {
                 terms.put("kd", lit.clone());
             } else if (state.shading() == LitState.ShadingMode.FLAT) {
                 terms.put("shading", "flat");
+                double[] once = watch.litOnce();
+                if (once != null) {
+                    terms.put("lit_at", "the polygon's centroid, once, with the mean of its vertices' kd and the sum "
+                            + "of their own unit normals (the face normal when some vertex has none): SPEC Part 2");
+                    double[] sum = LightingTerms.explain(state, new double[] {once[0], once[1], once[2]},
+                            new double[] {once[3], once[4], once[5]}, "N_summed",
+                            new double[] {once[6], once[7], once[8]}, terms);
+                    terms.put("clamped", clamp(sum));
+                }
                 terms.put("centroid_colour", lit.clone());
             } else {
                 terms.put("shading", "gouraud");

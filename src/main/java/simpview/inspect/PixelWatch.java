@@ -52,6 +52,8 @@ final class PixelWatch implements PrimitiveTrace {
     private double[] unclipped = new double[9 * 8];
     private int unclippedStride;
     private int unclippedCount;
+    /** What the flat polygon at hand was lit with: centroid, normal, mean kd; null when not flat. */
+    private double[] litOnce;
     private HistoryEntry cutAway;
 
     /** What a watch asks of the scene's kind of drawing. */
@@ -126,7 +128,18 @@ final class PixelWatch implements PrimitiveTrace {
     }
 
     @Override
+    public void litOnce(double[] once) {
+        litOnce = once.clone();
+    }
+
+    /** What the flat polygon at hand was lit with (PrimitiveTrace.litOnce), or null when it is not flat. */
+    double[] litOnce() {
+        return litOnce;
+    }
+
+    @Override
     public void unclipped(double[] p, int at, int numbers, int count) {
+        litOnce = null;
         if (unclipped.length < numbers * count) {
             unclipped = new double[2 * numbers * count];
         }

@@ -69,6 +69,8 @@ public final class LitGeometry implements GeometryStage {
     private boolean[] ownNormal = new boolean[8];
     private double[] screen = new double[(FragmentLayout.stride(FragmentLayout.PHONG_CHANNELS)) * 16];
     private final double[] lit = new double[3];
+    /** What the last flat polygon was lit with: centroid, normal, mean kd (for a trace: PrimitiveTrace.litOnce). */
+    private final double[] litOnce = new double[9];
     /** An obj face's vertices as written, for a trace that wants them. */
     private double[] written = new double[3 * 8];
     /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
@@ -220,6 +222,9 @@ public final class LitGeometry implements GeometryStage {
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
+            if (!wire && state.shading() == LitState.ShadingMode.FLAT) {
+                trace.litOnce(litOnce);
+            }
         }
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
@@ -336,6 +341,18 @@ public final class LitGeometry implements GeometryStage {
             nz = faceNz;
         }
         state.shade(px / n, py / n, pz / n, nx, ny, nz, kr / n, kg / n, kb / n, lit);
+        if (trace != null) {
+            double[] once = litOnce;
+            once[0] = px / n;
+            once[1] = py / n;
+            once[2] = pz / n;
+            once[3] = nx;
+            once[4] = ny;
+            once[5] = nz;
+            once[6] = kr / n;
+            once[7] = kg / n;
+            once[8] = kb / n;
+        }
         for (int k = 0; k < n; k++) {
             int o = k * CAMERA_STRIDE;
             cam[o + CR] = lit[0];

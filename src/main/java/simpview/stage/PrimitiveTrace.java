@@ -71,6 +71,16 @@ public interface PrimitiveTrace {
     }
 
     /**
+     * The filled polygon just told by {@link #unclipped} is flat shaded: it
+     * was lit once, at {@code once}[0..2] (its vertices' centroid, camera
+     * space), with the normal {@code once}[3..5] (the sum of its vertices'
+     * own unit normals, or its face normal; not made unit) and kd
+     * {@code once}[6..8] (its vertices' mean); read, never kept.
+     */
+    default void litOnce(double[] once) {
+    }
+
+    /**
      * The scene is drawn again from the start (it turned out lit after it
      * had drawn depth-cued): forget every primitive told so far; numbering
      * starts at 0 again.

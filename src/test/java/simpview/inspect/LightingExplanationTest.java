@@ -190,6 +190,12 @@ class LightingExplanationTest {
         assertEquals("flat", t.get("shading"));
         assertArrayEquals(expected, t.vector("centroid_colour"), EPS);
         fogAndBytes(t, report, expected, "pixel (325, 325)");
+        // worked out term by term where it was lit: at the centroid, with the face normal and kd
+        assertArrayEquals(centroid, t.vector("P"), EPS);
+        assertArrayEquals(unit(faceNormal()), t.vector("N"), EPS);
+        assertArrayEquals(KD, t.vector("kd"), EPS);
+        assertArrayEquals(light(centroid, unit(faceNormal())), t.vector("sum"), EPS, "unclamped");
+        assertArrayEquals(expected, t.vector("clamped"), EPS);
     }
 
     @Test
