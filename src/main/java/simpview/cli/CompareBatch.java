@@ -12,7 +12,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
@@ -98,34 +97,42 @@ public final class CompareBatch {
          * is known to stop them.
          */
         String problem() {
-            Map<Path, String> files = new LinkedHashMap<>();
-            if (outDir != null) {
-                String by = outDirOption() + " " + outDir;
-                files.put(outDir.resolve(TABLE), by);
-                files.put(outDir.resolve(CSV), by);
-            }
-            if (html != null) {
-                files.put(html.resolve(HtmlReport.INDEX), "--html " + html);
-            }
-            if (gradescope != null) {
-                files.put(gradescope, "--gradescope " + gradescope);
-            }
-            if (junit != null) {
-                files.put(junit, "--junit " + junit);
-            }
-            for (Map.Entry<Path, String> file : files.entrySet()) {
-                String why = OutputFiles.fileProblem(file.getKey());
+            for (Report report : reports()) {
+                String why = OutputFiles.fileProblem(report.file());
                 if (why != null) {
-                    return file.getValue() + ": " + why;
+                    return report.option() + " " + report.given() + ": " + why;
                 }
             }
             return null;
+        }
+
+        /** Every table and report file the batch writes (not its diff images), in the order it writes them. */
+        List<Report> reports() {
+            List<Report> reports = new ArrayList<>();
+            if (outDir != null) {
+                reports.add(new Report(outDir.resolve(TABLE), outDirOption(), outDir));
+                reports.add(new Report(outDir.resolve(CSV), outDirOption(), outDir));
+            }
+            if (gradescope != null) {
+                reports.add(new Report(gradescope, "--gradescope", gradescope));
+            }
+            if (junit != null) {
+                reports.add(new Report(junit, "--junit", junit));
+            }
+            if (html != null) {
+                reports.add(new Report(html.resolve(HtmlReport.INDEX), "--html", html));
+            }
+            return reports;
         }
 
         /** The option that names the folder of the tables and diff images: --out-dir, or --html without it. */
         String outDirOption() {
             return outDir != null && outDir.equals(html) ? "--html" : "--out-dir";
         }
+    }
+
+    /** A file the batch writes, the option that names it and what was given with that option (a file or its folder). */
+    record Report(Path file, String option, Path given) {
     }
 
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
@@ -317,15 +324,11 @@ public final class CompareBatch {
                 // said when the alternates are read
             }
         }
+        for (Report report : outputs.reports()) {
+            files.writes(report.file(), report.option());
+        }
         Path outDir = outputs.outDir();
         String tables = outputs.outDirOption();
-        if (outDir != null) {
-            files.writes(outDir.resolve(TABLE), tables).writes(outDir.resolve(CSV), tables);
-        }
-        files.writes(outputs.gradescope(), "--gradescope").writes(outputs.junit(), "--junit");
-        if (outputs.html() != null) {
-            files.writes(outputs.html().resolve(HtmlReport.INDEX), "--html");
-        }
         if (outDir != null && outputs.diffs() != DiffImages.NONE) {
             for (Path picture : pictures) {
                 String relative = dir.relativize(picture).toString();
