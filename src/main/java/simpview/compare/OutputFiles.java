@@ -91,10 +91,7 @@ public final class OutputFiles {
 
     /** Why files could not be written into {@code folder} (made when missing), or null: as {@link #fileProblem}. */
     public static String folderProblem(Path folder) {
-        Path existing = folder.toAbsolutePath().normalize();
-        while (existing != null && !Files.exists(existing)) {
-            existing = existing.getParent();
-        }
+        Path existing = nearestExisting(folder.toAbsolutePath().normalize());
         if (existing == null) {
             return null;
         }
@@ -111,10 +108,7 @@ public final class OutputFiles {
      */
     public static Path identity(Path file) {
         Path absolute = file.toAbsolutePath().normalize();
-        Path existing = absolute;
-        while (existing != null && !Files.exists(existing)) {
-            existing = existing.getParent();
-        }
+        Path existing = nearestExisting(absolute);
         if (existing == null) {
             return absolute;
         }
@@ -123,6 +117,15 @@ public final class OutputFiles {
         } catch (IOException e) {
             return absolute;
         }
+    }
+
+    /** {@code absolute} itself if it exists, else its nearest folder above that does; null when none does. */
+    private static Path nearestExisting(Path absolute) {
+        Path existing = absolute;
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        return existing;
     }
 
     /**
