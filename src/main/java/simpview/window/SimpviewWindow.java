@@ -807,6 +807,7 @@ public final class SimpviewWindow {
     /** Copies the include chain of the inspected pixel's owner, whole paths (Ctrl+Shift+C). */
     private void copyChain() {
         String chain = inspectorPanel.isShown() ? inspectorPanel.ownerChainText() : "";
+        String note = "";
         if (chain.isEmpty()) {
             int x = pinnedX >= 0 ? pinnedX : hoverX;
             int y = pinnedX >= 0 ? pinnedY : hoverY;
@@ -816,12 +817,10 @@ public final class SimpviewWindow {
                 return;
             }
             chain = line.substring(line.indexOf("drawn by primitive"));
-            Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
-            status.say("Copied: " + chain + " (with the panel open, I, the copy is the whole include chain)");
-            return;
+            note = " (with the panel open, I, the copy is the whole include chain)";
         }
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
-        status.say("Copied: " + chain);
+        status.say("Copied: " + chain + note);
     }
 
     /** Where the compare dialog opens: the shown scene's folder, else the course's pages' folder. */
