@@ -340,18 +340,24 @@ public final class LitGeometry implements GeometryStage {
             ny = faceNy;
             nz = faceNz;
         }
-        state.shade(px / n, py / n, pz / n, nx, ny, nz, kr / n, kg / n, kb / n, lit);
+        double cx = px / n;
+        double cy = py / n;
+        double cz = pz / n;
+        double meanR = kr / n;
+        double meanG = kg / n;
+        double meanB = kb / n;
+        state.shade(cx, cy, cz, nx, ny, nz, meanR, meanG, meanB, lit);
         if (trace != null) {
             double[] once = litOnce;
-            once[0] = px / n;
-            once[1] = py / n;
-            once[2] = pz / n;
+            once[0] = cx;
+            once[1] = cy;
+            once[2] = cz;
             once[3] = nx;
             once[4] = ny;
             once[5] = nz;
-            once[6] = kr / n;
-            once[7] = kg / n;
-            once[8] = kb / n;
+            once[6] = meanR;
+            once[7] = meanG;
+            once[8] = meanB;
         }
         for (int k = 0; k < n; k++) {
             int o = k * CAMERA_STRIDE;
