@@ -75,7 +75,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                 terms.put("centroid_colour", lit.clone());
             } else {
                 terms.put("shading", "gouraud");
-                gouraud(watch, terms);
+                gouraud(watch, state, terms);
                 terms.put("interpolated", lit.clone());
             }
         }
@@ -109,9 +109,11 @@ final class LitExplainer implements PixelWatch.Explainer {
      * same distances and crossings, so the same clipped vertices). Where the
      * polygon was cut, the fan piece is shown too. The colour the drawing
      * interpolated ("interpolated") is what the bytes come from; the weighted
-     * sum of the vertex colours is shown beside it ("weighted"), equal up to rounding.
+     * sum of the vertex colours is shown beside it ("weighted"), equal up to
+     * rounding. Each vertex's colour is explained term by term where the
+     * trace was told the kd it was lit with ({@link PixelWatch#litEach}).
      */
-    private static void gouraud(PixelWatch watch, Terms terms) {
+    private static void gouraud(PixelWatch watch, LitState state, Terms terms) {
         double[] o = watch.outline();
         int s = watch.stride();
         int n = watch.vertices();
@@ -155,6 +157,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                     u[k] += w[j] * rows[v[j]][k];
                 }
             }
+            double[] kd = watch.litEach();
             List<Terms> vertices = new ArrayList<>();
             for (int k = 0; k < m; k++) {
                 int at = k * ps;
@@ -162,7 +165,16 @@ final class LitExplainer implements PixelWatch.Explainer {
                 for (int j = 0; j < 3; j++) {
                     weighted[j] += u[k] * c[j];
                 }
-                vertices.add(new Terms().put("vertex", k).put("camera", p[at], p[at + 1], p[at + 2]).put("colour", c));
+                Terms vertex = new Terms().put("vertex", k).put("camera", p[at], p[at + 1], p[at + 2]);
+                if (kd != null && kd.length >= 3 * m) {
+                    Terms lighting = new Terms();
+                    double[] sum = LightingTerms.explain(state, new double[] {p[at], p[at + 1], p[at + 2]},
+                            new double[] {p[at + 6], p[at + 7], p[at + 8]}, "N_vertex",
+                            new double[] {kd[3 * k], kd[3 * k + 1], kd[3 * k + 2]}, lighting);
+                    lighting.put("clamped", clamp(sum));
+                    vertex.put("lighting", lighting);
+                }
+                vertices.add(vertex.put("colour", c));
             }
             terms.put("lit_at", "each vertex of the polygon, before clipping (SPEC Part 2)");
             terms.put("vertex_colours", vertices);

@@ -54,6 +54,8 @@ final class PixelWatch implements PrimitiveTrace {
     private int unclippedCount;
     /** What the flat polygon at hand was lit with: centroid, normal, mean kd; null when not flat. */
     private double[] litOnce;
+    /** The kd each vertex of the gouraud polygon at hand was lit with, 3 a vertex; null when not gouraud. */
+    private double[] litEach;
     private HistoryEntry cutAway;
 
     /** What a watch asks of the scene's kind of drawing. */
@@ -138,8 +140,19 @@ final class PixelWatch implements PrimitiveTrace {
     }
 
     @Override
+    public void litEach(double[] kd, int count) {
+        litEach = Arrays.copyOf(kd, 3 * count);
+    }
+
+    /** The kd each vertex of the gouraud polygon at hand was lit with (PrimitiveTrace.litEach), or null. */
+    double[] litEach() {
+        return litEach;
+    }
+
+    @Override
     public void unclipped(double[] p, int at, int numbers, int count) {
         litOnce = null;
+        litEach = null;
         if (unclipped.length < numbers * count) {
             unclipped = new double[2 * numbers * count];
         }

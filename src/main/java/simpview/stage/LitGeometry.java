@@ -71,6 +71,8 @@ public final class LitGeometry implements GeometryStage {
     private final double[] lit = new double[3];
     /** What the last flat polygon was lit with: centroid, normal, mean kd (for a trace: PrimitiveTrace.litOnce). */
     private final double[] litOnce = new double[9];
+    /** The kd each vertex of the last gouraud polygon was lit with, 3 a vertex (for a trace: PrimitiveTrace.litEach). */
+    private double[] litEach = new double[3 * 8];
     /** An obj face's vertices as written, for a trace that wants them. */
     private double[] written = new double[3 * 8];
     /** The unit face normal of the polygon at hand (zero when it has none), from step 3. */
@@ -224,6 +226,8 @@ public final class LitGeometry implements GeometryStage {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
             if (!wire && state.shading() == LitState.ShadingMode.FLAT) {
                 trace.litOnce(litOnce);
+            } else if (!wire && state.shading() == LitState.ShadingMode.GOURAUD) {
+                trace.litEach(litEach, n);
             }
         }
         int kept = clipper.clipPolygon(camera, cam, 0, n);
@@ -285,8 +289,16 @@ public final class LitGeometry implements GeometryStage {
                 return FragmentLayout.COLOUR_CHANNELS;
             }
             case GOURAUD -> {
+                if (trace != null && litEach.length < 3 * n) {
+                    litEach = new double[6 * n];
+                }
                 for (int k = 0; k < n; k++) {
                     int o = k * CAMERA_STRIDE;
+                    if (trace != null) {
+                        litEach[3 * k] = cam[o + CR];
+                        litEach[3 * k + 1] = cam[o + CG];
+                        litEach[3 * k + 2] = cam[o + CB];
+                    }
                     state.shade(cam[o + CX], cam[o + CY], cam[o + CZ], cam[o + CNX], cam[o + CNY], cam[o + CNZ],
                             cam[o + CR], cam[o + CG], cam[o + CB], lit);
                     cam[o + CR] = lit[0];

@@ -81,6 +81,15 @@ public interface PrimitiveTrace {
     }
 
     /**
+     * The filled polygon just told by {@link #unclipped} is gouraud shaded:
+     * each of its {@code vertices} was lit at its own position with its own
+     * unit normal (both as told there) and kd {@code kd}[3k..3k+2] for vertex
+     * k, the kd that its lit colour replaced; read, never kept.
+     */
+    default void litEach(double[] kd, int vertices) {
+    }
+
+    /**
      * The scene is drawn again from the start (it turned out lit after it
      * had drawn depth-cued): forget every primitive told so far; numbering
      * starts at 0 again.

@@ -14,7 +14,8 @@ import org.junit.jupiter.api.io.TempDir;
  * The explanation's terms against SPEC's formula computed here, in plain
  * steps that share no code with simpview's lighting: per light L, d, f,
  * N . L, R, V . R, (V . R)^p and the diffuse and specular parts, the sum,
- * the clamp, the fog and the bytes; gouraud's lit vertex colours and weights;
+ * the clamp, the fog and the bytes; gouraud's lit vertex colours, each
+ * worked out term by term, and weights;
  * flat's centroid colour. Within 1e-9; the bytes exactly.
  */
 class LightingExplanationTest {
@@ -163,6 +164,14 @@ class LightingExplanationTest {
                 for (int k = 0; k < 3; k++) {
                     int index = (int) vertices.get(k).number("vertex");
                     assertArrayEquals(lit[index], vertices.get(k).vector("colour"), EPS, where + ": vertex " + index);
+                    // each vertex's colour worked out term by term where it was lit
+                    Terms lighting = vertices.get(k).terms("lighting");
+                    assertArrayEquals(TRIANGLE[index], lighting.vector("P"), EPS, where + ": P of vertex " + index);
+                    assertArrayEquals(unit(faceNormal()), lighting.vector("N"), EPS, where + ": N of vertex " + index);
+                    assertArrayEquals(KD, lighting.vector("kd"), EPS, where + ": kd of vertex " + index);
+                    assertArrayEquals(light(TRIANGLE[index], unit(faceNormal())), lighting.vector("sum"), EPS,
+                            where + ": unclamped sum of vertex " + index);
+                    assertArrayEquals(lit[index], lighting.vector("clamped"), EPS, where + ": clamp of vertex " + index);
                     for (int c = 0; c < 3; c++) {
                         mixed[c] += w[k] * lit[index][c];
                     }
