@@ -105,7 +105,7 @@ public final class PixelReport {
      */
     public Terms vertices(int primitive) {
         PrimitiveSource s = sources.apply(primitive);
-        return s == null ? null : VertexTable.of(s);
+        return s == null ? null : VertexTable.of(s, x, y);
     }
 
     /** "page7.simp:6 › cubeline.simp:12 › cube.simp:7 polygon (...)". */

@@ -234,8 +234,13 @@ final class PixelWatch implements PrimitiveTrace {
     /** The primitive at hand as written, kept (once) under its number. */
     private void keepSource() {
         if (sourceCtm != null && !sources.containsKey(primitive)) {
+            double[] drawn = new double[2 * vertices];
+            for (int k = 0; k < vertices; k++) {
+                drawn[2 * k] = outline[k * stride];
+                drawn[2 * k + 1] = outline[k * stride + 1];
+            }
             sources.put(primitive, new PrimitiveSource(primitive, kind, sourceCtm, worldToCamera.get(), camera.get(),
-                    lit, java.util.Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices));
+                    lit, Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices, drawn));
         }
     }
 

@@ -5,6 +5,7 @@ import java.util.List;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
+import simpview.raster.CentreTest;
 import simpview.stage.Painter;
 
 /**
@@ -13,7 +14,9 @@ import simpview.stage.Painter;
  * (panel coordinates with their fractions) and the pixel each rounds to; for
  * a lit scene the clipper's output (by the program's own {@link Clipper}) and
  * the planes that cut it; for a line, the DDA's start pixel, direction and
- * step count by SPEC's rule.
+ * step count by SPEC's rule; for a filled polygon, whether it covers the
+ * pixel's centre, by the rasterizer's own edge tests ({@link CentreTest}), and
+ * on an edge, which way the top-left rule took it.
  */
 final class VertexTable {
 
@@ -22,7 +25,8 @@ final class VertexTable {
     private VertexTable() {
     }
 
-    static Terms of(PrimitiveSource s) {
+    /** Primitive s's table, its coverage asked at pixel (x, y). */
+    static Terms of(PrimitiveSource s, int pixelX, int pixelY) {
         Terms t = new Terms();
         t.put("primitive", PixelReport.shown(s.primitive()));
         t.put("kind", s.kind() == Painter.LINE ? "line" : s.kind() == Painter.WIRE ? "wire polygon" : "filled polygon");
@@ -96,8 +100,82 @@ final class VertexTable {
             t.put("dda", dda(camera.panelX(ends[0], ends[2]), camera.panelY(ends[1], ends[2]),
                     camera.panelX(ends[3], ends[5]), camera.panelY(ends[4], ends[5])));
         }
+        if (s.kind() == Painter.FILLED && !culled && s.drawn() != null && s.drawn().length >= 6) {
+            t.put("centre", centre(s.drawn(), pixelX, pixelY));
+        }
         return t;
     }
+
+    /**
+     * Whether the outline the rasterizer was given (panel x and y of each
+     * vertex) covers the centre of pixel (x, y): fan triangle by fan triangle
+     * from its first vertex, as the rasterizers fill it, each edge asked by
+     * their own exact test; and in words why, naming the top-left rule when
+     * the centre is exactly on an edge.
+     */
+    static Terms centre(double[] drawn, int x, int y) {
+        double cx = x + 0.5;
+        double cy = y + 0.5;
+        int n = drawn.length / 2;
+        List<Terms> outline = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            outline.add(new Terms().put("vertex", k).put("panel", drawn[2 * k], drawn[2 * k + 1]));
+        }
+        List<Terms> fan = new ArrayList<>();
+        String why = null;
+        String tie = null;
+        boolean degenerate = true;
+        for (int i = 1; i + 1 < n; i++) {
+            int[] v = {0, i, i + 1};
+            int[] sides = CentreTest.sides(drawn[0], drawn[1], drawn[2 * i], drawn[2 * i + 1], drawn[2 * i + 2],
+                    drawn[2 * i + 3], cx, cy);
+            Terms triangle = new Terms().put("vertices", v);
+            if (sides == null) {
+                fan.add(triangle.put("covers", false).put("why", "no area: it draws nothing"));
+                continue;
+            }
+            degenerate = false;
+            boolean covers = CentreTest.covered(sides);
+            List<Terms> edges = new ArrayList<>();
+            String onOut = null;
+            String onIn = null;
+            boolean outside = false;
+            for (int k = 0; k < 3; k++) {
+                String edge = v[k] + "-" + v[(k + 1) % 3];
+                edges.add(new Terms().put("edge", edge).put("centre", SIDE_WORDS[sides[k]]));
+                outside |= sides[k] == CentreTest.OUTSIDE;
+                if (sides[k] == CentreTest.ON_RIGHT_OR_BOTTOM) {
+                    onOut = edge;
+                } else if (sides[k] == CentreTest.ON_TOP_OR_LEFT) {
+                    onIn = edge;
+                }
+            }
+            triangle.put("edges", edges).put("covers", covers);
+            fan.add(triangle);
+            String name = n == 3 ? "the triangle" : "fan triangle " + v[0] + "-" + v[1] + "-" + v[2];
+            if (covers && why == null) {
+                why = onIn == null ? "the centre is inside " + name
+                        : "the centre is exactly on edge " + onIn + " of " + name + ", a top or left edge: the "
+                        + "top-left rule gives the pixel to this triangle, not to one sharing that edge";
+            } else if (!covers && !outside && tie == null) {
+                tie = "the centre is exactly on edge " + onOut + " of " + name + ", a right or bottom edge: "
+                        + "the top-left rule gives the pixel to the triangle on that edge's other side, if any";
+            }
+        }
+        boolean covered = why != null;
+        return new Terms().put("pixel_centre", cx, cy).put("covered", covered)
+                .put("why", covered ? why : degenerate ? "the outline has no area: it draws nothing"
+                        : tie != null ? tie : "the centre is outside the outline")
+                .put("outline", outline).put("fan", fan);
+    }
+
+    /** What each of {@link CentreTest}'s answers says, in its order. */
+    private static final String[] SIDE_WORDS = {
+        "inside",
+        "exactly on it, a top or left edge: in",
+        "exactly on it, a right or bottom edge: out (the top-left rule)",
+        "outside",
+    };
 
     /** Panel coordinates and the pixel they round to, or why there are none. */
     private static void project(Camera camera, double x, double y, double z, Terms v) {

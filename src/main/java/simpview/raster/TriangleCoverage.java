@@ -171,6 +171,25 @@ final class TriangleCoverage {
         return start < end;
     }
 
+    /**
+     * Where the point (px, py) lies against the edge from given vertex k to
+     * vertex k + 1 (mod 3) of the triangle last {@link #set}, by the same
+     * exact test the rows use: {@link CentreTest#INSIDE} or
+     * {@link CentreTest#OUTSIDE}, or on it, where the top-left rule decides.
+     */
+    int side(int k, double px, double py) {
+        // set() keeps the edges counter-clockwise: 1->2, 2->3, 3->1 as given, or, when clockwise, 1->3, 3->2, 2->1.
+        Edge e = clockwise ? edges[2 - k] : edges[k];
+        double f = e.f(e.rowTerm(py), px);
+        if (f > 0) {
+            return CentreTest.INSIDE;
+        }
+        if (f < 0) {
+            return CentreTest.OUTSIDE;
+        }
+        return e.topLeft ? CentreTest.ON_TOP_OR_LEFT : CentreTest.ON_RIGHT_OR_BOTTOM;
+    }
+
     private void setUpEdge(Edge e, double ax, double ay, double bx, double by) {
         e.set(ax, ay, bx, by);
         if (e.dy < 0) {
