@@ -135,6 +135,13 @@ final class InspectCommand implements Callable<Integer> {
             if (!report.drawn()) {
                 throw new UsageProblem(PageDrawing.cueColoursProblem(what.scene, report.litBecause(), false));
             }
+            if (primitive != null && report.vertices(wanted) == null && report.error() != null) {
+                // not a usage problem: the scene stops before the primitive asked for
+                err().println("--primitive " + primitive + ": the scene stops at an error before its primitive "
+                        + primitive + ":");
+                err().println(report.error().getMessage());
+                return ExitCode.SCENE_ERROR;
+            }
             if (primitive != null && report.vertices(wanted) == null) {
                 throw new UsageProblem("--primitive " + primitive + ": the scene has no primitive " + primitive
                         + " (they count from 1 in drawing order, as the window steps)");

@@ -102,6 +102,15 @@ class InspectCommandTest {
         assertEquals(ExitCode.USAGE_ERROR, none.exitCode(), none.out());
         assertTrue(none.err().startsWith("simpview: --primitive 3: the scene has no primitive 3"), none.err());
         assertEquals("", none.out());
+        // a scene that stops at an error before the primitive asked for says so, not that it has none
+        Path broken = write("broken.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "polygon (1, 2, 3) (4, 5, 6)\n");
+        CliRun stopped = CliRun.of("inspect", "--scene", broken.toString(), "--at", "325,300", "--vertices",
+                "--primitive", "2");
+        assertEquals(ExitCode.SCENE_ERROR, stopped.exitCode(), stopped.err());
+        assertTrue(stopped.err().startsWith("--primitive 2: the scene stops at an error before its primitive 2:"),
+                stopped.err());
+        assertTrue(stopped.err().contains("broken.simp:2:"), stopped.err());
         CliRun zero = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "0");
         assertEquals(ExitCode.USAGE_ERROR, zero.exitCode(), zero.err());
     }
