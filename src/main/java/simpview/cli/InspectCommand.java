@@ -74,10 +74,10 @@ final class InspectCommand implements Callable<Integer> {
     @Option(names = "--explain", description = "how the pixel's colour was made, term by term")
     private boolean explain;
 
-    @Option(names = "--vertices", description = "the vertices of the primitive that drew the pixel, through every space")
+    @Option(names = "--vertices", description = "the vertices of the primitive that drew the pixel, through every space; for a filled one, whether it covers the pixel's centre and why")
     private boolean vertices;
 
-    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner")
+    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner: why it did or did not cover the pixel (outside it, or on a shared edge the top-left rule gave to its neighbour)")
     private Integer primitive;
 
     @Option(names = "--json", description = "one JSON object instead of text")

@@ -108,6 +108,27 @@ public final class PixelReport {
         return s == null ? null : VertexTable.of(s, x, y);
     }
 
+    /**
+     * A depth-cued scene's culling planes as the sides of its view box
+     * (SPEC: -100 to 100 in x and y, z from 0 near to -200 far), not as a
+     * camera's planes: the scene has no camera and no eye.
+     */
+    private static String boxSides(int planes) {
+        List<String> sides = new java.util.ArrayList<>();
+        for (String plane : VertexTable.planeNames(planes)) {
+            sides.add(switch (plane) {
+                case "hither" -> "near side (z = 0)";
+                case "yon" -> "far side (z = -200)";
+                case "left" -> "left side (x = -100)";
+                case "right" -> "right side (x = 100)";
+                case "bottom" -> "bottom side (y = -100)";
+                case "top" -> "top side (y = 100)";
+                default -> plane;
+            });
+        }
+        return String.join(" and ", sides);
+    }
+
     /** "page7.simp:6 › cubeline.simp:12 › cube.simp:7 polygon (...)". */
     public String describe(HistoryEntry e) {
         return text.describe(e.chain());
@@ -136,8 +157,19 @@ public final class PixelReport {
         sb.append(owner == null ? "drawn by no primitive (background)\n"
                 : "drawn by primitive " + shown(owner.primitive()) + ": " + describe(owner) + "\n");
         if (withHistory) {
-            sb.append("history: ").append(history.size()).append(history.size() == 1 ? " write" : " writes")
-                    .append(" attempted, in drawing order\n");
+            int missed = 0;
+            for (HistoryEntry e : history) {
+                if (e.outcome() == Outcome.CULLED || e.outcome() == Outcome.CLIPPED) {
+                    missed++;
+                }
+            }
+            int attempted = history.size() - missed;
+            sb.append("history: ").append(attempted).append(attempted == 1 ? " write" : " writes").append(" attempted");
+            if (missed > 0) {
+                sb.append(", and ").append(missed).append(missed == 1 ? " primitive" : " primitives")
+                        .append(" culled or clipped that would have covered the pixel");
+            }
+            sb.append(", in drawing order\n");
             for (HistoryEntry e : history) {
                 sb.append("  ").append(e.primitive() == HistoryEntry.NO_NUMBER ? "-" : "#" + shown(e.primitive()))
                         .append(' ').append(describe(e)).append('\n');
@@ -155,6 +187,9 @@ public final class PixelReport {
                     }
                 } else if (e.outcome() == Outcome.SCISSORED) {
                     sb.append(": outside the view's depth range");
+                } else if (e.outcome() == Outcome.CULLED && !lit()) {
+                    sb.append(": every vertex beyond the view box's ").append(boxSides(e.planes()))
+                            .append("; seen straight down z, it covers the pixel");
                 } else if (e.outcome() == Outcome.CULLED) {
                     sb.append(": every vertex outside the ").append(VertexTable.planes(e.planes()))
                             .append(" plane; its part in front of the eye, projected, covers the pixel");

@@ -23,6 +23,7 @@ public final class DepthCuedGeometry implements GeometryStage {
     /** The same in panel space with colours, as the painter takes them. */
     private final double[] panel = new double[Painter.STRIDE];
     private long culled;
+    private long primitives;
     /** Told of the primitives culled (the inspector), or null. */
     private PrimitiveTrace trace;
 
@@ -42,6 +43,7 @@ public final class DepthCuedGeometry implements GeometryStage {
 
     /** Object -> world (= camera) -> cull -> project -> sink; a vertex without a colour is white. */
     private void draw(int kind, Matrix4 ctm, double[] xyz, double[] rgb, int count) {
+        primitives++;
         toCamera(ctm, xyz, count);
         if (VIEW.culls(camera, 3, count)) {
             culled++;
@@ -93,5 +95,10 @@ public final class DepthCuedGeometry implements GeometryStage {
     @Override
     public long culledCount() {
         return culled;
+    }
+
+    @Override
+    public long primitiveCount() {
+        return primitives;
     }
 }

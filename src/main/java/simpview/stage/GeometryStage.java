@@ -24,4 +24,7 @@ public interface GeometryStage {
 
     /** Primitives skipped because they lie wholly outside one plane of the view. */
     long culledCount();
+
+    /** Primitives taken, culled or not: lines, triangles and .obj faces. */
+    long primitiveCount();
 }

@@ -89,6 +89,7 @@ public final class LitGeometry implements GeometryStage {
     private boolean objWire;
     private Path objFile;
     private long culled;
+    private long primitives;
     /** Who follows the primitives, or null; where the primitive at hand comes from; how many were told. */
     private PrimitiveTrace trace;
     private Path sourceFile;
@@ -127,6 +128,7 @@ public final class LitGeometry implements GeometryStage {
 
     @Override
     public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
+        primitives++;
         transform(ctm);
         for (int k = 0; k < 2; k++) {
             vertex(k, xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
@@ -214,6 +216,7 @@ public final class LitGeometry implements GeometryStage {
 
     /** Steps 2 to 7 for a polygon whose n camera-space vertices are in place. */
     private void face(int n, boolean wire) {
+        primitives++;
         Camera camera = state.camera();
         if (camera.culls(cam, CAMERA_STRIDE, n)) {
             culled++;
@@ -580,5 +583,10 @@ public final class LitGeometry implements GeometryStage {
     @Override
     public long culledCount() {
         return culled;
+    }
+
+    @Override
+    public long primitiveCount() {
+        return primitives;
     }
 }

@@ -116,6 +116,17 @@ class InspectCommandTest {
     }
 
     @Test
+    void aCulledPrimitiveIsNoWriteAndADepthCuedOneIsCulledByItsBox() throws Exception {
+        Path scene = write("behind.simp", "polygon (0 0 10) (50 0 10) (0 50 10)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "400,400", "--history");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.out().contains("history: 0 writes attempted, and 1 primitive culled or clipped that would "
+                + "have covered the pixel, in drawing order"), run.out());
+        assertTrue(run.out().contains("culled: every vertex beyond the view box's near side (z = 0); seen straight "
+                + "down z, it covers the pixel"), run.out());
+    }
+
+    @Test
     void aPixelOutsideThePanelIsAUsageError() throws Exception {
         Path scene = write("s.simp", "polygon (0, 0, -1) (1, 0, -1) (0, 1, -1)\n");
         for (String at : new String[] {"650,10", "-1,3", "3", "a,b"}) {

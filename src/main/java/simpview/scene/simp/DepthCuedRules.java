@@ -82,6 +82,11 @@ final class DepthCuedRules implements RuleSet {
         return geometry.culledCount();
     }
 
+    @Override
+    public long primitiveCount() {
+        return geometry.primitiveCount();
+    }
+
     /** turn * ctm, worked out again only when the CTM changed (it is a new object each time it does). */
     private Matrix4 viewed(Matrix4 ctm) {
         if (turn == null) {

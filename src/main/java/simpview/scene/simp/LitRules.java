@@ -103,6 +103,11 @@ final class LitRules implements RuleSet {
         return geometry.culledCount();
     }
 
+    @Override
+    public long primitiveCount() {
+        return geometry.primitiveCount();
+    }
+
     /**
      * Carries out a command of the lit rules; true when it drew (an obj).
      * Every kind is named here, so a new command is a compile error until it

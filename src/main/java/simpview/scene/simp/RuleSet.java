@@ -21,6 +21,9 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     long culledCount();
 
+    /** Primitives taken, culled or not. */
+    long primitiveCount();
+
     /**
      * Where the first colour outside 0 to 1 that these rules read themselves
      * (an .obj model's, "dummy.obj:12") was clamped, or null; asked after

@@ -279,6 +279,14 @@ public final class ScenePipeline {
         if (!client.drew()) {
             monitor.warning(files.reached().get(0).getFileName()
                     + " drew nothing: no line, polygon or obj in it or in the files it includes");
+        } else if (client.primitiveCount() > 0 && client.culledCount() == client.primitiveCount()) {
+            long n = client.primitiveCount();
+            monitor.warning(files.reached().get(0).getFileName() + " drew nothing: "
+                    + (n == 1 ? "its one primitive lies" : "every one of its " + n + " primitives lies")
+                    + " wholly outside the view (" + (client.isLit()
+                            ? "the camera's view volume: in front of the camera, between its near and far planes"
+                            : "x and y from -100 to 100, z from 0 near to -200 far")
+                    + "), so it was culled");
         }
         double[] centre = client.shownCentre();
         if (centre != null) {

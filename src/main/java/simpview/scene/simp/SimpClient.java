@@ -275,4 +275,9 @@ public final class SimpClient {
     public long culledCount() {
         return rules.culledCount();
     }
+
+    /** Primitives taken, culled or not. */
+    long primitiveCount() {
+        return rules.primitiveCount();
+    }
 }

@@ -136,6 +136,24 @@ class ScenePipelineTest {
     }
 
     @Test
+    void aSceneWhosePrimitivesAreAllCulledSaysSo() throws Exception {
+        Path behind = write("behind.simp", "polygon (0 0 10) (50 0 10) (0 50 10)", "line (0 0 5) (10 10 5)");
+        draw(behind, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("behind.simp drew nothing: every one of its 2 primitives lies wholly outside the view"
+                + " (x and y from -100 to 100, z from 0 near to -200 far), so it was culled"), warnings);
+        warnings.clear();
+        Path lit = write("lit.simp", "camera -1 -1 1 1 -1 -100", "ambient 1 1 1", "polygon (0 0 5) (1 0 5) (0 1 5)");
+        draw(lit, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("lit.simp drew nothing: its one primitive lies wholly outside the view (the camera's"
+                + " view volume: in front of the camera, between its near and far planes), so it was culled"), warnings);
+        warnings.clear();
+        // one culled of two: no warning
+        Path half = write("half.simp", "polygon (0 0 10) (50 0 10) (0 50 10)", "polygon (0 0 -10) (50 0 -10) (0 50 -10)");
+        draw(half, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(), warnings);
+    }
+
+    @Test
     void aSceneMayBeNamedWithoutItsExtension() throws Exception {
         Path scene = write("house.simp", "polygon (-50 -50 -50) (50 -50 -50) (0 50 -50)");
         ScenePipeline.Drawn drawn = draw(dir.resolve("house"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
