@@ -138,7 +138,7 @@ public final class ScenePipeline {
             SimpClient client = options.rules() == Rules.LIT ? litFromTheStart(canvas, options, files, monitor)
                     : depthCuedFirst(canvas, options, files, monitor);
             run(client, monitor, file);
-            return drawn(client, client.litBecause(), files, monitor);
+            return drawn(client, client.litBecause(), files, monitor, options);
         } catch (SceneTurnsLit turn) {
             if (options.rules() == Rules.DEPTH_CUED_OR_NOTHING) {
                 canvas.clear();
@@ -171,7 +171,7 @@ public final class ScenePipeline {
         try {
             SimpClient client = litFromTheStart(canvas, options, files, monitor);
             run(client, monitor, file);
-            return drawn(client, litBecause, files, monitor);
+            return drawn(client, litBecause, files, monitor, options);
         } finally {
             monitor.stampsAsRead(files.stampsAsRead());
             monitor.reached(files.reached());
@@ -275,7 +275,8 @@ public final class ScenePipeline {
                 : new SimpInterpreter(client, monitor);
     }
 
-    private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor) {
+    private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor,
+            Options options) {
         if (!client.drew()) {
             monitor.warning(files.reached().get(0).getFileName()
                     + " drew nothing: no line, polygon or obj in it or in the files it includes");
@@ -287,6 +288,13 @@ public final class ScenePipeline {
                             ? "the camera's view volume: in front of the camera, between its near and far planes"
                             : "x and y from -100 to 100, z from 0 near to -200 far")
                     + "), so it was culled");
+        }
+        if (!client.isLit() && !options.ownColours() && options.rules() == Rules.BY_COMMANDS
+                && client.firstOwnColours() != null) {
+            // the course's rule, but a student who gave colours expects to see them
+            monitor.warning(client.firstOwnColours() + ": the vertices' own colours are not drawn: a depth-cued scene"
+                    + " takes its colours from the depth cue (SPEC Part 1); render --own-colors, or C in the window,"
+                    + " draws them (this is the first line with colours)");
         }
         double[] centre = client.shownCentre();
         if (centre != null) {

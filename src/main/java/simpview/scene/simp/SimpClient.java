@@ -58,6 +58,8 @@ public final class SimpClient {
     private boolean drew;
     /** Where the first colour outside [0, 1] was clamped ("file:line"), or null. */
     private String firstClamped;
+    /** Where the first line or polygon with its vertices' own colours stands, or null. */
+    private String firstOwnColours;
     /** A lit command met and ignored ({@link OnLit#IGNORE}): where the first stood, or null. */
     private String firstIgnored;
     /** The file and line of the outermost '{' still open (while the matrix stack is not empty). */
@@ -194,6 +196,9 @@ public final class SimpClient {
         if (c.clamped && firstClamped == null) {
             firstClamped = files.place();
         }
+        if (c.colored && firstOwnColours == null) {
+            firstOwnColours = files.place();
+        }
         return c.colored ? c.rgb : null;
     }
 
@@ -274,6 +279,11 @@ public final class SimpClient {
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     public long culledCount() {
         return rules.culledCount();
+    }
+
+    /** Where the first line or polygon with its vertices' own colours stands ("house.simp:3"), or null. */
+    String firstOwnColours() {
+        return firstOwnColours;
     }
 
     /** Primitives taken, culled or not. */

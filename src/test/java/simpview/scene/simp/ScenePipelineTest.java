@@ -154,6 +154,24 @@ class ScenePipelineTest {
     }
 
     @Test
+    void ownColoursADepthCuedSceneDoesNotDrawAreNamed() throws Exception {
+        Path scene = write("colours.simp", "line (0 0 -5) (10 10 -5)",
+                "polygon (-60 -50 -50 1 0 0) (60 -50 -50 0 1 0) (0 60 -50 0 0 1)");
+        draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("colours.simp:2: the vertices' own colours are not drawn: a depth-cued scene takes its"
+                + " colours from the depth cue (SPEC Part 1); render --own-colors, or C in the window, draws them"
+                + " (this is the first line with colours)"), warnings);
+        warnings.clear();
+        PageCanvas canvas = new PageCanvas();
+        canvas.clear();
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()).withOwnColours(true),
+                monitor);
+        assertEquals(List.of(), warnings, "drawn in their own colours");
+        draw(scene, new PageCanvas(), ScenePipeline.Rules.DEPTH_CUED);
+        assertEquals(List.of(), warnings, "the course's pages are depth-cued by the course's rule: no word of it");
+    }
+
+    @Test
     void aSceneMayBeNamedWithoutItsExtension() throws Exception {
         Path scene = write("house.simp", "polygon (-50 -50 -50) (50 -50 -50) (0 50 -50)");
         ScenePipeline.Drawn drawn = draw(dir.resolve("house"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
