@@ -218,7 +218,7 @@ final class ObjParser {
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
         if (after < 0 || (after < end && !isSeparator(b[after]))) {
-            throw error(i, "expected a number, found '" + token(i) + "'");
+            throw error(i, "expected a number, found '" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i)));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");

@@ -293,14 +293,15 @@ public final class SimpReader implements AutoCloseable {
             }
             if (n == most) {
                 int found = n + wordsFrom(i);
-                throw error(i, wrongCount(kind, found) + decimalCommaHint(from, kind, found));
+                String comma = decimalCommaHint(from, kind, found);
+                throw error(i, wrongCount(kind, found) + (comma.isEmpty() ? triangleHint(kind, found) : comma));
             }
             i = number(i);
             c.numbers[n++] = decimal.value();
             i = skipSeparators(i);
         }
         if (!kind.takes(n)) {
-            throw error(end, wrongCount(kind, n));
+            throw error(end, wrongCount(kind, n) + triangleHint(kind, n));
         }
         c.count = n;
         return end;
@@ -416,6 +417,12 @@ public final class SimpReader implements AutoCloseable {
         return "wrong number of arguments: " + kind.spelling + " takes " + kind.takesText() + ", found " + got;
     }
 
+    /** For a polygon given more numbers than a triangle's, what a polygon is. */
+    private static String triangleHint(Kind kind, int found) {
+        return kind == Kind.POLYGON && found > 9 ? " (a polygon is one triangle: draw a shape of more points as several"
+                + " triangles, or as faces of an .obj model)" : "";
+    }
+
     /** How many words (runs between separators) the line holds from i on. */
     private int wordsFrom(int i) {
         int words = 0;
@@ -448,7 +455,7 @@ public final class SimpReader implements AutoCloseable {
     }
 
     private String found(int i) {
-        return i >= end ? "the end of the line" : "'" + token(i) + "'";
+        return i >= end ? "the end of the line" : "'" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i));
     }
 
     /** The token at i: up to the next blank, comma or parenthesis (at least one character). */

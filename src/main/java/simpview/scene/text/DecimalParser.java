@@ -135,4 +135,25 @@ public final class DecimalParser {
         }
         return parser.value();
     }
+
+    /**
+     * For an error on a token that is not a number: when it holds a
+     * character beyond ASCII, which no number may, a sentence naming the
+     * first (", whose '−' is U+2212 MINUS SIGN, not ASCII: ..."), since text
+     * copied from a PDF or a word processor looks right and is not; else "".
+     */
+    public static String nonAsciiHint(String token) {
+        for (int k = 0; k < token.length(); ) {
+            int cp = token.codePointAt(k);
+            if (cp > 0x7F) {
+                String name = Character.getName(cp);
+                return ", whose '" + new String(Character.toChars(cp)) + "' is U+" + String.format("%04X", cp)
+                        + (name == null ? "" : " " + name) + ", not ASCII: a number is written with the ASCII digits,"
+                        + " '-', '+', '.' and 'e' (text copied from a PDF or a word processor often looks right and"
+                        + " is not)";
+            }
+            k += Character.charCount(cp);
+        }
+        return "";
+    }
 }

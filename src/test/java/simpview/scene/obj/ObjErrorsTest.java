@@ -97,6 +97,13 @@ class ObjErrorsTest {
     }
 
     @Test
+    void aMinusSignCopiedFromAPdfIsNamed() {
+        assertError("v 1 \u22122 3", 1, 5, "expected a number, found '\u22122', whose '\u2212' is U+2212 MINUS SIGN,"
+                + " not ASCII: a number is written with the ASCII digits, '-', '+', '.' and 'e' (text copied from a PDF"
+                + " or a word processor often looks right and is not)");
+    }
+
+    @Test
     void aNumberOutOfRange() {
         assertError("v 1 2 1e999", 1, 7, "number out of range: '1e999'");
         assertError("vn -1e400 0 0", 1, 4, "number out of range: '-1e400'");
@@ -171,8 +178,11 @@ class ObjErrorsTest {
 
     @Test
     void theColumnCountsCharactersNotBytes() {
-        assertError("vn \u00e9 1 2", 1, 4, "expected a number, found '\u00e9'");
-        assertError("# caf\u00e9\nv 1 \u00e9 2", 2, 5, "expected a number, found '\u00e9'");
+        String problem = "expected a number, found '\u00e9', whose '\u00e9' is U+00E9 LATIN SMALL LETTER E WITH ACUTE,"
+                + " not ASCII: a number is written with the ASCII digits, '-', '+', '.' and 'e' (text copied from a PDF"
+                + " or a word processor often looks right and is not)";
+        assertError("vn \u00e9 1 2", 1, 4, problem);
+        assertError("# caf\u00e9\nv 1 \u00e9 2", 2, 5, problem);
     }
 
     @Test

@@ -255,7 +255,8 @@ class SimpReaderTest {
         assertError("translate 1,5 0 0 7", 1, 17, "wrong number of arguments: translate takes 3 numbers, found 5 numbers");
         assertError("polygon (0,0,-1) (1,0,-1) (0,1,-1) (1 1 -1) (2 2 -1) (3 3 -1) (4 4 -1)", 1, 64,
                 "wrong number of arguments: polygon takes 9 numbers (3 points) or 18 (3 points, each followed by its "
-                + "colour), found 21 numbers");
+                + "colour), found 21 numbers (a polygon is one triangle: draw a shape of more points as several "
+                + "triangles, or as faces of an .obj model)");
     }
 
     @Test
@@ -291,6 +292,20 @@ class SimpReaderTest {
     @Test
     void numberThatDoesNotParse() {
         assertError("translate 1 x 3", 1, 13, "expected a number, found 'x'");
+    }
+
+    @Test
+    void aNonAsciiCharacterInANumberIsNamed() {
+        assertError("translate 1 \u20132 3", 1, 13, "expected a number, found '\u20132', whose '\u2013' is U+2013 EN DASH,"
+                + " not ASCII: a number is written with the ASCII digits, '-', '+', '.' and 'e' (text copied from a PDF"
+                + " or a word processor often looks right and is not)");
+    }
+
+    @Test
+    void aPolygonOfFourPointsIsToldItIsATriangle() {
+        assertError("polygon (0,0,0) (1,0,0) (1,1,0) (0,1,0)", 1, 40, "wrong number of arguments: polygon takes 9 numbers"
+                + " (3 points) or 18 (3 points, each followed by its colour), found 12 numbers (a polygon is one"
+                + " triangle: draw a shape of more points as several triangles, or as faces of an .obj model)");
     }
 
     @Test
