@@ -79,6 +79,12 @@ public class CompareCommandTest {
         assertEquals(100.0, printed(run.out(), "within 8/255")[1]);
         // One pixel down is a shift of the whole panel: with slack it all matches.
         assertEquals(asPrinted(independentDirect(page, shifted, 0)), identical[0]);
+        // without slack the verdict says so, and never speaks of slack it does not have
+        CliRun none = CliRun.of("compare", png("shifted0.png", shifted).toString(), "--page", "1", "--deviation", "0");
+        assertEquals(1, none.exitCode(), "a failing comparison: " + none.out() + none.err());
+        assertTrue(none.out().contains("no slack"), none.out());
+        assertFalse(none.out().contains("with slack"), none.out());
+        assertTrue(none.out().contains("FAIL: "), none.out());
     }
 
     @Test
