@@ -45,7 +45,12 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     /** What the verdict's share counts: "within 8/255 with slack", or "within FLIP 0.130". */
     public String verdictName() {
         return flip() ? String.format(java.util.Locale.ROOT, "within FLIP %.3f", comparison.flipThreshold())
-                : "within " + tolerance + "/255 with slack";
+                : "within " + tolerance + "/255" + slackTail(" with slack");
+    }
+
+    /** {@code words} where the comparison has slack; nothing with deviation 0, where it has none to speak of. */
+    private String slackTail(String words) {
+        return comparison.deviation() == 0 ? "" : words;
     }
 
     public boolean passes() {
@@ -101,12 +106,13 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         List<DiffRegion> largest = regions.largest();
         if (largest.isEmpty()) {
             out.append(flip() ? "no pixel's FLIP value is above the threshold\n"
-                    : "no pixel differs by more than " + tolerance + "/255 with slack\n");
+                    : "no pixel differs by more than " + tolerance + "/255" + slackTail(" with slack") + "\n");
             return;
         }
         long pixels = regions.pixels();
         String what = flip() ? (pixels == 1 ? "has" : "have") + " a FLIP value above the threshold"
-                : (pixels == 1 ? "differs" : "differ") + " by more than " + tolerance + "/255 even with slack";
+                : (pixels == 1 ? "differs" : "differ") + " by more than " + tolerance + "/255"
+                        + slackTail(" even with slack");
         out.append(String.format("%s in %s %s%s%n(panel pixels: origin bottom-left, x right, y up):%n",
                 Count.of(pixels, "pixel"), Count.of(regions.count(), "patch", "patches"), what,
                 regions.count() == 1 ? "" : "; the largest"));
