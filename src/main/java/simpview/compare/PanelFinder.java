@@ -69,9 +69,25 @@ final class PanelFinder {
         PanelPlace found = finder.search();
         if (found == null) {
             throw new CompareException("no 650x650 panel found in " + name + " (" + width + "x" + height
-                    + "): looked for a square with white margins around it and a dark edge inside");
+                    + "): looked for a square with white margins around it and a dark edge inside" + scaled(width, height));
         }
         return new PanelPlace(found.left(), found.top(), "found in a " + width + "x" + height + " picture");
+    }
+
+    /** The sizes a page comes in, and what each is; a picture of one of their shapes at another size was scaled. */
+    private static final int[][] SIZES = {{PAGE, PAGE}, {872, 782}};
+    private static final String[] SIZE_NAMES = {"a 750x750 page", "a 872x782 window capture of a page"};
+
+    /** For a picture the size of a page or capture scaled, a sentence that says so; else "". */
+    static String scaled(int width, int height) {
+        for (int k = 0; k < SIZES.length; k++) {
+            double ratio = (double) width / SIZES[k][0];
+            if (width != SIZES[k][0] && Math.abs(height - ratio * SIZES[k][1]) <= 0.01 * height) {
+                return String.format(java.util.Locale.ROOT, "; it has the shape of %s, scaled by %.3g: save the "
+                        + "picture at its own size (1:1, no scaling)", SIZE_NAMES[k], ratio);
+            }
+        }
+        return "";
     }
 
     /** The best place that qualifies, or null. */
@@ -112,8 +128,16 @@ final class PanelFinder {
         if (above < need || below < need || before < need || after < need) {
             return -1;
         }
-        int borderWhite = row(top, left, right) + row(bottom - 1, left, right)
-                + column(left, top + 1, bottom - 1) + column(right - 1, top + 1, bottom - 1);
+        int topWhite = row(top, left, right);
+        int bottomWhite = row(bottom - 1, left, right);
+        int leftWhite = column(left, top + 1, bottom - 1);
+        int rightWhite = column(right - 1, top + 1, bottom - 1);
+        if (topWhite == size || bottomWhite == size || leftWhite == size - 2 || rightWhite == size - 2) {
+            // A side of the square white throughout is margin, not panel: a scaled page's smaller panel
+            // framed with margin on two sides, say; a panel's drawing does not fill a whole edge in white.
+            return -1;
+        }
+        int borderWhite = topWhite + bottomWhite + leftWhite + rightWhite;
         int border = 4 * size - 4;
         int dark = border - borderWhite;
         if (dark < BORDER_DARK * border) {

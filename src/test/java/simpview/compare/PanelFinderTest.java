@@ -117,6 +117,24 @@ class PanelFinderTest {
     }
 
     @Test
+    void aScaledPageIsRefusedAndCalledScaled() throws Exception {
+        BufferedImage page = page(3);
+        for (int size : new int[] {700, 1500}) {
+            BufferedImage scaled = new BufferedImage(size, size, BufferedImage.TYPE_INT_RGB);
+            java.awt.Graphics2D g = scaled.createGraphics();
+            g.drawImage(page, 0, 0, size, size, null);
+            g.dispose();
+            CompareException e = assertThrows(CompareException.class, () -> Picture.of(scaled, "scaled.png"));
+            assertTrue(e.getMessage().startsWith("no 650x650 panel found in scaled.png (" + size + "x" + size + ")"),
+                    e.getMessage());
+            assertTrue(e.getMessage().endsWith("it has the shape of a 750x750 page, scaled by "
+                    + (size == 700 ? "0.933" : "2.00") + ": save the picture at its own size (1:1, no scaling)"),
+                    e.getMessage());
+        }
+        assertEquals("", PanelFinder.scaled(800, 700), "not a page's shape");
+    }
+
+    @Test
     void marginsThatAreNotWhiteAreCountedAndTheFirstIsNamed() throws Exception {
         BufferedImage page = page(1);
         page.setRGB(3, 7, 0x000000);
