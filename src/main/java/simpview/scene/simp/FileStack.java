@@ -81,7 +81,11 @@ final class FileStack implements AutoCloseable {
     /** Starts with the scene's top file. */
     void openTop(Path named) throws SceneException {
         Path file = withExtension(named);
-        Resolved top = resolve(file, null, problem -> new SceneException(file, 0, 0, "", problem));
+        // named without .simp and found neither way: say both were looked for
+        String alsoLooked = file == named && named.getFileName() != null && !named.toString().endsWith(".simp")
+                ? " (nor " + named.getFileName() + ".simp)" : "";
+        Resolved top = resolve(file, null, problem -> new SceneException(file, 0, 0, "",
+                problem.startsWith("file not found") ? problem + alsoLooked : problem));
         topFileBytes = top.stamp.size();
         push(open(file, top), top);
     }

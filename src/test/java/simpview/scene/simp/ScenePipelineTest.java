@@ -172,6 +172,14 @@ class ScenePipelineTest {
     }
 
     @Test
+    void aMissingSceneNamedWithoutItsExtensionSaysBothWereLookedFor() {
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(dir.resolve("nothere"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals("file not found: " + dir.resolve("nothere").toAbsolutePath().normalize() + " (nor nothere.simp)",
+                e.problem());
+    }
+
+    @Test
     void aSceneMayBeNamedWithoutItsExtension() throws Exception {
         Path scene = write("house.simp", "polygon (-50 -50 -50) (50 -50 -50) (0 50 -50)");
         ScenePipeline.Drawn drawn = draw(dir.resolve("house"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
