@@ -121,18 +121,23 @@ public final class SimpviewCommand implements Callable<Integer> {
      * names no file or folder (with .simp or without) and is near one.
      */
     static Optional<String> mistypedCommand(String word, Collection<String> commands) {
+        return bareWordNamingNothing(word) ? Nearest.to(word, commands) : Optional.empty();
+    }
+
+    /**
+     * True for a word with no folder, extension or option dash in it that
+     * names no file or folder, with .simp or without: a command's name
+     * (mistyped or guessed, "window"), not a scene.
+     */
+    static boolean bareWordNamingNothing(String word) {
         if (word.startsWith("-") || word.contains("/") || word.contains(File.separator) || word.contains(".")) {
-            return Optional.empty();
+            return false;
         }
         try {
-            Path path = Path.of(word);
-            if (Files.exists(path) || Files.exists(Path.of(word + ".simp"))) {
-                return Optional.empty();
-            }
+            return !Files.exists(Path.of(word)) && !Files.exists(Path.of(word + ".simp"));
         } catch (InvalidPathException e) {
-            return Optional.empty();
+            return false;
         }
-        return Nearest.to(word, commands);
     }
 
     @Override
@@ -142,6 +147,11 @@ public final class SimpviewCommand implements Callable<Integer> {
             if (mistypedCommand(first, spec.commandLine().getSubcommands().keySet()).isPresent()) {
                 // Main's report of the usage error says which command was meant
                 throw new ParameterException(spec.commandLine(), "no command or scene file '" + first + "'");
+            }
+            if (bareWordNamingNothing(first)) {
+                throw new ParameterException(spec.commandLine(), "no command or scene file '" + first + "' (nor "
+                        + first + ".simp): the commands are " + UsageWords.joined(List.copyOf(spec.commandLine()
+                        .getSubcommands().keySet()), "and") + "; with no command, simpview opens its window, on the scenes named");
             }
         }
         if (displayMissing.getAsBoolean()) {

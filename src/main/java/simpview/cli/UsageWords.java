@@ -69,8 +69,12 @@ final class UsageWords {
         while (names.find()) {
             options.add(names.group());
         }
-        List<String> all = List.copyOf(options);
-        return all.size() == 1 ? all.get(0)
-                : String.join(", ", all.subList(0, all.size() - 1)) + " or " + all.get(all.size() - 1);
+        return joined(List.copyOf(options), "or");
+    }
+
+    /** Words in a sentence: "a", "a or b", "a, b or c" (with {@code conjunction} "or"). */
+    static String joined(List<String> words, String conjunction) {
+        return words.size() == 1 ? words.get(0) : String.join(", ", words.subList(0, words.size() - 1)) + " "
+                + conjunction + " " + words.get(words.size() - 1);
     }
 }

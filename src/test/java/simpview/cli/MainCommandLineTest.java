@@ -227,6 +227,15 @@ public class MainCommandLineTest {
         assertTrue(intoFolder.err().contains("cannot write " + dir), intoFolder.err());
     }
 
+    @Test
+    void aBareWordThatNamesNoSceneIsNoWindowsScene() {
+        CliRun run = CliRun.with(() -> true, "window");
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("simpview: no command or scene file 'window' (nor window.simp): the commands "
+                + "are "), run.err());
+        assertTrue(run.err().contains("render") && run.err().contains(" and "), run.err());
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "comapre mine.png | no command or scene file 'comapre' | compare",
