@@ -95,7 +95,40 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                 Percent.of(verdictShare()), verdictName(), Percent.of(minimum / 100),
                 maxFailing < 0 ? "" : "; " + Count.with(regions.pixels(), "pixel", "fails", "fail")
                         + String.format(" (at most %,d allowed)", maxFailing)));
+        DiffRegion blob = passes() ? firstBlob() : null;
+        if (blob != null) {
+            out.append("note: it passes, but a patch of ").append(Count.of(blob.pixels(), "pixel"))
+                    .append(" differs (")
+                    .append(blob.describe()).append("): more than an edge, so a shape may be missing, moved or of"
+                    + " another colour there; see the diff image\n");
+        }
         return out.toString();
+    }
+
+    /** How wide and tall a patch must be, at least, to be more than an edge or a line a pixel off. */
+    static final int BLOB_SIDE = 4;
+    /** How much of its box a patch must fill, at least: a triangle fills half; an edge's pixels along a diagonal, a tenth. */
+    static final double BLOB_FILL = 0.4;
+    /** And how many pixels: the course's pageC differs from simpview's in a 6x6 patch of 16 (its small cubes' edges). */
+    static final int BLOB_PIXELS = 64;
+
+    /**
+     * The largest listed patch at least {@link #BLOB_SIDE} pixels wide and
+     * tall that fills {@link #BLOB_FILL} of its box with {@link #BLOB_PIXELS} or more, or null. The course's own
+     * pictures, which pass, differ from simpview's in thin or sparse patches
+     * only (a row along the panel's bottom, pixels along an edge); a whole
+     * shape left out leaves a solid one.
+     */
+    private DiffRegion firstBlob() {
+        for (DiffRegion r : regions.largest()) {
+            int wide = r.right() - r.left() + 1;
+            int tall = r.top() - r.bottom() + 1;
+            boolean solid = r.pixels() >= BLOB_PIXELS && r.pixels() >= BLOB_FILL * wide * tall;
+            if (wide >= BLOB_SIDE && tall >= BLOB_SIDE && solid) {
+                return r;
+            }
+        }
+        return null;
     }
 
     private static void appendRow(StringBuilder out, String label, double exactShare, double slackShare) {

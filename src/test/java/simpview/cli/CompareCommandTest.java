@@ -88,6 +88,26 @@ public class CompareCommandTest {
     }
 
     @Test
+    void aPassingPageWithASolidPatchMissingGetsANote() throws Exception {
+        BufferedImage page = page(3);
+        CliRun same = CliRun.of("compare", png("same.png", page).toString(), "--page", "3");
+        assertEquals(ExitCode.OK, same.exitCode(), same.out() + same.err());
+        assertFalse(same.out().contains("note:"), same.out());
+        BufferedImage spoiled = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        spoiled.setData(page.getRaster());
+        for (int y = 100; y < 130; y++) {
+            for (int x = 400; x < 430; x++) {
+                spoiled.setRGB(x, y, 0xFF00FF);
+            }
+        }
+        CliRun run = CliRun.of("compare", png("spoiled.png", spoiled).toString(), "--page", "3");
+        assertEquals(ExitCode.OK, run.exitCode(), "900 pixels of 422,500 still pass: " + run.out());
+        // image rows 100-129 are panel rows 599-570 (y up, the panel's top at image row 50)
+        assertTrue(run.out().contains("note: it passes, but a patch of 900 pixels differs (x 350-379, y 570-599 (30x30)"),
+                run.out());
+    }
+
+    @Test
     void oneChannelOffByTwoIsNeverIdenticalButAlwaysWithinEight() throws Exception {
         BufferedImage page = page(2);
         BufferedImage off = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
