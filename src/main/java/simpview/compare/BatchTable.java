@@ -124,7 +124,7 @@ public final class BatchTable {
 
     private static List<String> cells(BatchRow row, boolean markdown) {
         boolean shares = row.exact() != null;
-        String diff = row.diff().isEmpty() || !markdown ? row.diff() : "[diff](" + row.diff().replace(" ", "%20") + ")";
+        String diff = row.diff().isEmpty() || !markdown ? row.diff() : "[diff](" + UrlPath.of(row.diff()) + ")";
         return List.of(row.file(), row.target(),
                 shares ? Percent.number(row.exact().identical()) : "",
                 shares ? Percent.number(row.exact().within1()) : "",

@@ -139,8 +139,9 @@ public final class HtmlReport {
             h.append("<p>No diff image was written for it (see --diffs).</p>\n</section>\n");
             return;
         }
-        String src = htmlDir.toAbsolutePath().normalize().relativize(outDir.resolve(row.diff()).toAbsolutePath().normalize())
-                .toString().replace('\\', '/');
+        // a URL relative to the page, not a file path: a name may hold '#', '?', '%' or spaces
+        String src = UrlPath.of(htmlDir.toAbsolutePath().normalize()
+                .relativize(outDir.resolve(row.diff()).toAbsolutePath().normalize()));
         h.append("<p class=\"zoom\">simpview's | theirs | heat map, zoom: ");
         for (int z : new int[] {1, 2, 4, 8}) {
             h.append("<button type=\"button\" data-zoom=\"").append(z).append("\">").append(z).append("x</button> ");

@@ -77,11 +77,16 @@ class HtmlReportBrowserTest {
 
     /** Runs headless Chromium on the report with the given arguments; returns what it printed on stdout. */
     private static String chromium(String fragment, String... args) throws Exception {
+        return chromium(report.resolve(HtmlReport.INDEX), fragment, args);
+    }
+
+    /** The same on another page. */
+    private static String chromium(Path page, String fragment, String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
                 "--hide-scrollbars", "--force-device-scale-factor=1", "--no-first-run", "--disable-extensions",
                 "--user-data-dir=" + Files.createTempDirectory(dir, "profile"), "--window-size=" + WIDTH + "," + HEIGHT));
         command.addAll(List.of(args));
-        command.add(report.resolve(HtmlReport.INDEX).toUri() + fragment);
+        command.add(page.toUri() + fragment);
         Path stdout = Files.createTempFile(dir, "stdout", ".txt");
         Process process = new ProcessBuilder(command).redirectOutput(stdout.toFile())
                 .redirectError(ProcessBuilder.Redirect.DISCARD).start();
@@ -147,6 +152,21 @@ class HtmlReportBrowserTest {
         assertEquals(List.of("error", "missing", "missing", "missing", "fail", "pass"), order,
                 "no share first (a stable sort keeps their order), then 92.9 %, then 100 %");
         assertTrue(dom.contains("<th data-col=\"4\" class=\"up\">"), "the heading shows the sort");
+    }
+
+    @Test
+    void anImageWhoseNameHoldsAHashLoads() throws Exception {
+        // Unencoded, "diffs/carol_page1 #2 é%-diff.png" is the file "diffs/carol_page1 " and a fragment: no picture.
+        Path hashed = dir.resolve("hashed #1");
+        int[] stripes = GradingFixtures.stripes(0);
+        BatchRow row = GradingFixtures.row("carol/page1 #2 é%.png", "1", stripes, stripes, GradingFixtures.defaults(),
+                false, hashed);
+        HtmlReport.write(List.of(row), List.of(), hashed, hashed);
+        Path shot = dir.resolve("hashed.png");
+        chromium(hashed.resolve(HtmlReport.INDEX), "", "--screenshot=" + shot);
+        BufferedImage image = ImageIO.read(shot.toFile());
+        assertTrue(longestRun(image, HeatMap.GAP_COLOUR) >= 200, "the diff image " + row.diff() + " is shown: a grey gap "
+                + longestRun(image, HeatMap.GAP_COLOUR) + " px tall");
     }
 
     private static int count(String text, String what) {
