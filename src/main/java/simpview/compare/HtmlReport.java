@@ -228,7 +228,9 @@ public final class HtmlReport {
                   var z = +e.currentTarget.getAttribute('data-zoom');
                   var diff = e.currentTarget.parentNode.nextElementSibling.firstChild;
                   diff.style.transform = 'scale(' + z + ')';
-                  diff.parentNode.style.height = (650 * z + 2) + 'px';
+                  // Its own picture's height (650 px for a page, 300 for a first-assignment panel): offsetHeight
+                  // is the unscaled one. The scale does not grow the view, so the view is told its new height.
+                  diff.parentNode.style.height = (diff.offsetHeight * z + 2) + 'px';
                   diff.parentNode.scrollLeft = 0;
                 });
               }

@@ -29,7 +29,9 @@ import org.junit.jupiter.api.io.TempDir;
  * disk, and its screenshot must show the table (one band of the result's
  * colour per row, in order) and the pictures (the grey gaps of the diff
  * image); its DOM, after the page's script ran, must hold one row per
- * picture and missing page, and sort when asked. Without Chromium the test
+ * picture and missing page, and sort when asked; a diff image whose name
+ * holds '#' loads, and each view's zoom fits its own picture (a page's or a
+ * first-assignment panel's). Without Chromium the test
  * is skipped, saying so; under CI=true that absence fails it.
  */
 class HtmlReportBrowserTest {
@@ -167,6 +169,48 @@ class HtmlReportBrowserTest {
         BufferedImage image = ImageIO.read(shot.toFile());
         assertTrue(longestRun(image, HeatMap.GAP_COLOUR) >= 200, "the diff image " + row.diff() + " is shown: a grey gap "
                 + longestRun(image, HeatMap.GAP_COLOUR) + " px tall");
+    }
+
+    @Test
+    void eachViewZoomsToItsOwnPicturesHeight() throws Exception {
+        // A page's view (650 px tall) and a first-assignment panel's (300 px): each 2x zoom's view must be as tall
+        // as its own picture at 2x (with the view's 2 px), not as a page's.
+        Path zoomed = dir.resolve("zoomed");
+        RubricRule rule = GradingFixtures.defaults();
+        int[] stripes = GradingFixtures.stripes(0);
+        int side = 300;
+        int[] panel = new int[side * side];
+        for (int i = 0; i < panel.length; i++) {
+            panel[i] = i % side % 4 == 0 ? 0xFFFFFF : 0;
+        }
+        Comparison small = Comparison.of(panel, panel, side, 0, Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
+        Files.createDirectories(zoomed.resolve("diffs"));
+        Files.write(zoomed.resolve("diffs/a1-panel1-diff.png"), HeatMap.diffPng(small, 8));
+        List<BatchRow> rows = List.of(GradingFixtures.row("alice/page1.png", "1", stripes, stripes, rule, false, zoomed),
+                BatchRow.panel("alice/a1-page1.png", "A1 page 1 panel 1 (DDA)", small, rule, 1, "diffs/a1-panel1-diff.png",
+                        "panel 1"));
+        HtmlReport.write(rows, List.of(), zoomed, zoomed);
+        // The report's own script, then one that presses each view's 2x button and writes down what it did.
+        Path page = zoomed.resolve("zoom.html");
+        Files.writeString(page, Files.readString(zoomed.resolve(HtmlReport.INDEX)).replace("</body>", """
+                <script>
+                var found = [];
+                document.querySelectorAll('section.detail').forEach(function (view) {
+                  view.querySelector('button[data-zoom="2"]').click();
+                  var box = view.querySelector('.view');
+                  found.push(box.querySelector('img').getAttribute('height') + ' '
+                      + Math.round(box.firstChild.getBoundingClientRect().height) + ' ' + box.style.height);
+                });
+                var out = document.createElement('pre');
+                out.id = 'zoomed';
+                out.textContent = found.join(';');
+                document.body.appendChild(out);
+                </script>
+                </body>"""));
+        Matcher found = Pattern.compile("<pre id=\"zoomed\">([^<]*)</pre>").matcher(chromium(page, "", "--dump-dom"));
+        assertTrue(found.find(), "the measuring script ran");
+        // picture height, its height on screen at 2x, the view's height
+        assertEquals("650 1300 1302px;300 600 602px", found.group(1));
     }
 
     private static int count(String text, String what) {
