@@ -119,7 +119,15 @@ public final class BatchTable {
 
     /** The same, then how many pages asked for have no picture: "...; 3 pages asked for without a picture". */
     public static String summary(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
-        return summary(rows) + (missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " asked for without a picture");
+        return summary(rows, missing.size());
+    }
+
+    /**
+     * The same with the count of pages missing given: results.json counts them in one submission, the table
+     * and the web report in each; the words are the same.
+     */
+    public static String summary(List<BatchRow> rows, int missing) {
+        return summary(rows) + (missing == 0 ? "" : "; " + Count.of(missing, "page") + " asked for without a picture");
     }
 
     private static List<String> cells(BatchRow row, boolean markdown) {

@@ -64,8 +64,7 @@ public final class GradescopeResults {
         JsonObject results = new JsonObject();
         results.addProperty("score", Math.round(total * 100) / 100.0);
         results.addProperty("execution_time", Math.max(1, (int) Math.ceil(seconds)));
-        results.addProperty("output", BatchTable.summary(rows)
-                + (missing.isEmpty() ? "" : String.format(Locale.ROOT, "; %d asked for but not found", missing.size()))
+        results.addProperty("output", BatchTable.summary(rows, missing.size())
                 + (skipped.length() == 0 ? "" : "\nNot matched to any page:" + skipped));
         results.addProperty("stdout_visibility", "hidden");
         results.add("tests", tests);

@@ -101,6 +101,18 @@ class ResultFormatsTest {
     }
 
     @Test
+    void resultsJsonAndTheTableCountMissingPagesInTheSameWords() throws Exception {
+        String json = JsonParser.parseString(GradescopeResults.json(rows(false), WANTED, 3.2)).getAsJsonObject()
+                .get("output").getAsString();
+        // results.json is one submission (page 3 lacking once); the table counts alice's and bob's.
+        String counts = "5 pictures: 1 pass, 2 fail, 1 could not be compared, 1 skipped";
+        assertTrue(json.startsWith(counts + "; 1 page asked for without a picture\n"), json);
+        String table = BatchTable.markdown(rows(false), Wanted.missingBySubmission(WANTED, rows(false)), 8, 99, 1,
+                Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
+        assertTrue(table.endsWith("\n" + counts + "; 2 pages asked for without a picture\n"), table);
+    }
+
+    @Test
     void junitXmlIsValidAgainstTheSchemaAndCountsAddUp() throws Exception {
         String xml = JUnitResults.xml(rows(false), WANTED, 3.2);
         SchemaFactory schemas = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
