@@ -168,6 +168,7 @@ public final class CompareBatch {
             OptionalInt n = SubmissionNames.pageNumber(name);
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
+        warnUnusedRules(pageSubjects(pages));
         return run(dir, outputs, wanted, namer, relative -> pageMatch(relative, pages));
     }
 
@@ -212,6 +213,9 @@ public final class CompareBatch {
         scenes.entrySet().stream()
                 .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
                 .forEach(e -> wanted.add(CompareTarget.scene(e.getValue())));
+        Map<String, Integer> subjects = pageSubjects(pages);
+        scenes.keySet().forEach(name -> subjects.put(name, 0));
+        warnUnusedRules(subjects);
         Function<String, Optional<String>> namer = name -> {
             Optional<String> scene = SubmissionNames.sceneName(name, scenes.keySet());
             if (scene.isPresent()) {
@@ -230,6 +234,7 @@ public final class CompareBatch {
     /** Every picture against one scene file, or against the scene of a folder that its name names. */
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
+            warnUnusedRules(Map.of(SubmissionNames.stem(scene.getFileName().toString()), 0));
             return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
                     relative -> new Match(CompareTarget.scene(scene), null));
         }
@@ -247,11 +252,42 @@ public final class CompareBatch {
         List<CompareTarget> wanted = scenes.entrySet().stream()
                 .filter(e -> rubric.rules().stream().anyMatch(r -> r.match().trim().equals(e.getKey())))
                 .map(e -> CompareTarget.scene(e.getValue())).toList();
+        Map<String, Integer> subjects = new HashMap<>();
+        scenes.keySet().forEach(name -> subjects.put(name, 0));
+        warnUnusedRules(subjects);
         return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
         });
+    }
+
+    /**
+     * The rubric keys of the pages of {@code pages} (with their numbers, for a rule's page range) and of every
+     * panel of the first assignment's pages, which a picture so named brings whatever --pages says.
+     */
+    private static Map<String, Integer> pageSubjects(PageRange pages) {
+        Map<String, Integer> subjects = new HashMap<>();
+        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+            if (pages.contains(p)) {
+                subjects.put("page" + p, p);
+            }
+        }
+        for (int page = 1; page <= Assignment1.COUNT; page++) {
+            for (int k = 1; k <= A1Layout.PANELS; k++) {
+                subjects.put("a1-page" + page + "-panel" + k, 0);
+            }
+        }
+        return subjects;
+    }
+
+    /**
+     * Says on stderr which rubric rules fit none of the pages and scenes this run can compare, before it
+     * starts: a mistyped "match" would otherwise leave its pages to the defaults without a word. A warning
+     * only: one rubric may serve several assignments.
+     */
+    private void warnUnusedRules(Map<String, Integer> subjects) {
+        rubric.unusedRules(subjects).forEach(unused -> err.println(says + "warning: " + unused));
     }
 
     private int run(Path dir, Outputs outputs, List<CompareTarget> wanted, Function<String, Optional<String>> namer,

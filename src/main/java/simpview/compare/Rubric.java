@@ -7,9 +7,11 @@ import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -27,7 +29,8 @@ import java.util.Set;
  * The first rule whose {@code match} fits a page or scene is its rule; a
  * field it leaves out comes from {@code defaults}, and one left out there from
  * the command line (today's defaults). Without a rubric every page has the
- * command line's rule.
+ * command line's rule. What JSON readers pass over is an error here too: a key
+ * given twice in one object, and a zero_share above its min_share.
  */
 public final class Rubric {
 
@@ -35,15 +38,21 @@ public final class Rubric {
 
     private final RubricRule defaults;
     private final List<RubricRule> rules;
+    /** Where each rule is in the file ("line 4, column 5 ($.pages[1])"), for what is said about it later. */
+    private final List<String> places;
+    /** The file, as its messages name it. */
+    private final Path file;
 
-    private Rubric(RubricRule defaults, List<RubricRule> rules) {
+    private Rubric(RubricRule defaults, List<RubricRule> rules, List<String> places, Path file) {
         this.defaults = defaults;
         this.rules = List.copyOf(rules);
+        this.places = List.copyOf(places);
+        this.file = file;
     }
 
     /** No file: every page judged by {@code defaults}. */
     public static Rubric of(RubricRule defaults) {
-        return new Rubric(defaults, List.of());
+        return new Rubric(defaults, List.of(), List.of(), null);
     }
 
     /** The rule for a page or scene: key "page6" and page 6, or key "pageC" (the scene's name without .simp) and 0. */
@@ -62,6 +71,23 @@ public final class Rubric {
 
     public RubricRule defaults() {
         return defaults;
+    }
+
+    /**
+     * A warning for each rule that fits none of {@code subjects}, the pages and scenes a run can compare (each
+     * key with its page number, 0 for a scene, as {@link #ruleFor} takes them): a "9" under --pages 1-8, a
+     * "pageZ" where no scene is so named. Not an error: one rubric may serve several assignments.
+     */
+    public List<String> unusedRules(Map<String, Integer> subjects) {
+        List<String> unused = new ArrayList<>();
+        for (int i = 0; i < rules.size(); i++) {
+            RubricRule rule = rules.get(i);
+            if (subjects.entrySet().stream().noneMatch(s -> rule.matches(s.getKey(), s.getValue()))) {
+                unused.add("rubric " + file + ": " + places.get(i) + ": the rule \"match\": \"" + rule.match()
+                        + "\" fits no page or scene of this run, so it is not used");
+            }
+        }
+        return unused;
     }
 
     /** Reads a rubric file over {@code base} (the command line's rule). Alternates are relative to the file's folder. */
@@ -112,6 +138,14 @@ public final class Rubric {
 
     /** The streaming parse, one object at a time, each error with its place. */
     private static final class Parser {
+
+        /**
+         * A rule object as read: the rule, where it starts, and where it gave its min_share and its zero_share
+         * (null: it left that out), so a zero_share above a min_share can say where each came from.
+         */
+        private record Read(RubricRule rule, String at, String minShareAt, String zeroShareAt) {
+        }
+
         private final Path file;
         private final Path folder;
         private final JsonReader json;
@@ -125,15 +159,15 @@ public final class Rubric {
         Rubric rubric(RubricRule base) throws IOException, CompareException {
             expect(JsonToken.BEGIN_OBJECT, "an object with \"defaults\" and \"pages\"");
             json.beginObject();
-            RubricRule defaults = base;
-            List<RubricRule> rules = new ArrayList<>();
-            boolean sawPages = false;
+            Read defaults = new Read(base, null, null, null);
+            List<Read> rules = new ArrayList<>();
+            Map<String, String> seen = new HashMap<>();
             while (json.hasNext()) {
                 String name = json.nextName();
+                once(name, seen);
                 switch (name) {
-                    case "defaults" -> defaults = rule(defaults, false);
+                    case "defaults" -> defaults = defaults(base);
                     case "pages" -> {
-                        sawPages = true;
                         expect(JsonToken.BEGIN_ARRAY, "a list of page rules");
                         json.beginArray();
                         while (json.hasNext()) {
@@ -148,19 +182,31 @@ public final class Rubric {
             if (json.peek() != JsonToken.END_DOCUMENT) {
                 throw error("text after the rubric's closing }");
             }
-            if (!sawPages && defaults == base) {
+            if (seen.isEmpty()) {
                 throw new CompareException("rubric " + file + ": neither \"defaults\" nor \"pages\" given");
             }
             // Page rules left open fall back on the defaults as the file gives them.
             List<RubricRule> filled = new ArrayList<>();
-            for (RubricRule rule : rules) {
+            List<String> places = new ArrayList<>();
+            for (Read rule : rules) {
                 filled.add(fill(rule, defaults));
+                places.add(rule.at());
             }
-            return new Rubric(defaults, filled);
+            return new Rubric(defaults.rule(), filled, places, file);
+        }
+
+        /** The "defaults" object over the command line's rule, its zero_share at most its min_share. */
+        private Read defaults(RubricRule base) throws IOException, CompareException {
+            Read read = rule(base, false);
+            if (read.zeroShareAt() != null) {
+                inOrder(read.at(), "\"defaults\"", read.rule().zeroShare(), read.zeroShareAt(), read.rule().minShare(),
+                        read.minShareAt() != null ? read.minShareAt() : "from --min: the rubric sets none");
+            }
+            return read;
         }
 
         /** A rule object; over {@code base}, or with its missing fields left null-ish (NaN, MIN_VALUE) to fill later. */
-        private RubricRule rule(RubricRule base, boolean needsMatch) throws IOException, CompareException {
+        private Read rule(RubricRule base, boolean needsMatch) throws IOException, CompareException {
             expect(JsonToken.BEGIN_OBJECT, needsMatch ? "a page rule: an object with \"match\"" : "an object of default fields");
             String where = place();
             json.beginObject();
@@ -175,8 +221,12 @@ public final class Rubric {
             Path alternates = base == null ? null : base.alternates();
             String visibility = base == null ? null : base.visibility();
             double flipThreshold = base == null ? Double.NaN : base.flipThreshold();
+            String minShareAt = null;
+            String zeroShareAt = null;
+            Map<String, String> seen = new HashMap<>();
             while (json.hasNext()) {
                 String name = json.nextName();
+                once(name, seen);
                 switch (name) {
                     case "match" -> {
                         if (!needsMatch) {
@@ -190,11 +240,17 @@ public final class Rubric {
                     case "tolerance" -> tolerance = (int) number(0, 255, true, "a whole number of 1/255 steps, 0 to 255");
                     case "deviation" -> deviation = (int) number(0, Comparison.MAX_DEVIATION, true,
                             "a position deviation of 0, 1 or 2 pixels");
-                    case "min_share" -> minShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    case "min_share" -> {
+                        minShareAt = lineAndColumn();
+                        minShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    }
                     case "max_failing_pixels" -> maxFailing = (int) number(0, Comparison.N * Comparison.N, true,
                             "a whole number of pixels, 0 to 422500");
                     case "points" -> points = number(0, 1e6, false, "points, 0 or more");
-                    case "zero_share" -> zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    case "zero_share" -> {
+                        zeroShareAt = lineAndColumn();
+                        zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
+                    }
                     case "metric" -> metric = switch (string("\"exact\", \"blur\" or \"flip\"")) {
                         case "exact" -> Comparison.Metric.EXACT;
                         case "blur" -> Comparison.Metric.BLUR;
@@ -218,28 +274,73 @@ public final class Rubric {
             if (needsMatch && match == null) {
                 throw new CompareException("rubric " + file + ": the page rule " + where + " has no \"match\"");
             }
-            return new RubricRule(match, tolerance, deviation, minShare, maxFailing, points, zeroShare, metric,
-                    alternates, visibility, flipThreshold);
+            if (base != null && zeroShareAt == null) {
+                // The command line has no zero_share: left out here too, it is 90 or this min_share if lower.
+                zeroShare = Math.min(RubricRule.ZERO_SHARE, minShare);
+            }
+            return new Read(new RubricRule(match, tolerance, deviation, minShare, maxFailing, points, zeroShare, metric,
+                    alternates, visibility, flipThreshold), where, minShareAt, zeroShareAt);
         }
 
-        private RubricRule fill(RubricRule r, RubricRule d) throws CompareException {
-            RubricRule full = new RubricRule(r.match(),
+        /**
+         * A page rule with what it leaves out from the defaults. Its zero_share: its own, else the defaults' if
+         * they give one, else 90 or its min_share if lower; one it gives or inherits must not be above its
+         * min_share (its own, the defaults' or --min).
+         */
+        private RubricRule fill(Read read, Read defaults) throws CompareException {
+            RubricRule r = read.rule();
+            RubricRule d = defaults.rule();
+            double minShare = Double.isNaN(r.minShare()) ? d.minShare() : r.minShare();
+            String zeroFrom = read.zeroShareAt() != null ? "its own, " + read.zeroShareAt()
+                    : defaults.zeroShareAt() != null ? "from \"defaults\", " + defaults.zeroShareAt() : null;
+            double zeroShare = !Double.isNaN(r.zeroShare()) ? r.zeroShare()
+                    : zeroFrom != null ? d.zeroShare() : Math.min(RubricRule.ZERO_SHARE, minShare);
+            if (zeroFrom != null) {
+                String minFrom = read.minShareAt() != null ? "its own, " + read.minShareAt()
+                        : defaults.minShareAt() != null ? "from \"defaults\", " + defaults.minShareAt()
+                        : "from --min: the rubric sets none";
+                inOrder(read.at(), "the rule for \"" + r.match() + "\"", zeroShare, zeroFrom, minShare, minFrom);
+            }
+            return new RubricRule(r.match(),
                     r.tolerance() == Integer.MIN_VALUE ? d.tolerance() : r.tolerance(),
                     r.deviation() == Integer.MIN_VALUE ? d.deviation() : r.deviation(),
-                    Double.isNaN(r.minShare()) ? d.minShare() : r.minShare(),
+                    minShare,
                     r.maxFailing() == Integer.MIN_VALUE ? d.maxFailing() : r.maxFailing(),
                     Double.isNaN(r.points()) ? d.points() : r.points(),
-                    Double.isNaN(r.zeroShare()) ? Math.min(d.zeroShare(), Double.isNaN(r.minShare()) ? d.minShare() : r.minShare())
-                            : r.zeroShare(),
+                    zeroShare,
                     r.metric() == null ? d.metric() : r.metric(),
                     r.alternates() == null ? d.alternates() : r.alternates(),
                     r.visibility() == null ? d.visibility() : r.visibility(),
                     Double.isNaN(r.flipThreshold()) ? d.flipThreshold() : r.flipThreshold());
-            if (full.zeroShare() > full.minShare()) {
-                throw new CompareException(String.format(Locale.ROOT, "rubric %s: the rule for \"%s\" has zero_share %s "
-                        + "above its min_share %s", file, r.match(), full.zeroShare(), full.minShare()));
+        }
+
+        /**
+         * A failing page scores in part between zero_share and min_share, so zero_share above min_share is a
+         * mistake (the file's, or between the file and --min), said with where each value came from.
+         */
+        private void inOrder(String at, String what, double zeroShare, String zeroFrom, double minShare, String minFrom)
+                throws CompareException {
+            if (zeroShare > minShare) {
+                throw new CompareException("rubric " + file + ": " + at + ": " + what + " has zero_share "
+                        + share(zeroShare) + " (" + zeroFrom + ") above its min_share " + share(minShare) + " ("
+                        + minFrom + "); zero_share must be at most min_share");
             }
-            return full;
+        }
+
+        /** 96 or 97.5, as the file would give it. */
+        private static String share(double percent) {
+            return BigDecimal.valueOf(percent).stripTrailingZeros().toPlainString();
+        }
+
+        /**
+         * A key given twice in one object: JSON readers keep the last without a word, so "points": 2, "points": 5
+         * would be 5 points. Said at the second, with the first's place.
+         */
+        private void once(String name, Map<String, String> seen) throws CompareException {
+            String first = seen.putIfAbsent(name, lineAndColumn());
+            if (first != null) {
+                throw error("\"" + name + "\" is given twice in this object (first at " + first + "); give it once");
+            }
         }
 
         private Path folder(String name) throws CompareException {
@@ -289,6 +390,13 @@ public final class Rubric {
 
         private CompareException error(String message) {
             return new CompareException("rubric " + file + ": " + place() + ": " + message);
+        }
+
+        /** E.g. "line 3, column 14", where the reader is. */
+        private String lineAndColumn() {
+            String place = place();
+            int path = place.indexOf(" (");
+            return path < 0 ? place : place.substring(0, path);
         }
 
         /** E.g. "line 3, column 14 ($.pages[0].tolerance)", from the reader's own account of where it is. */

@@ -22,6 +22,9 @@ import java.nio.file.Path;
 public record RubricRule(String match, int tolerance, int deviation, double minShare, int maxFailing, double points,
         double zeroShare, Comparison.Metric metric, Path alternates, String visibility, double flipThreshold) {
 
+    /** With partial scoring, the share at or below which a failing page scores nothing when no rule says (or min_share, if lower). */
+    public static final double ZERO_SHARE = 90;
+
     /** Today's defaults: 8/255, one pixel, 99 %, no pixel limit, one point, exact. */
     public static RubricRule defaults(int tolerance, double minShare, int deviation, Comparison.Metric metric) {
         return defaults(tolerance, minShare, deviation, metric, Comparison.FLIP_THRESHOLD);
@@ -30,7 +33,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
     /** The same, FLIP's threshold given. */
     public static RubricRule defaults(int tolerance, double minShare, int deviation, Comparison.Metric metric,
             double flipThreshold) {
-        return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(90, minShare), metric, null, "visible",
+        return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(ZERO_SHARE, minShare), metric, null, "visible",
                 flipThreshold);
     }
 

@@ -125,6 +125,37 @@ class GradingCommandTest {
     }
 
     @Test
+    void aKeyGivenTwiceInTheRubricIsAUsageError() throws Exception {
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\", \"points\": 2, \"points\": 5}\n]}");
+        Files.createDirectories(dir.resolve("subs"));
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1", "--rubric",
+                rubric.toString(), "--out-dir", dir.resolve("o").toString());
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("compare.json: line 2, column 38 ($.pages[0].points): \"points\" is given twice"),
+                run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+        CliRun check = CliRun.of("check", dir.resolve("subs").toString(), "--rubric", rubric.toString());
+        assertEquals(ExitCode.USAGE_ERROR, check.exitCode(), check.err());
+        assertTrue(check.err().contains("\"points\" is given twice"), check.err());
+    }
+
+    @Test
+    void aRubricRuleThatFitsNothingInTheRunIsAWarning() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("page1.png"), page(1));
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\"},\n {\"match\": \"9\"},\n {\"match\": \"pageZ\"}\n]}");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--rubric", rubric.toString(),
+                "--out-dir", dir.resolve("o").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), "a warning only: " + run.err());
+        assertTrue(run.err().contains("simpview compare: warning: rubric " + rubric + ": line 3, column 3 ($.pages[1]): "
+                + "the rule \"match\": \"9\" fits no page or scene of this run, so it is not used"), run.err());
+        assertTrue(run.err().contains("($.pages[2]): the rule \"match\": \"pageZ\" fits no page"), run.err());
+        assertFalse(run.err().contains("\"match\": \"1\" fits"), run.err());
+    }
+
+    @Test
     void checkPrintsOneTableAndPassesOnlyWhenEveryPictureDoes() throws Exception {
         Path mine = dir.resolve("mine");
         png(mine.resolve("page1.png"), page(1));

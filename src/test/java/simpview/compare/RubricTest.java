@@ -177,7 +177,96 @@ class RubricTest {
         assertTrue(bad("{\"pages\": [").getMessage().endsWith(
                 "line 1, column 12 ($.pages[0]): the file ends before its JSON does (a ']' or '}' missing?)"), "cut short");
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"min_share\": 95, \"zero_share\": 96}]}").getMessage()
-                .contains("zero_share 96.0 above its min_share 95.0"));
+                .endsWith("line 1, column 13 ($.pages[0]): the rule for \"1\" has zero_share 96 (its own, line 1, column "
+                        + "56) above its min_share 95 (its own, line 1, column 38); zero_share must be at most min_share"));
+    }
+
+    /** JSON readers keep the last of a key given twice; a rubric says so, at the second, whatever the object. */
+    @Test
+    void aKeyGivenTwiceInOneObjectIsAnError() throws Exception {
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": 2, \"points\": 5}]}").getMessage().endsWith(
+                "line 1, column 48 ($.pages[0].points): \"points\" is given twice in this object (first at line 1, "
+                        + "column 35); give it once"));
+        assertTrue(bad("{\"defaults\": {\"min_share\": 97,\n \"min_share\": 98}}").getMessage().endsWith(
+                "line 2, column 13 ($.defaults.min_share): \"min_share\" is given twice in this object (first at line 1, "
+                        + "column 26); give it once"));
+        assertTrue(bad("{\"pages\": [], \"defaults\": {}, \"pages\": [{\"match\": \"1\"}]}").getMessage()
+                .contains("($.pages): \"pages\" is given twice in this object (first at line 1, column 9)"));
+        // The same key in two objects is no repeat.
+        assertEquals(3, with("{\"match\": \"4\", \"points\": 3}, {\"match\": \"5\", \"points\": 4}").points());
+    }
+
+    /** A failing page scores in part between zero_share and min_share: one above the other is said with both places. */
+    @Test
+    void zeroShareAboveMinShareIsAnErrorSayingWhereEachCameFrom() throws Exception {
+        assertTrue(bad("{\"defaults\": {\"min_share\": 95, \"zero_share\": 96}}").getMessage().endsWith(
+                "line 1, column 15 ($.defaults): \"defaults\" has zero_share 96 (line 1, column 44) above its min_share 95 "
+                        + "(line 1, column 26); zero_share must be at most min_share"));
+        // Inherited from the defaults: silently lowered to the rule's min_share before.
+        assertTrue(bad("{\"defaults\": {\"zero_share\": 95},\n \"pages\": [{\"match\": \"8\", \"min_share\": 92}]}")
+                .getMessage().endsWith("line 2, column 13 ($.pages[0]): the rule for \"8\" has zero_share 95 (from "
+                        + "\"defaults\", line 1, column 27) above its min_share 92 (its own, line 2, column 38); zero_share "
+                        + "must be at most min_share"));
+        assertTrue(bad("{\"defaults\": {\"min_share\": 92.5},\n \"pages\": [{\"match\": \"8\", \"zero_share\": 93}]}")
+                .getMessage().contains("the rule for \"8\" has zero_share 93 (its own, line 2, column 39) above its "
+                        + "min_share 92.5 (from \"defaults\", line 1, column 26)"));
+        // min_share from the command line (--min 92), zero_share from the file.
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, "{\"pages\": [{\"match\": \"8\", \"zero_share\": 95}]}");
+        RubricRule min92 = RubricRule.defaults(8, 92, 1, Comparison.Metric.EXACT);
+        assertTrue(assertThrows(CompareException.class, () -> Rubric.read(file, min92)).getMessage().contains(
+                "has zero_share 95 (its own, line 1, column 39) above its min_share 92 (from --min: the rubric sets none)"));
+        Files.writeString(file, "{\"defaults\": {\"zero_share\": 95}}");
+        assertTrue(assertThrows(CompareException.class, () -> Rubric.read(file, min92)).getMessage().contains(
+                "\"defaults\" has zero_share 95 (line 1, column 27) above its min_share 92 (from --min: the rubric sets "
+                        + "none)"));
+    }
+
+    /** Left out everywhere, zero_share is 90 or the min_share, if lower: never an error, for a rule or the defaults. */
+    @Test
+    void anUnsetZeroShareFollowsTheMinShare() throws Exception {
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, "{\"defaults\": {\"min_share\": 85}, \"pages\": [{\"match\": \"1\", \"min_share\": 80},"
+                + " {\"match\": \"2\", \"min_share\": 97}]}");
+        Rubric rubric = Rubric.read(file, BASE);
+        assertEquals(85, rubric.defaults().zeroShare(), "the defaults' own min_share, lower than 90");
+        assertEquals(80, rubric.ruleFor("page1", 1).zeroShare());
+        assertEquals(90, rubric.ruleFor("page2", 2).zeroShare());
+        Files.writeString(file, "{\"defaults\": {\"min_share\": 97}}");
+        assertEquals(90, Rubric.read(file, RubricRule.defaults(8, 85, 1, Comparison.Metric.EXACT)).defaults().zeroShare(),
+                "the file's min_share, not --min's");
+    }
+
+    /** A rule that fits no page or scene of a run is named (its place and match): a warning, not an error. */
+    @Test
+    void rulesThatFitNothingInTheRunAreNamed() throws Exception {
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, """
+                {"pages": [
+                  {"match": "1-3", "points": 2},
+                  {"match": "9"},
+                  {"match": "pageZ"},
+                  {"match": "page*"},
+                  {"match": "a1-*-panel4", "metric": "flip"}
+                ]}
+                """);
+        Rubric rubric = Rubric.read(file, BASE);
+        java.util.Map<String, Integer> pages = new java.util.HashMap<>();
+        for (int p = 1; p <= 8; p++) {
+            pages.put("page" + p, p);
+        }
+        pages.put("a1-page1-panel4", 0);
+        assertEquals(java.util.List.of(
+                "rubric " + file + ": line 3, column 4 ($.pages[1]): the rule \"match\": \"9\" fits no page or scene of "
+                        + "this run, so it is not used",
+                "rubric " + file + ": line 4, column 4 ($.pages[2]): the rule \"match\": \"pageZ\" fits no page or scene "
+                        + "of this run, so it is not used"), rubric.unusedRules(pages));
+        // A run of scenes: the page ranges and the first assignment's panels fit nothing, a scene named pageZ does.
+        java.util.List<String> scenes = rubric.unusedRules(java.util.Map.of("pageZ", 0, "tomsPageJ", 0));
+        assertEquals(3, scenes.size(), scenes.toString());
+        assertTrue(scenes.get(0).contains("\"match\": \"1-3\"") && scenes.get(1).contains("\"match\": \"9\"")
+                && scenes.get(2).contains("\"match\": \"a1-*-panel4\""), scenes.toString());
+        assertEquals(java.util.List.of(), Rubric.of(BASE).unusedRules(pages), "no file, no rules");
     }
 
     /** JSON that is not JSON is told in words, where it goes wrong, without the JSON library's advice. */
