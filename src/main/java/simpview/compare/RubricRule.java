@@ -51,9 +51,10 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
     /**
      * The score of a comparison. All or nothing: the points when it passes, else 0.
      * Partial: the points when it passes; else the points times how far the share
-     * got from {@code zeroShare} towards {@code minShare} (0 at or below it), and
-     * when there are more failing pixels than allowed, times allowed / failing.
-     * Rounded to hundredths.
+     * got from {@code zeroShare} towards {@code minShare} (0 at or below it, at most 1:
+     * a page failing by its pixel count alone is not paid for a share above minShare),
+     * and when there are more failing pixels than allowed, times allowed / failing.
+     * Rounded down to hundredths (docs/grading.md gives it as a formula).
      */
     public double score(Comparison comparison, boolean partial) {
         if (passes(comparison)) {
