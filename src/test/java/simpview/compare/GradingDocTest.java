@@ -3,18 +3,30 @@ package simpview.compare;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.imageio.IIOImage;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.stream.ImageOutputStream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
 
 /**
- * What docs/grading.md says of partial scoring, held against the program: the walk-through's 0.26 points
- * step by step from the numbers it gives, and the formula's example of a page failing by its pixel count
- * alone.
+ * What docs/grading.md says of partial scoring and of JPEG, held against the program: the walk-through's
+ * 0.26 points step by step from the numbers it gives, the formula's example of a page failing by its pixel
+ * count alone, and a right page that fails once saved as JPEG.
  */
 class GradingDocTest {
+
+    @TempDir
+    Path dir;
 
     private static String grading() throws Exception {
         return Files.readString(Path.of(System.getProperty("simpview.projectDir", ".")).resolve("docs/grading.md"))
@@ -62,5 +74,26 @@ class GradingDocTest {
         Comparison c = failing(2040);
         assertEquals("99.51", Percent.number(c.verdictShare(8)));
         assertEquals(PAGE_C.score(c, true), Double.parseDouble(example.group(1)), 1e-9);
+    }
+
+    @Test
+    void aRightPageSavedAsJpegCanFail() throws Exception {
+        assertTrue(grading().contains("Hand in PNG, not JPEG."), "the warning");
+        BufferedImage page = new PageRenderer().renderImage(2, PageContext.defaults());
+        Path jpeg = dir.resolve("page2.jpg");
+        ImageWriter writer = ImageIO.getImageWritersByFormatName("jpeg").next();
+        ImageWriteParam param = writer.getDefaultWriteParam();
+        param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
+        param.setCompressionQuality(0.95f);
+        try (ImageOutputStream out = ImageIO.createImageOutputStream(jpeg.toFile())) {
+            writer.setOutput(out);
+            writer.write(null, new IIOImage(page, null, null), param);
+        } finally {
+            writer.dispose();
+        }
+        Comparison c = Comparison.of(Picture.ofPage(page, "page2.png").panel(), Picture.read(jpeg).panel());
+        assertEquals(1.0, Comparison.of(Picture.ofPage(page, "page2.png").panel(), Picture.ofPage(page, "page2.png").panel())
+                .verdictShare(8), 1e-12, "the page itself");
+        assertTrue(c.verdictShare(8) < 0.99, "Java's JPEG at quality 95: " + Percent.of(c.verdictShare(8)));
     }
 }
