@@ -151,7 +151,8 @@ public final class SimpviewCommand implements Callable<Integer> {
             if (bareWordNamingNothing(first)) {
                 throw new ParameterException(spec.commandLine(), "no command or scene file '" + first + "' (nor "
                         + first + ".simp): the commands are " + UsageWords.joined(List.copyOf(spec.commandLine()
-                        .getSubcommands().keySet()), "and") + "; with no command, simpview opens its window, on the scenes named");
+                        .getSubcommands().keySet()), "and")
+                        + "; with no command, simpview opens its window, on the scenes named");
             }
         }
         if (displayMissing.getAsBoolean()) {

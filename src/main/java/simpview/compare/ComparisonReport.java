@@ -107,7 +107,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
 
     /** How wide and tall a patch must be, at least, to be more than an edge or a line a pixel off. */
     static final int BLOB_SIDE = 4;
-    /** How much of its box a patch must fill, at least: a triangle fills half; an edge's pixels along a diagonal, a tenth. */
+    /** How much of its box a patch must fill, at least: a triangle fills half, an edge's pixels on a diagonal a tenth. */
     static final double BLOB_FILL = 0.4;
     /** And how many pixels: the course's pageC differs from simpview's in a 6x6 patch of 16 (its small cubes' edges). */
     static final int BLOB_PIXELS = 64;

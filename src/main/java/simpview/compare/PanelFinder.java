@@ -18,6 +18,9 @@ final class PanelFinder {
     private static final double FRAME_WHITE = 0.9;
     /** The panel's own outermost pixels must be at least this much not white. */
     private static final double BORDER_DARK = 0.25;
+    /** The sizes a page comes in, and what each is; a picture of one of their shapes at another size was scaled. */
+    private static final int[][] SIZES = {{PAGE, PAGE}, {872, 782}};
+    private static final String[] SIZE_NAMES = {"a 750x750 page", "a 872x782 window capture of a page"};
 
     private final int[] rgb;
     private final int width;
@@ -69,14 +72,11 @@ final class PanelFinder {
         PanelPlace found = finder.search();
         if (found == null) {
             throw new CompareException("no 650x650 panel found in " + name + " (" + width + "x" + height
-                    + "): looked for a square with white margins around it and a dark edge inside" + scaled(width, height));
+                    + "): looked for a square with white margins around it and a dark edge inside"
+                    + scaled(width, height));
         }
         return new PanelPlace(found.left(), found.top(), "found in a " + width + "x" + height + " picture");
     }
-
-    /** The sizes a page comes in, and what each is; a picture of one of their shapes at another size was scaled. */
-    private static final int[][] SIZES = {{PAGE, PAGE}, {872, 782}};
-    private static final String[] SIZE_NAMES = {"a 750x750 page", "a 872x782 window capture of a page"};
 
     /** For a picture the size of a page or capture scaled, a sentence that says so; else "". */
     static String scaled(int width, int height) {
