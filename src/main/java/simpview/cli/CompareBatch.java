@@ -27,7 +27,6 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
-import java.util.stream.Stream;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
@@ -64,7 +63,6 @@ public final class CompareBatch {
     static final String TABLE = "compare.md";
     static final String CSV = "compare.csv";
     static final String DIFFS = "diffs";
-    private static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
 
     /**
      * What a picture's name matched: a target, a page of the first assignment (compared panel by
@@ -293,14 +291,19 @@ public final class CompareBatch {
     private int run(Path dir, Outputs outputs, List<CompareTarget> wanted, Function<String, Optional<String>> namer,
             Function<String, Match> matcher) {
         List<Path> pictures;
+        FolderListing listing;
         try {
             List<Path> written = ownFolders(dir, outputs);
-            pictures = picturesIn(dir).stream().map(dir::relativize)
+            listing = FolderListing.of(dir);
+            pictures = listing.pictures().stream().map(dir::relativize)
                     .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p))
                     .map(dir::resolve).toList();
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
+        }
+        if (!listing.hiddenNote().isEmpty()) {
+            err.println(says + listing.hiddenNote());
         }
         claimOutputs(dir, pictures, outputs);
         String unwritable = outputs.problem();
@@ -742,15 +745,9 @@ public final class CompareBatch {
         return allPass ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 
-    /** The pictures under {@code dir}, in natural order of their paths (page2 before page10). */
+    /** The pictures under {@code dir}, in natural order of their paths (page2 before page10), hidden ones left out. */
     static List<Path> picturesIn(Path dir) throws IOException {
-        try (Stream<Path> files = Files.walk(dir)) {
-            return files.filter(Files::isRegularFile)
-                    .filter(f -> PICTURE_ENDINGS.stream().anyMatch(
-                            e -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(e)))
-                    .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(), dir.relativize(b).toString()))
-                    .toList();
-        }
+        return FolderListing.of(dir).pictures();
     }
 
     /**

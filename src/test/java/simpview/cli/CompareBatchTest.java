@@ -213,6 +213,34 @@ public class CompareBatchTest {
     }
 
     @Test
+    void hiddenFilesAndAMacZipsLeftoversAreLeftOutAndCounted() throws Exception {
+        Path class_ = dir.resolve("class");
+        png(class_.resolve("ann/page1.png"), page(1));
+        png(class_.resolve("ann/.page1.png"), page(2)); // a hidden copy: would be a second page 1, failing
+        png(class_.resolve("ann/.thumbs/page1.png"), page(3));
+        Files.createDirectories(class_.resolve("ann/__MACOSX"));
+        Files.write(class_.resolve("ann/__MACOSX/._page1.png"), new byte[] {0, 5, 22, 7, 0, 2, 0, 0});
+        Files.createDirectories(class_.resolve("__MACOSX/ann"));
+        Files.write(class_.resolve("__MACOSX/ann/._page1.png"), new byte[] {0, 5, 22, 7, 0, 2, 0, 0});
+        Path out = dir.resolve("out");
+
+        for (String[] args : new String[][] {
+            {"compare", "--dir", class_.toString(), "--pages", "1", "--out-dir", out.toString()},
+            {"check", class_.resolve("ann").toString(), "--pages", "1"}}) {
+            CliRun run = CliRun.of(args);
+            assertEquals(ExitCode.OK, run.exitCode(), String.join(" ", args) + ": " + run.out() + run.err());
+            assertFalse(run.out().contains("MACOSX") || run.out().contains(".page1") || run.out().contains(".thumbs"),
+                    run.out());
+        }
+        assertEquals(List.of("ann/page1.png"), csvRows(out).stream().skip(1).map(r -> r.substring(0, r.indexOf(',')))
+                .toList(), "no __MACOSX submission, no second page 1");
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1", "--out-dir", out.toString());
+        assertEquals(1, run.err().split("hidden picture", -1).length - 1, "said once: " + run.err());
+        assertTrue(run.err().contains("simpview compare: 4 hidden pictures left out (a name starting with '.', or in a "
+                + "__MACOSX folder: a Mac's zip leftovers)"), run.err());
+    }
+
+    @Test
     void aFolderThatIsNotThereIsAClearError() {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());

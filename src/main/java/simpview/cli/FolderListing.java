@@ -1,0 +1,62 @@
+package simpview.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Stream;
+import simpview.pages.SceneList;
+
+/**
+ * The pictures of a folder (and its subfolders) as a batch takes them, in natural order of their paths
+ * (page2 before page10), and how many were left out as hidden: a file or folder whose name starts with
+ * '.', or a folder named __MACOSX. A Mac's zip puts a "._page1.png" of a few bytes beside every file in
+ * __MACOSX/, and a hidden copy is no picture the student meant to hand in.
+ *
+ * @param pictures the pictures, by their paths under the folder (the folder prepended)
+ * @param hidden how many pictures were left out as hidden
+ */
+record FolderListing(List<Path> pictures, int hidden) {
+
+    /** The endings of the pictures simpview reads (PNG, JPEG, GIF, BMP), in lower case. */
+    static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
+    /** The folder a Mac's zip puts its resource forks in. */
+    static final String MAC_LEFTOVERS = "__MACOSX";
+
+    /** The pictures under {@code dir}, hidden ones left out and counted. */
+    static FolderListing of(Path dir) throws IOException {
+        List<Path> all;
+        try (Stream<Path> files = Files.walk(dir)) {
+            all = files.filter(Files::isRegularFile).filter(FolderListing::isPicture)
+                    .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(),
+                            dir.relativize(b).toString()))
+                    .toList();
+        }
+        List<Path> shown = all.stream().filter(f -> !hidden(dir.relativize(f))).toList();
+        return new FolderListing(shown, all.size() - shown.size());
+    }
+
+    /** Whether a file's name ends like a picture simpview reads. */
+    static boolean isPicture(Path file) {
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        return PICTURE_ENDINGS.stream().anyMatch(name::endsWith);
+    }
+
+    /** Whether a path under the folder is hidden: a name on its way starts with '.', or a folder is __MACOSX. */
+    static boolean hidden(Path relative) {
+        for (Path part : relative) {
+            String name = part.toString();
+            if (name.startsWith(".") || name.equals(MAC_LEFTOVERS)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** What the batch says of the hidden pictures it left out, once: "" when there were none. */
+    String hiddenNote() {
+        return hidden == 0 ? "" : simpview.compare.Count.of(hidden, "hidden picture") + " left out (a name starting "
+                + "with '.', or in a " + MAC_LEFTOVERS + " folder: a Mac's zip leftovers)";
+    }
+}
