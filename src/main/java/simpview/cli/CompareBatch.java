@@ -136,6 +136,15 @@ public final class CompareBatch {
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
     enum DiffImages { ALL, FAILING, NONE }
 
+    /** Where a batch's diff images go ({@code outDir} null: nowhere), which pictures get one, and their names. */
+    private record DiffPlan(Path outDir, DiffImages which, DiffNames names) {
+
+        /** Whether a picture (or panel) that passes or not gets a diff image. */
+        boolean writes(boolean passes) {
+            return outDir != null && which != DiffImages.NONE && !(which == DiffImages.FAILING && passes);
+        }
+    }
+
     private final OwnPictures own;
     private final Rubric rubric;
     private final boolean partial;
@@ -305,7 +314,8 @@ public final class CompareBatch {
         if (!listing.hiddenNote().isEmpty()) {
             err.println(says + listing.hiddenNote());
         }
-        claimOutputs(dir, pictures, outputs);
+        DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> dir.relativize(p).toString()).toList());
+        claimOutputs(dir, pictures, outputs, diffNames);
         String unwritable = outputs.problem();
         if (unwritable != null) {
             err.println(says + "cannot write the results: " + unwritable);
@@ -319,8 +329,8 @@ public final class CompareBatch {
         Map<CompareTarget, Object> drawn = drawAll(matches);
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, outputs.outDir(),
-                outputs.diffs());
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates,
+                new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames));
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
@@ -349,7 +359,7 @@ public final class CompareBatch {
      *
      * @throws UsageProblem when one would overwrite a file read, or two are one file
      */
-    private void claimOutputs(Path dir, List<Path> pictures, Outputs outputs) {
+    private void claimOutputs(Path dir, List<Path> pictures, Outputs outputs, DiffNames diffNames) {
         OutputPaths files = outputs.files();
         pictures.forEach(picture -> files.reads(picture, "a picture to compare"));
         Set<Path> alternates = new HashSet<>();
@@ -372,16 +382,10 @@ public final class CompareBatch {
             for (Path picture : pictures) {
                 String relative = dir.relativize(picture).toString();
                 for (int panel = 0; panel <= A1Layout.PANELS; panel++) {
-                    files.notRead(outDir.resolve(diffName(relative, panel)), tables);
+                    files.notRead(outDir.resolve(diffNames.of(relative, panel)), tables);
                 }
             }
         }
-    }
-
-    /** A picture's diff image under the out folder: of its panel (0), or of the first assignment's panel. */
-    private static String diffName(String relative, int panel) {
-        return DIFFS + "/" + relative.replaceAll("[/\\\\]", "_").replaceFirst("\\.[^.]*$", "")
-                + (panel == 0 ? "" : "-panel" + panel) + "-diff.png";
     }
 
     /** The rubric's key of a target: "page6" for page 6, "pageC" for pageC.simp. */
@@ -466,7 +470,7 @@ public final class CompareBatch {
     /** The comparisons, on a thread a core up to four; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Object> drawn, Map<Integer, BufferedImage> firstAssignment,
-            Map<CompareTarget, List<AcceptedPanel>> alternates, Path outDir, DiffImages diffs) {
+            Map<CompareTarget, List<AcceptedPanel>> alternates, DiffPlan diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
@@ -482,13 +486,13 @@ public final class CompareBatch {
                     List<BatchRow> made;
                     if (match.firstAssignmentPage() > 0) {
                         int page = match.firstAssignmentPage();
-                        made = compareFirstAssignment(relative, page, firstAssignment.get(page), outDir, diffs,
+                        made = compareFirstAssignment(relative, page, firstAssignment.get(page), diffs,
                                 ours -> PanelGridComparison.cut(picture, ours, firstAssignmentPanels()));
                     } else if (match.target() == null) {
                         made = List.of(BatchRow.skipped(relative, match.skipped()));
                     } else {
                         made = compareRead(picture, relative, match.target(), drawn.get(match.target()),
-                                alternates.get(match.target()), firstAssignment, outDir, diffs);
+                                alternates.get(match.target()), firstAssignment, diffs);
                     }
                     synchronized (err) {
                         err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(made));
@@ -517,24 +521,23 @@ public final class CompareBatch {
      * named page2.png), it is compared as that, panel by panel; else as the page it names.
      */
     private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Object ours,
-            List<AcceptedPanel> alternates, Map<Integer, BufferedImage> firstAssignment, Path outDir,
-            DiffImages diffs) {
+            List<AcceptedPanel> alternates, Map<Integer, BufferedImage> firstAssignment, DiffPlan diffs) {
         if (!target.isPage() || target.page() > Assignment1.COUNT || ours instanceof String) {
-            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+            return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
         Picture theirs;
         try {
             theirs = Picture.read(file);
         } catch (CompareException e) {
-            return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, null));
+            return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
         int page = target.page();
         if (PanelGridComparison.holds(theirs, 2 * A1Layout.PANEL + 3 * A1Layout.MARGIN, firstAssignmentPanels())) {
             BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
-            return compareFirstAssignment(relative, page, first, outDir, diffs,
+            return compareFirstAssignment(relative, page, first, diffs,
                     mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
         }
-        return List.of(compare(file, relative, target, ours, alternates, outDir, diffs, theirs));
+        return List.of(compare(file, relative, target, ours, alternates, diffs, theirs));
     }
 
     /** How a first-assignment picture is cut beside simpview's page (its file read, or a picture already read). */
@@ -567,7 +570,7 @@ public final class CompareBatch {
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Object ours,
-            List<AcceptedPanel> alternates, Path outDir, DiffImages diffs, Picture read) {
+            List<AcceptedPanel> alternates, DiffPlan diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         if (ours instanceof String problem) {
@@ -598,12 +601,12 @@ public final class CompareBatch {
             }
         }
         double score = rule.score(best.comparison(), partial);
-        if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && best.passes()) {
+        if (!diffs.writes(best.passes())) {
             return BatchRow.compared(relative, label, best, "", rule, score, bestName);
         }
-        String diff = diffName(relative, 0);
+        String diff = diffs.names().of(relative, 0);
         try {
-            PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), outDir.resolve(diff));
+            PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), diffs.outDir().resolve(diff));
         } catch (IOException e) {
             return BatchRow.compared(relative, label, best, "", rule, score, bestName)
                     .withoutDiff("diff not written: " + e.getMessage());
@@ -645,8 +648,8 @@ public final class CompareBatch {
      * A picture of one of the first assignment's pages, panel by panel against simpview's page: one row per
      * panel, or one ERROR row when it cannot be read or holds no such page. Thread-safe.
      */
-    private List<BatchRow> compareFirstAssignment(String relative, int page, BufferedImage ours, Path outDir,
-            DiffImages diffs, Cutter cutter) {
+    private List<BatchRow> compareFirstAssignment(String relative, int page, BufferedImage ours, DiffPlan diffs,
+            Cutter cutter) {
         PanelGridComparison.Cut cut;
         try {
             cut = cutter.cut(ours);
@@ -664,13 +667,13 @@ public final class CompareBatch {
             double score = rule.score(comparison, partial);
             boolean passes = rule.passes(comparison);
             String label = firstAssignmentLabel(page, k);
-            if (outDir == null || diffs == DiffImages.NONE || diffs == DiffImages.FAILING && passes) {
+            if (!diffs.writes(passes)) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note));
                 continue;
             }
-            String diff = diffName(relative, k);
+            String diff = diffs.names().of(relative, k);
             try {
-                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), outDir.resolve(diff));
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", "diff not written: " + e.getMessage()));

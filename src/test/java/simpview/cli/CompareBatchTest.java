@@ -213,6 +213,25 @@ public class CompareBatchTest {
     }
 
     @Test
+    void noTwoPicturesShareADiffImage() throws Exception {
+        Path class_ = dir.resolve("coll");
+        png(class_.resolve("s/t_page1.png"), page(1));
+        png(class_.resolve("s_t/page1.png"), page(2));
+        png(class_.resolve("u/page2.png"), page(2));
+        Files.createDirectories(class_.resolve("u"));
+        ImageIO.write(page(3), "bmp", class_.resolve("u/page2.bmp").toFile());
+        Path out = dir.resolve("out");
+        CliRun.of("compare", "--dir", class_.toString(), "--pages", "1-2", "--out-dir", out.toString());
+        List<String> diffs = csvRows(out).stream().skip(1).filter(r -> !r.contains(",MISSING,"))
+                .map(r -> r.split(",")[11]).toList();
+        assertEquals(List.of("diffs/s_t_page1-diff.png", "diffs/s_t_page1-2-diff.png", "diffs/u_page2-diff.png",
+                "diffs/u_page2-2-diff.png"), diffs);
+        try (var written = Files.list(out.resolve("diffs"))) {
+            assertEquals(4, written.count(), "none written over another");
+        }
+    }
+
+    @Test
     void hiddenFilesAndAMacZipsLeftoversAreLeftOutAndCounted() throws Exception {
         Path class_ = dir.resolve("class");
         png(class_.resolve("ann/page1.png"), page(1));
