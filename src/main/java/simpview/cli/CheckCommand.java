@@ -39,7 +39,8 @@ import simpview.surface.DrawingThreads;
             "  simpview check my-pages/ --pages 1-3 --seed 7 --out-dir check-report/"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture found passes",
-            "1:some picture fails or cannot be read, no picture was found, or a scene error",
+            "1:some picture fails or cannot be read, no picture was found, a scene error, or an output file cannot "
+                + "be written",
             "2:usage error"})
 public final class CheckCommand implements Callable<Integer> {
 

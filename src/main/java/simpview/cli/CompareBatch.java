@@ -63,6 +63,8 @@ public final class CompareBatch {
     static final String TABLE = "compare.md";
     static final String CSV = "compare.csv";
     static final String DIFFS = "diffs";
+    /** What a row's note starts with when its diff image could not be written; the reason follows. */
+    private static final String DIFF_NOT_WRITTEN = "diff not written: ";
 
     /**
      * What a picture's name matched: a target, a page of the first assignment (compared panel by
@@ -329,8 +331,8 @@ public final class CompareBatch {
         Map<CompareTarget, Object> drawn = drawAll(matches);
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates,
-                new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames));
+        DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames);
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan);
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
@@ -350,7 +352,24 @@ public final class CompareBatch {
                 asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
             }
         }
-        return writeResults(rows, asked, outputs, seconds);
+        int written = writeResults(rows, asked, outputs, seconds);
+        return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /**
+     * Whether some diff image could not be written, said once on stderr with the first reason (each row
+     * says its own): an output file that cannot be written fails the run, as a table that cannot does.
+     */
+    private boolean saidUnwrittenDiffs(List<BatchRow> rows, DiffPlan diffs) {
+        List<BatchRow> unwritten = rows.stream().filter(r -> r.compared() && r.diff().isEmpty()
+                && diffs.writes(r.result() == BatchRow.Result.PASS)).toList();
+        if (unwritten.isEmpty()) {
+            return false;
+        }
+        String first = unwritten.get(0).note().replaceFirst("^" + DIFF_NOT_WRITTEN, "");
+        err.println(says + simpview.compare.Count.of(unwritten.size(), "diff image") + " could not be written ("
+                + first + (unwritten.size() == 1 ? "" : "; each row says why") + ")");
+        return true;
     }
 
     /**
@@ -609,7 +628,7 @@ public final class CompareBatch {
             PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), diffs.outDir().resolve(diff));
         } catch (IOException e) {
             return BatchRow.compared(relative, label, best, "", rule, score, bestName)
-                    .withoutDiff("diff not written: " + e.getMessage());
+                    .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage());
         }
         return BatchRow.compared(relative, label, best, diff, rule, score, bestName);
     }
@@ -676,7 +695,7 @@ public final class CompareBatch {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
             } catch (IOException e) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", "diff not written: " + e.getMessage()));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", DIFF_NOT_WRITTEN + e.getMessage()));
             }
         }
         return rows;

@@ -57,7 +57,8 @@ import simpview.surface.DrawingThreads;
             "Grading (rubric, Gradescope, JUnit, the web report) and 'simpview check': docs/grading.md."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture reaches --min",
-            "1:some picture is below --min, or cannot be read, or has no panel; or a scene error",
+            "1:some picture is below --min, or cannot be read, or has no panel; a scene error; or an output file "
+                + "(a table, a report, a diff image) cannot be written",
             "2:usage error"})
 public final class CompareCommand implements Callable<Integer> {
 

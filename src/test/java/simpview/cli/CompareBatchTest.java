@@ -232,6 +232,28 @@ public class CompareBatchTest {
     }
 
     @Test
+    void aDiffImageThatCannotBeWrittenFailsTheRun() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        png(mine.resolve("page2.png"), page(3));
+        Path out = dir.resolve("out");
+        // A folder where each diff image goes: it cannot be written, even by root (permissions would not stop root).
+        Files.createDirectories(out.resolve("diffs/page1-diff.png"));
+        Files.createDirectories(out.resolve("diffs/page2-diff.png"));
+        CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1", "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "page 1 passes, but its diff image is not written: " + run.err());
+        assertTrue(csvRows(out).get(1).contains(",PASS,white,,diff not written: cannot write "), csvRows(out).get(1));
+        assertTrue(run.err().contains("simpview compare: 1 diff image could not be written (cannot write "
+                + out.resolve("diffs/page1-diff.png") + ": it is a folder)"), run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+
+        // check writes diff images of the pictures that fail only (which fail the run already): it says so too.
+        CliRun check = CliRun.of("check", mine.toString(), "--pages", "2", "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.err());
+        assertTrue(check.err().contains("simpview check: 1 diff image could not be written (cannot write "), check.err());
+    }
+
+    @Test
     void hiddenFilesAndAMacZipsLeftoversAreLeftOutAndCounted() throws Exception {
         Path class_ = dir.resolve("class");
         png(class_.resolve("ann/page1.png"), page(1));
