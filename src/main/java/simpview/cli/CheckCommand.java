@@ -165,8 +165,11 @@ public final class CheckCommand implements Callable<Integer> {
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }
         String table = out.toString();
-        if (table.isEmpty() || err.toString().contains("no pictures (")) {
+        if (err.toString().contains("no pictures (")) {
             return "No pictures (.png, .jpg, .gif, .bmp) in " + folder + ".\n";
+        }
+        if (table.isEmpty()) {
+            return err.toString(); // the batch stopped before comparing (a scene simpview cannot draw): why
         }
         return (rules == null ? "" : "rubric: " + rules.getFileName() + " (the folder's own)\n") + table;
     }

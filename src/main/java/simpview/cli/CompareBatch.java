@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
@@ -48,8 +49,11 @@ import simpview.compare.Wanted;
 import simpview.compare.PanelGridComparison;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
 import simpview.pages.Page;
+import simpview.pages.PageContext;
+import simpview.pages.ScenePage;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 
@@ -328,7 +332,12 @@ public final class CompareBatch {
         for (Path picture : pictures) {
             matches.add(matcher.apply(dir.relativize(picture).toString()));
         }
-        Map<CompareTarget, Object> drawn = drawAll(matches);
+        Map<CompareTarget, Picture> drawn = new HashMap<>();
+        Map<CompareTarget, SceneException> undrawable = drawAll(matches, drawn);
+        if (!undrawable.isEmpty()) {
+            err.print(stopped(undrawable, dir));
+            return ExitCode.SCENE_ERROR;
+        }
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames);
@@ -459,19 +468,70 @@ public final class CompareBatch {
         return all;
     }
 
-    /** Each page or scene the pictures need, drawn once, in order (the canvas is one): its Picture or its error. */
-    private Map<CompareTarget, Object> drawAll(List<Match> matches) {
-        Map<CompareTarget, Object> drawn = new HashMap<>();
+    /**
+     * Draws each page or scene the pictures need into {@code drawn}, once, in order (the canvas is one); the
+     * error of each that simpview cannot draw is returned, in order (none when all were drawn).
+     */
+    private Map<CompareTarget, SceneException> drawAll(List<Match> matches, Map<CompareTarget, Picture> drawn) {
+        Map<CompareTarget, SceneException> undrawable = new LinkedHashMap<>();
         for (Match match : matches) {
-            if (match.target() != null && !drawn.containsKey(match.target())) {
+            CompareTarget target = match.target();
+            if (target != null && !drawn.containsKey(target) && !undrawable.containsKey(target)) {
                 try {
-                    drawn.put(match.target(), own.of(match.target()));
+                    drawn.put(target, own.of(target));
                 } catch (SceneException e) {
-                    drawn.put(match.target(), "simpview cannot draw it: " + e.getMessage());
+                    undrawable.put(target, e);
                 }
             }
         }
-        return drawn;
+        return undrawable;
+    }
+
+    /**
+     * Why the batch stopped before comparing anything: the pages or scenes simpview cannot draw, each with its
+     * scene error (file:line:column), and the option that names their files. Grading on would score every
+     * picture of them 0 for the teacher's setup, not for what the student drew.
+     */
+    private String stopped(Map<CompareTarget, SceneException> undrawable, Path dir) {
+        List<String> names = undrawable.keySet().stream().map(CompareBatch::named).toList();
+        String all = names.size() == 1 ? names.get(0)
+                : String.join(", ", names.subList(0, names.size() - 1)) + " and " + names.get(names.size() - 1);
+        StringBuilder text = new StringBuilder(says + "nothing was graded: simpview cannot draw " + all
+                + " itself, so every picture of " + (names.size() == 1 ? "it" : "them")
+                + " would score 0 whatever it shows:\n");
+        undrawable.forEach((target, e) -> text.append("  ").append(named(target)).append(": ")
+                .append(e.getMessage().replace("\n", "\n  ")).append('\n'));
+        Set<String> fixes = new LinkedHashSet<>();
+        undrawable.keySet().forEach(target -> fixes.add(fixFor(target, dir)));
+        fixes.forEach(fix -> text.append(fix).append('\n'));
+        return text.append("No picture was compared and no result file written.\n").toString();
+    }
+
+    /** "page 6" or "pageC.simp", as the messages name a page or scene. */
+    private static String named(CompareTarget target) {
+        return target.isPage() ? "page " + target.page() : target.scene().getFileName().toString();
+    }
+
+    /** What to change so that simpview can draw {@code target}: the option (or folder) that names its file. */
+    private String fixFor(CompareTarget target, Path dir) {
+        PageContext context = own.context();
+        if (target.isPage() && Assignment2.page(target.page()) instanceof ScenePage page && page.isCourses()) {
+            Path folder = context.simpDir().toAbsolutePath().normalize();
+            return context.simpDir().equals(context.ownSimpDir())
+                    ? "Name the folder of the course's page6.simp to page8.simp with --simp-dir DIR: without it they "
+                            + "are looked for in simpview's own scene folder, " + folder + "."
+                    : "--simp-dir names the folder of the course's page6.simp to page8.simp, here " + folder
+                            + ": correct the file, or name the right folder.";
+        }
+        if (target.isPage()) {
+            return "Pages 4 and 5 are simpview's own scenes, in " + context.ownSimpDir().toAbsolutePath().normalize()
+                    + ": that installation of simpview is incomplete.";
+        }
+        if (target.scene().toAbsolutePath().normalize().startsWith(dir.toAbsolutePath().normalize())) {
+            return "It is a scene of the folder checked (a picture named like it is compared with it): correct it, "
+                    + "or name the course's scenes with --scene.";
+        }
+        return "--scene names it: correct it, or name the right scene or folder with --scene.";
     }
 
     /** The first assignment's pages the pictures need, drawn once each (they read no files). */
@@ -488,7 +548,7 @@ public final class CompareBatch {
 
     /** The comparisons, on a thread a core up to four; rows in the pictures' order. */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Object> drawn, Map<Integer, BufferedImage> firstAssignment,
+            Map<CompareTarget, Picture> drawn, Map<Integer, BufferedImage> firstAssignment,
             Map<CompareTarget, List<AcceptedPanel>> alternates, DiffPlan diffs) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
@@ -539,9 +599,9 @@ public final class CompareBatch {
      * first assignment's and the picture holds a first-assignment page (four framed 300x300 panels: a capture
      * named page2.png), it is compared as that, panel by panel; else as the page it names.
      */
-    private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Object ours,
+    private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Picture ours,
             List<AcceptedPanel> alternates, Map<Integer, BufferedImage> firstAssignment, DiffPlan diffs) {
-        if (!target.isPage() || target.page() > Assignment1.COUNT || ours instanceof String) {
+        if (!target.isPage() || target.page() > Assignment1.COUNT) {
             return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
         Picture theirs;
@@ -584,17 +644,13 @@ public final class CompareBatch {
     }
 
     /**
-     * One picture against simpview's (a Picture, or the error that kept it from being drawn),
-     * and when it does not pass, against each accepted alternate: the first that passes is its
+     * One picture against simpview's, and when it does not pass, against each accepted alternate: the first that passes is its
      * result; when none does, the comparison with simpview's own is. Thread-safe.
      */
-    private BatchRow compare(Path file, String relative, CompareTarget target, Object ours,
+    private BatchRow compare(Path file, String relative, CompareTarget target, Picture ours,
             List<AcceptedPanel> alternates, DiffPlan diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
-        if (ours instanceof String problem) {
-            return BatchRow.broken(relative, label, problem, rule);
-        }
         Picture theirs = read;
         if (theirs == null) {
             try {
@@ -604,7 +660,7 @@ public final class CompareBatch {
             }
         }
         List<AcceptedPanel> references = new ArrayList<>();
-        references.add(new AcceptedPanel("", ((Picture) ours).panel()));
+        references.add(new AcceptedPanel("", ours.panel()));
         references.addAll(alternates);
         ComparisonReport best = null;
         String bestName = "";

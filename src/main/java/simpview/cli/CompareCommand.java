@@ -48,8 +48,9 @@ import simpview.surface.DrawingThreads;
             "  simpview compare a1-page2.png --assignment 1 --page 2",
             "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
             "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
-            "  simpview compare --dir subs/ --pages 1-8 --rubric compare.json \\",
-            "      --gradescope results.json --junit results.xml --html report/",
+            "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ \\",
+            "      --rubric compare.json --gradescope results.json --junit results.xml \\",
+            "      --html report/",
             "",
             "A pixel matches with slack when the other picture has its colour within the tolerance at that pixel "
                 + "or one of its 8 neighbours (--deviation 2: its 24), both ways round. Regions are panel rectangles: "

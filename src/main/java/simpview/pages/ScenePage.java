@@ -37,6 +37,11 @@ public final class ScenePage implements Page {
         return title;
     }
 
+    /** Whether it is one of the course's scenes (read from the folder --simp-dir names), not one of simpview's own. */
+    public boolean isCourses() {
+        return !ownScene;
+    }
+
     /** The depth cue's near colour (far is black). */
     public Rgb near() {
         return near;

@@ -282,6 +282,50 @@ public class CompareBatchTest {
     }
 
     @Test
+    void aPageSimpviewCannotDrawStopsTheBatchBeforeAnythingIsGraded() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("ann/page6.png"), page(1));
+        Path course = Files.createDirectories(dir.resolve("course")); // no page6.simp: the teacher's slip
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--simp-dir", course.toString(),
+                "--out-dir", out.toString(), "--gradescope", out.resolve("results.json").toString(), "--junit",
+                dir.resolve("results.xml").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("simpview compare: nothing was graded: simpview cannot draw page 6 itself, so "
+                + "every picture of it would score 0 whatever it shows:\n  page 6: "), run.err());
+        assertTrue(run.err().contains("page6.simp was not found in " + course.toAbsolutePath()), run.err());
+        assertTrue(run.err().contains("--simp-dir names the folder of the course's page6.simp to page8.simp, here "
+                + course.toAbsolutePath() + ": correct the file, or name the right folder."), run.err());
+        assertTrue(run.err().endsWith("No picture was compared and no result file written.\n"), run.err());
+        assertFalse(run.err().contains("[1/"), "no picture compared: " + run.err());
+        assertFalse(Files.exists(out) || Files.exists(dir.resolve("results.xml")), "no result file");
+        assertFalse(run.showsStackTrace(), run.err());
+
+        // A scene with an error: its file, line and column, and the option that names it.
+        Files.writeString(course.resolve("page6.simp"), "polygon (1,2\n");
+        CliRun wrong = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--simp-dir",
+                course.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, wrong.exitCode(), wrong.err());
+        assertTrue(wrong.err().contains("  page 6: " + course.resolve("page6.simp") + ":1:13: "), wrong.err());
+        assertFalse(Files.exists(out), "no result file");
+        Path scenes = scenes("bar");
+        Files.writeString(scenes.resolve("bar.simp"), "polygon (1,2\n");
+        render(scenes.resolve("tri.simp"), subs.resolve("ann/tri.png"));
+        png(subs.resolve("ann/bar.png"), page(1));
+        for (String command : new String[] {"compare --dir " + subs + " --out-dir " + out, "check " + subs.resolve("ann")}) {
+            CliRun scene = CliRun.of((command + " --scene " + scenes).split(" "));
+            assertEquals(ExitCode.SCENE_ERROR, scene.exitCode(), scene.err());
+            assertTrue(scene.err().contains("nothing was graded: simpview cannot draw bar.simp itself"), scene.err());
+            assertTrue(scene.err().contains("  bar.simp: " + scenes.resolve("bar.simp") + ":1:13: "), scene.err());
+            assertTrue(scene.err().contains("--scene names it: correct it, or name the right scene or folder with --scene."),
+                    scene.err());
+            assertEquals("", scene.out(), "no table: " + scene.out());
+        }
+        assertFalse(Files.exists(out), "no result file");
+    }
+
+    @Test
     void aFolderThatIsNotThereIsAClearError() {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());

@@ -32,6 +32,9 @@ public class HelpExamplesTest {
             CommandLine parser = new CommandLine(new SimpviewCommand(() -> false));
             assertDoesNotThrow(() -> parser.parseArgs(words.subList(1, words.size()).toArray(String[]::new)),
                     example);
+            // pages 6 to 8 are the course's scenes: copied without --simp-dir, such an example grades nothing
+            boolean coursePages = example.matches(".* --pages [0-9,-]*(6|7|8|[1-5]-[6-8]).*");
+            assertTrue(!coursePages || example.contains("--simp-dir "), "an example without --simp-dir: " + example);
         }
     }
 
