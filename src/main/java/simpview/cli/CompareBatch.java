@@ -28,6 +28,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
+import java.util.function.Predicate;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
@@ -38,6 +39,7 @@ import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
+import simpview.compare.OnePerPage;
 import simpview.compare.OutputFiles;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
@@ -72,12 +74,22 @@ public final class CompareBatch {
 
     /**
      * What a picture's name matched: a target, a page of the first assignment (compared panel by
-     * panel), or why it was skipped.
+     * panel), or why it was skipped; {@code alone}: the picture is a submission of its own (one scene for
+     * every picture: one picture a student), not one of its folder's.
      */
-    private record Match(CompareTarget target, String skipped, int firstAssignmentPage) {
+    private record Match(CompareTarget target, String skipped, int firstAssignmentPage, boolean alone) {
 
         Match(CompareTarget target, String skipped) {
-            this(target, skipped, 0);
+            this(target, skipped, 0, false);
+        }
+
+        Match(CompareTarget target, String skipped, int firstAssignmentPage) {
+            this(target, skipped, firstAssignmentPage, false);
+        }
+
+        /** A picture of the one scene every picture is compared with: a student's, whatever folder it is in. */
+        static Match alone(CompareTarget target) {
+            return new Match(target, null, 0, true);
         }
     }
 
@@ -249,7 +261,7 @@ public final class CompareBatch {
         if (Files.isRegularFile(scene)) {
             warnUnusedRules(Map.of(SubmissionNames.stem(scene.getFileName().toString()), 0));
             return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
-                    relative -> new Match(CompareTarget.scene(scene), null));
+                    relative -> Match.alone(CompareTarget.scene(scene)));
         }
         if (!Files.isDirectory(scene)) {
             err.println(says + "--scene " + scene + ": no such file or folder");
@@ -361,7 +373,18 @@ public final class CompareBatch {
                 asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
             }
         }
-        int written = writeResults(rows, asked, outputs, seconds);
+        Set<String> plainlyNamed = new HashSet<>();
+        Set<String> alone = new HashSet<>();
+        for (int i = 0; i < pictures.size(); i++) {
+            String relative = dir.relativize(pictures.get(i)).toString();
+            if (namesItsPageOnly(relative, matches.get(i))) {
+                plainlyNamed.add(relative);
+            }
+            if (matches.get(i).alone()) {
+                alone.add(relative);
+            }
+        }
+        int written = writeResults(rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
     }
 
@@ -777,9 +800,36 @@ public final class CompareBatch {
         return false;
     }
 
-    private int writeResults(List<BatchRow> rows, List<Wanted> wanted, Outputs outputs, double seconds) {
-        RubricRule base = rubric.defaults();
+    /**
+     * Whether a picture's file name is the name of the page or scene it was matched to and nothing else
+     * (page3.png, pageC.png, a1-page2.png): of several pictures of one page, that one counts.
+     */
+    private static boolean namesItsPageOnly(String relative, Match match) {
+        String name = fileName(relative);
+        int firstAssignmentPage = match.firstAssignmentPage();
+        if (firstAssignmentPage > 0) {
+            return SubmissionNames.isFirstAssignmentPageName(name, firstAssignmentPage)
+                    || SubmissionNames.isPageName(name, firstAssignmentPage); // a1/page2.png
+        }
+        CompareTarget target = match.target();
+        if (target == null) {
+            return false;
+        }
+        return target.isPage() ? SubmissionNames.isPageName(name, target.page())
+                : SubmissionNames.isSceneName(name, key(target));
+    }
+
+    /**
+     * Writes and prints the results, each page counted once per submission ({@link OnePerPage}: the pictures of
+     * a page but one are rows that score nothing), and says what the exit code is: 0 when every row that
+     * counts passes.
+     */
+    private int writeResults(List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
+            Predicate<String> plainlyNamed, Predicate<String> alone) {
         // A student's folder (check) is one submission, however its pictures are foldered; a class's, one a folder.
+        List<BatchRow> rows = outputs.student() ? OnePerPage.asOne(compared, plainlyNamed)
+                : OnePerPage.bySubmission(compared, plainlyNamed, alone);
+        RubricRule base = rubric.defaults();
         List<Map.Entry<String, Wanted>> missing = outputs.student()
                 ? Wanted.missing(wanted, rows).stream().map(w -> Map.entry("", w)).toList()
                 : Wanted.missingBySubmission(wanted, rows);
@@ -792,7 +842,9 @@ public final class CompareBatch {
                 OutputFiles.writeString(outDir.resolve(CSV), BatchTable.csv(rows, missing));
             }
             if (outputs.gradescope() != null) {
-                OutputFiles.writeString(outputs.gradescope(), GradescopeResults.json(rows, wanted, seconds));
+                // results.json is one submission's, however its pictures are foldered (see grading.md)
+                OutputFiles.writeString(outputs.gradescope(),
+                        GradescopeResults.json(OnePerPage.asOne(compared, plainlyNamed), wanted, seconds));
             }
             if (outputs.junit() != null) {
                 OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
@@ -816,7 +868,8 @@ public final class CompareBatch {
             err.println(says + "no pictures (.png, .jpg, .gif, .bmp) found");
             return ExitCode.SCENE_ERROR;
         }
-        boolean allPass = rows.stream().allMatch(r -> r.result() != BatchRow.Result.FAIL && r.result() != BatchRow.Result.ERROR);
+        boolean allPass = rows.stream().filter(BatchRow::counts)
+                .allMatch(r -> r.result() != BatchRow.Result.FAIL && r.result() != BatchRow.Result.ERROR);
         if (outputs.student() && rows.stream().noneMatch(r -> r.result() == BatchRow.Result.PASS)) {
             return ExitCode.SCENE_ERROR;
         }

@@ -21,10 +21,13 @@ import java.util.List;
  * @param regions the largest of those patches, largest first
  * @param alternate the accepted alternate picture it matched best, relative to its folder, or "" for simpview's own
  * @param size the side of the panel compared, in pixels: 650 for a page, 300 for a panel of the first assignment's
+ * @param notCounted "" when the row counts; else why not: which other picture of its page counts in its
+ *     submission, and why that one ({@link OnePerPage}). It is compared and listed all the same, but scores
+ *     nothing and is worth nothing.
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
-        List<DiffRegion> regions, String alternate, int size) {
+        List<DiffRegion> regions, String alternate, int size, String notCounted) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -39,7 +42,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return new BatchRow(file, target, report.comparison().exact(), report.comparison().withSlack(),
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
-                report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size());
+                report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "");
     }
 
     /**
@@ -51,7 +54,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
                 comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
-                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size());
+                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "");
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -60,18 +63,40 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "", Comparison.N);
+                List.of(), "", Comparison.N, "");
     }
 
     public static BatchRow skipped(String file, String why) {
         return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
-                Comparison.N);
+                Comparison.N, "");
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size);
+                regions, alternate, size, notCounted);
+    }
+
+    /**
+     * The same row not counted, {@code why} (another picture of its page counts): it scores nothing and its
+     * rule is worth nothing (Gradescope's max_score 0), so the total stays what the pages asked for are worth.
+     */
+    public BatchRow notCounted(String why) {
+        RubricRule worthNothing = new RubricRule(rule.match(), rule.tolerance(), rule.deviation(), rule.minShare(),
+                rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
+                rule.flipThreshold());
+        return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
+                regions, alternate, size, why);
+    }
+
+    /** Whether it counts: it is the picture of its page that is scored in its submission (or was skipped). */
+    public boolean counts() {
+        return notCounted.isEmpty();
+    }
+
+    /** Its note, after why it does not count when it does not: the table's note column. */
+    public String remarks() {
+        return counts() ? note : "not counted: " + notCounted + (note.isEmpty() ? "" : "; " + note);
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

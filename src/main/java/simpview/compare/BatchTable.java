@@ -103,7 +103,10 @@ public final class BatchTable {
         return lines;
     }
 
-    /** E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped". */
+    /**
+     * E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped", then how many of them do not count
+     * ("; 3 pictures not counted (another of the same page counts)").
+     */
     public static String summary(List<BatchRow> rows) {
         long[] counts = new long[BatchRow.Result.values().length];
         for (BatchRow row : rows) {
@@ -113,8 +116,11 @@ public final class BatchTable {
         // a page of the first assignment is a row per panel
         String what = files == rows.size() ? Count.of(rows.size(), "picture")
                 : Count.of(rows.size(), "row") + " (" + Count.of(files, "picture") + ")";
+        long notCounted = rows.stream().filter(r -> !r.counts()).map(BatchRow::file).distinct().count();
         return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
-                what, counts[0], counts[1], counts[2], counts[3]);
+                what, counts[0], counts[1], counts[2], counts[3])
+                + (notCounted == 0 ? "" : "; " + Count.of(notCounted, "picture") + " not counted (another of the "
+                        + "same page counts)");
     }
 
     /** The same, then how many pages asked for have no picture: "...; 3 pages asked for without a picture". */
@@ -141,7 +147,7 @@ public final class BatchTable {
                 shares ? Percent.number(row.slack().within1()) : "",
                 shares ? Percent.number(row.slack().within8()) : "",
                 shares ? Percent.number(row.verdict()) : "",
-                row.result().name(), row.margins(), diff, row.note());
+                row.result().name(), row.margins(), diff, row.remarks());
     }
 
     private static String quoted(String cell) {

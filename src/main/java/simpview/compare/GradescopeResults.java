@@ -17,6 +17,9 @@ import java.util.Locale;
  */
 public final class GradescopeResults {
 
+    /** The tag of a test of a picture that does not count (another picture of its page does). */
+    static final String NOT_COUNTED = "NOT COUNTED";
+
     private GradescopeResults() {
     }
 
@@ -42,6 +45,9 @@ public final class GradescopeResults {
             JsonArray tags = new JsonArray();
             tags.add(name(row.target()));
             tags.add(row.result().name());
+            if (!row.counts()) {
+                tags.add(NOT_COUNTED);
+            }
             test.add("tags", tags);
             tests.add(test);
             total += row.score();
@@ -76,13 +82,19 @@ public final class GradescopeResults {
         return target.matches("[0-9].*") ? "page " + target : target;
     }
 
-    /** The shares, the verdict, the largest regions and the diff image, as the test's output. */
+    /**
+     * The shares, the verdict, the largest regions and the diff image, as the test's output; first, when it
+     * does not count, why not.
+     */
     static String output(BatchRow row) {
         if (!row.compared()) {
-            return row.result() + ": " + row.note();
+            return row.result() + ": " + row.remarks();
         }
         RubricRule rule = row.rule();
         StringBuilder out = new StringBuilder();
+        if (!row.counts()) {
+            out.append("NOT COUNTED (scores nothing): ").append(row.notCounted()).append('\n');
+        }
         out.append(String.format(Locale.ROOT, "%s: %s of panel pixels %s (%s needed)",
                 row.result(), Percent.of(row.verdict()), row.verdictName(), Percent.of(rule.minShare() / 100)));
         if (rule.maxFailing() >= 0) {

@@ -17,8 +17,9 @@ import javax.xml.stream.XMLStreamWriter;
  * {@code <testcase>} per picture, named by its page, with {@code classname}
  * the submission. A picture below the minimum has a {@code <failure>} whose
  * message is the shares; one that cannot be compared an {@code <error>}; one
- * that matches no page is {@code <skipped>}; a page asked for but not found is
- * a failure too. Written with the JDK's XML writer, so every name and text is
+ * that matches no page, or that does not count (another picture of its page
+ * in the submission does, {@link OnePerPage}), is {@code <skipped>}; a page
+ * asked for but not found is a failure too. Written with the JDK's XML writer, so every name and text is
  * escaped as XML wants.
  */
 public final class JUnitResults {
@@ -49,9 +50,9 @@ public final class JUnitResults {
             int errors = 0;
             int skipped = 0;
             for (BatchRow row : rows) {
-                failures += row.result() == BatchRow.Result.FAIL ? 1 : 0;
-                errors += row.result() == BatchRow.Result.ERROR ? 1 : 0;
-                skipped += row.result() == BatchRow.Result.SKIPPED ? 1 : 0;
+                failures += shown(row) == BatchRow.Result.FAIL ? 1 : 0;
+                errors += shown(row) == BatchRow.Result.ERROR ? 1 : 0;
+                skipped += shown(row) == BatchRow.Result.SKIPPED ? 1 : 0;
             }
             int missingCount = 0;
             for (List<BatchRow> suite : suites.values()) {
@@ -84,23 +85,23 @@ public final class JUnitResults {
         xml.writeAttribute("name", name);
         xml.writeAttribute("id", String.valueOf(id));
         xml.writeAttribute("tests", String.valueOf(rows.size() + notFound.size()));
-        xml.writeAttribute("failures", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.FAIL).count()
+        xml.writeAttribute("failures", String.valueOf(rows.stream().filter(r -> shown(r) == BatchRow.Result.FAIL).count()
                 + notFound.size()));
-        xml.writeAttribute("errors", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.ERROR).count()));
-        xml.writeAttribute("skipped", String.valueOf(rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count()));
+        xml.writeAttribute("errors", String.valueOf(rows.stream().filter(r -> shown(r) == BatchRow.Result.ERROR).count()));
+        xml.writeAttribute("skipped", String.valueOf(rows.stream().filter(r -> shown(r) == BatchRow.Result.SKIPPED).count()));
         for (BatchRow row : rows) {
             xml.writeCharacters("\n    ");
             xml.writeStartElement("testcase");
             xml.writeAttribute("name", row.target().isEmpty() ? row.file()
                     : GradescopeResults.name(row.target()) + " (" + row.file() + ")");
             xml.writeAttribute("classname", name);
-            switch (row.result()) {
+            switch (shown(row)) {
                 case PASS -> { }
                 case FAIL -> element(xml, "failure", shares(row), "below the minimum", GradescopeResults.output(row));
                 case ERROR -> element(xml, "error", row.note().lines().findFirst().orElse(""), "not compared", row.note());
                 case SKIPPED -> {
                     xml.writeStartElement("skipped");
-                    xml.writeAttribute("message", row.note());
+                    xml.writeAttribute("message", row.counts() ? row.note() : "not counted: " + row.notCounted());
                     xml.writeEndElement();
                 }
             }
@@ -126,6 +127,11 @@ public final class JUnitResults {
         xml.writeAttribute("type", type);
         xml.writeCharacters(body);
         xml.writeEndElement();
+    }
+
+    /** A row's result as a testcase shows it: one that does not count is skipped, whatever it came to. */
+    private static BatchRow.Result shown(BatchRow row) {
+        return row.counts() ? row.result() : BatchRow.Result.SKIPPED;
     }
 
     /** E.g. "92.90 % within 8/255 with 1 px slack, 99.00 % needed". */

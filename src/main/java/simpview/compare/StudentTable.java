@@ -1,15 +1,18 @@
 package simpview.compare;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * {@code simpview check}'s one table for a student: each picture found, the
  * page it was matched to, PASS or FAIL, the share the verdict is on, and the
  * worst region (the largest patch that differs even with slack), in aligned
- * plain-text columns; then the pages asked for that no picture matched, and
- * one line of counts.
+ * plain-text columns; then the pictures that do not count (another picture of
+ * their page does) and why, the pages asked for that no picture matched, and
+ * one line of counts, of the pictures that count.
  */
 public final class StudentTable {
 
@@ -52,17 +55,23 @@ public final class StudentTable {
             out.append(one.toString().stripTrailing()).append('\n');
         }
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
+        Map<String, String> notCounted = new LinkedHashMap<>(); // a first-assignment page: once, not per panel
+        rows.stream().filter(r -> !r.counts())
+                .forEach(r -> notCounted.putIfAbsent(r.file(), r.file() + ": not counted, " + r.notCounted() + "\n"));
+        notCounted.values().forEach(out::append);
         for (Wanted wanted : missing) {
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
                     .append(" found (name it like page3.png)\n");
         }
-        long pass = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
-        long compared = rows.size() - skipped;
-        long files = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED).map(BatchRow::file).distinct().count();
+        List<BatchRow> counted = rows.stream().filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
+        long pass = counted.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
+        long compared = counted.size();
+        long files = counted.stream().map(BatchRow::file).distinct().count();
         // a page of the first assignment is a row per panel
         // "1 of 1 pictures pass": a tally, in the plural whatever its count
         String what = files == compared ? "pictures" : "pages and panels (" + Count.of(files, "picture") + ")";
-        out.append(String.format(Locale.ROOT, "%d of %d %s pass%s%s%n", pass, compared, what,
+        out.append(String.format(Locale.ROOT, "%d of %d %s pass%s%s%s%n", pass, compared, what,
+                notCounted.isEmpty() ? "" : "; " + Count.of(notCounted.size(), "picture") + " not counted",
                 skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " matched no page",
                 missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " without a picture"));
         return out.toString();

@@ -28,6 +28,25 @@ public final class SubmissionNames {
         return FIRST_ASSIGNMENT.matcher(stem(fileName)).find();
     }
 
+    /**
+     * Whether a file name is a page's name and nothing else: page3.png, Page_3.png, page 03.jpg for page 3
+     * (not page3 copy.png, page3_v2.png or old_page3.png). Of several pictures of one page, it is the one
+     * that counts.
+     */
+    public static boolean isPageName(String fileName, int page) {
+        return stem(fileName).strip().matches("(?i)page[\\s_-]*0*" + page);
+    }
+
+    /** The same for a page of the first assignment: a1-page2.png, A1_Page_2.png, assignment1-page2.png. */
+    public static boolean isFirstAssignmentPageName(String fileName, int page) {
+        return stem(fileName).strip().matches("(?i)(a|assignment[\\s_-]*)0*1[\\s_-]*page[\\s_-]*0*" + page);
+    }
+
+    /** The same for a scene: pageC.png for pageC.simp (letters of either case alike). */
+    public static boolean isSceneName(String fileName, String scene) {
+        return stem(fileName).strip().equalsIgnoreCase(scene);
+    }
+
     /** The page number in a file name, if it names one. */
     public static OptionalInt pageNumber(String fileName) {
         Matcher m = PAGE.matcher(stem(fileName));

@@ -24,6 +24,21 @@ class SubmissionNamesTest {
     }
 
     @Test
+    void namesThatAreAPagesNameAndNothingElse() {
+        for (String name : new String[] {"page3.png", "Page_3.PNG", "page 03.jpg", "PAGE-3.png", "page3 .png"}) {
+            org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName(name, 3), name);
+        }
+        for (String name : new String[] {"page3 copy.png", "page3_v2.png", "old_page3.png", "page33.png", "page3"}) {
+            org.junit.jupiter.api.Assertions.assertEquals(name.equals("page3"), SubmissionNames.isPageName(name, 3), name);
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isFirstAssignmentPageName("A1_Page_2.png", 2));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isFirstAssignmentPageName("assignment1-page2.png", 2));
+        org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.isFirstAssignmentPageName("a1-page2 (1).png", 2));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isSceneName("pagec.png", "pageC"));
+        org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.isSceneName("pageJ_tomsPageJ.png", "tomsPageJ"));
+    }
+
+    @Test
     void sceneNamesInNames() {
         List<String> a3 = List.of("cube", "pageA", "pageC", "pageJ", "tomsPageJ", "page-a2", "page-a");
         assertEquals(Optional.of("pageC"), SubmissionNames.sceneName("pageC.png", a3));

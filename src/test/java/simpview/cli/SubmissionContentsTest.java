@@ -1,0 +1,89 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+
+/**
+ * What a submission hands in, as {@code compare --dir} and {@code check} grade it: several pictures of one
+ * page count once.
+ */
+class SubmissionContentsTest {
+
+    @TempDir
+    Path dir;
+
+    private static BufferedImage page(int number) throws Exception {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    private static void png(Path file, BufferedImage image) throws Exception {
+        Files.createDirectories(file.getParent());
+        ImageIO.write(image, "png", file.toFile());
+    }
+
+    @Test
+    void severalPicturesOfAPageCountOnce() throws Exception {
+        Path sub = dir.resolve("submission");
+        for (int p = 1; p <= 3; p++) {
+            png(sub.resolve("page" + p + ".png"), page(p));
+        }
+        png(sub.resolve("page3 copy.png"), page(3));
+        png(sub.resolve("old_page3.png"), page(3));
+        png(sub.resolve("page3_v2.png"), page(4)); // fails, but does not count
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [{\"match\": \"3\", \"points\": 2}]}");
+        Path results = dir.resolve("results.json");
+        Path xml = dir.resolve("results.xml");
+
+        CliRun run = CliRun.of("compare", "--dir", sub.toString(), "--pages", "1-3", "--rubric", rubric.toString(),
+                "--gradescope", results.toString(), "--junit", xml.toString(), "--out-dir", dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), "the picture of page 3 that counts passes: " + run.err());
+        JsonObject json = JsonParser.parseString(Files.readString(results)).getAsJsonObject();
+        double max = 0;
+        for (JsonElement test : json.getAsJsonArray("tests")) {
+            max += test.getAsJsonObject().get("max_score").getAsDouble();
+        }
+        assertEquals(4, max, 1e-9, "pages 1 and 2 a point each, page 3 two: " + json);
+        assertEquals(4, json.get("score").getAsDouble(), 1e-9, json.toString());
+        assertTrue(run.out().contains("| page3_v2.png | 3 (seed 361) |"), "still compared and listed: " + run.out());
+        assertTrue(run.out().contains("| FAIL | white | [diff](diffs/page3_v2-diff.png) | not counted: page3.png counts for "
+                + "page 3 (seed 361) instead: its name is the page's name and nothing else; panel at "), run.out());
+        assertTrue(run.out().contains("6 pictures: 5 pass, 1 fail, 0 could not be compared, 0 skipped; 3 pictures not "
+                + "counted (another of the same page counts)"), run.out());
+        assertTrue(Files.readString(xml).contains("tests=\"6\" failures=\"0\" errors=\"0\" skipped=\"3\""),
+                Files.readString(xml));
+
+        CliRun check = CliRun.of("check", sub.toString(), "--pages", "1-3");
+        assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
+        assertTrue(check.out().contains("page3_v2.png: not counted, page3.png counts for page 3 (seed 361) instead: "
+                + "its name is the page's name and nothing else\n"), check.out());
+        assertTrue(check.out().endsWith("3 of 3 pictures pass; 3 pictures not counted\n"), check.out());
+    }
+
+    @Test
+    void inAClassFolderEachStudentsPagesCountOnce() throws Exception {
+        Path class_ = dir.resolve("class");
+        png(class_.resolve("ann/page1.png"), page(1));
+        png(class_.resolve("bob/Page1 copy.png"), page(2));
+        png(class_.resolve("bob/page_1.png"), page(1));
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), "ann's page 1 is the only picture of hers: " + run.out());
+        assertTrue(run.out().contains("| bob/Page1 copy.png | 1 (seed 361) |"), run.out());
+        assertTrue(run.out().contains("not counted: bob/page_1.png counts for page 1 (seed 361) instead"), run.out());
+        assertFalse(run.out().contains("not counted: ann"), run.out());
+    }
+}
