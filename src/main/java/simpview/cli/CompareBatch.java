@@ -364,9 +364,11 @@ public final class CompareBatch {
                 all.add(match.target());
             }
         }
+        Map<CompareTarget, List<String>> unreadable = unreadableByTarget(dir, listing.unreadable(), matcher);
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
-            asked.add(new Wanted(target.label(own.context()), ruleOf(target)));
+            asked.add(new Wanted(target.label(own.context()), ruleOf(target),
+                    unreadable.getOrDefault(target, List.of())));
         }
         for (int page : new TreeSet<>(firstAssignment.keySet())) {
             for (int k = 1; k <= A1Layout.PANELS; k++) {
@@ -798,6 +800,23 @@ public final class CompareBatch {
             }
         }
         return false;
+    }
+
+    /**
+     * The files in a picture format simpview does not read (page6.tif, page2.webp) by the page or scene their
+     * names name, as a picture so named would be matched: a page missing from their submission is told of them.
+     */
+    private static Map<CompareTarget, List<String>> unreadableByTarget(Path dir, List<Path> files,
+            Function<String, Match> matcher) {
+        Map<CompareTarget, List<String>> named = new HashMap<>();
+        for (Path file : files) {
+            String relative = dir.relativize(file).toString();
+            CompareTarget target = matcher.apply(relative).target();
+            if (target != null) {
+                named.computeIfAbsent(target, t -> new ArrayList<>()).add(relative);
+            }
+        }
+        return named;
     }
 
     /**

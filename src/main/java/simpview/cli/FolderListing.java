@@ -16,31 +16,42 @@ import simpview.pages.SceneList;
  *
  * @param pictures the pictures, by their paths under the folder (the folder prepended)
  * @param hidden how many pictures were left out as hidden
+ * @param unreadable the files, not hidden, in a picture format simpview does not read (page6.tif, page2.webp)
  */
-record FolderListing(List<Path> pictures, int hidden) {
+record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable) {
 
     /** The endings of the pictures simpview reads (PNG, JPEG, GIF, BMP), in lower case. */
     static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
+    /**
+     * The endings of pictures (and of a page exported as a document) that simpview does not read: a file so
+     * named is no row of the table, but the page it is named like is told of it when it has no picture.
+     */
+    static final List<String> UNREAD_ENDINGS = List.of(".webp", ".tif", ".tiff", ".heic", ".heif", ".avif", ".jxl",
+            ".jp2", ".jfif", ".svg", ".psd", ".xcf", ".ppm", ".pgm", ".pbm", ".pnm", ".tga", ".ico", ".exr", ".hdr",
+            ".pdf");
     /** The folder a Mac's zip puts its resource forks in. */
     static final String MAC_LEFTOVERS = "__MACOSX";
 
-    /** The pictures under {@code dir}, hidden ones left out and counted. */
+    /** The pictures under {@code dir}, hidden ones left out and counted, and the files in formats it does not read. */
     static FolderListing of(Path dir) throws IOException {
         List<Path> all;
         try (Stream<Path> files = Files.walk(dir)) {
-            all = files.filter(Files::isRegularFile).filter(FolderListing::isPicture)
+            all = files.filter(Files::isRegularFile)
                     .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(),
                             dir.relativize(b).toString()))
                     .toList();
         }
-        List<Path> shown = all.stream().filter(f -> !hidden(dir.relativize(f))).toList();
-        return new FolderListing(shown, all.size() - shown.size());
+        List<Path> pictures = all.stream().filter(f -> endsLike(f, PICTURE_ENDINGS)).toList();
+        List<Path> shown = pictures.stream().filter(f -> !hidden(dir.relativize(f))).toList();
+        List<Path> unreadable = all.stream().filter(f -> endsLike(f, UNREAD_ENDINGS) && !hidden(dir.relativize(f)))
+                .toList();
+        return new FolderListing(shown, pictures.size() - shown.size(), unreadable);
     }
 
-    /** Whether a file's name ends like a picture simpview reads. */
-    static boolean isPicture(Path file) {
+    /** Whether a file's name ends with one of {@code endings} (lower case), letters of either case alike. */
+    private static boolean endsLike(Path file, List<String> endings) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        return PICTURE_ENDINGS.stream().anyMatch(name::endsWith);
+        return endings.stream().anyMatch(name::endsWith);
     }
 
     /** Whether a path under the folder is hidden: a name on its way starts with '.', or a folder is __MACOSX. */

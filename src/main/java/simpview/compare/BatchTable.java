@@ -97,8 +97,10 @@ public final class BatchTable {
             String submission = lack.getKey();
             String page = GradescopeResults.name(lack.getValue().target());
             boolean named = !submission.isEmpty() && !submission.equals(JUnitResults.TOP);
+            String unreadable = lack.getValue().unreadableNote(submission);
             lines.add(List.of(named ? submission + "/" : "", lack.getValue().target(), "", "", "", "", "", "", "",
-                    "MISSING", "", "", "no picture of " + page + (named ? " in " + submission : "") + " was found"));
+                    "MISSING", "", "", "no picture of " + page + (named ? " in " + submission : "") + " was found"
+                            + (unreadable.isEmpty() ? "" : "; " + unreadable)));
         }
         return lines;
     }

@@ -58,8 +58,9 @@ public final class GradescopeResults {
             test.addProperty("number", String.valueOf(++number));
             test.addProperty("score", 0.0);
             test.addProperty("max_score", lost.rule().points());
-            test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission "
-                    + "(a picture is matched by its name, e.g. page3.png).");
+            String unreadable = lost.unreadableNote("");
+            test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission"
+                    + (unreadable.isEmpty() ? " (a picture is matched by its name, e.g. page3.png)." : ": " + unreadable + "."));
             test.addProperty("visibility", lost.rule().visibility());
             JsonArray tags = new JsonArray();
             tags.add(name(lost.target()));

@@ -36,6 +36,8 @@ public final class JUnitResults {
         for (BatchRow row : rows) {
             suites.computeIfAbsent(submission(row.file()), k -> new ArrayList<>()).add(row);
         }
+        // a submission that handed in only files simpview does not read lacks every page
+        wanted.forEach(w -> w.unreadable().forEach(file -> suites.computeIfAbsent(submission(file), k -> new ArrayList<>())));
         if (suites.isEmpty() && !wanted.isEmpty()) {
             suites.put(TOP, new ArrayList<>());
         }
@@ -112,8 +114,11 @@ public final class JUnitResults {
             xml.writeStartElement("testcase");
             xml.writeAttribute("name", GradescopeResults.name(wanted.target()) + " (no picture)");
             xml.writeAttribute("classname", name);
-            element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found", "missing",
-                    "No picture's name names " + GradescopeResults.name(wanted.target()) + ".");
+            String unreadable = wanted.unreadableNote(name);
+            element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found"
+                    + (unreadable.isEmpty() ? "" : "; " + unreadable), "missing",
+                    "No picture's name names " + GradescopeResults.name(wanted.target()) + "."
+                            + (unreadable.isEmpty() ? "" : " " + unreadable + "."));
             xml.writeEndElement();
         }
         xml.writeCharacters("\n  ");

@@ -60,8 +60,9 @@ public final class StudentTable {
                 .forEach(r -> notCounted.putIfAbsent(r.file(), r.file() + ": not counted, " + r.notCounted() + "\n"));
         notCounted.values().forEach(out::append);
         for (Wanted wanted : missing) {
+            String unreadable = wanted.unreadableNote("");
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
-                    .append(" found (name it like page3.png)\n");
+                    .append(unreadable.isEmpty() ? " found (name it like page3.png)\n" : " found: " + unreadable + "\n");
         }
         List<BatchRow> counted = rows.stream().filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
         long pass = counted.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();

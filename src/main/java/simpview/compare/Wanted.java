@@ -12,8 +12,15 @@ import java.util.Map;
  *
  * @param target its label, as the rows name it ("6", "pageC.simp")
  * @param rule the rule it is judged by (its points are lost when it is missing)
+ * @param unreadable the files handed in that are named like it but are in a format simpview does not read
+ *     (page6.tif), by their paths in the folder: a page missing from a submission that handed in one of
+ *     these is told why
  */
-public record Wanted(String target, RubricRule rule) {
+public record Wanted(String target, RubricRule rule, List<String> unreadable) {
+
+    public Wanted(String target, RubricRule rule) {
+        this(target, rule, List.of());
+    }
 
     /** Those of {@code wanted} that none of {@code rows} was matched to. */
     public static List<Wanted> missing(List<Wanted> wanted, List<BatchRow> rows) {
@@ -23,13 +30,18 @@ public record Wanted(String target, RubricRule rule) {
     /**
      * What each submission (the first folder of a row's path, as
      * {@link JUnitResults#submission} names it) lacks, as (submission, page)
-     * pairs in the rows' order; all of {@code wanted}, under no submission
-     * (""), when there are no rows.
+     * pairs in the rows' order; then the submissions that handed in no picture
+     * but a file in a format simpview does not read, which lack every page; all
+     * of {@code wanted}, under no submission (""), when there are neither.
      */
     public static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows) {
         Map<String, List<BatchRow>> bySubmission = new LinkedHashMap<>();
         for (BatchRow row : rows) {
             bySubmission.computeIfAbsent(JUnitResults.submission(row.file()), k -> new ArrayList<>()).add(row);
+        }
+        for (Wanted w : wanted) {
+            w.unreadable().forEach(file -> bySubmission.computeIfAbsent(JUnitResults.submission(file),
+                    k -> new ArrayList<>()));
         }
         List<Map.Entry<String, Wanted>> missing = new ArrayList<>();
         if (bySubmission.isEmpty()) {
@@ -38,5 +50,28 @@ public record Wanted(String target, RubricRule rule) {
         bySubmission.forEach((submission, its) ->
                 missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w))));
         return missing;
+    }
+
+    /** Its unreadable files handed in by {@code submission} (a first-level folder, or "" for the whole folder). */
+    public List<String> unreadableIn(String submission) {
+        return unreadable.stream()
+                .filter(file -> submission.isEmpty() || JUnitResults.submission(file).equals(submission)).toList();
+    }
+
+    /**
+     * Why a submission ("" for the whole folder) that lacks it has no picture of it, when it handed in a file
+     * named like it in a format simpview does not read: "st/page6.tif is named like it, but is in a format
+     * simpview does not read (it reads PNG, JPEG, GIF and BMP)"; "" otherwise.
+     */
+    public String unreadableNote(String submission) {
+        List<String> files = unreadableIn(submission);
+        if (files.isEmpty()) {
+            return "";
+        }
+        return files.size() == 1
+                ? files.get(0) + " is named like it, but is in a format simpview does not read (it reads PNG, JPEG, GIF "
+                        + "and BMP)"
+                : String.join(" and ", files) + " are named like it, but are in formats simpview does not read (it "
+                        + "reads PNG, JPEG, GIF and BMP)";
     }
 }

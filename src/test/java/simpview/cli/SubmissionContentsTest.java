@@ -10,6 +10,7 @@ import com.google.gson.JsonParser;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -18,7 +19,7 @@ import simpview.pages.PageRenderer;
 
 /**
  * What a submission hands in, as {@code compare --dir} and {@code check} grade it: several pictures of one
- * page count once.
+ * page count once; a page handed in only in a format simpview does not read is missing, saying so.
  */
 class SubmissionContentsTest {
 
@@ -71,6 +72,38 @@ class SubmissionContentsTest {
         assertTrue(check.out().contains("page3_v2.png: not counted, page3.png counts for page 3 (seed 361) instead: "
                 + "its name is the page's name and nothing else\n"), check.out());
         assertTrue(check.out().endsWith("3 of 3 pictures pass; 3 pictures not counted\n"), check.out());
+    }
+
+    @Test
+    void aMissingPageNamesTheFileHandedInInAFormatSimpviewDoesNotRead() throws Exception {
+        Path class_ = dir.resolve("class");
+        png(class_.resolve("st/page1.png"), page(1));
+        Files.writeString(class_.resolve("st/page2.webp"), "RIFF....WEBP");
+        Files.writeString(class_.resolve("st/.page2.webp"), "hidden: not named");
+        Files.createDirectories(class_.resolve("carl"));
+        Files.writeString(class_.resolve("carl/page1.tif"), "II*.");
+        Path out = dir.resolve("out");
+        String why = " is named like it, but is in a format simpview does not read (it reads PNG, JPEG, GIF and BMP)";
+
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--gradescope", dir.resolve("results.json").toString(), "--junit", dir.resolve("results.xml").toString());
+        List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
+        assertTrue(csv.contains("st/,2 (seed 361),,,,,,,,MISSING,,,\"no picture of page 2 (seed 361) in st was found; "
+                + "st/page2.webp" + why + "\""), String.join("\n", csv));
+        assertTrue(csv.contains("carl/,1 (seed 361),,,,,,,,MISSING,,,\"no picture of page 1 (seed 361) in carl was found; "
+                + "carl/page1.tif" + why + "\""), "carl handed in no picture at all: " + String.join("\n", csv));
+        assertTrue(csv.contains("carl/,2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) in carl was found"),
+                String.join("\n", csv));
+        assertFalse(String.join("\n", csv).contains(".page2"), "hidden files are no one's");
+        String json = Files.readString(dir.resolve("results.json"));
+        assertTrue(json.contains("\"output\": \"No picture of page 2 (seed 361) was found in the submission: st/page2.webp"
+                + why + ".\""), json);
+        String xml = Files.readString(dir.resolve("results.xml"));
+        assertTrue(xml.contains("<testcase name=\"page 1 (seed 361) (no picture)\" classname=\"carl\"><failure message=\"no "
+                + "picture of page 1 (seed 361) found; carl/page1.tif" + why + "\" type=\"missing\">"), xml);
+
+        CliRun check = CliRun.of("check", class_.resolve("st").toString(), "--pages", "1-2");
+        assertTrue(check.out().contains("\nno picture of page 2 (seed 361) found: page2.webp" + why + "\n"), check.out());
     }
 
     @Test
