@@ -32,15 +32,15 @@ import simpview.surface.DrawingThreads;
         version = ExitCode.VERSION,
         description = "Checks a folder of your pictures (page1.png ... page8.png, or window captures named so) against "
                 + "simpview's pages, or a folder of scenes, and prints one table: pass or fail and the worst region "
-                + "of each. Exit 0 only when every picture found passes.",
+                + "of each. Exit 0 only when every picture found passes and no page asked for is missing.",
         footer = {"", "Examples:",
             "  simpview check my-pages/ --simp-dir course/",
             "  simpview check my-a3/ --scene course-a3/",
             "  simpview check my-pages/ --pages 1-3 --seed 7 --out-dir check-report/"},
         exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = {"0:every picture found passes",
-            "1:some picture fails or cannot be read, no picture was found, a scene error, or an output file cannot "
-                + "be written",
+        exitCodeList = {"0:every picture found passes, and every page asked for has one",
+            "1:some picture fails or cannot be read, a page asked for has no picture, no picture was found, a scene "
+                + "error, or an output file cannot be written",
             "2:usage error"})
 public final class CheckCommand implements Callable<Integer> {
 
@@ -55,7 +55,8 @@ public final class CheckCommand implements Callable<Integer> {
     private Path dir;
 
     @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
-            description = "the pages pictures are matched to by name (default: 1-8)")
+            description = "the pages pictures are matched to by name, each asked for (default: 1-8, asked for only when "
+                    + "something in DIR is named like one of them)")
     private PageRange pages;
 
     @Option(names = "--scene", paramLabel = "F.simp|D",
@@ -128,7 +129,8 @@ public final class CheckCommand implements Callable<Integer> {
         try (DrawingThreads drawing = threads.open()) {
             OwnPictures own = pictures.ownPictures(parent.ownScenes(),
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
-            CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(), spec.commandLine().getErr());
+            CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(),
+                    spec.commandLine().getErr(), pages == null);
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
                     CompareBatch.DiffImages.FAILING,
                     new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
@@ -160,7 +162,7 @@ public final class CheckCommand implements Callable<Integer> {
         }
         try (DrawingThreads drawing = DrawingThreads.one()) {
             OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
-            CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors);
+            CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors, true);
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }

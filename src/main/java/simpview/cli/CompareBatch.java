@@ -170,15 +170,28 @@ public final class CompareBatch {
     private final PrintWriter err;
     /** What its messages start with: the command that runs it ("simpview compare: "). */
     private final String says;
+    /**
+     * Whether the pages of the range are asked for only when something handed in is named like one of them
+     * ({@code check} without --pages): a folder of the first assignment's pages, or of its own scenes and
+     * their pictures, is not asked for the eight pages.
+     */
+    private final boolean pagesIfHandedIn;
 
-    /** A batch of {@code command} ("compare", "check"), which its messages name. */
+    /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
+        this(command, own, rubric, partial, out, err, false);
+    }
+
+    /** The same, the pages of the range asked for only when something handed in is named like one of them. */
+    CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err,
+            boolean pagesIfHandedIn) {
         this.says = "simpview " + command + ": ";
         this.own = own;
         this.rubric = rubric;
         this.partial = partial;
         this.out = out;
         this.err = err;
+        this.pagesIfHandedIn = pagesIfHandedIn;
     }
 
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
@@ -358,13 +371,13 @@ public final class CompareBatch {
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
         // shows who lacks a page that others handed in).
-        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(wanted);
+        Map<CompareTarget, List<String>> unreadable = unreadableByTarget(dir, listing.unreadable(), matcher);
+        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(askedFor(wanted, matches, unreadable.keySet()));
         for (Match match : matches) {
             if (match.target() != null) {
                 all.add(match.target());
             }
         }
-        Map<CompareTarget, List<String>> unreadable = unreadableByTarget(dir, listing.unreadable(), matcher);
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             asked.add(new Wanted(target.label(own.context()), ruleOf(target),
@@ -803,6 +816,16 @@ public final class CompareBatch {
     }
 
     /**
+     * The targets asked for of those given: all of them; or, when the pages are asked for only if handed in,
+     * the pages only when some picture (or a file in a format simpview does not read) is named like one.
+     */
+    private List<CompareTarget> askedFor(List<CompareTarget> given, List<Match> matches, Set<CompareTarget> unread) {
+        boolean handedIn = matches.stream().anyMatch(m -> m.target() != null && m.target().isPage())
+                || unread.stream().anyMatch(CompareTarget::isPage);
+        return pagesIfHandedIn && !handedIn ? given.stream().filter(t -> !t.isPage()).toList() : given;
+    }
+
+    /**
      * The files in a picture format simpview does not read (page6.tif, page2.webp) by the page or scene their
      * names name, as a picture so named would be matched: a page missing from their submission is told of them.
      */
@@ -841,7 +864,7 @@ public final class CompareBatch {
     /**
      * Writes and prints the results, each page counted once per submission ({@link OnePerPage}: the pictures of
      * a page but one are rows that score nothing), and says what the exit code is: 0 when every row that
-     * counts passes.
+     * counts passes and no submission lacks a page asked for.
      */
     private int writeResults(List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
             Predicate<String> plainlyNamed, Predicate<String> alone) {
@@ -892,7 +915,8 @@ public final class CompareBatch {
         if (outputs.student() && rows.stream().noneMatch(r -> r.result() == BatchRow.Result.PASS)) {
             return ExitCode.SCENE_ERROR;
         }
-        return allPass ? ExitCode.OK : ExitCode.SCENE_ERROR;
+        // a page asked for without a picture is work not done: it fails as a failing picture does
+        return allPass && missing.isEmpty() ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 
     /** The pictures under {@code dir}, in natural order of their paths (page2 before page10), hidden ones left out. */

@@ -57,9 +57,10 @@ import simpview.surface.DrawingThreads;
                 + "origin bottom-left, y up.",
             "Grading (rubric, Gradescope, JUnit, the web report) and 'simpview check': docs/grading.md."},
         exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = {"0:every picture reaches --min",
-            "1:some picture is below --min, or cannot be read, or has no panel; a scene error; or an output file "
-                + "(a table, a report, a diff image) cannot be written",
+        exitCodeList = {"0:every picture reaches --min; with --dir, every one that counts, and no submission lacks a "
+                + "page asked for",
+            "1:some picture is below --min, or cannot be read, or has no panel; with --dir, a page asked for has no "
+                + "picture; a scene error; or an output file (a table, a report, a diff image) cannot be written",
             "2:usage error"})
 public final class CompareCommand implements Callable<Integer> {
 

@@ -102,8 +102,9 @@ class Assignment1CompareTest {
         assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2",
                 "--out", subs.resolve("a1-page2.png").toString()).exitCode());
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
-        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "--pages 1-8 asks for the eight pages: " + run.err());
         assertTrue(run.out().contains("| a1-page2.png | A1 page 2 panel 4 (antialiased) | 100.00 |"), run.out());
-        assertTrue(run.out().contains("4 rows (1 picture): 4 pass, 0 fail"), run.out());
+        assertTrue(run.out().contains("4 rows (1 picture): 4 pass, 0 fail, 0 could not be compared, 0 skipped; 8 pages "
+                + "asked for without a picture"), run.out());
     }
 }

@@ -157,7 +157,7 @@ public class CompareBatchTest {
 
         CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
                 out.toString());
-        assertEquals(ExitCode.OK, run.exitCode(), "every picture handed in passes: " + run.err());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "every picture handed in passes, but bob lacks bar: " + run.err());
         List<String> rows = csvRows(out);
         assertEquals(List.of("alice/bar.png", "alice/tri.png", "bob/tri.png", "bob/"),
                 rows.stream().skip(1).map(r -> r.substring(0, r.indexOf(','))).toList(), rows.toString());

@@ -14,12 +14,14 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 
 /**
  * What a submission hands in, as {@code compare --dir} and {@code check} grade it: several pictures of one
- * page count once; a page handed in only in a format simpview does not read is missing, saying so.
+ * page count once; a page handed in only in a format simpview does not read is missing, saying so; a page
+ * asked for without a picture fails the run.
  */
 class SubmissionContentsTest {
 
@@ -104,6 +106,50 @@ class SubmissionContentsTest {
 
         CliRun check = CliRun.of("check", class_.resolve("st").toString(), "--pages", "1-2");
         assertTrue(check.out().contains("\nno picture of page 2 (seed 361) found: page2.webp" + why + "\n"), check.out());
+    }
+
+    @Test
+    void aPageAskedForWithoutAPictureFailsTheRun() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        CliRun check = CliRun.of("check", mine.toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), "pages 2 to 8 are not handed in: " + check.out());
+        assertTrue(check.out().endsWith("1 of 1 pictures pass; 7 pages without a picture\n"), check.out());
+        CliRun compare = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.SCENE_ERROR, compare.exitCode(), compare.out());
+        assertTrue(compare.out().contains("1 picture: 1 pass, 0 fail, 0 could not be compared, 0 skipped; 1 page asked "
+                + "for without a picture"), compare.out());
+        assertEquals(ExitCode.OK, CliRun.of("check", mine.toString(), "--pages", "1").exitCode(), "all asked for is there");
+    }
+
+    @Test
+    void withoutPagesCheckAsksForTheEightPagesOnlyWhenOneIsHandedIn() throws Exception {
+        Path first = dir.resolve("first");
+        PageContext context = PageContext.defaults();
+        ImageIO.write(Assignment1.render(2, context), "png", Files.createDirectories(first).resolve("a1-page2.png").toFile());
+        CliRun check = CliRun.of("check", first.toString());
+        assertEquals(ExitCode.OK, check.exitCode(), "a folder of the first assignment's pages: " + check.out());
+        assertFalse(check.out().contains("no picture of"), check.out());
+        assertTrue(CheckCommand.checkFolder(first, context).endsWith("4 of 4 pages and panels (1 picture) pass\n"),
+                "a folder dropped on the window, the same");
+
+        Path scenes = dir.resolve("scenes");
+        Files.createDirectories(scenes);
+        Files.writeString(scenes.resolve("blank.simp"), "# draws nothing: a black panel\n");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scenes.resolve("blank.simp").toString(), "--out",
+                scenes.resolve("blank.png").toString()).exitCode());
+        CliRun own = CliRun.of("check", scenes.toString());
+        assertEquals(ExitCode.OK, own.exitCode(), "a folder of its own scenes and their pictures: " + own.out());
+        assertFalse(own.out().contains("no picture of"), own.out());
+
+        CliRun asked = CliRun.of("check", first.toString(), "--pages", "1-8");
+        assertEquals(ExitCode.SCENE_ERROR, asked.exitCode(), "--pages asks for them whatever is handed in");
+        assertTrue(asked.out().contains("no picture of page 8 found"), asked.out());
+        png(first.resolve("page3.png"), page(3));
+        CliRun mixed = CliRun.of("check", first.toString());
+        assertEquals(ExitCode.SCENE_ERROR, mixed.exitCode(), "one of the eight handed in: all eight asked for");
+        assertTrue(mixed.out().contains("no picture of page 1 (seed 361) found"), mixed.out());
     }
 
     @Test
