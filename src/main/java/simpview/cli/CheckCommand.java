@@ -162,7 +162,8 @@ public final class CheckCommand implements Callable<Integer> {
         }
         try (DrawingThreads drawing = DrawingThreads.one()) {
             OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
-            CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors, true);
+            CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors,
+                    true);
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }

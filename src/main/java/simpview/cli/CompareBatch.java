@@ -27,6 +27,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BiPredicate;
 import java.util.function.Function;
 import java.util.function.Predicate;
 import simpview.cli.CompareOptions.PageRange;
@@ -388,19 +389,23 @@ public final class CompareBatch {
                 asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
             }
         }
-        Set<String> plainlyNamed = new HashSet<>();
-        Set<String> alone = new HashSet<>();
-        for (int i = 0; i < pictures.size(); i++) {
-            String relative = dir.relativize(pictures.get(i)).toString();
-            if (namesItsPageOnly(relative, matches.get(i))) {
-                plainlyNamed.add(relative);
-            }
-            if (matches.get(i).alone()) {
-                alone.add(relative);
-            }
-        }
+        Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
+        Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
         int written = writeResults(rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
+    private static Set<String> picturesWhere(Path dir, List<Path> pictures, List<Match> matches,
+            BiPredicate<String, Match> test) {
+        Set<String> passing = new HashSet<>();
+        for (int i = 0; i < pictures.size(); i++) {
+            String relative = dir.relativize(pictures.get(i)).toString();
+            if (test.test(relative, matches.get(i))) {
+                passing.add(relative);
+            }
+        }
+        return passing;
     }
 
     /**
@@ -682,8 +687,8 @@ public final class CompareBatch {
     }
 
     /**
-     * One picture against simpview's, and when it does not pass, against each accepted alternate: the first that passes is its
-     * result; when none does, the comparison with simpview's own is. Thread-safe.
+     * One picture against simpview's, and when it does not pass, against each accepted alternate: the first
+     * that passes is its result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Picture ours,
             List<AcceptedPanel> alternates, DiffPlan diffs, Picture read) {
@@ -789,7 +794,8 @@ public final class CompareBatch {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
             } catch (IOException e) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", DIFF_NOT_WRITTEN + e.getMessage()));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
+                        DIFF_NOT_WRITTEN + e.getMessage()));
             }
         }
         return rows;

@@ -26,7 +26,7 @@ final class DiffNames {
         this.stems = stems;
     }
 
-    /** The names of the diff images of {@code relatives}: the pictures' paths under the folder, in the table's order. */
+    /** The names of the diff images of {@code relatives}: the pictures' paths in the folder, in the table's order. */
     static DiffNames of(List<String> relatives) {
         Set<String> ownNames = new HashSet<>();
         relatives.forEach(relative -> ownNames.addAll(keys(plainStem(relative))));
@@ -45,7 +45,10 @@ final class DiffNames {
         return new DiffNames(stems);
     }
 
-    /** The diff image of a picture (its path under the folder), relative to the out folder: of its panel (0), or a first-assignment panel. */
+    /**
+     * The diff image of a picture (its path in the folder), relative to the out folder: of its panel (0), or of
+     * a first-assignment page's panel.
+     */
     String of(String relative, int panel) {
         return CompareBatch.DIFFS + "/" + name(stems.getOrDefault(relative, plainStem(relative)), panel);
     }
@@ -59,7 +62,7 @@ final class DiffNames {
         return stem + (panel == 0 ? "" : "-panel" + panel) + "-diff.png";
     }
 
-    /** Every name a picture's stem may give its diff images (its page's, and a first-assignment page's panels), case folded. */
+    /** Every name a stem may give diff images (a page's, and a first-assignment page's panels), case folded. */
     private static Set<String> keys(String stem) {
         Set<String> keys = new HashSet<>();
         for (int panel = 0; panel <= A1Layout.PANELS; panel++) {

@@ -37,7 +37,8 @@ public final class JUnitResults {
             suites.computeIfAbsent(submission(row.file()), k -> new ArrayList<>()).add(row);
         }
         // a submission that handed in only files simpview does not read lacks every page
-        wanted.forEach(w -> w.unreadable().forEach(file -> suites.computeIfAbsent(submission(file), k -> new ArrayList<>())));
+        wanted.forEach(w -> w.unreadable()
+                .forEach(file -> suites.computeIfAbsent(submission(file), k -> new ArrayList<>())));
         if (suites.isEmpty() && !wanted.isEmpty()) {
             suites.put(TOP, new ArrayList<>());
         }

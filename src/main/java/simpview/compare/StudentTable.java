@@ -62,9 +62,11 @@ public final class StudentTable {
         for (Wanted wanted : missing) {
             String unreadable = wanted.unreadableNote("");
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
-                    .append(unreadable.isEmpty() ? " found (name it like page3.png)\n" : " found: " + unreadable + "\n");
+                    .append(unreadable.isEmpty() ? " found (name it like page3.png)" : " found: " + unreadable)
+                    .append('\n');
         }
-        List<BatchRow> counted = rows.stream().filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
+        List<BatchRow> counted = rows.stream()
+                .filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
         long pass = counted.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
         long compared = counted.size();
         long files = counted.stream().map(BatchRow::file).distinct().count();

@@ -69,8 +69,8 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable) {
             return "";
         }
         return files.size() == 1
-                ? files.get(0) + " is named like it, but is in a format simpview does not read (it reads PNG, JPEG, GIF "
-                        + "and BMP)"
+                ? files.get(0) + " is named like it, but is in a format simpview does not read (it reads PNG, "
+                        + "JPEG, GIF and BMP)"
                 : String.join(" and ", files) + " are named like it, but are in formats simpview does not read (it "
                         + "reads PNG, JPEG, GIF and BMP)";
     }
