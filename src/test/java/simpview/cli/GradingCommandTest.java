@@ -146,7 +146,7 @@ class GradingCommandTest {
         png(subs.resolve("page1.png"), page(1));
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\"},\n {\"match\": \"9\"},\n {\"match\": \"pageZ\"}\n]}");
-        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--rubric", rubric.toString(),
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--rubric", rubric.toString(),
                 "--out-dir", dir.resolve("o").toString());
         assertEquals(ExitCode.OK, run.exitCode(), "a warning only: " + run.err());
         assertTrue(run.err().contains("simpview compare: warning: rubric " + rubric + ": line 3, column 3 ($.pages[1]): "
