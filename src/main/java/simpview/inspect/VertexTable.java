@@ -7,6 +7,7 @@ import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
 import simpview.raster.CentreTest;
 import simpview.stage.Painter;
+import simpview.surface.PageCanvas;
 
 /**
  * A primitive's vertices through every space, as the geometry stages take
@@ -190,6 +191,9 @@ final class VertexTable {
         double pixelY = Math.floor(py + 0.5);
         if (Math.abs(pixelX) < Integer.MAX_VALUE && Math.abs(pixelY) < Integer.MAX_VALUE) {
             v.put("pixel", (int) pixelX, (int) pixelY);
+            if (pixelX < 0 || pixelX >= PageCanvas.PANEL || pixelY < 0 || pixelY >= PageCanvas.PANEL) {
+                v.put("pixel_outside", "past the panel's pixels, 0 to " + (PageCanvas.PANEL - 1) + " each way");
+            }
         } else {
             v.put("pixel", "none: too far outside the panel to name");
         }

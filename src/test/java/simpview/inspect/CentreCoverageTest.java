@@ -64,6 +64,12 @@ class CentreCoverageTest {
             assertEquals(1, report.history().size(), where + ": one write");
             assertEquals(0, report.history().get(0).primitive(), where);
         }
+        // a vertex on the panel's edge rounds to a pixel past it, and the table says so
+        Terms corner = new PixelInspector().inspect(InspectedScene.of(file), 300, 300, 0).vertices(0).list("vertices")
+                .get(2);
+        assertEquals("past the panel's pixels, 0 to 649 each way", corner.get("pixel_outside"));
+        assertEquals(null, new PixelInspector().inspect(InspectedScene.of(file), 300, 300, 0).vertices(0)
+                .list("vertices").get(0).get("pixel_outside"), "vertex (0, 0) is the panel's first pixel");
         // off the diagonal, above it: outside the first, inside the second
         PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), 100, 400, 0);
         assertEquals("the centre is outside the outline", report.vertices(0).terms("centre").get("why"));
