@@ -31,12 +31,14 @@ import simpview.surface.DrawingThreads;
         mixinStandardHelpOptions = true,
         version = ExitCode.VERSION,
         description = "Checks a folder of your pictures (page1.png ... page8.png, or window captures named so) against "
-                + "simpview's pages, or a folder of scenes, and prints one table: pass or fail and the worst region "
-                + "of each. Exit 0 only when every picture found passes and no page asked for is missing.",
+                + "simpview's pages, a folder of scenes, or the first assignment's pages (--assignment 1), and prints "
+                + "one table: pass or fail and the worst region of each. Exit 0 only when every picture found passes "
+                + "and no page asked for is missing.",
         footer = {"", "Examples:",
             "  simpview check my-pages/ --simp-dir course/",
             "  simpview check my-a3/ --scene course-a3/",
-            "  simpview check my-pages/ --pages 1-3 --seed 7 --out-dir check-report/"},
+            "  simpview check my-pages/ --pages 1-3 --seed 7 --out-dir check-report/",
+            "  simpview check my-a1/ --assignment 1 --a1-rule course"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:every picture found passes, and every page asked for has one",
             "1:some picture fails or cannot be read, a page asked for has no picture, no picture was found, a scene "
@@ -56,8 +58,14 @@ public final class CheckCommand implements Callable<Integer> {
 
     @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
             description = "the pages pictures are matched to by name, each asked for (default: 1-8, asked for only when "
-                    + "something in DIR is named like one of them)")
+                    + "something in DIR is named like one of them; with --assignment 1, its pages 1 to 5, default 1-5, "
+                    + "each asked for)")
     private PageRange pages;
+
+    @Option(names = "--assignment", paramLabel = "A",
+            description = "1: the first assignment's pages, panel by panel (a1-page3.png or page3.png is its page 3), "
+                    + "those of --pages asked for; not with --scene. 2: the eight pages (default)")
+    private Integer assignment;
 
     @Option(names = "--scene", paramLabel = "F.simp|D",
             description = "instead of the pages: one scene for every picture, or a folder of scenes matched by name")
@@ -104,6 +112,7 @@ public final class CheckCommand implements Callable<Integer> {
         if (pages != null && scene != null) {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
+        checkAssignment();
         if (!Files.isDirectory(dir)) {
             throw new ParameterException(spec.commandLine(), Files.exists(dir)
                     ? dir + " is a file, not a folder (one picture: simpview compare " + dir + " --page N)"
@@ -130,14 +139,37 @@ public final class CheckCommand implements Callable<Integer> {
             OwnPictures own = pictures.ownPictures(parent.ownScenes(),
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(),
-                    spec.commandLine().getErr(), pages == null);
+                    spec.commandLine().getErr(), pages == null && !firstAssignment());
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
                     CompareBatch.DiffImages.FAILING,
                     new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }
+            if (firstAssignment()) {
+                return batch.firstAssignment(dir, pages != null ? pages : CompareOptions.FIRST_ASSIGNMENT_PAGES, outputs);
+            }
             return batch.folder(dir, pages != null ? pages : ALL_PAGES, outputs);
+        }
+    }
+
+    /** Whether the first assignment's pages are checked (--assignment 1), not the eight pages or scenes. */
+    private boolean firstAssignment() {
+        return assignment != null && assignment == 1;
+    }
+
+    /** --assignment is 1 or 2; with 1, --pages names pages 1 to 5 of it, and there is no --scene. */
+    private void checkAssignment() {
+        if (assignment != null && assignment != 1 && assignment != 2) {
+            throw new ParameterException(spec.commandLine(), "--assignment must be 1 or 2, not " + assignment);
+        }
+        if (firstAssignment() && scene != null) {
+            throw new ParameterException(spec.commandLine(), "--assignment 1 checks the first assignment's pages, not "
+                    + "scenes: give --pages RANGE (default: 1-5) or leave --scene out");
+        }
+        if (firstAssignment() && pages != null && pages.last() > simpview.pages.Assignment1.COUNT) {
+            throw new ParameterException(spec.commandLine(), "--pages " + pages + ": the first assignment has pages 1 "
+                    + "to " + simpview.pages.Assignment1.COUNT + " (without --assignment 1, --pages names the eight pages)");
         }
     }
 

@@ -30,6 +30,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
 import java.util.function.Predicate;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
@@ -54,7 +57,6 @@ import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
-import simpview.pages.Page;
 import simpview.pages.PageContext;
 import simpview.pages.ScenePage;
 import simpview.pages.SceneList;
@@ -208,7 +210,26 @@ public final class CompareBatch {
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
         warnUnusedRules(pageSubjects(pages));
-        return run(dir, outputs, wanted, namer, relative -> pageMatch(relative, pages));
+        return run(dir, outputs, wanted, Set.of(), namer, relative -> pageMatch(relative, pages));
+    }
+
+    /**
+     * The first assignment's pages ({@code --assignment 1}): a picture whose name has a page number (a1-page3.png,
+     * page3.png) is that page of the first assignment, compared panel by panel, and every page of {@code pages}
+     * (1 to 5) is asked for: a submission without a picture of one has a MISSING row for it, worth its four
+     * panels' points.
+     */
+    int firstAssignment(Path dir, PageRange pages, Outputs outputs) {
+        Set<Integer> asked = new TreeSet<>();
+        for (int page = 1; page <= Assignment1.COUNT; page++) {
+            if (pages.contains(page)) {
+                asked.add(page);
+            }
+        }
+        warnUnusedRules(firstAssignmentSubjects(asked));
+        // nothing of the eight pages or of a scene is drawn, so no alternate is looked for by its name
+        return run(dir, outputs, List.of(), asked, name -> Optional.empty(),
+                relative -> firstAssignmentMatch(fileName(relative), pages, "--pages " + pages));
     }
 
     /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
@@ -216,11 +237,7 @@ public final class CompareBatch {
         String name = fileName(relative);
         OptionalInt number = SubmissionNames.pageNumber(name);
         if (number.isPresent() && namesFirstAssignment(relative)) {
-            if (number.getAsInt() > Assignment1.COUNT) {
-                return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not "
-                        + number.getAsInt());
-            }
-            return new Match(null, null, number.getAsInt());
+            return firstAssignmentMatch(name, null, null); // compared whatever --pages says
         }
         if (number.isEmpty()) {
             return new Match(null, "no page number in the name (expected a name like page3.png)");
@@ -229,6 +246,25 @@ public final class CompareBatch {
             return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
         }
         return new Match(CompareTarget.page(number.getAsInt()), null);
+    }
+
+    /**
+     * The first assignment's page a picture's file name names (a1-page3.png, page3.png: page 3), when it is one of
+     * {@code pages} (null: any of the five); else why it is skipped, {@code option} naming the pages asked for.
+     */
+    private static Match firstAssignmentMatch(String name, PageRange pages, String option) {
+        OptionalInt number = SubmissionNames.pageNumber(name);
+        if (number.isEmpty()) {
+            return new Match(null, "no page number in the name (expected a name like a1-page3.png)");
+        }
+        int page = number.getAsInt();
+        if (page > Assignment1.COUNT) {
+            return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not " + page);
+        }
+        if (pages != null && !pages.contains(page)) {
+            return new Match(null, "A1 page " + page + " is not among " + option);
+        }
+        return new Match(null, null, page);
     }
 
     /**
@@ -263,7 +299,7 @@ public final class CompareBatch {
             OptionalInt n = SubmissionNames.pageNumber(name);
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
-        return run(dir, outputs, wanted, namer, relative -> {
+        return run(dir, outputs, wanted, Set.of(), namer, relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(name -> new Match(CompareTarget.scene(scenes.get(name)), null))
                     .orElseGet(() -> pageMatch(relative, pages));
@@ -274,7 +310,7 @@ public final class CompareBatch {
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
             warnUnusedRules(Map.of(SubmissionNames.stem(scene.getFileName().toString()), 0));
-            return run(dir, outputs, List.of(CompareTarget.scene(scene)), name -> Optional.empty(),
+            return run(dir, outputs, List.of(CompareTarget.scene(scene)), Set.of(), name -> Optional.empty(),
                     relative -> Match.alone(CompareTarget.scene(scene)));
         }
         if (!Files.isDirectory(scene)) {
@@ -294,7 +330,7 @@ public final class CompareBatch {
         Map<String, Integer> subjects = new HashMap<>();
         scenes.keySet().forEach(name -> subjects.put(name, 0));
         warnUnusedRules(subjects);
-        return run(dir, outputs, wanted, name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
+        return run(dir, outputs, wanted, Set.of(), name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
@@ -312,7 +348,15 @@ public final class CompareBatch {
                 subjects.put("page" + p, p);
             }
         }
-        for (int page = 1; page <= Assignment1.COUNT; page++) {
+        subjects.putAll(firstAssignmentSubjects(
+                IntStream.rangeClosed(1, Assignment1.COUNT).boxed().collect(Collectors.toSet())));
+        return subjects;
+    }
+
+    /** The rubric keys of every panel of the first assignment's {@code pages}: "a1-page2-panel4". */
+    private static Map<String, Integer> firstAssignmentSubjects(Set<Integer> pages) {
+        Map<String, Integer> subjects = new HashMap<>();
+        for (int page : pages) {
             for (int k = 1; k <= A1Layout.PANELS; k++) {
                 subjects.put("a1-page" + page + "-panel" + k, 0);
             }
@@ -329,8 +373,14 @@ public final class CompareBatch {
         rubric.unusedRules(subjects).forEach(unused -> err.println(says + "warning: " + unused));
     }
 
-    private int run(Path dir, Outputs outputs, List<CompareTarget> wanted, Function<String, Optional<String>> namer,
-            Function<String, Match> matcher) {
+    /**
+     * Compares the pictures under {@code dir} and writes the results. {@code wanted}: the pages and scenes asked
+     * for; {@code firstAssignmentWanted}: the first assignment's pages asked for (besides those some picture is
+     * of); {@code namer}: the rubric key a file name names, for the alternates; {@code matcher}: what a picture
+     * (its path under {@code dir}) is compared with.
+     */
+    private int run(Path dir, Outputs outputs, List<CompareTarget> wanted, Set<Integer> firstAssignmentWanted,
+            Function<String, Optional<String>> namer, Function<String, Match> matcher) {
         List<Path> pictures;
         FolderListing listing;
         try {
@@ -372,8 +422,10 @@ public final class CompareBatch {
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
         // shows who lacks a page that others handed in).
-        Map<CompareTarget, List<String>> unreadable = unreadableByTarget(dir, listing.unreadable(), matcher);
-        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(askedFor(wanted, matches, unreadable.keySet()));
+        List<Match> unreadMatches = listing.unreadable().stream()
+                .map(file -> matcher.apply(dir.relativize(file).toString())).toList();
+        Map<String, List<String>> unreadable = unreadableByLabel(dir, listing.unreadable(), unreadMatches);
+        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(askedFor(wanted, matches, unreadMatches));
         for (Match match : matches) {
             if (match.target() != null) {
                 all.add(match.target());
@@ -381,13 +433,15 @@ public final class CompareBatch {
         }
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
-            asked.add(new Wanted(target.label(own.context()), ruleOf(target),
-                    unreadable.getOrDefault(target, List.of())));
+            String label = target.label(own.context());
+            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of())));
         }
-        for (int page : new TreeSet<>(firstAssignment.keySet())) {
-            for (int k = 1; k <= A1Layout.PANELS; k++) {
-                asked.add(new Wanted(firstAssignmentLabel(page, k), firstAssignmentRule(page, k)));
-            }
+        Set<Integer> firstPages = new TreeSet<>(firstAssignmentWanted);
+        firstPages.addAll(firstAssignment.keySet());
+        for (int page : firstPages) {
+            String label = firstAssignmentLabel(page);
+            asked.add(new Wanted(label, firstAssignmentPageRule(page), unreadable.getOrDefault(label, List.of()),
+                    "a1-page" + page + ".png"));
         }
         Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
@@ -741,11 +795,24 @@ public final class CompareBatch {
         return panels;
     }
 
+    /** E.g. "A1 page 1", "A1 page 3 (seed 361)": a page of the first assignment as a whole (one that is missing). */
+    private String firstAssignmentLabel(int page) {
+        return "A1 page " + page + (Assignment1.page(page).usesSeed() ? " (seed " + own.context().seed() + ")" : "");
+    }
+
     /** E.g. "A1 page 1 panel 4 (antialiased)", "A1 page 3 (seed 361) panel 1 (DDA)", "A1 page 4 panel 2". */
     private String firstAssignmentLabel(int page, int panel) {
-        Page shown = Assignment1.page(page);
-        return "A1 page " + page + (shown.usesSeed() ? " (seed " + own.context().seed() + ")" : "") + " panel " + panel
-                + (shown instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
+        return firstAssignmentLabel(page) + " panel " + panel
+                + (Assignment1.page(page) instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
+    }
+
+    /** A first-assignment page's rule as a whole (when it is missing): its four panels' rules, worth their points. */
+    private RubricRule firstAssignmentPageRule(int page) {
+        List<RubricRule> panels = new ArrayList<>();
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            panels.add(firstAssignmentRule(page, k));
+        }
+        return RubricRule.whole(panels);
     }
 
     /**
@@ -772,7 +839,7 @@ public final class CompareBatch {
         try {
             cut = cutter.cut(ours);
         } catch (CompareException e) {
-            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page, 1).replaceFirst(" panel .*", ""),
+            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page),
                     e.getMessage(), firstAssignmentRule(page, 1)));
         }
         List<BatchRow> rows = new ArrayList<>();
@@ -825,24 +892,25 @@ public final class CompareBatch {
      * The targets asked for of those given: all of them; or, when the pages are asked for only if handed in,
      * the pages only when some picture (or a file in a format simpview does not read) is named like one.
      */
-    private List<CompareTarget> askedFor(List<CompareTarget> given, List<Match> matches, Set<CompareTarget> unread) {
-        boolean handedIn = matches.stream().anyMatch(m -> m.target() != null && m.target().isPage())
-                || unread.stream().anyMatch(CompareTarget::isPage);
+    private List<CompareTarget> askedFor(List<CompareTarget> given, List<Match> matches, List<Match> unread) {
+        boolean handedIn = Stream.concat(matches.stream(), unread.stream())
+                .anyMatch(m -> m.target() != null && m.target().isPage());
         return pagesIfHandedIn && !handedIn ? given.stream().filter(t -> !t.isPage()).toList() : given;
     }
 
     /**
-     * The files in a picture format simpview does not read (page6.tif, page2.webp) by the page or scene their
-     * names name, as a picture so named would be matched: a page missing from their submission is told of them.
+     * The files in a picture format simpview does not read (page6.tif, a1-page2.webp) by the label of the page or
+     * scene their names name ({@code matches}, one a file, as a picture so named would be matched): a page missing
+     * from their submission is told of them.
      */
-    private static Map<CompareTarget, List<String>> unreadableByTarget(Path dir, List<Path> files,
-            Function<String, Match> matcher) {
-        Map<CompareTarget, List<String>> named = new HashMap<>();
-        for (Path file : files) {
-            String relative = dir.relativize(file).toString();
-            CompareTarget target = matcher.apply(relative).target();
-            if (target != null) {
-                named.computeIfAbsent(target, t -> new ArrayList<>()).add(relative);
+    private Map<String, List<String>> unreadableByLabel(Path dir, List<Path> files, List<Match> matches) {
+        Map<String, List<String>> named = new HashMap<>();
+        for (int i = 0; i < files.size(); i++) {
+            Match match = matches.get(i);
+            String label = match.target() != null ? match.target().label(own.context())
+                    : match.firstAssignmentPage() > 0 ? firstAssignmentLabel(match.firstAssignmentPage()) : null;
+            if (label != null) {
+                named.computeIfAbsent(label, t -> new ArrayList<>()).add(dir.relativize(files.get(i)).toString());
             }
         }
         return named;

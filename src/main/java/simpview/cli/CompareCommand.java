@@ -48,6 +48,7 @@ import simpview.surface.DrawingThreads;
             "  simpview compare a1-page2.png --assignment 1 --page 2",
             "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ --out-dir report/",
             "  simpview compare --dir subs/ --scene course-a3/ --out-dir report/",
+            "  simpview compare --dir subs/ --assignment 1 --pages 1-5 --out-dir report/",
             "  simpview compare --dir subs/ --pages 1-8 --simp-dir course/ \\",
             "      --rubric compare.json --gradescope results.json --junit results.xml \\",
             "      --html report/",
@@ -78,7 +79,9 @@ public final class CompareCommand implements Callable<Integer> {
     private Integer page;
 
     @Option(names = "--assignment", paramLabel = "A",
-            description = "1: compare with the first assignment's page --page N (1 to 5), panel by panel; 2: the eight pages (default)")
+            description = "1: the first assignment's pages, panel by panel: a picture against its page --page N (1 to 5), "
+                    + "or with --dir its pages --pages (default: 1-5), each asked for (not with --scene); 2: the eight "
+                    + "pages (default)")
     private Integer assignment;
 
     @Option(names = "--scene", paramLabel = "F.simp|D",
@@ -90,7 +93,9 @@ public final class CompareCommand implements Callable<Integer> {
     private Path dir;
 
     @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
-            description = "with --dir: the pages pictures are matched to by name (page3.png is page 3), e.g. 1-8")
+            description = "with --dir: the pages pictures are matched to by name (page3.png is page 3), e.g. 1-8, "
+                    + "each asked for; with --assignment 1, the first assignment's pages (a1-page3.png is its page 3), "
+                    + "1 to 5")
     private PageRange pages;
 
     @Option(names = "--diff", paramLabel = "OUT.png", description = "write ours | theirs | heat map, at 1:1")
@@ -156,7 +161,7 @@ public final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         checkOptions();
-        if (assignment != null && assignment == 1) {
+        if (firstAssignment() && dir == null) {
             return compareAssignment1();
         }
         try (DrawingThreads drawing = threads.open()) {
@@ -173,6 +178,10 @@ public final class CompareCommand implements Callable<Integer> {
                 CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
                         gradescope, junit, html, false, diffs,
                         new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene"));
+                if (firstAssignment()) {
+                    return batch.firstAssignment(dir, pages != null ? pages : CompareOptions.FIRST_ASSIGNMENT_PAGES,
+                            outputs);
+                }
                 return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
             }
             return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
@@ -183,11 +192,19 @@ public final class CompareCommand implements Callable<Integer> {
     private void checkOptions() {
         usage(image == null ^ dir == null, image == null ? "give a picture to compare, or --dir D" : "give a picture or --dir D, not both");
         boolean batch = dir != null;
+        boolean first = firstAssignment();
+        if (batch && first) {
+            usage(scene == null, "--assignment 1 grades the first assignment's pages, not scenes: give --pages RANGE "
+                    + "(default: 1-5) or leave --scene out");
+            usage(pages == null || pages.last() <= Assignment1.COUNT, "--pages " + pages + ": the first assignment has "
+                    + "pages 1 to " + Assignment1.COUNT + " (without --assignment 1, --pages names the eight pages)");
+        }
         if (batch) {
             usage(Files.isDirectory(dir), Files.exists(dir)
                     ? "--dir " + dir + " is a file, not a folder (one picture: simpview compare " + dir + " --page N)"
                     : "--dir " + dir + ": no such folder");
-            usage(pages == null ^ scene == null, "--dir needs either --pages RANGE or --scene F.simp|D");
+            usage(first || pages == null ^ scene == null,
+                    "--dir needs either --pages RANGE or --scene F.simp|D (or --assignment 1: the first assignment's pages)");
             usage(page == null, "--page goes with one picture; with --dir use --pages RANGE");
             usage(diff == null, "with --dir the diff images go to --out-dir");
             usage(outDir != null || html != null || gradescope != null || junit != null,
@@ -205,15 +222,20 @@ public final class CompareCommand implements Callable<Integer> {
             new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene").writes(diff, "--diff");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
-        boolean first = assignment != null && assignment == 1;
-        usage(!first || !batch && page != null && diff == null,
-                "--assignment 1 compares one picture with one page: give IMAGE --page N (no --dir, no --diff)");
+        usage(!first || batch || page != null && diff == null,
+                "--assignment 1 compares one picture with one page: give IMAGE --page N (no --diff), or grade a folder "
+                        + "with --dir D");
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
         usage(flipThreshold == null || metric == Comparison.Metric.FLIP || rubric != null,
                 "--flip-threshold goes with --metric flip (or a rubric whose rules use it)");
         pictures.check(scene);
+    }
+
+    /** Whether the first assignment's pages are compared (--assignment 1), not the eight pages or scenes. */
+    private boolean firstAssignment() {
+        return assignment != null && assignment == 1;
     }
 
     private double flipThreshold() {

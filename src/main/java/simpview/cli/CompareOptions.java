@@ -4,6 +4,7 @@ import java.util.BitSet;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
+import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 
 /** The values {@code simpview compare} reads from its options: tolerances, shares, page ranges. */
@@ -109,11 +110,19 @@ public final class CompareOptions {
         }
     }
 
+    /** The first assignment's five pages: what --pages is with --assignment 1 when it is not given. */
+    static final PageRange FIRST_ASSIGNMENT_PAGES = new PageRangeConverter().convert("1-" + Assignment1.COUNT);
+
     /** Pages, e.g. {@code 1-8}, {@code 6} or {@code 1,3,6-8}. */
     record PageRange(BitSet pages, String text) {
 
         boolean contains(int page) {
             return page >= 1 && pages.get(page);
+        }
+
+        /** The highest page it names. */
+        int last() {
+            return pages.length() - 1;
         }
 
         @Override

@@ -60,7 +60,7 @@ public final class GradescopeResults {
             test.addProperty("max_score", lost.rule().points());
             String unreadable = lost.unreadableNote("");
             test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission"
-                    + (unreadable.isEmpty() ? " (a picture is matched by its name, e.g. page3.png)."
+                    + (unreadable.isEmpty() ? " (a picture is matched by its name, e.g. " + lost.example() + ")."
                             : ": " + unreadable + "."));
             test.addProperty("visibility", lost.rule().visibility());
             JsonArray tags = new JsonArray();

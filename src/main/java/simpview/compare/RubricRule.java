@@ -1,6 +1,7 @@
 package simpview.compare;
 
 import java.nio.file.Path;
+import java.util.List;
 
 /**
  * How one page or scene is judged and scored: the rule of a rubric that
@@ -35,6 +36,29 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
             double flipThreshold) {
         return new RubricRule("*", tolerance, deviation, minShare, -1, 1, Math.min(ZERO_SHARE, minShare), metric, null, "visible",
                 flipThreshold);
+    }
+
+    /** Gradescope's visibilities, the least visible first. */
+    private static final List<String> VISIBILITIES =
+            List.of("hidden", "after_due_date", "after_published", "visible");
+
+    /**
+     * The rule of a page judged in parts (the first assignment's four panels, each by its own rule) when it is
+     * scored as one, because it is missing: the first part's rule, worth all the parts' points (so a missing
+     * page costs what its parts would have scored), and as visible as the least visible of them.
+     */
+    public static RubricRule whole(List<RubricRule> parts) {
+        RubricRule first = parts.get(0);
+        double points = 0;
+        String visibility = first.visibility();
+        for (RubricRule part : parts) {
+            points += part.points();
+            if (VISIBILITIES.indexOf(part.visibility()) < VISIBILITIES.indexOf(visibility)) {
+                visibility = part.visibility();
+            }
+        }
+        return new RubricRule(first.match(), first.tolerance(), first.deviation(), first.minShare(), first.maxFailing(),
+                points, first.zeroShare(), first.metric(), first.alternates(), visibility, first.flipThreshold());
     }
 
     /** A comparison of two square panels made under this rule: its deviation, metric and FLIP threshold. */

@@ -62,7 +62,7 @@ public final class StudentTable {
         for (Wanted wanted : missing) {
             String unreadable = wanted.unreadableNote("");
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
-                    .append(unreadable.isEmpty() ? " found (name it like page3.png)" : " found: " + unreadable)
+                    .append(unreadable.isEmpty() ? " found (name it like " + wanted.example() + ")" : " found: " + unreadable)
                     .append('\n');
         }
         List<BatchRow> counted = rows.stream()

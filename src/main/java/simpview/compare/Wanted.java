@@ -15,16 +15,33 @@ import java.util.Map;
  * @param unreadable the files handed in that are named like it but are in a format simpview does not read
  *     (page6.tif), by their paths in the folder: a page missing from a submission that handed in one of
  *     these is told why
+ * @param example a file name a picture of it may have, for the words of a missing page ("page3.png",
+ *     "a1-page3.png")
  */
-public record Wanted(String target, RubricRule rule, List<String> unreadable) {
+public record Wanted(String target, RubricRule rule, List<String> unreadable, String example) {
+
+    /** A page's file name for the examples when none is given. */
+    public static final String PAGE_EXAMPLE = "page3.png";
 
     public Wanted(String target, RubricRule rule) {
         this(target, rule, List.of());
     }
 
+    public Wanted(String target, RubricRule rule, List<String> unreadable) {
+        this(target, rule, unreadable, PAGE_EXAMPLE);
+    }
+
     /** Those of {@code wanted} that none of {@code rows} was matched to. */
     public static List<Wanted> missing(List<Wanted> wanted, List<BatchRow> rows) {
-        return wanted.stream().filter(w -> rows.stream().noneMatch(r -> r.target().equals(w.target()))).toList();
+        return wanted.stream().filter(w -> rows.stream().noneMatch(w::metBy)).toList();
+    }
+
+    /**
+     * Whether a row is of it: its target is this one, or (a page compared panel by panel, the first
+     * assignment's "A1 page 2") one of its panels ("A1 page 2 panel 4 (antialiased)").
+     */
+    public boolean metBy(BatchRow row) {
+        return row.target().equals(target) || row.target().startsWith(target + " panel ");
     }
 
     /**

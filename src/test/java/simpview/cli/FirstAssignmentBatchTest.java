@@ -182,6 +182,108 @@ class FirstAssignmentBatchTest {
     }
 
     @Test
+    void withAssignment1ItsPagesAreAskedForAndAMissingOneCostsItsFourPanels() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("alice/a1-page1.png"), page(1));
+        png(subs.resolve("alice/a1-page2.png"), page(2));
+        png(subs.resolve("alice/a1-page3.png"), Assignment1.render(3, PageContext.defaults().withSeed(7)));
+        png(subs.resolve("bob/a1-page1.png"), page(1));
+        png(subs.resolve("bob/page3.png"), captured(Assignment1.render(3, PageContext.defaults().withSeed(7))));
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [{\"match\": \"a1-*-panel4\", \"points\": 2}]}");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--assignment", "1", "--pages", "1-3", "--seed", "7",
+                "--rubric", rubric.toString(), "--out-dir", out.toString(), "--diffs", "none",
+                "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob has no A1 page 2: " + run.out() + run.err());
+        assertFalse(run.err().contains("note:"), run.err());
+
+        List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
+        // a heading, five pictures of four panels (bob's page3.png is the first assignment's page 3), one MISSING row
+        assertEquals(1 + 5 * 4 + 1, csv.size(), String.join("\n", csv));
+        assertTrue(csv.stream().noneMatch(r -> r.contains(",FAIL,")), "seed 7, as drawn: " + String.join("\n", csv));
+        assertTrue(csv.stream().anyMatch(r -> r.startsWith("bob/page3.png,A1 page 3 (seed 7) panel 1 (DDA),")),
+                String.join("\n", csv));
+        assertEquals("bob/,A1 page 2,,,,,,,,MISSING,,,no picture of A1 page 2 in bob was found", csv.get(csv.size() - 1));
+
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertTrue(xml.contains("<testcase name=\"A1 page 2 (no picture)\" classname=\"bob\"><failure message=\"no "
+                + "picture of A1 page 2 found\" type=\"missing\">"), xml);
+        String html = Files.readString(out.resolve("index.html"));
+        // the page is worth its panels' points: 1 + 1 + 1 + 2
+        assertTrue(html.contains("<td>A1 page 2</td><td>MISSING</td>"), html);
+        assertTrue(html.contains(">0 / 5</td>"), html);
+
+        Path bob = dir.resolve("bob.json");
+        CliRun alone = CliRun.of("compare", "--dir", subs.resolve("bob").toString(), "--assignment", "1", "--pages", "1-3",
+                "--seed", "7", "--rubric", rubric.toString(), "--gradescope", bob.toString());
+        assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), alone.err());
+        JsonObject results = JsonParser.parseString(Files.readString(bob)).getAsJsonObject();
+        JsonArray tests = results.getAsJsonArray("tests");
+        assertEquals(4 + 4 + 1, tests.size(), "two pages of four panels and the page not handed in: " + tests);
+        JsonObject missing = tests.get(8).getAsJsonObject();
+        assertEquals("A1 page 2 (no picture)", missing.get("name").getAsString());
+        assertEquals(0.0, missing.get("score").getAsDouble());
+        assertEquals(5.0, missing.get("max_score").getAsDouble(), "what its four panels would have scored");
+        assertTrue(missing.get("output").getAsString().contains("e.g. a1-page2.png"), missing.toString());
+        assertEquals(10.0, results.get("score").getAsDouble());
+        assertEquals(15.0, tests.asList().stream().mapToDouble(t -> t.getAsJsonObject().get("max_score").getAsDouble())
+                .sum(), "three pages of 5 points");
+
+        CliRun check = CliRun.of("check", subs.resolve("bob").toString(), "--assignment", "1", "--seed", "7");
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        for (String lacking : List.of("A1 page 2", "A1 page 4 (seed 7)", "A1 page 5 (seed 7)")) {
+            assertTrue(check.out().contains("\nno picture of " + lacking + " found (name it like a1-page"),
+                    "pages 1 to 5 asked for: " + check.out());
+        }
+        assertTrue(check.out().endsWith("8 of 8 pages and panels (2 pictures) pass; 3 pages without a picture\n"),
+                check.out());
+        assertEquals(ExitCode.OK, CliRun.of("check", subs.resolve("bob").toString(), "--assignment", "1", "--pages", "1,3",
+                "--seed", "7").exitCode());
+    }
+
+    @Test
+    void withoutAssignment1AFirstAssignmentPageOthersHandedInIsOneMissingRow() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("alice/a1-page2.png"), page(2));
+        png(subs.resolve("bob/page1.png"), new simpview.pages.PageRenderer().renderImage(1, PageContext.defaults()));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", out.toString(),
+                "--diffs", "none");
+        List<String> missing = Files.readAllLines(out.resolve("compare.csv")).stream()
+                .filter(r -> r.contains(",MISSING,")).toList();
+        assertEquals(List.of("alice/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in alice was found",
+                "bob/,A1 page 2,,,,,,,,MISSING,,,no picture of A1 page 2 in bob was found"), missing,
+                "one row for the page, not one a panel");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+    }
+
+    @Test
+    void assignment1KeepsTheCoursesRuleAndRefusesScenesAndPagesBeyondFive() throws Exception {
+        Path subs = dir.resolve("subs");
+        Files.createDirectories(subs);
+        Files.copy(CourseFiles.require("reference/images/a1/page1.png"), subs.resolve("a1-page1.png"));
+        CliRun course = CliRun.of("check", subs.toString(), "--assignment", "1", "--pages", "1", "--a1-rule", "course");
+        assertEquals(ExitCode.OK, course.exitCode(), "the course's page 1 by the course's rule: " + course.out());
+        assertEquals(ExitCode.SCENE_ERROR, CliRun.of("check", subs.toString(), "--assignment", "1", "--pages", "1")
+                .exitCode(), "by SPEC's rule its Bresenham panel fails");
+
+        String[][] refused = {
+            {"compare", "--dir", subs.toString(), "--assignment", "1", "--scene", subs.toString(), "--out-dir", "x"},
+            {"compare", "--dir", subs.toString(), "--assignment", "1", "--pages", "1-8", "--out-dir", "x"},
+            {"check", subs.toString(), "--assignment", "1", "--scene", subs.toString()},
+            {"check", subs.toString(), "--assignment", "1", "--pages", "6"},
+            {"check", subs.toString(), "--assignment", "3"}};
+        for (String[] args : refused) {
+            CliRun run = CliRun.of(args);
+            assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), String.join(" ", args) + "\n" + run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+        }
+        assertTrue(CliRun.of(refused[1]).err().contains("--pages 1-8: the first assignment has pages 1 to 5"));
+        assertTrue(CliRun.of(refused[0]).err().contains("--assignment 1 grades the first assignment's pages, not scenes"));
+    }
+
+    @Test
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
         png(subs.resolve("a1-page1.png"), page(1));

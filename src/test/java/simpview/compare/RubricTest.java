@@ -164,6 +164,28 @@ class RubricTest {
     }
 
     @Test
+    void aPageJudgedInPanelsIsWorthTheirPointsAsAWholeAndAsVisibleAsTheLeastVisible() throws Exception {
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, """
+                {
+                  "defaults": {"visibility": "after_published"},
+                  "pages": [
+                    {"match": "a1-*-panel4", "points": 2.5, "visibility": "after_due_date"},
+                    {"match": "a1-page2-panel1", "points": 0.5, "visibility": "visible"}
+                  ]
+                }
+                """);
+        Rubric rubric = Rubric.read(file, BASE);
+        java.util.List<RubricRule> panels = new java.util.ArrayList<>();
+        for (int k = 1; k <= 4; k++) {
+            panels.add(rubric.ruleFor("a1-page2-panel" + k, 0));
+        }
+        RubricRule whole = RubricRule.whole(panels);
+        assertEquals(0.5 + 1 + 1 + 2.5, whole.points());
+        assertEquals("after_due_date", whole.visibility(), "no panel's points shown before its own rule allows");
+    }
+
+    @Test
     void badRubricsSayWhereAndWhat() throws Exception {
         assertEquals("line 2, column 29 ($.pages[0].tolerence)", placeOf("{\"pages\": [\n  {\"match\": \"1\", \"tolerence\": 3}]}"));
         CompareException deviation = bad("{\"pages\": [{\"match\": \"1\", \"deviation\": 3}]}");
