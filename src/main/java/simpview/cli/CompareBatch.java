@@ -420,6 +420,11 @@ public final class CompareBatch {
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan);
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
+        if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage) && firstAssignmentOnly(rows)) {
+            err.println(says + "note: every picture compared is a page of the first assignment, but --pages names the "
+                    + "eight pages, and each of those is asked for (a MISSING row where no picture is). To grade the "
+                    + "first assignment, give --assignment 1: its --pages are its pages 1 to 5 (default: 1-5).");
+        }
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
         // shows who lacks a page that others handed in).
         List<Match> unreadMatches = listing.unreadable().stream()
@@ -447,6 +452,25 @@ public final class CompareBatch {
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
         int written = writeResults(rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /**
+     * Whether the pictures compared (or broken) are all of the first assignment's pages, and there is one: the eight
+     * pages asked for by --pages are then a teacher's slip for --assignment 1. Files skipped do not count either way.
+     */
+    private boolean firstAssignmentOnly(List<BatchRow> rows) {
+        List<BatchRow> compared = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED).toList();
+        return !compared.isEmpty() && compared.stream().allMatch(this::isFirstAssignments);
+    }
+
+    /** Whether a row is of one of the first assignment's pages: one of its panels, or a picture of it that is broken. */
+    private boolean isFirstAssignments(BatchRow row) {
+        for (int page = 1; page <= Assignment1.COUNT; page++) {
+            if (new Wanted(firstAssignmentLabel(page), rubric.defaults()).metBy(row)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */

@@ -284,6 +284,33 @@ class FirstAssignmentBatchTest {
     }
 
     @Test
+    void pagesOverAFolderOfFirstAssignmentPagesSaysSoOnceAndGradesAsBefore() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("alice/a1-page1.png"), page(1));
+        png(subs.resolve("bob/a1-page1.png"), page(1));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
+                "--diffs", "none");
+        String note = "note: every picture compared is a page of the first assignment, but --pages names the eight "
+                + "pages";
+        assertEquals(1, run.err().split(note, -1).length - 1, run.err());
+        assertTrue(run.err().contains("give --assignment 1"), run.err());
+        // the grading is as --pages says: each of the eight pages' pages 1 to 5 is missing for each student
+        assertEquals(2 * 5, Files.readAllLines(out.resolve("compare.csv")).stream().filter(r -> r.contains(",MISSING,"))
+                .count());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+
+        CliRun check = CliRun.of("check", subs.resolve("alice").toString(), "--pages", "1");
+        assertTrue(check.err().contains(note), check.err());
+        assertFalse(CliRun.of("check", subs.resolve("alice").toString()).err().contains("note:"),
+                "without --pages nothing of the eight pages is asked for");
+        png(subs.resolve("bob/page2.png"), new simpview.pages.PageRenderer().renderImage(2, PageContext.defaults()));
+        CliRun mixed = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
+                "--diffs", "none");
+        assertFalse(mixed.err().contains("note:"), "a page of the eight is handed in: " + mixed.err());
+    }
+
+    @Test
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
         png(subs.resolve("a1-page1.png"), page(1));
