@@ -830,7 +830,10 @@ public final class CompareBatch {
                 + (Assignment1.page(page) instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
     }
 
-    /** A first-assignment page's rule as a whole (when it is missing): its four panels' rules, worth their points. */
+    /**
+     * A first-assignment page's rule as a whole (when it is missing, or its picture cannot be compared): its four
+     * panels' rules, worth their points.
+     */
     private RubricRule firstAssignmentPageRule(int page) {
         List<RubricRule> panels = new ArrayList<>();
         for (int k = 1; k <= A1Layout.PANELS; k++) {
@@ -863,8 +866,9 @@ public final class CompareBatch {
         try {
             cut = cutter.cut(ours);
         } catch (CompareException e) {
-            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page),
-                    e.getMessage(), firstAssignmentRule(page, 1)));
+            // it scores nothing of what its four panels are worth, as a page not handed in
+            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page), e.getMessage(),
+                    firstAssignmentPageRule(page)));
         }
         List<BatchRow> rows = new ArrayList<>();
         for (int k = 1; k <= A1Layout.PANELS; k++) {

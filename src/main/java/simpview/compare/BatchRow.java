@@ -89,6 +89,16 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 regions, alternate, size, why);
     }
 
+    /**
+     * The page it is of: its target, or for a panel of a page compared panel by panel (the first assignment's,
+     * whose panels are smaller than a page's), that page ("A1 page 2" for "A1 page 2 panel 4 (antialiased)"), so
+     * that a picture of it that cannot be read is of the same page as its panels.
+     */
+    public String page() {
+        int at = target.indexOf(" panel ");
+        return size != Comparison.N && at >= 0 ? target.substring(0, at) : target;
+    }
+
     /** Whether it counts: it is the picture of its page that is scored in its submission (or was skipped). */
     public boolean counts() {
         return notCounted.isEmpty();

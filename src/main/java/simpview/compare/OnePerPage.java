@@ -46,7 +46,7 @@ public final class OnePerPage {
         Map<List<String>, String> counting = new LinkedHashMap<>();
         for (BatchRow row : rows) {
             if (!row.target().isEmpty()) {
-                List<String> page = List.of(submission.apply(row.file()), row.target());
+                List<String> page = List.of(submission.apply(row.file()), row.page());
                 String first = counting.get(page);
                 if (first == null || !plainlyNamed.test(first) && plainlyNamed.test(row.file())) {
                     counting.put(page, row.file());
@@ -56,8 +56,8 @@ public final class OnePerPage {
         List<BatchRow> marked = new ArrayList<>();
         for (BatchRow row : rows) {
             String counts = row.target().isEmpty() ? row.file()
-                    : counting.get(List.of(submission.apply(row.file()), row.target()));
-            marked.add(counts.equals(row.file()) ? row : row.notCounted(why(counts, row.target(), plainlyNamed)));
+                    : counting.get(List.of(submission.apply(row.file()), row.page()));
+            marked.add(counts.equals(row.file()) ? row : row.notCounted(why(counts, row.page(), plainlyNamed)));
         }
         return marked;
     }

@@ -243,6 +243,31 @@ class FirstAssignmentBatchTest {
     }
 
     @Test
+    void aFirstAssignmentPictureThatCannotBeComparedCostsItsWholePageOnce() throws Exception {
+        Path bob = dir.resolve("bob");
+        png(bob.resolve("a1-page1 copy.png"), page(1));
+        Files.write(bob.resolve("a1-page1.png"), new byte[] {1, 2, 3}); // named the page alone: it counts, broken
+        Files.write(bob.resolve("a1-page2.png"), new byte[] {1, 2, 3});
+        Path json = dir.resolve("results.json");
+        CliRun run = CliRun.of("compare", "--dir", bob.toString(), "--assignment", "1", "--pages", "1-2",
+                "--gradescope", json.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        JsonArray tests = JsonParser.parseString(Files.readString(json)).getAsJsonObject().getAsJsonArray("tests");
+        assertEquals(1 + 4 + 1, tests.size(), tests.toString());
+        for (var test : tests) {
+            JsonObject one = test.getAsJsonObject();
+            String name = one.get("name").getAsString();
+            double max = one.get("max_score").getAsDouble();
+            if (name.endsWith("(a1-page1 copy.png)")) {
+                assertEquals(0, max, "a1-page1.png counts for the page, not its copy's panels: " + one);
+            } else {
+                assertTrue(name.equals("A1 page 1 (a1-page1.png)") || name.equals("A1 page 2 (a1-page2.png)"), name);
+                assertEquals(4, max, "a page that cannot be compared scores 0 of its four panels' points: " + one);
+            }
+        }
+    }
+
+    @Test
     void withoutAssignment1AFirstAssignmentPageOthersHandedInIsOneMissingRow() throws Exception {
         Path subs = dir.resolve("subs");
         png(subs.resolve("alice/a1-page2.png"), page(2));
