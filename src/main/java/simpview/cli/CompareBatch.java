@@ -200,7 +200,7 @@ public final class CompareBatch {
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
     int pages(Path dir, PageRange pages, Outputs outputs) {
         List<CompareTarget> wanted = new ArrayList<>();
-        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+        for (int p = 1; p <= Assignment2.COUNT; p++) {
             if (pages.contains(p)) {
                 wanted.add(CompareTarget.page(p));
             }
@@ -615,8 +615,7 @@ public final class CompareBatch {
      */
     private String stopped(Map<CompareTarget, SceneException> undrawable, Path dir) {
         List<String> names = undrawable.keySet().stream().map(CompareBatch::named).toList();
-        String all = names.size() == 1 ? names.get(0)
-                : String.join(", ", names.subList(0, names.size() - 1)) + " and " + names.get(names.size() - 1);
+        String all = UsageWords.joined(names, "and");
         StringBuilder text = new StringBuilder(says + "nothing was graded: simpview cannot draw " + all
                 + " itself, so every picture of " + (names.size() == 1 ? "it" : "them")
                 + " would score 0 whatever it shows:\n");
