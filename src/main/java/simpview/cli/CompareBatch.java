@@ -758,7 +758,8 @@ public final class CompareBatch {
 
     private static String progress(BatchRow row) {
         return switch (row.result()) {
-            case PASS, FAIL -> row.result() + " " + Percent.of(row.verdict());
+            case PASS, FAIL -> row.result() + " " + Percent.of(row.verdict())
+                    + (row.systematic() == null ? "" : "; looks " + row.systematic().brief());
             case ERROR, SKIPPED -> row.result() + ": " + row.note().lines().findFirst().orElse("");
         };
     }

@@ -1,7 +1,5 @@
 package simpview.cli;
 
-import simpview.compare.PngFiles;
-
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -18,13 +16,15 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
-import simpview.compare.PanelGridComparison;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.HeatMap;
+import simpview.compare.PanelGridComparison;
 import simpview.compare.Picture;
+import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.compare.SystematicError;
 import simpview.pages.PageContext;
 import simpview.pages.A1Polygons;
 import simpview.pages.Assignment1;
@@ -314,6 +314,12 @@ public final class CompareCommand implements Callable<Integer> {
         }
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
+        for (int k = 0; k < panels.length; k++) {
+            SystematicError systematic = comparison.shares(k).systematic();
+            if (systematic != null) {
+                out.println("hint: panel " + (k + 1) + ": " + systematic.hint(panels[k].size()));
+            }
+        }
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
     }
 

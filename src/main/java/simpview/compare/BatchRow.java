@@ -24,10 +24,11 @@ import java.util.List;
  * @param notCounted "" when the row counts; else why not: which other picture of its page counts in its
  *     submission, and why that one ({@link OnePerPage}). It is compared and listed all the same, but scores
  *     nothing and is worth nothing.
+ * @param systematic the mistake that changes its whole panel the same way, or null when none explains it
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
-        List<DiffRegion> regions, String alternate, int size, String notCounted) {
+        List<DiffRegion> regions, String alternate, int size, String notCounted, SystematicError systematic) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -42,7 +43,8 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return new BatchRow(file, target, report.comparison().exact(), report.comparison().withSlack(),
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
-                report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "");
+                report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "",
+                report.systematic());
     }
 
     /**
@@ -54,7 +56,8 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
                 comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
-                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "");
+                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "",
+                SystematicError.find(comparison, rule.tolerance()));
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -63,18 +66,18 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "", Comparison.N, "");
+                List.of(), "", Comparison.N, "", null);
     }
 
     public static BatchRow skipped(String file, String why) {
         return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
-                Comparison.N, "");
+                Comparison.N, "", null);
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size, notCounted);
+                regions, alternate, size, notCounted, systematic);
     }
 
     /**
@@ -86,7 +89,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
                 rule.flipThreshold());
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
-                regions, alternate, size, why);
+                regions, alternate, size, why, systematic);
     }
 
     /**
@@ -104,9 +107,14 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return notCounted.isEmpty();
     }
 
-    /** Its note, after why it does not count when it does not: the table's note column. */
+    /**
+     * Its note, after why it does not count when it does not, and before the mistake that explains its panel
+     * when one does: the table's note column.
+     */
     public String remarks() {
-        return counts() ? note : "not counted: " + notCounted + (note.isEmpty() ? "" : "; " + note);
+        String remarks = counts() ? note : "not counted: " + notCounted + (note.isEmpty() ? "" : "; " + note);
+        return systematic == null ? remarks : remarks + (remarks.isEmpty() ? "" : "; ") + "looks "
+                + systematic.brief();
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

@@ -14,23 +14,25 @@ import java.util.List;
  * @param tolerance the tolerance the verdict uses, in 1/255 steps (with slack)
  * @param minimum the share, in percent, that passes
  * @param maxFailing the most pixels that may differ beyond the tolerance even with slack, or -1 for no limit
+ * @param systematic the mistake that changes the whole panel the same way, or null when none explains it
  */
 public record ComparisonReport(Picture theirs, String against, Comparison comparison, Margins margins,
-        DiffRegions.Found regions, int tolerance, double minimum, int maxFailing) {
+        DiffRegions.Found regions, int tolerance, double minimum, int maxFailing, SystematicError systematic) {
 
     /** How many of the largest patches a report lists. */
     public static final int REGIONS_LISTED = 5;
 
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
         return new ComparisonReport(theirs, against, comparison, theirs.margins(tolerance),
-                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1);
+                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1,
+                SystematicError.find(comparison, tolerance));
     }
 
     /** Judged by a rubric's rule (its tolerance, minimum share and pixel limit; the comparison made with its deviation). */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule) {
         return new ComparisonReport(theirs, against, comparison, theirs.margins(rule.tolerance()),
                 DiffRegions.of(comparison, rule.tolerance(), REGIONS_LISTED), rule.tolerance(), rule.minShare(),
-                rule.maxFailing());
+                rule.maxFailing(), SystematicError.find(comparison, rule.tolerance()));
     }
 
     /** The share the verdict is on: within the tolerance, with slack; with FLIP, at most FLIP's threshold. */
@@ -101,6 +103,9 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                     .append(" differs (")
                     .append(blob.describe()).append("): more than an edge, so a shape may be missing, moved or of"
                     + " another colour there; see the diff image\n");
+        }
+        if (systematic != null) {
+            out.append("hint: ").append(systematic.hint(comparison.size())).append('\n');
         }
         return out.toString();
     }

@@ -23,8 +23,11 @@ public final class PanelGridComparison {
     public record Panel(int left, int top, int size) {
     }
 
-    /** One panel's shares, 0 to 1: identical, and within the tolerance in every channel (with FLIP: at most its threshold). */
-    public record PanelShares(double identical, double within) {
+    /**
+     * One panel's shares, 0 to 1: identical, and within the tolerance in every channel (with FLIP: at most its
+     * threshold); and the mistake that changes the whole panel the same way, or null when none explains it.
+     */
+    public record PanelShares(double identical, double within, SystematicError systematic) {
     }
 
     private final int pageLeft;
@@ -85,7 +88,8 @@ public final class PanelGridComparison {
                 within += (flip == null ? d <= tolerance : flip[i] <= flipThreshold) ? 1 : 0;
             }
             double n = (double) p.size() * p.size();
-            shares[k] = new PanelShares(identical / n, within / n);
+            shares[k] = new PanelShares(identical / n, within / n,
+                    SystematicError.find(cut.ours()[k], cut.theirs()[k], p.size(), tolerance));
         }
         return new PanelGridComparison(cut.pageLeft(), cut.pageTop(), shares);
     }

@@ -1,6 +1,7 @@
 package simpview.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -59,6 +60,9 @@ class Assignment1CompareTest {
         assertTrue(starburst.out().contains("Starburst, by the course's pictures' rule"), starburst.out());
         assertTrue(starburst.out().contains("2 Bresenham                              99.98 %      99.98 %"), starburst.out());
         assertEquals(ExitCode.OK, starburst.exitCode(), "every panel reaches 99 % within 8/255");
+        for (CliRun course : new CliRun[] {run, bySpec, starburst}) {
+            assertFalse(course.out().contains("hint:"), "no move, turn or swap explains a course's panel: " + course.out());
+        }
         CliRun wrong = CliRun.of("compare", page1, "--assignment", "1", "--page", "1", "--a1-rule", "mine");
         assertEquals(ExitCode.USAGE_ERROR, wrong.exitCode());
         assertTrue(wrong.err().contains("--a1-rule must be spec or course, not mine"), wrong.err());

@@ -281,6 +281,32 @@ public class CompareBatchTest {
                 + "__MACOSX folder: a Mac's zip leftovers)"), run.err());
     }
 
+    /** A panel moved or turned whole is named so in the table, on stderr and in the student's own feedback. */
+    @Test
+    void aPanelTurnedOrMovedWholeIsNamedInEveryResult() throws Exception {
+        Path subs = dir.resolve("subs");
+        BufferedImage page = page(2);
+        BufferedImage over = page(2);
+        for (int y = 50; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                over.setRGB(x, y, page.getRGB(x, 749 - y));
+            }
+        }
+        png(subs.resolve("ann/page2.png"), over);
+        png(subs.resolve("bob/page2.png"), page);
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "2", "--out-dir", out.toString(),
+                "--gradescope", out.resolve("results.json").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        List<String> rows = csvRows(out);
+        assertTrue(rows.get(1).startsWith("ann/page2.png,") && rows.get(1).endsWith("; looks upside down\""), rows.get(1));
+        assertFalse(rows.get(2).contains("looks"), rows.get(2));
+        assertTrue(run.err().contains("ann/page2.png: FAIL ") && run.err().contains("; looks upside down\n"), run.err());
+        String results = Files.readString(out.resolve("results.json"));
+        assertTrue(results.contains("hint: your panel is simpview's upside down: so turned back, 100.00 %"), results);
+        assertEquals(1, results.split("hint:", -1).length - 1, "bob's right page gets none: " + results);
+    }
+
     @Test
     void aPageSimpviewCannotDrawStopsTheBatchBeforeAnythingIsGraded() throws Exception {
         Path subs = dir.resolve("subs");

@@ -56,6 +56,25 @@ public class CompareCommandTest {
         assertTrue(run.out().contains("panel:   x 50-699, y 50-699"), run.out());
         assertTrue(run.out().contains("margins: white (140,000 pixels)"), run.out());
         assertTrue(run.out().contains("PASS: 100.00 % within 8/255 with slack (99.00 % needed)"), run.out());
+        assertFalse(run.out().contains("hint:"), run.out());
+    }
+
+    /** A panel turned upside down fails, and is told why: the course's y runs up, an image's rows down. */
+    @Test
+    void anUpsideDownPanelIsToldSo() throws Exception {
+        BufferedImage page = page(2);
+        BufferedImage over = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        over.setData(page.getRaster());
+        for (int y = 50; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                over.setRGB(x, y, page.getRGB(x, 749 - y));
+            }
+        }
+        CliRun run = CliRun.of("compare", png("over.png", over).toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nhint: your panel is simpview's upside down: so turned back, 100.00 % of the "
+                + "pixels it then matches are within 8/255 (" + format(asPrinted(independentDirect(page, over, 8)))
+                + " % of the panel as it stands). Check how you turn y"), run.out());
     }
 
     @Test
@@ -79,6 +98,10 @@ public class CompareCommandTest {
         assertEquals(100.0, printed(run.out(), "within 8/255")[1]);
         // One pixel down is a shift of the whole panel: with slack it all matches.
         assertEquals(asPrinted(independentDirect(page, shifted, 0)), identical[0]);
+        // It passes, and is still a panel a row down: the hint says so, and how that comes about.
+        assertTrue(run.out().contains("hint: your panel is simpview's moved 1 px down: so moved back, 100.00 % of the "
+                + "pixels it then matches are within 8/255"), run.out());
+        assertTrue(run.out().contains("row 650 - y puts everything a row down"), run.out());
         // without slack the verdict says so, and never speaks of slack it does not have
         CliRun none = CliRun.of("compare", png("shifted0.png", shifted).toString(), "--page", "1", "--deviation", "0");
         assertEquals(1, none.exitCode(), "a failing comparison: " + none.out() + none.err());

@@ -1,6 +1,7 @@
 package simpview.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
@@ -51,6 +52,7 @@ public class CourseA3PicturesCompareTest {
 
         double[] printed8 = CompareCommandTest.printed(run.out(), "within 8/255");
         assertTrue(printed8[1] >= measured - MARGIN, scene + ": within 8/255 with slack " + printed8[1]);
+        assertFalse(run.out().contains("hint:"), "no move, turn or swap explains the course's picture: " + run.out());
         Picture theirs = Picture.read(picture);
         assertEquals(51, theirs.place().left());
         assertEquals(81, theirs.place().top());

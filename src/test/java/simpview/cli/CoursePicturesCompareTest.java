@@ -1,6 +1,7 @@
 package simpview.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
@@ -40,6 +41,7 @@ public class CoursePicturesCompareTest {
         double[] printed8 = CompareCommandTest.printed(run.out(), "within 8/255");
         double[] printedIdentical = CompareCommandTest.printed(run.out(), "identical");
         assertTrue(run.out().contains("panel:   x 51-700, y 81-730"), run.out());
+        assertFalse(run.out().contains("hint:"), "no move, turn or swap explains the course's picture: " + run.out());
         assertTrue(printed8[0] >= within8 - MARGIN, "within 8/255: " + printed8[0]);
         assertTrue(printed8[1] >= within8Slack - MARGIN, "within 8/255 with slack: " + printed8[1]);
         assertTrue(printedIdentical[1] >= identicalSlack - MARGIN, "identical with slack: " + printedIdentical[1]);

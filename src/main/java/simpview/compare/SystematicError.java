@@ -1,0 +1,305 @@
+package simpview.compare;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * One mistake that changes a whole panel the same way, found in a student's
+ * picture: the panel moved by a few pixels (a viewport off by one, the
+ * course's y counted from the top), turned over or mirrored, x and y
+ * swapped, or red and blue swapped. Every pixel is then wrong, or every
+ * edge is, though the drawing itself may be right: the shares say "failed"
+ * and the patches say "everywhere"; this says why.
+ *
+ * <p>It is found by laying simpview's panel over theirs each way such a
+ * mistake would ({@link Turn} and a move of up to {@link #MOST_MOVED} pixels
+ * for a picture turned over or not, one pixel for the rarer turns; red and
+ * blue swapped or not) and keeping the way under which theirs is nearest.
+ * Under way W, pixel p of theirs is matched with {@code C(ours(T(p - s)))}: T
+ * the turn, s the move, C the swap; p - s must lie in the panel, so a move
+ * leaves out the rows and columns it brings in. The ways are first ranked
+ * on a coarse grid of pixels, the best few again on a finer one, with the
+ * colours' distance made blind to the swap; the best is then measured on
+ * every pixel, both with and without the swap.
+ *
+ * <p>A way is named only where it explains the picture: at least
+ * {@link #BETTER} times fewer pixels beyond the tolerance than as it stands
+ * (over the same pixels), at least {@link #MIN_SHARE} of the pixels it
+ * matches within the tolerance, and as it stands at least
+ * {@link #MIN_WRONG} of the panel beyond it. Only exact distances count
+ * here, never slack: a panel one pixel off passes with slack, and is still
+ * a panel one pixel off.
+ *
+ * @param turn how the panel is turned over or mirrored
+ * @param right how many pixels right of simpview's the (turned) panel lies; negative: left
+ * @param down how many pixels below; negative: above
+ * @param redBlueSwapped whether red and blue are swapped
+ * @param shareThere the share of the pixels matched that are within the tolerance, that way
+ * @param shareAsIs the share of the panel's pixels within the tolerance as the picture stands
+ * @param tolerance the tolerance, in 1/255 steps
+ */
+public record SystematicError(Turn turn, int right, int down, boolean redBlueSwapped, double shareThere,
+        double shareAsIs, int tolerance) {
+
+    /** A turn of the whole panel, as a map of its pixels onto themselves. */
+    public enum Turn {
+        NONE(""),
+        UPSIDE_DOWN("upside down"),
+        MIRRORED("mirrored left to right"),
+        HALF_TURN("turned half round"),
+        TRANSPOSED("with x and y swapped");
+
+        private final String words;
+
+        Turn(String words) {
+            this.words = words;
+        }
+
+        /** The pixel of an n x n panel that (x, y) shows, turned this way: its index, row by row from the top. */
+        int source(int x, int y, int n) {
+            return switch (this) {
+                case NONE -> y * n + x;
+                case UPSIDE_DOWN -> (n - 1 - y) * n + x;
+                case MIRRORED -> y * n + (n - 1 - x);
+                case HALF_TURN -> (n - 1 - y) * n + (n - 1 - x);
+                case TRANSPOSED -> x * n + y;
+            };
+        }
+
+        /** The farthest move tried with this turn: a picture turned over is often also a pixel off. */
+        int mostMoved() {
+            return this == NONE || this == UPSIDE_DOWN ? MOST_MOVED : 1;
+        }
+    }
+
+    /** The farthest move, in pixels either way, tried for a panel that is not turned or is upside down. */
+    public static final int MOST_MOVED = 4;
+    /** How many times fewer pixels beyond the tolerance a way must leave than the picture as it stands. */
+    public static final int BETTER = 4;
+    /** The least share of the matched pixels within the tolerance for a way to be named. */
+    public static final double MIN_SHARE = 0.98;
+    /** The least share of the panel beyond the tolerance as it stands: below, nothing is looked for. */
+    public static final double MIN_WRONG = 0.001;
+    /** Every way is first ranked on every COARSE_STRIDE-th pixel of every COARSE_STRIDE-th row. */
+    static final int COARSE_STRIDE = 9;
+    /** The {@link #KEPT} best are then ranked on every FINE_STRIDE-th pixel of every FINE_STRIDE-th row. */
+    static final int FINE_STRIDE = 3;
+    /** How many ways are ranked again on the finer grid. */
+    static final int KEPT = 8;
+
+    /** A turn and a move, and its share of sampled pixels beyond the tolerance once ranked. */
+    private static final class Way {
+        final Turn turn;
+        final int right;
+        final int down;
+        double rate;
+
+        Way(Turn turn, int right, int down) {
+            this.turn = turn;
+            this.right = right;
+            this.down = down;
+        }
+    }
+
+    /** The systematic error that explains the comparison's picture against simpview's, or null. */
+    public static SystematicError find(Comparison comparison, int tolerance) {
+        return find(comparison.ours(), comparison.theirs(), comparison.size(), tolerance);
+    }
+
+    /**
+     * The systematic error that explains theirs against ours, two n x n panels of 0xRRGGBB pixels row by
+     * row from the top, or null when none does.
+     */
+    public static SystematicError find(int[] ours, int[] theirs, int n, int tolerance) {
+        if (ours.length != n * n || theirs.length != n * n) {
+            throw new IllegalArgumentException("both panels must be " + n + "x" + n + " pixels");
+        }
+        long wrongAsIs = wrongOver(ours, theirs, n, 0, 0, tolerance);
+        if (wrongAsIs < MIN_WRONG * n * n) {
+            return null;
+        }
+        // First every way on a coarse grid of pixels, then the few best on a finer one.
+        List<Way> ways = new ArrayList<>();
+        for (Turn turn : Turn.values()) {
+            int most = turn.mostMoved();
+            for (int down = -most; down <= most; down++) {
+                for (int right = -most; right <= most; right++) {
+                    Way way = new Way(turn, right, down);
+                    way.rate = sampledRate(ours, theirs, n, way, COARSE_STRIDE, tolerance, Double.POSITIVE_INFINITY);
+                    ways.add(way);
+                }
+            }
+        }
+        ways.sort(Comparator.comparingDouble(w -> w.rate));
+        Way best = null;
+        double bestRate = Double.POSITIVE_INFINITY;
+        for (Way way : ways.subList(0, KEPT)) {
+            double rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance, bestRate);
+            if (rate < bestRate) {
+                bestRate = rate;
+                best = way;
+            }
+        }
+        Way asIs = new Way(Turn.NONE, 0, 0);
+        boolean moved = best.turn != Turn.NONE || best.right != 0 || best.down != 0;
+        if (moved && bestRate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
+            return null; // the swap aside, no way is near to the share it would need
+        }
+        long[] plain = moved ? wrong(ours, theirs, n, best, false, tolerance) : new long[] {wrongAsIs, (long) n * n};
+        long[] swapped = wrong(ours, theirs, n, best, true, tolerance);
+        boolean swap = swapped[0] < plain[0];
+        long[] there = swap ? swapped : plain;
+        if (!moved && !swap) {
+            return null;
+        }
+        // As it stands, over the same pixels the way matches: a move leaves some out.
+        long wrongHere = wrongOver(ours, theirs, n, best.right, best.down, tolerance);
+        double shareThere = 1 - (double) there[0] / there[1];
+        if (there[0] * BETTER > wrongHere || shareThere < MIN_SHARE) {
+            return null;
+        }
+        return new SystematicError(best.turn, best.right, best.down, swap, shareThere,
+                1 - (double) wrongAsIs / ((long) n * n), tolerance);
+    }
+
+    /**
+     * Pixels beyond the tolerance, and pixels matched, with theirs at p matched with C(ours(T(p - s))) for
+     * every p with p - s in the panel.
+     */
+    private static long[] wrong(int[] ours, int[] theirs, int n, Way way, boolean swap, int tolerance) {
+        Turn turn = way.turn;
+        int right = way.right;
+        int down = way.down;
+        long wrong = 0;
+        long matched = 0;
+        for (int y = Math.max(0, down); y < Math.min(n, n + down); y++) {
+            for (int x = Math.max(0, right); x < Math.min(n, n + right); x++) {
+                int o = ours[turn.source(x - right, y - down, n)];
+                int colour = swap ? redBlueSwapped(o) : o;
+                wrong += Rasters.distance(colour, theirs[y * n + x]) > tolerance ? 1 : 0;
+                matched++;
+            }
+        }
+        return new long[] {wrong, matched};
+    }
+
+    /** Pixels beyond the tolerance as the picture stands, over the pixels a move of s matches. */
+    private static long wrongOver(int[] ours, int[] theirs, int n, int right, int down, int tolerance) {
+        long wrong = 0;
+        for (int y = Math.max(0, down); y < Math.min(n, n + down); y++) {
+            for (int x = Math.max(0, right); x < Math.min(n, n + right); x++) {
+                int i = y * n + x;
+                wrong += Rasters.distance(ours[i], theirs[i]) > tolerance ? 1 : 0;
+            }
+        }
+        return wrong;
+    }
+
+    /**
+     * The share of sampled pixels beyond the tolerance under a way, the swap left out of account (the
+     * distance of red and blue as a pair, whichever way round); or, as soon as it cannot be below
+     * {@code bound}, any value not below it.
+     */
+    private static double sampledRate(int[] ours, int[] theirs, int n, Way way, int stride, int tolerance,
+            double bound) {
+        Turn turn = way.turn;
+        int right = way.right;
+        int down = way.down;
+        int fromY = Math.max(0, down);
+        int toY = Math.min(n, n + down);
+        int fromX = Math.max(0, right);
+        int toX = Math.min(n, n + right);
+        long samples = (long) ((toY - fromY + stride - 1) / stride) * ((toX - fromX + stride - 1) / stride);
+        double most = bound * samples; // wrong pixels past this cannot make a rate below the bound
+        long wrong = 0;
+        for (int y = fromY; y < toY; y += stride) {
+            for (int x = fromX; x < toX; x += stride) {
+                wrong += swapBlindDistance(ours[turn.source(x - right, y - down, n)], theirs[y * n + x]) > tolerance
+                        ? 1 : 0;
+            }
+            if (wrong > most) {
+                return bound;
+            }
+        }
+        return (double) wrong / samples;
+    }
+
+    /** The colours' distance with red and blue compared as a pair, the smaller with the smaller. */
+    private static int swapBlindDistance(int a, int b) {
+        int ar = a >> 16 & 0xFF;
+        int ab = a & 0xFF;
+        int br = b >> 16 & 0xFF;
+        int bb = b & 0xFF;
+        int g = Math.abs((a >> 8 & 0xFF) - (b >> 8 & 0xFF));
+        int low = Math.abs(Math.min(ar, ab) - Math.min(br, bb));
+        int high = Math.abs(Math.max(ar, ab) - Math.max(br, bb));
+        return Math.max(g, Math.max(low, high));
+    }
+
+    private static int redBlueSwapped(int rgb) {
+        return rgb & 0xFF00FF00 | (rgb >> 16 & 0xFF) | (rgb & 0xFF) << 16;
+    }
+
+    /** What is wrong, briefly: "upside down and 1 px down", "moved 3 px right and 2 px up", "red and blue swapped". */
+    public String brief() {
+        StringBuilder out = new StringBuilder(turn.words);
+        String moved = moved();
+        if (!moved.isEmpty()) {
+            out.append(out.length() == 0 ? "moved " : ", then moved ").append(moved);
+        }
+        if (redBlueSwapped) {
+            out.append(out.length() == 0 ? "" : ", ").append("red and blue swapped");
+        }
+        return out.toString();
+    }
+
+    private String moved() {
+        String across = right == 0 ? "" : Math.abs(right) + " px " + (right > 0 ? "right" : "left");
+        String upDown = down == 0 ? "" : Math.abs(down) + " px " + (down > 0 ? "down" : "up");
+        return across.isEmpty() ? upDown : upDown.isEmpty() ? across : across + " and " + upDown;
+    }
+
+    /**
+     * The whole hint: what is wrong, how well it explains the picture, and where to look, e.g. "your panel
+     * is simpview's upside down: so turned back, 99.98 % of the pixels it then matches are within 8/255
+     * (61.20 % of the panel as it stands). Check how you turn y: ..."
+     */
+    public String hint(int n) {
+        String within = "within " + tolerance + "/255";
+        String share = String.format(Locale.ROOT, "%s, %s of the pixels it then matches are %s (%s of the "
+                + "panel as it stands)", undone(), Percent.of(shareThere), within, Percent.of(shareAsIs));
+        return "your panel is simpview's " + brief() + ": " + share + ". " + advice(n);
+    }
+
+    /** "turned back", "moved back", "x and y swapped back, red and blue too", ... */
+    private String undone() {
+        String undo = turn == Turn.TRANSPOSED ? "x and y swapped back" : turn != Turn.NONE ? "turned back" : "";
+        if (right != 0 || down != 0) {
+            undo = undo.isEmpty() ? "moved back" : undo.replace(" back", "") + " and moved back";
+        }
+        if (redBlueSwapped) {
+            undo = undo.isEmpty() ? "red and blue swapped back" : undo + ", red and blue swapped too";
+        }
+        return "so " + undo;
+    }
+
+    private String advice(int n) {
+        String rows = "the pixel of y is row " + (n - 1) + " - y";
+        String advice = switch (turn) {
+            case UPSIDE_DOWN -> "Check how you turn y: an image's rows run down from its top, the course's y up "
+                    + "from the panel's bottom-left pixel, so " + rows + ".";
+            case MIRRORED, HALF_TURN -> "Check how your x and y become a column and a row: x runs right from the "
+                    + "panel's left edge, y up from its bottom edge (" + rows + ").";
+            case TRANSPOSED -> "Check the order of x and y where you set a pixel: x is the column, y the row.";
+            case NONE -> right != 0 || down != 0
+                    ? "Check how points become pixels: the panel's offset in the page, rounding, and the row of y ("
+                            + rows + "; row " + n + " - y puts everything a row down)."
+                    : "";
+        };
+        String channels = redBlueSwapped ? "Check how you pack a colour: 0xRRGGBB has red in bits 16-23, blue in "
+                + "bits 0-7 (a BGR image type stores them the other way round)." : "";
+        return advice.isEmpty() ? channels : channels.isEmpty() ? advice : advice + " " + channels;
+    }
+}
