@@ -132,6 +132,28 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertTrue(driver.onEdt(() -> driver.window().legendStrip().empty()), "no legend once stopped");
     }
 
+    /** A picture whose panel is simpview's upside down is said to look so in the status line. */
+    @Test
+    void aPanelUpsideDownIsNamedInTheStatusLine() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+        driver.awaitShown(new View.OfPage(2));
+        BufferedImage ours = new PageRenderer().renderImage(2, PageContext.defaults().withSeed(SEED));
+        BufferedImage over = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                boolean panel = x >= 50 && x < 700 && y >= 50 && y < 700;
+                over.setRGB(x, y, ours.getRGB(x, panel ? 749 - y : y));
+            }
+        }
+        Path file = dir.resolve("over.png");
+        ImageIO.write(over, "png", file.toFile());
+        drop(file);
+        String status = driver.onEdt(() -> driver.window().status().text());
+        assertTrue(status.startsWith("vs over.png: ") && status.contains(" (1 px slack) · looks upside down · showing ours"),
+                status);
+    }
+
     @Test
     void aPictureWithoutAPanelIsRefusedInTheStatusLine() throws Exception {
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);

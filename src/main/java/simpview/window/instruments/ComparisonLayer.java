@@ -20,6 +20,7 @@ import simpview.compare.HeatMap;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Shares;
+import simpview.compare.SystematicError;
 import simpview.surface.PageCanvas;
 
 /**
@@ -43,6 +44,8 @@ public final class ComparisonLayer {
     private final Map<View, Picture> theirs = new HashMap<>();
     private RenderedView shown;
     private Comparison comparison;
+    /** The mistake that changes their whole panel the same way, or null (made once a comparison is). */
+    private SystematicError systematic;
     private Showing showing = Showing.OURS;
     private String text = "";
 
@@ -79,6 +82,7 @@ public final class ComparisonLayer {
         Picture picture = theirs.get(view.view());
         comparison = picture == null ? null
                 : Comparison.of(Picture.ofPage(view.image(), "simpview").panel(), picture.panel());
+        systematic = comparison == null ? null : SystematicError.find(comparison, TOLERANCE);
         if (comparison == null) {
             showing = Showing.OURS;
             text = "";
@@ -132,9 +136,10 @@ public final class ComparisonLayer {
         pageView.accept(image, showing == Showing.OURS ? shown.error() : null);
         legend.accept(showing == Showing.HEAT ? Legend.heatMap(TOLERANCE) : null);
         Shares slack = comparison.withSlack();
-        text = String.format("vs %s: identical %s, ≤1/255 %s, ≤8/255 %s (1 px slack) · showing %s · B flip · H heat · ⌫ stop",
+        text = String.format("vs %s: identical %s, ≤1/255 %s, ≤8/255 %s (1 px slack)%s · showing %s · B flip · H heat · ⌫ stop",
                 theirs.get(shown.view()).name().replaceFirst(".*[/\\\\]", ""), Percent.of(slack.identical()),
-                Percent.of(slack.within1()), Percent.of(slack.within8()), showing.name().toLowerCase(Locale.ROOT));
+                Percent.of(slack.within1()), Percent.of(slack.within8()),
+                systematic == null ? "" : " · looks " + systematic.brief(), showing.name().toLowerCase(Locale.ROOT));
         say.accept(text);
     }
 
