@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import simpview.geometry.Vertex;
 import simpview.pages.A1Rule;
+import simpview.raster.AntialiasedLineRenderer;
 
 /**
  * What the replay of one pixel of a first-assignment page found: the pixel's
@@ -82,6 +83,15 @@ public final class A1Report {
         /** The write's coverage (a ghost write: its opacity); NaN for a write that was not blended. */
         public double coverage() {
             return coverage;
+        }
+
+        /**
+         * For a line's write, the distance the antialiased drawer measures from the line through its rounded
+         * ends to the pixel (x, y) of the panel; its coverage there is that distance's.
+         */
+        public double distanceFrom(int x, int y) {
+            return AntialiasedLineRenderer.distance(x, y, round(ends[0]), round(ends[1]), round(ends[2]),
+                    round(ends[3]));
         }
 
         /** The pixel's colour before the write and after it. */
@@ -209,6 +219,10 @@ public final class A1Report {
             sb.append("  ").append(w.describe()).append('\n').append("      ").append(w.outcome().word());
             if (w.blended) {
                 sb.append(String.format(Locale.ROOT, " with coverage %.6f", w.coverage));
+                if (w.line) {
+                    sb.append(String.format(Locale.ROOT, " (the pixel at distance %.6f from the line)",
+                            w.distanceFrom(panelX, panelY)));
+                }
             }
             sb.append(", rgb ").append(rgb(w.argb)).append(": ").append(rgb(w.old)).append(" -> ").append(rgb(w.now))
                     .append('\n');
@@ -279,6 +293,10 @@ public final class A1Report {
             if (w.blended) {
                 sb.append(", \"coverage\": ");
                 Json.number(sb, w.coverage);
+                if (w.line) {
+                    sb.append(", \"distance\": ");
+                    Json.number(sb, w.distanceFrom(panelX, panelY));
+                }
             }
             sb.append(", \"old\": ").append(array(w.old)).append(", \"new\": ").append(array(w.now)).append('}');
         }

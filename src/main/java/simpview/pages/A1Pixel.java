@@ -124,9 +124,7 @@ public final class A1Pixel {
             sb.append(String.format(Locale.ROOT, ", the last of %d lines here", count));
         }
         if (panel == 4) {
-            double length = Math.hypot(qx - px, qy - py);
-            double distance = length == 0 ? Math.abs(y - py)
-                    : Math.abs((x - px) * (qy - py) - (y - py) * (qx - px)) / length;
+            double distance = AntialiasedLineRenderer.distance(x, y, px, py, qx, qy);
             sb.append(String.format(Locale.ROOT, " · distance %.3f, coverage %.3f", distance,
                     AntialiasedLineRenderer.coverage(distance)));
         }

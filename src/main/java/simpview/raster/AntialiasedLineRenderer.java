@@ -60,6 +60,17 @@ public final class AntialiasedLineRenderer implements LineRenderer {
     }
 
     /**
+     * The distance this drawer measures for pixel (x, y) of the line from (ax, ay) to (bx, by), its ends
+     * already rounded: from the line through them, the pixel's centre at its integer coordinates; for a
+     * one-pixel line (equal ends), |y - ay|, as a horizontal line of length 0. Its coverage is
+     * {@link #coverage(double)} of it, for a pixel not past the ends' reach.
+     */
+    public static double distance(double x, double y, double ax, double ay, double bx, double by) {
+        double length = Math.hypot(bx - ax, by - ay);
+        return length == 0 ? Math.abs(y - ay) : Math.abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) / length;
+    }
+
+    /**
      * The area of the disc beyond a line at signed distance h from its centre
      * (positive: the line does not reach the centre): the handout's pie wedge
      * and triangle, {@code r^2 theta - h sqrt(r^2 - h^2)} with cos theta = h / r

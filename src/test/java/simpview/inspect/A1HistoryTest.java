@@ -6,11 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.util.List;
+import java.util.Locale;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
+import simpview.raster.AntialiasedLineRenderer;
 import simpview.scene.simp.SceneMonitor;
 
 /**
@@ -75,6 +77,21 @@ class A1HistoryTest {
                         if (n == 5) {
                             assertEquals(0.14, c);
                             assertEquals(0xFFFFFF, w.argb() & 0xFFFFFF, "a ghost write is white");
+                        } else {
+                            // The distance shown is the one the coverage was drawn for: worked out here from
+                            // the rounded ends, the pixel's centre at its integer coordinates.
+                            double[] e = w.ends();
+                            double ax = Math.floor(e[0] + 0.5);
+                            double ay = Math.floor(e[1] + 0.5);
+                            double dx = Math.floor(e[2] + 0.5) - ax;
+                            double dy = Math.floor(e[3] + 0.5) - ay;
+                            double across = dx == 0 && dy == 0 ? Math.abs(report.panelY() - ay)
+                                    : Math.abs((report.panelX() - ax) * dy - (report.panelY() - ay) * dx)
+                                            / Math.sqrt(dx * dx + dy * dy);
+                            assertEquals(across, w.distanceFrom(report.panelX(), report.panelY()), 1e-12);
+                            assertEquals(AntialiasedLineRenderer.coverage(across), c, 1e-12, report.text());
+                            assertTrue(report.text().contains(String.format(Locale.ROOT,
+                                    "(the pixel at distance %.6f from the line)", across)), report.text());
                         }
                         assertEquals(blend(w.argb(), w.old(), c), w.now() & 0xFFFFFF, report.text());
                     } else {
