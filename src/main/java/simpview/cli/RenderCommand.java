@@ -1,9 +1,5 @@
 package simpview.cli;
 
-import simpview.compare.OutputFiles;
-import simpview.compare.PngFiles;
-import simpview.scene.simp.ScenePipeline;
-
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -18,22 +14,26 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
+import simpview.compare.OutputFiles;
+import simpview.compare.PngFiles;
 import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
+import simpview.pages.Page;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
-import simpview.pages.Assignment2;
 import simpview.pages.SceneList;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
-import simpview.surface.Rgb;
+import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
+import simpview.surface.Rgb;
 
 /** {@code simpview render ...}: pages or any scene to PNG, without a window. */
 @Command(name = "render",
@@ -103,6 +103,12 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--out-dir", paramLabel = "D", description = "the folder to write to (--all: page1.png ... page8.png; --page N: pageN.png; "
             + "--scene and --scenes: NAME.png)")
     private Path outDir;
+
+    @Option(names = "--primitives", paramLabel = "F.txt",
+            description = "with --page: write the page's own lines and triangles, as its drawers are given them, to F.txt "
+                    + "(- for standard output), with --out or alone: the seeded pages' random values, for your own "
+                    + "renderer to draw")
+    private Path primitives;
 
     @Option(names = "--near-color", paramLabel = "r,g,b", converter = RgbConverter.class,
             description = "depth cue colour at z = 0, channels 0 to 1 (depth-cued scenes; default: 1,1,1)")
@@ -180,7 +186,7 @@ public final class RenderCommand implements Callable<Integer> {
             usage(out == null, "--all writes eight files: use --out-dir D, not --out");
             usage(outDir != null, "--all needs --out-dir D");
         } else if (oneFile) {
-            usage(out != null || outDir != null, "missing --out F.png (or --out-dir D)");
+            usage(out != null || outDir != null || primitives != null, "missing --out F.png (or --out-dir D)");
             usage(out == null || outDir == null, "give --out F.png or --out-dir D, not both");
         } else {
             usage(outDir == null, "--contact-sheet writes one file: use --out F.png, not --out-dir");
@@ -189,11 +195,16 @@ public final class RenderCommand implements Callable<Integer> {
         usage(out == null || !out.toString().isEmpty(), "--out needs a file name");
         usage(outDir == null || !outDir.toString().isEmpty(), "--out-dir needs a folder name");
         String outOption = out != null ? "--out" : "--out-dir";
-        if (oneFile && out == null) {
+        usage(primitives == null || what.page != null, "--primitives goes with --page N");
+        usage(primitives == null || !primitives.toString().isEmpty(), "--primitives needs a file name, or -");
+        if (oneFile && out == null && outDir != null) {
             out = outDir.resolve(what.scene != null ? SceneList.pictureName(what.scene)
                     : (firstAssignment() ? "a1-page" : "page") + what.page + ".png");
         }
-        new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
+        OutputPaths paths = new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
+        if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
+            paths.writes(primitives, "--primitives");
+        }
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
         usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
@@ -260,6 +271,12 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     private int renderPage(int number) {
+        if (primitives != null && writePrimitives(number) != ExitCode.OK) {
+            return ExitCode.SCENE_ERROR;
+        }
+        if (out == null) {
+            return ExitCode.OK; // --primitives alone
+        }
         if (firstAssignment()) {
             return write(Assignment1.render(number, context()), out);
         }
@@ -392,6 +409,33 @@ public final class RenderCommand implements Callable<Integer> {
         }
         int written = write(ContactSheet.compose(tiles), out);
         return tiles.size() == sheet.size() ? written : ExitCode.SCENE_ERROR;
+    }
+
+    /** What --primitives names as standard output. */
+    private static final String STANDARD_OUTPUT = "-";
+
+    /** --primitives: the page's own lines and triangles; a page that draws a scene file has none of its own. */
+    private int writePrimitives(int number) {
+        Page page = firstAssignment() ? Assignment1.page(number) : Assignment2.page(number);
+        PageContext context = context();
+        if (page.primitives(context).isEmpty()) {
+            throw new UsageProblem("--primitives: page " + number + " draws the scene file " + page.title()
+                    + ": its primitives are that file's lines");
+        }
+        String listing = PrimitiveListing.of(page, (firstAssignment() ? "the first assignment's page " : "page ")
+                + number, context);
+        if (STANDARD_OUTPUT.equals(primitives.toString())) {
+            spec.commandLine().getOut().print(listing);
+            spec.commandLine().getOut().flush();
+            return ExitCode.OK;
+        }
+        try {
+            OutputFiles.writeString(primitives, listing);
+            return ExitCode.OK;
+        } catch (IOException e) {
+            err().println("simpview: " + e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        }
     }
 
     private int write(BufferedImage image, Path file) {

@@ -1,5 +1,7 @@
 package simpview.pages;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.IntConsumer;
 import java.util.function.LongFunction;
 import simpview.geometry.Vertex;
@@ -50,6 +52,19 @@ public final class LineTestPage implements A1Page {
     @Override
     public boolean usesSeed() {
         return seeded;
+    }
+
+    /** The page's lines, the same in each of the four panels. */
+    @Override
+    public List<ListedPrimitive> primitives(PageContext context) {
+        A1Lines set = lines(context.seed());
+        List<ListedPrimitive> out = new ArrayList<>();
+        for (int panel = 1; panel <= A1Layout.PANELS; panel++) {
+            for (int i = 0; i < set.count(); i++) {
+                out.add(new ListedPrimitive(panel, List.of(set.start(i), set.end(i))));
+            }
+        }
+        return out;
     }
 
     /** The page's lines for this seed. */

@@ -1,11 +1,13 @@
 package simpview.pages;
 
-import simpview.surface.Drawable;
-import simpview.surface.PageCanvas;
+import java.util.ArrayList;
+import java.util.List;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.raster.WireframePolygonRenderer;
+import simpview.surface.Drawable;
+import simpview.surface.PageCanvas;
 
 /** Pages 1 and 2: the perturbed mesh with random vertex colours, as lines or filled. */
 public final class MeshPage implements Page {
@@ -39,6 +41,14 @@ public final class MeshPage implements Page {
     @Override
     public boolean usesSeed() {
         return true;
+    }
+
+    /** The mesh's triangles, two a cell (page 1 draws their outlines). */
+    @Override
+    public List<ListedPrimitive> primitives(PageContext context) {
+        List<ListedPrimitive> out = new ArrayList<>();
+        new PerturbedMesh(context.seed()).forEachTriangle((a, b, c) -> out.add(new ListedPrimitive(1, List.of(a, b, c))));
+        return out;
     }
 
     @Override

@@ -24,6 +24,13 @@ public interface Page {
     }
 
     /**
+     * The lines and triangles the page makes itself, panel by panel and in
+     * drawing order within each panel, as given to its drawers; empty for a
+     * page that draws a scene file, whose primitives are the file's.
+     */
+    java.util.List<ListedPrimitive> primitives(PageContext context);
+
+    /**
      * Draws the page. On a scene error what was drawn before it stays on the
      * canvas and the exception says what went wrong.
      */

@@ -1,6 +1,9 @@
 package simpview.pages;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.IntConsumer;
+import simpview.geometry.Vertex;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.surface.Drawable;
 import simpview.surface.GhostWritingDrawable;
@@ -41,6 +44,25 @@ public final class PolygonTestPage implements A1Page {
     @Override
     public boolean usesSeed() {
         return true;
+    }
+
+    /**
+     * Panel k's scene k, as SPEC gives it: under {@link A1Rule#COURSE} too, whose half-pixel move is how
+     * simpview samples the course's way, not the geometry.
+     */
+    @Override
+    public List<ListedPrimitive> primitives(PageContext context) {
+        A1Polygons scenes = new A1Polygons(context.seed(), A1Rule.SPEC);
+        List<ListedPrimitive> out = new ArrayList<>();
+        for (int k = 1; k <= A1Polygons.SCENES; k++) {
+            double[] n = scenes.scene(k);
+            for (int i = 0; i < scenes.count(k); i++) {
+                int at = A1Polygons.at(i);
+                out.add(new ListedPrimitive(k, List.of(Vertex.readFrom(n, at),
+                        Vertex.readFrom(n, at + Vertex.NUMBERS), Vertex.readFrom(n, at + 2 * Vertex.NUMBERS))));
+            }
+        }
+        return out;
     }
 
     @Override

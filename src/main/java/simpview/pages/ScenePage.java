@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import simpview.scene.SceneException;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
@@ -35,6 +36,12 @@ public final class ScenePage implements Page {
     @Override
     public String title() {
         return title;
+    }
+
+    /** None: a scene page's primitives are its file's. */
+    @Override
+    public List<ListedPrimitive> primitives(PageContext context) {
+        return List.of();
     }
 
     /** Whether it is one of the course's scenes (read from the folder --simp-dir names), not one of simpview's own. */

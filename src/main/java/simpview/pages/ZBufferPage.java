@@ -61,6 +61,15 @@ public final class ZBufferPage implements Page {
         return names;
     }
 
+    @Override
+    public List<ListedPrimitive> primitives(PageContext context) {
+        List<ListedPrimitive> out = new ArrayList<>();
+        for (Vertex[] triangle : triangles(context.seed())) {
+            out.add(new ListedPrimitive(1, List.of(triangle)));
+        }
+        return out;
+    }
+
     /** The six triangles in drawing order, in panel coordinates; random draws: angle, then depth. */
     public static Vertex[][] triangles(long seed) {
         Random random = new Random(seed);
