@@ -284,6 +284,32 @@ class LitScenesTest {
                 first);
     }
 
+    /**
+     * A model saved under a German locale ("0,5" for 0.5): read as SPEC
+     * reads it, its v lines are positions with colours, clamped; the scene
+     * says why, before the clamp, on its first drawing and when the kept
+     * model is replayed.
+     */
+    @Test
+    void aModelsDecimalCommasAreNamedBeforeTheClampTheyCause() throws Exception {
+        Files.writeString(dir.resolve("de.obj"), "v 0,5 -1,0 -4,0\nv 1,0 0,0 -4,0\nv 0,0 1,0 -4,0\nf 1 2 3\n");
+        Path scene = write("de", "obj \"de\"");
+        simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+        for (int drawing = 0; drawing < 2; drawing++) {
+            java.util.List<String> warnings = new java.util.ArrayList<>();
+            ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), new SceneMonitor() {
+                @Override
+                public void warning(String message) {
+                    warnings.add(message);
+                }
+            });
+            assertEquals(java.util.List.of("de.obj:1:3: '0,5' is read as two numbers, so this v line's 6 numbers are"
+                    + " x y z r g b (a comma separates two numbers: one and a half is 1.5, not 1,5); this is the first"
+                    + " such line", "de.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                    warnings, "drawing " + drawing);
+        }
+    }
+
     @Test
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");

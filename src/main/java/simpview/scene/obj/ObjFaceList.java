@@ -1,6 +1,7 @@
 package simpview.scene.obj;
 
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * The faces of an .obj file recorded as they are read, to be kept in an
@@ -89,8 +90,8 @@ final class ObjFaceList {
         return !dropped;
     }
 
-    /** The model of these faces over {@code vertices}, every array cut to its length. */
-    ObjModel model(ObjVertices vertices) {
+    /** The model of these faces over {@code vertices}, every array cut to its length, with the file's warnings. */
+    ObjModel model(ObjVertices vertices, List<String> warnings) {
         if (dropped) {
             throw new IllegalStateException("the faces were dropped");
         }
@@ -104,6 +105,7 @@ final class ObjFaceList {
                 Arrays.copyOf(vertexRefs, refCount),
                 normalRefs == null ? null : Arrays.copyOf(normalRefs, refCount),
                 Arrays.copyOf(lines, faceCount),
-                vertices.firstClampedColour);
+                vertices.firstClampedColour,
+                warnings);
     }
 }

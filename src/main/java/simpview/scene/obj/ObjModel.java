@@ -3,6 +3,7 @@ package simpview.scene.obj;
 import simpview.stage.ObjFace;
 
 import java.nio.file.Path;
+import java.util.List;
 import simpview.scene.SceneException;
 
 /**
@@ -32,9 +33,11 @@ public final class ObjModel {
     private final int[] faceLines;
     /** The line of the first vertex with a colour channel outside [0, 1], or 0 ({@link ObjCounts}). */
     private final int firstClampedColour;
+    /** What reading the file warned of ({@link ObjCounts#warnings}). */
+    private final List<String> warnings;
 
     ObjModel(double[] positions, double[] colours, double[] normals,
-            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour) {
+            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour, List<String> warnings) {
         this.positions = positions;
         this.colours = colours;
         this.normals = normals;
@@ -43,6 +46,7 @@ public final class ObjModel {
         this.normalRefs = normalRefs;
         this.faceLines = faceLines;
         this.firstClampedColour = firstClampedColour;
+        this.warnings = List.copyOf(warnings);
     }
 
     /** Reads a whole file into a model, however big (for a bounded cache use {@link ObjLibrary}). */
@@ -78,7 +82,7 @@ public final class ObjModel {
     }
 
     public ObjCounts counts() {
-        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour);
+        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour, warnings);
     }
 
     /** The bytes of its arrays, what a cache of models counts. */

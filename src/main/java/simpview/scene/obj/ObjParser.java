@@ -5,9 +5,13 @@ import simpview.stage.ObjFace;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
+import java.util.function.IntPredicate;
 import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
+import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 
@@ -42,6 +46,10 @@ final class ObjParser {
     private int[] vertexRefs = new int[16];
     private int[] normalRefs = new int[16];
     private int faceCount;
+    /** True when a number of the line just read is followed straight by a comma (maybe a decimal comma). */
+    private boolean commaAfterNumber;
+    /** The warning for the first v line whose commas look like decimal commas, or null. */
+    private String decimalCommas;
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
     private byte[] b;
@@ -90,7 +98,7 @@ final class ObjParser {
 
     /** The recorded model after a {@link #run}; null when not recording or over the budget. */
     ObjModel model() {
-        return recorder != null && recorder.kept() ? recorder.model(vertices) : null;
+        return recorder != null && recorder.kept() ? recorder.model(vertices, warnings()) : null;
     }
 
     /** Reads every line, handing each face to the sink; closes the file. */
@@ -113,7 +121,17 @@ final class ObjParser {
         } finally {
             close();
         }
-        return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour);
+        return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour,
+                warnings());
+    }
+
+    /** What the reading noticed that is worth a warning, each naming the file. */
+    private List<String> warnings() {
+        List<String> warnings = new ArrayList<>(1);
+        if (decimalCommas != null) {
+            warnings.add(decimalCommas);
+        }
+        return warnings;
     }
 
     private void close() {
@@ -159,7 +177,7 @@ final class ObjParser {
     }
 
     private void vertex(int from) throws SceneException {
-        int n = numbers(from, VERTEX_FORMS);
+        int n = numbers(from, VERTEX_FORMS, ObjParser::vertexTakes);
         double w = 1;
         int colour = 3;
         switch (n) {
@@ -168,7 +186,11 @@ final class ObjParser {
                 w = numbers[3];
                 colour = 4;
             }
-            default -> throw error(end, "wrong count of numbers: " + VERTEX_FORMS + ", found " + n);
+            default -> throw error(end, "wrong count of numbers: " + VERTEX_FORMS + ", found " + n
+                    + decimalCommaHint(from, n, ObjParser::vertexTakes));
+        }
+        if (commaAfterNumber && decimalCommas == null) {
+            noteDecimalCommas(from, n);
         }
         double x = numbers[0];
         double y = numbers[1];
@@ -193,25 +215,97 @@ final class ObjParser {
 
     private void normal(int from) throws SceneException {
         String takes = "vn takes 3 numbers (x y z)";
-        int n = numbers(from, takes);
+        int n = numbers(from, takes, ObjParser::normalTakes);
         if (n != 3) {
-            throw error(n < 3 ? end : numberStarts[3], "wrong count of numbers: " + takes + ", found " + n);
+            throw error(n < 3 ? end : numberStarts[3], "wrong count of numbers: " + takes + ", found " + n
+                    + decimalCommaHint(from, n, ObjParser::normalTakes));
         }
         vertices.addNormal(numbers[0], numbers[1], numbers[2]);
     }
 
-    /** Reads the numbers up to the end of the line into {@link #numbers}; more than 7 is an error. */
-    private int numbers(int from, String takes) throws SceneException {
+    private static boolean vertexTakes(int n) {
+        return n == 3 || n == 4 || n == 6 || n == 7;
+    }
+
+    private static boolean normalTakes(int n) {
+        return n == 3;
+    }
+
+    /**
+     * Reads the numbers up to the end of the line into {@link #numbers}; more
+     * than 7 is an error ({@code counts}: the counts the line's keyword takes,
+     * for the decimal-comma hint).
+     */
+    private int numbers(int from, String takes, IntPredicate counts) throws SceneException {
         int n = 0;
+        commaAfterNumber = false;
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == MOST_NUMBERS) {
-                throw error(i, "wrong count of numbers: " + takes + ", found more than " + MOST_NUMBERS);
+                throw error(i, "wrong count of numbers: " + takes + ", found more than " + MOST_NUMBERS
+                        + decimalCommaHint(from, n + words(i), counts));
             }
             numberStarts[n] = i;
             i = number(i);
+            commaAfterNumber |= i < end && b[i] == ',';
             numbers[n++] = decimal.value();
         }
         return n;
+    }
+
+    /** How many words (runs between separators) the line holds from i on. */
+    private int words(int i) {
+        int words = 0;
+        for (int j = skipSeparators(i); j < end; j = skipSeparators(j)) {
+            words++;
+            while (j < end && !isSeparator(b[j])) {
+                j++;
+            }
+        }
+        return words;
+    }
+
+    /**
+     * The SIMP reader's hint for a line of {@code found} numbers from
+     * {@code from} on whose commas between digits, read as decimal points,
+     * would make a count the keyword takes; else "".
+     */
+    private String decimalCommaHint(int from, int found, IntPredicate counts) {
+        if (!commaAfterNumber) {
+            return "";
+        }
+        int commas = DecimalCommas.count(b, from, end);
+        return commas > 0 && counts.test(found - commas) ? " (" + DecimalCommas.HINT + ")" : "";
+    }
+
+    /**
+     * A v line of a count it takes, whose commas between digits, read as
+     * decimal points, would make another count it takes ("v 0,5 -1,0 -4,0",
+     * six numbers, a position and a colour, or three): SPEC reads the line as
+     * written, so this is a warning, kept for the first such line, with the
+     * column of the first such number.
+     */
+    private void noteDecimalCommas(int from, int n) {
+        int commas = DecimalCommas.count(b, from, end);
+        if (commas == 0 || !vertexTakes(n - commas)) {
+            return;
+        }
+        int comma = DecimalCommas.first(b, from, end);
+        int start = comma;
+        while (start > from && !isSeparator(b[start - 1])) {
+            start--;
+        }
+        int after = comma + 1;
+        while (after < end && !isSeparator(b[after])) {
+            after++;
+        }
+        String numbersAre = switch (n) {
+            case 4 -> "x y z w";
+            case 6 -> "x y z r g b";
+            default -> "x y z w r g b";
+        };
+        decimalCommas = file().getFileName() + ":" + source.lineNumber() + ":" + column(start) + ": '"
+                + text(start, after) + "' is read as two numbers, so this v line's " + n + " numbers are "
+                + numbersAre + " (" + DecimalCommas.HINT + "); this is the first such line";
     }
 
     /** A number ending at a separator or the end of the line. */
@@ -350,9 +444,13 @@ final class ObjParser {
 
     /** An error at byte index i of the current line. */
     private SceneException error(int i, String problem) {
-        int column = text(lineStart, Math.min(i, end)).length() + 1;
-        return new SceneException(file(), source.lineNumber(), column, text(lineStart, end),
+        return new SceneException(file(), source.lineNumber(), column(i), text(lineStart, end),
                 problem + source.lineEndHint());
+    }
+
+    /** The 1-based column of byte index i of the current line (one past its end at most). */
+    private int column(int i) {
+        return text(lineStart, Math.min(i, end)).length() + 1;
     }
 
 }

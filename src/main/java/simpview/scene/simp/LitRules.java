@@ -1,6 +1,9 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
@@ -36,6 +39,8 @@ final class LitRules implements RuleSet {
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     /** Where the first model colour outside 0 to 1 stands ("dummy.obj:12"), or null. */
     private String firstClampedColour;
+    /** What the models read so far warned of, each warning once however often its model is drawn. */
+    private final Set<String> modelWarnings = new LinkedHashSet<>();
     private final FileStack files;
     private final boolean traced;
     private final PrimitiveTrace trace;
@@ -164,7 +169,13 @@ final class LitRules implements RuleSet {
         if (firstClampedColour == null && counts.firstClampedColour() > 0) {
             firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
         }
+        modelWarnings.addAll(counts.warnings());
         return true;
+    }
+
+    @Override
+    public List<String> modelWarnings() {
+        return List.copyOf(modelWarnings);
     }
 
     @Override

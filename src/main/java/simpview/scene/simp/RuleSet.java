@@ -34,6 +34,11 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
         return null;
     }
 
+    /** What the models these rules read warned of, in reading order, each once ("de.obj:1:3: ..."). */
+    default java.util.List<String> modelWarnings() {
+        return java.util.List.of();
+    }
+
     /**
      * Draws what is still recorded, when several threads draw (see
      * {@link #drawWith}); nothing otherwise. Called once the scene is read,

@@ -258,9 +258,13 @@ public final class SimpClient {
         return style;
     }
 
-    /** What the scene should be told once it is drawn: clamped colours, ignored lit commands, '{' left open. */
+    /**
+     * What the scene should be told once it is drawn: what its models warned
+     * of (before the clamp that a decimal comma may explain), clamped colours,
+     * ignored lit commands, '{' left open.
+     */
     public List<String> warnings() {
-        List<String> w = new ArrayList<>();
+        List<String> w = new ArrayList<>(rules.modelWarnings());
         if (firstClamped != null) {
             w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }

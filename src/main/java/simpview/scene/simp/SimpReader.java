@@ -8,6 +8,7 @@ import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
 import simpview.scene.simp.Command.Shape;
+import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 
@@ -442,16 +443,8 @@ public final class SimpReader implements AutoCloseable {
      * of numbers the command takes. SIMP reads each as two numbers.
      */
     private String decimalCommaHint(int from, Kind kind, int found) {
-        int commas = 0;
-        boolean inPoint = false;
-        for (int j = Math.max(from, 1); j + 1 < end; j++) {
-            inPoint = b[j] == '(' || (inPoint && b[j] != ')');
-            if (!inPoint && b[j] == ',' && b[j - 1] >= '0' && b[j - 1] <= '9' && b[j + 1] >= '0' && b[j + 1] <= '9') {
-                commas++;
-            }
-        }
-        return commas > 0 && kind.takes(found - commas)
-                ? " (a comma separates two numbers: one and a half is 1.5, not 1,5)" : "";
+        int commas = DecimalCommas.count(b, from, end);
+        return commas > 0 && kind.takes(found - commas) ? " (" + DecimalCommas.HINT + ")" : "";
     }
 
     private String found(int i) {

@@ -73,6 +73,21 @@ class ObjErrorsTest {
         assertError("v 1 2 3 4 5 6 7 8 9", 1, 17, V_TAKES + "more than 7");
     }
 
+    /**
+     * A line of a wrong count whose commas between digits, read as decimal
+     * points, would make a count it takes: the SIMP reader's hint. Commas
+     * that cannot be decimal ones, or within parentheses, get none.
+     */
+    @Test
+    void decimalCommasThatMakeAWrongCountGetTheHint() {
+        String hint = " (a comma separates two numbers: one and a half is 1.5, not 1,5)";
+        assertError("v 0,5 1,5 2", 1, 12, V_TAKES + 5 + hint);
+        assertError("v 1,0 2,0 3,0 0,5 0,5 0,5", 1, 17, V_TAKES + "more than 7" + hint);
+        assertError("vn 0,5 0,5 0,5", 1, 10, "wrong count of numbers: vn takes 3 numbers (x y z), found 6" + hint);
+        assertError("v 1,2,3,4,5", 1, 12, V_TAKES + 5);
+        assertError("v (1,5 2 3 4)", 1, 14, V_TAKES + 5);
+    }
+
     @Test
     void aNormalOfAWrongCount() {
         assertError("vn 1 2", 1, 7, "wrong count of numbers: vn takes 3 numbers (x y z), found 2");
