@@ -310,6 +310,38 @@ class LitScenesTest {
         }
     }
 
+    /**
+     * A model that gives no face says so, through the scene's warnings, on
+     * its first drawing and when it is replayed; one that is not UTF-8 text
+     * is an error naming the line that read it, and what was drawn stays.
+     */
+    @Test
+    void aModelWithoutFacesWarnsAndOneThatIsNotTextStops() throws Exception {
+        Files.writeString(dir.resolve("empty.obj"), "");
+        Files.writeString(dir.resolve("tri.obj"), "v -50 -50 -100\nv 50 -50 -100\nv 0 50 -100\nf 1 2 3\n");
+        Path scene = write("s", "ambient 1 1 1", "obj \"empty\"", "obj \"tri\"", "obj \"empty\"");
+        simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+        for (int drawing = 0; drawing < 2; drawing++) {
+            java.util.List<String> warnings = new java.util.ArrayList<>();
+            ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), new SceneMonitor() {
+                @Override
+                public void warning(String message) {
+                    warnings.add(message);
+                }
+            });
+            assertEquals(java.util.List.of("empty.obj: no f lines, so nothing is drawn (the file is empty)"), warnings,
+                    "drawing " + drawing);
+        }
+        Files.write(dir.resolve("notepad.obj"), "\uFEFFv 0 0 0\r\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        PageCanvas canvas = new PageCanvas();
+        SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(
+                write("u", "ambient 1 1 1", "obj \"tri\"", "obj \"notepad\""), canvas,
+                ScenePipeline.Options.lit(library), SceneMonitor.NONE));
+        assertTrue(e.getMessage().contains("notepad.obj:1, included from u.simp:3: UTF-16 text, not UTF-8"),
+                e.getMessage());
+        assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the triangle before it stays");
+    }
+
     @Test
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");

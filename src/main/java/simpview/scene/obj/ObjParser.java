@@ -14,6 +14,7 @@ import simpview.scene.SceneException;
 import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
+import simpview.scene.text.NotText;
 
 /**
  * Reads the lines of one .obj file straight from the bytes of its buffer (no
@@ -33,6 +34,10 @@ final class ObjParser {
             + " or x y z w r g b)";
     private static final String REFERENCE_FORMS = "a vertex reference (v, v/vt, v//vn or v/vt/vn)";
     private static final ObjSink NOWHERE = face -> { };
+    /** What an .obj file is, for {@link NotText}'s messages. */
+    private static final String KIND = "an .obj file";
+    /** How many of a file's first bytes are looked at to tell whether it is text. */
+    private static final int HEAD = 4096;
     /** More digits than this name nothing (an array holds fewer than 10^10 elements). */
     private static final int MOST_INDEX_DIGITS = 12;
 
@@ -50,6 +55,13 @@ final class ObjParser {
     private boolean commaAfterNumber;
     /** The warning for the first v line whose commas look like decimal commas, or null. */
     private String decimalCommas;
+    /** Lines that are neither blank, a comment, v, vn nor f (ignored): for the warning of a file without faces. */
+    private int otherLines;
+    /** The first of them: its line and first word. */
+    private int firstOtherLine;
+    private String firstOtherWord;
+    /** The l lines (polylines) among them. */
+    private int polylines;
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
     private byte[] b;
@@ -101,7 +113,12 @@ final class ObjParser {
         return recorder != null && recorder.kept() ? recorder.model(vertices, warnings()) : null;
     }
 
-    /** Reads every line, handing each face to the sink; closes the file. */
+    /**
+     * Reads every line, handing each face to the sink; closes the file. A
+     * file that gave no face is looked at again: UTF-16 text or a file that
+     * is no text at all is an error ({@link NotText}), anything else a
+     * warning.
+     */
     ObjCounts run(ObjSink sink) throws SceneException {
         try {
             while (source.nextLine()) {
@@ -121,6 +138,12 @@ final class ObjParser {
         } finally {
             close();
         }
+        if (faceCount == 0) {
+            SceneException notText = headNotText();
+            if (notText != null) {
+                throw notText;
+            }
+        }
         return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour,
                 warnings());
     }
@@ -131,7 +154,51 @@ final class ObjParser {
         if (decimalCommas != null) {
             warnings.add(decimalCommas);
         }
+        if (faceCount == 0) {
+            warnings.add(noFaces());
+        }
         return warnings;
+    }
+
+    /** "cube.obj: no f lines, so nothing is drawn (12 lines read: 8 v lines, ...)". */
+    private String noFaces() {
+        int lines = source.lineNumber();
+        String read;
+        if (lines == 0) {
+            read = "the file is empty";
+        } else {
+            List<String> held = new ArrayList<>();
+            if (vertices.vertexCount > 0) {
+                held.add(count(vertices.vertexCount, "v line"));
+            }
+            if (vertices.normalCount > 0) {
+                held.add(count(vertices.normalCount, "vn line"));
+            }
+            if (otherLines > 0) {
+                held.add(count(otherLines, "other line") + " (the first, line " + firstOtherLine + ", starts with '"
+                        + firstOtherWord + "')");
+            }
+            read = count(lines, "line") + " read: " + (held.isEmpty() ? "only blank lines and comments"
+                    : String.join(", ", held));
+        }
+        return file().getFileName() + ": no f lines, so nothing is drawn (" + read + ")"
+                + (polylines > 0 ? "; l lines (polylines) are not drawn: a model is drawn by its faces, f lines" : "");
+    }
+
+    private static String count(int n, String what) {
+        return n + " " + what + (n == 1 ? "" : "s");
+    }
+
+    /** The error when the file's first bytes are not text ({@link NotText}); null when they could be, or cannot be read. */
+    private SceneException headNotText() {
+        byte[] head;
+        try {
+            head = source.head(HEAD);
+        } catch (IOException e) {
+            return null; // the file went away: what was read stands
+        }
+        NotText found = NotText.find(head, 0, head.length, 0, 1, KIND);
+        return found == null ? null : new SceneException(file(), found.line(), 0, "", found.problem());
     }
 
     private void close() {
@@ -155,6 +222,9 @@ final class ObjParser {
         }
         int first = b[i] | 0x20; // lower case for letters
         if (first != 'v' && first != 'f') {
+            if (b[i] != '#') {
+                other(i);
+            }
             return;
         }
         int wordEnd = i + 1;
@@ -168,11 +238,22 @@ final class ObjParser {
             } else {
                 face(wordEnd, sink);
             }
-        } else if (length == 2 && first == 'v') {
-            int second = b[i + 1] | 0x20;
-            if (second == 'n') {
-                normal(wordEnd);
-            }
+        } else if (length == 2 && first == 'v' && (b[i + 1] | 0x20) == 'n') {
+            normal(wordEnd);
+        } else {
+            other(i);
+        }
+    }
+
+    /** Notes an ignored line whose word starts at i (not a comment): for the warning of a file without faces. */
+    private void other(int i) {
+        otherLines++;
+        if (firstOtherLine == 0) {
+            firstOtherLine = source.lineNumber();
+            firstOtherWord = token(i);
+        }
+        if ((b[i] | 0x20) == 'l' && (i + 1 == end || isSeparator(b[i + 1]))) {
+            polylines++;
         }
     }
 
@@ -442,8 +523,20 @@ final class ObjParser {
         return new String(b, from, to - from, StandardCharsets.UTF_8);
     }
 
-    /** An error at byte index i of the current line. */
+    /**
+     * An error at byte index i of the current line; or, when that line or the
+     * file's first bytes are not text, that ({@link NotText}): the line of a
+     * picture or a program renamed .obj is not shown.
+     */
     private SceneException error(int i, String problem) {
+        NotText line = NotText.find(b, lineStart, end, source.lineOffset(), source.lineNumber(), KIND);
+        if (line != null) {
+            return new SceneException(file(), line.line(), 0, "", line.problem());
+        }
+        SceneException head = headNotText();
+        if (head != null) {
+            return head;
+        }
         return new SceneException(file(), source.lineNumber(), column(i), text(lineStart, end),
                 problem + source.lineEndHint());
     }

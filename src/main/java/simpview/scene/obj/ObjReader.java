@@ -27,8 +27,10 @@ import simpview.scene.SceneException;
  * that does not parse or is out of range, w = 0, a vertex or normal index
  * that is 0 or names nothing defined so far (a texture index must be an
  * integer, nothing more: vt lines are ignored), a face of fewer than three
- * vertices. Faces read
- * before an error have already gone to the sink.
+ * vertices; a file that is not UTF-8 text (UTF-16, or no text at all),
+ * found when a line fails or the file gave no face. Faces read before an
+ * error have already gone to the sink. What is worth a warning (a file
+ * without faces, decimal commas) is in {@link ObjCounts#warnings}.
  */
 public final class ObjReader {
 

@@ -11,6 +11,7 @@ import simpview.scene.simp.Command.Shape;
 import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
+import simpview.scene.text.NotText;
 
 /**
  * Reads the commands of one SIMP file, line by line, straight from the bytes
@@ -209,21 +210,14 @@ public final class SimpReader implements AutoCloseable {
      * The error to give when the current line holds a byte no text file holds
      * (a control character other than tab, carriage return and form feed):
      * a program or a picture renamed .simp: the error then says so instead,
-     * and shows none of its bytes, only where the first such byte is. Asked
+     * and shows none of its bytes, only where the first such byte is; and
+     * when the first line shows UTF-16 text, that ({@link NotText}). Asked
      * only once a line failed to parse, so it costs a real scene nothing.
      */
     private SceneException notText() {
-        int from = source.lineStart();
-        for (int i = from; i < end; i++) {
-            int v = b[i] & 0xFF;
-            if (v < 0x20 && v != '\t' && v != '\r' && v != '\f' || v == 0x7F) {
-                long offset = source.lineOffset() + (i - from);
-                return new SceneException(file(), source.lineNumber(), 0, "", String.format(
-                        "not a text file: byte 0x%02X at offset %d (line %d); a SIMP file is lines of text",
-                        v, offset, source.lineNumber()));
-            }
-        }
-        return null;
+        NotText found = NotText.find(b, source.lineStart(), end, source.lineOffset(), source.lineNumber(),
+                "a SIMP file");
+        return found == null ? null : new SceneException(file(), found.line(), 0, "", found.problem());
     }
 
     private void parse(int start, Command c) throws SceneException {

@@ -240,6 +240,24 @@ public final class LineSource {
         }
     }
 
+    /**
+     * Up to the first {@code n} bytes of the source, read anew from its file
+     * (or copied from the bytes in memory): for a message about what a file
+     * that gave nothing is ({@link NotText}).
+     */
+    public byte[] head(int n) throws IOException {
+        if (!fileBacked) {
+            return java.util.Arrays.copyOf(buf, Math.min(n, limit));
+        }
+        try (FileChannel c = FileChannel.open(path, StandardOpenOption.READ)) {
+            ByteBuffer head = ByteBuffer.allocate(n);
+            while (head.hasRemaining() && c.read(head) >= 0) {
+                // reads until n bytes or the end of the file
+            }
+            return java.util.Arrays.copyOf(head.array(), head.position());
+        }
+    }
+
     /** Lets go of the file (not of the place in it); the next line reopens it. */
     public void suspend() throws IOException {
         if (!fileBacked || buf == null) {

@@ -198,6 +198,20 @@ class ObjFuzzTest {
         } catch (SceneException e) {
             Statistics.collect("error");
             assertTrue(e.line() >= 1 && e.line() <= lines.length, e.getMessage());
+            java.util.regex.Matcher notText = java.util.regex.Pattern
+                    .compile("^not a text file: byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)")
+                    .matcher(e.problem());
+            if (notText.find()) { // the junk's NUL: that byte, on that line, and none of the file's bytes shown
+                int offset = Integer.parseInt(notText.group(2));
+                assertEquals(0, bytes[offset], e.getMessage());
+                int line = 1;
+                for (int i = 0; i < offset; i++) {
+                    line += bytes[i] == '\n' ? 1 : 0;
+                }
+                assertEquals(line, e.line(), e.getMessage());
+                assertEquals("", e.lineText());
+                return;
+            }
             String line = lines[e.line() - 1].replaceAll("\r+$", "");
             assertEquals(line, e.lineText());
             assertTrue(e.column() >= 1 && e.column() <= line.length() + 1, e.getMessage());

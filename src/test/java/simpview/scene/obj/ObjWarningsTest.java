@@ -33,11 +33,45 @@ class ObjWarningsTest {
                 + " x y z r g b " + HINT + "; this is the first such line"),
                 warnings("# saved in Berlin\nv  -1,0 0,5 -4,0\nv 1,0 0,0 -4,0\nv 0,0 1,0 -4,0\nf 1 2 3\n"));
         assertEquals(List.of("model.obj:1:3: '1,5' is read as two numbers, so this v line's 4 numbers are"
-                + " x y z w " + HINT + "; this is the first such line"), warnings("v 1,5 2 3\n"));
+                + " x y z w " + HINT + "; this is the first such line"), warnings("v 1,5 2 3\nv 0 0 0\nv 1 0 0\nf 1 2 3\n"));
     }
 
     @Test
     void commasThatCannotBeDecimalCommasWarnOfNothing() throws SceneException {
         assertEquals(List.of(), warnings("v 1,2,3\nv (1,5, 2, 3)\nv 1, 2, 3, 0.5, 0.5, 0.5\nv 0.5,1 2 3\nv 1,5,2 3\nf 1,2,3\n"));
+    }
+
+    // ---- a file without faces -------------------------------------------------------------------
+
+    /** A file that gives no face is named, with what it held, so that an empty picture is explained. */
+    @Test
+    void aFileWithoutFacesSaysSoAndWhatItHeld() throws SceneException {
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (the file is empty)"), warnings(""));
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (3 lines read: only blank lines and"
+                + " comments)"), warnings("# exported by hand\n\n   # nothing yet\n"));
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (5 lines read: 3 v lines, 1 vn line,"
+                + " 1 other line (the first, line 5, starts with 'vt'))"),
+                warnings("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"));
+    }
+
+    /** A lines-only model: its l lines are named, since other programs draw them. */
+    @Test
+    void aModelOfLinesOnlySaysThatLLinesAreNotDrawn() throws SceneException {
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (4 lines read: 3 v lines, 1 other line"
+                + " (the first, line 4, starts with 'l')); l lines (polylines) are not drawn: a model is drawn by"
+                + " its faces, f lines"), warnings("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3 1\n"));
+    }
+
+    /** A scene's commands saved as .obj: its first word shows what it is. */
+    @Test
+    void sceneCommandsSavedAsObjNameTheirFirstWord() throws SceneException {
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (3 lines read: 2 other lines (the first,"
+                + " line 2, starts with 'camera'))"),
+                warnings("# a scene\ncamera -1 -1 1 1 -1 -100\npolygon (0, 0, -5) (1, 0, -5) (0, 1, -5)\n"));
+    }
+
+    @Test
+    void aFileWithAFaceWarnsOfNothing() throws SceneException {
+        assertEquals(List.of(), warnings("l 1 2\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
     }
 }

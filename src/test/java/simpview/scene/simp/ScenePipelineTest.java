@@ -198,8 +198,21 @@ class ScenePipelineTest {
         Path scene = Files.write(dir.resolve("a.out.simp"), bytes);
         SceneException e = assertThrows(SceneException.class,
                 () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
-        assertTrue(e.problem().startsWith("not a text file: byte 0x7F at offset 0 (line 1)"), e.problem());
+        assertTrue(e.problem().startsWith("not a text file: byte 0x7F at offset 0 (line 1); it looks like a program"
+                + " (ELF)"), e.problem());
         assertTrue(e.getMessage().length() < 300, e.getMessage());
+    }
+
+    /** A scene saved as Notepad's "Unicode" is named UTF-16, with what to do, as an .obj model is. */
+    @Test
+    void aSceneSavedAsUtf16SaysSo() throws Exception {
+        Path scene = Files.write(dir.resolve("notepad.simp"),
+                "\uFEFFpolygon (0 0 0) (1 0 0) (0 1 0)\r\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals("UTF-16 text, not UTF-8: it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\"; a"
+                + " SIMP file is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)", e.problem());
+        assertEquals("", e.lineText());
     }
 
     @Test

@@ -1,0 +1,99 @@
+package simpview.scene.text;
+
+/**
+ * What a file that is not lines of UTF-8 text is, for a reader's message:
+ * UTF-16 text (what Windows Notepad saves as "Unicode"), or no text at all
+ * (a picture or a program renamed), named by its first byte that no text
+ * holds and, when its first bytes say so, by what it looks like. A reader
+ * asks only once a file failed to read or gave nothing, so a good file
+ * costs nothing.
+ *
+ * @param line the line the problem is on (1 for UTF-16: the whole file)
+ * @param problem the words: what the file is, and what was expected
+ */
+public record NotText(int line, String problem) {
+
+    /** The first bytes of a kind of file that is not text, and what such a file is. */
+    private record Look(int[] start, String what) {
+    }
+
+    private static final Look[] LOOKS = {
+        new Look(new int[] {0x89, 'P', 'N', 'G'}, "a PNG picture"),
+        new Look(new int[] {0xFF, 0xD8, 0xFF}, "a JPEG picture"),
+        new Look(new int[] {'G', 'I', 'F', '8'}, "a GIF picture"),
+        new Look(new int[] {'P', 'K', 3, 4}, "a ZIP archive (a .zip, .docx or .jar file)"),
+        new Look(new int[] {'%', 'P', 'D', 'F'}, "a PDF document"),
+        new Look(new int[] {0x7F, 'E', 'L', 'F'}, "a program (ELF)"),
+        new Look(new int[] {'M', 'Z'}, "a Windows program"),
+        new Look(new int[] {0xCA, 0xFE, 0xBA, 0xBE}, "a Java class file"),
+    };
+
+    /**
+     * The problem with the bytes b[from, to), which stand at {@code offset}
+     * in the file and start on line {@code line}; null when they could be
+     * lines of text. At offset 0 the first bytes are also looked at: UTF-16
+     * text, or the start of a known kind of file.
+     *
+     * @param kind what the file should be, "a SIMP file" or "an .obj file"
+     */
+    public static NotText find(byte[] b, int from, int to, long offset, int line, String kind) {
+        if (offset == 0) {
+            String utf16 = utf16(b, from, to);
+            if (utf16 != null) {
+                return new NotText(1, "UTF-16 text, not UTF-8: " + utf16 + "; " + kind
+                        + " is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)");
+            }
+        }
+        int at = line;
+        for (int i = from; i < to; i++) {
+            int v = b[i] & 0xFF;
+            if (v == '\n') {
+                at++;
+            } else if (v < 0x20 && v != '\t' && v != '\r' && v != '\f' || v == 0x7F) {
+                String looks = offset == 0 ? looksLike(b, from, to) : null;
+                return new NotText(at, String.format("not a text file: byte 0x%02X at offset %d (line %d)", v,
+                        offset + (i - from), at) + (looks == null ? "" : "; it looks like " + looks) + "; " + kind
+                        + " is lines of text");
+            }
+        }
+        return null;
+    }
+
+    /** How b[from, to), a file's first bytes, show UTF-16 text; null when they do not. */
+    private static String utf16(byte[] b, int from, int to) {
+        if (to - from >= 2 && (b[from] & 0xFF) == 0xFF && (b[from + 1] & 0xFF) == 0xFE) {
+            return "it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\"";
+        }
+        if (to - from >= 2 && (b[from] & 0xFF) == 0xFE && (b[from + 1] & 0xFF) == 0xFF) {
+            return "it starts with the bytes FE FF";
+        }
+        int pairs = Math.min(32, (to - from) / 2);
+        if (pairs < 2) {
+            return null;
+        }
+        boolean little = true;
+        boolean big = true;
+        for (int k = 0; k < pairs; k++) {
+            byte even = b[from + 2 * k];
+            byte odd = b[from + 2 * k + 1];
+            little &= even != 0 && odd == 0;
+            big &= even == 0 && odd != 0;
+        }
+        return little || big ? "every second one of its first bytes is 0" : null;
+    }
+
+    /** What a file starting with b[from, to) is, when its first bytes are those of a known kind; else null. */
+    private static String looksLike(byte[] b, int from, int to) {
+        for (Look look : LOOKS) {
+            int[] start = look.start();
+            boolean same = to - from >= start.length;
+            for (int k = 0; same && k < start.length; k++) {
+                same = (b[from + k] & 0xFF) == start[k];
+            }
+            if (same) {
+                return look.what();
+            }
+        }
+        return null;
+    }
+}

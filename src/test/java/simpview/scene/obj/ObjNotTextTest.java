@@ -1,0 +1,95 @@
+package simpview.scene.obj;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.io.IOException;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.SceneException;
+
+/**
+ * A file that is not UTF-8 text, saved or renamed .obj: an error that says
+ * what it looks like and what is expected, on the line of its first byte
+ * that no text holds (1 for UTF-16), and shows none of its bytes.
+ */
+class ObjNotTextTest {
+
+    private static final String MODEL = "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n";
+    private static final String SAVE_AS_UTF8 = "; an .obj file is read as UTF-8: save it as UTF-8 (in Notepad: Save As,"
+            + " Encoding UTF-8)";
+
+    @TempDir
+    Path dir;
+
+    /** The error streaming the file gives, the same as reading its bytes from memory gives. */
+    private SceneException fails(byte[] bytes) throws IOException {
+        Path file = Files.write(dir.resolve("model.obj"), bytes);
+        SceneException fromFile = assertThrows(SceneException.class, () -> ObjReader.stream(file, face -> { }));
+        SceneException inMemory = assertThrows(SceneException.class,
+                () -> ObjReader.stream(file, bytes, face -> { }));
+        assertEquals(fromFile.getMessage(), inMemory.getMessage());
+        assertEquals("", fromFile.lineText(), "no byte of it is shown");
+        assertEquals(0, fromFile.column());
+        return fromFile;
+    }
+
+    private SceneException fails(String text, Charset charset) throws IOException {
+        return fails(text.getBytes(charset));
+    }
+
+    @Test
+    void notepadsUnicodeIsNamed() throws IOException {
+        SceneException e = fails("\uFEFF" + MODEL, StandardCharsets.UTF_16LE);
+        assertEquals("UTF-16 text, not UTF-8: it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\""
+                + SAVE_AS_UTF8, e.problem());
+        assertEquals(1, e.line());
+    }
+
+    @Test
+    void bigEndianUtf16IsNamed() throws IOException {
+        assertEquals("UTF-16 text, not UTF-8: it starts with the bytes FE FF" + SAVE_AS_UTF8,
+                fails(MODEL, StandardCharsets.UTF_16).problem());
+    }
+
+    @Test
+    void utf16WithoutAByteOrderMarkIsNamed() throws IOException {
+        assertEquals("UTF-16 text, not UTF-8: every second one of its first bytes is 0" + SAVE_AS_UTF8,
+                fails(MODEL, StandardCharsets.UTF_16LE).problem());
+        assertEquals("UTF-16 text, not UTF-8: every second one of its first bytes is 0" + SAVE_AS_UTF8,
+                fails(MODEL, StandardCharsets.UTF_16BE).problem());
+    }
+
+    /** A picture renamed .obj: its first byte that no text holds, placed, and what its first bytes say it is. */
+    @Test
+    void aPictureRenamedObjIsNamed() throws IOException {
+        byte[] png = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+        SceneException e = fails(png);
+        assertEquals("not a text file: byte 0x1A at offset 6 (line 2); it looks like a PNG picture; an .obj file is"
+                + " lines of text", e.problem());
+        assertEquals(2, e.line());
+        assertEquals("not a text file: byte 0x00 at offset 4 (line 1); an .obj file is lines of text",
+                fails(new byte[] {'a', 'b', 'c', 'd', 0, 1, 2}).problem());
+    }
+
+    /** A line of a v or f that fails, in a file that is not text, says that rather than what the line lacks. */
+    @Test
+    void aLineThatFailsInAFileThatIsNotTextSaysSo() throws IOException {
+        assertEquals("not a text file: byte 0x01 at offset 10 (line 2); an .obj file is lines of text",
+                fails("v 0 0 0\nv \u0001 1 0 0\n", StandardCharsets.US_ASCII).problem());
+        byte[] elf = "\u007FELF\u0002\nf 1 2 3\n".getBytes(StandardCharsets.US_ASCII);
+        assertEquals("not a text file: byte 0x7F at offset 0 (line 1); it looks like a program (ELF); an .obj file is"
+                + " lines of text", fails(elf).problem());
+    }
+
+    @Test
+    void aTextModelWithAnErrorIsNotTakenForAnything() throws IOException {
+        Path file = Files.writeString(dir.resolve("model.obj"), "# caf\u00e9\nv 0 0 0\nf 1 2 3\n");
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(file, face -> { }));
+        assertEquals("vertex index 2 names nothing: 1 vertex (v line) defined so far", e.problem());
+    }
+}
