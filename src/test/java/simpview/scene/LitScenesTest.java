@@ -342,6 +342,16 @@ class LitScenesTest {
         assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the triangle before it stays");
     }
 
+    /** An obj name that misses its model only by case, as the course's Windows users write it, names the model. */
+    @Test
+    void aModelNamedInAnotherCaseIsNamed() throws Exception {
+        Files.writeString(dir.resolve("Teapot.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+        SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(write("t", "obj \"teapot\""),
+                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE));
+        assertTrue(e.problem().startsWith("file not found: teapot.obj (there is Teapot.obj: names are case-sensitive"
+                + " here); looked for "), e.problem());
+    }
+
     @Test
     void aSceneIsLitWhenAnyFileItReadsHasALitCommand() throws Exception {
         write("part", "ambient 1 1 1");

@@ -1,5 +1,7 @@
 package simpview.scene.simp;
 
+import java.io.IOException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -46,6 +48,52 @@ record FilePlaces(String fileName, Path here, Path working) {
             return here;
         }
         return !hereIsWorking() && Files.exists(working) ? working : null;
+    }
+
+    /**
+     * For a name found in neither place ({@code name}, as the command gave
+     * it): what was likely meant, or "". A file that differs only in case,
+     * beside the including file or else in the working directory: "(there is
+     * Teapot.obj: names are case-sensitive here)"; a backslash, which is part
+     * of a name here, not a folder separator. Looked for only once the name
+     * was not found, so a scene that finds its files costs nothing more.
+     */
+    String nearMisses(String name) {
+        StringBuilder hints = new StringBuilder();
+        Path otherCase = otherCase(here);
+        // beside the including file: named as the command would name it; in the working directory: in full
+        Path shown = otherCase == null ? null : Path.of(fileName).resolveSibling(otherCase.getFileName());
+        if (otherCase == null && !hereIsWorking()) {
+            shown = otherCase(working);
+        }
+        if (shown != null) {
+            hints.append(" (there is ").append(shown).append(": names are case-sensitive here)");
+        }
+        if (name.indexOf('\\') >= 0) {
+            hints.append(" (a backslash is part of a name here: write \"").append(name.replace('\\', '/'))
+                    .append("\", with / between folders)");
+        }
+        return hints.toString();
+    }
+
+    /** A file in the folder of {@code wanted} whose name is that of {@code wanted} but for case; null when none. */
+    private static Path otherCase(Path wanted) {
+        Path dir = wanted.toAbsolutePath().normalize().getParent();
+        String name = wanted.getFileName().toString();
+        if (dir == null || !Files.isDirectory(dir)) {
+            return null;
+        }
+        try (DirectoryStream<Path> entries = Files.newDirectoryStream(dir)) {
+            for (Path entry : entries) {
+                String entryName = entry.getFileName().toString();
+                if (!entryName.equals(name) && entryName.equalsIgnoreCase(name)) {
+                    return entry;
+                }
+            }
+        } catch (IOException | SecurityException e) {
+            return null; // no hint: the error names the places looked, as before
+        }
+        return null;
     }
 
     /** True when both places are one, the including file lying in the working directory. */

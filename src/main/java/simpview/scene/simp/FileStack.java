@@ -227,7 +227,8 @@ final class FileStack implements AutoCloseable {
         if (found == null) {
             reach(places.here());
             reach(places.working());
-            String hint = name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "";
+            String hint = (name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "")
+                    + places.nearMisses(name);
             String here = places.here().toAbsolutePath().normalize().toString();
             throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for " + here
                     + (places.hereIsWorking() ? "" : " and " + places.working().normalize()));

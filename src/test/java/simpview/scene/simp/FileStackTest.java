@@ -36,6 +36,49 @@ class FileStackTest {
                 + " and " + Path.of("nothere.simp").toAbsolutePath().normalize(), e.problem());
     }
 
+    /**
+     * A name that misses a file only by case, as a scene written on Windows
+     * or macOS names it: the file that is there is named. A name found in
+     * neither place gets no such hint.
+     */
+    @Test
+    void aFileThatDiffersOnlyInCaseIsNamed() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("Cube", "line (0,0,-1) (1,1,-1)");
+        Files.createDirectory(dir.resolve("parts"));
+        new SceneFixture(dir.resolve("parts")).write("Wheel", "line (0,0,-1) (1,1,-1)");
+        scene.write("s", "file \"cube\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: cube.simp (there is Cube.simp: names are"
+                + " case-sensitive here); looked for " + dir.resolve("cube.simp")), "beside the scene");
+        scene.write("s", "file \"parts/wheel\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: parts/wheel.simp (there is parts/Wheel.simp:"
+                + " names are case-sensitive here); looked for "), "in a folder");
+        scene.write("s", "file \"cubes\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: cubes.simp; looked for "), "no near miss");
+    }
+
+    /** The working directory, the second place looked, is named in full. */
+    @Test
+    void aFileThatDiffersOnlyInCaseInTheWorkingDirectoryIsNamedInFull() throws Exception {
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Path working = Files.createDirectory(dir.resolve("working"));
+        Files.writeString(working.resolve("Teapot.obj"), "");
+        FilePlaces places = FilePlaces.of(scenes.resolve("s.simp"), "teapot", ".obj", working);
+        assertEquals(" (there is " + working.resolve("Teapot.obj") + ": names are case-sensitive here)",
+                places.nearMisses("teapot"));
+        assertEquals("", FilePlaces.of(scenes.resolve("s.simp"), "kettle", ".obj", working).nearMisses("kettle"));
+    }
+
+    /** A backslash is part of a name on this system, not a folder separator: the name with / is suggested. */
+    @Test
+    void aBackslashInANameGetsAHint() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "file \"parts\\cube\"");
+        SceneException e = scene.failure("s");
+        assertTrue(e.problem().startsWith("file not found: parts\\cube.simp (a backslash is part of a name here: write"
+                + " \"parts/cube\", with / between folders); looked for "), e.problem());
+    }
+
     @Test
     void missingTopFileIsAnError() {
         SceneException e = assertThrows(SceneException.class,
