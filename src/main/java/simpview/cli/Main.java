@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Optional;
 import picocli.CommandLine;
 import simpview.pages.PageContext;
+import simpview.scene.MemoryAdvice;
 
 /**
  * Entry point: {@code simpview} opens the window, {@code simpview render ...}
@@ -73,7 +74,14 @@ public final class Main {
             sayWhereTheScenesAre(commandLine.getSubcommands().get(name), command.ownScenes());
         }
         // picocli's own exit code for invalid input is already ExitCode.USAGE_ERROR (2).
-        int code = commandLine.execute(args);
+        int code;
+        try {
+            code = commandLine.execute(args);
+        } catch (OutOfMemoryError e) {
+            // A scene or model ran out where it is read or drawn, and said where; this is anything else.
+            err.println("simpview: " + MemoryAdvice.outOfMemory("running this command"));
+            code = ExitCode.SCENE_ERROR;
+        }
         out.flush();
         err.flush();
         return code;

@@ -10,6 +10,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntPredicate;
 import simpview.scene.FileProblem;
+import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
 import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
@@ -135,6 +136,8 @@ final class ObjParser {
                     "a line is longer than " + LineSource.MAX_LINE + " bytes");
         } catch (IOException e) {
             throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + FileProblem.of(file(), e));
+        } catch (OutOfMemoryError e) {
+            throw outOfMemory();
         } finally {
             close();
         }
@@ -199,6 +202,23 @@ final class ObjParser {
         }
         NotText found = NotText.find(head, 0, head.length, 0, 1, KIND);
         return found == null ? null : new SceneException(file(), found.line(), 0, "", found.problem());
+    }
+
+    /**
+     * The error when Java's memory ran out on the current line (reading the
+     * model, or drawing its faces as they came): the recorded faces are let
+     * go first, so that the message can be made.
+     */
+    private SceneException outOfMemory() {
+        recorder = null;
+        String soFar = counted(vertices.vertexCount, "vertex", "vertices") + " and " + counted(faceCount, "face", "faces");
+        return new SceneException(file(), source.lineNumber(), 0, "",
+                MemoryAdvice.outOfMemory("reading this model, at " + soFar + " so far"));
+    }
+
+    /** "1,020,100 vertices". */
+    private static String counted(int n, String one, String many) {
+        return String.format("%,d %s", n, n == 1 ? one : many);
     }
 
     private void close() {

@@ -2,6 +2,7 @@ package simpview.scene.simp;
 
 import java.nio.file.Path;
 import java.util.List;
+import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
 import simpview.shading.FragmentStage;
 import simpview.shading.FragmentStages;
@@ -185,9 +186,14 @@ public final class ScenePipeline {
      */
     private static void run(SimpClient client, SceneMonitor monitor, Path file) throws SceneException {
         try {
-            interpreter(client, monitor).run(file);
-        } finally {
-            client.flush();
+            try {
+                interpreter(client, monitor).run(file);
+            } finally {
+                client.flush();
+            }
+        } catch (OutOfMemoryError e) {
+            // out of memory drawing what was read, on the drawing threads: the line read last is gone
+            throw new SceneException(file, 0, 0, "", MemoryAdvice.outOfMemory("drawing this scene"));
         }
     }
 

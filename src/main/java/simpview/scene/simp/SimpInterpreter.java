@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import simpview.stage.Painter;
+import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
 
 /**
@@ -108,6 +109,13 @@ public final class SimpInterpreter {
             return true;
         } catch (SceneException e) {
             throw files.placed(e);
+        } catch (OutOfMemoryError e) {
+            if (files.depth() == 0) {
+                throw e; // between files: the scene's drawing names the top file
+            }
+            SimpReader at = files.current();
+            throw files.placed(new SceneException(at.file(), at.lineNumber(), 0, "",
+                    MemoryAdvice.outOfMemory("reading and drawing the scene at this line")));
         }
     }
 

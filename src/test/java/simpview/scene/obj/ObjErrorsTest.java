@@ -88,6 +88,27 @@ class ObjErrorsTest {
         assertError("v (1,5 2 3 4)", 1, 14, V_TAKES + 5);
     }
 
+    /**
+     * Java's memory running out while a model is read or its faces drawn (a
+     * sink that runs out stands for both): an error at the line, with how
+     * much was read and how to give Java more, never the OutOfMemoryError.
+     */
+    @Test
+    void memoryRunningOutIsAnErrorAtTheLineSayingWhatToDo() {
+        byte[] model = (TRIANGLE + "# the first face\nf 1 2 3\n").getBytes(StandardCharsets.UTF_8);
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(ObjReaderTest.NAME, model,
+                face -> {
+                    throw new OutOfMemoryError("Java heap space");
+                }));
+        assertEquals(5, e.line());
+        assertEquals(0, e.column());
+        assertEquals("", e.lineText());
+        assertTrue(e.problem().startsWith("out of memory reading this model, at 3 vertices and 1 face so far (Java may"
+                + " use at most "), e.problem());
+        assertTrue(e.problem().endsWith(" MB here): give Java more, e.g. JAVA_OPTS=-Xmx2g before the simpview start"
+                + " script, or java -Xmx2g -jar simpview.jar"), e.problem());
+    }
+
     @Test
     void aNormalOfAWrongCount() {
         assertError("vn 1 2", 1, 7, "wrong count of numbers: vn takes 3 numbers (x y z), found 2");

@@ -215,6 +215,76 @@ class ScenePipelineTest {
         assertEquals("", e.lineText());
     }
 
+    /** A trace that runs out of memory at the first primitive it is told of: Java's memory running out there. */
+    private static SceneMonitor runsOutAtTheFirstPrimitive() {
+        return new SceneMonitor() {
+            @Override
+            public simpview.stage.PrimitiveTrace trace() {
+                return new simpview.stage.PrimitiveTrace() {
+                    @Override
+                    public void read(int index, Path file, int line, int kind, double[] p, int at, int stride,
+                            int vertices) {
+                        throw new OutOfMemoryError("Java heap space");
+                    }
+
+                    @Override
+                    public boolean drawing(int index) {
+                        return true;
+                    }
+                };
+            }
+        };
+    }
+
+    /**
+     * Java's memory running out while a line is read and drawn: an error at
+     * that line, in the file that holds it, with the lines that included it
+     * and how to give Java more.
+     */
+    @Test
+    void memoryRunningOutIsAnErrorAtTheLine() throws Exception {
+        write("part.simp", "# a part", "polygon (0 0 -1) (50 0 -1) (0 50 -1)");
+        Path scene = write("whole.simp", "wire", "file \"part\"");
+        SceneException e = assertThrows(SceneException.class,
+                () -> ScenePipeline.drawDepthCued(scene, SceneFixture.NOWHERE, runsOutAtTheFirstPrimitive()));
+        assertEquals(dir.resolve("part.simp"), e.file());
+        assertEquals(2, e.line());
+        assertEquals("whole.simp:2", e.includedFrom());
+        assertTrue(e.problem().startsWith("out of memory reading and drawing the scene at this line (Java may use at"
+                + " most "), e.problem());
+    }
+
+    /** Out of memory on the drawing threads, once the scene is read: an error naming the scene. */
+    @Test
+    void memoryRunningOutOnTheDrawingThreadsNamesTheScene() throws Exception {
+        Path scene = write("drawn.simp", "polygon (0 0 -1) (50 0 -1) (0 50 -1)");
+        Drawable full = new Drawable() {
+            @Override
+            public int width() {
+                return 650;
+            }
+
+            @Override
+            public int height() {
+                return 650;
+            }
+
+            @Override
+            public void setPixel(int x, int y, double z, int argb) {
+                throw new OutOfMemoryError("Java heap space");
+            }
+
+            @Override
+            public int getPixel(int x, int y) {
+                return 0;
+            }
+        };
+        SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.drawDepthCued(scene, full,
+                SceneMonitor.NONE, simpview.surface.DrawingThreads.of(2), null));
+        assertEquals(scene, e.file());
+        assertTrue(e.problem().startsWith("out of memory drawing this scene (Java may use at most "), e.problem());
+    }
+
     @Test
     void aNonTextByteFurtherOnIsPlacedByItsOffset() throws Exception {
         Path scene = Files.writeString(dir.resolve("late.simp"), "wire\npolygon (0 0 0) (1 0 0) (0 1 0)\nsca\u0001le 1 1 1\n");
