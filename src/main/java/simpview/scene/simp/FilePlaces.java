@@ -55,7 +55,8 @@ record FilePlaces(String fileName, Path here, Path working) {
      * it): what was likely meant, or "". A file that differs only in case,
      * beside the including file or else in the working directory: "(there is
      * Teapot.obj: names are case-sensitive here)"; a backslash, which is part
-     * of a name here, not a folder separator. Looked for only once the name
+     * of a name here, not a folder separator (one or a doubled one, as a C
+     * string writes it). Looked for only once the name
      * was not found, so a scene that finds its files costs nothing more.
      */
     String nearMisses(String name) {
@@ -70,7 +71,7 @@ record FilePlaces(String fileName, Path here, Path working) {
             hints.append(" (there is ").append(shown).append(": names are case-sensitive here)");
         }
         if (name.indexOf('\\') >= 0) {
-            hints.append(" (a backslash is part of a name here: write \"").append(name.replace('\\', '/'))
+            hints.append(" (a backslash is part of a name here: write \"").append(name.replaceAll("\\\\+", "/"))
                     .append("\", with / between folders)");
         }
         return hints.toString();

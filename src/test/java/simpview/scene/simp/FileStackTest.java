@@ -77,6 +77,10 @@ class FileStackTest {
         SceneException e = scene.failure("s");
         assertTrue(e.problem().startsWith("file not found: parts\\cube.simp (a backslash is part of a name here: write"
                 + " \"parts/cube\", with / between folders); looked for "), e.problem());
+        scene.write("s", "file \"parts\\\\cube\"");
+        e = scene.failure("s");
+        assertTrue(e.problem().startsWith("file not found: parts\\\\cube.simp (a backslash is part of a name here:"
+                + " write \"parts/cube\", with / between folders); looked for "), e.problem());
     }
 
     @Test
