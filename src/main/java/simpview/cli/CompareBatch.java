@@ -731,7 +731,7 @@ public final class CompareBatch {
             return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
         int page = target.page();
-        if (PanelGridComparison.holds(theirs, 2 * A1Layout.PANEL + 3 * A1Layout.MARGIN, firstAssignmentPanels())) {
+        if (PanelGridComparison.holds(theirs, firstAssignmentPanels())) {
             BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
             return compareFirstAssignment(relative, page, first, diffs,
                     mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
@@ -876,7 +876,8 @@ public final class CompareBatch {
             Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
             String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
                     + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
-                    + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page";
+                    + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page"
+                    + (cut.runsPast().isEmpty() ? "" : "; " + cut.runsPast());
             double score = rule.score(comparison, partial);
             boolean passes = rule.passes(comparison);
             String label = firstAssignmentLabel(page, k);

@@ -292,8 +292,7 @@ public final class CompareCommand implements Callable<Integer> {
         out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
                 + (shown.usesSeed() ? ", seed " + context.seed() : "")
                 + (context.a1Rule() == simpview.pages.A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
-        out.println("page:    top-left at x " + comparison.pageLeft() + ", y " + comparison.pageTop()
-                + " of the picture, counted from its top-left");
+        out.println("page:    " + comparison.place());
         if (metric == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }

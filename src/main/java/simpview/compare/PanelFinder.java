@@ -78,6 +78,27 @@ final class PanelFinder {
         return new PanelPlace(found.left(), found.top(), "found in a " + width + "x" + height + " picture");
     }
 
+    /**
+     * Whether the picture holds a 650x650 panel framed by white margins (found where {@link #find} would find it,
+     * not taken on trust from a 750x750 picture's size) that is one panel: not split down its middle by a white
+     * gutter, as the first assignment's page of four panels is.
+     */
+    static boolean holdsOnePanel(int[] rgb, int width, int height) {
+        if (width < PanelPlace.SIZE || height < PanelPlace.SIZE) {
+            return false;
+        }
+        PanelPlace found = new PanelFinder(rgb, width, height).search();
+        if (found == null) {
+            return false;
+        }
+        int middle = found.left() + PanelPlace.SIZE / 2;
+        int white = 0;
+        for (int y = found.top(); y < found.top() + PanelPlace.SIZE; y++) {
+            white += isWhite(rgb[y * width + middle]) ? 1 : 0;
+        }
+        return white < FRAME_WHITE * PanelPlace.SIZE;
+    }
+
     /** For a picture the size of a page or capture scaled, a sentence that says so; else "". */
     static String scaled(int width, int height) {
         for (int k = 0; k < SIZES.length; k++) {

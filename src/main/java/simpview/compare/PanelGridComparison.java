@@ -2,6 +2,8 @@ package simpview.compare;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * A picture of a page of several square panels (the first assignment's four
@@ -30,23 +32,17 @@ public final class PanelGridComparison {
     public record PanelShares(double identical, double within, SystematicError systematic) {
     }
 
-    private final int pageLeft;
-    private final int pageTop;
+    private final String place;
     private final PanelShares[] shares;
 
-    private PanelGridComparison(int pageLeft, int pageTop, PanelShares[] shares) {
-        this.pageLeft = pageLeft;
-        this.pageTop = pageTop;
+    private PanelGridComparison(String place, PanelShares[] shares) {
+        this.place = place;
         this.shares = shares;
     }
 
-    /** Where the page's top-left pixel is in the picture. */
-    public int pageLeft() {
-        return pageLeft;
-    }
-
-    public int pageTop() {
-        return pageTop;
+    /** Where the page is in the picture ({@link Cut#describe}). */
+    public String place() {
+        return place;
     }
 
     /** Panel k's shares, k from 0. */
@@ -91,7 +87,7 @@ public final class PanelGridComparison {
             shares[k] = new PanelShares(identical / n, within / n,
                     SystematicError.find(cut.ours()[k], cut.theirs()[k], p.size(), tolerance));
         }
-        return new PanelGridComparison(cut.pageLeft(), cut.pageTop(), shares);
+        return new PanelGridComparison(cut.describe(), shares);
     }
 
     /**
@@ -101,8 +97,41 @@ public final class PanelGridComparison {
      * @param pageTop the same, its row
      * @param ours simpview's panels, each size x size pixels row by row from the top
      * @param theirs the picture's panels, the same
+     * @param width the picture's width
+     * @param height its height
+     * @param page the page's side
      */
-    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs) {
+    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs, int width, int height, int page) {
+
+        /**
+         * Where the page is in the picture: "top-left at x 1, y 31 of the picture, counted from its top-left", and
+         * when the page runs past the picture's edges, by how much ({@link #runsPast}).
+         */
+        public String describe() {
+            String past = runsPast();
+            return "top-left at x " + pageLeft + ", y " + pageTop + " of the picture, counted from its top-left"
+                    + (past.isEmpty() ? "" : "; " + past);
+        }
+
+        /**
+         * When the page runs past the picture's edges (drawn a pixel off in it, or cut a pixel short), by how much:
+         * "the page runs past the picture's right edge by 1 px (...)"; else "".
+         */
+        public String runsPast() {
+            List<String> past = new ArrayList<>();
+            addPast(past, -pageLeft, "left");
+            addPast(past, pageLeft + page - width, "right");
+            addPast(past, -pageTop, "top");
+            addPast(past, pageTop + page - height, "bottom");
+            return past.isEmpty() ? "" : "the page runs past the picture's " + joined(past)
+                    + " (its margins are cut there; its panels are whole)";
+        }
+
+        private static void addPast(List<String> past, int pixels, String edge) {
+            if (pixels > 0) {
+                past.add(edge + " edge by " + pixels + " px");
+            }
+        }
     }
 
     /** Reads the picture, finds the page in it and cuts both pages into their panels. */
@@ -121,13 +150,8 @@ public final class PanelGridComparison {
      * first assignment's, which a search for one 650x650 panel can take for one). Cheap: most places
      * fail at their first sample.
      */
-    public static boolean holds(Picture theirs, int page, Panel[] panels) {
-        try {
-            find(theirs.rgb(), theirs.width(), theirs.height(), page, panels, theirs.name());
-            return true;
-        } catch (CompareException e) {
-            return false;
-        }
+    public static boolean holds(Picture theirs, Panel[] panels) {
+        return place(theirs.rgb(), theirs.width(), theirs.height(), panels) != null;
     }
 
     private static Cut cut(int[] rgb, byte[] alpha, int width, int height, String name, BufferedImage ours,
@@ -146,7 +170,7 @@ public final class PanelGridComparison {
             a[k] = cut(mine, page, p.left(), p.top(), p.size());
             b[k] = cut(rgb, width, at[0] + p.left(), at[1] + p.top(), p.size());
         }
-        return new Cut(at[0], at[1], a, b);
+        return new Cut(at[0], at[1], a, b, width, height, page);
     }
 
     /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */
@@ -158,46 +182,183 @@ public final class PanelGridComparison {
         return out;
     }
 
-    /** The first place (rows first, then columns) where every panel is framed; a clear error when there is none. */
+    /**
+     * The first place (rows first, then columns) where every panel is framed; a clear error, saying what was found
+     * instead, when there is none. Only the panels and the rings around them need be in the picture: a page drawn a
+     * pixel off in its picture, or cut a pixel short, still has its margins' inner edges.
+     */
     static int[] find(int[] rgb, int width, int height, int page, Panel[] panels, String name) throws CompareException {
-        for (int top = 0; top + page <= height; top++) {
-            for (int left = 0; left + page <= width; left++) {
+        int[] place = place(rgb, width, height, panels);
+        if (place != null) {
+            return place;
+        }
+        throw new CompareException("no page of " + panels.length + " panels of " + panels[0].size() + "x"
+                + panels[0].size() + " found in " + name + " (" + width + "x" + height + "): "
+                + notFound(rgb, width, height, page, panels));
+    }
+
+    /** The first place (rows first, then columns) where every panel is framed, or null. */
+    private static int[] place(int[] rgb, int width, int height, Panel[] panels) {
+        Span span = Span.of(panels);
+        for (int top = 1 - span.top(); top + span.bottom() < height; top++) {
+            for (int left = 1 - span.left(); left + span.right() < width; left++) {
                 if (framed(rgb, width, left, top, panels)) {
                     return new int[] {left, top};
                 }
             }
         }
-        throw new CompareException("no page of " + panels.length + " panels of " + panels[0].size() + "x"
-                + panels[0].size() + " found in " + name + " (" + width + "x" + height + "): each panel needs a white "
-                + "ring around it and a mostly dark edge");
+        return null;
+    }
+
+    /**
+     * The page's columns and rows its panels and their rings take (relative to the page's top-left): the rings'
+     * inner column is {@code left - 1}, their outer one {@code right}; rows the same.
+     */
+    private record Span(int left, int top, int right, int bottom) {
+
+        static Span of(Panel[] panels) {
+            int left = Integer.MAX_VALUE;
+            int top = Integer.MAX_VALUE;
+            int right = Integer.MIN_VALUE;
+            int bottom = Integer.MIN_VALUE;
+            for (Panel p : panels) {
+                left = Math.min(left, p.left());
+                top = Math.min(top, p.top());
+                right = Math.max(right, p.left() + p.size());
+                bottom = Math.max(bottom, p.top() + p.size());
+            }
+            return new Span(left, top, right, bottom);
+        }
+    }
+
+    /**
+     * What a picture without the page holds instead, as far as can be told: smaller than a page, a page's shape at
+     * another size (saved scaled), or some of the panels framed where others are not, and why those are not.
+     */
+    private static String notFound(int[] rgb, int width, int height, int page, Panel[] panels) {
+        String scaled = PanelFinder.scaled(width, height);
+        if (width < page || height < page) {
+            return "it is smaller than a page (" + page + "x" + page + ")" + scaled;
+        }
+        String rule = "each panel needs a white ring around it and a mostly dark edge";
+        if (!scaled.isEmpty()) {
+            return rule + scaled;
+        }
+        Span span = Span.of(panels);
+        int most = 0;
+        // a picture of a page's size is looked at where a page has its panels, when nothing better is found
+        int[] best = width == page && height == page ? new int[] {0, 0} : null;
+        for (int top = 1 - span.top(); top + span.bottom() < height; top++) {
+            for (int left = 1 - span.left(); left + span.right() < width; left++) {
+                int framed = 0;
+                for (Panel p : panels) {
+                    framed += problem(rgb, width, left + p.left(), top + p.top(), p.size()) == null ? 1 : 0;
+                }
+                if (framed > most) {
+                    most = framed;
+                    best = new int[] {left, top};
+                }
+            }
+        }
+        String eightPages = PanelFinder.holdsOnePanel(rgb, width, height) ? "; it holds one 650x650 panel, as a page of "
+                + "the eight pages does: compare it with one of those (--page N without --assignment 1)" : "";
+        if (best == null) {
+            return rule + eightPages;
+        }
+        List<String> framed = new ArrayList<>();
+        List<String> why = new ArrayList<>();
+        for (int k = 0; k < panels.length; k++) {
+            Panel p = panels[k];
+            int x0 = best[0] + p.left();
+            int y0 = best[1] + p.top();
+            String problem = problem(rgb, width, x0, y0, p.size());
+            if (problem == null) {
+                framed.add(String.valueOf(k + 1));
+            } else {
+                why.add("panel " + (k + 1) + " (x " + x0 + "-" + (x0 + p.size() - 1) + ", y " + y0 + "-"
+                        + (y0 + p.size() - 1) + " of the picture): " + problem);
+            }
+        }
+        if (framed.isEmpty()) {
+            // the first panel says what is wrong; the others are most likely so for the same reason
+            return "no panel is framed where a " + page + "x" + page + " page has them; " + why.get(0) + eightPages;
+        }
+        return (framed.size() == 1 ? "panel " : "panels ") + joined(framed) + (framed.size() == 1 ? " is" : " are")
+                + " framed with the page's top-left at x " + best[0] + ", y " + best[1] + " of the picture, but not "
+                + String.join("; nor ", why) + eightPages;
+    }
+
+    /** "1", "1 and 3", "1, 3 and 4". */
+    private static String joined(List<String> words) {
+        int last = words.size() - 1;
+        return last == 0 ? words.get(0) : String.join(", ", words.subList(0, last)) + " and " + words.get(last);
     }
 
     private static boolean framed(int[] rgb, int width, int left, int top, Panel[] panels) {
         for (Panel p : panels) {
             int x0 = left + p.left();
             int y0 = top + p.top();
-            int s = p.size();
-            if (x0 < 1 || y0 < 1) {
-                return false;
-            }
-            int dark = 0;
-            int samples = 0;
-            for (int i = 0; i < s; i += 5) {
-                if (!white(rgb[(y0 - 1) * width + x0 + i]) || !white(rgb[(y0 + i) * width + x0 - 1])
-                        || !white(rgb[(y0 + s) * width + x0 + i]) || !white(rgb[(y0 + i) * width + x0 + s])) {
-                    return false;
-                }
-                dark += dark(rgb[y0 * width + x0 + i]) ? 1 : 0;
-                dark += dark(rgb[(y0 + i) * width + x0]) ? 1 : 0;
-                dark += dark(rgb[(y0 + s - 1) * width + x0 + i]) ? 1 : 0;
-                dark += dark(rgb[(y0 + i) * width + x0 + s - 1]) ? 1 : 0;
-                samples += 4;
-            }
-            if (2 * dark < samples) {
+            if (ringBreak(rgb, width, x0, y0, p.size()) >= 0 || !mostlyDark(rgb, width, x0, y0, p.size())) {
                 return false;
             }
         }
         return true;
+    }
+
+    /**
+     * Why the square of side {@code s} at (x0, y0) is not a framed panel, or null when it is: the one-pixel ring
+     * just outside it white, its own outermost pixels mostly dark. The ring must lie in the picture.
+     */
+    private static String problem(int[] rgb, int width, int x0, int y0, int s) {
+        int at = ringBreak(rgb, width, x0, y0, s);
+        if (at >= 0) {
+            int colour = rgb[at];
+            return "the ring of pixels just outside it is not white (at x " + at % width + ", y " + at / width + ": rgb "
+                    + (colour >> 16 & 0xFF) + " " + (colour >> 8 & 0xFF) + " " + (colour & 0xFF) + ")";
+        }
+        return mostlyDark(rgb, width, x0, y0, s) ? null
+                : "its outermost pixels are mostly light, where a panel's are mostly dark (black where nothing is drawn)";
+    }
+
+    /**
+     * The first pixel (its index in {@code rgb}) of the ring just outside the square of side {@code s} at (x0, y0)
+     * that is not white, sampling every fifth along each side; -1 when all are white. Most places of a search fail
+     * at their first sample.
+     */
+    private static int ringBreak(int[] rgb, int width, int x0, int y0, int s) {
+        for (int i = 0; i < s; i += 5) {
+            int above = (y0 - 1) * width + x0 + i;
+            int before = (y0 + i) * width + x0 - 1;
+            int below = (y0 + s) * width + x0 + i;
+            int after = (y0 + i) * width + x0 + s;
+            if (!white(rgb[above])) {
+                return above;
+            }
+            if (!white(rgb[before])) {
+                return before;
+            }
+            if (!white(rgb[below])) {
+                return below;
+            }
+            if (!white(rgb[after])) {
+                return after;
+            }
+        }
+        return -1;
+    }
+
+    /** Whether the square's own outermost pixels, sampled every fifth, are at least half dark. */
+    private static boolean mostlyDark(int[] rgb, int width, int x0, int y0, int s) {
+        int dark = 0;
+        int samples = 0;
+        for (int i = 0; i < s; i += 5) {
+            dark += dark(rgb[y0 * width + x0 + i]) ? 1 : 0;
+            dark += dark(rgb[(y0 + i) * width + x0]) ? 1 : 0;
+            dark += dark(rgb[(y0 + s - 1) * width + x0 + i]) ? 1 : 0;
+            dark += dark(rgb[(y0 + i) * width + x0 + s - 1]) ? 1 : 0;
+            samples += 4;
+        }
+        return 2 * dark >= samples;
     }
 
     private static boolean white(int rgb) {

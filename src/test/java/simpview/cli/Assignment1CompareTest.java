@@ -4,9 +4,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.A1Layout;
+import simpview.pages.Assignment1;
+import simpview.pages.PageContext;
 import simpview.testing.CourseFiles;
 
 /** {@code compare --assignment 1}: the page found in a picture, and shares panel by panel. */
@@ -96,7 +104,100 @@ class Assignment1CompareTest {
         CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "1");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
         assertTrue(run.err().contains("no page of 4 panels of 300x300 found in " + page), run.err());
+        assertTrue(run.err().contains("it holds one 650x650 panel, as a page of the eight pages does: compare it with one "
+                + "of those (--page N without --assignment 1)"), run.err());
         assertEquals(ExitCode.USAGE_ERROR, CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "6").exitCode());
+    }
+
+    /** The page drawn into a picture of {@code width} x {@code height} with its top-left at (left, top), white around. */
+    private static BufferedImage placed(BufferedImage page, int width, int height, int left, int top) {
+        BufferedImage picture = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = picture.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, width, height);
+        g.drawImage(page, left, top, null);
+        g.dispose();
+        return picture;
+    }
+
+    /** The page scaled to {@code side} x {@code side}, as a screen or a viewer saves it. */
+    private static BufferedImage scaled(BufferedImage page, int side) {
+        BufferedImage picture = new BufferedImage(side, side, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = picture.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+        g.drawImage(page, 0, 0, side, side, null);
+        g.dispose();
+        return picture;
+    }
+
+    private CliRun compared(String name, BufferedImage picture) throws Exception {
+        Path file = dir.resolve(name);
+        ImageIO.write(picture, "png", file.toFile());
+        return CliRun.of("compare", file.toString(), "--assignment", "1", "--page", "1");
+    }
+
+    /**
+     * A page drawn a pixel off in its picture, or cut a pixel short, still has the white rings around its panels: it
+     * is found and compared, and the page line says where it runs past the picture.
+     */
+    @Test
+    void aPageAPixelOffOrCutShortIsFoundAndSaidSo() throws Exception {
+        BufferedImage page = Assignment1.render(1, PageContext.defaults());
+        CliRun off = compared("off.png", placed(page, 750, 750, 1, 1));
+        assertEquals(ExitCode.OK, off.exitCode(), off.out() + off.err());
+        assertTrue(off.out().contains("page:    top-left at x 1, y 1 of the picture, counted from its top-left; the page "
+                + "runs past the picture's right edge by 1 px and bottom edge by 1 px (its margins are cut there; its "
+                + "panels are whole)"), off.out());
+        CliRun narrow = compared("narrow.png", placed(page, 749, 750, -1, 0));
+        assertEquals(ExitCode.OK, narrow.exitCode(), narrow.out() + narrow.err());
+        assertTrue(narrow.out().contains("top-left at x -1, y 0 of the picture, counted from its top-left; the page runs "
+                + "past the picture's left edge by 1 px ("), narrow.out());
+        CliRun whole = compared("whole.png", page);
+        assertTrue(whole.out().contains("page:    top-left at x 0, y 0 of the picture, counted from its top-left\n"),
+                "a page the picture holds whole runs past nothing: " + whole.out());
+    }
+
+    /** A picture without the page is told what it holds instead, as far as simpview can tell. */
+    @Test
+    void aPictureWithoutThePageIsToldWhatItHoldsInstead() throws Exception {
+        BufferedImage page = Assignment1.render(1, PageContext.defaults());
+        CliRun small = compared("small.png", scaled(page, 700));
+        assertEquals(ExitCode.SCENE_ERROR, small.exitCode());
+        assertTrue(small.err().contains("(700x700): it is smaller than a page (750x750); it has the shape of a 750x750 "
+                + "page, scaled by 0.933: save the picture at its own size (1:1, no scaling)"), small.err());
+        CliRun hiDpi = compared("hidpi.png", scaled(page, 1500));
+        assertTrue(hiDpi.err().contains("(1500x1500): each panel needs a white ring around it and a mostly dark edge; it "
+                + "has the shape of a 750x750 page, scaled by 2.00: save the picture at its own size"), hiDpi.err());
+        BufferedImage blank = Assignment1.render(1, PageContext.defaults());
+        Graphics2D g = blank.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(A1Layout.left(4), A1Layout.top(4), A1Layout.PANEL, A1Layout.PANEL);
+        g.dispose();
+        CliRun white = compared("white.png", blank);
+        assertTrue(white.err().contains("(750x750): panels 1, 2 and 3 are framed with the page's top-left at x 0, y 0 of "
+                + "the picture, but not panel 4 (x 400-699, y 400-699 of the picture): its outermost pixels are mostly "
+                + "light"), white.err());
+        BufferedImage wide = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        Graphics2D w = wide.createGraphics();
+        w.setColor(Color.WHITE);
+        w.fillRect(0, 0, 750, 750);
+        w.setColor(Color.BLACK);
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            w.fillRect(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL + 1, A1Layout.PANEL + 1); // 301 wide
+        }
+        w.dispose();
+        CliRun big = compared("big.png", wide);
+        assertTrue(big.err().contains("(750x750): no panel is framed where a 750x750 page has them; panel 1 (x 50-349, "
+                + "y 50-349 of the picture): the ring of pixels just outside it is not white (at x 50, y 350: rgb 0 0 0)"),
+                big.err());
+        for (CliRun four : new CliRun[] {white, big}) {
+            assertFalse(four.err().contains("650x650"), "a page of four panels is not one panel: " + four.err());
+        }
+        for (CliRun run : new CliRun[] {small, hiDpi, white, big}) {
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+            assertTrue(run.err().startsWith("simpview compare: no page of 4 panels of 300x300 found in "), run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+        }
     }
 
     /** A batch of the eight pages does not take a1-page2.png for page 2: it compares it as the first assignment's. */
