@@ -228,6 +228,9 @@ public final class CompareCommand implements Callable<Integer> {
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
+        usage(first || batch || !pictures.a1RuleGiven(), "--a1-rule goes with --assignment 1: it is the rule the first "
+                + "assignment's pages are drawn by (with --dir and in check, also for the first assignment's pages found "
+                + "among the eight)");
         usage(flipThreshold == null || metric == Comparison.Metric.FLIP || rubric != null,
                 "--flip-threshold goes with --metric flip (or a rubric whose rules use it)");
         pictures.check(scene);
@@ -254,8 +257,18 @@ public final class CompareCommand implements Callable<Integer> {
         try {
             ours = own.of(target); // first: a usage problem it finds (cue colours for a lit scene) comes first
             theirs = Picture.read(image);
-        } catch (CompareException | SceneException e) {
+        } catch (SceneException e) {
             err().println("simpview compare: " + e.getMessage());
+            return ExitCode.SCENE_ERROR;
+        } catch (CompareException e) {
+            err().println("simpview compare: " + (PanelGridComparison.holds(image, CompareBatch.firstAssignmentPanels())
+                    ? firstAssignmentsPage(target) : e.getMessage()));
+            return ExitCode.SCENE_ERROR;
+        }
+        // A page of four framed 300x300 panels also frames a 650x650 square (two panels and their gutter): the
+        // first assignment's page is what it is.
+        if (PanelGridComparison.holds(theirs, CompareBatch.firstAssignmentPanels())) {
+            err().println("simpview compare: " + firstAssignmentsPage(target));
             return ExitCode.SCENE_ERROR;
         }
         Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
@@ -273,6 +286,14 @@ public final class CompareCommand implements Callable<Integer> {
             }
         }
         return report.passes() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** Why a picture of the first assignment's page is not compared with {@code target}, and what to give instead. */
+    private String firstAssignmentsPage(CompareTarget target) {
+        boolean samePage = target.isPage() && target.page() <= Assignment1.COUNT;
+        return image + " is a page of the first assignment (four 300x300 panels), not a page with one 650x650 panel: "
+                + "add --assignment 1 to compare it panel by panel, e.g. simpview compare " + image + " --assignment 1 "
+                + "--page " + (samePage ? target.page() : "N (1 to " + Assignment1.COUNT + ")");
     }
 
     /** The first assignment's page beside the picture, panel by panel: the verdict passes when every panel does. */

@@ -53,6 +53,11 @@ final class OwnPicturesOptions {
         a1Rule.check();
     }
 
+    /** Whether --a1-rule was given. */
+    boolean a1RuleGiven() {
+        return a1Rule.given();
+    }
+
     /** The pages' context these options ask for, the project's own scenes in {@code ownScenes}. */
     PageContext context(Path ownScenes, SceneMonitor monitor) {
         return a1Rule.applyTo(PageDrawing.context(ownScenes, seed, simpDir, monitor));

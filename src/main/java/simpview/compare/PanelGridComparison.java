@@ -154,6 +154,19 @@ public final class PanelGridComparison {
         return place(theirs.rgb(), theirs.width(), theirs.height(), panels) != null;
     }
 
+    /**
+     * Whether the picture file holds a page of these panels: false too when it cannot be read (the caller has
+     * said why already).
+     */
+    public static boolean holds(Path picture, Panel[] panels) {
+        try {
+            PngCodec.Pixels pixels = Picture.readPixels(picture);
+            return place(pixels.rgb(), pixels.width(), pixels.height(), panels) != null;
+        } catch (CompareException e) {
+            return false;
+        }
+    }
+
     private static Cut cut(int[] rgb, byte[] alpha, int width, int height, String name, BufferedImage ours,
             Panel[] panels) throws CompareException {
         int page = ours.getWidth();

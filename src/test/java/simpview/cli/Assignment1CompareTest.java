@@ -200,6 +200,53 @@ class Assignment1CompareTest {
         }
     }
 
+    /**
+     * Without --assignment 1, a first-assignment page is not compared with one of the eight pages (whose 650x650
+     * panel its two panels and gutter frame): it is told to add --assignment 1. So is --a1-rule alone.
+     */
+    @Test
+    void aFirstAssignmentPageComparedWithoutAssignment1IsToldToAddIt() throws Exception {
+        Path page = dir.resolve("a1-page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", page.toString()).exitCode());
+        CliRun run = CliRun.of("compare", page.toString(), "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
+        assertEquals("simpview compare: " + page + " is a page of the first assignment (four 300x300 panels), not a page "
+                + "with one 650x650 panel: add --assignment 1 to compare it panel by panel, e.g. simpview compare " + page
+                + " --assignment 1 --page 1\n", run.err());
+        assertEquals("", run.out(), "no comparison with the eight pages' page 1");
+        CliRun seven = CliRun.of("compare", page.toString(), "--page", "7", "--simp-dir",
+                CourseFiles.requireSimpDir().toString());
+        assertTrue(seven.err().endsWith("--assignment 1 --page N (1 to 5)\n"), seven.err());
+        // the course's window capture of its page 1 holds no 650x650 panel at all: told the same
+        String capture = CourseFiles.require("reference/images/a1/page1.png").toString();
+        CliRun course = CliRun.of("compare", capture, "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, course.exitCode());
+        assertTrue(course.err().contains(" is a page of the first assignment (four 300x300 panels)"), course.err());
+        // a gutter a viewer shows through is no 650x650 panel (it is not opaque), but the four panels are there
+        BufferedImage clear = new BufferedImage(750, 750, BufferedImage.TYPE_INT_ARGB);
+        Graphics2D g = clear.createGraphics();
+        g.drawImage(Assignment1.render(1, PageContext.defaults()), 0, 0, null);
+        g.dispose();
+        for (int y = 0; y < 750; y++) {
+            for (int x = 360; x < 390; x++) {
+                clear.setRGB(x, y, 0x00FFFFFF);
+            }
+        }
+        Path seeThrough = dir.resolve("clear.png");
+        ImageIO.write(clear, "png", seeThrough.toFile());
+        CliRun gutter = CliRun.of("compare", seeThrough.toString(), "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, gutter.exitCode());
+        assertTrue(gutter.err().contains(" is a page of the first assignment (four 300x300 panels)"), gutter.err());
+        assertEquals(ExitCode.OK, CliRun.of("compare", seeThrough.toString(), "--assignment", "1", "--page", "1").exitCode());
+        CliRun rule = CliRun.of("compare", page.toString(), "--page", "1", "--a1-rule", "course");
+        assertEquals(ExitCode.USAGE_ERROR, rule.exitCode());
+        assertTrue(rule.err().contains("--a1-rule goes with --assignment 1"), rule.err());
+        // one of the eight pages is compared as before
+        Path eight = dir.resolve("page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "1", "--out", eight.toString()).exitCode());
+        assertEquals(ExitCode.OK, CliRun.of("compare", eight.toString(), "--page", "1").exitCode());
+    }
+
     /** A batch of the eight pages does not take a1-page2.png for page 2: it compares it as the first assignment's. */
     @Test
     void aBatchOfTheEightPagesComparesAFirstAssignmentPageAsOne() throws Exception {
