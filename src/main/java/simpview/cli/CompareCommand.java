@@ -1,5 +1,6 @@
 package simpview.cli;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -18,6 +19,7 @@ import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
+import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.Picture;
@@ -98,7 +100,8 @@ public final class CompareCommand implements Callable<Integer> {
                     + "1 to 5")
     private PageRange pages;
 
-    @Option(names = "--diff", paramLabel = "OUT.png", description = "write ours | theirs | heat map, at 1:1")
+    @Option(names = "--diff", paramLabel = "OUT.png",
+            description = "write ours | theirs | heat map, at 1:1 (the panel; with --assignment 1, each the whole page)")
     private Path diff;
 
     @Option(names = "--out-dir", paramLabel = "D", description = "with --dir: where the table and the diff images go")
@@ -222,9 +225,8 @@ public final class CompareCommand implements Callable<Integer> {
             new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene").writes(diff, "--diff");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
-        usage(!first || batch || page != null && diff == null,
-                "--assignment 1 compares one picture with one page: give IMAGE --page N (no --diff), or grade a folder "
-                        + "with --dir D");
+        usage(!first || batch || page != null,
+                "--assignment 1 compares one picture with one page: give IMAGE --page N, or grade a folder with --dir D");
         int count = first ? Assignment1.COUNT : Assignment2.COUNT;
         usage(page == null || page >= 1 && page <= count,
                 "--page must be 1 to " + count + (first ? " for the first assignment" : "") + ", not " + page);
@@ -296,24 +298,32 @@ public final class CompareCommand implements Callable<Integer> {
                 + "--page " + (samePage ? target.page() : "N (1 to " + Assignment1.COUNT + ")");
     }
 
-    /** The first assignment's page beside the picture, panel by panel: the verdict passes when every panel does. */
+    /**
+     * The first assignment's page beside the picture, panel by panel, without slack: the verdict passes when every
+     * panel does. Each failing panel's largest differing patches are listed; --diff writes the three pages.
+     */
     private int compareAssignment1() {
         PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
         PageContext context = context();
         Page shown = Assignment1.page(page);
-        PanelGridComparison comparison;
+        BufferedImage ours = Assignment1.render(page, context);
+        PanelGridComparison.Cut cut;
         try {
-            comparison = PanelGridComparison.of(image, Assignment1.render(page, context), panels, tolerance, metric,
-                    flipThreshold());
+            cut = PanelGridComparison.cut(image, ours, panels);
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
+        }
+        Comparison[] compared = new Comparison[panels.length];
+        for (int k = 0; k < panels.length; k++) {
+            // which pixels a line drawer lights is the point: no slack
+            compared[k] = Comparison.of(cut.ours()[k], cut.theirs()[k], panels[k].size(), 0, metric, flipThreshold());
         }
         PrintWriter out = spec.commandLine().getOut();
         out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
                 + (shown.usesSeed() ? ", seed " + context.seed() : "")
                 + (context.a1Rule() == simpview.pages.A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
-        out.println("page:    " + comparison.place());
+        out.println("page:    " + cut.describe());
         if (metric == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }
@@ -325,22 +335,46 @@ public final class CompareCommand implements Callable<Integer> {
                     + String.format(Locale.ROOT, "%.3f", flipThreshold()) + " or less");
         }
         out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", within);
+        boolean[] passing = new boolean[panels.length];
+        for (int k = 0; k < panels.length; k++) {
+            Comparison c = compared[k];
+            out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", (k + 1) + " " + panelName(shown, k),
+                    100 * c.share(0, false), 100 * c.verdictShare(tolerance));
+            passing[k] = 100 * c.verdictShare(tolerance) >= min;
+        }
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {
-            PanelGridComparison.PanelShares shares = comparison.shares(k);
-            String what = (k + 1) + " " + (shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : A1Polygons.NAMES.get(k));
-            out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", what, 100 * shares.identical(), 100 * shares.within());
-            passes &= 100 * shares.within() >= min;
+            passes &= passing[k];
+            if (!passing[k]) {
+                out.print("panel " + (k + 1) + " (" + panelName(shown, k) + "): " + ComparisonReport.regionsText(
+                        compared[k], DiffRegions.of(compared[k], tolerance, ComparisonReport.REGIONS_LISTED), tolerance));
+            }
         }
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
         for (int k = 0; k < panels.length; k++) {
-            SystematicError systematic = comparison.shares(k).systematic();
+            SystematicError systematic = SystematicError.find(compared[k], tolerance);
             if (systematic != null) {
                 out.println("hint: panel " + (k + 1) + ": " + systematic.hint(panels[k].size()));
             }
         }
+        if (diff != null) {
+            try {
+                PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), tolerance), diff);
+            } catch (IOException e) {
+                err().println("simpview compare: " + e.getMessage());
+                return ExitCode.SCENE_ERROR;
+            }
+            out.println("diff:    " + diff + " (ours | theirs | heat map, each the whole page, their panels on white: "
+                    + "grey identical, blue within " + tolerance + "/255, "
+                    + (flip ? "yellow beyond it but forgiven by FLIP, red above FLIP's threshold)" : "red beyond it)"));
+        }
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** Panel k's (from 0) drawer ("Bresenham") on a page of lines, its scene ("mesh") on a page of polygons. */
+    private static String panelName(Page shown, int k) {
+        return shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : A1Polygons.NAMES.get(k);
     }
 
     /** The rubric file read over the command line's rule, or the command line's rule alone. */

@@ -141,21 +141,31 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     }
 
     private void appendRegions(StringBuilder out) {
+        out.append(regionsText(comparison, regions, tolerance));
+    }
+
+    /**
+     * The patches that differ, as a report lists them: how many pixels in how many patches differ by more than the
+     * tolerance (even with slack, when the comparison has some; with FLIP, above its threshold), then the largest
+     * with their boxes in panel coordinates, one a line; or that none does.
+     */
+    public static String regionsText(Comparison comparison, DiffRegions.Found regions, int tolerance) {
+        boolean flip = comparison.metric() == Comparison.Metric.FLIP;
+        String slack = comparison.deviation() == 0 ? "" : " even with slack";
         List<DiffRegion> largest = regions.largest();
         if (largest.isEmpty()) {
-            out.append(flip() ? "no pixel's FLIP value is above the threshold\n"
-                    : "no pixel differs by more than " + tolerance + "/255" + slackTail(" with slack") + "\n");
-            return;
+            return flip ? "no pixel's FLIP value is above the threshold\n"
+                    : "no pixel differs by more than " + tolerance + "/255" + (slack.isEmpty() ? "" : " with slack") + "\n";
         }
         long pixels = regions.pixels();
-        String what = flip() ? (pixels == 1 ? "has" : "have") + " a FLIP value above the threshold"
-                : (pixels == 1 ? "differs" : "differ") + " by more than " + tolerance + "/255"
-                        + slackTail(" even with slack");
-        out.append(String.format("%s in %s %s%s%n(panel pixels: origin bottom-left, x right, y up):%n",
-                Count.of(pixels, "pixel"), Count.of(regions.count(), "patch", "patches"), what,
+        String what = flip ? (pixels == 1 ? "has" : "have") + " a FLIP value above the threshold"
+                : (pixels == 1 ? "differs" : "differ") + " by more than " + tolerance + "/255" + slack;
+        StringBuilder out = new StringBuilder(String.format("%s in %s %s%s%n(panel pixels: origin bottom-left, x right, "
+                + "y up):%n", Count.of(pixels, "pixel"), Count.of(regions.count(), "patch", "patches"), what,
                 regions.count() == 1 ? "" : "; the largest"));
         for (int k = 0; k < largest.size(); k++) {
             out.append("  ").append(k + 1).append(". ").append(largest.get(k).describe()).append('\n');
         }
+        return out.toString();
     }
 }

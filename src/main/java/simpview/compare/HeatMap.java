@@ -77,6 +77,39 @@ public final class HeatMap {
         return PngCodec.encode(diffWidth(c.size()), c.size(), pixels);
     }
 
+    /**
+     * A page of panels compared one by one (the first assignment's four) as ours | theirs | heat map, each the whole
+     * page at 1:1, white around the panels, with a grey gap of 10 pixels between them: panel k's comparison is drawn
+     * at its place in all three (their picture's panels, not its margins, which are not compared). PNG file bytes.
+     *
+     * @param panels each panel's comparison, in the order of {@code places}
+     * @param places where each panel is in the page, rows down
+     * @param page the page's side in pixels
+     */
+    public static byte[] pageDiffPng(Comparison[] panels, PanelGridComparison.Panel[] places, int page, int tolerance) {
+        int width = diffWidth(page);
+        int[] out = new int[width * page];
+        Arrays.fill(out, 0xFFFFFF);
+        for (int y = 0; y < page; y++) {
+            Arrays.fill(out, y * width + page, y * width + page + GAP, GAP_COLOUR);
+            Arrays.fill(out, y * width + 2 * page + GAP, y * width + 2 * page + 2 * GAP, GAP_COLOUR);
+        }
+        for (int k = 0; k < panels.length; k++) {
+            Comparison c = panels[k];
+            int n = c.size();
+            int[] heat = new int[n * n];
+            fill(c, tolerance, heat);
+            PanelGridComparison.Panel place = places[k];
+            for (int y = 0; y < n; y++) {
+                int row = (place.top() + y) * width + place.left();
+                System.arraycopy(c.ours(), y * n, out, row, n);
+                System.arraycopy(c.theirs(), y * n, out, row + page + GAP, n);
+                System.arraycopy(heat, y * n, out, row + 2 * (page + GAP), n);
+            }
+        }
+        return PngCodec.encode(width, page, out);
+    }
+
     private static void fillDiff(Comparison c, int tolerance, int[] out) {
         int n = c.size();
         int width = diffWidth(n);

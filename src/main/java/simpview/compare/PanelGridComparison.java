@@ -7,87 +7,19 @@ import java.util.List;
 
 /**
  * A picture of a page of several square panels (the first assignment's four
- * 300x300 ones) beside simpview's page, panel by panel. The page is found
- * in the picture by its frames: a place where the one-pixel ring just outside
- * each panel is white while the panel's own outermost pixels are mostly dark
- * (a 750x750 page, or a window capture such as the course's, where the page
- * starts at (1, 31)). Shares are without slack: which pixels a line drawer
- * lights is what is being compared. With {@link Comparison.Metric#BLUR} each
- * panel of both pictures is blurred first ({@link Blur}), so that another
- * valid antialiasing (the handout allows any method for panel 4) is measured
- * by what the eye sees at 1:1. With {@link Comparison.Metric#FLIP} a pixel
- * is within when its FLIP value ({@link Flip}, of the two panels) is at most
- * {@link Comparison#FLIP_THRESHOLD}.
+ * 300x300 ones) found and cut into its panels beside simpview's page, for
+ * comparing panel by panel ({@link Comparison}, without slack: which pixels a
+ * line drawer lights is what is being compared). The page is found in the
+ * picture by its frames: a place where the one-pixel ring just outside each
+ * panel is white while the panel's own outermost pixels are mostly dark (a
+ * 750x750 page, or a window capture such as the course's, where the page
+ * starts at (1, 31)); only the panels and their rings need be in the picture.
+ * A picture without such a place is refused with what it holds instead.
  */
 public final class PanelGridComparison {
 
     /** A panel's top-left pixel and side, in page coordinates (rows down). */
     public record Panel(int left, int top, int size) {
-    }
-
-    /**
-     * One panel's shares, 0 to 1: identical, and within the tolerance in every channel (with FLIP: at most its
-     * threshold); and the mistake that changes the whole panel the same way, or null when none explains it.
-     */
-    public record PanelShares(double identical, double within, SystematicError systematic) {
-    }
-
-    private final String place;
-    private final PanelShares[] shares;
-
-    private PanelGridComparison(String place, PanelShares[] shares) {
-        this.place = place;
-        this.shares = shares;
-    }
-
-    /** Where the page is in the picture ({@link Cut#describe}). */
-    public String place() {
-        return place;
-    }
-
-    /** Panel k's shares, k from 0. */
-    public PanelShares shares(int k) {
-        return shares[k];
-    }
-
-    /** Reads the picture, finds the page in it and compares each panel with simpview's page, pixel for pixel. */
-    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance)
-            throws CompareException {
-        return of(picture, ours, panels, tolerance, Comparison.Metric.EXACT);
-    }
-
-    /** The same, measured by {@code metric}. */
-    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
-            Comparison.Metric metric) throws CompareException {
-        return of(picture, ours, panels, tolerance, metric, Comparison.FLIP_THRESHOLD);
-    }
-
-    /** The same, with FLIP a pixel within at {@code flipThreshold} or less. */
-    public static PanelGridComparison of(Path picture, BufferedImage ours, Panel[] panels, int tolerance,
-            Comparison.Metric metric, double flipThreshold) throws CompareException {
-        Cut cut = cut(picture, ours, panels);
-        PanelShares[] shares = new PanelShares[panels.length];
-        for (int k = 0; k < panels.length; k++) {
-            Panel p = panels[k];
-            int[] a = cut.ours()[k];
-            int[] b = cut.theirs()[k];
-            if (metric == Comparison.Metric.BLUR) {
-                a = Blur.of(a, p.size());
-                b = Blur.of(b, p.size());
-            }
-            long identical = 0;
-            long within = 0;
-            float[] flip = metric == Comparison.Metric.FLIP ? Flip.of(a, b, p.size(), p.size()) : null;
-            for (int i = 0; i < a.length; i++) {
-                int d = Rasters.distance(a[i], b[i]);
-                identical += d == 0 ? 1 : 0;
-                within += (flip == null ? d <= tolerance : flip[i] <= flipThreshold) ? 1 : 0;
-            }
-            double n = (double) p.size() * p.size();
-            shares[k] = new PanelShares(identical / n, within / n,
-                    SystematicError.find(cut.ours()[k], cut.theirs()[k], p.size(), tolerance));
-        }
-        return new PanelGridComparison(cut.describe(), shares);
     }
 
     /**

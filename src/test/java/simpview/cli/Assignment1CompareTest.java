@@ -201,6 +201,55 @@ class Assignment1CompareTest {
     }
 
     /**
+     * A panel that fails lists its largest differing patches in panel coordinates, as the eight pages' compare does;
+     * --diff writes ours | theirs | heat map, each the whole page.
+     */
+    @Test
+    void aFailingPanelListsWhereItDiffersAndDiffWritesTheThreePages() throws Exception {
+        BufferedImage spoiled = Assignment1.render(1, PageContext.defaults());
+        for (int y = 0; y < 40; y++) {
+            for (int x = 0; x < 40; x++) {
+                spoiled.setRGB(A1Layout.left(2) + 100 + x, A1Layout.top(2) + 100 + y, 0xFF00FF);
+            }
+        }
+        Path picture = dir.resolve("spoiled.png");
+        ImageIO.write(spoiled, "png", picture.toFile());
+        Path diff = dir.resolve("diff.png");
+        CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--diff", diff.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.out().contains("2 Bresenham                              98.22 %      98.22 %\n"
+                + "3 alternating DDA / Bresenham           100.00 %     100.00 %\n"
+                + "4 antialiased                           100.00 %     100.00 %\n"
+                + "panel 2 (Bresenham): 1,600 pixels in 1 patch differ by more than 8/255\n"
+                + "(panel pixels: origin bottom-left, x right, y up):\n"
+                + "  1. x 100-139, y 160-199 (40x40): 1,600 pixels\n"
+                + "FAIL: every panel must reach 99.00 % within 8/255 (no slack)\n"), run.out());
+        assertTrue(run.out().contains("diff:    " + diff + " (ours | theirs | heat map, each the whole page, their panels "
+                + "on white: grey identical, blue within 8/255, red beyond it)"), run.out());
+        BufferedImage written = ImageIO.read(diff.toFile());
+        assertEquals(3 * 750 + 2 * 10, written.getWidth());
+        assertEquals(750, written.getHeight());
+        int x = A1Layout.left(2) + 120;
+        int y = A1Layout.top(2) + 120;
+        assertEquals(Assignment1.render(1, PageContext.defaults()).getRGB(x, y) & 0xFFFFFF, written.getRGB(x, y) & 0xFFFFFF,
+                "simpview's page");
+        assertEquals(0xFF00FF, written.getRGB(760 + x, y) & 0xFFFFFF, "their page");
+        int heat = written.getRGB(2 * 760 + x, y);
+        assertTrue((heat >> 16 & 0xFF) >= 128 && (heat & 0xFFFF) == 0, "red in the heat map: " + Integer.toHexString(heat));
+        assertEquals(0xFFFFFF, written.getRGB(2 * 760 + 10, 10) & 0xFFFFFF, "the heat map's page is white around its panels");
+        assertEquals(0x808080, written.getRGB(755, 10) & 0xFFFFFF, "a grey gap");
+
+        CliRun passing = CliRun.of("compare", CourseFiles.require("reference/images/a1/page2.png").toString(),
+                "--assignment", "1", "--page", "2");
+        assertFalse(passing.out().contains("patch"), "a page whose panels all pass lists no patches: " + passing.out());
+        CliRun jpeg = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--diff", "d.jpg");
+        assertEquals(ExitCode.USAGE_ERROR, jpeg.exitCode());
+        CliRun itself = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "1", "--diff",
+                picture.toString());
+        assertEquals(ExitCode.USAGE_ERROR, itself.exitCode(), "the picture compared is kept: " + itself.err());
+    }
+
+    /**
      * Without --assignment 1, a first-assignment page is not compared with one of the eight pages (whose 650x650
      * panel its two panels and gutter frame): it is told to add --assignment 1. So is --a1-rule alone.
      */
