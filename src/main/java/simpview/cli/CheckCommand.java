@@ -58,8 +58,9 @@ public final class CheckCommand implements Callable<Integer> {
 
     @Option(names = "--pages", paramLabel = "RANGE", converter = CompareOptions.PageRangeConverter.class,
             description = "the pages pictures are matched to by name, each asked for (default: 1-8, asked for only when "
-                    + "something in DIR is named like one of them; with --assignment 1, its pages 1 to 5, default 1-5, "
-                    + "each asked for)")
+                    + "something in DIR is named like one of them and is not a first-assignment page; a folder of "
+                    + "first-assignment pages alone is asked for those, 1 to 5, as with --assignment 1; with "
+                    + "--assignment 1, its pages 1 to 5, default 1-5, each asked for)")
     private PageRange pages;
 
     @Option(names = "--assignment", paramLabel = "A",

@@ -425,13 +425,36 @@ public final class CompareBatch {
                     + "eight pages, and each of those is asked for (a MISSING row where no picture is). To grade the "
                     + "first assignment, give --assignment 1: its --pages are its pages 1 to 5 (default: 1-5).");
         }
-        // Asked for: the given targets, and every one some picture was matched to (so a class's batch
-        // shows who lacks a page that others handed in).
+        // A picture named like one of the eight pages that holds a first-assignment page was compared as that: it
+        // names none of the eight pages.
+        Set<String> firstAssignmentPictures = rows.stream().filter(this::isFirstAssignments).map(BatchRow::file)
+                .collect(Collectors.toSet());
+        List<Match> matchedAsNamed = new ArrayList<>();
+        for (int i = 0; i < pictures.size(); i++) {
+            if (!firstAssignmentPictures.contains(dir.relativize(pictures.get(i)).toString())) {
+                matchedAsNamed.add(matches.get(i));
+            }
+        }
         List<Match> unreadMatches = listing.unreadable().stream()
                 .map(file -> matcher.apply(dir.relativize(file).toString())).toList();
+        boolean firstAssignmentFolder = pagesIfHandedIn && firstAssignmentOnly(rows)
+                && unreadMatches.stream().allMatch(m -> m.target() == null
+                        || m.target().isPage() && m.target().page() <= Assignment1.COUNT);
+        if (firstAssignmentFolder) {
+            // as --assignment 1 checks it: page2.webp is named like the first assignment's page 2
+            unreadMatches = listing.unreadable().stream()
+                    .map(file -> firstAssignmentMatch(fileName(dir.relativize(file).toString()), null, null)).toList();
+            err.println(says + "every picture in " + dir + " is a page of the first assignment, so its pages 1 to "
+                    + Assignment1.COUNT + " are asked for, as --assignment 1 asks for them, and not the eight pages "
+                    + "(--pages RANGE asks for those)");
+        }
         Map<String, List<String>> unreadable = unreadableByLabel(dir, listing.unreadable(), unreadMatches);
-        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(askedFor(wanted, matches, unreadMatches));
-        for (Match match : matches) {
+        // Asked for: the given targets, and every one some picture was matched to (so a class's batch
+        // shows who lacks a page that others handed in).
+        LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(firstAssignmentFolder
+                ? wanted.stream().filter(t -> !t.isPage()).toList()
+                : askedFor(wanted, matchedAsNamed, unreadMatches));
+        for (Match match : matchedAsNamed) {
             if (match.target() != null) {
                 all.add(match.target());
             }
@@ -442,6 +465,9 @@ public final class CompareBatch {
             asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of())));
         }
         Set<Integer> firstPages = new TreeSet<>(firstAssignmentWanted);
+        if (firstAssignmentFolder) {
+            IntStream.rangeClosed(1, Assignment1.COUNT).forEach(firstPages::add);
+        }
         firstPages.addAll(firstAssignment.keySet());
         for (int page : firstPages) {
             String label = firstAssignmentLabel(page);
@@ -919,7 +945,8 @@ public final class CompareBatch {
 
     /**
      * The targets asked for of those given: all of them; or, when the pages are asked for only if handed in,
-     * the pages only when some picture (or a file in a format simpview does not read) is named like one.
+     * the pages only when some picture compared as the page it names ({@code matches}), or a file in a format
+     * simpview does not read, is named like one.
      */
     private List<CompareTarget> askedFor(List<CompareTarget> given, List<Match> matches, List<Match> unread) {
         boolean handedIn = Stream.concat(matches.stream(), unread.stream())

@@ -147,7 +147,9 @@ class FirstAssignmentBatchTest {
                 + " \"pages\": [{\"match\": \"a1-*-panel4\", \"metric\": \"flip\", \"deviation\": 0}]}");
         CliRun exact = CliRun.of("check", subs.toString(), "--min", "99.5");
         assertTrue(line(exact.out(), "panel 4 (antialiased)").matches(".*FAIL +99\\.02 %.*"), exact.out());
-        CliRun flip = CliRun.of("check", subs.toString(), "--rubric", rubric.toString(), "--a1-rule", "course");
+        // page 1 alone asked for: without --pages, the folder of first-assignment pages would be asked for all five
+        CliRun flip = CliRun.of("check", subs.toString(), "--rubric", rubric.toString(), "--a1-rule", "course",
+                "--assignment", "1", "--pages", "1");
         // the course's antialiasing, FLIP forgives: 99.94 % of the panel at most 0.13
         assertTrue(line(flip.out(), "panel 4 (antialiased)").matches(".*PASS +99\\.94 %.*"), flip.out());
         // the other panels stay exact and without slack (FLIP would give the DDA panel 99.81 %)
@@ -335,15 +337,52 @@ class FirstAssignmentBatchTest {
         assertFalse(mixed.err().contains("note:"), "a page of the eight is handed in: " + mixed.err());
     }
 
+    /**
+     * check of a folder whose every picture holds a first-assignment page (named page1.png ... as render names the
+     * eight pages') asks for the first assignment's pages 1 to 5, as --assignment 1 does, not for the eight pages.
+     */
+    @Test
+    void checkOfAFolderOfFirstAssignmentPagesAsksForThoseAsAssignment1Does() throws Exception {
+        Path mine = dir.resolve("mine");
+        for (int n = 1; n <= Assignment1.COUNT; n++) {
+            png(mine.resolve("page" + n + ".png"), page(n));
+        }
+        CliRun check = CliRun.of("check", mine.toString());
+        assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
+        assertFalse(check.out().contains("no picture of"), check.out());
+        assertTrue(check.err().contains("simpview check: every picture in " + mine + " is a page of the first "
+                + "assignment, so its pages 1 to 5 are asked for, as --assignment 1 asks for them, and not the eight "
+                + "pages (--pages RANGE asks for those)\n"), check.err());
+        Files.delete(mine.resolve("page5.png"));
+        Files.writeString(mine.resolve("page5.webp"), "not read");
+        CliRun four = CliRun.of("check", mine.toString());
+        assertEquals(ExitCode.SCENE_ERROR, four.exitCode(), four.out());
+        assertTrue(four.out().contains("\nno picture of A1 page 5 (seed 361) found: page5.webp is named like it, but is "
+                + "in a format simpview does not read"), four.out());
+        assertEquals(1, four.out().split("no picture of", -1).length - 1, "only A1 page 5 is missing: " + four.out());
+
+        // beside a scene of the folder and its picture, a first-assignment page names none of the eight pages either
+        Path mixed = dir.resolve("mixed");
+        png(mixed.resolve("page1.png"), page(1));
+        Path scene = Files.writeString(mixed.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out",
+                mixed.resolve("tri.png").toString()).exitCode());
+        CliRun both = CliRun.of("check", mixed.toString());
+        assertEquals(ExitCode.OK, both.exitCode(), both.out() + both.err());
+        assertFalse(both.out().contains("no picture of"), both.out());
+        assertFalse(both.err().contains("every picture in"), "not every picture is a first-assignment page: " + both.err());
+    }
+
     @Test
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
-        png(subs.resolve("a1-page1.png"), page(1));
-        png(subs.resolve("a1-page2.png"), page(2));
-        // without --pages a folder of the first assignment's pages is not asked for the eight pages
+        for (int n = 1; n <= Assignment1.COUNT; n++) {
+            png(subs.resolve("a1-page" + n + ".png"), page(n));
+        }
+        // without --pages a folder of the first assignment's pages is asked for its five pages, not the eight pages
         CliRun check = CliRun.of("check", subs.toString());
         assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
-        assertTrue(check.out().endsWith("8 of 8 pages and panels (2 pictures) pass\n"), check.out());
+        assertTrue(check.out().endsWith("20 of 20 pages and panels (5 pictures) pass\n"), check.out());
         png(subs.resolve("a1-page7.png"), page(2));
         CliRun seven = CliRun.of("check", subs.toString());
         assertTrue(seven.err().contains("a1-page7.png: SKIPPED: the first assignment has pages 1 to 5, not 7"), seven.err());

@@ -129,10 +129,12 @@ class SubmissionContentsTest {
         PageContext context = PageContext.defaults();
         ImageIO.write(Assignment1.render(2, context), "png", Files.createDirectories(first).resolve("a1-page2.png").toFile());
         CliRun check = CliRun.of("check", first.toString());
-        assertEquals(ExitCode.OK, check.exitCode(), "a folder of the first assignment's pages: " + check.out());
-        assertFalse(check.out().contains("no picture of"), check.out());
-        assertTrue(CheckCommand.checkFolder(first, context).endsWith("4 of 4 pages and panels (1 picture) pass\n"),
-                "a folder dropped on the window, the same");
+        // a folder of the first assignment's pages is asked for its five pages, as --assignment 1 asks, not the eight
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), "a folder of the first assignment's pages: " + check.out());
+        assertTrue(check.out().contains("no picture of A1 page 1 found"), check.out());
+        assertFalse(check.out().contains("no picture of page "), check.out());
+        assertTrue(CheckCommand.checkFolder(first, context).endsWith("4 of 4 pages and panels (1 picture) pass; 4 pages "
+                + "without a picture\n"), "a folder dropped on the window, the same");
 
         Path scenes = dir.resolve("scenes");
         Files.createDirectories(scenes);
