@@ -35,7 +35,15 @@ public final class BatchTable {
     public static String markdown(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, int tolerance,
             double minimum, int deviation, Comparison.Metric metric, double flipThreshold) {
         StringBuilder out = new StringBuilder();
-        String slack = deviation == 0 ? "no slack" : deviation == 1 ? "one pixel of slack" : deviation + " pixels of slack";
+        // The first assignment's panels are judged by the defaults without slack: a table of nothing else says so,
+        // and a table of both says which are which.
+        boolean panelsWithout = deviation != 0
+                && rows.stream().anyMatch(r -> judgedByDefaults(r) && r.rule().deviation() == 0);
+        boolean othersWith = rows.stream().anyMatch(r -> judgedByDefaults(r) && r.rule().deviation() == deviation);
+        int judgedDeviation = panelsWithout && !othersWith ? 0 : deviation;
+        String slack = judgedDeviation == 0 ? "no slack"
+                : (judgedDeviation == 1 ? "one pixel of slack" : judgedDeviation + " pixels of slack")
+                        + (panelsWithout ? " (the first assignment's panels: no slack)" : "");
         String judged = metric == Comparison.Metric.FLIP
                 ? String.format(java.util.Locale.ROOT, "FLIP at most %.3f (the shares are colour distances)",
                         flipThreshold)
@@ -67,6 +75,11 @@ public final class BatchTable {
         }
         out.append('\n').append(summary(rows, missing)).append('\n');
         return out.toString();
+    }
+
+    /** Whether a row was compared under the command line's own rule, not one a rubric names. */
+    private static boolean judgedByDefaults(BatchRow row) {
+        return row.compared() && row.rule() != null && "*".equals(row.rule().match());
     }
 
     public static String csv(List<BatchRow> rows) {

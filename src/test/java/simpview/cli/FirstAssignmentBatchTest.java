@@ -373,6 +373,26 @@ class FirstAssignmentBatchTest {
         assertFalse(both.err().contains("every picture in"), "not every picture is a first-assignment page: " + both.err());
     }
 
+    /** The table's heading says the slack the rows were judged with: none for the first assignment's panels. */
+    @Test
+    void theTablesHeadingSaysThePanelsAreJudgedWithoutSlack() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("a1-page1.png"), page(1));
+        Path out = dir.resolve("out");
+        CliRun.of("check", mine.toString(), "--out-dir", out.toString());
+        assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the result "
+                + "is on the judged share: within 8/255 with no slack, 99.00 % needed.\n"),
+                Files.readString(out.resolve("compare.md")));
+        png(mine.resolve("page2.png"), new simpview.pages.PageRenderer().renderImage(2, PageContext.defaults()));
+        CliRun both = CliRun.of("compare", "--dir", mine.toString(), "--pages", "2", "--out-dir", out.toString());
+        assertTrue(both.out().startsWith("Shares of panel pixels in percent; the result is on the judged share: within "
+                + "8/255 with one pixel of slack (the first assignment's panels: no slack), 99.00 % needed.\n"), both.out());
+        Files.delete(mine.resolve("a1-page1.png"));
+        CliRun eight = CliRun.of("compare", "--dir", mine.toString(), "--pages", "2", "--out-dir", out.toString());
+        assertTrue(eight.out().startsWith("Shares of panel pixels in percent; the result is on the judged share: within "
+                + "8/255 with one pixel of slack, 99.00 % needed.\n"), eight.out());
+    }
+
     @Test
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
