@@ -86,7 +86,7 @@ final class InspectCommand implements Callable<Integer> {
     @Mixin
     private A1RuleOption a1Rule;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages (pages 4 to 8 do not use it)")
+    @Option(names = "--seed", paramLabel = "S", description = PageDrawing.SEED_HELP + " (default: 361)")
     private Long seed;
 
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")

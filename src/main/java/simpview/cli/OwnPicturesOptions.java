@@ -22,7 +22,7 @@ final class OwnPicturesOptions {
     @Spec(Spec.Target.MIXEE)
     private CommandSpec spec;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    @Option(names = "--seed", paramLabel = "S", description = PageDrawing.SEED_HELP + " (default: 361)")
     private Long seed;
 
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")

@@ -20,6 +20,9 @@ import simpview.surface.Rgb;
  */
 public final class PageDrawing {
 
+    /** What --seed is, in every command's help: the pages it changes, of both assignments. */
+    static final String SEED_HELP = "seed of the random pages: 1 to 3 of the eight, 3 to 5 of the first assignment's";
+
     private final PageRenderer renderer;
     private final SceneMonitor monitor;
     /** The files of this run's scenes: each .simp or .obj file read once however many scenes draw it. */

@@ -91,7 +91,7 @@ public final class RenderCommand implements Callable<Integer> {
             description = "whose pages --page and --all mean: 1 (the first assignment's five pages) or 2 (the eight pages; default)")
     private Integer assignment;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: 361)")
+    @Option(names = "--seed", paramLabel = "S", description = PageDrawing.SEED_HELP + " (default: 361)")
     private Long seed;
 
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")
@@ -183,7 +183,8 @@ public final class RenderCommand implements Callable<Integer> {
         // name; a contact sheet writes --out.
         boolean oneFile = what.page != null || what.scene != null;
         if (what.all) {
-            usage(out == null, "--all writes eight files: use --out-dir D, not --out");
+            usage(out == null, (firstAssignment() ? "--all writes five files (a1-page1.png ... a1-page5.png)"
+                    : "--all writes eight files") + ": use --out-dir D, not --out");
             usage(outDir != null, "--all needs --out-dir D");
         } else if (oneFile) {
             usage(out != null || outDir != null || primitives != null, "missing --out F.png (or --out-dir D)");

@@ -50,7 +50,7 @@ public final class SimpviewCommand implements Callable<Integer> {
     @Mixin
     private A1RuleOption a1Rule;
 
-    @Option(names = "--seed", paramLabel = "S", description = "seed of the random pages 1 to 3 (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seed", paramLabel = "S", description = PageDrawing.SEED_HELP + " (default: ${DEFAULT-VALUE})")
     private long seed = PageContext.DEFAULT_SEED;
 
     @Option(names = "--simp-dir", paramLabel = "D", description = "folder holding the course's page6.simp to page8.simp (default: the scene folder below)")

@@ -50,6 +50,17 @@ class Assignment1CommandLineTest {
         assertEquals(ExitCode.USAGE_ERROR, CliRun.of("render", "--assignment", "3", "--page", "1", "--out", "x.png").exitCode());
     }
 
+    /** Every command that draws the pages says in its help which pages --seed changes, the first assignment's too. */
+    @Test
+    void theSeedsHelpNamesTheFirstAssignmentsSeededPages() {
+        for (String[] help : new String[][] {{"--help"}, {"render", "--help"}, {"compare", "--help"}, {"check", "--help"},
+            {"inspect", "--help"}}) {
+            String text = CliRun.of(help).out().replaceAll("\\s+", " ");
+            assertTrue(text.contains("--seed=S seed of the random pages: 1 to 3 of the eight, 3 to 5 of the first "
+                    + "assignment's (default: 361)"), String.join(" ", help) + ": " + text);
+        }
+    }
+
     /** --page alone stays the second assignment's page. */
     @Test
     void pageAloneIsStillTheSecondAssignments() throws Exception {

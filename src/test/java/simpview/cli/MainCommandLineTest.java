@@ -255,6 +255,8 @@ public class MainCommandLineTest {
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "render --all --out x.png | --all writes eight files: use --out-dir D, not --out",
+        "render --assignment 1 --all --out x.png | --all writes five files (a1-page1.png ... a1-page5.png): use --out-dir "
+                + "D, not --out",
         "render --all | --all needs --out-dir D",
         "render --page 2 | missing --out F.png (or --out-dir D)",
         "render --scene a.simp --out x.png --out-dir d | give --out F.png or --out-dir D, not both",
