@@ -124,8 +124,16 @@ public final class CheckCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--flip-threshold goes with --metric flip (or a rubric whose "
                     + "rules use it)");
         }
-        Rubric judged;
         Path rules = rubric != null ? rubric : Files.isRegularFile(dir.resolve(FOLDER_RUBRIC)) ? dir.resolve(FOLDER_RUBRIC) : null;
+        if (firstAssignment()) {
+            pictures.checkFirstAssignment();
+            if (rules == null && spec.commandLine().getParseResult().hasMatchedOption("--deviation")) {
+                throw new ParameterException(spec.commandLine(), "--deviation does not go with --assignment 1: the "
+                        + "first assignment's panels are judged without slack (which pixels a line drawer lights is "
+                        + "the point); a rubric rule may give them one (\"deviation\")");
+            }
+        }
+        Rubric judged;
         try {
             judged = CompareCommand.rubricOf(rules, RubricRule.defaults(tolerance, min, deviation, metric,
                     flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold));

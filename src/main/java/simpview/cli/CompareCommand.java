@@ -236,6 +236,14 @@ public final class CompareCommand implements Callable<Integer> {
         usage(flipThreshold == null || metric == Comparison.Metric.FLIP || rubric != null,
                 "--flip-threshold goes with --metric flip (or a rubric whose rules use it)");
         pictures.check(scene);
+        threads.count(); // a count out of range is a usage error whether or not anything is drawn in bands
+        if (first) {
+            pictures.checkFirstAssignment();
+            usage(rubric != null || !spec.commandLine().getParseResult().hasMatchedOption("--deviation"),
+                    "--deviation does not go with --assignment 1: the first assignment's panels are judged without "
+                            + "slack (which pixels a line drawer lights is the point)" + (batch ? "; a rubric rule may "
+                            + "give them one (\"deviation\")" : ""));
+        }
     }
 
     /** Whether the first assignment's pages are compared (--assignment 1), not the eight pages or scenes. */

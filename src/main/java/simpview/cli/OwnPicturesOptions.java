@@ -53,6 +53,14 @@ final class OwnPicturesOptions {
         a1Rule.check();
     }
 
+    /** Usage errors for options that do nothing to the first assignment's pages alone (--assignment 1). */
+    void checkFirstAssignment() {
+        if (simpDir != null) {
+            throw new ParameterException(spec.commandLine(), "--simp-dir goes with assignment 2's pages: the first "
+                    + "assignment's read no files");
+        }
+    }
+
     /** Whether --a1-rule was given. */
     boolean a1RuleGiven() {
         return a1Rule.given();

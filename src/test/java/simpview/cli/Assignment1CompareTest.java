@@ -296,6 +296,49 @@ class Assignment1CompareTest {
         assertEquals(ExitCode.OK, CliRun.of("compare", eight.toString(), "--page", "1").exitCode());
     }
 
+    /**
+     * Options that other commands refuse, or that do nothing to the first assignment's pages, are usage errors with
+     * --assignment 1, as render's rules have them.
+     */
+    @Test
+    void optionsThatDoNothingToTheFirstAssignmentAreUsageErrors() throws Exception {
+        Path page = dir.resolve("a1-page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", page.toString()).exitCode());
+        Path folder = java.nio.file.Files.createDirectories(dir.resolve("mine"));
+        java.nio.file.Files.copy(page, folder.resolve("a1-page1.png"));
+        String one = page.toString();
+        String out = dir.resolve("report").toString();
+        Object[][] refused = {
+            {new String[] {"compare", one, "--assignment", "1", "--page", "1", "--threads", "0"}, "--threads must be 1 to 64, not 0"},
+            {new String[] {"compare", one, "--assignment", "1", "--page", "1", "--threads", "999"}, "--threads must be 1 to 64, not 999"},
+            {new String[] {"compare", one, "--assignment", "1", "--page", "1", "--simp-dir", dir.toString()},
+                "--simp-dir goes with assignment 2's pages: the first assignment's read no files"},
+            {new String[] {"compare", one, "--assignment", "1", "--page", "1", "--deviation", "2"},
+                "--deviation does not go with --assignment 1: the first assignment's panels are judged without slack"},
+            {new String[] {"compare", "--dir", folder.toString(), "--assignment", "1", "--out-dir", out, "--simp-dir",
+                dir.toString()}, "--simp-dir goes with assignment 2's pages"},
+            {new String[] {"compare", "--dir", folder.toString(), "--assignment", "1", "--out-dir", out, "--deviation", "0"},
+                "a rubric rule may give them one (\"deviation\")"},
+            {new String[] {"check", folder.toString(), "--assignment", "1", "--simp-dir", dir.toString()},
+                "--simp-dir goes with assignment 2's pages"},
+            {new String[] {"check", folder.toString(), "--assignment", "1", "--deviation", "1"},
+                "--deviation does not go with --assignment 1"}};
+        for (Object[] each : refused) {
+            String[] args = (String[]) each[0];
+            CliRun run = CliRun.of(args);
+            assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), String.join(" ", args) + "\n" + run.err());
+            assertTrue(run.err().contains((String) each[1]), String.join(" ", args) + "\n" + run.err());
+            assertFalse(run.showsStackTrace(), run.err());
+        }
+        assertEquals(ExitCode.OK, CliRun.of("compare", one, "--assignment", "1", "--page", "1", "--threads", "2").exitCode(),
+                "a count in range is taken, as render takes it");
+        Path rubric = java.nio.file.Files.writeString(dir.resolve("compare.json"),
+                "{\"pages\": [{\"match\": \"a1-*-panel4\", \"metric\": \"flip\"}]}");
+        CliRun ruled = CliRun.of("compare", "--dir", folder.toString(), "--assignment", "1", "--pages", "1", "--out-dir", out,
+                "--deviation", "0", "--rubric", rubric.toString());
+        assertEquals(ExitCode.OK, ruled.exitCode(), "a rubric's rules take their deviation from it: " + ruled.err());
+    }
+
     /** A batch of the eight pages does not take a1-page2.png for page 2: it compares it as the first assignment's. */
     @Test
     void aBatchOfTheEightPagesComparesAFirstAssignmentPageAsOne() throws Exception {
