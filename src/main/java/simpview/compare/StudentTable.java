@@ -12,7 +12,8 @@ import java.util.Map;
  * worst region (the largest patch that differs even with slack), in aligned
  * plain-text columns; then the pictures that do not count (another picture of
  * their page does) and why, the pages asked for that no picture matched, and
- * one line of counts, of the pictures that count.
+ * one line of counts, of the pictures that count (of the first assignment's
+ * pages, of their panels).
  */
 public final class StudentTable {
 
@@ -67,17 +68,33 @@ public final class StudentTable {
         }
         List<BatchRow> counted = rows.stream()
                 .filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
-        long pass = counted.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
-        long compared = counted.size();
-        long files = counted.stream().map(BatchRow::file).distinct().count();
-        // a page of the first assignment is a row per panel
-        // "1 of 1 pictures pass": a tally, in the plural whatever its count
-        String what = files == compared ? "pictures" : "pages and panels (" + Count.of(files, "picture") + ")";
-        out.append(String.format(Locale.ROOT, "%d of %d %s pass%s%s%s%n", pass, compared, what,
+        // a page of the first assignment is a row per panel: its panels are counted as panels, other pictures whole
+        List<BatchRow> panels = counted.stream().filter(StudentTable::isPanel).toList();
+        List<BatchRow> pictures = counted.stream().filter(r -> !isPanel(r)).toList();
+        List<String> tallies = new ArrayList<>();
+        if (!pictures.isEmpty() || panels.isEmpty()) {
+            // "1 of 1 pictures pass": a tally, in the plural whatever its count
+            tallies.add(passing(pictures) + " of " + pictures.size() + " pictures pass");
+        }
+        if (!panels.isEmpty()) {
+            tallies.add(passing(panels) + " of " + panels.size() + " panels pass ("
+                    + Count.of(panels.stream().map(BatchRow::file).distinct().count(), "page")
+                    + " of the first assignment)");
+        }
+        out.append(String.format(Locale.ROOT, "%s%s%s%s%n", String.join("; ", tallies),
                 notCounted.isEmpty() ? "" : "; " + Count.of(notCounted.size(), "picture") + " not counted",
                 skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " matched no page",
                 missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " without a picture"));
         return out.toString();
+    }
+
+    /** Whether a row is one panel of a page compared panel by panel (the first assignment's), not a whole picture. */
+    private static boolean isPanel(BatchRow row) {
+        return row.compared() && row.size() != Comparison.N;
+    }
+
+    private static long passing(List<BatchRow> rows) {
+        return rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
     }
 
     private static String pad(String cell, int width, boolean right) {

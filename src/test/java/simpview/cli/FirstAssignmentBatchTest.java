@@ -238,7 +238,8 @@ class FirstAssignmentBatchTest {
             assertTrue(check.out().contains("\nno picture of " + lacking + " found (name it like a1-page"),
                     "pages 1 to 5 asked for: " + check.out());
         }
-        assertTrue(check.out().endsWith("8 of 8 pages and panels (2 pictures) pass; 3 pages without a picture\n"),
+        assertTrue(check.out().endsWith("8 of 8 panels pass (2 pages of the first assignment); 3 pages without a "
+                + "picture\n"),
                 check.out());
         assertEquals(ExitCode.OK, CliRun.of("check", subs.resolve("bob").toString(), "--assignment", "1", "--pages", "1,3",
                 "--seed", "7").exitCode());
@@ -370,6 +371,8 @@ class FirstAssignmentBatchTest {
         CliRun both = CliRun.of("check", mixed.toString());
         assertEquals(ExitCode.OK, both.exitCode(), both.out() + both.err());
         assertFalse(both.out().contains("no picture of"), both.out());
+        assertTrue(both.out().endsWith("\n1 of 1 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"),
+                "the pictures and the panels counted each as what they are: " + both.out());
         assertFalse(both.err().contains("every picture in"), "not every picture is a first-assignment page: " + both.err());
     }
 
@@ -402,7 +405,7 @@ class FirstAssignmentBatchTest {
         // without --pages a folder of the first assignment's pages is asked for its five pages, not the eight pages
         CliRun check = CliRun.of("check", subs.toString());
         assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
-        assertTrue(check.out().endsWith("20 of 20 pages and panels (5 pictures) pass\n"), check.out());
+        assertTrue(check.out().endsWith("20 of 20 panels pass (5 pages of the first assignment)\n"), check.out());
         png(subs.resolve("a1-page7.png"), page(2));
         CliRun seven = CliRun.of("check", subs.toString());
         assertTrue(seven.err().contains("a1-page7.png: SKIPPED: the first assignment has pages 1 to 5, not 7"), seven.err());
