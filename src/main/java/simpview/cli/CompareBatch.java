@@ -1,7 +1,5 @@
 package simpview.cli;
 
-import simpview.compare.PngFiles;
-
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -45,21 +43,23 @@ import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
 import simpview.compare.OnePerPage;
 import simpview.compare.OutputFiles;
+import simpview.compare.PanelGridComparison;
+import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
+import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
-import simpview.compare.PanelGridComparison;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
-import simpview.pages.ScenePage;
 import simpview.pages.SceneList;
+import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 
 /**
@@ -785,7 +785,7 @@ public final class CompareBatch {
     private static String progress(BatchRow row) {
         return switch (row.result()) {
             case PASS, FAIL -> row.result() + " " + Percent.of(row.verdict())
-                    + (row.systematic() == null ? "" : "; looks " + row.systematic().brief());
+                    + (row.panelHint() == null ? "" : "; looks " + row.panelHint().brief());
             case ERROR, SKIPPED -> row.result() + ": " + row.note().lines().findFirst().orElse("");
         };
     }
@@ -897,9 +897,11 @@ public final class CompareBatch {
                     firstAssignmentPageRule(page)));
         }
         List<BatchRow> rows = new ArrayList<>();
+        List<String> names = Assignment1.page(page).panelNames();
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);
             Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
+            PanelHint hint = PanelHint.of(cut.ours(), cut.theirs(), k, A1Layout.PANEL, rule.tolerance(), names);
             String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
                     + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
                     + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page"
@@ -908,16 +910,16 @@ public final class CompareBatch {
             boolean passes = rule.passes(comparison);
             String label = firstAssignmentLabel(page, k);
             if (!diffs.writes(passes)) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint));
                 continue;
             }
             String diff = diffs.names().of(relative, k);
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint));
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
-                        DIFF_NOT_WRITTEN + e.getMessage()));
+                        DIFF_NOT_WRITTEN + e.getMessage(), hint));
             }
         }
         return rows;

@@ -22,17 +22,15 @@ import simpview.compare.ComparisonReport;
 import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
+import simpview.compare.PanelHint;
 import simpview.compare.Picture;
 import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
-import simpview.compare.SystematicError;
-import simpview.pages.PageContext;
-import simpview.pages.A1Polygons;
+import simpview.pages.A1Page;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
-import simpview.pages.LineTestPage;
-import simpview.pages.Page;
+import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.DrawingThreads;
@@ -313,7 +311,7 @@ public final class CompareCommand implements Callable<Integer> {
     private int compareAssignment1() {
         PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
         PageContext context = context();
-        Page shown = Assignment1.page(page);
+        A1Page shown = Assignment1.page(page);
         BufferedImage ours = Assignment1.render(page, context);
         PanelGridComparison.Cut cut;
         try {
@@ -360,10 +358,17 @@ public final class CompareCommand implements Callable<Integer> {
         }
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
+        int[][] ourPanels = new int[panels.length][];
+        int[][] theirPanels = new int[panels.length][];
         for (int k = 0; k < panels.length; k++) {
-            SystematicError systematic = SystematicError.find(compared[k], tolerance);
-            if (systematic != null) {
-                out.println("hint: panel " + (k + 1) + ": " + systematic.hint(panels[k].size()));
+            ourPanels[k] = compared[k].ours();
+            theirPanels[k] = compared[k].theirs();
+        }
+        for (int k = 1; k <= panels.length; k++) {
+            PanelHint hint = PanelHint.of(ourPanels, theirPanels, k, panels[k - 1].size(), tolerance,
+                    shown.panelNames());
+            if (hint != null) {
+                out.println("hint: panel " + k + ": " + hint.hint(panels[k - 1].size()));
             }
         }
         if (diff != null) {
@@ -381,8 +386,8 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     /** Panel k's (from 0) drawer ("Bresenham") on a page of lines, its scene ("mesh") on a page of polygons. */
-    private static String panelName(Page shown, int k) {
-        return shown instanceof LineTestPage ? LineTestPage.DRAWERS[k] : A1Polygons.NAMES.get(k);
+    private static String panelName(A1Page shown, int k) {
+        return shown.panelNames().get(k);
     }
 
     /** The rubric file read over the command line's rule, or the command line's rule alone. */

@@ -24,11 +24,11 @@ import java.util.List;
  * @param notCounted "" when the row counts; else why not: which other picture of its page counts in its
  *     submission, and why that one ({@link OnePerPage}). It is compared and listed all the same, but scores
  *     nothing and is worth nothing.
- * @param systematic the mistake that changes its whole panel the same way, or null when none explains it
+ * @param panelHint what its whole panel looks like when one mistake explains it, or null
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
-        List<DiffRegion> regions, String alternate, int size, String notCounted, SystematicError systematic) {
+        List<DiffRegion> regions, String alternate, int size, String notCounted, PanelHint panelHint) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -49,15 +49,15 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     /**
      * One panel of a page of several (the first assignment's four), compared under {@code rule}: no margins of
-     * its own (the page was found by the white rings around its panels).
+     * its own (the page was found by the white rings around its panels); {@code hint} what the whole panel looks
+     * like ({@link PanelHint#of}), or null.
      */
     public static BatchRow panel(String file, String target, Comparison comparison, RubricRule rule, double score,
-            String diff, String note) {
+            String diff, String note, PanelHint hint) {
         DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
                 comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
-                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "",
-                SystematicError.find(comparison, rule.tolerance()));
+                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "", hint);
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -77,7 +77,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size, notCounted, systematic);
+                regions, alternate, size, notCounted, panelHint);
     }
 
     /**
@@ -89,7 +89,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
                 rule.flipThreshold());
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
-                regions, alternate, size, why, systematic);
+                regions, alternate, size, why, panelHint);
     }
 
     /**
@@ -113,8 +113,8 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
      */
     public String remarks() {
         String remarks = counts() ? note : "not counted: " + notCounted + (note.isEmpty() ? "" : "; " + note);
-        return systematic == null ? remarks : remarks + (remarks.isEmpty() ? "" : "; ") + "looks "
-                + systematic.brief();
+        return panelHint == null ? remarks : remarks + (remarks.isEmpty() ? "" : "; ") + "looks "
+                + panelHint.brief();
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

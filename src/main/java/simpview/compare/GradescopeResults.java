@@ -121,8 +121,8 @@ public final class GradescopeResults {
                 out.append("  ").append(region.describe()).append('\n');
             }
         }
-        if (row.systematic() != null) {
-            out.append("hint: ").append(row.systematic().hint(row.size())).append('\n');
+        if (row.panelHint() != null) {
+            out.append("hint: ").append(row.panelHint().hint(row.size())).append('\n');
         }
         // a panel of the first assignment's pages has no margins of its own
         out.append(row.margins().isEmpty() ? row.note() : "margins: " + row.margins());

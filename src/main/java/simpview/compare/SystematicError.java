@@ -41,7 +41,7 @@ import java.util.Locale;
  * @param tolerance the tolerance, in 1/255 steps
  */
 public record SystematicError(Turn turn, int right, int down, boolean redBlueSwapped, double shareThere,
-        double shareAsIs, int tolerance) {
+        double shareAsIs, int tolerance) implements PanelHint {
 
     /** A turn of the whole panel, as a map of its pixels onto themselves. */
     public enum Turn {
@@ -243,6 +243,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
     }
 
     /** What is wrong, briefly: "upside down and 1 px down", "moved 3 px right and 2 px up", "red and blue swapped". */
+    @Override
     public String brief() {
         StringBuilder out = new StringBuilder(turn.words);
         String moved = moved();
@@ -266,6 +267,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
      * is simpview's upside down: so turned back, 99.98 % of the pixels it then matches are within 8/255
      * (61.20 % of the panel as it stands). Check how you turn y: ..."
      */
+    @Override
     public String hint(int n) {
         String within = "within " + tolerance + "/255";
         String share = String.format(Locale.ROOT, "%s, %s of the pixels it then matches are %s (%s of the "

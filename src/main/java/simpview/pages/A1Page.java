@@ -12,6 +12,9 @@ import simpview.surface.PageCanvas;
  */
 public sealed interface A1Page extends Page permits LineTestPage, PolygonTestPage {
 
+    /** Each panel's name, panel k's at k - 1: its drawer ("Bresenham") on a page of lines, its scene ("mesh") else. */
+    java.util.List<String> panelNames();
+
     /** How many steps draw the whole page: the most lines or triangles of any panel. */
     int steps(PageContext context);
 

@@ -67,6 +67,11 @@ public final class LineTestPage implements A1Page {
         return out;
     }
 
+    @Override
+    public List<String> panelNames() {
+        return List.of(DRAWERS);
+    }
+
     /** The page's lines for this seed. */
     public A1Lines lines(long seed) {
         return lines.apply(seed);

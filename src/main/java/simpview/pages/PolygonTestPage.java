@@ -66,6 +66,11 @@ public final class PolygonTestPage implements A1Page {
     }
 
     @Override
+    public List<String> panelNames() {
+        return A1Polygons.NAMES;
+    }
+
+    @Override
     public void draw(PageCanvas canvas, PageContext context) {
         drawSteps(canvas, context, Integer.MAX_VALUE);
     }

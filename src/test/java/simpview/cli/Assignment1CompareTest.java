@@ -37,6 +37,47 @@ class Assignment1CompareTest {
         assertTrue(other.out().contains("FAIL"), other.out());
     }
 
+    /**
+     * A page whose rows of panels are swapped: its panel 2 holds simpview's antialiased panel 4 and its panel 4
+     * the Bresenham panel 2, and the hints say so rather than leave the student to think a drawer is wrong.
+     */
+    @Test
+    void panelsInAnotherOrderAreNamed() throws Exception {
+        Path page = dir.resolve("a1-page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", page.toString()).exitCode());
+        BufferedImage ours = ImageIO.read(page.toFile());
+        BufferedImage swapped = ImageIO.read(page.toFile());
+        int n = A1Layout.PANEL;
+        for (int k = 1; k <= 4; k++) {
+            int from = k <= 2 ? k + 2 : k - 2; // 1 <- 3, 2 <- 4, 3 <- 1, 4 <- 2
+            for (int y = 0; y < n; y++) {
+                for (int x = 0; x < n; x++) {
+                    swapped.setRGB(A1Layout.left(k) + x, A1Layout.top(k) + y,
+                            ours.getRGB(A1Layout.left(from) + x, A1Layout.top(from) + y));
+                }
+            }
+        }
+        Path mine = dir.resolve("swapped.png");
+        ImageIO.write(swapped, "png", mine.toFile());
+        CliRun run = CliRun.of("compare", mine.toString(), "--assignment", "1", "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("hint: panel 2: your panel 2 holds what simpview draws in panel 4 (antialiased): "
+                + "100.00 % of its pixels are within 8/255 of that panel's"), run.out());
+        assertTrue(run.out().contains("hint: panel 4: your panel 4 holds what simpview draws in panel 2 (Bresenham): "
+                + "100.00 %"), run.out());
+        // The same in a batch's table, for a teacher.
+        Path folder = dir.resolve("subs");
+        java.nio.file.Files.createDirectories(folder.resolve("ann"));
+        ImageIO.write(swapped, "png", folder.resolve("ann/a1-page1.png").toFile());
+        Path out = dir.resolve("out");
+        CliRun batch = CliRun.of("compare", "--dir", folder.toString(), "--assignment", "1", "--pages", "1",
+                "--out-dir", out.toString());
+        String table = java.nio.file.Files.readString(out.resolve("compare.csv"));
+        assertTrue(table.contains("looks like simpview's panel 4 (antialiased)"), table);
+        assertTrue(table.contains("looks like simpview's panel 2 (Bresenham)"), table);
+        assertEquals(ExitCode.SCENE_ERROR, batch.exitCode(), batch.err());
+    }
+
     @Test
     void thePolygonPagesNameEachPanelsScene() {
         Path page = dir.resolve("a1-page5.png");

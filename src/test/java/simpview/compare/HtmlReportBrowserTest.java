@@ -188,7 +188,7 @@ class HtmlReportBrowserTest {
         Files.write(zoomed.resolve("diffs/a1-panel1-diff.png"), HeatMap.diffPng(small, 8));
         List<BatchRow> rows = List.of(GradingFixtures.row("alice/page1.png", "1", stripes, stripes, rule, false, zoomed),
                 BatchRow.panel("alice/a1-page1.png", "A1 page 1 panel 1 (DDA)", small, rule, 1, "diffs/a1-panel1-diff.png",
-                        "panel 1"));
+                        "panel 1", null));
         HtmlReport.write(rows, List.of(), zoomed, zoomed);
         // The report's own script, then one that presses each view's 2x button and writes down what it did.
         Path page = zoomed.resolve("zoom.html");
