@@ -343,7 +343,7 @@ final class ObjParser {
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == MOST_NUMBERS) {
                 throw error(i, "wrong count of numbers: " + takes + ", found more than " + MOST_NUMBERS
-                        + decimalCommaHint(from, n + words(i), counts));
+                        + decimalCommaHint(from, n + DecimalCommas.words(b, i, end), counts));
             }
             numberStarts[n] = i;
             i = number(i);
@@ -353,17 +353,6 @@ final class ObjParser {
         return n;
     }
 
-    /** How many words (runs between separators) the line holds from i on. */
-    private int words(int i) {
-        int words = 0;
-        for (int j = skipSeparators(i); j < end; j = skipSeparators(j)) {
-            words++;
-            while (j < end && !isSeparator(b[j])) {
-                j++;
-            }
-        }
-        return words;
-    }
 
     /**
      * The SIMP reader's hint for a line of {@code found} numbers from

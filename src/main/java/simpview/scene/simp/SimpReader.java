@@ -287,7 +287,7 @@ public final class SimpReader implements AutoCloseable {
                         + "'" : "expected a number, found " + found(i));
             }
             if (n == most) {
-                int found = n + wordsFrom(i);
+                int found = n + DecimalCommas.words(b, i, end);
                 String comma = decimalCommaHint(from, kind, found);
                 throw error(i, wrongCount(kind, found) + (comma.isEmpty() ? triangleHint(kind, found) : comma));
             }
@@ -418,17 +418,6 @@ public final class SimpReader implements AutoCloseable {
                 + " triangles, or as faces of an .obj model)" : "";
     }
 
-    /** How many words (runs between separators) the line holds from i on. */
-    private int wordsFrom(int i) {
-        int words = 0;
-        for (int j = skipSeparators(i); j < end; j = skipSeparators(j)) {
-            words++;
-            while (j < end && !isSeparator(b[j])) {
-                j++;
-            }
-        }
-        return words;
-    }
 
     /**
      * A hint when the commas that stand between two digits (from {@code from}

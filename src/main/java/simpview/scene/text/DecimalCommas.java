@@ -64,6 +64,22 @@ public final class DecimalCommas {
         return k == to || b[k] == ' ' || b[k] == '\t' || b[k] == ')';
     }
 
+    /**
+     * How many words b[from, to) holds, words being what stands between blanks, commas and parentheses, as
+     * both readers separate numbers: with {@link #count}, whether the commas' numbers would make another count.
+     */
+    public static int words(byte[] b, int from, int to) {
+        int words = 0;
+        boolean inWord = false;
+        for (int j = from; j < to; j++) {
+            byte c = b[j];
+            boolean separator = c == ' ' || c == '\t' || c == ',' || c == '(' || c == ')';
+            words += !separator && !inWord ? 1 : 0;
+            inWord = !separator;
+        }
+        return words;
+    }
+
     private static boolean isDigit(byte c) {
         return c >= '0' && c <= '9';
     }
