@@ -63,6 +63,13 @@ final class ObjParser {
     private String firstOtherWord;
     /** The l lines (polylines) among them. */
     private int polylines;
+    /** Faces of 4 vertices or more, some without vn, whose first three lie on one line; the first one's line. */
+    private int inLineStarts;
+    private int firstInLineStart;
+    /** Faces of 5 vertices or more that are not convex; the first one's line and size. */
+    private int concaveFaces;
+    private int firstConcaveFace;
+    private int firstConcaveSize;
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
     private byte[] b;
@@ -160,6 +167,17 @@ final class ObjParser {
         if (faceCount == 0) {
             warnings.add(noFaces());
         }
+        if (inLineStarts > 0) {
+            warnings.add(file().getFileName() + ":" + firstInLineStart + ": this face's first three vertices lie on one "
+                    + "line, so its face normal, (p2 - p1) x (p3 - p1) by SPEC, is zero or made of rounding errors, and "
+                    + "where a vertex has no vn it is lit by the ambient light alone or wrongly: start the face at a "
+                    + "corner, or give its vertices vn normals" + more(inLineStarts));
+        }
+        if (concaveFaces > 0) {
+            warnings.add(file().getFileName() + ":" + firstConcaveFace + ": this face of " + firstConcaveSize
+                    + " vertices is not convex, and SPEC fills a face as a fan from its first vertex, which covers "
+                    + "what its outline leaves out: split it into triangles (Blender: Triangulate)" + more(concaveFaces));
+        }
         return warnings;
     }
 
@@ -186,6 +204,11 @@ final class ObjParser {
         }
         return file().getFileName() + ": no f lines, so nothing is drawn (" + read + ")"
                 + (polylines > 0 ? "; l lines (polylines) are not drawn: a model is drawn by its faces, f lines" : "");
+    }
+
+    /** " (and 3 more faces like it)" after a warning about the first of n faces. */
+    private static String more(int n) {
+        return n == 1 ? "" : " (and " + (n - 1) + " more " + (n == 2 ? "face" : "faces") + " like it)";
     }
 
     private static String count(int n, String what) {
@@ -415,6 +438,7 @@ final class ObjParser {
     private void face(int from, ObjSink sink) throws SceneException {
         int n = 0;
         boolean anyNormal = false;
+        boolean everyNormal = true;
         for (int i = skipSeparators(from); i < end; i = skipSeparators(i)) {
             if (n == vertexRefs.length) {
                 vertexRefs = Arrays.copyOf(vertexRefs, 2 * n);
@@ -426,6 +450,7 @@ final class ObjParser {
                 throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
             }
             anyNormal |= normalRefs[n] >= 0;
+            everyNormal &= normalRefs[n] >= 0;
             n++;
         }
         if (n < 3) {
@@ -433,12 +458,30 @@ final class ObjParser {
         }
         faceCount++;
         int line = source.lineNumber();
+        if (n > 3) {
+            noteShape(n, everyNormal, line);
+        }
         if (recorder != null) {
             recorder.add(vertexRefs, normalRefs, n, anyNormal, line, vertices.modelBytes());
         }
         face.bind(vertices.positions, vertices.colours, vertices.normals, vertexRefs, normalRefs);
         face.select(0, n, line);
         sink.face(face);
+    }
+
+    /** Counts a face of n > 3 vertices that SPEC draws otherwise than its outline suggests ({@link FaceShape}). */
+    private void noteShape(int n, boolean everyNormal, int line) {
+        if (!everyNormal && FaceShape.firstThreeInLine(vertices.positions, vertexRefs)) {
+            if (inLineStarts++ == 0) {
+                firstInLineStart = line;
+            }
+        }
+        if (n >= FaceShape.FEWEST_TO_FLAG_CONCAVE && FaceShape.concave(vertices.positions, vertexRefs, n)) {
+            if (concaveFaces++ == 0) {
+                firstConcaveFace = line;
+                firstConcaveSize = n;
+            }
+        }
     }
 
     /** Reads v, v/vt, v//vn or v/vt/vn at i into the n-th reference; returns the index just past it. */

@@ -41,6 +41,37 @@ class ObjWarningsTest {
         assertEquals(List.of(), warnings("v 1,2,3\nv (1,5, 2, 3)\nv 1, 2, 3, 0.5, 0.5, 0.5\nv 0.5,1 2 3\nv 1,5,2 3\nf 1,2,3\n"));
     }
 
+    // ---- faces SPEC draws otherwise than their outline ------------------------------------------
+
+    /**
+     * A five-vertex face that starts on an edge: SPEC's face normal from its first three vertices is zero, so
+     * (without vn) it is lit by the ambient light alone; the same face started at a corner is not named, nor a
+     * face whose every vertex has its own normal.
+     */
+    @Test
+    void aFaceStartingOnAnEdgeIsNamedForItsNormal() throws SceneException {
+        String square = "v -2 -1 0\nv -1 -1 0\nv 0 -1 0\nv 0 1 0\nv -2 1 0\nvn 0 0 1\n";
+        assertEquals(List.of("model.obj:7: this face's first three vertices lie on one line, so its face normal,"
+                + " (p2 - p1) x (p3 - p1) by SPEC, is zero or made of rounding errors, and where a vertex has no vn it"
+                + " is lit by the ambient light alone or wrongly: start the face at a corner, or give its vertices vn"
+                + " normals (and 1 more face like it)"),
+                warnings(square + "f 1 2 3 4 5\nf 2 3 4 5 1\nf 3 2 1 5 4\nf 1/1/1 2//1 3//1 4//1 5//1\n"));
+        assertEquals(List.of(), warnings(square + "f 3 4 5 1 2\nf 1//1 2//1 3//1 4//1 5//1\nf 1 2 3\n"));
+    }
+
+    /** A star of ten vertices is filled as a fan from its first, which is not its outline: named. */
+    @Test
+    void aFaceThatIsNotConvexIsNamedForItsFan() throws SceneException {
+        String star = "v 0 3 0\nv 1 1 0\nv 3 1 0\nv 1.5 -0.5 0\nv 2 -3 0\nv 0 -1.5 0\nv -2 -3 0\nv -1.5 -0.5 0\n"
+                + "v -3 1 0\nv -1 1 0\n";
+        assertEquals(List.of("model.obj:11: this face of 10 vertices is not convex, and SPEC fills a face as a fan"
+                + " from its first vertex, which covers what its outline leaves out: split it into triangles"
+                + " (Blender: Triangulate)"), warnings(star + "f 1 2 3 4 5 6 7 8 9 10\n"));
+        // Its outer five points make a convex pentagon (either way round), and a dart of four is left to the
+        // course's own models' way: no warning.
+        assertEquals(List.of(), warnings(star + "f 1 3 5 7 9\nf 9 7 5 3 1\nf 1 5 2 7\n"));
+    }
+
     // ---- a file without faces -------------------------------------------------------------------
 
     /** A file that gives no face is named, with what it held, so that an empty picture is explained. */
