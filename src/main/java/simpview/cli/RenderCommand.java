@@ -329,7 +329,7 @@ public final class RenderCommand implements Callable<Integer> {
                 refuseIfLit(scene, drawn);
                 image = drawing.canvas().image();
             } catch (SceneException e) {
-                err().println(scene.getFileName() + " not written: " + e.getMessage());
+                err().println(pictures.get(i).getFileName() + " not written: " + e.getMessage());
                 code = ExitCode.SCENE_ERROR;
                 continue;
             }

@@ -1,6 +1,7 @@
 package simpview.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -35,6 +36,19 @@ public class LitCommandLineTest {
         }
         assertEquals(0xFFFFFF, ImageIO.read(out.resolve("b-lit.png").toFile()).getRGB(375, 375) & 0xFFFFFF,
                 "the lit scene: kd (white) times ambient (white)");
+    }
+
+    /** A scene that fails is named by the picture it does not write, its error after; the others are written. */
+    @Test
+    void aSceneThatFailsNamesThePictureNotWritten() throws IOException {
+        scene("good", "polygon (-50 -50 -100) (50 -50 -100) (0 50 -100)");
+        Path bad = scene("bad", "polygon (1 2");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", dir.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("bad.png not written: " + bad + ":1:"), run.err());
+        assertTrue(Files.isRegularFile(out.resolve("good.png")));
+        assertFalse(Files.exists(out.resolve("bad.png")));
     }
 
     @Test
