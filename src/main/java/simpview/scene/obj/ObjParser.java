@@ -16,6 +16,7 @@ import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 import simpview.scene.text.NotText;
+import simpview.scene.text.TrailingComment;
 
 /**
  * Reads the lines of one .obj file straight from the bytes of its buffer (no
@@ -425,7 +426,8 @@ final class ObjParser {
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
         if (after < 0 || (after < end && !isSeparator(b[after]))) {
-            throw error(i, "expected a number, found '" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i)));
+            throw error(i, "expected a number, found '" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i))
+                    + TrailingComment.hint(b[i]));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");
@@ -447,7 +449,8 @@ final class ObjParser {
             int start = i;
             i = reference(i, n);
             if (i < end && !isSeparator(b[i])) {
-                throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+                throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'"
+                    + TrailingComment.hint(b[start]));
             }
             anyNormal |= normalRefs[n] >= 0;
             everyNormal &= normalRefs[n] >= 0;
@@ -518,7 +521,8 @@ final class ObjParser {
             value = 10 * value + d;
         }
         if (i == digits) {
-            throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+            throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'"
+                    + TrailingComment.hint(b[start]));
         }
         if (i - digits > MOST_INDEX_DIGITS) {
             value = Long.MAX_VALUE; // names nothing in any file; and 19 digits could overflow

@@ -12,6 +12,7 @@ import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 import simpview.scene.text.NotText;
+import simpview.scene.text.TrailingComment;
 
 /**
  * Reads the commands of one SIMP file, line by line, straight from the bytes
@@ -284,7 +285,7 @@ public final class SimpReader implements AutoCloseable {
         while (i < end) {
             if (!startsNumber(b[i])) {
                 throw error(i, kind.takes(n) ? "expected the end of the line, found '" + text(i, Math.min(end, i + 30))
-                        + "'" : "expected a number, found " + found(i));
+                        + "'" + TrailingComment.hint(b[i]) : "expected a number, found " + found(i));
             }
             if (n == most) {
                 int found = n + DecimalCommas.words(b, i, end);
@@ -357,7 +358,8 @@ public final class SimpReader implements AutoCloseable {
     private void expectEnd(int i) throws SceneException {
         int j = skipBlanks(i);
         if (j < end) {
-            throw error(j, "expected the end of the line, found '" + text(j, Math.min(end, j + 30)) + "'");
+            throw error(j, "expected the end of the line, found '" + text(j, Math.min(end, j + 30)) + "'"
+                    + TrailingComment.hint(b[j]));
         }
     }
 
@@ -431,7 +433,8 @@ public final class SimpReader implements AutoCloseable {
     }
 
     private String found(int i) {
-        return i >= end ? "the end of the line" : "'" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i));
+        return i >= end ? "the end of the line"
+                : "'" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i)) + TrailingComment.hint(b[i]);
     }
 
     /** The token at i: up to the next blank, comma or parenthesis (at least one character). */

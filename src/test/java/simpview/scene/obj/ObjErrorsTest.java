@@ -13,6 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import simpview.scene.SceneException;
+import simpview.scene.text.TrailingComment;
 
 /**
  * Every error of the .obj subset: the obj file, line and column, the line as
@@ -66,6 +67,16 @@ class ObjErrorsTest {
     })
     void aVertexOfAWrongCount(String line, int column, int found) {
         assertError("v 0 0 0\n" + line, 2, column, V_TAKES + found);
+    }
+
+    /** A comment after a line's numbers or references is read as part of them (SPEC: lines split as SIMP's). */
+    @Test
+    void aCommentAfterTheNumbersIsNamedForWhatItIs() {
+        assertError("v 0 0 0 # origin\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 1, 9,
+                "expected a number, found '#'" + TrailingComment.HINT);
+        assertError(TRIANGLE + "f 1 2 3 # the front\n", 4, 9,
+                "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found '#'" + TrailingComment.HINT);
+        assertError(TRIANGLE + "f 1 2 x\n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found 'x'");
     }
 
     @Test
@@ -126,7 +137,6 @@ class ObjErrorsTest {
         "v 1 2 0x10|7|0x10",
         "vn 1 - 2|6|-",
         "v 1 2 3 1 e 0 0|11|e",
-        "v 1 2 3 # a comment|9|#",
     })
     void aNumberThatDoesNotParse(String line, int column, String token) {
         assertError(line, 1, column, "expected a number, found '" + token + "'");

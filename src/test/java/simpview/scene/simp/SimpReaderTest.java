@@ -16,6 +16,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import simpview.geometry.Axis;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
+import simpview.scene.text.TrailingComment;
 
 class SimpReaderTest {
 
@@ -355,6 +356,17 @@ class SimpReaderTest {
 
     @Test
     void trailingTextAfterPolygon() {
+        assertError("polygon (0,0,0) (1,0,0) (0,1,0) junk", 1, 33, "expected the end of the line, found 'junk'");
+    }
+
+    /** A comment after a command, as many formats allow, is part of the command in SIMP: the error says so. */
+    @Test
+    void aCommentAfterACommandIsNamedForWhatItIs() {
+        String hint = TrailingComment.HINT;
+        assertError("polygon (0,0,0) (1,0,0) (0,1,0) # a triangle", 1, 33,
+                "expected the end of the line, found '# a triangle'" + hint);
+        assertError("wire # outlines", 1, 6, "expected the end of the line, found '# outlines'" + hint);
+        assertError("translate 1 2 # and z", 1, 15, "expected a number, found '#'" + hint);
         assertError("polygon (0,0,0) (1,0,0) (0,1,0) junk", 1, 33, "expected the end of the line, found 'junk'");
     }
 
