@@ -49,7 +49,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         UPSIDE_DOWN("upside down"),
         MIRRORED("mirrored left to right"),
         HALF_TURN("turned half round"),
-        TRANSPOSED("with x and y swapped");
+        TRANSPOSED("transposed (x and y swapped)");
 
         private final String words;
 
@@ -242,7 +242,10 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         return rgb & 0xFF00FF00 | (rgb >> 16 & 0xFF) | (rgb & 0xFF) << 16;
     }
 
-    /** What is wrong, briefly: "upside down and 1 px down", "moved 3 px right and 2 px up", "red and blue swapped". */
+    /**
+     * What is wrong, briefly, to follow "your panel is simpview's" or "looks": "upside down, then moved 1 px
+     * down", "moved 3 px right and 2 px up", "red and blue swapped".
+     */
     @Override
     public String brief() {
         StringBuilder out = new StringBuilder(turn.words);

@@ -118,6 +118,8 @@ class SystematicErrorTest {
         assertTrue(over.hint(N).contains("the pixel of y is row 649 - y"), over.hint(N));
         assertTrue(over.hint(N).contains("0xRRGGBB has red in bits 16-23"), over.hint(N));
         SystematicError swapped = SystematicError.find(ours, made(ours, N, "TRANSPOSED", 0, 0, false), N, 8);
+        assertEquals("transposed (x and y swapped)", swapped.brief());
+        assertTrue(swapped.hint(N).contains("so x and y swapped back, 100.00 %"), swapped.hint(N));
         assertTrue(swapped.hint(N).contains("x is the column, y the row"), swapped.hint(N));
     }
 
