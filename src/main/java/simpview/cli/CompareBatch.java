@@ -53,6 +53,7 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
+import simpview.compare.WholePage;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
@@ -462,7 +463,8 @@ public final class CompareBatch {
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             String label = target.label(own.context());
-            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of())));
+            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
+                    target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE));
         }
         Set<Integer> firstPages = new TreeSet<>(firstAssignmentWanted);
         if (firstAssignmentFolder) {
@@ -778,8 +780,18 @@ public final class CompareBatch {
         BatchRow worst = rows.stream().filter(BatchRow::compared)
                 .min(Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
         long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
-        return (passing == rows.size() ? "PASS" : "FAIL") + " " + passing + " of " + rows.size() + " panels; lowest "
-                + Percent.of(worst.verdict()) + " (" + worst.target() + ")";
+        StringBuilder looks = new StringBuilder();
+        PanelHint said = null;
+        for (int k = 0; k < rows.size(); k++) {
+            PanelHint hint = rows.get(k).panelHint();
+            if (hint != null && hint != said) { // a page turned whole is one hint for its panels
+                looks.append(hint instanceof WholePage ? "; looks " : "; panel " + (k + 1) + " looks ")
+                        .append(hint.brief());
+                said = hint;
+            }
+        }
+        return (passing == rows.size() ? "PASS: " : "FAIL: ") + passing + " of " + rows.size() + " panels pass; lowest "
+                + Percent.of(worst.verdict()) + " (" + worst.target() + ")" + looks;
     }
 
     private static String progress(BatchRow row) {
@@ -897,11 +909,13 @@ public final class CompareBatch {
                     firstAssignmentPageRule(page)));
         }
         List<BatchRow> rows = new ArrayList<>();
-        List<String> names = Assignment1.page(page).panelNames();
+        // the hints by panel 1's tolerance: a page turned whole is one hint for its four panels
+        PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL,
+                firstAssignmentRule(page, 1).tolerance(), Assignment1.page(page).panelNames());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);
             Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
-            PanelHint hint = PanelHint.of(cut.ours(), cut.theirs(), k, A1Layout.PANEL, rule.tolerance(), names);
+            PanelHint hint = hints[k - 1];
             String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
                     + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
                     + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page"

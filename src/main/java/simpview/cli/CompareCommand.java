@@ -27,6 +27,8 @@ import simpview.compare.Picture;
 import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.compare.WholePage;
+import simpview.pages.A1Layout;
 import simpview.pages.A1Page;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
@@ -301,7 +303,7 @@ public final class CompareCommand implements Callable<Integer> {
         boolean samePage = target.isPage() && target.page() <= Assignment1.COUNT;
         return image + " is a page of the first assignment (four 300x300 panels), not a page with one 650x650 panel: "
                 + "add --assignment 1 to compare it panel by panel, e.g. simpview compare " + image + " --assignment 1 "
-                + "--page " + (samePage ? target.page() : "N (1 to " + Assignment1.COUNT + ")");
+                + "--page " + (samePage ? target.page() : "N (1 to " + Assignment1.COUNT + ")") + pictures.seedOption();
     }
 
     /**
@@ -364,11 +366,14 @@ public final class CompareCommand implements Callable<Integer> {
             ourPanels[k] = compared[k].ours();
             theirPanels[k] = compared[k].theirs();
         }
-        for (int k = 1; k <= panels.length; k++) {
-            PanelHint hint = PanelHint.of(ourPanels, theirPanels, k, panels[k - 1].size(), tolerance,
-                    shown.panelNames());
-            if (hint != null) {
-                out.println("hint: panel " + k + ": " + hint.hint(panels[k - 1].size()));
+        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, tolerance, shown.panelNames());
+        if (hints[0] instanceof WholePage whole) {
+            out.println("hint: " + whole.hint(A1Layout.PANEL));
+        } else {
+            for (int k = 1; k <= panels.length; k++) {
+                if (hints[k - 1] != null) {
+                    out.println("hint: panel " + k + ": " + hints[k - 1].hint(A1Layout.PANEL));
+                }
             }
         }
         if (diff != null) {

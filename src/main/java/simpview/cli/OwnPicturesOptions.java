@@ -61,6 +61,11 @@ final class OwnPicturesOptions {
         }
     }
 
+    /** " --seed S" when --seed was given, else "": for a command these options suggest. */
+    String seedOption() {
+        return seed == null ? "" : " --seed " + seed;
+    }
+
     /** Whether --a1-rule was given. */
     boolean a1RuleGiven() {
         return a1Rule.given();

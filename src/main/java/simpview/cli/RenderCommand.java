@@ -225,6 +225,7 @@ public final class RenderCommand implements Callable<Integer> {
         usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
         usage(!ownColours, "--own-colors goes with --scene only");
         usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
+        usage(primitives == null, "--primitives goes with --page N");
         try {
             sceneList = SceneList.of(what.scenes);
         } catch (IllegalArgumentException e) {
@@ -420,8 +421,8 @@ public final class RenderCommand implements Callable<Integer> {
         Page page = firstAssignment() ? Assignment1.page(number) : Assignment2.page(number);
         PageContext context = context();
         if (page.primitives(context).isEmpty()) {
-            throw new UsageProblem("--primitives: page " + number + " draws the scene file " + page.title()
-                    + ": its primitives are that file's lines");
+            throw new UsageProblem("--primitives: page " + number + " draws a scene file (" + page.title()
+                    + "): its primitives are that file's lines");
         }
         String listing = PrimitiveListing.of(page, (firstAssignment() ? "the first assignment's page " : "page ")
                 + number, context);

@@ -10,7 +10,8 @@ import java.util.Map;
  * {@code simpview check}'s one table for a student: each picture found, the
  * page it was matched to, PASS or FAIL, the share the verdict is on, and the
  * worst region (the largest patch that differs even with slack), in aligned
- * plain-text columns; then the pictures that do not count (another picture of
+ * plain-text columns; then the hints of what a whole panel looks like
+ * ({@link PanelHint}); then the pictures that do not count (another picture of
  * their page does) and why, the pages asked for that no picture matched, and
  * one line of counts, of the pictures that count (of the first assignment's
  * pages, of their panels).
@@ -54,6 +55,16 @@ public final class StudentTable {
                 one.append(c == 0 ? "" : "  ").append(cell);
             }
             out.append(one.toString().stripTrailing()).append('\n');
+        }
+        PanelHint said = null;
+        for (BatchRow row : rows) {
+            PanelHint hint = row.panelHint();
+            if (hint != null && hint != said) { // a page turned whole: one hint for its four panels
+                String which = hint instanceof WholePage ? row.page() : row.target();
+                out.append("hint: ").append(row.file()).append(" (").append(GradescopeResults.name(which)).append("): ")
+                        .append(hint.hint(row.size())).append('\n');
+                said = hint;
+            }
         }
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
         Map<String, String> notCounted = new LinkedHashMap<>(); // a first-assignment page: once, not per panel

@@ -7,7 +7,8 @@ import java.util.Locale;
  * A student's panel that holds what simpview draws in another panel of the
  * page: the panels laid out in another order, or one drawer's lines drawn
  * by another (a Bresenham panel that is simpview's DDA panel). Named under
- * {@link SystematicError}'s rules: at least {@link SystematicError#BETTER}
+ * {@link SystematicError}'s rules, among simpview's panels that differ from
+ * its own on {@link #MIN_DISTINCT} of the panel or more: at least {@link SystematicError#BETTER}
  * times fewer pixels beyond the tolerance than against its own panel, at
  * least {@link SystematicError#MIN_SHARE} of them within it, and at least
  * {@link SystematicError#MIN_WRONG} of its own panel beyond it.
@@ -22,6 +23,9 @@ import java.util.Locale;
 public record SwappedPanel(int panel, int like, String name, double shareThere, double shareAsIs, int tolerance)
         implements PanelHint {
 
+    /** How much of the panel two of simpview's panels must differ on, at least, for one to be named for the other. */
+    static final double MIN_DISTINCT = 0.05;
+
     /** Theirs' panel k against each of our other panels; null when none is named by the rules above. */
     static SwappedPanel find(int[][] ours, int[][] theirs, int k, int n, int tolerance, List<String> names) {
         long pixels = (long) n * n;
@@ -32,7 +36,14 @@ public record SwappedPanel(int panel, int like, String name, double shareThere, 
         int best = 0;
         long fewest = Long.MAX_VALUE;
         for (int j = 1; j <= ours.length; j++) {
-            long wrong = j == k ? Long.MAX_VALUE : wrong(ours[j - 1], theirs[k - 1], tolerance);
+            // A panel of simpview's that is nearly its panel k tells nothing of where the picture went wrong
+            // (page 1 by the course's rule, against a picture by SPEC's: its Bresenham panel is nearer
+            // simpview's DDA panel). The first assignment's DDA, Bresenham and alternating panels differ on
+            // 3.4 % of a panel at most (page 1, the course's rule); the antialiased one differs from them on
+            // 9.9 % (page 3) to 26 %, and the polygon scenes from each other on 6.5 % (page 5's two meshes,
+            // as ghosts) to 84 %.
+            boolean distinct = j != k && wrong(ours[j - 1], ours[k - 1], tolerance) >= MIN_DISTINCT * pixels;
+            long wrong = distinct ? wrong(ours[j - 1], theirs[k - 1], tolerance) : Long.MAX_VALUE;
             if (wrong < fewest) {
                 fewest = wrong;
                 best = j;
@@ -43,6 +54,11 @@ public record SwappedPanel(int panel, int like, String name, double shareThere, 
             return null;
         }
         return new SwappedPanel(k, best, names.get(best - 1), shareThere, 1 - (double) own / pixels, tolerance);
+    }
+
+    /** The share of two panels' pixels within the tolerance of each other. */
+    static double within(int[] ours, int[] theirs, int tolerance) {
+        return 1 - (double) wrong(ours, theirs, tolerance) / ours.length;
     }
 
     private static long wrong(int[] ours, int[] theirs, int tolerance) {

@@ -16,7 +16,9 @@ import java.util.Locale;
  * <p>It is found by laying simpview's panel over theirs each way such a
  * mistake would ({@link Turn} and a move of up to {@link #MOST_MOVED} pixels
  * for a picture turned over or not, one pixel for the rarer turns; red and
- * blue swapped or not) and keeping the way under which theirs is nearest.
+ * blue swapped or not) and keeping the way under which theirs is nearest,
+ * its move then followed out while a pixel more comes nearer (up to
+ * {@link #FARTHEST_MOVED}).
  * Under way W, pixel p of theirs is matched with {@code C(ours(T(p - s)))}: T
  * the turn, s the move, C the swap; p - s must lie in the panel, so a move
  * leaves out the rows and columns it brings in. The ways are first ranked
@@ -76,6 +78,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
 
     /** The farthest move, in pixels either way, tried for a panel that is not turned or is upside down. */
     public static final int MOST_MOVED = 4;
+    /** The farthest the best way's move is followed out, a pixel at a time, while it comes nearer. */
+    public static final int FARTHEST_MOVED = 16;
     /** How many times fewer pixels beyond the tolerance a way must leave than the picture as it stands. */
     public static final int BETTER = 4;
     /** The least share of the matched pixels within the tolerance for a way to be named. */
@@ -140,6 +144,26 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
             if (rate < bestRate) {
                 bestRate = rate;
                 best = way;
+            }
+        }
+        // The ways tried move by at most MOST_MOVED (one pixel for the rarer turns); from the best, the move
+        // is followed a pixel at a time while a neighbouring one is nearer, up to FARTHEST_MOVED: so a panel
+        // 5 px off is not called 4 px off, nor one 6 px down "1 px right and 4 px down".
+        for (boolean nearer = true; nearer; ) {
+            nearer = false;
+            for (int k = 0; k < 9; k++) {
+                int right = best.right + k % 3 - 1;
+                int down = best.down + k / 3 - 1;
+                if (k == 4 || Math.abs(right) > FARTHEST_MOVED || Math.abs(down) > FARTHEST_MOVED) {
+                    continue;
+                }
+                Way step = new Way(best.turn, right, down);
+                double rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, bestRate);
+                if (rate < bestRate) {
+                    bestRate = rate;
+                    best = step;
+                    nearer = true;
+                }
             }
         }
         Way asIs = new Way(Turn.NONE, 0, 0);
@@ -272,10 +296,15 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
      */
     @Override
     public String hint(int n) {
+        return hint(n, "panel");
+    }
+
+    /** The same of {@code what} ("panel", "page"), its panels n x n pixels. */
+    String hint(int n, String what) {
         String within = "within " + tolerance + "/255";
         String share = String.format(Locale.ROOT, "%s, %s of the pixels it then matches are %s (%s of the "
-                + "panel as it stands)", undone(), Percent.of(shareThere), within, Percent.of(shareAsIs));
-        return "your panel is simpview's " + brief() + ": " + share + ". " + advice(n);
+                + "%s as it stands)", undone(), Percent.of(shareThere), within, Percent.of(shareAsIs), what);
+        return "your " + what + " is simpview's " + brief() + ": " + share + ". " + advice(n);
     }
 
     /** "turned back", "moved back", "x and y swapped back, red and blue too", ... */

@@ -78,6 +78,50 @@ class Assignment1CompareTest {
         assertEquals(ExitCode.SCENE_ERROR, batch.exitCode(), batch.err());
     }
 
+    /**
+     * A page drawn with row = y is upside down as a whole: each panel then holds another panel's picture
+     * turned over. One hint says so for the page, in compare and in check; and a page drawn by SPEC's rule,
+     * compared by the course's, gets none (its Bresenham panel is nearer simpview's DDA panel, which says
+     * nothing of where it went wrong).
+     */
+    @Test
+    void aPageUpsideDownIsNamedAsAWhole() throws Exception {
+        for (int number : new int[] {1, 4}) {
+            Path page = dir.resolve("p" + number + ".png");
+            assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", String.valueOf(number),
+                    "--out", page.toString()).exitCode());
+            BufferedImage ours = ImageIO.read(page.toFile());
+            BufferedImage over = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+            for (int y = 0; y < 750; y++) {
+                for (int x = 0; x < 750; x++) {
+                    over.setRGB(x, y, ours.getRGB(x, 749 - y));
+                }
+            }
+            Path folder = dir.resolve("sub" + number);
+            java.nio.file.Files.createDirectories(folder);
+            Path mine = folder.resolve("page" + number + ".png");
+            ImageIO.write(over, "png", mine.toFile());
+            CliRun run = CliRun.of("compare", mine.toString(), "--assignment", "1", "--page", String.valueOf(number));
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+            assertTrue(run.out().contains("\nhint: your page is simpview's upside down: so turned back, 100.00 % of the"
+                    + " pixels it then matches are within 8/255"), run.out());
+            assertTrue(run.out().contains("the pixel of y is row 299 - y"), run.out());
+            assertEquals(1, run.out().split("hint:", -1).length - 1, "one hint for the page: " + run.out());
+            CliRun check = CliRun.of("check", folder.toString());
+            assertTrue(check.out().matches("(?s).*\nhint: page" + number + "\\.png \\(A1 page " + number
+                    + "( \\(seed 361\\))?\\): your page is simpview's upside down.*"), check.out());
+            assertEquals(1, check.out().split("hint:", -1).length - 1, "one hint for the page: " + check.out());
+            assertTrue(check.err().contains("looks like simpview's whole page upside down"), check.err());
+        }
+        Path spec = dir.resolve("spec1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", spec.toString())
+                .exitCode());
+        CliRun byCourse = CliRun.of("compare", spec.toString(), "--assignment", "1", "--page", "1", "--a1-rule",
+                "course");
+        assertEquals(ExitCode.SCENE_ERROR, byCourse.exitCode(), "the Bresenham panels differ: " + byCourse.out());
+        assertFalse(byCourse.out().contains("hint:"), byCourse.out());
+    }
+
     @Test
     void thePolygonPagesNameEachPanelsScene() {
         Path page = dir.resolve("a1-page5.png");
@@ -304,6 +348,9 @@ class Assignment1CompareTest {
                 + "with one 650x650 panel: add --assignment 1 to compare it panel by panel, e.g. simpview compare " + page
                 + " --assignment 1 --page 1\n", run.err());
         assertEquals("", run.out(), "no comparison with the eight pages' page 1");
+        // a seeded page's suggestion keeps the seed it was given: the same random page is compared
+        CliRun seeded = CliRun.of("compare", page.toString(), "--page", "3", "--seed", "5");
+        assertTrue(seeded.err().endsWith(" --assignment 1 --page 3 --seed 5\n"), seeded.err());
         CliRun seven = CliRun.of("compare", page.toString(), "--page", "7", "--simp-dir",
                 CourseFiles.requireSimpDir().toString());
         assertTrue(seven.err().endsWith("--assignment 1 --page N (1 to 5)\n"), seven.err());

@@ -86,7 +86,7 @@ class FirstAssignmentBatchTest {
                 "--diffs", "failing", "--gradescope", out.resolve("results.json").toString(),
                 "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "alice's panel 3 fails: " + run.err());
-        assertTrue(run.err().contains("alice/a1-page2.png: FAIL 3 of 4 panels; lowest 98.22 % (A1 page 2 panel 3 "
+        assertTrue(run.err().contains("alice/a1-page2.png: FAIL: 3 of 4 panels pass; lowest 98.22 % (A1 page 2 panel 3 "
                 + "(alternating DDA / Bresenham))"), run.err());
 
         List<String> csv = Files.readAllLines(out.resolve("compare.csv"));

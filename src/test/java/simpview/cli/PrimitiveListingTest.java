@@ -129,11 +129,14 @@ public class PrimitiveListingTest {
     void pagesWithoutPrimitivesOfTheirOwnAndOtherCommandsAreUsageErrors() {
         CliRun scene = CliRun.of("render", "--page", "4", "--primitives", dir.resolve("x.txt").toString());
         assertEquals(ExitCode.USAGE_ERROR, scene.exitCode());
-        assertTrue(scene.err().contains("--primitives: page 4 draws the scene file "), scene.err());
+        assertTrue(scene.err().contains("--primitives: page 4 draws a scene file ("), scene.err());
         assertFalse(Files.exists(dir.resolve("x.txt")));
         CliRun all = CliRun.of("render", "--all", "--out-dir", dir.toString(), "--primitives", "-");
         assertEquals(ExitCode.USAGE_ERROR, all.exitCode());
         assertTrue(all.err().contains("--primitives goes with --page N"), all.err());
+        CliRun scenes = CliRun.of("render", "--scenes", dir.toString(), "--out-dir", dir.toString(), "--primitives", "-");
+        assertEquals(ExitCode.USAGE_ERROR, scenes.exitCode());
+        assertTrue(scenes.err().contains("--primitives goes with --page N"), scenes.err());
         CliRun none = CliRun.of("render", "--page", "2");
         assertEquals(ExitCode.USAGE_ERROR, none.exitCode(), "neither --out nor --primitives");
         CliRun same = CliRun.of("render", "--page", "2", "--out", dir.resolve("p.png").toString(), "--primitives",

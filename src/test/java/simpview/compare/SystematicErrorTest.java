@@ -81,6 +81,10 @@ class SystematicErrorTest {
         "2, NONE, 3, -2, false",
         "2, NONE, 0, 1, false", // row 650 - y: a row down, which slack hides
         "2, NONE, -4, 4, false",
+        "2, NONE, 5, 0, false", // beyond the first search: followed out, not called 4
+        "2, NONE, 0, 6, false",
+        "2, NONE, -9, -7, false",
+        "2, TRANSPOSED, 2, 0, false",
         "2, UPSIDE_DOWN, 0, 0, false",
         "2, UPSIDE_DOWN, 0, -1, false",
         "2, MIRRORED, 0, 0, false",

@@ -47,7 +47,8 @@ final class FaceShape {
 
     /**
      * Whether the face of n vertices refs[0..n) has an area (Newell's normal, the sum over its edges, is not
-     * nil) and turns the other way at some vertex: it is not convex.
+     * nil) and is not convex: it turns the other way at some vertex, or it turns one way all round more than
+     * once (a pentagram drawn in one stroke, its edges crossing).
      */
     static boolean concave(double[] p, int[] refs, int n) {
         double nx = 0;
@@ -64,6 +65,7 @@ final class FaceShape {
         if (!(normal > 0)) {
             return false;
         }
+        double turned = 0; // the turns' angles, added up: 2 pi once round a convex face
         for (int i = 0; i < n; i++) {
             int a = 3 * refs[(i + n - 1) % n];
             int b = 3 * refs[i];
@@ -79,7 +81,8 @@ final class FaceShape {
             if (turn < -IN_LINE * scale) {
                 return true;
             }
+            turned += Math.atan2(turn / normal, ux * vx + uy * vy + uz * vz);
         }
-        return false;
+        return turned > 3 * Math.PI; // twice round (4 pi) or more: not once round (2 pi)
     }
 }

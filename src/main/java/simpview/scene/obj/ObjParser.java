@@ -322,7 +322,8 @@ final class ObjParser {
         double z = numbers[2];
         if (w != 1) {
             if (w == 0) {
-                throw error(numberStarts[3], "w is 0: the point (x/w, y/w, z/w) is undefined");
+                throw error(numberStarts[3], "w is 0: the point (x/w, y/w, z/w) is undefined"
+                        + decimalCommaHint(from, n, ObjParser::vertexTakes));
             }
             x /= w;
             y /= w;

@@ -79,6 +79,14 @@ class ObjErrorsTest {
         assertError(TRIANGLE + "f 1 2 x\n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found 'x'");
     }
 
+    /** "v 0,5 0 0" is x y z w with w = 0: the error names the decimal comma that made it so. */
+    @Test
+    void aDecimalCommaThatMakesWZeroIsNamed() {
+        assertError("v 0,5 0 0\n", 1, 9, "w is 0: the point (x/w, y/w, z/w) is undefined (a comma separates two"
+                + " numbers: one and a half is 1.5, not 1,5)");
+        assertError("v 0.5 0 0 0\n", 1, 11, "w is 0: the point (x/w, y/w, z/w) is undefined");
+    }
+
     @Test
     void aVertexOfMoreThanSevenNumbers() {
         assertError("v 1 2 3 4 5 6 7 8 9", 1, 17, V_TAKES + "more than 7");

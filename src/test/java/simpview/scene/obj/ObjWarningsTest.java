@@ -70,6 +70,10 @@ class ObjWarningsTest {
         // Its outer five points make a convex pentagon (either way round), and a dart of four is left to the
         // course's own models' way: no warning.
         assertEquals(List.of(), warnings(star + "f 1 3 5 7 9\nf 9 7 5 3 1\nf 1 5 2 7\n"));
+        // The same five points in one stroke, a pentagram: it turns one way at every point, twice round.
+        assertEquals(List.of("model.obj:11: this face of 5 vertices is not convex, and SPEC fills a face as a fan"
+                + " from its first vertex, which covers what its outline leaves out: split it into triangles"
+                + " (Blender: Triangulate)"), warnings(star + "f 1 5 9 3 7\n"));
     }
 
     // ---- a file without faces -------------------------------------------------------------------
