@@ -23,8 +23,8 @@ import java.util.Locale;
  * the turn, s the move, C the swap; p - s must lie in the panel, so a move
  * leaves out the rows and columns it brings in. The ways are first ranked
  * on a coarse grid of pixels, the best few again on a finer one, with the
- * colours' distance made blind to the swap; the best is then measured on
- * every pixel, both with and without the swap.
+ * colours' distance made blind to the swap; the swap is then chosen on the
+ * finer grid, and the way measured on every pixel.
  *
  * <p>A way is named only where it explains the picture: at least
  * {@link #BETTER} times fewer pixels beyond the tolerance than as it stands
@@ -171,15 +171,16 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         if (moved && bestRate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
             return null; // the swap aside, no way is near to the share it would need
         }
-        long[] plain = moved ? wrong(ours, theirs, n, best, false, tolerance) : new long[] {wrongAsIs, (long) n * n};
-        long[] swapped = wrong(ours, theirs, n, best, true, tolerance);
-        boolean swap = swapped[0] < plain[0];
-        long[] there = swap ? swapped : plain;
+        // Red and blue swapped or not, by the finer grid; then that one measured on every pixel.
+        boolean swap = sampledWrong(ours, theirs, n, best, true, tolerance)
+                < sampledWrong(ours, theirs, n, best, false, tolerance);
         if (!moved && !swap) {
             return null;
         }
+        long[] there = wrong(ours, theirs, n, best, swap, tolerance);
         // As it stands, over the same pixels the way matches: a move leaves some out.
-        long wrongHere = wrongOver(ours, theirs, n, best.right, best.down, tolerance);
+        long wrongHere = best.right == 0 && best.down == 0 ? wrongAsIs
+                : wrongOver(ours, theirs, n, best.right, best.down, tolerance);
         double shareThere = 1 - (double) there[0] / there[1];
         if (there[0] * BETTER > wrongHere || shareThere < MIN_SHARE) {
             return null;
@@ -248,6 +249,18 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
             }
         }
         return (double) wrong / samples;
+    }
+
+    /** The sampled pixels (the finer grid) beyond the tolerance under a way, red and blue swapped or not. */
+    private static long sampledWrong(int[] ours, int[] theirs, int n, Way way, boolean swap, int tolerance) {
+        long wrong = 0;
+        for (int y = Math.max(0, way.down); y < Math.min(n, n + way.down); y += FINE_STRIDE) {
+            for (int x = Math.max(0, way.right); x < Math.min(n, n + way.right); x += FINE_STRIDE) {
+                int o = ours[way.turn.source(x - way.right, y - way.down, n)];
+                wrong += Rasters.distance(swap ? redBlueSwapped(o) : o, theirs[y * n + x]) > tolerance ? 1 : 0;
+            }
+        }
+        return wrong;
     }
 
     /** The colours' distance with red and blue compared as a pair, the smaller with the smaller. */
