@@ -58,6 +58,7 @@ public final class A1Inspector {
         Drawable[] panels = A1Layout.paint(canvas);
         int panel = A1Layout.panelAt(column, row);
         List<A1Report.Write> writes = new ArrayList<>();
+        List<A1Report.CentreCase> centre = new ArrayList<>();
         String drawer = null;
         int px = -1;
         int py = -1;
@@ -82,6 +83,7 @@ public final class A1Inspector {
                 watch.ghost = polygons.ghost();
                 polygons.drawPanel(panel, scenes, new Probe(watch, panels[panel - 1]), new FilledPolygonRenderer(),
                         i -> watch.primitive = i);
+                centre.addAll(centreCases(scenes.scene(panel), px, py));
             }
             watch.count = shown instanceof LineTestPage ? watch.lines.count()
                     : watch.triangles.length / (3 * simpview.geometry.Vertex.NUMBERS);
@@ -90,7 +92,34 @@ public final class A1Inspector {
             }
         }
         return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
-                canvas.image().getRGB(column, row), panel, drawer, px, py, writes);
+                canvas.image().getRGB(column, row), panel, drawer, px, py, writes, centre);
+    }
+
+    /**
+     * The triangles (three vertices each, as drawn) whose box holds the centre of panel pixel (x, y), and what
+     * the fill rule says of each ({@link VertexTable#centre}: the rasterizer's own edge tests).
+     */
+    private static List<A1Report.CentreCase> centreCases(double[] triangles, int x, int y) {
+        List<A1Report.CentreCase> cases = new ArrayList<>();
+        double cx = x + 0.5;
+        double cy = y + 0.5;
+        int n = simpview.geometry.Vertex.NUMBERS;
+        for (int i = 0; i < triangles.length / (3 * n); i++) {
+            double[] drawn = new double[6];
+            for (int k = 0; k < 3; k++) {
+                drawn[2 * k] = triangles[(3 * i + k) * n + simpview.geometry.Vertex.X];
+                drawn[2 * k + 1] = triangles[(3 * i + k) * n + simpview.geometry.Vertex.Y];
+            }
+            boolean inBox = cx >= Math.min(drawn[0], Math.min(drawn[2], drawn[4]))
+                    && cx <= Math.max(drawn[0], Math.max(drawn[2], drawn[4]))
+                    && cy >= Math.min(drawn[1], Math.min(drawn[3], drawn[5]))
+                    && cy <= Math.max(drawn[1], Math.max(drawn[3], drawn[5]));
+            if (inBox) {
+                Terms t = VertexTable.centre(drawn, x, y);
+                cases.add(new A1Report.CentreCase(i + 1, (Boolean) t.get("covered"), (String) t.get("why")));
+            }
+        }
+        return cases;
     }
 
     /** What the probes tell: the write at the pixel, the primitive at hand. */

@@ -121,6 +121,17 @@ public final class A1Report {
         }
     }
 
+    /**
+     * One triangle of a polygon panel whose box holds the pixel's centre, and what Part 1's fill rule says of
+     * that centre and it, by the rasterizer's own edge tests ({@link VertexTable#centre}).
+     *
+     * @param number the triangle, 1, 2, ... in the panel's drawing order
+     * @param covered whether it covers the centre
+     * @param why in words, naming the top-left rule where the centre is on an edge
+     */
+    public record CentreCase(int number, boolean covered, String why) {
+    }
+
     private final int page;
     private final String title;
     private final Long seed;
@@ -136,9 +147,10 @@ public final class A1Report {
     private final int panelY;
     private final List<Write> writes;
     private final boolean lines;
+    private final List<CentreCase> centre;
 
     A1Report(int page, String title, boolean lines, Long seed, A1Rule rule, int x, int y, int column, int row, int argb,
-            int panel, String drawer, int panelX, int panelY, List<Write> writes) {
+            int panel, String drawer, int panelX, int panelY, List<Write> writes, List<CentreCase> centre) {
         this.page = page;
         this.lines = lines;
         this.title = title;
@@ -154,6 +166,15 @@ public final class A1Report {
         this.panelX = panelX;
         this.panelY = panelY;
         this.writes = List.copyOf(writes);
+        this.centre = List.copyOf(centre);
+    }
+
+    /**
+     * On a polygon panel, the triangles whose box holds the pixel's centre and why each covers it or not, in
+     * drawing order; empty on a page of lines and in the margins.
+     */
+    public List<CentreCase> centre() {
+        return centre;
     }
 
     /** The pixel's colour on the page, 0xAARRGGBB. */
@@ -208,8 +229,23 @@ public final class A1Report {
             sb.append("explain: final_rgb ").append(rgb(argb)).append(writes.isEmpty() ? ", the panel's black: no "
                     + (lines ? "line" : "triangle") + " reached this pixel" : ", the last write's new colour")
                     .append('\n');
+            if (!lines) {
+                centreText(sb);
+            }
         }
         return sb.toString();
+    }
+
+    /** The pixel's centre and the triangles whose box holds it, each covering it or not and why. */
+    private void centreText(StringBuilder sb) {
+        sb.append("centre: (").append(Json.number(panelX + 0.5)).append(", ").append(Json.number(panelY + 0.5))
+                .append("), by Part 1's fill rule").append(rule == A1Rule.SPEC ? ""
+                        : " on the triangles moved up " + Json.number(rule.rowShift()) + " px (" + rule.label() + ")")
+                .append(centre.isEmpty() ? ": no triangle's box holds it" : ":").append('\n');
+        for (CentreCase c : centre) {
+            sb.append("  triangle ").append(c.number()).append(c.covered() ? ": covers it: " : ": does not: ")
+                    .append(c.why()).append('\n');
+        }
     }
 
     private void history(StringBuilder sb) {
@@ -256,7 +292,23 @@ public final class A1Report {
         }
         if (withExplanation) {
             sb.append(", \"explain\": {\"final_rgb\": ").append(array(argb)).append(", \"writes\": ")
-                    .append(writes.size()).append(", \"background\": ").append(writes.isEmpty()).append('}');
+                    .append(writes.size()).append(", \"background\": ").append(writes.isEmpty());
+            if (!lines && panel != 0) {
+                sb.append(", \"centre\": {\"x\": ");
+                Json.number(sb, panelX + 0.5);
+                sb.append(", \"y\": ");
+                Json.number(sb, panelY + 0.5);
+                sb.append(", \"triangles\": [");
+                for (int k = 0; k < centre.size(); k++) {
+                    CentreCase c = centre.get(k);
+                    sb.append(k == 0 ? "{" : ", {").append("\"triangle\": ").append(c.number())
+                            .append(", \"covered\": ").append(c.covered()).append(", \"why\": ");
+                    Json.string(sb, c.why());
+                    sb.append('}');
+                }
+                sb.append("]}");
+            }
+            sb.append('}');
         }
         return sb.append('}').toString();
     }

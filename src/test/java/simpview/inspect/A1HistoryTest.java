@@ -114,6 +114,45 @@ class A1HistoryTest {
         return out;
     }
 
+    /**
+     * On the polygon pages, the centre section agrees with the drawing pixel for pixel: the triangles it says
+     * cover the centre are exactly those that wrote the pixel, in drawing order, under both rules; on the mesh
+     * (panel 2), where triangles share every inner edge, at most one does, and a centre on a shared edge names
+     * the top-left rule.
+     */
+    @Test
+    void thePolygonPagesCentreSectionIsTheDrawingsOwnAnswer() {
+        int ties = 0;
+        for (A1Rule rule : A1Rule.values()) {
+            Random random = new Random(28);
+            for (int k = 0; k < 400; k++) {
+                int panel = 1 + k / 2 % 4;
+                // on the mesh's diagonals (x = y: its cells are split from (min x, min y) to (max x, max y)) half
+                // the time, where centres lie on shared edges; anywhere the rest
+                int px = random.nextInt(300);
+                int py = k % 2 == 0 ? px : random.nextInt(300);
+                int x = 50 + (panel - 1) % 2 * 350 + px;
+                int y = LAST - (50 + (panel - 1) / 2 * 350 + 299 - py);
+                A1Report report = A1Inspector.inspect(4, SEED, rule, x, y);
+                assertEquals(panel, report.panel());
+                assertEquals(px, report.panelX());
+                assertEquals(py, report.panelY());
+                List<Integer> wrote = report.writes().stream().map(A1Report.Write::number).toList();
+                List<Integer> cover = report.centre().stream().filter(A1Report.CentreCase::covered)
+                        .map(A1Report.CentreCase::number).toList();
+                assertEquals(wrote, cover, report.text());
+                if (panel == 2) {
+                    assertTrue(cover.size() <= 1, "one mesh triangle at most: " + report.text());
+                }
+                if (report.centre().stream().anyMatch(c -> c.why().contains("top-left rule"))) {
+                    ties++;
+                    assertTrue(report.text().contains("the top-left rule gives the pixel to"), report.text());
+                }
+            }
+        }
+        assertTrue(ties > 20, "centres on a shared edge met: " + ties);
+    }
+
     @Test
     void theStarburstsCentreIsEveryLine() {
         // Panel 1's pixel (150, 150): image column 50 + 150, row 50 + 299 - 150; page y = 749 - row.
