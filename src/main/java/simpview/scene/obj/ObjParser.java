@@ -294,7 +294,7 @@ final class ObjParser {
         otherLines++;
         if (firstOtherLine == 0) {
             firstOtherLine = source.lineNumber();
-            firstOtherWord = token(i);
+            firstOtherWord = printable(token(i));
         }
         if ((b[i] | 0x20) == 'l' && (i + 1 == end || isSeparator(b[i + 1]))) {
             polylines++;
@@ -574,6 +574,19 @@ final class ObjParser {
             j++;
         }
         return text(i, j);
+    }
+
+    /** The text with each control character written as \\xNN: a warning never prints a NUL or an escape. */
+    private static String printable(String text) {
+        StringBuilder out = new StringBuilder(text.length());
+        for (char c : text.toCharArray()) {
+            if (c < 0x20 || c == 0x7F) {
+                out.append(String.format("\\x%02X", (int) c));
+            } else {
+                out.append(c);
+            }
+        }
+        return out.toString();
     }
 
     private String text(int from, int to) {

@@ -89,6 +89,17 @@ class ObjWarningsTest {
                 warnings("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"));
     }
 
+    /**
+     * A first ignored word holding control characters is shown escaped: a file that is text for its first
+     * kilobytes (which are all that are looked at for a file's kind) and not after.
+     */
+    @Test
+    void aControlCharacterInTheFirstIgnoredWordIsShownEscaped() throws SceneException {
+        String text = "v 0 0 0\n" + "#".repeat(5000) + "\n";
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (3 lines read: 1 v line, 1 other line (the"
+                + " first, line 3, starts with 'x\\x00y\\x1B'))"), warnings(text + "x\u0000y\u001b\n"));
+    }
+
     /** A lines-only model: its l lines are named, since other programs draw them. */
     @Test
     void aModelOfLinesOnlySaysThatLLinesAreNotDrawn() throws SceneException {
