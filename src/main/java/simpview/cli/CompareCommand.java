@@ -7,6 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -27,6 +29,7 @@ import simpview.compare.Picture;
 import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.compare.SystematicError;
 import simpview.compare.WholePage;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Page;
@@ -281,8 +284,16 @@ public final class CompareCommand implements Callable<Integer> {
             err().println("simpview compare: " + firstAssignmentsPage(target));
             return ExitCode.SCENE_ERROR;
         }
+        // The hint's search reads the two panels only, as the comparison does: it runs beside it, on the second
+        // core, so that a wrong picture costs the command no more time than a right one (its 60 ms, cold).
+        FutureTask<SystematicError> hint = new FutureTask<>(
+                () -> SystematicError.find(ours.panel(), theirs.panel(), Comparison.N, tolerance));
+        Thread hinting = new Thread(hint, "simpview-compare-hint");
+        hinting.setDaemon(true);
+        hinting.start();
         Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
-        ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min);
+        ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min,
+                awaitHint(hint));
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
         if (diff != null) {
@@ -296,6 +307,18 @@ public final class CompareCommand implements Callable<Integer> {
             }
         }
         return report.passes() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** The hint the search found; an error of its own is the program's and is thrown as such. */
+    private static SystematicError awaitHint(FutureTask<SystematicError> hint) {
+        try {
+            return hint.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return null; // the command is being stopped: no hint
+        } catch (ExecutionException e) {
+            throw new IllegalStateException(e.getCause());
+        }
     }
 
     /** Why a picture of the first assignment's page is not compared with {@code target}, and what to give instead. */

@@ -23,9 +23,14 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     public static final int REGIONS_LISTED = 5;
 
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
+        return of(theirs, against, comparison, tolerance, minimum, SystematicError.find(comparison, tolerance));
+    }
+
+    /** The same, with the hint found already ({@link SystematicError#find} of the same panels and tolerance). */
+    public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum,
+            SystematicError systematic) {
         return new ComparisonReport(theirs, against, comparison, theirs.margins(tolerance),
-                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1,
-                SystematicError.find(comparison, tolerance));
+                DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1, systematic);
     }
 
     /** Judged by a rubric's rule (its tolerance, minimum share and pixel limit; the comparison made with its deviation). */
