@@ -1,5 +1,6 @@
 package simpview.compare;
 
+import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -25,7 +26,7 @@ public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePa
      * the top, {@code names} simpview's panels' (at k - 1): its own panel moved or turned first, another panel
      * else; null when neither explains it.
      */
-    public static PanelHint of(int[][] ours, int[][] theirs, int k, int n, int tolerance, List<String> names) {
+    static PanelHint of(int[][] ours, int[][] theirs, int k, int n, int tolerance, List<String> names) {
         SystematicError own = SystematicError.find(ours[k - 1], theirs[k - 1], n, tolerance);
         return own != null ? own : SwappedPanel.find(ours, theirs, k, n, tolerance, names);
     }
@@ -35,7 +36,7 @@ public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePa
      * top right, 3 bottom left, 4 bottom right): each panel's own ({@link #of}), or the whole page turned
      * ({@link WholePage}: every panel gets that one) where that leaves more of the page within the tolerance.
      */
-    public static PanelHint[] ofPage(int[][] ours, int[][] theirs, int n, int tolerance, List<String> names) {
+    static PanelHint[] ofPage(int[][] ours, int[][] theirs, int n, int tolerance, List<String> names) {
         PanelHint[] hints = new PanelHint[ours.length];
         double explained = 0; // the mean share within the tolerance, each panel's hint undone
         for (int k = 1; k <= ours.length; k++) {
@@ -47,7 +48,7 @@ public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePa
         // panel left as it is, looks much like a page upside down when its panels are nearly symmetric.
         WholePage page = WholePage.find(ours, theirs, n, tolerance);
         if (page != null && page.shareThere() > explained) {
-            java.util.Arrays.fill(hints, page);
+            Arrays.fill(hints, page);
         }
         return hints;
     }
