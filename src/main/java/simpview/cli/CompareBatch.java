@@ -62,6 +62,7 @@ import simpview.pages.PageContext;
 import simpview.pages.SceneList;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
+import simpview.surface.PageCanvas;
 
 /**
  * {@code simpview compare --dir ...}: every picture in a folder (and its
@@ -910,7 +911,7 @@ public final class CompareBatch {
         }
         List<BatchRow> rows = new ArrayList<>();
         // the hints by panel 1's tolerance: a page turned whole is one hint for its four panels
-        PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL,
+        PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL, PageCanvas.SIZE,
                 firstAssignmentRule(page, 1).tolerance(), Assignment1.page(page).panelNames());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);

@@ -39,6 +39,7 @@ import simpview.pages.PageContext;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
 @Command(name = "compare",
@@ -389,7 +390,8 @@ public final class CompareCommand implements Callable<Integer> {
             ourPanels[k] = compared[k].ours();
             theirPanels[k] = compared[k].theirs();
         }
-        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, tolerance, shown.panelNames());
+        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, tolerance,
+                shown.panelNames());
         if (hints[0] instanceof WholePage whole) {
             out.println("hint: " + whole.hint(A1Layout.PANEL));
         } else {

@@ -32,11 +32,11 @@ public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePa
     }
 
     /**
-     * Each panel's hint (null where none) on a page of four n x n panels laid out two by two (1 top left, 2
+     * Each panel's hint (null where none) on a page ({@code pageSide} a side) of four n x n panels laid out two by two (1 top left, 2
      * top right, 3 bottom left, 4 bottom right): each panel's own ({@link #of}), or the whole page turned
      * ({@link WholePage}: every panel gets that one) where that leaves more of the page within the tolerance.
      */
-    static PanelHint[] ofPage(int[][] ours, int[][] theirs, int n, int tolerance, List<String> names) {
+    static PanelHint[] ofPage(int[][] ours, int[][] theirs, int n, int pageSide, int tolerance, List<String> names) {
         PanelHint[] hints = new PanelHint[ours.length];
         double explained = 0; // the mean share within the tolerance, each panel's hint undone
         for (int k = 1; k <= ours.length; k++) {
@@ -46,8 +46,8 @@ public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePa
         }
         // The page turned whole where that explains it better: a page whose rows of panels are swapped, each
         // panel left as it is, looks much like a page upside down when its panels are nearly symmetric.
-        WholePage page = WholePage.find(ours, theirs, n, tolerance);
-        if (page != null && page.shareThere() > explained) {
+        WholePage page = WholePage.find(ours, theirs, n, pageSide, tolerance);
+        if (page != null && page.shareThere() >= explained) { // a tie: the page, the simpler account
             Arrays.fill(hints, page);
         }
         return hints;

@@ -78,8 +78,11 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
 
     /** The farthest move, in pixels either way, tried for a panel that is not turned or is upside down. */
     public static final int MOST_MOVED = 4;
-    /** The farthest the best way's move is followed out, a pixel at a time, while it comes nearer. */
-    public static final int FARTHEST_MOVED = 16;
+    /**
+     * The farthest the best way's move is followed out, a pixel at a time, while it comes nearer; a move that
+     * reaches it is not named, its true size not known.
+     */
+    public static final int FARTHEST_MOVED = 24;
     /** How many times fewer pixels beyond the tolerance a way must leave than the picture as it stands. */
     public static final int BETTER = 4;
     /** The least share of the matched pixels within the tolerance for a way to be named. */
@@ -148,7 +151,9 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         // The ways tried move by at most MOST_MOVED (one pixel for the rarer turns); from the best, the move
         // is followed a pixel at a time while a neighbouring one is nearer, up to FARTHEST_MOVED: so a panel
-        // 5 px off is not called 4 px off, nor one 6 px down "1 px right and 4 px down".
+        // 5 px off is not called 4 px off, nor one 6 px down "1 px right and 4 px down". Where no step from
+        // the first search's 4 px comes nearer, the move is not followed: page 1's thin lines far apart moved
+        // 10 px or more, page 2's blerped mesh moved more than 22, get no hint.
         for (boolean nearer = true; nearer; ) {
             nearer = false;
             for (int k = 0; k < 9; k++) {
@@ -165,6 +170,9 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                     nearer = true;
                 }
             }
+        }
+        if (Math.abs(best.right) == FARTHEST_MOVED || Math.abs(best.down) == FARTHEST_MOVED) {
+            return null; // it may be farther still: a hint of the wrong size would mislead
         }
         Way asIs = new Way(Turn.NONE, 0, 0);
         boolean moved = best.turn != Turn.NONE || best.right != 0 || best.down != 0;
@@ -312,17 +320,22 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         return hint(n, "panel");
     }
 
-    /** The same of {@code what} ("panel", "page"), its panels n x n pixels. */
+    /** The same of {@code what} ("panel", "page"), n x n pixels. */
     String hint(int n, String what) {
         String within = "within " + tolerance + "/255";
-        String share = String.format(Locale.ROOT, "%s, %s of the pixels it then matches are %s (%s of the "
-                + "%s as it stands)", undone(), Percent.of(shareThere), within, Percent.of(shareAsIs), what);
-        return "your " + what + " is simpview's " + brief() + ": " + share + ". " + advice(n);
+        String share = String.format(Locale.ROOT, "%s, %s of the pixels it then matches are %s, exactly (%s of "
+                + "the %s as it stands)", undone(), Percent.of(shareThere), within, Percent.of(shareAsIs), what);
+        return "your " + what + " is simpview's " + brief() + ": " + share + ". " + advice(n, what);
     }
 
     /** "turned back", "moved back", "x and y swapped back, red and blue too", ... */
     private String undone() {
-        String undo = turn == Turn.TRANSPOSED ? "x and y swapped back" : turn != Turn.NONE ? "turned back" : "";
+        String undo = switch (turn) {
+            case TRANSPOSED -> "x and y swapped back";
+            case MIRRORED -> "mirrored back";
+            case UPSIDE_DOWN, HALF_TURN -> "turned back";
+            case NONE -> "";
+        };
         if (right != 0 || down != 0) {
             undo = undo.isEmpty() ? "moved back" : undo.replace(" back", "") + " and moved back";
         }
@@ -332,13 +345,14 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         return "so " + undo;
     }
 
-    private String advice(int n) {
+    /** Where to look, for a {@code what} ("panel", "page") of n x n pixels. */
+    private String advice(int n, String what) {
         String rows = "the pixel of y is row " + (n - 1) + " - y";
         String advice = switch (turn) {
             case UPSIDE_DOWN -> "Check how you turn y: an image's rows run down from its top, the course's y up "
-                    + "from the panel's bottom-left pixel, so " + rows + ".";
+                    + "from the " + what + "'s bottom-left pixel, so " + rows + ".";
             case MIRRORED, HALF_TURN -> "Check how your x and y become a column and a row: x runs right from the "
-                    + "panel's left edge, y up from its bottom edge (" + rows + ").";
+                    + what + "'s left edge, y up from its bottom edge (" + rows + ").";
             case TRANSPOSED -> "Check the order of x and y where you set a pixel: x is the column, y the row.";
             case NONE -> right != 0 || down != 0
                     ? "Check how points become pixels: the panel's offset in the page, rounding, and the row of y ("

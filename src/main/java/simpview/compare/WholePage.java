@@ -11,17 +11,18 @@ package simpview.compare;
  * ({@link SystematicError}). A page only moved, or with red and blue swapped,
  * is left to each panel's own hint, which says the same.
  *
- * @param error what the whole page is, its panels' side {@code n}
+ * @param error what the square of the four panels is
+ * @param pageSide the page's side, in pixels, margins included
  */
-public record WholePage(SystematicError error) implements PanelHint {
+public record WholePage(SystematicError error, int pageSide) implements PanelHint {
 
-    /** A page of four n x n panels that is simpview's turned, or null. */
-    static WholePage find(int[][] ours, int[][] theirs, int n, int tolerance) {
+    /** A page of four n x n panels, {@code pageSide} pixels a side, that is simpview's turned, or null. */
+    static WholePage find(int[][] ours, int[][] theirs, int n, int pageSide, int tolerance) {
         if (ours.length != 4 || theirs.length != 4) {
             return null;
         }
         SystematicError found = SystematicError.find(square(ours, n), square(theirs, n), 2 * n, tolerance);
-        return found == null || found.turn() == SystematicError.Turn.NONE ? null : new WholePage(found);
+        return found == null || found.turn() == SystematicError.Turn.NONE ? null : new WholePage(found, pageSide);
     }
 
     /** Panels 1 to 4 side by side, two by two, row by row from the top: a 2n x 2n panel. */
@@ -48,9 +49,9 @@ public record WholePage(SystematicError error) implements PanelHint {
         return "like simpview's whole page " + error.brief();
     }
 
-    /** The hint, its advice for panels of n x n pixels (each panel's y runs up from its own bottom-left pixel). */
+    /** The hint, its advice for the page's rows (the page's y runs up from its bottom-left pixel); n is a panel's side. */
     @Override
     public String hint(int n) {
-        return error.hint(n, "page");
+        return error.hint(pageSide, "page");
     }
 }

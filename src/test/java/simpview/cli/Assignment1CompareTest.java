@@ -105,7 +105,8 @@ class Assignment1CompareTest {
             assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
             assertTrue(run.out().contains("\nhint: your page is simpview's upside down: so turned back, 100.00 % of the"
                     + " pixels it then matches are within 8/255"), run.out());
-            assertTrue(run.out().contains("the pixel of y is row 299 - y"), run.out());
+            assertTrue(run.out().contains("the course's y up from the page's bottom-left pixel, so the pixel of y is"
+                    + " row 749 - y"), run.out());
             assertEquals(1, run.out().split("hint:", -1).length - 1, "one hint for the page: " + run.out());
             CliRun check = CliRun.of("check", folder.toString());
             assertTrue(check.out().matches("(?s).*\nhint: page" + number + "\\.png \\(A1 page " + number
@@ -113,6 +114,23 @@ class Assignment1CompareTest {
             assertEquals(1, check.out().split("hint:", -1).length - 1, "one hint for the page: " + check.out());
             assertTrue(check.err().contains("looks like simpview's whole page upside down"), check.err());
         }
+        // Page 2 transposed: its panels 1 to 3 are alike, so each panel's own hint explains it as well as the
+        // page's; the tie goes to the page, one hint.
+        Path two = dir.resolve("p2.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2", "--out", two.toString())
+                .exitCode());
+        BufferedImage page2 = ImageIO.read(two.toFile());
+        BufferedImage across = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                across.setRGB(x, y, page2.getRGB(y, x));
+            }
+        }
+        Path transposed = dir.resolve("transposed2.png");
+        ImageIO.write(across, "png", transposed.toFile());
+        CliRun turned = CliRun.of("compare", transposed.toString(), "--assignment", "1", "--page", "2");
+        assertTrue(turned.out().contains("\nhint: your page is simpview's transposed (x and y swapped)"), turned.out());
+        assertEquals(1, turned.out().split("hint:", -1).length - 1, "one hint for the page: " + turned.out());
         Path spec = dir.resolve("spec1.png");
         assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", spec.toString())
                 .exitCode());

@@ -73,7 +73,7 @@ public class CompareCommandTest {
         CliRun run = CliRun.of("compare", png("over.png", over).toString(), "--page", "2");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
         assertTrue(run.out().contains("\nhint: your panel is simpview's upside down: so turned back, 100.00 % of the "
-                + "pixels it then matches are within 8/255 (" + format(asPrinted(independentDirect(page, over, 8)))
+                + "pixels it then matches are within 8/255, exactly (" + format(asPrinted(independentDirect(page, over, 8)))
                 + " % of the panel as it stands). Check how you turn y"), run.out());
     }
 

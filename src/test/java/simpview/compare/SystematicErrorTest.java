@@ -84,6 +84,7 @@ class SystematicErrorTest {
         "2, NONE, 5, 0, false", // beyond the first search: followed out, not called 4
         "2, NONE, 0, 6, false",
         "2, NONE, -9, -7, false",
+        "2, NONE, 20, 0, false", // followed out from the first search's 4 px, a pixel at a time
         "2, TRANSPOSED, 2, 0, false",
         "2, UPSIDE_DOWN, 0, 0, false",
         "2, UPSIDE_DOWN, 0, -1, false",
