@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import java.awt.image.BufferedImage;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -111,13 +112,18 @@ class GradingCommandTest {
                 "--out-dir", out.toString(), "--diffs", "some").exitCode());
     }
 
+    /** compare --pages 1 of an empty folder of submissions, judged by a compare.json of {@code rubric}. */
+    private CliRun gradedByRubric(String rubric) throws IOException {
+        Path file = dir.resolve("compare.json");
+        Files.writeString(file, rubric);
+        Files.createDirectories(dir.resolve("subs"));
+        return CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1", "--rubric",
+                file.toString(), "--out-dir", dir.resolve("o").toString());
+    }
+
     @Test
     void aBadRubricIsAUsageErrorNamingTheLine() throws Exception {
-        Path rubric = dir.resolve("compare.json");
-        Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\", \"deviation\": 5}\n]}");
-        Files.createDirectories(dir.resolve("subs"));
-        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1", "--rubric",
-                rubric.toString(), "--out-dir", dir.resolve("o").toString());
+        CliRun run = gradedByRubric("{\"pages\": [\n {\"match\": \"1\", \"deviation\": 5}\n]}");
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
         assertTrue(run.err().contains("compare.json: line 2, column"), run.err());
         assertTrue(run.err().contains("is not a position deviation of 0, 1 or 2 pixels"), run.err());
@@ -126,16 +132,13 @@ class GradingCommandTest {
 
     @Test
     void aKeyGivenTwiceInTheRubricIsAUsageError() throws Exception {
-        Path rubric = dir.resolve("compare.json");
-        Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\", \"points\": 2, \"points\": 5}\n]}");
-        Files.createDirectories(dir.resolve("subs"));
-        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1", "--rubric",
-                rubric.toString(), "--out-dir", dir.resolve("o").toString());
+        CliRun run = gradedByRubric("{\"pages\": [\n {\"match\": \"1\", \"points\": 2, \"points\": 5}\n]}");
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
         assertTrue(run.err().contains("compare.json: line 2, column 38 ($.pages[0].points): \"points\" is given twice"),
                 run.err());
         assertFalse(run.showsStackTrace(), run.err());
-        CliRun check = CliRun.of("check", dir.resolve("subs").toString(), "--rubric", rubric.toString());
+        CliRun check = CliRun.of("check", dir.resolve("subs").toString(), "--rubric",
+                dir.resolve("compare.json").toString());
         assertEquals(ExitCode.USAGE_ERROR, check.exitCode(), check.err());
         assertTrue(check.err().contains("\"points\" is given twice"), check.err());
     }

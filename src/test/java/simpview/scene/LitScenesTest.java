@@ -41,6 +41,24 @@ class LitScenesTest {
                 () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE));
     }
 
+    /** A monitor that keeps every warning it is told in {@code warnings}. */
+    private static SceneMonitor keeping(java.util.List<String> warnings) {
+        return new SceneMonitor() {
+            @Override
+            public void warning(String message) {
+                warnings.add(message);
+            }
+        };
+    }
+
+    /** The warnings of one drawing of {@code scene} on a fresh canvas, its files kept by {@code library}. */
+    private static java.util.List<String> warningsOf(Path scene, simpview.scene.simp.SceneLibrary library)
+            throws Exception {
+        java.util.List<String> warnings = new java.util.ArrayList<>();
+        ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), keeping(warnings));
+        return warnings;
+    }
+
     private static int[] rgb(PageCanvas canvas, int x, int y) {
         int p = canvas.panel().getPixel(x, y);
         return new int[] {p >> 16 & 0xFF, p >> 8 & 0xFF, p & 0xFF};
@@ -224,12 +242,7 @@ class LitScenesTest {
     @Test
     void aColourOutsideZeroToOneIsClampedWithOneWarningNamingTheFirstLine() throws Exception {
         java.util.List<String> warnings = new java.util.ArrayList<>();
-        SceneMonitor monitor = new SceneMonitor() {
-            @Override
-            public void warning(String message) {
-                warnings.add(message);
-            }
-        };
+        SceneMonitor monitor = keeping(warnings);
         PageCanvas canvas = new PageCanvas();
         ScenePipeline.draw(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
                 "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas,
@@ -244,12 +257,7 @@ class LitScenesTest {
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 2 0 0\nv 0 50 -100 1 -1 0\nf 1 2 3\n");
         for (int drawing = 0; drawing < 2; drawing++) { // the model parsed, then kept and replayed
             java.util.List<String> warnings = new java.util.ArrayList<>();
-            SceneMonitor monitor = new SceneMonitor() {
-                @Override
-                public void warning(String message) {
-                    warnings.add(message);
-                }
-            };
+            SceneMonitor monitor = keeping(warnings);
             simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
             PageCanvas canvas = new PageCanvas();
             Path scene = write("m", "ambient 1 1 1", "obj \"m\"", "obj \"m\"");
@@ -263,23 +271,13 @@ class LitScenesTest {
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
         java.util.List<String> none = new java.util.ArrayList<>();
         ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\""), new PageCanvas(),
-                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
-                    @Override
-                    public void warning(String message) {
-                        none.add(message);
-                    }
-                });
+                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(none));
         assertEquals(java.util.List.of(), none, "colours within 0 to 1 warn of nothing");
         // the first in reading order, a model's or the scene's own
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 2 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
         java.util.List<String> first = new java.util.ArrayList<>();
         ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\"", "line (0 0 -5 1.5 0 0) (1 1 -5 0 0 0)"),
-                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
-                    @Override
-                    public void warning(String message) {
-                        first.add(message);
-                    }
-                });
+                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(first));
         assertEquals(java.util.List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 first);
     }
@@ -296,13 +294,7 @@ class LitScenesTest {
         Path scene = write("de", "obj \"de\"");
         simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
         for (int drawing = 0; drawing < 2; drawing++) {
-            java.util.List<String> warnings = new java.util.ArrayList<>();
-            ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), new SceneMonitor() {
-                @Override
-                public void warning(String message) {
-                    warnings.add(message);
-                }
-            });
+            java.util.List<String> warnings = warningsOf(scene, library);
             assertEquals(java.util.List.of("de.obj:1:3: '0,5' is read as two numbers, so this v line's 6 numbers are"
                     + " x y z r g b (a comma separates two numbers: one and a half is 1.5, not 1,5); this is the first"
                     + " such line", "de.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
@@ -322,13 +314,7 @@ class LitScenesTest {
         Path scene = write("s", "ambient 1 1 1", "obj \"empty\"", "obj \"tri\"", "obj \"empty\"");
         simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
         for (int drawing = 0; drawing < 2; drawing++) {
-            java.util.List<String> warnings = new java.util.ArrayList<>();
-            ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), new SceneMonitor() {
-                @Override
-                public void warning(String message) {
-                    warnings.add(message);
-                }
-            });
+            java.util.List<String> warnings = warningsOf(scene, library);
             assertEquals(java.util.List.of("empty.obj: no f lines, so nothing is drawn (the file is empty)"), warnings,
                     "drawing " + drawing);
         }

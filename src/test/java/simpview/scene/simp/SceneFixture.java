@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Supplier;
 import simpview.geometry.Vertex;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
@@ -70,25 +71,30 @@ final class SceneFixture {
     }
 
     /** A drawable that must never be written: the recording renderers do not touch it. */
-    static final Drawable NOWHERE = new Drawable() {
-        @Override
-        public int width() {
-            return 650;
-        }
+    static final Drawable NOWHERE = throwingAtEveryWrite(() -> new AssertionError("recording renderers draw nothing"));
 
-        @Override
-        public int height() {
-            return 650;
-        }
+    /** A 650x650 drawable whose every write throws the error {@code error} makes. */
+    static Drawable throwingAtEveryWrite(Supplier<Error> error) {
+        return new Drawable() {
+            @Override
+            public int width() {
+                return 650;
+            }
 
-        @Override
-        public void setPixel(int x, int y, double z, int argb) {
-            throw new AssertionError("recording renderers draw nothing");
-        }
+            @Override
+            public int height() {
+                return 650;
+            }
 
-        @Override
-        public int getPixel(int x, int y) {
-            return 0;
-        }
-    };
+            @Override
+            public void setPixel(int x, int y, double z, int argb) {
+                throw error.get();
+            }
+
+            @Override
+            public int getPixel(int x, int y) {
+                return 0;
+            }
+        };
+    }
 }

@@ -258,27 +258,7 @@ class ScenePipelineTest {
     @Test
     void memoryRunningOutOnTheDrawingThreadsNamesTheScene() throws Exception {
         Path scene = write("drawn.simp", "polygon (0 0 -1) (50 0 -1) (0 50 -1)");
-        Drawable full = new Drawable() {
-            @Override
-            public int width() {
-                return 650;
-            }
-
-            @Override
-            public int height() {
-                return 650;
-            }
-
-            @Override
-            public void setPixel(int x, int y, double z, int argb) {
-                throw new OutOfMemoryError("Java heap space");
-            }
-
-            @Override
-            public int getPixel(int x, int y) {
-                return 0;
-            }
-        };
+        Drawable full = SceneFixture.throwingAtEveryWrite(() -> new OutOfMemoryError("Java heap space"));
         SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.drawDepthCued(scene, full,
                 SceneMonitor.NONE, simpview.surface.DrawingThreads.of(2), null));
         assertEquals(scene, e.file());
