@@ -13,9 +13,18 @@ public record CliRun(int exitCode, String out, String err) {
 
     /** Runs with a display, or without one when {@code displayMissing} says so. */
     static CliRun with(BooleanSupplier displayMissing, String... args) {
+        return run(new SimpviewCommand(displayMissing), args);
+    }
+
+    /** Runs with simpview's own scenes looked for in {@code ownScenes}, as a start from another folder would. */
+    static CliRun withOwnScenes(java.nio.file.Path ownScenes, String... args) {
+        return run(new SimpviewCommand(() -> false, ownScenes), args);
+    }
+
+    private static CliRun run(SimpviewCommand command, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        int code = Main.execute(new SimpviewCommand(displayMissing), args, new PrintWriter(out), new PrintWriter(err));
+        int code = Main.execute(command, args, new PrintWriter(out), new PrintWriter(err));
         return new CliRun(code, out.toString(), err.toString());
     }
 

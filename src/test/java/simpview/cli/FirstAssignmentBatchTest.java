@@ -354,6 +354,16 @@ class FirstAssignmentBatchTest {
         assertTrue(check.err().contains("simpview check: every picture in " + mine + " is a page of the first "
                 + "assignment, so its pages 1 to 5 are asked for, as --assignment 1 asks for them, and not the eight "
                 + "pages (--pages RANGE asks for those)\n"), check.err());
+        // simpview's own scenes (pages 4 and 5 of the eight) not found, as from an IDE started in another folder:
+        // the eight pages are not what these pictures are compared with, so nothing stops
+        CliRun elsewhere = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
+        assertEquals(ExitCode.OK, elsewhere.exitCode(), elsewhere.out() + elsewhere.err());
+        assertTrue(elsewhere.out().contains("A1 page 5"), elsewhere.out());
+        png(mine.resolve("page4.png"), new simpview.pages.PageRenderer().renderImage(4, PageContext.defaults()));
+        CliRun eighth = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
+        assertEquals(ExitCode.SCENE_ERROR, eighth.exitCode(), eighth.out() + eighth.err());
+        assertTrue(eighth.err().contains("nothing was graded: simpview cannot draw page 4 itself"), eighth.err());
+        png(mine.resolve("page4.png"), page(4));
         Files.delete(mine.resolve("page5.png"));
         Files.writeString(mine.resolve("page5.webp"), "not read");
         CliRun four = CliRun.of("check", mine.toString());
