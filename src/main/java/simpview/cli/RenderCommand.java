@@ -45,6 +45,7 @@ import simpview.surface.Rgb;
             "  simpview render --all --simp-dir course/ --out-dir pages/",
             "  simpview render --assignment 1 --page 2 --out a1-page2.png",
             "  simpview render --assignment 1 --all --seed 7 --out-dir a1/",
+            "  simpview render house.simp --out house.png",
             "  simpview render --scene house.simp --near-color 0,1,0 --out house.png",
             "  simpview render --scene house.simp --own-colors --out house.png",
             "  simpview render --scene house.simp --out-dir pictures/",
@@ -84,7 +85,8 @@ public final class RenderCommand implements Callable<Integer> {
     @ParentCommand
     private SimpviewCommand parent;
 
-    @ArgGroup(exclusive = true, multiplicity = "1")
+    /** What to render; when no option says, the SCENE files given do ({@link #impliedByScenes}). */
+    @ArgGroup(exclusive = true, multiplicity = "0..1")
     private What what;
 
     @Option(names = "--assignment", paramLabel = "A",
@@ -119,8 +121,9 @@ public final class RenderCommand implements Callable<Integer> {
     private Rgb far;
 
     @Parameters(paramLabel = "SCENE", arity = "0..*",
-            description = "--contact-sheet: scenes to tile instead of the pages (a folder: its .simp files), each drawn "
-                    + "as --scene draws it")
+            description = "scenes to draw without naming an option: one file as --scene draws it, several (or a "
+                    + "folder) as --scenes; with --contact-sheet, scenes to tile instead of the pages (a folder: its "
+                    + ".simp files), each drawn as --scene draws it")
     private List<Path> scenes = new ArrayList<>();
 
     @Option(names = {"--own-colors", "--own-colours"},
@@ -165,6 +168,9 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Options that make no sense together are usage errors (exit 2), not silently ignored. */
     private void checkOptions() {
+        if (what == null) {
+            what = impliedByScenes();
+        }
         if (what.scenes != null) {
             checkScenes();
             return;
@@ -215,6 +221,24 @@ public final class RenderCommand implements Callable<Integer> {
         usage(!ownColours || near == null && far == null,
                 "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
         usage(out == null || PngFiles.isPngName(out), "--out " + out + ": " + PngFiles.PNG_ONLY);
+    }
+
+    /**
+     * What {@code simpview render house.simp --out house.png} means, no option saying what to render: one scene
+     * file is drawn as --scene draws it, several files or a folder as --scenes draws them. Without a SCENE
+     * either, the usage error names the choices.
+     */
+    private What impliedByScenes() {
+        usage(!scenes.isEmpty(), "say what to render: --page N, --all, --scene F.simp, --scenes F|DIR... or "
+                + "--contact-sheet (or give a scene file: simpview render house.simp --out house.png)");
+        What implied = new What();
+        if (scenes.size() == 1 && !Files.isDirectory(scenes.get(0))) {
+            implied.scene = scenes.get(0);
+        } else {
+            implied.scenes = List.copyOf(scenes);
+        }
+        scenes = new ArrayList<>();
+        return implied;
     }
 
     /** --scenes: the list must name scenes, and the pictures go to a folder. */

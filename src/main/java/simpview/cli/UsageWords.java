@@ -35,8 +35,9 @@ final class UsageWords {
     static String of(ParameterException e, String command) {
         String message = e.getMessage();
         if (e instanceof MaxValuesExceededException && message.startsWith("Error: expected only one match")) {
-            // "(--page=N | --all | ...)={--page=3} and (--page=N | --all | ...)={--page=4}"
-            int firstMatch = message.indexOf(")={");
+            // "(--page=N | --all | ...)={--page=3} and (--page=N | --all | ...)={--page=4}"; an optional group
+            // is in brackets: "[--page=N | --all | ...]={--page=3} and ..."
+            int firstMatch = Math.max(message.indexOf(")={"), message.indexOf("]={"));
             List<String> found = MATCHED.matcher(message).results().map(r -> r.group(1)).toList();
             if (firstMatch > 0 && !found.isEmpty()) {
                 return "give only one of " + options(message.substring(0, firstMatch)) + ": found "

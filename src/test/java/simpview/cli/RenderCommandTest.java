@@ -78,6 +78,36 @@ class RenderCommandTest {
         assertFalse(Files.exists(out));
     }
 
+    /**
+     * {@code render house.simp --out house.png}, no option saying what to render: one file is drawn as --scene
+     * draws it, several or a folder as --scenes draws them; with nothing to render, the choices are named.
+     */
+    @Test
+    void sceneFilesAloneSayWhatToRender() throws Exception {
+        Path near = scene("a/near.simp", -10);
+        Path far = scene("b/far.simp", -150);
+        Path picture = dir.resolve("near.png");
+        CliRun one = CliRun.of("render", near.toString(), "--out", picture.toString());
+        assertEquals(ExitCode.OK, one.exitCode(), one.err());
+        CliRun asScene = CliRun.of("render", "--scene", near.toString(), "--out", dir.resolve("same.png").toString());
+        assertEquals(ExitCode.OK, asScene.exitCode(), asScene.err());
+        assertTrue(java.util.Arrays.equals(Files.readAllBytes(picture), Files.readAllBytes(dir.resolve("same.png"))));
+        Path out = dir.resolve("out");
+        CliRun several = CliRun.of("render", near.toString(), dir.resolve("b").toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, several.exitCode(), several.err());
+        assertEquals(List.of("far.png", "near.png"), names(out));
+        assertEquals(centre(picture), centre(out.resolve("near.png")));
+        CliRun unsaid = CliRun.of("render", far.toString());
+        assertEquals(ExitCode.USAGE_ERROR, unsaid.exitCode(), unsaid.err());
+        assertTrue(unsaid.err().startsWith("simpview: missing --out F.png (or --out-dir D)"), unsaid.err());
+        CliRun nothing = CliRun.of("render", "--out", picture.toString());
+        assertEquals(ExitCode.USAGE_ERROR, nothing.exitCode(), nothing.err());
+        assertTrue(nothing.err().startsWith("simpview: say what to render: --page N, --all, --scene F.simp, --scenes "
+                + "F|DIR... or --contact-sheet (or give a scene file: simpview render house.simp --out house.png)"),
+                nothing.err());
+        assertFalse(one.showsStackTrace() || several.showsStackTrace() || nothing.showsStackTrace());
+    }
+
     @Test
     void theHelpSaysHowScenesOfOneNameAreNamed() {
         CliRun run = CliRun.of("render", "--help");

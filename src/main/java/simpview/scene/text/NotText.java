@@ -2,13 +2,13 @@ package simpview.scene.text;
 
 /**
  * What a file that is not lines of UTF-8 text is, for a reader's message:
- * UTF-16 text (what Windows Notepad saves as "Unicode"), or no text at all
+ * UTF-16 text (what Windows Notepad saves as "Unicode") or UTF-32, or no text at all
  * (a picture or a program renamed), named by its first byte that no text
  * holds and, when its first bytes say so, by what it looks like. A reader
  * asks only once a file failed to read or gave nothing, so a good file
  * costs nothing.
  *
- * @param line the line the problem is on (1 for UTF-16: the whole file)
+ * @param line the line the problem is on (1 for UTF-16 and UTF-32: the whole file)
  * @param problem the words: what the file is, and what was expected
  */
 public record NotText(int line, String problem) {
@@ -32,15 +32,17 @@ public record NotText(int line, String problem) {
      * The problem with the bytes b[from, to), which stand at {@code offset}
      * in the file and start on line {@code line}; null when they could be
      * lines of text. At offset 0 the first bytes are also looked at: UTF-16
-     * text, or the start of a known kind of file.
+     * or UTF-32 text, or the start of a known kind of file.
      *
      * @param kind what the file should be, "a SIMP file" or "an .obj file"
      */
     public static NotText find(byte[] b, int from, int to, long offset, int line, String kind) {
         if (offset == 0) {
-            String utf16 = utf16(b, from, to);
-            if (utf16 != null) {
-                return new NotText(1, "UTF-16 text, not UTF-8: " + utf16 + "; " + kind
+            String utf32 = utf32(b, from, to);
+            String utf16 = utf32 == null ? utf16(b, from, to) : null;
+            if (utf32 != null || utf16 != null) {
+                return new NotText(1, (utf32 != null ? "UTF-32 text, not UTF-8: " + utf32
+                        : "UTF-16 text, not UTF-8: " + utf16) + "; " + kind
                         + " is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)");
             }
         }
@@ -57,6 +59,41 @@ public record NotText(int line, String problem) {
             }
         }
         return null;
+    }
+
+    /**
+     * How b[from, to), a file's first bytes, show UTF-32 text (four bytes a character); null when they do not.
+     * Asked before UTF-16: little-endian UTF-32's mark, FF FE 00 00, starts as UTF-16's does.
+     */
+    private static String utf32(byte[] b, int from, int to) {
+        if (startsWith(b, from, to, 0xFF, 0xFE, 0, 0)) {
+            return "it starts with the bytes FF FE 00 00";
+        }
+        if (startsWith(b, from, to, 0, 0, 0xFE, 0xFF)) {
+            return "it starts with the bytes 00 00 FE FF";
+        }
+        int quads = Math.min(16, (to - from) / 4);
+        if (quads < 2) {
+            return null;
+        }
+        boolean little = true;
+        boolean big = true;
+        for (int k = 0; k < quads; k++) {
+            int at = from + 4 * k;
+            boolean middleZero = b[at + 1] == 0 && b[at + 2] == 0;
+            little &= middleZero && b[at] != 0 && b[at + 3] == 0;
+            big &= middleZero && b[at] == 0 && b[at + 3] != 0;
+        }
+        return little || big ? "three of every four of its first bytes are 0" : null;
+    }
+
+    /** Whether b[from, to) starts with the bytes {@code start}. */
+    private static boolean startsWith(byte[] b, int from, int to, int... start) {
+        boolean same = to - from >= start.length;
+        for (int k = 0; same && k < start.length; k++) {
+            same = (b[from + k] & 0xFF) == start[k];
+        }
+        return same;
     }
 
     /** How b[from, to), a file's first bytes, show UTF-16 text; null when they do not. */
@@ -85,12 +122,7 @@ public record NotText(int line, String problem) {
     /** What a file starting with b[from, to) is, when its first bytes are those of a known kind; else null. */
     private static String looksLike(byte[] b, int from, int to) {
         for (Look look : LOOKS) {
-            int[] start = look.start();
-            boolean same = to - from >= start.length;
-            for (int k = 0; same && k < start.length; k++) {
-                same = (b[from + k] & 0xFF) == start[k];
-            }
-            if (same) {
+            if (startsWith(b, from, to, look.start())) {
                 return look.what();
             }
         }

@@ -64,6 +64,22 @@ class ObjNotTextTest {
                 fails(MODEL, StandardCharsets.UTF_16BE).problem());
     }
 
+    /** UTF-32 is named as itself, not as the UTF-16 its little-endian mark starts like. */
+    @Test
+    void utf32IsNamed() throws IOException {
+        Charset le = Charset.forName("UTF-32LE");
+        Charset be = Charset.forName("UTF-32BE");
+        assertEquals("UTF-32 text, not UTF-8: it starts with the bytes FF FE 00 00" + SAVE_AS_UTF8,
+                fails("\uFEFF" + MODEL, le).problem());
+        assertEquals("UTF-32 text, not UTF-8: it starts with the bytes 00 00 FE FF" + SAVE_AS_UTF8,
+                fails("\uFEFF" + MODEL, be).problem());
+        assertEquals("UTF-32 text, not UTF-8: three of every four of its first bytes are 0" + SAVE_AS_UTF8,
+                fails(MODEL, le).problem());
+        assertEquals("UTF-32 text, not UTF-8: three of every four of its first bytes are 0" + SAVE_AS_UTF8,
+                fails(MODEL, be).problem());
+        assertEquals(1, fails(MODEL, be).line());
+    }
+
     /** A picture renamed .obj: its first byte that no text holds, placed, and what its first bytes say it is. */
     @Test
     void aPictureRenamedObjIsNamed() throws IOException {
