@@ -135,12 +135,25 @@ final class FileStack implements AutoCloseable {
             return e;
         }
         StringBuilder chain = new StringBuilder();
+        Path before = e.file();
         for (int k = innermost; k >= 0; k--) {
             SimpReader including = readers.get(k);
             chain.append(chain.length() == 0 ? "" : ", included from ")
-                    .append(including.file().getFileName()).append(':').append(including.lineNumber());
+                    .append(named(including.file(), before)).append(':').append(including.lineNumber());
+            before = including.file();
         }
         return e.includedFrom(chain.toString());
+    }
+
+    /**
+     * An including file as the chain names it: by its name alone when it is in the folder of the file named
+     * before it (the course's scenes include each other so), else by its path as it was opened, so that two
+     * folders' part.simp do not read alike.
+     */
+    private static Path named(Path including, Path before) {
+        Path folder = including.toAbsolutePath().normalize().getParent();
+        Path beforeFolder = before.toAbsolutePath().normalize().getParent();
+        return folder != null && folder.equals(beforeFolder) ? including.getFileName() : including;
     }
 
     /** Acts on a {@code file} command just read from the top file. */

@@ -274,4 +274,19 @@ class FileStackTest {
             assertEquals(3, e.line());
         }
     }
+
+    /** An including file in another folder than the file named before it is named by its path, not its name alone. */
+    @Test
+    void anIncludingFileOfAnotherFolderIsNamedByItsPath(@TempDir Path where) throws Exception {
+        Files.createDirectories(where.resolve("a"));
+        Files.createDirectories(where.resolve("b"));
+        Files.writeString(where.resolve("a/part.simp"), "frobnicate\n");
+        Files.writeString(where.resolve("b/part.simp"), "\nfile \"../a/part\"\n");
+        Path top = Files.writeString(where.resolve("top.simp"), "file \"b/part\"\n");
+        SceneException e = assertThrows(SceneException.class, () -> new SimpInterpreter(
+                new SimpClient(new simpview.testing.RecordingDrawable(650, 650)), SceneMonitor.NONE, Long.MAX_VALUE)
+                .run(top));
+        assertTrue(e.getMessage().startsWith(where.resolve("b/../a/part.simp") + ":1:1, included from "
+                + where.resolve("b/part.simp") + ":2, included from " + top + ":1: unknown command"), e.getMessage());
+    }
 }
