@@ -25,6 +25,7 @@ import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.PanelHint;
+import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
@@ -370,8 +371,9 @@ public final class CompareCommand implements Callable<Integer> {
         boolean[] passing = new boolean[panels.length];
         for (int k = 0; k < panels.length; k++) {
             Comparison c = compared[k];
-            out.printf(Locale.ROOT, "%-38s %7.2f %% %10.2f %%%n", (k + 1) + " " + panelName(shown, k),
-                    100 * c.share(0, false), 100 * c.verdictShare(tolerance));
+            // rounded down, as every share is printed (Percent): a hint's share of the panel reads the same
+            out.printf(Locale.ROOT, "%-38s %7s %% %10s %%%n", (k + 1) + " " + panelName(shown, k),
+                    Percent.number(c.share(0, false)), Percent.number(c.verdictShare(tolerance)));
             passing[k] = 100 * c.verdictShare(tolerance) >= min;
         }
         boolean passes = true;
