@@ -173,6 +173,9 @@ public final class CompareBatch {
     private final boolean partial;
     private final PrintWriter out;
     private final PrintWriter err;
+    /** How the first assignment's pages are graded, for a picture of one where the eight pages are asked for. */
+    private static final String FIRST_ASSIGNMENT_GRADED = "--assignment 1 grades the first assignment's pages";
+
     /** What its messages start with: the command that runs it ("simpview compare: "). */
     private final String says;
     /**
@@ -181,6 +184,12 @@ public final class CompareBatch {
      * their pictures, is not asked for the eight pages.
      */
     private final boolean pagesIfHandedIn;
+    /**
+     * The pictures that are first-assignment pages where the eight pages were asked for by --pages (so not graded
+     * as such: skipped by name, or scored 0 as the page of the eight their name names), by their paths under the
+     * folder: the teacher who meant --assignment 1 is told so when every picture is one.
+     */
+    private final Set<String> firstAssignmentUnasked = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
@@ -235,11 +244,16 @@ public final class CompareBatch {
     }
 
     /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
-    private static Match pageMatch(String relative, PageRange pages) {
+    private Match pageMatch(String relative, PageRange pages) {
         String name = fileName(relative);
         OptionalInt number = SubmissionNames.pageNumber(name);
         if (number.isPresent() && namesFirstAssignment(relative)) {
-            return firstAssignmentMatch(name, null, null); // compared whatever --pages says
+            if (!pagesIfHandedIn) { // --pages names the eight pages: only those are graded, and asked of everyone
+                firstAssignmentUnasked.add(relative);
+                return new Match(null, "a page of the first assignment by its name, and --pages names the eight pages "
+                        + "(" + FIRST_ASSIGNMENT_GRADED + ")");
+            }
+            return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
         }
         if (number.isEmpty()) {
             return new Match(null, "no page number in the name (expected a name like page3.png)");
@@ -423,9 +437,10 @@ public final class CompareBatch {
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
         if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage) && firstAssignmentOnly(rows)) {
-            err.println(says + "note: every picture compared is a page of the first assignment, but --pages names the "
-                    + "eight pages, and each of those is asked for (a MISSING row where no picture is). To grade the "
-                    + "first assignment, give --assignment 1: its --pages are its pages 1 to 5 (default: 1-5).");
+            err.println(says + "note: every picture is a page of the first assignment, but --pages names the eight "
+                    + "pages: none was graded as a page of the first assignment, and each of the eight pages asked for "
+                    + "is missing or scored 0. To grade the first assignment, give --assignment 1: its --pages are its "
+                    + "pages 1 to 5 (default: 1-5).");
         }
         // A picture named like one of the eight pages that holds a first-assignment page was compared as that: it
         // names none of the eight pages.
@@ -452,13 +467,26 @@ public final class CompareBatch {
         }
         Map<String, List<String>> unreadable = unreadableByLabel(dir, listing.unreadable(), unreadMatches);
         // Asked for: the given targets, and every one some picture was matched to (so a class's batch
-        // shows who lacks a page that others handed in).
+        // shows who lacks a page that others handed in), of a class's batch those that at least half of its
+        // submissions handed in: one student's picture of a scene the others were not set (cube.simp, which
+        // the pages include) asks nothing of them.
         LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(firstAssignmentFolder
                 ? wanted.stream().filter(t -> !t.isPage()).toList()
                 : askedFor(wanted, matchedAsNamed, unreadMatches));
+        Map<CompareTarget, Set<String>> handedInBy = new HashMap<>();
+        for (int i = 0; i < pictures.size(); i++) {
+            CompareTarget target = matches.get(i).target();
+            if (target != null) {
+                handedInBy.computeIfAbsent(target, t -> new HashSet<>())
+                        .add(JUnitResults.submission(dir.relativize(pictures.get(i)).toString()));
+            }
+        }
+        long submissions = pictures.stream().map(p -> JUnitResults.submission(dir.relativize(p).toString()))
+                .distinct().count();
         for (Match match : matchedAsNamed) {
-            if (match.target() != null) {
-                all.add(match.target());
+            CompareTarget target = match.target();
+            if (target != null && (outputs.student() || 2L * handedInBy.get(target).size() >= submissions)) {
+                all.add(target);
             }
         }
         List<Wanted> asked = new ArrayList<>();
@@ -488,8 +516,10 @@ public final class CompareBatch {
      * pages asked for by --pages are then a teacher's slip for --assignment 1. Files skipped do not count either way.
      */
     private boolean firstAssignmentOnly(List<BatchRow> rows) {
-        List<BatchRow> compared = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED).toList();
-        return !compared.isEmpty() && compared.stream().allMatch(this::isFirstAssignments);
+        List<BatchRow> compared = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED
+                || firstAssignmentUnasked.contains(r.file())).toList();
+        return !compared.isEmpty() && compared.stream()
+                .allMatch(r -> isFirstAssignments(r) || firstAssignmentUnasked.contains(r.file()));
     }
 
     /** Whether a row is of one of the first assignment's pages: one of its panels, or a picture of it that is broken. */
@@ -777,6 +807,12 @@ public final class CompareBatch {
         }
         int page = target.page();
         if (PanelGridComparison.holds(theirs, firstAssignmentPanels())) {
+            if (!pagesIfHandedIn) {
+                firstAssignmentUnasked.add(relative);
+                return List.of(BatchRow.broken(relative, target.label(own.context()), "it holds a page of the first "
+                        + "assignment (four framed 300x300 panels), not page " + page + " of the eight pages that "
+                        + "--pages names (" + FIRST_ASSIGNMENT_GRADED + ")", ruleOf(target)));
+            }
             BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
             return compareFirstAssignment(relative, page, first, diffs,
                     mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));

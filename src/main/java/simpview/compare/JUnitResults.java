@@ -149,7 +149,7 @@ public final class JUnitResults {
     }
 
     /** The submission a picture belongs to: the first folder of its path, or "." at the top. */
-    static String submission(String file) {
+    public static String submission(String file) {
         String path = file.replace('\\', '/');
         int slash = path.indexOf('/');
         return slash < 0 ? TOP : path.substring(0, slash);

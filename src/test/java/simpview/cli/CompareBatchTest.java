@@ -166,6 +166,33 @@ public class CompareBatchTest {
                 + "1 page asked for without a picture"), run.out());
     }
 
+    /**
+     * A scene is asked of every submission when at least half of them handed it in: one student's picture of
+     * another scene of the folder (cube.simp, which the pages include) asks nothing of the others.
+     */
+    @Test
+    void aSceneFewerThanHalfTheClassHandedInIsAskedOfNobodyElse() throws Exception {
+        Path scenes = scenes("bar");
+        Path class_ = dir.resolve("class");
+        for (String student : new String[] {"alice", "bob", "carol"}) {
+            render(scenes.resolve("tri.simp"), class_.resolve(student + "/tri.png"));
+        }
+        render(scenes.resolve("bar.simp"), class_.resolve("alice/bar.png"));
+        Path out = dir.resolve("out");
+        CliRun one = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
+                out.toString());
+        assertEquals(ExitCode.OK, one.exitCode(), "one of three handed in bar: " + one.out() + one.err());
+        assertFalse(one.out().contains("MISSING"), one.out());
+        assertTrue(one.out().contains("| alice/bar.png | bar.simp |"), "it is compared all the same: " + one.out());
+
+        render(scenes.resolve("bar.simp"), class_.resolve("bob/bar.png"));
+        CliRun two = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
+                out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, two.exitCode(), "two of three handed in bar: " + two.out());
+        assertEquals(List.of("carol/,bar.simp,,,,,,,,MISSING,,,no picture of bar.simp in carol was found"),
+                csvRows(out).stream().filter(r -> r.contains(",MISSING,")).toList());
+    }
+
     @Test
     void aStudentsFolderIsOneSubmissionHoweverItsPicturesAreFoldered() throws Exception {
         Path mine = dir.resolve("mine");

@@ -82,17 +82,16 @@ class FirstAssignmentBatchTest {
         png(subs.resolve("alice/a1-page2.png"), spoiled(2, 3));
         png(subs.resolve("bob/a1/page2.png"), captured(page(2)));
         Path out = dir.resolve("out");
-        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", out.toString(),
-                "--diffs", "failing", "--gradescope", out.resolve("results.json").toString(),
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--assignment", "1", "--pages", "2", "--out-dir",
+                out.toString(), "--diffs", "failing", "--gradescope", out.resolve("results.json").toString(),
                 "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "alice's panel 3 fails: " + run.err());
         assertTrue(run.err().contains("alice/a1-page2.png: FAIL: 3 of 4 panels pass; lowest 98.22 % (A1 page 2 panel 3 "
                 + "(alternating DDA / Bresenham))"), run.err());
 
         List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
-        // a heading, the two pictures' eight panels, and each of --pages 1-8 that alice and bob lack
-        assertEquals(1 + 8 + 2 * 8, csv.size(), String.join("\n", csv));
-        assertTrue(csv.subList(9, 25).stream().allMatch(r -> r.contains(",MISSING,")), String.join("\n", csv));
+        // a heading and the two pictures' eight panels: nothing is missing
+        assertEquals(1 + 8, csv.size(), String.join("\n", csv));
         for (int k = 1; k <= 4; k++) {
             String alice = csv.get(k);
             String bob = csv.get(4 + k);
@@ -111,8 +110,8 @@ class FirstAssignmentBatchTest {
 
         JsonObject results = JsonParser.parseString(Files.readString(out.resolve("results.json"))).getAsJsonObject();
         JsonArray tests = results.getAsJsonArray("tests");
-        // the eight panels, and a test scoring 0 for each of the pages of --pages 1-8 no picture matched
-        assertEquals(8 + 8, tests.size());
+        // the eight panels
+        assertEquals(8, tests.size());
         assertEquals(8, tests.asList().stream().filter(t -> t.getAsJsonObject().get("name").getAsString()
                 .startsWith("A1 page 2 panel ")).count());
         // results.json is one submission's: of the two pictures of A1 page 2, both named it plainly, alice's (the
@@ -173,7 +172,16 @@ class FirstAssignmentBatchTest {
         Path subs = dir.resolve("subs");
         png(subs.resolve("page2.png"), captured(page(2)));
         png(subs.resolve("page3.png"), new simpview.pages.PageRenderer().renderImage(3, PageContext.defaults()));
-        CliRun check = CliRun.of("check", subs.toString(), "--pages", "2-3");
+        // --pages asks for the eight pages' pages 2 and 3: page2.png is one of those, and scores 0 saying why
+        CliRun asked = CliRun.of("check", subs.toString(), "--pages", "2-3");
+        assertEquals(ExitCode.SCENE_ERROR, asked.exitCode(), asked.out());
+        assertTrue(line(asked.out(), "page2.png").matches("page2\\.png +page 2 \\(seed 361\\) +ERROR +it holds a page "
+                + "of the first assignment \\(four framed 300x300 panels\\), not page 2 of the eight pages that --pages "
+                + "names \\(--assignment 1 grades the first assignment's pages\\)"), asked.out());
+        assertFalse(asked.out().contains("no picture of page 2"), "page2.png is a picture of it: " + asked.out());
+        assertFalse(asked.out().contains("A1 page 2"), asked.out());
+        // without --pages, the page it holds is what it is compared with
+        CliRun check = CliRun.of("check", subs.toString());
         for (int k = 1; k <= 4; k++) {
             assertTrue(line(check.out(), "A1 page 2 panel " + k).matches("page2\\.png +A1 page 2 panel .* PASS +100\\.00 % +none"),
                     check.out());
@@ -271,18 +279,19 @@ class FirstAssignmentBatchTest {
     }
 
     @Test
-    void withoutAssignment1AFirstAssignmentPageOthersHandedInIsOneMissingRow() throws Exception {
+    void whereTheEightPagesAreAskedForAFirstAssignmentPageIsNeitherGradedNorAskedOfOthers() throws Exception {
         Path subs = dir.resolve("subs");
         png(subs.resolve("alice/a1-page2.png"), page(2));
         png(subs.resolve("bob/page1.png"), new simpview.pages.PageRenderer().renderImage(1, PageContext.defaults()));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", out.toString(),
-                "--diffs", "none");
-        List<String> missing = Files.readAllLines(out.resolve("compare.csv")).stream()
-                .filter(r -> r.contains(",MISSING,")).toList();
-        assertEquals(List.of("alice/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in alice was found",
-                "bob/,A1 page 2,,,,,,,,MISSING,,,no picture of A1 page 2 in bob was found"), missing,
-                "one row for the page, not one a panel");
+                "--diffs", "none", "--gradescope", out.resolve("results.json").toString());
+        List<String> rows = Files.readAllLines(out.resolve("compare.csv"));
+        assertEquals(List.of("alice/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in alice was found"),
+                rows.stream().filter(r -> r.contains(",MISSING,")).toList(), "bob is not asked for alice's A1 page 2");
+        assertTrue(rows.stream().anyMatch(r -> r.startsWith("alice/a1-page2.png,") && r.contains(",SKIPPED,")),
+                String.join("\n", rows));
+        assertFalse(Files.readString(out.resolve("results.json")).contains("A1 page"), "worth nothing, so no test");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode());
     }
 
@@ -319,8 +328,7 @@ class FirstAssignmentBatchTest {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
                 "--diffs", "none");
-        String note = "note: every picture compared is a page of the first assignment, but --pages names the eight "
-                + "pages";
+        String note = "note: every picture is a page of the first assignment, but --pages names the eight pages";
         assertEquals(1, run.err().split(note, -1).length - 1, run.err());
         assertTrue(run.err().contains("give --assignment 1"), run.err());
         // the grading is as --pages says: each of the eight pages' pages 1 to 5 is missing for each student
@@ -397,9 +405,10 @@ class FirstAssignmentBatchTest {
                 + "is on the judged share: within 8/255 with no slack, 99.00 % needed.\n"),
                 Files.readString(out.resolve("compare.md")));
         png(mine.resolve("page2.png"), new simpview.pages.PageRenderer().renderImage(2, PageContext.defaults()));
-        CliRun both = CliRun.of("compare", "--dir", mine.toString(), "--pages", "2", "--out-dir", out.toString());
-        assertTrue(both.out().startsWith("Shares of panel pixels in percent; the result is on the judged share: within "
-                + "8/255 with one pixel of slack (the first assignment's panels: no slack), 99.00 % needed.\n"), both.out());
+        CliRun.of("check", mine.toString(), "--out-dir", out.toString()); // without --pages both are graded
+        assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the "
+                + "result is on the judged share: within 8/255 with one pixel of slack (the first assignment's panels: "
+                + "no slack), 99.00 % needed.\n"), Files.readString(out.resolve("compare.md")));
         Files.delete(mine.resolve("a1-page1.png"));
         CliRun eight = CliRun.of("compare", "--dir", mine.toString(), "--pages", "2", "--out-dir", out.toString());
         assertTrue(eight.out().startsWith("Shares of panel pixels in percent; the result is on the judged share: within "
