@@ -1,12 +1,15 @@
 package simpview.inspect;
 
+import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
+import simpview.shading.FragmentStage;
 
 /**
  * Between a lit scene's rasterizers and its fragment stage: every fragment
  * at the inspected pixel is resolved here as the fragment stage resolves it
  * (k = x - from, 1 / q = 1 / (q0 + k dq), each channel (v0 + k dv) / q, the
- * same operations in the same order, so the same bits), told to the watch
+ * same operations in the same order, so the same bits; a flat polygon's
+ * colour as it is, {@link FragmentStage#flat}), told to the watch
  * with the depth stored before it, and then the span goes on whole to the
  * fragment stage, which draws it; whether it won is read back from the
  * z-buffer. Spans and pixels that miss the inspected pixel go no further:
@@ -16,13 +19,13 @@ import simpview.raster.FragmentSink;
 final class FragmentProbe implements FragmentSink {
 
     private final PixelWatch watch;
-    private final FragmentSink stage;
+    private final FragmentStage stage;
     private final int x;
     private final int y;
     private final int width;
     private final double[] channels = new double[16];
 
-    FragmentProbe(PixelWatch watch, FragmentSink stage, int width) {
+    FragmentProbe(PixelWatch watch, FragmentStage stage, int width) {
         this.watch = watch;
         this.stage = stage;
         this.x = watch.x();
@@ -41,6 +44,11 @@ final class FragmentProbe implements FragmentSink {
         for (int c = 0; c < n; c++) {
             channels[c] = (v0[c] + k * dv[c]) * inv;
         }
+        if (stage.flatColours()) {
+            for (int c = FragmentLayout.R; c <= FragmentLayout.B; c++) {
+                channels[c] = v0[c];
+            }
+        }
         watch.fragment(channels);
         stage.span(row, from, to, q0, dq, v0, dv);
         watch.fragmentDone();
@@ -54,7 +62,7 @@ final class FragmentProbe implements FragmentSink {
         double inv = 1 / q;
         int n = watch.channels();
         for (int c = 0; c < n; c++) {
-            channels[c] = v[c] * inv;
+            channels[c] = c >= FragmentLayout.R && c <= FragmentLayout.B && stage.flatColours() ? v[c] : v[c] * inv;
         }
         watch.fragment(channels);
         stage.pixel(px, py, q, v);

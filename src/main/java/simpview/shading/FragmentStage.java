@@ -205,6 +205,8 @@ public final class FragmentStage implements FragmentSink {
     private int waitedShortSpans;
     private int waitedShortPixels;
     private PointShader shader;
+    /** Whether the polygons at hand are flat: their colour channels are their one colour, as it is ({@link #flat}). */
+    private boolean flat;
     private Fog fog = Fog.NONE;
     // The polygon whose spans come (told by polygon(), until primitiveDone):
     // its corners in polygonNumbers, null for none; and whether no light is
@@ -1016,17 +1018,38 @@ public final class FragmentStage implements FragmentSink {
         polygonGuess = NOT_GUESSED;
     }
 
-    /** The next primitives carry their colour (flat, gouraud, wire, lines), fogged by {@code fog}. */
+    /** The next primitives carry their colour (gouraud, wire, lines), fogged by {@code fog}. */
     public void colours(Fog fog) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = null;
+        this.flat = false;
         this.fog = fog;
+    }
+
+    /**
+     * The next polygons are flat, fogged by {@code fog}: each carries its one colour in its colour channels as it
+     * is, not times q, and that colour is every pixel's, to the bit (SPEC Part 2: "one colour per polygon"). A
+     * colour interpolated perspective-correct, (c q) / q, can miss it by a last bit, and so a byte where c * 255
+     * is a half: a flat polygon lit to 0.5 came out 127 at some pixels and 128 at others. Its channels' planes
+     * have no slope, so a span's first values are the colour itself ({@code Plane}: the base, plus zero).
+     */
+    public void flat(Fog fog) {
+        writePending(); // lit and fogged by the look they were drawn with
+        this.shader = null;
+        this.flat = true;
+        this.fog = fog;
+    }
+
+    /** Whether the polygons at hand are flat: their colour channels are their one colour, as it is ({@link #flat}). */
+    public boolean flatColours() {
+        return flat;
     }
 
     /** The next primitives are phong-shaded by {@code shader} at every pixel, then fogged. */
     public void phong(PointShader shader, Fog fog) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = shader;
+        this.flat = false;
         this.fog = fog;
     }
 
@@ -1293,6 +1316,9 @@ public final class FragmentStage implements FragmentSink {
         double db = dv[B];
         int row = y * width;
         boolean wrote = false;
+        if (flat) {
+            return flatSpan(row, y, from, start, end, q0, dq, z0, dz, r0, g0, b0);
+        }
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -1304,6 +1330,29 @@ public final class FragmentStage implements FragmentSink {
             lit[0] = (r0 + k * dr) * inv;
             lit[1] = (g0 + k * dg) * inv;
             lit[2] = (b0 + k * db) * inv;
+            panel.setPixel(x, y, z, fogged(z, lit));
+        }
+        if (wrote) {
+            wroteOver(y);
+        }
+        return wrote;
+    }
+
+    /** A flat polygon's span: z at each pixel as {@link #colourSpan} has it, and the polygon's one colour (r, g, b). */
+    private boolean flatSpan(int row, int y, int from, int start, int end, double q0, double dq, double z0, double dz,
+            double r, double g, double b) {
+        boolean wrote = false;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            wrote = true;
+            lit[0] = r;
+            lit[1] = g;
+            lit[2] = b;
             panel.setPixel(x, y, z, fogged(z, lit));
         }
         if (wrote) {
@@ -1574,9 +1623,10 @@ public final class FragmentStage implements FragmentSink {
         }
         zbuffer.written();
         wroteOver(y);
-        double r = v[R] * inv;
-        double g = v[G] * inv;
-        double b = v[B] * inv;
+        double colourTimes = flat ? 1 : inv; // a flat polygon's colour is as it is
+        double r = v[R] * colourTimes;
+        double g = v[G] * colourTimes;
+        double b = v[B] * colourTimes;
         if (shader != null) {
             shader.shade(v[PX] * inv, v[PY] * inv, z, v[NX] * inv, v[NY] * inv, v[NZ] * inv, r, g, b, lit);
         } else {

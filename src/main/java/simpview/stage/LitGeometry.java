@@ -62,6 +62,11 @@ public final class LitGeometry implements GeometryStage {
     private Supplier<PointShader> frozenFrom;
     /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
     private FragmentSink raster;
+    /**
+     * Whether the polygon at hand is flat: its colour channels are then projected as they are, its one colour,
+     * not times q ({@link FragmentStage#flat}), so that every pixel of it is that colour to the bit.
+     */
+    private boolean flatColour;
     private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
     private final LitLineRasterizer lines = new LitLineRasterizer();
     private final Clipper clipper = new Clipper(CAMERA_STRIDE);
@@ -147,11 +152,12 @@ public final class LitGeometry implements GeometryStage {
             skipped(Painter.LINE, false, 2);
         } else {
             fragments.colours(state.fog());
+            flatColour = false;
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
                 if (record != null) {
                     record.add(LitPrimitives.LINE, screen, 2, FragmentLayout.COLOUR_CHANNELS,
-                            record.look(state.fog(), null));
+                            record.look(state.fog(), null, false));
                     return;
                 }
                 lines.draw(screen, 0, FragmentLayout.stride(FragmentLayout.COLOUR_CHANNELS), FragmentLayout.COLOUR_CHANNELS,
@@ -224,6 +230,7 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         faceNormals(n);
+        flatColour = false;
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
@@ -274,8 +281,8 @@ public final class LitGeometry implements GeometryStage {
 
     /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
     private int recordedLook(boolean wire, int channels) {
-        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null)
-                : record.look(state.fog(), state);
+        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null, flatColour)
+                : record.look(state.fog(), state, false);
     }
 
     /**
@@ -288,7 +295,8 @@ public final class LitGeometry implements GeometryStage {
         switch (state.shading()) {
             case FLAT -> {
                 flat(n);
-                fragments.colours(state.fog());
+                flatColour = true;
+                fragments.flat(state.fog());
                 return FragmentLayout.COLOUR_CHANNELS;
             }
             case GOURAUD -> {
@@ -427,7 +435,7 @@ public final class LitGeometry implements GeometryStage {
     }
 
     /**
-     * Step 6: the first n clipped vertices to panel space, channels times q.
+     * Step 6: the first n clipped vertices to panel space, channels times q (a flat polygon's colour as it is).
      *
      * @return how many could be projected (all of them unless one is not finite)
      */
@@ -459,9 +467,10 @@ public final class LitGeometry implements GeometryStage {
             out[o + FragmentLayout.Y] = sy;
             out[o + FragmentLayout.Q] = q;
             out[o + FragmentLayout.CHANNEL + FragmentLayout.Z] = z * q;
-            out[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * q;
-            out[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * q;
-            out[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * q;
+            double colourTimes = flatColour ? 1 : q;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * colourTimes;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * colourTimes;
+            out[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * colourTimes;
             if (channels == FragmentLayout.PHONG_CHANNELS) {
                 out[o + FragmentLayout.CHANNEL + FragmentLayout.PX] = x * q;
                 out[o + FragmentLayout.CHANNEL + FragmentLayout.PY] = y * q;

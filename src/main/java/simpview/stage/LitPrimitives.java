@@ -135,13 +135,14 @@ public final class LitPrimitives {
 
     /**
      * The look of the primitives recorded next: their colours known, fogged
-     * by {@code fog} ({@code phong} null), or lit at every pixel as
+     * by {@code fog} ({@code phong} null; {@code flat}: each polygon's one
+     * colour, as it is, {@link FragmentStage#flat}), or lit at every pixel as
      * {@code phong} lights now, then fogged. Looks are made again only when
      * one of these changed.
      */
-    int look(Fog fog, LitState phong) {
+    int look(Fog fog, LitState phong, boolean flat) {
         shadesLater |= phong != null && FragmentStage.paysToWait(phong);
-        return batches.filling().look(fog, phong == null ? null : phong.frozenShader());
+        return batches.filling().look(fog, phong == null ? null : phong.frozenShader(), flat);
     }
 
     /**
@@ -237,6 +238,8 @@ public final class LitPrimitives {
         /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
         final List<Fog> fogs = new ArrayList<>();
         final List<Supplier<PointShader>> shaders = new ArrayList<>();
+        /** Whether a look's colours are each polygon's one colour, as it is (flat). */
+        final List<Boolean> flats = new ArrayList<>();
         int lastLook = -1;
         /**
          * For each band, the primitives that may touch its rows
@@ -259,14 +262,17 @@ public final class LitPrimitives {
             last = false;
             fogs.clear();
             shaders.clear();
+            flats.clear();
             lastLook = -1;
             Arrays.fill(inBandCount, 0);
         }
 
-        int look(Fog fog, Supplier<PointShader> shader) {
-            if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)) {
+        int look(Fog fog, Supplier<PointShader> shader, boolean flat) {
+            if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)
+                    || flat != flats.get(lastLook)) {
                 fogs.add(fog);
                 shaders.add(shader);
+                flats.add(flat);
                 lastLook = fogs.size() - 1;
             }
             return lastLook;
@@ -432,7 +438,11 @@ public final class LitPrimitives {
             look = l;
             Supplier<PointShader> s = b.shaders.get(l);
             if (s == null) {
-                fragments.colours(b.fogs.get(l));
+                if (b.flats.get(l)) {
+                    fragments.flat(b.fogs.get(l));
+                } else {
+                    fragments.colours(b.fogs.get(l));
+                }
                 return;
             }
             if (s != madeFrom) {

@@ -207,6 +207,20 @@ class LightingExplanationTest {
         assertArrayEquals(expected, t.vector("clamped"), EPS);
     }
 
+    /** A flat polygon's colour is told as the polygon's own, to the bit, at a pixel where its depth runs. */
+    @Test
+    void flatCentroidColourIsThePolygonsToTheBit() throws Exception {
+        Path file = dir.resolve("half.simp");
+        Files.writeString(file, "camera -1 -1 1 1 -0.1 -200\nambient 0.5 0.5 0.5\nflat\n"
+                + "polygon (-10, -10, -20) (10, -10, -20) (0, 10, -50)\n");
+        for (int[] at : new int[][] {{164, 164}, {325, 200}, {300, 260}}) {
+            PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), at[0], at[1]);
+            Terms t = report.explanation();
+            assertArrayEquals(new double[] {0.5, 0.5, 0.5}, t.vector("centroid_colour"), 0, java.util.Arrays.toString(at));
+            assertArrayEquals(new int[] {128, 128, 128}, t.bytes("final_rgb"), java.util.Arrays.toString(at));
+        }
+    }
+
     @Test
     void depthCueTerms() throws Exception {
         Path file = dir.resolve("cued.simp");
