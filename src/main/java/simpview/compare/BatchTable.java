@@ -68,13 +68,22 @@ public final class BatchTable {
         for (List<String> cells : lines(rows, missing, true)) {
             out.append('|');
             for (String cell : cells) {
-                String oneLine = cell.replace("\r", "").replace("\n", " / ");
-                out.append(' ').append(oneLine.replace("|", "\\|")).append(" |");
+                out.append(' ').append(markdownCell(cell)).append(" |");
             }
             out.append('\n');
         }
         out.append('\n').append(summary(rows, missing)).append('\n');
         return out.toString();
+    }
+
+    /**
+     * A cell as Markdown shows it as written: on one line, its '|' not ending the cell, and its '&lt;', '&gt;' and
+     * '&amp;' not read as HTML (a file named "&lt;b&gt;x&lt;/b&gt;/page1.png" would otherwise be shown in bold, or not
+     * at all).
+     */
+    static String markdownCell(String cell) {
+        return cell.replace("\r", "").replace("\n", " / ").replace("&", "&amp;").replace("<", "&lt;")
+                .replace(">", "&gt;").replace("|", "\\|");
     }
 
     /** Whether a row was compared under the command line's own rule, not one a rubric names. */

@@ -1,0 +1,35 @@
+package simpview.compare;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/**
+ * What the table (Markdown), JUnit and the web report say of the same rows in the same words: the submission of
+ * the pictures at the top of a class's folder, why a page is missing, and names that hold what Markdown or HTML
+ * would read as markup.
+ */
+class ReportWordsTest {
+
+    private static final RubricRule ONE = GradingFixtures.defaults();
+    private static final int[] STRIPES = GradingFixtures.stripes(0);
+
+    private static String markdown(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
+        return BatchTable.markdown(rows, missing, 8, 99, 1, Comparison.Metric.EXACT, Comparison.FLIP_THRESHOLD);
+    }
+
+    @Test
+    void theTableShowsNamesAsTheyAreWrittenNotAsMarkup() throws Exception {
+        List<BatchRow> rows = List.of(
+                GradingFixtures.row("<b>x</b>/page1 <i>.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("a|b & c/page1.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null));
+        String table = markdown(rows, List.of());
+        assertTrue(table.contains("| &lt;b&gt;x&lt;/b&gt;/page1 &lt;i&gt;.png | 1 (seed 361) |"), table);
+        assertTrue(table.contains("| a\\|b &amp; c/page1.png | 1 (seed 361) |"), table);
+        assertFalse(table.contains("<b>") || table.contains("<i>"), table);
+    }
+}
