@@ -117,14 +117,25 @@ public final class BatchTable {
         }
         for (Map.Entry<String, Wanted> lack : missing) {
             String submission = lack.getKey();
-            String page = GradescopeResults.name(lack.getValue().target());
             boolean named = !submission.isEmpty() && !submission.equals(JUnitResults.TOP);
-            String unreadable = lack.getValue().unreadableNote(submission);
-            lines.add(List.of(named ? submission + "/" : "", lack.getValue().target(), "", "", "", "", "", "", "",
-                    "MISSING", "", "", "no picture of " + page + (named ? " in " + submission : "") + " was found"
-                            + (unreadable.isEmpty() ? "" : "; " + unreadable)));
+            // the pictures at the top of the folder are a submission: JUnit's suite and the web report name it so
+            lines.add(List.of(named ? submission + "/" : submission, lack.getValue().target(), "", "", "", "", "", "",
+                    "", "MISSING", "", "", missingNote(submission, lack.getValue())));
         }
         return lines;
+    }
+
+    /**
+     * What a MISSING row says of a page a submission lacks ("" the whole folder, {@link JUnitResults#TOP} the
+     * pictures at its top), and why when a file handed in tells: "no picture of page 6 in st was found;
+     * st/page6.tif is named like it, but is in a format simpview does not read (...)". The web report says the same.
+     */
+    static String missingNote(String submission, Wanted wanted) {
+        boolean top = submission.equals(JUnitResults.TOP);
+        String unreadable = wanted.unreadableNote(submission);
+        return "no picture of " + GradescopeResults.name(wanted.target())
+                + (top ? " at the top of the folder" : submission.isEmpty() ? "" : " in " + submission) + " was found"
+                + (unreadable.isEmpty() ? "" : "; " + unreadable);
     }
 
     /**

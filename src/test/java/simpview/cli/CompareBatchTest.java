@@ -68,8 +68,10 @@ public class CompareBatchTest {
         assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
         assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(5));
         assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(11));
-        assertEquals(",2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) was found", rows.get(12));
-        assertEquals(",4,,,,,,,,MISSING,,,no picture of page 4 was found", rows.get(13));
+        assertEquals("submission,2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) at the top of the folder "
+                + "was found", rows.get(12));
+        assertEquals("submission,4,,,,,,,,MISSING,,,no picture of page 4 at the top of the folder was found",
+                rows.get(13));
         assertTrue(rows.subList(5, 18).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());

@@ -23,6 +23,25 @@ class ReportWordsTest {
     }
 
     @Test
+    void thePicturesAtTheTopOfAClassFolderAreTheSubmissionNamedSubmissionEverywhere() throws Exception {
+        List<BatchRow> rows = List.of(
+                GradingFixtures.row("page1.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("ann/page2.png", "2 (seed 361)", STRIPES, STRIPES, ONE, false, null));
+        List<Wanted> wanted = List.of(new Wanted("1 (seed 361)", ONE), new Wanted("2 (seed 361)", ONE));
+        List<Map.Entry<String, Wanted>> missing = Wanted.missingBySubmission(wanted, rows);
+
+        String table = markdown(rows, missing);
+        assertTrue(table.contains("| submission | 2 (seed 361) |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 2 "
+                + "(seed 361) at the top of the folder was found |"), table);
+        assertFalse(table.contains("|  | 2 (seed 361) |"), "no MISSING row without its submission: " + table);
+        String xml = JUnitResults.xml(rows, wanted, 1);
+        assertTrue(xml.contains("<testcase name=\"page 2 (seed 361) (no picture)\" classname=\"submission\">"), xml);
+        String html = HtmlReport.page(rows, missing, Path.of("web"), null);
+        assertTrue(html.contains("<tr class=\"row missing\"><td>submission</td><td></td><td>page 2 (seed 361)</td>"),
+                html);
+    }
+
+    @Test
     void theTableShowsNamesAsTheyAreWrittenNotAsMarkup() throws Exception {
         List<BatchRow> rows = List.of(
                 GradingFixtures.row("<b>x</b>/page1 <i>.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null),
