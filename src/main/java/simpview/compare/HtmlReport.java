@@ -116,7 +116,7 @@ public final class HtmlReport {
             cell(h, "", -1.0);
             cell(h, "", -1.0);
             cell(h, "0 / " + points(wanted.rule().points()), 0.0);
-            cell(h, "no picture of this page was found", null);
+            cell(h, BatchTable.missingNote(lack.getKey(), wanted), null);
             h.append("</tr>\n");
         }
         h.append("</tbody>\n</table>\n");

@@ -42,6 +42,21 @@ class ReportWordsTest {
     }
 
     @Test
+    void theWebReportSaysWhyAPageIsMissingAsTheTableDoes() throws Exception {
+        List<BatchRow> rows = List.of(GradingFixtures.row("zed/page1.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false,
+                null));
+        List<Wanted> wanted = List.of(new Wanted("1 (seed 361)", ONE), new Wanted("5", ONE, List.of("zed/page5.webp")));
+        List<Map.Entry<String, Wanted>> missing = Wanted.missingBySubmission(wanted, rows);
+        String why = "no picture of page 5 in zed was found; zed/page5.webp is named like it, but is in a format simpview "
+                + "does not read (it reads PNG, JPEG, GIF and BMP)";
+
+        assertTrue(markdown(rows, missing).contains("| " + why + " |"), markdown(rows, missing));
+        String html = HtmlReport.page(rows, missing, Path.of("web"), null);
+        assertTrue(html.contains("<td>" + why + "</td>"), html);
+        assertFalse(html.contains("no picture of this page"), html);
+    }
+
+    @Test
     void theTableShowsNamesAsTheyAreWrittenNotAsMarkup() throws Exception {
         List<BatchRow> rows = List.of(
                 GradingFixtures.row("<b>x</b>/page1 <i>.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null),
