@@ -186,7 +186,7 @@ public final class HtmlReport {
             td[data-v] { text-align: right; }
             tr.pass td { background: #%06x; } tr.fail td { background: #%06x; } tr.error td { background: #%06x; }
             tr.skipped td { background: #%06x; } tr.missing td { background: #%06x; }
-            pre { background: #f4f4f4; padding: 6px; }
+            pre { background: #f4f4f4; padding: 6px; white-space: pre-wrap; overflow-wrap: anywhere; }
             .view { overflow: auto; max-width: 100%%; border: 1px solid #888888; }
             .diff { position: relative; transform-origin: 0 0; }
             .diff img { display: block; image-rendering: pixelated; }

@@ -66,4 +66,13 @@ class ReportWordsTest {
         assertTrue(table.contains("| a\\|b &amp; c/page1.png | 1 (seed 361) |"), table);
         assertFalse(table.contains("<b>") || table.contains("<i>"), table);
     }
+
+    @Test
+    void theWebReportWrapsTheLongLinesOfADetailsText() throws Exception {
+        List<BatchRow> rows = List.of(GradingFixtures.row("ann/page1.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false,
+                null));
+        String html = HtmlReport.page(rows, List.of(), Path.of("web"), null);
+        // a hint: line is a few hundred characters; in a <pre> it would run off the box
+        assertTrue(html.matches("(?s).*\\bpre \\{[^}]*white-space: pre-wrap;[^}]*}.*"), html);
+    }
 }
