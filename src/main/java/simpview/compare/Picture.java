@@ -66,9 +66,15 @@ public final class Picture {
     /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
     static PngCodec.Pixels readPixels(Path file) throws CompareException {
         byte[] bytes = readBytes(file);
+        if (bytes.length == 0) {
+            throw new CompareException(file + " is empty (0 bytes): no picture was saved in it; save or copy the "
+                    + "picture again");
+        }
         if (PngCodec.isPng(bytes)) {
             try {
                 return PngCodec.decode(bytes);
+            } catch (PngCodec.TooLarge e) {
+                throw new CompareException(file + " " + e.getMessage(), e);
             } catch (CompareException e) {
                 throw damaged(file, e.getMessage(), e);
             } catch (PngCodec.Unsupported e) {

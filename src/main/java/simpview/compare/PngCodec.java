@@ -29,6 +29,20 @@ final class PngCodec {
     }
 
     /**
+     * A PNG larger than this codec reads ({@link #MAX_PIXELS}): valid, but not a picture of a page (750x750) or
+     * a window capture; its message says its size and the limit.
+     */
+    static final class TooLarge extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        TooLarge(int width, int height) {
+            super(String.format(java.util.Locale.ROOT, "is %dx%d pixels (%,d), more than simpview reads (%,d pixels at "
+                    + "most, as 8192x8192): a page is 750x750 and a window capture about 872x782, so save the picture at "
+                    + "its own size", width, height, (long) width * height, MAX_PIXELS), null, false, false);
+        }
+    }
+
+    /**
      * A decoded picture: width x height pixels, row by row from the top, and their alpha (0-255) the
      * same way, or null when the picture has no transparency.
      */
@@ -58,8 +72,9 @@ final class PngCodec {
      *
      * @throws CompareException with what is wrong, when the file is damaged or cut short
      * @throws Unsupported when it is a kind of PNG this codec leaves to ImageIO
+     * @throws TooLarge when it says it has more than {@link #MAX_PIXELS} pixels
      */
-    static Pixels decode(byte[] file) throws CompareException, Unsupported {
+    static Pixels decode(byte[] file) throws CompareException, Unsupported, TooLarge {
         ByteBuffer in = ByteBuffer.wrap(file);
         in.position(SIGNATURE.length);
         Header header = null;
@@ -117,7 +132,7 @@ final class PngCodec {
     }
 
     private record Header(int width, int height, int colourType, int channels) {
-        static Header of(byte[] file, Chunk chunk) throws CompareException, Unsupported {
+        static Header of(byte[] file, Chunk chunk) throws CompareException, Unsupported, TooLarge {
             if (chunk.length() != 13) {
                 throw new CompareException("its IHDR chunk is " + chunk.length() + " bytes, not 13");
             }
@@ -129,8 +144,11 @@ final class PngCodec {
             b.get();
             b.get();
             int interlace = b.get() & 0xFF;
-            if (width <= 0 || height <= 0 || (long) width * height > MAX_PIXELS) {
+            if (width <= 0 || height <= 0) {
                 throw new CompareException("it says it is " + width + "x" + height + " pixels");
+            }
+            if ((long) width * height > MAX_PIXELS) {
+                throw new TooLarge(width, height);
             }
             int channels = switch (colourType) {
                 case 0, 3 -> 1;
