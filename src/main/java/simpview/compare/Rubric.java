@@ -102,8 +102,47 @@ public final class Rubric {
             JsonReader json = new JsonReader(reader);
             return new Parser(file, json).rubric(base);
         } catch (IOException | IllegalStateException | NumberFormatException e) {
-            throw new CompareException("rubric " + file + ": " + notJson(e.getMessage()));
+            String comma = trailingComma(e.getMessage(), text);
+            throw new CompareException("rubric " + file + ": " + (comma != null ? comma : notJson(e.getMessage())));
         }
+    }
+
+    /**
+     * A ',' after the last entry of an object or list ({@code "points": 1, }}), which JSON does not allow and Gson
+     * tells as "Expected name" (or as JSON it reads only leniently) just past the '}' or ']': said in words at the
+     * comma's own line and column, what was expected after it, and what to do; null when Gson's account is of
+     * something else.
+     */
+    static String trailingComma(String gson, String text) {
+        java.util.regex.Matcher m = GSON_PLACE.matcher(gson);
+        if (!m.find()) {
+            return null;
+        }
+        int line = Integer.parseInt(m.group(2));
+        int column = Integer.parseInt(m.group(3));
+        int at = 0;
+        for (int l = 1; l < line && at >= 0; l++) {
+            at = text.indexOf('\n', at);
+            at = at < 0 ? -1 : at + 1;
+        }
+        int closer = at < 0 ? -1 : at + column - 2; // Gson has read the '}' or ']' it met instead of a key or value
+        if (closer < 1 || closer >= text.length() || "}]".indexOf(text.charAt(closer)) < 0) {
+            return null;
+        }
+        int comma = closer - 1;
+        while (comma >= 0 && Character.isWhitespace(text.charAt(comma))) {
+            comma--;
+        }
+        if (comma < 0 || text.charAt(comma) != ',') {
+            return null;
+        }
+        int commaLine = 1 + (int) text.substring(0, comma).chars().filter(c -> c == '\n').count();
+        int commaColumn = comma - (text.lastIndexOf('\n', comma - 1) + 1) + 1;
+        boolean object = text.charAt(closer) == '}';
+        return "line " + commaLine + ", column " + commaColumn + " (" + m.group(4) + "): a ',' after the last "
+                + (object ? "entry of an object, before its '}': expected another \"key\": value after it"
+                        : "item of a list, before its ']': expected another item after it")
+                + "; JSON allows no ',' there, so remove it";
     }
 
     private static final java.util.regex.Pattern GSON_PLACE =
@@ -235,6 +274,12 @@ public final class Rubric {
                         match = string("a page range like \"6\" or \"1-3\", or a name pattern like \"page*\"");
                         if (match.isBlank()) {
                             throw error("\"match\" is empty");
+                        }
+                        String backwards = RubricRule.backwardsRange(match);
+                        if (backwards != null) {
+                            String[] ends = backwards.split("-");
+                            throw error("\"match\": \"" + match + "\": the range " + backwards + " runs backwards, so "
+                                    + "it fits no page: write it " + ends[1].trim() + "-" + ends[0].trim());
                         }
                     }
                     case "tolerance" -> tolerance = (int) number(0, 255, true, "a whole number of 1/255 steps, 0 to 255");

@@ -106,6 +106,25 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
         return key.matches(glob(m));
     }
 
+    /**
+     * The first part of a page range that runs backwards ("3-1" of "3-1" or "1,5-4"), which fits no page; null
+     * when there is none, or {@code match} is a name pattern.
+     */
+    static String backwardsRange(String match) {
+        String m = match.trim();
+        if (!m.matches("[0-9][0-9 ,\\-]*")) {
+            return null;
+        }
+        for (String part : m.split(",")) {
+            String[] ends = part.trim().split("-");
+            if (ends.length == 2 && ends[0].trim().matches("[0-9]+") && ends[1].trim().matches("[0-9]+")
+                    && new java.math.BigInteger(ends[0].trim()).compareTo(new java.math.BigInteger(ends[1].trim())) > 0) {
+                return part.trim();
+            }
+        }
+        return null;
+    }
+
     private static boolean inRange(String range, int page) {
         for (String part : range.split(",")) {
             String[] ends = part.trim().split("-");

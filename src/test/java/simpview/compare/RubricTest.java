@@ -304,6 +304,31 @@ class RubricTest {
         assertFalse(bad("{\"pages\": [], // c\n}").getMessage().contains("setLenient"));
     }
 
+    /** A ',' after an object's or a list's last entry is said where it is, with what was expected after it. */
+    @Test
+    void aTrailingCommaIsToldWhereItIs() throws Exception {
+        Path file = dir.resolve("compare.json");
+        assertEquals("rubric " + file + ": line 2, column 28 ($.defaults.points): a ',' after the last entry of an "
+                + "object, before its '}': expected another \"key\": value after it; JSON allows no ',' there, so "
+                + "remove it", bad("{\n  \"defaults\": { \"points\": 1, },\n  \"pages\": []\n}").getMessage());
+        assertEquals("rubric " + file + ": line 2, column 30 ($.pages[1]): a ',' after the last item of a list, "
+                + "before its ']': expected another item after it; JSON allows no ',' there, so remove it",
+                bad("{\n  \"pages\": [ { \"match\": \"1\" },\n  ]\n}").getMessage());
+        assertFalse(bad("{\"pages\": [], }").getMessage().contains("Expected name"));
+    }
+
+    /** "3-1" fits no page: an error naming the range, not a warning that the rule is not used. */
+    @Test
+    void aBackwardsPageRangeIsAnError() throws Exception {
+        Path file = dir.resolve("compare.json");
+        assertEquals("rubric " + file + ": line 1, column 27 ($.pages[0].match): \"match\": \"3-1\": the range 3-1 runs "
+                + "backwards, so it fits no page: write it 1-3", bad("{\"pages\": [{\"match\": \"3-1\"}]}").getMessage());
+        assertTrue(bad("{\"pages\": [{\"match\": \"1, 8 - 6\"}]}").getMessage().contains("the range 8 - 6 runs "
+                + "backwards, so it fits no page: write it 6-8"));
+        Files.writeString(file, "{\"pages\": [{\"match\": \"1-3, 5\"}, {\"match\": \"4-4\"}]}");
+        assertEquals(2, Rubric.read(file, BASE).rules().size(), "ranges that run forwards, or one page, are fine");
+    }
+
     private String placeOf(String json) throws Exception {
         String message = bad(json).getMessage();
         int colon = message.indexOf(": ", message.indexOf("compare.json"));
