@@ -256,7 +256,7 @@ public final class CompareBatch {
             return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
         }
         if (number.isEmpty()) {
-            return new Match(null, "no page number in the name (expected a name like page3.png)");
+            return new Match(null, SubmissionNames.noPageNumber(name, "page", Assignment2.COUNT));
         }
         if (!pages.contains(number.getAsInt())) {
             return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
@@ -271,7 +271,7 @@ public final class CompareBatch {
     private static Match firstAssignmentMatch(String name, PageRange pages, String option) {
         OptionalInt number = SubmissionNames.pageNumber(name);
         if (number.isEmpty()) {
-            return new Match(null, "no page number in the name (expected a name like a1-page3.png)");
+            return new Match(null, SubmissionNames.noPageNumber(name, "a1-page", Assignment1.COUNT));
         }
         int page = number.getAsInt();
         if (page > Assignment1.COUNT) {
@@ -349,7 +349,8 @@ public final class CompareBatch {
         return run(dir, outputs, wanted, Set.of(), name -> SubmissionNames.sceneName(name, scenes.keySet()), relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
-                    .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene));
+                    .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene
+                            + " (expected a name like " + scenes.keySet().iterator().next() + ".png)"));
         });
     }
 

@@ -71,6 +71,9 @@ public final class StudentTable {
         rows.stream().filter(r -> !r.counts())
                 .forEach(r -> notCounted.putIfAbsent(r.file(), r.file() + ": not counted, " + r.notCounted() + "\n"));
         notCounted.values().forEach(out::append);
+        // a file named like no page is said with why, so that the student can rename it
+        rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED)
+                .forEach(r -> out.append(r.file()).append(": not checked, ").append(r.note()).append('\n'));
         for (Wanted wanted : missing) {
             String unreadable = wanted.unreadableNote("");
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))

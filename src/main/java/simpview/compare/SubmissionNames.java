@@ -11,11 +11,17 @@ import java.util.regex.Pattern;
  * Which page or scene a submitted picture is of, from its file name:
  * page3.png, Page_3.png, alice-page03.png and page3_mesh.png are page 3;
  * pageC.png, pageC_v2.png and pageJ_tomsPageJ.png are the scenes pageC and
- * tomsPageJ, page-a2.png the scene page-a2.
+ * tomsPageJ, page-a2.png the scene page-a2. The word may be "página" or "pagina"
+ * (Spanish, Portuguese, Italian and Dutch for page: página3.png is page 3), with
+ * or without its accent; a number after anything else (p3.png, img3.png) names
+ * no page, since "p" may as well be a part, a problem or a panel.
  */
 public final class SubmissionNames {
 
-    private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])page[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
+    /** The word page ("pagina": página without its accent, as {@link #plain} leaves it), then its number. */
+    private static final String PAGE_WORD = "(?:page|pagina)";
+    private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
+    private static final Pattern NUMBER = Pattern.compile("[0-9]+");
 
     /** "a1", "A1", "assignment1", "assignment-1" as a word of its own: the first assignment's pages. */
     private static final Pattern FIRST_ASSIGNMENT = Pattern.compile("(?i)(?<![a-z0-9])(a|assignment[\\s_-]*)0*1(?![0-9])");
@@ -34,7 +40,7 @@ public final class SubmissionNames {
      * that counts.
      */
     public static boolean isPageName(String fileName, int page) {
-        return stem(fileName).strip().matches("(?i)page[\\s_-]*0*" + page);
+        return plain(stem(fileName)).strip().matches("(?i)" + PAGE_WORD + "[\\s_-]*0*" + page);
     }
 
     /** The same for a page of the first assignment: a1-page2.png, A1_Page_2.png, assignment1-page2.png. */
@@ -49,7 +55,7 @@ public final class SubmissionNames {
 
     /** The page number in a file name, if it names one. */
     public static OptionalInt pageNumber(String fileName) {
-        Matcher m = PAGE.matcher(stem(fileName));
+        Matcher m = PAGE.matcher(plain(stem(fileName)));
         if (!m.find()) {
             return OptionalInt.empty();
         }
@@ -58,6 +64,37 @@ public final class SubmissionNames {
         } catch (NumberFormatException e) {
             return OptionalInt.empty(); // more digits than any page number has
         }
+    }
+
+    /**
+     * Why a file name names no page, for a name {@link #pageNumber} finds none in: "no page number in the name
+     * (expected a name like page3.png)", or, when it has a number that is not after the word page (p1.png,
+     * scan_1.png), that it is not and the name it would have ("...: its number, 1, is not after the word "page"
+     * (expected a name like page1.png)"). {@code word}: the name's start it expects ("page", "a1-page"), and
+     * {@code pages} how many pages there are: a number above them is no page's, and the example is page 3.
+     */
+    public static String noPageNumber(String fileName, String word, int pages) {
+        Matcher page = PAGE.matcher(plain(stem(fileName)));
+        String ending = fileName.equals(stem(fileName)) ? ".png" : fileName.substring(stem(fileName).length())
+                .toLowerCase(Locale.ROOT);
+        if (page.find()) { // more digits than any page number has
+            return "no page number in the name: " + page.group(1) + " is no page's number (expected a name like " + word
+                    + "3" + ending + ")";
+        }
+        // "a1" names the first assignment, not a page
+        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(stem(fileName)).replaceAll(" "));
+        if (!m.find()) {
+            return "no page number in the name (expected a name like " + word + "3" + ending + ")";
+        }
+        String number = m.group().replaceFirst("^0+(?=[0-9])", "");
+        boolean aPage = number.length() <= 2 && Integer.parseInt(number) >= 1 && Integer.parseInt(number) <= pages;
+        return "no page number in the name: its number, " + number + ", is not after the word \"page\" (expected a "
+                + "name like " + word + (aPage ? number : "3") + ending + ")";
+    }
+
+    /** A name without its letters' accents (página: pagina), which the words of page names are matched against. */
+    private static String plain(String name) {
+        return java.text.Normalizer.normalize(name, java.text.Normalizer.Form.NFD).replaceAll("\\p{M}", "");
     }
 
     /**

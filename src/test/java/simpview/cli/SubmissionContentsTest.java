@@ -155,6 +155,31 @@ class SubmissionContentsTest {
     }
 
     @Test
+    void checkNamesEachFileItSkippedWithWhyAndTheNameItExpects() throws Exception {
+        Path judy = dir.resolve("judy");
+        png(judy.resolve("p1.png"), page(1));
+        png(judy.resolve("notes.png"), page(2));
+        CliRun check = CliRun.of("check", judy.toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        assertTrue(check.out().contains("\np1.png: not checked, no page number in the name: its number, 1, is not after "
+                + "the word \"page\" (expected a name like page1.png)\n"), check.out());
+        assertTrue(check.out().contains("\nnotes.png: not checked, no page number in the name (expected a name like "
+                + "page3.png)\n"), check.out());
+        assertTrue(check.out().endsWith("0 of 0 pictures pass; 2 other files matched no page\n"), check.out());
+    }
+
+    @Test
+    void paginaNamesAPage() throws Exception {
+        Path zoe = dir.resolve("class/Zoë Ñúñez");
+        png(zoe.resolve("página1.png"), page(1));
+        png(zoe.resolve("página2.png"), page(2));
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("class").toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains("| Zoë Ñúñez/página2.png | 2 (seed 361) | 100.00 |"), run.out());
+    }
+
+    @Test
     void inAClassFolderEachStudentsPagesCountOnce() throws Exception {
         Path class_ = dir.resolve("class");
         png(class_.resolve("ann/page1.png"), page(1));

@@ -24,6 +24,29 @@ class SubmissionNamesTest {
     }
 
     @Test
+    void paginaIsPageButANumberAfterAnotherWordIsNone() {
+        assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("página1.png"));
+        assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("pa\u0301gina1.png"), "as a Mac spells it (NFD)");
+        assertEquals(OptionalInt.of(2), SubmissionNames.pageNumber("Pagina_2.PNG"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName("página3.png", 3));
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("p1.png"), "p may be a part, a problem or a panel");
+        assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("paginas1.png"));
+
+        assertEquals("no page number in the name: its number, 1, is not after the word \"page\" (expected a name like "
+                + "page1.png)", SubmissionNames.noPageNumber("p1.png", "page", 8));
+        assertEquals("no page number in the name: its number, 7, is not after the word \"page\" (expected a name like "
+                + "page7.jpg)", SubmissionNames.noPageNumber("scan_07.JPG", "page", 8));
+        assertEquals("no page number in the name: its number, 2024, is not after the word \"page\" (expected a name "
+                + "like page3.png)", SubmissionNames.noPageNumber("IMG 2024.png", "page", 8));
+        assertEquals("no page number in the name (expected a name like page3.png)",
+                SubmissionNames.noPageNumber("notes.png", "page", 8));
+        assertEquals("no page number in the name: its number, 3, is not after the word \"page\" (expected a name like "
+                + "a1-page3.png)", SubmissionNames.noPageNumber("a1-p3.png", "a1-page", 5));
+        assertEquals("no page number in the name: 99999999999 is no page's number (expected a name like page3.png)",
+                SubmissionNames.noPageNumber("page99999999999.png", "page", 8));
+    }
+
+    @Test
     void namesThatAreAPagesNameAndNothingElse() {
         for (String name : new String[] {"page3.png", "Page_3.PNG", "page 03.jpg", "PAGE-3.png", "page3 .png"}) {
             org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName(name, 3), name);
