@@ -209,8 +209,13 @@ public final class CheckCommand implements Callable<Integer> {
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }
         String table = out.toString();
-        if (err.toString().contains("no pictures (")) {
-            return "No pictures (.png, .jpg, .gif, .bmp) in " + folder + ".\n";
+        int none = err.toString().indexOf("no pictures (");
+        if (none >= 0) {
+            // and what it holds instead, when that tells (a zip: unzip it)
+            String said = err.toString().substring(none).lines().findFirst().orElse("");
+            int instead = said.indexOf(": it ");
+            return "No pictures (.png, .jpg, .gif, .bmp) in " + folder + (instead < 0 ? "" : said.substring(instead))
+                    + ".\n";
         }
         if (table.isEmpty()) {
             return err.toString(); // the batch stopped before comparing (a scene simpview cannot draw): why

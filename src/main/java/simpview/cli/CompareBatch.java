@@ -54,6 +54,7 @@ import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
 import simpview.compare.WholePage;
+import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
@@ -400,12 +401,14 @@ public final class CompareBatch {
             Function<String, Optional<String>> namer, Function<String, Match> matcher) {
         List<Path> pictures;
         FolderListing listing;
+        List<WithoutPictures> withoutPictures;
         try {
             List<Path> written = ownFolders(dir, outputs);
             listing = FolderListing.of(dir);
             pictures = listing.pictures().stream().map(dir::relativize)
                     .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p))
                     .map(dir::resolve).toList();
+            withoutPictures = withoutPictures(dir, pictures, listing, written, outputs);
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
@@ -494,7 +497,7 @@ public final class CompareBatch {
         for (CompareTarget target : all) {
             String label = target.label(own.context());
             asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
-                    target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE));
+                    target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE, withoutPictures));
         }
         Set<Integer> firstPages = new TreeSet<>(firstAssignmentWanted);
         if (firstAssignmentFolder) {
@@ -504,12 +507,66 @@ public final class CompareBatch {
         for (int page : firstPages) {
             String label = firstAssignmentLabel(page);
             asked.add(new Wanted(label, firstAssignmentPageRule(page), unreadable.getOrDefault(label, List.of()),
-                    "a1-page" + page + ".png"));
+                    "a1-page" + page + ".png", withoutPictures));
         }
         Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
-        int written = writeResults(rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains);
+        String instead = withoutPictures.stream().filter(w -> w.submission().isEmpty()).map(WithoutPictures::instead)
+                .findFirst().orElse("");
+        int written = writeResults(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
+                instead);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /**
+     * The submissions without a picture, each with what it holds instead (its files, hidden ones and the batch's
+     * own results left out): the whole folder when it holds none; and of a class's folder, one whose pictures are
+     * in first-level folders (at least two of them), each first-level folder that holds none, so that a student who
+     * handed in a zip is not left out of the results but lacks every page. A student's own folder ({@code check}),
+     * or one whose pictures are at its top beside a src/ folder, is one submission: its other folders are none.
+     */
+    private static List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, FolderListing listing,
+            List<Path> written, Outputs outputs) throws IOException {
+        Set<Path> results = outputs.reports().stream().map(r -> r.file().toAbsolutePath().normalize())
+                .collect(Collectors.toSet());
+        List<String> others = listing.others().stream()
+                .filter(f -> !results.contains(f.toAbsolutePath().normalize()))
+                .map(dir::relativize)
+                .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsFolder(dir, p))
+                .map(Path::toString).toList();
+        List<WithoutPictures> without = new ArrayList<>();
+        if (pictures.isEmpty()) {
+            without.add(new WithoutPictures("", others));
+            return without;
+        }
+        Set<String> withPictures = pictures.stream().map(dir::relativize).filter(p -> p.getNameCount() > 1)
+                .map(p -> p.getName(0).toString()).collect(Collectors.toSet());
+        if (outputs.student() || withPictures.size() < 2 || !Files.isDirectory(dir)) {
+            return without;
+        }
+        List<String> folders;
+        try (Stream<Path> entries = Files.list(dir)) {
+            folders = entries.filter(Files::isDirectory).map(p -> p.getFileName().toString())
+                    .filter(name -> !FolderListing.hidden(Path.of(name)) && !withPictures.contains(name)
+                            && written.stream().noneMatch(w -> w.equals(Path.of(name)))
+                            && !Files.isRegularFile(dir.resolve(name).resolve(CSV)))
+                    .sorted(SceneList.NATURAL_ORDER).toList();
+        }
+        for (String folder : folders) {
+            without.add(new WithoutPictures(folder, others.stream()
+                    .filter(f -> JUnitResults.submission(f).equals(folder)).toList()));
+        }
+        return without;
+    }
+
+    /** Whether a file (relative to {@code dir}) is in the output folder of some batch: one holding a compare.csv. */
+    private static boolean inOutputsFolder(Path dir, Path file) {
+        for (Path folder = file.getParent(); folder != null; folder = folder.getParent()) {
+            if (Files.isRegularFile(dir.resolve(folder).resolve(CSV))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -1066,8 +1123,8 @@ public final class CompareBatch {
      * a page but one are rows that score nothing), and says what the exit code is: 0 when every row that
      * counts passes and no submission lacks a page asked for.
      */
-    private int writeResults(List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
-            Predicate<String> plainlyNamed, Predicate<String> alone) {
+    private int writeResults(Path dir, List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
+            Predicate<String> plainlyNamed, Predicate<String> alone, String instead) {
         // A student's folder (check) is one submission, however its pictures are foldered; a class's, one a folder.
         List<BatchRow> rows = outputs.student() ? OnePerPage.asOne(compared, plainlyNamed)
                 : OnePerPage.bySubmission(compared, plainlyNamed, alone);
@@ -1107,7 +1164,9 @@ public final class CompareBatch {
             }
         }
         if (rows.isEmpty()) {
-            err.println(says + "no pictures (.png, .jpg, .gif, .bmp) found");
+            // a folder holding only a zip: the student is told to unzip it
+            err.println(says + "no pictures (.png, .jpg, .gif, .bmp) found"
+                    + (instead.isEmpty() ? "" : " in " + dir + ": " + instead));
             return ExitCode.SCENE_ERROR;
         }
         boolean allPass = rows.stream().filter(BatchRow::counts)

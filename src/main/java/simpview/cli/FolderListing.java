@@ -17,8 +17,10 @@ import simpview.pages.SceneList;
  * @param pictures the pictures, by their paths under the folder (the folder prepended)
  * @param hidden how many pictures were left out as hidden
  * @param unreadable the files, not hidden, in a picture format simpview does not read (page6.tif, page2.webp)
+ * @param others every file, not hidden, that is not a picture simpview reads (a zip, notes.txt, page6.tif): what
+ *     a folder without pictures holds instead
  */
-record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable) {
+record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, List<Path> others) {
 
     /** The endings of the pictures simpview reads (PNG, JPEG, GIF, BMP), in lower case. */
     static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
@@ -45,7 +47,9 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable) {
         List<Path> shown = pictures.stream().filter(f -> !hidden(dir.relativize(f))).toList();
         List<Path> unreadable = all.stream().filter(f -> endsLike(f, UNREAD_ENDINGS) && !hidden(dir.relativize(f)))
                 .toList();
-        return new FolderListing(shown, pictures.size() - shown.size(), unreadable);
+        List<Path> others = all.stream().filter(f -> !endsLike(f, PICTURE_ENDINGS) && !hidden(dir.relativize(f)))
+                .toList();
+        return new FolderListing(shown, pictures.size() - shown.size(), unreadable, others);
     }
 
     /** Whether a file's name ends with one of {@code endings} (lower case), letters of either case alike. */

@@ -132,7 +132,7 @@ public final class BatchTable {
      */
     static String missingNote(String submission, Wanted wanted) {
         boolean top = submission.equals(JUnitResults.TOP);
-        String unreadable = wanted.unreadableNote(submission);
+        String unreadable = wanted.whyMissing(submission);
         return "no picture of " + GradescopeResults.name(wanted.target())
                 + (top ? " at the top of the folder" : submission.isEmpty() ? "" : " in " + submission) + " was found"
                 + (unreadable.isEmpty() ? "" : "; " + unreadable);

@@ -58,7 +58,7 @@ public final class GradescopeResults {
             test.addProperty("number", String.valueOf(++number));
             test.addProperty("score", 0.0);
             test.addProperty("max_score", lost.rule().points());
-            String unreadable = lost.unreadableNote("");
+            String unreadable = lost.whyMissing("");
             test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission"
                     + (unreadable.isEmpty() ? " (a picture is matched by its name, e.g. " + lost.example() + ")."
                             : ": " + unreadable + "."));

@@ -39,6 +39,8 @@ public final class JUnitResults {
         // a submission that handed in only files simpview does not read lacks every page
         wanted.forEach(w -> w.unreadable()
                 .forEach(file -> suites.computeIfAbsent(submission(file), k -> new ArrayList<>())));
+        // so does a first-level folder holding no picture (her pages zipped)
+        Wanted.foldersWithoutPictures(wanted).forEach(folder -> suites.computeIfAbsent(folder, k -> new ArrayList<>()));
         if (suites.isEmpty() && !wanted.isEmpty()) {
             suites.put(TOP, new ArrayList<>());
         }
@@ -115,7 +117,7 @@ public final class JUnitResults {
             xml.writeStartElement("testcase");
             xml.writeAttribute("name", GradescopeResults.name(wanted.target()) + " (no picture)");
             xml.writeAttribute("classname", name);
-            String unreadable = wanted.unreadableNote(name);
+            String unreadable = wanted.whyMissing(name);
             element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found"
                     + (unreadable.isEmpty() ? "" : "; " + unreadable), "missing",
                     "No picture's name names " + GradescopeResults.name(wanted.target()) + "."

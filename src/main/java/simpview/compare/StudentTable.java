@@ -75,7 +75,7 @@ public final class StudentTable {
         rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED)
                 .forEach(r -> out.append(r.file()).append(": not checked, ").append(r.note()).append('\n'));
         for (Wanted wanted : missing) {
-            String unreadable = wanted.unreadableNote("");
+            String unreadable = wanted.whyMissing("");
             out.append("no picture of ").append(GradescopeResults.name(wanted.target()))
                     .append(unreadable.isEmpty() ? " found (name it like " + wanted.example() + ")" : " found: " + unreadable)
                     .append('\n');

@@ -17,8 +17,11 @@ import java.util.Map;
  *     these is told why
  * @param example a file name a picture of it may have, for the words of a missing page ("page3.png",
  *     "a1-page3.png")
+ * @param withoutPictures the submissions that hold no picture at all (a class's first-level folder holding only
+ *     a zip, or the whole folder): each lacks it, and is told what it holds instead
  */
-public record Wanted(String target, RubricRule rule, List<String> unreadable, String example) {
+public record Wanted(String target, RubricRule rule, List<String> unreadable, String example,
+        List<WithoutPictures> withoutPictures) {
 
     /** A page's file name for the examples when none is given. */
     public static final String PAGE_EXAMPLE = "page3.png";
@@ -29,6 +32,10 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
 
     public Wanted(String target, RubricRule rule, List<String> unreadable) {
         this(target, rule, unreadable, PAGE_EXAMPLE);
+    }
+
+    public Wanted(String target, RubricRule rule, List<String> unreadable, String example) {
+        this(target, rule, unreadable, example, List.of());
     }
 
     /** Those of {@code wanted} that none of {@code rows} was matched to. */
@@ -48,8 +55,9 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
      * What each submission (the first folder of a row's path, as
      * {@link JUnitResults#submission} names it) lacks, as (submission, page)
      * pairs in the rows' order; then the submissions that handed in no picture
-     * but a file in a format simpview does not read, which lack every page; all
-     * of {@code wanted}, under no submission (""), when there are neither.
+     * but a file in a format simpview does not read, and the first-level folders
+     * without a picture ({@link #withoutPictures}), which lack every page; all
+     * of {@code wanted}, under no submission (""), when there are none of these.
      */
     public static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows) {
         Map<String, List<BatchRow>> bySubmission = new LinkedHashMap<>();
@@ -60,6 +68,9 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
             w.unreadable().forEach(file -> bySubmission.computeIfAbsent(JUnitResults.submission(file),
                     k -> new ArrayList<>()));
         }
+        for (String folder : foldersWithoutPictures(wanted)) {
+            bySubmission.computeIfAbsent(folder, k -> new ArrayList<>());
+        }
         List<Map.Entry<String, Wanted>> missing = new ArrayList<>();
         if (bySubmission.isEmpty()) {
             wanted.forEach(w -> missing.add(Map.entry("", w)));
@@ -67,6 +78,26 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
         bySubmission.forEach((submission, its) ->
                 missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w))));
         return missing;
+    }
+
+    /** The first-level folders without a picture that lack every page of {@code wanted}, in order, each once. */
+    public static List<String> foldersWithoutPictures(List<Wanted> wanted) {
+        return wanted.stream().flatMap(w -> w.withoutPictures().stream()).map(WithoutPictures::submission)
+                .filter(s -> !s.isEmpty()).distinct().toList();
+    }
+
+    /**
+     * Why {@code submission} ("" or {@link JUnitResults#TOP} for the whole folder) has no picture of it, when what
+     * it handed in tells: a file named like it in a format simpview does not read ({@link #unreadableNote}), or
+     * no picture at all but a zip or other files ({@link WithoutPictures#note}); "" otherwise.
+     */
+    public String whyMissing(String submission) {
+        String unreadable = unreadableNote(submission);
+        if (!unreadable.isEmpty()) {
+            return unreadable;
+        }
+        return withoutPictures.stream().filter(w -> w.isOf(submission)).map(WithoutPictures::note).findFirst()
+                .orElse("");
     }
 
     /** Its unreadable files handed in by {@code submission} (a first-level folder, or "" for the whole folder). */

@@ -155,6 +155,53 @@ class SubmissionContentsTest {
     }
 
     @Test
+    void aStudentWhoseFolderHoldsNoPictureLacksEveryPageAndIsToldWhy() throws Exception {
+        Path class_ = dir.resolve("class");
+        png(class_.resolve("ann/page1.png"), page(1));
+        png(class_.resolve("bob/page1.png"), page(1));
+        Files.createDirectories(class_.resolve("sybil"));
+        Files.write(class_.resolve("sybil/sybil_A2.zip"), new byte[] {'P', 'K', 3, 4});
+        Files.writeString(class_.resolve("sybil/.DS_Store"), "hidden: not hers");
+        Files.createDirectories(class_.resolve("ghost"));
+        Path out = dir.resolve("out");
+        String sybil = "no picture of page 1 (seed 361) in sybil was found; sybil holds no picture (.png, .jpg, .gif, "
+                + ".bmp), only sybil/sybil_A2.zip: unzip it (simpview does not look inside a zip)";
+
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1", "--out-dir", out.toString(),
+                "--junit", dir.resolve("results.xml").toString(), "--html", dir.resolve("web").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "two students lack page 1: " + run.out());
+        List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
+        assertTrue(csv.contains("sybil/,1 (seed 361),,,,,,,,MISSING,,,\"" + sybil + "\""), String.join("\n", csv));
+        assertTrue(csv.contains("ghost/,1 (seed 361),,,,,,,,MISSING,,,\"no picture of page 1 (seed 361) in ghost was "
+                + "found; ghost holds no picture (.png, .jpg, .gif, .bmp): it is empty\""), String.join("\n", csv));
+        String xml = Files.readString(dir.resolve("results.xml"));
+        assertTrue(xml.contains("<testsuite name=\"sybil\" id=\"3\" tests=\"1\" failures=\"1\""), xml);
+        String html = Files.readString(dir.resolve("web/index.html"));
+        assertTrue(html.contains("<td>sybil</td><td></td><td>page 1 (seed 361)</td><td>MISSING</td>"), html);
+        assertTrue(html.contains("<td>" + sybil + "</td>"), html);
+
+        CliRun check = CliRun.of("check", class_.resolve("sybil").toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode());
+        assertTrue(check.err().contains("simpview check: no pictures (.png, .jpg, .gif, .bmp) found in "
+                + class_.resolve("sybil") + ": it holds only sybil_A2.zip: unzip it (simpview does not look inside a "
+                + "zip)"), check.err());
+        assertEquals("No pictures (.png, .jpg, .gif, .bmp) in " + class_.resolve("sybil") + ": it holds only "
+                + "sybil_A2.zip: unzip it (simpview does not look inside a zip).\n",
+                CheckCommand.checkFolder(class_.resolve("sybil"), PageContext.defaults()), "dropped on the window");
+    }
+
+    @Test
+    void aStudentsFolderWithPicturesAtItsTopHasNoOtherSubmissions() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        Files.createDirectories(mine.resolve("src"));
+        Files.writeString(mine.resolve("src/Main.java"), "class Main {}");
+        CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), "src/ is no student: " + run.out());
+    }
+
+    @Test
     void checkNamesEachFileItSkippedWithWhyAndTheNameItExpects() throws Exception {
         Path judy = dir.resolve("judy");
         png(judy.resolve("p1.png"), page(1));
