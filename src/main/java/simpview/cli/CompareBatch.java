@@ -901,6 +901,8 @@ public final class CompareBatch {
                 said = hint;
             }
         }
+        // a note of the picture (its format) is said once, not for each panel
+        rows.stream().flatMap(r -> r.briefNotes().stream()).distinct().forEach(note -> looks.append("; ").append(note));
         return (passing == rows.size() ? "PASS: " : "FAIL: ") + passing + " of " + rows.size() + " panels pass; lowest "
                 + Percent.of(worst.verdict()) + " (" + worst.target() + ")" + looks;
     }
@@ -908,7 +910,8 @@ public final class CompareBatch {
     private static String progress(BatchRow row) {
         return switch (row.result()) {
             case PASS, FAIL -> row.result() + " " + Percent.of(row.verdict())
-                    + (row.panelHint() == null ? "" : "; looks " + row.panelHint().brief());
+                    + (row.panelHint() == null ? "" : "; looks " + row.panelHint().brief())
+                    + row.briefNotes().stream().map(note -> "; " + note).collect(Collectors.joining());
             case ERROR, SKIPPED -> row.result() + ": " + row.note().lines().findFirst().orElse("");
         };
     }

@@ -1,5 +1,6 @@
 package simpview.compare;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -113,8 +114,47 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
      */
     public String remarks() {
         String remarks = counts() ? note : "not counted: " + notCounted + (note.isEmpty() ? "" : "; " + note);
-        return panelHint == null ? remarks : remarks + (remarks.isEmpty() ? "" : "; ") + "looks "
-                + panelHint.brief();
+        List<String> told = new ArrayList<>();
+        if (!remarks.isEmpty()) {
+            told.add(remarks);
+        }
+        if (panelHint != null) {
+            told.add("looks " + panelHint.brief());
+        }
+        told.addAll(briefNotes());
+        return String.join("; ", told);
+    }
+
+    /**
+     * The patch that makes its pass worth a look ({@link ComparisonReport#solidPatch}): of a page or scene that
+     * passes, its largest solid patch, or null. Not of a panel of the first assignment's pages, of which
+     * {@code compare --assignment 1} says none either.
+     */
+    public DiffRegion solidPatch() {
+        return result == Result.PASS && size == Comparison.N ? ComparisonReport.solidPatch(regions) : null;
+    }
+
+    /**
+     * What is worth telling of it besides its shares and its hint, whole, one sentence each: the Gradescope and
+     * JUnit feedback, the web report and {@code check} give them after "note: ".
+     */
+    public List<String> notes() {
+        List<String> notes = new ArrayList<>();
+        DiffRegion patch = solidPatch();
+        if (patch != null) {
+            notes.add(ComparisonReport.solidPatchNote(patch));
+        }
+        return notes;
+    }
+
+    /** The same briefly: the table's note column and the progress line. */
+    public List<String> briefNotes() {
+        List<String> notes = new ArrayList<>();
+        DiffRegion patch = solidPatch();
+        if (patch != null) {
+            notes.add(ComparisonReport.solidPatchBrief(patch));
+        }
+        return notes;
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

@@ -102,12 +102,9 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                 Percent.of(verdictShare()), verdictName(), Percent.of(minimum / 100),
                 maxFailing < 0 ? "" : "; " + Count.with(regions.pixels(), "pixel", "fails", "fail")
                         + String.format(" (at most %,d allowed)", maxFailing)));
-        DiffRegion blob = passes() ? firstBlob() : null;
+        DiffRegion blob = passes() ? solidPatch(regions.largest()) : null;
         if (blob != null) {
-            out.append("note: it passes, but a patch of ").append(Count.of(blob.pixels(), "pixel"))
-                    .append(" differs (")
-                    .append(blob.describe()).append("): more than an edge, so a shape may be missing, moved or of"
-                    + " another colour there; see the diff image\n");
+            out.append("note: ").append(solidPatchNote(blob)).append('\n');
         }
         if (systematic != null) {
             out.append("hint: ").append(systematic.hint(comparison.size())).append('\n');
@@ -123,14 +120,14 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     static final int BLOB_PIXELS = 64;
 
     /**
-     * The largest listed patch at least {@link #BLOB_SIDE} pixels wide and
+     * The largest of the listed patches ({@code largest}, largest first) at least {@link #BLOB_SIDE} pixels wide and
      * tall that fills {@link #BLOB_FILL} of its box with {@link #BLOB_PIXELS} or more, or null. The course's own
      * pictures, which pass, differ from simpview's in thin or sparse patches
      * only (a row along the panel's bottom, pixels along an edge); a whole
      * shape left out leaves a solid one.
      */
-    private DiffRegion firstBlob() {
-        for (DiffRegion r : regions.largest()) {
+    public static DiffRegion solidPatch(List<DiffRegion> largest) {
+        for (DiffRegion r : largest) {
             int wide = r.right() - r.left() + 1;
             int tall = r.top() - r.bottom() + 1;
             boolean solid = r.pixels() >= BLOB_PIXELS && r.pixels() >= BLOB_FILL * wide * tall;
@@ -139,6 +136,18 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
             }
         }
         return null;
+    }
+
+    /** What a picture that passes with a solid patch ({@link #solidPatch}) is told of it, after "note: ". */
+    public static String solidPatchNote(DiffRegion patch) {
+        return "it passes, but a patch of " + Count.of(patch.pixels(), "pixel") + " differs (" + patch.describe()
+                + "): more than an edge, so a shape may be missing, moved or of another colour there; see the diff image";
+    }
+
+    /** The same briefly, for a table's note column and a progress line. */
+    public static String solidPatchBrief(DiffRegion patch) {
+        return "passes, but a patch of " + Count.of(patch.pixels(), "pixel") + " differs (x " + patch.left() + "-"
+                + patch.right() + ", y " + patch.bottom() + "-" + patch.top() + "): a shape may be missing";
     }
 
     private static void appendRow(StringBuilder out, String label, double exactShare, double slackShare) {

@@ -124,6 +124,7 @@ public final class GradescopeResults {
         if (row.panelHint() != null) {
             out.append("hint: ").append(row.panelHint().hint(row.size())).append('\n');
         }
+        row.notes().forEach(note -> out.append("note: ").append(note).append('\n'));
         // a panel of the first assignment's pages has no margins of its own
         out.append(row.margins().isEmpty() ? row.note() : "margins: " + row.margins());
         if (!row.diff().isEmpty()) {

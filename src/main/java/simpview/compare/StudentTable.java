@@ -2,16 +2,19 @@ package simpview.compare;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * {@code simpview check}'s one table for a student: each picture found, the
  * page it was matched to, PASS or FAIL, the share the verdict is on, and the
  * worst region (the largest patch that differs even with slack), in aligned
  * plain-text columns; then the hints of what a whole panel looks like
- * ({@link PanelHint}); then the pictures that do not count (another picture of
+ * ({@link PanelHint}) and the notes of pictures that pass with a solid patch
+ * ({@link BatchRow#notes}); then the pictures that do not count (another picture of
  * their page does) and why, the pages asked for that no picture matched, and
  * one line of counts, of the pictures that count (of the first assignment's
  * pages, of their panels).
@@ -66,6 +69,12 @@ public final class StudentTable {
                 said = hint;
             }
         }
+        Set<String> notes = new LinkedHashSet<>(); // a page of panels: its picture's note once
+        for (BatchRow row : rows) {
+            row.notes().forEach(note -> notes.add("note: " + row.file() + (isPanel(row) ? ""
+                    : " (" + GradescopeResults.name(row.target()) + ")") + ": " + note + "\n"));
+        }
+        notes.forEach(out::append);
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
         Map<String, String> notCounted = new LinkedHashMap<>(); // a first-assignment page: once, not per panel
         rows.stream().filter(r -> !r.counts())

@@ -112,6 +112,47 @@ class GradingCommandTest {
                 "--out-dir", out.toString(), "--diffs", "some").exitCode());
     }
 
+    /**
+     * Page 4 with an 80x60 block of its panel painted black over a shape's edge: 3,447 pixels differ, in one solid
+     * patch, and the page still passes (99.18 %).
+     */
+    private static BufferedImage holed() throws Exception {
+        BufferedImage image = page(4);
+        for (int y = 240; y < 300; y++) {
+            for (int x = 300; x < 380; x++) {
+                image.setRGB(x, y, 0x000000);
+            }
+        }
+        return image;
+    }
+
+    @Test
+    void aPassWithASolidPatchSaysSoInEveryResult() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("st/page4.png"), holed());
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "4", "--out-dir", out.toString(),
+                "--gradescope", out.resolve("results.json").toString(), "--junit", out.resolve("results.xml").toString(),
+                "--html", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        String brief = "passes, but a patch of 3,447 pixels differs (x 250-329, y 400-459): a shape may be missing";
+        String whole = "it passes, but a patch of 3,447 pixels differs (x 250-329, y 400-459 (80x60): 3,447 pixels): "
+                + "more than an edge, so a shape may be missing";
+        assertTrue(run.err().contains("st/page4.png: PASS 99.18 %; " + brief), run.err());
+        String table = Files.readString(out.resolve("compare.md"));
+        assertTrue(table.contains("| PASS |") && table.contains("(a 750x750 page); " + brief + " |"), table);
+        String csv = Files.readAllLines(out.resolve("compare.csv")).get(1);
+        assertTrue(csv.contains(",PASS,") && csv.contains(brief), csv);
+        String output = JsonParser.parseString(Files.readString(out.resolve("results.json"))).getAsJsonObject()
+                .getAsJsonArray("tests").get(0).getAsJsonObject().get("output").getAsString();
+        assertTrue(output.startsWith("PASS: 99.18 %") && output.contains("\nnote: " + whole), output);
+        assertTrue(Files.readString(out.resolve("index.html")).contains("note: " + whole), "the web report's view");
+
+        CliRun check = CliRun.of("check", subs.resolve("st").toString(), "--pages", "4");
+        assertEquals(ExitCode.OK, check.exitCode(), check.err());
+        assertTrue(check.out().contains("\nnote: page4.png (page 4): " + whole), check.out());
+    }
+
     /** compare --pages 1 of an empty folder of submissions, judged by a compare.json of {@code rubric}. */
     private CliRun gradedByRubric(String rubric) throws IOException {
         Path file = dir.resolve("compare.json");
