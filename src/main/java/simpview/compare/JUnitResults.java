@@ -16,7 +16,8 @@ import javax.xml.stream.XMLStreamWriter;
  * first folder of the pictures' paths, "submission" for pictures at the top), one
  * {@code <testcase>} per picture, named by its page, with {@code classname}
  * the submission. A picture below the minimum has a {@code <failure>} whose
- * message is the shares; one that cannot be compared an {@code <error>}; one
+ * message is the shares; one that passes, a {@code <system-out>} with its feedback when it has a hint or a note;
+ * one that cannot be compared an {@code <error>}; one
  * that matches no page, or that does not count (another picture of its page
  * in the submission does, {@link OnePerPage}), is {@code <skipped>}; a page
  * asked for but not found is a failure too. Written with the JDK's XML writer, so every name and text is
@@ -101,7 +102,13 @@ public final class JUnitResults {
                     : GradescopeResults.name(row.target()) + " (" + row.file() + ")");
             xml.writeAttribute("classname", name);
             switch (shown(row)) {
-                case PASS -> { }
+                case PASS -> {
+                    if (worthTelling(row)) {
+                        xml.writeStartElement("system-out");
+                        xml.writeCharacters(GradescopeResults.output(row));
+                        xml.writeEndElement();
+                    }
+                }
                 case FAIL -> element(xml, "failure", shares(row), "below the minimum", GradescopeResults.output(row));
                 case ERROR -> element(xml, "error", row.note().lines().findFirst().orElse(""), "not compared", row.note());
                 case SKIPPED -> {
@@ -135,6 +142,15 @@ public final class JUnitResults {
         xml.writeAttribute("type", type);
         xml.writeCharacters(body);
         xml.writeEndElement();
+    }
+
+    /**
+     * Whether a picture that passes has something to be told all the same, which its testcase's
+     * {@code <system-out>} says (the feedback a runner shows): a hint of what its whole panel looks like, a note
+     * ({@link BatchRow#notes}), or the accepted alternate it matched.
+     */
+    private static boolean worthTelling(BatchRow row) {
+        return row.panelHint() != null || !row.notes().isEmpty() || !row.alternate().isEmpty();
     }
 
     /** A row's result as a testcase shows it: one that does not count is skipped, whatever it came to. */

@@ -336,6 +336,31 @@ public class CompareBatchTest {
         assertEquals(1, results.split("hint:", -1).length - 1, "bob's right page gets none: " + results);
     }
 
+    /** JUnit tells a picture that passes what is worth telling of it (its hint), and says nothing of a plain pass. */
+    @Test
+    void aPassWithAHintHasItInItsJUnitTestcase() throws Exception {
+        Path subs = dir.resolve("subs");
+        BufferedImage page = page(2);
+        BufferedImage down = page(2);
+        for (int y = 51; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                down.setRGB(x, y, page.getRGB(x, y - 1)); // a row down, as row = 650 - y draws it
+            }
+        }
+        png(subs.resolve("ann/page2.png"), down);
+        png(subs.resolve("bob/page2.png"), page);
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "2", "--out-dir", out.toString(),
+                "--junit", out.resolve("results.xml").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertTrue(xml.matches("(?s).*<testcase name=\"page 2 \\(seed 361\\) \\(ann/page2.png\\)\" classname=\"ann\">"
+                + "<system-out>PASS: [^<]*\nhint: your panel is simpview's moved 1 px down: [^<]*</system-out></testcase>.*"),
+                xml);
+        assertTrue(xml.contains("<testcase name=\"page 2 (seed 361) (bob/page2.png)\" classname=\"bob\"></testcase>"),
+                "a plain pass: nothing to say: " + xml);
+    }
+
     @Test
     void aPageSimpviewCannotDrawStopsTheBatchBeforeAnythingIsGraded() throws Exception {
         Path subs = dir.resolve("subs");

@@ -147,6 +147,9 @@ class GradingCommandTest {
                 .getAsJsonArray("tests").get(0).getAsJsonObject().get("output").getAsString();
         assertTrue(output.startsWith("PASS: 99.18 %") && output.contains("\nnote: " + whole), output);
         assertTrue(Files.readString(out.resolve("index.html")).contains("note: " + whole), "the web report's view");
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertTrue(xml.matches("(?s).*<testcase name=\"page 4 \\(st/page4.png\\)\" classname=\"st\"><system-out>PASS: "
+                + "99.18 %[^<]*\nnote: " + java.util.regex.Pattern.quote(whole) + "[^<]*</system-out></testcase>.*"), xml);
 
         CliRun check = CliRun.of("check", subs.resolve("st").toString(), "--pages", "4");
         assertEquals(ExitCode.OK, check.exitCode(), check.err());
