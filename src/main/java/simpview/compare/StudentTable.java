@@ -13,7 +13,7 @@ import java.util.Set;
  * page it was matched to, PASS or FAIL, the share the verdict is on, and the
  * worst region (the largest patch that differs even with slack), in aligned
  * plain-text columns; then the hints of what a whole panel looks like
- * ({@link PanelHint}) and the notes of pictures that pass with a solid patch
+ * ({@link PanelHint}) and the notes of pictures that pass with a solid patch or fail saved as JPEG or GIF
  * ({@link BatchRow#notes}); then the pictures that do not count (another picture of
  * their page does) and why, the pages asked for that no picture matched, and
  * one line of counts, of the pictures that count (of the first assignment's

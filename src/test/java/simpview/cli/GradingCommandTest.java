@@ -156,6 +156,48 @@ class GradingCommandTest {
         assertTrue(check.out().contains("\nnote: page4.png (page 4): " + whole), check.out());
     }
 
+    @Test
+    void aPictureSavedAsJpegOrGifThatFailsIsToldToBeHandedInAsPng() throws Exception {
+        Path st = dir.resolve("subs/st");
+        Files.createDirectories(st);
+        ImageIO.write(page(1), "jpeg", st.resolve("page1.jpg").toFile()); // lossy: fails
+        ImageIO.write(page(2), "gif", st.resolve("page2.gif").toFile()); // thousands of colours: fails
+        ImageIO.write(page(4), "gif", st.resolve("page4.gif").toFile()); // few colours: passes, nothing to say
+        png(st.resolve("page5.png"), spoiled(5)); // fails, but not for its format
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1-5", "--out-dir",
+                out.toString(), "--gradescope", out.resolve("results.json").toString(), "--junit",
+                out.resolve("results.xml").toString(), "--html", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        String jpeg = "JPEG is lossy: saving a page as JPEG changes its colours near every edge, so even a right page "
+                + "can fail; save it as PNG and hand that in";
+        String gif = "GIF holds at most 256 colours: saving a page as GIF changes (or dithers) the others, so even a "
+                + "right page can fail; save it as PNG and hand that in";
+        assertTrue(run.err().matches("(?s).*st/page1\\.jpg: FAIL [0-9.]+ %; " + jpeg + "\n.*"), run.err());
+        assertTrue(run.err().matches("(?s).*st/page2\\.gif: FAIL [0-9.]+ %; " + java.util.regex.Pattern.quote(gif)
+                + "\n.*"), run.err());
+        assertTrue(run.err().contains("st/page4.gif: PASS 100.00 %\n") && run.err().contains("st/page5.png: FAIL "),
+                run.err());
+        List<String> csv = Files.readAllLines(out.resolve("compare.csv"));
+        assertTrue(csv.get(1).startsWith("st/page1.jpg,") && csv.get(1).contains(",FAIL,") && csv.get(1).contains(jpeg),
+                csv.get(1));
+        assertTrue(csv.get(2).startsWith("st/page2.gif,") && csv.get(2).contains(gif), csv.get(2));
+        assertFalse(csv.get(3).contains("hand that in") || csv.get(4).contains("hand that in"), csv.get(3) + csv.get(4));
+        assertTrue(Files.readString(out.resolve("compare.md")).contains(jpeg + " |"));
+        String results = Files.readString(out.resolve("results.json"));
+        assertEquals(2, results.split("hand that in", -1).length - 1, results);
+        assertTrue(results.contains("\\nnote: " + jpeg) && results.contains("\\nnote: " + gif), results);
+        String xml = Files.readString(out.resolve("results.xml"));
+        assertTrue(xml.contains("note: " + jpeg + "\n") && xml.contains("note: " + gif + "\n"), xml);
+        String html = Files.readString(out.resolve("index.html"));
+        assertTrue(html.contains("note: " + jpeg) && html.contains("note: " + gif), "the web report's views");
+
+        CliRun check = CliRun.of("check", st.toString(), "--pages", "1-5");
+        assertTrue(check.out().contains("\nnote: page1.jpg (page 1 (seed 361)): " + jpeg + "\n")
+                && check.out().contains("\nnote: page2.gif (page 2 (seed 361)): " + gif + "\n"), check.out());
+        assertEquals(2, check.out().split("hand that in", -1).length - 1, check.out());
+    }
+
     /** compare --pages 1 of an empty folder of submissions, judged by a compare.json of {@code rubric}. */
     private CliRun gradedByRubric(String rubric) throws IOException {
         Path file = dir.resolve("compare.json");
