@@ -191,6 +191,11 @@ public final class CompareBatch {
      * folder: the teacher who meant --assignment 1 is told so when every picture is one.
      */
     private final Set<String> firstAssignmentUnasked = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /**
+     * With --partial, the share an empty panel gets against each page's, scene's or first-assignment panel's own
+     * ({@link RubricRule#emptyShare}), by its label: measured once, at its first picture that fails.
+     */
+    private final Map<String, Double> emptyShares = new java.util.concurrent.ConcurrentHashMap<>();
 
     /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
@@ -948,18 +953,27 @@ public final class CompareBatch {
                 break;
             }
         }
-        double score = rule.score(best.comparison(), partial);
+        double empty = partial && !best.passes() ? emptyShare(label, rule, ours.panel(), Comparison.N) : Double.NaN;
+        double score = rule.score(best.comparison(), partial, empty);
         if (!diffs.writes(best.passes())) {
-            return BatchRow.compared(relative, label, best, "", rule, score, bestName);
+            return BatchRow.compared(relative, label, best, "", rule, score, bestName, empty);
         }
         String diff = diffs.names().of(relative, 0);
         try {
             PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), diffs.outDir().resolve(diff));
         } catch (IOException e) {
-            return BatchRow.compared(relative, label, best, "", rule, score, bestName)
+            return BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
                     .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage());
         }
-        return BatchRow.compared(relative, label, best, diff, rule, score, bestName);
+        return BatchRow.compared(relative, label, best, diff, rule, score, bestName, empty);
+    }
+
+    /**
+     * The share an empty panel gets against simpview's own {@code ours} (of {@code size} pixels a side) under
+     * {@code rule}, for the page, scene or panel of {@code label}: measured once. Thread-safe.
+     */
+    private double emptyShare(String label, RubricRule rule, int[] ours, int size) {
+        return emptyShares.computeIfAbsent(label, l -> rule.emptyShare(ours, size));
     }
 
     /** The panels of the first assignment's pages, in page coordinates. */
@@ -1034,20 +1048,21 @@ public final class CompareBatch {
                     + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
                     + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page"
                     + (cut.runsPast().isEmpty() ? "" : "; " + cut.runsPast());
-            double score = rule.score(comparison, partial);
             boolean passes = rule.passes(comparison);
             String label = firstAssignmentLabel(page, k);
+            double empty = partial && !passes ? emptyShare(label, rule, cut.ours()[k - 1], A1Layout.PANEL) : Double.NaN;
+            double score = rule.score(comparison, partial, empty);
             if (!diffs.writes(passes)) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint, empty));
                 continue;
             }
             String diff = diffs.names().of(relative, k);
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint, empty));
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
-                        DIFF_NOT_WRITTEN + e.getMessage(), hint));
+                        DIFF_NOT_WRITTEN + e.getMessage(), hint, empty));
             }
         }
         return rows;

@@ -27,10 +27,13 @@ import java.util.Locale;
  *     submission, and why that one ({@link OnePerPage}). It is compared and listed all the same, but scores
  *     nothing and is worth nothing.
  * @param panelHint what its whole panel looks like when one mistake explains it, or null
+ * @param emptyShare of a row scored in part (with --partial, one that fails), the share an empty panel gets
+ *     against simpview's under its rule ({@link RubricRule#emptyShare}), which its zero point is at least; else NaN
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
-        List<DiffRegion> regions, String alternate, int size, String notCounted, PanelHint panelHint) {
+        List<DiffRegion> regions, String alternate, int size, String notCounted, PanelHint panelHint,
+        double emptyShare) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -40,13 +43,19 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow compared(String file, String target, ComparisonReport report, String diff,
             RubricRule rule, double score, String alternate) {
+        return compared(file, target, report, diff, rule, score, alternate, Double.NaN);
+    }
+
+    /** The same, scored in part with {@code emptyShare} the share an empty panel gets (NaN: not measured). */
+    public static BatchRow compared(String file, String target, ComparisonReport report, String diff,
+            RubricRule rule, double score, String alternate, double emptyShare) {
         String note = "panel at " + report.theirs().place().describe()
                 + (alternate.isEmpty() ? "" : "; matched the accepted alternate " + alternate);
         return new BatchRow(file, target, report.comparison().exact(), report.comparison().withSlack(),
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
                 report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "",
-                report.systematic());
+                report.systematic(), emptyShare);
     }
 
     /**
@@ -56,10 +65,17 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
      */
     public static BatchRow panel(String file, String target, Comparison comparison, RubricRule rule, double score,
             String diff, String note, PanelHint hint) {
+        return panel(file, target, comparison, rule, score, diff, note, hint, Double.NaN);
+    }
+
+    /** The same, scored in part with {@code emptyShare} the share an empty panel gets (NaN: not measured). */
+    public static BatchRow panel(String file, String target, Comparison comparison, RubricRule rule, double score,
+            String diff, String note, PanelHint hint, double emptyShare) {
         DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
                 comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
-                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "", hint);
+                diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "", hint,
+                emptyShare);
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -68,18 +84,18 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "", Comparison.N, "", null);
+                List.of(), "", Comparison.N, "", null, Double.NaN);
     }
 
     public static BatchRow skipped(String file, String why) {
         return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
-                Comparison.N, "", null);
+                Comparison.N, "", null, Double.NaN);
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size, notCounted, panelHint);
+                regions, alternate, size, notCounted, panelHint, emptyShare);
     }
 
     /**
@@ -91,7 +107,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
                 rule.flipThreshold());
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
-                regions, alternate, size, why, panelHint);
+                regions, alternate, size, why, panelHint, emptyShare);
     }
 
     /**

@@ -79,6 +79,35 @@ public final class GradescopeResults {
         return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results) + "\n";
     }
 
+    /**
+     * How a failing row scored in part came to its score, on a line of its own after the verdict: the share's way
+     * from the zero point (zero_share, or an empty panel's share when higher) to min_share, and the failing pixels'
+     * factor; "" for a row not scored in part.
+     */
+    private static String partialCredit(BatchRow row) {
+        if (row.result() != BatchRow.Result.FAIL || !row.counts() || Double.isNaN(row.emptyShare())) {
+            return "";
+        }
+        RubricRule rule = row.rule();
+        double zero = rule.zeroPoint(row.emptyShare());
+        String from = row.emptyShare() > rule.zeroShare()
+                ? Percent.of(zero / 100) + ", what an empty panel (simpview's black background alone) gets here, above "
+                        + "zero_share " + Percent.of(rule.zeroShare() / 100) + ","
+                : "zero_share " + Percent.of(zero / 100) + " (an empty panel, simpview's black background alone, gets "
+                        + Percent.of(row.emptyShare() / 100) + " here)";
+        String pixels = rule.maxFailing() >= 0 && row.failing() > rule.maxFailing()
+                ? String.format(Locale.ROOT, ", times %,d allowed / %,d failing pixels", rule.maxFailing(), row.failing())
+                : "";
+        return String.format(Locale.ROOT, "%npartial credit: %s of %s: the share counts from %s up to %s%s",
+                points(row.score()), points(rule.points()) + (rule.points() == 1 ? " point" : " points"), from,
+                Percent.of(rule.minShare() / 100), pixels);
+    }
+
+    /** Points as a score is read: "2", "0.26". */
+    private static String points(double value) {
+        return value == Math.rint(value) ? String.valueOf((long) value) : String.format(Locale.ROOT, "%.2f", value);
+    }
+
     /** "page 6" for a page's label ("6", "2 (seed 361)"), the scene's file name otherwise. */
     static String name(String target) {
         return target.matches("[0-9].*") ? "page " + target : target;
@@ -103,6 +132,7 @@ public final class GradescopeResults {
             out.append("; " + Count.with(row.failing(), "pixel", "fails", "fail")
                     + String.format(Locale.ROOT, " (at most %,d allowed)", rule.maxFailing()));
         }
+        out.append(partialCredit(row));
         out.append(String.format(Locale.ROOT, "%nidentical %s, within 1/255 %s, within 8/255 %s exactly; "
                 + "%s, %s, %s with slack%n", Percent.of(row.exact().identical()), Percent.of(row.exact().within1()),
                 Percent.of(row.exact().within8()), Percent.of(row.slack().identical()), Percent.of(row.slack().within1()),

@@ -1,7 +1,9 @@
 package simpview.compare;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import simpview.surface.PageCanvas;
 
 /**
  * How one page or scene is judged and scored: the rule of a rubric that
@@ -14,7 +16,8 @@ import java.util.List;
  * @param minShare the share within the tolerance (with the deviation) that passes, in percent
  * @param maxFailing the most pixels that may fail (beyond the tolerance even with the deviation), or -1 for no limit
  * @param points the page's score when it passes (Gradescope's max_score)
- * @param zeroShare with partial scoring, the share (percent) at and below which the page scores nothing
+ * @param zeroShare with partial scoring, the share (percent) at and below which the page scores nothing (or at and
+ *     below an empty panel's share, when that is higher: {@link #zeroPoint})
  * @param metric exact, after a small blur, or FLIP (antialiased panels)
  * @param alternates a folder of extra accepted references, or null
  * @param visibility Gradescope's visibility of the page's test
@@ -72,15 +75,23 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
                 && (maxFailing < 0 || comparison.failing(tolerance) <= maxFailing);
     }
 
+    /** The score of a comparison, its zero point {@code zeroShare} alone ({@link #score(Comparison, boolean, double)}). */
+    public double score(Comparison comparison, boolean partial) {
+        return score(comparison, partial, Double.NaN);
+    }
+
     /**
      * The score of a comparison. All or nothing: the points when it passes, else 0.
      * Partial: the points when it passes; else the points times how far the share
-     * got from {@code zeroShare} towards {@code minShare} (0 at or below it, at most 1:
+     * got from the zero point ({@link #zeroPoint}: {@code zeroShare}, or {@code emptyShare} when higher) towards
+     * {@code minShare} (0 at or below it, at most 1:
      * a page failing by its pixel count alone is not paid for a share above minShare),
      * and when there are more failing pixels than allowed, times allowed / failing.
      * Rounded down to hundredths (docs/grading.md gives it as a formula).
+     *
+     * @param emptyShare what an empty panel gets against simpview's ({@link #emptyShare}), or NaN: not measured
      */
-    public double score(Comparison comparison, boolean partial) {
+    public double score(Comparison comparison, boolean partial, double emptyShare) {
         if (passes(comparison)) {
             return points;
         }
@@ -88,13 +99,34 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
             return 0;
         }
         double share = comparison.verdictShare(tolerance) * 100;
-        double part = minShare <= zeroShare ? (share >= minShare ? 1 : 0)
-                : Math.max(0, Math.min(1, (share - zeroShare) / (minShare - zeroShare)));
+        double zero = zeroPoint(emptyShare);
+        double part = minShare <= zero ? (share >= minShare ? 1 : 0)
+                : Math.max(0, Math.min(1, (share - zero) / (minShare - zero)));
         int failing = comparison.failing(tolerance);
         if (maxFailing >= 0 && failing > maxFailing) {
             part *= (double) maxFailing / failing;
         }
         return Math.floor(points * part * 100 + 1e-9) / 100;
+    }
+
+    /**
+     * The share, in percent, that an empty panel (simpview's background alone, {@link PageCanvas#BACKGROUND}: a
+     * picture of nothing) gets against simpview's own panel {@code ours}, {@code size} pixels a side, under this
+     * rule. A page mostly background (lines on black, a lit object in the middle) gives a blank picture much of
+     * its share, above zero_share; partial scoring pays for a share above this one only.
+     */
+    public double emptyShare(int[] ours, int size) {
+        int[] empty = new int[size * size];
+        Arrays.fill(empty, PageCanvas.BACKGROUND & 0xFFFFFF);
+        return compare(ours, empty, size).verdictShare(tolerance) * 100;
+    }
+
+    /**
+     * The share at or below which a failing page scores nothing, with partial scoring: {@code zeroShare}, or the
+     * share an empty panel gets ({@link #emptyShare}) when that is higher, so a blank picture earns nothing.
+     */
+    public double zeroPoint(double emptyShare) {
+        return Double.isNaN(emptyShare) ? zeroShare : Math.max(zeroShare, emptyShare);
     }
 
     /** Whether this rule is for the page or scene of that key ("page6", "pageC") and page number (0 for a scene). */

@@ -47,7 +47,7 @@ public final class A1Layout {
         image.fillRect(0, 0, PageCanvas.SIZE, PageCanvas.SIZE, Colors.WHITE);
         Drawable[] panels = new Drawable[PANELS];
         for (int k = 1; k <= PANELS; k++) {
-            image.fillRect(left(k), top(k), left(k) + PANEL, top(k) + PANEL, Colors.BLACK);
+            image.fillRect(left(k), top(k), left(k) + PANEL, top(k) + PANEL, PageCanvas.BACKGROUND);
             panels[k - 1] = new PanelDrawable(image, left(k), top(k), PANEL);
         }
         return panels;

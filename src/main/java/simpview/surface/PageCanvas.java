@@ -14,6 +14,11 @@ public final class PageCanvas {
     public static final int MARGIN = 50;
     public static final int PANEL = Camera.PANEL_SIZE;
     public static final int SIZE = PANEL + 2 * MARGIN;
+    /**
+     * The colour a panel is cleared to, the background of every page and scene (pages 1 to 8, depth-cued and lit
+     * scenes, the first assignment's panels): what simpview shows where nothing is drawn.
+     */
+    public static final int BACKGROUND = Colors.BLACK;
 
     private final BufferedImage image;
     private final ImageDrawable imageDrawable;
@@ -34,7 +39,7 @@ public final class PageCanvas {
         panel = new PanelDrawable(imageDrawable, MARGIN, MARGIN, PANEL);
         zbuffer = new ZBuffer(PANEL, PANEL);
         java.util.Arrays.fill(clearedRow, Colors.WHITE);
-        java.util.Arrays.fill(clearedRow, MARGIN, MARGIN + PANEL, Colors.BLACK);
+        java.util.Arrays.fill(clearedRow, MARGIN, MARGIN + PANEL, BACKGROUND);
         clear();
     }
 
@@ -55,7 +60,7 @@ public final class PageCanvas {
         if (threads.isOne()) {
             imageDrawable.fillRect(0, MARGIN, MARGIN, MARGIN + PANEL, Colors.WHITE);
             imageDrawable.fillRect(MARGIN + PANEL, MARGIN, SIZE, MARGIN + PANEL, Colors.WHITE);
-            imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, Colors.BLACK);
+            imageDrawable.fillRect(MARGIN, MARGIN, MARGIN + PANEL, MARGIN + PANEL, BACKGROUND);
         } else {
             imageDrawable.oweRows(MARGIN, MARGIN + PANEL, clearedRow);
         }

@@ -198,6 +198,54 @@ class GradingCommandTest {
         assertEquals(2, check.out().split("hand that in", -1).length - 1, check.out());
     }
 
+    /** Page 1 with the top {@code rows} rows of its panel painted black, its background: those lines left out. */
+    private static BufferedImage withoutTopRows(int rows) throws Exception {
+        BufferedImage image = page(1);
+        for (int y = 50; y < 50 + rows; y++) {
+            for (int x = 50; x < 700; x++) {
+                image.setRGB(x, y, 0x000000);
+            }
+        }
+        return image;
+    }
+
+    /** The one test of a run of compare --partial over {@code picture} as page 1, judged by the defaults. */
+    private JsonObject partiallyScored(String name, BufferedImage picture) throws Exception {
+        Path student = dir.resolve(name);
+        png(student.resolve("page1.png"), picture);
+        Path results = dir.resolve(name + ".json");
+        CliRun run = CliRun.of("compare", "--dir", student.toString(), "--pages", "1", "--partial", "--gradescope",
+                results.toString());
+        assertFalse(run.showsStackTrace(), run.err());
+        return JsonParser.parseString(Files.readString(results)).getAsJsonObject().getAsJsonArray("tests").get(0)
+                .getAsJsonObject();
+    }
+
+    /**
+     * Page 1 is thin lines on black: a blank panel has 95.31 % of simpview's within 8/255, above the default
+     * zero_share, 90. Partial credit starts at that share, so a blank picture earns nothing.
+     */
+    @Test
+    void partialCreditStartsAtTheShareOfAnEmptyPanel() throws Exception {
+        JsonObject blank = partiallyScored("blank", withoutTopRows(650));
+        assertEquals(0.0, blank.get("score").getAsDouble(), "was 0.59 when partial credit started at zero_share 90");
+        String empty = "partial credit: 0 of 1 point: the share counts from 95.31 %, what an empty panel (simpview's "
+                + "black background alone) gets here, above zero_share 90.00 %, up to 99.00 %";
+        assertTrue(blank.get("output").getAsString().startsWith("FAIL: 95.31 % of panel pixels within 8/255 with 1 px "
+                + "slack (99.00 % needed)\n" + empty + "\n"), blank.get("output").getAsString());
+
+        assertEquals(1.0, partiallyScored("right", page(1)).get("score").getAsDouble());
+
+        JsonObject half = partiallyScored("half", withoutTopRows(380));
+        String output = half.get("output").getAsString();
+        double share = Double.parseDouble(output.substring("FAIL: ".length(), output.indexOf(" %")));
+        double score = half.get("score").getAsDouble();
+        assertEquals((share - 95.31) / (99 - 95.31), score, 0.015, "in proportion from the empty panel's share: " + output);
+        assertTrue(score > 0.3 && score < 0.7, "about halfway: " + output);
+        assertTrue(output.contains(String.format(java.util.Locale.ROOT, "%npartial credit: %.2f of 1 point: the share "
+                + "counts from 95.31 %%", score)), output);
+    }
+
     /** compare --pages 1 of an empty folder of submissions, judged by a compare.json of {@code rubric}. */
     private CliRun gradedByRubric(String rubric) throws IOException {
         Path file = dir.resolve("compare.json");

@@ -66,7 +66,7 @@ class GradingDocTest {
     @Test
     void theFormulasExampleIsWhatThePageScores() throws Exception {
         String doc = grading();
-        assertTrue(doc.contains("points × min(1, max(0, (share − zero_share) / (min_share − zero_share))) × allowed / failing"),
+        assertTrue(doc.contains("points × min(1, max(0, (share − zero) / (min_share − zero))) × allowed / failing"),
                 "the formula as the code computes it");
         Matcher example = Pattern.compile("at 99\\.51 % with 2,040 failing pixels where 2,000 are allowed, a 2-point page "
                 + "scores 2 × 1 × 2,000 / 2,040 = (\\d\\.\\d\\d)").matcher(doc);
