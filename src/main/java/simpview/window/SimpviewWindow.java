@@ -1015,11 +1015,24 @@ public final class SimpviewWindow {
             return;
         }
         Primitives primitives = result.facts().primitives();
-        if (limit < 0 || limit > primitives.size() || limit == 0) {
+        if (limit < 1) {
             pageView.outline(null);
             return;
         }
-        status.say("primitive " + limit + " of " + primitives.size() + ", " + primitives.describe(limit - 1)
+        // The scene's file may have changed while stepping: what the line says is what was drawn.
+        if (primitives.size() == 0) {
+            settings = settings.withStepLimit(-1);
+            pageView.outline(null);
+            status.say("Stepping ended: the scene has no primitives now.");
+            return;
+        }
+        String shrank = "";
+        if (limit > primitives.size()) {
+            shrank = " (the scene has " + primitives.size() + " now: stepping was at " + limit + ")";
+            limit = primitives.size();
+            settings = settings.withStepLimit(limit);
+        }
+        status.say("primitive " + limit + " of " + primitives.size() + ", " + primitives.describe(limit - 1) + shrank
                 + "   (] next · [ back · Shift: ten · \\ all)");
         pageView.outline(Inspector.toImage(primitives.outline(limit - 1)));
     }

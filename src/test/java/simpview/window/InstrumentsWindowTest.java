@@ -272,6 +272,35 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    void aSceneThatShrinksWhileSteppedIsSteppedAtItsLastPrimitiveAndStaysThereWhenItGrowsAgain() throws Exception {
+        String four = "# four\n" + triangleAt(-150) + "polygon (-90, -90, -50) (-20, -90, -50) (-55, -20, -50)\n"
+                + "polygon (20, 20, -50) (90, 20, -50) (55, 90, -50)\n" + "polygon (20, -90, -50) (90, -90, -50) (55, -20, -50)\n";
+        Path scene = Files.writeString(dir.resolve("four.simp"), four);
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView all = driver.awaitShown(new View.OfScene(scene));
+        assertEquals(4, all.facts().primitives().size());
+        driver.onEdt(() -> window().perform(WindowAction.STEP_ON));
+        driver.onEdt(() -> window().perform(WindowAction.STEP_ON));
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 2 of 4, four.simp:3"),
+                "stepping at primitive 2");
+
+        Files.writeString(scene, "# one\n" + triangleAt(-150));
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 1 of 1, four.simp:2"),
+                "stepping at the one primitive left: " + driver.onEdt(() -> window().status().messageText()));
+        assertTrue(driver.onEdt(() -> window().status().messageText()).contains("stepping was at 2"));
+
+        Files.writeString(scene, four);
+        driver.awaitEdt(() -> !window().busy() && window().shown().facts().primitives().size() == 4,
+                "the four primitives again");
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("primitive 1 of 4, four.simp:2"),
+                driver.onEdt(() -> window().status().messageText()));
+        Point second = new Point(PageCanvas.MARGIN + 65, PageCanvas.MARGIN + PageCanvas.PANEL - 65);
+        assertEquals(0xFF000000, driver.onEdt(() -> window().shown()).image().getRGB(second.x, second.y),
+                "only the first primitive drawn, as the line says");
+    }
+
+    @Test
     void aLitSceneIsInspectedSteppedAndTurnedLikeTheOthers() throws Exception {
         Path scene = Files.writeString(dir.resolve("lit.simp"), String.join("\n",
                 "# a lit scene: a wall, and a square in front of it",
