@@ -83,6 +83,9 @@ public final class SimpviewWindow {
     private DrawSettings settings = DrawSettings.WINDOW;
     private final Orbit orbit = new Orbit();
     private boolean depthView;
+    /** The pointer's last place over the page view (x = -1: off it): the hovered pixel follows a zoom under it. */
+    private int pointerX = -1;
+    private int pointerY = -1;
     /** The image pixel under the pointer, and the pinned one (x = -1: none). */
     private int hoverX = -1;
     private int hoverY = -1;
@@ -167,7 +170,7 @@ public final class SimpviewWindow {
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
-                inspect();
+                inspectUnderPointer();
             }
         });
         bindKeys();
@@ -204,7 +207,7 @@ public final class SimpviewWindow {
         @Override
         public void zoomPanChanged() {
             pageView.repaint();
-            inspect();
+            inspectUnderPointer();
         }
 
         @Override
@@ -226,15 +229,32 @@ public final class SimpviewWindow {
 
         @Override
         public void hover(int x, int y) {
-            ZoomPan zoomPan = pageView.zoomPan();
-            int wasX = hoverX;
-            int wasY = hoverY;
-            hoverX = x < 0 ? -1 : zoomPan.imageX(x);
-            hoverY = y < 0 ? -1 : zoomPan.imageY(y);
-            inspect();
-            if (pinnedX < 0 && hoverX >= 0 && hoverY >= 0 && (hoverX != wasX || hoverY != wasY)) {
-                refreshPanel(); // the panel follows the pointer while nothing is pinned
-            }
+            pointerX = x;
+            pointerY = y;
+            inspectUnderPointer();
+        }
+    }
+
+    /**
+     * The pixel under the pointer's last place, found again: the pointer
+     * moved, or the zoom, the pan or the view's size changed under it.
+     * Returns whether it is another pixel than before.
+     */
+    private boolean followPointer() {
+        ZoomPan zoomPan = pageView.zoomPan();
+        int wasX = hoverX;
+        int wasY = hoverY;
+        hoverX = pointerX < 0 ? -1 : zoomPan.imageX(pointerX);
+        hoverY = pointerY < 0 ? -1 : zoomPan.imageY(pointerY);
+        return hoverX != wasX || hoverY != wasY;
+    }
+
+    /** The status line's inspector, and the panel while nothing is pinned, on the pixel under the pointer. */
+    private void inspectUnderPointer() {
+        boolean another = followPointer();
+        inspect();
+        if (pinnedX < 0 && hoverX >= 0 && hoverY >= 0 && another) {
+            refreshPanel(); // the panel follows the pointer while nothing is pinned
         }
     }
 
@@ -432,7 +452,7 @@ public final class SimpviewWindow {
     private void zoom(Consumer<ZoomPan> change) {
         change.accept(pageView.zoomPan());
         pageView.repaint();
-        inspect();
+        inspectUnderPointer();
     }
 
     /** The status line's inspector: the pinned pixel, else the one under the pointer, and the zoom. */
@@ -798,6 +818,7 @@ public final class SimpviewWindow {
         pinnedY = offset + last - y;
         pageView.zoomPan().bringIntoView(pinnedX, pinnedY);
         pageView.pin(pinnedX, pinnedY);
+        followPointer();
         inspect();
         refreshPanel();
         status.say("Pinned " + (pageCoordinates ? "page" : "panel") + " pixel (" + x + ", " + y + "): the image's column "
@@ -1286,6 +1307,7 @@ public final class SimpviewWindow {
         frame.setTitle(coursePage ? "simpview — " + coursePages.describe() + (result.error() == null ? "" : " — error")
                 : result.title());
         watcher.watch(result.facts().files(), job.stampsAsRead());
+        followPointer();
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (coursePage && result.warnings().isEmpty()) {

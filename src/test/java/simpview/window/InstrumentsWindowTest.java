@@ -149,6 +149,25 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    void aZoomByKeyInspectsThePixelNowUnderTheStillPointer() throws Exception {
+        open();
+        Point p = driver.onScreen(200, 300);
+        driver.movePointer(p.x, p.y);
+        awaitInspector("x 150, y 399 (image row 300)");
+
+        driver.onEdt(() -> window().perform(WindowAction.ZOOM_IN));
+        Point now = driver.onEdt(() -> {
+            Point corner = window().pageView().getLocationOnScreen();
+            ZoomPan zoomPan = window().pageView().zoomPan();
+            return new Point(zoomPan.imageX(p.x - corner.x), zoomPan.imageY(p.y - corner.y));
+        });
+        assertNotEquals(new Point(200, 300), now, "the zoom moved another pixel under the pointer");
+        String expected = "x " + (now.x - PageCanvas.MARGIN) + ", y " + (PageCanvas.MARGIN + PageCanvas.PANEL - 1 - now.y)
+                + " (image row " + now.y + ")";
+        awaitInspector(expected);
+    }
+
+    @Test
     void theDepthViewShowsTheZBuffer() throws Exception {
         open();
         driver.focusByClicking(new View.OfPage(2));
@@ -399,6 +418,15 @@ public class InstrumentsWindowTest extends WindowTestCase {
         seen.set(true);
         assertEquals("20,000 lines read (50 % of the scene file)", said);
         driver.awaitShown(new View.OfScene(scene));
+    }
+
+    /** Until the status line's inspector says {@code part}; failing, with what it says instead. */
+    private void awaitInspector(String part) throws Exception {
+        try {
+            driver.awaitEdt(() -> window().status().inspectorText().contains(part), "the inspector to say " + part);
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "; it says " + driver.onEdt(() -> window().status().inspectorText()), e);
+        }
     }
 
     private static String triangleAt(int z) {
