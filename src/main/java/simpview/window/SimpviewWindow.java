@@ -467,7 +467,7 @@ public final class SimpviewWindow {
         String line = (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs;
         // Below 1:1 the zoom comes first: the line may be cut at its end, and that must not be lost.
         status.inspect(pixel == null ? zoom : pageView.zoomPan().belowOneToOne() ? zoom + " · " + line
-                : line + " · " + zoom);
+                : line + " · " + zoom, pixel != null);
         if (settings.stepLimit() < 0) {
             boolean magnified = PixelGrid.shows(pageView.zoomPan());
             pageView.outline(magnified ? Inspector.outlineAt(shown, x, y) : null);

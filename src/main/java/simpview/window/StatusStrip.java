@@ -37,6 +37,8 @@ public final class StatusStrip {
     private final JButton cancel = new JButton("Cancel");
     private final Timer ticker = new Timer(100, e -> tick());
     private RenderJob watched;
+    /** The inspector's last line of a pixel, or null. */
+    private String lastPixelLine;
 
     StatusStrip(Runnable onCancel) {
         panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 46));
@@ -80,14 +82,30 @@ public final class StatusStrip {
         cards.show(panel, TEXT);
     }
 
-    /** The inspector's line: the pixel under the pointer (or pinned), the zoom. */
-    void inspect(String line) {
-        inspector.setText(line == null || line.isEmpty() ? " " : line);
-        inspector.setToolTipText(line == null || line.isEmpty() ? null : line);
+    /**
+     * The inspector's line: the pixel under the pointer (or pinned) and the
+     * zoom ({@code ofAPixel}), or the zoom alone. A line longer than the
+     * window is cut with "…"; its tooltip holds the whole of the last pixel's
+     * line, and keeps it once the pointer has left the page to point at the
+     * line and read it.
+     */
+    void inspect(String line, boolean ofAPixel) {
+        boolean blank = line == null || line.isEmpty();
+        inspector.setText(blank ? " " : line);
+        if (ofAPixel && !blank) {
+            lastPixelLine = line;
+        }
+        inspector.setToolTipText(ofAPixel || lastPixelLine == null ? blank ? null : line
+                : "the last pixel inspected: " + lastPixelLine);
     }
 
     String inspectorText() {
         return inspector.getText();
+    }
+
+    /** What hovering the inspector's line shows in full. */
+    String inspectorToolTip() {
+        return inspector.getToolTipText();
     }
 
     String messageText() {

@@ -168,6 +168,28 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    void theInspectorsLineKeepsTheLastPixelsWholeTextAsItsTooltipWhenThePointerGoesToReadIt() throws Exception {
+        Path scene = Files.writeString(dir.resolve("a-scene-with-a-long-name.simp"), "# one\n" + triangleAt(-150));
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.movePointer(centre.x, centre.y);
+        awaitInspector("drawn by primitive 1 of 1: a-scene-with-a-long-name.simp:2 polygon");
+        String line = driver.onEdt(() -> window().status().inspectorText());
+        assertEquals(line, driver.onEdt(() -> window().status().inspectorToolTip()));
+
+        Point onTheLine = driver.onEdt(() -> {
+            java.awt.Component strip = window().status().component();
+            Point corner = strip.getLocationOnScreen();
+            return new Point(corner.x + strip.getWidth() / 2, corner.y + 10);
+        });
+        driver.movePointer(onTheLine.x, onTheLine.y);
+        driver.awaitEdt(() -> !window().status().inspectorText().contains("drawn by"), "the hover to end");
+        assertEquals("the last pixel inspected: " + line, driver.onEdt(() -> window().status().inspectorToolTip()));
+    }
+
+    @Test
     void theDepthViewShowsTheZBuffer() throws Exception {
         open();
         driver.focusByClicking(new View.OfPage(2));
