@@ -25,9 +25,13 @@ public final class FileDialogs {
         this.sceneFolder = simpDir.toFile();
     }
 
-    /** Asks for a .simp file to open. */
-    Optional<Path> chooseScene() {
-        JFileChooser chooser = new JFileChooser(sceneFolder);
+    /**
+     * Asks for a .simp file to open, starting in {@code shownSceneFolder} (the
+     * folder of the scene on screen), or where the dialog was last left when
+     * that is null (at first the course's pages' folder).
+     */
+    Optional<Path> chooseScene(Path shownSceneFolder) {
+        JFileChooser chooser = new JFileChooser(shownSceneFolder != null ? shownSceneFolder.toFile() : sceneFolder);
         chooser.setDialogTitle("Open a SIMP scene");
         chooser.setFileFilter(new FileNameExtensionFilter("SIMP scenes (*.simp)", "simp"));
         if (chooser.showOpenDialog(owner) != JFileChooser.APPROVE_OPTION) {

@@ -846,10 +846,16 @@ public final class SimpviewWindow {
 
     /** Where the compare dialog opens: the shown scene's folder, else the course's pages' folder. */
     Path dialogFolder() {
-        if (shown != null && shown.view() instanceof View.OfScene scene && scene.file().toAbsolutePath().getParent() != null) {
+        Path folder = shownSceneFolder();
+        return folder != null ? folder : options.simpDir();
+    }
+
+    /** The folder of the scene on screen (an opened scene's, a course page's), or null on the pages. */
+    private Path shownSceneFolder() {
+        if (shown != null && shown.view() instanceof View.OfScene scene) {
             return scene.file().toAbsolutePath().getParent();
         }
-        return options.simpDir();
+        return null;
     }
 
     /**
@@ -1341,7 +1347,7 @@ public final class SimpviewWindow {
     }
 
     private void chooseScene() {
-        dialogs.chooseScene().ifPresent(this::openScene);
+        dialogs.chooseScene(shownSceneFolder()).ifPresent(this::openScene);
     }
 
     private void save() {

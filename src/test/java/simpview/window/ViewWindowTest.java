@@ -180,6 +180,52 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> !window.frame().getGlassPane().isVisible(), "the key help hidden by F1");
     }
 
+    @Test
+    void openStartsInTheShownScenesFolderAndOnThePagesWhereItWasLeft() throws Exception {
+        Path mine = Files.createDirectories(dir.resolve("mine"));
+        Path scene = Files.writeString(mine.resolve("own.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        driver = WindowDriver.open(new WindowOptions(361, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        assertEquals(mine.toRealPath(), openDialogFolder(window));
+
+        driver.onEdt(window::next);
+        driver.awaitShown(new View.OfPage(2));
+        assertEquals(TestScenes.courseSimpDir().toRealPath(), openDialogFolder(window));
+    }
+
+    /** The folder File > Open's dialog starts in, read from the dialog itself, which is then cancelled. */
+    private Path openDialogFolder(SimpviewWindow window) throws Exception {
+        SwingUtilities.invokeLater(() -> window.perform(WindowAction.OPEN)); // modal: it returns when the dialog closes
+        java.util.concurrent.atomic.AtomicReference<javax.swing.JFileChooser> found =
+                new java.util.concurrent.atomic.AtomicReference<>();
+        driver.awaitEdt(() -> {
+            for (java.awt.Window w : java.awt.Window.getWindows()) {
+                if (w.isShowing() && w instanceof javax.swing.JDialog dialog) {
+                    found.set(chooserIn(dialog.getContentPane()));
+                }
+            }
+            return found.get() != null;
+        }, "the Open dialog");
+        Path folder = driver.onEdt(() -> found.get().getCurrentDirectory().toPath().toRealPath());
+        driver.onEdt(() -> found.get().cancelSelection());
+        driver.awaitEdt(() -> !found.get().isShowing(), "the Open dialog closed");
+        return folder;
+    }
+
+    private static javax.swing.JFileChooser chooserIn(java.awt.Container container) {
+        for (java.awt.Component c : container.getComponents()) {
+            if (c instanceof javax.swing.JFileChooser chooser) {
+                return chooser;
+            }
+            if (c instanceof java.awt.Container inner && chooserIn(inner) != null) {
+                return chooserIn(inner);
+            }
+        }
+        return null;
+    }
+
     /** Clicks a menu on the bar, waits for its popup, and clicks the action's entry in it. */
     private JMenuItem chooseFromMenu(SimpviewWindow window, String menuName, WindowAction action) throws Exception {
         JMenu menu = driver.onEdt(() -> {
