@@ -44,8 +44,9 @@ public enum WindowAction {
             + "depth cue", "C"),
     BACK_FACES(Menu.VIEW, "Back faces", "pixels of polygons clockwise on the panel (facing away) tinted magenta, "
             + "with how many there are (again: the page)", "K"),
-    OVERDRAW(Menu.VIEW, "Overdraw", "each pixel by how many writes reached its depth test, black (none) to white "
-            + "(the most), the scale above the panel (again: the page)", "V"),
+    OVERDRAW(Menu.VIEW, "Overdraw", "each pixel by how many writes reached its depth test, black (none), then a "
+            + "heat ramp from blue (one) through red and yellow to white (the most), the scale above the panel "
+            + "(again: the page)", "V"),
     DEPTH_FAILURES(Menu.VIEW, "Depth-test failures", "each pixel by how many writes lost its depth test, with the "
             + "scale (again: the page)", "shift V"),
     CULLED(Menu.VIEW, "Culled and clipped-away outlines", "outline the primitives culled (every vertex outside one "
