@@ -478,6 +478,9 @@ public final class SimpviewWindow {
     private void togglePin() {
         if (pinnedX >= 0) {
             pinnedX = pinnedY = -1;
+            if (status.messageText().startsWith("Pinned ")) {
+                status.say("Unpinned: the inspector follows the pointer again.");
+            }
         } else if (hoverX >= 0 && hoverY >= 0) {
             pinnedX = hoverX;
             pinnedY = hoverY;

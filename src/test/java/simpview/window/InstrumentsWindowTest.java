@@ -8,6 +8,7 @@ import simpview.window.render.RenderedView;
 import simpview.window.render.View;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -187,6 +188,17 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.movePointer(onTheLine.x, onTheLine.y);
         driver.awaitEdt(() -> !window().status().inspectorText().contains("drawn by"), "the hover to end");
         assertEquals("the last pixel inspected: " + line, driver.onEdt(() -> window().status().inspectorToolTip()));
+    }
+
+    @Test
+    void unpinningTakesAwayTheLineThatSaidWhatWasPinned() throws Exception {
+        open();
+        driver.onEdt(() -> window().goToPixel("0, 0"));
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("Pinned panel pixel (0, 0)"));
+        driver.onEdt(() -> window().perform(WindowAction.PIN));
+        assertEquals("Unpinned: the inspector follows the pointer again.",
+                driver.onEdt(() -> window().status().messageText()));
+        assertFalse(driver.onEdt(() -> window().status().inspectorText()).startsWith("pinned"));
     }
 
     @Test
