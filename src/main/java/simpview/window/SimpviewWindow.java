@@ -833,14 +833,17 @@ public final class SimpviewWindow {
         String chain = inspectorPanel.isShown() ? inspectorPanel.ownerChainText() : "";
         String note = "";
         if (chain.isEmpty()) {
+            // Without the panel: the owner's own file:line, where a scene gave it; a page's own primitive by its name.
             int x = pinnedX >= 0 ? pinnedX : hoverX;
             int y = pinnedX >= 0 ? pinnedY : hoverY;
+            int owner = Inspector.ownerAt(shown, x, y);
+            String place = owner < 0 ? null : shown.facts().primitives().place(owner);
             String line = x < 0 ? null : Inspector.describe(shown, x, y);
-            if (line == null || !line.contains("drawn by primitive")) {
+            if (place == null && (line == null || !line.contains("drawn by primitive"))) {
                 status.say("No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
                 return;
             }
-            chain = line.substring(line.indexOf("drawn by primitive"));
+            chain = place != null ? place : line.substring(line.indexOf("drawn by primitive"));
             note = " (with the panel open, I, the copy is the whole include chain)";
         }
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);

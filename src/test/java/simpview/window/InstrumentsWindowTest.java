@@ -191,6 +191,21 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    void withoutThePanelCopyingTheChainCopiesTheOwnersOwnFileAndLine() throws Exception {
+        Path scene = Files.writeString(dir.resolve("own.simp"), "# one\n" + triangleAt(-150));
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        driver.onEdt(() -> window().goToPixel("325, 325"));
+        driver.onEdt(() -> window().perform(WindowAction.COPY_CHAIN));
+        String place = scene.toAbsolutePath() + ":2";
+        driver.awaitEdt(() -> window().status().messageText().startsWith("Copied: " + place + " (with the panel open"),
+                "the owner's place copied: " + place);
+        assertEquals(place, Toolkit.getDefaultToolkit().getSystemClipboard()
+                .getData(java.awt.datatransfer.DataFlavor.stringFlavor));
+    }
+
+    @Test
     void unpinningTakesAwayTheLineThatSaidWhatWasPinned() throws Exception {
         open();
         driver.onEdt(() -> window().goToPixel("0, 0"));

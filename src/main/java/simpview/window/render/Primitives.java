@@ -53,6 +53,17 @@ public final class Primitives {
         return file.getFileName() + ":" + line + (text.isEmpty() ? "" : " " + text);
     }
 
+    /**
+     * Where a scene's primitive was given: its file's whole path and the
+     * line, "/home/me/course-simp/cube.simp:20"; null for a page's own.
+     */
+    public String place(int primitive) {
+        if (log == null || primitive < 0 || primitive >= log.size()) {
+            return null;
+        }
+        return log.file(primitive).toAbsolutePath() + ":" + log.line(primitive);
+    }
+
     /** Its projected vertices, panel x and y in turn, or null when not known. */
     public double[] outline(int primitive) {
         return log == null ? null : log.outline(primitive);
