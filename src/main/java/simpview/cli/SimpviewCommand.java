@@ -57,8 +57,9 @@ public final class SimpviewCommand implements Callable<Integer> {
     private Path simpDir;
 
     @Parameters(arity = "0..*", paramLabel = "SCENE",
-            description = "a .simp scene to open at start (stepping goes on to the pages); several scenes, or a "
-                    + "folder of them, become the window's first pages, in the order given (a folder: natural name order)")
+            description = "a .simp scene to open at start, outside the pages' cycle (Right goes on to page 2, as "
+                    + "from page 1, and no page key comes back to it); several scenes, or a folder of them, become the "
+                    + "window's first pages, in the order given (a folder: natural name order)")
     private List<Path> scenes = new ArrayList<>();
 
     private final BooleanSupplier displayMissing;
