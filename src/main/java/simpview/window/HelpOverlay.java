@@ -281,8 +281,10 @@ public final class HelpOverlay extends javax.swing.JComponent {
             for (int c = 0; c < count; c++) {
                 List<KeyHelp.Row> column = rows.subList(Math.min(rows.size(), c * each),
                         Math.min(rows.size(), (c + 1) * each));
-                columns.add(column);
-                used += keyWidth(column, metrics, width) + 3 * PAD + MIN_CUT_WIDTH;
+                if (!column.isEmpty()) {
+                    columns.add(column);
+                    used += keyWidth(column, metrics, width) + 3 * PAD + MIN_CUT_WIDTH;
+                }
             }
             if (used <= width) {
                 return count == needed ? columns : withoutLastHeading(columns);
