@@ -241,6 +241,10 @@ public final class LitPrimitives {
         /** Whether a look's colours are each polygon's one colour, as it is (flat). */
         final List<Boolean> flats = new ArrayList<>();
         int lastLook = -1;
+        /** The parts of look lastLook (when it is not -1). */
+        private Fog lastFog;
+        private Supplier<PointShader> lastShader;
+        private boolean lastFlat;
         /**
          * For each band, the primitives that may touch its rows
          * ({@link BatchDrawing#mayTouch}), in drawing order: a band's drawer
@@ -268,12 +272,15 @@ public final class LitPrimitives {
         }
 
         int look(Fog fog, Supplier<PointShader> shader, boolean flat) {
-            if (lastLook < 0 || fog != fogs.get(lastLook) || shader != shaders.get(lastLook)
-                    || flat != flats.get(lastLook)) {
+            // asked for every primitive: the last look's parts are compared as fields, not read from the lists
+            if (lastLook < 0 || fog != lastFog || shader != lastShader || flat != lastFlat) {
                 fogs.add(fog);
                 shaders.add(shader);
                 flats.add(flat);
                 lastLook = fogs.size() - 1;
+                lastFog = fog;
+                lastShader = shader;
+                lastFlat = flat;
             }
             return lastLook;
         }
