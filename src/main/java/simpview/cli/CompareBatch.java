@@ -1162,6 +1162,7 @@ public final class CompareBatch {
                 // results.json is one submission's, however its pictures are foldered (see grading.md)
                 OutputFiles.writeString(outputs.gradescope(),
                         GradescopeResults.json(OnePerPage.asOne(compared, plainlyNamed), wanted, seconds));
+                sayIfAClass(compared, outputs.gradescope());
             }
             if (outputs.junit() != null) {
                 OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
@@ -1194,6 +1195,31 @@ public final class CompareBatch {
         }
         // a page asked for without a picture is work not done: it fails as a failing picture does
         return allPass && missing.isEmpty() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /**
+     * Says so when results.json was written for what looks like a class: one page handed in by the pictures of
+     * several first-level folders. It is one submission's (Gradescope grades one student at a time), so all of
+     * them were counted as one, each page once; the class's own results are the table, JUnit and the web report.
+     */
+    private void sayIfAClass(List<BatchRow> compared, Path results) {
+        Map<String, Set<String>> foldersOfPage = new HashMap<>();
+        for (BatchRow row : compared) {
+            String folder = JUnitResults.submission(row.file());
+            if (row.compared() && !folder.equals(JUnitResults.TOP)) {
+                foldersOfPage.computeIfAbsent(row.page(), p -> new TreeSet<>(SceneList.NATURAL_ORDER)).add(folder);
+            }
+        }
+        Set<String> folders = foldersOfPage.values().stream().filter(f -> f.size() > 1).findFirst().orElse(null);
+        if (folders == null) {
+            return;
+        }
+        List<String> named = folders.stream().limit(3).map(f -> f + "/").toList();
+        err.println(says + "note: " + results + " is one submission's, as Gradescope grades one student at a time, "
+                + "but " + UsageWords.joined(named, "and") + (folders.size() > 3 ? " and others" : "")
+                + " each hold a picture of one page: they were counted as one submission, each page once. For a "
+                + "class, read the table, --junit or --html (a submission a first-level folder), or run compare "
+                + "on each student's folder for a results.json of its own.");
     }
 
     /** The pictures under {@code dir}, in natural order of their paths (page2 before page10), hidden ones left out. */

@@ -168,6 +168,24 @@ public class CompareBatchTest {
                 + "1 page asked for without a picture"), run.out());
     }
 
+    /** results.json written for a class (one page in several students' folders) says that it counted them as one. */
+    @Test
+    void gradescopesResultsForAClassSayTheyCountedItAsOneSubmission() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("bob/page1.png"), page(1));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--gradescope",
+                out.resolve("results.json").toString());
+        assertTrue(run.err().contains("note: " + out.resolve("results.json") + " is one submission's, as Gradescope "
+                + "grades one student at a time, but ann/ and bob/ each hold a picture of one page: they were counted "
+                + "as one submission"), run.err());
+        CliRun one = CliRun.of("compare", "--dir", subs.resolve("ann").toString(), "--pages", "1", "--gradescope",
+                out.resolve("ann.json").toString());
+        assertFalse(one.err().contains("note:"), one.err());
+        assertEquals(ExitCode.OK, one.exitCode(), one.err());
+    }
+
     /**
      * A scene is asked of every submission when at least half of them handed it in: one student's picture of
      * another scene of the folder (cube.simp, which the pages include) asks nothing of the others.
