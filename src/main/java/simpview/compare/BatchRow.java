@@ -156,24 +156,19 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
      * JUnit feedback, the web report and {@code check} give them after "note: ".
      */
     public List<String> notes() {
-        List<String> notes = new ArrayList<>();
-        DiffRegion patch = solidPatch();
-        if (patch != null) {
-            notes.add(ComparisonReport.solidPatchNote(patch));
-        }
-        String format = formatAdvice();
-        if (!format.isEmpty()) {
-            notes.add(format);
-        }
-        return notes;
+        return notes(false);
     }
 
     /** The same briefly: the table's note column and the progress line. */
     public List<String> briefNotes() {
+        return notes(true);
+    }
+
+    private List<String> notes(boolean brief) {
         List<String> notes = new ArrayList<>();
         DiffRegion patch = solidPatch();
         if (patch != null) {
-            notes.add(ComparisonReport.solidPatchBrief(patch));
+            notes.add(brief ? ComparisonReport.solidPatchBrief(patch) : ComparisonReport.solidPatchNote(patch));
         }
         String format = formatAdvice();
         if (!format.isEmpty()) {

@@ -336,7 +336,8 @@ final class PngCodec {
         }
     }
 
-    private static void chunk(ByteArrayOutputStream out, String type, byte[] data) {
+    /** One chunk of a PNG file to {@code out}: its length, type, data and CRC (tests write odd files with it too). */
+    static void chunk(ByteArrayOutputStream out, String type, byte[] data) {
         byte[] name = type.getBytes(StandardCharsets.ISO_8859_1);
         CRC32 crc = new CRC32();
         crc.update(name);

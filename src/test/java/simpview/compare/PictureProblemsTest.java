@@ -7,10 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.zip.CRC32;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -20,25 +18,13 @@ class PictureProblemsTest {
     @TempDir
     Path dir;
 
-    /** A PNG chunk: length, type, data, checksum. */
-    private static void chunk(ByteArrayOutputStream out, String type, byte[] data) {
-        byte[] name = type.getBytes(StandardCharsets.ISO_8859_1);
-        CRC32 crc = new CRC32();
-        crc.update(name);
-        crc.update(data);
-        out.writeBytes(ByteBuffer.allocate(4).putInt(data.length).array());
-        out.writeBytes(name);
-        out.writeBytes(data);
-        out.writeBytes(ByteBuffer.allocate(4).putInt((int) crc.getValue()).array());
-    }
-
     @Test
     void aPictureOverTheSizeLimitIsSaidToBeSoNotDamaged() throws Exception {
         // The header of a 12000x12000 RGB picture: what it says is read before any pixel.
         ByteArrayOutputStream png = new ByteArrayOutputStream();
         png.writeBytes(new byte[] {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10});
-        chunk(png, "IHDR", ByteBuffer.allocate(13).putInt(12000).putInt(12000).put((byte) 8).put((byte) 2).array());
-        chunk(png, "IEND", new byte[0]);
+        PngCodec.chunk(png, "IHDR", ByteBuffer.allocate(13).putInt(12000).putInt(12000).put((byte) 8).put((byte) 2).array());
+        PngCodec.chunk(png, "IEND", new byte[0]);
         Path file = Files.write(dir.resolve("page1.png"), png.toByteArray());
 
         String why = assertThrows(CompareException.class, () -> Picture.read(file)).getMessage();

@@ -72,19 +72,41 @@ public record NotText(int line, String problem) {
         if (startsWith(b, from, to, 0, 0, 0xFE, 0xFF)) {
             return "it starts with the bytes 00 00 FE FF";
         }
-        int quads = Math.min(16, (to - from) / 4);
-        if (quads < 2) {
-            return null;
+        return asciiInUnits(b, from, to, 4, 16) ? "three of every four of its first bytes are 0" : null;
+    }
+
+    /** How b[from, to), a file's first bytes, show UTF-16 text; null when they do not. */
+    private static String utf16(byte[] b, int from, int to) {
+        if (startsWith(b, from, to, 0xFF, 0xFE)) {
+            return "it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\"";
+        }
+        if (startsWith(b, from, to, 0xFE, 0xFF)) {
+            return "it starts with the bytes FE FF";
+        }
+        return asciiInUnits(b, from, to, 2, 32) ? "every second one of its first bytes is 0" : null;
+    }
+
+    /**
+     * Whether the first characters of b[from, to) (at least two, at most {@code most}), each {@code unit} bytes,
+     * are all plain text in little- or big-endian order: one byte not 0 at the character's low end, the others 0.
+     */
+    private static boolean asciiInUnits(byte[] b, int from, int to, int unit, int most) {
+        int characters = Math.min(most, (to - from) / unit);
+        if (characters < 2) {
+            return false;
         }
         boolean little = true;
         boolean big = true;
-        for (int k = 0; k < quads; k++) {
-            int at = from + 4 * k;
-            boolean middleZero = b[at + 1] == 0 && b[at + 2] == 0;
-            little &= middleZero && b[at] != 0 && b[at + 3] == 0;
-            big &= middleZero && b[at] == 0 && b[at + 3] != 0;
+        for (int k = 0; k < characters; k++) {
+            int at = from + unit * k;
+            boolean middleZero = true;
+            for (int i = 1; i < unit - 1; i++) {
+                middleZero &= b[at + i] == 0;
+            }
+            little &= middleZero && b[at] != 0 && b[at + unit - 1] == 0;
+            big &= middleZero && b[at] == 0 && b[at + unit - 1] != 0;
         }
-        return little || big ? "three of every four of its first bytes are 0" : null;
+        return little || big;
     }
 
     /** Whether b[from, to) starts with the bytes {@code start}. */
@@ -94,29 +116,6 @@ public record NotText(int line, String problem) {
             same = (b[from + k] & 0xFF) == start[k];
         }
         return same;
-    }
-
-    /** How b[from, to), a file's first bytes, show UTF-16 text; null when they do not. */
-    private static String utf16(byte[] b, int from, int to) {
-        if (to - from >= 2 && (b[from] & 0xFF) == 0xFF && (b[from + 1] & 0xFF) == 0xFE) {
-            return "it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\"";
-        }
-        if (to - from >= 2 && (b[from] & 0xFF) == 0xFE && (b[from + 1] & 0xFF) == 0xFF) {
-            return "it starts with the bytes FE FF";
-        }
-        int pairs = Math.min(32, (to - from) / 2);
-        if (pairs < 2) {
-            return null;
-        }
-        boolean little = true;
-        boolean big = true;
-        for (int k = 0; k < pairs; k++) {
-            byte even = b[from + 2 * k];
-            byte odd = b[from + 2 * k + 1];
-            little &= even != 0 && odd == 0;
-            big &= even == 0 && odd != 0;
-        }
-        return little || big ? "every second one of its first bytes is 0" : null;
     }
 
     /** What a file starting with b[from, to) is, when its first bytes are those of a known kind; else null. */
