@@ -6,8 +6,11 @@ import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
 
 /**
  * A picture to compare: where its panel is, the panel's pixels (650x650
@@ -81,6 +84,11 @@ public final class Picture {
                 // a kind of PNG ImageIO reads
             }
         }
+        long[] size = headerSize(bytes);
+        if (size != null && size[0] * size[1] > PngCodec.MAX_PIXELS) {
+            // refused before a pixel is decoded: a 30000x30000 GIF would take gigabytes, and end every picture's run
+            throw new CompareException(file + " " + new PngCodec.TooLarge(size[0], size[1]).getMessage());
+        }
         BufferedImage image;
         try {
             image = ImageIO.read(new ByteArrayInputStream(bytes));
@@ -92,6 +100,29 @@ public final class Picture {
             throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
         }
         return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image), Rasters.alpha(image));
+    }
+
+    /**
+     * The width and height a picture's header says it has, as ImageIO's reader of its format reads them
+     * without decoding a pixel; null when no reader knows the format or the header cannot be read (decoding
+     * then says what is wrong).
+     */
+    private static long[] headerSize(byte[] bytes) {
+        try (ImageInputStream in = ImageIO.createImageInputStream(new ByteArrayInputStream(bytes))) {
+            Iterator<ImageReader> readers = in == null ? null : ImageIO.getImageReaders(in);
+            if (readers == null || !readers.hasNext()) {
+                return null;
+            }
+            ImageReader reader = readers.next();
+            try {
+                reader.setInput(in, true, true);
+                return new long[] {reader.getWidth(0), reader.getHeight(0)};
+            } finally {
+                reader.dispose();
+            }
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
     }
 
     /**

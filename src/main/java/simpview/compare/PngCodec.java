@@ -35,7 +35,7 @@ final class PngCodec {
     static final class TooLarge extends Exception {
         private static final long serialVersionUID = 1L;
 
-        TooLarge(int width, int height) {
+        TooLarge(long width, long height) {
             super(String.format(java.util.Locale.ROOT, "is %dx%d pixels (%,d), more than simpview reads (%,d pixels at "
                     + "most, as 8192x8192): a page is 750x750 and a window capture about 872x782, so save the picture at "
                     + "its own size", width, height, (long) width * height, MAX_PIXELS), null, false, false);
@@ -50,7 +50,7 @@ final class PngCodec {
     }
 
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10};
-    private static final long MAX_PIXELS = 64L << 20;
+    static final long MAX_PIXELS = 64L << 20;
 
     private PngCodec() {
     }

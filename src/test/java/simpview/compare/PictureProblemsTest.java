@@ -34,6 +34,24 @@ class PictureProblemsTest {
         assertFalse(why.contains("damaged"), why);
     }
 
+    /**
+     * A GIF (or JPEG, or BMP) over the limit is refused from its header as a PNG is, before a pixel is decoded:
+     * a 30000x30000 GIF of a few bytes had run a class's batch out of memory.
+     */
+    @Test
+    void aGifOverTheSizeLimitIsRefusedFromItsHeader() throws Exception {
+        ByteArrayOutputStream gif = new ByteArrayOutputStream();
+        byte lo = (byte) (30000 & 0xFF);
+        byte hi = (byte) (30000 >> 8);
+        gif.writeBytes(new byte[] {'G', 'I', 'F', '8', '9', 'a', lo, hi, lo, hi, (byte) 0x80, 0, 0,
+            0, 0, 0, (byte) 255, (byte) 255, (byte) 255, // a global colour table of two colours
+            0x2C, 0, 0, 0, 0, lo, hi, lo, hi, 0, // the image: at (0, 0), 30000x30000
+            2, 2, 0x4C, 0x01, 0, 0x3B});
+        Path file = Files.write(dir.resolve("page2.gif"), gif.toByteArray());
+        String why = assertThrows(CompareException.class, () -> Picture.read(file)).getMessage();
+        assertTrue(why.startsWith(file + " is 30000x30000 pixels (900,000,000), more than simpview reads"), why);
+    }
+
     @Test
     void anEmptyFileIsSaidToBeEmpty() throws Exception {
         Path file = Files.write(dir.resolve("page2.png"), new byte[0]);
