@@ -227,7 +227,7 @@ public final class CompareBatch {
             return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
         };
         warnUnusedRules(pageSubjects(pages));
-        return run(dir, outputs, wanted, Set.of(), namer, relative -> pageMatch(relative, pages));
+        return run(dir, outputs, wanted, Set.of(), namer, relative -> pageMatch(dir, relative, pages));
     }
 
     /**
@@ -250,16 +250,20 @@ public final class CompareBatch {
     }
 
     /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
-    private Match pageMatch(String relative, PageRange pages) {
+    private Match pageMatch(Path dir, String relative, PageRange pages) {
         String name = fileName(relative);
         OptionalInt number = SubmissionNames.pageNumber(name);
         if (number.isPresent() && namesFirstAssignment(relative)) {
-            if (!pagesIfHandedIn) { // --pages names the eight pages: only those are graded, and asked of everyone
-                firstAssignmentUnasked.add(relative);
-                return new Match(null, "a page of the first assignment by its name, and --pages names the eight pages "
-                        + "(" + FIRST_ASSIGNMENT_GRADED + ")");
+            if (pagesIfHandedIn) {
+                return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
             }
-            return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
+            // --pages names the eight pages: only those are graded, and asked of everyone. One named so that holds
+            // no first-assignment page (A1-Smith/page1.png, a student's folder) is the page its number names.
+            if (PanelGridComparison.holds(dir.resolve(relative), firstAssignmentPanels())) {
+                firstAssignmentUnasked.add(relative);
+                return new Match(null, "a page of the first assignment by its name and its four panels, and --pages "
+                        + "names the eight pages (" + FIRST_ASSIGNMENT_GRADED + ")");
+            }
         }
         if (number.isEmpty()) {
             return new Match(null, SubmissionNames.noPageNumber(name, "page", Assignment2.COUNT));
@@ -324,7 +328,7 @@ public final class CompareBatch {
         return run(dir, outputs, wanted, Set.of(), namer, relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(name -> new Match(CompareTarget.scene(scenes.get(name)), null))
-                    .orElseGet(() -> pageMatch(relative, pages));
+                    .orElseGet(() -> pageMatch(dir, relative, pages));
         });
     }
 
@@ -490,8 +494,9 @@ public final class CompareBatch {
                         .add(JUnitResults.submission(dir.relativize(pictures.get(i)).toString()));
             }
         }
+        // the submissions: those with pictures, and a class's folders without (each is asked what the others are)
         long submissions = pictures.stream().map(p -> JUnitResults.submission(dir.relativize(p).toString()))
-                .distinct().count();
+                .distinct().count() + withoutPictures.stream().filter(w -> !w.submission().isEmpty()).count();
         for (Match match : matchedAsNamed) {
             CompareTarget target = match.target();
             if (target != null && (outputs.student() || 2L * handedInBy.get(target).size() >= submissions)) {
@@ -549,17 +554,27 @@ public final class CompareBatch {
         if (outputs.student() || withPictures.size() < 2 || !Files.isDirectory(dir)) {
             return without;
         }
+        // the folders this run writes its reports in (--junit junit/results.xml): made before they are listed
+        Path root = dir.toAbsolutePath().normalize();
+        Set<String> reportFolders = results.stream()
+                .filter(r -> r.startsWith(root) && root.relativize(r).getNameCount() > 1)
+                .map(r -> root.relativize(r).getName(0).toString()).collect(Collectors.toSet());
         List<String> folders;
         try (Stream<Path> entries = Files.list(dir)) {
             folders = entries.filter(Files::isDirectory).map(p -> p.getFileName().toString())
                     .filter(name -> !FolderListing.hidden(Path.of(name)) && !withPictures.contains(name)
+                            && !reportFolders.contains(name)
                             && written.stream().noneMatch(w -> w.equals(Path.of(name)))
                             && !Files.isRegularFile(dir.resolve(name).resolve(CSV)))
                     .sorted(SceneList.NATURAL_ORDER).toList();
         }
         for (String folder : folders) {
-            without.add(new WithoutPictures(folder, others.stream()
-                    .filter(f -> JUnitResults.submission(f).equals(folder)).toList()));
+            List<String> holds = others.stream().filter(f -> JUnitResults.submission(f).equals(folder)).toList();
+            // a folder of reports, a rubric or scripts is no student's: one that is empty, or holds what a student
+            // may hand in pictures as (a zip, a .webp, a document), is
+            if (holds.isEmpty() || holds.stream().anyMatch(FolderListing::mayHoldPictures)) {
+                without.add(new WithoutPictures(folder, holds));
+            }
         }
         return without;
     }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
+import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
 
 /**
@@ -31,6 +32,19 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
     static final List<String> UNREAD_ENDINGS = List.of(".webp", ".tif", ".tiff", ".heic", ".heif", ".avif", ".jxl",
             ".jp2", ".jfif", ".svg", ".psd", ".xcf", ".ppm", ".pgm", ".pbm", ".pnm", ".tga", ".ico", ".exr", ".hdr",
             ".pdf");
+    /** Documents a student may paste pictures into (a PDF is among UNREAD_ENDINGS), in lower case. */
+    static final List<String> DOCUMENTS = List.of(".doc", ".docx", ".odt", ".pages", ".ppt", ".pptx", ".key", ".odp");
+
+    /**
+     * Whether a file (a path under the folder) may be a student's pictures handed in another way: an archive, a
+     * picture in a format simpview does not read, a document. A folder of a class's that holds none of these
+     * (reports, a rubric, scripts) is no student's.
+     */
+    static boolean mayHoldPictures(String file) {
+        Path path = Path.of(file);
+        return endsLike(path, WithoutPictures.ARCHIVES) || endsLike(path, UNREAD_ENDINGS) || endsLike(path, DOCUMENTS);
+    }
+
     /** The folder a Mac's zip puts its resource forks in. */
     static final String MAC_LEFTOVERS = "__MACOSX";
 

@@ -15,7 +15,7 @@ import java.util.Locale;
 public record WithoutPictures(String submission, List<String> files) {
 
     /** The endings of archives, which a picture may be in but simpview does not open, in lower case. */
-    static final List<String> ARCHIVES = List.of(".zip", ".rar", ".7z", ".tar", ".tar.gz", ".tgz", ".tar.xz");
+    public static final List<String> ARCHIVES = List.of(".zip", ".rar", ".7z", ".tar", ".tar.gz", ".tgz", ".tar.xz");
     /** How many of its files are named; the rest are counted. */
     private static final int NAMED = 3;
 

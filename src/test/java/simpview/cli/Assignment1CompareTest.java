@@ -474,11 +474,23 @@ class Assignment1CompareTest {
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "--pages 1-8 asks for the eight pages: " + run.err());
         assertTrue(run.out().contains("| a1-page2.png |  |  |  |  |  |  |  |  | SKIPPED |  |  | a page of the first assignment by its "
-                + "name, and --pages names the eight pages (--assignment 1 grades the first assignment's pages) |"),
+                + "name and its four panels, and --pages names the eight pages (--assignment 1 grades the first "
+                + "assignment's pages) |"),
                 run.out());
         assertTrue(run.out().contains("1 picture: 0 pass, 0 fail, 0 could not be compared, 1 skipped; 8 pages "
                 + "asked for without a picture"), run.out());
         assertTrue(run.err().contains("note: every picture is a page of the first assignment, but --pages names the "
                 + "eight pages"), run.err());
+
+        // a student's folder named like the first assignment, holding a page of the eight: that page, graded
+        Path class_ = java.nio.file.Files.createDirectories(dir.resolve("class"));
+        for (String student : new String[] {"A1-Smith", "bob"}) {
+            assertEquals(ExitCode.OK, CliRun.of("render", "--page", "1", "--out",
+                    class_.resolve(student + "/page1.png").toString()).exitCode());
+        }
+        CliRun named = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("named").toString());
+        assertEquals(ExitCode.OK, named.exitCode(), named.out() + named.err());
+        assertTrue(named.out().contains("| A1-Smith/page1.png | 1 (seed 361) |"), named.out());
     }
 }

@@ -168,6 +168,32 @@ public class CompareBatchTest {
                 + "1 page asked for without a picture"), run.out());
     }
 
+    /**
+     * A class's folder without pictures is a student's only when it is empty or holds what pictures may be handed
+     * in as (a zip): the folders of a rubric and of last run's reports are not, so a second run grades as the first.
+     */
+    @Test
+    void foldersOfReportsOrARubricAreNoStudents() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("bob/page1.png"), page(1));
+        Files.createDirectories(subs.resolve("rubric"));
+        Files.writeString(subs.resolve("rubric/compare.json"), "{\"defaults\": {\"points\": 2}}\n");
+        String[] args = {"compare", "--dir", subs.toString(), "--pages", "1", "--rubric",
+            subs.resolve("rubric/compare.json").toString(), "--junit", subs.resolve("junit/results.xml").toString(),
+            "--out-dir", dir.resolve("out").toString()};
+        CliRun first = CliRun.of(args);
+        assertEquals(ExitCode.OK, first.exitCode(), first.out() + first.err());
+        CliRun second = CliRun.of(args);
+        assertEquals(ExitCode.OK, second.exitCode(), second.out() + second.err());
+        assertFalse(second.out().contains("MISSING"), second.out());
+        Files.createDirectories(subs.resolve("cy"));
+        Files.writeString(subs.resolve("cy/cy.zip"), "PK");
+        CliRun zipped = CliRun.of(args);
+        assertTrue(zipped.out().contains("| cy/ | 1 (seed 361) |"), zipped.out());
+        assertFalse(zipped.out().contains("| rubric/") || zipped.out().contains("| junit/"), zipped.out());
+    }
+
     /** results.json written for a class (one page in several students' folders) says that it counted them as one. */
     @Test
     void gradescopesResultsForAClassSayTheyCountedItAsOneSubmission() throws Exception {
@@ -211,6 +237,16 @@ public class CompareBatchTest {
         assertEquals(ExitCode.SCENE_ERROR, two.exitCode(), "two of three handed in bar: " + two.out());
         assertEquals(List.of("carol/,bar.simp,,,,,,,,MISSING,,,no picture of bar.simp in carol was found"),
                 csvRows(out).stream().filter(r -> r.contains(",MISSING,")).toList());
+
+        // two more students, who handed in zips: two of five handed in bar, which is then asked of nobody else
+        for (String student : new String[] {"dee", "eve"}) {
+            Files.createDirectories(class_.resolve(student));
+            Files.writeString(class_.resolve(student + "/pages.zip"), "PK");
+        }
+        CliRun five = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
+                out.toString());
+        assertEquals(List.of(), csvRows(out).stream().filter(r -> r.contains("bar.simp,,,,,,,,MISSING")).toList(),
+                five.out());
     }
 
     @Test
