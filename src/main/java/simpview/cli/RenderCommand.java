@@ -136,6 +136,9 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     private A1RuleOption a1Rule;
 
+    /** Whether the scenes to draw were given as SCENE files alone, not by --scenes ({@link #impliedByScenes}). */
+    private boolean impliedScenes;
+
     /** The threads drawing while the command runs: made and closed by call(). */
     private DrawingThreads drawingThreads;
 
@@ -214,7 +217,11 @@ public final class RenderCommand implements Callable<Integer> {
         }
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
-        usage(scenes.isEmpty() || what.contactSheet, "scene files " + scenes + " go with --contact-sheet only");
+        if (!scenes.isEmpty() && !what.contactSheet) {
+            usage(false, UsageWords.joined(scenes.stream().map(Path::toString).toList(), "and") + ": a scene file "
+                    + "is drawn on its own (simpview render F.simp --out F.png) or tiled with --contact-sheet, not "
+                    + "with " + (what.page != null ? "--page" : what.all ? "--all" : "--scene"));
+        }
         usage(scenes.isEmpty() || seed == null && simpDir == null,
                 "--seed and --simp-dir go with the pages, not with a sheet of scenes");
         usage(!ownColours || !pages, "--own-colors goes with --scene only");
@@ -236,6 +243,7 @@ public final class RenderCommand implements Callable<Integer> {
             implied.scene = scenes.get(0);
         } else {
             implied.scenes = List.copyOf(scenes);
+            impliedScenes = true;
         }
         scenes = new ArrayList<>();
         return implied;
@@ -244,7 +252,8 @@ public final class RenderCommand implements Callable<Integer> {
     /** --scenes: the list must name scenes, and the pictures go to a folder. */
     private void checkScenes() {
         usage(out == null, "--scenes writes one picture per scene: give --out-dir D, not --out");
-        usage(outDir != null, "--scenes needs --out-dir D (one picture per scene, NAME.png)");
+        usage(outDir != null, (impliedScenes ? "several scenes, or a folder, are drawn" : "--scenes draws")
+                + " one picture per scene, NAME.png: give --out-dir D");
         usage(!outDir.toString().isEmpty(), "--out-dir needs a folder name");
         usage(seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scenes");
         usage(!ownColours, "--own-colors goes with --scene only");

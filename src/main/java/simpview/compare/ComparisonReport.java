@@ -141,7 +141,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     /** What a picture that passes with a solid patch ({@link #solidPatch}) is told of it, after "note: ". */
     public static String solidPatchNote(DiffRegion patch) {
         return "it passes, but a patch of " + Count.of(patch.pixels(), "pixel") + " differs (" + patch.describe()
-                + "): more than an edge, so a shape may be missing, moved or of another colour there; see the diff image";
+                + "): more than an edge, so a shape may be missing, moved or of another colour there";
     }
 
     /** The same briefly, for a table's note column and a progress line. */

@@ -20,6 +20,8 @@ public final class SubmissionNames {
 
     /** The word page ("pagina": página without its accent, as {@link #plain} leaves it), then its number. */
     private static final String PAGE_WORD = "(?:page|pagina)";
+    /** A page "number" of zeros after the word: page0, page_00. */
+    private static final Pattern ZERO_PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0+(?![0-9])");
     private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
     private static final Pattern NUMBER = Pattern.compile("[0-9]+");
 
@@ -80,6 +82,11 @@ public final class SubmissionNames {
         if (page.find()) { // more digits than any page number has
             return "no page number in the name: " + page.group(1) + " is no page's number (expected a name like " + word
                     + "3" + ending + ")";
+        }
+        Matcher zero = ZERO_PAGE.matcher(plain(stem(fileName)));
+        if (zero.find()) { // page0.png: pages count from 1
+            return "no page number in the name: 0 is no page's number, pages count from 1 (expected a name like "
+                    + word + "1" + ending + ")";
         }
         // "a1" names the first assignment, not a page
         Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(stem(fileName)).replaceAll(" "));

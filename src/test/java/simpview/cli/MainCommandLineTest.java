@@ -262,7 +262,7 @@ public class MainCommandLineTest {
         "render --scene a.simp --out x.png --out-dir d | give --out F.png or --out-dir D, not both",
         "render --contact-sheet --out-dir d | --contact-sheet writes one file: use --out F.png, not --out-dir",
         "render --contact-sheet | missing --out F.png",
-        "render --scenes a.simp | --scenes needs --out-dir D (one picture per scene, NAME.png)",
+        "render --scenes a.simp | --scenes draws one picture per scene, NAME.png: give --out-dir D",
         "render --scenes a.simp --out x.png | --scenes writes one picture per scene: give --out-dir D, not --out"})
     void aMisplacedOutputSaysWhereItGoes(String line, String message) {
         CliRun run = CliRun.of(line.split(" "));
@@ -393,7 +393,8 @@ public class MainCommandLineTest {
     void sceneFilesGoWithTheContactSheetOnly() {
         CliRun run = CliRun.of("render", "--page", "2", "--out", dir.resolve("p.png").toString(), "x.simp");
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode());
-        assertTrue(run.err().startsWith("simpview: scene files [x.simp] go with --contact-sheet only"), run.err());
+        assertTrue(run.err().startsWith("simpview: x.simp: a scene file is drawn on its own (simpview render F.simp "
+                + "--out F.png) or tiled with --contact-sheet, not with --page"), run.err());
         assertFalse(Files.exists(dir.resolve("p.png")));
     }
 

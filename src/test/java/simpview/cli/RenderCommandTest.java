@@ -100,6 +100,9 @@ class RenderCommandTest {
         CliRun unsaid = CliRun.of("render", far.toString());
         assertEquals(ExitCode.USAGE_ERROR, unsaid.exitCode(), unsaid.err());
         assertTrue(unsaid.err().startsWith("simpview: missing --out F.png (or --out-dir D)"), unsaid.err());
+        CliRun two = CliRun.of("render", near.toString(), far.toString());
+        assertTrue(two.err().startsWith("simpview: several scenes, or a folder, are drawn one picture per scene, "
+                + "NAME.png: give --out-dir D"), two.err());
         CliRun nothing = CliRun.of("render", "--out", picture.toString());
         assertEquals(ExitCode.USAGE_ERROR, nothing.exitCode(), nothing.err());
         assertTrue(nothing.err().startsWith("simpview: say what to render: --page N, --all, --scene F.simp, --scenes "

@@ -44,6 +44,10 @@ class SubmissionNamesTest {
                 + "a1-page3.png)", SubmissionNames.noPageNumber("a1-p3.png", "a1-page", 5));
         assertEquals("no page number in the name: 99999999999 is no page's number (expected a name like page3.png)",
                 SubmissionNames.noPageNumber("page99999999999.png", "page", 8));
+        assertEquals("no page number in the name: 0 is no page's number, pages count from 1 (expected a name like "
+                + "page1.png)", SubmissionNames.noPageNumber("page0.png", "page", 8));
+        assertEquals("no page number in the name: 0 is no page's number, pages count from 1 (expected a name like "
+                + "a1-page1.png)", SubmissionNames.noPageNumber("a1-page_00.png", "a1-page", 5));
     }
 
     @Test
