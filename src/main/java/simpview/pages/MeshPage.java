@@ -51,6 +51,12 @@ public final class MeshPage implements Page {
         return out;
     }
 
+    /** Its triangles are drawn straight onto the panel, without depth or a provenance record. */
+    @Override
+    public boolean keepsOwners() {
+        return false;
+    }
+
     @Override
     public void draw(PageCanvas canvas, PageContext context) {
         PolygonRenderer renderer = filled

@@ -24,6 +24,15 @@ public interface Page {
     }
 
     /**
+     * Whether drawing the page records which primitive wrote each pixel (when
+     * a provenance record is kept): false for a page drawn straight onto the
+     * panel, whose pixels would all read as the background's.
+     */
+    default boolean keepsOwners() {
+        return true;
+    }
+
+    /**
      * The lines and triangles the page makes itself, panel by panel and in
      * drawing order within each panel, as given to its drawers; empty for a
      * page that draws a scene file, whose primitives are the file's.

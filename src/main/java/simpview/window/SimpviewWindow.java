@@ -840,7 +840,9 @@ public final class SimpviewWindow {
             String place = owner < 0 ? null : shown.facts().primitives().place(owner);
             String line = x < 0 ? null : Inspector.describe(shown, x, y);
             if (place == null && (line == null || !line.contains("drawn by primitive"))) {
-                status.say("No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
+                status.say(shown != null && shown.facts().owners() == null && x >= 0
+                        ? "This page records no primitive for its pixels: no chain to copy."
+                        : "No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
                 return;
             }
             chain = place != null ? place : line.substring(line.indexOf("drawn by primitive"));
@@ -1052,7 +1054,12 @@ public final class SimpviewWindow {
             pageView.outline(null);
             return;
         }
-        // The scene's file may have changed while stepping: what the line says is what was drawn.
+        // The scene's file may have changed while stepping: what the line says is what was drawn. A save with an
+        // error drew what came before it, and the step stays where it was for when the file is mended.
+        if (result.error() != null && limit > primitives.size()) {
+            pageView.outline(null);
+            return;
+        }
         if (primitives.size() == 0) {
             settings = settings.withStepLimit(-1);
             pageView.outline(null);
@@ -1319,6 +1326,7 @@ public final class SimpviewWindow {
         frame.setTitle(coursePage ? "simpview — " + coursePages.describe() + (result.error() == null ? "" : " — error")
                 : result.title());
         watcher.watch(result.facts().files(), job.stampsAsRead());
+        status.forgetLastPixel();
         followPointer();
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));

@@ -99,6 +99,14 @@ public final class StatusStrip {
                 : "the last pixel inspected: " + lastPixelLine);
     }
 
+    /**
+     * A new picture is shown (another page, a scene saved again): the last pixel's line was of the picture before,
+     * and stops being the tooltip.
+     */
+    void forgetLastPixel() {
+        lastPixelLine = null; // the tooltip follows at the next inspect()
+    }
+
     String inspectorText() {
         return inspector.getText();
     }

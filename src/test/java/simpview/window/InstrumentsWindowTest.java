@@ -109,6 +109,20 @@ public class InstrumentsWindowTest extends WindowTestCase {
                 "no grid at 4x");
     }
 
+    /** Page 2's mesh is drawn straight onto the panel: its pixels say no owner is recorded, not "background". */
+    @Test
+    void aPixelOfThePagesThatKeepNoOwnersIsNotCalledTheBackground() throws Exception {
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.awaitShown(new View.OfPage(2));
+        driver.onEdt(() -> window().goToPixel("325, 325"));
+        awaitInspector("drawn by: not recorded here");
+        assertFalse(driver.onEdt(() -> window().status().inspectorText()).contains("background"));
+        driver.onEdt(() -> window().perform(WindowAction.COPY_CHAIN));
+        driver.awaitEdt(() -> window().status().messageText().startsWith("This page records no primitive"),
+                "no chain to copy, and why");
+    }
+
     @Test
     void hoveringAPixelOfPage3ShowsTheTrianglesColourDepthAndDrawingOrder() throws Exception {
         open();
@@ -188,6 +202,12 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.movePointer(onTheLine.x, onTheLine.y);
         driver.awaitEdt(() -> !window().status().inspectorText().contains("drawn by"), "the hover to end");
         assertEquals("the last pixel inspected: " + line, driver.onEdt(() -> window().status().inspectorToolTip()));
+
+        // another picture (the scene saved again): the last pixel's line was of the one before, and is forgotten
+        Files.writeString(scene, "# one, moved\n" + triangleAt(-150));
+        driver.awaitEdt(() -> window().status().inspectorToolTip() == null
+                || !window().status().inspectorToolTip().startsWith("the last pixel inspected"),
+                "the last pixel forgotten with its picture");
     }
 
     @Test
@@ -366,6 +386,19 @@ public class InstrumentsWindowTest extends WindowTestCase {
         Point second = new Point(PageCanvas.MARGIN + 65, PageCanvas.MARGIN + PageCanvas.PANEL - 65);
         assertEquals(0xFF000000, driver.onEdt(() -> window().shown()).image().getRGB(second.x, second.y),
                 "only the first primitive drawn, as the line says");
+
+        // a save with a typo (one primitive read before it) leaves the step where it was for when it is mended
+        driver.onEdt(() -> window().perform(WindowAction.STEP_ON));
+        driver.onEdt(() -> window().perform(WindowAction.STEP_ON));
+        driver.awaitEdt(() -> !window().busy() && window().status().messageText().startsWith("primitive 3 of 4"),
+                "stepping at primitive 3");
+        Files.writeString(scene, "# one\n" + triangleAt(-150) + "polygonx 1 2\n");
+        driver.awaitEdt(() -> !window().busy() && window().shown().error() != null, "the typo's error shown");
+        Files.writeString(scene, four);
+        driver.awaitEdt(() -> !window().busy() && window().shown().error() == null
+                && window().shown().facts().primitives().size() == 4, "the file mended");
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("primitive 3 of 4"),
+                driver.onEdt(() -> window().status().messageText()));
     }
 
     @Test

@@ -82,7 +82,7 @@ public final class Inspector {
 
     private static String drawnBy(PageFacts facts, int index) {
         if (facts.owners() == null) {
-            return "drawn by: not recorded";
+            return "drawn by: not recorded here";
         }
         int owner = facts.owners()[index];
         if (owner < 0) {

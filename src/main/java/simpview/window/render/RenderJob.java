@@ -180,8 +180,9 @@ public final class RenderJob implements SceneMonitor {
         if (cancelled) {
             return null;
         }
+        boolean keepsOwners = !(view instanceof View.OfPage page) || Assignment2.page(page.number()).keepsOwners();
         PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(), canvas.zbuffer().farthest(),
-                canvas.provenance() == null ? null : canvas.provenance().copyOwners(),
+                canvas.provenance() == null || !keepsOwners ? null : canvas.provenance().copyOwners(),
                 primitives(), filesRead(), drewSomething, shownCentre);
         canvas.recordProvenance(null);
         return new RenderedView(view, seed(), context.a1Rule(), canvas.snapshot(), error, List.copyOf(warnings), facts);
