@@ -863,6 +863,9 @@ public final class SimpviewWindow {
         if (shown != null && shown.view() instanceof View.OfScene scene) {
             return scene.file().toAbsolutePath().getParent();
         }
+        if (shown != null && shown.view() instanceof View.OfPage && !shown.facts().files().isEmpty()) {
+            return shown.facts().files().get(0).toAbsolutePath().getParent(); // pages 4 to 8: their scene's folder
+        }
         return null;
     }
 

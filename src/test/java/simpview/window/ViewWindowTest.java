@@ -23,6 +23,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import simpview.scene.simp.SceneDrawer;
 import simpview.surface.PageCanvas;
+import simpview.window.render.RenderedView;
 import simpview.window.render.View;
 
 /**
@@ -193,6 +194,14 @@ public class ViewWindowTest extends WindowTestCase {
         driver.onEdt(window::next);
         driver.awaitShown(new View.OfPage(2));
         assertEquals(TestScenes.courseSimpDir().toRealPath(), openDialogFolder(window));
+
+        // page 4 is drawn from simpview's own page4.simp: the dialog starts in that scene's folder
+        driver.onEdt(window::next);
+        driver.awaitShown(new View.OfPage(3));
+        driver.onEdt(window::next);
+        RenderedView four = driver.awaitShown(new View.OfPage(4));
+        assertEquals(four.facts().files().get(0).toRealPath().getParent(), openDialogFolder(window));
+        assertEquals("page4.simp", four.facts().files().get(0).getFileName().toString());
     }
 
     /** The folder File > Open's dialog starts in, read from the dialog itself, which is then cancelled. */
