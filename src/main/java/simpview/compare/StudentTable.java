@@ -106,7 +106,7 @@ public final class StudentTable {
         }
         out.append(String.format(Locale.ROOT, "%s%s%s%s%n", String.join("; ", tallies),
                 notCounted.isEmpty() ? "" : "; " + Count.of(notCounted.size(), "picture") + " not counted",
-                skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " matched no page",
+                skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " not checked (each said above)",
                 missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " without a picture"));
         return out.toString();
     }

@@ -212,7 +212,7 @@ class SubmissionContentsTest {
                 + "the word \"page\" (expected a name like page1.png)\n"), check.out());
         assertTrue(check.out().contains("\nnotes.png: not checked, no page number in the name (expected a name like "
                 + "page3.png)\n"), check.out());
-        assertTrue(check.out().endsWith("0 of 0 pictures pass; 2 other files matched no page\n"), check.out());
+        assertTrue(check.out().endsWith("0 of 0 pictures pass; 2 other files not checked (each said above)\n"), check.out());
     }
 
     @Test
