@@ -332,6 +332,15 @@ public final class CompareBatch {
         });
     }
 
+    /**
+     * A scene's name for the example of a picture's name: the first named like a page (pageA), not a file the
+     * pages include (cube), when there is one.
+     */
+    private static String exampleScene(java.util.Collection<String> names) {
+        return names.stream().filter(n -> n.toLowerCase(Locale.ROOT).startsWith("page")).findFirst()
+                .orElse(names.iterator().next());
+    }
+
     /** Every picture against one scene file, or against the scene of a folder that its name names. */
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
@@ -360,7 +369,7 @@ public final class CompareBatch {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(s -> new Match(CompareTarget.scene(scenes.get(s)), null))
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene
-                            + " (expected a name like " + scenes.keySet().iterator().next() + ".png)"));
+                            + " (expected a name like " + exampleScene(scenes.keySet()) + ".png)"));
         });
     }
 

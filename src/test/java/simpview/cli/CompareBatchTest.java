@@ -194,6 +194,20 @@ public class CompareBatchTest {
         assertFalse(zipped.out().contains("| rubric/") || zipped.out().contains("| junit/"), zipped.out());
     }
 
+    /** A picture named like no scene is told a page's name for its example, not that of a file the pages include. */
+    @Test
+    void aPictureNamedLikeNoSceneIsToldAPagesNameForItsExample() throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("a3"));
+        Files.writeString(scenes.resolve("cube.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-10)\n");
+        Files.writeString(scenes.resolve("pageA.simp"), "file \"cube\"\n");
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("mine.png"), page(1));
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--scene", scenes.toString(), "--out-dir",
+                dir.resolve("out").toString());
+        assertTrue(run.out().contains("its name names none of the scenes in " + scenes + " (expected a name like "
+                + "pageA.png)"), run.out());
+    }
+
     /** results.json written for a class (one page in several students' folders) says that it counted them as one. */
     @Test
     void gradescopesResultsForAClassSayTheyCountedItAsOneSubmission() throws Exception {
