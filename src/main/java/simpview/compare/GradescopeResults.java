@@ -103,8 +103,8 @@ public final class GradescopeResults {
                 Percent.of(rule.minShare() / 100), pixels);
     }
 
-    /** Points as a score is read: "2", "0.26". */
-    private static String points(double value) {
+    /** Points as a score is read: "2", "0.26" (the web report writes them so too). */
+    static String points(double value) {
         return value == Math.rint(value) ? String.valueOf((long) value) : String.format(Locale.ROOT, "%.2f", value);
     }
 

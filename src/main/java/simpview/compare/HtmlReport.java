@@ -95,7 +95,8 @@ public final class HtmlReport {
             cell(h, row.compared() ? Percent.number(row.verdict()) : "", row.compared() ? row.verdict() : -1);
             cell(h, row.compared() ? Percent.number(row.exact().identical()) : "", row.compared() ? row.exact().identical() : -1);
             cell(h, row.compared() ? String.format(Locale.ROOT, "%,d", row.failing()) : "", row.compared() ? row.failing() : -1);
-            cell(h, row.rule() == null ? "" : points(row.score()) + " / " + points(row.rule().points()),
+            cell(h, row.rule() == null ? ""
+                    : GradescopeResults.points(row.score()) + " / " + GradescopeResults.points(row.rule().points()),
                     row.rule() == null ? -1 : row.score());
             if (row.compared()) {
                 h.append("<td><a href=\"#p").append(index).append("\">show</a></td>");
@@ -115,7 +116,7 @@ public final class HtmlReport {
             cell(h, "", -1.0);
             cell(h, "", -1.0);
             cell(h, "", -1.0);
-            cell(h, "0 / " + points(wanted.rule().points()), 0.0);
+            cell(h, "0 / " + GradescopeResults.points(wanted.rule().points()), 0.0);
             cell(h, BatchTable.missingNote(lack.getKey(), wanted), null);
             h.append("</tr>\n");
         }
@@ -161,10 +162,6 @@ public final class HtmlReport {
             }
         }
         h.append("</div></div>\n</section>\n");
-    }
-
-    private static String points(double value) {
-        return value == Math.rint(value) ? String.valueOf((long) value) : String.format(Locale.ROOT, "%.2f", value);
     }
 
     static String esc(String text) {
