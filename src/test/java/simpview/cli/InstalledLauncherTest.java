@@ -28,11 +28,13 @@ import simpview.scene.simp.SceneMonitor;
  * The start script of an installed simpview ({@code gradle installDist},
  * which the build runs before the tests), run in a folder of its own as a
  * user runs it: it prints only what simpview prints, and the installed copy
- * finds its own scenes.
+ * finds its own scenes. On Windows the same runs go through {@code simpview.bat}
+ * (by {@code cmd /c}), and of the Unix script only its text is read there.
  */
 public class InstalledLauncherTest {
 
     private static final long LIMIT_SECONDS = 60;
+    private static final boolean WINDOWS = System.getProperty("os.name", "").startsWith("Windows");
     private static Path launcher;
 
     @TempDir
@@ -42,8 +44,9 @@ public class InstalledLauncherTest {
     static void findLauncher() {
         String home = System.getProperty("simpview.installDir");
         assertNotNull(home, "simpview.installDir is not set: run the tests through Gradle, which installs simpview first");
-        launcher = Path.of(home, "bin", "simpview");
-        assertTrue(Files.isExecutable(launcher), "no start script at " + launcher);
+        launcher = Path.of(home, "bin", WINDOWS ? "simpview.bat" : "simpview");
+        assertTrue(Files.isRegularFile(launcher) && (WINDOWS || Files.isExecutable(launcher)),
+                "no start script at " + launcher);
     }
 
     private record Run(int exitCode, String out, String err) {
@@ -55,7 +58,8 @@ public class InstalledLauncherTest {
 
     /** The start script with {@code args}, its environment changed first by {@code change}. */
     private Run run(Consumer<Map<String, String>> change, String... args) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(launcher.toString()));
+        List<String> command = new ArrayList<>(WINDOWS ? List.of("cmd", "/c", launcher.toString())
+                : List.of(launcher.toString()));
         command.addAll(List.of(args));
         Path out = dir.resolve("stdout.txt");
         Path err = dir.resolve("stderr.txt");
@@ -94,21 +98,28 @@ public class InstalledLauncherTest {
      * X11 windows), except on macOS, which runs the same script and whose
      * JVM would warn about the missing package: checked by running it with a
      * stand-in {@code java} that prints its arguments, and a stand-in
-     * {@code uname} for macOS. The Windows script never opens it.
+     * {@code uname} for Linux and one for macOS (so the test says the same on
+     * a Mac). The Windows script never opens it; on Windows, where no shell
+     * runs the Unix script, only that is checked.
      */
     @Test
     void theUnixScriptOpensTheX11ToolkitExceptOnMacOs() throws Exception {
-        String opens = "--add-opens=java.desktop/sun.awt.X11=ALL-UNNAMED";
-        Path javaHome = Files.createDirectories(dir.resolve("jdk/bin"));
-        stand(javaHome.resolve("java"), "for a in \"$@\"; do echo \"$a\"; done");
-        Path mac = Files.createDirectories(dir.resolve("mac"));
-        stand(mac.resolve("uname"), "echo Darwin");
-        List<String> here = arguments(javaHome.getParent(), null);
-        List<String> onMac = arguments(javaHome.getParent(), mac);
-        assertTrue(here.contains(opens), "the script run here passes " + here);
-        assertTrue(here.contains("-Dsimpview.simpDir=" + launcher.getParent().getParent().resolve("simp")), here.toString());
-        assertFalse(onMac.contains(opens), "the script run as on macOS passes " + onMac);
-        assertTrue(onMac.stream().anyMatch(a -> a.startsWith("-Dsimpview.simpDir=")), onMac.toString());
+        if (!WINDOWS) {
+            String opens = "--add-opens=java.desktop/sun.awt.X11=ALL-UNNAMED";
+            Path javaHome = Files.createDirectories(dir.resolve("jdk/bin"));
+            stand(javaHome.resolve("java"), "for a in \"$@\"; do echo \"$a\"; done");
+            Path linux = Files.createDirectories(dir.resolve("linux"));
+            stand(linux.resolve("uname"), "echo Linux");
+            Path mac = Files.createDirectories(dir.resolve("mac"));
+            stand(mac.resolve("uname"), "echo Darwin");
+            List<String> onLinux = arguments(javaHome.getParent(), linux);
+            List<String> onMac = arguments(javaHome.getParent(), mac);
+            assertTrue(onLinux.contains(opens), "the script run as on Linux passes " + onLinux);
+            assertTrue(onLinux.contains("-Dsimpview.simpDir=" + launcher.getParent().getParent().resolve("simp")),
+                    onLinux.toString());
+            assertFalse(onMac.contains(opens), "the script run as on macOS passes " + onMac);
+            assertTrue(onMac.stream().anyMatch(a -> a.startsWith("-Dsimpview.simpDir=")), onMac.toString());
+        }
         String windows = Files.readString(launcher.resolveSibling("simpview.bat"));
         assertTrue(windows.lines().anyMatch(l -> l.startsWith("set DEFAULT_JVM_OPTS=\"-Dsimpview.simpDir=")),
                 "the Windows script keeps its other option");
@@ -121,15 +132,13 @@ public class InstalledLauncherTest {
         assertTrue(file.toFile().setExecutable(true));
     }
 
-    /** What the start script hands the java of {@code javaHome}, with {@code pathFirst} (or nothing) before PATH. */
+    /** What the start script hands the java of {@code javaHome}, with {@code pathFirst} before PATH. */
     private List<String> arguments(Path javaHome, Path pathFirst) throws IOException, InterruptedException {
         Run run = run(environment -> {
             environment.put("JAVA_HOME", javaHome.toString());
             environment.remove("JAVA_OPTS");
             environment.remove("SIMPVIEW_OPTS");
-            if (pathFirst != null) {
-                environment.put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
-            }
+            environment.put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
         }, "--version");
         assertEquals("", run.err(), "the start script printed on stderr");
         return run.out().lines().toList();
