@@ -1,5 +1,6 @@
 package simpview.scene.simp;
 
+import java.util.function.ToIntFunction;
 import simpview.geometry.Axis;
 
 /**
@@ -8,9 +9,10 @@ import simpview.geometry.Axis;
  * reads it before asking for the next line.
  *
  * <p>Every command is described once, in {@link Kind}: its spelling, the
- * shape of its arguments, and whether it belongs to the lit rules. The reader
- * parses by shape, the recording stores by shape, and the messages say what a
- * command takes from the same entry; the client gives each kind its action.
+ * shape of its arguments and the numbers it takes. The reader parses by
+ * shape, the recording stores by shape, and the messages say what a command
+ * takes from the same entry; the client gives each kind its action (and says
+ * which belong to the lit rules) in one switch with no default.
  */
 public final class Command {
 
@@ -32,42 +34,49 @@ public final class Command {
      * vertex, or a point and a colour (6) per vertex.
      */
     public enum Kind {
-        PUSH("{", Shape.NONE, false),
-        POP("}", Shape.NONE, false),
-        SCALE("scale", Shape.NUMBERS, false, 3),
-        TRANSLATE("translate", Shape.NUMBERS, false, 3),
-        ROTATE("rotate", Shape.AXIS_ANGLE, false),
-        LINE("line", Shape.NUMBERS, false, 6, 12),
-        POLYGON("polygon", Shape.NUMBERS, false, 9, 18),
-        FILE("file", Shape.NAME, false),
-        WIRE("wire", Shape.NONE, false),
-        FILLED("filled", Shape.NONE, false),
-        CAMERA("camera", Shape.NUMBERS, true, 6),
-        OBJ("obj", Shape.NAME, true),
-        AMBIENT("ambient", Shape.NUMBERS, true, 3),
-        SURFACE("surface", Shape.NUMBERS, true, 3, 5),
-        DEPTH("depth", Shape.NUMBERS, true, 5),
-        LIGHT("light", Shape.NUMBERS, true, 5),
-        FLAT("flat", Shape.NONE, true),
-        GOURAUD("gouraud", Shape.NONE, true),
-        PHONG("phong", Shape.NONE, true);
+        PUSH("{", Shape.NONE),
+        POP("}", Shape.NONE),
+        SCALE("scale", Shape.NUMBERS, 3),
+        TRANSLATE("translate", Shape.NUMBERS, 3),
+        ROTATE("rotate", Shape.AXIS_ANGLE),
+        LINE("line", 2),
+        POLYGON("polygon", 3),
+        FILE("file", Shape.NAME),
+        WIRE("wire", Shape.NONE),
+        FILLED("filled", Shape.NONE),
+        CAMERA("camera", Shape.NUMBERS, 6),
+        OBJ("obj", Shape.NAME),
+        AMBIENT("ambient", Shape.NUMBERS, 3),
+        SURFACE("surface", Shape.NUMBERS, 3, 5),
+        DEPTH("depth", Shape.NUMBERS, 5),
+        LIGHT("light", Shape.NUMBERS, 5),
+        FLAT("flat", Shape.NONE),
+        GOURAUD("gouraud", Shape.NONE),
+        PHONG("phong", Shape.NONE);
 
         public final String spelling;
         public final Shape shape;
-        /** True for the commands that make a scene lit (SPEC Part 2). */
-        public final boolean lit;
+        private final int vertices;
         private final int[] counts;
 
-        Kind(String spelling, Shape shape, boolean lit, int... counts) {
+        Kind(String spelling, Shape shape, int... counts) {
             this.spelling = spelling;
             this.shape = shape;
-            this.lit = lit;
+            this.vertices = 0;
             this.counts = counts;
+        }
+
+        /** A line or polygon of {@code vertices} vertices: a point per vertex, or a point and a colour. */
+        Kind(String spelling, int vertices) {
+            this.spelling = spelling;
+            this.shape = Shape.NUMBERS;
+            this.vertices = vertices;
+            this.counts = new int[] {3 * vertices, 6 * vertices};
         }
 
         /** Vertices of a line (2) or polygon (3); 0 for every other command. */
         public int vertices() {
-            return this == LINE ? 2 : this == POLYGON ? 3 : 0;
+            return vertices;
         }
 
         /** True when a NUMBERS command may take {@code n} numbers. */
@@ -99,10 +108,18 @@ public final class Command {
         }
     }
 
-    /** Most numbers a command carries (a coloured polygon's 18). */
-    public static final int MAX_NUMBERS = 18;
-    /** Most vertices a command has (a polygon's three). */
-    public static final int MAX_VERTICES = 3;
+    /** Most numbers a command carries (a coloured polygon's 18), from the table. */
+    public static final int MAX_NUMBERS = most(Kind::mostNumbers);
+    /** Most vertices a command has (a polygon's three), from the table. */
+    public static final int MAX_VERTICES = most(Kind::vertices);
+
+    private static int most(ToIntFunction<Kind> of) {
+        int most = 0;
+        for (Kind k : Kind.values()) {
+            most = Math.max(most, of.applyAsInt(k));
+        }
+        return most;
+    }
 
     Kind kind;
     /** The numbers as written, count of them. */

@@ -113,32 +113,18 @@ final class LitRules implements RuleSet {
         return geometry.primitiveCount();
     }
 
-    /**
-     * Carries out a command of the lit rules; true when it drew (an obj).
-     * Every kind is named here, so a new command is a compile error until it
-     * is given its place.
+    /*
+     * The commands of the lit rules, each called by SimpClient.execute once
+     * the scene is lit; each returns true when it drew (only an obj does).
      */
-    boolean execute(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
-        return switch (c.kind) {
-            case CAMERA -> camera(c, ctm);
-            case OBJ -> obj(c, ctm, style);
-            case AMBIENT -> {
-                notNegative(c, 0, 3, "ambient light");
-                state.setAmbient(c.numbers[0], c.numbers[1], c.numbers[2]);
-                yield false;
-            }
-            case SURFACE -> surface(c);
-            case DEPTH -> depth(c);
-            case LIGHT -> light(c, ctm);
-            case FLAT -> shading(LitState.ShadingMode.FLAT);
-            case GOURAUD -> shading(LitState.ShadingMode.GOURAUD);
-            case PHONG -> shading(LitState.ShadingMode.PHONG);
-            case PUSH, POP, SCALE, TRANSLATE, ROTATE, LINE, POLYGON, FILE, WIRE, FILLED ->
-                    throw new IllegalArgumentException(c.kind.spelling + " is the same under both rules: SimpClient's");
-        };
+
+    boolean ambient(Command c) throws SceneException {
+        notNegative(c, 0, 3, "ambient light");
+        state.setAmbient(c.numbers[0], c.numbers[1], c.numbers[2]);
+        return false;
     }
 
-    private boolean camera(Command c, Matrix4 ctm) throws SceneException {
+    boolean camera(Command c, Matrix4 ctm) throws SceneException {
         if (cameraAt != null) {
             throw error(c, c.commandIndex, "a second camera: a scene has one, and the first is at " + cameraAt);
         }
@@ -161,7 +147,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean obj(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
+    boolean obj(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
@@ -183,7 +169,7 @@ final class LitRules implements RuleSet {
         return firstClampedColour;
     }
 
-    private boolean surface(Command c) throws SceneException {
+    boolean surface(Command c) throws SceneException {
         notNegative(c, 0, c.count, c.count == 3 ? "surface colour" : "surface colour, ks and p");
         double[] n = c.numbers;
         if (c.count == 3) {
@@ -194,7 +180,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean depth(Command c) throws SceneException {
+    boolean depth(Command c) throws SceneException {
         double[] n = c.numbers;
         if (!(n[0] > n[1])) {
             throw error(c, c.argumentIndex, "fog needs near > far (camera-space z, far more negative), found near "
@@ -205,7 +191,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean light(Command c, Matrix4 ctm) throws SceneException {
+    boolean light(Command c, Matrix4 ctm) throws SceneException {
         notNegative(c, 0, 5, "light intensity and attenuation");
         double[] n = c.numbers;
         if (n[3] == 0 && n[4] == 0) {
@@ -215,7 +201,7 @@ final class LitRules implements RuleSet {
         return false;
     }
 
-    private boolean shading(LitState.ShadingMode shading) {
+    boolean shading(LitState.ShadingMode shading) {
         state.setShading(shading);
         return false;
     }

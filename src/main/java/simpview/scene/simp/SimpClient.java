@@ -140,37 +140,62 @@ public final class SimpClient {
             }
             case WIRE -> style(Style.WIRE);
             case FILLED -> style(Style.FILLED);
-            case CAMERA, OBJ, AMBIENT, SURFACE, DEPTH, LIGHT, FLAT, GOURAUD, PHONG -> litCommand(c);
+            // The commands of the lit rules: this switch is the one place
+            // that says which they are. Each goes to the lit rules once lit()
+            // has turned the scene lit (or said to ignore it).
+            case CAMERA -> lit(c) && litRules().camera(c, ctm);
+            case OBJ -> lit(c) && obj(c);
+            case AMBIENT -> lit(c) && litRules().ambient(c);
+            case SURFACE -> lit(c) && litRules().surface(c);
+            case DEPTH -> lit(c) && litRules().depth(c);
+            case LIGHT -> lit(c) && litRules().light(c, ctm);
+            case FLAT -> lit(c) && litRules().shading(LitState.ShadingMode.FLAT);
+            case GOURAUD -> lit(c) && litRules().shading(LitState.ShadingMode.GOURAUD);
+            case PHONG -> lit(c) && litRules().shading(LitState.ShadingMode.PHONG);
         };
     }
 
-    /** A command of the lit rules ({@link Command.Kind#lit}): to the lit rules, turning the scene lit first if need be. */
-    private boolean litCommand(Command c) throws SceneException {
-        if (!(rules instanceof LitRules)) {
-            String here = files.place() + " " + c.kind.spelling;
-            switch (onLit) {
-                case IGNORE -> {
-                    if (firstIgnored == null) {
-                        firstIgnored = here;
-                    }
-                    return false;
+    /**
+     * Before a command of the lit rules: turns the scene lit first if need
+     * be; false when the command is to be ignored (the eight pages).
+     */
+    private boolean lit(Command c) throws SceneException {
+        if (rules instanceof LitRules) {
+            return true;
+        }
+        String here = files.place() + " " + c.kind.spelling;
+        switch (onLit) {
+            case IGNORE -> {
+                if (firstIgnored == null) {
+                    firstIgnored = here;
                 }
-                case STOP -> throw new SceneTurnsLit(here);
-                case TURN_LIT -> {
-                    if (drew) {
-                        throw new SceneTurnsLit(here);
-                    }
-                    litBecause = here;
-                    rules = litRules.get();
+                return false;
+            }
+            case STOP -> throw new SceneTurnsLit(here);
+            case TURN_LIT -> {
+                if (drew) {
+                    throw new SceneTurnsLit(here);
                 }
+                litBecause = here;
+                rules = litRules.get();
             }
         }
-        boolean drewNow = ((LitRules) rules).execute(c, ctm, style);
-        drew |= drewNow;
+        return true;
+    }
+
+    /** The rules of a scene {@link #lit} has turned lit. */
+    private LitRules litRules() {
+        return (LitRules) rules;
+    }
+
+    /** An obj: the one command of the lit rules that draws; its model's colours may be clamped. */
+    private boolean obj(Command c) throws SceneException {
+        litRules().obj(c, ctm, style);
+        drew = true;
         if (firstClamped == null) {
-            firstClamped = rules.firstClampedColour(); // a model's, read by this command
+            firstClamped = rules.firstClampedColour(); // the model's, read by this command
         }
-        return drewNow;
+        return true;
     }
 
     private boolean transform(Matrix4 m) {
