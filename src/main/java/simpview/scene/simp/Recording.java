@@ -79,20 +79,19 @@ final class Recording {
 
     /** Writes c's numbers from to[at] on, as {@link #get} reads them back; returns where they end. */
     private static int copy(Command c, double[] to, int at) {
-        switch (c.kind.shape) {
+        return switch (c.kind.shape) {
             case NUMBERS -> {
                 to[at] = c.count;
                 System.arraycopy(c.numbers, 0, to, at + 1, c.count);
+                yield at + numbersOf(c);
             }
             case AXIS_ANGLE -> {
                 to[at] = c.axis.ordinal();
                 to[at + 1] = c.angle;
+                yield at + numbersOf(c);
             }
-            case NONE, NAME -> {
-                return at;
-            }
-        }
-        return at + numbersOf(c);
+            case NONE, NAME -> at;
+        };
     }
 
     /** The file was read to its end without an error, {@code lines} lines in all: the recording can be replayed. */
@@ -128,7 +127,8 @@ final class Recording {
         c.colored = false;
         c.clamped = false;
         int at = places[p + 5];
-        switch (c.kind.shape) {
+        // A switch expression, its value unused, so that a new Shape does not build without its case here.
+        Command.Shape read = switch (c.kind.shape) {
             case NUMBERS -> {
                 // Copied in plain loops here and in splitVertices: with
                 // System.arraycopy for these 3 to 18 numbers, a replayed
@@ -143,15 +143,16 @@ final class Recording {
                 if (c.kind.vertices() > 0) {
                     c.splitVertices();
                 }
+                yield Command.Shape.NUMBERS;
             }
             case AXIS_ANGLE -> {
                 c.axis = AXES[(int) numbers[at]];
                 c.angle = numbers[at + 1];
+                yield Command.Shape.AXIS_ANGLE;
             }
-            case NONE, NAME -> {
-                // nothing more to a brace, a style word or a file name
-            }
-        }
+            // nothing more to a brace, a style word or a file name
+            case NONE, NAME -> c.kind.shape;
+        };
     }
 
     /** Roughly the memory it holds, for the cache budget. */
