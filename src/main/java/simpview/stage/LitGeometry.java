@@ -156,7 +156,7 @@ public final class LitGeometry implements GeometryStage {
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
                 if (record != null) {
-                    record.add(LitPrimitives.LINE, screen, 2, FragmentLayout.COLOUR_CHANNELS,
+                    record.add(LitPrimitives.Kind.LINE, screen, 2, FragmentLayout.COLOUR_CHANNELS,
                             record.look(state.fog(), null, false));
                     return;
                 }
@@ -249,7 +249,7 @@ public final class LitGeometry implements GeometryStage {
             // Projected straight into the record's batch: no copy of the vertices.
             double[] into = record.room(kept, channels);
             if (project(clipper.vertices(), kept, channels, into, record.roomAt()) == kept) {
-                record.addInRoom(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, kept, channels,
+                record.addInRoom(wire ? LitPrimitives.Kind.OUTLINE : LitPrimitives.Kind.FILL, kept, channels,
                         recordedLook(wire, channels));
             }
             return;
@@ -262,7 +262,7 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         if (record != null) {
-            record.add(wire ? LitPrimitives.OUTLINE : LitPrimitives.FILL, screen, kept, channels,
+            record.add(wire ? LitPrimitives.Kind.OUTLINE : LitPrimitives.Kind.FILL, screen, kept, channels,
                     recordedLook(wire, channels));
             return;
         }
@@ -292,12 +292,12 @@ public final class LitGeometry implements GeometryStage {
      * @return the channels the fragments will carry
      */
     private int shade(int n) {
-        switch (state.shading()) {
+        return switch (state.shading()) {
             case FLAT -> {
                 flat(n);
                 flatColour = true;
                 fragments.flat(state.fog());
-                return FragmentLayout.COLOUR_CHANNELS;
+                yield FragmentLayout.COLOUR_CHANNELS;
             }
             case GOURAUD -> {
                 if (trace != null && litEach.length < 3 * n) {
@@ -317,13 +317,13 @@ public final class LitGeometry implements GeometryStage {
                     cam[o + CB] = lit[2];
                 }
                 fragments.colours(state.fog());
-                return FragmentLayout.COLOUR_CHANNELS;
+                yield FragmentLayout.COLOUR_CHANNELS;
             }
-            default -> {
+            case PHONG -> {
                 fragments.phong(phongShader(), state.fog());
-                return FragmentLayout.PHONG_CHANNELS;
+                yield FragmentLayout.PHONG_CHANNELS;
             }
-        }
+        };
     }
 
     /**

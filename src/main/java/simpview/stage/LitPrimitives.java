@@ -39,9 +39,16 @@ import simpview.surface.ZBuffer;
  */
 public final class LitPrimitives {
 
-    static final byte FILL = 0;
-    static final byte LINE = 1;
-    static final byte OUTLINE = 2;
+    /** What a recorded primitive is; each is drawn by its own case below, so a new one does not build without it. */
+    enum Kind {
+        /** A filled polygon. */
+        FILL,
+        /** A line. */
+        LINE,
+        /** A wire polygon: its edges as lines. */
+        OUTLINE
+    }
+
     /**
      * The most primitives, or numbers, a batch holds; a picture's first
      * batches hold fewer primitives ({@link BatchDrawing}).
@@ -150,7 +157,7 @@ public final class LitPrimitives {
      * its channels, kind and look, and the primitive the provenance record
      * says is being read (the owner of what it draws).
      */
-    void add(byte what, double[] v, int n, int channelCount, int look) {
+    void add(Kind what, double[] v, int n, int channelCount, int look) {
         System.arraycopy(v, 0, room(n, channelCount), roomAt(), n * FragmentLayout.stride(channelCount));
         addInRoom(what, n, channelCount, look);
     }
@@ -175,13 +182,13 @@ public final class LitPrimitives {
      * {@link #add} does (which copies them there first), and hands the batch
      * off once it is full or covers {@link #MOST_PIXELS}.
      */
-    void addInRoom(byte what, int n, int channelCount, int look) {
+    void addInRoom(Kind what, int n, int channelCount, int look) {
         Batch b = batches.filling();
         int at = b.start[b.size];
         b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
                 bands);
         boolean heavy = batches.weigh(b.numbers, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount),
-                what == FILL, what == OUTLINE);
+                what == Kind.FILL, what == Kind.OUTLINE);
         if (heavy || batches.full() || b.start[b.size] >= MOST_NUMBERS) {
             batches.handOff();
         }
@@ -226,7 +233,7 @@ public final class LitPrimitives {
      */
     private static final class Batch implements BatchDrawing.Recorded {
         int size;
-        byte[] kind = new byte[1024];
+        Kind[] kind = new Kind[1024];
         int[] vertices = new int[1024];
         byte[] channels = new byte[1024];
         int[] start = new int[1025];
@@ -295,7 +302,7 @@ public final class LitPrimitives {
         }
 
         /** Records the primitive whose n vertices are in numbers from start[size] (written to its room). */
-        void addInPlace(byte what, int n, int channelCount, int look, int by, RowBands bands) {
+        void addInPlace(Kind what, int n, int channelCount, int look, int by, RowBands bands) {
             int stride = FragmentLayout.stride(channelCount);
             int count = n * stride;
             if (size == kind.length) {
@@ -308,8 +315,8 @@ public final class LitPrimitives {
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
-            double low = BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride, what == FILL);
-            double high = BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride, what == FILL);
+            double low = BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride, what == Kind.FILL);
+            double high = BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride, what == Kind.FILL);
             lowY[size] = low;
             highY[size] = high;
             start[size + 1] = at + count;
@@ -425,17 +432,25 @@ public final class LitPrimitives {
             int at = b.start[k];
             int n = b.vertices[k];
             int ch = b.channels[k];
-            switch (b.kind[k]) {
-                case FILL -> fill.fill(numbers, at, n, ch, width, height, fragments);
-                case LINE -> lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
-                default -> {
+            // A switch expression (its value unused) so that a new Kind does not build without its case.
+            Kind drawn = switch (b.kind[k]) {
+                case FILL -> {
+                    fill.fill(numbers, at, n, ch, width, height, fragments);
+                    yield Kind.FILL;
+                }
+                case LINE -> {
+                    lines.draw(numbers, at, at + FragmentLayout.stride(ch), ch, width, height, fragments);
+                    yield Kind.LINE;
+                }
+                case OUTLINE -> {
                     int stride = FragmentLayout.stride(ch);
                     for (int i = 0; i < n; i++) {
                         lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
                                 fragments);
                     }
+                    yield Kind.OUTLINE;
                 }
-            }
+            };
         }
 
         private void setLook(Batch b, int l) {

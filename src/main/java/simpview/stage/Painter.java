@@ -14,6 +14,11 @@ import simpview.surface.Drawable;
  */
 public final class Painter implements PrimitiveSink {
 
+    /*
+     * The kinds of primitive, kept as ints because they travel in the
+     * recorded batches' number arrays and to the trace; draw below names each
+     * and throws for any other, and PainterTest draws every one.
+     */
     public static final int LINE = 0;
     public static final int FILLED = 1;
     public static final int WIRE = 2;
@@ -68,7 +73,7 @@ public final class Painter implements PrimitiveSink {
             case LINE -> lines.drawLine(p, at, at + Vertex.NUMBERS, panel);
             case FILLED -> filled.drawPolygon(p, at, panel);
             case WIRE -> wire.drawPolygon(p, at, panel);
-            default -> throw new IllegalArgumentException("primitive kind " + kind);
+            default -> throw new AssertionError("primitive kind " + kind + ": a kind added without its case here");
         }
     }
 }
