@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Optional;
 import picocli.CommandLine;
@@ -70,8 +71,9 @@ public final class Main {
                 .setExecutionExceptionHandler(Main::reportUnexpected)
                 .setParameterExceptionHandler(Main::reportUsageError);
         sayWhereTheScenesAre(commandLine, command.ownScenes());
-        for (String name : List.of("render", "compare", "check", "inspect")) {
-            sayWhereTheScenesAre(commandLine.getSubcommands().get(name), command.ownScenes());
+        // Every subcommand SimpviewCommand lists (a set: an alias would name one twice).
+        for (CommandLine sub : new LinkedHashSet<>(commandLine.getSubcommands().values())) {
+            sayWhereTheScenesAre(sub, command.ownScenes());
         }
         // picocli's own exit code for invalid input is already ExitCode.USAGE_ERROR (2).
         int code;
