@@ -53,6 +53,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
+import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
@@ -293,11 +294,16 @@ public final class SimpviewWindow {
                 menu.setMnemonic(action.menu().mnemonic());
                 bar.add(menu);
             }
-            if (separatedBefore(action)) {
+            if (action.firstOfGroup()) {
                 menu.addSeparator();
             }
-            JMenuItem item = isOn(action) != null ? new javax.swing.JCheckBoxMenuItem(action.label())
-                    : new JMenuItem(action.label());
+            JMenuItem item;
+            if (action.toggle()) {
+                isOn(action); // a toggle isOn does not know fails here, as the window opens
+                item = new JCheckBoxMenuItem(action.label());
+            } else {
+                item = new JMenuItem(action.label());
+            }
             item.setName(action.name());
             item.setAccelerator(action.accelerator());
             item.addActionListener(e -> perform(action));
@@ -332,14 +338,17 @@ public final class SimpviewWindow {
     /** Ticks a menu's toggles that are on, as it opens. */
     private void tick(JMenu menu) {
         for (int k = 0; k < menu.getItemCount(); k++) {
-            if (menu.getItem(k) instanceof javax.swing.JCheckBoxMenuItem toggle) {
-                toggle.setSelected(Boolean.TRUE.equals(isOn(WindowAction.valueOf(toggle.getName()))));
+            if (menu.getItem(k) instanceof JCheckBoxMenuItem toggle) {
+                toggle.setSelected(isOn(WindowAction.valueOf(toggle.getName())));
             }
         }
     }
 
-    /** Whether an entry that turns something on and off is on now (its menu entry ticked); null for the others. */
-    Boolean isOn(WindowAction action) {
+    /**
+     * Whether an entry that turns something on and off ({@link WindowAction#toggle}) is on now: its menu
+     * entry ticked.
+     */
+    boolean isOn(WindowAction action) {
         return switch (action) {
             case DEPTH_VIEW -> depthView;
             case OWN_COLOURS -> settings.ownColours();
@@ -354,16 +363,8 @@ public final class SimpviewWindow {
             case INSPECTOR -> inspectorPanel.isShown();
             case PIN -> pinnedX >= 0;
             case HELP -> help.isVisible();
-            default -> null;
-        };
-    }
-
-    /** Where a menu's groups begin. */
-    private static boolean separatedBefore(WindowAction action) {
-        return switch (action) {
-            case REDRAW, CLOSE, DEPTH_VIEW, COMPARE_FLIP, HIDE_ERROR, PAGE_1, ASSIGNMENT, SEED, STEP_ON,
-                    GO_TO_PRIMITIVE -> true;
-            default -> false;
+            default -> throw new IllegalArgumentException(action + " is a toggle without its state here, "
+                    + "or no toggle: WindowAction says which");
         };
     }
 

@@ -257,7 +257,7 @@ public class ViewWindowTest extends WindowTestCase {
         });
         driver.awaitEdt(item::isShowing, "the " + menuName + " menu open");
         boolean ticked = driver.onEdt(item::isSelected);
-        assertEquals(ticked, Boolean.TRUE.equals(driver.onEdt(() -> window.isOn(action))), action + " ticked as it is");
+        assertEquals(ticked, action.toggle() && driver.onEdt(() -> window.isOn(action)), action + " ticked as it is");
         driver.click(item);
         return item;
     }
