@@ -1017,7 +1017,7 @@ public final class CompareBatch {
     /** E.g. "A1 page 1 panel 4 (antialiased)", "A1 page 3 (seed 361) panel 1 (DDA)", "A1 page 4 panel 2". */
     private String firstAssignmentLabel(int page, int panel) {
         return firstAssignmentLabel(page) + " panel " + panel
-                + (Assignment1.page(page) instanceof LineTestPage ? " (" + LineTestPage.DRAWERS[panel - 1] + ")" : "");
+                + (Assignment1.page(page) instanceof LineTestPage ? " (" + LineTestPage.DRAWERS.get(panel - 1) + ")" : "");
     }
 
     /**

@@ -45,8 +45,8 @@ final class PrimitiveListing {
     private static String panels(Page page) {
         if (page instanceof LineTestPage) {
             StringBuilder out = new StringBuilder("the same lines in each panel, drawn by panel");
-            for (int k = 0; k < LineTestPage.DRAWERS.length; k++) {
-                out.append(k == 0 ? " " : ", ").append(k + 1).append(": ").append(LineTestPage.DRAWERS[k]);
+            for (int k = 0; k < LineTestPage.DRAWERS.size(); k++) {
+                out.append(k == 0 ? " " : ", ").append(k + 1).append(": ").append(LineTestPage.DRAWERS.get(k));
             }
             return out.append(" (ends rounded first)").toString();
         }

@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.List;
 import java.util.Random;
 import simpview.geometry.Vertex;
 
@@ -18,10 +19,10 @@ import simpview.geometry.Vertex;
  */
 public final class A1Polygons {
 
-    public static final int SCENES = 4;
     /** Scene k's name, as SPEC Part 3 names it, at k - 1. */
-    public static final java.util.List<String> NAMES = java.util.List.of("starburst", "mesh", "perturbed mesh",
-            "random triangles");
+    public static final List<String> NAMES = List.of("starburst", "mesh", "perturbed mesh", "random triangles");
+    /** How many scenes: one a panel. */
+    public static final int SCENES = NAMES.size();
     public static final int GRID = 10;
     public static final double GRID_START = 15;
     public static final double GRID_STEP = 30;

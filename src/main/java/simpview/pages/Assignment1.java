@@ -7,14 +7,15 @@ import simpview.surface.PageCanvas;
 /** The first assignment's five pages (SPEC Part 3). Page n is {@code all().get(n - 1)}. */
 public final class Assignment1 {
 
-    public static final int COUNT = 5;
-
     private static final List<A1Page> ALL = List.of(
             LineTestPage.starburst(),
             LineTestPage.parallelogram(),
             LineTestPage.random(),
             PolygonTestPage.filled(),
             PolygonTestPage.ghosts());
+
+    /** How many pages: five. */
+    public static final int COUNT = ALL.size();
 
     private Assignment1() {
     }

@@ -6,8 +6,6 @@ import simpview.surface.Rgb;
 /** The eight pages, in order. Page n is {@code all().get(n - 1)}. */
 public final class Assignment2 {
 
-    public static final int COUNT = 8;
-
     /** Page 5's near colour: a warm amber, so it reads differently from page 4's green. */
     public static final Rgb PAGE5_NEAR = new Rgb(1, 0.75, 0.3);
 
@@ -20,6 +18,9 @@ public final class Assignment2 {
             ScenePage.course("page6.simp"),
             ScenePage.course("page7.simp"),
             ScenePage.course("page8.simp"));
+
+    /** How many pages: eight. */
+    public static final int COUNT = ALL.size();
 
     private Assignment2() {
     }

@@ -1,7 +1,9 @@
 package simpview.pages;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.IntConsumer;
 import java.util.function.LongFunction;
 import simpview.geometry.Vertex;
@@ -19,8 +21,41 @@ import simpview.surface.PageCanvas;
  */
 public final class LineTestPage implements A1Page {
 
-    /** What draws panel k (1..4), as the inspector and the docs name it. */
-    public static final String[] DRAWERS = {"DDA", "Bresenham", "alternating DDA / Bresenham", "antialiased"};
+    /** What draws each panel, in panel order (1..4): its name, and whether the rule changes it. */
+    private enum Drawer {
+        DDA("DDA", false),
+        BRESENHAM("Bresenham", true),
+        ALTERNATING("alternating DDA / Bresenham", true),
+        ANTIALIASED("antialiased", false);
+
+        private final String name;
+        private final boolean byRule;
+
+        Drawer(String name, boolean byRule) {
+            this.name = name;
+            this.byRule = byRule;
+        }
+
+        /** A fresh one under the rule. */
+        LineRenderer make(A1Rule rule) {
+            return switch (this) {
+                case DDA -> new DdaLineRenderer();
+                case BRESENHAM -> rule.bresenham();
+                case ALTERNATING -> new AlternatingLineRenderer(new DdaLineRenderer(), rule.bresenham());
+                case ANTIALIASED -> new AntialiasedLineRenderer();
+            };
+        }
+
+        static Drawer ofPanel(int panel) {
+            if (panel < 1 || panel > values().length) {
+                throw new IllegalArgumentException("panels are 1 to " + values().length + ", not " + panel);
+            }
+            return values()[panel - 1];
+        }
+    }
+
+    /** What draws panel k (1..4) at k - 1, as the inspector and the docs name it. */
+    public static final List<String> DRAWERS = Arrays.stream(Drawer.values()).map(d -> d.name).toList();
 
     private final String title;
     private final boolean seeded;
@@ -69,7 +104,7 @@ public final class LineTestPage implements A1Page {
 
     @Override
     public List<String> panelNames() {
-        return List.of(DRAWERS);
+        return DRAWERS;
     }
 
     /** The page's lines for this seed. */
@@ -79,18 +114,13 @@ public final class LineTestPage implements A1Page {
 
     /** Panel k's drawer by name, with the rule where the rule changes it. */
     public static String drawerName(int panel, A1Rule rule) {
-        return DRAWERS[panel - 1] + (panel == 2 || panel == 3 ? rule.drawerNote() : "");
+        Drawer drawer = Drawer.ofPanel(panel);
+        return drawer.name + (drawer.byRule ? rule.drawerNote() : "");
     }
 
     /** A fresh drawer for panel k (1..4) under the rule; the alternating one counts from its first line. */
     public static LineRenderer drawer(int panel, A1Rule rule) {
-        return switch (panel) {
-            case 1 -> new DdaLineRenderer();
-            case 2 -> rule.bresenham();
-            case 3 -> new AlternatingLineRenderer(new DdaLineRenderer(), rule.bresenham());
-            case 4 -> new AntialiasedLineRenderer();
-            default -> throw new IllegalArgumentException("panels are 1 to 4, not " + panel);
-        };
+        return Drawer.ofPanel(panel).make(rule);
     }
 
     @Override
@@ -142,7 +172,7 @@ public final class LineTestPage implements A1Page {
         int i = Math.min(Math.max(step, 1), set.count()) - 1;
         Vertex p = set.start(i);
         Vertex q = set.end(i);
-        return String.format(java.util.Locale.ROOT,
+        return String.format(Locale.ROOT,
                 "line %d of %d, (%s, %s) to (%s, %s), rounded (%.0f, %.0f) to (%.0f, %.0f), in every panel; panel 3 by the %s",
                 i + 1, set.count(), number(p.x()), number(p.y()), number(q.x()), number(q.y()), Math.floor(p.x() + 0.5),
                 Math.floor(p.y() + 0.5), Math.floor(q.x() + 0.5), Math.floor(q.y() + 0.5), i % 2 == 0 ? "DDA" : "Bresenham");
@@ -157,7 +187,7 @@ public final class LineTestPage implements A1Page {
 
     /** A coordinate as it was given, to three decimals where it has any. */
     static String number(double v) {
-        return v == Math.rint(v) ? String.format(java.util.Locale.ROOT, "%.0f", v)
-                : String.format(java.util.Locale.ROOT, "%.3f", v);
+        return v == Math.rint(v) ? String.format(Locale.ROOT, "%.0f", v)
+                : String.format(Locale.ROOT, "%.3f", v);
     }
 }
