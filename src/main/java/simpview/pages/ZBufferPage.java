@@ -19,10 +19,16 @@ import simpview.raster.FilledPolygonRenderer;
  */
 public final class ZBufferPage implements Page {
 
-    public static final double[] GREYS = {1, .85, .7, .55, .4, .25};
+    /** Triangle t's grey, in drawing order; read through {@link #grey}, so nobody can change a page's colours. */
+    private static final double[] GREYS = {1, .85, .7, .55, .4, .25};
     public static final double RADIUS = 275;
     public static final double NEAREST_Z = -1;
     public static final double FARTHEST_Z = -199;
+
+    /** The grey of triangle t (0 first drawn, 1 white). */
+    public static double grey(int t) {
+        return GREYS[t];
+    }
 
     @Override
     public String title() {

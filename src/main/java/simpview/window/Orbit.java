@@ -22,14 +22,14 @@ public final class Orbit {
     static final double NEARER_PER_NOTCH = 0.1;
     /** Notches farther than this are not taken (the scene would be some 67 times as far). */
     static final int FARTHEST = 40;
-    /** What a depth-cued scene turns about: the centre of the view volume. */
-    public static final double[] VIEW_VOLUME_CENTRE = {0, 0, -100};
+    /** What a depth-cued scene turns about: the centre of the view volume. Never written: each orbit takes a copy. */
+    private static final double[] VIEW_VOLUME_CENTRE = {0, 0, -100};
 
     private double yaw;
     private double pitch;
     /** Wheel notches nearer (negative: farther). */
     private int nearer;
-    private double[] centre = VIEW_VOLUME_CENTRE;
+    private double[] centre = VIEW_VOLUME_CENTRE.clone();
 
     /**
      * What the turns from now on are about, in camera space; taken only
@@ -56,7 +56,7 @@ public final class Orbit {
         yaw = 0;
         pitch = 0;
         nearer = 0;
-        centre = VIEW_VOLUME_CENTRE;
+        centre = VIEW_VOLUME_CENTRE.clone();
     }
 
     public boolean turned() {

@@ -141,7 +141,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         }
         Point p = driver.onScreen(PageCanvas.MARGIN + px, PageCanvas.MARGIN + PageCanvas.PANEL - 1 - py);
         driver.movePointer(p.x, p.y);
-        int grey = (int) Math.round(ZBufferPage.GREYS[nearest] * 255);
+        int grey = (int) Math.round(ZBufferPage.grey(nearest) * 255);
         String z = Inspector.number(triangles[nearest][0].z());
         // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
         java.util.regex.Pattern expected = java.util.regex.Pattern.compile(
