@@ -5,9 +5,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Vertex;
-import simpview.raster.DdaLineRenderer;
-import simpview.raster.FilledPolygonRenderer;
-import simpview.raster.WireframePolygonRenderer;
 import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
@@ -72,7 +69,7 @@ public final class CuedPrimitives {
      * those the threads kept from their last picture, and given back once
      * this one is drawn, as the lit record's rasterizers are.
      */
-    private final List<Renderers> renderers;
+    private final List<CuedRenderers> renderers;
     /**
      * Each band's rows as the canvas's clear owes them (the z-buffer reset,
      * the panel filled): by its drawer, before it first draws. Null until the
@@ -103,7 +100,7 @@ public final class CuedPrimitives {
         this.panelRows = panelRows;
         this.panel = panel;
         this.threads = threads;
-        List<Renderers> kept = threads.takeKept(Renderers.class);
+        List<CuedRenderers> kept = threads.takeKept(CuedRenderers.class);
         this.renderers = kept == null ? new ArrayList<>() : kept;
         this.drawers = new Band[bands.count()];
         for (int b = 0; b < drawers.length; b++) {
@@ -114,10 +111,9 @@ public final class CuedPrimitives {
     }
 
     /** The k-th drawer's renderers: kept ones, or new. */
-    private Renderers renderers(int k) {
+    private CuedRenderers renderers(int k) {
         if (k == renderers.size()) {
-            renderers.add(new Renderers(new DdaLineRenderer(), new FilledPolygonRenderer(),
-                    new WireframePolygonRenderer(new DdaLineRenderer())));
+            renderers.add(CuedRenderers.make());
         }
         return renderers.get(k);
     }
@@ -181,11 +177,7 @@ public final class CuedPrimitives {
                 preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
             }
         }
-        threads.keep(Renderers.class, renderers); // drawn: no drawer uses them any more
-    }
-
-    /** One drawer's renderers: scratch state only, set up anew for each primitive (and the fill for each band's rows). */
-    private record Renderers(DdaLineRenderer lines, FilledPolygonRenderer filled, WireframePolygonRenderer wire) {
+        threads.keep(CuedRenderers.class, renderers); // drawn: no drawer uses them any more
     }
 
     /** One batch of recorded primitives, in primitive arrays: filled by the reading thread, then read by the drawers. */
@@ -240,13 +232,12 @@ public final class CuedPrimitives {
         private final int to;
         private final Painter painter;
 
-        Band(int band, int from, int to, Drawable panel, Renderers renderers) {
+        Band(int band, int from, int to, Drawable panel, CuedRenderers renderers) {
             this.band = band;
             this.from = from;
             this.to = to;
             renderers.filled().rows(from, to);
-            this.painter = new Painter(new RowBandDrawable(from, to, panel), renderers.lines(), renderers.filled(),
-                    renderers.wire());
+            this.painter = renderers.painter(new RowBandDrawable(from, to, panel));
         }
 
         void draw(Batch b) {

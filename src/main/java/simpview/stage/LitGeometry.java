@@ -67,8 +67,9 @@ public final class LitGeometry implements GeometryStage {
      * not times q ({@link FragmentStage#flat}), so that every pixel of it is that colour to the bit.
      */
     private boolean flatColour;
-    private final LitPolygonRasterizer fill = new LitPolygonRasterizer();
-    private final LitLineRasterizer lines = new LitLineRasterizer();
+    private final LitRasterizers rasterizers = LitRasterizers.make();
+    private final LitPolygonRasterizer fill = rasterizers.fill();
+    private final LitLineRasterizer lines = rasterizers.lines();
     private final Clipper clipper = new Clipper(CAMERA_STRIDE);
     private double[] cam = new double[CAMERA_STRIDE * 8];
     private boolean[] ownNormal = new boolean[8];

@@ -84,7 +84,7 @@ public final class LitPrimitives {
      * made anew took the reading thread about 3 % of a two-thread picture of
      * A4 page-h before any band could start (session 13).
      */
-    private final List<Rasterizers> rasterizers;
+    private final List<LitRasterizers> rasterizers;
     private final DrawingThreads threads;
 
     /**
@@ -111,7 +111,7 @@ public final class LitPrimitives {
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
         this.bands = batches.bands();
         this.drawers = new Band[bands.count()];
-        List<Rasterizers> kept = threads.takeKept(Rasterizers.class);
+        List<LitRasterizers> kept = threads.takeKept(LitRasterizers.class);
         this.rasterizers = kept == null ? new ArrayList<>() : kept;
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel), rasterizers(b));
@@ -133,9 +133,9 @@ public final class LitPrimitives {
     }
 
     /** The k-th drawer's rasterizers: a kept pair, or a new one. */
-    private Rasterizers rasterizers(int k) {
+    private LitRasterizers rasterizers(int k) {
         if (k == rasterizers.size()) {
-            rasterizers.add(new Rasterizers(new LitPolygonRasterizer(), new LitLineRasterizer()));
+            rasterizers.add(LitRasterizers.make());
         }
         return rasterizers.get(k);
     }
@@ -219,11 +219,7 @@ public final class LitPrimitives {
         } finally {
             preparation.everyBand(); // also when a drawer failed: no row keeps the last picture's depths or pixels
         }
-        threads.keep(Rasterizers.class, rasterizers); // drawn: no drawer uses them any more
-    }
-
-    /** One drawer's rasterizers: scratch state only, set up anew for each primitive and each band's rows. */
-    private record Rasterizers(LitPolygonRasterizer fill, LitLineRasterizer lines) {
+        threads.keep(LitRasterizers.class, rasterizers); // drawn: no drawer uses them any more
     }
 
     /**
@@ -384,7 +380,7 @@ public final class LitPrimitives {
         private Supplier<PointShader> madeFrom;
         private PointShader shader;
 
-        Band(int band, int from, int to, FragmentStage fragments, Rasterizers rasterizers) {
+        Band(int band, int from, int to, FragmentStage fragments, LitRasterizers rasterizers) {
             this.band = band;
             this.from = from;
             this.to = to;

@@ -3,10 +3,8 @@ package simpview.scene.simp;
 import java.util.function.Supplier;
 import simpview.geometry.Matrix4;
 import simpview.geometry.Vertex;
-import simpview.raster.DdaLineRenderer;
-import simpview.raster.FilledPolygonRenderer;
-import simpview.raster.WireframePolygonRenderer;
 import simpview.stage.CuedPrimitives;
+import simpview.stage.CuedRenderers;
 import simpview.stage.DepthCuedGeometry;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
@@ -42,8 +40,7 @@ final class DepthCuedRules implements RuleSet {
 
     /** The project's renderers on {@code panel}: DDA lines, top-left-rule fills, wireframes of DDA lines. */
     DepthCuedRules(Drawable panel, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
-        this(new Painter(panel, new DdaLineRenderer(), new FilledPolygonRenderer(),
-                new WireframePolygonRenderer(new DdaLineRenderer())), files, trace, turn);
+        this(CuedRenderers.make().painter(panel), files, trace, turn);
     }
 
     /** Drawing with {@code painter} (tests give it renderers that record). */

@@ -5,15 +5,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Matrix4;
-import simpview.raster.DdaLineRenderer;
-import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
-import simpview.raster.WireframePolygonRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
+import simpview.stage.CuedRenderers;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
 import simpview.surface.Drawable;
@@ -77,7 +75,7 @@ public final class SimpClient {
 
     /** A depth-cued client on a panel-coordinate drawable with the project's renderers; lit commands are ignored. */
     SimpClient(Drawable panel) {
-        this(panel, new DdaLineRenderer(), new FilledPolygonRenderer(), new WireframePolygonRenderer(new DdaLineRenderer()));
+        this(CuedRenderers.make().painter(panel), new FileStack());
     }
 
     /** The same with other renderers (tests give renderers that record). */
@@ -86,8 +84,11 @@ public final class SimpClient {
     }
 
     SimpClient(Drawable panel, LineRenderer lines, PolygonRenderer filled, PolygonRenderer wire, FileStack files) {
-        this(files, new DepthCuedRules(new Painter(panel, lines, filled, wire), files, null, null), OnLit.IGNORE,
-                SimpClient::neverLit);
+        this(new Painter(panel, lines, filled, wire), files);
+    }
+
+    private SimpClient(Painter painter, FileStack files) {
+        this(files, new DepthCuedRules(painter, files, null, null), OnLit.IGNORE, SimpClient::neverLit);
     }
 
     static LitRules neverLit() {
