@@ -185,4 +185,51 @@ class ArchitectureTest {
         }
         assertTrue(threads >= 4, "found the threads: " + threads);
     }
+
+    /**
+     * The other ways to get a thread: an executor must make its threads with
+     * a factory of its own (whose {@code new Thread} is named and listed,
+     * above); a timer's thread is listed by the class that starts it; and the
+     * ways that borrow an unnamed, process-wide pool are not used at all.
+     */
+    @Test
+    void everyOtherWayToAThreadIsNamedAndListed() throws IOException {
+        String doc = Files.readString(DOC);
+        Pattern executor = Pattern.compile("Executors\\.new\\w+\\(");
+        Pattern utilTimer = Pattern.compile("new (java\\.util\\.)?Timer\\(\\s*\"([^\"]+)\"");
+        List<String> pooled = List.of("parallelStream(", ".parallel()", "ForkJoinPool", "supplyAsync(", "runAsync(",
+                "defaultThreadFactory(", "newWorkStealingPool(", "SwingWorker", "Thread.ofVirtual(");
+        List<String> wrong = new ArrayList<>();
+        for (Source s : sources()) {
+            String text = s.text();
+            String file = s.file().getFileName().toString();
+            String className = file.substring(0, file.length() - ".java".length());
+            Matcher m = executor.matcher(text);
+            while (m.find()) {
+                // the factory's new Thread(task, "simpview-...") follows within the call
+                String call = text.substring(m.end(), Math.min(text.length(), m.end() + 300));
+                if (!call.contains("new Thread(")) {
+                    wrong.add(file + " makes an executor whose threads have no name of ours: " + m.group());
+                }
+            }
+            for (String way : pooled) {
+                if (text.contains(way)) {
+                    wrong.add(file + " uses " + way + ": threads of a shared pool, named nowhere");
+                }
+            }
+            boolean swingTimer = text.contains("import javax.swing.Timer;") || text.contains("new javax.swing.Timer(");
+            if (swingTimer && !(doc.contains("`javax.swing.Timer`") && doc.contains("`" + className + "`"))) {
+                wrong.add(file + " ticks on a javax.swing.Timer, and docs/architecture.md's thread table does not "
+                        + "name it and " + className);
+            }
+            boolean utilTimers = text.contains("import java.util.Timer;") || text.contains("new java.util.Timer(");
+            if (utilTimers) {
+                Matcher named = utilTimer.matcher(text);
+                if (!named.find() || !doc.contains("`" + named.group(2))) {
+                    wrong.add(file + " starts a java.util.Timer without a name listed in docs/architecture.md");
+                }
+            }
+        }
+        assertEquals(List.of(), wrong);
+    }
 }

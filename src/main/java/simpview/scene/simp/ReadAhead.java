@@ -36,7 +36,7 @@ final class ReadAhead implements AutoCloseable {
         for (int k = 0; k < BATCHES; k++) {
             free.add(new PrimitiveBatch());
         }
-        reader = new Thread(this::read, "simp reader " + file.getFileName());
+        reader = new Thread(this::read, "simpview-reader " + file.getFileName());
         reader.setDaemon(true);
     }
 

@@ -109,7 +109,7 @@ class ReadAheadTest {
      * reads): other test classes run at the same time, with readers of their own.
      */
     private static boolean isOurs(Thread t) {
-        return t.getName().startsWith("simp reader " + OURS);
+        return t.getName().startsWith("simpview-reader " + OURS);
     }
 
     private static boolean readerThreadAlive() {
