@@ -16,6 +16,17 @@
  * <li>{@link simpview.shading.Fog}: {@code depth near far r g b};
  * {@code apply(z, colour, at)} in place on the clamped colour, then
  * {@code simpview.surface.Colors.pack} rounds each channel once.</li>
+ * <li>{@link simpview.shading.LitState}: what the commands set (camera, W,
+ * ambient, surface, fog, shading mode, lights), read by the geometry stage
+ * at each primitive's command.</li>
+ * <li>{@link simpview.shading.FragmentStage}: per pixel, in order: depth
+ * test, attributes resolved, the phong colour, fog, round(c * 255) written
+ * once; a phong pixel where a light is may wait to be lit once, at the
+ * picture's end.</li>
+ * <li>{@link simpview.shading.LitPoints}: a batch of points waiting to be lit
+ * together (a phong span's visible pixels), and
+ * {@link simpview.shading.BatchLighting}: {@code Lighting.shade(LitPoints)},
+ * each point to the same bits as when lit alone.</li>
  * </ul>
  *
  * Per phong pixel: {@code lighting.shade(...); fog.apply(z, c, 0);
