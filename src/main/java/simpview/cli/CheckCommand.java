@@ -18,6 +18,7 @@ import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.surface.DrawingThreads;
 
@@ -176,9 +177,9 @@ public final class CheckCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--assignment 1 checks the first assignment's pages, not "
                     + "scenes: give --pages RANGE (default: 1-5) or leave --scene out");
         }
-        if (firstAssignment() && pages != null && pages.last() > simpview.pages.Assignment1.COUNT) {
+        if (firstAssignment() && pages != null && pages.last() > Assignment1.COUNT) {
             throw new ParameterException(spec.commandLine(), "--pages " + pages + ": the first assignment has pages 1 "
-                    + "to " + simpview.pages.Assignment1.COUNT + " (without --assignment 1, --pages names the eight pages)");
+                    + "to " + Assignment1.COUNT + " (without --assignment 1, --pages names the eight pages)");
         }
     }
 

@@ -37,6 +37,7 @@ import simpview.compare.BatchTable;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
+import simpview.compare.Count;
 import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
@@ -306,7 +307,7 @@ public final class CompareBatch {
             return pages(dir, pages, outputs);
         }
         List<CompareTarget> wanted = new ArrayList<>();
-        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+        for (int p = 1; p <= Assignment2.COUNT; p++) {
             if (pages.contains(p)) {
                 wanted.add(CompareTarget.page(p));
             }
@@ -379,7 +380,7 @@ public final class CompareBatch {
      */
     private static Map<String, Integer> pageSubjects(PageRange pages) {
         Map<String, Integer> subjects = new HashMap<>();
-        for (int p = 1; p <= simpview.pages.Assignment2.COUNT; p++) {
+        for (int p = 1; p <= Assignment2.COUNT; p++) {
             if (pages.contains(p)) {
                 subjects.put("page" + p, p);
             }
@@ -457,7 +458,7 @@ public final class CompareBatch {
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames);
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan);
         double seconds = (System.nanoTime() - start) / 1e9;
-        err.printf(Locale.ROOT, "%s in %.2f s%n", simpview.compare.Count.of(pictures.size(), "picture"), seconds);
+        err.printf(Locale.ROOT, "%s in %.2f s%n", Count.of(pictures.size(), "picture"), seconds);
         if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage) && firstAssignmentOnly(rows)) {
             err.println(says + "note: every picture is a page of the first assignment, but --pages names the eight "
                     + "pages: none was graded as a page of the first assignment, and each of the eight pages asked for "
@@ -643,7 +644,7 @@ public final class CompareBatch {
             return false;
         }
         String first = unwritten.get(0).note().replaceFirst("^" + DIFF_NOT_WRITTEN, "");
-        err.println(says + simpview.compare.Count.of(unwritten.size(), "diff image") + " could not be written ("
+        err.println(says + Count.of(unwritten.size(), "diff image") + " could not be written ("
                 + first + (unwritten.size() == 1 ? "" : "; each row says why") + ")");
         return true;
     }

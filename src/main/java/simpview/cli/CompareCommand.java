@@ -34,6 +34,7 @@ import simpview.compare.SystematicError;
 import simpview.compare.WholePage;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Page;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.PageContext;
@@ -355,7 +356,7 @@ public final class CompareCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
                 + (shown.usesSeed() ? ", seed " + context.seed() : "")
-                + (context.a1Rule() == simpview.pages.A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
+                + (context.a1Rule() == A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
         out.println("page:    " + cut.describe());
         if (metric == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");

@@ -4,6 +4,7 @@ import java.util.BitSet;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
+import simpview.compare.Comparison;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 
@@ -73,7 +74,7 @@ public final class CompareOptions {
             String px = text.trim().endsWith("px") ? text.trim().substring(0, text.trim().length() - 2) : text.trim();
             try {
                 int value = Integer.parseInt(px.trim());
-                if (value >= 0 && value <= simpview.compare.Comparison.MAX_DEVIATION) {
+                if (value >= 0 && value <= Comparison.MAX_DEVIATION) {
                     return value;
                 }
             } catch (NumberFormatException e) {
@@ -98,13 +99,13 @@ public final class CompareOptions {
     }
 
     /** The metric: exact, blur or flip. */
-    static final class MetricConverter implements ITypeConverter<simpview.compare.Comparison.Metric> {
+    static final class MetricConverter implements ITypeConverter<Comparison.Metric> {
         @Override
-        public simpview.compare.Comparison.Metric convert(String text) {
+        public Comparison.Metric convert(String text) {
             return switch (text.trim().toLowerCase(Locale.ROOT)) {
-                case "exact" -> simpview.compare.Comparison.Metric.EXACT;
-                case "blur" -> simpview.compare.Comparison.Metric.BLUR;
-                case "flip" -> simpview.compare.Comparison.Metric.FLIP;
+                case "exact" -> Comparison.Metric.EXACT;
+                case "blur" -> Comparison.Metric.BLUR;
+                case "flip" -> Comparison.Metric.FLIP;
                 default -> throw new TypeConversionException("'" + text + "' is not a metric: expected exact, blur or flip");
             };
         }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
+import simpview.compare.Count;
 import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
 
@@ -85,7 +86,7 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
 
     /** What the batch says of the hidden pictures it left out, once: "" when there were none. */
     String hiddenNote() {
-        return hidden == 0 ? "" : simpview.compare.Count.of(hidden, "hidden picture") + " left out (a name starting "
+        return hidden == 0 ? "" : Count.of(hidden, "hidden picture") + " left out (a name starting "
                 + "with '.', or in a " + MAC_LEFTOVERS + " folder: a Mac's zip leftovers)";
     }
 }

@@ -18,6 +18,7 @@ import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.pages.Assignment1;
 import simpview.scene.SceneException;
+import simpview.scene.simp.SceneLibrary;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -127,7 +128,7 @@ final class InspectCommand implements Callable<Integer> {
                 scene = near == null && far == null ? InspectedScene.of(what.scene)
                         : InspectedScene.cued(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
             }
-            PixelInspector inspector = new PixelInspector(new simpview.scene.simp.SceneLibrary(),
+            PixelInspector inspector = new PixelInspector(new SceneLibrary(),
                     PageDrawing.warningsTo(err()));
             usage(primitive == null || primitive >= 1, "--primitive counts from 1, as the window's stepping does");
             int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;

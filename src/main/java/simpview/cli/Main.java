@@ -7,9 +7,12 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
 import picocli.CommandLine;
 import simpview.pages.PageContext;
 import simpview.scene.MemoryAdvice;
+import simpview.scene.Nearest;
 
 /**
  * Entry point: {@code simpview} opens the window, {@code simpview render ...}
@@ -106,9 +109,9 @@ public final class Main {
         }
         if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
             for (String word : unmatched.getUnmatched()) {
-                java.util.Set<String> known = new java.util.TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
+                Set<String> known = new TreeSet<>(commandLine.getCommandSpec().optionsMap().keySet());
                 known.addAll(commandLine.getSubcommands().keySet());
-                simpview.scene.Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
+                Nearest.to(word, known).ifPresent(near -> err.println("Did you mean '" + near + "' for '" + word + "'?"));
             }
         }
         err.println("See '" + commandLine.getCommandSpec().qualifiedName() + " --help' for how to use it.");

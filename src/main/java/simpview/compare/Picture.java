@@ -11,6 +11,7 @@ import java.util.Locale;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
+import simpview.scene.FileProblem;
 
 /**
  * A picture to compare: where its panel is, the panel's pixels (650x650
@@ -167,7 +168,7 @@ public final class Picture {
         } catch (AccessDeniedException e) {
             throw new CompareException(file + ": permission denied", e);
         } catch (IOException e) {
-            throw new CompareException(file + ": cannot be read: " + simpview.scene.FileProblem.of(file, e), e);
+            throw new CompareException(file + ": cannot be read: " + FileProblem.of(file, e), e);
         }
     }
 

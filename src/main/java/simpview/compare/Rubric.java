@@ -13,6 +13,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import simpview.scene.FileProblem;
 
 /**
  * A grading rubric: how each page or scene is judged and what it is worth.
@@ -96,7 +97,7 @@ public final class Rubric {
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new CompareException("rubric " + file + ": cannot be read: " + simpview.scene.FileProblem.of(file, e));
+            throw new CompareException("rubric " + file + ": cannot be read: " + FileProblem.of(file, e));
         }
         try (Reader reader = new java.io.StringReader(text)) {
             JsonReader json = new JsonReader(reader);

@@ -2,6 +2,7 @@ package simpview.inspect;
 
 import java.util.ArrayList;
 import java.util.List;
+import simpview.geometry.Vertex;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Polygons;
@@ -86,7 +87,7 @@ public final class A1Inspector {
                 centre.addAll(centreCases(scenes.scene(panel), px, py));
             }
             watch.count = shown instanceof LineTestPage ? watch.lines.count()
-                    : watch.triangles.length / (3 * simpview.geometry.Vertex.NUMBERS);
+                    : watch.triangles.length / (3 * Vertex.NUMBERS);
             for (A1Report.Write w : writes) {
                 w.of = watch.count;
             }
@@ -103,12 +104,12 @@ public final class A1Inspector {
         List<A1Report.CentreCase> cases = new ArrayList<>();
         double cx = x + 0.5;
         double cy = y + 0.5;
-        int n = simpview.geometry.Vertex.NUMBERS;
+        int n = Vertex.NUMBERS;
         for (int i = 0; i < triangles.length / (3 * n); i++) {
             double[] drawn = new double[6];
             for (int k = 0; k < 3; k++) {
-                drawn[2 * k] = triangles[(3 * i + k) * n + simpview.geometry.Vertex.X];
-                drawn[2 * k + 1] = triangles[(3 * i + k) * n + simpview.geometry.Vertex.Y];
+                drawn[2 * k] = triangles[(3 * i + k) * n + Vertex.X];
+                drawn[2 * k + 1] = triangles[(3 * i + k) * n + Vertex.Y];
             }
             boolean inBox = cx >= Math.min(drawn[0], Math.min(drawn[2], drawn[4]))
                     && cx <= Math.max(drawn[0], Math.max(drawn[2], drawn[4]))

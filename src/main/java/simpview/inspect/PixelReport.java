@@ -2,6 +2,7 @@ package simpview.inspect;
 
 import java.util.List;
 import simpview.scene.SceneException;
+import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SourcePlace;
 import simpview.stage.Painter;
 import simpview.surface.PageCanvas;
@@ -23,11 +24,11 @@ public final class PixelReport {
 
     private final java.util.function.IntFunction<PrimitiveSource> sources;
 
-    private final simpview.scene.simp.ScenePipeline.Drawn drawn;
+    private final ScenePipeline.Drawn drawn;
     private final SceneException error;
 
     /** @param error what stopped the scene, the history going as far as it; null when it was drawn to its end */
-    PixelReport(InspectedScene scene, simpview.scene.simp.ScenePipeline.Drawn drawn, SceneException error, int x,
+    PixelReport(InspectedScene scene, ScenePipeline.Drawn drawn, SceneException error, int x,
             int y, int argb, double depth, List<HistoryEntry> history,
             java.util.function.IntFunction<PrimitiveSource> sources) {
         this.drawn = drawn;

@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.util.ArrayList;
 import java.util.List;
+import simpview.geometry.Vertex;
 
 /**
  * What the window draws over a first-assignment page to show a line or a
@@ -29,10 +30,10 @@ public record A1Marks(List<double[]> outlines, double[] given, double[] rounded)
     /** Line i of a line test in the given panels: as given and between its rounded ends. */
     static A1Marks line(A1Lines set, int i, int... panels) {
         double[] n = set.numbers();
-        double px = n[A1Lines.from(i) + simpview.geometry.Vertex.X];
-        double py = n[A1Lines.from(i) + simpview.geometry.Vertex.Y];
-        double qx = n[A1Lines.to(i) + simpview.geometry.Vertex.X];
-        double qy = n[A1Lines.to(i) + simpview.geometry.Vertex.Y];
+        double px = n[A1Lines.from(i) + Vertex.X];
+        double py = n[A1Lines.from(i) + Vertex.Y];
+        double qx = n[A1Lines.to(i) + Vertex.X];
+        double qy = n[A1Lines.to(i) + Vertex.Y];
         double[] given = new double[4 * panels.length];
         double[] rounded = new double[4 * panels.length];
         for (int k = 0; k < panels.length; k++) {
@@ -54,10 +55,10 @@ public record A1Marks(List<double[]> outlines, double[] given, double[] rounded)
             double[] n = scenes.scene(panel);
             double[] outline = new double[6];
             for (int v = 0; v < 3; v++) {
-                int at = A1Polygons.at(i) + v * simpview.geometry.Vertex.NUMBERS;
+                int at = A1Polygons.at(i) + v * Vertex.NUMBERS;
                 // The fill samples pixel (i, j) at (i + 1/2, j + 1/2) of these (row-shifted) coordinates.
-                outline[2 * v] = A1Layout.left(panel) + n[at + simpview.geometry.Vertex.X];
-                outline[2 * v + 1] = A1Layout.top(panel) + A1Layout.PANEL - n[at + simpview.geometry.Vertex.Y];
+                outline[2 * v] = A1Layout.left(panel) + n[at + Vertex.X];
+                outline[2 * v + 1] = A1Layout.top(panel) + A1Layout.PANEL - n[at + Vertex.Y];
             }
             outlines.add(outline);
         }

@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import java.nio.file.Path;
+import simpview.geometry.Matrix4;
 
 /**
  * Follows a scene's primitives one by one, for the window's instruments
@@ -55,7 +56,7 @@ public interface PrimitiveTrace {
      * Told before the primitive is culled, skipped or read, and only to a
      * trace that {@link #wantsSource}.
      */
-    default void source(simpview.geometry.Matrix4 ctm, double[] xyz, int vertices) {
+    default void source(Matrix4 ctm, double[] xyz, int vertices) {
     }
 
     /**

@@ -10,6 +10,7 @@ import java.awt.RenderingHints;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
 import java.awt.geom.Path2D;
+import simpview.pages.A1Marks;
 import simpview.window.instruments.Outlines;
 import java.awt.image.BufferedImage;
 import javax.swing.JComponent;
@@ -45,7 +46,7 @@ public final class PageView extends JComponent {
     /** A primitive's outline in image coordinates (x0, y0, x1, y1, ...), or null. */
     private double[] outline;
     /** A first-assignment page's lines and triangles as given, over its pixels; never null. */
-    private transient simpview.pages.A1Marks marks = simpview.pages.A1Marks.NONE;
+    private transient A1Marks marks = A1Marks.NONE;
     /** Outlines drawn over the whole page (wire over fill), each in image coordinates; null for none. */
     private transient java.util.List<double[]> wire;
     private static final Color WIRE = new Color(0, 255, 128, 200);
@@ -126,12 +127,12 @@ public final class PageView extends JComponent {
     }
 
     /** Shows lines (as given and between their rounded ends) and triangles over a first-assignment page; null for none. */
-    void marks(simpview.pages.A1Marks shown) {
-        marks = shown == null ? simpview.pages.A1Marks.NONE : shown;
+    void marks(A1Marks shown) {
+        marks = shown == null ? A1Marks.NONE : shown;
         repaint();
     }
 
-    simpview.pages.A1Marks marks() {
+    A1Marks marks() {
         return marks;
     }
 

@@ -1,5 +1,8 @@
 package simpview.window;
 
+import simpview.pages.A1Page;
+import simpview.pages.A1Pixel;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.DepthPicture;
@@ -567,7 +570,7 @@ public final class SimpviewWindow {
             int number = ((View.OfPage) view).number();
             return InspectedScene.page(number, options.pageContext())
                     .withOwnColours(settings.ownColours());
-        } catch (IllegalArgumentException | simpview.scene.SceneException e) {
+        } catch (IllegalArgumentException | SceneException e) {
             why.accept(e.getMessage());
             return null;
         }
@@ -667,7 +670,7 @@ public final class SimpviewWindow {
         int y = pinnedX >= 0 ? pinnedY : hoverY;
         int owner = Inspector.ownerAt(shown, x, y);
         if (shown != null && shown.view() instanceof View.OfAssignment1Page page) {
-            int[] last = x < 0 || y < 0 ? null : simpview.pages.A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
+            int[] last = x < 0 || y < 0 ? null : A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
             owner = last == null ? -1 : last[1];
         }
         if (owner < 0) {
@@ -1042,7 +1045,7 @@ public final class SimpviewWindow {
     private void showStep(RenderedView result) {
         int limit = settings.stepLimit();
         if (result.view() instanceof View.OfAssignment1Page page) {
-            simpview.pages.A1Page a1 = Assignment1.page(page.number());
+            A1Page a1 = Assignment1.page(page.number());
             PageContext context = options.pageContext().withSeed(result.seed());
             if (limit < 1) {
                 return; // not stepping: the magnifier's marks, if any, are the inspector's

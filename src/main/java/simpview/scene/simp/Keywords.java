@@ -3,6 +3,7 @@ package simpview.scene.simp;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import simpview.scene.Nearest;
 import simpview.scene.simp.Command.Kind;
 
 /** The command words of {@link Kind}, matched against bytes without making a String. */
@@ -47,7 +48,7 @@ final class Keywords {
         for (Kind k : Kind.values()) {
             spellings.add(k.spelling);
         }
-        return simpview.scene.Nearest.to(word, spellings)
+        return Nearest.to(word, spellings)
                 .map(near -> " (did you mean '" + near + "'?"
                         + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")"))
                 .orElse("");

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Set;
 import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjCounts;
 import simpview.scene.obj.ObjFilesSeen;
@@ -98,7 +99,7 @@ final class LitRules implements RuleSet {
      * fragment stages come from {@code stages} (this one's among them), given
      * back at the scene's end, as {@link #drawWith} gives them back.
      */
-    void fragmentsThrough(simpview.raster.FragmentSink sink, FragmentStages stages) {
+    void fragmentsThrough(FragmentSink sink, FragmentStages stages) {
         this.stages = stages;
         geometry.fragmentsThrough(sink);
     }

@@ -1,5 +1,9 @@
 package simpview.scene.simp;
 
+import simpview.geometry.Matrix4;
+import simpview.scene.FileStamp;
+import simpview.stage.PrimitiveTrace;
+
 /**
  * What a scene being drawn tells the outside, and how it can be stopped.
  * Called on the thread that draws the scene.
@@ -38,7 +42,7 @@ public interface SceneMonitor {
      * Told just before {@link #reached}: the files' stamps, in the same order,
      * as they were before the scene read them (see {@link FileStack}).
      */
-    default void stampsAsRead(java.util.List<simpview.scene.FileStamp> stamps) {
+    default void stampsAsRead(java.util.List<FileStamp> stamps) {
     }
 
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
@@ -46,7 +50,7 @@ public interface SceneMonitor {
     }
 
     /** Who follows the scene's primitives one by one (the window's instruments), or null: nobody, at no cost. */
-    default simpview.stage.PrimitiveTrace trace() {
+    default PrimitiveTrace trace() {
         return null;
     }
 
@@ -56,7 +60,7 @@ public interface SceneMonitor {
      * so the world turns before the depth cue; for a lit scene the camera
      * moves about the world); null for none.
      */
-    default simpview.geometry.Matrix4 viewTurn() {
+    default Matrix4 viewTurn() {
         return null;
     }
 

@@ -14,6 +14,7 @@ import simpview.shading.LitState;
 import simpview.stage.CuedRenderers;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveSink;
+import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 
 /**
@@ -96,13 +97,13 @@ public final class SimpClient {
     }
 
     /** A depth-cued client with the project's renderers whose primitives {@code trace} follows; lit commands are ignored. */
-    static SimpClient depthCued(Drawable panel, simpview.stage.PrimitiveTrace trace) {
+    static SimpClient depthCued(Drawable panel, PrimitiveTrace trace) {
         FileStack files = new FileStack();
         return new SimpClient(files, new DepthCuedRules(panel, files, trace, null), OnLit.IGNORE, SimpClient::neverLit);
     }
 
     /** A client that draws by the lit rules from its first command: fragments through {@code fragments}. */
-    public static SimpClient lit(FragmentStage fragments, ObjLibrary models, simpview.stage.PrimitiveTrace trace) {
+    public static SimpClient lit(FragmentStage fragments, ObjLibrary models, PrimitiveTrace trace) {
         FileStack files = new FileStack();
         return new SimpClient(files, new LitRules(fragments, models, files, trace, null), OnLit.TURN_LIT,
                 SimpClient::neverLit);

@@ -1,5 +1,6 @@
 package simpview.window.instruments;
 
+import simpview.pages.A1Marks;
 import simpview.pages.A1Pixel;
 import simpview.window.render.View;
 
@@ -128,7 +129,7 @@ public final class Inspector {
      * image pixel (ix, iy): the line that last wrote it as given and between
      * its rounded ends, or its triangle as given; null elsewhere.
      */
-    public static simpview.pages.A1Marks marksAt(RenderedView view, int ix, int iy) {
+    public static A1Marks marksAt(RenderedView view, int ix, int iy) {
         if (view == null || ix < 0 || iy < 0 || !(view.view() instanceof View.OfAssignment1Page page)) {
             return null;
         }

@@ -1,6 +1,7 @@
 package simpview.window.instruments;
 
 import java.util.List;
+import simpview.compare.HeatMap;
 
 /**
  * What an overlay's colours mean, shown in a box over the page's corner:
@@ -20,8 +21,8 @@ public record Legend(String title, List<Entry> entries) {
     public static Legend heatMap(int tolerance) {
         return new Legend("heat map", List.of(
                 new Entry(0x404040, "identical (ours, dimmed)"),
-                new Entry(simpview.compare.HeatMap.WITHIN, "within " + tolerance + "/255"),
-                new Entry(simpview.compare.HeatMap.SLACK_ONLY, "only 1 px off"),
+                new Entry(HeatMap.WITHIN, "within " + tolerance + "/255"),
+                new Entry(HeatMap.SLACK_ONLY, "only 1 px off"),
                 new Entry(0xC00000, "more (brighter: more)")));
     }
 }
