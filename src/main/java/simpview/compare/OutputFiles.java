@@ -17,8 +17,11 @@ import java.util.concurrent.ThreadLocalRandom;
  * The one place every file simpview writes (pictures, diff images, tables,
  * reports) is written, whole or not at all: into a temporary file beside it,
  * then moved into place. A write that fails half-way (a full disk) leaves the
- * file that was there before as it was, and no temporary behind. Its
- * messages say which file and why, in words a user can act on.
+ * file that was there before as it was, and no temporary behind. A file that
+ * is there and is not a regular one (a FIFO, /dev/null, /dev/stdout) is
+ * written straight into instead, as any program writes it: a file moved over
+ * it would replace it, and its reader would get nothing. Its messages say
+ * which file and why, in words a user can act on.
  */
 public final class OutputFiles {
 
@@ -38,7 +41,8 @@ public final class OutputFiles {
 
     /**
      * Writes {@code content} to {@code file}, making missing parent folders;
-     * the file is replaced only once all of it is written.
+     * the file is replaced only once all of it is written. A FIFO or a
+     * device there is written into instead, never replaced.
      *
      * @throws IOException whose message says which file and why, e.g.
      *     "cannot write out/x.png: permission denied"
@@ -47,6 +51,10 @@ public final class OutputFiles {
         Path target = file.toAbsolutePath();
         if (Files.isDirectory(target)) {
             throw new IOException("cannot write " + file + ": it is a folder");
+        }
+        if (isSpecial(target)) {
+            writeInto(file, target, content);
+            return;
         }
         // A link is followed, as writing through it would: the file it names is replaced, not the link.
         Path place = Files.isSymbolicLink(target) ? target.toRealPath() : target;
@@ -71,6 +79,31 @@ public final class OutputFiles {
         }
     }
 
+    /**
+     * True when {@code target} (a link followed) is there and is no regular
+     * file or folder: a FIFO, a device, a socket. Such a file is a place the
+     * bytes go through, not one they are kept in, so it is written into, not
+     * replaced.
+     */
+    private static boolean isSpecial(Path target) {
+        return Files.exists(target) && !Files.isRegularFile(target) && !Files.isDirectory(target);
+    }
+
+    /**
+     * Writes {@code content} straight into {@code target}, a file that
+     * {@link #isSpecial} says is not one to replace. It is opened for writing
+     * only, as it is: not made (it is there), not truncated (a FIFO or a
+     * device has nothing to cut), nothing made beside it. What it was given
+     * before a failure has gone to its reader, as from any program.
+     */
+    private static void writeInto(Path file, Path target, Content content) throws IOException {
+        try (OutputStream out = Files.newOutputStream(target, StandardOpenOption.WRITE)) {
+            content.writeTo(out);
+        } catch (IOException e) {
+            throw new IOException("cannot write " + file + ": " + reason(e, target), e);
+        }
+    }
+
     /** Writes {@code text} as UTF-8, as {@link #write} writes. */
     public static void writeString(Path file, String text) throws IOException {
         write(file, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
@@ -85,6 +118,10 @@ public final class OutputFiles {
         Path target = file.toAbsolutePath().normalize();
         if (Files.isDirectory(target)) {
             return target + " is a folder";
+        }
+        if (isSpecial(target)) {
+            // written into, not replaced: its folder need not be writable (/dev), the file itself must
+            return Files.isWritable(target) ? null : "permission denied (" + target + ")";
         }
         return target.getParent() == null ? null : folderProblem(target.getParent());
     }

@@ -38,7 +38,7 @@ final class PngCodec {
         TooLarge(long width, long height) {
             super(String.format(java.util.Locale.ROOT, "is %dx%d pixels (%,d), more than simpview reads (%,d pixels at "
                     + "most, as 8192x8192): a page is 750x750 and a window capture about 872x782, so save the picture at "
-                    + "its own size", width, height, (long) width * height, MAX_PIXELS), null, false, false);
+                    + "its own size", width, height, width * height, MAX_PIXELS), null, false, false);
         }
     }
 

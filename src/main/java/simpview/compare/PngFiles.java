@@ -19,7 +19,8 @@ public final class PngFiles {
 
     /**
      * Writes {@code image} to {@code file}, making missing parent folders;
-     * the file is replaced only once the whole picture is written ({@link OutputFiles}).
+     * the file is replaced only once the whole picture is written, and a FIFO
+     * or a device there is written into ({@link OutputFiles}).
      *
      * @throws IOException whose message says which file and why, e.g.
      *     "cannot write out/x.png: permission denied"

@@ -1,21 +1,29 @@
 package simpview.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.surface.PageCanvas;
+import simpview.testing.Fifos;
 
-/** {@code render --scenes}: one picture per scene, and never two scenes' pictures at one path. */
+/**
+ * {@code render --scenes}: one picture per scene, and never two scenes' pictures at one path;
+ * {@code render --out} and {@code --primitives} into a FIFO: its reader gets the file, the FIFO stays.
+ */
 class RenderCommandTest {
 
     @TempDir
@@ -116,6 +124,35 @@ class RenderCommandTest {
         CliRun run = CliRun.of("render", "--help");
         assertTrue(run.out().replaceAll("\\s+", " ").contains("scenes of one name from different folders as "
                 + "FOLDER-NAME.png (course-simp-a3-cube.png)"), run.out());
+    }
+
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aPageWrittenIntoAFifoReachesItsReaderAndTheFifoStays() throws Exception {
+        Path regular = dir.resolve("regular.png");
+        CliRun run = CliRun.of("render", "--assignment", "1", "--page", "2", "--out", regular.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        Path fifo = Fifos.make(dir.resolve("f.png"));
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        run = CliRun.of("render", "--assignment", "1", "--page", "2", "--out", fifo.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+        byte[] got = Fifos.read(read, fifo);
+        assertArrayEquals(Files.readAllBytes(regular), got);
+        assertEquals(List.of("f.png", "regular.png"), names(dir));
+    }
+
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void primitivesWrittenIntoAFifoReachItsReader() throws Exception {
+        CliRun listed = CliRun.of("render", "--assignment", "1", "--page", "1", "--primitives", "-");
+        assertEquals(ExitCode.OK, listed.exitCode(), listed.err());
+        Path fifo = Fifos.make(dir.resolve("lines"));
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        CliRun run = CliRun.of("render", "--assignment", "1", "--page", "1", "--primitives", fifo.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+        assertEquals(listed.out(), new String(Fifos.read(read, fifo), StandardCharsets.UTF_8));
     }
 
     /** The scene as render --scene draws it alone. */

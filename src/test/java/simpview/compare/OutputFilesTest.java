@@ -2,23 +2,33 @@ package simpview.compare;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.testing.Fifos;
 
-/** Every file simpview writes is written whole or not at all: the file before survives a failed write. */
+/**
+ * Every file simpview writes is written whole or not at all: the file before
+ * survives a failed write. A FIFO (or a device) is written into, not replaced.
+ */
 class OutputFilesTest {
 
     @TempDir
@@ -106,5 +116,66 @@ class OutputFilesTest {
         Path written = dir.resolve("written.txt");
         OutputFiles.writeString(written, "x");
         assertEquals(Files.getPosixFilePermissions(direct), Files.getPosixFilePermissions(written));
+    }
+
+    /** A picture, as PngFiles writes it to a regular file: what a FIFO's reader must get, byte for byte. */
+    private static BufferedImage picture() {
+        BufferedImage picture = new BufferedImage(40, 30, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 30; y++) {
+            for (int x = 0; x < 40; x++) {
+                picture.setRGB(x, y, x * 6 << 16 | y * 8 << 8 | (x + y) * 3);
+            }
+        }
+        return picture;
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aFifoIsWrittenIntoAndKeptNotReplaced() throws Exception {
+        Path regular = dir.resolve("regular.png");
+        PngFiles.write(picture(), regular);
+        Path fifo = Fifos.make(dir.resolve("page3.png"));
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        PngFiles.write(picture(), fifo);
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+        byte[] got = Fifos.read(read, fifo);
+        assertFalse(Files.isRegularFile(fifo));
+        assertArrayEquals(Files.readAllBytes(regular), got);
+        assertEquals(List.of("page3.png", "regular.png"), names(), "no temporary beside the FIFO");
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aLinkToAFifoIsWrittenThroughAndBothAreKept() throws Exception {
+        Path fifo = Fifos.make(dir.resolve("pipe"));
+        Path link = dir.resolve("link.csv");
+        try {
+            Files.createSymbolicLink(link, fifo.getFileName());
+        } catch (UnsupportedOperationException | IOException e) {
+            Assumptions.abort("no symbolic links here: " + e.getMessage());
+        }
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        OutputFiles.writeString(link, "page,identical\n1,100\n");
+        assertTrue(Files.isSymbolicLink(link));
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+        assertEquals("page,identical\n1,100\n", new String(Fifos.read(read, fifo), StandardCharsets.UTF_8));
+        assertEquals(List.of("link.csv", "pipe"), names());
+    }
+
+    @Test
+    void aFileThatCannotBeOpenedIsSaidAndKept() throws Exception {
+        Assumptions.assumeFalse(System.getProperty("os.name").startsWith("Windows"),
+                "a Unix socket on Windows is not a file that open() refuses");
+        Path socket = dir.resolve("results.json");
+        try (ServerSocketChannel server = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
+            server.bind(UnixDomainSocketAddress.of(socket));
+            // a socket cannot be opened as a file: the write fails, and says so, rather than replace it
+            IOException failed = assertThrows(IOException.class, () -> OutputFiles.writeString(socket, "{}\n"));
+            assertTrue(failed.getMessage().startsWith("cannot write " + socket + ": "), failed.getMessage());
+            assertFalse(failed.getMessage().contains("Exception"), failed.getMessage());
+            assertFalse(Files.isRegularFile(socket), "the socket was replaced by a file");
+            assertTrue(Files.exists(socket));
+            assertEquals(List.of("results.json"), names());
+        }
     }
 }

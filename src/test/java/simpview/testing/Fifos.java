@@ -1,0 +1,105 @@
+package simpview.testing;
+
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import org.junit.jupiter.api.Assumptions;
+
+/**
+ * Named pipes (FIFOs) for the tests of files simpview writes: a FIFO is the
+ * kind of file that must be written into, never replaced, and the only one a
+ * test may make safely (a device such as /dev/null would be replaced by a
+ * regular file if the code under test were wrong, and this machine's tests
+ * may run as root).
+ */
+public final class Fifos {
+
+    /** How long a reader waits for the bytes; long enough for a slow machine, short enough to fail, not hang. */
+    private static final long SECONDS = 30;
+
+    private Fifos() {
+    }
+
+    /**
+     * A new FIFO at {@code file}, made by mkfifo. The test is skipped, saying
+     * why, where there is none: Windows has no FIFOs in its file system.
+     */
+    public static Path make(Path file) throws IOException, InterruptedException {
+        Assumptions.assumeFalse(System.getProperty("os.name").startsWith("Windows"),
+                "Windows has no FIFOs (mkfifo) in its file system");
+        Process mkfifo;
+        try {
+            mkfifo = new ProcessBuilder("mkfifo", file.toString()).redirectErrorStream(true).start();
+        } catch (IOException e) {
+            Assumptions.abort("no mkfifo here to make a FIFO: " + e.getMessage());
+            throw e;
+        }
+        String said = new String(mkfifo.getInputStream().readAllBytes());
+        Assumptions.assumeTrue(mkfifo.waitFor() == 0, "mkfifo could not make a FIFO: " + said);
+        return file;
+    }
+
+    /**
+     * Everything written into {@code fifo}, read by a thread of its own from
+     * now on until its writer closes it. The thread is a daemon: when the code
+     * under test never opens the FIFO (it replaced it), the reader waits for
+     * ever for a writer, and must not keep the tests' JVM from ending.
+     */
+    public static CompletableFuture<byte[]> readAll(Path fifo) {
+        CompletableFuture<byte[]> bytes = new CompletableFuture<>();
+        Thread reader = new Thread(() -> {
+            try (InputStream in = Files.newInputStream(fifo)) {
+                bytes.complete(in.readAllBytes());
+            } catch (IOException | RuntimeException e) {
+                bytes.completeExceptionally(e);
+            }
+        }, "reader of " + fifo.getFileName());
+        reader.setDaemon(true);
+        reader.start();
+        return bytes;
+    }
+
+    /** What the reader of {@link #readAll} got, or a failure that says it got nothing in time. */
+    public static byte[] read(CompletableFuture<byte[]> bytes, Path fifo) throws InterruptedException {
+        try {
+            return bytes.get(SECONDS, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            return fail("nothing was written into the FIFO " + fifo + " in " + SECONDS + " s; is it still one? "
+                    + isFifo(fifo));
+        } catch (ExecutionException e) {
+            return fail("reading the FIFO " + fifo + " failed", e.getCause());
+        }
+    }
+
+    /** The kind of file a FIFO is, in the bits of a Unix mode that say the kind (S_IFMT). */
+    private static final int FIFO_KIND = 0010000;
+    private static final int KIND_BITS = 0170000;
+
+    /**
+     * True when {@code file} (not followed, if a link) is a FIFO; where the
+     * file system tells no Unix mode, when it is neither a regular file, a
+     * folder nor a link.
+     */
+    public static boolean isFifo(Path file) {
+        try {
+            return ((Integer) Files.getAttribute(file, "unix:mode", LinkOption.NOFOLLOW_LINKS) & KIND_BITS) == FIFO_KIND;
+        } catch (UnsupportedOperationException e) {
+            try {
+                return Files.readAttributes(file, BasicFileAttributes.class, LinkOption.NOFOLLOW_LINKS).isOther();
+            } catch (IOException gone) {
+                return false;
+            }
+        } catch (IOException e) {
+            return false;
+        }
+    }
+}
