@@ -72,15 +72,16 @@ final class SceneHarness {
     private static void checkNotText(SceneException e, String where) throws IOException {
         assertEquals("", e.lineText(), "a binary line is not shown" + where);
         java.util.regex.Matcher m = java.util.regex.Pattern
-                .compile("^not a text file: byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)").matcher(e.problem());
+                .compile("^not (?:a text file|UTF-8 text): byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)")
+                .matcher(e.problem());
         assertTrue(m.find(), "the byte, its offset and its line" + where);
         byte[] bytes = Files.readAllBytes(e.file());
         int offset = Integer.parseInt(m.group(2));
         assertTrue(offset < bytes.length, "an offset within the file" + where);
         int v = bytes[offset] & 0xFF;
         assertEquals(Integer.parseInt(m.group(1), 16), v, "the byte named is the byte at that offset" + where);
-        assertTrue(v < 0x20 && v != '\t' && v != '\r' && v != '\n' && v != '\f' || v == 0x7F,
-                "a byte no text holds" + where);
+        assertTrue(v < 0x20 && v != '\t' && v != '\r' && v != '\n' && v != '\f' || v >= 0x7F,
+                "a byte no UTF-8 text holds" + where);
         int line = 1;
         for (int i = 0; i < offset; i++) {
             line += bytes[i] == '\n' ? 1 : 0;
@@ -112,7 +113,7 @@ final class SceneHarness {
         String raw = lines[e.line() - 1];
         String stripped = raw.endsWith("\r") ? raw.substring(0, raw.length() - 1) : raw;
         String shown = e.lineText();
-        if (e.problem().startsWith("not a text file: ")) {
+        if (e.problem().startsWith("not a text file: ") || e.problem().startsWith("not UTF-8 text: ")) {
             checkNotText(e, where);
             return;
         }

@@ -38,8 +38,6 @@ final class ObjParser {
     private static final ObjSink NOWHERE = face -> { };
     /** What an .obj file is, for {@link NotText}'s messages. */
     private static final String KIND = "an .obj file";
-    /** How many of a file's first bytes are looked at to tell whether it is text. */
-    private static final int HEAD = 4096;
     /** More digits than this name nothing (an array holds fewer than 10^10 elements). */
     private static final int MOST_INDEX_DIGITS = 12;
 
@@ -124,9 +122,8 @@ final class ObjParser {
 
     /**
      * Reads every line, handing each face to the sink; closes the file. A
-     * file that gave no face is looked at again: UTF-16 text or a file that
-     * is no text at all is an error ({@link NotText}), anything else a
-     * warning.
+     * line holding a byte that no UTF-8 text holds is an error
+     * ({@link NotText}); a file that gave no face, a warning.
      */
     ObjCounts run(ObjSink sink) throws SceneException {
         try {
@@ -142,18 +139,16 @@ final class ObjParser {
         } catch (LineSource.LineTooLongException e) {
             throw new SceneException(file(), source.lineNumber() + 1, 0, "",
                     "a line is longer than " + LineSource.MAX_LINE + " bytes");
+        } catch (LineSource.NotTextException e) {
+            // a picture or a program renamed .obj, or text saved as UTF-16 or Latin-1: none of its bytes is shown
+            NotText found = e.notText(KIND);
+            throw new SceneException(file(), found.line(), 0, "", found.problem());
         } catch (IOException e) {
             throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + FileProblem.of(file(), e));
         } catch (OutOfMemoryError e) {
             throw outOfMemory();
         } finally {
             close();
-        }
-        if (faceCount == 0) {
-            SceneException notText = headNotText();
-            if (notText != null) {
-                throw notText;
-            }
         }
         return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour,
                 warnings());
@@ -214,18 +209,6 @@ final class ObjParser {
 
     private static String count(int n, String what) {
         return n + " " + what + (n == 1 ? "" : "s");
-    }
-
-    /** The error when the file's first bytes are not text ({@link NotText}); null when they could be, or cannot be read. */
-    private SceneException headNotText() {
-        byte[] head;
-        try {
-            head = source.head(HEAD);
-        } catch (IOException e) {
-            return null; // the file went away: what was read stands
-        }
-        NotText found = NotText.find(head, 0, head.length, 0, 1, KIND);
-        return found == null ? null : new SceneException(file(), found.line(), 0, "", found.problem());
     }
 
     /**
@@ -594,19 +577,10 @@ final class ObjParser {
     }
 
     /**
-     * An error at byte index i of the current line; or, when that line or the
-     * file's first bytes are not text, that ({@link NotText}): the line of a
-     * picture or a program renamed .obj is not shown.
+     * An error at byte index i of the current line (a line of UTF-8 text: a
+     * file that is not is stopped as its line is read, {@link NotText}).
      */
     private SceneException error(int i, String problem) {
-        NotText line = NotText.find(b, lineStart, end, source.lineOffset(), source.lineNumber(), KIND);
-        if (line != null) {
-            return new SceneException(file(), line.line(), 0, "", line.problem());
-        }
-        SceneException head = headNotText();
-        if (head != null) {
-            return head;
-        }
         return new SceneException(file(), source.lineNumber(), column(i), text(lineStart, end),
                 problem + source.lineEndHint());
     }

@@ -170,6 +170,10 @@ public final class SimpReader implements AutoCloseable {
         } catch (LineSource.LineTooLongException e) {
             throw new SceneException(file(), source.lineNumber() + 1, 0, "", "line is too long (over "
                     + LineSource.MAX_LINE + " bytes)");
+        } catch (LineSource.NotTextException e) {
+            // a program or a picture renamed .simp, or text saved as UTF-16 or Latin-1: none of its bytes is shown
+            NotText found = e.notText("a SIMP file");
+            throw new SceneException(file(), found.line(), 0, "", found.problem());
         } catch (IOException e) {
             throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + FileProblem.of(file(), e));
         }
@@ -206,20 +210,6 @@ public final class SimpReader implements AutoCloseable {
     }
 
     // ---- parsing one line ------------------------------------------------------------------
-
-    /**
-     * The error to give when the current line holds a byte no text file holds
-     * (a control character other than tab, carriage return and form feed):
-     * a program or a picture renamed .simp: the error then says so instead,
-     * and shows none of its bytes, only where the first such byte is; and
-     * when the first line shows UTF-16 text, that ({@link NotText}). Asked
-     * only once a line failed to parse, so it costs a real scene nothing.
-     */
-    private SceneException notText() {
-        NotText found = NotText.find(b, source.lineStart(), end, source.lineOffset(), source.lineNumber(),
-                "a SIMP file");
-        return found == null ? null : new SceneException(file(), found.line(), 0, "", found.problem());
-    }
 
     private void parse(int start, Command c) throws SceneException {
         c.commandIndex = start;
@@ -475,10 +465,6 @@ public final class SimpReader implements AutoCloseable {
 
     /** An error at byte index i of the current line. */
     SceneException error(int i, String problem) {
-        SceneException binary = notText();
-        if (binary != null) {
-            return binary;
-        }
         int column = text(source.lineStart(), Math.min(i, end)).length() + 1;
         return new SceneException(file(), source.lineNumber(), column, lineText(), problem + source.lineEndHint());
     }

@@ -33,6 +33,9 @@ public final class LineSource {
     private static final long NEWLINES = 0x0A0A0A0A0A0A0A0AL;
     private static final long ONES = 0x0101010101010101L;
     private static final long HIGH_BITS = 0x8080808080808080L;
+    private static final long SPACES = 0x2020202020202020L;
+    /** How many of a file's first bytes a {@link NotText} message looks at, for what the file is. */
+    private static final int HEAD = 4096;
     /** Longer lines are refused: a line must fit in memory, and no real scene comes close. */
     public static final int MAX_LINE = 1 << 20;
 
@@ -53,6 +56,8 @@ public final class LineSource {
     int lineStart;
     int lineEnd;
     int lineNumber;
+    /** Where in buf the line just scanned holds its first byte that is not UTF-8 text; -1 when it holds none. */
+    private int notTextAt;
 
     private LineSource(Path path) {
         this.path = path;
@@ -158,22 +163,119 @@ public final class LineSource {
             resume();
         }
         while (true) {
-            int i = indexOfNewline(buf, pos, limit);
+            int i = scanLine(pos, limit);
             if (i >= 0) {
                 setLine(pos, i);
                 pos = i + 1;
-                return true;
+                return textLine();
             }
             if (eof) {
                 if (pos < limit) {
                     setLine(pos, limit);
                     pos = limit;
-                    return true;
+                    return textLine();
                 }
                 return false;
             }
             fill();
         }
+    }
+
+    /**
+     * True, when the line just set holds only UTF-8 text; else the error
+     * that the file is not text, naming its first such byte. A byte is
+     * looked at once, as the line break is looked for, so this costs a
+     * scene of text nothing worth measuring.
+     */
+    private boolean textLine() throws IOException {
+        if (notTextAt < 0) {
+            return true;
+        }
+        throw new NotTextException(head(HEAD), bufferOffset + notTextAt, lineNumber, buf[notTextAt] & 0xFF);
+    }
+
+    /**
+     * The index of the first '\n' in buf[from, to), or -1, noting in
+     * {@link #notTextAt} the first byte before it that no UTF-8 text holds:
+     * a control character other than tab, carriage return and form feed, or
+     * a byte that starts or continues no UTF-8 character. Eight bytes at a
+     * time, as {@link #indexOfNewline}: a long is looked at byte by byte only
+     * when it holds a byte below 0x20 (the line break among them) or from
+     * 0x7F up. Per long: (x - SPACES) &amp; ~x sets the high bit of the first
+     * byte below 0x20, (x + ONES) | x that of the first from 0x7F up (later
+     * bytes may get false ones, the first is exact).
+     */
+    private int scanLine(int from, int to) {
+        notTextAt = -1;
+        byte[] b = buf;
+        int i = from;
+        while (i < to) {
+            if (i + Long.BYTES <= to) {
+                long x = (long) LONGS.get(b, i);
+                long unusual = ((x - SPACES) & ~x | (x + ONES) | x) & HIGH_BITS;
+                if (unusual == 0) {
+                    i += Long.BYTES;
+                    continue;
+                }
+                i += Long.numberOfTrailingZeros(unusual) >>> 3;
+            }
+            int c = b[i] & 0xFF;
+            if (c == '\n') {
+                return i;
+            }
+            if (c < 0x80) {
+                if ((c < 0x20 && c != '\t' && c != '\r' && c != '\f' || c == 0x7F) && notTextAt < 0) {
+                    notTextAt = i;
+                }
+                i++;
+                continue;
+            }
+            int n = utf8Length(b, i, to);
+            if (n < 0 && !eof) {
+                return -1; // a character cut by the end of the buffer: looked at again once more is read
+            }
+            if (n <= 0 && notTextAt < 0) {
+                notTextAt = i;
+            }
+            i += Math.max(n, 1);
+        }
+        return -1;
+    }
+
+    /**
+     * The length of the UTF-8 character starting at b[i] (a byte from 0x80
+     * up), 2 to 4; 0 when no character of UTF-8 starts so (a continuation
+     * byte, an overlong form, a surrogate, beyond U+10FFFF); -1 when its
+     * bytes so far are right but b[to] cuts it.
+     */
+    private static int utf8Length(byte[] b, int i, int to) {
+        int c = b[i] & 0xFF;
+        int n;
+        int low = 0x80;
+        int high = 0xBF;
+        if (c >= 0xC2 && c <= 0xDF) {
+            n = 2;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            n = 3;
+            low = c == 0xE0 ? 0xA0 : 0x80; // E0 80..9F would be overlong
+            high = c == 0xED ? 0x9F : 0xBF; // ED A0..BF would be a surrogate
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            n = 4;
+            low = c == 0xF0 ? 0x90 : 0x80; // overlong
+            high = c == 0xF4 ? 0x8F : 0xBF; // beyond U+10FFFF
+        } else {
+            return 0;
+        }
+        for (int k = 1; k < n; k++) {
+            if (i + k >= to) {
+                return -1;
+            }
+            int next = b[i + k] & 0xFF;
+            if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) {
+                return 0;
+            }
+        }
+        return n;
     }
 
     /**
@@ -295,6 +397,34 @@ public final class LineSource {
             FileChannel c = channel;
             channel = null;
             c.close();
+        }
+    }
+
+    /**
+     * A byte that no UTF-8 text holds, on the line just read; the reader
+     * turns it into a SceneException in {@link NotText}'s words, which
+     * shows none of the file's bytes.
+     */
+    public static final class NotTextException extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        /** The file's first bytes, for what the file looks like. */
+        private final byte[] head;
+        private final long offset;
+        private final int line;
+        private final int value;
+
+        NotTextException(byte[] head, long offset, int line, int value) {
+            super(String.format("byte 0x%02X at offset %d is not UTF-8 text", value, offset));
+            this.head = head;
+            this.offset = offset;
+            this.line = line;
+            this.value = value;
+        }
+
+        /** The problem in words, {@code kind} saying what the file should be ("a SIMP file", "an .obj file"). */
+        public NotText notText(String kind) {
+            return NotText.of(head, offset, line, value, kind);
         }
     }
 

@@ -2,11 +2,12 @@ package simpview.scene.text;
 
 /**
  * What a file that is not lines of UTF-8 text is, for a reader's message:
- * UTF-16 text (what Windows Notepad saves as "Unicode") or UTF-32, or no text at all
- * (a picture or a program renamed), named by its first byte that no text
- * holds and, when its first bytes say so, by what it looks like. A reader
- * asks only once a file failed to read or gave nothing, so a good file
- * costs nothing.
+ * UTF-16 text (what Windows Notepad saves as "Unicode") or UTF-32, text in
+ * another encoding (Latin-1), or no text at all (a picture or a program
+ * renamed), named by its first byte that no UTF-8 text holds and, when its
+ * bytes say so, by what it looks like. The SIMP and .obj readers both meet
+ * that byte as {@link LineSource} reads the lines, so a scene and a model
+ * are checked alike, every line of them, comments included.
  *
  * @param line the line the problem is on (1 for UTF-16 and UTF-32: the whole file)
  * @param problem the words: what the file is, and what was expected
@@ -16,6 +17,10 @@ public record NotText(int line, String problem) {
     /** The first bytes of a kind of file that is not text, and what such a file is. */
     private record Look(int[] start, String what) {
     }
+
+    /** What a file of text in another encoding is told to do. */
+    private static final String SAVE_AS_UTF8 = "; %s is read as UTF-8: save it as UTF-8 (in Notepad: Save As,"
+            + " Encoding UTF-8)";
 
     private static final Look[] LOOKS = {
         new Look(new int[] {0x89, 'P', 'N', 'G'}, "a PNG picture"),
@@ -29,36 +34,39 @@ public record NotText(int line, String problem) {
     };
 
     /**
-     * The problem with the bytes b[from, to), which stand at {@code offset}
-     * in the file and start on line {@code line}; null when they could be
-     * lines of text. At offset 0 the first bytes are also looked at: UTF-16
-     * or UTF-32 text, or the start of a known kind of file.
+     * The problem with a file whose byte at {@code offset}, on line
+     * {@code line}, is {@code value}, the first that no UTF-8 text holds
+     * ({@link LineSource} finds it as it reads): UTF-16 or UTF-32 text, when
+     * the file's first bytes ({@code head}) show it; else that byte, and what
+     * the file looks like: a known kind of file by its first bytes, or text
+     * saved in Latin-1 or Windows-1252 when the byte is a letter there.
      *
      * @param kind what the file should be, "a SIMP file" or "an .obj file"
      */
-    public static NotText find(byte[] b, int from, int to, long offset, int line, String kind) {
-        if (offset == 0) {
-            String utf32 = utf32(b, from, to);
-            String utf16 = utf32 == null ? utf16(b, from, to) : null;
-            if (utf32 != null || utf16 != null) {
-                return new NotText(1, (utf32 != null ? "UTF-32 text, not UTF-8: " + utf32
-                        : "UTF-16 text, not UTF-8: " + utf16) + "; " + kind
-                        + " is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)");
-            }
+    public static NotText of(byte[] head, long offset, int line, int value, String kind) {
+        String utf32 = utf32(head, 0, head.length);
+        String utf16 = utf32 == null ? utf16(head, 0, head.length) : null;
+        if (utf32 != null || utf16 != null) {
+            return new NotText(1, (utf32 != null ? "UTF-32 text, not UTF-8: " + utf32
+                    : "UTF-16 text, not UTF-8: " + utf16) + SAVE_AS_UTF8.formatted(kind));
         }
-        int at = line;
-        for (int i = from; i < to; i++) {
-            int v = b[i] & 0xFF;
-            if (v == '\n') {
-                at++;
-            } else if (v < 0x20 && v != '\t' && v != '\r' && v != '\f' || v == 0x7F) {
-                String looks = offset == 0 ? looksLike(b, from, to) : null;
-                return new NotText(at, String.format("not a text file: byte 0x%02X at offset %d (line %d)", v,
-                        offset + (i - from), at) + (looks == null ? "" : "; it looks like " + looks) + "; " + kind
-                        + " is lines of text");
-            }
+        String byteAt = String.format("byte 0x%02X at offset %d (line %d)", value, offset, line);
+        String looks = looksLike(head, 0, head.length);
+        if (looks != null || value < 0x80) {
+            return new NotText(line, "not a text file: " + byteAt + (looks == null ? "" : "; it looks like " + looks)
+                    + "; " + kind + " is lines of text");
         }
-        return null;
+        String latin = latin1(value);
+        return new NotText(line, "not UTF-8 text: " + byteAt + " starts or continues no UTF-8 character"
+                + (latin == null ? "" : "; it looks like text saved as Latin-1 or Windows-1252, where that byte is '"
+                + latin + "'") + SAVE_AS_UTF8.formatted(kind));
+    }
+
+    /** The character byte {@code value} (0x80 up) is in Windows-1252 (Latin-1's superset), when it is a letter or sign; else null. */
+    private static String latin1(int value) {
+        String c = new String(new byte[] {(byte) value}, java.nio.charset.Charset.forName("windows-1252"));
+        return c.length() == 1 && c.charAt(0) != '\uFFFD' && !Character.isISOControl(c.charAt(0))
+                && !Character.isSpaceChar(c.charAt(0)) ? c : null;
     }
 
     /**

@@ -2,6 +2,7 @@ package simpview.scene.obj;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.charset.Charset;
@@ -80,14 +81,14 @@ class ObjNotTextTest {
         assertEquals(1, fails(MODEL, be).line());
     }
 
-    /** A picture renamed .obj: its first byte that no text holds, placed, and what its first bytes say it is. */
+    /** A picture renamed .obj: its first byte that no UTF-8 text holds, placed, and what its first bytes say it is. */
     @Test
     void aPictureRenamedObjIsNamed() throws IOException {
         byte[] png = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
         SceneException e = fails(png);
-        assertEquals("not a text file: byte 0x1A at offset 6 (line 2); it looks like a PNG picture; an .obj file is"
+        assertEquals("not a text file: byte 0x89 at offset 0 (line 1); it looks like a PNG picture; an .obj file is"
                 + " lines of text", e.problem());
-        assertEquals(2, e.line());
+        assertEquals(1, e.line());
         assertEquals("not a text file: byte 0x00 at offset 4 (line 1); an .obj file is lines of text",
                 fails(new byte[] {'a', 'b', 'c', 'd', 0, 1, 2}).problem());
     }
@@ -100,6 +101,20 @@ class ObjNotTextTest {
         byte[] elf = "\u007FELF\u0002\nf 1 2 3\n".getBytes(StandardCharsets.US_ASCII);
         assertEquals("not a text file: byte 0x7F at offset 0 (line 1); it looks like a program (ELF); an .obj file is"
                 + " lines of text", fails(elf).problem());
+    }
+
+    /** Latin-1 in a comment of a model that draws is not UTF-8 text either (docs/simp.md), as in a scene. */
+    @Test
+    void latin1InACommentIsNotUtf8() throws IOException {
+        SceneException e = fails(("v 0 0 0\nv 1 0 0\nv 0 1 0\n# caf\u00e9\nf 1 2 3\n").getBytes(StandardCharsets.ISO_8859_1));
+        assertEquals("not UTF-8 text: byte 0xE9 at offset 29 (line 4) starts or continues no UTF-8 character; it looks"
+                + " like text saved as Latin-1 or Windows-1252, where that byte is '\u00e9'" + SAVE_AS_UTF8, e.problem());
+        assertEquals(4, e.line());
+        // a continuation byte alone, an overlong '/', a surrogate and a cut character are no UTF-8 either
+        for (byte[] bad : new byte[][] {{'#', (byte) 0x80}, {'#', (byte) 0xC0, (byte) 0xAF}, {'#', (byte) 0xED,
+                (byte) 0xA0, (byte) 0x80}, {'#', (byte) 0xE2, (byte) 0x88}}) {
+            assertTrue(fails(bad).problem().startsWith("not UTF-8 text: byte 0x"), fails(bad).problem());
+        }
     }
 
     @Test

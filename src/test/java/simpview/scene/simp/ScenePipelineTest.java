@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.raster.FragmentSink;
 import simpview.scene.SceneException;
+import simpview.scene.text.LineSource;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.surface.Drawable;
@@ -271,6 +272,58 @@ class ScenePipelineTest {
         SceneException e = assertThrows(SceneException.class,
                 () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
         assertEquals("not a text file: byte 0x01 at offset 40 (line 3); a SIMP file is lines of text", e.problem());
+    }
+
+    /**
+     * A picture renamed .simp starts with a byte that is no UTF-8 (0x89): it
+     * is named with what the file looks like, as an .obj model's is, at the
+     * top of a scene and included alike, and none of its bytes is shown.
+     */
+    @Test
+    void aPictureRenamedSimpIsNamedAtTheTopAndIncluded() throws Exception {
+        byte[] png = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+        Path picture = Files.write(dir.resolve("picture.simp"), png);
+        String problem = "not a text file: byte 0x89 at offset 0 (line 1); it looks like a PNG picture; a SIMP file is"
+                + " lines of text";
+        SceneException top = assertThrows(SceneException.class,
+                () -> draw(picture, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals(problem, top.problem());
+        assertEquals("", top.lineText());
+        SceneException included = assertThrows(SceneException.class,
+                () -> draw(write("page.simp", "wire", "file picture"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals(problem, included.problem());
+        assertEquals("page.simp:2", included.includedFrom());
+    }
+
+    /**
+     * A scene saved as Latin-1 is not UTF-8 text, wherever its first such
+     * byte stands: in a comment too (docs/simp.md), named with what it
+     * would be in Latin-1, and no byte of the line shown.
+     */
+    @Test
+    void latin1TextIsNotUtf8EvenInAComment() throws Exception {
+        String saveAs = "; a SIMP file is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)";
+        Path comment = Files.write(dir.resolve("comment.simp"), "wire\n# caf\u00e9\nline (0 0 0) (1 1 1)\n"
+                .getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(comment, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals("not UTF-8 text: byte 0xE9 at offset 10 (line 2) starts or continues no UTF-8 character; it looks"
+                + " like text saved as Latin-1 or Windows-1252, where that byte is '\u00e9'" + saveAs, e.problem());
+        assertEquals(2, e.line());
+        assertEquals("", e.lineText());
+        Path command = Files.write(dir.resolve("command.simp"), new byte[] {(byte) 0xE9, ' ', '1', '\n'});
+        assertEquals("not UTF-8 text: byte 0xE9 at offset 0 (line 1) starts or continues no UTF-8 character; it looks"
+                + " like text saved as Latin-1 or Windows-1252, where that byte is '\u00e9'" + saveAs,
+                assertThrows(SceneException.class,
+                        () -> draw(command, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS)).problem());
+        // UTF-8's own letters, and a mark cut by nothing but the end of a 64 KB read, are text
+        StringBuilder text = new StringBuilder("# caf\u00e9 \u2014 \uD83D\uDE00\n");
+        while (text.length() < 3 * LineSource.CHUNK) {
+            text.append("# \u00e9\u00e9\u00e9 \u2212\u2212 \uD83D\uDE00\n");
+        }
+        text.append("line (0 0 -1) (1 1 -1)\n");
+        Path good = Files.writeString(dir.resolve("good.simp"), text);
+        draw(good, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
     }
 
     @Test
