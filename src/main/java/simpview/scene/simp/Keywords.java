@@ -42,16 +42,46 @@ final class Keywords {
         return null;
     }
 
-    /** " (did you mean 'polygon'? commands are case-sensitive)" for a near miss of a command word, else "". */
+    /**
+     * " (did you mean 'polygon'? commands are case-sensitive)" for a near
+     * miss of a command word, else "". A word is near when it differs only
+     * in case, or by at most one edit in three of its letters (and not in
+     * all of them): 'scal' is near 'scale', 'v' or 'x' near nothing. The
+     * only commands of one character are the brackets, so a one-character
+     * word is near '{' or '}' only when it is another bracket.
+     */
     static String suggestion(String word) {
-        java.util.List<String> spellings = new java.util.ArrayList<>();
-        for (Kind k : Kind.values()) {
-            spellings.add(k.spelling);
+        String near = word.length() == 1 ? bracket(word.charAt(0)) : nearestWord(word);
+        return near == null ? "" : " (did you mean '" + near + "'?"
+                + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")");
+    }
+
+    /** '{' for an opening bracket other than it, '}' for a closing one; else null. */
+    private static String bracket(char c) {
+        return "([<\uFF08\uFF3B".indexOf(c) >= 0 ? "{" : ")]>\uFF09\uFF3D".indexOf(c) >= 0 ? "}" : null;
+    }
+
+    /** The command word near {@code word} (two characters or more), or null. */
+    private static String nearestWord(String word) {
+        String best = null;
+        int bestDistance = Integer.MAX_VALUE;
+        for (Kind k : KINDS) {
+            int d = k.spelling.equalsIgnoreCase(word) ? 0 : Nearest.distance(word, k.spelling);
+            if (d < bestDistance) {
+                best = k.spelling;
+                bestDistance = d;
+            }
         }
-        return Nearest.to(word, spellings)
-                .map(near -> " (did you mean '" + near + "'?"
-                        + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")"))
-                .orElse("");
+        int allowed = Math.min(Math.max(1, word.length() / 3), word.length() - 1);
+        return bestDistance <= allowed ? best : null;
+    }
+
+    /**
+     * Whether {@code word} is one an .obj model's lines start with ('v',
+     * 'vn', 'vt', 'f'), for the error of a model read as a scene.
+     */
+    static boolean startsModelLine(String word) {
+        return word.equals("v") || word.equals("vn") || word.equals("vt") || word.equals("f");
     }
 
     /** Every command's spelling, for "expected ..." messages: "{, }, scale, ..., phong". */

@@ -44,6 +44,8 @@ public final class SimpReader implements AutoCloseable {
     private byte[] b;
     private int end;
     private long linesRead;
+    /** Whether a command of this file was read: a file whose first command is 'v' or 'f' is an .obj model. */
+    private boolean commandRead;
 
     private SimpReader(LineSource source) {
         this.source = source;
@@ -138,6 +140,7 @@ public final class SimpReader implements AutoCloseable {
             int i = skipBlanks(source.lineStart());
             if (i < end && b[i] != '#') {
                 parse(i, into);
+                commandRead = true;
                 if (recording != null) {
                     recording.add(into, source.lineNumber(), source.lineStart(), end);
                 }
@@ -228,7 +231,8 @@ public final class SimpReader implements AutoCloseable {
         Kind kind = Keywords.kind(b, start, wordEnd);
         if (kind == null) {
             String word = wordEnd > start ? text(start, wordEnd) : token(start);
-            throw error(start, "unknown command '" + word + "'" + Keywords.suggestion(word) + "; expected " + Keywords.all());
+            throw error(start, "unknown command '" + word + "'" + (readsAModel(word) ? modelHint()
+                    : Keywords.suggestion(word) + "; expected " + Keywords.all()));
         }
         c.kind = kind;
         // An expression, so that a new Shape does not build until it is read here.
@@ -398,6 +402,27 @@ public final class SimpReader implements AutoCloseable {
     }
 
     // ---- messages ----------------------------------------------------------------------------
+
+    /**
+     * Whether the unknown command {@code word} shows this file to be an .obj
+     * model given where a scene is wanted (render --scene t1.obj): the file
+     * is named .obj, or its first command is one a model's lines start with.
+     */
+    private boolean readsAModel(String word) {
+        return file().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj")
+                || !commandRead && Keywords.startsModelLine(word);
+    }
+
+    /** What to do with a model read as a scene: draw it from a scene's obj line, in a lit scene. */
+    private String modelHint() {
+        String name = file().getFileName().toString();
+        boolean obj = name.toLowerCase(java.util.Locale.ROOT).endsWith(".obj");
+        String stem = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+        return (obj ? ": " + name + " is an .obj model, not a scene" : ": this file holds an .obj model's lines, not a"
+                + " scene's (save it as " + stem + ".obj)") + "; a model is drawn from a scene file, a .simp file"
+                + " holding the line obj \"" + stem + "\" after the camera, light and surface lines a lit scene needs"
+                + " (docs/simp.md, Lit scenes)";
+    }
 
     private static String wrongCount(Kind kind, int found) {
         String got = found == 0 ? "none" : found + (found == 1 ? " number" : " numbers");

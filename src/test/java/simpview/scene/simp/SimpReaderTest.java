@@ -225,6 +225,45 @@ class SimpReaderTest {
                 + "polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
+    /**
+     * A name is suggested only when it is plausibly what was meant: a short
+     * word is near no command, and '{' or '}' are suggested only for another
+     * bracket.
+     */
+    @Test
+    void aSuggestionIsMadeOnlyForAPlausibleMiss() {
+        String expected = "; expected {, }, scale, translate, rotate, line, polygon, file, wire, filled, camera, obj, "
+                + "ambient, surface, depth, light, flat, gouraud or phong";
+        assertError("wire\nx 1", 2, 1, "unknown command 'x'" + expected);
+        assertError("wire\n, 1", 2, 1, "unknown command ','" + expected);
+        assertError("wire\nl 1", 2, 1, "unknown command 'l'" + expected);
+        assertError("wire\nab", 2, 1, "unknown command 'ab'" + expected);
+        assertError("wire\n[", 2, 1, "unknown command '[' (did you mean '{'?)" + expected);
+        assertError("wire\n)", 2, 1, "unknown command ')' (did you mean '}'?)" + expected);
+        assertError("wire\nob \"m\"", 2, 1, "unknown command 'ob' (did you mean 'obj'?)" + expected);
+        assertError("wire\nfiel \"m\"", 2, 1, "unknown command 'fiel' (did you mean 'file'?)" + expected);
+    }
+
+    /** A model given where a scene is wanted (render --scene t1.obj) is told how a model is drawn. */
+    @Test
+    void aModelReadAsASceneIsToldHowAModelIsDrawn() {
+        SceneException e = assertThrows(SceneException.class, () -> {
+            SimpReader r = SimpReader.of(Path.of("t1.obj"), "# a triangle\nv 0 0 0\nv 1 0 0\n".getBytes(StandardCharsets.UTF_8));
+            while (r.next(new Command())) {
+                // read to the error
+            }
+        });
+        assertEquals("unknown command 'v': t1.obj is an .obj model, not a scene; a model is drawn from a scene file, a"
+                + " .simp file holding the line obj \"t1\" after the camera, light and surface lines a lit scene needs"
+                + " (docs/simp.md, Lit scenes)", e.problem());
+        assertEquals(2, e.line());
+        assertError("f 1 2 3", 1, 1, "unknown command 'f': this file holds an .obj model's lines, not a scene's (save it"
+                + " as scene.obj); a model is drawn from a scene file, a .simp file holding the line obj \"scene\" after"
+                + " the camera, light and surface lines a lit scene needs (docs/simp.md, Lit scenes)");
+        // after a command of a scene, 'v' is a mistake in the scene
+        assertTrue(error("wire\nv 1").problem().startsWith("unknown command 'v'; expected {"));
+    }
+
     @Test
     void linesEndingInACarriageReturnAloneAreNamedSo() {
         SceneException e = error("scale 1 2 3\rwire\r");
