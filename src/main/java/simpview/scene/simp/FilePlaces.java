@@ -5,6 +5,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import simpview.scene.text.CopiedText;
 
 /**
  * The two places a name given to {@code file} or {@code obj} is looked for,
@@ -56,7 +57,8 @@ record FilePlaces(String fileName, Path here, Path working) {
      * beside the including file or else in the working directory: "(there is
      * Teapot.obj: names are case-sensitive here)"; a backslash, which is part
      * of a name here, not a folder separator (one or a doubled one, as a C
-     * string writes it). Looked for only once the name
+     * string writes it); curly quotes, as a name copied from a PDF has them
+     * (obj “filename” in the handouts). Looked for only once the name
      * was not found, so a scene that finds its files costs nothing more.
      */
     String nearMisses(String name) {
@@ -69,6 +71,11 @@ record FilePlaces(String fileName, Path here, Path working) {
         }
         if (shown != null) {
             hints.append(" (there is ").append(shown).append(": names are case-sensitive here)");
+        }
+        if (CopiedText.hasCurlyQuote(name)) {
+            String plain = name.replaceAll("[\u201C\u201D\u201E\u2018\u2019]", "");
+            hints.append(" (the name").append(CopiedText.hint(name, "")).append(": write ")
+                    .append(fileName.endsWith(".obj") ? "obj" : "file").append(" \"").append(plain).append("\")");
         }
         if (name.indexOf('\\') >= 0) {
             hints.append(" (a backslash is part of a name here: write \"").append(name.replaceAll("\\\\+", "/"))

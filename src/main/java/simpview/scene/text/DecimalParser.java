@@ -143,17 +143,6 @@ public final class DecimalParser {
      * copied from a PDF or a word processor looks right and is not; else "".
      */
     public static String nonAsciiHint(String token) {
-        for (int k = 0; k < token.length(); ) {
-            int cp = token.codePointAt(k);
-            if (cp > 0x7F) {
-                String name = Character.getName(cp);
-                return ", whose '" + new String(Character.toChars(cp)) + "' is U+" + String.format("%04X", cp)
-                        + (name == null ? "" : " " + name) + ", not ASCII: a number is written with the ASCII digits,"
-                        + " '-', '+', '.' and 'e' (text copied from a PDF or a word processor often looks right and"
-                        + " is not)";
-            }
-            k += Character.charCount(cp);
-        }
-        return "";
+        return CopiedText.hint(token, "a number is written with the ASCII digits, '-', '+', '.' and 'e'");
     }
 }

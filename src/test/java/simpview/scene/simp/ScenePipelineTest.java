@@ -326,6 +326,27 @@ class ScenePipelineTest {
         draw(good, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
     }
 
+    /**
+     * The A3 handout prints obj “filename”: a name copied with its curly
+     * quotes names nothing, and is told so as other characters copied from
+     * a PDF are, with the line to write instead.
+     */
+    @Test
+    void curlyQuotesCopiedFromAPdfAreNamed() throws Exception {
+        write("tri.simp", "polygon (0 0 -1) (50 0 -1) (0 50 -1)");
+        SceneException e = assertThrows(SceneException.class, () -> draw(write("page.simp", "file \u201Ctri\u201D"),
+                new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(e.problem().startsWith("file not found: \u201Ctri\u201D.simp (the name, whose '\u201C' is U+201C LEFT"
+                + " DOUBLE QUOTATION MARK, not ASCII: a name is quoted with the ASCII '\"' (text copied from a PDF or a"
+                + " word processor often looks right and is not): write file \"tri\"); looked for "), e.problem());
+        Files.writeString(dir.resolve("tri.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+        SceneException model = assertThrows(SceneException.class, () -> draw(write("lit.simp", "ambient 1 1 1",
+                "obj \u2018tri\u2019"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(model.problem().contains("whose '\u2018' is U+2018 LEFT SINGLE QUOTATION MARK, not ASCII: a name is"
+                + " quoted with the ASCII '\"'"), model.problem());
+        assertTrue(model.problem().contains(": write obj \"tri\")"), model.problem());
+    }
+
     @Test
     void anObjNamingAFolderSaysSoInWords() throws Exception {
         Files.createDirectory(dir.resolve("models.obj"));
