@@ -29,8 +29,9 @@ public final class SceneException extends Exception {
      * @param problem what is wrong and what was expected, e.g. "expected a number, found 'x'"
      */
     public SceneException(Path file, int line, int column, String lineText, String problem) {
-        // a carriage return inside a line (a file of CR line ends) quoted in the problem would move a terminal's cursor
-        this(file, line, column, lineText, problem.replace('\r', ' '), null);
+        // a carriage return inside a line (a file of CR line ends) or a form feed quoted in the problem would move a
+        // terminal's cursor
+        this(file, line, column, lineText, problem.replace('\r', ' ').replace('\f', ' '), null);
     }
 
     private SceneException(Path file, int line, int column, String lineText, String problem, String includedFrom) {
@@ -79,8 +80,8 @@ public final class SceneException extends Exception {
         }
         sb.append(": ").append(problem);
         if (line > 0 && lineText != null && !lineText.isEmpty()) {
-            // a tab, or a carriage return inside the line, as one blank: each keeps the caret's column
-            String text = lineText.replace('\t', ' ').replace('\r', ' ');
+            // a tab, a form feed, or a carriage return inside the line, as one blank: each keeps the caret's column
+            String text = lineText.replace('\t', ' ').replace('\r', ' ').replace('\f', ' ');
             int caret = Math.min(Math.max(column - 1, 0), text.length());
             // A long line is shown around the caret, its cut ends marked.
             int from = Math.max(0, Math.min(caret - SHOWN / 2, text.length() - SHOWN));

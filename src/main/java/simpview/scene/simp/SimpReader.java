@@ -8,6 +8,7 @@ import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
 import simpview.scene.simp.Command.Shape;
+import simpview.scene.text.CopiedText;
 import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
@@ -231,8 +232,10 @@ public final class SimpReader implements AutoCloseable {
         Kind kind = Keywords.kind(b, start, wordEnd);
         if (kind == null) {
             String word = wordEnd > start ? text(start, wordEnd) : token(start);
-            throw error(start, "unknown command '" + word + "'" + (readsAModel(word) ? modelHint()
-                    : Keywords.suggestion(word) + "; expected " + Keywords.all()));
+            // a non-breaking space or a byte order mark inside the word: named, since the word looks right
+            String invisible = CopiedText.hasInvisible(word) ? CopiedText.hint(word, "") : "";
+            throw error(start, "unknown command '" + word + "'" + (!invisible.isEmpty() ? invisible
+                    : readsAModel(word) ? modelHint() : Keywords.suggestion(word) + "; expected " + Keywords.all()));
         }
         c.kind = kind;
         // An expression, so that a new Shape does not build until it is read here.

@@ -5,8 +5,10 @@ package simpview.scene.text;
  * that holds them: text copied from a PDF or a word processor (the course's
  * handouts) brings a minus sign U+2212 for '-', an en dash, fullwidth
  * brackets and curly quotes for '"', which look right and are read as
- * nothing a scene knows. The message names the first such character by its
- * code point and Unicode name, since it cannot be told apart by eye.
+ * nothing a scene knows. Others show nothing at all: a non-breaking space,
+ * a byte order mark left inside a file where two files were joined (cat
+ * a.simp b.simp), a form feed. The message names the first such character
+ * by its code point and Unicode name, since it cannot be told apart by eye.
  */
 public final class CopiedText {
 
@@ -27,6 +29,12 @@ public final class CopiedText {
     public static String hint(String text, String rule) {
         for (int k = 0; k < text.length(); ) {
             int cp = text.codePointAt(k);
+            String invisible = invisible(cp);
+            if (invisible != null) {
+                return ", which holds " + invisible + " (" + named(cp) + ")" + around(text, k, cp) + ": "
+                        + (isBlankLike(cp) ? "use a plain space" : "delete it" + (cp == 0xFEFF ? " (a file's byte order"
+                        + " mark is left there when files are joined, as cat a.simp b.simp joins them)" : ""));
+            }
             if (cp > 0x7F) {
                 return ", whose '" + new String(Character.toChars(cp)) + "' is " + named(cp) + ", not ASCII: "
                         + (isCurlyQuote(cp) ? "a name is quoted with the ASCII '\"'" : rule)
@@ -35,6 +43,44 @@ public final class CopiedText {
             k += Character.charCount(cp);
         }
         return "";
+    }
+
+    /** Whether {@code text} holds a character that shows nothing ({@link #hint} names it). */
+    public static boolean hasInvisible(String text) {
+        return text.codePoints().anyMatch(cp -> invisible(cp) != null);
+    }
+
+    /** What an invisible character is, in words ("a non-breaking space"); null for one that shows. */
+    private static String invisible(int cp) {
+        return switch (cp) {
+            case 0x0C -> "a form feed";
+            case 0xA0 -> "a non-breaking space";
+            case 0x202F -> "a narrow non-breaking space";
+            case 0xFEFF -> "a byte order mark";
+            case 0x200B -> "a zero-width space";
+            case 0x200C, 0x200D, 0x2060 -> "a zero-width character";
+            case 0xAD -> "a soft hyphen";
+            default -> cp >= 0x2000 && cp <= 0x200A || cp == 0x205F || cp == 0x3000 ? "a wide or narrow space" : null;
+        };
+    }
+
+    /** Whether the invisible character cp stands where a blank was meant (else it belongs nowhere). */
+    private static boolean isBlankLike(int cp) {
+        return cp == 0x0C || cp == 0xA0 || cp == 0x202F || cp >= 0x2000 && cp <= 0x200A || cp == 0x205F
+                || cp == 0x3000;
+    }
+
+    /** " after 'translate'" (what comes before it at k), " before 'wire'" when it comes first; "" when alone. */
+    private static String around(String text, int k, int cp) {
+        if (k > 0) {
+            return " after '" + text.substring(0, k) + "'";
+        }
+        String rest = text.substring(Character.charCount(cp));
+        int next = 0;
+        while (next < rest.length() && invisible(rest.codePointAt(next)) == null) {
+            next += Character.charCount(rest.codePointAt(next));
+        }
+        return next == 0 ? "" : " before '" + rest.substring(0, next) + "'";
     }
 
     /** Whether {@code text} holds a curly quote: a name copied from the handouts' obj “filename”. */

@@ -264,6 +264,27 @@ class SimpReaderTest {
         assertTrue(error("wire\nv 1").problem().startsWith("unknown command 'v'; expected {"));
     }
 
+    /**
+     * A character that shows nothing is named where it stands: a byte order
+     * mark inside a file (cat a.simp b.simp), a non-breaking space, a form
+     * feed after a number.
+     */
+    @Test
+    void invisibleCharactersAreNamed() {
+        assertError("wire\n\uFEFFwire", 2, 1, "unknown command '\uFEFFwire', which holds a byte order mark (U+FEFF ZERO"
+                + " WIDTH NO-BREAK SPACE) before 'wire': delete it (a file's byte order mark is left there when files are"
+                + " joined, as cat a.simp b.simp joins them)");
+        assertError("translate\u00A01 0 0", 1, 1, "unknown command 'translate\u00A01', which holds a non-breaking space"
+                + " (U+00A0 NO-BREAK SPACE) after 'translate': use a plain space");
+        SceneException e = error("translate 3\f 1 0");
+        assertEquals("expected a number, found '3 ', which holds a form feed (U+000C FORM FEED (FF)) after '3': use a"
+                + " plain space", e.problem());
+        assertEquals(11, e.column());
+        assertTrue(e.getMessage().contains("\n    translate 3  1 0\n"), "no form feed printed: " + e.getMessage());
+        assertError("translate 1 0\u00A00", 1, 13, "expected a number, found '0\u00A00', which holds a non-breaking space"
+                + " (U+00A0 NO-BREAK SPACE) after '0': use a plain space");
+    }
+
     @Test
     void linesEndingInACarriageReturnAloneAreNamedSo() {
         SceneException e = error("scale 1 2 3\rwire\r");
