@@ -411,7 +411,7 @@ final class ObjParser {
         int after = decimal.scan(b, i, end);
         if (after < 0 || (after < end && !isSeparator(b[after]))) {
             throw error(i, "expected a number, found '" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i))
-                    + TrailingComment.hint(b[i]));
+                    + TrailingComment.hint(b[i]) + continuationHint(i));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");
@@ -506,7 +506,7 @@ final class ObjParser {
         }
         if (i == digits) {
             throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'"
-                    + TrailingComment.hint(b[start]));
+                    + TrailingComment.hint(b[start]) + continuationHint(start));
         }
         if (i - digits > MOST_INDEX_DIGITS) {
             value = Long.MAX_VALUE; // names nothing in any file; and 19 digits could overflow
@@ -548,6 +548,16 @@ final class ObjParser {
     /** Blanks, commas and parentheses separate numbers and references (digits fail the first test). */
     private static boolean isSeparator(byte c) {
         return c <= ',' && (c == ' ' || c == ',' || c == '\t' || c == '(' || c == ')');
+    }
+
+    /**
+     * For an error at a '\\' that ends the line: Wavefront lets such a line go
+     * on on the next, and simpview does not (SPEC reads a model line by line,
+     * and places every error on one line), so the message says so; else "".
+     */
+    private String continuationHint(int i) {
+        return b[i] == '\\' && skipBlanks(i + 1) == end ? " (simpview does not join a line ending in '\\' to the"
+                + " next: write the whole line on one line)" : "";
     }
 
     /** The token at i: up to the next separator, at most 30 bytes. */

@@ -80,6 +80,16 @@ class ObjErrorsTest {
     }
 
     /** "v 0,5 0 0" is x y z w with w = 0: the error names the decimal comma that made it so. */
+    /** A '\\' ending a line, Wavefront's continuation, is named: simpview reads a model line by line. */
+    @Test
+    void aLineContinuationIsNamed() {
+        String hint = " (simpview does not join a line ending in '\\' to the next: write the whole line on one line)";
+        assertError("v 0 0 \\\n 1\n", 1, 7, "expected a number, found '\\'" + hint);
+        assertError(TRIANGLE + "f 1 2 \\ \n 3\n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn),"
+                + " found '\\'" + hint);
+        assertError("v 0 \\ 0 1\n", 1, 5, "expected a number, found '\\'");
+    }
+
     @Test
     void aDecimalCommaThatMakesWZeroIsNamed() {
         assertError("v 0,5 0 0\n", 1, 9, "w is 0: the point (x/w, y/w, z/w) is undefined (a comma separates two"
