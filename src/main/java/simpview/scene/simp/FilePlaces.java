@@ -35,8 +35,9 @@ record FilePlaces(String fileName, Path here, Path working) {
     static FilePlaces of(Path from, String name, String extension, Path workingDir) {
         String fileName = name + extension;
         Path dir = from.getParent();
-        Path here = dir == null ? Path.of(fileName) : dir.resolve(fileName);
-        return new FilePlaces(fileName, here, workingDir.resolve(fileName));
+        // "x/../c.simp" named as "c.simp" in every message, the path still relative when the including one is
+        Path here = (dir == null ? Path.of(fileName) : dir.resolve(fileName)).normalize();
+        return new FilePlaces(fileName, here, workingDir.resolve(fileName).normalize());
     }
 
     /**

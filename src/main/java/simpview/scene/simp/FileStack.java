@@ -35,6 +35,8 @@ import simpview.scene.text.LineSource;
 final class FileStack implements AutoCloseable {
 
     static final int MAX_OPEN = 8;
+    /** A longer include chain is named in an error by this many links at each end, "... N more ..." between. */
+    static final int CHAIN_ENDS = 5;
     static final int SMALL_FILE = LineSource.CHUNK;
 
     private final List<SimpReader> readers = new ArrayList<>();
@@ -138,6 +140,13 @@ final class FileStack implements AutoCloseable {
         Path before = e.file();
         for (int k = innermost; k >= 0; k--) {
             SimpReader including = readers.get(k);
+            if (k == innermost - CHAIN_ENDS && k > CHAIN_ENDS) {
+                // a chain thousands of includes deep would print tens of kilobytes: its ends say where and why
+                chain.append(", ... ").append(k - CHAIN_ENDS + 1).append(" more ...");
+                k = CHAIN_ENDS;
+                including = readers.get(k);
+                before = readers.get(k + 1).file();
+            }
             chain.append(chain.length() == 0 ? "" : ", included from ")
                     .append(named(including.file(), before)).append(':').append(including.lineNumber());
             before = including.file();
@@ -147,13 +156,13 @@ final class FileStack implements AutoCloseable {
 
     /**
      * An including file as the chain names it: by its name alone when it is in the folder of the file named
-     * before it (the course's scenes include each other so), else by its path as it was opened, so that two
-     * folders' part.simp do not read alike.
+     * before it (the course's scenes include each other so), else by its path as it was opened, without "." and
+     * "x/.." (relative stays relative), so that two folders' part.simp do not read alike.
      */
     private static Path named(Path including, Path before) {
         Path folder = including.toAbsolutePath().normalize().getParent();
         Path beforeFolder = before.toAbsolutePath().normalize().getParent();
-        return folder != null && folder.equals(beforeFolder) ? including.getFileName() : including;
+        return folder != null && folder.equals(beforeFolder) ? including.getFileName() : including.normalize();
     }
 
     /** Acts on a {@code file} command just read from the top file. */

@@ -150,6 +150,43 @@ class FileStackTest {
         assertEquals(8, e.column());
     }
 
+    /**
+     * An error 3,000 includes deep names the first and last few links of the
+     * chain and how many stand between, not 3,000 of them; a short chain is
+     * named whole.
+     */
+    @Test
+    void aLongIncludeChainIsShortenedInAnError() throws Exception {
+        writeChain(3000);
+        Files.write(dir.resolve("f2999.simp"), List.of("rotate Q 5"));
+        SceneException e = new SceneFixture(dir).failure("f0");
+        assertEquals("f2998.simp:2, included from f2997.simp:2, included from f2996.simp:2, included from f2995.simp:2,"
+                + " included from f2994.simp:2, ... 2989 more ..., included from f5.simp:2, included from f4.simp:2,"
+                + " included from f3.simp:2, included from f2.simp:2, included from f1.simp:2, included from f0.simp:2",
+                e.includedFrom());
+        writeChain(4);
+        Files.write(dir.resolve("f3.simp"), List.of("rotate Q 5"));
+        assertEquals("f2.simp:2, included from f1.simp:2, included from f0.simp:2",
+                new SceneFixture(dir).failure("f0").includedFrom());
+    }
+
+    /** A name through ".." is shown without it, as the error's file and in the chain, and stays relative. */
+    @Test
+    void pathsInAnErrorAndItsChainAreNormalised() throws Exception {
+        Files.createDirectories(dir.resolve("cyc/x"));
+        Files.write(dir.resolve("cyc/c.simp"), List.of("rotate Q 5"));
+        Files.write(dir.resolve("cyc/b.simp"), List.of("file \"x/../c\""));
+        Files.write(dir.resolve("s.simp"), List.of("file \"cyc/x/../b\""));
+        SceneException e = new SceneFixture(dir).failure("s");
+        assertEquals(dir.resolve("cyc/c.simp"), e.file());
+        assertEquals("b.simp:1, included from " + dir.resolve("s.simp") + ":1", e.includedFrom());
+        Path top = Files.write(dir.resolve("cyc/x/top.simp"), List.of("file \"../b\""));
+        SceneException across = new SceneFixture(dir.resolve("cyc/x")).failure("top");
+        assertEquals(dir.resolve("cyc/c.simp"), across.file());
+        assertEquals("b.simp:1, included from " + top + ":1", across.includedFrom());
+        assertTrue(top.isAbsolute());
+    }
+
     /** f0 includes f1 ... includes f(depth-1); each draws a line after its include. */
     private void writeChain(int depth) throws Exception {
         for (int i = 0; i < depth; i++) {
@@ -286,7 +323,8 @@ class FileStackTest {
         SceneException e = assertThrows(SceneException.class, () -> new SimpInterpreter(
                 new SimpClient(new simpview.testing.RecordingDrawable(650, 650)), SceneMonitor.NONE, Long.MAX_VALUE)
                 .run(top));
-        assertTrue(e.getMessage().startsWith(where.resolve("b/../a/part.simp") + ":1:1, included from "
+        // the path through "b/.." is shown without it
+        assertTrue(e.getMessage().startsWith(where.resolve("a/part.simp") + ":1:1, included from "
                 + where.resolve("b/part.simp") + ":2, included from " + top + ":1: unknown command"), e.getMessage());
     }
 }
