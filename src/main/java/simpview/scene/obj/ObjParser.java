@@ -487,6 +487,10 @@ final class ObjParser {
             }
             int vn = ++i;
             i = index(i, start);
+            if (i < end && b[i] == '/') {
+                // a fourth part: the form is wrong whatever the indices name, so that is said first
+                throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'");
+            }
             normalRefs[n] = resolve(vn, i, vertices.normalCount, "normal", "normals (vn lines)",
                     "normal (vn line)");
         }

@@ -241,6 +241,13 @@ class ObjErrorsTest {
     }
 
     @Test
+    void aReferenceOfFourPartsIsToldSoWhetherOrNotItsNormalIsDefined() {
+        // without vn lines its third part names nothing, but its form is what is wrong
+        assertError(TRIANGLE + "f 1/1/1/1 2 3", 4, 3,
+                "expected a vertex reference (v, v/vt, v//vn or v/vt/vn), found '1/1/1/1'");
+    }
+
+    @Test
     void theColumnCountsCharactersNotBytes() {
         String problem = "expected a number, found '\u00e9', whose '\u00e9' is U+00E9 LATIN SMALL LETTER E WITH ACUTE,"
                 + " not ASCII: a number is written with the ASCII digits, '-', '+', '.' and 'e' (text copied from a PDF"
