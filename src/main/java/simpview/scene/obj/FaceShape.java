@@ -4,8 +4,10 @@ package simpview.scene.obj;
  * Two shapes of a face of four vertices or more that SPEC draws otherwise
  * than its outline suggests, for the reader's warnings: its first three
  * vertices on one line (SPEC's face normal, (p2 - p1) x (p3 - p1), is then
- * zero or made of rounding errors), and a face that is not convex (SPEC fills
- * it as a fan from its first vertex, which covers more than its outline).
+ * zero or made of rounding errors), and a face whose fan from its first vertex
+ * (how SPEC fills a face) covers more or other than its outline: only some
+ * faces that are not convex, as the fan from a vertex that sees the whole
+ * face is exact.
  * Positions are three doubles a vertex; a face is its vertices' indices.
  * Both tests hold under any affine map, so the model's own coordinates tell
  * what the camera's would.
@@ -46,11 +48,16 @@ final class FaceShape {
     }
 
     /**
-     * Whether the face of n vertices refs[0..n) has an area (Newell's normal, the sum over its edges, is not
-     * nil) and is not convex: it turns the other way at some vertex, or it turns one way all round more than
-     * once (a pentagram drawn in one stroke, its edges crossing).
+     * Whether SPEC's fan from the first vertex fills otherwise than the face's outline: some fan triangle
+     * (refs[0], refs[i], refs[i + 1]) turns against the face (Newell's normal, the sum over its edges), so it
+     * covers what lies outside the outline (a star or an L fanned from a corner that does not see the whole
+     * face), or the fan triangles wind round the first vertex more than once, so they overlap (a pentagram
+     * in one stroke). Otherwise the triangles are disjoint and their union is exactly what the outline
+     * encloses: their signed areas add up to the outline's winding number everywhere, and with none negative
+     * and none overlapping that is 1 inside and 0 outside. So an L fanned from its outer corner or its notch
+     * is not named, though it is not convex. A face with no area (Newell's normal nil) is not named either.
      */
-    static boolean concave(double[] p, int[] refs, int n) {
+    static boolean fanMisdraws(double[] p, int[] refs, int n) {
         double nx = 0;
         double ny = 0;
         double nz = 0;
@@ -65,24 +72,27 @@ final class FaceShape {
         if (!(normal > 0)) {
             return false;
         }
-        double turned = 0; // the turns' angles, added up: 2 pi once round a convex face
-        for (int i = 0; i < n; i++) {
-            int a = 3 * refs[(i + n - 1) % n];
+        int o = 3 * refs[0];
+        double swept = 0; // the fan triangles' angles at the first vertex, added up
+        for (int i = 1; i + 1 < n; i++) {
             int b = 3 * refs[i];
-            int c = 3 * refs[(i + 1) % n];
-            double ux = p[b] - p[a];
-            double uy = p[b + 1] - p[a + 1];
-            double uz = p[b + 2] - p[a + 2];
-            double vx = p[c] - p[b];
-            double vy = p[c + 1] - p[b + 1];
-            double vz = p[c + 2] - p[b + 2];
-            double turn = (uy * vz - uz * vy) * nx + (uz * vx - ux * vz) * ny + (ux * vy - uy * vx) * nz;
-            double scale = Math.sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz)) * normal;
-            if (turn < -IN_LINE * scale) {
+            int c = 3 * refs[i + 1];
+            double ux = p[b] - p[o];
+            double uy = p[b + 1] - p[o + 1];
+            double uz = p[b + 2] - p[o + 2];
+            double vx = p[c] - p[o];
+            double vy = p[c + 1] - p[o + 1];
+            double vz = p[c + 2] - p[o + 2];
+            // twice the triangle's area along the face's unit normal: negative when it turns against the face
+            double along = ((uy * vz - uz * vy) * nx + (uz * vx - ux * vz) * ny + (ux * vy - uy * vx) * nz) / normal;
+            double scale = Math.sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz));
+            if (along < -IN_LINE * scale) {
                 return true;
             }
-            turned += Math.atan2(turn / normal, ux * vx + uy * vy + uz * vz);
+            if (along > IN_LINE * scale) { // a triangle of no area covers nothing and turns nothing
+                swept += Math.atan2(along, ux * vx + uy * vy + uz * vz);
+            }
         }
-        return turned > 3 * Math.PI; // twice round (4 pi) or more: not once round (2 pi)
+        return swept > 2 * Math.PI * (1 + IN_LINE); // once round the first vertex and more: overlapping
     }
 }

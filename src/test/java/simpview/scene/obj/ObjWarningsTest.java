@@ -76,6 +76,42 @@ class ObjWarningsTest {
                 + " (Blender: Triangulate)"), warnings(star + "f 1 5 9 3 7\n"));
     }
 
+    /**
+     * An L is not convex, but its fan from the outer corner (or from the notch's corner, which sees all of
+     * it) covers exactly the L: not named. From a corner beside the notch its second fan triangle lies in
+     * the notch: named. A convex face, either way round and from any vertex, is never named.
+     */
+    @Test
+    void anLIsNamedOnlyWhenItsFanFromTheFirstVertexLeavesTheOutline() throws SceneException {
+        String l = "v -80 -80 -50\nv 80 -80 -50\nv 80 -20 -50\nv -20 -20 -50\nv -20 80 -50\nv -80 80 -50\n";
+        assertEquals(List.of(), warnings(l + "f 1 2 3 4 5 6\n"), "from the outer corner: the fan is the L");
+        assertEquals(List.of(), warnings(l + "f 4 5 6 1 2 3\n"), "from the notch: the fan is the L");
+        assertEquals(List.of(), warnings(l + "f 1 6 5 4 3 2\n"), "clockwise, from the outer corner");
+        assertEquals(List.of("model.obj:7: this face of 6 vertices is not convex, and SPEC fills a face as a fan"
+                + " from its first vertex, which covers what its outline leaves out: split it into triangles"
+                + " (Blender: Triangulate)"), warnings(l + "f 3 4 5 6 1 2\n"));
+        assertEquals(List.of("model.obj:7: this face of 6 vertices is not convex, and SPEC fills a face as a fan"
+                + " from its first vertex, which covers what its outline leaves out: split it into triangles"
+                + " (Blender: Triangulate) (and 2 more faces like it)"),
+                warnings(l + "f 5 6 1 2 3 4\nf 2 1 6 5 4 3\nf 6 5 4 3 2 1\n"));
+        // A regular hexagon, tilted out of the xy plane: convex, from every vertex and either way round.
+        StringBuilder hexagon = new StringBuilder();
+        for (int k = 0; k < 6; k++) {
+            double a = Math.toRadians(60 * k + 10);
+            hexagon.append("v ").append(Math.cos(a)).append(' ').append(Math.sin(a)).append(' ')
+                    .append(0.3 * Math.cos(a)).append('\n');
+        }
+        for (int first = 0; first < 6; first++) {
+            StringBuilder f = new StringBuilder("f");
+            StringBuilder back = new StringBuilder("f");
+            for (int k = 0; k < 6; k++) {
+                f.append(' ').append((first + k) % 6 + 1);
+                back.append(' ').append((first + 6 - k) % 6 + 1);
+            }
+            assertEquals(List.of(), warnings(hexagon + f.toString() + "\n" + back + "\n"), f + " and " + back);
+        }
+    }
+
     // ---- a file without faces -------------------------------------------------------------------
 
     /** A file that gives no face is named, with what it held, so that an empty picture is explained. */
