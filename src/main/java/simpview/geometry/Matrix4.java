@@ -112,12 +112,30 @@ public final class Matrix4 {
         return new Matrix4(p);
     }
 
+    /** What {@link #invert} gives for a matrix whose inverse holds numbers beyond the doubles. */
+    private static final double[] OVERFLOWS = new double[0];
+
     /**
      * The inverse, by Gauss-Jordan elimination with partial pivoting; null
      * when this matrix cannot be inverted (a zero pivot, or a result that is
-     * not finite).
+     * not finite: see {@link #inverseOverflows}).
      */
     public Matrix4 inverse() {
+        double[] inv = invert();
+        return inv == null || inv == OVERFLOWS ? null : new Matrix4(inv);
+    }
+
+    /**
+     * True when this matrix has no {@link #inverse} because the inverse's
+     * numbers are beyond the doubles (a scale of 1e-310 inverts to 1e310),
+     * not because it is singular (a scale of 0): a message tells which.
+     */
+    public boolean inverseOverflows() {
+        return invert() == OVERFLOWS;
+    }
+
+    /** The inverse's entries, row-major; null for a zero pivot, {@link #OVERFLOWS} for a result that is not finite. */
+    private double[] invert() {
         double[] a = m.clone();
         double[] inv = IDENTITY.m.clone();
         for (int col = 0; col < 4; col++) {
@@ -128,8 +146,11 @@ public final class Matrix4 {
                 }
             }
             double p = a[4 * pivot + col];
-            if (p == 0 || !Double.isFinite(p)) {
+            if (p == 0) {
                 return null;
+            }
+            if (!Double.isFinite(p)) {
+                return OVERFLOWS;
             }
             swapRows(a, col, pivot);
             swapRows(inv, col, pivot);
@@ -149,10 +170,10 @@ public final class Matrix4 {
         }
         for (double v : inv) {
             if (!Double.isFinite(v)) {
-                return null;
+                return OVERFLOWS;
             }
         }
-        return new Matrix4(inv);
+        return inv;
     }
 
     private static void swapRows(double[] a, int r, int s) {
@@ -204,6 +225,35 @@ public final class Matrix4 {
 
     public double applyZ(double x, double y, double z) {
         return m[8] * x + m[9] * y + m[10] * z + m[11];
+    }
+
+    /** True when every entry is a finite number: neither infinite nor NaN. */
+    public boolean isFinite() {
+        for (double v : m) {
+            if (!Double.isFinite(v)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The first entry, row by row, that is infinite or NaN, for a message;
+     * call only when not {@link #isFinite()}. An Infinity is named before a
+     * NaN, which an Infinity made (Infinity minus Infinity, or times 0).
+     */
+    public double firstNonFinite() {
+        boolean nan = false;
+        for (double v : m) {
+            if (Double.isInfinite(v)) {
+                return v;
+            }
+            nan |= Double.isNaN(v);
+        }
+        if (!nan) {
+            throw new IllegalStateException("every entry is finite: " + this);
+        }
+        return Double.NaN;
     }
 
     public double get(int row, int column) {

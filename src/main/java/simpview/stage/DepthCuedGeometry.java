@@ -24,6 +24,8 @@ public final class DepthCuedGeometry implements GeometryStage {
     private final double[] panel = new double[Painter.STRIDE];
     private long culled;
     private long primitives;
+    /** Primitives not drawn because a vertex of theirs is not finite in camera space. */
+    private long nonFinite;
     /** Told of the primitives culled (the inspector), or null. */
     private PrimitiveTrace trace;
 
@@ -41,10 +43,18 @@ public final class DepthCuedGeometry implements GeometryStage {
         draw(wire ? Painter.WIRE : Painter.FILLED, ctm, xyz, rgb, 3);
     }
 
-    /** Object -> world (= camera) -> cull -> project -> sink; a vertex without a colour is white. */
+    /**
+     * Object -> world (= camera) -> cull -> project -> sink; a vertex without
+     * a colour is white. A primitive with a vertex the CTM takes beyond the
+     * doubles (finite numbers and a finite CTM can still overflow) is not
+     * drawn, and counted: the scene warns of it.
+     */
     private void draw(int kind, Matrix4 ctm, double[] xyz, double[] rgb, int count) {
         primitives++;
-        toCamera(ctm, xyz, count);
+        if (!toCamera(ctm, xyz, count)) {
+            nonFinite++;
+            return;
+        }
         if (VIEW.culls(camera, 3, count)) {
             culled++;
             if (trace != null) {
@@ -56,15 +66,22 @@ public final class DepthCuedGeometry implements GeometryStage {
         sink.add(kind, panel);
     }
 
-    private void toCamera(Matrix4 ctm, double[] p, int count) {
+    /** The vertices to camera space; false when one of them is not finite there. */
+    private boolean toCamera(Matrix4 ctm, double[] p, int count) {
+        double sum = 0;
         for (int k = 0; k < 3 * count; k += 3) {
             double x = p[k];
             double y = p[k + 1];
             double z = p[k + 2];
-            camera[k] = ctm.applyX(x, y, z);
-            camera[k + 1] = ctm.applyY(x, y, z);
-            camera[k + 2] = ctm.applyZ(x, y, z);
+            double cx = ctm.applyX(x, y, z);
+            double cy = ctm.applyY(x, y, z);
+            double cz = ctm.applyZ(x, y, z);
+            camera[k] = cx;
+            camera[k + 1] = cy;
+            camera[k + 2] = cz;
+            sum += cx + cy + cz;
         }
+        return Double.isFinite(sum) || GeometryStage.allFinite(camera, 3, count);
     }
 
     /** Panel x and y, depth kept, each vertex with its own colour or white. */
@@ -95,6 +112,11 @@ public final class DepthCuedGeometry implements GeometryStage {
     @Override
     public long culledCount() {
         return culled;
+    }
+
+    @Override
+    public long nonFiniteCount() {
+        return nonFinite;
     }
 
     @Override

@@ -27,4 +27,26 @@ public interface GeometryStage {
 
     /** Primitives taken, culled or not: lines, triangles and .obj faces. */
     long primitiveCount();
+
+    /**
+     * Primitives not drawn because a vertex came out infinite or NaN in
+     * camera space: finite numbers through a finite CTM can still overflow
+     * (x = 1e308 under a scale of 10).
+     */
+    long nonFiniteCount();
+
+    /**
+     * Whether each of the n vertices of v (stride numbers each, x, y, z
+     * first) is finite: asked only once a vertex sum was not finite, which
+     * the sum of large finite numbers can also be, so no vertex pays for it.
+     */
+    static boolean allFinite(double[] v, int stride, int n) {
+        for (int k = 0; k < n; k++) {
+            int o = k * stride;
+            if (!Double.isFinite(v[o]) || !Double.isFinite(v[o + 1]) || !Double.isFinite(v[o + 2])) {
+                return false;
+            }
+        }
+        return true;
+    }
 }

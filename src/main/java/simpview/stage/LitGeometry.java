@@ -96,6 +96,9 @@ public final class LitGeometry implements GeometryStage {
     private Path objFile;
     private long culled;
     private long primitives;
+    /** Primitives not drawn because a vertex is not finite in camera space; the first one's line, for an obj face. */
+    private long nonFinite;
+    private int firstNonFiniteLine;
     /** Who follows the primitives, or null; where the primitive at hand comes from; how many were told. */
     private PrimitiveTrace trace;
     private Path sourceFile;
@@ -140,6 +143,9 @@ public final class LitGeometry implements GeometryStage {
             vertex(k, xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
             colour(k, rgb, 3 * k);
             ownNormal[k] = false;
+        }
+        if (!finite(2)) {
+            return;
         }
         if (state.camera().culls(cam, CAMERA_STRIDE, 2)) {
             culled++;
@@ -224,6 +230,9 @@ public final class LitGeometry implements GeometryStage {
     /** Steps 2 to 7 for a polygon whose n camera-space vertices are in place. */
     private void face(int n, boolean wire) {
         primitives++;
+        if (!finite(n)) {
+            return;
+        }
         Camera camera = state.camera();
         if (camera.culls(cam, CAMERA_STRIDE, n)) {
             culled++;
@@ -278,6 +287,29 @@ public final class LitGeometry implements GeometryStage {
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
+    }
+
+    /**
+     * Whether the n camera-space vertices are finite; else the primitive is
+     * counted, its face's line noted for an obj, and not drawn (a NaN vertex
+     * would be culled as outside every plane, an infinite one lost in the
+     * clipper's lerps: either way silently). One sum per primitive: a sum
+     * that is not finite (which large finite numbers can also make) is looked
+     * at vertex by vertex.
+     */
+    private boolean finite(int n) {
+        double sum = 0;
+        for (int k = 0; k < n; k++) {
+            int o = k * CAMERA_STRIDE;
+            sum += cam[o + CX] + cam[o + CY] + cam[o + CZ];
+        }
+        if (Double.isFinite(sum) || GeometryStage.allFinite(cam, CAMERA_STRIDE, n)) {
+            return true;
+        }
+        if (nonFinite++ == 0) {
+            firstNonFiniteLine = sourceLine;
+        }
+        return false;
     }
 
     /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
@@ -598,5 +630,15 @@ public final class LitGeometry implements GeometryStage {
     @Override
     public long primitiveCount() {
         return primitives;
+    }
+
+    @Override
+    public long nonFiniteCount() {
+        return nonFinite;
+    }
+
+    /** The line in its model of the first primitive {@link #nonFiniteCount} counted, when that was an obj face. */
+    public int firstNonFiniteLine() {
+        return firstNonFiniteLine;
     }
 }

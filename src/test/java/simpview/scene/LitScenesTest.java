@@ -172,6 +172,16 @@ class LitScenesTest {
         SceneException singular = failure("scale 1 0 1", "camera -1 -1 1 1 -1 -200");
         assertEquals(2, singular.line());
         assertTrue(singular.problem().contains("cannot be inverted"), singular.problem());
+        // A CTM that is finite but whose inverse is not (1e-310 inverts to 1e310): an overflow, not a scale of 0.
+        SceneException tiny = failure("scale 1e-310 1 1", "camera -1 -1 1 1 -1 -200");
+        assertEquals(2, tiny.line());
+        assertEquals("the CTM at the camera cannot be inverted: its inverse overflows (holds numbers beyond about"
+                + " 1.8e308, a scale too near 0?), so there is no way from the world to the camera", tiny.problem());
+        assertFalse(singular.problem().contains("overflows"), singular.problem());
+        // A CTM that overflows itself is named at the transform that overflowed it, before the camera.
+        SceneException huge = failure("scale 1e200 1e200 1e200", "scale 1e200 1e200 1e200", "camera -1 -1 1 1 -1 -10");
+        assertEquals(2, huge.line());
+        assertTrue(huge.problem().startsWith("the transform overflows"), huge.problem());
         SceneException second = failure("camera -1 -1 1 1 -1 -200", "camera -1 -1 1 1 -1 -200");
         assertEquals(2, second.line());
         assertTrue(second.problem().contains("the first is at bad.simp:1"), second.problem());
@@ -250,6 +260,33 @@ class LitScenesTest {
         assertEquals(java.util.List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 warnings);
         assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
+    }
+
+    /**
+     * A vertex that a finite CTM takes beyond the doubles, lit: a simp polygon, a line and a model's face each
+     * named (the first, and how many more), none drawn, everything else drawn as it is. Before, the polygon was
+     * lost without a word: a NaN vertex culled as outside every plane, an Infinity lost in the clipper.
+     */
+    @Test
+    void aVertexBeyondTheDoublesIsNamedInALitSceneAndInAModel() throws Exception {
+        Files.writeString(dir.resolve("ovf.obj"), "v -50 -50 -100\nv 1e308 -50 -100\nv 0 50 -100\nf 1 2 3\n"
+                + "v -50 -50 -100\nv 50 -50 -100\nv 0 50 -100\nf 4 5 6\n");
+        java.util.List<String> warnings = new java.util.ArrayList<>();
+        PageCanvas canvas = new PageCanvas();
+        ScenePipeline.draw(write("ovf", "ambient 1 1 1", "{", "scale 10 1 1", "obj ovf",
+                "polygon (-50, -50, -100) (1e308, -50, -100) (0, 50, -100)", "}"), canvas,
+                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(warnings));
+        assertEquals(java.util.List.of("ovf.obj:4 face (of the model drawn by ovf.simp:4 obj): a vertex comes out"
+                + " infinite or NaN in camera space (its numbers are finite, but the CTM takes them beyond about"
+                + " 1.8e308), so this primitive was not drawn, nor 1 more like it"), warnings);
+        assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the model's second face is drawn");
+        warnings.clear();
+        ScenePipeline.draw(write("nanlit", "ambient 1 1 1", "polygon (0,0,-10)(50,0,-10)(0,50,-10)", "scale 1e300 1 1",
+                "line (0,0,-10)(1e10,0,-10)"), new PageCanvas(),
+                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(warnings));
+        assertEquals(java.util.List.of("nanlit.simp:4 line: a vertex comes out infinite or NaN in camera space (its"
+                + " numbers are finite, but the CTM takes them beyond about 1.8e308), so this primitive was not drawn"),
+                warnings);
     }
 
     @Test

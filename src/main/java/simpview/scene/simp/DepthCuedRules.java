@@ -32,6 +32,8 @@ final class DepthCuedRules implements RuleSet {
     private final PrimitiveTrace trace;
     /** The window's turn of the view, applied before the CTM (the world turns before the depth cue), or null. */
     private final Matrix4 turn;
+    /** Where the first primitive with a vertex that is not finite stands ("ovf.simp:3 polygon"), or null. */
+    private String firstNonFinite;
     private Matrix4 lastCtm;
     private Matrix4 turnedCtm;
     private int traced;
@@ -59,12 +61,31 @@ final class DepthCuedRules implements RuleSet {
     public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
         source(ctm, xyz, 2);
         geometry.line(viewed(ctm), xyz, rgb);
+        noteNonFinite("line");
     }
 
     @Override
     public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
         source(ctm, xyz, 3);
         geometry.polygon(viewed(ctm), xyz, rgb, wire);
+        noteNonFinite("polygon");
+    }
+
+    /** Notes where the first primitive with a vertex that is not finite stands: one test per primitive. */
+    private void noteNonFinite(String kind) {
+        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
+            firstNonFinite = files.place() + " " + kind;
+        }
+    }
+
+    @Override
+    public long nonFiniteCount() {
+        return geometry.nonFiniteCount();
+    }
+
+    @Override
+    public String firstNonFinite() {
+        return firstNonFinite;
     }
 
     /** Tells a trace that wants them the primitive's vertices as written and the CTM (as turned for the view). */

@@ -48,6 +48,8 @@ final class LitRules implements RuleSet {
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
     private String cameraAt;
     private String firstPrimitiveAt;
+    /** Where the first primitive with a vertex that is not finite stands ("ovf.obj:3 face ..."), or null. */
+    private String firstNonFinite;
     /** The record several threads draw from, or null: drawn at once, on this thread. */
     private LitPrimitives record;
     /** Where the fragments go when drawn at once. */
@@ -77,6 +79,7 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 2);
         geometry.line(ctm, xyz, rgb);
+        noteNonFinite(files.place() + " line");
     }
 
     @Override
@@ -84,6 +87,24 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 3);
         geometry.polygon(ctm, xyz, rgb, wire);
+        noteNonFinite(files.place() + " polygon");
+    }
+
+    /** Notes {@code place} when the primitive just drawn was the first with a vertex that is not finite. */
+    private void noteNonFinite(String place) {
+        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
+            firstNonFinite = place;
+        }
+    }
+
+    @Override
+    public long nonFiniteCount() {
+        return geometry.nonFiniteCount();
+    }
+
+    @Override
+    public String firstNonFinite() {
+        return firstNonFinite;
     }
 
     /** Tells a trace that wants them the primitive's vertices as written and the CTM. */
@@ -139,6 +160,12 @@ final class LitRules implements RuleSet {
             throw errorAtNumber(c, problem.number(), problem.words());
         }
         Matrix4 w = ctm.inverse();
+        if (w == null && ctm.inverseOverflows()) {
+            // the CTM itself is finite (SimpClient checks each transform), its inverse is not
+            throw error(c, c.commandIndex, "the CTM at the camera cannot be inverted: its inverse overflows (holds "
+                    + "numbers beyond about 1.8e308, a scale too near 0?), so there is no way from the world to the"
+                    + " camera");
+        }
         if (w == null) {
             throw error(c, c.commandIndex, "the CTM at the camera cannot be inverted (a scale of 0?): "
                     + "there is no way from the world to the camera");
@@ -157,6 +184,10 @@ final class LitRules implements RuleSet {
             firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
         }
         modelWarnings.addAll(counts.warnings());
+        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
+            firstNonFinite = file.getFileName() + ":" + geometry.firstNonFiniteLine() + " face (of the model drawn by "
+                    + files.place() + " obj)";
+        }
         return true;
     }
 

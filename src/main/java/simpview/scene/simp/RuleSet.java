@@ -24,6 +24,16 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     /** Primitives taken, culled or not. */
     long primitiveCount();
 
+    /** Primitives not drawn because a vertex came out infinite or NaN in camera space. */
+    long nonFiniteCount();
+
+    /**
+     * Where the first of those stands, for the scene's warning: "ovf.simp:3
+     * polygon", or for an obj face its model's line and the command that drew
+     * it; null while there is none.
+     */
+    String firstNonFinite();
+
     /**
      * Where the first colour outside 0 to 1 that these rules read themselves
      * (an .obj model's, "dummy.obj:12") was clamped, or null; asked after

@@ -125,9 +125,9 @@ public final class SimpClient {
                 yield false;
             }
             case POP -> pop(c);
-            case SCALE -> transform(Matrix4.scaling(c.numbers[0], c.numbers[1], c.numbers[2]));
-            case TRANSLATE -> transform(Matrix4.translation(c.numbers[0], c.numbers[1], c.numbers[2]));
-            case ROTATE -> transform(Matrix4.rotation(c.axis, c.angle));
+            case SCALE -> transform(c, Matrix4.scaling(c.numbers[0], c.numbers[1], c.numbers[2]));
+            case TRANSLATE -> transform(c, Matrix4.translation(c.numbers[0], c.numbers[1], c.numbers[2]));
+            case ROTATE -> transform(c, Matrix4.rotation(c.axis, c.angle));
             case LINE -> {
                 rules.line(ctm, c.xyz, colours(c));
                 yield drew = true;
@@ -200,8 +200,23 @@ public final class SimpClient {
         return true;
     }
 
-    private boolean transform(Matrix4 m) {
-        ctm = ctm.times(m);
+    /**
+     * CTM = CTM * m. A CTM that overflows the doubles (a scale of 1e200 twice,
+     * a translate of 1e308 twice) is an error at this command: every point
+     * transformed by it would come out Infinity or NaN and draw nothing, and
+     * SPEC makes an infinite number an error. One check per transform
+     * command, none per vertex.
+     */
+    private boolean transform(Command c, Matrix4 m) throws SceneException {
+        Matrix4 product = ctm.times(m);
+        if (!product.isFinite()) {
+            double bad = product.firstNonFinite();
+            throw files.current().error(c.commandIndex, "the transform overflows: after this " + c.kind.spelling
+                    + " the matrix holds " + bad + (Double.isNaN(bad) ? " (Infinity minus Infinity)" : "")
+                    + ", beyond the largest number a double holds (about 1.8e308), so every point it transformed"
+                    + " would be lost: make its scales and translations smaller");
+        }
+        ctm = product;
         return false;
     }
 
@@ -288,12 +303,20 @@ public final class SimpClient {
     /**
      * What the scene should be told once it is drawn: what its models warned
      * of (before the clamp that a decimal comma may explain), clamped colours,
-     * ignored lit commands, '{' left open.
+     * primitives not drawn for a vertex beyond the doubles, ignored lit
+     * commands, '{' left open.
      */
     public List<String> warnings() {
         List<String> w = new ArrayList<>(rules.modelWarnings());
         if (firstClamped != null) {
             w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
+        }
+        String nonFinite = rules.firstNonFinite();
+        if (nonFinite != null) {
+            long more = rules.nonFiniteCount() - 1;
+            w.add(nonFinite + ": a vertex comes out infinite or NaN in camera space (its numbers are finite, but the"
+                    + " CTM takes them beyond about 1.8e308), so this primitive was not drawn"
+                    + (more > 0 ? ", nor " + more + " more like it" : ""));
         }
         if (firstIgnored != null) {
             w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");

@@ -85,6 +85,57 @@ class SimpClientTest {
         assertEquals("  }", e.lineText());
     }
 
+    /**
+     * A transform whose CTM overflows the doubles is an error at that command: otherwise every point after it
+     * is Infinity or NaN and the picture is silently blank. Scales back down do not bring it back (Infinity
+     * times 1e-200 is Infinity), so the error is at the command that overflowed, in an included file too.
+     */
+    @Test
+    void aTransformThatOverflowsTheCtmIsAnErrorWhereItStands() throws Exception {
+        scene.write("big", "scale 1e200 1e200 1e200", "  scale 1e200 1e200 1e200", "scale 1e-200 1e-200 1e-200",
+                "polygon (-50,-50,-10)(50,-50,-10)(0,50,-10)");
+        SceneException e = scene.failure("big");
+        assertEquals(2, e.line());
+        assertEquals(3, e.column());
+        assertEquals("the transform overflows: after this scale the matrix holds Infinity, beyond the largest number a"
+                + " double holds (about 1.8e308), so every point it transformed would be lost: make its scales and"
+                + " translations smaller", e.problem());
+        scene.write("far", "translate 1e308 0 0", "translate -1e308 0 0", "translate 1e308 0 0", "translate 1e308 0 0");
+        scene.write("s", "{", "file far", "}");
+        e = scene.failure("s");
+        assertEquals(4, e.line());
+        assertEquals(1, e.column());
+        assertEquals("s.simp:2", e.includedFrom());
+        assertTrue(e.problem().startsWith("the transform overflows: after this translate the matrix holds Infinity,"),
+                e.problem());
+        // Two products that overflow opposite ways in one entry make a NaN and no Infinity: named as such.
+        scene.write("turned", "scale 1e300 1 1", "rotate Z 45", "translate 1e10 1e10 0");
+        assertTrue(scene.failure("turned").problem().startsWith("the transform overflows: after this translate the"
+                + " matrix holds NaN (Infinity minus Infinity), beyond"));
+        // Large but finite: drawn.
+        scene.write("fine", "scale 1e200 1e200 1e200", "scale 1e100 1e100 1e100", "scale 1e-300 1e-300 1e-300",
+                "polygon (-50,-50,-10)(50,-50,-10)(0,50,-10)");
+        scene.run("fine");
+        assertEquals(1, scene.filled.size());
+    }
+
+    /**
+     * A vertex whose numbers are finite but that a finite CTM takes beyond the doubles is not drawn, and the
+     * scene says so, naming the first such primitive and how many more there were; the rest is drawn.
+     */
+    @Test
+    void aVertexTheCtmTakesBeyondTheDoublesIsNamedAndNotDrawn() throws Exception {
+        scene.write("s", "polygon (-50,-50,-10)(50,-50,-10)(0,50,-10)", "scale 10 1 1",
+                "polygon (-50,-50,-10)(1e308,-50,-10)(0,50,-10)", "line (0,0,-10)(1e308,0,-10)",
+                "line (0,0,-10)(1,1,-10)");
+        scene.run("s");
+        assertEquals(1, scene.filled.size());
+        assertEquals(1, scene.lines.size());
+        assertEquals(List.of("s.simp:3 polygon: a vertex comes out infinite or NaN in camera space (its numbers are"
+                + " finite, but the CTM takes them beyond about 1.8e308), so this primitive was not drawn, nor 1 more"
+                + " like it"), scene.warnings);
+    }
+
     @Test
     void unclosedBraceIsOnlyAWarning() throws Exception {
         scene.write("s", "{", "{", "}", "line (0,0,-1) (1,1,-1)");
