@@ -9,6 +9,7 @@ import simpview.raster.FragmentLayout;
 import simpview.raster.FragmentSink;
 import simpview.raster.LitLineRasterizer;
 import simpview.raster.LitPolygonRasterizer;
+import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.shading.PointShader;
@@ -96,6 +97,13 @@ public final class LitGeometry implements GeometryStage {
     private Path objFile;
     private long culled;
     private long primitives;
+    /**
+     * Filled polygons lit so far (after culling), and whether one of them was
+     * lit by anything or fogged in a colour: while not, every one came out
+     * black. Once one was, nothing more is asked per primitive.
+     */
+    private long shaded;
+    private boolean anyNotBlack;
     /** Primitives not drawn because a vertex is not finite in camera space; the first one's line, for an obj face. */
     private long nonFinite;
     private int firstNonFiniteLine;
@@ -325,6 +333,11 @@ public final class LitGeometry implements GeometryStage {
      * @return the channels the fragments will carry
      */
     private int shade(int n) {
+        shaded++;
+        if (!anyNotBlack) {
+            Fog fog = state.fog();
+            anyNotBlack = !state.inTheDark() || fog.r() + fog.g() + fog.b() > 0;
+        }
         return switch (state.shading()) {
             case FLAT -> {
                 flat(n);
@@ -635,6 +648,16 @@ public final class LitGeometry implements GeometryStage {
     @Override
     public long nonFiniteCount() {
         return nonFinite;
+    }
+
+    /**
+     * True when polygons were lit (filled, not culled) and every one of them
+     * came out black because nothing lit it: no ambient light, no light of
+     * any intensity, no fog of a colour, at its command (SPEC's formula then
+     * gives 0 whatever the surface). Lines and wire polygons are not lit.
+     */
+    public boolean everyLitPolygonBlack() {
+        return shaded > 0 && !anyNotBlack;
     }
 
     /** The line in its model of the first primitive {@link #nonFiniteCount} counted, when that was an obj face. */

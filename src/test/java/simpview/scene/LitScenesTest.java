@@ -334,7 +334,9 @@ class LitScenesTest {
             java.util.List<String> warnings = warningsOf(scene, library);
             assertEquals(java.util.List.of("de.obj:1:3: '0,5' is read as two numbers, so this v line's 6 numbers are"
                     + " x y z r g b (a comma separates two numbers: one and a half is 1.5, not 1,5); this is the first"
-                    + " such line", "de.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                    + " such line", "de.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)",
+                    "de.simp: every lit polygon came out black: the scene has no light and no ambient (ambient 0 0 0)"
+                    + " where they are drawn; add 'ambient 0.2 0.2 0.2' or a 'light' before them"),
                     warnings, "drawing " + drawing);
         }
     }

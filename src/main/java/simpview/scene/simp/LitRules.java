@@ -309,6 +309,11 @@ final class LitRules implements RuleSet {
         }
     }
 
+    /** True when polygons were lit and each came out black, as nothing lit it (see {@link LitGeometry#everyLitPolygonBlack}). */
+    boolean everyLitPolygonBlack() {
+        return geometry.everyLitPolygonBlack();
+    }
+
     /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
     double[] shownCentre() {
         return geometry.shownCentre();

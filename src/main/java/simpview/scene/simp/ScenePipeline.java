@@ -295,6 +295,12 @@ public final class ScenePipeline {
                             : "x and y from -100 to 100, z from 0 near to -200 far")
                     + "), so it was culled");
         }
+        if (client.everyLitPolygonBlack()) {
+            // correct by SPEC (ambient starts at 0 0 0), but a black panel with no word looks like a bug
+            monitor.warning(files.reached().get(0).getFileName() + ": every lit polygon came out black: the scene"
+                    + " has no light and no ambient (ambient 0 0 0) where they are drawn; add 'ambient 0.2 0.2 0.2'"
+                    + " or a 'light' before them");
+        }
         if (!client.isLit() && !options.ownColours() && options.rules() == Rules.BY_COMMANDS
                 && client.firstOwnColours() != null) {
             // the course's rule, but a student who gave colours expects to see them

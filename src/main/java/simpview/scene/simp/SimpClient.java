@@ -254,6 +254,11 @@ public final class SimpClient {
         return rules instanceof LitRules lit ? lit.state() : null;
     }
 
+    /** True for a lit scene whose lit polygons all came out black, nothing lighting them. */
+    boolean everyLitPolygonBlack() {
+        return rules instanceof LitRules lit && lit.everyLitPolygonBlack();
+    }
+
     /** True once the scene is drawn by the lit rules. */
     boolean isLit() {
         return rules instanceof LitRules;

@@ -154,6 +154,40 @@ class ScenePipelineTest {
         assertEquals(List.of(), warnings);
     }
 
+    /**
+     * A lit scene with no light and no ambient draws its polygons black, as SPEC says; the scene says why.
+     * Only then: not when something lights them, nor when they are black for another reason (a black
+     * surface), nor when a fog tints them, nor for lines (not lit: drawn in kd).
+     */
+    @Test
+    void aLitSceneWithNothingLightingItSaysWhyItIsBlack() throws Exception {
+        Files.writeString(dir.resolve("model.obj"), "v -50 -50 -100\nv 50 -50 -100\nv 0 50 -100\nf 1 2 3\n");
+        String warning = "dark.simp: every lit polygon came out black: the scene has no light and no ambient"
+                + " (ambient 0 0 0) where they are drawn; add 'ambient 0.2 0.2 0.2' or a 'light' before them";
+        draw(write("dark.simp", "obj model"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(warning), warnings);
+        warnings.clear();
+        // a light of no intensity lights nothing; a light after the polygon does not light it
+        draw(write("dark.simp", "camera -1 -1 1 1 -1 -200", "light 0 0 0 1 0", "gouraud",
+                "polygon (-1 -1 -5) (1 -1 -5) (0 1 -5)", "light 1 1 1 1 0"), new PageCanvas(),
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(warning), warnings);
+        warnings.clear();
+        String[][] notForThis = {
+            {"ambient 0.1 0 0", "obj model"},
+            {"light 1 1 1 1 0", "obj model"},
+            {"obj model", "ambient 1 1 1", "obj model"},
+            {"surface 0 0 0", "ambient 1 1 1", "obj model"},
+            {"depth -10 -50 0 0 1", "obj model"},
+            {"camera -1 -1 1 1 -1 -200", "line (0 0 -5) (1 1 -5)"},
+            {"camera -1 -1 1 1 -1 -200", "wire", "polygon (-1 -1 -5) (1 -1 -5) (0 1 -5)"},
+        };
+        for (String[] scene : notForThis) {
+            draw(write("lit.simp", scene), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+            assertEquals(List.of(), warnings, String.join(" / ", scene));
+        }
+    }
+
     @Test
     void ownColoursADepthCuedSceneDoesNotDrawAreNamed() throws Exception {
         Path scene = write("colours.simp", "line (0 0 -5) (10 10 -5)",
