@@ -13,7 +13,9 @@ import java.util.Arrays;
  * vertex to the first, then on, and keeps a vertex when its distance to the
  * plane is {@code >= 0}. The result is convex when the input is (a triangle
  * always is) and has at most n + 6 vertices. Lines: the parametric
- * (Liang-Barsky) form, both ends moved along the original segment.
+ * (Liang-Barsky) form, both ends moved along the original segment. Every
+ * new vertex is found from the end of its edge that is inside the plane
+ * (see {@link #crossing}).
  *
  * <p>One instance reuses two buffers that grow only for polygons larger than
  * any seen before; not for use by two threads at once.
@@ -108,8 +110,11 @@ public final class Clipper {
         for (int k = 0; k < count; k++) {
             double d = distances[k];
             boolean inside = d >= 0;
-            if (inside != (dPrevious >= 0)) {
-                lerp(in, previous, k, dPrevious / (dPrevious - d), out, kept++);
+            boolean wasInside = dPrevious >= 0;
+            if (inside && !wasInside) {
+                crossing(in, k, d, previous, dPrevious, out, kept++);
+            } else if (wasInside && !inside) {
+                crossing(in, previous, dPrevious, k, d, out, kept++);
             }
             if (inside) {
                 System.arraycopy(in, k * stride, out, kept++ * stride, stride);
@@ -123,19 +128,34 @@ public final class Clipper {
         count = kept;
     }
 
-    /** out[at] = a + t (b - a), every number of the vertex. */
-    private void lerp(double[] v, int a, int b, double t, double[] out, int at) {
-        int oa = a * stride;
-        int ob = b * stride;
+    /**
+     * out[at] = where the edge from vertex {@code inside} (distance dIn >= 0)
+     * to vertex {@code outside} (dOut < 0) crosses the plane: in + t (out - in),
+     * t = dIn / (dIn - dOut), every number of the vertex. Always from the
+     * inside end, whichever way the pass walks the edge: t is then small where
+     * the outside end is far away (from the far end, a + t (b - a) with t near
+     * 1 cancels to nothing: a vertex at x = 1e20 gave a crossing 1e4 off),
+     * and an edge that two polygons share, walked one way by one and the other
+     * way by the other, crosses at the same bits in both, so clipped
+     * neighbours still meet exactly. Still SPEC's linear interpolation at the
+     * crossing, from the other end.
+     */
+    private void crossing(double[] v, int inside, double dIn, int outside, double dOut, double[] out, int at) {
+        double t = dIn / (dIn - dOut);
+        int oi = inside * stride;
+        int oo = outside * stride;
         int o = at * stride;
         for (int i = 0; i < stride; i++) {
-            out[o + i] = v[oa + i] + t * (v[ob + i] - v[oa + i]);
+            out[o + i] = v[oi + i] + t * (v[oo + i] - v[oi + i]);
         }
     }
 
     /**
      * Clips the line from vertex {@code from} to vertex {@code to} of {@code p}
-     * (offsets of their first numbers).
+     * (offsets of their first numbers). Each end a plane moves is found from
+     * the end inside that plane, as a polygon's crossings are: the new start
+     * from {@code to} toward {@code from} (u0 of the way), the new end from
+     * {@code from} toward {@code to} (t1 of the way).
      *
      * @return false when no part of it is in view; else its two new ends are
      *     vertices 0 and 1 of {@link #vertices()}
@@ -143,7 +163,7 @@ public final class Clipper {
     public boolean clipLine(Camera camera, double[] p, int from, int to) {
         ensure(2);
         result = front;
-        double t0 = 0;
+        double u0 = 1;
         double t1 = 1;
         for (int plane = 0; plane < Camera.PLANES; plane++) {
             double d0 = camera.distance(plane, p[from], p[from + 1], p[from + 2]);
@@ -154,18 +174,18 @@ public final class Clipper {
                 return false;
             }
             if (!in0) {
-                t0 = Math.max(t0, d0 / (d0 - d1));
+                u0 = Math.min(u0, d1 / (d1 - d0));
             } else if (!in1) {
                 t1 = Math.min(t1, d0 / (d0 - d1));
             }
         }
-        if (!(t0 <= t1)) {
-            return false;
+        if (!(u0 + t1 >= 1)) {
+            return false; // the start moved past the end: the planes cut off different parts
         }
         for (int i = 0; i < stride; i++) {
             double a = p[from + i];
             double b = p[to + i];
-            front[i] = t0 == 0 ? a : a + t0 * (b - a);
+            front[i] = u0 == 1 ? a : b + u0 * (a - b);
             front[stride + i] = t1 == 1 ? b : a + t1 * (b - a);
         }
         count = 2;

@@ -153,6 +153,72 @@ class ClipperTest {
         assertFalse(clipper.clipLine(EYE, new double[] {-50, 0, -10, 0, -20, 0, -10, 0}, 0, 4), "wholly left");
     }
 
+    /**
+     * Two triangles that share an edge crossing a plane walk it opposite ways (A to B, B to A): the crossing is
+     * found from its inside end in both, so both clipped triangles hold the same vertex, to the bit, and meet
+     * without a crack or an overlap. From the previous vertex, one found it from A and the other from B.
+     */
+    @Test
+    void aSharedEdgeCrossesAtTheSameBitsWalkedEitherWay() {
+        java.util.Random random = new java.util.Random(7);
+        for (int i = 0; i < 200; i++) {
+            double z = -2 - 40 * random.nextDouble();
+            // A inside the window, B beyond its right side (x > -z); C below and D above the edge, both inside
+            double[] a = {-z * (0.8 * random.nextDouble() - 0.4), -z * (0.2 * random.nextDouble() - 0.1), z, random.nextDouble()};
+            double[] b = {-z * (1.2 + 3 * random.nextDouble()), -z * (0.2 * random.nextDouble() - 0.1), z - 3 * random.nextDouble(), random.nextDouble()};
+            double[] c = {-z * 0.3 * random.nextDouble(), -z * (0.5 + 0.3 * random.nextDouble()), z, random.nextDouble()};
+            double[] d = {-z * 0.3 * random.nextDouble(), -z * (0.5 + 0.3 * random.nextDouble()), z, random.nextDouble()};
+            c[1] = -c[1];
+            Clipper other = new Clipper(4);
+            int n = clipper.clipPolygon(EYE, concat(a, b, c), 0, 3);
+            int m = other.clipPolygon(EYE, concat(b, a, d), 0, 3);
+            int shared = 0;
+            for (int k = 0; k < n; k++) {
+                for (int j = 0; j < m; j++) {
+                    shared += java.util.Arrays.equals(java.util.Arrays.copyOfRange(clipper.vertices(), 4 * k, 4 * k + 4),
+                            java.util.Arrays.copyOfRange(other.vertices(), 4 * j, 4 * j + 4)) ? 1 : 0;
+                }
+            }
+            assertEquals(2, shared, "A and the crossing on A-B, in both, edge " + i);
+        }
+    }
+
+    private static double[] concat(double[]... vertices) {
+        double[] p = new double[4 * vertices.length];
+        for (int k = 0; k < vertices.length; k++) {
+            System.arraycopy(vertices[k], 0, p, 4 * k, 4);
+        }
+        return p;
+    }
+
+    /**
+     * A vertex far outside (x = 1e20): the crossings are found from the inside ends, so they land on the plane
+     * where the edges cross it. From the outside end, a + t (b - a) with t = 1 - 1e-19, which rounds to 1, gave
+     * the inside end itself: (0, 5, -10) twice, and a wrong diagonal edge.
+     */
+    @Test
+    void aVertexFarOutsideIsCutWhereItsEdgesCrossThePlane() {
+        Camera camera = Camera.perspective(-1, -1, 1, 1, -0.1, -200);
+        double[] p = {-5, -5, -10, 0, 1e20, -5, -10, 1, 0, 5, -10, 0};
+        int n = clipper.clipPolygon(camera, p, 0, 3);
+        assertEquals(4, n);
+        // From the last vertex: (0, 5) kept, then the edge to (-5, -5): inside, then the crossing from (-5, -5)
+        // toward (1e20, -5) at x = 10, then the crossing from (0, 5) toward (1e20, -5) at x = 10, y just under 5.
+        double[][] expected = {{-5, -5, -10, 0}, {10, -5, -10, 1.5e-19}, {10, 5, -10, 1e-19}, {0, 5, -10, 0}};
+        for (int k = 0; k < 4; k++) {
+            for (int i = 0; i < 4; i++) {
+                assertEquals(expected[k][i], at(k, i), 1e-12, "vertex " + k + " number " + i);
+            }
+        }
+        // A line drawn from the far end: its start is found from its inside end too.
+        assertTrue(clipper.clipLine(camera, new double[] {1e20, -5, -10, 1, 0, 5, -10, 0}, 0, 4));
+        assertEquals(10, at(0, 0), 1e-12);
+        assertEquals(5, at(0, 1), 1e-12);
+        assertEquals(1e-19, at(0, 3), 1e-30);
+        assertEquals(0, at(1, 0));
+        assertEquals(5, at(1, 1));
+    }
+
     @Test
     void aBigPolygonGrowsTheBuffers() {
         int n = 40;

@@ -160,6 +160,39 @@ class LitScenesTest {
         assertEquals(50 * 50, lit, "every direction looks at a wall of the box");
     }
 
+    /**
+     * A vertex at x = 1e20, far beyond the right side: the clipped triangle is the shape the plane cuts, pixel
+     * for pixel (those whose centres lie within 0.01 of an edge left aside): on the window plane z = -1 it is
+     * (-0.5, -0.5), (1e19, -0.5), (0, 0.5), cut at x' = 1. Before, its crossing on the upper edge came out at
+     * (0, 5, -10) again, and a diagonal from there to the lower right corner took away a quarter of it.
+     */
+    @Test
+    void aVertexFarOutsideTheViewIsClippedToItsShape() throws Exception {
+        PageCanvas canvas = draw("camera -1 -1 1 1 -0.1 -200", "ambient 1 1 1",
+                "polygon (-5, -5, -10) (1e20, -5, -10) (0, 5, -10)");
+        int compared = 0;
+        for (int j = 0; j < 650; j++) {
+            for (int i = 0; i < 650; i++) {
+                double x = i + 0.5;
+                double y = j + 0.5;
+                // panel = (x' + 1) * 325: bottom y = 162.5, top y = 487.5 (the edge falls 1e-19 over the window),
+                // left edge from (162.5, 162.5) to (325, 487.5)
+                double[] margins = {y - 162.5, 487.5 - y, x - (162.5 + (y - 162.5) / 2)};
+                boolean inside = true;
+                boolean near = false;
+                for (double m : margins) {
+                    inside &= m > 0;
+                    near |= Math.abs(m) < 0.01;
+                }
+                if (!near) {
+                    compared++;
+                    assertEquals(inside, rgb(canvas, i, j)[0] != 0, "pixel " + i + ", " + j);
+                }
+            }
+        }
+        assertTrue(compared > 650 * 640, "compared " + compared);
+    }
+
     @Test
     void theCameraIsCheckedAtItsLine() throws Exception {
         assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0",
