@@ -2,7 +2,6 @@ package simpview.compare;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 /**
  * One submitted picture in a batch: what it was compared with and how it
@@ -178,24 +177,14 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     }
 
     /**
-     * What a picture that fails is told of its file's format, known by its name's ending: a JPEG's or a GIF's
-     * colours are not those it was drawn in, so a right page so saved can fail, and the student would look for the
-     * fault in their renderer. "" for a PNG or a BMP, and for a picture that does not fail.
+     * What a picture that fails is told of its file's format ({@link PictureFormat#failingAdvice}, as a single
+     * picture's {@code compare} tells it): "" for a PNG or a BMP, and for a picture that does not fail.
      */
     public String formatAdvice() {
         if (result != Result.FAIL) {
             return "";
         }
-        String name = file.toLowerCase(Locale.ROOT);
-        if (name.endsWith(".jpg") || name.endsWith(".jpeg")) {
-            return "JPEG is lossy: saving a page as JPEG changes its colours near every edge, so even a right page "
-                    + "can fail; save it as PNG and hand that in";
-        }
-        if (name.endsWith(".gif")) {
-            return "GIF holds at most 256 colours: saving a page as GIF changes (or dithers) the others, so even a "
-                    + "right page can fail; save it as PNG and hand that in";
-        }
-        return "";
+        return PictureFormat.of(file).failingAdvice();
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

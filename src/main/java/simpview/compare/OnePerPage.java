@@ -11,10 +11,12 @@ import java.util.function.Predicate;
  * Each page counts once per submission. Every picture is compared and listed, but of the pictures of one
  * page (or scene, or first-assignment panel) in one submission only one is scored: the one whose name is
  * the page's name and nothing else (page3.png, Page_3.png; not page3 copy.png, page3_v2.png or
- * old_page3.png), or, when none or several are, the first of those in the table's order (natural order of
- * their paths). The others are marked {@link BatchRow#notCounted}: they score nothing and are worth nothing,
- * so a submission's total is never more than the pages asked for are worth. The rule goes by names alone,
- * so handing in more pictures of a page never raises its score.
+ * old_page3.png); of those named equally well, the one in the truest format ({@link PictureFormat}: PNG, BMP,
+ * GIF, JPEG), so a right page3.png is not failed for the page3.jpg beside it; and of those, the first in the
+ * table's order (natural order of their paths). The others are marked {@link BatchRow#notCounted}: they score
+ * nothing and are worth nothing, so a submission's total is never more than the pages asked for are worth.
+ * The rule goes by file names alone, never by results, so handing in more pictures of a page never raises its
+ * score.
  */
 public final class OnePerPage {
 
@@ -48,7 +50,7 @@ public final class OnePerPage {
             if (!row.target().isEmpty()) {
                 List<String> page = List.of(submission.apply(row.file()), row.page());
                 String first = counting.get(page);
-                if (first == null || !plainlyNamed.test(first) && plainlyNamed.test(row.file())) {
+                if (first == null || before(row.file(), first, plainlyNamed)) {
                     counting.put(page, row.file());
                 }
             }
@@ -57,16 +59,38 @@ public final class OnePerPage {
         for (BatchRow row : rows) {
             String counts = row.target().isEmpty() ? row.file()
                     : counting.get(List.of(submission.apply(row.file()), row.page()));
-            marked.add(counts.equals(row.file()) ? row : row.notCounted(why(counts, row.page(), plainlyNamed)));
+            marked.add(counts.equals(row.file())
+                    ? row : row.notCounted(why(counts, row.file(), row.page(), plainlyNamed)));
         }
         return marked;
     }
 
-    /** Why {@code counts} is the picture of {@code target} that counts: "page3.png counts for page 3 instead: ...". */
-    private static String why(String counts, String target, Predicate<String> plainlyNamed) {
+    /** Whether {@code file} counts over {@code first}, a picture of the same page before it by name. */
+    private static boolean before(String file, String first, Predicate<String> plainlyNamed) {
+        if (plainlyNamed.test(file) != plainlyNamed.test(first)) {
+            return plainlyNamed.test(file);
+        }
+        return PictureFormat.of(file).truerThan(PictureFormat.of(first));
+    }
+
+    /**
+     * Why {@code counts} is the picture of {@code target} that counts, and not {@code file}: "page3.png counts for
+     * page 3 instead: ...", giving the reason that decided between the two.
+     */
+    private static String why(String counts, String file, String target, Predicate<String> plainlyNamed) {
         String page = GradescopeResults.name(target);
-        return counts + " counts for " + page + " instead: "
-                + (plainlyNamed.test(counts) ? "its name is the page's name and nothing else"
-                        : "no picture's name is the page's name alone, and it is the first by name");
+        boolean plain = plainlyNamed.test(counts);
+        String reason;
+        if (plain && !plainlyNamed.test(file)) {
+            reason = "its name is the page's name and nothing else";
+        } else {
+            PictureFormat format = PictureFormat.of(counts);
+            PictureFormat other = PictureFormat.of(file);
+            String named = plain ? "both are named the page's name and nothing else"
+                    : "no picture's name is the page's name alone";
+            reason = format.truerThan(other) ? named + ", and " + format.whyOver(other)
+                    : named + ", and it is the first by name";
+        }
+        return counts + " counts for " + page + " instead: " + reason;
     }
 }

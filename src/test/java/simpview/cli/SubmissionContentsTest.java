@@ -76,6 +76,27 @@ class SubmissionContentsTest {
         assertTrue(check.out().endsWith("3 of 3 pictures pass; 3 pictures not counted\n"), check.out());
     }
 
+    /** A right page as PNG beside the same page as JPEG: both are named the page alone, and the exact one counts. */
+    @Test
+    void aPngCountsOverAJpegOfTheSamePageNamedAsWell() throws Exception {
+        Path sub = dir.resolve("a1");
+        png(sub.resolve("a1-page3.png"), Assignment1.render(3, PageContext.defaults()));
+        ImageIO.write(Assignment1.render(3, PageContext.defaults()), "jpg", sub.resolve("a1-page3.jpg").toFile());
+        png(sub.resolve("page2.png"), page(2));
+        ImageIO.write(page(2), "jpg", sub.resolve("page2.jpg").toFile());
+
+        CliRun check = CliRun.of("check", sub.toString(), "--assignment", "1", "--pages", "3");
+        assertEquals(ExitCode.OK, check.exitCode(), "the PNG counts, and passes: " + check.out() + check.err());
+        assertTrue(check.out().contains("a1-page3.jpg: not counted, a1-page3.png counts for A1 page 3 (seed 361) "
+                + "instead: both are named the page's name and nothing else, and a PNG is exact, a JPEG is not\n"),
+                check.out());
+
+        CliRun eight = CliRun.of("check", sub.toString(), "--pages", "2");
+        assertEquals(ExitCode.OK, eight.exitCode(), eight.out() + eight.err());
+        assertTrue(eight.out().contains("page2.jpg: not counted, page2.png counts for page 2 (seed 361) instead: both "
+                + "are named the page's name and nothing else, and a PNG is exact, a JPEG is not\n"), eight.out());
+    }
+
     @Test
     void aMissingPageNamesTheFileHandedInInAFormatSimpviewDoesNotRead() throws Exception {
         Path class_ = dir.resolve("class");

@@ -55,6 +55,43 @@ class OnePerPageTest {
                 BatchTable.summary(marked));
     }
 
+    /**
+     * Of pictures named the page equally well, the truest format counts: PNG, then BMP (exact too), then GIF (256
+     * colours), then JPEG (lossy), whatever their order by name; a name that is the page's alone still comes first.
+     */
+    @Test
+    void ofPicturesNamedAsWellThePngCountsOverABmpAGifAndAJpeg() throws Exception {
+        int[] wrong = GradingFixtures.stripes(2);
+        List<BatchRow> rows = List.of(
+                GradingFixtures.row("ann/page3.bmp", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("ann/page3.gif", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("ann/page3.jpg", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("ann/page3.png", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("bob/page3.gif", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("bob/page3.jpeg", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("cy/page3 copy.png", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("cy/page3.jpg", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("dee/page3.PNG", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("dee/page3_v2.bmp", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null));
+        Set<String> plain = Set.of("ann/page3.bmp", "ann/page3.gif", "ann/page3.jpg", "ann/page3.png", "bob/page3.gif",
+                "bob/page3.jpeg", "cy/page3.jpg");
+        List<BatchRow> marked = OnePerPage.bySubmission(rows, plain::contains, file -> false);
+        assertEquals(List.of("ann/page3.png", "bob/page3.gif", "cy/page3.jpg", "dee/page3.PNG"),
+                marked.stream().filter(BatchRow::counts).map(BatchRow::file).toList());
+        String both = "ann/page3.png counts for page 3 (seed 361) instead: both are named the page's name and nothing "
+                + "else, and ";
+        assertEquals(both + "a PNG is what simpview asks for (a BMP is exact too)", marked.get(0).notCounted());
+        assertEquals(both + "a PNG is exact, a GIF is not", marked.get(1).notCounted());
+        assertEquals(both + "a PNG is exact, a JPEG is not", marked.get(2).notCounted());
+        assertEquals("bob/page3.gif counts for page 3 (seed 361) instead: both are named the page's name and nothing "
+                + "else, and a GIF changes only colours past 256 of them, a JPEG changes those near every edge",
+                marked.get(5).notCounted());
+        assertEquals("cy/page3.jpg counts for page 3 (seed 361) instead: its name is the page's name and nothing else",
+                marked.get(6).notCounted(), "the name decides before the format");
+        assertEquals("dee/page3.PNG counts for page 3 (seed 361) instead: no picture's name is the page's name alone, "
+                + "and a PNG is what simpview asks for (a BMP is exact too)", marked.get(9).notCounted());
+    }
+
     @Test
     void gradescopesTotalIsWhatThePagesAskedForAreWorth() throws Exception {
         List<Wanted> wanted = List.of(new Wanted("3 (seed 361)", ONE), new Wanted("4", ONE));
