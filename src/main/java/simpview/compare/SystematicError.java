@@ -34,6 +34,22 @@ import java.util.Locale;
  * here, never slack: a panel one pixel off passes with slack, and is still
  * a panel one pixel off.
  *
+ * <p>A turn is named only where it can be told apart at all: simpview's
+ * own panel, turned (and moved) that way, must itself differ from simpview's
+ * panel on more than {@code 1 - MIN_SHARE} of the pixels it matches. A
+ * drawing that is (nearly) symmetric under a turn, like the first
+ * assignment's starburst upside down and a pixel up (y to 300 - y, its centre
+ * 150 onto itself), is the same picture turned but for how ties round: a
+ * student's panel that rounds them the other way then matches the turn
+ * best (on the course's starburst, 99.96 % against 99.26 % as it stands)
+ * though their y runs the right way, and "check how you turn y" would send
+ * them after a mistake they did not make. By the hint's own measure a turn
+ * whose picture matches simpview's on {@link #MIN_SHARE} is no other
+ * picture. A move alone is not held to this: a move never lays a drawing on
+ * itself (a turn does, for every drawing symmetric under it), and the
+ * mistake it names, a panel a row off ({@code row = 650 - y}), changes only
+ * the edges, 0.68 % of page 6, which is just what it is there to find.
+ *
  * @param turn how the panel is turned over or mirrored
  * @param right how many pixels right of simpview's the (turned) panel lies; negative: left
  * @param down how many pixels below; negative: above
@@ -142,7 +158,15 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         ways.sort(Comparator.comparingDouble(w -> w.rate));
         Way best = null;
         double bestRate = Double.POSITIVE_INFINITY;
-        for (Way way : ways.subList(0, KEPT)) {
+        int kept = 0;
+        for (Way way : ways) {
+            if (kept == KEPT) {
+                break;
+            }
+            if (!toldApart(ours, n, way, tolerance)) {
+                continue; // a turn that lays simpview's panel on itself: see the class's comment
+            }
+            kept++;
             double rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance, bestRate);
             if (rate < bestRate) {
                 bestRate = rate;
@@ -163,6 +187,9 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                     continue;
                 }
                 Way step = new Way(best.turn, right, down);
+                if (!toldApart(ours, n, step, tolerance)) {
+                    continue;
+                }
                 double rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, bestRate);
                 if (rate < bestRate) {
                     bestRate = rate;
@@ -195,6 +222,20 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         return new SystematicError(best.turn, best.right, best.down, swap, shareThere,
                 1 - (double) wrongAsIs / ((long) n * n), tolerance);
+    }
+
+    /**
+     * Whether a way can be told from simpview's panel as it stands: a move alone always can; a turn (and its
+     * move) only where it changes more than {@code 1 - MIN_SHARE} of the pixels it matches of simpview's own
+     * panel beyond the tolerance, so that a panel symmetric under it is never called turned (see the class's
+     * comment).
+     */
+    private static boolean toldApart(int[] ours, int n, Way way, int tolerance) {
+        if (way.turn == Turn.NONE) {
+            return true;
+        }
+        long[] self = wrong(ours, ours, n, way, false, tolerance);
+        return self[0] > (1 - MIN_SHARE) * self[1];
     }
 
     /**

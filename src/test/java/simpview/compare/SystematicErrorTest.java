@@ -174,6 +174,44 @@ class SystematicErrorTest {
         assertNull(SystematicError.find(ours, mostlyWrong, N, 8));
     }
 
+    /**
+     * The first assignment's starburst (page 1) is symmetric under y to 300 - y (upside down, then a pixel up):
+     * turned so, simpview's antialiased panel differs from itself only where ties round (0.7 % of it). A panel
+     * drawn so, as a student who rounds those ties the other way draws it with y the right way up, is not called
+     * upside down; a panel whose drawing the turn does change (page 2's parallelogram) still is.
+     */
+    @Test
+    void aTurnThatLaysSimpviewsPanelOnItselfIsNotNamed() {
+        int n = 300;
+        int[] starburst = firstAssignmentPanel(1, 4);
+        int[] turned = made(starburst, n, "UPSIDE_DOWN", 0, -1, false);
+        assertTrue(within(starburst, turned, 8) < 1 - SystematicError.MIN_WRONG, "it differs enough to be looked at");
+        assertTrue(within(starburst, turned, 8) > SystematicError.MIN_SHARE, "but is nearly the same picture");
+        SystematicError found = SystematicError.find(starburst, turned, n, 8);
+        assertTrue(found == null || found.turn() == Turn.NONE, found == null ? "" : found.hint(n));
+
+        int[] parallelogram = firstAssignmentPanel(2, 4);
+        SystematicError over = SystematicError.find(parallelogram, made(parallelogram, n, "UPSIDE_DOWN", 0, -1, false),
+                n, 8);
+        assertNotNull(over);
+        assertEquals(Turn.UPSIDE_DOWN, over.turn());
+        assertEquals(-1, over.down());
+    }
+
+    /** Panel k of the first assignment's page, 300x300 0xRRGGBB pixels row by row from the top. */
+    private static int[] firstAssignmentPanel(int page, int k) {
+        BufferedImage image = Assignment1.render(page, PageContext.defaults());
+        int n = 300;
+        int[] panel = new int[n * n];
+        int left = k % 2 == 1 ? 50 : 400;
+        int top = k <= 2 ? 50 : 400;
+        image.getRGB(left, top, n, n, panel, 0, n);
+        for (int i = 0; i < panel.length; i++) {
+            panel[i] &= 0xFFFFFF;
+        }
+        return panel;
+    }
+
     @Test
     void aFirstAssignmentPanelIsLookedAtAtItsOwnSize() {
         BufferedImage page = Assignment1.render(2, PageContext.defaults());
