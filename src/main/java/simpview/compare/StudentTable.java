@@ -69,10 +69,16 @@ public final class StudentTable {
                 said = hint;
             }
         }
-        Set<String> notes = new LinkedHashSet<>(); // a page of panels: its picture's note once
+        Set<String> notes = new LinkedHashSet<>(); // a page of panels: its picture's note (its format) once
         for (BatchRow row : rows) {
-            row.notes().forEach(note -> notes.add("note: " + row.file() + (isPanel(row) ? ""
-                    : " (" + GradescopeResults.name(row.target()) + ")") + ": " + note + "\n"));
+            DiffRegion patch = row.solidPatch();
+            String patchNote = patch == null ? null : ComparisonReport.solidPatchNote(patch);
+            for (String note : row.notes()) {
+                // a panel's own patch is said of that panel, by name
+                boolean ofThisRow = !isPanel(row) || note.equals(patchNote);
+                notes.add("note: " + row.file() + (ofThisRow ? " (" + GradescopeResults.name(row.target()) + ")" : "")
+                        + ": " + note + "\n");
+            }
         }
         notes.forEach(out::append);
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
