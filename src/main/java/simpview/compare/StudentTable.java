@@ -97,18 +97,25 @@ public final class StudentTable {
         }
         List<BatchRow> counted = rows.stream()
                 .filter(r -> r.counts() && r.result() != BatchRow.Result.SKIPPED).toList();
-        // a page of the first assignment is a row per panel: its panels are counted as panels, other pictures whole
-        List<BatchRow> panels = counted.stream().filter(StudentTable::isPanel).toList();
-        List<BatchRow> pictures = counted.stream().filter(r -> !isPanel(r)).toList();
-        List<String> tallies = new ArrayList<>();
-        if (!pictures.isEmpty() || panels.isEmpty()) {
-            // "1 of 1 pictures pass": a tally, in the plural whatever its count
-            tallies.add(passing(pictures) + " of " + pictures.size() + " pictures pass");
+        // Every picture is counted whole, a page of the first assignment too (it passes when its four panels do),
+        // and one that could not be checked is one that does not pass: so the tally is of what was handed in.
+        // The first assignment's pages are also counted by their panels, which is how they are scored.
+        Map<String, Boolean> passes = new LinkedHashMap<>();
+        for (BatchRow row : counted) {
+            passes.merge(row.file(), row.result() == BatchRow.Result.PASS, Boolean::logicalAnd);
         }
+        long unchecked = counted.stream().filter(r -> !r.compared()).map(BatchRow::file).distinct().count();
+        List<BatchRow> panels = counted.stream().filter(StudentTable::isPanel).toList();
+        List<String> tallies = new ArrayList<>();
+        // "1 of 1 pictures pass": a tally, in the plural whatever its count
+        tallies.add(passes.values().stream().filter(p -> p).count() + " of " + passes.size() + " pictures pass");
         if (!panels.isEmpty()) {
             tallies.add(passing(panels) + " of " + panels.size() + " panels pass ("
                     + Count.of(panels.stream().map(BatchRow::file).distinct().count(), "page")
                     + " of the first assignment)");
+        }
+        if (unchecked > 0) {
+            tallies.add(Count.of(unchecked, "picture") + " could not be checked (said above)");
         }
         out.append(String.format(Locale.ROOT, "%s%s%s%s%n", String.join("; ", tallies),
                 notCounted.isEmpty() ? "" : "; " + Count.of(notCounted.size(), "picture") + " not counted",

@@ -278,6 +278,34 @@ class FirstAssignmentBatchTest {
         }
     }
 
+    /**
+     * check's last line counts every picture handed in, one that could not be checked among those that do not
+     * pass and said as such: four right pages and one saved at 700x700 are 4 of 5 pictures, not "0 of 1 pictures
+     * pass" beside 16 panels that all pass; the eight pages' pictures are counted the same way.
+     */
+    @Test
+    void checksLastLineCountsAPictureThatCouldNotBeCheckedAsOneOfThoseHandedIn() throws Exception {
+        Path mine = dir.resolve("mine");
+        for (int p = 1; p <= 4; p++) {
+            png(mine.resolve("a1-page" + p + ".png"), page(p));
+        }
+        BufferedImage small = new BufferedImage(700, 700, BufferedImage.TYPE_INT_RGB);
+        small.getGraphics().drawImage(page(5), 0, 0, 700, 700, null);
+        png(mine.resolve("a1-page5.png"), small);
+        CliRun check = CliRun.of("check", mine.toString(), "--assignment", "1");
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        assertTrue(check.out().endsWith("\n4 of 5 pictures pass; 16 of 16 panels pass (4 pages of the first "
+                + "assignment); 1 picture could not be checked (said above)\n"), check.out());
+
+        Path eight = dir.resolve("eight");
+        png(eight.resolve("page4.png"), new simpview.pages.PageRenderer().renderImage(4, PageContext.defaults()));
+        png(eight.resolve("page5.png"), small);
+        CliRun pages = CliRun.of("check", eight.toString(), "--pages", "4-5");
+        assertEquals(ExitCode.SCENE_ERROR, pages.exitCode(), pages.out());
+        assertTrue(pages.out().endsWith("\n1 of 2 pictures pass; 1 picture could not be checked (said above)\n"),
+                pages.out());
+    }
+
     @Test
     void whereTheEightPagesAreAskedForAFirstAssignmentPageIsNeitherGradedNorAskedOfOthers() throws Exception {
         Path subs = dir.resolve("subs");
@@ -389,8 +417,8 @@ class FirstAssignmentBatchTest {
         CliRun both = CliRun.of("check", mixed.toString());
         assertEquals(ExitCode.OK, both.exitCode(), both.out() + both.err());
         assertFalse(both.out().contains("no picture of"), both.out());
-        assertTrue(both.out().endsWith("\n1 of 1 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"),
-                "the pictures and the panels counted each as what they are: " + both.out());
+        assertTrue(both.out().endsWith("\n2 of 2 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"),
+                "every picture counted whole, the first assignment's page also by its panels: " + both.out());
         assertFalse(both.err().contains("every picture in"), "not every picture is a first-assignment page: " + both.err());
     }
 

@@ -79,7 +79,7 @@ class FolderCheckWindowTest extends WindowTestCase {
             assertTrue(table.matches("(?s).*\na1-page2\\.png +A1 page 2 panel " + k + " .*PASS +100\\.00 % +none\n.*"), table);
         }
         // no picture is of the eight pages: they are not asked for (check FOLDER without --pages)
-        assertTrue(table.endsWith("0 of 1 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"), table);
+        assertTrue(table.endsWith("1 of 2 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"), table);
     }
 
     /** Drops the folder on the window (opened here) and waits for its table. */
