@@ -28,6 +28,7 @@ import simpview.compare.PanelGridComparison;
 import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
+import simpview.compare.PictureFormat;
 import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
@@ -300,6 +301,7 @@ public final class CompareCommand implements Callable<Integer> {
                 awaitHint(hint));
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
+        sayFormat(out, report.passes());
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
@@ -311,6 +313,17 @@ public final class CompareCommand implements Callable<Integer> {
             }
         }
         return report.passes() ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /**
+     * What a picture that fails is told of its format, as check tells it ({@link PictureFormat#failingAdvice}): a
+     * right page saved as JPEG fails, and without this the student would look for the fault in their renderer.
+     */
+    private void sayFormat(PrintWriter out, boolean passes) {
+        String advice = passes ? "" : PictureFormat.of(image.toString()).failingAdvice();
+        if (!advice.isEmpty()) {
+            out.println("note: " + advice);
+        }
     }
 
     /** The hint the search found; an error of its own is the program's and is thrown as such. */
@@ -398,6 +411,7 @@ public final class CompareCommand implements Callable<Integer> {
                         + ComparisonReport.solidPatchNote(patch));
             }
         }
+        sayFormat(out, passes);
         int[][] ourPanels = new int[panels.length][];
         int[][] theirPanels = new int[panels.length][];
         for (int k = 0; k < panels.length; k++) {

@@ -130,6 +130,48 @@ public class CompareCommandTest {
                 run.out());
     }
 
+    /**
+     * A right page saved as JPEG fails (its colours change near every edge): compare says JPEG is lossy, as check
+     * does, for the eight pages and the first assignment's alike, so the student does not hunt for the fault in
+     * their renderer. A PNG that fails is told nothing of its format.
+     */
+    @Test
+    void aFailingJpegIsToldJpegIsLossy() throws Exception {
+        Path jpeg = jpeg("page2.jpg", page(2));
+        CliRun run = CliRun.of("compare", jpeg.toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nnote: JPEG is lossy: saving a page as JPEG changes its colours near every edge, "
+                + "so even a right page can fail; save it as PNG and hand that in\n"), run.out());
+
+        Path a1 = jpeg("a1-page3.jpg", simpview.pages.Assignment1.render(3, PageContext.defaults()));
+        CliRun first = CliRun.of("compare", a1.toString(), "--assignment", "1", "--page", "3");
+        assertEquals(ExitCode.SCENE_ERROR, first.exitCode(), first.out());
+        assertTrue(first.out().contains("\nnote: JPEG is lossy: "), first.out());
+
+        CliRun png = CliRun.of("compare", png("page3.png", page(3)).toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, png.exitCode(), png.out());
+        assertFalse(png.out().contains("lossy"), png.out());
+    }
+
+    /**
+     * The picture as JPEG at quality 95, as an image program saves it "at high quality": its margins stay white
+     * enough for the panel to be found (at ImageIO's 75 they do not), and its colours still change near edges.
+     */
+    private Path jpeg(String name, BufferedImage image) throws Exception {
+        Path file = dir.resolve(name);
+        javax.imageio.ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
+        javax.imageio.ImageWriteParam param = writer.getDefaultWriteParam();
+        param.setCompressionMode(javax.imageio.ImageWriteParam.MODE_EXPLICIT);
+        param.setCompressionQuality(0.95f);
+        try (javax.imageio.stream.ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile())) {
+            writer.setOutput(out);
+            writer.write(null, new javax.imageio.IIOImage(image, null, null), param);
+        } finally {
+            writer.dispose();
+        }
+        return file;
+    }
+
     @Test
     void oneChannelOffByTwoIsNeverIdenticalButAlwaysWithinEight() throws Exception {
         BufferedImage page = page(2);
