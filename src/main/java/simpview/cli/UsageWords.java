@@ -27,6 +27,8 @@ final class UsageWords {
             new String[] {"' is not a long", "' is not a whole number"},
             new String[] {"' is not a double", "' is not a number"},
             new String[] {"' is not a float", "' is not a number"});
+    /** A whole number in digits, as a user writes one: one that is not a long or an int is out of range. */
+    private static final Pattern WHOLE = Pattern.compile("[-+]?[0-9]+");
 
     private UsageWords() {
     }
@@ -57,10 +59,34 @@ final class UsageWords {
         }
         for (String[] type : TYPES) {
             if (message.endsWith(type[0])) {
-                return message.substring(0, message.length() - type[0].length()) + type[1];
+                String before = message.substring(0, message.length() - type[0].length());
+                String range = outOfRange(before, type[0]);
+                return before + (range.isEmpty() ? type[1] : range);
             }
         }
         return message;
+    }
+
+    /**
+     * What a whole number too large (or too small) for its type is told: for a long (a seed), "' is out of range:
+     * give a whole number from -9223372036854775808 to 9223372036854775807", every long being a seed. It is a
+     * whole number, and "not a whole number" would send the user looking for a typo. "" when {@code before}
+     * ("... '--seed': '12x") does not end in one.
+     */
+    private static String outOfRange(String before, String type) {
+        String value = before.substring(before.lastIndexOf('\'') + 1);
+        if (!WHOLE.matcher(value).matches()) {
+            return "";
+        }
+        if (type.endsWith("a long")) {
+            return "' is out of range: give a whole number from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE;
+        }
+        if (type.endsWith("an int")) {
+            // an int option (a page, a count of threads) takes a range of its own, said when a value is outside it
+            return "' is out of range: far " + (value.startsWith("-") ? "smaller" : "larger") + " than any value it "
+                    + "takes";
+        }
+        return "";
     }
 
     /** The options named in {@code text}, each once: "--page, --all or --scene". */

@@ -133,6 +133,15 @@ public class MainCommandLineTest {
         "render --all --threads abc --out-dir o | simpview: Invalid value for option '--threads': 'abc' is not a "
                 + "whole number",
         "--seed x | simpview: Invalid value for option '--seed': 'x' is not a whole number",
+        // a whole number too large for the option is out of range, not "not a whole number"
+        "render --assignment 1 --page 3 --seed 9223372036854775808 --out o.png | simpview: Invalid value for option "
+                + "'--seed': '9223372036854775808' is out of range: give a whole number from -9223372036854775808 to "
+                + "9223372036854775807",
+        "compare x.png --page 2 --seed -9223372036854775809 | simpview: Invalid value for option '--seed': "
+                + "'-9223372036854775809' is out of range: give a whole number from -9223372036854775808 to "
+                + "9223372036854775807",
+        "render --all --threads 99999999999 --out-dir o | simpview: Invalid value for option '--threads': "
+                + "'99999999999' is out of range: far larger than any value it takes",
         "check a b | simpview: 'b': one argument more than simpview check takes",
         "check a b c | simpview: 'b', 'c': more arguments than simpview check takes"})
     void theParsersWordsArePutPlainly(String line, String said) {
