@@ -3,6 +3,7 @@ package simpview.inspect;
 import java.util.List;
 import java.util.Locale;
 import simpview.geometry.Vertex;
+import simpview.pages.A1Layout;
 import simpview.pages.A1Rule;
 import simpview.raster.AntialiasedLineRenderer;
 
@@ -217,7 +218,7 @@ public final class A1Report {
                 .append(rule == A1Rule.SPEC ? "" : ", by " + rule.label()).append("; image pixel ")
                 .append(column).append(", row ").append(row).append("): rgb ").append(rgb(argb)).append('\n');
         if (panel == 0) {
-            sb.append("in the page's white margins: nothing is drawn here\n");
+            sb.append("in ").append(A1Layout.whiteAround(column, row)).append(": nothing is drawn here\n");
             return sb.toString();
         }
         sb.append("panel ").append(panel).append(" (").append(drawer).append("), panel pixel (").append(panelX)

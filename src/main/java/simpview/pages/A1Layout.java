@@ -41,6 +41,28 @@ public final class A1Layout {
         return 0;
     }
 
+    /**
+     * Where image pixel (x, y), rows running down, lies when no panel holds it: "the page's white margins" (the
+     * 50 px around the four panels), "the white gutter between panels 1 and 2" (the 50 px between two panels),
+     * or "the white gutter between the four panels" (where the two gutters cross). A pixel between two panels
+     * is not in a margin, and a student looking there for the page's edge would look in the wrong place.
+     */
+    public static String whiteAround(int x, int y) {
+        int size = 2 * PANEL + 3 * MARGIN;
+        if (x < MARGIN || y < MARGIN || x >= size - MARGIN || y >= size - MARGIN) {
+            return "the page's white margins";
+        }
+        boolean acrossGutter = x >= MARGIN + PANEL && x < 2 * MARGIN + PANEL; // between the columns of panels
+        boolean downGutter = y >= MARGIN + PANEL && y < 2 * MARGIN + PANEL; // between the rows
+        if (acrossGutter && downGutter) {
+            return "the white gutter between the four panels";
+        }
+        if (acrossGutter) {
+            return y < MARGIN + PANEL ? "the white gutter between panels 1 and 2" : "the white gutter between panels 3 and 4";
+        }
+        return x < MARGIN + PANEL ? "the white gutter between panels 1 and 3" : "the white gutter between panels 2 and 4";
+    }
+
     /** Paints the page white with its four black panels and gives the panels, 1 to 4 at [0] to [3]. */
     public static Drawable[] paint(PageCanvas canvas) {
         ImageDrawable image = new ImageDrawable(canvas.image());

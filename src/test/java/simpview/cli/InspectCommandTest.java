@@ -253,6 +253,27 @@ class InspectCommandTest {
         assertTrue(page.err().contains("--page must be 1 to 5 for the first assignment"), page.err());
     }
 
+    /**
+     * A white pixel of the first assignment's page outside its panels is in the page's margins (the 50 px around
+     * the four) or in a gutter between two panels, named; page coordinates, y up from the bottom-left.
+     */
+    @Test
+    void aPixelBetweenPanelsIsInAGutterNotTheMargins() {
+        String[][] places = {
+            {"350,400", "the white gutter between panels 1 and 2"}, // x 350-399 between the columns, y in the top row
+            {"375,200", "the white gutter between panels 3 and 4"},
+            {"200,375", "the white gutter between panels 1 and 3"},
+            {"600,360", "the white gutter between panels 2 and 4"},
+            {"370,370", "the white gutter between the four panels"},
+            {"20,400", "the page's white margins"},
+            {"375,720", "the page's white margins"}}; // above the gutter, in the top margin
+        for (String[] place : places) {
+            CliRun run = CliRun.of("inspect", "--assignment", "1", "--page", "2", "--at", place[0]);
+            assertEquals(0, run.exitCode(), run.err());
+            assertTrue(run.out().contains("\nin " + place[1] + ": nothing is drawn here\n"), place[0] + ": " + run.out());
+        }
+    }
+
     /** A small JSON reader: objects, arrays, strings, numbers (as Double), true, false, null. */
     static final class MiniJson {
         private final String s;
