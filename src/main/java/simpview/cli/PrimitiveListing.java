@@ -7,6 +7,7 @@ import simpview.pages.ListedPrimitive;
 import simpview.pages.Page;
 import simpview.pages.PageContext;
 import simpview.pages.PolygonTestPage;
+import simpview.surface.Colors;
 
 /**
  * What {@code render --page N --primitives F} writes: the lines and
@@ -35,6 +36,14 @@ final class PrimitiveListing {
         out.append("# x right, y up from the panel's bottom-left pixel, in pixels; colours 0 to 1; each number the\n");
         out.append("# shortest decimal that reads back as simpview's double\n");
         out.append("# ").append(panels(page)).append('\n');
+        if (page instanceof LineTestPage && page.usesSeed() && !primitives.isEmpty()) {
+            // The random colours are whole levels (A1Lines.wholeLevels): say so, so that a student blends the
+            // colour printed and gets simpview's bytes, and knows the byte a whole pixel of it gets.
+            double r = primitives.get(0).vertices().get(0).r();
+            out.append("# each colour channel is a whole number of 255ths, k / 255 (the first line's red, ")
+                    .append(r).append(", is ").append(Colors.toByte(r)).append(" / 255): k is the byte a pixel the\n")
+                    .append("# line covers whole gets; the antialiased panel blends this colour, c * colour + (1 - c) * old\n");
+        }
         for (ListedPrimitive p : primitives) {
             out.append(p.text()).append('\n');
         }

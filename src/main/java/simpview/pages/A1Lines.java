@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.util.Random;
 import simpview.geometry.Vertex;
+import simpview.surface.Colors;
 
 /**
  * The lines of one of the first assignment's line tests (SPEC Part 3, pages
@@ -90,7 +91,8 @@ public final class A1Lines {
      * Page 3: 30 lines with integer endpoints uniform in 0..299, each a
      * random colour. Drawn from {@code java.util.Random(seed)} in this order,
      * line by line: x0, y0, x1, y1 ({@code nextInt(300)}), then r, g, b
-     * ({@code nextDouble()}).
+     * ({@code nextDouble()}), each channel made a whole number of 255ths by
+     * {@link #wholeLevels}.
      */
     public static A1Lines random(long seed) {
         Random random = new Random(seed);
@@ -100,9 +102,21 @@ public final class A1Lines {
             int y0 = random.nextInt(RANGE);
             int x1 = random.nextInt(RANGE);
             int y1 = random.nextInt(RANGE);
-            put(n, i, x0, y0, x1, y1, random.nextDouble(), random.nextDouble(), random.nextDouble());
+            put(n, i, x0, y0, x1, y1, wholeLevels(random.nextDouble()), wholeLevels(random.nextDouble()),
+                    wholeLevels(random.nextDouble()));
         }
         return new A1Lines(n);
+    }
+
+    /**
+     * A random channel d in [0, 1) as the colour the page draws: k / 255, k = round(255 d), the byte every
+     * pixel of it gets where it is drawn whole. With d itself the antialiased panel blended the byte k (as the
+     * pixels hold it) while SPEC's formula, {@code c * colour + (1 - c) * old}, and a student given d (the
+     * primitives file printed it) blend d: one level apart on 3 % of that panel. With k / 255 the colour
+     * printed, the colour blended and the formula agree; every pixel is what it was (k is the same k).
+     */
+    static double wholeLevels(double d) {
+        return Colors.toByte(d) / 255.0;
     }
 
     private static void put(double[] n, int i, double x0, double y0, double x1, double y1,

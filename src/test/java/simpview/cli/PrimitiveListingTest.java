@@ -88,6 +88,14 @@ public class PrimitiveListingTest {
                 + "0 triangles\n"), text);
         List<double[]> lines = read(text);
         assertEquals(4 * 30, lines.size(), "the 30 lines in each of the four panels");
+        // The colours are whole levels, k / 255, and say so: blended as printed they give simpview's bytes.
+        assertTrue(text.contains("\n# each colour channel is a whole number of 255ths, k / 255 (the first line's red, "),
+                text);
+        for (double[] line : lines) {
+            for (int channel : new int[] {4, 5, 6, 10, 11, 12}) {
+                assertEquals(level(line[channel]) / 255.0, line[channel], "printed as simpview draws it: " + line[channel]);
+            }
+        }
         int n = 300;
         int[] drawn = new int[n * n];
         for (double[] line : lines) {

@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import simpview.geometry.Vertex;
+import simpview.pages.A1Lines;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
@@ -102,6 +104,44 @@ class A1HistoryTest {
             assertTrue(drawn >= 20, "page " + n + ": only " + drawn + " drawn pixels sampled");
         }
         assertTrue(blends > 50, "blends checked: " + blends);
+    }
+
+    /**
+     * A student given page 3's lines as render --primitives prints them blends each line's colour, a double, by
+     * SPEC's formula; simpview's antialiased panel must be what they get, at every blended write. The colours
+     * are whole levels (k / 255), so blending the double and the byte agree: with the raw random doubles a third
+     * of the writes or so came out a level off, 3 % of the panel.
+     */
+    @Test
+    void theRandomLinesBlendTheColourThePrimitivesPrint() {
+        for (long seed : new long[] {SEED, 361}) {
+            A1Lines lines = A1Lines.random(seed);
+            BufferedImage image = Assignment1.render(3, new PageContext(seed, null, null, SceneMonitor.NONE));
+            int checked = 0;
+            int left = simpview.pages.A1Layout.left(4);
+            int top = simpview.pages.A1Layout.top(4);
+            for (int row = top; row < top + 300; row += 2) {
+                for (int column = left; column < left + 300; column++) {
+                    if ((image.getRGB(column, row) & 0xFFFFFF) == 0) {
+                        continue;
+                    }
+                    A1Report report = A1Inspector.inspect(3, seed, A1Rule.SPEC, column, LAST - row);
+                    for (A1Report.Write w : report.writes()) {
+                        Vertex given = lines.start(w.number() - 1);
+                        double[] colour = {given.r(), given.g(), given.b()};
+                        int now = 0;
+                        for (int k = 0; k < 3; k++) {
+                            double old = (w.old() >>> (16 - 8 * k) & 0xFF) / 255.0;
+                            double v = w.coverage() * colour[k] + (1 - w.coverage()) * old;
+                            now |= (int) Math.floor(v * 255 + 0.5) << (16 - 8 * k);
+                        }
+                        assertEquals(now, w.now() & 0xFFFFFF, "seed " + seed + ": " + report.text());
+                        checked++;
+                    }
+                }
+            }
+            assertTrue(checked > 1000, "blends checked: " + checked);
+        }
     }
 
     /** SPEC Part 3's blend, per channel in [0, 1], rounded to the nearest level. */
