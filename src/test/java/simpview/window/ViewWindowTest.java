@@ -185,7 +185,9 @@ public class ViewWindowTest extends WindowTestCase {
     void openStartsInTheShownScenesFolderAndOnThePagesWhereItWasLeft() throws Exception {
         Path mine = Files.createDirectories(dir.resolve("mine"));
         Path scene = Files.writeString(mine.resolve("own.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
-        driver = WindowDriver.open(new WindowOptions(361, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        // a course folder of its own: the pages shown here need none of the course's files, and the test runs without them
+        Path course = Files.createDirectories(dir.resolve("course-simp"));
+        driver = WindowDriver.open(new WindowOptions(361, course, Optional.empty()), SceneDrawer.SIMP);
         SimpviewWindow window = driver.window();
         driver.onEdt(() -> window.openScene(scene));
         driver.awaitShown(new View.OfScene(scene));
@@ -193,7 +195,7 @@ public class ViewWindowTest extends WindowTestCase {
 
         driver.onEdt(window::next);
         driver.awaitShown(new View.OfPage(2));
-        assertEquals(TestScenes.courseSimpDir().toRealPath(), openDialogFolder(window));
+        assertEquals(course.toRealPath(), openDialogFolder(window));
 
         // page 4 is drawn from simpview's own page4.simp: the dialog starts in that scene's folder
         driver.onEdt(window::next);
