@@ -192,7 +192,7 @@ class ClipperTest {
     }
 
     /**
-     * A vertex far outside (x = 1e20): the crossings are found from the inside ends, so they land on the plane
+     * A vertex far outside (x = 1e20): the crossings are found from the ends nearer the plane, here the inside ones, so they land on the plane
      * where the edges cross it. From the outside end, a + t (b - a) with t = 1 - 1e-19, which rounds to 1, gave
      * the inside end itself: (0, 5, -10) twice, and a wrong diagonal edge.
      */
@@ -217,6 +217,35 @@ class ClipperTest {
         assertEquals(1e-19, at(0, 3), 1e-30);
         assertEquals(0, at(1, 0));
         assertEquals(5, at(1, 1));
+    }
+
+    /**
+     * A vertex far inside (z = -1e20, past the yon plane too) with the other end just in front of the hither
+     * plane: the hither crossing is found from the near end, outside. From the inside end, t = 1 - 1e-20 rounds
+     * to 1 and gave the far end itself: a line of 4 pixels on the wrong side of the centre, a polygon of none.
+     */
+    @Test
+    void aVertexFarInsideIsCutWhereItsEdgesCrossThePlaneNearTheOtherEnd() {
+        Camera camera = Camera.perspective(-1, -1, 1, 1, -1, -100);
+        assertTrue(clipper.clipLine(camera, new double[] {0.1, 0.1, 10, 0, 0.1, 0.1, -1e20, 1}, 0, 4));
+        // the start on the hither plane z = -1, 11 / (1e20 + 10) of the way; the end on the yon plane z = -100
+        assertEquals(0.1, at(0, 0));
+        assertEquals(0.1, at(0, 1));
+        assertEquals(-1, at(0, 2), 1e-12);
+        assertEquals(11 / (1e20 + 10), at(0, 3), 1e-30);
+        assertEquals(0.1, at(1, 0));
+        assertEquals(-100, at(1, 2), 1e-9);
+        double[] p = {0.1, -0.1, 10, 0, 0.1, 0.1, -1e20, 1, -0.1, 0.1, -2, 0};
+        int n = clipper.clipPolygon(camera, p, 0, 3);
+        assertInside(camera, n);
+        // the crossing of the edge from (0.1, -0.1, 10) to the far vertex with the hither plane
+        boolean found = false;
+        for (int k = 0; k < n; k++) {
+            found |= Math.abs(at(k, 2) + 1) < 1e-12 && Math.abs(at(k, 0) - 0.1) < 1e-12
+                    && Math.abs(at(k, 1) + 0.1) < 1e-12;
+        }
+        assertTrue(found, "no crossing at (0.1, -0.1, -1) among " + java.util.Arrays.toString(
+                java.util.Arrays.copyOf(clipper.vertices(), 4 * n)));
     }
 
     @Test
