@@ -24,7 +24,12 @@ import java.util.Locale;
  * leaves out the rows and columns it brings in. The ways are first ranked
  * on a coarse grid of pixels, the best few again on a finer one, with the
  * colours' distance made blind to the swap; the swap is then chosen on the
- * finer grid, and the way measured on every pixel.
+ * finer grid, and the way measured on every pixel. Ways tied on a grid are
+ * ranked on every pixel, then the smaller move first: a drawing of flat
+ * cells (the first assignment's mesh, 30 px cells) matches many turns and
+ * moves on every sampled pixel, the samples missing the few rows and
+ * columns where they differ, and the first of them in order, kept for
+ * being first, was then rejected on every pixel, so the true turn got no hint.
  *
  * <p>A way is named only where it explains the picture: at least
  * {@link #BETTER} times fewer pixels beyond the tolerance than as it stands
@@ -119,10 +124,18 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         final int down;
         double rate;
 
+        /** Its share of every pixel beyond the tolerance, swap-blind; NaN until a tie needs it. */
+        double full = Double.NaN;
+
         Way(Turn turn, int right, int down) {
             this.turn = turn;
             this.right = right;
             this.down = down;
+        }
+
+        /** How far it moves, in pixels across and down together. */
+        int moveSize() {
+            return Math.abs(right) + Math.abs(down);
         }
     }
 
@@ -155,21 +168,24 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                 }
             }
         }
-        ways.sort(Comparator.comparingDouble(w -> w.rate));
-        Way best = null;
-        double bestRate = Double.POSITIVE_INFINITY;
-        int kept = 0;
+        ways.sort(Comparator.comparingDouble((Way w) -> w.rate).thenComparingInt(Way::moveSize));
+        // The KEPT best go on to the finer grid, and every way tied with the last of them: where many tie (a
+        // mesh of flat cells), their order alone must not leave the true one out.
+        List<Way> finer = new ArrayList<>();
         for (Way way : ways) {
-            if (kept == KEPT) {
+            if (finer.size() >= KEPT && way.rate > finer.get(finer.size() - 1).rate) {
                 break;
             }
             if (!toldApart(ours, n, way, tolerance)) {
                 continue; // a turn that lays simpview's panel on itself: see the class's comment
             }
-            kept++;
-            double rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance, bestRate);
-            if (rate < bestRate) {
-                bestRate = rate;
+            finer.add(way);
+        }
+        Way best = null;
+        for (Way way : finer) {
+            way.rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance,
+                    best == null ? Double.POSITIVE_INFINITY : best.rate);
+            if (best == null || nearer(ours, theirs, n, way, best, tolerance)) {
                 best = way;
             }
         }
@@ -190,9 +206,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                 if (!toldApart(ours, n, step, tolerance)) {
                     continue;
                 }
-                double rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, bestRate);
-                if (rate < bestRate) {
-                    bestRate = rate;
+                step.rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, best.rate);
+                if (nearer(ours, theirs, n, step, best, tolerance)) {
                     best = step;
                     nearer = true;
                 }
@@ -203,7 +218,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         Way asIs = new Way(Turn.NONE, 0, 0);
         boolean moved = best.turn != Turn.NONE || best.right != 0 || best.down != 0;
-        if (moved && bestRate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
+        if (moved && best.rate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
             return null; // the swap aside, no way is near to the share it would need
         }
         // Red and blue swapped or not, by the finer grid; then that one measured on every pixel.
@@ -222,6 +237,28 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         return new SystematicError(best.turn, best.right, best.down, swap, shareThere,
                 1 - (double) wrongAsIs / ((long) n * n), tolerance);
+    }
+
+    /**
+     * Whether {@code way} is nearer than {@code best}, both ranked on the finer grid: fewer sampled pixels beyond
+     * the tolerance; tied there, fewer of every pixel (the ties measured so only); tied there too, the smaller
+     * move. The order is strict, so following the move out always ends.
+     */
+    private static boolean nearer(int[] ours, int[] theirs, int n, Way way, Way best, int tolerance) {
+        if (way.rate != best.rate) {
+            return way.rate < best.rate;
+        }
+        double full = fullRate(ours, theirs, n, way, tolerance);
+        double bestFull = fullRate(ours, theirs, n, best, tolerance);
+        return full != bestFull ? full < bestFull : way.moveSize() < best.moveSize();
+    }
+
+    /** A way's share of every pixel it matches beyond the tolerance, swap-blind: measured once, then kept. */
+    private static double fullRate(int[] ours, int[] theirs, int n, Way way, int tolerance) {
+        if (Double.isNaN(way.full)) {
+            way.full = sampledRate(ours, theirs, n, way, 1, tolerance, Double.POSITIVE_INFINITY);
+        }
+        return way.full;
     }
 
     /**
@@ -273,8 +310,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
 
     /**
      * The share of sampled pixels beyond the tolerance under a way, the swap left out of account (the
-     * distance of red and blue as a pair, whichever way round); or, as soon as it cannot be below
-     * {@code bound}, any value not below it.
+     * distance of red and blue as a pair, whichever way round); or, as soon as it must be above
+     * {@code bound}, a value above it (never one equal to it, which would tie).
      */
     private static double sampledRate(int[] ours, int[] theirs, int n, Way way, int stride, int tolerance,
             double bound) {
@@ -286,7 +323,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         int fromX = Math.max(0, right);
         int toX = Math.min(n, n + right);
         long samples = (long) ((toY - fromY + stride - 1) / stride) * ((toX - fromX + stride - 1) / stride);
-        double most = bound * samples; // wrong pixels past this cannot make a rate below the bound
+        double most = bound * samples; // wrong pixels past this make a rate above the bound
         long wrong = 0;
         for (int y = fromY; y < toY; y += stride) {
             for (int x = fromX; x < toX; x += stride) {
@@ -294,7 +331,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                         ? 1 : 0;
             }
             if (wrong > most) {
-                return bound;
+                return Math.nextUp(bound);
             }
         }
         return (double) wrong / samples;

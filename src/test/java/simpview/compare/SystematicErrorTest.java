@@ -198,6 +198,36 @@ class SystematicErrorTest {
         assertEquals(-1, over.down());
     }
 
+    /**
+     * The first assignment's page 4, panel 2: a mesh of 30 px cells, each one flat colour. Sampled every 9th or
+     * 3rd pixel, many turns and moves match it as well as the true one (none of the samples falls where they
+     * differ); measured on every pixel, only the true one does, and it is named.
+     */
+    @ParameterizedTest(name = "the mesh {0} moved ({1}, {2})")
+    @CsvSource({
+        "UPSIDE_DOWN, 0, 0",
+        "MIRRORED, 0, 0",
+        "HALF_TURN, 0, 0",
+        "TRANSPOSED, 0, 0",
+        "UPSIDE_DOWN, 0, -1",
+        "NONE, 1, 0",
+        "NONE, 0, -1",
+        "NONE, -3, 2",
+        "NONE, 0, 6", // beyond the first search: followed out through steps the samples tie on
+        "MIRRORED, 1, 0",
+        "TRANSPOSED, 0, 1"})
+    void aFlatColouredMeshTurnedOrMovedIsNamedSo(String turn, int right, int down) {
+        int n = 300;
+        int[] mesh = firstAssignmentPanel(4, 2);
+        int[] theirs = made(mesh, n, turn, right, down, false);
+        SystematicError found = SystematicError.find(mesh, theirs, n, 8);
+        assertNotNull(found, "nothing found");
+        assertEquals(Turn.valueOf(turn), found.turn());
+        assertEquals(right, found.right());
+        assertEquals(down, found.down());
+        assertEquals(1.0, found.shareThere(), "undone, it is simpview's panel");
+    }
+
     /** Panel k of the first assignment's page, 300x300 0xRRGGBB pixels row by row from the top. */
     private static int[] firstAssignmentPanel(int page, int k) {
         BufferedImage image = Assignment1.render(page, PageContext.defaults());
