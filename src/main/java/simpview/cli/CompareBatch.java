@@ -258,12 +258,26 @@ public final class CompareBatch {
             if (pagesIfHandedIn) {
                 return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
             }
-            // --pages names the eight pages: only those are graded, and asked of everyone. One named so that holds
-            // no first-assignment page (A1-Smith/page1.png, a student's folder) is the page its number names.
+            // --pages names the eight pages: only those are graded, and asked of everyone. A picture whose own name
+            // says first assignment (a1-page5.png) is none of them, whatever it holds: one of the wrong size is no
+            // page 5 of the eight (as check without --pages names it A1 page 5), so no ERROR row of page 5 nor a
+            // candidate beside page5.png.
+            if (SubmissionNames.namesFirstAssignment(name)) {
+                int page = number.getAsInt();
+                if (page > Assignment1.COUNT) {
+                    return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not " + page
+                            + ", and --pages names the eight pages");
+                }
+                firstAssignmentUnasked.add(relative);
+                return new Match(null, "a page of the first assignment by its name, and --pages names the eight "
+                        + "pages (" + FIRST_ASSIGNMENT_GRADED + ")");
+            }
+            // Only a folder on its way says so: one that holds no first-assignment page (A1-Smith/page1.png, a
+            // student's folder) is the page its number names.
             if (PanelGridComparison.holds(dir.resolve(relative), firstAssignmentPanels())) {
                 firstAssignmentUnasked.add(relative);
-                return new Match(null, "a page of the first assignment by its name and its four panels, and --pages "
-                        + "names the eight pages (" + FIRST_ASSIGNMENT_GRADED + ")");
+                return new Match(null, "a page of the first assignment by its folder's name and its four panels, and "
+                        + "--pages names the eight pages (" + FIRST_ASSIGNMENT_GRADED + ")");
             }
         }
         if (number.isEmpty()) {

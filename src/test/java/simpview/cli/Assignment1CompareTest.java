@@ -503,8 +503,7 @@ class Assignment1CompareTest {
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "--pages 1-8 asks for the eight pages: " + run.err());
         assertTrue(run.out().contains("| a1-page2.png |  |  |  |  |  |  |  |  | SKIPPED |  |  | a page of the first assignment by its "
-                + "name and its four panels, and --pages names the eight pages (--assignment 1 grades the first "
-                + "assignment's pages) |"),
+                + "name, and --pages names the eight pages (--assignment 1 grades the first assignment's pages) |"),
                 run.out());
         assertTrue(run.out().contains("1 picture: 0 pass, 0 fail, 0 could not be compared, 1 skipped; 8 pages "
                 + "asked for without a picture"), run.out());
@@ -521,5 +520,35 @@ class Assignment1CompareTest {
                 dir.resolve("named").toString());
         assertEquals(ExitCode.OK, named.exitCode(), named.out() + named.err());
         assertTrue(named.out().contains("| A1-Smith/page1.png | 1 (seed 361) |"), named.out());
+    }
+
+    /**
+     * Its name alone makes a picture a first-assignment page where --pages names the eight: an a1-page5.png of the
+     * wrong size (it holds no four panels) is skipped as one, not taken for page 5 (an ERROR row, or a candidate
+     * beside page5.png), by compare --dir and check alike.
+     */
+    @Test
+    void aFirstAssignmentNameIsSkippedWhateverItHolds() throws Exception {
+        Path ivy = java.nio.file.Files.createDirectories(dir.resolve("class/ivy"));
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "5", "--out", ivy.resolve("page5.png").toString())
+                .exitCode());
+        BufferedImage wrongSize = new BufferedImage(700, 700, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = wrongSize.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, 700, 700);
+        g.dispose();
+        ImageIO.write(wrongSize, "png", ivy.resolve("a1-page5.png").toFile());
+        String skipped = "| ivy/a1-page5.png |  |  |  |  |  |  |  |  | SKIPPED |  |  | a page of the first assignment by its "
+                + "name, and --pages names the eight pages (--assignment 1 grades the first assignment's pages) |";
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("class").toString(), "--pages", "5", "--out-dir",
+                dir.resolve("report").toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains(skipped), run.out());
+        assertFalse(run.out().contains("no 650x650 panel found"), run.out());
+        assertFalse(run.out().contains("not counted"), run.out());
+        CliRun check = CliRun.of("check", ivy.toString(), "--pages", "5");
+        assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
+        assertFalse(check.out().contains("no 650x650 panel found"), check.out());
+        assertFalse(check.out().contains("not counted"), check.out());
     }
 }
