@@ -1092,16 +1092,18 @@ public final class CompareBatch {
             double empty = partial && !passes ? emptyShare(label, rule, cut.ours()[k - 1], A1Layout.PANEL) : Double.NaN;
             double score = rule.score(comparison, partial, empty);
             if (!diffs.writes(passes)) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint, empty));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint, empty)
+                        .decodedAs(cut.format()));
                 continue;
             }
             String diff = diffs.names().of(relative, k);
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint, empty));
+                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint, empty)
+                        .decodedAs(cut.format()));
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
-                        DIFF_NOT_WRITTEN + e.getMessage(), hint, empty));
+                        DIFF_NOT_WRITTEN + e.getMessage(), hint, empty).decodedAs(cut.format()));
             }
         }
         return rows;

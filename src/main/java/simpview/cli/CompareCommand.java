@@ -301,7 +301,7 @@ public final class CompareCommand implements Callable<Integer> {
                 awaitHint(hint));
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
-        sayFormat(out, report.passes());
+        sayFormat(out, report.passes(), theirs.format());
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
@@ -316,11 +316,12 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     /**
-     * What a picture that fails is told of its format, as check tells it ({@link PictureFormat#failingAdvice}): a
-     * right page saved as JPEG fails, and without this the student would look for the fault in their renderer.
+     * What a picture that fails is told of its format, as check tells it ({@link PictureFormat#failingAdvice(String,
+     * PictureFormat, boolean)}), by the format its bytes were {@code decoded} as: a right page saved as JPEG fails,
+     * and without this the student would look for the fault in their renderer.
      */
-    private void sayFormat(PrintWriter out, boolean passes) {
-        String advice = passes ? "" : PictureFormat.of(image.toString()).failingAdvice();
+    private void sayFormat(PrintWriter out, boolean passes, PictureFormat decoded) {
+        String advice = passes ? "" : PictureFormat.failingAdvice(image.toString(), decoded, true);
         if (!advice.isEmpty()) {
             out.println("note: " + advice);
         }
@@ -411,7 +412,7 @@ public final class CompareCommand implements Callable<Integer> {
                         + ComparisonReport.solidPatchNote(patch));
             }
         }
-        sayFormat(out, passes);
+        sayFormat(out, passes, cut.format());
         int[][] ourPanels = new int[panels.length][];
         int[][] theirPanels = new int[panels.length][];
         for (int k = 0; k < panels.length; k++) {

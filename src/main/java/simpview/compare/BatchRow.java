@@ -28,11 +28,12 @@ import java.util.List;
  * @param panelHint what its whole panel looks like when one mistake explains it, or null
  * @param emptyShare of a row scored in part (with --partial, one that fails), the share an empty panel gets
  *     against simpview's under its rule ({@link RubricRule#emptyShare}), which its zero point is at least; else NaN
+ * @param format the format its file's bytes were decoded as ({@link Picture#format}), or null when it was not read
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
         List<DiffRegion> regions, String alternate, int size, String notCounted, PanelHint panelHint,
-        double emptyShare) {
+        double emptyShare, PictureFormat format) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -54,7 +55,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
                 report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "",
-                report.systematic(), emptyShare);
+                report.systematic(), emptyShare, report.theirs().format());
     }
 
     /**
@@ -74,7 +75,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
                 comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
                 diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "", hint,
-                emptyShare);
+                emptyShare, null);
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -83,18 +84,24 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "", Comparison.N, "", null, Double.NaN);
+                List.of(), "", Comparison.N, "", null, Double.NaN, null);
     }
 
     public static BatchRow skipped(String file, String why) {
         return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
-                Comparison.N, "", null, Double.NaN);
+                Comparison.N, "", null, Double.NaN, null);
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size, notCounted, panelHint, emptyShare);
+                regions, alternate, size, notCounted, panelHint, emptyShare, format);
+    }
+
+    /** The same row of a picture whose bytes were decoded as {@code decoded} (a first-assignment panel's page). */
+    public BatchRow decodedAs(PictureFormat decoded) {
+        return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, rule, score, failing,
+                regions, alternate, size, notCounted, panelHint, emptyShare, decoded);
     }
 
     /**
@@ -106,7 +113,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
                 rule.flipThreshold());
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
-                regions, alternate, size, why, panelHint, emptyShare);
+                regions, alternate, size, why, panelHint, emptyShare, format);
     }
 
     /**
@@ -178,14 +185,16 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     }
 
     /**
-     * What a picture that fails is told of its file's format ({@link PictureFormat#failingAdvice}, as a single
-     * picture's {@code compare} tells it): "" for a PNG or a BMP, and for a picture that does not fail.
+     * What a picture that fails is told of its file's format ({@link PictureFormat#failingAdvice(String,
+     * PictureFormat, boolean)}, as a single picture's {@code compare} tells it), by the format its bytes were
+     * decoded as: "" for a PNG or a BMP, and for a picture that does not fail; not told to hand in a PNG when it
+     * does not count.
      */
     public String formatAdvice() {
         if (result != Result.FAIL) {
             return "";
         }
-        return PictureFormat.of(file).failingAdvice();
+        return PictureFormat.failingAdvice(file, format, counts());
     }
 
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */

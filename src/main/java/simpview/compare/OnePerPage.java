@@ -16,7 +16,10 @@ import java.util.function.Predicate;
  * table's order (natural order of their paths). The others are marked {@link BatchRow#notCounted}: they score
  * nothing and are worth nothing, so a submission's total is never more than the pages asked for are worth.
  * The rule goes by file names alone, never by results, so handing in more pictures of a page never raises its
- * score.
+ * score. The format too is the name's, not the one the bytes were decoded as (which the rows' notes go by): a
+ * picture that cannot be read has no decoded format but is a candidate all the same, and by names alone a
+ * student can tell which picture counts before any is read; a JPEG renamed x.png is told what it holds
+ * ({@link PictureFormat#failingAdvice(String, PictureFormat, boolean)}).
  */
 public final class OnePerPage {
 

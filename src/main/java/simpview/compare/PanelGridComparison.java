@@ -32,8 +32,10 @@ public final class PanelGridComparison {
      * @param width the picture's width
      * @param height its height
      * @param page the page's side
+     * @param format the format the picture's bytes were decoded as ({@link Picture#format}); null for one in memory
      */
-    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs, int width, int height, int page) {
+    public record Cut(int pageLeft, int pageTop, int[][] ours, int[][] theirs, int width, int height, int page,
+            PictureFormat format) {
 
         /**
          * Where the page is in the picture: "top-left at x 1, y 31 of the picture, counted from its top-left", and
@@ -69,12 +71,14 @@ public final class PanelGridComparison {
     /** Reads the picture, finds the page in it and cuts both pages into their panels. */
     public static Cut cut(Path picture, BufferedImage ours, Panel[] panels) throws CompareException {
         PngCodec.Pixels theirs = Picture.readPixels(picture);
-        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), picture.toString(), ours, panels);
+        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), picture.toString(), ours, panels,
+                theirs.format());
     }
 
     /** The same for a picture already read (for its 650x650 panel, which it may not really have). */
     public static Cut cut(Picture theirs, BufferedImage ours, Panel[] panels) throws CompareException {
-        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), theirs.name(), ours, panels);
+        return cut(theirs.rgb(), theirs.alpha(), theirs.width(), theirs.height(), theirs.name(), ours, panels,
+                theirs.format());
     }
 
     /**
@@ -100,7 +104,7 @@ public final class PanelGridComparison {
     }
 
     private static Cut cut(int[] rgb, byte[] alpha, int width, int height, String name, BufferedImage ours,
-            Panel[] panels) throws CompareException {
+            Panel[] panels, PictureFormat format) throws CompareException {
         int page = ours.getWidth();
         int[] at = find(rgb, width, height, page, panels, name);
         for (int k = 0; k < panels.length; k++) {
@@ -115,7 +119,7 @@ public final class PanelGridComparison {
             a[k] = cut(mine, page, p.left(), p.top(), p.size());
             b[k] = cut(rgb, width, at[0] + p.left(), at[1] + p.top(), p.size());
         }
-        return new Cut(at[0], at[1], a, b, width, height, page);
+        return new Cut(at[0], at[1], a, b, width, height, page, format);
     }
 
     /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */

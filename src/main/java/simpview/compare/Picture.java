@@ -28,9 +28,12 @@ public final class Picture {
     private final int[] panel;
     private final int[] rgb;
     private final byte[] alpha;
+    private final PictureFormat format;
 
-    private Picture(String name, int[] rgb, byte[] alpha, int width, int height, PanelPlace place) {
+    private Picture(String name, int[] rgb, byte[] alpha, int width, int height, PanelPlace place,
+            PictureFormat format) {
         this.name = name;
+        this.format = format;
         this.rgb = rgb;
         this.alpha = alpha;
         this.width = width;
@@ -48,14 +51,15 @@ public final class Picture {
         String name = file.toString();
         PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
         requireOpaque(pixels.alpha(), pixels.width(), place.left(), place.top(), PanelPlace.SIZE, name, "the panel");
-        return new Picture(name, pixels.rgb(), pixels.alpha(), pixels.width(), pixels.height(), place);
+        return new Picture(name, pixels.rgb(), pixels.alpha(), pixels.width(), pixels.height(), place,
+                pixels.format());
     }
 
     /** A picture in memory (a page, a capture), its panel found as in a file. */
     public static Picture of(BufferedImage image, String name) throws CompareException {
         int[] rgb = Rasters.rgb(image);
         PanelPlace place = PanelFinder.find(rgb, image.getWidth(), image.getHeight(), name);
-        return new Picture(name, rgb, null, image.getWidth(), image.getHeight(), place);
+        return new Picture(name, rgb, null, image.getWidth(), image.getHeight(), place, null);
     }
 
     /** One of simpview's own 750x750 pages: the panel is where the page puts it, nothing is searched. */
@@ -64,7 +68,7 @@ public final class Picture {
             throw new IllegalArgumentException("a page is 750x750, not " + page.getWidth() + "x" + page.getHeight());
         }
         PanelPlace place = new PanelPlace(PanelFinder.PAGE_MARGIN, PanelFinder.PAGE_MARGIN, "a 750x750 page");
-        return new Picture(name, Rasters.rgb(page), null, page.getWidth(), page.getHeight(), place);
+        return new Picture(name, Rasters.rgb(page), null, page.getWidth(), page.getHeight(), place, null);
     }
 
     /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
@@ -85,10 +89,10 @@ public final class Picture {
                 // a kind of PNG ImageIO reads
             }
         }
-        long[] size = headerSize(bytes);
-        if (size != null && size[0] * size[1] > PngCodec.MAX_PIXELS) {
+        Header header = header(bytes);
+        if (header != null && header.width() * header.height() > PngCodec.MAX_PIXELS) {
             // refused before a pixel is decoded: a 30000x30000 GIF would take gigabytes, and end every picture's run
-            throw new CompareException(file + " " + new PngCodec.TooLarge(size[0], size[1]).getMessage());
+            throw new CompareException(file + " " + new PngCodec.TooLarge(header.width(), header.height()).getMessage());
         }
         BufferedImage image;
         try {
@@ -100,24 +104,37 @@ public final class Picture {
         if (image == null) {
             throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
         }
-        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image), Rasters.alpha(image));
+        // ImageIO.read decodes with the first reader that knows the bytes, the one header() asked: its format
+        PictureFormat format = header == null ? PictureFormat.OTHER : header.format();
+        return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image), Rasters.alpha(image),
+                format);
     }
 
     /**
-     * The width and height a picture's header says it has, as ImageIO's reader of its format reads them
-     * without decoding a pixel; null when no reader knows the format or the header cannot be read (decoding
-     * then says what is wrong).
+     * What a picture's header says, as ImageIO's first reader that knows its bytes reads it without decoding a
+     * pixel: the format that reader decodes (by the bytes, never the file's name) and the width and height, 0 x 0
+     * when they cannot be read.
      */
-    private static long[] headerSize(byte[] bytes) {
+    private record Header(PictureFormat format, long width, long height) {
+    }
+
+    /**
+     * The header of a picture ({@link Header}); null when no reader knows the format (decoding then says what is
+     * wrong).
+     */
+    private static Header header(byte[] bytes) {
         try (ImageInputStream in = ImageIO.createImageInputStream(new ByteArrayInputStream(bytes))) {
             Iterator<ImageReader> readers = in == null ? null : ImageIO.getImageReaders(in);
             if (readers == null || !readers.hasNext()) {
                 return null;
             }
             ImageReader reader = readers.next();
+            PictureFormat format = PictureFormat.ofFormatName(reader.getFormatName());
             try {
                 reader.setInput(in, true, true);
-                return new long[] {reader.getWidth(0), reader.getHeight(0)};
+                return new Header(format, reader.getWidth(0), reader.getHeight(0));
+            } catch (IOException | RuntimeException e) {
+                return new Header(format, 0, 0); // its size unread: decoding then says what is wrong
             } finally {
                 reader.dispose();
             }
@@ -184,6 +201,14 @@ public final class Picture {
 
     public String name() {
         return name;
+    }
+
+    /**
+     * The format its file's bytes were decoded as, whatever its name says (a JPEG saved as x.png is a JPEG); null
+     * for a picture in memory, read from no file.
+     */
+    public PictureFormat format() {
+        return format;
     }
 
     public int width() {

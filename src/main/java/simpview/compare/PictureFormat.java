@@ -3,9 +3,11 @@ package simpview.compare;
 import java.util.Locale;
 
 /**
- * A picture's file format, known by its name's ending, and what it does to a page's colours: the one place that
- * says which of two pictures of a page is the truer copy ({@link OnePerPage}) and what a picture that fails is
- * told of its format ({@code compare} and {@code check} alike).
+ * A picture's file format, known by its name's ending or by the bytes it was decoded from, and what it does to a
+ * page's colours: the one place that says which of two pictures of a page is the truer copy ({@link OnePerPage},
+ * by their names) and what a picture that fails is told of its format ({@code compare} and {@code check} alike,
+ * by the format its bytes were decoded as: a JPEG saved as x.png lost its colours all the same, and PNG bytes
+ * named x.jpg lost none).
  *
  * <p>The order is how exactly a page saved so keeps the colours it was drawn in: a PNG keeps every one, and it
  * is what simpview asks students to hand in; a BMP keeps them too (24 bits a pixel) but is not what was asked
@@ -46,6 +48,17 @@ public enum PictureFormat {
         return OTHER;
     }
 
+    /** The format of an ImageIO reader's format name ("png", "JPEG", "gif", "bmp"); OTHER for any other. */
+    public static PictureFormat ofFormatName(String formatName) {
+        return switch (formatName.toLowerCase(Locale.ROOT)) {
+            case "png" -> PNG;
+            case "bmp" -> BMP;
+            case "gif" -> GIF;
+            case "jpeg", "jpg" -> JPEG;
+            default -> OTHER;
+        };
+    }
+
     /** Whether a picture of this format is a truer copy of a page than one of {@code other}'s. */
     public boolean truerThan(PictureFormat other) {
         return ordinal() < other.ordinal();
@@ -72,17 +85,36 @@ public enum PictureFormat {
     /**
      * What a picture that fails is told of its format: a JPEG's or a GIF's colours are not those it was drawn in,
      * so a right page so saved can fail, and the student would look for the fault in their renderer. "" for a PNG
-     * or a BMP.
+     * or a BMP. {@code counted}: whether it is the picture of its page that counts; one that does not (a PNG of
+     * the page counts over it) is not told to hand in a PNG, which is handed in already.
      */
-    public String failingAdvice() {
+    public String failingAdvice(boolean counted) {
+        String handIn = counted ? "; save it as PNG and hand that in" : "";
         if (this == JPEG) {
             return "JPEG is lossy: saving a page as JPEG changes its colours near every edge, so even a right page "
-                    + "can fail; save it as PNG and hand that in";
+                    + "can fail" + handIn;
         }
         if (this == GIF) {
             return "GIF holds at most 256 colours: saving a page as GIF changes (or dithers) the others, so even a "
-                    + "right page can fail; save it as PNG and hand that in";
+                    + "right page can fail" + handIn;
         }
         return "";
+    }
+
+    /**
+     * The same of a file, by the format its bytes were decoded as ({@code decoded}; null when it was not read:
+     * its name's), and saying so where its name says another: "x.png holds a JPEG picture: JPEG is lossy: ...".
+     * A name that says PNG over JPEG bytes is no PNG, and the student who renamed the file would not know why.
+     */
+    public static String failingAdvice(String file, PictureFormat decoded, boolean counted) {
+        PictureFormat named = of(file);
+        PictureFormat format = decoded == null ? named : decoded;
+        String advice = format.failingAdvice(counted);
+        if (advice.isEmpty() || format == named) {
+            return advice;
+        }
+        String name = java.nio.file.Path.of(file).getFileName() == null ? file
+                : java.nio.file.Path.of(file).getFileName().toString();
+        return name + " holds " + format.article + " picture: " + advice;
     }
 }

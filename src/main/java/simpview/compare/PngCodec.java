@@ -44,9 +44,10 @@ final class PngCodec {
 
     /**
      * A decoded picture: width x height pixels, row by row from the top, and their alpha (0-255) the
-     * same way, or null when the picture has no transparency.
+     * same way, or null when the picture has no transparency; {@code format} the format its bytes were decoded
+     * as, whatever the file's name says.
      */
-    record Pixels(int width, int height, int[] rgb, byte[] alpha) {
+    record Pixels(int width, int height, int[] rgb, byte[] alpha, PictureFormat format) {
     }
 
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10};
@@ -209,7 +210,7 @@ final class PngCodec {
                 alphaOf(h, transparency, raw, row, alpha, y * h.width());
             }
         }
-        return new Pixels(h.width(), h.height(), rgb, alpha);
+        return new Pixels(h.width(), h.height(), rgb, alpha, PictureFormat.PNG);
     }
 
     /** One row's filter undone; {@code prior} is the row above, or -1 for the first row. One loop per filter. */

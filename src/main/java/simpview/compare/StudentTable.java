@@ -74,10 +74,11 @@ public final class StudentTable {
             DiffRegion patch = row.solidPatch();
             String patchNote = patch == null ? null : ComparisonReport.solidPatchNote(patch);
             for (String note : row.notes()) {
-                // a panel's own patch is said of that panel, by name
+                // a panel's own patch is said of that panel, by name; its picture's note (its format) of its page, as
+                // a page of the eight is named beside its picture's
                 boolean ofThisRow = !isPanel(row) || note.equals(patchNote);
-                notes.add("note: " + row.file() + (ofThisRow ? " (" + GradescopeResults.name(row.target()) + ")" : "")
-                        + ": " + note + "\n");
+                notes.add("note: " + row.file() + " (" + GradescopeResults.name(ofThisRow ? row.target() : row.page())
+                        + "): " + note + "\n");
             }
         }
         notes.forEach(out::append);

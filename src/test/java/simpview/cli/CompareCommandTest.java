@@ -154,6 +154,33 @@ public class CompareCommandTest {
     }
 
     /**
+     * The note goes by the format the picture was decoded as, not its name: a JPEG named page2.png is told it holds
+     * one, and PNG bytes named page3.jpg that fail are told nothing of JPEG.
+     */
+    @Test
+    void theFormatNoteGoesByWhatTheFileHolds() throws Exception {
+        Path named = dir.resolve("named-png.png");
+        java.nio.file.Files.move(jpeg("page2.jpg", page(2)), named);
+        CliRun run = CliRun.of("compare", named.toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nnote: named-png.png holds a JPEG picture: JPEG is lossy: saving a page as JPEG "
+                + "changes its colours near every edge, so even a right page can fail; save it as PNG and hand that "
+                + "in\n"), run.out());
+
+        Path a1 = dir.resolve("a1-page3.png");
+        java.nio.file.Files.move(jpeg("a1-page3.jpg", simpview.pages.Assignment1.render(3, PageContext.defaults())), a1);
+        CliRun first = CliRun.of("compare", a1.toString(), "--assignment", "1", "--page", "3");
+        assertEquals(ExitCode.SCENE_ERROR, first.exitCode(), first.out());
+        assertTrue(first.out().contains("\nnote: a1-page3.png holds a JPEG picture: JPEG is lossy: "), first.out());
+
+        Path pngBytes = dir.resolve("page3.jpg");
+        java.nio.file.Files.move(png("wrong.png", page(3)), pngBytes);
+        CliRun png = CliRun.of("compare", pngBytes.toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, png.exitCode(), png.out());
+        assertFalse(png.out().contains("lossy") || png.out().contains("JPEG"), png.out());
+    }
+
+    /**
      * The picture as JPEG at quality 95, as an image program saves it "at high quality": its margins stay white
      * enough for the panel to be found (at ImageIO's 75 they do not), and its colours still change near edges.
      */

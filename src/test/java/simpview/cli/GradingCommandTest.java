@@ -198,6 +198,41 @@ class GradingCommandTest {
         assertEquals(2, check.out().split("hand that in", -1).length - 1, check.out());
     }
 
+    /**
+     * A JPEG not counted (a PNG of its page counts) is told JPEG is lossy, not to hand in a PNG, which is handed in
+     * already; a first-assignment page's note names its page, as a page of the eight's does.
+     */
+    @Test
+    void aJpegNotCountedIsNotToldToHandInAPng() throws Exception {
+        Path st = dir.resolve("subs/st");
+        Files.createDirectories(st);
+        ImageIO.write(page(1), "jpeg", st.resolve("page1.jpg").toFile());
+        png(st.resolve("page1.png"), spoiled(1)); // counts over the JPEG, and fails
+        CliRun check = CliRun.of("check", st.toString(), "--pages", "1");
+        assertTrue(check.out().contains("\nnote: page1.jpg (page 1 (seed 361)): JPEG is lossy: saving a page as JPEG "
+                + "changes its colours near every edge, so even a right page can fail\n"), check.out());
+        assertFalse(check.out().contains("hand that in"), check.out());
+
+        Path first = dir.resolve("first");
+        Files.createDirectories(first);
+        // at quality 95, as an image program saves it "at high quality": at ImageIO's 75 the panels' white rings
+        // are not white enough for the page to be found
+        javax.imageio.ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
+        javax.imageio.ImageWriteParam param = writer.getDefaultWriteParam();
+        param.setCompressionMode(javax.imageio.ImageWriteParam.MODE_EXPLICIT);
+        param.setCompressionQuality(0.95f);
+        try (javax.imageio.stream.ImageOutputStream out = ImageIO.createImageOutputStream(
+                first.resolve("a1-page3.jpg").toFile())) {
+            writer.setOutput(out);
+            writer.write(null, new javax.imageio.IIOImage(simpview.pages.Assignment1.render(3, PageContext.defaults()),
+                    null, null), param);
+        } finally {
+            writer.dispose();
+        }
+        CliRun a1 = CliRun.of("check", first.toString(), "--assignment", "1", "--pages", "3");
+        assertTrue(a1.out().contains("\nnote: a1-page3.jpg (A1 page 3 (seed 361)): JPEG is lossy: "), a1.out());
+    }
+
     /** Page 1 with the top {@code rows} rows of its panel painted black, its background: those lines left out. */
     private static BufferedImage withoutTopRows(int rows) throws Exception {
         BufferedImage image = page(1);
