@@ -2,6 +2,7 @@ package simpview.cli;
 
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -9,6 +10,8 @@ import picocli.CommandLine.MaxValuesExceededException;
 import picocli.CommandLine.MutuallyExclusiveArgsException;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.UnmatchedArgumentException;
+import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
 
 /**
  * A usage error in a student's words rather than the parser's: picocli's
@@ -29,6 +32,16 @@ final class UsageWords {
             new String[] {"' is not a float", "' is not a number"});
     /** A whole number in digits, as a user writes one: one that is not a long or an int is out of range. */
     private static final Pattern WHOLE = Pattern.compile("[-+]?[0-9]+");
+    /** The option a value is of, as picocli names it: "Invalid value for option '--page': ...". */
+    private static final Pattern OPTION_NAMED = Pattern.compile("option '(--[a-z0-9][a-z0-9-]*)'");
+    /**
+     * The whole-number options that take a range of their own, and that range, as each command says it of a value
+     * outside it ("--page must be 1 to 8, not 9"): a value too large for an int is told the same range.
+     */
+    private static final Map<String, String> RANGES = Map.of(
+            "--page", "1 to " + Assignment2.COUNT + " (1 to " + Assignment1.COUNT + " for the first assignment)",
+            "--assignment", "1 or 2",
+            "--threads", "1 to " + ThreadsOption.MOST);
 
     private UsageWords() {
     }
@@ -82,7 +95,13 @@ final class UsageWords {
             return "' is out of range: give a whole number from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE;
         }
         if (type.endsWith("an int")) {
-            // an int option (a page, a count of threads) takes a range of its own, said when a value is outside it
+            // an int option (a page, a count of threads) takes a range of its own: said here as the command says it
+            // of a value outside it, so --page=2147483648 is told what --page=2147483647 is
+            Matcher option = OPTION_NAMED.matcher(before);
+            String range = option.find() ? RANGES.get(option.group(1)) : null;
+            if (range != null) {
+                return "' is out of range: " + option.group(1) + " must be " + range;
+            }
             return "' is out of range: far " + (value.startsWith("-") ? "smaller" : "larger") + " than any value it "
                     + "takes";
         }

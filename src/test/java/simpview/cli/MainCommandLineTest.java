@@ -140,7 +140,16 @@ public class MainCommandLineTest {
         "compare x.png --page 2 --seed -9223372036854775809 | simpview: Invalid value for option '--seed': "
                 + "'-9223372036854775809' is out of range: give a whole number from -9223372036854775808 to "
                 + "9223372036854775807",
+        // an option with a range of its own is told it, as a value inside an int but outside the range is
         "render --all --threads 99999999999 --out-dir o | simpview: Invalid value for option '--threads': "
+                + "'99999999999' is out of range: --threads must be 1 to 64",
+        "compare x.png --page=2147483648 | simpview: Invalid value for option '--page': '2147483648' is out of range: "
+                + "--page must be 1 to 8 (1 to 5 for the first assignment)",
+        "render --page=-2147483649 --out o.png | simpview: Invalid value for option '--page': '-2147483649' is out of "
+                + "range: --page must be 1 to 8 (1 to 5 for the first assignment)",
+        "compare x.png --page 2 --assignment 99999999999 | simpview: Invalid value for option '--assignment': "
+                + "'99999999999' is out of range: --assignment must be 1 or 2",
+        "inspect --page 1 --pixel 1,1 --primitive 99999999999 | simpview: Invalid value for option '--primitive': "
                 + "'99999999999' is out of range: far larger than any value it takes",
         "check a b | simpview: 'b': one argument more than simpview check takes",
         "check a b c | simpview: 'b', 'c': more arguments than simpview check takes"})
