@@ -18,6 +18,9 @@ import simpview.surface.Colors;
  */
 final class PrimitiveListing {
 
+    /** The widest a header line is, '#' and all: a sentence longer than one is wrapped at words. */
+    static final int WIDTH = 100;
+
     private PrimitiveListing() {
     }
 
@@ -35,14 +38,14 @@ final class PrimitiveListing {
         out.append("#   triangle PANEL x0 y0 z0 r0 g0 b0 x1 y1 z1 r1 g1 b1 x2 y2 z2 r2 g2 b2\n");
         out.append("# x right, y up from the panel's bottom-left pixel, in pixels; colours 0 to 1; each number the\n");
         out.append("# shortest decimal that reads back as simpview's double\n");
-        out.append("# ").append(panels(page)).append('\n');
+        out.append(comment(panels(page)));
         if (page instanceof LineTestPage && page.usesSeed() && !primitives.isEmpty()) {
             // The random colours are whole levels (A1Lines.wholeLevels): say so, so that a student blends the
             // colour printed and gets simpview's bytes, and knows the byte a whole pixel of it gets.
             double r = primitives.get(0).vertices().get(0).r();
-            out.append("# each colour channel is a whole number of 255ths, k / 255 (the first line's red, ")
-                    .append(r).append(", is ").append(Colors.toByte(r)).append(" / 255): k is the byte a pixel the\n")
-                    .append("# line covers whole gets; the antialiased panel blends this colour, c * colour + (1 - c) * old\n");
+            out.append(comment("each colour channel is a whole number of 255ths, k / 255 (the first line's red, " + r
+                    + ", is " + Colors.toByte(r) + " / 255): k is the byte a pixel the line covers whole gets; the "
+                    + "antialiased panel blends this colour, c * colour + (1 - c) * old"));
         }
         for (ListedPrimitive p : primitives) {
             out.append(p.text()).append('\n');
@@ -68,6 +71,23 @@ final class PrimitiveListing {
                     : " (each triangle filled with its colour)").toString();
         }
         return "one panel: " + page.title();
+    }
+
+    /**
+     * A sentence as header lines of '#', each at most {@link #WIDTH} wide, broken between words (a word longer
+     * than a line has one to itself), as the header's fixed lines are.
+     */
+    static String comment(String sentence) {
+        StringBuilder out = new StringBuilder();
+        StringBuilder line = new StringBuilder("#");
+        for (String word : sentence.split(" ")) {
+            if (line.length() > 1 && line.length() + 1 + word.length() > WIDTH) {
+                out.append(line).append('\n');
+                line = new StringBuilder("#");
+            }
+            line.append(' ').append(word);
+        }
+        return out.append(line).append('\n').toString();
     }
 
     private static String count(long n, String what) {

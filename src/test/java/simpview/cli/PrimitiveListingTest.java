@@ -89,8 +89,16 @@ public class PrimitiveListingTest {
         List<double[]> lines = read(text);
         assertEquals(4 * 30, lines.size(), "the 30 lines in each of the four panels");
         // The colours are whole levels, k / 255, and say so: blended as printed they give simpview's bytes.
-        assertTrue(text.contains("\n# each colour channel is a whole number of 255ths, k / 255 (the first line's red, "),
-                text);
+        // the header's sentences wrapped at words, as its fixed lines are: none runs on past the width
+        String header = text.lines().filter(l -> l.startsWith("#")).collect(java.util.stream.Collectors.joining("\n"));
+        assertTrue(header.lines().allMatch(l -> l.length() <= PrimitiveListing.WIDTH), header);
+        String joined = header.replace("\n# ", " ");
+        assertTrue(joined.contains("each colour channel is a whole number of 255ths, k / 255 (the first line's red, "),
+                header);
+        assertTrue(joined.contains(": k is the byte a pixel the line covers whole gets; the antialiased panel blends "
+                + "this colour, c * colour + (1 - c) * old"), header);
+        assertTrue(joined.contains("the same lines in each panel, drawn by panel 1: DDA, 2: Bresenham, 3: alternating "
+                + "DDA / Bresenham, 4: antialiased (ends rounded first)"), header);
         for (double[] line : lines) {
             for (int channel : new int[] {4, 5, 6, 10, 11, 12}) {
                 assertEquals(level(line[channel]) / 255.0, line[channel], "printed as simpview draws it: " + line[channel]);
