@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import java.util.function.IntConsumer;
 import simpview.scene.FileLook;
 import simpview.scene.FileProblem;
 import simpview.scene.FileStamp;
@@ -35,7 +36,10 @@ import simpview.scene.text.LineSource;
 final class FileStack implements AutoCloseable {
 
     static final int MAX_OPEN = 8;
-    /** A longer include chain is named in an error by this many links at each end, "... N more ..." between. */
+    /**
+     * A chain of files (an error's includes, a file cycle) longer than twice this is named in an error by this
+     * many files at each end, "... N more ..." between (docs/simp.md: longer than ten, first five and last five).
+     */
     static final int CHAIN_ENDS = 5;
     static final int SMALL_FILE = LineSource.CHUNK;
 
@@ -136,21 +140,18 @@ final class FileStack implements AutoCloseable {
         if (innermost < 0) {
             return e;
         }
+        // file 0 is e's own, which the error names itself; file i > 0 is the reader i - 1 below the innermost
+        int files = innermost + 2;
         StringBuilder chain = new StringBuilder();
-        Path before = e.file();
-        for (int k = innermost; k >= 0; k--) {
-            SimpReader including = readers.get(k);
-            if (k == innermost - CHAIN_ENDS && k > CHAIN_ENDS) {
-                // a chain thousands of includes deep would print tens of kilobytes: its ends say where and why
-                chain.append(", ... ").append(k - CHAIN_ENDS + 1).append(" more ...");
-                k = CHAIN_ENDS;
-                including = readers.get(k);
-                before = readers.get(k + 1).file();
+        forEachNamed(files, i -> {
+            if (i == 0) {
+                return;
             }
+            SimpReader including = readers.get(innermost - i + 1);
+            Path before = i == 1 ? e.file() : readers.get(innermost - i + 2).file();
             chain.append(chain.length() == 0 ? "" : ", included from ")
                     .append(named(including.file(), before)).append(':').append(including.lineNumber());
-            before = including.file();
-        }
+        }, hidden -> chain.append(", ... ").append(hidden).append(" more ..."));
         return e.includedFrom(chain.toString());
     }
 
@@ -372,10 +373,30 @@ final class FileStack implements AutoCloseable {
         while (!resolvedReaders.get(first).real.equals(real)) {
             first++;
         }
-        for (int k = first; k < readers.size(); k++) {
-            sb.append(readers.get(k).file().getFileName()).append(" → ");
+        // file i is reader first + i, and the last is the first again, where the cycle closes
+        int start = first;
+        int files = readers.size() - first + 1;
+        forEachNamed(files, i -> sb.append(sb.length() == 0 ? "" : " → ")
+                .append(i == files - 1 ? real.getFileName() : readers.get(start + i).file().getFileName()),
+                hidden -> sb.append(" → ... ").append(hidden).append(" more ..."));
+        return sb.toString();
+    }
+
+    /**
+     * Walks a chain of {@code files} files, first to last, handing {@code named} the index of each file an
+     * error names: all of a chain of up to twice {@link #CHAIN_ENDS}, else only that many at each end, with
+     * {@code gap} told how many it leaves out in their place. A chain thousands of files deep would otherwise
+     * print tens of kilobytes, and its ends say where and why.
+     */
+    private static void forEachNamed(int files, IntConsumer named, IntConsumer gap) {
+        boolean shortened = files > 2 * CHAIN_ENDS;
+        for (int i = 0; i < files; i++) {
+            if (shortened && i == CHAIN_ENDS) {
+                gap.accept(files - 2 * CHAIN_ENDS);
+                i = files - CHAIN_ENDS;
+            }
+            named.accept(i);
         }
-        return sb.append(real.getFileName()).toString();
     }
 
     /**

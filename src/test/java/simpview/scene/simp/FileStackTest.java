@@ -151,23 +151,50 @@ class FileStackTest {
     }
 
     /**
-     * An error 3,000 includes deep names the first and last few links of the
-     * chain and how many stand between, not 3,000 of them; a short chain is
-     * named whole.
+     * An error 3,000 includes deep names the first five and last five files
+     * of the chain (the erring file among the first) and how many stand
+     * between, not 3,000 of them; a chain of ten is named whole
+     * (docs/simp.md). The count is of the files left out, no more.
      */
     @Test
     void aLongIncludeChainIsShortenedInAnError() throws Exception {
-        writeChain(3000);
-        Files.write(dir.resolve("f2999.simp"), List.of("rotate Q 5"));
+        assertEquals("f8.simp:2, included from f7.simp:2, included from f6.simp:2, included from f5.simp:2,"
+                + " included from f4.simp:2, included from f3.simp:2, included from f2.simp:2, included from f1.simp:2,"
+                + " included from f0.simp:2", chainOfFailure(10));
+        assertEquals("f9.simp:2, included from f8.simp:2, included from f7.simp:2, included from f6.simp:2,"
+                + " ... 1 more ..., included from f4.simp:2, included from f3.simp:2, included from f2.simp:2,"
+                + " included from f1.simp:2, included from f0.simp:2", chainOfFailure(11));
+        assertEquals("f10.simp:2, included from f9.simp:2, included from f8.simp:2, included from f7.simp:2,"
+                + " ... 2 more ..., included from f4.simp:2, included from f3.simp:2, included from f2.simp:2,"
+                + " included from f1.simp:2, included from f0.simp:2", chainOfFailure(12));
+        assertEquals("f11.simp:2, included from f10.simp:2, included from f9.simp:2, included from f8.simp:2,"
+                + " ... 3 more ..., included from f4.simp:2, included from f3.simp:2, included from f2.simp:2,"
+                + " included from f1.simp:2, included from f0.simp:2", chainOfFailure(13));
+        assertEquals("f2998.simp:2, included from f2997.simp:2, included from f2996.simp:2, included from"
+                + " f2995.simp:2, ... 2990 more ..., included from f4.simp:2, included from f3.simp:2,"
+                + " included from f2.simp:2, included from f1.simp:2, included from f0.simp:2", chainOfFailure(3000));
+        assertEquals("f2.simp:2, included from f1.simp:2, included from f0.simp:2", chainOfFailure(4));
+    }
+
+    /** The includes named by an error in the last file of a chain of {@code files} files. */
+    private String chainOfFailure(int files) throws Exception {
+        writeChain(files);
+        Files.write(dir.resolve("f" + (files - 1) + ".simp"), List.of("rotate Q 5"));
         SceneException e = new SceneFixture(dir).failure("f0");
-        assertEquals("f2998.simp:2, included from f2997.simp:2, included from f2996.simp:2, included from f2995.simp:2,"
-                + " included from f2994.simp:2, ... 2989 more ..., included from f5.simp:2, included from f4.simp:2,"
-                + " included from f3.simp:2, included from f2.simp:2, included from f1.simp:2, included from f0.simp:2",
-                e.includedFrom());
-        writeChain(4);
-        Files.write(dir.resolve("f3.simp"), List.of("rotate Q 5"));
-        assertEquals("f2.simp:2, included from f1.simp:2, included from f0.simp:2",
-                new SceneFixture(dir).failure("f0").includedFrom());
+        assertEquals(dir.resolve("f" + (files - 1) + ".simp"), e.file());
+        return e.includedFrom();
+    }
+
+    /** A file cycle thousands of files round is shortened as an include chain is; a short one is named whole. */
+    @Test
+    void aLongFileCycleIsShortenedInAnError() throws Exception {
+        writeChain(3000);
+        Files.write(dir.resolve("f2999.simp"), List.of("file \"f1\""));
+        assertEquals("file cycle: f1.simp → f2.simp → f3.simp → f4.simp → f5.simp → ... 2990 more ... → f2996.simp"
+                + " → f2997.simp → f2998.simp → f2999.simp → f1.simp", new SceneFixture(dir).failure("f0").problem());
+        writeChain(3);
+        Files.write(dir.resolve("f2.simp"), List.of("file \"f1\""));
+        assertEquals("file cycle: f1.simp → f2.simp → f1.simp", new SceneFixture(dir).failure("f0").problem());
     }
 
     /** A name through ".." is shown without it, as the error's file and in the chain, and stays relative. */
