@@ -12,6 +12,7 @@ import java.util.function.IntPredicate;
 import simpview.scene.FileProblem;
 import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
+import simpview.scene.text.CopiedText;
 import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
@@ -26,8 +27,9 @@ import simpview.scene.text.TrailingComment;
  * <p>Lines are split as SIMP lines are: blanks (spaces, tabs), commas and
  * parentheses all separate. The keyword (the first word, any case) decides:
  * {@code v}, {@code vn} and {@code f} are read, every other line ({@code vt}
- * included) is ignored; a face's texture index is read but names nothing to
- * check.
+ * included) is ignored, unless its word is one of those with a character
+ * beyond ASCII stuck to it (an error naming it); a face's texture index is
+ * read but names nothing to check.
  */
 final class ObjParser {
 
@@ -273,7 +275,8 @@ final class ObjParser {
     }
 
     /** Notes an ignored line whose word starts at i (not a comment): for the warning of a file without faces. */
-    private void other(int i) {
+    private void other(int i) throws SceneException {
+        copiedKeyword(i);
         otherLines++;
         if (firstOtherLine == 0) {
             firstOtherLine = source.lineNumber();
@@ -281,6 +284,41 @@ final class ObjParser {
         }
         if ((b[i] | 0x20) == 'l' && (i + 1 == end || isSeparator(b[i + 1]))) {
             polylines++;
+        }
+    }
+
+    /**
+     * An error for a first word that is v, vn, vt or f with a character beyond ASCII stuck to it: "v" and a
+     * non-breaking space before the numbers, a byte order mark before "f" where two files were joined. The line
+     * looks right, and would be passed over as a kind simpview does not read, leaving a vertex or a face
+     * silently missing (and a later face's index naming nothing). Only a word holding a byte beyond ASCII is
+     * looked at, so the vt lines of a big model cost no String.
+     */
+    private void copiedKeyword(int i) throws SceneException {
+        int wordEnd = i;
+        boolean beyondAscii = false;
+        while (wordEnd < end && !isSeparator(b[wordEnd])) {
+            beyondAscii |= b[wordEnd] < 0;
+            wordEnd++;
+        }
+        if (!beyondAscii) {
+            return;
+        }
+        String word = text(i, wordEnd);
+        int start = 0;
+        while (start < word.length() && CopiedText.isInvisible(word.codePointAt(start))) {
+            start += Character.charCount(word.codePointAt(start));
+        }
+        int letters = start;
+        while (letters < word.length() && word.charAt(letters) < 0x80 && Character.isLetter(word.charAt(letters))) {
+            letters++;
+        }
+        String keyword = word.substring(start, letters);
+        boolean stuck = start > 0 || letters < word.length() && word.charAt(letters) >= 0x80;
+        if (stuck && List.of("v", "vn", "vt", "f").contains(keyword.toLowerCase(java.util.Locale.ROOT))) {
+            throw error(i, "this line's first word reads '" + printable(word) + "'"
+                    + CopiedText.hint(word, "the word and what follows it are written in ASCII, a plain space between them") + " (as it is, the word is not '"
+                    + keyword + "', and the line would be passed over as one simpview does not read)");
         }
     }
 
@@ -434,7 +472,7 @@ final class ObjParser {
             i = reference(i, n);
             if (i < end && !isSeparator(b[i])) {
                 throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'"
-                    + TrailingComment.hint(b[start]));
+                    + TrailingComment.hint(b[start]) + copiedHint(start) + continuationHint(start));
             }
             anyNormal |= normalRefs[n] >= 0;
             everyNormal &= normalRefs[n] >= 0;
@@ -510,7 +548,7 @@ final class ObjParser {
         }
         if (i == digits) {
             throw error(start, "expected " + REFERENCE_FORMS + ", found '" + token(start) + "'"
-                    + TrailingComment.hint(b[start]) + continuationHint(start));
+                    + TrailingComment.hint(b[start]) + copiedHint(start) + continuationHint(start));
         }
         if (i - digits > MOST_INDEX_DIGITS) {
             value = Long.MAX_VALUE; // names nothing in any file; and 19 digits could overflow
@@ -555,13 +593,22 @@ final class ObjParser {
     }
 
     /**
-     * For an error at a '\\' that ends the line: Wavefront lets such a line go
-     * on on the next, and simpview does not (SPEC reads a model line by line,
-     * and places every error on one line), so the message says so; else "".
+     * For an error at a word that ends the line with a '\\', alone or glued to a number ("0\\"): Wavefront
+     * lets such a line go on on the next, and simpview does not (SPEC reads a model line by line, and places
+     * every error on one line), so the message says so; else "".
      */
     private String continuationHint(int i) {
-        return b[i] == '\\' && skipBlanks(i + 1) == end ? " (simpview does not join a line ending in '\\' to the"
-                + " next: write the whole line on one line)" : "";
+        int wordEnd = i;
+        while (wordEnd < end && !isSeparator(b[wordEnd])) {
+            wordEnd++;
+        }
+        return wordEnd > i && b[wordEnd - 1] == '\\' && skipBlanks(wordEnd) == end ? " (simpview does not join a"
+                + " line ending in '\\' to the next: write the whole line on one line)" : "";
+    }
+
+    /** For an error at a vertex reference holding a character beyond ASCII (a zero-width space after it), its name. */
+    private String copiedHint(int i) {
+        return CopiedText.hint(token(i), "a vertex reference is written with the ASCII digits, '-' and '/'");
     }
 
     /** The token at i: up to the next separator, at most 30 bytes. */

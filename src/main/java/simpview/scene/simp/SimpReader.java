@@ -20,7 +20,10 @@ import simpview.scene.text.TrailingComment;
  * of its buffer: no regular expressions, no splitting, no String per number.
  *
  * <p>Blank lines and comment lines (first non-blank character '#') are
- * skipped. Blanks are spaces and tabs. What follows the command word is read
+ * skipped. Blanks are spaces and tabs; a line of nothing else but form
+ * feeds is blank too (SPEC ignores blank lines, and a form feed shows
+ * nothing), while a form feed in a command is named, as other characters
+ * that show nothing are ({@link CopiedText}). What follows the command word is read
  * by the shape its {@link Kind} gives. Between numbers, in points and in
  * command arguments alike, any mix of blanks, commas and parentheses
  * separates, as in the course's own reader: {@code (x, y, z, r, g, b)},
@@ -139,7 +142,7 @@ public final class SimpReader implements AutoCloseable {
                 return false;
             }
             int i = skipBlanks(source.lineStart());
-            if (i < end && b[i] != '#') {
+            if (i < end && b[i] != '#' && !(b[i] == '\f' && onlyFormFeedsAndBlanks(i))) {
                 parse(i, into);
                 commandRead = true;
                 if (recording != null) {
@@ -281,8 +284,7 @@ public final class SimpReader implements AutoCloseable {
         int i = from;
         while (i < end) {
             if (!startsNumber(b[i])) {
-                throw error(i, kind.takes(n) ? "expected the end of the line, found '" + text(i, Math.min(end, i + 30))
-                        + "'" + TrailingComment.hint(b[i]) : "expected a number, found " + found(i));
+                throw error(i, kind.takes(n) ? endExpected(i) : "expected a number, found " + found(i));
             }
             if (n == most) {
                 int found = n + DecimalCommas.words(b, i, end);
@@ -306,7 +308,10 @@ public final class SimpReader implements AutoCloseable {
             axisEnd++;
         }
         if (axisEnd - from != 1 || b[from] < 'X' || b[from] > 'Z') {
-            throw error(from, "expected an axis X, Y or Z (upper case), found '" + text(from, axisEnd) + "'");
+            // 'X' then a non-breaking space reads as one word with the angle: the space is what is wrong
+            String found = text(from, axisEnd);
+            throw error(from, "expected an axis X, Y or Z (upper case), found '" + found + "'"
+                    + CopiedText.invisibleHint(found));
         }
         c.axis = AXES[b[from] - 'X'];
         int i = skipSeparators(axisEnd);
@@ -355,9 +360,19 @@ public final class SimpReader implements AutoCloseable {
     private void expectEnd(int i) throws SceneException {
         int j = skipBlanks(i);
         if (j < end) {
-            throw error(j, "expected the end of the line, found '" + text(j, Math.min(end, j + 30)) + "'"
-                    + TrailingComment.hint(b[j]));
+            throw error(j, endExpected(j));
         }
+    }
+
+    /**
+     * "expected the end of the line, found ..." for what stands at i after a complete command: a comment is
+     * told to go on a line of its own, and a character that shows nothing (a non-breaking space, a form feed
+     * after the last number) is named, since the quoted text looks like a blank.
+     */
+    private String endExpected(int i) {
+        String found = text(i, Math.min(end, i + 30));
+        return "expected the end of the line, found '" + found + "'" + TrailingComment.hint(b[i])
+                + CopiedText.invisibleHint(found);
     }
 
     /** A number ending at a blank, comma, parenthesis or the end of the line. */
@@ -382,6 +397,17 @@ public final class SimpReader implements AutoCloseable {
             i++;
         }
         return i;
+    }
+
+    /**
+     * Whether the line from i on holds only form feeds and blanks: a page break an editor left on a line of its
+     * own, a blank line, which the .obj reader passes over too.
+     */
+    private boolean onlyFormFeedsAndBlanks(int i) {
+        while (i < end && (b[i] == '\f' || isBlank(b[i]))) {
+            i++;
+        }
+        return i == end;
     }
 
     /** Blanks, commas and parentheses: what stands between numbers. */

@@ -29,11 +29,8 @@ public final class CopiedText {
     public static String hint(String text, String rule) {
         for (int k = 0; k < text.length(); ) {
             int cp = text.codePointAt(k);
-            String invisible = invisible(cp);
-            if (invisible != null) {
-                return ", which holds " + invisible + " (" + named(cp) + ")" + around(text, k, cp) + ": "
-                        + (isBlankLike(cp) ? "use a plain space" : "delete it" + (cp == 0xFEFF ? " (a file's byte order"
-                        + " mark is left there when files are joined, as cat a.simp b.simp joins them)" : ""));
+            if (invisible(cp) != null) {
+                return invisibleAt(text, k, cp);
             }
             if (cp > 0x7F) {
                 return ", whose '" + new String(Character.toChars(cp)) + "' is " + named(cp) + ", not ASCII: "
@@ -43,6 +40,35 @@ public final class CopiedText {
             k += Character.charCount(cp);
         }
         return "";
+    }
+
+    /**
+     * ", which holds a non-breaking space (U+00A0 NO-BREAK SPACE) after '{': use a plain space" for the first
+     * character of {@code text} that shows nothing; "" when there is none. For text that is wrong whatever
+     * else it holds (what follows a complete command), where an invisible character is the one thing the
+     * student cannot see for themselves.
+     */
+    public static String invisibleHint(String text) {
+        for (int k = 0; k < text.length(); ) {
+            int cp = text.codePointAt(k);
+            if (invisible(cp) != null) {
+                return invisibleAt(text, k, cp);
+            }
+            k += Character.charCount(cp);
+        }
+        return "";
+    }
+
+    /** {@link #hint}'s words for the invisible character cp at k of {@code text}. */
+    private static String invisibleAt(String text, int k, int cp) {
+        return ", which holds " + invisible(cp) + " (" + named(cp) + ")" + around(text, k, cp) + ": "
+                + (isBlankLike(cp) ? "use a plain space" : "delete it" + (cp == 0xFEFF ? " (a file's byte order"
+                + " mark is left there when files are joined, as cat a.simp b.simp joins them)" : ""));
+    }
+
+    /** Whether cp is a character that shows nothing ({@link #hint} names it). */
+    public static boolean isInvisible(int cp) {
+        return invisible(cp) != null;
     }
 
     /** Whether {@code text} holds a character that shows nothing ({@link #hint} names it). */

@@ -90,6 +90,61 @@ class ObjErrorsTest {
         assertError("v 0 \\ 0 1\n", 1, 5, "expected a number, found '\\'");
     }
 
+    /** A '\\' glued to the line's last number or reference is Wavefront's continuation too. */
+    @Test
+    void aLineContinuationGluedToANumberIsNamed() {
+        String hint = " (simpview does not join a line ending in '\\' to the next: write the whole line on one line)";
+        assertError("v 1 0 0\\\n0\n", 1, 7, "expected a number, found '0\\'" + hint);
+        assertError(TRIANGLE + "f 1 2 3\\ \n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn),"
+                + " found '3\\'" + hint);
+        assertError("v 1 0\\ 0\n", 1, 5, "expected a number, found '0\\'");
+    }
+
+    /**
+     * A v, vn, vt or f line whose first word holds a character that shows
+     * nothing, or a look-alike, is an error naming it: passed over as a kind
+     * of line simpview does not read, it left a vertex or a face silently
+     * missing (and a later index naming nothing).
+     */
+    @Test
+    void aKeywordHoldingAnInvisibleCharacterIsNamed() {
+        String passed = " (as it is, the word is not '%s', and the line would be passed over as one simpview does not"
+                + " read)";
+        String nbsp = ", which holds a non-breaking space (U+00A0 NO-BREAK SPACE) after '%s': use a plain space";
+        assertError("v 0 0 0\nv\u00A01 0 0\n", 2, 1, "this line's first word reads 'v\u00A01'"
+                + String.format(nbsp + passed, "v", "v"));
+        assertError(TRIANGLE + "v 1 1 0\nf 1 2 3\nf\u00A02 4 3\n", 6, 1, "this line's first word reads 'f\u00A02'"
+                + String.format(nbsp + passed, "f", "f"));
+        assertError("vn\u00A00 0 1\n", 1, 1, "this line's first word reads 'vn\u00A00'"
+                + String.format(nbsp + passed, "vn", "vn"));
+        assertError("vt\u00A00 0\n", 1, 1, "this line's first word reads 'vt\u00A00'"
+                + String.format(nbsp + passed, "vt", "vt"));
+        assertError("v 0 0 0\n\uFEFFv 1 0 0\n", 2, 1, "this line's first word reads '\uFEFFv', which holds a byte"
+                + " order mark (U+FEFF ZERO WIDTH NO-BREAK SPACE) before 'v': delete it (a file's byte order mark is"
+                + " left there when files are joined, as cat a.simp b.simp joins them)" + String.format(passed, "v"));
+        assertError("v\u22121 0 0\n", 1, 1, "this line's first word reads 'v\u22121', whose '\u2212' is U+2212 MINUS"
+                + " SIGN, not ASCII: the word and what follows it are written in ASCII, a plain space between them"
+                + " (text copied from a PDF or a word processor often looks right and is not)"
+                + String.format(passed, "v"));
+    }
+
+    /** A look-alike character stuck to a face's reference is named, as one stuck to a number is. */
+    @Test
+    void anInvisibleCharacterInAReferenceIsNamed() {
+        assertError(TRIANGLE + "f 1 2 3\u200B\n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn),"
+                + " found '3\u200B', which holds a zero-width space (U+200B ZERO WIDTH SPACE) after '3': delete it");
+        assertError(TRIANGLE + "f 1 2 \u200B3\n", 4, 7, "expected a vertex reference (v, v/vt, v//vn or v/vt/vn),"
+                + " found '\u200B3', which holds a zero-width space (U+200B ZERO WIDTH SPACE) before '3': delete it");
+    }
+
+    /** Words beyond ASCII that are no keyword stay other lines, passed over: a group or an object's name. */
+    @Test
+    void otherLinesBeyondAsciiArePassedOver() throws Exception {
+        byte[] bytes = ("g caf\u00E9\no \u00E9t\u00E9\nvertex\u00A01\n" + TRIANGLE + "f 1 2 3\n")
+                .getBytes(StandardCharsets.UTF_8);
+        assertEquals(1, ObjModel.of(ObjReaderTest.NAME, bytes).faceCount());
+    }
+
     @Test
     void aDecimalCommaThatMakesWZeroIsNamed() {
         assertError("v 0,5 0 0\n", 1, 9, "w is 0: the point (x/w, y/w, z/w) is undefined (a comma separates two"

@@ -285,6 +285,45 @@ class SimpReaderTest {
                 + " (U+00A0 NO-BREAK SPACE) after '0': use a plain space");
     }
 
+    /**
+     * After a complete command and after an axis, what looks like a blank
+     * and is not is named too, not only quoted: the quote shows a space.
+     */
+    @Test
+    void invisibleCharactersAfterACommandOrAnAxisAreNamed() {
+        String nbsp = ", which holds a non-breaking space (U+00A0 NO-BREAK SPACE)";
+        assertError("polygon (-50,-50,-50) (50,-50,-50) (0,50,-50)\u00A0", 1, 46,
+                "expected the end of the line, found '\u00A0'" + nbsp + ": use a plain space");
+        assertError("{\u00A0", 1, 2, "expected the end of the line, found '\u00A0'" + nbsp + ": use a plain space");
+        assertError("file \"caf\u00E9\" \u00A0x", 1, 13, "expected the end of the line, found '\u00A0x'" + nbsp
+                + " before 'x': use a plain space");
+        assertError("translate 1 0 0 \u00A0", 1, 17, "expected the end of the line, found '\u00A0'" + nbsp
+                + ": use a plain space");
+        assertError("rotate X\u00A030", 1, 8, "expected an axis X, Y or Z (upper case), found 'X\u00A030'" + nbsp
+                + " after 'X': use a plain space");
+        assertError("polygon (0,0,0) (1,0,0) (0,1,0)\f", 1, 32, "expected the end of the line, found ' ', which holds"
+                + " a form feed (U+000C FORM FEED (FF)): use a plain space");
+    }
+
+    /**
+     * A line of nothing but form feeds and blanks (an editor's page break)
+     * is blank, as SPEC ignores blank lines and the .obj reader passes it
+     * over; within a command a form feed is still named.
+     */
+    @Test
+    void aLineOfFormFeedsIsBlank() throws SceneException {
+        SimpReader r = reader("\f\nwire\n \f\t\f \n\f\n");
+        Command c = new Command();
+        assertTrue(r.next(c));
+        assertEquals(Kind.WIRE, c.kind());
+        assertEquals(2, r.lineNumber());
+        assertFalse(r.next(c));
+        assertEquals(4, r.linesRead());
+        // the message shows the form feed as a space, so that no terminal moves its cursor
+        assertError("\fwire", 1, 1, "unknown command ' wire', which holds a form feed (U+000C FORM FEED (FF)) before"
+                + " 'wire': use a plain space");
+    }
+
     @Test
     void linesEndingInACarriageReturnAloneAreNamedSo() {
         SceneException e = error("scale 1 2 3\rwire\r");
