@@ -49,6 +49,12 @@ public final class Matrix4 {
      * angles use StrictMath so a scene renders to the same bits on every JVM.
      */
     public static Matrix4 rotation(Axis axis, double degrees) {
+        if (Math.abs(degrees) >= WHOLE_DEGREES_ONLY) {
+            // so large an angle holds no fraction of a degree, and toRadians of it keeps nothing of where it
+            // points: it turns as its remainder mod 360 (exact) does. No smaller angle is touched, so every
+            // rotation a scene could sensibly hold keeps its bits
+            degrees %= 360;
+        }
         double c = exactCos(degrees);
         double s = exactSin(degrees);
         double[] r = switch (axis) {
@@ -72,7 +78,9 @@ public final class Matrix4 {
     }
 
     private static double exactCos(double degrees) {
-        double quarter = quarterTurn(degrees + 90);
+        // the quarter turn a quarter ahead, from the exact remainder: degrees + 90 rounds away the 90 of a huge
+        // angle (1e300 + 90 == 1e300), which made a cosine of 0 beside a sine of 0
+        double quarter = quarterTurn(degrees % 360 + 90);
         return Double.isNaN(quarter) ? StrictMath.cos(StrictMath.toRadians(degrees)) : quarter;
     }
 
@@ -80,6 +88,9 @@ public final class Matrix4 {
         double quarter = quarterTurn(degrees);
         return Double.isNaN(quarter) ? StrictMath.sin(StrictMath.toRadians(degrees)) : quarter;
     }
+
+    /** From 2^52 degrees up, a double holds whole degrees only (its ulp is 1 or more). */
+    private static final double WHOLE_DEGREES_ONLY = 0x1p52;
 
     /** sin of a whole number of quarter turns, exactly; NaN for any other angle. */
     private static double quarterTurn(double degrees) {

@@ -29,6 +29,95 @@ class Matrix4Test {
         assertEquals(1, v.y(), 1e-15);
     }
 
+    /**
+     * An angle so large that angle + 90 == angle turns as its remainder mod
+     * 360 does: its cosine was taken from angle + 90, the angle itself, and
+     * came out 0 beside a sine of 0, a matrix that flattened everything.
+     */
+    @Test
+    void aHugeAngleTurnsAsItsRemainderDoes() {
+        for (double huge : new double[] {1e300, -1e300, 1e20, 0x1p52, 0x1p52 + 2, Double.MAX_VALUE, 1e300 + 1e285}) {
+            for (Axis axis : Axis.values()) {
+                assertSameBits(entries(Matrix4.rotation(axis, huge % 360)), Matrix4.rotation(axis, huge),
+                        axis + " " + huge);
+            }
+        }
+        assertPoint(1, 0, 0, Matrix4.rotation(Axis.Z, 1e300).apply(Vertex.of(1, 0, 0)));
+    }
+
+    /**
+     * Every angle below 2^52 degrees rotates to the same bits as before huge
+     * angles were reduced: the rotations of the course's scenes and goldens
+     * are untouched. The reference is the former computation, kept here.
+     */
+    @Test
+    void everyOtherAngleKeepsItsBits() {
+        java.util.Random random = new java.util.Random(7);
+        java.util.List<Double> angles = new java.util.ArrayList<>();
+        for (int k = -4000; k <= 4000; k++) {
+            angles.add(k * 0.25);
+        }
+        for (int k = 0; k < 20000; k++) {
+            angles.add((random.nextDouble() - 0.5) * Math.pow(10, random.nextInt(16)));
+        }
+        angles.addAll(java.util.List.of(1e15, -1e15 + 90, 0x1p52 - 1, -(0x1p52 - 0.5), 1e-300, -0.0));
+        for (double angle : angles) {
+            for (Axis axis : Axis.values()) {
+                assertSameBits(formerRotation(axis, angle), Matrix4.rotation(axis, angle), axis + " " + angle);
+            }
+        }
+    }
+
+    private static void assertSameBits(double[] expected, Matrix4 actual, String what) {
+        for (int row = 0; row < 4; row++) {
+            for (int column = 0; column < 4; column++) {
+                assertEquals(Double.doubleToRawLongBits(expected[4 * row + column]),
+                        Double.doubleToRawLongBits(actual.get(row, column)), what + " at " + row + "," + column);
+            }
+        }
+    }
+
+    /** The entries of m, row by row. */
+    private static double[] entries(Matrix4 m) {
+        double[] r = new double[16];
+        for (int k = 0; k < 16; k++) {
+            r[k] = m.get(k / 4, k % 4);
+        }
+        return r;
+    }
+
+    /** Matrix4.rotation's entries, row by row, as it computed them before huge angles were reduced. */
+    private static double[] formerRotation(Axis axis, double degrees) {
+        double quarterCos = formerQuarterTurn(degrees + 90);
+        double c = Double.isNaN(quarterCos) ? StrictMath.cos(StrictMath.toRadians(degrees)) : quarterCos;
+        double quarterSin = formerQuarterTurn(degrees);
+        double s = Double.isNaN(quarterSin) ? StrictMath.sin(StrictMath.toRadians(degrees)) : quarterSin;
+        // the two axes the rotation turns, in the order that makes it right-handed
+        int a = (axis.ordinal() + 1) % 3;
+        int b = (axis.ordinal() + 2) % 3;
+        double[] r = new double[16];
+        r[0] = r[5] = r[10] = r[15] = 1;
+        r[4 * a + a] = c;
+        r[4 * a + b] = -s;
+        r[4 * b + a] = s;
+        r[4 * b + b] = c;
+        return r;
+    }
+
+    private static double formerQuarterTurn(double degrees) {
+        double d = degrees % 360;
+        if (d < 0) {
+            d += 360;
+        }
+        if (d == 0 || d == 180) {
+            return 0;
+        }
+        if (d == 90) {
+            return 1;
+        }
+        return d == 270 ? -1 : Double.NaN;
+    }
+
     @Test
     void theLastTransformationNamedIsTheFirstApplied() {
         // CTM = T * S: a point is scaled first, then translated.
