@@ -74,7 +74,7 @@ record FilePlaces(String fileName, Path here, Path working) {
             hints.append(" (there is ").append(shown).append(": names are case-sensitive here)");
         }
         if (CopiedText.hasCurlyQuote(name)) {
-            String plain = name.replaceAll("[\u201C\u201D\u201E\u2018\u2019]", "");
+            String plain = CopiedText.withoutQuotes(name);
             hints.append(" (the name").append(CopiedText.hint(name, "")).append(": write ")
                     .append(fileName.endsWith(".obj") ? "obj" : "file").append(" \"").append(plain).append("\")");
         }

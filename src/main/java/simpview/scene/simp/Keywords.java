@@ -48,10 +48,17 @@ final class Keywords {
      * in case, or by at most one edit in three of its letters (and not in
      * all of them): 'scal' is near 'scale', 'v' or 'x' near nothing. The
      * only commands of one character are the brackets, so a one-character
-     * word is near '{' or '}' only when it is another bracket.
+     * word is near '{' or '}' only when it is another bracket. A word of
+     * three letters or more that begins a command word is near it as by one
+     * edit ('fill' is 'filled' cut short). Between words equally near, one
+     * that takes arguments when the line has some, or none when it has
+     * none, is meant: 'fill' and 'filed' alone on a line are 'filled' (file
+     * takes a name), 'fill "cube"' is 'file'.
+     *
+     * @param arguments whether anything follows the word on its line
      */
-    static String suggestion(String word) {
-        String near = word.length() == 1 ? bracket(word.charAt(0)) : nearestWord(word);
+    static String suggestion(String word, boolean arguments) {
+        String near = word.length() == 1 ? bracket(word.charAt(0)) : nearestWord(word, arguments);
         return near == null ? "" : " (did you mean '" + near + "'?"
                 + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")");
     }
@@ -62,18 +69,23 @@ final class Keywords {
     }
 
     /** The command word near {@code word} (two characters or more), or null. */
-    private static String nearestWord(String word) {
+    private static String nearestWord(String word, boolean arguments) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         for (Kind k : KINDS) {
             int d = k.spelling.equalsIgnoreCase(word) ? 0 : Nearest.distance(word, k.spelling);
-            if (d < bestDistance) {
+            if (word.length() >= 3 && k.spelling.startsWith(word)) {
+                d = Math.min(d, 1);
+            }
+            // doubled, so that a word fitting the line's arguments wins a tie and never loses to a nearer one
+            int fit = 2 * d + ((k.shape != Command.Shape.NONE) == arguments ? 0 : 1);
+            if (fit < bestDistance) {
                 best = k.spelling;
-                bestDistance = d;
+                bestDistance = fit;
             }
         }
         int allowed = Math.min(Math.max(1, word.length() / 3), word.length() - 1);
-        return bestDistance <= allowed ? best : null;
+        return bestDistance / 2 <= allowed ? best : null;
     }
 
     /**

@@ -238,7 +238,7 @@ public final class SimpReader implements AutoCloseable {
             // a non-breaking space or a byte order mark inside the word: named, since the word looks right
             String invisible = CopiedText.hasInvisible(word) ? CopiedText.hint(word, "") : "";
             throw error(start, "unknown command '" + word + "'" + (!invisible.isEmpty() ? invisible
-                    : readsAModel(word) ? modelHint() : Keywords.suggestion(word) + "; expected " + Keywords.all()));
+                    : readsAModel(word) ? modelHint() : Keywords.suggestion(word, skipBlanks(wordEnd) < end) + "; expected " + Keywords.all()));
         }
         c.kind = kind;
         // An expression, so that a new Shape does not build until it is read here.
@@ -338,7 +338,11 @@ public final class SimpReader implements AutoCloseable {
                 nameEnd++;
             }
             if (nameEnd == end) {
-                throw error(from, "the file name has no closing '\"'");
+                // file "cube” closes with a curly quote, which a copied line or a word processor puts there
+                String rest = text(nameStart, end);
+                throw error(from, "the file name has no closing '\"'" + (CopiedText.hasCurlyQuote(rest)
+                        ? " (the name" + CopiedText.hint(rest, "") + ": write " + c.kind.spelling + " \""
+                        + CopiedText.withoutQuotes(rest).strip() + "\")" : ""));
             }
             after = nameEnd + 1;
         } else {
@@ -447,10 +451,13 @@ public final class SimpReader implements AutoCloseable {
         String name = file().getFileName().toString();
         boolean obj = name.toLowerCase(java.util.Locale.ROOT).endsWith(".obj");
         String stem = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+        // obj "up" looks for up.obj, names being case-sensitive: up.OBJ is found only once renamed
+        String rename = obj && !name.endsWith(".obj") ? " (once the file is renamed " + stem + ".obj: obj adds .obj in"
+                + " lower case, and names are case-sensitive)" : "";
         return (obj ? ": " + name + " is an .obj model, not a scene" : ": this file holds an .obj model's lines, not a"
                 + " scene's (save it as " + stem + ".obj)") + "; a model is drawn from a scene file, a .simp file"
-                + " holding the line obj \"" + stem + "\" after the camera, light and surface lines a lit scene needs"
-                + " (docs/simp.md, Lit scenes)";
+                + " holding the line obj \"" + stem + "\"" + rename + " after the camera, light and surface lines a lit"
+                + " scene needs (docs/simp.md, Lit scenes)";
     }
 
     private static String wrongCount(Kind kind, int found) {

@@ -12,8 +12,8 @@ package simpview.scene.text;
  */
 public final class CopiedText {
 
-    /** The curly quotes a word processor makes of '"' and '\''. */
-    private static final String CURLY_QUOTES = "\u201C\u201D\u201E\u2018\u2019";
+    /** The curly quotes a word processor makes of '"' and '\'', and the guillemets of a French keyboard. */
+    private static final String CURLY_QUOTES = "\u201C\u201D\u201E\u2018\u2019\u00AB\u00BB\u2039\u203A";
 
     private CopiedText() {
     }
@@ -112,6 +112,17 @@ public final class CopiedText {
     /** Whether {@code text} holds a curly quote: a name copied from the handouts' obj “filename”. */
     public static boolean hasCurlyQuote(String text) {
         return text.codePoints().anyMatch(CopiedText::isCurlyQuote);
+    }
+
+    /**
+     * The name {@code name} would be, written between straight quotes: its curly quotes and guillemets
+     * dropped, and a straight '"' beside them too (file “cube" is the name “cube" to a reader that
+     * quotes with '"' only, whose quote was meant to close it).
+     */
+    public static String withoutQuotes(String name) {
+        StringBuilder plain = new StringBuilder(name.length());
+        name.codePoints().filter(cp -> cp != '"' && !isCurlyQuote(cp)).forEach(plain::appendCodePoint);
+        return plain.toString();
     }
 
     private static boolean isCurlyQuote(int cp) {

@@ -379,6 +379,15 @@ class ScenePipelineTest {
         assertTrue(model.problem().contains("whose '\u2018' is U+2018 LEFT SINGLE QUOTATION MARK, not ASCII: a name is"
                 + " quoted with the ASCII '\"'"), model.problem());
         assertTrue(model.problem().contains(": write obj \"tri\")"), model.problem());
+        // a curly quote opening and a straight one closing: the straight one is no part of the name to write
+        SceneException mixed = assertThrows(SceneException.class, () -> draw(write("mixed.simp", "file \u201Ctri\""),
+                new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(mixed.problem().contains(": write file \"tri\"); looked for "), mixed.problem());
+        SceneException guillemets = assertThrows(SceneException.class, () -> draw(write("fr.simp",
+                "file \u00ABtri\u00BB"), new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertTrue(guillemets.problem().contains("whose '\u00AB' is U+00AB LEFT-POINTING DOUBLE ANGLE QUOTATION MARK,"
+                + " not ASCII: a name is quoted with the ASCII '\"'"), guillemets.problem());
+        assertTrue(guillemets.problem().contains(": write file \"tri\"); looked for "), guillemets.problem());
     }
 
     @Test

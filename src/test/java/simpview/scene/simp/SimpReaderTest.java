@@ -324,6 +324,37 @@ class SimpReaderTest {
                 + " 'wire': use a plain space");
     }
 
+    /**
+     * A word that is 'filled' misspelt or cut short alone on a line is told
+     * 'filled', not 'file', which takes a name; with a name after it, 'file'.
+     */
+    @Test
+    void aMisspeltStyleWordIsToldFilled() {
+        String all = "; expected " + Keywords.all();
+        assertError("fill", 1, 1, "unknown command 'fill' (did you mean 'filled'?)" + all);
+        assertError("filed", 1, 1, "unknown command 'filed' (did you mean 'filled'?)" + all);
+        assertError("fill \"cube\"", 1, 1, "unknown command 'fill' (did you mean 'file'?)" + all);
+        assertError("lite 1 1 1 1 0", 1, 1, "unknown command 'lite' (did you mean 'line'?)" + all);
+    }
+
+    /** A name closed by a curly quote is told which character it is and what to write. */
+    @Test
+    void aNameClosedByACurlyQuoteIsNamed() {
+        assertError("file \"cube\u201D", 1, 6, "the file name has no closing '\"' (the name, whose '\u201D' is U+201D"
+                + " RIGHT DOUBLE QUOTATION MARK, not ASCII: a name is quoted with the ASCII '\"' (text copied from a PDF"
+                + " or a word processor often looks right and is not): write file \"cube\")");
+        assertError("file \"cube", 1, 6, "the file name has no closing '\"'");
+    }
+
+    /** up.OBJ read as a scene is told that obj "up" finds it only as up.obj. */
+    @Test
+    void aModelWithAnUpperCaseEndingIsToldToRenameIt() {
+        SceneException e = assertThrows(SceneException.class, () -> SimpReader.of(Path.of("up.OBJ"),
+                "v 0 0 0\n".getBytes(StandardCharsets.UTF_8)).next(new Command()));
+        assertTrue(e.problem().contains("holding the line obj \"up\" (once the file is renamed up.obj: obj adds .obj"
+                + " in lower case, and names are case-sensitive)"), e.problem());
+    }
+
     @Test
     void linesEndingInACarriageReturnAloneAreNamedSo() {
         SceneException e = error("scale 1 2 3\rwire\r");
