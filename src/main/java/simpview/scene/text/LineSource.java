@@ -191,7 +191,8 @@ public final class LineSource {
         if (notTextAt < 0) {
             return true;
         }
-        throw new NotTextException(head(HEAD), bufferOffset + notTextAt, lineNumber, buf[notTextAt] & 0xFF);
+        int next = notTextAt + 1 < limit ? buf[notTextAt + 1] & 0xFF : -1;
+        throw new NotTextException(head(HEAD), bufferOffset + notTextAt, lineNumber, buf[notTextAt] & 0xFF, next);
     }
 
     /**
@@ -413,18 +414,21 @@ public final class LineSource {
         private final long offset;
         private final int line;
         private final int value;
+        /** The byte after it, -1 when there is none: whether the byte is malformed UTF-8 or another encoding's. */
+        private final int next;
 
-        NotTextException(byte[] head, long offset, int line, int value) {
+        NotTextException(byte[] head, long offset, int line, int value, int next) {
             super(String.format("byte 0x%02X at offset %d is not UTF-8 text", value, offset));
             this.head = head;
             this.offset = offset;
             this.line = line;
             this.value = value;
+            this.next = next;
         }
 
         /** The problem in words, {@code kind} saying what the file should be ("a SIMP file", "an .obj file"). */
         public NotText notText(String kind) {
-            return NotText.of(head, offset, line, value, kind);
+            return NotText.of(head, offset, line, value, next, kind);
         }
     }
 

@@ -39,11 +39,16 @@ public record NotText(int line, String problem) {
      * ({@link LineSource} finds it as it reads): UTF-16 or UTF-32 text, when
      * the file's first bytes ({@code head}) show it; else that byte, and what
      * the file looks like: a known kind of file by its first bytes, or text
-     * saved in Latin-1 or Windows-1252 when the byte is a letter there.
+     * saved in Latin-1 or Windows-1252 when the byte is a letter there and
+     * the byte after it ({@code next}, -1 when none) does not continue it as
+     * UTF-8 would: a byte that starts a character followed by one that
+     * continues it is malformed UTF-8 (a character cut short, an overlong
+     * form, a surrogate, a code point beyond U+10FFFF), which Latin-1 text
+     * hardly ever holds.
      *
      * @param kind what the file should be, "a SIMP file" or "an .obj file"
      */
-    public static NotText of(byte[] head, long offset, int line, int value, String kind) {
+    public static NotText of(byte[] head, long offset, int line, int value, int next, String kind) {
         String utf32 = utf32(head, 0, head.length);
         String utf16 = utf32 == null ? utf16(head, 0, head.length) : null;
         if (utf32 != null || utf16 != null) {
@@ -55,6 +60,12 @@ public record NotText(int line, String problem) {
         if (looks != null || value < 0x80) {
             return new NotText(line, "not a text file: " + byteAt + (looks == null ? "" : "; it looks like " + looks)
                     + "; " + kind + " is lines of text");
+        }
+        if (value >= 0xC0 && next >= 0x80 && next <= 0xBF) {
+            // ED A0 80, C0 AF, F4 90 ...: bytes made as UTF-8 is made, by a program that made it wrongly
+            return new NotText(line, "not UTF-8 text: " + byteAt + String.format(" and the byte 0x%02X after it are"
+                    + " malformed UTF-8 (a character cut short, an overlong form, a surrogate or one beyond"
+                    + " U+10FFFF), not text in another encoding", next) + SAVE_AS_UTF8.formatted(kind));
         }
         String latin = latin1(value);
         return new NotText(line, "not UTF-8 text: " + byteAt + " starts or continues no UTF-8 character"

@@ -117,6 +117,29 @@ class ObjNotTextTest {
         }
     }
 
+    /**
+     * A byte that starts a character followed by one that continues it is
+     * malformed UTF-8, not Latin-1: an overlong '/', a surrogate, a code
+     * point beyond U+10FFFF and a character cut short are told so, not that
+     * the byte is a Latin-1 letter ('í' for 0xED).
+     */
+    @Test
+    void malformedUtf8IsNotTakenForLatin1() throws IOException {
+        String malformed = " are malformed UTF-8 (a character cut short, an overlong form, a surrogate or one beyond"
+                + " U+10FFFF), not text in another encoding" + SAVE_AS_UTF8;
+        assertEquals("not UTF-8 text: byte 0xC0 at offset 1 (line 1) and the byte 0xAF after it" + malformed,
+                fails(new byte[] {'#', (byte) 0xC0, (byte) 0xAF, '\n'}).problem());
+        assertEquals("not UTF-8 text: byte 0xED at offset 1 (line 1) and the byte 0xA0 after it" + malformed,
+                fails(new byte[] {'#', (byte) 0xED, (byte) 0xA0, (byte) 0x80, '\n'}).problem());
+        assertEquals("not UTF-8 text: byte 0xF4 at offset 1 (line 1) and the byte 0x90 after it" + malformed,
+                fails(new byte[] {'#', (byte) 0xF4, (byte) 0x90, (byte) 0x80, (byte) 0x80, '\n'}).problem());
+        assertEquals("not UTF-8 text: byte 0xE2 at offset 1 (line 1) and the byte 0x88 after it" + malformed,
+                fails(new byte[] {'#', (byte) 0xE2, (byte) 0x88, ' ', '\n'}).problem());
+        // a Latin-1 letter before a space or a letter is still told it may be Latin-1
+        assertTrue(fails(new byte[] {'#', 'p', (byte) 0xED, 'x', '\n'}).problem().contains("where that byte is"
+                + " '\u00ed'"));
+    }
+
     @Test
     void aTextModelWithAnErrorIsNotTakenForAnything() throws IOException {
         Path file = Files.writeString(dir.resolve("model.obj"), "# caf\u00e9\nv 0 0 0\nf 1 2 3\n");
