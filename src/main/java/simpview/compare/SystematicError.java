@@ -265,14 +265,13 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
      * Whether a way can be told from simpview's panel as it stands: a move alone always can; a turn (and its
      * move) only where it changes more than {@code 1 - MIN_SHARE} of the pixels it matches of simpview's own
      * panel beyond the tolerance, so that a panel symmetric under it is never called turned (see the class's
-     * comment).
+     * comment). Measured on the finer grid, and left as soon as the share is past that: a turned panel is
+     * nearly always far from itself within its first rows. On every pixel, for each of the dozens of ways
+     * ranked, it made a comparison 0.1-0.2 s slower.
      */
     private static boolean toldApart(int[] ours, int n, Way way, int tolerance) {
-        if (way.turn == Turn.NONE) {
-            return true;
-        }
-        long[] self = wrong(ours, ours, n, way, false, tolerance);
-        return self[0] > (1 - MIN_SHARE) * self[1];
+        return way.turn == Turn.NONE
+                || sampledRate(ours, ours, n, way, FINE_STRIDE, tolerance, 1 - MIN_SHARE) > 1 - MIN_SHARE;
     }
 
     /**
