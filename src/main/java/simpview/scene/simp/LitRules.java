@@ -79,7 +79,7 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 2);
         geometry.line(ctm, xyz, rgb);
-        noteNonFinite(files.place() + " line");
+        noteNonFinite("line");
     }
 
     @Override
@@ -87,13 +87,16 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 3);
         geometry.polygon(ctm, xyz, rgb, wire);
-        noteNonFinite(files.place() + " polygon");
+        noteNonFinite("polygon");
     }
 
-    /** Notes {@code place} when the primitive just drawn was the first with a vertex that is not finite. */
-    private void noteNonFinite(String place) {
+    /**
+     * Notes where the primitive just drawn stands ("ovf.simp:3 polygon") when it was the first with a vertex
+     * that is not finite; the place is put into words only then, not for every primitive.
+     */
+    private void noteNonFinite(String kind) {
         if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
-            firstNonFinite = place;
+            firstNonFinite = files.place() + " " + kind;
         }
     }
 
