@@ -5,17 +5,24 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import simpview.geometry.Vertex;
+import simpview.pages.A1Layout;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
+import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
 import simpview.raster.AntialiasedLineRenderer;
 import simpview.scene.simp.SceneMonitor;
+import simpview.surface.CoverageDrawable;
+import simpview.surface.Drawable;
+import simpview.surface.DrawableDecorator;
+import simpview.surface.PageCanvas;
 
 /**
  * The first assignment's pages, pixel by pixel: the replayed history ends in
@@ -110,35 +117,60 @@ class A1HistoryTest {
      * A student given page 3's lines as render --primitives prints them blends each line's colour, a double, by
      * SPEC's formula; simpview's antialiased panel must be what they get, at every blended write. The colours
      * are whole levels (k / 255), so blending the double and the byte agree: with the raw random doubles a third
-     * of the writes or so came out a level off, 3 % of the panel.
+     * of the writes or so came out a level off, 3 % of the panel. Panel 4 is drawn once through the page's own
+     * chain with every write recorded (the colour before, the line's colour and coverage, the colour after), and
+     * the panel so drawn is the page's: asking the inspector pixel by pixel, which redraws the page each time,
+     * took 17 s for every other row.
      */
     @Test
     void theRandomLinesBlendTheColourThePrimitivesPrint() {
         for (long seed : new long[] {SEED, 361}) {
             A1Lines lines = A1Lines.random(seed);
-            BufferedImage image = Assignment1.render(3, new PageContext(seed, null, null, SceneMonitor.NONE));
-            int checked = 0;
-            int left = simpview.pages.A1Layout.left(4);
-            int top = simpview.pages.A1Layout.top(4);
-            for (int row = top; row < top + 300; row += 2) {
-                for (int column = left; column < left + 300; column++) {
-                    if ((image.getRGB(column, row) & 0xFFFFFF) == 0) {
-                        continue;
-                    }
-                    A1Report report = A1Inspector.inspect(3, seed, A1Rule.SPEC, column, LAST - row);
-                    for (A1Report.Write w : report.writes()) {
-                        Vertex given = lines.start(w.number() - 1);
-                        double[] colour = {given.r(), given.g(), given.b()};
-                        int now = 0;
-                        for (int k = 0; k < 3; k++) {
-                            double old = (w.old() >>> (16 - 8 * k) & 0xFF) / 255.0;
-                            double v = w.coverage() * colour[k] + (1 - w.coverage()) * old;
-                            now |= (int) Math.floor(v * 255 + 0.5) << (16 - 8 * k);
-                        }
-                        assertEquals(now, w.now() & 0xFFFFFF, "seed " + seed + ": " + report.text());
-                        checked++;
-                    }
+            PageCanvas canvas = new PageCanvas();
+            Drawable panel = A1Layout.paint(canvas)[3];
+            record Blend(int line, int old, int now, double coverage) {
+            }
+            List<Blend> writes = new ArrayList<>();
+            int[] line = {-1};
+            double[] coverage = {Double.NaN};
+            Drawable written = new DrawableDecorator(panel) {
+                @Override
+                public void setPixel(int x, int y, double z, int argb) {
+                    int old = delegate.getPixel(x, y);
+                    delegate.setPixel(x, y, z, argb);
+                    writes.add(new Blend(line[0], old, delegate.getPixel(x, y), coverage[0]));
                 }
+            };
+            CoverageDrawable blend = new CoverageDrawable(written) {
+                @Override
+                public void setPixel(int x, int y, double z, int argb) {
+                    coverage[0] = coverage();
+                    super.setPixel(x, y, z, argb);
+                }
+            };
+            LineTestPage.drawPanel(4, A1Rule.SPEC, lines, blend, i -> line[0] = i);
+            BufferedImage image = Assignment1.render(3, new PageContext(seed, null, null, SceneMonitor.NONE));
+            int left = A1Layout.left(4);
+            int top = A1Layout.top(4);
+            for (int row = top; row < top + 300; row++) {
+                for (int column = left; column < left + 300; column++) {
+                    assertEquals(image.getRGB(column, row), canvas.image().getRGB(column, row),
+                            "seed " + seed + ": the panel drawn here is not the page's at (" + column + ", " + row + ")");
+                }
+            }
+            int checked = 0;
+            for (Blend w : writes) {
+                Vertex given = lines.start(w.line());
+                double c = w.coverage();
+                double[] colour = {given.r(), given.g(), given.b()};
+                int now = 0;
+                for (int k = 0; k < 3; k++) {
+                    double old = (w.old() >>> (16 - 8 * k) & 0xFF) / 255.0;
+                    double v = c * colour[k] + (1 - c) * old;
+                    now |= (int) Math.floor(v * 255 + 0.5) << (16 - 8 * k);
+                }
+                assertEquals(now, w.now() & 0xFFFFFF, "seed " + seed + ": line " + (w.line() + 1) + ", coverage " + c);
+                checked++;
             }
             assertTrue(checked > 1000, "blends checked: " + checked);
         }
