@@ -21,7 +21,7 @@ package simpview.compare;
  * ({@link #verdictShare}), the failing pixels and their regions then count
  * by FLIP, not by the tolerance.
  *
- * <p>Invariant: slack[i] <= direct[i]. The pixels are read, never kept
+ * <p>Invariant: {@code slack[i] <= direct[i]}. The pixels are read, never kept
  * changed; the arrays here (and the blurred copies) are the only ones made.
  */
 public final class Comparison {

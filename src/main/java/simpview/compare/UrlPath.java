@@ -39,7 +39,7 @@ public final class UrlPath {
 
     /**
      * One segment: RFC 3986's unreserved characters (letters and digits of ASCII, '-', '.', '_', '~') as they
-     * are, every other byte as %XX. Encoding more than a path needs (':' '&' '=' '(' ...) is still the same
+     * are, every other byte as %XX. Encoding more than a path needs ({@code ':' '&' '=' '(' ...}) is still the same
      * URL, and leaves nothing a Markdown link or an HTML attribute would read otherwise; ".." stays "..".
      */
     static String segment(String name) {

@@ -130,7 +130,7 @@ public final class Clipper {
 
     /**
      * out[at] = where the edge from vertex {@code inside} (distance dIn >= 0)
-     * to vertex {@code outside} (dOut < 0) crosses the plane, every number of
+     * to vertex {@code outside} ({@code dOut < 0}) crosses the plane, every number of
      * the vertex: a + t (b - a), t = da / (da - db), from the end a nearer the
      * plane (the inside one when both are as near). Either way SPEC's linear
      * interpolation at the crossing.

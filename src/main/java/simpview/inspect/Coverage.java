@@ -92,7 +92,7 @@ final class Coverage {
     }
 
     /**
-     * The part of the polygon (closed) or line with z <= eye: its vertices'
+     * The part of the polygon (closed) or line with {@code z <= eye}: its vertices'
      * x, y and z, or null when nothing of it is there. One Sutherland-Hodgman
      * pass; a line keeps its two ends, the one behind moved to the plane.
      */

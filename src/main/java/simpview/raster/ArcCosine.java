@@ -8,8 +8,8 @@ package simpview.raster;
  * {@code theta0} from the table, {@code sin(theta - theta0) = sin theta cos
  * theta0 - cos theta sin theta0 = u}, and {@code theta = theta0 + asin u},
  * {@code asin u = u + u^3/6 + 3u^5/40 + ...}. The table's point is the nearest
- * 128th of cos theta where |cos theta| <= sin theta, else the nearest of sin
- * theta, so |theta - theta0| <= sqrt(2)/256 and the series' next term is below
+ * 128th of cos theta where {@code |cos theta| <= sin theta}, else the nearest of sin
+ * theta, so {@code |theta - theta0| <= sqrt(2)/256} and the series' next term is below
  * 1e-17: within a few units in the last place of {@code Math.acos}
  * ({@code ArcCosineTest} measures it).
  */

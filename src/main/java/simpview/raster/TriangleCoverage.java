@@ -42,7 +42,7 @@ final class TriangleCoverage {
     double area;
     /** True when the vertices were given clockwise: the counter-clockwise order is 1, 3, 2. */
     boolean clockwise;
-    /** The covered run of the last row asked for: from <= x < to. */
+    /** The covered run of the last row asked for: {@code from <= x < to}. */
     int from;
     int to;
 

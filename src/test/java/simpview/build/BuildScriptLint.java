@@ -68,7 +68,7 @@ final class BuildScriptLint {
             GradleRule.addedBlock("the application and java extension blocks", "(?<![\\w.])(application|java)\\s*\\{",
                     "4.10", "under gradleBelow('4.10') else, or a common form"));
 
-    /** if (gradleBelow('N')), if (!gradleBelow('N')), or GradleVersion.current() compared with < or >=. */
+    /** if (gradleBelow('N')), if (!gradleBelow('N')), or GradleVersion.current() compared with {@code <} or {@code >=}. */
     private static final Pattern GUARD = Pattern.compile("\\bif\\s*\\(\\s*(?:(!\\s*)?gradleBelow\\(\\s*'([0-9.]+)'\\s*\\)"
             + "|GradleVersion\\.current\\(\\)\\s*(<|>=)\\s*GradleVersion\\.version\\(\\s*'([0-9.]+)'\\s*\\))"
             + "\\s*\\)\\s*\\{");

@@ -17,7 +17,7 @@ class AntialiasedLineRendererTest {
 
     private static final double R = Math.sqrt(2) / 2;
 
-    /** The disc's share inside |t| <= 1/2, by summing thin strips of the disc (no formula shared). */
+    /** The disc's share inside {@code |t| <= 1/2}, by summing thin strips of the disc (no formula shared). */
     private static double numericCoverage(double distance) {
         int strips = 200_000;
         double inside = 0;

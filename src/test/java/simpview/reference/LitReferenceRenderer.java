@@ -353,7 +353,7 @@ final class LitReferenceRenderer {
         };
     }
 
-    /** z >= near keeps c, z <= far gives the fog colour, lerp between. */
+    /** {@code z >= near} keeps c, {@code z <= far} gives the fog colour, lerp between. */
     static double[] fogged(Fog fog, double z, double[] c) {
         if (fog == null || z >= fog.near()) {
             return c;

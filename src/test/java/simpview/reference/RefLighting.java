@@ -6,7 +6,7 @@ import java.util.List;
  * SPEC Part 2's lighting formula, once, in camera space with the eye at the
  * origin:
  * I = kd Ia + sum_i (Ii fi) (kd (N.Li) + ks max(0, V.Ri)^p), fi = 1/(Ai + Bi di),
- * a light adding nothing where N.Li <= 0 or where it sits on the lit point.
+ * a light adding nothing where {@code N.Li <= 0} or where it sits on the lit point.
  * The result is clamped to [0, 1] per channel.
  */
 record RefLighting(double[] ambient, double ks, double exponent, List<Light> lights, boolean perspective) {

@@ -30,7 +30,7 @@ class RefLightingTest {
         assertArrayEquals(AMBIENT, lighting(0.5, 8, light(0, 0, 0, 1, 0)).colour(P, new double[3], KD), 1e-12);
     }
 
-    /** max(0, V.R)^0 is 1, even where V.R < 0; with p = 1 the same place has no specular term. */
+    /** max(0, V.R)^0 is 1, even where {@code V.R < 0}; with p = 1 the same place has no specular term. */
     @Test
     void exponentZeroGivesTheFullSpecularTerm() {
         // Lit point off to the side of the eye, light at 60 degrees from the other side: V.R is about -0.26.

@@ -51,7 +51,7 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
 
     /**
      * Draws what is still recorded, when several threads draw (see
-     * {@link #drawWith}); nothing otherwise. Called once the scene is read,
+     * {@link DepthCuedRules#drawWith} and {@link LitRules#drawWith}); nothing otherwise. Called once the scene is read,
      * also after an error, so what was read before it is drawn.
      */
     void flush();

@@ -20,7 +20,7 @@ import java.nio.charset.StandardCharsets;
  */
 public final class DecimalParser {
 
-    /** Up to this many digits a long holds the mantissa without overflow (10^18 < 2^63). */
+    /** Up to this many digits a long holds the mantissa without overflow ({@code 10^18 < 2^63}). */
     private static final int MAX_LONG_DIGITS = 18;
     /** Integers up to 2^53 are exact doubles. */
     private static final long MAX_EXACT_MANTISSA = 1L << 53;

@@ -281,7 +281,7 @@ public final class LineSource {
 
     /**
      * The index of the first '\n' in b[from, to), or -1. Per long: x has a
-     * zero byte where b has '\n'; (x - ONES) & ~x sets the high bit of the
+     * zero byte where b has '\n'; {@code (x - ONES) & ~x} sets the high bit of the
      * first zero byte (later bytes may get false ones, the first is exact).
      */
     public static int indexOfNewline(byte[] b, int from, int to) {
