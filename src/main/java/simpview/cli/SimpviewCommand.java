@@ -33,7 +33,9 @@ import simpview.scene.Nearest;
         version = ExitCode.VERSION,
         subcommands = {RenderCommand.class, CompareCommand.class, CheckCommand.class, InspectCommand.class},
         description = {
-            "Shows the eight rasterizer pages in a window; click or press Right for the next page.",
+            "Shows the course's pages in a window, the second assignment's eight first;",
+            "click or press Right for the next page, Alt+1 to Alt+4 for each assignment's",
+            "pages, F1 for every key.",
             "Use 'simpview render' to write pages as PNG files without a window,",
             "'simpview compare' to see how close a picture is to simpview's,",
             "and 'simpview check DIR' to check a folder of your pages before handing them in."},
