@@ -53,9 +53,7 @@ public final class PageDrawing {
                 .withCue(near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far)
                 .withOwnColours(ownColours)
                 .withRules(cueGiven ? ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING : ScenePipeline.Rules.BY_COMMANDS);
-        PageCanvas canvas = renderer.canvas();
-        canvas.clear();
-        return ScenePipeline.draw(file, canvas, options, monitor);
+        return renderer.renderScene(file, options, monitor);
     }
 
     /** The canvas the last page or scene was drawn on (overwritten by the next). */
