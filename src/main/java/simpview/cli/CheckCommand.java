@@ -16,6 +16,7 @@ import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
+import simpview.compare.ComparisonReport;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.pages.Assignment1;
@@ -74,12 +75,12 @@ public final class CheckCommand implements Callable<Integer> {
     private Path scene;
 
     @Option(names = "--tolerance", paramLabel = "T", converter = CompareOptions.Tolerance.class,
-            description = "per channel, in 1/255 steps (default: 8)")
-    private int tolerance = 8;
+            description = "per channel, in 1/255 steps (default: " + Comparison.DEFAULT_TOLERANCE + ")")
+    private int tolerance = Comparison.DEFAULT_TOLERANCE;
 
     @Option(names = "--min", paramLabel = "P", converter = CompareOptions.Share.class,
-            description = "the share in percent that passes (default: 99)")
-    private double min = 99;
+            description = "the share in percent that passes (default: " + ComparisonReport.DEFAULT_MINIMUM + ")")
+    private double min = ComparisonReport.DEFAULT_MINIMUM;
 
     @Option(names = "--deviation", paramLabel = "PX", converter = CompareOptions.Deviation.class,
             description = "position deviation, 0, 1 or 2 pixels (default: 1)")
@@ -197,8 +198,8 @@ public final class CheckCommand implements Callable<Integer> {
         Path rules = Files.isRegularFile(folder.resolve(FOLDER_RUBRIC)) ? folder.resolve(FOLDER_RUBRIC) : null;
         Rubric judged;
         try {
-            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(8, 99, Comparison.DEFAULT_DEVIATION,
-                    Comparison.Metric.EXACT));
+            judged = CompareCommand.rubricOf(rules, RubricRule.defaults(Comparison.DEFAULT_TOLERANCE,
+                    ComparisonReport.DEFAULT_MINIMUM, Comparison.DEFAULT_DEVIATION, Comparison.Metric.EXACT));
         } catch (CompareException e) {
             return e.getMessage() + "\n";
         }

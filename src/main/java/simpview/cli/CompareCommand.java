@@ -116,12 +116,13 @@ public final class CompareCommand implements Callable<Integer> {
     private Path outDir;
 
     @Option(names = "--tolerance", paramLabel = "T", converter = CompareOptions.Tolerance.class,
-            description = "per channel, in 1/255 steps, for the verdict (with slack) and the regions (default: 8)")
-    private int tolerance = 8;
+            description = "per channel, in 1/255 steps, for the verdict (with slack) and the regions (default: "
+                    + Comparison.DEFAULT_TOLERANCE + ")")
+    private int tolerance = Comparison.DEFAULT_TOLERANCE;
 
     @Option(names = "--min", paramLabel = "P", converter = CompareOptions.Share.class,
-            description = "the share in percent that passes (default: 99)")
-    private double min = 99;
+            description = "the share in percent that passes (default: " + ComparisonReport.DEFAULT_MINIMUM + ")")
+    private double min = ComparisonReport.DEFAULT_MINIMUM;
 
     @Option(names = "--deviation", paramLabel = "PX", converter = CompareOptions.Deviation.class,
             description = "position deviation, 0, 1 or 2 pixels: a pixel matches when the other picture has its colour "

@@ -46,6 +46,12 @@ public final class Comparison {
 
     /** Today's slack: one pixel. */
     public static final int DEFAULT_DEVIATION = 1;
+    /**
+     * The tolerance {@code simpview compare} and {@code check} judge by unless told otherwise
+     * ({@code --tolerance}), per channel in 1/255 steps: what {@link #verdictShare} is usually asked for, and
+     * {@link ComparisonReport}'s.
+     */
+    public static final int DEFAULT_TOLERANCE = 8;
     /** The largest position deviation offered. */
     public static final int MAX_DEVIATION = 2;
 

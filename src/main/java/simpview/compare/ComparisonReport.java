@@ -22,6 +22,18 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
     /** How many of the largest patches a report lists. */
     public static final int REGIONS_LISTED = 5;
 
+    /**
+     * The share, in percent, that passes unless told otherwise ({@code --min}): with
+     * {@link Comparison#DEFAULT_TOLERANCE} and a comparison of {@link Comparison#of(int[], int[])}, the verdict of
+     * {@code simpview compare PICTURE --page N} with no other option.
+     */
+    public static final int DEFAULT_MINIMUM = 99;
+
+    /**
+     * The report of {@code comparison}, of the picture {@code theirs} against what simpview drew ({@code against},
+     * words for the report's first line), judged within {@code tolerance} (1/255 steps, with the comparison's slack)
+     * on at least {@code minimum} percent of the panel; the hint of a systematic mistake searched for.
+     */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
         return of(theirs, against, comparison, tolerance, minimum, SystematicError.find(comparison, tolerance));
     }

@@ -13,6 +13,9 @@ import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.compare.Comparison;
+import simpview.compare.ComparisonReport;
+import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 
@@ -57,6 +60,34 @@ public class CompareCommandTest {
         assertTrue(run.out().contains("margins: white (140,000 pixels)"), run.out());
         assertTrue(run.out().contains("PASS: 100.00 % within 8/255 with slack (99.00 % needed)"), run.out());
         assertFalse(run.out().contains("hint:"), run.out());
+    }
+
+    /**
+     * The verdict {@code compare} gives without --tolerance and --min is the
+     * one a Java caller gets from the named defaults: a picture with a patch
+     * of 1.5 % of the panel wrong fails by both, and the two reports are the
+     * same text but for the words naming simpview's picture.
+     */
+    @Test
+    void withoutOptionsTheVerdictIsTheNamedDefaultsOne() throws Exception {
+        BufferedImage page = page(2);
+        for (int y = 100; y < 200; y++) {
+            for (int x = 100; x < 164; x++) {
+                page.setRGB(x, y, 0x00FF00);
+            }
+        }
+        Path mine = png("patched.png", page);
+        CliRun run = CliRun.of("compare", mine.toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        Picture theirs = Picture.read(mine);
+        Picture ours = Picture.ofPage(page(2), "simpview's page 2");
+        ComparisonReport report = ComparisonReport.of(theirs, "PAGE",
+                Comparison.of(ours.panel(), theirs.panel()),
+                Comparison.DEFAULT_TOLERANCE, ComparisonReport.DEFAULT_MINIMUM);
+        assertFalse(report.passes());
+        String against = run.out().lines().findFirst().orElseThrow().replace(mine + " against simpview's ", "");
+        assertEquals(run.out(), report.text().replace("simpview's PAGE", "simpview's " + against));
+        assertTrue(run.out().contains("within 8/255 with slack (99.00 % needed)"), run.out());
     }
 
     /** A panel turned upside down fails, and is told why: the course's y runs up, an image's rows down. */

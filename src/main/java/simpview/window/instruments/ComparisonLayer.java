@@ -35,7 +35,7 @@ public final class ComparisonLayer {
     /** What the page view shows while comparing. */
     public enum Showing { OURS, THEIRS, HEAT }
 
-    private static final int TOLERANCE = 8;
+    private static final int TOLERANCE = Comparison.DEFAULT_TOLERANCE;
 
     private final JFrame owner;
     /** Puts a picture (and the error to show over it, or null) on the screen. */
