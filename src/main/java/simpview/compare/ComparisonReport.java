@@ -72,6 +72,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         return comparison.deviation() == 0 ? "" : words;
     }
 
+    /**
+     * The verdict: PASS when at least {@link #minimum} percent of the panel is within the tolerance (with the
+     * comparison's slack), and no more pixels fail than {@link #maxFailing} allows.
+     */
     public boolean passes() {
         return verdictShare() * 100 >= minimum - 1e-9 && (maxFailing < 0 || regions.pixels() <= maxFailing);
     }
@@ -83,6 +87,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
                 : flip() ? slack + ", FLIP" : slack;
     }
 
+    /** The report as {@code simpview compare} prints it: the shares, the patches that differ, the verdict, a hint. */
     public String text() {
         StringBuilder out = new StringBuilder();
         out.append(theirs.name()).append(" against simpview's ").append(against).append('\n');

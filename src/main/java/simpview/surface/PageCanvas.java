@@ -116,7 +116,10 @@ public final class PageCanvas {
         return waiting;
     }
 
-    /** The page's image, what the clear owes of it made first. */
+    /**
+     * The page's image itself, 750x750 (what the clear owes of it made first): the next page drawn on this
+     * canvas overwrites it; {@link #snapshot} is a copy to keep.
+     */
     public BufferedImage image() {
         return imageDrawable.image();
     }

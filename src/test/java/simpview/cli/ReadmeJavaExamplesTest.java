@@ -50,6 +50,8 @@ public class ReadmeJavaExamplesTest {
 
     private static Path project;
     private static String section;
+    /** The examples' first block: their imports. */
+    private static String imports;
     private static Class<?> examples;
 
     @TempDir
@@ -72,7 +74,8 @@ public class ReadmeJavaExamplesTest {
             blocks.add(m.group(1));
         }
         assertEquals(5, blocks.size(), "the imports and four examples: " + blocks);
-        String source = blocks.get(0) + "\nfinal class " + CLASS_NAME + " {\n\n"
+        imports = blocks.get(0);
+        String source = imports + "\nfinal class " + CLASS_NAME + " {\n\n"
                 + String.join("\n", blocks.subList(1, blocks.size())) + "}\n";
         String jar = System.getProperty("simpview.runnableJar");
         assertNotNull(jar, "simpview.runnableJar is not set: run the tests through Gradle, which builds the jar first");
@@ -214,5 +217,38 @@ public class ReadmeJavaExamplesTest {
         assertTrue(section.replace("\n", " ").contains("`" + first + "`"), "the README quotes " + first);
         assertTrue(report.contains("shading: phong"), report);
         assertTrue(section.contains("`whyThisColour(Path.of(\"simp/lit-shading.simp\"), 510, 409)`"), section);
+    }
+
+    /**
+     * The API pages lead a newcomer to what the examples use: each simpview
+     * type they import has its own comment, its package a package comment,
+     * and the command line's package comment, the map from each command to
+     * the types that do its work, names it.
+     */
+    @Test
+    void everyTypeTheExamplesImportIsDocumentedAndOnTheCommandLinesMap() throws IOException {
+        Path main = project.resolve("src/main/java");
+        String map = Files.readString(main.resolve("simpview/cli/package-info.java"));
+        Matcher m = Pattern.compile("(?m)^import (simpview(?:\\.[a-z]+)+)\\.([A-Z]\\w*);$").matcher(imports);
+        List<String> undocumented = new ArrayList<>();
+        int types = 0;
+        while (m.find()) {
+            types++;
+            String name = m.group(1) + "." + m.group(2);
+            Path folder = main.resolve(m.group(1).replace('.', '/'));
+            Pattern commented = Pattern.compile("\\*/\\s*public (?:final |abstract )?(?:class|record|interface|enum) "
+                    + m.group(2) + "\\b");
+            if (!commented.matcher(Files.readString(folder.resolve(m.group(2) + ".java"))).find()) {
+                undocumented.add(name + " has no class comment");
+            }
+            if (!Files.isRegularFile(folder.resolve("package-info.java"))) {
+                undocumented.add(m.group(1) + " has no package comment");
+            }
+            if (!map.contains("{@link " + name)) {
+                undocumented.add(name + " is not named in simpview/cli/package-info.java");
+            }
+        }
+        assertTrue(types >= 10, "the examples import simpview's types: " + imports);
+        assertEquals(List.of(), undocumented);
     }
 }
