@@ -139,23 +139,29 @@ public final class BatchTable {
     }
 
     /**
-     * E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped", then how many of them do not count
-     * ("; 3 pictures not counted (another of the same page counts)").
+     * E.g. "12 pictures: 9 pass, 2 fail, 1 could not be compared, 0 skipped", and when some do not count (another
+     * picture of their page counts), how many: "12 pictures: 7 pass, 1 fail, 1 could not be compared, 0 skipped, 3
+     * not counted (another picture of the same page counts)". A row that does not count is tallied there alone,
+     * whatever it came to, so the five add up to the whole, and pass, fail and could not be compared are of the
+     * rows that count: those the scores, the exit code, JUnit's suites and check's tally go by.
      */
     public static String summary(List<BatchRow> rows) {
         long[] counts = new long[BatchRow.Result.values().length];
+        long notCounted = 0;
         for (BatchRow row : rows) {
-            counts[row.result().ordinal()]++;
+            if (row.counts()) {
+                counts[row.result().ordinal()]++;
+            } else {
+                notCounted++;
+            }
         }
         long files = rows.stream().map(BatchRow::file).distinct().count();
-        // a page of the first assignment is a row per panel
+        // a page of the first assignment is a row per panel: then every count is of rows
         String what = files == rows.size() ? Count.of(rows.size(), "picture")
                 : Count.of(rows.size(), "row") + " (" + Count.of(files, "picture") + ")";
-        long notCounted = rows.stream().filter(r -> !r.counts()).map(BatchRow::file).distinct().count();
         return String.format("%s: %d pass, %d fail, %d could not be compared, %d skipped",
                 what, counts[0], counts[1], counts[2], counts[3])
-                + (notCounted == 0 ? "" : "; " + Count.of(notCounted, "picture") + " not counted (another of the "
-                        + "same page counts)");
+                + (notCounted == 0 ? "" : ", " + notCounted + " not counted (another picture of the same page counts)");
     }
 
     /** The same, then how many pages asked for have no picture: "...; 3 pages asked for without a picture". */
