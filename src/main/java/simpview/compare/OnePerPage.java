@@ -11,9 +11,10 @@ import java.util.function.Predicate;
  * Each page counts once per submission. Every picture is compared and listed, but of the pictures of one
  * page (or scene, or first-assignment panel) in one submission only one is scored: the one whose name is
  * the page's name and nothing else (page3.png, Page_3.png; not page3 copy.png, page3_v2.png or
- * old_page3.png); of those named equally well, the one in the truest format ({@link PictureFormat}: PNG, BMP,
- * GIF, JPEG), so a right page3.png is not failed for the page3.jpg beside it; and of those, the first in the
- * table's order (natural order of their paths). The others are marked {@link BatchRow#notCounted}: they score
+ * old_page3.png); of those named equally well, the one in the fewest folders (page3.png over old/page3.png, a
+ * draft kept in a folder that comes first by the alphabet); then the one in the truest format
+ * ({@link PictureFormat}: PNG, BMP, GIF, JPEG), so a right page3.png is not failed for the page3.jpg beside it;
+ * and of those, the first in the table's order (natural order of their paths). The others are marked {@link BatchRow#notCounted}: they score
  * nothing and are worth nothing, so a submission's total is never more than the pages asked for are worth.
  * The rule goes by file names alone, never by results, so handing in more pictures of a page never raises its
  * score. The format too is the name's, not the one the bytes were decoded as (which the rows' notes go by): a
@@ -73,7 +74,19 @@ public final class OnePerPage {
         if (plainlyNamed.test(file) != plainlyNamed.test(first)) {
             return plainlyNamed.test(file);
         }
+        if (depth(file) != depth(first)) {
+            return depth(file) < depth(first);
+        }
         return PictureFormat.of(file).truerThan(PictureFormat.of(first));
+    }
+
+    /**
+     * How many folders a picture (its path in the folder graded) is in: of one submission's pictures, the one nearer
+     * its top is what was handed in (page1.png), one further down a draft or a copy (old/page1.png), whatever their
+     * folders' names are by the alphabet.
+     */
+    private static int depth(String file) {
+        return (int) file.chars().filter(c -> c == '/' || c == '\\').count();
     }
 
     /**
@@ -91,7 +104,8 @@ public final class OnePerPage {
             PictureFormat other = PictureFormat.of(file);
             String named = plain ? "both are named the page's name and nothing else"
                     : "no picture's name is the page's name alone";
-            reason = format.truerThan(other) ? named + ", and " + format.whyOver(other)
+            reason = depth(counts) < depth(file) ? named + ", and it is nearer the top of the submission's folder"
+                    : format.truerThan(other) ? named + ", and " + format.whyOver(other)
                     : named + ", and it is the first by name";
         }
         return counts + " counts for " + page + " instead: " + reason;

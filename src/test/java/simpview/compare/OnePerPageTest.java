@@ -94,6 +94,28 @@ class OnePerPageTest {
                 + "and a PNG is what simpview asks for (a BMP is exact too)", marked.get(9).notCounted());
     }
 
+    /**
+     * A draft kept in a folder (old/page3.png) came before the page3.png at the top by the alphabet, and counted
+     * instead of it: the picture in fewer folders counts, before its format is looked at.
+     */
+    @Test
+    void ofPicturesNamedAsWellTheOneNearerTheTopCounts() throws Exception {
+        int[] wrong = GradingFixtures.stripes(2);
+        List<BatchRow> rows = List.of(
+                GradingFixtures.row("ann/backup/page3.png", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("ann/page3.jpg", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                GradingFixtures.row("old/page3.png", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("page3.png", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null));
+        Set<String> plain = Set.of("ann/backup/page3.png", "ann/page3.jpg", "old/page3.png", "page3.png");
+        List<BatchRow> mine = OnePerPage.asOne(rows.subList(2, 4), plain::contains);
+        assertEquals(List.of("page3.png"), mine.stream().filter(BatchRow::counts).map(BatchRow::file).toList());
+        assertEquals("page3.png counts for page 3 (seed 361) instead: both are named the page's name and nothing "
+                + "else, and it is nearer the top of the submission's folder", mine.get(0).notCounted());
+        List<BatchRow> ann = OnePerPage.bySubmission(rows.subList(0, 2), plain::contains, file -> false);
+        assertEquals(List.of("ann/page3.jpg"), ann.stream().filter(BatchRow::counts).map(BatchRow::file).toList(),
+                "in ann's folder, the JPEG at its top over the PNG in backup/");
+    }
+
     @Test
     void gradescopesTotalIsWhatThePagesAskedForAreWorth() throws Exception {
         List<Wanted> wanted = List.of(new Wanted("3 (seed 361)", ONE), new Wanted("4", ONE));
