@@ -1,11 +1,17 @@
 package simpview.cli;
 
 import java.io.IOException;
+import java.nio.file.FileSystemLoopException;
+import java.nio.file.FileVisitOption;
+import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.Stream;
 import simpview.compare.Count;
 import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
@@ -51,13 +57,33 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
 
     /** The pictures under {@code dir}, hidden ones left out and counted, and the files in formats it does not read. */
     static FolderListing of(Path dir) throws IOException {
-        List<Path> all;
-        try (Stream<Path> files = Files.walk(dir)) {
-            all = files.filter(Files::isRegularFile)
-                    .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(),
-                            dir.relativize(b).toString()))
-                    .toList();
-        }
+        List<Path> files = new ArrayList<>();
+        // A link is taken as what it links to, as a file manager shows it: a link to a folder is looked into (one
+        // that leads back to a folder on its way is not, as all it holds is listed already), and a link to a
+        // picture is that picture. A link to nothing is listed as it is named: a picture that cannot be read,
+        // which says why, and not a page silently missing.
+        Files.walkFileTree(dir, EnumSet.of(FileVisitOption.FOLLOW_LINKS), Integer.MAX_VALUE,
+                new SimpleFileVisitor<>() {
+                    @Override
+                    public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
+                        if (attributes.isRegularFile() || attributes.isSymbolicLink()) {
+                            files.add(file);
+                        }
+                        return FileVisitResult.CONTINUE;
+                    }
+
+                    @Override
+                    public FileVisitResult visitFileFailed(Path file, IOException e) throws IOException {
+                        if (e instanceof FileSystemLoopException) {
+                            return FileVisitResult.CONTINUE;
+                        }
+                        throw e;
+                    }
+                });
+        List<Path> all = files.stream()
+                .sorted((a, b) -> SceneList.NATURAL_ORDER.compare(dir.relativize(a).toString(),
+                        dir.relativize(b).toString()))
+                .toList();
         List<Path> pictures = all.stream().filter(f -> endsLike(f, PICTURE_ENDINGS)).toList();
         List<Path> shown = pictures.stream().filter(f -> !hidden(dir.relativize(f))).toList();
         List<Path> unreadable = all.stream().filter(f -> endsLike(f, UNREAD_ENDINGS) && !hidden(dir.relativize(f)))

@@ -175,6 +175,10 @@ public final class Picture {
 
     private static byte[] readBytes(Path file) throws CompareException {
         if (!Files.exists(file)) {
+            if (Files.isSymbolicLink(file)) { // ls lists it, and a folder's batch takes it: say what it is
+                throw new CompareException(file + " is a link to " + linkTarget(file) + ", which does not exist: "
+                        + "put the picture itself in its place");
+            }
             throw new CompareException(file + ": no such file");
         }
         if (Files.isDirectory(file)) {
@@ -186,6 +190,15 @@ public final class Picture {
             throw new CompareException(file + ": permission denied", e);
         } catch (IOException e) {
             throw new CompareException(file + ": cannot be read: " + FileProblem.of(file, e), e);
+        }
+    }
+
+    /** Where a link leads, as it is written in it; "somewhere that cannot be read" when it cannot be. */
+    private static String linkTarget(Path link) {
+        try {
+            return Files.readSymbolicLink(link).toString();
+        } catch (IOException | UnsupportedOperationException e) {
+            return "somewhere that cannot be read";
         }
     }
 
