@@ -425,6 +425,52 @@ public final class CompareBatch {
     }
 
     /**
+     * The folder a teacher's batch of {@code dir} grades, whose first-level folders are the submissions: {@code dir}
+     * itself, or, when every picture in it is in one folder inside it (a class's folder unzipped into a folder of
+     * its own: subs/class/alice/page1.png, subs/class/bob/page1.png) and every picture of that folder is in its
+     * folders, two or more of them, that folder, said on stderr. Graded as {@code dir}, the whole class would be
+     * one submission, each page counted once (the first student's), every other picture not counted, and the run
+     * could pass whatever the others handed in. A chain of such single folders is followed down; a student's own
+     * folder nested so (subs/A2/page1.png) is graded as given. The batch's own output folders are left out.
+     */
+    Path classFolder(Path dir, Outputs outputs) {
+        if (outputs.student() || !Files.isDirectory(dir)) {
+            return dir;
+        }
+        List<Path> pictures;
+        try {
+            List<Path> written = ownFolders(dir, outputs);
+            pictures = FolderListing.of(dir).pictures().stream().map(dir::relativize)
+                    .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p)).toList();
+        } catch (IOException | UncheckedIOException e) {
+            return dir; // said when the batch lists it
+        }
+        Path inside = Path.of("");
+        for (int depth = 0; !pictures.isEmpty(); depth++) {
+            int level = depth;
+            if (pictures.stream().anyMatch(p -> p.getNameCount() <= level + 1)) {
+                return dir; // a picture at this folder's top: it is a submission's, or the class's folder is here
+            }
+            Set<String> folders = pictures.stream().map(p -> p.getName(level).toString())
+                    .collect(Collectors.toCollection(TreeSet::new));
+            if (folders.size() > 1) {
+                if (depth == 0) {
+                    return dir;
+                }
+                Path graded = dir.resolve(inside);
+                List<String> names = folders.stream().sorted(SceneList.NATURAL_ORDER).toList();
+                String some = String.join(", ", names.subList(0, Math.min(3, names.size())))
+                        + (names.size() > 3 ? " and " + (names.size() - 3) + " more" : "");
+                err.println(says + "every picture in " + dir + " is in " + graded + ": its folders (" + some
+                        + ") are graded as the submissions, as --dir " + graded + " grades them");
+                return graded;
+            }
+            inside = inside.resolve(folders.iterator().next());
+        }
+        return dir;
+    }
+
+    /**
      * Compares the pictures under {@code dir} and writes the results. {@code wanted}: the pages and scenes asked
      * for; {@code firstAssignmentWanted}: the first assignment's pages asked for (besides those some picture is
      * of); {@code namer}: the rubric key a file name names, for the alternates; {@code matcher}: what a picture

@@ -190,11 +190,14 @@ public final class CompareCommand implements Callable<Integer> {
                 CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
                         gradescope, junit, html, false, diffs,
                         new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene"));
+                // with one scene for every picture, each picture is a submission of its own, in whatever folder
+                boolean eachAlone = pages == null && !firstAssignment() && scene != null && Files.isRegularFile(scene);
+                Path graded = eachAlone ? dir : batch.classFolder(dir, outputs);
                 if (firstAssignment()) {
-                    return batch.firstAssignment(dir, pages != null ? pages : CompareOptions.FIRST_ASSIGNMENT_PAGES,
-                            outputs);
+                    return batch.firstAssignment(graded,
+                            pages != null ? pages : CompareOptions.FIRST_ASSIGNMENT_PAGES, outputs);
                 }
-                return pages != null ? batch.pages(dir, pages, outputs) : batch.scenes(dir, scene, outputs);
+                return pages != null ? batch.pages(graded, pages, outputs) : batch.scenes(graded, scene, outputs);
             }
             return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
         }

@@ -32,6 +32,48 @@ class ClassFolderTest {
     }
 
     /**
+     * subs/class/ann and subs/class/bob: graded as subs, the whole class was one submission, ann's page 1
+     * counted, bob's wrong one "not counted", and the run passed. It is graded as subs/class, and says so.
+     */
+    @Test
+    void aClassUnzippedIntoAFolderOfItsOwnIsGradedStudentByStudent() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("class/ann/page1.png"), page(1));
+        png(subs.resolve("class/bob/page1.png"), page(2)); // wrong
+        Path xml = dir.resolve("results.xml");
+        Path out = dir.resolve("out");
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", out.toString(),
+                "--junit", xml.toString());
+
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob's page 1 fails: " + run.out() + run.err());
+        assertTrue(run.err().contains("simpview compare: every picture in " + subs + " is in "
+                + subs.resolve("class") + ": its folders (ann, bob) are graded as the submissions, as --dir "
+                + subs.resolve("class") + " grades them\n"), run.err());
+        assertTrue(run.out().contains("| bob/page1.png | 1 (seed 361) |"), run.out());
+        assertFalse(run.out().contains("not counted"), run.out());
+        assertTrue(run.out().contains("2 pictures: 1 pass, 1 fail, 0 could not be compared, 0 skipped\n"), run.out());
+        String junit = Files.readString(xml);
+        assertTrue(junit.contains("<testsuite name=\"bob\" id=\"1\" tests=\"1\" failures=\"1\""), junit);
+    }
+
+    /** A student's own folder nested so (subs/A2/page1.png, pictures at its top) is one submission, as given. */
+    @Test
+    void aStudentsFolderNestedInAnotherIsGradedAsGiven() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("A2/page1.png"), page(1));
+        png(subs.resolve("A2/old/page1.png"), page(2));
+        png(subs.resolve("A2/drafts/page1.png"), page(2));
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), "A2/page1.png counts and passes: " + run.out() + run.err());
+        assertFalse(run.err().contains("graded as the submissions"), run.err());
+        assertTrue(run.out().contains("| A2/page1.png | 1 (seed 361) |"), run.out());
+    }
+
+    /**
      * A link to a picture that is not there was passed over: the student, whose folder lists page2.png, was told
      * no picture of page 2 was found. It is a row saying where the link leads.
      */
