@@ -81,7 +81,22 @@ public final class JUnitResults {
         } catch (XMLStreamException e) {
             throw new IllegalStateException("writing JUnit XML to a string failed", e);
         }
-        return text.toString();
+        return legal(text.toString());
+    }
+
+    /**
+     * The text with every character XML 1.0 does not allow, escaped or not (a control character in a file name:
+     * "page1\u0001.png"), made U+FFFD: the JDK's writer escapes markup but passes those through, and one such name
+     * made the whole class's file unreadable to every XML reader. The writer makes no such character itself.
+     */
+    static String legal(String text) {
+        StringBuilder out = new StringBuilder(text.length());
+        text.codePoints().forEach(c -> {
+            boolean allowed = c == 0x9 || c == 0xA || c == 0xD || c >= 0x20 && c <= 0xD7FF
+                    || c >= 0xE000 && c <= 0xFFFD || c >= 0x10000 && c <= 0x10FFFF;
+            out.appendCodePoint(allowed ? c : 0xFFFD);
+        });
+        return out.toString();
     }
 
     private static void writeSuite(XMLStreamWriter xml, int id, String name, List<BatchRow> rows, List<Wanted> notFound)

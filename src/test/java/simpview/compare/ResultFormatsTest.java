@@ -160,6 +160,24 @@ class ResultFormatsTest {
         assertFalse(xml.contains("null"));
     }
 
+    /**
+     * A file name with a control character in it (Linux allows any but '/' and NUL) was written into the XML as it
+     * is, which XML 1.0 allows in no form: the whole class's file could not be read. It is U+FFFD there now.
+     */
+    @Test
+    void aControlCharacterInAFileNameLeavesTheXmlReadable() throws Exception {
+        List<BatchRow> rows = List.of(
+                GradingFixtures.row("ann/page1\u0001.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false, null),
+                BatchRow.broken("ann/page2\u001b.png", "2 (seed 361)", "ann/page2\u001b.png: cannot be read", ONE));
+        String xml = JUnitResults.xml(rows, List.of(), 1);
+        Document doc = DocumentBuilderFactory.newInstance().newDocumentBuilder()
+                .parse(new InputSource(new StringReader(xml)));
+        NodeList cases = doc.getElementsByTagName("testcase");
+        assertEquals("page 1 (seed 361) (ann/page1\ufffd.png)", ((Element) cases.item(0)).getAttribute("name"));
+        assertEquals("ann/page2\ufffd.png: cannot be read",
+                ((Element) doc.getElementsByTagName("error").item(0)).getAttribute("message"));
+    }
+
     @Test
     void theSchemaRefusesWhatJUnitDoesNotKnow() throws Exception {
         // The check above could fail: a testcase without a name, or an unknown element, is refused.
