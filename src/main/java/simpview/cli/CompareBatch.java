@@ -556,6 +556,9 @@ public final class CompareBatch {
         LinkedHashSet<CompareTarget> all = new LinkedHashSet<>(firstAssignmentFolder
                 ? wanted.stream().filter(t -> !t.isPage()).toList()
                 : askedFor(wanted, matchedAsNamed, unreadMatches));
+        // one scene for every picture: each picture is a student's, wherever it is (never one student's folder)
+        boolean oneStudent = outputs.student()
+                || matches.stream().noneMatch(Match::alone) && oneStudentsFolder(dir, pictures);
         Map<CompareTarget, Set<String>> handedInBy = new HashMap<>();
         for (int i = 0; i < pictures.size(); i++) {
             CompareTarget target = matches.get(i).target();
@@ -569,7 +572,7 @@ public final class CompareBatch {
                 .distinct().count() + withoutPictures.stream().filter(w -> !w.submission().isEmpty()).count();
         for (Match match : matchedAsNamed) {
             CompareTarget target = match.target();
-            if (target != null && (outputs.student() || 2L * handedInBy.get(target).size() >= submissions)) {
+            if (target != null && (oneStudent || 2L * handedInBy.get(target).size() >= submissions)) {
                 all.add(target);
             }
         }
@@ -594,8 +597,21 @@ public final class CompareBatch {
         String instead = withoutPictures.stream().filter(w -> w.submission().isEmpty()).map(WithoutPictures::instead)
                 .findFirst().orElse("");
         int written = writeResults(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
-                instead);
+                instead, oneStudent);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /**
+     * Whether a teacher's folder is one student's though its pictures are foldered: some of its pictures are at its
+     * top, and the others in one folder (page1.png ... page7.png beside renders/page8.png). Taken as a class's, its
+     * top and its folder were two submissions, each lacking the other's pages: the run failed and JUnit counted seven
+     * pages missing where results.json scored all eight and check passed. A class's folder has its pictures in two
+     * or more first-level folders; one with all its pictures at its top is one submission as it is.
+     */
+    private static boolean oneStudentsFolder(Path dir, List<Path> pictures) {
+        List<Path> relative = pictures.stream().map(dir::relativize).toList();
+        return relative.stream().anyMatch(p -> p.getNameCount() == 1)
+                && relative.stream().filter(p -> p.getNameCount() > 1).map(p -> p.getName(0)).distinct().count() == 1;
     }
 
     /**
@@ -1229,12 +1245,14 @@ public final class CompareBatch {
      * counts passes and no submission lacks a page asked for.
      */
     private int writeResults(Path dir, List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
-            Predicate<String> plainlyNamed, Predicate<String> alone, String instead) {
-        // A student's folder (check) is one submission, however its pictures are foldered; a class's, one a folder.
-        List<BatchRow> rows = outputs.student() ? OnePerPage.asOne(compared, plainlyNamed)
+            Predicate<String> plainlyNamed, Predicate<String> alone, String instead, boolean oneStudent) {
+        // A student's folder (check's, or one whose pictures are at its top and in one folder) is one submission,
+        // however its pictures are foldered; a class's, one a first-level folder.
+        List<BatchRow> rows = oneStudent ? OnePerPage.asOne(compared, plainlyNamed)
                 : OnePerPage.bySubmission(compared, plainlyNamed, alone);
+        Function<String, String> submissionOf = oneStudent ? file -> "" : JUnitResults::submission;
         RubricRule base = rubric.defaults();
-        List<Map.Entry<String, Wanted>> missing = outputs.student()
+        List<Map.Entry<String, Wanted>> missing = oneStudent
                 ? Wanted.missing(wanted, rows).stream().map(w -> Map.entry("", w)).toList()
                 : Wanted.missingBySubmission(wanted, rows);
         String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
@@ -1252,10 +1270,10 @@ public final class CompareBatch {
                 sayIfAClass(compared, outputs.gradescope());
             }
             if (outputs.junit() != null) {
-                OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds));
+                OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds, submissionOf));
             }
             if (outputs.html() != null) {
-                HtmlReport.write(rows, wanted, outputs.html(), outDir);
+                HtmlReport.write(rows, wanted, outputs.html(), outDir, submissionOf);
             }
         } catch (IOException e) {
             err.println(says + e.getMessage()); // "cannot write report/compare.md: ...", and why

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Function;
 
 /**
  * A batch as one web page, {@code index.html}, that a teacher opens from
@@ -35,11 +36,25 @@ public final class HtmlReport {
      * {@code outDir} (they are linked from where they are, not copied).
      */
     public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir) throws IOException {
+        write(rows, wanted, htmlDir, outDir, JUnitResults::submission);
+    }
+
+    /**
+     * The same with the submission of a file (its path in the folder) given: "" for every file of a folder that is
+     * one student's however its pictures are foldered, shown as {@link JUnitResults#TOP}.
+     */
+    public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir,
+            Function<String, String> submissionOf) throws IOException {
         OutputFiles.writeString(htmlDir.resolve(INDEX),
-                page(rows, Wanted.missingBySubmission(wanted, rows), htmlDir, outDir));
+                page(rows, Wanted.missingBySubmission(wanted, rows, submissionOf), htmlDir, outDir, submissionOf));
     }
 
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {
+        return page(rows, missing, htmlDir, outDir, JUnitResults::submission);
+    }
+
+    static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir,
+            Function<String, String> submissionOf) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows, missing))).append("</title>\n")
@@ -47,7 +62,7 @@ public final class HtmlReport {
         h.append("<h1>simpview compare</h1>\n<p id=\"summary\">").append(esc(BatchTable.summary(rows, missing)))
                 .append("</p>\n");
         legend(h);
-        table(h, rows, missing);
+        table(h, rows, missing, submissionOf);
         h.append("<p class=\"hint\">Click a column's heading to sort by it (again: the other way); "
                 + "index.html#sort=4-down opens it sorted by share, lowest last. "
                 + "Shares are of the 650x650 panel's pixels, in percent.</p>\n");
@@ -76,7 +91,8 @@ public final class HtmlReport {
         h.append(String.format(Locale.ROOT, "<span class=\"swatch\" style=\"background:#%06x\"></span>%s ", rgb, esc(what)));
     }
 
-    private static void table(StringBuilder h, List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing) {
+    private static void table(StringBuilder h, List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing,
+            Function<String, String> submissionOf) {
         h.append("<table id=\"results\">\n<thead><tr>");
         String[] headings = {"submission", "picture", "page", "result", "share", "identical", "failing pixels",
             "score", "details"};
@@ -88,7 +104,8 @@ public final class HtmlReport {
         for (BatchRow row : rows) {
             String result = row.result().name();
             h.append("<tr class=\"row ").append(result.toLowerCase(Locale.ROOT)).append("\">");
-            cell(h, JUnitResults.submission(row.file()), null);
+            String submission = submissionOf.apply(row.file());
+            cell(h, submission.isEmpty() ? JUnitResults.TOP : submission, null);
             cell(h, row.file(), null);
             cell(h, row.target().isEmpty() ? "" : GradescopeResults.name(row.target()), null);
             cell(h, result, null);
@@ -109,7 +126,7 @@ public final class HtmlReport {
         for (Map.Entry<String, Wanted> lack : missing) {
             Wanted wanted = lack.getValue();
             h.append("<tr class=\"row missing\">");
-            cell(h, lack.getKey(), null);
+            cell(h, lack.getKey().isEmpty() ? JUnitResults.TOP : lack.getKey(), null);
             cell(h, "", null);
             cell(h, GradescopeResults.name(wanted.target()), null);
             cell(h, "MISSING", null);

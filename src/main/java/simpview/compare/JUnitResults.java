@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Function;
 import javax.xml.stream.XMLOutputFactory;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamWriter;
@@ -33,13 +34,22 @@ public final class JUnitResults {
 
     /** {@code wanted}: every page or scene asked for; each submission lacking one gets a failing test for it. */
     public static String xml(List<BatchRow> rows, List<Wanted> wanted, double seconds) {
+        return xml(rows, wanted, seconds, JUnitResults::submission);
+    }
+
+    /**
+     * The same with the submission of a file (its path in the folder) given: "" for every file of a folder that is
+     * one student's however its pictures are foldered, which is then the one suite {@link #TOP}.
+     */
+    public static String xml(List<BatchRow> rows, List<Wanted> wanted, double seconds,
+            Function<String, String> submissionOf) {
         Map<String, List<BatchRow>> suites = new LinkedHashMap<>();
         for (BatchRow row : rows) {
-            suites.computeIfAbsent(submission(row.file()), k -> new ArrayList<>()).add(row);
+            suites.computeIfAbsent(submissionOf.apply(row.file()), k -> new ArrayList<>()).add(row);
         }
         // a submission that handed in only files simpview does not read lacks every page
         wanted.forEach(w -> w.unreadable()
-                .forEach(file -> suites.computeIfAbsent(submission(file), k -> new ArrayList<>())));
+                .forEach(file -> suites.computeIfAbsent(submissionOf.apply(file), k -> new ArrayList<>())));
         // so does a first-level folder holding no picture (her pages zipped)
         Wanted.foldersWithoutPictures(wanted).forEach(folder -> suites.computeIfAbsent(folder, k -> new ArrayList<>()));
         if (suites.isEmpty() && !wanted.isEmpty()) {
@@ -99,8 +109,9 @@ public final class JUnitResults {
         return out.toString();
     }
 
-    private static void writeSuite(XMLStreamWriter xml, int id, String name, List<BatchRow> rows, List<Wanted> notFound)
-            throws XMLStreamException {
+    private static void writeSuite(XMLStreamWriter xml, int id, String submission, List<BatchRow> rows,
+            List<Wanted> notFound) throws XMLStreamException {
+        String name = submission.isEmpty() ? TOP : submission; // the whole folder: one student's
         xml.writeCharacters("\n  ");
         xml.writeStartElement("testsuite");
         xml.writeAttribute("name", name);
@@ -139,7 +150,7 @@ public final class JUnitResults {
             xml.writeStartElement("testcase");
             xml.writeAttribute("name", GradescopeResults.name(wanted.target()) + " (no picture)");
             xml.writeAttribute("classname", name);
-            String unreadable = wanted.whyMissing(name);
+            String unreadable = wanted.whyMissing(submission);
             element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found"
                     + (unreadable.isEmpty() ? "" : "; " + unreadable), "missing",
                     "No picture's name names " + GradescopeResults.name(wanted.target()) + "."

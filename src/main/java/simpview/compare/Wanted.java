@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 
 /**
  * A page or scene the batch was asked for (by --pages or the scenes of
@@ -60,12 +61,22 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
      * of {@code wanted}, under no submission (""), when there are none of these.
      */
     public static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows) {
+        return missingBySubmission(wanted, rows, JUnitResults::submission);
+    }
+
+    /**
+     * The same with the submission of a file (its path in the folder) given: "" for every file when the folder is
+     * one student's however its pictures are foldered (page1.png beside renders/page8.png), whose pages are then
+     * missing from the whole folder.
+     */
+    public static List<Map.Entry<String, Wanted>> missingBySubmission(List<Wanted> wanted, List<BatchRow> rows,
+            Function<String, String> submissionOf) {
         Map<String, List<BatchRow>> bySubmission = new LinkedHashMap<>();
         for (BatchRow row : rows) {
-            bySubmission.computeIfAbsent(JUnitResults.submission(row.file()), k -> new ArrayList<>()).add(row);
+            bySubmission.computeIfAbsent(submissionOf.apply(row.file()), k -> new ArrayList<>()).add(row);
         }
         for (Wanted w : wanted) {
-            w.unreadable().forEach(file -> bySubmission.computeIfAbsent(JUnitResults.submission(file),
+            w.unreadable().forEach(file -> bySubmission.computeIfAbsent(submissionOf.apply(file),
                     k -> new ArrayList<>()));
         }
         for (String folder : foldersWithoutPictures(wanted)) {

@@ -74,6 +74,50 @@ class ClassFolderTest {
     }
 
     /**
+     * One student's folder with page 1 at its top and page 2 in renders/: compare --dir took the top and renders/
+     * for two submissions, each lacking the other's page, and exited 1 with JUnit failing both, where results.json
+     * scored both pages and check passed. It is one submission, as results.json and check take it.
+     */
+    @Test
+    void aStudentsPicturesAtTheTopAndInOneFolderAreOneSubmission() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        png(mine.resolve("renders/page2.png"), page(2));
+        Path xml = dir.resolve("results.xml");
+        Path json = dir.resolve("results.json");
+
+        CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString(), "--junit", xml.toString(), "--gradescope", json.toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertFalse(run.out().contains("MISSING"), run.out());
+        String junit = Files.readString(xml);
+        assertTrue(junit.contains("<testsuite name=\"submission\" id=\"0\" tests=\"2\" failures=\"0\""), junit);
+        assertFalse(junit.contains("name=\"renders\""), junit);
+        assertTrue(Files.readString(json).contains("\"score\": 2.0"), Files.readString(json));
+        assertEquals(ExitCode.OK, CliRun.of("check", mine.toString(), "--pages", "1-2").exitCode());
+    }
+
+    /** With one scene for every picture, each picture is a student's, at the top of the folder or in one below. */
+    @Test
+    void withOneSceneEveryPictureStillCountsOnItsOwn() throws Exception {
+        Path scene = dir.resolve("tri.simp");
+        Files.writeString(scene, "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path subs = dir.resolve("subs");
+        Files.createDirectories(subs.resolve("late"));
+        for (Path picture : new Path[] {subs.resolve("ann.png"), subs.resolve("bob.png"), subs.resolve("late/cy.png")}) {
+            assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out", picture.toString())
+                    .exitCode());
+        }
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--scene", scene.toString(), "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains("3 pictures: 3 pass, 0 fail, 0 could not be compared, 0 skipped\n"), run.out());
+    }
+
+    /**
      * A link to a picture that is not there was passed over: the student, whose folder lists page2.png, was told
      * no picture of page 2 was found. It is a row saying where the link leads.
      */

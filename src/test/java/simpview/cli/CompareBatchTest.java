@@ -46,6 +46,7 @@ public class CompareBatchTest {
             }
         }
         png(submissions.resolve("bob/Page_2.png"), wrong);
+        png(submissions.resolve("cy/page5.png"), page(5));
         Files.write(submissions.resolve("page3.png"), new byte[] {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0});
         Files.writeString(submissions.resolve("page10.png"), "x");
         Files.writeString(submissions.resolve("notes.txt"), "not a picture, and not named like one");
@@ -56,23 +57,26 @@ public class CompareBatchTest {
         assertFalse(run.showsStackTrace(), run.err());
         List<String> rows = csvRows(out);
         // a heading, one row per picture, then one per page of --pages each submission lacks: bob (his
-        // folder) has only page 2, the top folder pages 1, 3 and 10
-        assertEquals(5 + 7 + 6, rows.size(), "a heading, one row per picture, one per page lacking: " + rows);
+        // folder) has only page 2, cy (hers) only page 5, the top folder pages 1, 3 and 10 (a class's folder: its
+        // pictures are in two first-level folders, and at its top)
+        assertEquals(6 + 7 + 7 + 6, rows.size(), "a heading, one row per picture, one per page lacking: " + rows);
         assertTrue(rows.get(0).startsWith("file,page,identical,within 1/255,within 8/255,identical (slack)"), rows.get(0));
         assertTrue(rows.get(1).startsWith("bob/Page_2.png,2 (seed 361),"), rows.get(1));
         assertTrue(rows.get(1).contains(",FAIL,white,diffs/bob_Page_2-diff.png,"), rows.get(1));
-        assertTrue(rows.get(2).startsWith("page1.png,1 (seed 361),100.00,100.00,100.00,100.00,100.00,100.00,100.00,PASS,white,"
-                + "diffs/page1-diff.png,"), rows.get(2));
-        assertTrue(rows.get(3).startsWith("page3.png,3 (seed 361),,,,,,,,ERROR,,,"), rows.get(3));
-        assertTrue(rows.get(3).contains("page3.png: cannot be read as a picture, it is damaged or cut short"), rows.get(3));
-        assertTrue(rows.get(4).startsWith("page10.png,,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(4));
-        assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(5));
-        assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(11));
+        assertTrue(rows.get(2).startsWith("cy/page5.png,5,"), rows.get(2));
+        assertTrue(rows.get(3).startsWith("page1.png,1 (seed 361),100.00,100.00,100.00,100.00,100.00,100.00,100.00,PASS,white,"
+                + "diffs/page1-diff.png,"), rows.get(3));
+        assertTrue(rows.get(4).startsWith("page3.png,3 (seed 361),,,,,,,,ERROR,,,"), rows.get(4));
+        assertTrue(rows.get(4).contains("page3.png: cannot be read as a picture, it is damaged or cut short"), rows.get(4));
+        assertTrue(rows.get(5).startsWith("page10.png,,,,,,,,,SKIPPED,,,page 10 is not among --pages 1-8"), rows.get(5));
+        assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(6));
+        assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(12));
+        assertEquals("cy/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in cy was found", rows.get(13));
         assertEquals("submission,2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) at the top of the folder "
-                + "was found", rows.get(12));
+                + "was found", rows.get(20));
         assertEquals("submission,4,,,,,,,,MISSING,,,no picture of page 4 at the top of the folder was found",
-                rows.get(13));
-        assertTrue(rows.subList(5, 18).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
+                rows.get(21));
+        assertTrue(rows.subList(6, 26).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());
         assertTrue(Files.isRegularFile(out.resolve("diffs/page1-diff.png")));
@@ -81,12 +85,12 @@ public class CompareBatchTest {
         assertEquals(table, run.out().substring(0, table.length()), "the table is printed too");
         assertTrue(table.contains("| page1.png | 1 (seed 361) | 100.00 |"), table);
         assertTrue(table.contains("[diff](diffs/bob_Page_2-diff.png)"), table);
-        assertTrue(table.contains("4 pictures: 1 pass, 1 fail, 1 could not be compared, 1 skipped; "
-                + "13 pages asked for without a picture"), table);
+        assertTrue(table.contains("5 pictures: 2 pass, 1 fail, 1 could not be compared, 1 skipped; "
+                + "20 pages asked for without a picture"), table);
         assertTrue(table.contains("| bob/ | 7 |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 7 in bob was found |"),
                 table);
-        assertTrue(run.err().contains("/4] page1.png: PASS 100.00 %"), run.err());
-        assertTrue(run.err().contains("/4] page3.png: ERROR: "), run.err());
+        assertTrue(run.err().contains("/5] page1.png: PASS 100.00 %"), run.err());
+        assertTrue(run.err().contains("/5] page3.png: ERROR: "), run.err());
     }
 
     @Test
