@@ -99,9 +99,13 @@ public final class SubmissionNames {
                 + "name like " + word + (aPage ? number : "3") + ending + ")";
     }
 
-    /** A name without its letters' accents (página: pagina), which the words of page names are matched against. */
+    /**
+     * A name without its letters' accents (página: pagina) and with its full-width letters, digits and spaces as
+     * their plain forms (page８, as a Japanese or Chinese keyboard types the digit: page8), which the words and
+     * numbers of page names are matched against.
+     */
     private static String plain(String name) {
-        return java.text.Normalizer.normalize(name, java.text.Normalizer.Form.NFD).replaceAll("\\p{M}", "");
+        return java.text.Normalizer.normalize(name, java.text.Normalizer.Form.NFKD).replaceAll("\\p{M}", "");
     }
 
     /**

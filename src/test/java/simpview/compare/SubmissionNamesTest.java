@@ -28,6 +28,10 @@ class SubmissionNamesTest {
         assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("página1.png"));
         assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("pa\u0301gina1.png"), "as a Mac spells it (NFD)");
         assertEquals(OptionalInt.of(2), SubmissionNames.pageNumber("Pagina_2.PNG"));
+        // full-width, as a Japanese or Chinese keyboard types them: page８.png was skipped, "no page number"
+        assertEquals(OptionalInt.of(8), SubmissionNames.pageNumber("page\uff18.png"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName("\uff30\uff41\uff47\uff45\u3000\uff13.png", 3),
+                "Ｐａｇｅ　３.png");
         org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName("página3.png", 3));
         assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("p1.png"), "p may be a part, a problem or a panel");
         assertEquals(OptionalInt.empty(), SubmissionNames.pageNumber("paginas1.png"));
