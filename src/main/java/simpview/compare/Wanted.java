@@ -86,9 +86,27 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
         if (bySubmission.isEmpty()) {
             wanted.forEach(w -> missing.add(Map.entry("", w)));
         }
-        bySubmission.forEach((submission, its) ->
-                missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w))));
+        bySubmission.forEach((submission, its) -> {
+            if (asked(submission, its, bySubmission.size(), wanted)) {
+                missing(wanted, its).forEach(w -> missing.add(Map.entry(submission, w)));
+            }
+        });
         return missing;
+    }
+
+    /**
+     * Whether a submission, {@code its} rows, one of {@code submissions}, is asked for the pages of {@code wanted}.
+     * Every one is but the pictures at the top of a class's folder ({@link JUnitResults#TOP} beside other
+     * submissions) when each of them names no page and nothing there is named like one in a format simpview does
+     * not read: an example.png the teacher keeps beside the students' folders is nobody's pages, and was a
+     * submission lacking every page, failing the run. A student's folder of pictures named like no page is asked,
+     * its skipped rows saying why its pages are missing.
+     */
+    static boolean asked(String submission, List<BatchRow> its, int submissions, List<Wanted> wanted) {
+        boolean nobodys = submission.equals(JUnitResults.TOP) && submissions > 1 && !its.isEmpty()
+                && its.stream().allMatch(r -> r.result() == BatchRow.Result.SKIPPED)
+                && wanted.stream().allMatch(w -> w.unreadableIn(JUnitResults.TOP).isEmpty());
+        return !nobodys;
     }
 
     /** The first-level folders without a picture that lack every page of {@code wanted}, in order, each once. */

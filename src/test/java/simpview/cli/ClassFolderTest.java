@@ -57,6 +57,30 @@ class ClassFolderTest {
         assertTrue(junit.contains("<testsuite name=\"bob\" id=\"1\" tests=\"1\" failures=\"1\""), junit);
     }
 
+    /**
+     * A picture named like no page at the top of a class's folder (the teacher's example.png) made the top a
+     * submission lacking every page: a MISSING row "at the top of the folder", a JUnit failure, exit 1, while
+     * every student passed. It is a skipped row and nobody's pages.
+     */
+    @Test
+    void aPictureOfNoPageBesideTheStudentsFoldersAsksNothing() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("bob/page1.png"), page(1));
+        png(subs.resolve("example.png"), page(1));
+        Path xml = dir.resolve("results.xml");
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString(), "--junit", xml.toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains("| example.png |  |  |  |  |  |  |  |  | SKIPPED |"), run.out());
+        assertFalse(run.out().contains("MISSING"), run.out());
+        String junit = Files.readString(xml);
+        assertTrue(junit.contains("<testsuite name=\"submission\" id=\"2\" tests=\"1\" failures=\"0\" errors=\"0\" "
+                + "skipped=\"1\">"), junit);
+    }
+
     /** A student's own folder nested so (subs/A2/page1.png, pictures at its top) is one submission, as given. */
     @Test
     void aStudentsFolderNestedInAnotherIsGradedAsGiven() throws Exception {
