@@ -102,12 +102,61 @@ public final class Picture {
             throw damaged(file, e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage(), e);
         }
         if (image == null) {
-            throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)");
+            throw new CompareException(file + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)"
+                    + holds(bytes));
         }
         // ImageIO.read decodes with the first reader that knows the bytes, the one header() asked: its format
         PictureFormat format = header == null ? PictureFormat.OTHER : header.format();
         return new PngCodec.Pixels(image.getWidth(), image.getHeight(), Rasters.shown(image), Rasters.alpha(image),
                 format);
+    }
+
+    /**
+     * What bytes that are no picture simpview reads hold, when their start tells, for the student to be told what
+     * to do: a picture in another format whatever its name says (a screenshot tool's WebP saved as page4.png),
+     * a document or an archive, or text, quoted ("my renderer crashed on this one"); "" otherwise.
+     */
+    static String holds(byte[] bytes) {
+        String start = new String(bytes, 0, Math.min(bytes.length, 512), java.nio.charset.StandardCharsets.ISO_8859_1);
+        String other = null;
+        if (start.startsWith("RIFF") && start.startsWith("WEBP", 8)) {
+            other = "a WebP picture";
+        } else if (start.startsWith("II*\0") || start.startsWith("MM\0*")) {
+            other = "a TIFF picture";
+        } else if (start.startsWith("ftyp", 4) && (start.startsWith("heic", 8) || start.startsWith("heix", 8)
+                || start.startsWith("mif1", 8) || start.startsWith("msf1", 8))) {
+            other = "a HEIC picture (as an iPhone saves them)";
+        } else if (start.startsWith("ftyp", 4) && start.startsWith("avi", 8)) {
+            other = "an AVIF picture";
+        } else if (start.startsWith("%PDF")) {
+            return ": it holds a PDF document; save the page itself as PNG";
+        } else if (start.startsWith("PK\3\4")) {
+            return ": it holds a zip archive (or a document made of one); save the page itself as PNG";
+        } else if (start.contains("<svg")) {
+            other = "an SVG drawing";
+        }
+        if (other != null) {
+            return ": it holds " + other + ", whatever its name says; save it as PNG";
+        }
+        int end = Math.min(bytes.length, 4096);
+        while (end < bytes.length && end > 0 && (bytes[end] & 0xC0) == 0x80) {
+            end--; // not inside a character
+        }
+        String text;
+        try {
+            text = java.nio.charset.StandardCharsets.UTF_8.newDecoder()
+                    .decode(java.nio.ByteBuffer.wrap(bytes, 0, end)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return ""; // not text
+        }
+        if (text.codePoints().anyMatch(c -> Character.isISOControl(c) && c != '\n' && c != '\r' && c != '\t')) {
+            return "";
+        }
+        String line = text.lines().map(String::strip).filter(l -> !l.isEmpty()).findFirst().orElse("");
+        if (line.isEmpty()) {
+            return ": it holds only white space";
+        }
+        return ": it holds text (\"" + (line.length() > 60 ? line.substring(0, 60) + "..." : line) + "\")";
     }
 
     /**

@@ -59,4 +59,24 @@ class PictureProblemsTest {
         assertTrue(why.startsWith(file + " is empty (0 bytes)"), why);
         assertFalse(why.contains("is not a picture simpview can read"), why);
     }
+
+    /**
+     * A file named .png that is no picture was told only that: a student's note saved as page4.png, or a
+     * screenshot tool's WebP named page4.png, got the same words. Each is now told what it holds.
+     */
+    @Test
+    void aFileThatIsNoPictureIsToldWhatItHolds() throws Exception {
+        Path note = Files.writeString(dir.resolve("page4.png"), "\nmy renderer crashed on this one, sorry\nJudy\n");
+        String why = assertThrows(CompareException.class, () -> Picture.read(note)).getMessage();
+        assertEquals(note + " is not a picture simpview can read (PNG, JPEG, GIF or BMP): it holds text (\"my "
+                + "renderer crashed on this one, sorry\")", why);
+        Path webp = Files.write(dir.resolve("page5.png"),
+                new byte[] {'R', 'I', 'F', 'F', 40, 0, 0, 0, 'W', 'E', 'B', 'P', 'V', 'P', '8', ' ', 0, 0});
+        assertEquals(webp + " is not a picture simpview can read (PNG, JPEG, GIF or BMP): it holds a WebP picture, "
+                + "whatever its name says; save it as PNG",
+                assertThrows(CompareException.class, () -> Picture.read(webp)).getMessage());
+        Path noise = Files.write(dir.resolve("page6.png"), new byte[] {1, 2, (byte) 0xFE, 0, 7, 9, 13, 10, 0});
+        assertEquals(noise + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)",
+                assertThrows(CompareException.class, () -> Picture.read(noise)).getMessage(), "nothing known");
+    }
 }
