@@ -168,6 +168,11 @@ public final class Camera {
     /**
      * The planes (x, y, z) is outside of, one bit per plane ({@code 1 << plane});
      * NaN is outside none. For the parallel view these are Part 1's tests.
+     * A point behind the eye (z &gt; 0) in perspective can be outside both
+     * side planes of a pair, left and right (or bottom and top): each plane
+     * passes through the eye, and behind it their inside half-spaces cross,
+     * so (0.02, 0, 1) under the window [-1, 1] is outside all four. Each
+     * plane is tested on its own, as {@link #distance} measures it.
      */
     public int outcode(double x, double y, double z) {
         double w = perspective ? -z : 1;
@@ -179,12 +184,14 @@ public final class Camera {
         }
         if (x < xlow * w) {
             code |= 1 << LEFT;
-        } else if (x > xhigh * w) {
+        }
+        if (x > xhigh * w) {
             code |= 1 << RIGHT;
         }
         if (y < ylow * w) {
             code |= 1 << BOTTOM;
-        } else if (y > yhigh * w) {
+        }
+        if (y > yhigh * w) {
             code |= 1 << TOP;
         }
         return code;

@@ -29,6 +29,8 @@ public final class Clipper {
     private double[] result;
     private double[] distances;
     private int count;
+    /** The planes that cut the last polygon or line, one bit each ({@code 1 << plane}). */
+    private int cut;
 
     /** @param stride numbers per vertex, at least 3 (x, y, z first) */
     public Clipper(int stride) {
@@ -51,6 +53,7 @@ public final class Clipper {
      *     (no pass would change it), read before p is changed
      */
     public int clipPolygon(Camera camera, double[] p, int at, int n) {
+        cut = 0;
         if (at == 0 && allInside(camera, p, n)) {
             result = p; // every pass would keep every vertex as it is
             count = n;
@@ -63,9 +66,23 @@ public final class Clipper {
         for (int plane = 0; plane < Camera.PLANES && count > 0; plane++) {
             if (anyOutside(camera, plane)) {
                 clipAgainst(plane);
+                cut |= 1 << plane;
             }
         }
         return count;
+    }
+
+    /**
+     * The planes that cut the last polygon or line, one bit each ({@code 1 <<
+     * plane}, as {@link Camera#outcode}); 0 when it was in view whole. A
+     * polygon's are the passes that changed it: a plane some vertex was
+     * outside of is not one of them when an earlier pass had already cut
+     * that vertex away, and one that only a new vertex (made by an earlier
+     * pass) was outside of is. A line's are the planes that set its new ends
+     * or, when nothing of it is left, every plane one of its ends is outside.
+     */
+    public int cutPlanes() {
+        return cut;
     }
 
     /** The vertices of the last clipped polygon or line, stride numbers each, from index 0. */
@@ -183,10 +200,14 @@ public final class Clipper {
     public boolean clipLine(Camera camera, double[] p, int from, int to) {
         ensure(2);
         result = front;
+        cut = 0;
         double t0 = 0;
         double t1 = 1;
         boolean startMoved = false;
         boolean endMoved = false;
+        int startPlane = 0;
+        int endPlane = 0;
+        int outside = 0;
         double startFrom = 0; // the distances of from and to from the plane that sets the start
         double startTo = 0;
         double endFrom = 0; // and from the plane that sets the end
@@ -196,25 +217,33 @@ public final class Clipper {
             double d1 = camera.distance(plane, p[to], p[to + 1], p[to + 2]);
             boolean in0 = d0 >= 0;
             boolean in1 = d1 >= 0;
+            if (!in0 || !in1) {
+                outside |= 1 << plane;
+            }
             if (!in0 && !in1) {
+                cut = outside;
                 return false;
             }
             double t = d0 / (d0 - d1);
             if (!in0 && (!startMoved || t > t0)) {
                 t0 = Math.max(t0, t);
                 startMoved = true;
+                startPlane = plane;
                 startFrom = d0;
                 startTo = d1;
             } else if (!in1 && (!endMoved || t < t1)) {
                 t1 = Math.min(t1, t);
                 endMoved = true;
+                endPlane = plane;
                 endFrom = d0;
                 endTo = d1;
             }
         }
         if (!(t0 <= t1)) {
+            cut = outside;
             return false; // the start moved past the end: the planes cut off different parts
         }
+        cut = (startMoved ? 1 << startPlane : 0) | (endMoved ? 1 << endPlane : 0);
         for (int i = 0; i < stride; i++) {
             double a = p[from + i];
             double b = p[to + i];

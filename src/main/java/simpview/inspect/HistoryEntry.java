@@ -26,8 +26,8 @@ public final class HistoryEntry {
     int storedOwner = NO_NUMBER;
     /**
      * A culled entry: the plane every vertex is outside of; a clipped one: the
-     * planes some vertex is outside of (those that cut it); as Camera's
-     * outcode bits. 0 for the other outcomes.
+     * planes the clipper cut it by (Clipper.cutPlanes); as Camera's outcode
+     * bits. 0 for the other outcomes.
      */
     int planes;
     /** The colour as the drawing code computed it, term by term; null where there is nothing to explain. */

@@ -8,8 +8,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
+import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
 import simpview.shading.LitState;
+import simpview.stage.Painter;
 import simpview.stage.PrimitiveTrace;
 import simpview.scene.simp.SourcePlace;
 import simpview.surface.ZBuffer;
@@ -57,6 +59,8 @@ final class PixelWatch implements PrimitiveTrace {
     /** The kd each vertex of the gouraud polygon at hand was lit with, 3 a vertex; null when not gouraud. */
     private double[] litEach;
     private HistoryEntry cutAway;
+    /** Clips a primitive again to learn which planes cut it; made for the first one cut. */
+    private Clipper clipper;
 
     /** What a watch asks of the scene's kind of drawing. */
     interface Explainer {
@@ -189,17 +193,28 @@ final class PixelWatch implements PrimitiveTrace {
         }
     }
 
-    /** The planes some vertex of the lit primitive at hand is outside of, before clipping (0: uncut, or not lit). */
+    /** The planes the clipper cut the lit primitive at hand by (0: uncut, or not lit). */
     private int cutBy() {
-        int cut = 0;
-        if (lit) {
-            Camera view = camera.get();
-            for (int k = 0; k < unclippedCount; k++) {
-                int o = k * unclippedStride;
-                cut |= view.outcode(unclipped[o], unclipped[o + 1], unclipped[o + 2]);
-            }
+        return lit && unclippedCount > 0 ? cutPlanes(camera.get(), kind, unclipped, 0, unclippedStride, unclippedCount) : 0;
+    }
+
+    /**
+     * The planes that cut the primitive of {@code count} camera-space vertices
+     * in p (from {@code at}, {@code numbers} each), as the clipper cuts it: a
+     * plane some vertex is outside of is not one of them when an earlier
+     * plane's pass took that vertex away, and one that only a vertex made
+     * by an earlier pass is outside of is.
+     */
+    private int cutPlanes(Camera view, int primitiveKind, double[] p, int at, int numbers, int count) {
+        if (clipper == null || clipper.stride() != numbers) {
+            clipper = new Clipper(numbers);
         }
-        return cut;
+        if (primitiveKind == Painter.LINE) {
+            clipper.clipLine(view, p, at, at + numbers);
+        } else {
+            clipper.clipPolygon(view, p, at, count);
+        }
+        return clipper.cutPlanes();
     }
 
     /** The lit primitive at hand in camera space before clipping: vertices() of unclippedStride() numbers; read only. */
@@ -274,15 +289,16 @@ final class PixelWatch implements PrimitiveTrace {
         if (Coverage.covers(view, primitiveKind, p, at, numbers, count, x, y)) {
             HistoryEntry e = new HistoryEntry(HistoryEntry.NO_NUMBER, chainOf(commandFile, commandLine),
                     primitiveKind, culled ? Outcome.CULLED : Outcome.CLIPPED);
-            int common = ~0;
-            int any = 0;
-            for (int k = 0; k < count; k++) {
-                int o = at + k * numbers;
-                int code = view.outcode(p[o], p[o + 1], p[o + 2]);
-                common &= code;
-                any |= code;
+            if (culled) {
+                int common = ~0;
+                for (int k = 0; k < count; k++) {
+                    int o = at + k * numbers;
+                    common &= view.outcode(p[o], p[o + 1], p[o + 2]);
+                }
+                e.planes = common;
+            } else {
+                e.planes = cutPlanes(view, primitiveKind, p, at, numbers, count);
             }
-            e.planes = culled ? common : any;
             entries.add(e);
         }
     }

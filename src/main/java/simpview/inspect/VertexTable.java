@@ -77,10 +77,7 @@ final class VertexTable {
             }
             double[] out = clipper.vertices();
             Terms clip = new Terms();
-            int crossed = 0;
-            for (int k = 0; k < n; k++) {
-                crossed |= camera.outcode(cam[3 * k], cam[3 * k + 1], cam[3 * k + 2]);
-            }
+            int crossed = clipper.cutPlanes();
             clip.put("cut_by", crossed == 0 ? "none: every vertex is inside the view" : planes(crossed));
             List<Terms> output = new ArrayList<>();
             for (int k = 0; k < kept; k++) {

@@ -133,6 +133,46 @@ class ClipperTest {
         assertInside(wide, n);
     }
 
+    /**
+     * pageC's triangle: its vertex behind the eye is outside hither and, as the side planes cross behind the
+     * eye, outside left, right, bottom and top too; the others are beyond yon. The hither pass takes that
+     * vertex away and puts two new ones at z = -0.1, at window (0.2, 3.0), above the window, and (4.6, -2.2),
+     * right of it and below; the right pass cuts the second away and leaves no vertex below the window, and
+     * the top pass cuts the first. So the planes that cut it are hither, yon, right and top: not left, which
+     * no vertex left after the hither pass is outside of, nor bottom.
+     */
+    @Test
+    void thePlanesThatCutAPolygonAreThePassesThatChangedIt() {
+        Camera wide = Camera.perspective(-1, -1, 1, 1, -0.1, -200);
+        double[] p = polygon(0.02, 0, 1, 0, 0, 80, -290, 0, 80, -40, -201, 0);
+        int n = clipper.clipPolygon(wide, p, 0, 3);
+        assertEquals(5, n);
+        assertEquals(1 << Camera.HITHER | 1 << Camera.YON | 1 << Camera.RIGHT | 1 << Camera.TOP, clipper.cutPlanes());
+        for (int k = 0; k < n; k++) {
+            assertTrue(wide.distance(Camera.LEFT, at(k, 0), at(k, 1), at(k, 2)) > 0
+                    && wide.distance(Camera.BOTTOM, at(k, 0), at(k, 1), at(k, 2)) > 0,
+                    "no vertex on the left or the bottom side: " + k);
+        }
+        assertEquals(3, clip(EYE, polygon(-1, -1, -5, 0, 1, -1, -5, 0, 0, 1, -5, 0)));
+        assertEquals(0, clipper.cutPlanes(), "in view whole: nothing cut it");
+        assertEquals(0, clip(EYE, polygon(15, 6, -10, 0, 6, 15, -10, 0, 14, 14, -10, 0)));
+        assertEquals(1 << Camera.RIGHT | 1 << Camera.TOP, clipper.cutPlanes(), "clipped away whole by right, then top");
+    }
+
+    @Test
+    void thePlanesThatCutALineAreThoseThatSetItsNewEnds() {
+        // From behind the eye (outside hither, left, right, bottom, top) to inside: only hither sets the start.
+        assertTrue(clipper.clipLine(EYE, new double[] {0.5, 0.5, 1, 0, 0, 0, -3, 0}, 0, 4));
+        assertEquals(1 << Camera.HITHER, clipper.cutPlanes());
+        // From the left of the view to beyond the far plane: left sets the start, yon the end.
+        assertTrue(clipper.clipLine(EYE, new double[] {-20, 0, -10, 0, 0, 0, -300, 0}, 0, 4));
+        assertEquals(1 << Camera.LEFT | 1 << Camera.YON, clipper.cutPlanes());
+        assertTrue(clipper.clipLine(EYE, new double[] {0, 0, -5, 0, 1, 1, -6, 0}, 0, 4));
+        assertEquals(0, clipper.cutPlanes());
+        assertFalse(clipper.clipLine(EYE, new double[] {-50, 0, -10, 0, -20, 0, -10, 0}, 0, 4), "wholly left");
+        assertEquals(1 << Camera.LEFT, clipper.cutPlanes());
+    }
+
     @Test
     void theParallelViewClipsToItsBox() {
         double[] p = polygon(-150, 0, -100, 0, 150, 0, -100, 0, 0, 150, -100, 0);

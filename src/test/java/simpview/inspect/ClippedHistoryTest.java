@@ -107,6 +107,25 @@ class ClippedHistoryTest {
         assertEquals(0, inspector.inspect(s, 487, 584).history().size());
     }
 
+    /**
+     * A vertex behind the eye is outside every side plane (they cross behind
+     * it), but the clipper's hither pass takes it away before the side passes
+     * run: VertexTableTest's triangle is cut by hither and yon only. Its part
+     * between the eye and the near plane projects up and right from the cut,
+     * between the lines through window (0.413, 0.413) with slope 1 and
+     * (0.694, 0.485) with slope 0.768: window (0.9, 0.8) is in it.
+     */
+    @Test
+    void aClippedEntryNamesThePlanesTheClipperCutBy() throws Exception {
+        InspectedScene s = scene("behind.simp", CAMERA + "polygon (0.5, 0.5, 2) (-1, -1, -50) (20, -1, -300)\n");
+        PixelReport r = inspector.inspect(s, 617, 584);
+        assertEquals(1, r.history().size(), r.text(true, false));
+        HistoryEntry e = r.history().get(0);
+        assertEquals(Outcome.CLIPPED, e.outcome());
+        assertEquals(List.of("hither", "yon"), e.planeNames());
+        assertTrue(r.text(true, false).contains("drawn, but not here (cut by hither, yon)"), r.text(true, false));
+    }
+
     @Test
     void gouraudThroughTheNearPlaneIsExplainedByItsOwnVertices() throws Exception {
         // Ambient 1 and no lights: each vertex lit is its own colour. The apex (z = -0.5) is nearer than the

@@ -94,6 +94,26 @@ class VertexTableTest {
     }
 
     /**
+     * A vertex behind the eye, (0.5, 0.5, 2): x = 0.5 is both less than
+     * xlow (-z) = 2 and more than xhigh (-z) = -2, so it is outside the left
+     * and the right plane (and the bottom and the top), as well as hither.
+     * The hither pass cuts it away, both new vertices inside the window
+     * ((0.413, 0.413) and (0.694, 0.485) on it); the yon pass cuts
+     * (20, -1, -300). So the clipper cut the triangle by hither and yon only,
+     * though its vertices are outside every plane between them.
+     */
+    @Test
+    void aTriangleIsCutByThePlanesThatChangedIt() throws Exception {
+        Terms t = table("camera -1 -1 1 1 -1 -100\npolygon (0.5, 0.5, 2) (-1, -1, -50) (20, -1, -300)\n", 422, 406);
+        List<Terms> v = t.list("vertices");
+        assertEquals("hither, left, right, bottom, top", v.get(0).get("outside"));
+        assertEquals("yon", v.get(2).get("outside"));
+        Terms clip = t.terms("clipping");
+        assertEquals("hither, yon", clip.get("cut_by"));
+        assertEquals(5, clip.list("output").size());
+    }
+
+    /**
      * A line from camera (0, 0, -10) to (5, 2, -10): panel (325, 325) and
      * ((0.5 + 1) 325, (0.2 + 1) 325) = (487.5, 390), rounded (488, 390):
      * x-major, from (325, 325), 163 steps, slope 65 / 163, up and right.

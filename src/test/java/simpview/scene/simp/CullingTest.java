@@ -76,6 +76,23 @@ class CullingTest {
         assertFalse(view.culls(new double[] {-101, 0, -1, 101, 0, -1}, 3, 2));
     }
 
+    /**
+     * Behind the eye the side planes of a perspective view cross: (0.02, 0, 1) has x &lt; xlow (-z) = 1 and
+     * x &gt; xhigh (-z) = -1, so it is outside the left and the right plane, and likewise the bottom and the
+     * top. A triangle with that vertex and two right of the view is wholly outside the right plane: culled.
+     */
+    @Test
+    void aPointBehindTheEyeIsOutsideBothSidesOfAPair() {
+        Camera eye = Camera.perspective(-1, -1, 1, 1, -0.1, -200);
+        assertEquals(1 << Camera.HITHER | 1 << Camera.LEFT | 1 << Camera.RIGHT | 1 << Camera.BOTTOM | 1 << Camera.TOP,
+                eye.outcode(0.02, 0, 1));
+        for (int plane = Camera.LEFT; plane <= Camera.TOP; plane++) {
+            assertTrue(eye.distance(plane, 0.02, 0, 1) < 0, "outside plane " + plane + " by its distance too");
+        }
+        assertEquals(1 << Camera.RIGHT, eye.outcode(30, 0, -10));
+        assertTrue(eye.culls(new double[] {0.02, 0, 1, 30, -5, -10, 30, 5, -10}, 3, 3));
+    }
+
     @Test
     void partlyVisiblePrimitivesAreScissored() throws Exception {
         RecordingDrawable recorder = new RecordingDrawable(650, 650);
