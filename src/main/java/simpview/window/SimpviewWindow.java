@@ -115,6 +115,14 @@ public final class SimpviewWindow {
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
     private boolean turnWaiting;
+    /**
+     * J while stepping: the picture being drawn for it, first the whole one (who drew a pixel in the picture
+     * drawn so far is not who draws it in the end), then, when no primitive draws the pixel, the step it was
+     * pressed at again, with {@link #ownerWords} to say once that is shown.
+     */
+    private RenderJob ownerJob;
+    private int stepBeforeOwner;
+    private String ownerWords;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
             legend -> legendStrip.show("compare", legend));
@@ -448,7 +456,7 @@ public final class SimpviewWindow {
             case STEP_BACK_1000 -> () -> step(-1000);
             case STEP_OFF -> () -> stepOff();
             case GO_TO_PRIMITIVE -> () -> goToPrimitive();
-            case STEP_TO_OWNER -> () -> stepToOwner();
+            case STEP_TO_OWNER -> () -> stepToOwner(false);
             case HELP -> () -> help.setVisible(!help.isVisible());
         };
     }
@@ -664,17 +672,39 @@ public final class SimpviewWindow {
                 + " polygons are clockwise on the panel · K: the page again");
     }
 
-    /** Steps the drawing up to the primitive that drew the pixel under the pointer (or the pinned one). */
-    private void stepToOwner() {
+    /**
+     * Steps the drawing up to the primitive that drew the pixel under the
+     * pointer (or the pinned one) in the whole picture. While stepping, the
+     * picture on screen is drawn only so far, and who drew a pixel there is
+     * not who draws it in the end: the whole picture is drawn first, and
+     * {@link #finished} calls this again with {@code wholeDrawn}.
+     */
+    private void stepToOwner(boolean wholeDrawn) {
         int x = pinnedX >= 0 ? pinnedX : hoverX;
         int y = pinnedX >= 0 ? pinnedY : hoverY;
+        String pixel = pinnedX >= 0 ? "the pinned pixel" : "the pixel under the pointer";
         int owner = Inspector.ownerAt(shown, x, y);
         if (shown != null && shown.view() instanceof View.OfAssignment1Page page) {
             int[] last = x < 0 || y < 0 ? null : A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
             owner = last == null ? -1 : last[1];
+        } else if (settings.stepLimit() >= 0 && x >= 0 && y >= 0) {
+            stepBeforeOwner = settings.stepLimit();
+            settings = settings.withStepLimit(-1);
+            reload();
+            ownerJob = pending;
+            status.say("Drawing the whole picture to find the primitive that draws " + pixel + " ...");
+            return;
         }
         if (owner < 0) {
-            status.say("No primitive drew the pixel under the pointer: nothing to step to.");
+            String words = "No primitive draws " + pixel + " in the whole picture: nothing to step to.";
+            if (wholeDrawn) {
+                ownerWords = words + " Back at primitive " + stepBeforeOwner + ".";
+                settings = settings.withStepLimit(stepBeforeOwner);
+                reload();
+                ownerJob = pending;
+                return;
+            }
+            status.say(words);
             return;
         }
         settings = settings.withStepLimit(owner + 1);
@@ -1348,6 +1378,14 @@ public final class SimpviewWindow {
         comparison.viewShown(result); // compare (issue 15)
         if (turnWaiting) {
             reload();
+        } else if (job == ownerJob) {
+            ownerJob = null;
+            if (ownerWords != null) {
+                status.say(ownerWords);
+                ownerWords = null;
+            } else {
+                stepToOwner(true);
+            }
         }
     }
 
@@ -1419,6 +1457,11 @@ public final class SimpviewWindow {
     }
 
     /** The overdraw overlay's largest count while it is shown, else -1. */
+    /** The step shown: how many primitives are drawn, or -1 for the whole picture. */
+    int stepLimit() {
+        return settings.stepLimit();
+    }
+
     int overdrawShownMax() {
         return overdrawShown ? overdrawMax : -1;
     }

@@ -131,8 +131,8 @@ public enum WindowAction {
     STEP_OFF(Menu.INSTRUMENTS, "Whole picture", "the whole picture again (stepping off)", "BACK_SLASH"),
     GO_TO_PRIMITIVE(Menu.INSTRUMENTS, Entry.FIRST_OF_GROUP,
             "Go to primitive…", "step the drawing to primitive N (asks for N)", "G"),
-    STEP_TO_OWNER(Menu.INSTRUMENTS, "Step to the pixel's primitive", "step to the primitive that drew the pixel "
-            + "under the pointer (or the pinned one)", "J"),
+    STEP_TO_OWNER(Menu.INSTRUMENTS, "Step to the pixel's primitive", "step to the primitive that draws the pixel "
+            + "under the pointer (or the pinned one) in the whole picture, from any step", "J"),
 
     HELP(Menu.HELP, Entry.TOGGLE,
             "Keys and gestures", "these keys, menu entries and gestures over the window (again: hide them)",

@@ -106,6 +106,40 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         assertFalse(driver.onEdt(() -> window.inspectorPanel().component().isShowing()));
     }
 
+    /**
+     * J while stepping goes to the primitive that draws the pixel in the whole picture: at step 1 the centre
+     * shows the first triangle, which the second (nearer, drawn next) covers in the end. Stepped back to 1
+     * again, a pixel that no primitive draws leaves the step where it was.
+     */
+    @Test
+    void jWhileSteppingGoesToThePrimitiveOfTheWholePicture() throws Exception {
+        Path scene = dir.resolve("steps.simp");
+        Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\n"
+                + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n");
+        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        driver.onEdt(() -> window.goToPixel("325, 325"));
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 1 of 3"),
+                "the first step");
+        driver.press(KeyEvent.VK_J);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 3, steps.simp:2"),
+                "stepping to the pinned pixel's primitive in the whole picture");
+
+        driver.press(KeyEvent.VK_OPEN_BRACKET);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 1 of 3"),
+                "back to the first step");
+        driver.onEdt(() -> window.goToPixel("5, 640"));
+        driver.press(KeyEvent.VK_J);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().equals("No primitive draws the pinned "
+                + "pixel in the whole picture: nothing to step to. Back at primitive 1."), "no primitive to step to");
+        assertEquals(1, (int) driver.onEdt(() -> window.stepLimit()), "the step is where it was");
+    }
+
     private static JTextArea textArea(SimpviewWindow window) {
         return (JTextArea) ((javax.swing.JScrollPane) window.inspectorPanel().component()).getViewport().getView();
     }
