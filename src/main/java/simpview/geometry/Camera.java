@@ -132,6 +132,20 @@ public final class Camera {
     }
 
     /**
+     * The window x that panel x stands for, panelX's map undone: in
+     * perspective the x / -z of every camera-space point that lands there, in
+     * the parallel view x itself.
+     */
+    public double windowX(double panelX) {
+        return xlow + (panelX - offsetX) * extent / PANEL_SIZE;
+    }
+
+    /** The window y that panel y stands for (see {@link #windowX}). */
+    public double windowY(double panelY) {
+        return ylow + (panelY - offsetY) * extent / PANEL_SIZE;
+    }
+
+    /**
      * 1/w of a camera-space depth: the quantity that is affine in screen space,
      * 1 / -z in perspective and 1 in the parallel view. Attributes are
      * interpolated as a * q and divided by q at each pixel.

@@ -30,6 +30,13 @@ public final class HistoryEntry {
      * bits. 0 for the other outcomes.
      */
     int planes;
+    /**
+     * A clipped filled polygon: where the pixel's ray meets its plane (camera
+     * space), which is outside the planes {@link #herePlanes}; null when not
+     * worked out (a line, a wire edge, a culled one, or a point inside them all).
+     */
+    double[] here;
+    int herePlanes;
     /** The colour as the drawing code computed it, term by term; null where there is nothing to explain. */
     Terms explanation;
 
@@ -82,6 +89,16 @@ public final class HistoryEntry {
     /** Their names, in the clipper's order ("hither", "left", ...). */
     public List<String> planeNames() {
         return VertexTable.planeNames(planes);
+    }
+
+    /** A clipped filled polygon's point at the pixel (camera space x, y, z), or null; see {@link #herePlanes()}. */
+    public double[] here() {
+        return here == null ? null : here.clone();
+    }
+
+    /** The planes that point is outside of: those that cut the polygon away at this pixel (outcode bits). */
+    public int herePlanes() {
+        return herePlanes;
     }
 
     public Terms explanation() {

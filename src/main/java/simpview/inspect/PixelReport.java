@@ -109,6 +109,17 @@ public final class PixelReport {
         return s == null ? null : VertexTable.of(s, x, y);
     }
 
+    /** The planes of outcode bits as a JSON list of their names. */
+    private static void planeList(StringBuilder sb, int planes) {
+        List<String> names = VertexTable.planeNames(planes);
+        sb.append('[');
+        for (int j = 0; j < names.size(); j++) {
+            sb.append(j == 0 ? "" : ", ");
+            Json.string(sb, names.get(j));
+        }
+        sb.append(']');
+    }
+
     /**
      * A depth-cued scene's culling planes as the sides of its view box
      * (SPEC: -100 to 100 in x and y, z from 0 near to -200 far), not as a
@@ -198,6 +209,13 @@ public final class PixelReport {
                     sb.append(e.primitive() == HistoryEntry.NO_NUMBER ? ": clipped away whole" : ": drawn, but not here")
                             .append(" (cut by ").append(VertexTable.planes(e.planes()))
                             .append("); its part in front of the eye, projected, covers the pixel");
+                    double[] here = e.here();
+                    if (here != null) {
+                        sb.append(", and there it is at camera (").append(Json.number(here[0])).append(", ")
+                                .append(Json.number(here[1])).append(", ").append(Json.number(here[2]))
+                                .append("), outside the ").append(VertexTable.planes(e.herePlanes()))
+                                .append(e.herePlanes() == Integer.lowestOneBit(e.herePlanes()) ? " plane" : " planes");
+                    }
                 }
                 sb.append('\n');
             }
@@ -277,13 +295,19 @@ public final class PixelReport {
                             : String.valueOf(shown(e.storedOwner())));
                 }
                 if (e.outcome() == Outcome.CULLED || e.outcome() == Outcome.CLIPPED) {
-                    sb.append(e.outcome() == Outcome.CULLED ? ", \"culled_by\": [" : ", \"cut_by\": [");
-                    List<String> planes = e.planeNames();
-                    for (int j = 0; j < planes.size(); j++) {
-                        sb.append(j == 0 ? "" : ", ");
-                        Json.string(sb, planes.get(j));
+                    sb.append(e.outcome() == Outcome.CULLED ? ", \"culled_by\": " : ", \"cut_by\": ");
+                    planeList(sb, e.planes());
+                    double[] here = e.here();
+                    if (here != null) {
+                        sb.append(", \"here\": {\"camera\": [");
+                        for (int axis = 0; axis < 3; axis++) {
+                            sb.append(axis == 0 ? "" : ", ");
+                            Json.number(sb, here[axis]);
+                        }
+                        sb.append("], \"outside\": ");
+                        planeList(sb, e.herePlanes());
+                        sb.append('}');
                     }
-                    sb.append(']');
                 }
                 sb.append('}');
             }

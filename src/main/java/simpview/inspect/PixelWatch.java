@@ -190,6 +190,7 @@ final class PixelWatch implements PrimitiveTrace {
             // Kept until a fragment of it reaches the pixel (then it covered the pixel after all) or the next primitive.
             cutAway = new HistoryEntry(index, chain(), kind, Outcome.CLIPPED);
             cutAway.planes = cut;
+            placeHere(cutAway, unclipped, 0, unclippedStride);
         }
     }
 
@@ -215,6 +216,47 @@ final class PixelWatch implements PrimitiveTrace {
             clipper.clipPolygon(view, p, at, count);
         }
         return clipper.cutPlanes();
+    }
+
+    /**
+     * For a filled polygon cut away at the pixel: where the ray through the
+     * pixel's centre meets the plane of its first three vertices (p from
+     * {@code at}, {@code numbers} each, camera space), and the planes that
+     * point is outside of, which are what cut the polygon away here. Nothing
+     * when the point is inside every plane (the centre exactly on an edge of
+     * the clipped outline) or the ray runs along the polygon's plane.
+     */
+    private void placeHere(HistoryEntry e, double[] p, int at, int numbers) {
+        if (e.kind != Painter.FILLED) {
+            return;
+        }
+        Camera view = camera.get();
+        double wx = view.windowX(x + 0.5);
+        double wy = view.windowY(y + 0.5);
+        int b = at + numbers;
+        int c = b + numbers;
+        double ux = p[b] - p[at], uy = p[b + 1] - p[at + 1], uz = p[b + 2] - p[at + 2];
+        double vx = p[c] - p[at], vy = p[c + 1] - p[at + 1], vz = p[c + 2] - p[at + 2];
+        double nx = uy * vz - uz * vy;
+        double ny = uz * vx - ux * vz;
+        double nz = ux * vy - uy * vx;
+        double[] point;
+        if (view.isPerspective()) {
+            // the ray t (wx, wy, -1), t > 0, meets n . (P - p0) = 0
+            double t = (nx * p[at] + ny * p[at + 1] + nz * p[at + 2]) / (nx * wx + ny * wy - nz);
+            point = new double[] {t * wx, t * wy, -t};
+            if (!(t > 0)) {
+                return;
+            }
+        } else {
+            // the line (wx, wy, z) straight down z
+            point = new double[] {wx, wy, p[at + 2] - (nx * (wx - p[at]) + ny * (wy - p[at + 1])) / nz};
+        }
+        int outside = view.outcode(point[0], point[1], point[2]);
+        if (outside != 0 && Double.isFinite(point[0]) && Double.isFinite(point[1]) && Double.isFinite(point[2])) {
+            e.here = point;
+            e.herePlanes = outside;
+        }
     }
 
     /** The lit primitive at hand in camera space before clipping: vertices() of unclippedStride() numbers; read only. */
@@ -298,6 +340,7 @@ final class PixelWatch implements PrimitiveTrace {
                 e.planes = common;
             } else {
                 e.planes = cutPlanes(view, primitiveKind, p, at, numbers, count);
+                placeHere(e, p, at, numbers);
             }
             entries.add(e);
         }

@@ -56,6 +56,17 @@ class ClippedHistoryTest {
         assertTrue(beyond.json(true, false).contains("\"outcome\": \"clipped\", \"cut_by\": [\"yon\"]"),
                 beyond.json(true, false));
         assertTrue(beyond.text(true, false).contains("drawn, but not here (cut by yon)"), beyond.text(true, false));
+        // Where the pixel's ray (wx, wy, -1) t meets the triangle's plane z = -50 - 7.5 (y + 10):
+        // -t = -125 - 7.5 wy t, t = 125 / (1 - 7.5 wy): beyond the far plane, which is what cut it here.
+        double wx = 324.5 / 325 - 1;
+        double wy = 324.5 / 325 - 1;
+        double t = 125 / (1 - 7.5 * wy);
+        assertArrayEquals(new double[] {wx * t, wy * t, -t}, e.here(), 1e-9);
+        assertEquals(1 << simpview.geometry.Camera.YON, e.herePlanes());
+        assertTrue(beyond.text(true, false).contains(", and there it is at camera (") && beyond.text(true, false)
+                .contains("), outside the yon plane"), beyond.text(true, false));
+        assertTrue(beyond.json(true, false).contains("\"here\": {\"camera\": ["), beyond.json(true, false));
+        assertTrue(beyond.json(true, false).contains("], \"outside\": [\"yon\"]}"), beyond.json(true, false));
         // Window y -0.0754, below the cut: drawn, and only written.
         PixelReport drawn = inspector.inspect(s, 324, 300);
         assertEquals(1, drawn.history().size(), drawn.text(true, false));
@@ -124,6 +135,9 @@ class ClippedHistoryTest {
         assertEquals(Outcome.CLIPPED, e.outcome());
         assertEquals(List.of("hither", "yon"), e.planeNames());
         assertTrue(r.text(true, false).contains("drawn, but not here (cut by hither, yon)"), r.text(true, false));
+        // At this pixel it is between the eye and the near plane: hither cut it away here, not yon.
+        assertEquals(1 << simpview.geometry.Camera.HITHER, e.herePlanes());
+        assertTrue(e.here()[2] > -1 && e.here()[2] < 0, java.util.Arrays.toString(e.here()));
     }
 
     @Test
