@@ -186,7 +186,7 @@ final class Coverage {
     }
 
     /** The minor coordinate after {@code steps} steps: the slope added once per step, as the DDA adds it. */
-    private static double minor(long start, double slope, long steps) {
+    static double minor(long start, double slope, long steps) {
         if (steps > 1_000_000) {
             return start + slope * steps;
         }

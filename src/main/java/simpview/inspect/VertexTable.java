@@ -96,7 +96,15 @@ final class VertexTable {
         }
         if (ends != null) {
             t.put("dda", dda(camera.panelX(ends[0], ends[2]), camera.panelY(ends[1], ends[2]),
-                    camera.panelX(ends[3], ends[5]), camera.panelY(ends[4], ends[5])));
+                    camera.panelX(ends[3], ends[5]), camera.panelY(ends[4], ends[5]), pixelX, pixelY));
+        }
+        if (s.kind() == Painter.WIRE && !culled && s.drawn() != null && s.drawn().length >= 4) {
+            List<Terms> edges = wireEdges(s.drawn(), pixelX, pixelY);
+            if (edges.isEmpty()) {
+                t.put("edges_at_pixel", "none: no edge's DDA steps on the pixel");
+            } else {
+                t.put("edges_at_pixel", edges);
+            }
         }
         if (s.kind() == Painter.FILLED && !culled && s.drawn() != null && s.drawn().length >= 6) {
             t.put("centre", centre(s.drawn(), pixelX, pixelY));
@@ -196,8 +204,33 @@ final class VertexTable {
         }
     }
 
-    /** SPEC's DDA for a line between two panel points: start pixel, direction, slope and step count. */
-    static Terms dda(double x0, double y0, double x1, double y1) {
+    /**
+     * The edges of a wire polygon's outline as the rasterizer was given it
+     * (panel x and y of each vertex; edge k runs from vertex k to the next,
+     * the last back to the first) whose DDA steps on pixel (x, y), each with
+     * its DDA.
+     */
+    private static List<Terms> wireEdges(double[] drawn, int x, int y) {
+        int n = drawn.length / 2;
+        List<Terms> edges = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            int j = (k + 1) % n;
+            if (Coverage.onLine(drawn[2 * k], drawn[2 * k + 1], drawn[2 * j], drawn[2 * j + 1], x, y)) {
+                edges.add(new Terms().put("edge", k + "-" + j).put("from", drawn[2 * k], drawn[2 * k + 1])
+                        .put("to", drawn[2 * j], drawn[2 * j + 1])
+                        .put("dda", dda(drawn[2 * k], drawn[2 * k + 1], drawn[2 * j], drawn[2 * j + 1], x, y)));
+            }
+        }
+        return edges;
+    }
+
+    /**
+     * SPEC's DDA for a line between two panel points: start pixel, direction,
+     * slope and step count; and at pixel (x, y): the step whose major
+     * coordinate is the pixel's, the minor coordinate there as the DDA has it
+     * (the slope added once a step) and the pixel it rounds to, half up.
+     */
+    static Terms dda(double x0, double y0, double x1, double y1, int x, int y) {
         long ax = (long) Math.floor(x0 + 0.5);
         long ay = (long) Math.floor(y0 + 0.5);
         long bx = (long) Math.floor(x1 + 0.5);
@@ -219,9 +252,20 @@ final class VertexTable {
         t.put("end_pixel", (double) bx, (double) by);
         t.put("major_axis", xMajor ? "x" : "y");
         t.put("direction", xMajor ? 1 : Long.signum(minor), xMajor ? Long.signum(minor) : 1);
-        t.put("slope", major == 0 ? 0 : (double) minor / major);
+        double slope = major == 0 ? 0 : (double) minor / major;
+        t.put("slope", slope);
         t.put("steps", (double) major);
         t.put("pixels", (double) (major + 1));
+        long step = xMajor ? x - ax : y - ay;
+        if (step < 0 || step > major) {
+            t.put("at_pixel", "none: the pixel's " + (xMajor ? "x" : "y") + " is outside the line's, "
+                    + (xMajor ? ax : ay) + " to " + (xMajor ? bx : by));
+        } else {
+            double along = Coverage.minor(xMajor ? ay : ax, slope, step);
+            long rounded = (long) Math.floor(along + 0.5);
+            t.put("at_pixel", new Terms().put("step", (double) step).put(xMajor ? "y" : "x", along)
+                    .put("rounds_to", (double) rounded).put("steps_on_pixel", rounded == (xMajor ? y : x)));
+        }
         return t;
     }
 

@@ -128,6 +128,32 @@ class VertexTableTest {
         assertArrayEquals(new int[] {1, 1}, dda.bytes("direction"));
         assertEquals(163, dda.number("steps"), 0);
         assertEquals(65.0 / 163, dda.number("slope"), EPS);
+        // Pixel x 400 is step 75: y = 325 + 75 (65 / 163) = 354.91, as the slope is added 75 times; 355.
+        Terms at = dda.terms("at_pixel");
+        assertEquals(75, at.number("step"), 0);
+        assertEquals(325 + 75 * 65.0 / 163, at.number("y"), 1e-9);
+        assertEquals(355, at.number("rounds_to"), 0);
+        assertEquals(true, at.get("steps_on_pixel"));
+    }
+
+    /**
+     * A depth-cued wire triangle: world (-50, -50), (50, -50), (0, 50) land
+     * at panel (162.5, 162.5), (487.5, 162.5), (325, 487.5). Pixel (300, 163)
+     * is on edge 0-1 only (x-major from (163, 163), step 137); its corner
+     * (163, 163) is where edges 0-1 and 2-0 both start.
+     */
+    @Test
+    void aWirePolygonsEdgesAtThePixel() throws Exception {
+        String scene = "wire\npolygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n";
+        List<Terms> edges = table(scene, 300, 163).list("edges_at_pixel");
+        assertEquals(1, edges.size());
+        assertEquals("0-1", edges.get(0).get("edge"));
+        Terms dda = edges.get(0).terms("dda");
+        assertArrayEquals(new double[] {163, 163}, dda.vector("start_pixel"), 0);
+        assertEquals(137, dda.terms("at_pixel").number("step"), 0);
+        List<Terms> corner = table(scene, 163, 163).list("edges_at_pixel");
+        assertEquals(List.of("0-1", "2-0"), corner.stream().map(e -> e.get("edge")).toList());
+        assertEquals(0, corner.get(1).terms("dda").terms("at_pixel").number("step"), 0);
     }
 
     /** A depth-cued line drawn right to left starts at its left end and steps down: direction (1, -1). */
