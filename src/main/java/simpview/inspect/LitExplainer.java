@@ -60,6 +60,10 @@ final class LitExplainer implements PixelWatch.Explainer {
             lit[2] = ch[FragmentLayout.B];
             if (kind == Painter.LINE || kind == Painter.WIRE) {
                 terms.put("shading", kind == Painter.LINE ? "none (a line carries kd)" : "none (a wire polygon's edges carry kd)");
+                Terms along = along(watch, z);
+                if (along != null) {
+                    terms.put("along", along);
+                }
                 terms.put("kd", lit.clone());
             } else if (state.shading() == LitState.ShadingMode.FLAT) {
                 terms.put("shading", "flat");
@@ -93,6 +97,92 @@ final class LitExplainer implements PixelWatch.Explainer {
         int argb = Colors.pack(fogged[0], fogged[1], fogged[2]);
         terms.put("final_rgb", argb >>> 16 & 0xFF, argb >>> 8 & 0xFF, argb & 0xFF);
         return argb;
+    }
+
+    /**
+     * A line's (or a wire polygon's edge's) pixel: the edge the DDA walked
+     * (of a wire outline, the edge that steps on the pixel at the fragment's
+     * depth z), its ends in the order the walk takes them (from the smaller
+     * x of an x-major line, else the smaller y), the step that reached the
+     * pixel and the screen-space share of the way there, t, as the walk
+     * works it out; then SPEC's perspective-correct lerp: q = 1 / -z (1 in
+     * the parallel view) and kd q lerped by t, so the ends weigh
+     * (1 - t) q_start / q and t q_end / q, q = (1 - t) q_start + t q_end.
+     * Null when no edge of the outline steps on the pixel.
+     */
+    private static Terms along(PixelWatch watch, double z) {
+        double[] o = watch.outline();
+        int s = watch.stride();
+        int n = watch.vertices();
+        int x = watch.x();
+        int y = watch.y();
+        int edges = watch.kind() == Painter.LINE ? 1 : n;
+        Terms best = null;
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < edges && n >= 2; k++) {
+            int a = k;
+            int b = (k + 1) % n;
+            if (!Coverage.onLine(o[a * s], o[a * s + 1], o[b * s], o[b * s + 1], x, y)) {
+                continue;
+            }
+            double x0 = Math.floor(o[a * s] + 0.5);
+            double y0 = Math.floor(o[a * s + 1] + 0.5);
+            double x1 = Math.floor(o[b * s] + 0.5);
+            double y1 = Math.floor(o[b * s + 1] + 0.5);
+            boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
+            boolean reversed = xMajor ? x1 < x0 : y1 < y0;
+            int start = reversed ? b : a;
+            int end = reversed ? a : b;
+            double major0 = xMajor ? Math.min(x0, x1) : Math.min(y0, y1);
+            double major1 = xMajor ? Math.max(x0, x1) : Math.max(y0, y1);
+            // as DdaWalk works t out, halves and all: the same bits
+            double halfStart = 0.5 * major0;
+            double halfSteps = 0.5 * major1 - halfStart;
+            double major = xMajor ? x : y;
+            double t = halfSteps == 0 ? 0 : (0.5 * major - halfStart) / halfSteps;
+            int ps = start * s;
+            int pe = end * s;
+            double qStart = o[ps + FragmentLayout.Q];
+            double qEnd = o[pe + FragmentLayout.Q];
+            double q = (1 - t) * qStart + t * qEnd;
+            int c = FragmentLayout.CHANNEL;
+            double zHere = ((1 - t) * o[ps + c + FragmentLayout.Z] + t * o[pe + c + FragmentLayout.Z]) / q;
+            double gap = Math.abs(zHere - z);
+            if (!(gap < nearest)) {
+                continue;
+            }
+            nearest = gap;
+            double wStart = (1 - t) * qStart / q;
+            double wEnd = t * qEnd / q;
+            double[] weighted = new double[3];
+            Terms[] ends = new Terms[2];
+            int[] at = {ps, pe};
+            int[] vertex = {start, end};
+            for (int e = 0; e < 2; e++) {
+                double qe = o[at[e] + FragmentLayout.Q];
+                double[] kd = {o[at[e] + c + FragmentLayout.R] / qe, o[at[e] + c + FragmentLayout.G] / qe,
+                    o[at[e] + c + FragmentLayout.B] / qe};
+                double w = e == 0 ? wStart : wEnd;
+                for (int j = 0; j < 3; j++) {
+                    weighted[j] += w * kd[j];
+                }
+                ends[e] = new Terms().put("vertex", vertex[e]).put("panel", o[at[e]], o[at[e] + 1])
+                        .put("z", o[at[e] + c + FragmentLayout.Z] / qe).put("q", qe).put("kd", kd);
+            }
+            best = new Terms();
+            if (watch.kind() == Painter.WIRE) {
+                best.put("edge", a + "-" + b);
+            }
+            best.put("start", ends[0]).put("end", ends[1])
+                    .put("step", major - major0).put("steps", major1 - major0)
+                    .put("t", t)
+                    .put("q", q)
+                    .put("weights", wStart, wEnd)
+                    .put("weighted", weighted)
+                    .put("rule", "q = 1 / -z is lerped by t, and so is kd q: the ends weigh (1 - t) q_start / q and "
+                            + "t q_end / q (SPEC Part 2, perspective-correct)");
+        }
+        return best;
     }
 
     /**

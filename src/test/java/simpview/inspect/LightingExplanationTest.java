@@ -294,6 +294,58 @@ class LightingExplanationTest {
         return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     }
 
+    /**
+     * A lit line from camera (-5, -5, -10), red, to (5, 5, -40), green: panel
+     * (162.5, 162.5) and (365.625, 365.625), rounded (163, 163) to (366, 366),
+     * 203 steps. Pixel (300, 300) is step 137, t = 137 / 203; q = 1 / -z is
+     * 0.1 and 0.025 at the ends, and the ends weigh (1 - t) 0.1 / q and
+     * t 0.025 / q: the red and green of the pixel, and z = -1 / q.
+     */
+    @Test
+    void aLitLinesPixelIsItsEndsWeighedPerspectiveCorrect() throws Exception {
+        Path file = dir.resolve("line.simp");
+        Files.writeString(file, "camera -1 -1 1 1 -1 -100\nline (-5 -5 -10 1 0 0) (5 5 -40 0 1 0)\n");
+        PixelReport r = new PixelInspector().inspect(InspectedScene.of(file), 300, 300);
+        Terms along = r.explanation().terms("along");
+        double t = 137.0 / 203;
+        double q = (1 - t) * 0.1 + t * 0.025;
+        assertEquals(137, along.number("step"), 0);
+        assertEquals(203, along.number("steps"), 0);
+        assertEquals(t, along.number("t"), 1e-15);
+        assertEquals(q, along.number("q"), 1e-15);
+        assertEquals(-1 / q, r.explanation().number("z"), 1e-12);
+        double[] weights = {(1 - t) * 0.1 / q, t * 0.025 / q};
+        assertArrayEquals(weights, along.vector("weights"), 1e-12);
+        assertArrayEquals(new double[] {weights[0], weights[1], 0}, along.vector("weighted"), 1e-12);
+        assertArrayEquals(along.vector("weighted"), r.explanation().vector("kd"), 1e-12, "what was drawn");
+        assertEquals(0, along.terms("start").number("vertex"), 0);
+        assertArrayEquals(new double[] {1, 0, 0}, along.terms("start").vector("kd"), 1e-12);
+    }
+
+    /**
+     * A lit wire triangle: camera (-20, -20, -40), (20, -20, -40) and
+     * (0, 20, -40) land at window (-0.5, -0.5), (0.5, -0.5) and (0, 0.5),
+     * panel (162.5, 162.5), (487.5, 162.5) and (325, 487.5). Its edge from
+     * vertex 2 to vertex 0 is y-major and runs down, so the DDA starts at
+     * vertex 0's end; pixel (244, 325) is on it.
+     */
+    @Test
+    void aWireEdgeNamesItselfAndItsEndsInTheWalksOrder() throws Exception {
+        Path file = dir.resolve("wire.simp");
+        Files.writeString(file, "camera -1 -1 1 1 -1 -100\nwire\n"
+                + "polygon (-20 -20 -40 1 0 0) (20 -20 -40 0 1 0) (0 20 -40 0 0 1)\n");
+        PixelReport r = new PixelInspector().inspect(InspectedScene.of(file), 244, 325);
+        Terms along = r.explanation().terms("along");
+        assertEquals("2-0", along.get("edge"));
+        assertEquals(0, along.terms("start").number("vertex"), 0);
+        assertEquals(2, along.terms("end").number("vertex"), 0);
+        // y-major from row 163 to 488: 325 steps, row 325 is step 162; every z alike, so the weights are 1 - t and t.
+        double t = 162.0 / 325;
+        assertEquals(t, along.number("t"), 1e-15);
+        assertArrayEquals(new double[] {1 - t, t}, along.vector("weights"), 1e-12);
+        assertArrayEquals(new double[] {1 - t, 0, t}, r.explanation().vector("kd"), 1e-12);
+    }
+
     private static double[] clamp(double[] c) {
         return new double[] {Math.max(0, Math.min(1, c[0])), Math.max(0, Math.min(1, c[1])),
             Math.max(0, Math.min(1, c[2]))};
