@@ -78,7 +78,7 @@ final class InspectCommand implements Callable<Integer> {
     @Option(names = "--vertices", description = "the vertices of the primitive that drew the pixel, through every space; for a filled one, whether it covers the pixel's centre and why")
     private boolean vertices;
 
-    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner: why it did or did not cover the pixel (outside it, or on a shared edge the top-left rule gave to its neighbour)")
+    @Option(names = "--primitive", paramLabel = "N", description = "with --vertices or --explain: primitive N (1, 2, ... in drawing order, as the window steps) instead of the pixel's owner: why it did or did not cover the pixel (outside it, or on a shared edge the top-left rule gave to its neighbour); how the colour of its write here was made, one that lost the depth test or was covered later too")
     private Integer primitive;
 
     @Option(names = "--json", description = "one JSON object instead of text")
@@ -111,7 +111,7 @@ final class InspectCommand implements Callable<Integer> {
         }
         int[] xy = pixel(PageCanvas.PANEL - 1, "panel");
         usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
-        usage(primitive == null || vertices, "--primitive goes with --vertices");
+        usage(primitive == null || vertices || explain, "--primitive goes with --vertices or --explain");
         usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
         boolean all = !history && !explain && !vertices;
@@ -152,11 +152,12 @@ final class InspectCommand implements Callable<Integer> {
                 HistoryEntry owner = report.lastWritten();
                 table = primitive != null ? wanted : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
             }
+            int explained = primitive != null && explain ? wanted : HistoryEntry.NO_NUMBER;
             PrintWriter out = spec.commandLine().getOut();
             if (json) {
-                out.println(report.json(history || all, explain || all, table));
+                out.println(report.json(history || all, explain || all, table, explained));
             } else {
-                out.print(report.text(history || all, explain || all, table));
+                out.print(report.text(history || all, explain || all, table, explained));
             }
             out.flush();
             if (report.error() == null) {

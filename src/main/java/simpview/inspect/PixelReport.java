@@ -160,6 +160,36 @@ public final class PixelReport {
 
     /** The report as text; with the vertex table of primitive {@code vertices} unless that is NO_NUMBER. */
     public String text(boolean withHistory, boolean withExplanation, int vertices) {
+        return text(withHistory, withExplanation, vertices, HistoryEntry.NO_NUMBER);
+    }
+
+    /**
+     * The last write primitive n attempted at the pixel (written, or lost at
+     * the depth test); null when it made none here.
+     */
+    public HistoryEntry attemptOf(int primitive) {
+        for (int k = history.size() - 1; k >= 0; k--) {
+            HistoryEntry e = history.get(k);
+            if (e.primitive() == primitive && (e.outcome() == Outcome.WRITTEN || e.outcome() == Outcome.DEPTH_FAILED)) {
+                return e;
+            }
+        }
+        return null;
+    }
+
+    /** Whether the explanation asked for is another primitive's than the owner's. */
+    private boolean explainsOther(int explained) {
+        HistoryEntry owner = lastWritten();
+        return explained != HistoryEntry.NO_NUMBER && (owner == null || owner.primitive() != explained);
+    }
+
+    /**
+     * The report as text; with the vertex table of primitive {@code vertices}
+     * unless that is NO_NUMBER, and with the explanation of primitive
+     * {@code explained}'s write at the pixel instead of the owner's unless that
+     * is NO_NUMBER (a write the depth test threw away, or one covered later).
+     */
+    public String text(boolean withHistory, boolean withExplanation, int vertices, int explained) {
         StringBuilder sb = new StringBuilder();
         sb.append("pixel (").append(x).append(", ").append(y).append(") of the panel (image pixel ")
                 .append(x + PageCanvas.MARGIN).append(", row ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
@@ -225,7 +255,25 @@ public final class PixelReport {
                     .append(error.getMessage().replace("\n", "\n  ")).append('\n');
         }
         Terms explanation = explanation();
-        if (withExplanation) {
+        if (withExplanation && explainsOther(explained)) {
+            HistoryEntry e = attemptOf(explained);
+            sb.append("explain (primitive ").append(shown(explained));
+            if (e == null) {
+                sb.append("): it made no write at this pixel (its vertices show whether it covers it, and why)\n");
+            } else {
+                sb.append(", ").append(e.outcome().word()).append(" here").append(owner == null ? ""
+                        : ", under primitive " + shown(owner.primitive()) + ", the pixel's");
+                int c = e.argb();
+                if (e.explanation() == null) {
+                    sb.append("): rgb (").append(c >>> 16 & 0xFF).append(", ").append(c >>> 8 & 0xFF).append(", ")
+                            .append(c & 0xFF).append("), the depth cue's colour at its depth; not worked out term by "
+                            + "term for a write that lost the depth test\n");
+                } else {
+                    sb.append("):\n");
+                    e.explanation().appendText(sb, "  ");
+                }
+            }
+        } else if (withExplanation) {
             if (explanation == null) {
                 sb.append("explain: the background, nothing was drawn here\n");
             } else {
@@ -251,6 +299,15 @@ public final class PixelReport {
 
     /** The report as one JSON object; with "vertices" for primitive {@code vertices} unless that is NO_NUMBER. */
     public String json(boolean withHistory, boolean withExplanation, int vertices) {
+        return json(withHistory, withExplanation, vertices, HistoryEntry.NO_NUMBER);
+    }
+
+    /**
+     * The same, with "explain" for primitive {@code explained}'s write at the
+     * pixel unless that is NO_NUMBER, and then "explained": its number and
+     * what became of the write (null: it made none here).
+     */
+    public String json(boolean withHistory, boolean withExplanation, int vertices, int explained) {
         StringBuilder sb = new StringBuilder("{\"pixel\": {\"x\": ").append(x).append(", \"y\": ").append(y)
                 .append(", \"image_x\": ").append(x + PageCanvas.MARGIN)
                 .append(", \"image_row\": ").append(PageCanvas.MARGIN + PageCanvas.PANEL - 1 - y)
@@ -313,7 +370,22 @@ public final class PixelReport {
             }
             sb.append(']');
         }
-        if (withExplanation) {
+        if (withExplanation && explainsOther(explained)) {
+            HistoryEntry e = attemptOf(explained);
+            sb.append(", \"explained\": {\"primitive\": ").append(shown(explained)).append(", \"outcome\": ");
+            if (e == null) {
+                sb.append("null}");
+            } else {
+                Json.string(sb, e.outcome().word());
+                sb.append('}');
+            }
+            sb.append(", \"explain\": ");
+            if (e == null || e.explanation() == null) {
+                sb.append("null");
+            } else {
+                e.explanation().appendJson(sb);
+            }
+        } else if (withExplanation) {
             sb.append(", \"explain\": ");
             Terms explanation = explanation();
             if (explanation == null) {

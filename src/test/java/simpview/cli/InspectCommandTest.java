@@ -115,6 +115,37 @@ class InspectCommandTest {
         assertEquals(ExitCode.USAGE_ERROR, zero.exitCode(), zero.err());
     }
 
+    /**
+     * Two lit triangles at the centre: the first, red, at z = -20; the
+     * second, nearer, at z = -10, green. With ambient 1 and no light each is
+     * its own kd. --explain --primitive 1 works out the red write that the
+     * green one covered; a primitive that made no write there says so.
+     */
+    @Test
+    void theExplanationOfAWriteThatDidNotStay() throws Exception {
+        Path scene = write("lit.simp", "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                + "surface 1 0 0\npolygon (-10, -10, -20) (10, -10, -20) (0, 10, -20)\n"
+                + "surface 0 1 0\npolygon (-5, -5, -10) (5, -5, -10) (0, 5, -10)\n"
+                + "polygon (5, 5, -10) (6, 5, -10) (5.5, 6, -10)\n");
+        CliRun first = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,320", "--explain", "--primitive", "1");
+        assertEquals(0, first.exitCode(), first.err());
+        assertTrue(first.out().contains("explain (primitive 1, written here, under primitive 2, the pixel's):\n"),
+                first.out());
+        assertTrue(first.out().contains("  kd: (1, 0, 0)\n"), first.out());
+        assertTrue(first.out().contains("  final_rgb: (255, 0, 0)\n"), first.out());
+        assertTrue(first.out().contains("rgb (0, 255, 0)"), "the pixel is the green one's: " + first.out());
+        CliRun json = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,320", "--explain", "--primitive", "1",
+                "--json");
+        assertEquals(0, json.exitCode(), json.err());
+        assertTrue(json.out().contains("\"explained\": {\"primitive\": 1, \"outcome\": \"written\"}, \"explain\": {\"z\": -20"),
+                json.out());
+        CliRun none = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,320", "--explain", "--primitive", "3");
+        assertEquals(0, none.exitCode(), none.err());
+        assertTrue(none.out().contains("explain (primitive 3): it made no write at this pixel"), none.out());
+        CliRun owner = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,320", "--explain", "--primitive", "2");
+        assertTrue(owner.out().contains("explain (primitive 2):\n"), "the owner's, as without --primitive: " + owner.out());
+    }
+
     @Test
     void aCulledPrimitiveIsNoWriteAndADepthCuedOneIsCulledByItsBox() throws Exception {
         Path scene = write("behind.simp", "polygon (0 0 10) (50 0 10) (0 50 10)\n");
