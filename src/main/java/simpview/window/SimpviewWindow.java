@@ -609,8 +609,9 @@ public final class SimpviewWindow {
                     ? OverdrawPicture.of(shownCounts,
                             "depth-test failures: writes that lost each pixel's depth test")
                     : OverdrawPicture.of(shownCounts), null, true);
-            status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost writes at a pixel"
-                    : "Overdraw: up to " + overdrawMax + " writes at a pixel")
+            String writes = overdrawMax == 1 ? " write" : " writes";
+            status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost" + writes + " at a pixel"
+                    : "Overdraw: up to " + overdrawMax + writes + " at a pixel")
                     + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
         });
     }

@@ -69,6 +69,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         // Shift+V: at the centre the farthest triangle, drawn last, lost to the two before it: at most 1 loss.
         driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == 1, "the depth-test failures, at most 1");
+        assertTrue(driver.onEdt(() -> window.status().messageText()).startsWith("Depth-test failures: up to 1 lost write at"));
         // V while the failures are shown: the overdraw takes their place; V again: the page
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw instead of the failures");
