@@ -55,6 +55,16 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
         return new InspectedScene(file, scene.near(), Rgb.BLACK, context.ownColours(), ScenePipeline.Rules.DEPTH_CUED);
     }
 
+    /**
+     * Whether {@code error} means that nothing of this scene could be read
+     * (its own file, at no line: not there, or not text), rather than that it
+     * stops part of the way, where the page shows what was drawn before the
+     * error and a replay goes as far.
+     */
+    boolean nothingRead(SceneException error) {
+        return error.line() == 0 && error.file() != null && error.file().equals(file);
+    }
+
     /** The same scene in its own colours, or depth-cued again. */
     public InspectedScene withOwnColours(boolean own) {
         return new InspectedScene(file, near, far, own, rules);

@@ -58,7 +58,12 @@ public final class Overdraw {
     public record Counts(int[] reached, int[] failed) {
     }
 
-    /** Both counts of the scene, drawn as {@code scene} says. */
+    /**
+     * Both counts of the scene, drawn as {@code scene} says; a scene that
+     * stops at an error is counted as far as the error, as its page is drawn.
+     *
+     * @throws SceneException when nothing of the scene could be read
+     */
     public static Counts counts(InspectedScene scene, SceneLibrary library) throws SceneException {
         PageCanvas canvas = new PageCanvas();
         int[] counts = new int[PageCanvas.PANEL * PageCanvas.PANEL];
@@ -66,7 +71,13 @@ public final class Overdraw {
         Counting counting = new Counting(counts, won, canvas.zbuffer().depths());
         ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
-        ScenePipeline.draw(scene.file(), canvas, options, counting);
+        try {
+            ScenePipeline.draw(scene.file(), canvas, options, counting);
+        } catch (SceneException e) {
+            if (scene.nothingRead(e)) {
+                throw e;
+            }
+        }
         int[] failed = new int[counts.length];
         for (int i = 0; i < counts.length; i++) {
             failed[i] = counts[i] - won[i];

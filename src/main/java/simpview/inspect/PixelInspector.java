@@ -100,8 +100,8 @@ public final class PixelInspector {
         try {
             drawn = ScenePipeline.draw(scene.file(), canvas, options, replay);
         } catch (SceneException e) {
-            if (e.line() == 0 && e.file() != null && e.file().equals(scene.file())) {
-                throw e; // nothing of it was read: there is no history to tell
+            if (scene.nothingRead(e)) {
+                throw e; // there is no history to tell
             }
             error = e;
             drawn = new ScenePipeline.Drawn(replay.lit, null, true, List.of());

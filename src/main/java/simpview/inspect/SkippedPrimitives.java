@@ -50,12 +50,24 @@ public final class SkippedPrimitives {
     private SkippedPrimitives() {
     }
 
-    /** The scene's skipped primitives, drawn as {@code scene} says, its files from {@code library}. */
+    /**
+     * The scene's skipped primitives, drawn as {@code scene} says, its files
+     * from {@code library}; of a scene that stops at an error, those before
+     * the error, as its page is drawn.
+     *
+     * @throws SceneException when nothing of the scene could be read
+     */
     public static Found of(InspectedScene scene, SceneLibrary library) throws SceneException {
         Collecting collecting = new Collecting();
         ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
-        ScenePipeline.draw(scene.file(), new PageCanvas(), options, collecting);
+        try {
+            ScenePipeline.draw(scene.file(), new PageCanvas(), options, collecting);
+        } catch (SceneException e) {
+            if (scene.nothingRead(e)) {
+                throw e;
+            }
+        }
         return new Found(List.copyOf(collecting.found), collecting.unprojectable);
     }
 

@@ -600,7 +600,7 @@ public final class SimpviewWindow {
             // the other count asked for while one is shown: it takes the place of the one shown
         }
         replayForOverlay("Counting the writes of every pixel ...",
-                "The overdraw could not be counted: the scene has an error.", inspectorPanel::overdraw, counts -> {
+                "The overdraw could not be counted: the scene could not be read.", inspectorPanel::overdraw, counts -> {
             int[] shownCounts = failures ? counts.failed() : counts.reached();
             overdrawShown = true;
             overdrawFailures = failures;
@@ -611,16 +611,21 @@ public final class SimpviewWindow {
                     : OverdrawPicture.of(shownCounts), null, true);
             String writes = overdrawMax == 1 ? " write" : " writes";
             status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost" + writes + " at a pixel"
-                    : "Overdraw: up to " + overdrawMax + writes + " at a pixel")
+                    : "Overdraw: up to " + overdrawMax + writes + " at a pixel") + asFarAsTheError()
                     + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
         });
+    }
+
+    /** What an overlay of a scene with an error says it covers: the drawing up to the error, as the page shows. */
+    private String asFarAsTheError() {
+        return shown != null && shown.error() != null ? ", as far as the scene's error" : "";
     }
 
     /**
      * An overlay made by replaying the shown scene on the inspector's thread:
      * says {@code working} meanwhile, then gives the answer to {@code show}
-     * on the EDT, unless the picture changed first (then nothing) or the
-     * scene has an error (then {@code failed} is said).
+     * on the EDT, unless the picture changed first (then nothing) or
+     * nothing of the scene could be read (then {@code failed} is said).
      */
     private <T> void replayForOverlay(String working, String failed,
             BiConsumer<InspectedScene, Consumer<T>> replay, Consumer<T> show) {
@@ -917,7 +922,7 @@ public final class SimpviewWindow {
             return;
         }
         replayForOverlay("Finding the primitives culled and clipped away ...",
-                "The scene has an error: no outlines.", inspectorPanel::skipped, found -> {
+                "The scene could not be read: no outlines.", inspectorPanel::skipped, found -> {
             List<double[]> culled = new ArrayList<>();
             List<double[]> clipped = new ArrayList<>();
             for (SkippedPrimitives.Skipped s : found.outlined()) {
@@ -929,7 +934,7 @@ public final class SimpviewWindow {
                     new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size() + " culled"),
                     new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size() + " clipped away"))));
             status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
-                    + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more lie wholly at or behind "
+                    + asFarAsTheError() + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more lie wholly at or behind "
                     + "the eye and have no outline" : "") + " · U: off");
         });
     }

@@ -54,6 +54,29 @@ class OverdrawTest {
         assertTrue(overdrawn > 10, "too few pixels written more than once: " + overdrawn);
     }
 
+    /**
+     * A scene that stops at an error is counted as far as the error, as its
+     * page is drawn (the page shows what was drawn before it): the two
+     * triangles before the bad line overlap at the centre; the one after it
+     * is never drawn. A scene none of which can be read is an error still.
+     */
+    @Test
+    void aSceneWithAnErrorIsCountedAsFarAsTheError() throws Exception {
+        Path scene = dir.resolve("broken.simp");
+        java.nio.file.Files.writeString(scene, "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+                + "polygon (-50, -50, -20) (50, -50, -20) (0, 50, -20)\n"
+                + "rotate Q 5\n"
+                + "polygon (-50, -50, -5) (50, -50, -5) (0, 50, -5)\n");
+        Overdraw.Counts counts = Overdraw.counts(InspectedScene.of(scene), library);
+        int centre = 325 * PageCanvas.PANEL + 325;
+        assertEquals(2, counts.reached()[centre]);
+        assertEquals(1, counts.failed()[centre]);
+        PixelReport report = inspector.inspect(InspectedScene.of(scene), 325, 325);
+        assertEquals(2, report.history().size(), "the history goes as far: " + report.text(true, false));
+        org.junit.jupiter.api.Assertions.assertThrows(simpview.scene.SceneException.class,
+                () -> Overdraw.counts(InspectedScene.of(dir.resolve("missing.simp")), library));
+    }
+
     @Test
     void theCoursesPagesCountAsTheirHistories() throws Exception {
         Path a3 = simpview.testing.CourseFiles.require("course-simp-a3");

@@ -67,6 +67,19 @@ class SkippedPrimitivesTest {
         assertEquals(1, found.clipped());
     }
 
+    /** A scene that stops at an error: the primitives skipped before the error, as its page is drawn. */
+    @Test
+    void aSceneWithAnErrorIsOutlinedAsFarAsTheError() throws Exception {
+        Path scene = dir.resolve("broken.simp");
+        Files.writeString(scene, "camera -1 -1 1 1 -1 -100\n"
+                + "polygon (-1, -1, -200) (1, -1, -200) (0, 1, -200)\n"
+                + "scale 1 2\n"
+                + "polygon (-1, -1, -300) (1, -1, -300) (0, 1, -300)\n");
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new SceneLibrary());
+        assertEquals(1, found.outlined().size());
+        assertEquals(2, found.outlined().get(0).line());
+    }
+
     @Test
     void aDepthCuedSceneBeyondItsDepthRangeIsCulled() throws Exception {
         Path scene = dir.resolve("cued.simp");
