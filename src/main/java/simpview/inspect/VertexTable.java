@@ -183,11 +183,18 @@ final class VertexTable {
         "outside",
     };
 
-    /** Panel coordinates and the pixel they round to, or why there are none. */
+    /**
+     * In perspective the point on the window plane (x / -z, y / -z); then
+     * panel coordinates and the pixel they round to, or why there are none.
+     */
     private static void project(Camera camera, double x, double y, double z, Terms v) {
         if (camera.isPerspective() && !(z < 0)) {
             v.put("panel", "none: at or behind the eye (z >= 0)");
             return;
+        }
+        if (camera.isPerspective()) {
+            // SPEC Part 2: the point lands on the window plane z = -1 at (x / -z, y / -z)
+            v.put("window", x / -z, y / -z);
         }
         double px = camera.panelX(x, z);
         double py = camera.panelY(y, z);

@@ -48,6 +48,7 @@ class VertexTableTest {
         assertArrayEquals(new double[] {1, 0, 0}, v.get(1).vector("written"), EPS);
         assertArrayEquals(new double[] {3, 2, -20}, v.get(1).vector("world"), EPS);
         assertArrayEquals(new double[] {3, 2, -30}, v.get(1).vector("camera"), EPS);
+        assertArrayEquals(new double[] {0.1, 1.0 / 15}, v.get(1).vector("window"), 1e-12);
         assertArrayEquals(new double[] {341.25, 162.5 + (1.0 / 15 + 1) * 162.5}, v.get(1).vector("panel"), 1e-9);
         assertArrayEquals(new int[] {341, 336}, v.get(1).bytes("pixel"));
         // vertex 0: world (1, 2, -20), camera (1, 2, -30): panel ((1/30 + 2) 162.5, 162.5 + (2/30 + 1) 162.5)
