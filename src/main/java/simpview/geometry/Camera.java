@@ -140,6 +140,17 @@ public final class Camera {
         return xlow + (panelX - offsetX) * extent / PANEL_SIZE;
     }
 
+    /**
+     * Where the window lies on the panel: its left, bottom, right and top
+     * edges in panel coordinates (the whole panel along its longer side,
+     * centred along the other). Pixels whose centres lie outside it show
+     * nothing of the scene.
+     */
+    public double[] windowOnPanel() {
+        double s = PANEL_SIZE / extent;
+        return new double[] {offsetX, offsetY, offsetX + s * (xhigh - xlow), offsetY + s * (yhigh - ylow)};
+    }
+
     /** The window y that panel y stands for (see {@link #windowX}). */
     public double windowY(double panelY) {
         return ylow + (panelY - offsetY) * extent / PANEL_SIZE;

@@ -108,7 +108,7 @@ public final class PixelInspector {
         }
         int argb = canvas.panel().getPixel(x, y);
         return new PixelReport(scene, drawn, error, x, y, argb, canvas.zbuffer().depthAt(x, y), watch.entries(),
-                watch::source);
+                watch::source, watch.camera());
     }
 
     /** What the last replay drew: the inspected pixel as the page has it, and little else (the filter drops the rest). */

@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import java.util.List;
+import simpview.geometry.Camera;
 import simpview.scene.SceneException;
 import simpview.scene.simp.ScenePipeline;
 import simpview.scene.simp.SourcePlace;
@@ -26,11 +27,17 @@ public final class PixelReport {
 
     private final ScenePipeline.Drawn drawn;
     private final SceneException error;
+    /** The scene's view at its end: its camera, or the parallel view. */
+    private final Camera camera;
 
-    /** @param error what stopped the scene, the history going as far as it; null when it was drawn to its end */
+    /**
+     * @param error what stopped the scene, the history going as far as it; null when it was drawn to its end
+     * @param camera the scene's view at its end
+     */
     PixelReport(InspectedScene scene, ScenePipeline.Drawn drawn, SceneException error, int x,
             int y, int argb, double depth, List<HistoryEntry> history,
-            java.util.function.IntFunction<PrimitiveSource> sources) {
+            java.util.function.IntFunction<PrimitiveSource> sources, Camera camera) {
+        this.camera = camera;
         this.drawn = drawn;
         this.error = error;
         this.sources = sources;
@@ -147,6 +154,26 @@ public final class PixelReport {
     }
 
     /**
+     * Why nothing can be drawn at the pixel when its centre is outside the
+     * camera's window on the panel (a window not square leaves bands of the
+     * panel black, A3's pageH); else null.
+     */
+    String outsideTheWindow() {
+        if (camera == null || !camera.isPerspective()) {
+            return null;
+        }
+        double[] w = camera.windowOnPanel();
+        double cx = x + 0.5;
+        double cy = y + 0.5;
+        if (cx >= w[0] && cx <= w[2] && cy >= w[1] && cy <= w[3]) {
+            return null;
+        }
+        return "its centre is outside the camera's window, which covers panel x " + Json.number(w[0]) + " to "
+                + Json.number(w[2]) + " and y " + Json.number(w[1]) + " to " + Json.number(w[3])
+                + ": nothing of the scene lands here";
+    }
+
+    /**
      * A primitive's number as the reports and the window's stepping show it:
      * 1, 2, 3, ... in drawing order (the entries hold 0, 1, 2, ...).
      */
@@ -196,7 +223,8 @@ public final class PixelReport {
                 .append("): rgb (").append(argb >>> 16 & 0xFF).append(", ").append(argb >>> 8 & 0xFF).append(", ")
                 .append(argb & 0xFF).append("), depth ").append(Json.number(depth)).append('\n');
         HistoryEntry owner = lastWritten();
-        sb.append(owner == null ? "drawn by no primitive (background)\n"
+        String outside = outsideTheWindow();
+        sb.append(owner == null ? "drawn by no primitive (background)" + (outside == null ? "" : ": " + outside) + "\n"
                 : "drawn by primitive " + shown(owner.primitive()) + ": " + describe(owner) + "\n");
         if (withHistory) {
             int missed = 0;
@@ -390,7 +418,13 @@ public final class PixelReport {
             Terms explanation = explanation();
             if (explanation == null) {
                 sb.append("{\"final_rgb\": [").append(argb >>> 16 & 0xFF).append(", ").append(argb >>> 8 & 0xFF)
-                        .append(", ").append(argb & 0xFF).append("], \"background\": true}");
+                        .append(", ").append(argb & 0xFF).append("], \"background\": true");
+                String outside = outsideTheWindow();
+                if (outside != null) {
+                    sb.append(", \"outside_window\": ");
+                    Json.string(sb, outside);
+                }
+                sb.append('}');
             } else {
                 explanation.appendJson(sb);
             }

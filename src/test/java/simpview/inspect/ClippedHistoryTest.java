@@ -140,6 +140,26 @@ class ClippedHistoryTest {
         assertTrue(e.here()[2] > -1 && e.here()[2] < 0, java.util.Arrays.toString(e.here()));
     }
 
+    /**
+     * A window twice as wide as high, [-1, 1] x [-1, 0]: 325 pixels to a
+     * unit, 650 wide and 325 high, centred, so panel y 162.5 to 487.5; the
+     * bands above and below it show nothing, and a background pixel there
+     * says why. A background pixel inside the window does not.
+     */
+    @Test
+    void aBackgroundPixelOutsideTheCamerasWindowSaysSo() throws Exception {
+        InspectedScene s = scene("wide.simp", "camera -1 -1 1 0 -1 -100\nambient 1 1 1\n"
+                + "polygon (-1, -1, -5) (1, -1, -5) (0, -0.5, -5)\n");
+        String above = inspector.inspect(s, 325, 600).text(true, false);
+        assertTrue(above.contains("drawn by no primitive (background): its centre is outside the camera's window, "
+                + "which covers panel x 0 to 650 and y 162.5 to 487.5: nothing of the scene lands here"), above);
+        assertTrue(inspector.inspect(s, 325, 600).json(true, true).contains("\"outside_window\": \"its centre is"));
+        String inside = inspector.inspect(s, 325, 480).text(true, false);
+        assertTrue(inside.contains("drawn by no primitive (background)\n"), inside);
+        assertEquals(null, inspector.inspect(scene("square.simp", CAMERA + "polygon (-1, -1, -5) (1, -1, -5) (0, 1, -5)\n"),
+                3, 3).outsideTheWindow());
+    }
+
     @Test
     void gouraudThroughTheNearPlaneIsExplainedByItsOwnVertices() throws Exception {
         // Ambient 1 and no lights: each vertex lit is its own colour. The apex (z = -0.5) is nearer than the
