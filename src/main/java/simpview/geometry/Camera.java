@@ -140,6 +140,11 @@ public final class Camera {
         return xlow + (panelX - offsetX) * extent / PANEL_SIZE;
     }
 
+    /** The window y that panel y stands for (see {@link #windowX}). */
+    public double windowY(double panelY) {
+        return ylow + (panelY - offsetY) * extent / PANEL_SIZE;
+    }
+
     /**
      * Where the window lies on the panel: its left, bottom, right and top
      * edges in panel coordinates (the whole panel along its longer side,
@@ -149,11 +154,6 @@ public final class Camera {
     public double[] windowOnPanel() {
         double s = PANEL_SIZE / extent;
         return new double[] {offsetX, offsetY, offsetX + s * (xhigh - xlow), offsetY + s * (yhigh - ylow)};
-    }
-
-    /** The window y that panel y stands for (see {@link #windowX}). */
-    public double windowY(double panelY) {
-        return ylow + (panelY - offsetY) * extent / PANEL_SIZE;
     }
 
     /**

@@ -152,32 +152,13 @@ final class Coverage {
     }
 
     static boolean onLine(double x0, double y0, double x1, double y1, int x, int y) {
-        long ax = (long) Math.floor(x0 + 0.5);
-        long ay = (long) Math.floor(y0 + 0.5);
-        long bx = (long) Math.floor(x1 + 0.5);
-        long by = (long) Math.floor(y1 + 0.5);
-        long dx = bx - ax;
-        long dy = by - ay;
-        if (Math.abs(dx) >= Math.abs(dy)) {
-            if (ax > bx) {
-                long t = ax; ax = bx; bx = t;
-                t = ay; ay = by; by = t;
-            }
-            if (x < ax || x > bx) {
-                return false;
-            }
-            double slope = ax == bx ? 0 : (double) (by - ay) / (bx - ax);
-            return near(ay, slope, x - ax, y) && (long) Math.floor(minor(ay, slope, x - ax) + 0.5) == y;
-        }
-        if (ay > by) {
-            long t = ax; ax = bx; bx = t;
-            t = ay; ay = by; by = t;
-        }
-        if (y < ay || y > by) {
+        DdaSteps dda = DdaSteps.of(x0, y0, x1, y1);
+        long step = dda.stepAt(x, y);
+        if (step < 0 || step > dda.steps()) {
             return false;
         }
-        double slope = (double) (bx - ax) / (by - ay);
-        return near(ax, slope, y - ay, x) && (long) Math.floor(minor(ax, slope, y - ay) + 0.5) == x;
+        int minor = dda.xMajor() ? y : x;
+        return near(dda.minorStart(), dda.slope(), step, minor) && (long) Math.floor(dda.minorAt(step) + 0.5) == minor;
     }
 
     /** Whether the line's minor coordinate after that many steps is within a pixel of {@code at}: else no DDA walk is needed. */

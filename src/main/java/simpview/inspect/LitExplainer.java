@@ -125,21 +125,11 @@ final class LitExplainer implements PixelWatch.Explainer {
             if (!Coverage.onLine(o[a * s], o[a * s + 1], o[b * s], o[b * s + 1], x, y)) {
                 continue;
             }
-            double x0 = Math.floor(o[a * s] + 0.5);
-            double y0 = Math.floor(o[a * s + 1] + 0.5);
-            double x1 = Math.floor(o[b * s] + 0.5);
-            double y1 = Math.floor(o[b * s + 1] + 0.5);
-            boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
-            boolean reversed = xMajor ? x1 < x0 : y1 < y0;
-            int start = reversed ? b : a;
-            int end = reversed ? a : b;
-            double major0 = xMajor ? Math.min(x0, x1) : Math.min(y0, y1);
-            double major1 = xMajor ? Math.max(x0, x1) : Math.max(y0, y1);
-            // as DdaWalk works t out, halves and all: the same bits
-            double halfStart = 0.5 * major0;
-            double halfSteps = 0.5 * major1 - halfStart;
-            double major = xMajor ? x : y;
-            double t = halfSteps == 0 ? 0 : (0.5 * major - halfStart) / halfSteps;
+            DdaSteps dda = DdaSteps.of(o[a * s], o[a * s + 1], o[b * s], o[b * s + 1]);
+            int start = dda.reversed() ? b : a;
+            int end = dda.reversed() ? a : b;
+            long step = dda.stepAt(x, y);
+            double t = dda.t(step);
             int ps = start * s;
             int pe = end * s;
             double qStart = o[ps + FragmentLayout.Q];
@@ -174,13 +164,15 @@ final class LitExplainer implements PixelWatch.Explainer {
                 best.put("edge", a + "-" + b);
             }
             best.put("start", ends[0]).put("end", ends[1])
-                    .put("step", major - major0).put("steps", major1 - major0)
+                    .put("step", (double) step).put("steps", (double) dda.steps())
                     .put("t", t)
                     .put("q", q)
                     .put("weights", wStart, wEnd)
                     .put("weighted", weighted)
-                    .put("rule", "q = 1 / -z is lerped by t, and so is kd q: the ends weigh (1 - t) q_start / q and "
-                            + "t q_end / q (SPEC Part 2, perspective-correct)");
+                    .put("rule", watch.camera().isPerspective()
+                            ? "q = 1 / -z is lerped by t, and so is kd q: the ends weigh (1 - t) q_start / q and "
+                            + "t q_end / q (SPEC Part 2, perspective-correct)"
+                            : "the parallel view: q = 1, kd is lerped by t, the ends weigh 1 - t and t");
         }
         return best;
     }

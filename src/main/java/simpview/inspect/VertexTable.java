@@ -238,37 +238,24 @@ final class VertexTable {
      * (the slope added once a step) and the pixel it rounds to, half up.
      */
     static Terms dda(double x0, double y0, double x1, double y1, int x, int y) {
-        long ax = (long) Math.floor(x0 + 0.5);
-        long ay = (long) Math.floor(y0 + 0.5);
-        long bx = (long) Math.floor(x1 + 0.5);
-        long by = (long) Math.floor(y1 + 0.5);
-        boolean xMajor = Math.abs(bx - ax) >= Math.abs(by - ay);
-        boolean swap = xMajor ? ax > bx : ay > by;
-        if (swap) {
-            long t = ax;
-            ax = bx;
-            bx = t;
-            t = ay;
-            ay = by;
-            by = t;
-        }
-        long major = xMajor ? bx - ax : by - ay;
-        long minor = xMajor ? by - ay : bx - ax;
+        DdaSteps dda = DdaSteps.of(x0, y0, x1, y1);
+        boolean xMajor = dda.xMajor();
+        long major = dda.steps();
+        long minor = xMajor ? dda.endY() - dda.startY() : dda.endX() - dda.startX();
         Terms t = new Terms();
-        t.put("start_pixel", (double) ax, (double) ay);
-        t.put("end_pixel", (double) bx, (double) by);
+        t.put("start_pixel", (double) dda.startX(), (double) dda.startY());
+        t.put("end_pixel", (double) dda.endX(), (double) dda.endY());
         t.put("major_axis", xMajor ? "x" : "y");
         t.put("direction", xMajor ? 1 : Long.signum(minor), xMajor ? Long.signum(minor) : 1);
-        double slope = major == 0 ? 0 : (double) minor / major;
-        t.put("slope", slope);
+        t.put("slope", dda.slope());
         t.put("steps", (double) major);
         t.put("pixels", (double) (major + 1));
-        long step = xMajor ? x - ax : y - ay;
+        long step = dda.stepAt(x, y);
         if (step < 0 || step > major) {
             t.put("at_pixel", "none: the pixel's " + (xMajor ? "x" : "y") + " is outside the line's, "
-                    + (xMajor ? ax : ay) + " to " + (xMajor ? bx : by));
+                    + dda.majorStart() + " to " + dda.majorEnd());
         } else {
-            double along = Coverage.minor(xMajor ? ay : ax, slope, step);
+            double along = dda.minorAt(step);
             long rounded = (long) Math.floor(along + 0.5);
             t.put("at_pixel", new Terms().put("step", (double) step).put(xMajor ? "y" : "x", along)
                     .put("rounds_to", (double) rounded).put("steps_on_pixel", rounded == (xMajor ? y : x)));
