@@ -63,6 +63,7 @@ import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
+import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
@@ -544,10 +545,15 @@ public final class SimpviewWindow {
         if (scene == null) {
             return;
         }
+        // While stepping (unturned, where the replay numbers the primitives as the steps do), the vertex table is
+        // the stepped primitive's: RenderDoc's mesh view of the draw at hand, with whether it covers the pixel.
+        int stepped = settings.stepLimit() >= 1 && !orbit.turned() ? settings.stepLimit() - 1 : HistoryEntry.NO_NUMBER;
         String note = orbit.turned() || settings.stepLimit() >= 0
                 ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
+                + (stepped == HistoryEntry.NO_NUMBER ? "" : " The vertices below are primitive " + (stepped + 1)
+                + "'s, the one stepped to.")
                 : null;
-        inspectorPanel.inspect(scene, x, y, note, theirs);
+        inspectorPanel.inspect(scene, x, y, note, theirs, stepped);
     }
 
     /** While comparing: both pictures' values at image pixel (ix, iy) and how far apart they are; else null. */

@@ -124,9 +124,16 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.onEdt(() -> window.openScene(scene));
         driver.awaitShown(new View.OfScene(scene));
         driver.onEdt(() -> window.goToPixel("325, 325"));
+        driver.press(KeyEvent.VK_I);
         driver.press(KeyEvent.VK_CLOSE_BRACKET);
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 1 of 3"),
                 "the first step");
+        // The panel's history is the whole drawing's (the owner is primitive 2), its vertices the stepped one's.
+        driver.awaitEdt(() -> window.inspectorPanel().answered()
+                && window.inspectorPanel().text().contains("vertices of primitive 1:"), "the stepped primitive's vertices");
+        String panel = driver.onEdt(() -> window.inspectorPanel().text());
+        assertTrue(panel.contains("The vertices below are primitive 1's, the one stepped to."), panel);
+        assertTrue(panel.contains("drawn by primitive 2: steps.simp:2"), panel);
         driver.press(KeyEvent.VK_J);
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 2 of 3, steps.simp:2"),
                 "stepping to the pinned pixel's primitive in the whole picture");
@@ -139,6 +146,11 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().equals("No primitive draws the pinned "
                 + "pixel in the whole picture: nothing to step to. Back at primitive 1."), "no primitive to step to");
         assertEquals(1, (int) driver.onEdt(() -> window.stepLimit()), "the step is where it was");
+        // Not stepping: the owner's vertices again.
+        driver.press(KeyEvent.VK_BACK_SLASH);
+        driver.onEdt(() -> window.goToPixel("325, 325"));
+        driver.awaitEdt(() -> !window.busy() && window.inspectorPanel().answered()
+                && window.inspectorPanel().text().contains("vertices of primitive 2:"), "the owner's vertices");
     }
 
     private static JTextArea textArea(SimpviewWindow window) {

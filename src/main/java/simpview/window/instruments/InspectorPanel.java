@@ -194,12 +194,21 @@ public final class InspectorPanel {
     }
 
     public void inspect(InspectedScene scene, int x, int y, String note, String before) {
+        inspect(scene, x, y, note, before, HistoryEntry.NO_NUMBER);
+    }
+
+    /**
+     * The same, with the vertices of primitive {@code vertices} (0, 1, ...:
+     * the one stepped to) instead of the owner's, unless that is NO_NUMBER
+     * or the scene has no such primitive.
+     */
+    public void inspect(InspectedScene scene, int x, int y, String note, String before, int vertices) {
         replay(before, "Replaying the scene for pixel (" + x + ", " + y + ") ...", () -> {
             Map<String, SourcePlace> named = new HashMap<>();
             PixelReport r;
             try {
                 // a scene with an error is inspected as far as the error, which the report names
-                r = inspector.inspect(scene, x, y);
+                r = inspector.inspect(scene, x, y, vertices);
             } catch (SceneException e) {
                 return new Answer("The scene cannot be read:\n" + e.getMessage(), named, List.of());
             }
@@ -209,8 +218,9 @@ public final class InspectorPanel {
                     named.put(place.file().getFileName() + ":" + place.line(), place);
                 }
             }
-            return new Answer((note == null ? "" : note + "\n\n")
-                    + r.text(true, true, owner == null ? HistoryEntry.NO_NUMBER : owner.primitive()),
+            int table = vertices != HistoryEntry.NO_NUMBER && r.vertices(vertices) != null ? vertices
+                    : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
+            return new Answer((note == null ? "" : note + "\n\n") + r.text(true, true, table),
                     named, owner == null ? List.of() : owner.chain());
         });
     }
