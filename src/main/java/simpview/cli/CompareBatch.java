@@ -495,6 +495,9 @@ public final class CompareBatch {
         if (!listing.hiddenNote().isEmpty()) {
             err.println(says + listing.hiddenNote());
         }
+        if (!listing.outsideNote(dir).isEmpty()) {
+            err.println(says + listing.outsideNote(dir));
+        }
         DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> dir.relativize(p).toString()).toList());
         claimOutputs(dir, pictures, outputs, diffNames);
         String unwritable = outputs.problem();
@@ -516,7 +519,8 @@ public final class CompareBatch {
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames);
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan);
+        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
+                picture -> listing.linkOut(picture, dir));
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", Count.of(pictures.size(), "picture"), seconds);
         if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage) && firstAssignmentOnly(rows)) {
@@ -905,10 +909,14 @@ public final class CompareBatch {
         return drawn;
     }
 
-    /** The comparisons, on a thread a core up to four; rows in the pictures' order. */
+    /**
+     * The comparisons, on a thread a core up to four; rows in the pictures' order. {@code linkOut}: why a picture is
+     * not read, when it is a link out of the folder (its row says so).
+     */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Picture> drawn, Map<Integer, BufferedImage> firstAssignment,
-            Map<CompareTarget, List<AcceptedPanel>> alternates, DiffPlan diffs) {
+            Map<CompareTarget, List<AcceptedPanel>> alternates, DiffPlan diffs,
+            Function<Path, Optional<String>> linkOut) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
                 Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
@@ -922,7 +930,15 @@ public final class CompareBatch {
                 rows.add(workers.submit(() -> {
                     String relative = dir.relativize(picture).toString();
                     List<BatchRow> made;
-                    if (match.firstAssignmentPage() > 0) {
+                    Optional<String> notRead = linkOut.apply(picture);
+                    if (notRead.isPresent() && match.firstAssignmentPage() > 0) {
+                        int page = match.firstAssignmentPage();
+                        made = List.of(BatchRow.broken(relative, firstAssignmentLabel(page), notRead.get(),
+                                firstAssignmentPageRule(page)));
+                    } else if (notRead.isPresent() && match.target() != null) {
+                        made = List.of(BatchRow.broken(relative, match.target().label(own.context()), notRead.get(),
+                                ruleOf(match.target())));
+                    } else if (match.firstAssignmentPage() > 0) {
                         int page = match.firstAssignmentPage();
                         made = compareFirstAssignment(relative, page, firstAssignment.get(page), diffs,
                                 ours -> PanelGridComparison.cut(picture, ours, firstAssignmentPanels()));

@@ -11,7 +11,10 @@ import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.LinkedHashMap;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
 import simpview.compare.Count;
 import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
@@ -27,8 +30,11 @@ import simpview.pages.SceneList;
  * @param unreadable the files, not hidden, in a picture format simpview does not read (page6.tif, page2.webp)
  * @param others every file, not hidden, that is not a picture simpview reads (a zip, notes.txt, page6.tif): what
  *     a folder without pictures holds instead
+ * @param outside the links, not hidden, that lead out of the folder (not followed), each with where it leads as
+ *     written in it: a link to a folder outside is not looked into, one named like a picture is not read
  */
-record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, List<Path> others) {
+record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, List<Path> others,
+        Map<Path, Path> outside) {
 
     /** The endings of the pictures simpview reads (PNG, JPEG, GIF, BMP), in lower case. */
     static final List<String> PICTURE_ENDINGS = List.of(".png", ".jpg", ".jpeg", ".gif", ".bmp");
@@ -55,19 +61,40 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
     /** The folder a Mac's zip puts its resource forks in. */
     static final String MAC_LEFTOVERS = "__MACOSX";
 
-    /** The pictures under {@code dir}, hidden ones left out and counted, and the files in formats it does not read. */
+    /**
+     * The pictures under {@code dir}, hidden ones left out and counted, the files in formats it does not read, and
+     * the links that lead out of {@code dir}.
+     */
     static FolderListing of(Path dir) throws IOException {
+        Path root = dir.toRealPath();
         List<Path> files = new ArrayList<>();
-        // A link is taken as what it links to, as a file manager shows it: a link to a folder is looked into (one
-        // that leads back to a folder on its way is not, as all it holds is listed already), and a link to a
-        // picture is that picture. A link to nothing is listed as it is named: a picture that cannot be read,
-        // which says why, and not a page silently missing.
+        Map<Path, Path> outside = new LinkedHashMap<>();
+        // A link is taken as what it links to, as a file manager shows it, when that is in the folder: a link to a
+        // folder is looked into (one that leads back to a folder on its way is not, as all it holds is listed
+        // already), and a link to a picture is that picture. A link out of the folder is not followed: it may lead
+        // anywhere on the disk (/usr: thousands of pictures, read for minutes), to what nobody handed in (the
+        // teacher's files, which a row quoting what a file holds would show the student). A link to a folder
+        // outside is left out, said by outsideNote; one named like a picture is listed, a row saying where it
+        // leads. A link to nothing is listed as it is named: a picture that cannot be read, which says why, and
+        // not a page silently missing.
         Files.walkFileTree(dir, EnumSet.of(FileVisitOption.FOLLOW_LINKS), Integer.MAX_VALUE,
                 new SimpleFileVisitor<>() {
+                    @Override
+                    public FileVisitResult preVisitDirectory(Path folder, BasicFileAttributes attributes) {
+                        if (!folder.equals(dir) && leadsOut(folder, root)) {
+                            outside.put(folder, target(folder));
+                            return FileVisitResult.SKIP_SUBTREE;
+                        }
+                        return FileVisitResult.CONTINUE;
+                    }
+
                     @Override
                     public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
                         if (attributes.isRegularFile() || attributes.isSymbolicLink()) {
                             files.add(file);
+                        }
+                        if (attributes.isRegularFile() && leadsOut(file, root)) {
+                            outside.put(file, target(file));
                         }
                         return FileVisitResult.CONTINUE;
                     }
@@ -75,6 +102,10 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
                     @Override
                     public FileVisitResult visitFileFailed(Path file, IOException e) throws IOException {
                         if (e instanceof FileSystemLoopException) {
+                            return FileVisitResult.CONTINUE;
+                        }
+                        if (leadsOut(file, root)) { // a link to a folder outside that cannot be opened
+                            outside.put(file, target(file));
                             return FileVisitResult.CONTINUE;
                         }
                         throw e;
@@ -90,7 +121,44 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
                 .toList();
         List<Path> others = all.stream().filter(f -> !endsLike(f, PICTURE_ENDINGS) && !hidden(dir.relativize(f)))
                 .toList();
-        return new FolderListing(shown, pictures.size() - shown.size(), unreadable, others);
+        outside.keySet().removeIf(link -> hidden(dir.relativize(link)));
+        return new FolderListing(shown, pictures.size() - shown.size(), unreadable, others, outside);
+    }
+
+    /**
+     * Whether a path found in the walk is a link (or lies behind one) that leads out of the folder, whose real path
+     * is {@code root}: false for one that leads nowhere (listed as it is named) and for one that cannot be told.
+     */
+    private static boolean leadsOut(Path path, Path root) {
+        if (!Files.isSymbolicLink(path)) {
+            return false; // the walk follows only links that stay inside, so what is not one is inside
+        }
+        try {
+            return !path.toRealPath().startsWith(root);
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** Where a link leads, as it is written in it (../renders, /usr); the link itself when that cannot be read. */
+    private static Path target(Path link) {
+        try {
+            return Files.readSymbolicLink(link);
+        } catch (IOException | UnsupportedOperationException e) {
+            return link;
+        }
+    }
+
+    /**
+     * Where the link that a picture of this listing is leads, when it leads out of the folder {@code dir} (the
+     * picture is not read: its row says so): "bob/page2.png is a link to /etc/passwd, outside subs: ...". Empty
+     * for any other picture.
+     */
+    Optional<String> linkOut(Path picture, Path dir) {
+        Path target = outside.get(picture);
+        return target == null ? Optional.empty() : Optional.of(picture + " is a link to " + target + ", which is "
+                + "outside " + dir + ": simpview follows no link out of the folder it grades; put the picture itself "
+                + "in its place");
     }
 
     /** Whether a file's name ends with one of {@code endings} (lower case), letters of either case alike. */
@@ -108,6 +176,28 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
             }
         }
         return false;
+    }
+
+    /**
+     * What the batch says of the links to folders outside {@code dir} it did not look into, once: "" when there
+     * were none. "bob/stuff is a link to /usr, a folder outside subs: not looked into (...)".
+     */
+    String outsideNote(Path dir) {
+        List<Map.Entry<Path, Path>> folders = outside.entrySet().stream().filter(e -> Files.isDirectory(e.getKey()))
+                .toList();
+        if (folders.isEmpty()) {
+            return "";
+        }
+        String why = " (simpview follows no link out of the folder it grades: put what it leads to itself in its place)";
+        if (folders.size() == 1) {
+            return dir.relativize(folders.get(0).getKey()) + " is a link to " + folders.get(0).getValue()
+                    + ", a folder outside " + dir + ": it was not looked into" + why;
+        }
+        List<String> named = folders.stream().limit(3)
+                .map(e -> dir.relativize(e.getKey()) + " (to " + e.getValue() + ")").toList();
+        return Count.of(folders.size(), "link") + " to folders outside " + dir + " were not looked into: "
+                + String.join(", ", named) + (folders.size() > 3 ? " and " + (folders.size() - 3) + " more" : "")
+                + why;
     }
 
     /** What the batch says of the hidden pictures it left out, once: "" when there were none. */

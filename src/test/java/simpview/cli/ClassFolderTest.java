@@ -163,21 +163,54 @@ class ClassFolderTest {
     }
 
     /**
-     * A link to a folder of pictures (renders -> ../build/renders) was not looked into: its pages were missing.
-     * Its pictures are graded; a link back up to a folder on the way is no endless walk.
+     * A link to a folder of pictures in the folder (renders -> build/renders) is looked into, as a file manager shows
+     * it; a link back up to a folder on the way is no endless walk.
      */
     @Test
     void aLinkedFolderIsLookedIntoAndALinkBackUpIsNoLoop() throws Exception {
         Path mine = dir.resolve("mine");
         png(mine.resolve("page1.png"), page(1));
-        png(dir.resolve("build/renders/page2.png"), page(2));
-        Files.createSymbolicLink(mine.resolve("renders"), dir.resolve("build/renders"));
+        png(mine.resolve("build/renders/page2.png"), page(2));
+        Files.createSymbolicLink(mine.resolve("renders"), Path.of("build/renders"));
         Files.createSymbolicLink(mine.resolve("renders-again"), mine);
 
         CliRun check = CliRun.of("check", mine.toString(), "--pages", "1-2");
 
         assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
-        assertTrue(check.out().contains("renders/page2.png  page 2 (seed 361)  PASS"), check.out());
-        assertTrue(check.out().endsWith("2 of 2 pictures pass\n"), check.out());
+        assertTrue(check.out().contains("renders/page2.png        page 2 (seed 361)  PASS"), check.out());
+        assertTrue(check.out().endsWith("2 of 2 pictures pass; 1 picture not counted\n"), check.out());
+    }
+
+    /**
+     * A link out of the folder graded was followed: bob's stuff -> /usr walked the whole tree for thousands of rows
+     * (and a picture there named like a page could count for him), and his page2.png -> a teacher's text file was
+     * a row quoting that file's first line. Neither is followed: the folder is said on stderr, the picture is a row
+     * saying where it leads.
+     */
+    @Test
+    void aLinkOutOfTheFolderGradedIsNotFollowed() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("bob/page1.png"), page(1));
+        png(dir.resolve("elsewhere/page2.png"), page(2));
+        Path secret = Files.writeString(dir.resolve("answers.txt"), "the teacher's answer key\n");
+        Files.createSymbolicLink(subs.resolve("bob/stuff"), dir.resolve("elsewhere"));
+        Files.createSymbolicLink(subs.resolve("ann/page2.png"), secret);
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertTrue(run.err().contains("simpview compare: " + Path.of("bob", "stuff") + " is a link to "
+                + dir.resolve("elsewhere") + ", a folder outside " + subs + ": it was not looked into (simpview "
+                + "follows no link out of the folder it grades: put what it leads to itself in its place)\n"),
+                run.err());
+        assertFalse(run.out().contains("stuff/"), run.out());
+        assertTrue(run.out().contains("| ann/page2.png | 2 (seed 361) |  |  |  |  |  |  |  | ERROR |  |  | "
+                + subs.resolve("ann/page2.png") + " is a link to " + secret + ", which is outside " + subs
+                + ": simpview follows no link out of the folder it grades; put the picture itself in its place |"),
+                run.out());
+        assertFalse(run.out().contains("answer key"), run.out());
+        assertTrue(run.out().contains("| bob/ | 2 (seed 361) |"), "bob lacks page 2: " + run.out());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
     }
 }
