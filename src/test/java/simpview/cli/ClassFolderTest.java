@@ -98,6 +98,26 @@ class ClassFolderTest {
     }
 
     /**
+     * One student's folder with its pages in output/part1 and output/part2 was taken for a class unzipped into
+     * output: part1 and part2 the submissions, each lacking the other's pages, exit 1, where check passed. Each
+     * page is once in those folders: it is one student's, graded as given.
+     */
+    @Test
+    void aStudentsPagesFolderedByPartAreNoClass() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("output/part1/page1.png"), page(1));
+        png(mine.resolve("output/part2/page2.png"), page(2));
+
+        CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertFalse(run.err().contains("graded as the submissions"), run.err());
+        assertFalse(run.out().contains("MISSING"), run.out());
+        assertEquals(ExitCode.OK, CliRun.of("check", mine.toString(), "--pages", "1-2").exitCode());
+    }
+
+    /**
      * One student's folder with page 1 at its top and page 2 in renders/: compare --dir took the top and renders/
      * for two submissions, each lacking the other's page, and exited 1 with JUnit failing both, where results.json
      * scored both pages and check passed. It is one submission, as results.json and check take it.
