@@ -581,8 +581,12 @@ public final class CompareBatch {
                 ? wanted.stream().filter(t -> !t.isPage()).toList()
                 : askedFor(wanted, matchedAsNamed, unreadMatches));
         // one scene for every picture: each picture is a student's, wherever it is (never one student's folder)
-        boolean oneStudent = outputs.student()
-                || matches.stream().noneMatch(Match::alone) && oneStudentsFolder(dir, pictures);
+        Optional<String> theOneFolder = outputs.student() || matches.stream().anyMatch(Match::alone)
+                ? Optional.empty() : theOneFolder(dir, pictures);
+        theOneFolder.ifPresent(folder -> err.println(says + dir + " holds pictures at its top and in one folder, "
+                + folder + ": they are graded as one student's submission (were they two students', put each one's "
+                + "pictures in a folder of its own)"));
+        boolean oneStudent = outputs.student() || theOneFolder.isPresent();
         Map<CompareTarget, Set<String>> handedInBy = new HashMap<>();
         for (int i = 0; i < pictures.size(); i++) {
             CompareTarget target = matches.get(i).target();
@@ -626,16 +630,19 @@ public final class CompareBatch {
     }
 
     /**
-     * Whether a teacher's folder is one student's though its pictures are foldered: some of its pictures are at its
-     * top, and the others in one folder (page1.png ... page7.png beside renders/page8.png). Taken as a class's, its
-     * top and its folder were two submissions, each lacking the other's pages: the run failed and JUnit counted seven
-     * pages missing where results.json scored all eight and check passed. A class's folder has its pictures in two
-     * or more first-level folders; one with all its pictures at its top is one submission as it is.
+     * The one folder of a teacher's folder that is one student's though its pictures are foldered: some of its
+     * pictures are at its top, and the others in one folder (page1.png ... page7.png beside renders/page8.png);
+     * empty for any other. Taken as a class's, its top and its folder were two submissions, each lacking the
+     * other's pages: the run failed and JUnit counted seven pages missing where results.json scored all eight and
+     * check passed. A class's folder has its pictures in two or more first-level folders; one with all its
+     * pictures at its top is one submission as it is. The folders are the submissions the table, JUnit and the web
+     * report name: renders\page8.png (unzipped from a Windows zip) is in renders.
      */
-    private static boolean oneStudentsFolder(Path dir, List<Path> pictures) {
-        List<Path> relative = pictures.stream().map(dir::relativize).toList();
-        return relative.stream().anyMatch(p -> p.getNameCount() == 1)
-                && relative.stream().filter(p -> p.getNameCount() > 1).map(p -> p.getName(0)).distinct().count() == 1;
+    private static Optional<String> theOneFolder(Path dir, List<Path> pictures) {
+        Set<String> submissions = pictures.stream().map(p -> JUnitResults.submission(dir.relativize(p).toString()))
+                .collect(Collectors.toCollection(TreeSet::new));
+        return submissions.size() == 2 && submissions.remove(JUnitResults.TOP)
+                ? Optional.of(submissions.iterator().next()) : Optional.empty();
     }
 
     /**

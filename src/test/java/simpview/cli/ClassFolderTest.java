@@ -135,11 +135,33 @@ class ClassFolderTest {
 
         assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
         assertFalse(run.out().contains("MISSING"), run.out());
+        assertTrue(run.err().contains("simpview compare: " + mine + " holds pictures at its top and in one folder, "
+                + "renders: they are graded as one student's submission (were they two students', put each one's "
+                + "pictures in a folder of its own)\n"), "the guess is said: " + run.err());
         String junit = Files.readString(xml);
         assertTrue(junit.contains("<testsuite name=\"submission\" id=\"0\" tests=\"2\" failures=\"0\""), junit);
         assertFalse(junit.contains("name=\"renders\""), junit);
         assertTrue(Files.readString(json).contains("\"score\": 2.0"), Files.readString(json));
         assertEquals(ExitCode.OK, CliRun.of("check", mine.toString(), "--pages", "1-2").exitCode());
+    }
+
+    /**
+     * The same with renders\page2.png, as a Windows zip's folder comes out of some unzip tools: a file at the top
+     * whose name the table, JUnit and the web report put in the submission renders. compare --dir took the top and
+     * renders for two submissions again, each lacking the other's page, and exited 1.
+     */
+    @Test
+    void aWindowsFolderInAFilesNameIsThatFolder() throws Exception {
+        Path mine = dir.resolve("mine");
+        png(mine.resolve("page1.png"), page(1));
+        png(mine.resolve("renders\\page2.png"), page(2));
+
+        CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertFalse(run.out().contains("MISSING"), run.out());
+        assertTrue(run.err().contains("at its top and in one folder, renders: "), run.err());
     }
 
     /** With one scene for every picture, each picture is a student's, at the top of the folder or in one below. */
