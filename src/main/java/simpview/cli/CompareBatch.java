@@ -441,9 +441,8 @@ public final class CompareBatch {
         }
         List<Path> pictures;
         try {
-            List<Path> written = ownFolders(dir, outputs);
-            pictures = FolderListing.of(dir).pictures().stream().map(dir::relativize)
-                    .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p)).toList();
+            pictures = handedIn(dir, FolderListing.of(dir), ownFolders(dir, outputs)).stream().map(dir::relativize)
+                    .toList();
         } catch (IOException | UncheckedIOException e) {
             return dir; // said when the batch lists it
         }
@@ -461,9 +460,8 @@ public final class CompareBatch {
                 }
                 Path graded = dir.resolve(inside);
                 List<String> names = folders.stream().sorted(SceneList.NATURAL_ORDER).toList();
-                String some = String.join(", ", names.subList(0, Math.min(3, names.size())))
-                        + (names.size() > 3 ? " and " + (names.size() - 3) + " more" : "");
-                err.println(says + "every picture in " + dir + " is in " + graded + ": its folders (" + some
+                err.println(says + "every picture in " + dir + " is in " + graded + ": its folders ("
+                        + UsageWords.firstThree(names)
                         + ") are graded as the submissions, as --dir " + graded + " grades them");
                 return graded;
             }
@@ -504,9 +502,7 @@ public final class CompareBatch {
         try {
             List<Path> written = ownFolders(dir, outputs);
             listing = FolderListing.of(dir);
-            pictures = listing.pictures().stream().map(dir::relativize)
-                    .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p))
-                    .map(dir::resolve).toList();
+            pictures = handedIn(dir, listing, written);
             withoutPictures = withoutPictures(dir, pictures, listing, written, outputs);
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
@@ -1394,6 +1390,18 @@ public final class CompareBatch {
             }
         }
         return own;
+    }
+
+    /**
+     * The pictures of a listing of {@code dir} that were handed in: those in the folders this batch writes into
+     * ({@code written}, relative to it) and the diff images of other runs are its output.
+     */
+    private static List<Path> handedIn(Path dir, FolderListing listing, List<Path> written) {
+        return listing.pictures().stream()
+                .filter(f -> {
+                    Path p = dir.relativize(f);
+                    return written.stream().noneMatch(p::startsWith) && !inOutputsDiffs(dir, p);
+                }).toList();
     }
 
     /**

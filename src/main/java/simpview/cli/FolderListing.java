@@ -193,11 +193,10 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
             return dir.relativize(folders.get(0).getKey()) + " is a link to " + folders.get(0).getValue()
                     + ", a folder outside " + dir + ": it was not looked into" + why;
         }
-        List<String> named = folders.stream().limit(3)
-                .map(e -> dir.relativize(e.getKey()) + " (to " + e.getValue() + ")").toList();
+        List<String> named = folders.stream().map(e -> dir.relativize(e.getKey()) + " (to " + e.getValue() + ")")
+                .toList();
         return Count.of(folders.size(), "link") + " to folders outside " + dir + " were not looked into: "
-                + String.join(", ", named) + (folders.size() > 3 ? " and " + (folders.size() - 3) + " more" : "")
-                + why;
+                + UsageWords.firstThree(named) + why;
     }
 
     /** What the batch says of the hidden pictures it left out, once: "" when there were none. */

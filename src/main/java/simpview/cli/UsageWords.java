@@ -118,6 +118,12 @@ final class UsageWords {
         return joined(List.copyOf(options), "or");
     }
 
+    /** The first three of some names, then how many more: "alice, bob, carol and 9 more"; "alice, bob". */
+    static String firstThree(List<String> names) {
+        return String.join(", ", names.subList(0, Math.min(3, names.size())))
+                + (names.size() > 3 ? " and " + (names.size() - 3) + " more" : "");
+    }
+
     /** Words in a sentence: "a", "a or b", "a, b or c" (with {@code conjunction} "or"). */
     static String joined(List<String> words, String conjunction) {
         return words.size() == 1 ? words.get(0) : String.join(", ", words.subList(0, words.size() - 1)) + " "
