@@ -431,11 +431,12 @@ public final class CompareBatch {
      * folders, two or more of them, that folder, said on stderr. Graded as {@code dir}, the whole class would be
      * one submission, each page counted once (the first student's), every other picture not counted, and the run
      * could pass whatever the others handed in. A chain of such single folders is followed down; a student's own
-     * folder nested so (subs/A2/page1.png) is graded as given, and so is one whose folders hold no page twice
-     * (subs/output/part1/page1.png, subs/output/part2/page5.png: one student's parts, not a class's students; nor
-     * a class of one, subs/class/alice/A2, subs/class/alice/A3). The batch's own output folders are left out.
+     * folder nested so (subs/A2/page1.png) is graded as given, and so is one whose folders hold no page (nor scene
+     * of {@code sceneFolder}, when that is a folder) twice (subs/output/part1/page1.png, subs/output/part2/page5.png:
+     * one student's parts, not a class's students; nor a class of one, subs/class/alice/A2, subs/class/alice/A3).
+     * The batch's own output folders are left out.
      */
-    Path classFolder(Path dir, Outputs outputs) {
+    Path classFolder(Path dir, Outputs outputs, Path sceneFolder) {
         if (outputs.student() || !Files.isDirectory(dir)) {
             return dir;
         }
@@ -446,6 +447,8 @@ public final class CompareBatch {
         } catch (IOException | UncheckedIOException e) {
             return dir; // said when the batch lists it
         }
+        Set<String> scenes = sceneFolder != null && Files.isDirectory(sceneFolder) ? scenesIn(sceneFolder).keySet()
+                : Set.of();
         Path inside = Path.of("");
         for (int depth = 0; !pictures.isEmpty(); depth++) {
             int level = depth;
@@ -455,7 +458,7 @@ public final class CompareBatch {
             Set<String> folders = pictures.stream().map(p -> p.getName(level).toString())
                     .collect(Collectors.toCollection(TreeSet::new));
             if (folders.size() > 1) {
-                if (depth == 0 || !someNameInTwo(pictures, level)) {
+                if (depth == 0 || !someNameInTwo(pictures, level, scenes)) {
                     return dir; // a class's folder as given, or one student's pictures foldered by part
                 }
                 Path graded = dir.resolve(inside);
@@ -471,17 +474,18 @@ public final class CompareBatch {
     }
 
     /**
-     * Whether two of the folders at {@code level} of the pictures' paths hold a picture named alike: the same page
-     * (page1.png and alice_page1.png) or, naming none, the same name (pageA.png). Each student of a class hands in
-     * the same pages; one student's pictures foldered by part (output/part1/page1.png, output/part2/page5.png) are
-     * each page once, and are one submission.
+     * Whether two of the folders at {@code level} of the pictures' paths hold a picture named alike: of the same
+     * scene of {@code scenes} (pageA.png and bob_pageA.png), of the same page (page1.png and alice_page1.png), or,
+     * naming neither, of the same name. Each student of a class hands in the same pages; one student's pictures
+     * foldered by part (output/part1/page1.png, output/part2/page5.png) are each page once, and are one submission.
      */
-    private static boolean someNameInTwo(List<Path> pictures, int level) {
+    private static boolean someNameInTwo(List<Path> pictures, int level, Set<String> scenes) {
         Map<String, Set<String>> folders = new HashMap<>();
         for (Path picture : pictures) {
             String name = picture.getFileName().toString();
+            Optional<String> scene = SubmissionNames.sceneName(name, scenes);
             OptionalInt page = SubmissionNames.pageNumber(name);
-            String key = page.isPresent() ? "page " + page.getAsInt()
+            String key = scene.isPresent() ? "scene " + scene.get() : page.isPresent() ? "page " + page.getAsInt()
                     : SubmissionNames.stem(name).toLowerCase(Locale.ROOT);
             folders.computeIfAbsent(key, k -> new HashSet<>()).add(picture.getName(level).toString());
         }

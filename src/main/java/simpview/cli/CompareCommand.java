@@ -192,7 +192,7 @@ public final class CompareCommand implements Callable<Integer> {
                         new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene"));
                 // with one scene for every picture, each picture is a submission of its own, in whatever folder
                 boolean eachAlone = pages == null && !firstAssignment() && scene != null && Files.isRegularFile(scene);
-                Path graded = eachAlone ? dir : batch.classFolder(dir, outputs);
+                Path graded = eachAlone ? dir : batch.classFolder(dir, outputs, pages == null ? scene : null);
                 if (firstAssignment()) {
                     return batch.firstAssignment(graded,
                             pages != null ? pages : CompareOptions.FIRST_ASSIGNMENT_PAGES, outputs);

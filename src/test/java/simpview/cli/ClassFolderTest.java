@@ -58,6 +58,30 @@ class ClassFolderTest {
     }
 
     /**
+     * A class's A3 pictures named each by its student (ann_pageA.png, bob-pageA.png) in subs/class: they name the
+     * same scene of --scene's folder, so subs/class is a class's folder, graded student by student.
+     */
+    @Test
+    void aClassOfScenePicturesNamedByTheirStudentsIsAClass() throws Exception {
+        Path scenes = dir.resolve("scenes");
+        Files.createDirectories(scenes);
+        Files.writeString(scenes.resolve("pageA.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        Path subs = dir.resolve("subs");
+        for (Path picture : new Path[] {subs.resolve("class/ann/ann_pageA.png"), subs.resolve("class/bob/bob-pageA.png")}) {
+            Files.createDirectories(picture.getParent());
+            assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scenes.resolve("pageA.simp").toString(), "--out",
+                    picture.toString()).exitCode());
+        }
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--scene", scenes.toString(), "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.err().contains("its folders (ann, bob) are graded as the submissions"), run.err());
+        assertFalse(run.out().contains("not counted"), run.out());
+    }
+
+    /**
      * A picture named like no page at the top of a class's folder (the teacher's example.png) made the top a
      * submission lacking every page: a MISSING row "at the top of the folder", a JUnit failure, exit 1, while
      * every student passed. It is a skipped row and nobody's pages.
