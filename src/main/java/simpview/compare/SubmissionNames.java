@@ -25,6 +25,11 @@ public final class SubmissionNames {
     private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
     private static final Pattern NUMBER = Pattern.compile("[0-9]+");
 
+    /** The full-width forms of '!' to '~' (Ｐ, ａ, ８, ＿), U+FF01 to U+FF5E, and the full-width space. */
+    private static final int FULL_WIDTH_FIRST = 0xFF01;
+    private static final int FULL_WIDTH_LAST = 0xFF5E;
+    private static final int IDEOGRAPHIC_SPACE = 0x3000;
+
     /** "a1", "A1", "assignment1", "assignment-1" as a word of its own: the first assignment's pages. */
     private static final Pattern FIRST_ASSIGNMENT = Pattern.compile("(?i)(?<![a-z0-9])(a|assignment[\\s_-]*)0*1(?![0-9])");
 
@@ -102,10 +107,14 @@ public final class SubmissionNames {
     /**
      * A name without its letters' accents (página: pagina) and with its full-width letters, digits and spaces as
      * their plain forms (page８, as a Japanese or Chinese keyboard types the digit: page8), which the words and
-     * numbers of page names are matched against.
+     * numbers of page names are matched against. Only those: other look-alikes stay as they are, so page3².png is
+     * page 3, not 32, and page1½.png page 1, not 11 (as NFKD would have them).
      */
     private static String plain(String name) {
-        return java.text.Normalizer.normalize(name, java.text.Normalizer.Form.NFKD).replaceAll("\\p{M}", "");
+        StringBuilder folded = new StringBuilder(name.length());
+        name.codePoints().forEach(c -> folded.appendCodePoint(c >= FULL_WIDTH_FIRST && c <= FULL_WIDTH_LAST
+                ? c - FULL_WIDTH_FIRST + '!' : c == IDEOGRAPHIC_SPACE ? ' ' : c));
+        return java.text.Normalizer.normalize(folded, java.text.Normalizer.Form.NFD).replaceAll("\\p{M}", "");
     }
 
     /**

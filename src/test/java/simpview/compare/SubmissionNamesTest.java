@@ -30,6 +30,9 @@ class SubmissionNamesTest {
         assertEquals(OptionalInt.of(2), SubmissionNames.pageNumber("Pagina_2.PNG"));
         // full-width, as a Japanese or Chinese keyboard types them: page８.png was skipped, "no page number"
         assertEquals(OptionalInt.of(8), SubmissionNames.pageNumber("page\uff18.png"));
+        // and nothing else folded: NFKD made a superscript or a fraction after the number more of its digits
+        assertEquals(OptionalInt.of(3), SubmissionNames.pageNumber("page3\u00b2.png"), "page3².png");
+        assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber("page1\u00bd.png"), "page1½.png");
         org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName("\uff30\uff41\uff47\uff45\u3000\uff13.png", 3),
                 "Ｐａｇｅ　３.png");
         org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isPageName("página3.png", 3));
