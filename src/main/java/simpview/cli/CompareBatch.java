@@ -530,6 +530,12 @@ public final class CompareBatch {
         for (Path picture : pictures) {
             matches.add(matcher.apply(dir.relativize(picture).toString()));
         }
+        Optional<String> theOneFolder = outputs.student() || matches.stream().anyMatch(Match::alone)
+                ? Optional.empty() : theOneFolder(dir, pictures);
+        theOneFolder.ifPresent(folder -> err.println(says + dir + " holds pictures at its top and in one folder, "
+                + folder + ": they are graded as one student's submission (were they two students', put each one's "
+                + "pictures in a folder of its own)"));
+        boolean oneStudent = outputs.student() || theOneFolder.isPresent();
         Map<CompareTarget, Picture> drawn = new HashMap<>();
         Map<CompareTarget, SceneException> undrawable = drawAll(pictures, matches, drawn);
         if (!undrawable.isEmpty()) {
@@ -581,12 +587,6 @@ public final class CompareBatch {
                 ? wanted.stream().filter(t -> !t.isPage()).toList()
                 : askedFor(wanted, matchedAsNamed, unreadMatches));
         // one scene for every picture: each picture is a student's, wherever it is (never one student's folder)
-        Optional<String> theOneFolder = outputs.student() || matches.stream().anyMatch(Match::alone)
-                ? Optional.empty() : theOneFolder(dir, pictures);
-        theOneFolder.ifPresent(folder -> err.println(says + dir + " holds pictures at its top and in one folder, "
-                + folder + ": they are graded as one student's submission (were they two students', put each one's "
-                + "pictures in a folder of its own)"));
-        boolean oneStudent = outputs.student() || theOneFolder.isPresent();
         Map<CompareTarget, Set<String>> handedInBy = new HashMap<>();
         for (int i = 0; i < pictures.size(); i++) {
             CompareTarget target = matches.get(i).target();

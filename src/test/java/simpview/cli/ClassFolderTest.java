@@ -162,6 +162,8 @@ class ClassFolderTest {
         assertTrue(run.err().contains("simpview compare: " + mine + " holds pictures at its top and in one folder, "
                 + "renders: they are graded as one student's submission (were they two students', put each one's "
                 + "pictures in a folder of its own)\n"), "the guess is said: " + run.err());
+        assertTrue(run.err().indexOf("holds pictures at its top") < run.err().indexOf("[1/2]"),
+                "before the pictures' progress, as a class's folder in a folder of its own is: " + run.err());
         String junit = Files.readString(xml);
         assertTrue(junit.contains("<testsuite name=\"submission\" id=\"0\" tests=\"2\" failures=\"0\""), junit);
         assertFalse(junit.contains("name=\"renders\""), junit);
