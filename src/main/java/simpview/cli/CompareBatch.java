@@ -43,6 +43,7 @@ import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
 import simpview.compare.OnePerPage;
+import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.PanelHint;
@@ -54,7 +55,6 @@ import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
-import simpview.compare.WholePage;
 import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
@@ -171,6 +171,8 @@ public final class CompareBatch {
     }
 
     private final OwnPictures own;
+    /** The pages a failing picture may be of instead, drawn once, if ever. */
+    private final OtherPages others;
     private final Rubric rubric;
     private final boolean partial;
     private final PrintWriter out;
@@ -208,6 +210,7 @@ public final class CompareBatch {
             boolean pagesIfHandedIn) {
         this.says = "simpview " + command + ": ";
         this.own = own;
+        this.others = new OtherPages(own);
         this.rubric = rubric;
         this.partial = partial;
         this.out = out;
@@ -930,7 +933,7 @@ public final class CompareBatch {
         Map<Integer, BufferedImage> drawn = new java.util.concurrent.ConcurrentHashMap<>();
         for (Match match : matches) {
             if (match.firstAssignmentPage() > 0) {
-                drawn.computeIfAbsent(match.firstAssignmentPage(), p -> Assignment1.render(p, own.context()));
+                drawn.computeIfAbsent(match.firstAssignmentPage(), others::firstAssignmentPage);
             }
         }
         return drawn;
@@ -1020,7 +1023,7 @@ public final class CompareBatch {
                         + "assignment (four framed 300x300 panels), not page " + page + " of the eight pages that "
                         + "--pages names (" + FIRST_ASSIGNMENT_GRADED + ")", ruleOf(target)));
             }
-            BufferedImage first = firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, own.context()));
+            BufferedImage first = firstAssignment.computeIfAbsent(page, others::firstAssignmentPage);
             return compareFirstAssignment(relative, page, first, diffs,
                     mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
         }
@@ -1045,7 +1048,7 @@ public final class CompareBatch {
         for (int k = 0; k < rows.size(); k++) {
             PanelHint hint = rows.get(k).panelHint();
             if (hint != null && hint != said) { // a page turned whole is one hint for its panels
-                looks.append(hint instanceof WholePage ? "; looks " : "; panel " + (k + 1) + " looks ")
+                looks.append(hint.wholePage() ? "; looks " : "; panel " + (k + 1) + " looks ")
                         .append(hint.brief());
                 said = hint;
             }
@@ -1099,17 +1102,25 @@ public final class CompareBatch {
         }
         double empty = partial && !best.passes() ? emptyShare(label, rule, ours.panel(), Comparison.N) : Double.NaN;
         double score = rule.score(best.comparison(), partial, empty);
+        // a failing picture no mistake explains may be another page, its file named for the wrong one
+        OtherPage other = best.passes() || best.systematic() != null || !target.isPage() ? null
+                : others.ofEight(target.page(), theirs.panel(), rule);
         if (!diffs.writes(best.passes())) {
-            return BatchRow.compared(relative, label, best, "", rule, score, bestName, empty);
+            return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty), other);
         }
         String diff = diffs.names().of(relative, 0);
         try {
             PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), diffs.outDir().resolve(diff));
         } catch (IOException e) {
-            return BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
-                    .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage());
+            return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
+                    .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage()), other);
         }
-        return BatchRow.compared(relative, label, best, diff, rule, score, bestName, empty);
+        return hinted(BatchRow.compared(relative, label, best, diff, rule, score, bestName, empty), other);
+    }
+
+    /** The row with the other page it is of as its hint, when it is one. */
+    private static BatchRow hinted(BatchRow row, OtherPage other) {
+        return other == null ? row : row.withHint(other);
     }
 
     /**
@@ -1209,6 +1220,14 @@ public final class CompareBatch {
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
                         DIFF_NOT_WRITTEN + e.getMessage(), hint, empty).decodedAs(cut.format()));
+            }
+        }
+        if (rows.stream().anyMatch(r -> r.result() == BatchRow.Result.FAIL)) {
+            RubricRule[] rules = IntStream.rangeClosed(1, A1Layout.PANELS).mapToObj(k -> firstAssignmentRule(page, k))
+                    .toArray(RubricRule[]::new);
+            OtherPage other = others.ofFirstAssignment(page, cut.theirs(), rules);
+            if (other != null) { // the page is another of the five: that says more than each panel's own hint
+                rows.replaceAll(row -> row.withHint(other));
             }
         }
         return rows;

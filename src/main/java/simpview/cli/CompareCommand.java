@@ -25,6 +25,7 @@ import simpview.compare.DiffRegion;
 import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
+import simpview.compare.OtherPage;
 import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
@@ -199,7 +200,9 @@ public final class CompareCommand implements Callable<Integer> {
                 }
                 return pages != null ? batch.pages(graded, pages, outputs) : batch.scenes(graded, scene, outputs);
             }
-            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene));
+            // the other pages a failing picture may be of, drawn only if it fails, their scenes' warnings unsaid
+            OtherPages others = new OtherPages(pictures.ownPictures(parent.ownScenes(), SceneMonitor.NONE, drawing));
+            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene), others);
         }
     }
 
@@ -263,6 +266,11 @@ public final class CompareCommand implements Callable<Integer> {
         return assignment != null && assignment == 1;
     }
 
+    /** The command line's verdict as a rule: its tolerance, minimum share, slack and metric. */
+    private RubricRule verdictRule() {
+        return RubricRule.defaults(tolerance, min, deviation, metric, flipThreshold());
+    }
+
     private double flipThreshold() {
         return flipThreshold == null ? Comparison.FLIP_THRESHOLD : flipThreshold;
     }
@@ -273,7 +281,7 @@ public final class CompareCommand implements Callable<Integer> {
         }
     }
 
-    private int compareOne(OwnPictures own, CompareTarget target) {
+    private int compareOne(OwnPictures own, CompareTarget target, OtherPages others) {
         Picture theirs;
         Picture ours;
         try {
@@ -303,8 +311,14 @@ public final class CompareCommand implements Callable<Integer> {
         Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
         ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min,
                 awaitHint(hint));
+        // a picture that fails and no mistake explains may be another page, its file named for the wrong one
+        OtherPage other = report.passes() || report.systematic() != null || !target.isPage() ? null
+                : others.ofEight(target.page(), theirs.panel(), verdictRule());
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
+        if (other != null) {
+            out.println("hint: " + other.hint(Comparison.N));
+        }
         sayFormat(out, report.passes(), theirs.format());
         if (diff != null) {
             try {
@@ -425,7 +439,11 @@ public final class CompareCommand implements Callable<Integer> {
         }
         PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, tolerance,
                 shown.panelNames());
-        if (hints[0] instanceof WholePage whole) {
+        // a page that fails as a whole and passes as another of the five: that one hint, of the page
+        OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, firstAssignmentRules(panels.length));
+        if (other != null) {
+            out.println("hint: " + other.hint(A1Layout.PANEL));
+        } else if (hints[0] instanceof WholePage whole) {
             out.println("hint: " + whole.hint(A1Layout.PANEL));
         } else {
             for (int k = 1; k <= panels.length; k++) {
@@ -446,6 +464,13 @@ public final class CompareCommand implements Callable<Integer> {
                     + (flip ? "yellow beyond it but forgiven by FLIP, red above FLIP's threshold)" : "red beyond it)"));
         }
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /** The rule each of the first assignment's panels is judged by here: the command line's, without slack. */
+    private RubricRule[] firstAssignmentRules(int count) {
+        RubricRule[] rules = new RubricRule[count];
+        java.util.Arrays.fill(rules, RubricRule.defaults(tolerance, min, 0, metric, flipThreshold()));
+        return rules;
     }
 
     /** Panel k's (from 0) drawer ("Bresenham") on a page of lines, its scene ("mesh") on a page of polygons. */

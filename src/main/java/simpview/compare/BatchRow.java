@@ -98,6 +98,12 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 regions, alternate, size, notCounted, panelHint, emptyShare, format);
     }
 
+    /** The same row with {@code hint} what its panel looks like ({@link OtherPage}: another page, found after it failed). */
+    public BatchRow withHint(PanelHint hint) {
+        return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, rule, score, failing,
+                regions, alternate, size, notCounted, hint, emptyShare, format);
+    }
+
     /** The same row of a picture whose bytes were decoded as {@code decoded} (a first-assignment panel's page). */
     public BatchRow decodedAs(PictureFormat decoded) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, rule, score, failing,

@@ -122,6 +122,16 @@ public final class PanelGridComparison {
         return new Cut(at[0], at[1], a, b, width, height, page, format);
     }
 
+    /** simpview's page cut into its panels, as {@link Cut#ours} holds them: another page to lay a picture's panels on. */
+    public static int[][] panels(BufferedImage page, Panel[] panels) {
+        int[] rgb = Rasters.rgb(page);
+        int[][] cut = new int[panels.length][];
+        for (int k = 0; k < panels.length; k++) {
+            cut[k] = cut(rgb, page.getWidth(), panels[k].left(), panels[k].top(), panels[k].size());
+        }
+        return cut;
+    }
+
     /** The size x size pixels of {@code rgb} (rows of {@code width}) from (left, top), as one array. */
     private static int[] cut(int[] rgb, int width, int left, int top, int size) {
         int[] out = new int[size * size];

@@ -8,15 +8,24 @@ import java.util.List;
  * simpview's panel moved, turned or with its channels swapped
  * ({@link SystematicError}), or on a page of several panels, another of
  * simpview's panels ({@link SwappedPanel}), or a part of simpview's whole
- * page turned ({@link WholePage}).
+ * page turned ({@link WholePage}); or, when the picture fails, another of the assignment's pages
+ * ({@link OtherPage}: the file named for the wrong page).
  */
-public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage {
+public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage, OtherPage {
 
     /** Briefly, to follow "looks": "upside down", "like simpview's panel 4 (antialiased)". */
     String brief();
 
     /** The whole hint for a panel of n x n pixels: what it looks like, how well that explains it, where to look. */
     String hint(int n);
+
+    /**
+     * Whether it is said of the page as a whole, not of one panel: of a page of several panels, every panel's
+     * row has the same hint, said once, of the page.
+     */
+    default boolean wholePage() {
+        return false;
+    }
 
     /** The share of the pixels it matches that are within the tolerance, the mistake undone. */
     double shareThere();

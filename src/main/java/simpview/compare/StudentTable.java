@@ -63,7 +63,7 @@ public final class StudentTable {
         for (BatchRow row : rows) {
             PanelHint hint = row.panelHint();
             if (hint != null && hint != said) { // a page turned whole: one hint for its four panels
-                String which = hint instanceof WholePage ? row.page() : row.target();
+                String which = hint.wholePage() ? row.page() : row.target();
                 out.append("hint: ").append(row.file()).append(" (").append(GradescopeResults.name(which)).append("): ")
                         .append(hint.hint(row.size())).append('\n');
                 said = hint;

@@ -45,6 +45,11 @@ public record WholePage(SystematicError error, int pageSide) implements PanelHin
     }
 
     @Override
+    public boolean wholePage() {
+        return true;
+    }
+
+    @Override
     public String brief() {
         return "like simpview's whole page " + error.brief();
     }

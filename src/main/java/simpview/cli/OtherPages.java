@@ -1,0 +1,88 @@
+package simpview.cli;
+
+import java.awt.image.BufferedImage;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import simpview.compare.OtherPage;
+import simpview.compare.PanelGridComparison;
+import simpview.compare.RubricRule;
+import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
+import simpview.pages.PageContext;
+import simpview.scene.SceneException;
+
+/**
+ * simpview's pages of an assignment as the pages a failing picture may be of instead of the one its file is named
+ * for ({@link OtherPage}). Each is drawn at most once, and only when some picture fails: those a batch drew for its
+ * pictures already are taken as drawn. A page that cannot be drawn (the course's page6.simp absent) is no candidate.
+ * Thread-safe: a batch's pictures are compared on several threads, and the eight pages are drawn on one canvas.
+ */
+final class OtherPages {
+
+    /** Draws the eight pages; null for the first assignment's alone. */
+    private final OwnPictures own;
+    private final PageContext context;
+    /** The eight pages' panels by page, drawn; a page that cannot be drawn maps to null. */
+    private final Map<Integer, int[][]> pages = new HashMap<>();
+    /** The first assignment's pages, drawn (they read no files). */
+    private final Map<Integer, BufferedImage> firstAssignment = new ConcurrentHashMap<>();
+
+    /** The pages {@code own} draws (its seed, its scene folder, its rule of the first assignment). */
+    OtherPages(OwnPictures own) {
+        this.own = own;
+        this.context = own.context();
+    }
+
+    /** The first assignment's pages alone, drawn in {@code context} (its seed, its rule). */
+    private OtherPages(PageContext context) {
+        this.own = null;
+        this.context = context;
+    }
+
+    /** The first assignment's pages alone, as {@code compare --assignment 1} of one picture draws them. */
+    static OtherPages firstAssignment(PageContext context) {
+        return new OtherPages(context);
+    }
+
+    /**
+     * The other of the eight pages a picture whose panel is {@code theirs}, failing page {@code named} by
+     * {@code rule}, passes as by that rule; null when none does (or several).
+     */
+    OtherPage ofEight(int named, int[] theirs, RubricRule rule) {
+        return OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, simpview.compare.Comparison.N,
+                new RubricRule[] {rule}, this::eightPage, k -> "page " + CompareTarget.page(k).label(context));
+    }
+
+    /**
+     * The other of the first assignment's pages a picture whose panels are {@code theirs}, failing page
+     * {@code named} by its panels' {@code rules}, passes as, every panel by its rule; null when none does (or several).
+     */
+    OtherPage ofFirstAssignment(int named, int[][] theirs, RubricRule[] rules) {
+        PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
+        return OtherPage.find(named, Assignment1.COUNT, theirs, panels[0].size(), rules,
+                k -> PanelGridComparison.panels(firstAssignmentPage(k), panels),
+                k -> "A1 page " + k + (Assignment1.page(k).usesSeed() ? " (seed " + context.seed() + ")" : ""));
+    }
+
+    /** The first assignment's page, drawn once. */
+    BufferedImage firstAssignmentPage(int page) {
+        return firstAssignment.computeIfAbsent(page, p -> Assignment1.render(p, context));
+    }
+
+    /** Page k's panel, drawn once (or taken as the batch drew it), as one panel of a page; null when it cannot be. */
+    private int[][] eightPage(int k) {
+        synchronized (pages) {
+            if (!pages.containsKey(k)) {
+                int[][] panel;
+                try {
+                    panel = new int[][] {own.of(CompareTarget.page(k)).panel()};
+                } catch (SceneException e) {
+                    panel = null; // the course's files absent: not a page it can be told to be
+                }
+                pages.put(k, panel);
+            }
+            return pages.get(k);
+        }
+    }
+}
