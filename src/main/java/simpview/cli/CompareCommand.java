@@ -201,7 +201,8 @@ public final class CompareCommand implements Callable<Integer> {
                 return pages != null ? batch.pages(graded, pages, outputs) : batch.scenes(graded, scene, outputs);
             }
             // the other pages a failing picture may be of, drawn only if it fails, their scenes' warnings unsaid
-            OtherPages others = new OtherPages(pictures.ownPictures(parent.ownScenes(), SceneMonitor.NONE, drawing));
+            OtherPages others = new OtherPages(
+                    () -> pictures.ownPictures(parent.ownScenes(), SceneMonitor.NONE, drawing), own.context());
             return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene), others);
         }
     }

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Supplier;
 import simpview.compare.OtherPage;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.RubricRule;
@@ -20,8 +21,10 @@ import simpview.scene.SceneException;
  */
 final class OtherPages {
 
-    /** Draws the eight pages; null for the first assignment's alone. */
-    private final OwnPictures own;
+    /** Who draws the eight pages, asked the first time one is needed; null for the first assignment's alone. */
+    private final Supplier<OwnPictures> drawer;
+    /** What {@link #drawer} gave, once asked (under the lock of {@link #pages}). */
+    private OwnPictures own;
     private final PageContext context;
     /** The eight pages' panels by page, drawn; a page that cannot be drawn maps to null. */
     private final Map<Integer, int[][]> pages = new HashMap<>();
@@ -30,19 +33,21 @@ final class OtherPages {
 
     /** The pages {@code own} draws (its seed, its scene folder, its rule of the first assignment). */
     OtherPages(OwnPictures own) {
-        this.own = own;
-        this.context = own.context();
+        this(() -> own, own.context());
     }
 
-    /** The first assignment's pages alone, drawn in {@code context} (its seed, its rule). */
-    private OtherPages(PageContext context) {
-        this.own = null;
+    /**
+     * The eight pages as {@code drawer} draws them, made only when one is needed (a picture that passes costs
+     * nothing); the first assignment's in {@code context} (its seed, its rule), which should be the drawer's.
+     */
+    OtherPages(Supplier<OwnPictures> drawer, PageContext context) {
+        this.drawer = drawer;
         this.context = context;
     }
 
     /** The first assignment's pages alone, as {@code compare --assignment 1} of one picture draws them. */
     static OtherPages firstAssignment(PageContext context) {
-        return new OtherPages(context);
+        return new OtherPages(null, context);
     }
 
     /**
@@ -75,6 +80,9 @@ final class OtherPages {
         synchronized (pages) {
             if (!pages.containsKey(k)) {
                 int[][] panel;
+                if (own == null) {
+                    own = drawer.get();
+                }
                 try {
                     panel = new int[][] {own.of(CompareTarget.page(k)).panel()};
                 } catch (SceneException e) {
