@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
+import simpview.compare.Comparison;
 import simpview.compare.OtherPage;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.RubricRule;
@@ -55,7 +56,7 @@ final class OtherPages {
      * {@code rule}, passes as by that rule; null when none does (or several).
      */
     OtherPage ofEight(int named, int[] theirs, RubricRule rule) {
-        return OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, simpview.compare.Comparison.N,
+        return OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, Comparison.N,
                 new RubricRule[] {rule}, this::eightPage, k -> "page " + CompareTarget.page(k).label(context));
     }
 

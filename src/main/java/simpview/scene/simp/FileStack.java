@@ -453,8 +453,8 @@ final class FileStack implements AutoCloseable {
      * Where the command being carried out stands, with every {@code file}
      * command that led to it: the top file's line first, the innermost last.
      */
-    java.util.List<SourcePlace> chain() {
-        java.util.List<SourcePlace> chain = new ArrayList<>(readers.size());
+    List<SourcePlace> chain() {
+        List<SourcePlace> chain = new ArrayList<>(readers.size());
         for (SimpReader r : readers) {
             chain.add(new SourcePlace(r.file(), r.lineNumber()));
         }

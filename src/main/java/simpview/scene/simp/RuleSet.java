@@ -1,5 +1,6 @@
 package simpview.scene.simp;
 
+import java.util.List;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
 
@@ -45,8 +46,8 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     }
 
     /** What the models these rules read warned of, in reading order, each once ("de.obj:1:3: ..."). */
-    default java.util.List<String> modelWarnings() {
-        return java.util.List.of();
+    default List<String> modelWarnings() {
+        return List.of();
     }
 
     /**

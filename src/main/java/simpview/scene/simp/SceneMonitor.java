@@ -1,5 +1,7 @@
 package simpview.scene.simp;
 
+import java.nio.file.Path;
+import java.util.List;
 import simpview.geometry.Matrix4;
 import simpview.scene.FileStamp;
 import simpview.stage.PrimitiveTrace;
@@ -35,14 +37,14 @@ public interface SceneMonitor {
      * for, in the order met (what a window watches for a save; see
      * {@link ScenePipeline.Drawn#files}).
      */
-    default void reached(java.util.List<java.nio.file.Path> files) {
+    default void reached(List<Path> files) {
     }
 
     /**
      * Told just before {@link #reached}: the files' stamps, in the same order,
      * as they were before the scene read them (see {@link FileStack}).
      */
-    default void stampsAsRead(java.util.List<FileStamp> stamps) {
+    default void stampsAsRead(List<FileStamp> stamps) {
     }
 
     /** Something worth telling that is not an error, e.g. a '{' never closed. */
