@@ -15,7 +15,7 @@ import simpview.surface.Drawable;
  * A line drawn pixel by pixel along a {@link LineWalk}, each pixel written
  * whole (coverage 1): r, g, b and z are lerped per step from the walk's start
  * endpoint to its end, so each end pixel gets exactly its endpoint's colour
- * and depth. The walks differ, the writing is this one.
+ * and depth, and a value both ends share is every pixel's. The walks differ, the writing is this one.
  *
  * <p>One instance reuses its scratch state and is not for use by two threads at once.
  */
@@ -58,9 +58,22 @@ public abstract sealed class WalkingLineRenderer implements LineRenderer
         while (walk.next()) {
             double t = walk.t();
             double s = 1 - t;
-            double z = s * az + t * bz;
-            int argb = shaded ? Colors.pack(s * ar + t * br, s * ag + t * bg, s * ab + t * bb) : Colors.BLACK;
+            double z = lerp(az, bz, s, t);
+            int argb = shaded
+                    ? Colors.pack(lerp(ar, br, s, t), lerp(ag, bg, s, t), lerp(ab, bb, s, t))
+                    : Colors.BLACK;
             drawable.setPixel(walk.x(), walk.y(), z, argb);
         }
+    }
+
+    /**
+     * {@code s * a + t * b} (s = 1 - t), which gives each end exactly; but a
+     * value the two ends share is kept as it is. The sum would miss it by a
+     * last bit at some steps (-100 at both ends gave -100.00000000000001), and a
+     * line at one depth, or of one colour, came out in two shades where the
+     * depth cue or a channel falls on a rounding tie (127.5 at z = -100).
+     */
+    static double lerp(double a, double b, double s, double t) {
+        return a == b ? a : s * a + t * b;
     }
 }

@@ -33,6 +33,25 @@ class DdaLineRendererTest {
         assertEquals(101, d.writes());
     }
 
+    /**
+     * A line at one depth, z = -100 at both ends, is -100 at every pixel, as a
+     * filled triangle at that depth is: the depth cue then gives 0.5, and
+     * round(127.5) = 128 all along. The lerp {@code (1 - t) * a + t * b}
+     * gave -100.00000000000001 at some steps, so the line came out 127 and
+     * 128 by turns. The same for a channel both ends share.
+     */
+    @Test
+    void aValueBothEndsShareIsEveryPixelsValue() {
+        RecordingDrawable d = new RecordingDrawable(650, 650);
+        dda.drawLine(new Vertex(0, 0.5, -100, 0.5, 0.2, 0.5), new Vertex(649, 0.5, -100, 0.5, 0.7, 0.5), d);
+        assertEquals(650, d.writes().size());
+        for (RecordingDrawable.Write w : d.writes()) {
+            assertEquals(-100.0, w.z(), "z at x = " + w.x());
+            assertEquals(128, (w.argb() >> 16) & 0xFF, "red at x = " + w.x());
+            assertEquals(128, w.argb() & 0xFF, "blue at x = " + w.x());
+        }
+    }
+
     /** Drawn from the end with the smaller x, the colour runs from that end's, whichever end is given first. */
     @Test
     void aLineGivenRightToLeftIsDrawnFromItsLeftEndWithTheSameColours() {
