@@ -50,9 +50,38 @@ final class CueExplainer implements PixelWatch.Explainer {
         }
         if (levels != null) {
             terms.put("levels", levels);
+            if (near != null) {
+                noteATieTheLastBitsDecided(z, levels, drawnArgb, terms);
+            }
         }
         terms.put("final_rgb", drawnArgb >>> 16 & 0xFF, drawnArgb >>> 8 & 0xFF, drawnArgb & 0xFF);
         return drawnArgb;
+    }
+
+    /**
+     * A filled span carries its levels from its first pixel by a slope, so
+     * at a pixel whose {@code cued * 255} lies exactly on a half (z = -100
+     * from white to black: 127.5) the level may come out a last bit below
+     * (127.49999999999999) and round down. The lines above then seem to
+     * contradict the byte written; say why, once, for the first such channel.
+     */
+    private void noteATieTheLastBitsDecided(double z, double[] levels, int drawnArgb, Terms terms) {
+        double t = (z - view.yon()) / (view.hither() - view.yon());
+        double[] nears = {near.r(), near.g(), near.b()};
+        double[] fars = {far.r(), far.g(), far.b()};
+        for (int c = 0; c < 3; c++) {
+            double exact = 255 * (fars[c] + (nears[c] - fars[c]) * t);
+            int rounded = (int) Math.max(0, Math.min(255, Math.floor(exact + 0.5)));
+            int written = drawnArgb >>> (16 - 8 * c) & 0xFF;
+            if (rounded != written && Math.abs(levels[c] - exact) < 1e-9) {
+                terms.put("note", "cued * 255 = " + exact + " would round to " + rounded + ", but the level"
+                        + " written is " + levels[c] + ": the depth cue's straight line carried along the span"
+                        + " from its first pixel, the same value but for the last bits of a double, and here"
+                        + " they fall either side of a rounding tie (a renderer of doubles may draw "
+                        + rounded + " or " + written + ")");
+                return;
+            }
+        }
     }
 
     /** A surface of one pixel that keeps the last colour written to it. */

@@ -63,6 +63,25 @@ class InspectCommandTest {
         assertEquals(rgb, second.get("rgb"));
     }
 
+    /**
+     * A triangle turned about Y, its middle column at z = -100 exactly: cued
+     * 0.5, which is 127.5 and rounds to 128, but the span's level came out
+     * 127.49999999999999 and the pixel 127. The explanation used to show
+     * t 0.5 and cued 0.5 beside a final 127 with no word why; it now says.
+     */
+    @Test
+    void explainSaysWhyALevelOnATieRoundedTheOtherWay() throws Exception {
+        Path scene = write("turned.simp", "translate 50 -50 -100\nrotate Y 45\n"
+                + "polygon (-30, -30, 0) (30, -30, 0) (0, 30, 0)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "487,251", "--explain");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.out().contains("final_rgb: (127, 127, 127)"), run.out());
+        assertTrue(run.out().contains("note: cued * 255 = 127.5 would round to 128, but the level written is"
+                + " 127.49999999999999"), run.out());
+        CliRun plain = CliRun.of("inspect", "--scene", scene.toString(), "--at", "487,200", "--explain");
+        assertFalse(plain.out().contains("note:"), plain.out());
+    }
+
     @Test
     @SuppressWarnings("unchecked")
     void jsonOfALitScene() throws Exception {
