@@ -13,6 +13,7 @@ import simpview.scene.text.DecimalCommas;
 import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 import simpview.scene.text.NotText;
+import simpview.scene.text.StuckUnit;
 import simpview.scene.text.TrailingComment;
 
 /**
@@ -376,19 +377,27 @@ public final class SimpReader implements AutoCloseable {
     private String endExpected(int i) {
         String found = text(i, Math.min(end, i + 30));
         return "expected the end of the line, found '" + found + "'" + TrailingComment.hint(b[i])
-                + CopiedText.invisibleHint(found);
+                + CopiedText.invisibleHint(found) + StuckUnit.alone(found);
     }
 
     /** A number ending at a blank, comma, parenthesis or the end of the line. */
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
         if (after < 0 || !endsNumber(after)) {
-            throw error(i, "expected a number, found " + found(i));
+            throw error(i, "expected a number, found " + found(i) + (after < 0 ? "" : stuckUnit(i, after)));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");
         }
         return after;
+    }
+
+    /** For a number at i read up to {@code after}, where more stands stuck to it: a unit or a ';'. */
+    private String stuckUnit(int i, int after) {
+        String whole = token(i);
+        String number = text(i, after);
+        return whole.length() > number.length() && whole.startsWith(number)
+                ? StuckUnit.afterNumber(number, whole.substring(number.length())) : "";
     }
 
     /** A number ends at a blank, comma, parenthesis or the end of the line. */

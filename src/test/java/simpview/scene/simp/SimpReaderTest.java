@@ -439,6 +439,22 @@ class SimpReaderTest {
                 + " triangle: draw a shape of more points as several triangles, or as faces of an .obj model)");
     }
 
+    /** A unit on a number, as a student writes it: which number was meant, and that numbers take none. */
+    @Test
+    void aUnitStuckToANumberIsNamedAndTheNumberGiven() {
+        String noUnit = "a number takes no unit (an angle is in degrees, a length in world units)";
+        assertError("rotate Z 45deg", 1, 10, "expected a number, found '45deg', the number 45 with 'deg' stuck to it: "
+                + noUnit + ": write 45");
+        assertError("translate 10px 0 0", 1, 11, "expected a number, found '10px', the number 10 with 'px' stuck to"
+                + " it: " + noUnit + ": write 10");
+        assertError("rotate X 1.5rad", 1, 10, "expected a number, found '1.5rad', the number 1.5 with 'rad' stuck"
+                + " to it: " + noUnit + ": 1.5 radians is " + Math.toDegrees(1.5) + " degrees");
+        assertError("rotate Y 30 degrees", 1, 13, "expected the end of the line, found 'degrees' (" + noUnit
+                + ": leave 'degrees' out)");
+        assertError("polygon (0;0;-1) (1;0;-1) (0;1;-1)", 1, 10, "expected a number, found '0;0;-1': ';' separates"
+                + " nothing here; blanks, commas and parentheses separate numbers");
+    }
+
     @Test
     void numberWithTwoPoints() {
         assertError("\ttranslate 1 2.3.4 3", 1, 14, "expected a number, found '2.3.4'");
