@@ -123,6 +123,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (blob != null) {
             out.append("note: ").append(solidPatchNote(blob)).append('\n');
         }
+        String bias = systematic == null ? LevelBias.note(comparison.ours(), comparison.theirs()) : null;
+        if (bias != null) {
+            out.append("note: ").append(bias).append('\n');
+        }
         if (systematic != null) {
             out.append("hint: ").append(systematic.hint(comparison.size())).append('\n');
         }

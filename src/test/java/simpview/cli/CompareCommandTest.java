@@ -90,6 +90,41 @@ public class CompareCommandTest {
         assertTrue(run.out().contains("within 8/255 with slack (99.00 % needed)"), run.out());
     }
 
+    /**
+     * Colours truncated to a byte where SPEC rounds: every other pixel of
+     * page 2 a level darker in each channel above 0. It passes within 1/255,
+     * and is told why it is not identical; a panel off both ways is not.
+     */
+    @Test
+    void coloursALevelDarkerAllTheSameWayAreToldOfTruncation() throws Exception {
+        BufferedImage page = page(2);
+        BufferedImage darker = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        darker.setData(page.getRaster());
+        BufferedImage both = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        both.setData(page.getRaster());
+        for (int y = 50; y < 700; y++) {
+            for (int x = 50; x < 700; x++) {
+                if ((x + y) % 2 == 0) {
+                    int rgb = page.getRGB(x, y);
+                    int off = 0;
+                    for (int shift = 0; shift <= 16; shift += 8) {
+                        off |= ((rgb >> shift & 0xFF) > 0 ? 1 : 0) << shift;
+                    }
+                    darker.setRGB(x, y, rgb - off);
+                    both.setRGB(x, y, x % 4 == 0 ? rgb - off : rgb + (~rgb & 0x010101 & 0x010101));
+                }
+            }
+        }
+        CliRun run = CliRun.of("compare", png("truncated.png", darker).toString(), "--page", "2");
+        assertEquals(0, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nnote: every pixel that differs ("), run.out());
+        assertTrue(run.out().contains(" of the panel) is one level darker than simpview's, in each channel that"
+                + " differs, never brighter: a colour made a byte by truncation, (int) (c * 255), where SPEC rounds"), run.out());
+        CliRun mixed = CliRun.of("compare", png("mixed.png", both).toString(), "--page", "2");
+        assertFalse(mixed.out().contains("level darker"), mixed.out());
+        assertFalse(mixed.out().contains("level brighter"), mixed.out());
+    }
+
     /** A panel turned upside down fails, and is told why: the course's y runs up, an image's rows down. */
     @Test
     void anUpsideDownPanelIsToldSo() throws Exception {
