@@ -204,7 +204,7 @@ public final class CheckCommand implements Callable<Integer> {
             return e.getMessage() + "\n";
         }
         try (DrawingThreads drawing = DrawingThreads.one()) {
-            OwnPictures own = new OwnPictures(context, null, null, PageDrawing.warningsTo(errors), drawing);
+            OwnPictures own = new OwnPictures(context, null, null, false, PageDrawing.warningsTo(errors), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors,
                     true);
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,

@@ -101,6 +101,11 @@ final class InspectCommand implements Callable<Integer> {
             description = "--scene, depth-cued: colour at z = -200 (default 0,0,0)")
     private Rgb far;
 
+    @Option(names = {"--own-colors", "--own-colours"},
+            description = "--scene, depth-cued: the vertices' own colours (white where none) without the depth cue, "
+                    + "as render --own-colors draws them")
+    private boolean ownColours;
+
     @Override
     public Integer call() {
         usage(assignment == null || assignment == 1 || assignment == 2,
@@ -113,6 +118,9 @@ final class InspectCommand implements Callable<Integer> {
         usage(!a1Rule.given(), "--a1-rule goes with --assignment 1");
         usage(primitive == null || vertices || explain, "--primitive goes with --vertices or --explain");
         usage(what.scene != null || near == null && far == null, "--near-color and --far-color go with --scene only");
+        usage(what.scene != null || !ownColours, "--own-colors goes with --scene only");
+        usage(!ownColours || near == null && far == null,
+                "--own-colors draws without the depth cue: it does not go with --near-color or --far-color");
         usage(what.page != null || seed == null && simpDir == null, "--seed and --simp-dir go with --page only");
         boolean all = !history && !explain && !vertices;
         try {
@@ -125,7 +133,8 @@ final class InspectCommand implements Callable<Integer> {
                     throw new ParameterException(spec.commandLine(), e.getMessage());
                 }
             } else {
-                scene = near == null && far == null ? InspectedScene.of(what.scene)
+                scene = ownColours ? InspectedScene.cued(what.scene, Rgb.WHITE, Rgb.BLACK).withOwnColours(true)
+                        : near == null && far == null ? InspectedScene.of(what.scene)
                         : InspectedScene.cued(what.scene, near == null ? Rgb.WHITE : near, far == null ? Rgb.BLACK : far);
             }
             PixelInspector inspector = new PixelInspector(new SceneLibrary(),
@@ -134,7 +143,7 @@ final class InspectCommand implements Callable<Integer> {
             int wanted = primitive == null ? HistoryEntry.NO_NUMBER : primitive - 1;
             PixelReport report = inspector.inspect(scene, xy[0], xy[1], wanted);
             if (!report.drawn()) {
-                throw new UsageProblem(PageDrawing.cueColoursProblem(what.scene, report.litBecause(), false));
+                throw new UsageProblem(PageDrawing.cueColoursProblem(what.scene, report.litBecause(), ownColours));
             }
             if (primitive != null && report.vertices(wanted) == null && report.error() != null) {
                 // not a usage problem: the scene stops before the primitive asked for

@@ -21,18 +21,22 @@ public final class OwnPictures {
     private final PageContext context;
     private final Rgb near;
     private final Rgb far;
+    private final boolean ownColours;
     private final Map<CompareTarget, Picture> drawn = new HashMap<>();
 
     /**
      * Scenes are depth-cued from {@code near} to {@code far}; null means the
-     * defaults, white and black. Drawn with {@code threads}, which the caller
-     * owns and closes.
+     * defaults, white and black; with {@code ownColours}, drawn in their
+     * vertices' own colours instead. Drawn with {@code threads}, which the
+     * caller owns and closes.
      */
-    OwnPictures(PageContext context, Rgb near, Rgb far, SceneMonitor monitor, DrawingThreads threads) {
+    OwnPictures(PageContext context, Rgb near, Rgb far, boolean ownColours, SceneMonitor monitor,
+            DrawingThreads threads) {
         this.drawing = new PageDrawing(monitor, threads);
         this.context = context;
         this.near = near;
         this.far = far;
+        this.ownColours = ownColours;
     }
 
     Picture of(CompareTarget target) throws SceneException {
@@ -42,9 +46,10 @@ public final class OwnPictures {
             if (target.isPage()) {
                 canvas = drawing.page(target.page(), context);
             } else {
-                ScenePipeline.Drawn scene = drawing.scene(target.scene(), near, far, false);
+                ScenePipeline.Drawn scene = drawing.scene(target.scene(), near, far, ownColours);
                 if (!scene.drawn()) {
-                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene.litBecause(), false));
+                    throw new UsageProblem(PageDrawing.cueColoursProblem(target.scene(), scene.litBecause(),
+                            ownColours));
                 }
                 canvas = drawing.canvas();
             }

@@ -14,8 +14,8 @@ import simpview.surface.Rgb;
 /**
  * The options of the commands that compare pictures with simpview's own
  * ({@code compare}, {@code check}): the seed and the course's folder the
- * pages are drawn with (and the first assignment's rule), the depth cue a scene is drawn with, and which of
- * them go together.
+ * pages are drawn with (and the first assignment's rule), the depth cue a scene is drawn with (or its own
+ * colours), and which of them go together.
  */
 final class OwnPicturesOptions {
 
@@ -39,10 +39,22 @@ final class OwnPicturesOptions {
             description = "colour at z = -200 for --scene (default: 0,0,0)")
     private Rgb far;
 
+    @Option(names = {"--own-colors", "--own-colours"},
+            description = "--scene: draw the vertices' own colours (white where none) without the depth cue, as "
+                    + "render --own-colors does")
+    private boolean ownColours;
+
     /** Usage errors for options that do not go with what is compared: a scene, or the pages when {@code scene} is null. */
     void check(Path scene) {
         if (scene == null && (near != null || far != null)) {
             throw new ParameterException(spec.commandLine(), "--near-color and --far-color go with --scene only");
+        }
+        if (scene == null && ownColours) {
+            throw new ParameterException(spec.commandLine(), "--own-colors goes with --scene only");
+        }
+        if (ownColours && (near != null || far != null)) {
+            throw new ParameterException(spec.commandLine(), "--own-colors draws without the depth cue: it does not"
+                    + " go with --near-color or --far-color");
         }
         if (scene != null && (seed != null || simpDir != null)) {
             throw new ParameterException(spec.commandLine(), "--seed and --simp-dir go with the pages, not with --scene");
@@ -78,6 +90,6 @@ final class OwnPicturesOptions {
 
     /** simpview's pictures to compare with, drawn as these options ask, by {@code drawing}. */
     OwnPictures ownPictures(Path ownScenes, SceneMonitor monitor, DrawingThreads drawing) {
-        return new OwnPictures(context(ownScenes, monitor), near, far, monitor, drawing);
+        return new OwnPictures(context(ownScenes, monitor), near, far, ownColours, monitor, drawing);
     }
 }

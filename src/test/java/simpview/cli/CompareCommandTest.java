@@ -125,6 +125,33 @@ public class CompareCommandTest {
         assertFalse(mixed.out().contains("level brighter"), mixed.out());
     }
 
+    /**
+     * A scene of vertex colours drawn in them, as {@code render --own-colors}
+     * draws it: compared with --own-colors it is simpview's picture to the
+     * pixel; without, it is held against the depth-cued one, and fails.
+     * compare had no --own-colors, so such a picture could not be checked.
+     */
+    @Test
+    void aSceneInItsOwnColoursIsComparedInThem() throws Exception {
+        Path scene = dir.resolve("blerp.simp");
+        Files.writeString(scene, "polygon (-80, -80, -20, 1, 0, 0) (80, -80, -120, 0, 1, 0) (0, 80, -190, 0, 0, 1)\n");
+        Path mine = dir.resolve("mine.png");
+        CliRun render = CliRun.of("render", "--scene", scene.toString(), "--own-colors", "--out", mine.toString());
+        assertEquals(0, render.exitCode(), render.err());
+        CliRun own = CliRun.of("compare", mine.toString(), "--scene", scene.toString(), "--own-colors");
+        assertEquals(0, own.exitCode(), own.err());
+        assertTrue(own.out().contains("identical                 100.00 %"), own.out());
+        CliRun cued = CliRun.of("compare", mine.toString(), "--scene", scene.toString());
+        assertEquals(ExitCode.SCENE_ERROR, cued.exitCode(), cued.out());
+        CliRun both = CliRun.of("compare", mine.toString(), "--scene", scene.toString(), "--own-colors",
+                "--near-color", "0,1,0");
+        assertEquals(ExitCode.USAGE_ERROR, both.exitCode(), both.out());
+        assertTrue(both.err().contains("--own-colors draws without the depth cue"), both.err());
+        CliRun page = CliRun.of("compare", mine.toString(), "--page", "4", "--own-colors");
+        assertEquals(ExitCode.USAGE_ERROR, page.exitCode(), page.out());
+        assertTrue(page.err().contains("--own-colors goes with --scene only"), page.err());
+    }
+
     /** A panel turned upside down fails, and is told why: the course's y runs up, an image's rows down. */
     @Test
     void anUpsideDownPanelIsToldSo() throws Exception {

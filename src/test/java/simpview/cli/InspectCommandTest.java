@@ -82,6 +82,26 @@ class InspectCommandTest {
         assertFalse(plain.out().contains("note:"), plain.out());
     }
 
+    /**
+     * A pixel of a scene in its vertices' own colours, as render --own-colors
+     * draws it: the red corner's colour, not the depth cue's grey. inspect
+     * had no --own-colors, so it explained another picture than the one drawn.
+     */
+    @Test
+    void aPixelInTheVerticesOwnColours() throws Exception {
+        Path scene = write("red.simp", "polygon (-80, -80, -100, 1, 0, 0) (80, -80, -100, 1, 0, 0) (0, 80, -100, 1, 0, 0)\n");
+        CliRun own = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--own-colors", "--explain");
+        assertEquals(0, own.exitCode(), own.err());
+        assertTrue(own.out().contains("rgb (255, 0, 0)"), own.out());
+        assertTrue(own.out().contains("the vertices' own colours, interpolated (no depth cue)"), own.out());
+        CliRun cued = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300");
+        assertTrue(cued.out().contains("rgb (128, 128, 128)"), cued.out());
+        CliRun lit = CliRun.of("inspect", "--scene", write("lit.simp", "camera -1 -1 1 1 -1 -100\n").toString(),
+                "--at", "1,1", "--own-colors");
+        assertEquals(ExitCode.USAGE_ERROR, lit.exitCode(), lit.out());
+        assertTrue(lit.err().contains("--own-colors is for depth-cued scenes"), lit.err());
+    }
+
     @Test
     @SuppressWarnings("unchecked")
     void jsonOfALitScene() throws Exception {
