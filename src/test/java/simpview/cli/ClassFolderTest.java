@@ -3,15 +3,13 @@ package simpview.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
+import static simpview.testing.Images.writePng;
 
-import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /**
  * A class's folder as a teacher has it on disk: unzipped into a folder of its own, or with links in it. Each
@@ -22,15 +20,6 @@ class ClassFolderTest {
     @TempDir
     Path dir;
 
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
-
-    private static void png(Path file, BufferedImage image) throws Exception {
-        Files.createDirectories(file.getParent());
-        ImageIO.write(image, "png", file.toFile());
-    }
-
     /**
      * subs/class/ann and subs/class/bob: graded as subs, the whole class was one submission, ann's page 1
      * counted, bob's wrong one "not counted", and the run passed. It is graded as subs/class, and says so.
@@ -38,8 +27,8 @@ class ClassFolderTest {
     @Test
     void aClassUnzippedIntoAFolderOfItsOwnIsGradedStudentByStudent() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("class/ann/page1.png"), page(1));
-        png(subs.resolve("class/bob/page1.png"), page(2)); // wrong
+        writePng(subs.resolve("class/ann/page1.png"), page(1));
+        writePng(subs.resolve("class/bob/page1.png"), page(2)); // wrong
         Path xml = dir.resolve("results.xml");
         Path out = dir.resolve("out");
 
@@ -89,9 +78,9 @@ class ClassFolderTest {
     @Test
     void aPictureOfNoPageBesideTheStudentsFoldersAsksNothing() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("ann/page1.png"), page(1));
-        png(subs.resolve("bob/page1.png"), page(1));
-        png(subs.resolve("example.png"), page(1));
+        writePng(subs.resolve("ann/page1.png"), page(1));
+        writePng(subs.resolve("bob/page1.png"), page(1));
+        writePng(subs.resolve("example.png"), page(1));
         Path xml = dir.resolve("results.xml");
 
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
@@ -109,9 +98,9 @@ class ClassFolderTest {
     @Test
     void aStudentsFolderNestedInAnotherIsGradedAsGiven() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("A2/page1.png"), page(1));
-        png(subs.resolve("A2/old/page1.png"), page(2));
-        png(subs.resolve("A2/drafts/page1.png"), page(2));
+        writePng(subs.resolve("A2/page1.png"), page(1));
+        writePng(subs.resolve("A2/old/page1.png"), page(2));
+        writePng(subs.resolve("A2/drafts/page1.png"), page(2));
 
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
                 dir.resolve("out").toString());
@@ -129,8 +118,8 @@ class ClassFolderTest {
     @Test
     void aStudentsPagesFolderedByPartAreNoClass() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("output/part1/page1.png"), page(1));
-        png(mine.resolve("output/part2/page2.png"), page(2));
+        writePng(mine.resolve("output/part1/page1.png"), page(1));
+        writePng(mine.resolve("output/part2/page2.png"), page(2));
 
         CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
                 dir.resolve("out").toString());
@@ -149,8 +138,8 @@ class ClassFolderTest {
     @Test
     void aStudentsPicturesAtTheTopAndInOneFolderAreOneSubmission() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
-        png(mine.resolve("renders/page2.png"), page(2));
+        writePng(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("renders/page2.png"), page(2));
         Path xml = dir.resolve("results.xml");
         Path json = dir.resolve("results.json");
 
@@ -179,8 +168,8 @@ class ClassFolderTest {
     @Test
     void aWindowsFolderInAFilesNameIsThatFolder() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
-        png(mine.resolve("renders\\page2.png"), page(2));
+        writePng(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("renders\\page2.png"), page(2));
 
         CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1-2", "--out-dir",
                 dir.resolve("out").toString());
@@ -216,7 +205,7 @@ class ClassFolderTest {
     @Test
     void aLinkToNothingIsARowSayingSo() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("page1.png"), page(1));
         Path nowhere = dir.resolve("gone/page2.png");
         Files.createSymbolicLink(mine.resolve("page2.png"), nowhere);
 
@@ -237,8 +226,8 @@ class ClassFolderTest {
     @Test
     void aLinkedFolderIsLookedIntoAndALinkBackUpIsNoLoop() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
-        png(mine.resolve("build/renders/page2.png"), page(2));
+        writePng(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("build/renders/page2.png"), page(2));
         Files.createSymbolicLink(mine.resolve("renders"), Path.of("build/renders"));
         Files.createSymbolicLink(mine.resolve("renders-again"), mine);
 
@@ -258,9 +247,9 @@ class ClassFolderTest {
     @Test
     void aLinkOutOfTheFolderGradedIsNotFollowed() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("ann/page1.png"), page(1));
-        png(subs.resolve("bob/page1.png"), page(1));
-        png(dir.resolve("elsewhere/page2.png"), page(2));
+        writePng(subs.resolve("ann/page1.png"), page(1));
+        writePng(subs.resolve("bob/page1.png"), page(1));
+        writePng(dir.resolve("elsewhere/page2.png"), page(2));
         Path secret = Files.writeString(dir.resolve("answers.txt"), "the teacher's answer key\n");
         Files.createSymbolicLink(subs.resolve("bob/stuff"), dir.resolve("elsewhere"));
         Files.createSymbolicLink(subs.resolve("ann/page2.png"), secret);

@@ -3,6 +3,7 @@ package simpview.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -12,18 +13,12 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /** {@code simpview compare --dir ...}: one row per picture, good, bad or broken, in Markdown and CSV. */
 public class CompareBatchTest {
 
     @TempDir
     Path dir;
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
 
     private Path png(Path file, BufferedImage image) throws Exception {
         Files.createDirectories(file.getParent());

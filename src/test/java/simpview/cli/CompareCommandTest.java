@@ -3,6 +3,7 @@ package simpview.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
@@ -17,17 +18,12 @@ import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Picture;
 import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /** {@code simpview compare IMAGE ...}: the report, the diff image and the exit codes. */
 public class CompareCommandTest {
 
     @TempDir
     Path dir;
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
 
     private Path png(String name, BufferedImage image) throws Exception {
         Path file = dir.resolve(name);

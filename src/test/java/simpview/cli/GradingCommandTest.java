@@ -3,6 +3,7 @@ package simpview.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
@@ -15,17 +16,12 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /** Grading from the command line: a rubric with alternates, the three result files, and {@code simpview check}. */
 class GradingCommandTest {
 
     @TempDir
     Path dir;
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
 
     /** The page with a 100x100 block of its panel painted cyan: about 2.4 % of the panel wrong. */
     private static BufferedImage spoiled(int number) throws Exception {

@@ -3,11 +3,12 @@ package simpview.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
+import static simpview.testing.Images.writePng;
 
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
-import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -16,7 +17,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /**
  * What a submission hands in, as {@code compare --dir} and {@code check} grade it: several pictures of one
@@ -28,24 +28,15 @@ class SubmissionContentsTest {
     @TempDir
     Path dir;
 
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
-
-    private static void png(Path file, BufferedImage image) throws Exception {
-        Files.createDirectories(file.getParent());
-        ImageIO.write(image, "png", file.toFile());
-    }
-
     @Test
     void severalPicturesOfAPageCountOnce() throws Exception {
         Path sub = dir.resolve("submission");
         for (int p = 1; p <= 3; p++) {
-            png(sub.resolve("page" + p + ".png"), page(p));
+            writePng(sub.resolve("page" + p + ".png"), page(p));
         }
-        png(sub.resolve("page3 copy.png"), page(3));
-        png(sub.resolve("old_page3.png"), page(3));
-        png(sub.resolve("page3_v2.png"), page(4)); // fails, but does not count
+        writePng(sub.resolve("page3 copy.png"), page(3));
+        writePng(sub.resolve("old_page3.png"), page(3));
+        writePng(sub.resolve("page3_v2.png"), page(4)); // fails, but does not count
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [{\"match\": \"3\", \"points\": 2}]}");
         Path results = dir.resolve("results.json");
@@ -82,9 +73,9 @@ class SubmissionContentsTest {
     @Test
     void aPngCountsOverAJpegOfTheSamePageNamedAsWell() throws Exception {
         Path sub = dir.resolve("a1");
-        png(sub.resolve("a1-page3.png"), Assignment1.render(3, PageContext.defaults()));
+        writePng(sub.resolve("a1-page3.png"), Assignment1.render(3, PageContext.defaults()));
         ImageIO.write(Assignment1.render(3, PageContext.defaults()), "jpg", sub.resolve("a1-page3.jpg").toFile());
-        png(sub.resolve("page2.png"), page(2));
+        writePng(sub.resolve("page2.png"), page(2));
         ImageIO.write(page(2), "jpg", sub.resolve("page2.jpg").toFile());
 
         CliRun check = CliRun.of("check", sub.toString(), "--assignment", "1", "--pages", "3");
@@ -102,7 +93,7 @@ class SubmissionContentsTest {
     @Test
     void aMissingPageNamesTheFileHandedInInAFormatSimpviewDoesNotRead() throws Exception {
         Path class_ = dir.resolve("class");
-        png(class_.resolve("st/page1.png"), page(1));
+        writePng(class_.resolve("st/page1.png"), page(1));
         Files.writeString(class_.resolve("st/page2.webp"), "RIFF....WEBP");
         Files.writeString(class_.resolve("st/.page2.webp"), "hidden: not named");
         Files.createDirectories(class_.resolve("carl"));
@@ -134,7 +125,7 @@ class SubmissionContentsTest {
     @Test
     void aPageAskedForWithoutAPictureFailsTheRun() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("page1.png"), page(1));
         CliRun check = CliRun.of("check", mine.toString());
         assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), "pages 2 to 8 are not handed in: " + check.out());
         assertTrue(check.out().endsWith("1 of 1 pictures pass; 7 pages without a picture\n"), check.out());
@@ -171,7 +162,7 @@ class SubmissionContentsTest {
         CliRun asked = CliRun.of("check", first.toString(), "--pages", "1-8");
         assertEquals(ExitCode.SCENE_ERROR, asked.exitCode(), "--pages asks for them whatever is handed in");
         assertTrue(asked.out().contains("no picture of page 8 found"), asked.out());
-        png(first.resolve("page3.png"), page(3));
+        writePng(first.resolve("page3.png"), page(3));
         CliRun mixed = CliRun.of("check", first.toString());
         assertEquals(ExitCode.SCENE_ERROR, mixed.exitCode(), "one of the eight handed in: all eight asked for");
         assertTrue(mixed.out().contains("no picture of page 1 (seed 361) found"), mixed.out());
@@ -180,8 +171,8 @@ class SubmissionContentsTest {
     @Test
     void aStudentWhoseFolderHoldsNoPictureLacksEveryPageAndIsToldWhy() throws Exception {
         Path class_ = dir.resolve("class");
-        png(class_.resolve("ann/page1.png"), page(1));
-        png(class_.resolve("bob/page1.png"), page(1));
+        writePng(class_.resolve("ann/page1.png"), page(1));
+        writePng(class_.resolve("bob/page1.png"), page(1));
         Files.createDirectories(class_.resolve("sybil"));
         Files.write(class_.resolve("sybil/sybil_A2.zip"), new byte[] {'P', 'K', 3, 4});
         Files.writeString(class_.resolve("sybil/.DS_Store"), "hidden: not hers");
@@ -216,7 +207,7 @@ class SubmissionContentsTest {
     @Test
     void aStudentsFolderWithPicturesAtItsTopHasNoOtherSubmissions() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("page1.png"), page(1));
         Files.createDirectories(mine.resolve("src"));
         Files.writeString(mine.resolve("src/Main.java"), "class Main {}");
         CliRun run = CliRun.of("compare", "--dir", mine.toString(), "--pages", "1", "--out-dir",
@@ -227,8 +218,8 @@ class SubmissionContentsTest {
     @Test
     void checkNamesEachFileItSkippedWithWhyAndTheNameItExpects() throws Exception {
         Path judy = dir.resolve("judy");
-        png(judy.resolve("p1.png"), page(1));
-        png(judy.resolve("notes.png"), page(2));
+        writePng(judy.resolve("p1.png"), page(1));
+        writePng(judy.resolve("notes.png"), page(2));
         CliRun check = CliRun.of("check", judy.toString());
         assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
         assertTrue(check.out().contains("\np1.png: not checked, no page number in the name: its number, 1, is not after "
@@ -241,8 +232,8 @@ class SubmissionContentsTest {
     @Test
     void paginaNamesAPage() throws Exception {
         Path zoe = dir.resolve("class/Zoë Ñúñez");
-        png(zoe.resolve("página1.png"), page(1));
-        png(zoe.resolve("página2.png"), page(2));
+        writePng(zoe.resolve("página1.png"), page(1));
+        writePng(zoe.resolve("página2.png"), page(2));
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("class").toString(), "--pages", "1-2", "--out-dir",
                 dir.resolve("out").toString());
         assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
@@ -252,9 +243,9 @@ class SubmissionContentsTest {
     @Test
     void inAClassFolderEachStudentsPagesCountOnce() throws Exception {
         Path class_ = dir.resolve("class");
-        png(class_.resolve("ann/page1.png"), page(1));
-        png(class_.resolve("bob/Page1 copy.png"), page(2));
-        png(class_.resolve("bob/page_1.png"), page(1));
+        writePng(class_.resolve("ann/page1.png"), page(1));
+        writePng(class_.resolve("bob/Page1 copy.png"), page(2));
+        writePng(class_.resolve("bob/page_1.png"), page(1));
         CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1", "--out-dir",
                 dir.resolve("out").toString());
         assertEquals(ExitCode.OK, run.exitCode(), "ann's page 1 is the only picture of hers: " + run.out());

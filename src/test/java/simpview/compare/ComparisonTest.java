@@ -2,22 +2,17 @@ package simpview.compare;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import java.awt.image.BufferedImage;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /** Comparing panels: the shares, the slack, the regions and the heat map. */
 class ComparisonTest {
 
     private static final int N = Comparison.N;
     private static final double EPS = 1e-12;
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
 
     /** The page with its panel content moved one pixel right; the column that comes in is black. */
     private static BufferedImage shiftedRight(BufferedImage page) {

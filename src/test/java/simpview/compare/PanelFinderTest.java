@@ -3,6 +3,7 @@ package simpview.compare;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
@@ -13,8 +14,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
-import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /** Finding the 650x650 panel in pages, window captures and pictures that have none. */
 class PanelFinderTest {
@@ -34,10 +33,6 @@ class PanelFinderTest {
             }
         }
         return capture;
-    }
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
     }
 
     @ParameterizedTest

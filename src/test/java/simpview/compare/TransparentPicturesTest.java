@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.IndexColorModel;
@@ -13,8 +14,6 @@ import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import simpview.pages.PageContext;
-import simpview.pages.PageRenderer;
 
 /**
  * A picture whose panel is not opaque is refused, whatever its format: a viewer shows what lies
@@ -25,10 +24,6 @@ class TransparentPicturesTest {
 
     @TempDir
     Path dir;
-
-    private static BufferedImage page(int number) throws Exception {
-        return new PageRenderer().renderImage(number, PageContext.defaults());
-    }
 
     /** The page in ARGB, each pixel's alpha {@code alpha.at(x, y)}. */
     private static BufferedImage withAlpha(BufferedImage page, Alpha alpha) {

@@ -1,11 +1,29 @@
 package simpview.testing;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.scene.SceneException;
 
-/** Pixel comparisons for the tests. */
+/** Pixel comparisons for the tests, and the pictures they hand simpview. */
 public final class Images {
 
     private Images() {
+    }
+
+    /** Page {@code number} of the eight as simpview draws it by default (seed 361, its own scene folder). */
+    public static BufferedImage page(int number) throws SceneException {
+        return new PageRenderer().renderImage(number, PageContext.defaults());
+    }
+
+    /** Writes {@code image} to {@code file} as a PNG, making its folders first. */
+    public static void writePng(Path file, BufferedImage image) throws IOException {
+        Files.createDirectories(file.getParent());
+        ImageIO.write(image, "png", file.toFile());
     }
 
     /** How many pixels differ in colour (alpha ignored); every pixel counts when the sizes differ. */
