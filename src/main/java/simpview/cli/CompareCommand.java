@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
@@ -470,7 +471,7 @@ public final class CompareCommand implements Callable<Integer> {
     /** The rule each of the first assignment's panels is judged by here: the command line's, without slack. */
     private RubricRule[] firstAssignmentRules(int count) {
         RubricRule[] rules = new RubricRule[count];
-        java.util.Arrays.fill(rules, RubricRule.defaults(tolerance, min, 0, metric, flipThreshold()));
+        Arrays.fill(rules, RubricRule.defaults(tolerance, min, 0, metric, flipThreshold()));
         return rules;
     }
 

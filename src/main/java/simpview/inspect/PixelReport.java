@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import java.util.List;
+import java.util.function.IntFunction;
 import simpview.geometry.Camera;
 import simpview.scene.SceneException;
 import simpview.scene.simp.ScenePipeline;
@@ -23,7 +24,7 @@ public final class PixelReport {
     private final List<HistoryEntry> history;
     private final SourceText text = new SourceText();
 
-    private final java.util.function.IntFunction<PrimitiveSource> sources;
+    private final IntFunction<PrimitiveSource> sources;
 
     private final ScenePipeline.Drawn drawn;
     private final SceneException error;
@@ -36,7 +37,7 @@ public final class PixelReport {
      */
     PixelReport(InspectedScene scene, ScenePipeline.Drawn drawn, SceneException error, int x,
             int y, int argb, double depth, List<HistoryEntry> history,
-            java.util.function.IntFunction<PrimitiveSource> sources, Camera camera) {
+            IntFunction<PrimitiveSource> sources, Camera camera) {
         this.camera = camera;
         this.drawn = drawn;
         this.error = error;
