@@ -190,7 +190,7 @@ final class PixelWatch implements PrimitiveTrace {
             // Kept until a fragment of it reaches the pixel (then it covered the pixel after all) or the next primitive.
             cutAway = new HistoryEntry(index, chain(), kind, Outcome.CLIPPED);
             cutAway.planes = cut;
-            placeHere(cutAway, unclipped, 0, unclippedStride);
+            placeHere(cutAway, unclipped, 0, unclippedStride, unclippedCount);
         }
     }
 
@@ -220,26 +220,31 @@ final class PixelWatch implements PrimitiveTrace {
 
     /**
      * For a filled polygon cut away at the pixel: where the ray through the
-     * pixel's centre meets the plane of its first three vertices (p from
-     * {@code at}, {@code numbers} each, camera space), and the planes that
-     * point is outside of, which are what cut the polygon away here. Nothing
-     * when the point is inside every plane (the centre exactly on an edge of
-     * the clipped outline) or the ray runs along the polygon's plane.
+     * pixel's centre meets the polygon's plane, and the planes that point is
+     * outside of, which are what cut the polygon away here. The polygon is
+     * {@code count} vertices of p (from {@code at}, {@code numbers} each,
+     * camera space); its plane's normal is summed over all its edges
+     * (Newell's), so a face whose first three vertices lie on one line (an
+     * obj quad with a vertex in the middle of an edge) still has its plane.
+     * Nothing when the point is inside every plane (the centre exactly on an
+     * edge of the clipped outline), the polygon has no area, or the ray runs
+     * along its plane.
      */
-    private void placeHere(HistoryEntry e, double[] p, int at, int numbers) {
+    private void placeHere(HistoryEntry e, double[] p, int at, int numbers, int count) {
         if (e.kind != Painter.FILLED) {
             return;
         }
         Camera view = camera.get();
         double wx = view.windowX(x + 0.5);
         double wy = view.windowY(y + 0.5);
-        int b = at + numbers;
-        int c = b + numbers;
-        double ux = p[b] - p[at], uy = p[b + 1] - p[at + 1], uz = p[b + 2] - p[at + 2];
-        double vx = p[c] - p[at], vy = p[c + 1] - p[at + 1], vz = p[c + 2] - p[at + 2];
-        double nx = uy * vz - uz * vy;
-        double ny = uz * vx - ux * vz;
-        double nz = ux * vy - uy * vx;
+        double nx = 0, ny = 0, nz = 0;
+        for (int k = 0; k < count; k++) {
+            int i = at + k * numbers;
+            int j = at + (k + 1) % count * numbers;
+            nx += (p[i + 1] - p[j + 1]) * (p[i + 2] + p[j + 2]);
+            ny += (p[i + 2] - p[j + 2]) * (p[i] + p[j]);
+            nz += (p[i] - p[j]) * (p[i + 1] + p[j + 1]);
+        }
         double[] point;
         if (view.isPerspective()) {
             // the ray t (wx, wy, -1), t > 0, meets n . (P - p0) = 0
@@ -340,7 +345,7 @@ final class PixelWatch implements PrimitiveTrace {
                 e.planes = common;
             } else {
                 e.planes = cutPlanes(view, primitiveKind, p, at, numbers, count);
-                placeHere(e, p, at, numbers);
+                placeHere(e, p, at, numbers, count);
             }
             entries.add(e);
         }

@@ -8,9 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.geometry.Camera;
 
 /**
  * Hand-made lit scenes whose answers are worked out here: a triangle cut by
@@ -62,7 +64,7 @@ class ClippedHistoryTest {
         double wy = 324.5 / 325 - 1;
         double t = 125 / (1 - 7.5 * wy);
         assertArrayEquals(new double[] {wx * t, wy * t, -t}, e.here(), 1e-9);
-        assertEquals(1 << simpview.geometry.Camera.YON, e.herePlanes());
+        assertEquals(1 << Camera.YON, e.herePlanes());
         assertTrue(beyond.text(true, false).contains(", and there it is at camera (") && beyond.text(true, false)
                 .contains("), outside the yon plane"), beyond.text(true, false));
         assertTrue(beyond.json(true, false).contains("\"here\": {\"camera\": ["), beyond.json(true, false));
@@ -75,6 +77,31 @@ class ClippedHistoryTest {
         assertEquals(0, inspector.inspect(s, 324, 250).history().size());
         // Window x 0.1: outside the triangle at any height above the cut.
         assertEquals(0, inspector.inspect(s, 357, 324).history().size());
+    }
+
+    /**
+     * An obj floor whose face starts along its near edge, three vertices on
+     * one line (y = -1, z = -2), then goes out past the far plane z = -20.
+     * The ray through window (wx, wy), wy below 0, meets the floor at
+     * t = 1 / -wy; at pixel (325, 312), wy = 312.5 / 325 - 1 = -1/26, so
+     * t = 26, beyond the far plane: the face is cut away there by yon.
+     */
+    @Test
+    void aFaceWhoseFirstThreeVerticesLieOnALineStillSaysWhereItIs() throws Exception {
+        Files.writeString(dir.resolve("floor.obj"),
+                "v -5 -1 -2\nv 0 -1 -2\nv 5 -1 -2\nv 5 -1 -50\nv -5 -1 -50\nf 1 2 3 4 5\n");
+        InspectedScene s = scene("floor.simp", "camera -1 -1 1 1 -1 -20\nobj \"floor\"\n");
+        PixelReport r = inspector.inspect(s, 325, 312);
+        assertEquals(1, r.history().size(), r.text(true, false));
+        HistoryEntry e = r.history().get(0);
+        assertEquals(Outcome.CLIPPED, e.outcome());
+        double wx = 325.5 / 325 - 1;
+        double wy = 312.5 / 325 - 1;
+        double t = 1 / -wy;
+        assertNotNull(e.here(), r.text(true, false));
+        assertArrayEquals(new double[] {wx * t, -1, -t}, e.here(), 1e-9);
+        assertEquals(1 << Camera.YON, e.herePlanes());
+        assertTrue(r.text(true, false).contains("), outside the yon plane"), r.text(true, false));
     }
 
     @Test
@@ -136,8 +163,8 @@ class ClippedHistoryTest {
         assertEquals(List.of("hither", "yon"), e.planeNames());
         assertTrue(r.text(true, false).contains("drawn, but not here (cut by hither, yon)"), r.text(true, false));
         // At this pixel it is between the eye and the near plane: hither cut it away here, not yon.
-        assertEquals(1 << simpview.geometry.Camera.HITHER, e.herePlanes());
-        assertTrue(e.here()[2] > -1 && e.here()[2] < 0, java.util.Arrays.toString(e.here()));
+        assertEquals(1 << Camera.HITHER, e.herePlanes());
+        assertTrue(e.here()[2] > -1 && e.here()[2] < 0, Arrays.toString(e.here()));
     }
 
     /**
