@@ -1468,12 +1468,12 @@ public final class SimpviewWindow {
         return backFacesShown ? backFaces : -1;
     }
 
-    /** The overdraw overlay's largest count while it is shown, else -1. */
     /** The step shown: how many primitives are drawn, or -1 for the whole picture. */
     int stepLimit() {
         return settings.stepLimit();
     }
 
+    /** The overdraw overlay's largest count while it is shown, else -1. */
     int overdrawShownMax() {
         return overdrawShown ? overdrawMax : -1;
     }
