@@ -285,7 +285,7 @@ public final class SimpReader implements AutoCloseable {
         int i = from;
         while (i < end) {
             if (!startsNumber(b[i])) {
-                throw error(i, kind.takes(n) ? endExpected(i) : "expected a number, found " + found(i));
+                throw error(i, kind.takes(n) ? endExpected(i) : numberExpected(i));
             }
             if (n == most) {
                 int found = n + DecimalCommas.words(b, i, end);
@@ -384,12 +384,31 @@ public final class SimpReader implements AutoCloseable {
     private int number(int i) throws SceneException {
         int after = decimal.scan(b, i, end);
         if (after < 0 || !endsNumber(after)) {
-            throw error(i, "expected a number, found " + found(i) + (after < 0 ? "" : stuckUnit(i, after)));
+            throw error(i, after >= 0 ? "expected a number, found " + found(i) + stuckUnit(i, after)
+                    : numberExpected(i));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");
         }
         return after;
+    }
+
+    /** "expected a number, found ..." for what stands at i, no number: a unit word after a number is told so. */
+    private String numberExpected(int i) {
+        return "expected a number, found " + found(i) + (i < end && afterANumber(i) ? StuckUnit.alone(token(i)) : "");
+    }
+
+    /**
+     * Whether what stands at i follows a number, past blanks and commas: '10 px' in 'translate 10 px 0 0', or
+     * '-50 deg' inside a polygon's brackets, where a unit word is told as after the last number of a line.
+     */
+    private boolean afterANumber(int i) {
+        int j = i - 1;
+        int start = source.lineStart();
+        while (j >= start && (isBlank(b[j]) || b[j] == ',')) {
+            j--;
+        }
+        return j >= start && (b[j] >= '0' && b[j] <= '9' || b[j] == '.');
     }
 
     /** For a number at i read up to {@code after}, where more stands stuck to it: a unit or a ';'. */

@@ -455,6 +455,23 @@ class SimpReaderTest {
                 + " nothing here; blanks, commas and parentheses separate numbers");
     }
 
+    /**
+     * A unit word standing after a number where another number is wanted (inside a point's brackets, between a
+     * transform's numbers) is told as after the line's last number; a word that is no unit, or a unit word after
+     * no number, is not.
+     */
+    @Test
+    void aUnitWordBetweenNumbersIsToldToBeLeftOut() {
+        String noUnit = "a number takes no unit (an angle is in degrees, a length in world units)";
+        assertError("polygon (0 0 -50 deg) (10,0,-50) (0,10,-50)", 1, 18, "expected a number, found 'deg' (" + noUnit
+                + ": leave 'deg' out)");
+        assertError("translate 10 px 0 0", 1, 14, "expected a number, found 'px' (" + noUnit + ": leave 'px' out)");
+        assertError("scale 2, 2., units 2", 1, 14, "expected a number, found 'units' (" + noUnit
+                + ": leave 'units' out)");
+        assertError("polygon (0,0,-50) (10,0,-50) (0,10,-50) (1,0,0) red", 1, 49, "expected a number, found 'red'");
+        assertError("rotate Z deg", 1, 10, "expected a number, found 'deg'");
+    }
+
     @Test
     void numberWithTwoPoints() {
         assertError("\ttranslate 1 2.3.4 3", 1, 14, "expected a number, found '2.3.4'");
