@@ -311,7 +311,7 @@ public final class CompareCommand implements Callable<Integer> {
         hinting.setDaemon(true);
         hinting.start();
         Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
-        ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, tolerance, min,
+        ComparisonReport report = ComparisonReport.of(theirs, own.describe(target), comparison, tolerance, min,
                 awaitHint(hint));
         // a picture that fails and no mistake explains may be another page, its file named for the wrong one
         OtherPage other = report.passes() || report.systematic() != null || !target.isPage() ? null

@@ -53,10 +53,18 @@ public final class OwnPictures {
                 }
                 canvas = drawing.canvas();
             }
-            picture = Picture.ofPage(canvas.image(), "simpview's " + target.describe(context));
+            picture = Picture.ofPage(canvas.image(), "simpview's " + describe(target));
             drawn.put(target, picture);
         }
         return picture;
+    }
+
+    /**
+     * What simpview draws for {@code target}, as a report names it: "page 6 (seed 361)", "scene cube.simp"; a
+     * scene drawn in its vertices' own colours says so, since the same scene depth-cued is another picture.
+     */
+    String describe(CompareTarget target) {
+        return target.describe(context) + (ownColours && !target.isPage() ? " in its vertices' own colours" : "");
     }
 
     PageContext context() {

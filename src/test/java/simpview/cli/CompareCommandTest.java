@@ -148,6 +148,27 @@ public class CompareCommandTest {
         assertTrue(page.err().contains("--own-colors goes with --scene only"), page.err());
     }
 
+    /**
+     * A report of a scene compared in its own colours says so in its first line, and the warning of a scene's
+     * colours that the depth cue hides names compare's --own-colors, not render's alone: a student's picture of
+     * vertex colours, held against the depth-cued scene, failed with a word only of render.
+     */
+    @Test
+    void aSceneComparedInItsOwnColoursIsSaidToBe() throws Exception {
+        Path scene = dir.resolve("tinted.simp");
+        Files.writeString(scene, "polygon (-80, -80, -20, 1, 0, 0) (80, -80, -120, 0, 1, 0) (0, 80, -190, 0, 0, 1)\n");
+        Path mine = dir.resolve("tinted.png");
+        assertEquals(0, CliRun.of("render", "--scene", scene.toString(), "--own-colors", "--out", mine.toString())
+                .exitCode());
+        CliRun own = CliRun.of("compare", mine.toString(), "--scene", scene.toString(), "--own-colors");
+        assertTrue(own.out().startsWith(mine + " against simpview's scene tinted.simp in its vertices' own colours\n"),
+                own.out());
+        CliRun cued = CliRun.of("compare", mine.toString(), "--scene", scene.toString());
+        assertTrue(cued.out().startsWith(mine + " against simpview's scene tinted.simp\n"), cued.out());
+        assertTrue(cued.err().contains("--own-colors (render, compare, check, inspect), or C in the window, draws"
+                + " them"), cued.err());
+    }
+
     /** A panel turned upside down fails, and is told why: the course's y runs up, an image's rows down. */
     @Test
     void anUpsideDownPanelIsToldSo() throws Exception {

@@ -194,8 +194,8 @@ class ScenePipelineTest {
                 "polygon (-60 -50 -50 1 0 0) (60 -50 -50 0 1 0) (0 60 -50 0 0 1)");
         draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of("colours.simp:2: the vertices' own colours are not drawn: a depth-cued scene takes its"
-                + " colours from the depth cue (SPEC Part 1); render --own-colors, or C in the window, draws them"
-                + " (this is the first line with colours)"), warnings);
+                + " colours from the depth cue (SPEC Part 1); --own-colors (render, compare, check, inspect), or C in"
+                + " the window, draws them (this is the first line with colours)"), warnings);
         warnings.clear();
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
