@@ -1,5 +1,7 @@
 package simpview.scene.text;
 
+import java.math.BigDecimal;
+import java.math.RoundingMode;
 import java.util.Locale;
 import java.util.Set;
 
@@ -59,13 +61,21 @@ public final class StuckUnit {
                 return plain + ": write the angle in degrees";
             }
             try {
-                return plain + ": " + number + " radians is " + Math.toDegrees(Double.parseDouble(number))
+                return plain + ": " + number + " radians is " + degrees(Math.toDegrees(Double.parseDouble(number)))
                         + " degrees";
             } catch (NumberFormatException e) {
                 return plain + ": write the angle in degrees";
             }
         }
         return number == null ? plain + ": leave '" + unit + "' out" : plain + ": write " + number;
+    }
+
+    /** An angle in degrees as a student would write it: to six places, no trailing zeros (85.943669). */
+    static String degrees(double angle) {
+        if (!Double.isFinite(angle)) {
+            return String.valueOf(angle);
+        }
+        return BigDecimal.valueOf(angle).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
     }
 
     private static boolean isLetters(String s) {

@@ -448,7 +448,7 @@ class SimpReaderTest {
         assertError("translate 10px 0 0", 1, 11, "expected a number, found '10px', the number 10 with 'px' stuck to"
                 + " it: " + noUnit + ": write 10");
         assertError("rotate X 1.5rad", 1, 10, "expected a number, found '1.5rad', the number 1.5 with 'rad' stuck"
-                + " to it: " + noUnit + ": 1.5 radians is " + Math.toDegrees(1.5) + " degrees");
+                + " to it: " + noUnit + ": 1.5 radians is 85.943669 degrees");
         assertError("rotate Y 30 degrees", 1, 13, "expected the end of the line, found 'degrees' (" + noUnit
                 + ": leave 'degrees' out)");
         assertError("polygon (0;0;-1) (1;0;-1) (0;1;-1)", 1, 10, "expected a number, found '0;0;-1': ';' separates"
