@@ -88,7 +88,7 @@ public record OtherPage(String page, String named, double shareThere) implements
 
     @Override
     public String hint(int n) {
-        return "your picture passes as simpview's " + page + " (" + Percent.of(shareThere) + " by the same rule), not as "
+        return "your picture passes as simpview's " + page + ", " + Percent.of(shareThere) + " by the same rule, not as "
                 + named + ": is the file named for the wrong page? It is graded as " + named + ", the page its name "
                 + "names.";
     }

@@ -51,7 +51,7 @@ class OtherPageHintTest {
         CliRun run = CliRun.of("compare", picture.toString(), "--page", "5");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "still graded as page 5: " + run.out());
         assertTrue(run.out().contains("FAIL: 30.25 % within 8/255 with slack (99.00 % needed)\n"), run.out());
-        assertTrue(run.out().contains("hint: your picture passes as simpview's page 4 (100.00 % by the same rule), not "
+        assertTrue(run.out().contains("hint: your picture passes as simpview's page 4, 100.00 % by the same rule, not "
                 + "as page 5: is the file named for the wrong page? It is graded as page 5, the page its name names.\n"),
                 run.out());
         assertEquals(1, run.out().split("hint:", -1).length - 1, run.out());
@@ -61,8 +61,8 @@ class OtherPageHintTest {
     void aSeededPageNamedForAnotherSeededPageNamesItWithItsSeed() throws Exception {
         Path picture = png("page3.png", page(2));
         CliRun run = CliRun.of("compare", picture.toString(), "--page", "3");
-        assertTrue(run.out().contains("hint: your picture passes as simpview's page 2 (seed 361) (100.00 % by the same "
-                + "rule), not as page 3 (seed 361): " + ASKED), run.out());
+        assertTrue(run.out().contains("hint: your picture passes as simpview's page 2 (seed 361), 100.00 % by the same "
+                + "rule, not as page 3 (seed 361): " + ASKED), run.out());
     }
 
     /** Page 2 of another seed is no page of seed 361: it passes as none of them, and is told nothing. */
@@ -117,8 +117,8 @@ class OtherPageHintTest {
         CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "5");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
         assertTrue(run.out().contains("FAIL: every panel must reach 99.00 %"), run.out());
-        assertTrue(run.out().contains("hint: your picture passes as simpview's A1 page 4 (seed 361) (100.00 % by the "
-                + "same rule), not as A1 page 5 (seed 361): " + ASKED), run.out());
+        assertTrue(run.out().contains("hint: your picture passes as simpview's A1 page 4 (seed 361), 100.00 % by the "
+                + "same rule, not as A1 page 5 (seed 361): " + ASKED), run.out());
         assertEquals(1, run.out().split("hint:", -1).length - 1, "one hint, of the page: " + run.out());
     }
 
@@ -128,8 +128,8 @@ class OtherPageHintTest {
         png("mine/page5.png", page(4));
         CliRun run = CliRun.of("check", dir.resolve("mine").toString(), "--pages", "4-5");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
-        assertTrue(run.out().contains("hint: page5.png (page 5): your picture passes as simpview's page 4 (100.00 % by "
-                + "the same rule), not as page 5: " + ASKED), run.out());
+        assertTrue(run.out().contains("hint: page5.png (page 5): your picture passes as simpview's page 4, 100.00 % by "
+                + "the same rule, not as page 5: " + ASKED), run.out());
         assertFalse(run.out().contains("page4.png (page 4): your picture"), "the right page gets none: " + run.out());
     }
 
@@ -149,7 +149,7 @@ class OtherPageHintTest {
         assertTrue(ann5.contains(",FAIL,") && ann5.endsWith("; looks like page 4: " + ASKED + "\""), ann5);
         assertEquals(1, rows.stream().filter(r -> r.contains(ASKED)).count(), "ann's page 4 and bob's page 5: " + rows);
         assertTrue(run.err().contains("ann/page5.png: FAIL 30.25 %; looks like page 4: " + ASKED + "\n"), run.err());
-        String whole = "hint: your picture passes as simpview's page 4 (100.00 % by the same rule), not as page 5: "
+        String whole = "hint: your picture passes as simpview's page 4, 100.00 % by the same rule, not as page 5: "
                 + ASKED + " It is graded as page 5, the page its name names.";
         String xml = Files.readString(out.resolve("results.xml"));
         assertTrue(xml.contains(whole), xml);
@@ -179,7 +179,7 @@ class OtherPageHintTest {
         Path course = CourseFiles.requireSimpDir();
         Path seven = png("page7.png", page(6, PageContext.defaults().withSimpDir(course)));
         CliRun run = CliRun.of("compare", seven.toString(), "--page", "7", "--simp-dir", course.toString());
-        assertTrue(run.out().contains("hint: your picture passes as simpview's page 6 (100.00 % by the same rule), not "
+        assertTrue(run.out().contains("hint: your picture passes as simpview's page 6, 100.00 % by the same rule, not "
                 + "as page 7: " + ASKED), run.out());
         Path noCourse = Files.createDirectories(dir.resolve("no-course"));
         CliRun without = CliRun.of("compare", png("page5.png", page(4)).toString(), "--page", "5", "--simp-dir",
