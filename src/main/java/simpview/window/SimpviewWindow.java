@@ -550,8 +550,6 @@ public final class SimpviewWindow {
         int stepped = settings.stepLimit() >= 1 && !orbit.turned() ? settings.stepLimit() - 1 : HistoryEntry.NO_NUMBER;
         String note = orbit.turned() || settings.stepLimit() >= 0
                 ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
-                + (stepped == HistoryEntry.NO_NUMBER ? "" : " The vertices below are primitive " + (stepped + 1)
-                + "'s, the one stepped to.")
                 : null;
         inspectorPanel.inspect(scene, x, y, note, theirs, stepped);
     }

@@ -199,8 +199,9 @@ public final class InspectorPanel {
 
     /**
      * The same, with the vertices of primitive {@code vertices} (0, 1, ...:
-     * the one stepped to) instead of the owner's, unless that is NO_NUMBER
-     * or the scene has no such primitive.
+     * the one stepped to) instead of the owner's, and a sentence after
+     * {@code note} saying so, unless that is NO_NUMBER or the scene has no
+     * such primitive.
      */
     public void inspect(InspectedScene scene, int x, int y, String note, String before, int vertices) {
         replay(before, "Replaying the scene for pixel (" + x + ", " + y + ") ...", () -> {
@@ -220,7 +221,12 @@ public final class InspectorPanel {
             }
             int table = vertices != HistoryEntry.NO_NUMBER && r.vertices(vertices) != null ? vertices
                     : owner == null ? HistoryEntry.NO_NUMBER : owner.primitive();
-            return new Answer((note == null ? "" : note + "\n\n") + r.text(true, true, table),
+            // said only once the scene is known to have it (an empty scene, or one saved shorter, has not)
+            String said = table != HistoryEntry.NO_NUMBER && table == vertices
+                    ? (note == null ? "" : note + " ") + "The vertices below are primitive " + (vertices + 1)
+                            + "'s, the one stepped to."
+                    : note;
+            return new Answer((said == null ? "" : said + "\n\n") + r.text(true, true, table),
                     named, owner == null ? List.of() : owner.chain());
         });
     }
