@@ -32,8 +32,7 @@ final class DepthCuedRules implements RuleSet {
     private final PrimitiveTrace trace;
     /** The window's turn of the view, applied before the CTM (the world turns before the depth cue), or null. */
     private final Matrix4 turn;
-    /** Where the first primitive with a vertex that is not finite stands ("ovf.simp:3 polygon"), or null. */
-    private String firstNonFinite;
+    private final FirstNonFinite firstNonFinite;
     private Matrix4 lastCtm;
     private Matrix4 turnedCtm;
     private int traced;
@@ -49,6 +48,7 @@ final class DepthCuedRules implements RuleSet {
     DepthCuedRules(Painter painter, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
         this.painter = painter;
         this.geometry = new DepthCuedGeometry(painter);
+        this.firstNonFinite = new FirstNonFinite(geometry);
         this.files = files;
         this.trace = trace;
         this.turn = turn;
@@ -61,21 +61,14 @@ final class DepthCuedRules implements RuleSet {
     public void line(Matrix4 ctm, double[] xyz, double[] rgb) {
         source(ctm, xyz, 2);
         geometry.line(viewed(ctm), xyz, rgb);
-        noteNonFinite("line");
+        firstNonFinite.note(files, "line");
     }
 
     @Override
     public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
         source(ctm, xyz, 3);
         geometry.polygon(viewed(ctm), xyz, rgb, wire);
-        noteNonFinite("polygon");
-    }
-
-    /** Notes where the first primitive with a vertex that is not finite stands: one test per primitive. */
-    private void noteNonFinite(String kind) {
-        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
-            firstNonFinite = files.place() + " " + kind;
-        }
+        firstNonFinite.note(files, "polygon");
     }
 
     @Override
@@ -85,7 +78,7 @@ final class DepthCuedRules implements RuleSet {
 
     @Override
     public String firstNonFinite() {
-        return firstNonFinite;
+        return firstNonFinite.place();
     }
 
     /** Tells a trace that wants them the primitive's vertices as written and the CTM (as turned for the view). */

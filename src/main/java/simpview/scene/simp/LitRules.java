@@ -48,8 +48,8 @@ final class LitRules implements RuleSet {
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
     private String cameraAt;
     private String firstPrimitiveAt;
-    /** Where the first primitive with a vertex that is not finite stands ("ovf.obj:3 face ..."), or null. */
-    private String firstNonFinite;
+    /** Where the first primitive with a vertex that is not finite stands ("ovf.obj:3 face ..."). */
+    private final FirstNonFinite firstNonFinite;
     /** The record several threads draw from, or null: drawn at once, on this thread. */
     private LitPrimitives record;
     /** Where the fragments go when drawn at once. */
@@ -65,6 +65,7 @@ final class LitRules implements RuleSet {
      */
     LitRules(FragmentStage fragments, ObjLibrary models, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
         this.geometry = new LitGeometry(state, fragments);
+        this.firstNonFinite = new FirstNonFinite(geometry);
         this.fragments = fragments;
         this.models = models;
         this.files = files;
@@ -79,7 +80,7 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 2);
         geometry.line(ctm, xyz, rgb);
-        noteNonFinite("line");
+        firstNonFinite.note(files, "line");
     }
 
     @Override
@@ -87,17 +88,7 @@ final class LitRules implements RuleSet {
         primitive();
         source(ctm, xyz, 3);
         geometry.polygon(ctm, xyz, rgb, wire);
-        noteNonFinite("polygon");
-    }
-
-    /**
-     * Notes where the primitive just drawn stands ("ovf.simp:3 polygon") when it was the first with a vertex
-     * that is not finite; the place is put into words only then, not for every primitive.
-     */
-    private void noteNonFinite(String kind) {
-        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
-            firstNonFinite = files.place() + " " + kind;
-        }
+        firstNonFinite.note(files, "polygon");
     }
 
     @Override
@@ -107,7 +98,7 @@ final class LitRules implements RuleSet {
 
     @Override
     public String firstNonFinite() {
-        return firstNonFinite;
+        return firstNonFinite.place();
     }
 
     /** Tells a trace that wants them the primitive's vertices as written and the CTM. */
@@ -187,9 +178,9 @@ final class LitRules implements RuleSet {
             firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
         }
         modelWarnings.addAll(counts.warnings());
-        if (firstNonFinite == null && geometry.nonFiniteCount() > 0) {
-            firstNonFinite = file.getFileName() + ":" + geometry.firstNonFiniteLine() + " face (of the model drawn by "
-                    + files.place() + " obj)";
+        if (firstNonFinite.justCounted()) {
+            firstNonFinite.noteAs(file.getFileName() + ":" + geometry.firstNonFiniteLine() + " face (of the model drawn by "
+                    + files.place() + " obj)");
         }
         return true;
     }
