@@ -478,13 +478,22 @@ public final class LlvmpipeExport {
         private int lastVersion = -1;
         private boolean lastPhong;
         private int lastMode;
+        /** Whether the primitive read next holds its one colour as it is, not times q (PrimitiveTrace.oneColour). */
+        private boolean oneColour;
 
         LitTrace(Export export) {
             this.export = export;
         }
 
         @Override
+        public void oneColour() {
+            oneColour = true;
+        }
+
+        @Override
         public void read(int index, Path file, int line, int kind, double[] p, int at, int stride, int vertices) {
+            boolean asIs = oneColour;
+            oneColour = false;
             int mode = export.modeOf(kind);
             if (mode < 0) {
                 return;
@@ -504,31 +513,35 @@ public final class LlvmpipeExport {
             Camera camera = state.camera();
             if (kind == Painter.FILLED) {
                 for (int k = 1; k + 1 < vertices; k++) {
-                    vertex(v, camera, p, at, stride, channels);
-                    vertex(v, camera, p, at + k * stride, stride, channels);
-                    vertex(v, camera, p, at + (k + 1) * stride, stride, channels);
+                    vertex(v, camera, p, at, stride, channels, asIs);
+                    vertex(v, camera, p, at + k * stride, stride, channels, asIs);
+                    vertex(v, camera, p, at + (k + 1) * stride, stride, channels, asIs);
                     export.triangles++;
                 }
             } else {
                 // A line's one segment, or each edge of an outline, as simpview draws them.
                 int segments = kind == Painter.LINE ? 1 : vertices;
                 for (int k = 0; k < segments; k++) {
-                    vertex(v, camera, p, at + k * stride, stride, channels);
-                    vertex(v, camera, p, at + ((k + 1) % vertices) * stride, stride, channels);
+                    vertex(v, camera, p, at + k * stride, stride, channels, asIs);
+                    vertex(v, camera, p, at + ((k + 1) % vertices) * stride, stride, channels, asIs);
                     export.lines++;
                 }
             }
         }
 
-        private static void vertex(FloatList out, Camera camera, double[] p, int at, int stride, int channels) {
+        /** One vertex for the shaders: its colour as it is ({@code asIs}: one colour) or its channels over q. */
+        private static void vertex(FloatList out, Camera camera, double[] p, int at, int stride, int channels,
+                boolean asIs) {
             double q = p[at + FragmentLayout.Q];
             double w = 1 / q;
             double x = p[at + FragmentLayout.X] / PageCanvas.PANEL * 2 - 1;
             double y = p[at + FragmentLayout.Y] / PageCanvas.PANEL * 2 - 1;
             int c = at + FragmentLayout.CHANNEL;
             double z = p[c + FragmentLayout.Z] * w;
+            double colourTimes = asIs ? 1 : w;
             out.add(x * w, y * w, depth(camera, q, z) * w, w);
-            out.add(z, p[c + FragmentLayout.R] * w, p[c + FragmentLayout.G] * w, p[c + FragmentLayout.B] * w);
+            out.add(z, p[c + FragmentLayout.R] * colourTimes, p[c + FragmentLayout.G] * colourTimes,
+                    p[c + FragmentLayout.B] * colourTimes);
             if (channels == FragmentLayout.PHONG_CHANNELS) {
                 out.add(p[c + FragmentLayout.PX] * w, p[c + FragmentLayout.PY] * w, p[c + FragmentLayout.NX] * w,
                         p[c + FragmentLayout.NY] * w);

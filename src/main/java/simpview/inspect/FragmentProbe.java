@@ -8,8 +8,8 @@ import simpview.shading.FragmentStage;
  * Between a lit scene's rasterizers and its fragment stage: every fragment
  * at the inspected pixel is resolved here as the fragment stage resolves it
  * (k = x - from, 1 / q = 1 / (q0 + k dq), each channel (v0 + k dv) / q, the
- * same operations in the same order, so the same bits; a flat polygon's
- * colour as it is, {@link FragmentStage#flat}), told to the watch
+ * same operations in the same order, so the same bits; the colour of a
+ * primitive of one colour as it is, {@link FragmentStage#oneColour}), told to the watch
  * with the depth stored before it, and then the span goes on whole to the
  * fragment stage, which draws it; whether it won is read back from the
  * z-buffer. Spans and pixels that miss the inspected pixel go no further:
@@ -44,7 +44,7 @@ final class FragmentProbe implements FragmentSink {
         for (int c = 0; c < n; c++) {
             channels[c] = (v0[c] + k * dv[c]) * inv;
         }
-        if (stage.flatColours()) {
+        if (stage.oneColours()) {
             for (int c = FragmentLayout.R; c <= FragmentLayout.B; c++) {
                 channels[c] = v0[c];
             }
@@ -62,7 +62,7 @@ final class FragmentProbe implements FragmentSink {
         double inv = 1 / q;
         int n = watch.channels();
         for (int c = 0; c < n; c++) {
-            channels[c] = c >= FragmentLayout.R && c <= FragmentLayout.B && stage.flatColours() ? v[c] : v[c] * inv;
+            channels[c] = c >= FragmentLayout.R && c <= FragmentLayout.B && stage.oneColours() ? v[c] : v[c] * inv;
         }
         watch.fragment(channels);
         stage.pixel(px, py, q, v);

@@ -150,8 +150,7 @@ final class LitExplainer implements PixelWatch.Explainer {
             int[] vertex = {start, end};
             for (int e = 0; e < 2; e++) {
                 double qe = o[at[e] + FragmentLayout.Q];
-                double[] kd = {o[at[e] + c + FragmentLayout.R] / qe, o[at[e] + c + FragmentLayout.G] / qe,
-                    o[at[e] + c + FragmentLayout.B] / qe};
+                double[] kd = watch.colourAt(vertex[e]);
                 double w = e == 0 ? wStart : wEnd;
                 for (int j = 0; j < 3; j++) {
                     weighted[j] += w * kd[j];
@@ -169,10 +168,12 @@ final class LitExplainer implements PixelWatch.Explainer {
                     .put("q", q)
                     .put("weights", wStart, wEnd)
                     .put("weighted", weighted)
-                    .put("rule", watch.camera().isPerspective()
+                    .put("rule", (watch.camera().isPerspective()
                             ? "q = 1 / -z is lerped by t, and so is kd q: the ends weigh (1 - t) q_start / q and "
                             + "t q_end / q (SPEC Part 2, perspective-correct)"
-                            : "the parallel view: q = 1, kd is lerped by t, the ends weigh 1 - t and t");
+                            : "the parallel view: q = 1, kd is lerped by t, the ends weigh 1 - t and t")
+                            + (watch.carriesOneColour() ? "; both ends carry the same kd, so every pixel's kd is that "
+                            + "kd, to the bit (a lerp between one value and itself is that value)" : ""));
         }
         return best;
     }
@@ -220,7 +221,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                 double q = o[at + 2];
                 piece.add(new Terms().put("vertex", v[k]).put("panel", o[at], o[at + 1])
                         .put("z", o[at + 3] / q)
-                        .put("colour", o[at + 4] / q, o[at + 5] / q, o[at + 6] / q));
+                        .put("colour", watch.colourAt(v[k])));
             }
             double[][] rows = originals(watch, n);
             if (rows == null) {

@@ -10,6 +10,7 @@ import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
+import simpview.raster.FragmentLayout;
 import simpview.shading.LitState;
 import simpview.stage.Painter;
 import simpview.stage.PrimitiveTrace;
@@ -44,6 +45,10 @@ final class PixelWatch implements PrimitiveTrace {
     private double[] outline = new double[64];
     private int stride;
     private int vertices;
+    /** Whether the primitive at hand carries one colour, as it is in its outline (PrimitiveTrace.oneColour). */
+    private boolean oneColour;
+    /** Told by the trace just before the read it is about. */
+    private boolean nextOneColour;
     private List<SourcePlace> chain;
     private int lastWritten = HistoryEntry.NO_NUMBER;
     /** The write on its way down the chain now. */
@@ -134,6 +139,11 @@ final class PixelWatch implements PrimitiveTrace {
     }
 
     @Override
+    public void oneColour() {
+        nextOneColour = true;
+    }
+
+    @Override
     public void litOnce(double[] once) {
         litOnce = once.clone();
     }
@@ -177,6 +187,8 @@ final class PixelWatch implements PrimitiveTrace {
         kind = primitiveKind;
         stride = numbers;
         vertices = count;
+        oneColour = nextOneColour;
+        nextOneColour = false;
         if (outline.length < numbers * count) {
             outline = new double[2 * numbers * count];
         }
@@ -445,9 +457,27 @@ final class PixelWatch implements PrimitiveTrace {
         return camera.get();
     }
 
-    /** The projected outline of the primitive at hand: vertices() of stride() numbers (panel x, y, q, then channels times q). */
+    /**
+     * The projected outline of the primitive at hand: vertices() of stride()
+     * numbers (panel x, y, q, then channels times q, but the colour of a
+     * primitive of one colour as it is: {@link #colourAt}).
+     */
     double[] outline() {
         return outline;
+    }
+
+    /** The colour (r, g, b) outline vertex k carries: its colour channels over its q, or as they are for one colour. */
+    double[] colourAt(int k) {
+        int at = k * stride;
+        double q = oneColour ? 1 : outline[at + FragmentLayout.Q];
+        int c = at + FragmentLayout.CHANNEL;
+        return new double[] {outline[c + FragmentLayout.R] / q, outline[c + FragmentLayout.G] / q,
+            outline[c + FragmentLayout.B] / q};
+    }
+
+    /** Whether the primitive at hand carries one colour, the same at every vertex, to the bit. */
+    boolean carriesOneColour() {
+        return oneColour;
     }
 
     int stride() {

@@ -5,7 +5,9 @@ package simpview.raster;
  * {@link DdaLineRenderer}) for lit scenes: q and every channel are lerped per
  * step from the walk's start endpoint to its end, in screen space, and handed
  * to the {@link FragmentSink}, which divides by q: perspective-correct along
- * the line.
+ * the line. A value both ends share is every step's, to the bit
+ * ({@link WalkingLineRenderer#lerp}): so a line of one colour, whose colour
+ * channels hold it as it is, is that colour at every pixel.
  *
  * <p>A vertex is laid out as for {@link LitPolygonRasterizer}: panel x, panel
  * y, q, channels. Only the pixels on the panel are visited. One instance
@@ -36,9 +38,9 @@ public final class LitLineRasterizer {
             double t = walk.t();
             double s = 1 - t;
             for (int c = 0; c < channels; c++) {
-                at[c] = s * v[a + 3 + c] + t * v[b + 3 + c];
+                at[c] = WalkingLineRenderer.lerp(v[a + 3 + c], v[b + 3 + c], s, t);
             }
-            sink.pixel(walk.x(), walk.y(), s * v[a + 2] + t * v[b + 2], at);
+            sink.pixel(walk.x(), walk.y(), WalkingLineRenderer.lerp(v[a + 2], v[b + 2], s, t), at);
         }
     }
 
@@ -65,11 +67,11 @@ public final class LitLineRasterizer {
         while (walk.next()) {
             double t = walk.t();
             double s = 1 - t;
-            channel[FragmentLayout.Z] = s * za + t * zb;
-            channel[FragmentLayout.R] = s * ra + t * rb;
-            channel[FragmentLayout.G] = s * ga + t * gb;
-            channel[FragmentLayout.B] = s * ba + t * bb;
-            sink.pixel(walk.x(), walk.y(), s * qa + t * qb, channel);
+            channel[FragmentLayout.Z] = WalkingLineRenderer.lerp(za, zb, s, t);
+            channel[FragmentLayout.R] = WalkingLineRenderer.lerp(ra, rb, s, t);
+            channel[FragmentLayout.G] = WalkingLineRenderer.lerp(ga, gb, s, t);
+            channel[FragmentLayout.B] = WalkingLineRenderer.lerp(ba, bb, s, t);
+            sink.pixel(walk.x(), walk.y(), WalkingLineRenderer.lerp(qa, qb, s, t), channel);
         }
     }
 }

@@ -205,8 +205,8 @@ public final class FragmentStage implements FragmentSink {
     private int waitedShortSpans;
     private int waitedShortPixels;
     private PointShader shader;
-    /** Whether the polygons at hand are flat: their colour channels are their one colour, as it is ({@link #flat}). */
-    private boolean flat;
+    /** Whether the primitives at hand have one colour each, in their colour channels as it is ({@link #oneColour}). */
+    private boolean oneColour;
     private Fog fog = Fog.NONE;
     // The polygon whose spans come (told by polygon(), until primitiveDone):
     // its corners in polygonNumbers, null for none; and whether no light is
@@ -1022,34 +1022,37 @@ public final class FragmentStage implements FragmentSink {
     public void colours(Fog fog) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = null;
-        this.flat = false;
+        this.oneColour = false;
         this.fog = fog;
     }
 
     /**
-     * The next polygons are flat, fogged by {@code fog}: each carries its one colour in its colour channels as it
-     * is, not times q, and that colour is every pixel's, to the bit (SPEC Part 2: "one colour per polygon"). A
-     * colour interpolated perspective-correct, (c q) / q, can miss it by a last bit, and so a byte where c * 255
-     * is a half: a flat polygon lit to 0.5 came out 127 at some pixels and 128 at others. Its channels' planes
-     * have no slope, so a span's first values are the colour itself ({@code Plane}: the base, plus zero).
+     * The next primitives have one colour each, fogged by {@code fog}: a flat polygon, or a line, wire outline or
+     * gouraud polygon whose vertices all carry the same colour. Each carries that colour in its colour channels as
+     * it is, not times q, and it is every pixel's colour, to the bit (SPEC Part 2: a flat polygon has "one colour";
+     * a lerp between one value and itself is that value). A colour interpolated perspective-correct, (c q) / q,
+     * can miss it by a last bit, and so a byte where c * 255 is a half: a flat polygon lit to 0.5 came out 127 at
+     * some pixels and 128 at others, and so did the wire cubes of A3's pageB, of kd (1, 0.5, 0.5). Its channels'
+     * planes have no slope, so a span's first values are the colour itself ({@code Plane}: the base, plus zero),
+     * and a line's lerp keeps a value both ends share.
      */
-    public void flat(Fog fog) {
+    public void oneColour(Fog fog) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = null;
-        this.flat = true;
+        this.oneColour = true;
         this.fog = fog;
     }
 
-    /** Whether the polygons at hand are flat: their colour channels are their one colour, as it is ({@link #flat}). */
-    public boolean flatColours() {
-        return flat;
+    /** Whether the primitives at hand have one colour each, as it is ({@link #oneColour}). */
+    public boolean oneColours() {
+        return oneColour;
     }
 
     /** The next primitives are phong-shaded by {@code shader} at every pixel, then fogged. */
     public void phong(PointShader shader, Fog fog) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = shader;
-        this.flat = false;
+        this.oneColour = false;
         this.fog = fog;
     }
 
@@ -1316,8 +1319,8 @@ public final class FragmentStage implements FragmentSink {
         double db = dv[B];
         int row = y * width;
         boolean wrote = false;
-        if (flat) {
-            return flatSpan(row, y, from, start, end, q0, dq, z0, dz, r0, g0, b0);
+        if (oneColour) {
+            return oneColourSpan(row, y, from, start, end, q0, dq, z0, dz, r0, g0, b0);
         }
         for (int x = start; x < end; x++) {
             int k = x - from;
@@ -1338,8 +1341,8 @@ public final class FragmentStage implements FragmentSink {
         return wrote;
     }
 
-    /** A flat polygon's span: z at each pixel as {@link #colourSpan} has it, and the polygon's one colour (r, g, b). */
-    private boolean flatSpan(int row, int y, int from, int start, int end, double q0, double dq, double z0, double dz,
+    /** A span of a primitive of one colour: z at each pixel as {@link #colourSpan} has it, and that colour (r, g, b). */
+    private boolean oneColourSpan(int row, int y, int from, int start, int end, double q0, double dq, double z0, double dz,
             double r, double g, double b) {
         boolean wrote = false;
         for (int x = start; x < end; x++) {
@@ -1623,7 +1626,7 @@ public final class FragmentStage implements FragmentSink {
         }
         zbuffer.written();
         wroteOver(y);
-        double colourTimes = flat ? 1 : inv; // a flat polygon's colour is as it is
+        double colourTimes = oneColour ? 1 : inv; // one colour is as it is
         double r = v[R] * colourTimes;
         double g = v[G] * colourTimes;
         double b = v[B] * colourTimes;

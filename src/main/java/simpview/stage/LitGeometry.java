@@ -64,10 +64,11 @@ public final class LitGeometry implements GeometryStage {
     /** Where the rasterizers hand their fragments: the fragment stage, or a watcher that passes them on to it. */
     private FragmentSink raster;
     /**
-     * Whether the polygon at hand is flat: its colour channels are then projected as they are, its one colour,
-     * not times q ({@link FragmentStage#flat}), so that every pixel of it is that colour to the bit.
+     * Whether the primitive at hand carries one colour: a line, wire outline or flat or gouraud polygon whose
+     * clipped vertices all have the same colour. Its colour channels are then projected as they are, not times q
+     * ({@link FragmentStage#oneColour}), so that every pixel of it is that colour to the bit.
      */
-    private boolean flatColour;
+    private boolean oneColour;
     private final LitRasterizers rasterizers = LitRasterizers.make();
     private final LitPolygonRasterizer fill = rasterizers.fill();
     private final LitLineRasterizer lines = rasterizers.lines();
@@ -166,13 +167,12 @@ public final class LitGeometry implements GeometryStage {
         if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
             skipped(Painter.LINE, false, 2);
         } else {
-            fragments.colours(state.fog());
-            flatColour = false;
+            carriedColours(2);
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
                 if (record != null) {
                     record.add(LitPrimitives.Kind.LINE, screen, 2, FragmentLayout.COLOUR_CHANNELS,
-                            record.look(state.fog(), null, false));
+                            record.look(state.fog(), null, oneColour));
                     return;
                 }
                 lines.draw(screen, 0, FragmentLayout.stride(FragmentLayout.COLOUR_CHANNELS), FragmentLayout.COLOUR_CHANNELS,
@@ -248,7 +248,6 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         faceNormals(n);
-        flatColour = false;
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
@@ -262,6 +261,10 @@ public final class LitGeometry implements GeometryStage {
         if (kept < 3) {
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
+        }
+        oneColour = false;
+        if (channels == FragmentLayout.COLOUR_CHANNELS) {
+            carriedColours(kept);
         }
         if (record != null && trace == null) {
             // Projected straight into the record's batch: no copy of the vertices.
@@ -290,7 +293,6 @@ public final class LitGeometry implements GeometryStage {
             fill.fill(screen, kept, channels, width, height, raster);
             return;
         }
-        fragments.colours(state.fog());
         int stride = FragmentLayout.stride(channels);
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
@@ -322,8 +324,36 @@ public final class LitGeometry implements GeometryStage {
 
     /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
     private int recordedLook(boolean wire, int channels) {
-        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null, flatColour)
+        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null, oneColour)
                 : record.look(state.fog(), state, false);
+    }
+
+    /**
+     * Step 5's end for a primitive that carries its colours (a line, a wire
+     * outline, a flat or gouraud polygon): whether its n clipped vertices
+     * share one colour ({@link #oneColour}), and the fragment stage told so.
+     * A flat polygon always does (each vertex has the lit colour, and the
+     * clipper's lerp {@code a + t (b - a)} keeps a value both ends share);
+     * a line or outline of the surface colour, or a gouraud polygon whose
+     * vertices are lit alike, does too. A colour that is not a number never
+     * equals itself, so it is lerped as before.
+     */
+    private void carriedColours(int n) {
+        double[] v = clipper.vertices();
+        boolean one = true;
+        for (int k = 1; k < n && one; k++) {
+            int o = k * CAMERA_STRIDE;
+            one = v[o + CR] == v[CR] && v[o + CG] == v[CG] && v[o + CB] == v[CB];
+        }
+        oneColour = one && v[CR] == v[CR] && v[CG] == v[CG] && v[CB] == v[CB];
+        if (oneColour) {
+            fragments.oneColour(state.fog());
+        } else {
+            fragments.colours(state.fog());
+        }
+        if (oneColour && trace != null) {
+            trace.oneColour();
+        }
     }
 
     /**
@@ -341,9 +371,7 @@ public final class LitGeometry implements GeometryStage {
         return switch (state.shading()) {
             case FLAT -> {
                 flat(n);
-                flatColour = true;
-                fragments.flat(state.fog());
-                yield FragmentLayout.COLOUR_CHANNELS;
+                yield FragmentLayout.COLOUR_CHANNELS; // the fragment stage is told once clipped: carriedColours
             }
             case GOURAUD -> {
                 if (trace != null && litEach.length < 3 * n) {
@@ -362,8 +390,7 @@ public final class LitGeometry implements GeometryStage {
                     cam[o + CG] = lit[1];
                     cam[o + CB] = lit[2];
                 }
-                fragments.colours(state.fog());
-                yield FragmentLayout.COLOUR_CHANNELS;
+                yield FragmentLayout.COLOUR_CHANNELS; // the fragment stage is told once clipped: carriedColours
             }
             case PHONG -> {
                 fragments.phong(phongShader(), state.fog());
@@ -481,7 +508,7 @@ public final class LitGeometry implements GeometryStage {
     }
 
     /**
-     * Step 6: the first n clipped vertices to panel space, channels times q (a flat polygon's colour as it is).
+     * Step 6: the first n clipped vertices to panel space, channels times q (one colour as it is: {@link #oneColour}).
      *
      * @return how many could be projected (all of them unless one is not finite)
      */
@@ -513,7 +540,7 @@ public final class LitGeometry implements GeometryStage {
             out[o + FragmentLayout.Y] = sy;
             out[o + FragmentLayout.Q] = q;
             out[o + FragmentLayout.CHANNEL + FragmentLayout.Z] = z * q;
-            double colourTimes = flatColour ? 1 : q;
+            double colourTimes = oneColour ? 1 : q;
             out[o + FragmentLayout.CHANNEL + FragmentLayout.R] = v[i + CR] * colourTimes;
             out[o + FragmentLayout.CHANNEL + FragmentLayout.G] = v[i + CG] * colourTimes;
             out[o + FragmentLayout.CHANNEL + FragmentLayout.B] = v[i + CB] * colourTimes;

@@ -142,14 +142,14 @@ public final class LitPrimitives {
 
     /**
      * The look of the primitives recorded next: their colours known, fogged
-     * by {@code fog} ({@code phong} null; {@code flat}: each polygon's one
-     * colour, as it is, {@link FragmentStage#flat}), or lit at every pixel as
+     * by {@code fog} ({@code phong} null; {@code oneColour}: each primitive's
+     * one colour, as it is, {@link FragmentStage#oneColour}), or lit at every pixel as
      * {@code phong} lights now, then fogged. Looks are made again only when
      * one of these changed.
      */
-    int look(Fog fog, LitState phong, boolean flat) {
+    int look(Fog fog, LitState phong, boolean oneColour) {
         shadesLater |= phong != null && FragmentStage.paysToWait(phong);
-        return batches.filling().look(fog, phong == null ? null : phong.frozenShader(), flat);
+        return batches.filling().look(fog, phong == null ? null : phong.frozenShader(), oneColour);
     }
 
     /**
@@ -241,13 +241,13 @@ public final class LitPrimitives {
         /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
         final List<Fog> fogs = new ArrayList<>();
         final List<Supplier<PointShader>> shaders = new ArrayList<>();
-        /** Whether a look's colours are each polygon's one colour, as it is (flat). */
-        final List<Boolean> flats = new ArrayList<>();
+        /** Whether a look's colours are each primitive's one colour, as it is. */
+        final List<Boolean> oneColours = new ArrayList<>();
         int lastLook = -1;
         /** The parts of look lastLook (when it is not -1). */
         private Fog lastFog;
         private Supplier<PointShader> lastShader;
-        private boolean lastFlat;
+        private boolean lastOneColour;
         /**
          * For each band, the primitives that may touch its rows
          * ({@link BatchDrawing#mayTouch}), in drawing order: a band's drawer
@@ -269,21 +269,21 @@ public final class LitPrimitives {
             last = false;
             fogs.clear();
             shaders.clear();
-            flats.clear();
+            oneColours.clear();
             lastLook = -1;
             Arrays.fill(inBandCount, 0);
         }
 
-        int look(Fog fog, Supplier<PointShader> shader, boolean flat) {
+        int look(Fog fog, Supplier<PointShader> shader, boolean oneColour) {
             // asked for every primitive: the last look's parts are compared as fields, not read from the lists
-            if (lastLook < 0 || fog != lastFog || shader != lastShader || flat != lastFlat) {
+            if (lastLook < 0 || fog != lastFog || shader != lastShader || oneColour != lastOneColour) {
                 fogs.add(fog);
                 shaders.add(shader);
-                flats.add(flat);
+                oneColours.add(oneColour);
                 lastLook = fogs.size() - 1;
                 lastFog = fog;
                 lastShader = shader;
-                lastFlat = flat;
+                lastOneColour = oneColour;
             }
             return lastLook;
         }
@@ -456,8 +456,8 @@ public final class LitPrimitives {
             look = l;
             Supplier<PointShader> s = b.shaders.get(l);
             if (s == null) {
-                if (b.flats.get(l)) {
-                    fragments.flat(b.fogs.get(l));
+                if (b.oneColours.get(l)) {
+                    fragments.oneColour(b.fogs.get(l));
                 } else {
                     fragments.colours(b.fogs.get(l));
                 }

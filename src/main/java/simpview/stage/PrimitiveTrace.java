@@ -72,6 +72,15 @@ public interface PrimitiveTrace {
     }
 
     /**
+     * The lit primitive {@link #read} next carries one colour, the same at
+     * every vertex, and its colour channels hold it as it is, not times q as
+     * its other channels are (FragmentStage.oneColour). Told only then, just
+     * before that read.
+     */
+    default void oneColour() {
+    }
+
+    /**
      * The filled polygon just told by {@link #unclipped} is flat shaded: it
      * was lit once, at {@code once}[0..2] (its vertices' centroid, camera
      * space), with the normal {@code once}[3..5] (the sum of its vertices'

@@ -323,6 +323,30 @@ class LightingExplanationTest {
     }
 
     /**
+     * The same line in one colour, kd 0.5 at both ends: its kd at every pixel
+     * is 0.5 to the bit, and so its byte round(127.5) = 128. The explanation
+     * shows each end's kd as it is and says why the pixel's is the same.
+     */
+    @Test
+    void aLitLineOfOneColourIsThatColourToTheBit() throws Exception {
+        Path file = dir.resolve("grey.simp");
+        Files.writeString(file, "camera -1 -1 1 1 -1 -100\nline (-5 -5 -10 0.5 0.5 0.5) (5 5 -40 0.5 0.5 0.5)\n");
+        double[] half = {0.5, 0.5, 0.5};
+        for (int k = 0; k <= 203; k++) {
+            PixelReport r = new PixelInspector().inspect(InspectedScene.of(file), 163 + k, 163 + k);
+            assertArrayEquals(half, r.explanation().vector("kd"), 0, "step " + k);
+            assertArrayEquals(new int[] {128, 128, 128}, r.explanation().bytes("final_rgb"), "step " + k);
+            if (k == 137) {
+                Terms along = r.explanation().terms("along");
+                assertArrayEquals(half, along.terms("start").vector("kd"), 0);
+                assertArrayEquals(half, along.terms("end").vector("kd"), 0);
+                String rule = (String) along.get("rule");
+                assertTrue(rule.contains("both ends carry the same kd"), rule);
+            }
+        }
+    }
+
+    /**
      * A lit wire triangle: camera (-20, -20, -40), (20, -20, -40) and
      * (0, 20, -40) land at window (-0.5, -0.5), (0.5, -0.5) and (0, 0.5),
      * panel (162.5, 162.5), (487.5, 162.5) and (325, 487.5). Its edge from
