@@ -17,6 +17,7 @@ import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
 import simpview.inspect.PixelReport;
 import simpview.pages.Assignment1;
+import simpview.pages.Assignment2;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneLibrary;
 import simpview.surface.PageCanvas;
@@ -126,6 +127,8 @@ final class InspectCommand implements Callable<Integer> {
         try {
             InspectedScene scene;
             if (what.page != null) {
+                usage(what.page >= 1 && what.page <= Assignment2.COUNT, "--page must be 4 to " + Assignment2.COUNT
+                        + " (the pages drawn from scene files), not " + what.page);
                 try {
                     scene = InspectedScene.page(what.page, PageDrawing.context(parent.ownScenes(), seed, simpDir,
                             PageDrawing.warningsTo(err())));

@@ -9,6 +9,7 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.Setting;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -80,12 +81,17 @@ public final class PageDrawing {
         return simpDir == null ? context : context.withSimpDir(simpDir);
     }
 
-    /** A monitor that prints each warning as a "warning: ..." line on {@code err}. */
+    /** A monitor that prints each warning as a "warning: ..." line on {@code err}, naming settings by option. */
     static SceneMonitor warningsTo(PrintWriter err) {
         return new SceneMonitor() {
             @Override
             public void warning(String message) {
                 err.println("warning: " + message);
+            }
+
+            @Override
+            public String nameOf(Setting setting) {
+                return setting.option();
             }
         };
     }

@@ -43,7 +43,7 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
      */
     public static InspectedScene page(int number, PageContext context) throws SceneException {
         if (number < 1 || number > Assignment2.COUNT) {
-            throw new IllegalArgumentException("--page must be 4 to " + Assignment2.COUNT
+            throw new IllegalArgumentException("InspectedScene.page takes pages 4 to " + Assignment2.COUNT
                     + " (the pages drawn from scene files), not " + number);
         }
         Page page = Assignment2.page(number);

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import simpview.scene.SceneException;
 import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.Setting;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -44,7 +45,7 @@ public final class ScenePage implements Page {
         return List.of();
     }
 
-    /** Whether it is one of the course's scenes (read from the folder --simp-dir names), not one of simpview's own. */
+    /** Whether it is one of the course's scenes (read from the folder {@link PageContext#simpDir} names), not one of simpview's own. */
     public boolean isCourses() {
         return !ownScene;
     }
@@ -69,7 +70,8 @@ public final class ScenePage implements Page {
             Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
             throw new SceneException(file, 0, 0, "", fileName + " was not found in "
                     + dir.toAbsolutePath().normalize()
-                    + (ownScene ? "" : "; name the folder of the course's scene files with --simp-dir DIR"));
+                    + (ownScene ? "" : "; name the folder of the course's scene files with "
+                            + context.monitor().nameOf(Setting.COURSE_FOLDER)));
         }
         return file;
     }

@@ -5,6 +5,8 @@ import java.util.List;
 import java.util.Optional;
 import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.Setting;
 
 /**
  * How the window starts.
@@ -21,6 +23,14 @@ import simpview.pages.PageContext;
  */
 public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
         int threads, boolean threadsGiven, A1Rule a1Rule) {
+
+    /** Warns nobody; names each setting as the command line that opened the window does, by its option. */
+    private static final SceneMonitor NAMING_OPTIONS = new SceneMonitor() {
+        @Override
+        public String nameOf(Setting setting) {
+            return setting.option();
+        }
+    };
 
     public WindowOptions {
         sceneList = List.copyOf(sceneList);
@@ -62,7 +72,9 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
         return new WindowOptions(seed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, rule);
     }
 
+    /** The pages' context; its messages name settings as the command line that opened the window does. */
     PageContext pageContext() {
-        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir).withA1Rule(a1Rule);
+        return PageContext.of(ownScenes).withSeed(seed).withSimpDir(simpDir).withA1Rule(a1Rule)
+                .withMonitor(NAMING_OPTIONS);
     }
 }

@@ -51,6 +51,15 @@ public interface SceneMonitor {
     default void warning(String message) {
     }
 
+    /**
+     * What this monitor's reader calls {@code setting}, for the messages that
+     * tell them to change it: the library's method unless the monitor is told
+     * otherwise (the command line's monitors name its options).
+     */
+    default String nameOf(Setting setting) {
+        return setting.method();
+    }
+
     /** Who follows the scene's primitives one by one (the window's instruments), or null: nobody, at no cost. */
     default PrimitiveTrace trace() {
         return null;

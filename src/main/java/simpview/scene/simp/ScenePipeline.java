@@ -305,8 +305,8 @@ public final class ScenePipeline {
                 && client.firstOwnColours() != null) {
             // the course's rule, but a student who gave colours expects to see them
             monitor.warning(client.firstOwnColours() + ": the vertices' own colours are not drawn: a depth-cued scene"
-                    + " takes its colours from the depth cue (SPEC Part 1); --own-colors (render, compare, check,"
-                    + " inspect), or C in the window, draws them (this is the first line with colours)");
+                    + " takes its colours from the depth cue (SPEC Part 1); " + monitor.nameOf(Setting.OWN_COLOURS)
+                    + ", draws them (this is the first line with colours)");
         }
         double[] centre = client.shownCentre();
         if (centre != null) {

@@ -23,6 +23,7 @@ import simpview.scene.SceneException;
 import simpview.surface.Provenance;
 import simpview.scene.simp.SceneCancelledException;
 import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.Setting;
 import simpview.surface.PageCanvas;
 
 /**
@@ -106,6 +107,12 @@ public final class RenderJob implements SceneMonitor {
     @Override
     public void warning(String message) {
         warnings.add(message);
+    }
+
+    /** A setting as the command line that opened the window names it (its key, where the window has one). */
+    @Override
+    public String nameOf(Setting setting) {
+        return setting.option();
     }
 
     @Override

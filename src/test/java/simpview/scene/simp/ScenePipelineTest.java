@@ -194,8 +194,9 @@ class ScenePipelineTest {
                 "polygon (-60 -50 -50 1 0 0) (60 -50 -50 0 1 0) (0 60 -50 0 0 1)");
         draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of("colours.simp:2: the vertices' own colours are not drawn: a depth-cued scene takes its"
-                + " colours from the depth cue (SPEC Part 1); --own-colors (render, compare, check, inspect), or C in"
-                + " the window, draws them (this is the first line with colours)"), warnings);
+                + " colours from the depth cue (SPEC Part 1); ScenePipeline.Options.withOwnColours(true)"
+                + " (PageContext.withOwnColours(true) for a page), draws them (this is the first line with colours)"),
+                warnings, "a Java caller's monitor is told the library's method, not the command line's option");
         warnings.clear();
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
