@@ -24,8 +24,10 @@ public final class DepthCuedGeometry implements GeometryStage {
     private final double[] panel = new double[Painter.STRIDE];
     private long culled;
     private long primitives;
-    /** Primitives not drawn because a vertex of theirs is not finite in camera space. */
+    /** Primitives not drawn because a vertex of theirs is not finite in camera space, or on the panel. */
     private long nonFinite;
+    /** Whether the first of those was finite in camera space and overflowed on its way to the panel. */
+    private boolean firstBeyondPanel;
     /** Told of the primitives culled (the inspector), or null. */
     private PrimitiveTrace trace;
 
@@ -63,7 +65,37 @@ public final class DepthCuedGeometry implements GeometryStage {
             return;
         }
         project(rgb, count);
+        if (!onPanel(kind, count)) {
+            firstBeyondPanel |= nonFinite++ == 0;
+            return;
+        }
         sink.add(kind, panel);
+    }
+
+    /**
+     * Whether the rasterizers can take the primitive just projected: its
+     * panel x and y finite (a vertex beyond about 2.7e305 overflows the
+     * panel's scale) and, filled, twice its area there too (the fill rule's
+     * test, whose products overflow for a triangle some 1e154 across), so
+     * that what they would drop without a word is counted instead.
+     */
+    private boolean onPanel(int kind, int count) {
+        int n = Vertex.NUMBERS;
+        double sum = 0;
+        for (int k = 0; k < count; k++) {
+            sum += panel[n * k + Vertex.X] + panel[n * k + Vertex.Y];
+        }
+        if (!Double.isFinite(sum) && !GeometryStage.allFinite(panel, n, count)) {
+            return false;
+        }
+        if (kind != Painter.FILLED) {
+            return true;
+        }
+        double x1 = panel[Vertex.X];
+        double y1 = panel[Vertex.Y];
+        double doubleArea = (panel[n + Vertex.X] - x1) * (panel[2 * n + Vertex.Y] - y1)
+                - (panel[n + Vertex.Y] - y1) * (panel[2 * n + Vertex.X] - x1);
+        return Double.isFinite(doubleArea);
     }
 
     /** The vertices to camera space; false when one of them is not finite there. */
@@ -117,6 +149,14 @@ public final class DepthCuedGeometry implements GeometryStage {
     @Override
     public long nonFiniteCount() {
         return nonFinite;
+    }
+
+    /**
+     * Whether the first primitive {@link #nonFiniteCount} counted was finite
+     * after the transforms and overflowed only on its way to the panel.
+     */
+    public boolean firstBeyondPanel() {
+        return firstBeyondPanel;
     }
 
     @Override

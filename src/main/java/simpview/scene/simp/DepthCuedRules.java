@@ -81,6 +81,17 @@ final class DepthCuedRules implements RuleSet {
         return firstNonFinite.place();
     }
 
+    /** After the transforms (a depth-cued scene has no camera: the CTM goes straight to the panel), or on the panel. */
+    @Override
+    public String nonFiniteWhy() {
+        return geometry.firstBeyondPanel()
+                ? "a vertex lies too far out to draw: its numbers and the CTM's are finite, but its panel"
+                        + " coordinates (650 pixels to 200 units), or the filled triangle's area there, go beyond"
+                        + " about 1.8e308"
+                : "a vertex comes out infinite or NaN after the transforms (its numbers are finite, but the CTM"
+                        + " takes them beyond about 1.8e308)";
+    }
+
     /** Tells a trace that wants them the primitive's vertices as written and the CTM (as turned for the view). */
     private void source(Matrix4 ctm, double[] xyz, int vertices) {
         if (trace != null && trace.wantsSource()) {

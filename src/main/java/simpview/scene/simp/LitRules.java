@@ -101,6 +101,12 @@ final class LitRules implements RuleSet {
         return firstNonFinite.place();
     }
 
+    @Override
+    public String nonFiniteWhy() {
+        return "a vertex comes out infinite or NaN in camera space (its numbers are finite, but the CTM takes them"
+                + " beyond about 1.8e308)";
+    }
+
     /** Tells a trace that wants them the primitive's vertices as written and the CTM. */
     private void source(Matrix4 ctm, double[] xyz, int vertices) {
         if (trace != null && trace.wantsSource()) {

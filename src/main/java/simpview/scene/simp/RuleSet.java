@@ -36,6 +36,12 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     String firstNonFinite();
 
     /**
+     * Why the first of those was not drawn, for the scene's warning: "a vertex
+     * comes out infinite or NaN ..." and why it could (its numbers are finite).
+     */
+    String nonFiniteWhy();
+
+    /**
      * Where the first colour outside 0 to 1 that these rules read themselves
      * (an .obj model's, "dummy.obj:12") was clamped, or null; asked after
      * each lit command, so that the scene's warning names the first in

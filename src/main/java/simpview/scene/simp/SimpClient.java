@@ -319,10 +319,7 @@ public final class SimpClient {
         String nonFinite = rules.firstNonFinite();
         if (nonFinite != null) {
             long more = rules.nonFiniteCount() - 1;
-            // a depth-cued scene has no camera: its vertices go from the CTM straight to the panel
-            String where = rules instanceof LitRules ? "in camera space" : "after the transforms";
-            w.add(nonFinite + ": a vertex comes out infinite or NaN " + where + " (its numbers are finite, but the"
-                    + " CTM takes them beyond about 1.8e308), so this primitive was not drawn"
+            w.add(nonFinite + ": " + rules.nonFiniteWhy() + ", so this primitive was not drawn"
                     + (more > 0 ? ", nor " + more + " more like it" : ""));
         }
         if (firstIgnored != null) {

@@ -137,6 +137,27 @@ class SimpClientTest {
                 + " like it"), scene.warnings);
     }
 
+    /**
+     * A vertex finite after the transforms but too far out for the panel's scale (650 pixels to 200 units
+     * overflows beyond about 2.7e305), or a filled triangle whose area there overflows (some 1e154 across), was
+     * dropped by the rasterizers without a word; the scene names the first and counts the rest, and still draws
+     * a triangle as far out whose area fits and a wire one whose only lines are drawn.
+     */
+    @Test
+    void aVertexTooFarOutForThePanelIsNamedAndNotDrawn() throws Exception {
+        scene.write("s", "line (0,0,-10)(1,1,-10)", "line (-3e305 0 -10) (50 50 -10)",
+                "polygon (-1e200,-1e200,-10) (1e200,-1e200,-10) (0,1e200,-10)",
+                "polygon (-1e305,-50,-10) (50,-50,-10) (0,50,-10)", "wire",
+                "polygon (-1e200,-1e200,-10) (1e200,-1e200,-10) (0,1e200,-10)");
+        scene.run("s");
+        assertEquals(1, scene.lines.size());
+        assertEquals(1, scene.filled.size(), "the 1e305 triangle's area fits");
+        assertEquals(1, scene.wire.size());
+        assertEquals(List.of("s.simp:2 line: a vertex lies too far out to draw: its numbers and the CTM's are"
+                + " finite, but its panel coordinates (650 pixels to 200 units), or the filled triangle's area there,"
+                + " go beyond about 1.8e308, so this primitive was not drawn, nor 1 more like it"), scene.warnings);
+    }
+
     @Test
     void unclosedBraceIsOnlyAWarning() throws Exception {
         scene.write("s", "{", "{", "}", "line (0,0,-1) (1,1,-1)");
