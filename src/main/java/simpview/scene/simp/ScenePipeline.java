@@ -70,7 +70,10 @@ public final class ScenePipeline {
      * @param library where the scene's small .simp files and its obj models come from, and are kept:
      *     by whoever draws, across pictures
      * @param workingDir where {@code file} and {@code obj} names are looked for after the including
-     *     file's folder (the course's programs looked in the working directory), absolute
+     *     file's folder (the course's programs looked in the working directory), absolute. SPEC's second
+     *     place, so the process's working directory by default for every caller: a name is always looked
+     *     for first beside the file that names it, and a Java caller whose scenes rely on a name found
+     *     only where the course's program ran names that folder with {@link #withWorkingDir}
      */
     public record Options(Rgb near, Rgb far, boolean ownColours, Rules rules, SceneLibrary library,
             Path workingDir) {
