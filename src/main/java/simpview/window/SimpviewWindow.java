@@ -693,11 +693,25 @@ public final class SimpviewWindow {
         int x = pinnedX >= 0 ? pinnedX : hoverX;
         int y = pinnedX >= 0 ? pinnedY : hoverY;
         String pixel = pinnedX >= 0 ? "the pinned pixel" : "the pixel under the pointer";
+        if (x < 0 || y < 0) {
+            // The pointer is off the picture (over the side panel, the status strip, beside the page) and none is pinned.
+            String words = "There is no pixel under the pointer: point at the picture, or pin a pixel (P, or Shift+G "
+                    + "for its coordinates), then press J.";
+            if (wholeDrawn) {
+                ownerWords = words + " Back at primitive " + stepBeforeOwner + ".";
+                settings = settings.withStepLimit(stepBeforeOwner);
+                reload();
+                ownerJob = pending;
+                return;
+            }
+            status.say(words);
+            return;
+        }
         int owner = Inspector.ownerAt(shown, x, y);
         if (shown != null && shown.view() instanceof View.OfAssignment1Page page) {
-            int[] last = x < 0 || y < 0 ? null : A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
+            int[] last = A1Pixel.lastAt(page.number(), shown.seed(), shown.a1Rule(), x, y);
             owner = last == null ? -1 : last[1];
-        } else if (settings.stepLimit() >= 0 && x >= 0 && y >= 0) {
+        } else if (settings.stepLimit() >= 0) {
             stepBeforeOwner = settings.stepLimit();
             settings = settings.withStepLimit(-1);
             reload();

@@ -153,6 +153,42 @@ public class InspectorPanelWindowTest extends WindowTestCase {
                 && window.inspectorPanel().text().contains("vertices of primitive 2:"), "the owner's vertices");
     }
 
+    /**
+     * J while stepping with no pixel pinned and the pointer off the picture (here over the status strip): there is
+     * no pixel to look for, and the words say so and what to do, not that no primitive draws "the pixel under the
+     * pointer". The step stays where it was.
+     */
+    @Test
+    void jWithThePointerOffThePictureSaysThereIsNoPixel() throws Exception {
+        Path scene = dir.resolve("off.simp");
+        Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\n"
+                + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        driver.press(KeyEvent.VK_CLOSE_BRACKET);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 1 of 2"),
+                "the first step");
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.awaitEdt(() -> window.status().inspectorText().startsWith("x 325, y 324"), "the inspector on the centre");
+        Point strip = driver.onEdt(() -> {
+            Point corner = window.status().component().getLocationOnScreen();
+            return new Point(corner.x + window.status().component().getWidth() / 2,
+                    corner.y + window.status().component().getHeight() / 2);
+        });
+        driver.robot().mouseMove(strip.x, strip.y);
+        driver.awaitEdt(() -> !window.status().inspectorText().startsWith("x "), "the pointer off the picture");
+        driver.press(KeyEvent.VK_J);
+        driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("There is no pixel under"),
+                "the words for no pixel");
+        assertEquals("There is no pixel under the pointer: point at the picture, or pin a pixel (P, or Shift+G for its "
+                + "coordinates), then press J.", driver.onEdt(() -> window.status().messageText()));
+        assertEquals(1, (int) driver.onEdt(() -> window.stepLimit()), "the step is where it was");
+    }
+
     private static JTextArea textArea(SimpviewWindow window) {
         return (JTextArea) ((javax.swing.JScrollPane) window.inspectorPanel().component()).getViewport().getView();
     }
