@@ -12,6 +12,7 @@ import simpview.pages.LineTestPage;
 import simpview.pages.Page;
 import simpview.pages.PolygonTestPage;
 import simpview.raster.FilledPolygonRenderer;
+import simpview.surface.Colors;
 import simpview.surface.CoverageDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.DrawableDecorator;
@@ -22,8 +23,8 @@ import simpview.surface.Span;
 
 /**
  * The history of one pixel of the first assignment's pages (SPEC Part 3):
- * the page is painted as it is drawn (white, four black panels), and the
- * pixel's panel drawn again by the page's own code
+ * the pixel starts as the page starts (white around the panels, black in
+ * them), and the pixel's panel is drawn again by the page's own code
  * ({@link LineTestPage#drawPanel}, {@link PolygonTestPage#drawPanel}) through
  * a probe that lets only the writes at the pixel through and tells each: the
  * line or triangle that made it, its colour, and the pixel's colour before
@@ -55,9 +56,8 @@ public final class A1Inspector {
         }
         int column = x;
         int row = last - y;
-        PageCanvas canvas = new PageCanvas();
-        Drawable[] panels = A1Layout.paint(canvas);
         int panel = A1Layout.panelAt(column, row);
+        int argb = Colors.WHITE; // the page around the panels
         List<A1Report.Write> writes = new ArrayList<>();
         List<A1Report.CentreCase> centre = new ArrayList<>();
         String drawer = null;
@@ -67,11 +67,12 @@ public final class A1Inspector {
             px = column - A1Layout.left(panel);
             py = A1Layout.top(panel) + A1Layout.PANEL - 1 - row;
             Watch watch = new Watch(px, py, writes);
+            OnePixel pixel = new OnePixel(px, py);
             if (shown instanceof LineTestPage lines) {
                 drawer = LineTestPage.drawerName(panel, rule);
                 A1Lines set = lines.lines(seed);
                 watch.lines = set;
-                Drawable probe = new Probe(watch, panels[panel - 1]);
+                Drawable probe = new Probe(watch, pixel);
                 // The antialiased drawer blends through a CoverageDrawable it is given as it is.
                 Drawable target = panel == 4 ? new CoverageProbe(watch, probe) : probe;
                 LineTestPage.drawPanel(panel, rule, set, target, i -> watch.primitive = i);
@@ -82,7 +83,7 @@ public final class A1Inspector {
                 A1Polygons scenes = new A1Polygons(seed, rule);
                 watch.triangles = scenes.scene(panel);
                 watch.ghost = polygons.ghost();
-                polygons.drawPanel(panel, scenes, new Probe(watch, panels[panel - 1]), new FilledPolygonRenderer(),
+                polygons.drawPanel(panel, scenes, new Probe(watch, pixel), new FilledPolygonRenderer(),
                         i -> watch.primitive = i);
                 centre.addAll(centreCases(scenes.scene(panel), px, py));
             }
@@ -91,9 +92,10 @@ public final class A1Inspector {
             for (A1Report.Write w : writes) {
                 w.of = watch.count;
             }
+            argb = pixel.getPixel(px, py);
         }
         return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
-                canvas.image().getRGB(column, row), panel, drawer, px, py, writes, centre);
+                argb, panel, drawer, px, py, writes, centre);
     }
 
     /**
@@ -193,6 +195,48 @@ public final class A1Inspector {
             if (s.y == watch.y && s.x0 <= watch.x && watch.x < s.x1) {
                 setPixel(watch.x, s.y, s.zAt(watch.x), s.argbAt(watch.x));
             }
+        }
+    }
+
+    /**
+     * The panel as the replay needs it: one pixel, the one watched, kept; the panel's background everywhere else
+     * (what a ghost or a blend reads beside the pixel only makes writes the probe drops). No page is drawn: a
+     * 750x750 canvas made for each pixel inspected was most of an inspection's time, and its garbage, while the
+     * pointer swept a page.
+     */
+    private static final class OnePixel implements Drawable {
+        private final int x;
+        private final int y;
+        private int colour = PageCanvas.BACKGROUND;
+
+        OnePixel(int x, int y) {
+            this.x = x;
+            this.y = y;
+        }
+
+        @Override
+        public int width() {
+            return A1Layout.PANEL;
+        }
+
+        @Override
+        public int height() {
+            return A1Layout.PANEL;
+        }
+
+        @Override
+        public void setPixel(int x, int y, double z, int argb) {
+            if (x == this.x && y == this.y) {
+                colour = argb;
+            }
+        }
+
+        @Override
+        public int getPixel(int x, int y) {
+            if (x < 0 || y < 0 || x >= A1Layout.PANEL || y >= A1Layout.PANEL) {
+                return 0;
+            }
+            return (x == this.x && y == this.y ? colour : PageCanvas.BACKGROUND) | 0xFF000000;
         }
     }
 

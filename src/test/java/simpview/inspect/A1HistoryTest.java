@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -259,5 +260,26 @@ class A1HistoryTest {
         assertTrue(margin.json().contains("\"panel\": null"), margin.json());
         assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(1, SEED, A1Rule.SPEC, 750, 3));
         assertThrows(IllegalArgumentException.class, () -> A1Inspector.inspect(6, SEED, A1Rule.SPEC, 3, 3));
+    }
+
+    /**
+     * Hovering a first-assignment page inspects a pixel at every move of the pointer: an inspection draws the
+     * pixel's panel again through a one-pixel probe and no page around it. A 750x750 canvas made for each was
+     * 5.6 MB of garbage an inspection (most of its time, and a pause now and then as the pointer swept);
+     * without it the largest page, the polygons, makes about 150 KB.
+     */
+    @Test
+    void anInspectionDrawsNoPage() {
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long thread = Thread.currentThread().getId();
+        for (int n = 1; n <= Assignment1.COUNT; n++) {
+            A1Inspector.inspect(n, SEED, A1Rule.SPEC, 200, 600); // loads and links everything first
+            long before = threads.getThreadAllocatedBytes(thread);
+            for (int k = 0; k < 5; k++) {
+                A1Inspector.inspect(n, SEED, A1Rule.SPEC, 100 + 120 * k, 100 + 130 * k);
+            }
+            long each = (threads.getThreadAllocatedBytes(thread) - before) / 5;
+            assertTrue(each < 1_000_000, "page " + n + ": " + each + " bytes allocated an inspection");
+        }
     }
 }
