@@ -5,14 +5,16 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 /**
  * The key help (F1), drawn in a box over the whole window (its glass pane:
- * over the page and the inspector panel, the pointer's events passing
- * through): in the fewest columns in which each row's keys, then what they
+ * over the page and the inspector panel; a click on it hides it, and does
+ * nothing to the page it hides): in the fewest columns in which each row's keys, then what they
  * do wrapped to the column's width, fit the window; in a window too small
  * for that, as many columns as its height needs and its width holds, the
  * words cut short with "…", and what no column holds named at the bottom.
@@ -25,6 +27,13 @@ public final class HelpOverlay extends javax.swing.JComponent {
         setName("key help");
         setOpaque(false);
         setVisible(false);
+        // A click meant to close the help must not step the page behind it, unseen.
+        addMouseListener(new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                setVisible(false);
+            }
+        });
     }
 
     @Override
@@ -139,7 +148,7 @@ public final class HelpOverlay extends javax.swing.JComponent {
         return false;
     }
 
-    private static final String HEADING_TEXT = "simpview — keys, menus and gestures (F1 hides this)";
+    private static final String HEADING_TEXT = "simpview — keys, menus and gestures (F1, Esc or a click hides this)";
 
     /**
      * One row from {@code baseline} down: a heading, or its keys at {@code x}

@@ -441,7 +441,13 @@ public final class SimpviewWindow {
             case ASSIGNMENT_4 -> () -> showCoursePages(4);
             case A1_RULE -> () -> toggleA1Rule();
             case SEED -> () -> newSeed();
-            case CANCEL -> () -> cancel();
+            case CANCEL -> () -> {
+                if (help.isVisible()) {
+                    help.setVisible(false); // Escape closes what is in front first
+                } else {
+                    cancel();
+                }
+            };
             case INSPECTOR -> () -> toggleInspectorPanel();
             case PIN -> () -> togglePin();
             case GO_TO_PIXEL -> () -> askForPixel();

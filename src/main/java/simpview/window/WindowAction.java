@@ -105,7 +105,8 @@ public enum WindowAction {
             + "the rule the course's pictures show (Bresenham on the ends' given minor coordinates, rows at integer "
             + "y), not SPEC's (again: SPEC's)", "shift R"),
     SEED(Menu.PAGE, Entry.FIRST_OF_GROUP, "New seed", "a new seed for the random pages (A2 1-3, A1 3-5)", "R"),
-    CANCEL(Menu.PAGE, "Stop drawing", "stop drawing a long scene (the page on screen stays)", "ESCAPE"),
+    CANCEL(Menu.PAGE, "Stop drawing", "stop drawing a long scene (the page on screen stays); with this help "
+            + "shown, hide it first", "ESCAPE"),
 
     INSPECTOR(Menu.INSTRUMENTS, Entry.TOGGLE,
             "Inspector panel", "the panel beside the page: the pixel's history, its colour "
@@ -135,7 +136,8 @@ public enum WindowAction {
             + "under the pointer (or the pinned one) in the whole picture, from any step", "J"),
 
     HELP(Menu.HELP, Entry.TOGGLE,
-            "Keys and gestures", "these keys, menu entries and gestures over the window (again: hide them)",
+            "Keys and gestures", "these keys, menu entries and gestures over the window (again, Escape or a click: "
+            + "hide them)",
             "F1");
 
     /** The menus of the menu bar, in order, with their mnemonics. */

@@ -179,6 +179,18 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window.frame().getGlassPane().isShowing(), "the key help shown");
         driver.press(KeyEvent.VK_F1);
         driver.awaitEdt(() -> !window.frame().getGlassPane().isVisible(), "the key help hidden by F1");
+        // Escape hides it too; so does a click on it, and the click does not step the page hidden behind it.
+        driver.press(KeyEvent.VK_F1);
+        driver.awaitEdt(() -> window.frame().getGlassPane().isShowing(), "the key help shown again");
+        driver.press(KeyEvent.VK_ESCAPE);
+        driver.awaitEdt(() -> !window.frame().getGlassPane().isVisible(), "the key help hidden by Escape");
+        driver.press(KeyEvent.VK_F1);
+        driver.awaitEdt(() -> window.frame().getGlassPane().isShowing(), "the key help shown once more");
+        driver.click(window.pageView().getRootPane());
+        driver.awaitEdt(() -> !window.frame().getGlassPane().isVisible(), "the key help hidden by a click");
+        driver.settle();
+        assertFalse(driver.onEdt(window::busy), "the click drew no other page");
+        assertEquals(new View.OfAssignment1Page(1), driver.onEdt(() -> window.shown().view()), "still page 1");
     }
 
     @Test
