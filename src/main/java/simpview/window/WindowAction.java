@@ -112,8 +112,8 @@ public enum WindowAction {
             "Inspector panel", "the panel beside the page: the pixel's history, its colour "
             + "explained, its primitive's vertices; it follows the pointer, or the pinned pixel", "I"),
     PIN(Menu.INSTRUMENTS, Entry.TOGGLE, "Pin the pixel", "pin the inspected pixel (again: unpin)", "P"),
-    GO_TO_PIXEL(Menu.INSTRUMENTS, "Go to pixel…", "go to a pixel by its panel coordinates (x right, y up) and pin "
-            + "it", "shift G"),
+    GO_TO_PIXEL(Menu.INSTRUMENTS, "Go to pixel…", "go to a pixel by its panel coordinates (x right, y up; on the "
+            + "first assignment's pages, the page's) and pin it", "shift G"),
     COPY(Menu.INSTRUMENTS, "Copy", "copy the text selected in the inspector panel, else the status line's "
             + "inspector", "menu C"),
     COPY_CHAIN(Menu.INSTRUMENTS, "Copy the pixel's include chain", "copy where the inspected pixel came from: "
