@@ -11,6 +11,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.ScrollPaneConstants;
 import javax.swing.SwingUtilities;
+import javax.swing.Timer;
 import simpview.inspect.A1Inspector;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
@@ -52,6 +53,8 @@ import simpview.scene.simp.SourcePlace;
 public final class InspectorPanel {
 
     private static final int WIDTH = 420;
+    /** How long a replay may take before the panel says it is drawing again, in place of the last answer. */
+    private static final int WAITING_WORDS_AFTER_MILLIS = 250;
 
     private final JTextArea text = new JTextArea();
     private final JScrollPane scroll;
@@ -248,15 +251,24 @@ public final class InspectorPanel {
     }
 
     /**
-     * Shows {@code waitingText} at once, then {@code work}'s answer (after
-     * {@code before}, or nothing) once the worker has it, unless a newer
-     * request came first.
+     * Shows {@code work}'s answer (after {@code before}, or nothing) once the
+     * worker has it, unless a newer request came first; until then the last
+     * answer stays, and {@code waitingText} takes its place if the answer
+     * takes longer than {@link #WAITING_WORDS_AFTER_MILLIS}.
      */
     private void replay(String before, String waitingText, Supplier<Answer> work) {
         int mine = ++request;
         answered = false;
         String heading = before == null ? "" : before + "\n\n";
-        text.setText(heading + waitingText);
+        // The last answer stays until this one's comes: said at once, the waiting words flashed in the panel at
+        // every move of the pointer, most replays taking a few milliseconds. A slow one says it is coming.
+        Timer slow = new Timer(WAITING_WORDS_AFTER_MILLIS, e -> {
+            if (mine == request && !answered) {
+                text.setText(heading + waitingText);
+            }
+        });
+        slow.setRepeats(false);
+        slow.start();
         Runnable job = () -> {
             Answer answer;
             try {

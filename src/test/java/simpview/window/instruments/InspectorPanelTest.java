@@ -1,5 +1,6 @@
 package simpview.window.instruments;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
@@ -43,6 +44,11 @@ class InspectorPanelTest {
             }
             panel.inspect(InspectedScene.of(scene), 325, 325, "While stepping.", null, stepped);
         });
+        return awaitAnswer();
+    }
+
+    /** The panel's text once it has answered its last request. */
+    private String awaitAnswer() throws Exception {
         long deadline = System.nanoTime() + 20_000_000_000L;
         AtomicReference<String> text = new AtomicReference<>();
         while (System.nanoTime() < deadline) {
@@ -74,5 +80,25 @@ class InspectorPanelTest {
         assertTrue(beyond.startsWith("While stepping.\n"), beyond);
         assertFalse(beyond.contains("the one stepped to"), beyond);
         assertTrue(beyond.contains("vertices of primitive 2:"), "the owner's table instead: " + beyond);
+    }
+
+    /**
+     * A new request leaves the last answer in the panel until its own comes:
+     * the waiting words, said at once, flashed at every move of the pointer
+     * over a page, most replays taking a few milliseconds.
+     */
+    @Test
+    void theLastAnswerStaysUntilTheNextOnesComes() throws Exception {
+        Path scene = dir.resolve("one.simp");
+        Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\n");
+        String first = answer(scene, 0);
+        AtomicReference<String> right = new AtomicReference<>();
+        onEdt(() -> {
+            panel.inspect(InspectedScene.of(scene), 300, 300, "While stepping.", null, 0);
+            right.set(panel.text());
+        });
+        assertEquals(first, right.get(), "right after the next request");
+        String next = awaitAnswer();
+        assertTrue(next.contains("(300, 300)") && !next.equals(first), "then the new pixel's answer: " + next);
     }
 }
