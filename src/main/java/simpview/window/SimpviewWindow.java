@@ -748,6 +748,10 @@ public final class SimpviewWindow {
             return;
         }
         int total = stepsInAll();
+        if (total == 0) {
+            status.say("There is no primitive to go to: this picture has none.");
+            return;
+        }
         String answer = askAfterKey("Go to primitive (1 to " + total + "):", 'g');
         if (answer == null) {
             return;

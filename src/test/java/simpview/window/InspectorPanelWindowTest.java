@@ -192,4 +192,19 @@ public class InspectorPanelWindowTest extends WindowTestCase {
     private static JTextArea textArea(SimpviewWindow window) {
         return (JTextArea) ((javax.swing.JScrollPane) window.inspectorPanel().component()).getViewport().getView();
     }
+
+    /** G in a scene that draws nothing says so; it asked "Go to primitive (1 to 0)" in a dialog. */
+    @Test
+    void goToAPrimitiveInASceneWithNoneSaysThereIsNone() throws Exception {
+        Path scene = dir.resolve("empty.simp");
+        Files.writeString(scene, "# nothing yet\n");
+        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
+        SimpviewWindow window = driver.window();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window.openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        driver.press(KeyEvent.VK_G);
+        driver.awaitEdt(() -> window.status().messageText().equals(
+                "There is no primitive to go to: this picture has none."), "the words for a picture of no primitives");
+    }
 }
