@@ -444,14 +444,19 @@ public final class CompareBatch {
             return dir;
         }
         List<Path> pictures;
+        List<Path> alternates;
         try {
-            pictures = handedIn(dir, FolderListing.of(dir), ownFolders(dir, outputs)).stream().map(dir::relativize)
-                    .toList();
+            alternates = alternatesInside(dir);
+            pictures = handedIn(dir, FolderListing.of(dir), teachersFolders(dir, outputs)).stream()
+                    .map(dir::relativize).toList();
         } catch (IOException | UncheckedIOException e) {
             return dir; // said when the batch lists it
         }
         Set<String> scenes = sceneFolder != null && Files.isDirectory(sceneFolder) ? scenesIn(sceneFolder).keySet()
                 : Set.of();
+        String handed = alternates.isEmpty() ? "every picture in " + dir : "every picture handed in to " + dir
+                + " (the rubric's accepted alternates, in " + UsageWords.joined(alternates.stream()
+                        .map(Path::toString).toList(), "and") + ", are the teacher's)";
         Path inside = Path.of("");
         for (int depth = 0; !pictures.isEmpty(); depth++) {
             int level = depth;
@@ -461,19 +466,66 @@ public final class CompareBatch {
             Set<String> folders = pictures.stream().map(p -> p.getName(level).toString())
                     .collect(Collectors.toCollection(TreeSet::new));
             if (folders.size() > 1) {
+                Optional<String> theClass = theClassBesideOthers(pictures, level, scenes);
+                if (theClass.isPresent()) {
+                    Path here = dir.resolve(inside);
+                    Path graded = here.resolve(theClass.get());
+                    List<Path> in = pictures.stream().filter(p -> p.getName(level).toString().equals(theClass.get()))
+                            .toList();
+                    List<String> others = folders.stream().filter(f -> !f.equals(theClass.get()))
+                            .map(f -> here.resolve(f).toString()).toList();
+                    err.println(says + "the pictures in " + dir + " are the students' of one class, in " + graded
+                            + ": its folders (" + UsageWords.firstThree(studentsOf(in, level + 1)) + ") are graded as "
+                            + "the submissions, as --dir " + graded + " grades them; "
+                            + Count.of(pictures.size() - in.size(), "picture") + " beside it, in "
+                            + UsageWords.joined(others, "and") + ", " + (pictures.size() - in.size() == 1 ? "is" : "are")
+                            + " taken for the teacher's (reference pictures: no student's folder of a class) and not "
+                            + "graded. Were they a student's, grade that folder with --dir of its own, or move it into "
+                            + graded);
+                    return graded;
+                }
                 if (depth == 0 || !someNameInTwo(pictures, level, scenes)) {
                     return dir; // a class's folder as given, or one student's pictures foldered by part
                 }
                 Path graded = dir.resolve(inside);
-                List<String> names = folders.stream().sorted(SceneList.NATURAL_ORDER).toList();
-                err.println(says + "every picture in " + dir + " is in " + graded + ": its folders ("
-                        + UsageWords.firstThree(names)
+                err.println(says + handed + " is in " + graded + ": its folders ("
+                        + UsageWords.firstThree(studentsOf(pictures, level))
                         + ") are graded as the submissions, as --dir " + graded + " grades them");
                 return graded;
             }
             inside = inside.resolve(folders.iterator().next());
         }
         return dir;
+    }
+
+    /** The folders at {@code level} of the pictures' paths, in natural order: the students of a class's folder. */
+    private static List<String> studentsOf(List<Path> pictures, int level) {
+        return pictures.stream().map(p -> p.getName(level).toString()).distinct().sorted(SceneList.NATURAL_ORDER)
+                .toList();
+    }
+
+    /**
+     * The one folder at {@code level} of the pictures' paths that is a class's folder beside others that are not
+     * (subs/class/alice, subs/class/bob beside subs/reference/page1.png, the teacher's pictures): its pictures are
+     * all in its own folders, two or more of which hold a picture named alike ({@link #someNameInTwo}), and no two
+     * of the other folders at this level do (they would be students of a class themselves, as a class's folder
+     * beside subs/late/cy and subs/late/dee is: ann and bob at its top are two students). Empty when there is
+     * none, or more than one.
+     */
+    private static Optional<String> theClassBesideOthers(List<Path> pictures, int level, Set<String> scenes) {
+        Map<String, List<Path>> byFolder = new TreeMap<>();
+        pictures.forEach(p -> byFolder.computeIfAbsent(p.getName(level).toString(), f -> new ArrayList<>()).add(p));
+        List<String> classes = byFolder.entrySet().stream()
+                .filter(e -> e.getValue().stream().allMatch(p -> p.getNameCount() > level + 2)
+                        && e.getValue().stream().map(p -> p.getName(level + 1)).distinct().count() > 1
+                        && someNameInTwo(e.getValue(), level + 1, scenes))
+                .map(Map.Entry::getKey).toList();
+        if (classes.size() != 1) {
+            return Optional.empty();
+        }
+        List<Path> others = pictures.stream().filter(p -> !p.getName(level).toString().equals(classes.get(0)))
+                .toList();
+        return someNameInTwo(others, level, scenes) ? Optional.empty() : Optional.of(classes.get(0));
     }
 
     /**
@@ -507,7 +559,7 @@ public final class CompareBatch {
         FolderListing listing;
         List<WithoutPictures> withoutPictures;
         try {
-            List<Path> written = ownFolders(dir, outputs);
+            List<Path> written = teachersFolders(dir, outputs);
             listing = FolderListing.of(dir);
             pictures = handedIn(dir, listing, written);
             withoutPictures = withoutPictures(dir, pictures, listing, written, outputs);
@@ -518,8 +570,30 @@ public final class CompareBatch {
         if (!listing.hiddenNote().isEmpty()) {
             err.println(says + listing.hiddenNote());
         }
+        try {
+            List<Path> alternates = alternatesInside(dir);
+            if (!alternates.isEmpty()) {
+                err.println(says + "the rubric's accepted alternates, in " + UsageWords.joined(alternates.stream()
+                        .map(a -> dir.resolve(a).toString()).toList(), "and") + ", are the teacher's pictures: read "
+                        + "as alternates, not graded as a submission");
+            }
+        } catch (IOException e) {
+            // the folder was listed just now; a rubric's folder that cannot be told is no note
+        }
         if (!listing.outsideNote(dir).isEmpty()) {
             err.println(says + listing.outsideNote(dir));
+        }
+        List<String> studentsWithPictures = pictures.stream()
+                .map(p -> JUnitResults.submission(dir.relativize(p).toString())).distinct().toList();
+        List<String> studentsWithout = withoutPictures.stream().map(WithoutPictures::submission)
+                .filter(w -> !w.isEmpty()).toList();
+        if (studentsWithPictures.size() == 1 && !studentsWithout.isEmpty()) {
+            err.println(says + "only " + studentsWithPictures.get(0) + " in " + dir + " holds pictures; "
+                    + UsageWords.firstThree(studentsWithout) + (studentsWithout.size() == 1 ? ", which holds" : ", which hold")
+                    + " what pictures may be handed in as (a zip, a document, a picture simpview does not read), "
+                    + (studentsWithout.size() == 1 ? "is" : "are") + " graded as " + Count.of(studentsWithout.size(),
+                    "student") + " of the class who handed in no picture (were " + dir + " one student's folder, "
+                    + "grade --dir " + dir.resolve(studentsWithPictures.get(0)) + ")");
         }
         DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> dir.relativize(p).toString()).toList());
         claimOutputs(dir, pictures, outputs, diffNames);
@@ -662,16 +736,20 @@ public final class CompareBatch {
         List<String> others = listing.others().stream()
                 .filter(f -> !results.contains(f.toAbsolutePath().normalize()))
                 .map(dir::relativize)
-                .filter(p -> written.stream().noneMatch(p::startsWith) && !inOutputsFolder(dir, p))
+                .filter(p -> written.stream().noneMatch(p::startsWith) && !isOutputsTable(dir, p))
                 .map(Path::toString).toList();
         List<WithoutPictures> without = new ArrayList<>();
         if (pictures.isEmpty()) {
             without.add(new WithoutPictures("", others));
             return without;
         }
-        Set<String> withPictures = pictures.stream().map(dir::relativize).filter(p -> p.getNameCount() > 1)
-                .map(p -> p.getName(0).toString()).collect(Collectors.toSet());
-        if (outputs.student() || withPictures.size() < 2 || !Files.isDirectory(dir)) {
+        // the first-level folders that hold pictures; alice\page1.png, from a Windows zip, is in alice
+        List<String> relatives = pictures.stream().map(p -> dir.relativize(p).toString()).toList();
+        Set<String> withPictures = relatives.stream().filter(CompareBatch::inAFolder).map(JUnitResults::submission)
+                .collect(Collectors.toSet());
+        // a class of which one student handed in pictures, the others a zip or pictures simpview does not read
+        boolean oneFolderOnly = withPictures.size() == 1 && relatives.stream().allMatch(CompareBatch::inAFolder);
+        if (outputs.student() || withPictures.size() < 2 && !oneFolderOnly || !Files.isDirectory(dir)) {
             return without;
         }
         // the folders this run writes its reports in (--junit junit/results.xml): made before they are listed
@@ -679,34 +757,44 @@ public final class CompareBatch {
         Set<String> reportFolders = results.stream()
                 .filter(r -> r.startsWith(root) && root.relativize(r).getNameCount() > 1)
                 .map(r -> root.relativize(r).getName(0).toString()).collect(Collectors.toSet());
-        List<String> folders;
+        Set<String> folders = new TreeSet<>(SceneList.NATURAL_ORDER);
         try (Stream<Path> entries = Files.list(dir)) {
-            folders = entries.filter(Files::isDirectory).map(p -> p.getFileName().toString())
-                    .filter(name -> !FolderListing.hidden(Path.of(name)) && !withPictures.contains(name)
-                            && !reportFolders.contains(name)
-                            && written.stream().noneMatch(w -> w.equals(Path.of(name)))
-                            && !Files.isRegularFile(dir.resolve(name).resolve(CSV)))
-                    .sorted(SceneList.NATURAL_ORDER).toList();
+            entries.filter(Files::isDirectory).forEach(p -> folders.add(p.getFileName().toString()));
         }
+        // and the folders in the names of a Windows zip's files unzipped flat (carol\carol.zip)
+        others.stream().filter(f -> Path.of(f).getNameCount() == 1 && inAFolder(f))
+                .forEach(f -> folders.add(JUnitResults.submission(f)));
+        folders.removeIf(name -> FolderListing.hidden(Path.of(name)) || withPictures.contains(name));
         for (String folder : folders) {
             List<String> holds = others.stream().filter(f -> JUnitResults.submission(f).equals(folder)).toList();
-            // a folder of reports, a rubric or scripts is no student's: one that is empty, or holds what a student
-            // may hand in pictures as (a zip, a .webp, a document), is
-            if (holds.isEmpty() || holds.stream().anyMatch(FolderListing::mayHoldPictures)) {
+            // the reports' folder of this run or of an earlier one (its tables and diff images left out above)
+            boolean reports = reportFolders.contains(folder) || Files.isRegularFile(dir.resolve(folder).resolve(CSV))
+                    || written.stream().anyMatch(w -> w.startsWith(folder))
+                    || folder.equals(DIFFS) && Files.isRegularFile(dir.resolve(CSV));
+            // a folder of reports, a rubric or scripts is no student's: one that holds what a student may hand in
+            // pictures as (a zip, a .webp, a document), is, and so is one that is empty and holds no reports
+            // (when only one folder holds pictures, only the former: an empty build/ beside renders/ is no student)
+            if (holds.stream().anyMatch(FolderListing::mayHoldPictures) || holds.isEmpty() && !reports && !oneFolderOnly) {
                 without.add(new WithoutPictures(folder, holds));
             }
         }
         return without;
     }
 
-    /** Whether a file (relative to {@code dir}) is in the output folder of some batch: one holding a compare.csv. */
-    private static boolean inOutputsFolder(Path dir, Path file) {
-        for (Path folder = file.getParent(); folder != null; folder = folder.getParent()) {
-            if (Files.isRegularFile(dir.resolve(folder).resolve(CSV))) {
-                return true;
-            }
-        }
-        return false;
+    /** Whether a file's path in the folder graded is in a folder: alice/page1.png, or alice\page1.png from a Windows zip. */
+    private static boolean inAFolder(String relative) {
+        return relative.indexOf('/') >= 0 || relative.indexOf('\\') >= 0;
+    }
+
+    /**
+     * Whether a file (relative to {@code dir}) is a table or web report some batch wrote: compare.md, compare.csv or
+     * index.html beside a compare.csv. Only those: the folder they are in may be a student's, or the class's.
+     */
+    private static boolean isOutputsTable(Path dir, Path file) {
+        String name = file.getFileName().toString();
+        Path folder = file.getParent() == null ? dir : dir.resolve(file.getParent());
+        return (name.equals(TABLE) || name.equals(CSV) || name.equals(HtmlReport.INDEX))
+                && Files.isRegularFile(folder.resolve(CSV));
     }
 
     /**
@@ -1236,7 +1324,9 @@ public final class CompareBatch {
     /** The file name of a path relative to the submissions folder. */
     private static String fileName(String relative) {
         Path name = Path.of(relative).getFileName();
-        return name == null ? relative : name.toString();
+        String file = name == null ? relative : name.toString();
+        // alice\page1.png, unzipped flat from a Windows zip: its name is page1.png, in the folder alice
+        return file.substring(file.lastIndexOf('\\') + 1);
     }
 
     /**
@@ -1395,24 +1485,48 @@ public final class CompareBatch {
     }
 
     /**
-     * The folders under {@code dir} that this batch writes into, relative to it: an output folder
-     * (--out-dir, --html) inside {@code dir} whole, or when it is {@code dir} itself its diffs folder.
-     * Their pictures are the diff images of an earlier run, not pictures to compare.
+     * The folder under {@code dir} that this batch writes pictures into, relative to it: the diffs folder of its
+     * output folder (--out-dir, or --html without it) when that is inside {@code dir}, wherever inside (the class's
+     * folder itself, one student's folder, a folder of its own). Its pictures are the diff images of an earlier
+     * run, not pictures to compare. Nothing else of the output folder is left out: a teacher who writes the reports
+     * into the class's folder, or into a student's, still has that folder graded; the tables and the web report
+     * beside them are no pictures.
      */
     private static List<Path> ownFolders(Path dir, Outputs outputs) throws IOException {
         Path root = dir.toRealPath();
-        List<Path> own = new ArrayList<>();
-        for (Path output : new Path[] {outputs.outDir(), outputs.html()}) {
-            if (output == null || !Files.isDirectory(output)) {
-                continue; // not there yet: no pictures in it
-            }
-            Path place = output.toRealPath();
-            if (place.startsWith(root)) {
-                Path inside = root.relativize(place);
-                own.add(inside.toString().isEmpty() ? Path.of(DIFFS) : inside);
+        Path output = outputs.outDir();
+        if (output == null || !Files.isDirectory(output)) {
+            return List.of(); // not there yet: no pictures in it
+        }
+        Path place = output.toRealPath();
+        return place.startsWith(root) ? List.of(root.relativize(place).resolve(DIFFS)) : List.of();
+    }
+
+    /**
+     * The folders under {@code dir} whose pictures nobody handed in, relative to it: this batch's own (its diff
+     * images, {@link #ownFolders}) and the rubric's folders of accepted alternates, the teacher's pictures, when
+     * they are inside it (subs/alternates beside subs/class): read as alternates, never graded as a submission.
+     */
+    private List<Path> teachersFolders(Path dir, Outputs outputs) throws IOException {
+        List<Path> folders = new ArrayList<>(ownFolders(dir, outputs));
+        folders.addAll(alternatesInside(dir));
+        return folders;
+    }
+
+    /** The rubric's folders of accepted alternates that are inside {@code dir}, relative to it (none: empty). */
+    private List<Path> alternatesInside(Path dir) throws IOException {
+        Path root = dir.toRealPath();
+        Set<Path> inside = new TreeSet<>();
+        List<RubricRule> rules = new ArrayList<>(rubric.rules());
+        rules.add(rubric.defaults());
+        for (RubricRule rule : rules) {
+            Path folder = rule.alternates();
+            if (folder != null && Files.isDirectory(folder) && folder.toRealPath().startsWith(root)
+                    && !folder.toRealPath().equals(root)) {
+                inside.add(root.relativize(folder.toRealPath()));
             }
         }
-        return own;
+        return new ArrayList<>(inside);
     }
 
     /**

@@ -270,4 +270,109 @@ class ClassFolderTest {
         assertTrue(run.out().contains("| bob/ | 2 (seed 361) |"), "bob lacks page 2: " + run.out());
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
     }
+
+    /**
+     * The reports written into the class's folder, into one student's folder, or into the class's folder unzipped
+     * into a folder of its own: that folder was left out of the pictures whole, and the student (or the whole class,
+     * 0 pictures) silently dropped. Only what simpview writes there is left out, so a second run grades as the first.
+     */
+    @Test
+    void reportsWrittenIntoTheClassOrAStudentsFolderLeaveEveryStudentGraded() throws Exception {
+        Path subs = dir.resolve("subs");
+        Path class_ = subs.resolve("class");
+        writePng(class_.resolve("ann/page1.png"), page(1));
+        writePng(class_.resolve("ann/renders/page2.png"), page(2));
+        writePng(class_.resolve("bob/page1.png"), page(1));
+        writePng(class_.resolve("bob/page2.png"), page(1)); // wrong: a diff image for it in every run
+        Path[] outDirs = {class_, class_.resolve("ann"), class_.resolve("ann/renders"), class_.resolve("reports")};
+        for (Path out : outDirs) {
+            for (int pass = 1; pass <= 2; pass++) {
+                CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir",
+                        out.toString(), "--html", out.toString(), "--junit", out.resolve("results.xml").toString());
+                String said = "--out-dir " + out + ", run " + pass + ": " + run.out() + run.err();
+                assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob's page 2 fails: " + said);
+                assertTrue(run.out().contains("4 pictures: 3 pass, 1 fail, 0 could not be compared, 0 skipped\n"),
+                        said);
+                assertTrue(run.out().contains("| ann/renders/page2.png | 2 (seed 361) |"), said);
+                assertFalse(run.out().contains("MISSING") || run.out().contains("diff.png |"), said);
+                assertTrue(run.err().contains("its folders (ann, bob) are graded"), said);
+                assertTrue(Files.isRegularFile(out.resolve("diffs/bob_page2-diff.png")), said);
+            }
+        }
+    }
+
+    /**
+     * A class's folder of which one student's folder holds pictures, the others a zip or a .webp: those students were
+     * left out of the results (only ann's suite), and the run passed. Each is a student lacking every page, said.
+     */
+    @Test
+    void aClassOfWhichOneStudentHandedInPicturesStillAsksTheOthers() throws Exception {
+        Path subs = dir.resolve("subs");
+        writePng(subs.resolve("ann/page1.png"), page(1));
+        Files.createDirectories(subs.resolve("bob"));
+        Files.writeString(subs.resolve("bob/bob.zip"), "PK");
+        Files.createDirectories(subs.resolve("build")); // empty: no student, with one folder of pictures
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains("| bob/ | 1 (seed 361) |"), run.out());
+        assertFalse(run.out().contains("| build/"), run.out());
+        assertTrue(run.err().contains("only ann in " + subs + " holds pictures; bob, which holds what pictures may be "
+                + "handed in as"), run.err());
+    }
+
+    /**
+     * The teacher's reference pictures in subs/reference beside the class in subs/class: graded as subs, the whole
+     * class was one submission (each page counted once) and reference another. The class is graded student by
+     * student and the reference pictures are said to be left out; so are the rubric's alternates, said as such.
+     */
+    @Test
+    void referencePicturesBesideTheClassAreNoStudents() throws Exception {
+        Path subs = dir.resolve("subs");
+        writePng(subs.resolve("class/ann/page1.png"), page(1));
+        writePng(subs.resolve("class/bob/page1.png"), page(2)); // wrong
+        writePng(subs.resolve("reference/page1.png"), page(1));
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob fails: " + run.out() + run.err());
+        assertTrue(run.out().contains("2 pictures: 1 pass, 1 fail, 0 could not be compared, 0 skipped\n"), run.out());
+        assertTrue(run.err().contains("its folders (ann, bob) are graded as the submissions, as --dir "
+                + subs.resolve("class") + " grades them; 1 picture beside it, in " + subs.resolve("reference")
+                + ", is taken for the teacher's"), run.err());
+
+        Path rubric = Files.writeString(dir.resolve("compare.json"), "{ \"defaults\": { \"alternates\": \""
+                + subs.resolve("reference") + "\" } }\n");
+        CliRun alternates = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--rubric",
+                rubric.toString(), "--out-dir", dir.resolve("out").toString());
+        assertTrue(alternates.out().contains("2 pictures: 1 pass, 1 fail"), alternates.out());
+        assertTrue(alternates.err().contains("(the rubric's accepted alternates, in reference, are the teacher's) is in "
+                + subs.resolve("class")), alternates.err());
+    }
+
+    /**
+     * A Windows zip unzipped flat: ann\page1.png, bob\page1.png, cy\cy.zip in one folder. cy was left out, and of
+     * ann\page1.png and ann\old\page1.png neither was taken for named the page alone.
+     */
+    @Test
+    void aWindowsZipUnzippedFlatIsGradedStudentByStudent() throws Exception {
+        Path subs = dir.resolve("subs");
+        writePng(subs.resolve("ann\\old\\page1.png"), page(2));
+        writePng(subs.resolve("ann\\page1 v2.png"), page(2));
+        writePng(subs.resolve("ann\\page1.png"), page(1));
+        writePng(subs.resolve("bob\\page1.png"), page(1));
+        Files.writeString(subs.resolve("cy\\cy.zip"), "PK");
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertTrue(run.out().contains("not counted: ann\\page1.png counts for page 1 (seed 361) instead: its name is "
+                + "the page's name and nothing else"), run.out());
+        assertTrue(run.out().contains("| cy/ | 1 (seed 361) |"), run.out());
+        assertTrue(run.out().contains("4 pictures: 2 pass, 0 fail, 0 could not be compared, 0 skipped, 2 not counted"),
+                run.out());
+    }
 }
