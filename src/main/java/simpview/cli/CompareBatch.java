@@ -681,21 +681,23 @@ public final class CompareBatch {
                 all.add(target);
             }
         }
-        List<Wanted> asked = new ArrayList<>();
-        for (CompareTarget target : all) {
-            String label = target.label(own.context());
-            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
-                    target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE, withoutPictures));
-        }
         Set<Integer> firstPages = new TreeSet<>(firstAssignmentWanted);
         if (firstAssignmentFolder) {
             IntStream.rangeClosed(1, Assignment1.COUNT).forEach(firstPages::add);
         }
         firstPages.addAll(firstAssignment.keySet());
+        Map<String, List<Wanted.Misnamed>> misnamed = misnamed(dir, pictures, matches, all, firstPages);
+        List<Wanted> asked = new ArrayList<>();
+        for (CompareTarget target : all) {
+            String label = target.label(own.context());
+            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
+                    target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE, withoutPictures,
+                    misnamed.getOrDefault(label, List.of())));
+        }
         for (int page : firstPages) {
             String label = firstAssignmentLabel(page);
             asked.add(new Wanted(label, firstAssignmentPageRule(page), unreadable.getOrDefault(label, List.of()),
-                    "a1-page" + page + ".png", withoutPictures));
+                    "a1-page" + page + ".png", withoutPictures, misnamed.getOrDefault(label, List.of())));
         }
         Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
@@ -704,6 +706,65 @@ public final class CompareBatch {
         int written = writeResults(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
                 instead, oneStudent);
         return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /**
+     * The pictures that were skipped but may have been meant as a page or scene asked for, by its label, each with
+     * why: a name like no page with a number of a page asked for ("pag3.png is named like no page (its number, 3, is
+     * not after the word "page"): did you mean page3.png?"), a name a slip from a scene's ("pagC.png is named like
+     * no scene: did you mean pageC.png?"), and a name of a page there is not ("page9.png is named for page 9, and
+     * there is no page 9 (the pages are 1 to 8)"), which may have been meant as any page its submission lacks. A
+     * MISSING row of the submission tells of them.
+     */
+    private Map<String, List<Wanted.Misnamed>> misnamed(Path dir, List<Path> pictures, List<Match> matches,
+            Set<CompareTarget> asked, Set<Integer> firstPages) {
+        Map<String, List<Wanted.Misnamed>> misnamed = new HashMap<>();
+        List<CompareTarget> pages = asked.stream().filter(CompareTarget::isPage).toList();
+        List<CompareTarget> scenes = asked.stream().filter(t -> !t.isPage()).toList();
+        for (int i = 0; i < pictures.size(); i++) {
+            Match match = matches.get(i);
+            if (match.target() != null || match.firstAssignmentPage() > 0 || match.skipped() == null) {
+                continue;
+            }
+            String relative = dir.relativize(pictures.get(i)).toString();
+            String name = fileName(relative);
+            OptionalInt page = SubmissionNames.pageNumber(name);
+            BiConsumerOfLabel add = (label, why) -> misnamed.computeIfAbsent(label, l -> new ArrayList<>())
+                    .add(new Wanted.Misnamed(relative, relative + " " + why));
+            if (page.isPresent()) {
+                int number = page.getAsInt();
+                if (number > Assignment2.COUNT) {
+                    pages.forEach(t -> add.to(t.label(own.context()), "is named for page " + number + ", and there is "
+                            + "no page " + number + " (the pages are 1 to " + Assignment2.COUNT + ")"));
+                }
+                if (number > Assignment1.COUNT && (pages.isEmpty() || namesFirstAssignment(relative))) {
+                    firstPages.forEach(p -> add.to(firstAssignmentLabel(p), "is named for page " + number + ", and "
+                            + "the first assignment has pages 1 to " + Assignment1.COUNT));
+                }
+                continue;
+            }
+            OptionalInt number = SubmissionNames.numberIn(name);
+            String noPage = "is named like no page (its number, " + (number.isPresent() ? number.getAsInt() : 0)
+                    + ", is not after the word \"page\"): did you mean ";
+            if (number.isPresent()) {
+                pages.stream().filter(t -> t.page() == number.getAsInt())
+                        .forEach(t -> add.to(t.label(own.context()), noPage + "page" + t.page() + ".png?"));
+                if (firstPages.contains(number.getAsInt()) && (pages.isEmpty() || namesFirstAssignment(relative))) {
+                    add.to(firstAssignmentLabel(number.getAsInt()), noPage + "a1-page" + number.getAsInt() + ".png?");
+                }
+            }
+            for (CompareTarget scene : scenes) {
+                if (SubmissionNames.nearlyNames(name, key(scene))) {
+                    add.to(scene.label(own.context()), "is named like no scene: did you mean " + key(scene) + ".png?");
+                }
+            }
+        }
+        return misnamed;
+    }
+
+    /** Adds a note to the label of a page or scene. */
+    private interface BiConsumerOfLabel {
+        void to(String label, String why);
     }
 
     /**

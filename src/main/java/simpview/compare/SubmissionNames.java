@@ -38,7 +38,7 @@ public final class SubmissionNames {
 
     /** Whether a file name says it is one of the first assignment's pages, like a1-page2.png. */
     public static boolean namesFirstAssignment(String fileName) {
-        return FIRST_ASSIGNMENT.matcher(stem(fileName)).find();
+        return FIRST_ASSIGNMENT.matcher(plain(stem(fileName))).find();
     }
 
     /**
@@ -52,12 +52,13 @@ public final class SubmissionNames {
 
     /** The same for a page of the first assignment: a1-page2.png, A1_Page_2.png, assignment1-page2.png. */
     public static boolean isFirstAssignmentPageName(String fileName, int page) {
-        return stem(fileName).strip().matches("(?i)(a|assignment[\\s_-]*)0*1[\\s_-]*page[\\s_-]*0*" + page);
+        return plain(stem(fileName)).strip().matches("(?i)(a|assignment[\\s_-]*)0*1[\\s_-]*" + PAGE_WORD
+                + "[\\s_-]*0*" + page);
     }
 
     /** The same for a scene: pageC.png for pageC.simp (letters of either case alike). */
     public static boolean isSceneName(String fileName, String scene) {
-        return stem(fileName).strip().equalsIgnoreCase(scene);
+        return plain(stem(fileName)).strip().equalsIgnoreCase(plain(scene));
     }
 
     /** The page number in a file name, if it names one. */
@@ -94,7 +95,7 @@ public final class SubmissionNames {
                     + word + "1" + ending + ")";
         }
         // "a1" names the first assignment, not a page
-        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(stem(fileName)).replaceAll(" "));
+        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(plain(stem(fileName))).replaceAll(" "));
         if (!m.find()) {
             return "no page number in the name (expected a name like " + word + "3" + ending + ")";
         }
@@ -102,6 +103,49 @@ public final class SubmissionNames {
         boolean aPage = number.length() <= 2 && Integer.parseInt(number) >= 1 && Integer.parseInt(number) <= pages;
         return "no page number in the name: its number, " + number + ", is not after the word \"page\" (expected a "
                 + "name like " + word + (aPage ? number : "3") + ending + ")";
+    }
+
+    /**
+     * The number in a file name that names no page (pag3.png, p3.png, scan_03.png: 3; the "1" of a1 and assignment1
+     * left out), when it is one or two digits: the page the name was likely meant for. Empty when it has none.
+     */
+    public static OptionalInt numberIn(String fileName) {
+        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(plain(stem(fileName))).replaceAll(" "));
+        if (!m.find()) {
+            return OptionalInt.empty();
+        }
+        String number = m.group().replaceFirst("^0+(?=[0-9])", "");
+        return number.length() <= 2 ? OptionalInt.of(Integer.parseInt(number)) : OptionalInt.empty();
+    }
+
+    /**
+     * Whether a file name that names no scene is a slip of a scene's name: its name (case ignored) at most two
+     * letters from the scene's, and less than half of it (pagC.png, pageCC.png, paegC.png for pageC).
+     */
+    public static boolean nearlyNames(String fileName, String scene) {
+        String name = plain(stem(fileName)).strip().toLowerCase(Locale.ROOT);
+        String wanted = plain(scene).toLowerCase(Locale.ROOT);
+        int distance = editDistance(name, wanted);
+        return distance > 0 && distance <= 2 && 2 * distance < wanted.length();
+    }
+
+    /** Letters to insert, delete, change or swap (two beside each other) to make one name the other. */
+    private static int editDistance(String a, String b) {
+        int[][] d = new int[a.length() + 1][b.length() + 1];
+        for (int i = 0; i <= a.length(); i++) {
+            for (int j = 0; j <= b.length(); j++) {
+                if (i == 0 || j == 0) {
+                    d[i][j] = i + j;
+                    continue;
+                }
+                int change = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
+                d[i][j] = Math.min(Math.min(d[i - 1][j] + 1, d[i][j - 1] + 1), d[i - 1][j - 1] + change);
+                if (i > 1 && j > 1 && a.charAt(i - 1) == b.charAt(j - 2) && a.charAt(i - 2) == b.charAt(j - 1)) {
+                    d[i][j] = Math.min(d[i][j], d[i - 2][j - 2] + 1);
+                }
+            }
+        }
+        return d[a.length()][b.length()];
     }
 
     /**
@@ -122,10 +166,11 @@ public final class SubmissionNames {
      * stands in it as a whole word, not inside a longer run of letters and digits.
      */
     public static Optional<String> sceneName(String fileName, Collection<String> sceneNames) {
-        String stem = stem(fileName).toLowerCase(Locale.ROOT);
+        String stem = plain(stem(fileName)).toLowerCase(Locale.ROOT);
         String best = null;
         for (String scene : sceneNames) {
-            if ((best == null || scene.length() > best.length()) && standsIn(stem, scene.toLowerCase(Locale.ROOT))) {
+            if ((best == null || scene.length() > best.length())
+                    && standsIn(stem, plain(scene).toLowerCase(Locale.ROOT))) {
                 best = scene;
             }
         }

@@ -20,9 +20,24 @@ import java.util.function.Function;
  *     "a1-page3.png")
  * @param withoutPictures the submissions that hold no picture at all (a class's first-level folder holding only
  *     a zip, or the whole folder): each lacks it, and is told what it holds instead
+ * @param misnamed the pictures handed in that were not taken for it but may have been meant as it, each with why
+ *     ("pag3.png is named like no page: did you mean page3.png?"): a submission that lacks it and handed in one
+ *     of these is told so
  */
 public record Wanted(String target, RubricRule rule, List<String> unreadable, String example,
-        List<WithoutPictures> withoutPictures) {
+        List<WithoutPictures> withoutPictures, List<Misnamed> misnamed) {
+
+    /**
+     * A picture (its path in the folder) that names no page or scene asked for, but may have been meant as this one,
+     * and why: "pag3.png is named like no page: did you mean page3.png?".
+     */
+    public record Misnamed(String file, String why) {
+    }
+
+    public Wanted(String target, RubricRule rule, List<String> unreadable, String example,
+            List<WithoutPictures> withoutPictures) {
+        this(target, rule, unreadable, example, withoutPictures, List.of());
+    }
 
     /** A page's file name for the examples when none is given. */
     public static final String PAGE_EXAMPLE = "page3.png";
@@ -118,15 +133,20 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
     /**
      * Why {@code submission} ("" or {@link JUnitResults#TOP} for the whole folder) has no picture of it, when what
      * it handed in tells: a file named like it in a format simpview does not read ({@link #unreadableNote}), or
-     * no picture at all but a zip or other files ({@link WithoutPictures#note}); "" otherwise.
+     * no picture at all but a zip or other files ({@link WithoutPictures#note}); then each picture of it that may
+     * have been meant as it ({@link #misnamed}); "" when none tells.
      */
     public String whyMissing(String submission) {
         String unreadable = unreadableNote(submission);
-        if (!unreadable.isEmpty()) {
-            return unreadable;
+        String why = !unreadable.isEmpty() ? unreadable : withoutPictures.stream().filter(w -> w.isOf(submission))
+                .map(WithoutPictures::note).findFirst().orElse("");
+        // the pictures of the submission that may have been meant as it: misnamed, or named for no page there is
+        for (Misnamed picture : misnamed) {
+            if (submission.isEmpty() || JUnitResults.submission(picture.file()).equals(submission)) {
+                why = why.isEmpty() ? picture.why() : why + "; " + picture.why();
+            }
         }
-        return withoutPictures.stream().filter(w -> w.isOf(submission)).map(WithoutPictures::note).findFirst()
-                .orElse("");
+        return why;
     }
 
     /** Its unreadable files handed in by {@code submission} (a first-level folder, or "" for the whole folder). */

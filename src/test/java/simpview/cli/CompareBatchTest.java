@@ -67,10 +67,12 @@ public class CompareBatchTest {
         assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(6));
         assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(12));
         assertEquals("cy/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in cy was found", rows.get(13));
-        assertEquals("submission,2 (seed 361),,,,,,,,MISSING,,,no picture of page 2 (seed 361) at the top of the folder "
-                + "was found", rows.get(20));
-        assertEquals("submission,4,,,,,,,,MISSING,,,no picture of page 4 at the top of the folder was found",
-                rows.get(21));
+        // page10.png is named for a page there is not: each page the top lacks may be the one it was meant as
+        assertEquals("submission,2 (seed 361),,,,,,,,MISSING,,,\"no picture of page 2 (seed 361) at the top of the folder "
+                + "was found; page10.png is named for page 10, and there is no page 10 (the pages are 1 to 8)\"",
+                rows.get(20));
+        assertEquals("submission,4,,,,,,,,MISSING,,,\"no picture of page 4 at the top of the folder was found; page10.png "
+                + "is named for page 10, and there is no page 10 (the pages are 1 to 8)\"", rows.get(21));
         assertTrue(rows.subList(6, 26).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());
@@ -505,5 +507,52 @@ public class CompareBatchTest {
         CliRun none = CliRun.of("check", empty.toString());
         assertEquals(ExitCode.SCENE_ERROR, none.exitCode(), none.err());
         assertTrue(none.err().contains("simpview check: no pictures (.png, .jpg, .gif, .bmp) found"), none.err());
+    }
+
+    /**
+     * A page missing beside a picture named like no page (pag2.png) or for a page there is not (page9.png): the
+     * MISSING row said only that no picture was found. It names them, wherever the row's notes go.
+     */
+    @Test
+    void aMissingPageIsToldOfThePicturesThatMayHaveBeenMeantAsIt() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("ann/page2.png"), page(2));
+        png(subs.resolve("bob/page1.png"), page(1));
+        png(subs.resolve("bob/pag2.png"), page(2));
+        png(subs.resolve("bob/page9.png"), page(2));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
+        String told = "bob/pag2.png is named like no page (its number, 2, is not after the word \"page\"): did you "
+                + "mean page2.png?; bob/page9.png is named for page 9, and there is no page 9 (the pages are 1 to 8)";
+        assertTrue(run.out().contains("| bob/ | 2 (seed 361) |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 2 "
+                + "(seed 361) in bob was found; " + told + " |"), run.out());
+        assertTrue(Files.readString(out.resolve("results.xml")).contains(told.replace("\"", "&quot;"))
+                || Files.readString(out.resolve("results.xml")).contains(told), "JUnit's failure says it too");
+        assertTrue(Files.readString(out.resolve("index.html")).contains(told.replace("\"", "&quot;")),
+                "and the web report");
+        assertFalse(run.out().contains("| ann/ |"), "ann lacks nothing: " + run.out());
+
+        CliRun check = CliRun.of("check", subs.resolve("bob").toString(), "--pages", "1-2");
+        assertTrue(check.out().contains("no picture of page 2 (seed 361) found: pag2.png is named like no page"),
+                check.out());
+        Path json = out.resolve("bob.json");
+        CliRun.of("compare", "--dir", subs.resolve("bob").toString(), "--pages", "1-2", "--gradescope", json.toString());
+        assertTrue(Files.readString(json).contains("pag2.png is named like no page (its number, 2, is not after the "
+                + "word \\\"page\\\"): did you mean page2.png?"), Files.readString(json));
+    }
+
+    /** A scene's picture named a slip of its name (pagC.png for pageC.simp) is named in the scene's MISSING row. */
+    @Test
+    void aMissingSceneIsToldOfAPictureNamedASlipOfIt() throws Exception {
+        Path scenes = scenes("bar");
+        Path class_ = dir.resolve("class");
+        render(scenes.resolve("tri.simp"), class_.resolve("ann/tri.png"));
+        render(scenes.resolve("tri.simp"), class_.resolve("bob/tir.png"));
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--out-dir",
+                dir.resolve("out").toString());
+        assertTrue(run.out().contains("no picture of tri.simp in bob was found; bob/tir.png is named like no scene: did "
+                + "you mean tri.png? |"), run.out());
     }
 }

@@ -94,4 +94,22 @@ class SubmissionNamesTest {
         org.junit.jupiter.api.Assertions.assertFalse(SubmissionNames.namesFirstAssignment("data1-page2.png"));
         assertEquals(OptionalInt.of(2), SubmissionNames.pageNumber("a1-page2.png"));
     }
+
+    /**
+     * Full-width letters and digits (as a Japanese or Chinese keyboard types them) were folded for the eight pages'
+     * numbers only: pageＣ.png named no scene, ａ１-page2.png no first-assignment page, p３.png no number.
+     */
+    @Test
+    void fullWidthFormsFoldForScenesAndTheFirstAssignmentToo() {
+        assertEquals(Optional.of("pageC"), SubmissionNames.sceneName("page\uff23.png", List.of("pageC", "pageB")));
+        assertEquals(Optional.of("pageC"), SubmissionNames.sceneName("\uff50\uff41\uff47\uff45\uff23_v2.png",
+                List.of("pageC")));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isSceneName("page\uff23.png", "pageC"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.namesFirstAssignment("\uff41\uff11-page2.png"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.namesFirstAssignment("A\uff11_Page_2.png"));
+        org.junit.jupiter.api.Assertions.assertTrue(SubmissionNames.isFirstAssignmentPageName("a\uff11-page\uff12.png",
+                2));
+        assertEquals("no page number in the name: its number, 3, is not after the word \"page\" (expected a name like "
+                + "page3.png)", SubmissionNames.noPageNumber("p\uff13.png", "page", 8));
+    }
 }
