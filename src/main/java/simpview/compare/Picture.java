@@ -9,7 +9,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Iterator;
+import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
@@ -114,6 +116,44 @@ public final class Picture {
                 format);
     }
 
+    /** The brands of an AVIF picture, still (avif) or a sequence (avis). */
+    private static final List<String> AVIF_BRANDS = List.of("avif", "avis");
+    /** The brands of a HEIC picture (HEVC-coded HEIF), still or a sequence, as an iPhone saves them. */
+    private static final List<String> HEIC_BRANDS = List.of("heic", "heix", "heim", "heis", "hevc", "hevx", "hevm",
+            "hevs");
+    /** The brands of HEIF's general structure alone, which both AVIF and HEIC files may give as their major one. */
+    private static final List<String> HEIF_BRANDS = List.of("mif1", "msf1", "mif2");
+
+    /**
+     * What an ISO file of the HEIF family holds, from its ftyp box: its major brand, then its compatible brands, in
+     * order (an AVIF picture often names the general "mif1" as its major brand and "avif" among its compatible
+     * ones): "an AVIF picture" for avif or avis, "a HEIC picture ..." for heic, heix, hevc and their kin, "a HEIF
+     * picture" for mif1 or msf1 alone; null when the box names none of these.
+     */
+    static String heifKind(byte[] bytes) {
+        if (bytes.length < 16) {
+            return null;
+        }
+        long size = ((bytes[0] & 0xFFL) << 24) | ((bytes[1] & 0xFF) << 16) | ((bytes[2] & 0xFF) << 8) | (bytes[3] & 0xFF);
+        int end = (int) Math.min(Math.min(bytes.length, 4096), size < 16 ? 16 : size);
+        List<String> brands = new ArrayList<>();
+        brands.add(new String(bytes, 8, 4, StandardCharsets.ISO_8859_1)); // the major brand, then the compatible
+        for (int at = 16; at + 4 <= end; at += 4) {
+            brands.add(new String(bytes, at, 4, StandardCharsets.ISO_8859_1));
+        }
+        boolean heif = false;
+        for (String brand : brands) {
+            if (AVIF_BRANDS.contains(brand)) {
+                return "an AVIF picture";
+            }
+            if (HEIC_BRANDS.contains(brand)) {
+                return "a HEIC picture (as an iPhone saves them)";
+            }
+            heif |= HEIF_BRANDS.contains(brand);
+        }
+        return heif ? "a HEIF picture" : null;
+    }
+
     /**
      * What bytes that are no picture simpview reads hold, when their start tells, for the student to be told what
      * to do: a picture in another format whatever its name says (a screenshot tool's WebP saved as page4.png),
@@ -126,11 +166,8 @@ public final class Picture {
             other = "a WebP picture";
         } else if (start.startsWith("II*\0") || start.startsWith("MM\0*")) {
             other = "a TIFF picture";
-        } else if (start.startsWith("ftyp", 4) && (start.startsWith("heic", 8) || start.startsWith("heix", 8)
-                || start.startsWith("mif1", 8) || start.startsWith("msf1", 8))) {
-            other = "a HEIC picture (as an iPhone saves them)";
-        } else if (start.startsWith("ftyp", 4) && start.startsWith("avi", 8)) {
-            other = "an AVIF picture";
+        } else if (start.startsWith("ftyp", 4) && heifKind(bytes) != null) {
+            other = heifKind(bytes);
         } else if (start.startsWith("%PDF")) {
             return ": it holds a PDF document; save the page itself as PNG";
         } else if (start.startsWith("PK\3\4")) {

@@ -79,4 +79,32 @@ class PictureProblemsTest {
         assertEquals(noise + " is not a picture simpview can read (PNG, JPEG, GIF or BMP)",
                 assertThrows(CompareException.class, () -> Picture.read(noise)).getMessage(), "nothing known");
     }
+
+    /**
+     * An AVIF picture whose ftyp box names "mif1" as its major brand and "avif" among its compatible ones (as
+     * libavif and many tools write it) was called a HEIC picture: its format is named by its brands, in order.
+     */
+    @Test
+    void anAvifOrHeicPictureIsNamedByItsBrands() throws Exception {
+        String[][] files = {
+            {"mif1", "mif1miafavifMA1B", "an AVIF picture"},
+            {"avif", "avifmif1miaf", "an AVIF picture"},
+            {"msf1", "msf1avis", "an AVIF picture"},
+            {"mif1", "mif1heicmiaf", "a HEIC picture (as an iPhone saves them)"},
+            {"heic", "mif1heic", "a HEIC picture (as an iPhone saves them)"},
+            {"mif1", "mif1", "a HEIF picture"},
+        };
+        for (String[] file : files) {
+            byte[] brands = file[1].getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+            byte[] bytes = new byte[16 + brands.length + 8];
+            bytes[3] = (byte) (16 + brands.length);
+            System.arraycopy("ftyp".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1), 0, bytes, 4, 4);
+            System.arraycopy(file[0].getBytes(java.nio.charset.StandardCharsets.ISO_8859_1), 0, bytes, 8, 4);
+            System.arraycopy(brands, 0, bytes, 16, brands.length);
+            Path picture = Files.write(dir.resolve("page1.png"), bytes);
+            assertEquals(picture + " is not a picture simpview can read (PNG, JPEG, GIF or BMP): it holds " + file[2]
+                    + ", whatever its name says; save it as PNG",
+                    assertThrows(CompareException.class, () -> Picture.read(picture)).getMessage(), file[1]);
+        }
+    }
 }
