@@ -351,9 +351,6 @@ public final class LitGeometry implements GeometryStage {
         } else {
             fragments.colours(state.fog());
         }
-        if (oneColour && trace != null) {
-            trace.oneColour();
-        }
     }
 
     /**
@@ -651,6 +648,9 @@ public final class LitGeometry implements GeometryStage {
             }
         }
         int index = traced++;
+        if (oneColour) {
+            trace.oneColour(); // for the read just below
+        }
         trace.read(index, sourceFile, sourceLine, kind, screen, 0, FragmentLayout.stride(channels), n);
         return trace.drawing(index);
     }
