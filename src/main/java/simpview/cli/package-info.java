@@ -5,7 +5,9 @@
  * <ul>
  * <li>{@code render --page N}: {@link simpview.pages.PageRenderer#render} or
  *     {@link simpview.pages.PageRenderer#renderImage}, with a {@link simpview.pages.PageContext} (the seed, where
- *     the scenes of pages 4 to 8 are); {@code render --scene F.simp}:
+ *     the scenes of pages 4 to 8 are; {@link simpview.pages.UnpackedScenes#fromSimpviewJar} gives one whose pages 4
+ *     and 5 are drawn from the scenes simpview.jar carries, as the jar's own command line finds them);
+ *     {@code render --scene F.simp}:
  *     {@link simpview.pages.PageRenderer#renderScene(java.nio.file.Path)}, lit or depth-cued as the scene's
  *     commands say; {@code render --assignment 1}: {@link simpview.pages.Assignment1#render}.</li>
  * <li>{@code --threads N}: {@link simpview.surface.DrawingThreads#of}, given to the

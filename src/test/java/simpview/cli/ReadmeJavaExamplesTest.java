@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.awt.image.BufferedImage;
+import java.io.File;
 import java.io.IOException;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
@@ -19,7 +20,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import javax.tools.Diagnostic;
 import javax.tools.DiagnosticCollector;
@@ -47,12 +50,24 @@ public class ReadmeJavaExamplesTest {
     private static final String SECTION = "## Using simpview from Java";
     private static final Pattern JAVA_BLOCK = Pattern.compile("(?m)^```java\\n(.*?)^```$", Pattern.DOTALL);
     private static final String CLASS_NAME = "ReadmeExamples";
+    /** A user's program around pageFromTheJar: java -cp simpview.jar:. DrawFromTheJar page4.png page5.png. */
+    private static final String LAUNCHER = "DrawFromTheJar";
+    private static final String LAUNCHER_SOURCE = "import java.io.File;\n"
+            + "import javax.imageio.ImageIO;\n"
+            + "final class " + LAUNCHER + " {\n"
+            + "    public static void main(String[] args) throws Exception {\n"
+            + "        ImageIO.write(" + CLASS_NAME + ".pageFromTheJar(4), \"png\", new File(args[0]));\n"
+            + "        ImageIO.write(" + CLASS_NAME + ".pageFromTheJar(5), \"png\", new File(args[1]));\n"
+            + "    }\n"
+            + "}\n";
 
     private static Path project;
     private static String section;
     /** The examples' first block: their imports. */
     private static String imports;
     private static Class<?> examples;
+    /** build/libs/simpview.jar, which the examples are compiled against. */
+    private static String jar;
 
     @TempDir
     static Path compiled;
@@ -73,11 +88,11 @@ public class ReadmeJavaExamplesTest {
         while (m.find()) {
             blocks.add(m.group(1));
         }
-        assertEquals(5, blocks.size(), "the imports and four examples: " + blocks);
+        assertEquals(6, blocks.size(), "the imports and five examples: " + blocks);
         imports = blocks.get(0);
         String source = imports + "\nfinal class " + CLASS_NAME + " {\n\n"
                 + String.join("\n", blocks.subList(1, blocks.size())) + "}\n";
-        String jar = System.getProperty("simpview.runnableJar");
+        jar = System.getProperty("simpview.runnableJar");
         assertNotNull(jar, "simpview.runnableJar is not set: run the tests through Gradle, which builds the jar first");
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         assertNotNull(javac, "this Java has no compiler: the tests run on a JDK");
@@ -89,9 +104,16 @@ public class ReadmeJavaExamplesTest {
                 return source;
             }
         };
+        JavaFileObject launcher = new SimpleJavaFileObject(URI.create("string:///" + LAUNCHER + ".java"),
+                JavaFileObject.Kind.SOURCE) {
+            @Override
+            public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+                return LAUNCHER_SOURCE;
+            }
+        };
         List<String> options = List.of("-classpath", jar, "-d", compiled.toString(), "--release", "17",
                 "-Xlint:all", "-proc:none");
-        boolean compiledWell = javac.getTask(null, null, diagnostics, options, null, List.of(file)).call();
+        boolean compiledWell = javac.getTask(null, null, diagnostics, options, null, List.of(file, launcher)).call();
         List<String> said = new ArrayList<>();
         for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
             said.add(d.getKind() + " at line " + d.getLineNumber() + ": " + d.getMessage(Locale.ROOT));
@@ -174,6 +196,35 @@ public class ReadmeJavaExamplesTest {
                     "--out", byCommand.toString());
             assertEquals(ExitCode.OK, run.exitCode(), run.err());
             assertEquals(0, Images.differingPixels(read(byCommand), page), "page " + n);
+        }
+    }
+
+    /**
+     * pageFromTheJar run as a user's program runs it, {@code java -cp simpview.jar:.}, simpview.jar the only
+     * simpview on the classpath (the other tests call the examples with the tests' own simpview, its classes in
+     * a folder): pages 4 and 5 drawn from the jar's scenes, no folder named, are those drawn from simp/, and once
+     * the program ends nothing of the unpacking is left in its temporary folder.
+     */
+    @Test
+    void pageFromTheJarDrawsPagesFourAndFiveWithNoFolderNamedAndLeavesNothing() throws Exception {
+        Path temporary = Files.createDirectory(dir.resolve("tmp"));
+        Path page4 = dir.resolve("page4.png");
+        Path page5 = dir.resolve("page5.png");
+        List<String> command = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary,
+                "-cp", jar + File.pathSeparator + compiled, LAUNCHER, page4.toString(), page5.toString());
+        Path err = dir.resolve("stderr.txt");
+        Process process = new ProcessBuilder(command).directory(dir.toFile())
+                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(err.toFile()).start();
+        if (!process.waitFor(60, TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+            fail(String.join(" ", command) + " did not end within 60 s");
+        }
+        assertEquals(0, process.exitValue(), Files.readString(err));
+        assertEquals(0, Images.differingPixels((BufferedImage) call("page", 4, project.resolve("simp")), read(page4)));
+        assertEquals(0, Images.differingPixels((BufferedImage) call("page", 5, project.resolve("simp")), read(page5)));
+        try (Stream<Path> left = Files.list(temporary)) {
+            assertEquals(List.of(), left.toList(), "left in the temporary folder");
         }
     }
 
