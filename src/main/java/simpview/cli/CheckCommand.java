@@ -112,6 +112,22 @@ public final class CheckCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        int code = ExitCode.SCENE_ERROR;
+        try {
+            code = check();
+            return code;
+        } finally {
+            if (code != ExitCode.OK && files != null) {
+                // a FIFO in --out-dir the failed run never wrote would leave its reader waiting
+                files.releaseAfterFailure();
+            }
+        }
+    }
+
+    /** The files the run reads and writes, once its options are checked; null before. */
+    private OutputPaths files;
+
+    private int check() {
         if (pages != null && scene != null) {
             throw new ParameterException(spec.commandLine(), "give --pages or --scene, not both");
         }
@@ -151,9 +167,9 @@ public final class CheckCommand implements Callable<Integer> {
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(),
                     spec.commandLine().getErr(), pages == null && !firstAssignment());
+            files = new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene");
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
-                    CompareBatch.DiffImages.FAILING,
-                    new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene"));
+                    CompareBatch.DiffImages.FAILING, files);
             if (scene != null) {
                 return batch.scenes(dir, scene, outputs);
             }

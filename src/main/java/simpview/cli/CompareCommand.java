@@ -27,6 +27,7 @@ import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
+import simpview.compare.OutputFiles;
 import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
@@ -172,8 +173,40 @@ public final class CompareCommand implements Callable<Integer> {
     @Mixin
     private ThreadsOption threads;
 
+    /** The files the run reads and writes, once its options are checked; null before. */
+    private OutputPaths files;
+
     @Override
     public Integer call() {
+        int code = ExitCode.SCENE_ERROR;
+        try {
+            code = compare();
+            return code;
+        } finally {
+            if (code != ExitCode.OK) {
+                releaseOutputs();
+            }
+        }
+    }
+
+    /**
+     * After a failed run: a FIFO it was to write and may never have written is opened and closed, so that its
+     * reader is not left waiting ({@link OutputPaths#releaseAfterFailure}); before the files were listed (a usage
+     * error), the files --diff, --gradescope and --junit name.
+     */
+    private void releaseOutputs() {
+        if (files != null) {
+            files.releaseAfterFailure();
+            return;
+        }
+        for (Path named : new Path[] {diff, gradescope, junit}) {
+            if (named != null) {
+                OutputFiles.release(named);
+            }
+        }
+    }
+
+    private int compare() {
         checkOptions();
         if (firstAssignment() && dir == null) {
             return compareAssignment1();
@@ -189,9 +222,9 @@ public final class CompareCommand implements Callable<Integer> {
                     return ExitCode.USAGE_ERROR;
                 }
                 CompareBatch batch = new CompareBatch("compare", own, judged, partial, spec.commandLine().getOut(), err());
+                files = new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene");
                 CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir != null ? outDir : html,
-                        gradescope, junit, html, false, diffs,
-                        new OutputPaths().reads(rubric, "the rubric").reads(scene, "the scene"));
+                        gradescope, junit, html, false, diffs, files);
                 // with one scene for every picture, each picture is a submission of its own, in whatever folder
                 boolean eachAlone = pages == null && !firstAssignment() && scene != null && Files.isRegularFile(scene);
                 Path graded = eachAlone ? dir : batch.classFolder(dir, outputs, pages == null ? scene : null);
@@ -239,7 +272,8 @@ public final class CompareCommand implements Callable<Integer> {
                     "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
             usage(diff == null || PngFiles.isPngName(diff), "--diff " + diff + ": " + PngFiles.PNG_ONLY);
-            new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene").writes(diff, "--diff");
+            files = new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene")
+                    .writes(diff, "--diff");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
         usage(!first || batch || page != null,

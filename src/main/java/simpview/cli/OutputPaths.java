@@ -48,6 +48,16 @@ final class OutputPaths {
     }
 
     /**
+     * After a run that failed: each file it was to write ({@link #writes})
+     * that is a FIFO is opened and closed ({@link OutputFiles#release}), so
+     * that a reader waiting on one it never wrote sees the end of the file
+     * and the run cannot leave it waiting; regular files are left as they are.
+     */
+    void releaseAfterFailure() {
+        written.keySet().forEach(OutputFiles::release);
+    }
+
+    /**
      * {@code file} (null: none) may be written by {@code option}, as other
      * files of it may be (a batch's diff images: their names are its
      * pictures'), but it is none the run reads.

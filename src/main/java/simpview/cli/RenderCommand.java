@@ -142,14 +142,25 @@ public final class RenderCommand implements Callable<Integer> {
     /** The threads drawing while the command runs: made and closed by call(). */
     private DrawingThreads drawingThreads;
 
+    /** The files the run reads and writes, once its options are checked; null before. */
+    private OutputPaths files;
+
     @Override
     public Integer call() {
-        checkOptions();
-        try (DrawingThreads drawing = threads.open()) {
-            drawingThreads = drawing;
-            return render();
+        int code = ExitCode.SCENE_ERROR;
+        try {
+            checkOptions();
+            try (DrawingThreads drawing = threads.open()) {
+                drawingThreads = drawing;
+                code = render();
+                return code;
+            } finally {
+                drawingThreads = null;
+            }
         } finally {
-            drawingThreads = null;
+            if (code != ExitCode.OK) {
+                releaseOutputs();
+            }
         }
     }
 
@@ -211,9 +222,9 @@ public final class RenderCommand implements Callable<Integer> {
             out = outDir.resolve(what.scene != null ? SceneList.pictureName(what.scene)
                     : (firstAssignment() ? "a1-page" : "page") + what.page + ".png");
         }
-        OutputPaths paths = new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
+        files = new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
         if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
-            paths.writes(primitives, "--primitives");
+            files.writes(primitives, "--primitives");
         }
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
@@ -269,7 +280,7 @@ public final class RenderCommand implements Callable<Integer> {
         sceneList.forEach(scene -> distinct.putIfAbsent(OutputFiles.identity(scene), scene));
         sceneList = List.copyOf(distinct.values());
         List<String> names = SceneList.pictureNames(sceneList);
-        OutputPaths files = new OutputPaths();
+        files = new OutputPaths();
         sceneList.forEach(scene -> files.reads(scene, "a scene to draw"));
         Map<String, Path> drawnAs = new HashMap<>();
         pictures = new ArrayList<>();
@@ -292,6 +303,24 @@ public final class RenderCommand implements Callable<Integer> {
     private void refuseIfLit(Path scene, ScenePipeline.Drawn drawn) {
         if (!drawn.drawn()) {
             throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn.litBecause(), ownColours));
+        }
+    }
+
+    /**
+     * After a failed run: a FIFO it was to write and may never have written is opened and closed, so that its
+     * reader is not left waiting ({@link OutputPaths#releaseAfterFailure}); before the files were listed (a usage
+     * error), those --out and --primitives name.
+     */
+    private void releaseOutputs() {
+        if (files != null) {
+            files.releaseAfterFailure();
+            return;
+        }
+        if (out != null) {
+            OutputFiles.release(out);
+        }
+        if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
+            OutputFiles.release(primitives);
         }
     }
 
@@ -425,8 +454,9 @@ public final class RenderCommand implements Callable<Integer> {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
         }
-        OutputPaths files = new OutputPaths();
-        sheet.forEach(scene -> files.reads(scene, "a scene to draw"));
+        OutputPaths sheetFiles = new OutputPaths();
+        sheet.forEach(scene -> sheetFiles.reads(scene, "a scene to draw"));
+        files = sheetFiles;
         files.writes(out, "--out");
         List<ContactSheet.Tile> tiles = new ArrayList<>();
         PageDrawing drawing = new PageDrawing(monitor(), drawingThreads);

@@ -2,6 +2,7 @@ package simpview.compare;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -101,6 +102,29 @@ public final class OutputFiles {
             content.writeTo(out);
         } catch (IOException e) {
             throw new IOException("cannot write " + file + ": " + reason(e, target), e);
+        }
+    }
+
+    /**
+     * For a run that failed, and may not have written {@code file}: a FIFO
+     * (or another file that is no regular one, nor a folder) there is opened
+     * and closed at once, so that a reader waiting on it sees the end of the
+     * file instead of waiting for ever. It is opened for reading and writing,
+     * an open that never waits for a reader to come (Linux; POSIX leaves it
+     * to the system), so nothing hangs when none is there; nothing is written
+     * into it. A regular file is left as it is, never truncated nor deleted:
+     * what a run wrote before it failed is kept. Nothing there: nothing done.
+     * Never throws: a file that cannot be opened is left as it is.
+     */
+    public static void release(Path file) {
+        Path target = file.toAbsolutePath();
+        if (!isSpecial(target)) {
+            return;
+        }
+        try {
+            FileChannel.open(target, StandardOpenOption.READ, StandardOpenOption.WRITE).close();
+        } catch (IOException e) {
+            // a device or socket that cannot be opened so: no reader waits on it as on a FIFO
         }
     }
 

@@ -1,5 +1,6 @@
 package simpview.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,15 +10,18 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.concurrent.CompletableFuture;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Picture;
 import simpview.pages.PageContext;
+import simpview.testing.Fifos;
 
 /** {@code simpview compare IMAGE ...}: the report, the diff image and the exit codes. */
 public class CompareCommandTest {
@@ -516,5 +520,19 @@ public class CompareCommandTest {
 
     static String format(double percent) {
         return String.format(Locale.ROOT, "%.2f", percent);
+    }
+
+    /** A compare that fails before writing its --diff (no picture to read) gives the reader of that FIFO the end. */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aCompareThatCannotReadItsPictureGivesTheReaderOfTheDiffsFifoTheEnd() throws Exception {
+        Path fifo = Fifos.make(dir.resolve("diff.png"));
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        Path missing = fifo.resolveSibling("missing.png");
+        CliRun run = CliRun.of("compare", missing.toString(), "--page", "2", "--diff", fifo.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("simpview compare: "), run.err());
+        assertArrayEquals(new byte[0], Fifos.read(read, fifo));
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
     }
 }

@@ -162,4 +162,36 @@ class RenderCommandTest {
         assertEquals(ExitCode.OK, run.exitCode(), run.err());
         return picture;
     }
+
+    /**
+     * A render that fails before it writes (a scene with a mistake, a usage error) opens and closes a FIFO named
+     * by --out, so that its reader sees the end instead of waiting for ever; with no reader there the run still
+     * ends; a regular file named by --out keeps what it held.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aFailedRenderGivesTheReaderOfItsFifoTheEndAndKeepsARegularFile() throws Exception {
+        Path broken = Files.writeString(dir.resolve("broken.simp"), "polygon (0, 0, -1) (1, 0, -1) (1, 1)\n");
+        Path fifo = Fifos.make(dir.resolve("f.png"));
+        CliRun alone = CliRun.of("render", "--scene", broken.toString(), "--out", fifo.toString());
+        assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), alone.err());
+
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        CliRun run = CliRun.of("render", "--scene", broken.toString(), "--out", fifo.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith(broken + ":1:"), run.err());
+        assertArrayEquals(new byte[0], Fifos.read(read, fifo));
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+
+        read = Fifos.readAll(fifo);
+        CliRun usage = CliRun.of("render", "--page", "9", "--out", fifo.toString());
+        assertEquals(ExitCode.USAGE_ERROR, usage.exitCode(), usage.err());
+        assertArrayEquals(new byte[0], Fifos.read(read, fifo));
+
+        Path regular = Files.writeString(dir.resolve("drawn.png"), "drawn before");
+        CliRun kept = CliRun.of("render", "--scene", broken.toString(), "--out", regular.toString());
+        assertEquals(ExitCode.SCENE_ERROR, kept.exitCode(), kept.err());
+        assertEquals("drawn before", Files.readString(regular));
+        assertEquals(List.of("broken.simp", "drawn.png", "f.png"), names(dir));
+    }
 }
