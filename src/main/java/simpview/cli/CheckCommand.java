@@ -107,6 +107,9 @@ public final class CheckCommand implements Callable<Integer> {
     @Mixin
     private ThreadsOption threads;
 
+    /** The files the run reads and writes, once its options are checked; null before. */
+    private OutputPaths files;
+
     /** The rubric a folder carries for itself, used when --rubric does not name one. */
     static final String FOLDER_RUBRIC = "compare.json";
 
@@ -123,9 +126,6 @@ public final class CheckCommand implements Callable<Integer> {
             }
         }
     }
-
-    /** The files the run reads and writes, once its options are checked; null before. */
-    private OutputPaths files;
 
     private int check() {
         if (pages != null && scene != null) {
