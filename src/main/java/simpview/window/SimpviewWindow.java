@@ -701,16 +701,8 @@ public final class SimpviewWindow {
         String pixel = pinnedX >= 0 ? "the pinned pixel" : "the pixel under the pointer";
         if (x < 0 || y < 0) {
             // The pointer is off the picture (over the side panel, the status strip, beside the page) and none is pinned.
-            String words = "There is no pixel under the pointer: point at the picture, or pin a pixel (P, or Shift+G "
-                    + "for its coordinates), then press J.";
-            if (wholeDrawn) {
-                ownerWords = words + " Back at primitive " + stepBeforeOwner + ".";
-                settings = settings.withStepLimit(stepBeforeOwner);
-                reload();
-                ownerJob = pending;
-                return;
-            }
-            status.say(words);
+            nothingToStepTo("There is no pixel under the pointer: point at the picture, or pin a pixel (P, or Shift+G "
+                    + "for its coordinates), then press J.", wholeDrawn);
             return;
         }
         int owner = Inspector.ownerAt(shown, x, y);
@@ -726,19 +718,27 @@ public final class SimpviewWindow {
             return;
         }
         if (owner < 0) {
-            String words = "No primitive draws " + pixel + " in the whole picture: nothing to step to.";
-            if (wholeDrawn) {
-                ownerWords = words + " Back at primitive " + stepBeforeOwner + ".";
-                settings = settings.withStepLimit(stepBeforeOwner);
-                reload();
-                ownerJob = pending;
-                return;
-            }
-            status.say(words);
+            nothingToStepTo("No primitive draws " + pixel + " in the whole picture: nothing to step to.", wholeDrawn);
             return;
         }
         settings = settings.withStepLimit(owner + 1);
         reload();
+    }
+
+    /**
+     * Says why J has nothing to step to; when the whole picture was drawn to
+     * find out ({@code wholeDrawn}), once the drawing is back at the step it
+     * was at.
+     */
+    private void nothingToStepTo(String words, boolean wholeDrawn) {
+        if (!wholeDrawn) {
+            status.say(words);
+            return;
+        }
+        ownerWords = words + " Back at primitive " + stepBeforeOwner + ".";
+        settings = settings.withStepLimit(stepBeforeOwner);
+        reload();
+        ownerJob = pending;
     }
 
     /** Asks for a primitive number and steps the drawing to it (G). */
