@@ -16,6 +16,7 @@ import simpview.surface.Colors;
 import simpview.surface.CoverageDrawable;
 import simpview.surface.Drawable;
 import simpview.surface.DrawableDecorator;
+import simpview.surface.OnePixelSurface;
 import simpview.surface.GhostWritingDrawable;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
@@ -67,7 +68,10 @@ public final class A1Inspector {
             px = column - A1Layout.left(panel);
             py = A1Layout.top(panel) + A1Layout.PANEL - 1 - row;
             Watch watch = new Watch(px, py, writes);
-            OnePixel pixel = new OnePixel(px, py);
+            // The panel as the replay needs it: the one pixel watched, the panel's background elsewhere (what a ghost
+            // or a blend reads beside it only makes writes the probe drops). A page drawn for each pixel inspected
+            // was most of an inspection's time, and its garbage, while the pointer swept a page.
+            OnePixelSurface pixel = new OnePixelSurface(A1Layout.PANEL, A1Layout.PANEL, px, py, PageCanvas.BACKGROUND);
             if (shown instanceof LineTestPage lines) {
                 drawer = LineTestPage.drawerName(panel, rule);
                 A1Lines set = lines.lines(seed);
@@ -92,7 +96,7 @@ public final class A1Inspector {
             for (A1Report.Write w : writes) {
                 w.of = watch.count;
             }
-            argb = pixel.getPixel(px, py);
+            argb = pixel.colour();
         }
         return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
                 argb, panel, drawer, px, py, writes, centre);
@@ -195,48 +199,6 @@ public final class A1Inspector {
             if (s.y == watch.y && s.x0 <= watch.x && watch.x < s.x1) {
                 setPixel(watch.x, s.y, s.zAt(watch.x), s.argbAt(watch.x));
             }
-        }
-    }
-
-    /**
-     * The panel as the replay needs it: one pixel, the one watched, kept; the panel's background everywhere else
-     * (what a ghost or a blend reads beside the pixel only makes writes the probe drops). No page is drawn: a
-     * 750x750 canvas made for each pixel inspected was most of an inspection's time, and its garbage, while the
-     * pointer swept a page.
-     */
-    private static final class OnePixel implements Drawable {
-        private final int x;
-        private final int y;
-        private int colour = PageCanvas.BACKGROUND;
-
-        OnePixel(int x, int y) {
-            this.x = x;
-            this.y = y;
-        }
-
-        @Override
-        public int width() {
-            return A1Layout.PANEL;
-        }
-
-        @Override
-        public int height() {
-            return A1Layout.PANEL;
-        }
-
-        @Override
-        public void setPixel(int x, int y, double z, int argb) {
-            if (x == this.x && y == this.y) {
-                colour = argb;
-            }
-        }
-
-        @Override
-        public int getPixel(int x, int y) {
-            if (x < 0 || y < 0 || x >= A1Layout.PANEL || y >= A1Layout.PANEL) {
-                return 0;
-            }
-            return (x == this.x && y == this.y ? colour : PageCanvas.BACKGROUND) | 0xFF000000;
         }
     }
 

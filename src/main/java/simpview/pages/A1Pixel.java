@@ -5,7 +5,8 @@ import simpview.geometry.Vertex;
 import simpview.raster.AntialiasedLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
 import simpview.raster.LineRenderer;
-import simpview.surface.Drawable;
+import simpview.surface.OnePixelSurface;
+import simpview.surface.PageCanvas;
 
 /**
  * What drew one pixel of a first-assignment page, for the inspector: its
@@ -72,14 +73,14 @@ public final class A1Pixel {
 
     /** {the last line to write panel pixel (x, y), how many did}; -1 for none. */
     private static int[] lastLine(A1Lines set, int panel, A1Rule rule, int x, int y) {
-        Probe probe = new Probe(x, y);
+        OnePixelSurface probe = new OnePixelSurface(A1Layout.PANEL, A1Layout.PANEL, x, y, PageCanvas.BACKGROUND);
         LineRenderer drawer = LineTestPage.drawer(panel, rule);
         int last = -1;
         int count = 0;
         for (int i = 0; i < set.count(); i++) {
-            probe.hit = false;
+            probe.watchAgain();
             drawer.drawLine(set.numbers(), A1Lines.from(i), A1Lines.to(i), probe);
-            if (probe.hit) {
+            if (probe.written()) {
                 last = i;
                 count++;
             }
@@ -89,15 +90,15 @@ public final class A1Pixel {
 
     /** {the last triangle to write panel pixel (x, y), how many did}; -1 for none. */
     private static int[] lastTriangle(A1Polygons scenes, int panel, int x, int y) {
-        Probe probe = new Probe(x, y);
+        OnePixelSurface probe = new OnePixelSurface(A1Layout.PANEL, A1Layout.PANEL, x, y, PageCanvas.BACKGROUND);
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         double[] n = scenes.scene(panel);
         int last = -1;
         int count = 0;
         for (int i = 0; i < scenes.count(panel); i++) {
-            probe.hit = false;
+            probe.watchAgain();
             fill.drawPolygon(n, A1Polygons.at(i), probe);
-            if (probe.hit) {
+            if (probe.written()) {
                 last = i;
                 count++;
             }
@@ -140,37 +141,5 @@ public final class A1Pixel {
         }
         return String.format(Locale.ROOT, "%s · triangle %d of %d%s", how, last + 1, scenes.count(panel),
                 count > 1 ? ", the last of " + count + " here" : "");
-    }
-
-    /** A 300x300 surface that keeps nothing but whether one pixel was written. */
-    private static final class Probe implements Drawable {
-        private final int x;
-        private final int y;
-        boolean hit;
-
-        Probe(int x, int y) {
-            this.x = x;
-            this.y = y;
-        }
-
-        @Override
-        public int width() {
-            return A1Layout.PANEL;
-        }
-
-        @Override
-        public int height() {
-            return A1Layout.PANEL;
-        }
-
-        @Override
-        public void setPixel(int px, int py, double z, int argb) {
-            hit |= px == x && py == y;
-        }
-
-        @Override
-        public int getPixel(int px, int py) {
-            return 0;
-        }
     }
 }
