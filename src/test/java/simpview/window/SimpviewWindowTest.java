@@ -2,6 +2,8 @@ package simpview.window;
 
 import simpview.testing.Images;
 import simpview.scene.simp.SceneDrawer;
+import simpview.scene.simp.SceneMonitor;
+import simpview.scene.simp.Setting;
 import simpview.window.render.RenderedView;
 import simpview.window.render.View;
 
@@ -57,7 +59,15 @@ public class SimpviewWindowTest extends WindowTestCase {
 
     @Test
     void clickingStepsThroughAllPagesAndEachMatchesTheHeadlessRender() throws Exception {
-        PageContext context = PageContext.defaults().withSeed(SEED).withSimpDir(TestScenes.courseSimpDir());
+        // The window's messages name settings as the command line that opens it does, by option (--simp-dir).
+        SceneMonitor byOption = new SceneMonitor() {
+            @Override
+            public String nameOf(Setting setting) {
+                return setting.option();
+            }
+        };
+        PageContext context = PageContext.defaults().withSeed(SEED).withSimpDir(TestScenes.courseSimpDir())
+                .withMonitor(byOption);
         open(context.simpDir(), SceneDrawer.SIMP);
         PageRenderer headless = new PageRenderer();
         for (int page = 1; page <= Assignment2.COUNT; page++) {
