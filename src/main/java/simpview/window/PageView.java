@@ -7,8 +7,10 @@ import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.Rectangle;
 import java.awt.RenderingHints;
+import java.awt.GraphicsConfiguration;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.geom.AffineTransform;
 import java.awt.geom.Path2D;
 import simpview.pages.A1Marks;
 import simpview.window.instruments.Outlines;
@@ -23,6 +25,14 @@ import simpview.surface.PageCanvas;
  * copied 1:1), with overlays drawn over it (pixel grid, the pinned pixel, the
  * outline of a primitive, a scene error). The picture itself is
  * never drawn here.
+ *
+ * <p>The page and its overlays are painted in the display's own pixels
+ * (device pixels), whatever the desktop's scale: {@link ZoomPan} works in
+ * them, so that a page pixel is always a whole number of them (at 150 %
+ * Java2D's own scaling would draw it 1.5 wide: one column one pixel, the
+ * next two). The pointer's place, given in the desktop's points, is turned
+ * into device pixels here ({@link #deviceX}); the error box and everything
+ * else of the window stay in points, at the desktop's size.
  */
 public final class PageView extends JComponent {
 
@@ -55,15 +65,19 @@ public final class PageView extends JComponent {
     private transient java.util.List<double[]> clipped;
     static final Color CULLED = new Color(255, 160, 0);
     static final Color CLIPPED = new Color(0, 200, 255);
+    /** Device pixels a point of the desktop, as last laid out or painted (1.5 at 150 %). */
+    private double scale = 1;
+    /** Where this view's (0, 0) lies right of (and below) the device pixel the page is painted from: 0 to 0.5. */
+    private double shiftX;
+    private double shiftY;
 
     PageView() {
-        setPreferredSize(new Dimension(PageCanvas.SIZE, PageCanvas.SIZE));
         setMinimumSize(new Dimension(100, 100));
         setOpaque(true);
         addComponentListener(new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
-                zoomPan.resize(getWidth(), getHeight());
+                layOut(desktopScale());
                 repaint();
             }
         });
@@ -71,6 +85,68 @@ public final class PageView extends JComponent {
 
     ZoomPan zoomPan() {
         return zoomPan;
+    }
+
+    /**
+     * Room for the whole page at the whole number of device pixels a page
+     * pixel nearest the desktop's scale, in points: 750 unscaled and at
+     * 200 %, 1000 at 150 % (the page two device pixels a page pixel, where
+     * 750 points would show it 1.5), 600 at 125 % (one).
+     */
+    @Override
+    public Dimension getPreferredSize() {
+        if (isPreferredSizeSet()) {
+            return super.getPreferredSize();
+        }
+        int side = preferredSide(desktopScale());
+        return new Dimension(side, side);
+    }
+
+    /** The side of the view's preferred square, in points, on a desktop of {@code deviceScale}. */
+    static int preferredSide(double deviceScale) {
+        return (int) Math.ceil(PageCanvas.SIZE * Math.max(1, Math.round(deviceScale)) / deviceScale - 1e-9);
+    }
+
+    /** The desktop's scale where this view is shown (1.5 at 150 %); off screen, the scale it was last painted at. */
+    private double desktopScale() {
+        GraphicsConfiguration screen = getGraphicsConfiguration();
+        return screen == null ? scale : screen.getDefaultTransform().getScaleX();
+    }
+
+    /** Sizes the zoom's viewport in device pixels, at {@code deviceScale} of them a point. */
+    private void layOut(double deviceScale) {
+        scale = deviceScale;
+        zoomPan.resize((int) Math.floor(getWidth() * scale + 1e-9), (int) Math.floor(getHeight() * scale + 1e-9),
+                unitOf(scale));
+    }
+
+    /** Device pixels a page pixel at the desktop's own size: its scale as a whole number (1 at 125 % and 150 %). */
+    static int unitOf(double deviceScale) {
+        return Math.max(1, (int) Math.floor(deviceScale + 1e-9));
+    }
+
+    /** Device pixels a point, as this view was last laid out or painted. */
+    double deviceScale() {
+        return scale;
+    }
+
+    /** The device x (as {@link ZoomPan} counts) of point x of this view, e.g. the pointer's. */
+    double deviceX(double x) {
+        return x * scale + shiftX;
+    }
+
+    double deviceY(double y) {
+        return y * scale + shiftY;
+    }
+
+    /** The image column under point x of this view, or -1 off the image. */
+    int imageX(int x) {
+        return zoomPan.imageX(deviceX(x));
+    }
+
+    /** The image row under point y of this view, or -1 off the image. */
+    int imageY(int y) {
+        return zoomPan.imageY(deviceY(y));
     }
 
     /** Shows a finished page and, if it failed, its error over it. Call on the EDT. */
@@ -157,7 +233,7 @@ public final class PageView extends JComponent {
         return culled != null;
     }
 
-    /** Where the image's top-left corner is, in this component. */
+    /** Where the image's top-left corner is, in this component's device pixels (its points when unscaled). */
     java.awt.Point imageOrigin() {
         return new java.awt.Point((int) zoomPan.originX(), (int) zoomPan.originY());
     }
@@ -169,16 +245,41 @@ public final class PageView extends JComponent {
             Rectangle clip = g.getClipBounds() != null ? g.getClipBounds() : new Rectangle(getSize());
             g.setColor(AROUND);
             g.fillRect(clip.x, clip.y, clip.width, clip.height);
+            paintInDevicePixels(g);
+            if (error != null && !errorHidden) {
+                ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
+                        error, getWidth(), getHeight());
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /**
+     * The page and its overlays, drawn with the desktop's scaling taken off:
+     * one unit of drawing is one device pixel, from the whole device pixel
+     * nearest this view's corner.
+     */
+    private void paintInDevicePixels(Graphics2D logical) {
+        AffineTransform toDevice = logical.getTransform();
+        if (toDevice.getScaleX() != scale && toDevice.getScaleX() > 0) {
+            layOut(toDevice.getScaleX()); // the first paint, or the window moved to a screen of another scale
+        }
+        Graphics2D g = (Graphics2D) logical.create();
+        try {
+            double cornerX = Math.floor(toDevice.getTranslateX() + 0.5);
+            double cornerY = Math.floor(toDevice.getTranslateY() + 0.5);
+            shiftX = toDevice.getTranslateX() - cornerX;
+            shiftY = toDevice.getTranslateY() - cornerY;
+            g.setTransform(AffineTransform.getTranslateInstance(cornerX, cornerY));
+            Rectangle clip = g.getClipBounds() != null ? g.getClipBounds()
+                    : new Rectangle(0, 0, (int) Math.ceil(getWidth() * scale), (int) Math.ceil(getHeight() * scale));
             paintImage(g, clip);
             if (PixelGrid.shows(zoomPan)) {
                 PixelGrid.paint(g, zoomPan, image, clip);
             }
             paintWire(g);
             paintMarks(g);
-            if (error != null && !errorHidden) {
-                ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
-                        error, getWidth(), getHeight());
-            }
         } finally {
             g.dispose();
         }
@@ -234,7 +335,7 @@ public final class PageView extends JComponent {
             // Not antialiased: 1-px lines, a dozen times faster to draw than antialiased ones (Overlays.wireOverFill:
             // page-d's 16,026 outlines 57 ms antialiased, 4.8 ms not, against 9.9 ms to draw the page).
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_OFF);
-            g.setStroke(new BasicStroke(1f));
+            g.setStroke(new BasicStroke(zoomPan.unit()));
             outlines(g, wire, WIRE);
             outlines(g, culled, CULLED);
             outlines(g, clipped, CLIPPED);
@@ -260,7 +361,8 @@ public final class PageView extends JComponent {
         if (marks.isEmpty()) {
             return;
         }
-        g.setStroke(new BasicStroke(1.25f));
+        float unit = zoomPan.unit();
+        g.setStroke(new BasicStroke(1.25f * unit));
         for (double[] points : marks.outlines()) {
             Path2D.Double path = new Path2D.Double();
             path.moveTo(zoomPan.screenX(points[0]), zoomPan.screenY(points[1]));
@@ -271,15 +373,16 @@ public final class PageView extends JComponent {
             g.draw(path);
         }
         g.setColor(ROUNDED);
-        g.setStroke(new BasicStroke(1.25f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        g.setStroke(new BasicStroke(1.25f * unit, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                new float[] {6 * unit, 4 * unit}, 0));
         segments(g, marks.rounded());
         g.setColor(MARK);
-        g.setStroke(new BasicStroke(1.5f));
+        g.setStroke(new BasicStroke(1.5f * unit));
         segments(g, marks.given());
     }
 
     private void segments(Graphics2D g, double[] ends) {
-        double ring = Math.max(3, zoomPan.zoom() / 4);
+        double ring = Math.max(3 * zoomPan.unit(), zoomPan.zoom() / 4);
         for (int k = 0; k + 3 < ends.length; k += 4) {
             double x0 = zoomPan.screenX(ends[k]);
             double y0 = zoomPan.screenY(ends[k + 1]);
@@ -301,16 +404,17 @@ public final class PageView extends JComponent {
                 path.lineTo(zoomPan.screenX(outline[k]), zoomPan.screenY(outline[k + 1]));
             }
             path.closePath();
-            g.setStroke(new BasicStroke(1.25f));
+            g.setStroke(new BasicStroke(1.25f * zoomPan.unit()));
             g.draw(path);
         }
         paintA1Marks(g);
         if (pinnedX >= 0) {
-            double size = Math.max(zoomPan.zoom(), 3);
+            int unit = zoomPan.unit();
+            double size = Math.max(zoomPan.zoom(), 3 * unit);
             double left = zoomPan.screenX(pinnedX + 0.5) - size / 2;
             double top = zoomPan.screenY(pinnedY + 0.5) - size / 2;
-            g.setStroke(new BasicStroke(2f));
-            g.draw(new java.awt.geom.Rectangle2D.Double(left - 2, top - 2, size + 4, size + 4));
+            g.setStroke(new BasicStroke(2f * unit));
+            g.draw(new java.awt.geom.Rectangle2D.Double(left - 2 * unit, top - 2 * unit, size + 4 * unit, size + 4 * unit));
         }
     }
 }

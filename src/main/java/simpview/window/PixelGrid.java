@@ -6,8 +6,8 @@ import java.awt.Rectangle;
 import java.awt.image.BufferedImage;
 
 /**
- * The magnifier's detail, drawn over the picture from 8x on: a line along
- * the left and top edge of every image pixel, and a dot at every pixel's
+ * The magnifier's detail, drawn over the picture from 8x (eight units, {@link ZoomPan#unit}) on: a line along
+ * the left and top edge of every image pixel (one device pixel wide), and a dot at every pixel's
  * centre (light on dark pixels, dark on light ones), so that where a sample
  * falls can be seen. An overlay only: the image itself is never touched.
  */
@@ -24,7 +24,7 @@ public final class PixelGrid {
     }
 
     public static boolean shows(ZoomPan zoomPan) {
-        return zoomPan.isIntegerZoom() && zoomPan.zoom() >= FROM_ZOOM;
+        return zoomPan.isIntegerZoom() && zoomPan.zoom() >= FROM_ZOOM * zoomPan.unit();
     }
 
     /** Draws the grid over the image pixels that lie inside {@code clip} (screen coordinates). */
@@ -43,7 +43,7 @@ public final class PixelGrid {
         for (int j = rows[0]; j < rows[1]; j++) {
             g.fillRect(left, (int) zoomPan.screenY(j), right - left, 1);
         }
-        int dot = zoom >= 16 ? 2 : 1;
+        int dot = (zoom >= 16 * zoomPan.unit() ? 2 : 1) * zoomPan.unit();
         int inset = zoom / 2 - dot / 2;
         for (int j = rows[0]; j < rows[1]; j++) {
             for (int i = cols[0]; i < cols[1]; i++) {

@@ -13,6 +13,8 @@ import javax.swing.SwingUtilities;
  * without moving) steps on; a left drag pans; a right drag (or Shift + left
  * drag) turns the view; the wheel zooms about the pointer, and with Ctrl or
  * Alt moves the view nearer or farther; moving reports the point under it.
+ * The pointer comes in the desktop's points; the zoom and the pan go by the
+ * view's device pixels ({@link PageView#deviceX}).
  */
 public final class PointerGestures extends MouseAdapter {
 
@@ -39,7 +41,7 @@ public final class PointerGestures extends MouseAdapter {
     /** A press and release closer than this (in screen pixels) is a click, not a drag. */
     static final int CLICK_SLOP = 3;
 
-    private final ZoomPan zoomPan;
+    private final PageView view;
     private final Actions actions;
     private int pressX;
     private int pressY;
@@ -48,8 +50,8 @@ public final class PointerGestures extends MouseAdapter {
     private boolean dragging;
     private boolean turning;
 
-    public PointerGestures(ZoomPan zoomPan, Actions actions) {
-        this.zoomPan = zoomPan;
+    public PointerGestures(PageView view, Actions actions) {
+        this.view = view;
         this.actions = actions;
     }
 
@@ -83,7 +85,7 @@ public final class PointerGestures extends MouseAdapter {
             actions.orbit(dx, dy);
         } else if (SwingUtilities.isLeftMouseButton(e)) {
             e.getComponent().setCursor(Cursor.getPredefinedCursor(Cursor.MOVE_CURSOR));
-            zoomPan.pan(dx, dy);
+            view.zoomPan().pan(dx * view.deviceScale(), dy * view.deviceScale());
             actions.zoomPanChanged();
         }
         actions.hover(e.getX(), e.getY());
@@ -122,7 +124,7 @@ public final class PointerGestures extends MouseAdapter {
             actions.nearer(notches);
             return;
         }
-        zoomPan.wheel(e.getX(), e.getY(), notches);
+        view.zoomPan().wheel(view.deviceX(e.getX()), view.deviceY(e.getY()), notches);
         actions.zoomPanChanged();
         actions.hover(e.getX(), e.getY());
     }

@@ -179,7 +179,7 @@ public final class SimpviewWindow {
         frame.setResizable(true);
         // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
         frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
-        new PointerGestures(pageView.zoomPan(), new Gestures()).attach(pageView);
+        new PointerGestures(pageView, new Gestures()).attach(pageView);
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
@@ -254,11 +254,10 @@ public final class SimpviewWindow {
      * Returns whether it is another pixel than before.
      */
     private boolean followPointer() {
-        ZoomPan zoomPan = pageView.zoomPan();
         int wasX = hoverX;
         int wasY = hoverY;
-        hoverX = pointerX < 0 ? -1 : zoomPan.imageX(pointerX);
-        hoverY = pointerY < 0 ? -1 : zoomPan.imageY(pointerY);
+        hoverX = pointerX < 0 ? -1 : pageView.imageX(pointerX);
+        hoverY = pointerY < 0 ? -1 : pageView.imageY(pointerY);
         return hoverX != wasX || hoverY != wasY;
     }
 
@@ -396,8 +395,10 @@ public final class SimpviewWindow {
             case SAVE -> () -> save();
             case REDRAW -> () -> drawAgainFromDisk();
             case CLOSE, QUIT -> () -> close();
-            case ZOOM_IN -> () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, -1));
-            case ZOOM_OUT -> () -> zoom(z -> z.wheel(pageView.getWidth() / 2.0, pageView.getHeight() / 2.0, 1));
+            case ZOOM_IN -> () -> zoom(z -> z.wheel(pageView.deviceX(pageView.getWidth() / 2.0),
+                    pageView.deviceY(pageView.getHeight() / 2.0), -1));
+            case ZOOM_OUT -> () -> zoom(z -> z.wheel(pageView.deviceX(pageView.getWidth() / 2.0),
+                    pageView.deviceY(pageView.getHeight() / 2.0), 1));
             case ACTUAL_SIZE -> () -> zoom(ZoomPan::actualSize);
             case FIT -> () -> zoom(ZoomPan::fit);
             case CROP -> () -> zoom(ZoomPan::fitPanel);

@@ -13,6 +13,15 @@ package simpview.window;
  * Zooming or panning leaves fit; {@link #fit()} goes back to it.
  * Integer zooms keep the origin on whole screen pixels, so every image pixel
  * is exactly {@code zoom} by {@code zoom} screen pixels.
+ *
+ * <p>Screen pixels are the display's own (device) pixels. On a desktop
+ * scaled by a whole number (200 %: each of its points two by two pixels),
+ * that number is the {@linkplain #unit() unit}: the page at the desktop's
+ * own size is one page pixel a point, and that is "1:1" here, what fit
+ * starts from, Z and the wheel's steps (each a whole number of units). A
+ * desktop scaled by a fraction (125 %, 150 %) has a unit of 1: the page is
+ * shown a whole number of device pixels a page pixel, never 1.5, which would
+ * draw some page pixels one device pixel wide and others two.
  */
 public final class ZoomPan {
 
@@ -32,6 +41,8 @@ public final class ZoomPan {
     /** The fit is made on the panel alone (Crop), even when the whole image would fit. */
     private boolean panelOnly;
     private double zoom = 1;
+    /** Device pixels a page pixel at the desktop's own size: its scale, a whole number, at least 1. */
+    private int unit = 1;
     /** The image's top-left corner on screen, unrounded: zooming about a point keeps that point exactly. */
     private double exactX;
     private double exactY;
@@ -47,6 +58,18 @@ public final class ZoomPan {
 
     /** The viewport changed size; in fit mode the image follows it. */
     public void resize(int width, int height) {
+        resize(width, height, 1);
+    }
+
+    /**
+     * The viewport changed size, in device pixels, on a desktop whose unit (device pixels a page pixel at
+     * its own size) is {@code deviceUnit}; in fit mode the image follows it.
+     */
+    public void resize(int width, int height, int deviceUnit) {
+        if (deviceUnit != unit && !fitting) {
+            zoom = Math.max(1, Math.round(zoom / unit)) * (double) deviceUnit;
+        }
+        unit = Math.max(1, deviceUnit);
         viewWidth = Math.max(1, width);
         viewHeight = Math.max(1, height);
         if (fitting) {
@@ -73,28 +96,48 @@ public final class ZoomPan {
         centre();
     }
 
+    /** Device pixels a page pixel at the desktop's own size (1:1): its scale as a whole number, at least 1. */
+    public int unit() {
+        return unit;
+    }
+
     /**
-     * One image pixel per screen pixel, centred on what is in the middle of
-     * the view now; when the whole image fits at 1:1, centred in the view.
+     * One image pixel per screen pixel (per point of a desktop scaled by a
+     * whole number), centred on what is in the middle of the view now; when
+     * the whole image fits at 1:1, centred in the view.
      */
     public void actualSize() {
-        zoomAbout(viewWidth / 2.0, viewHeight / 2.0, 1);
-        if (imageSize <= viewWidth && imageSize <= viewHeight) {
+        zoomAbout(viewWidth / 2.0, viewHeight / 2.0, unit);
+        if (imageSize * unit <= viewWidth && imageSize * unit <= viewHeight) {
             centre();
         }
     }
 
-    /** The zoom at which the whole image fits the viewport: an integer when 1:1 fits, else a fraction. */
+    /**
+     * The zoom at which the whole image fits the viewport: an integer when 1:1 fits, else a fraction.
+     * The whole image at 1:1 or more comes first; then the panel alone, larger than the whole image
+     * would be; then the whole image at a smaller whole zoom (only where the unit is more than one device
+     * pixel); then the panel below one device pixel a page pixel.
+     */
     public double fitZoom() {
         int room = Math.min(viewWidth, viewHeight);
-        if (!panelOnly && room >= imageSize) {
-            return Math.min(MAX_ZOOM, room / imageSize);
+        int whole = panelOnly ? 0 : room / imageSize;
+        if (whole >= unit) {
+            return Math.min(maxZoom(), whole);
         }
-        int panel = panelSize();
-        if (room >= panel) {
-            return Math.min(MAX_ZOOM, room / panel);
+        int panel = room / panelSize();
+        if (panel > whole) {
+            return Math.min(maxZoom(), panel);
         }
-        return (double) room / panel;
+        if (whole >= 1) {
+            return whole;
+        }
+        return (double) room / panelSize();
+    }
+
+    /** The largest zoom the wheel reaches: 32 units. */
+    public int maxZoom() {
+        return MAX_ZOOM * unit;
     }
 
     /** The side of the panel: the image without its margins. */
@@ -117,22 +160,25 @@ public final class ZoomPan {
     }
 
     private double stepIn(double from) {
+        if (from < 1 - 1e-9) {
+            return 1;
+        }
         for (int step : STEPS) {
-            if (step > from + 1e-9) {
-                return step;
+            if (step * unit > from + 1e-9) {
+                return step * unit;
             }
         }
-        return MAX_ZOOM;
+        return maxZoom();
     }
 
     private double stepOut(double from) {
         double smallest = Math.min(1, fitZoom());
         for (int k = STEPS.length - 1; k >= 0; k--) {
-            if (STEPS[k] < from - 1e-9 && STEPS[k] >= smallest) {
-                return STEPS[k];
+            if (STEPS[k] * unit < from - 1e-9 && STEPS[k] * unit >= smallest) {
+                return STEPS[k] * unit;
             }
         }
-        return smallest;
+        return from > 1 + 1e-9 ? 1 : smallest;
     }
 
     /** Sets the zoom, keeping the image point under screen point (x, y) under it. */
@@ -140,7 +186,7 @@ public final class ZoomPan {
         double imageX = (x - exactX) / zoom;
         double imageY = (y - exactY) / zoom;
         fitting = false;
-        zoom = Math.max(Math.min(1, fitZoom()), Math.min(MAX_ZOOM, newZoom));
+        zoom = Math.max(Math.min(1, fitZoom()), Math.min(maxZoom(), newZoom));
         exactX = x - imageX * zoom;
         exactY = y - imageY * zoom;
         clampOrigin();
@@ -169,8 +215,8 @@ public final class ZoomPan {
             double panel = panelSize() * zoom;
             // The origin is floored when shown: so that the panel's first column and row are not cut, take whole pixels here.
             // (1e-9: a panel that fills the view exactly must not start a pixel early by rounding.)
-            exactX = Math.floor((viewWidth - panel) / 2.0 + 1e-9) - Math.floor(margin * zoom + 1e-9);
-            exactY = Math.floor((viewHeight - panel) / 2.0 + 1e-9) - Math.floor(margin * zoom + 1e-9);
+            exactX = Math.floor((viewWidth - panel) / 2.0 / unit + 1e-9) * unit - Math.floor(margin * zoom + 1e-9);
+            exactY = Math.floor((viewHeight - panel) / 2.0 / unit + 1e-9) * unit - Math.floor(margin * zoom + 1e-9);
         } else {
             exactX = Math.floor((viewWidth - shownSize()) / 2.0);
             exactY = Math.floor((viewHeight - shownSize()) / 2.0);
@@ -201,13 +247,16 @@ public final class ZoomPan {
         return fitting;
     }
 
-    /** The screen x of the image's left edge: a whole pixel, so that at an integer zoom pixel edges are exact. */
+    /**
+     * The screen x of the image's left edge: a whole pixel, so that at an integer zoom pixel edges are exact,
+     * and a whole number of units, so that a point of the desktop (where the pointer is) lies in one page pixel.
+     */
     public double originX() {
-        return Math.floor(exactX);
+        return Math.floor(exactX / unit) * unit;
     }
 
     public double originY() {
-        return Math.floor(exactY);
+        return Math.floor(exactY / unit) * unit;
     }
 
     /** The image column under screen x, or -1 when it is off the image. */
@@ -246,9 +295,16 @@ public final class ZoomPan {
     public String describe() {
         String crop = cropped() ? ", margins cropped" : "";
         if (!isIntegerZoom()) {
-            return "below 1:1: " + Math.round(zoom * 100) + " %" + crop + ", 1-px lines kept (Z: 1:1, drag to scroll)";
+            return "below 1:1: " + Math.round(zoom / unit * 100) + " %" + crop + ", 1-px lines kept (Z: 1:1, drag to scroll)";
         }
         int z = (int) zoom;
-        return (z == 1 ? "1:1" : z + "x") + crop;
+        if (z < unit) {
+            return "below 1:1: " + Math.round(100.0 * z / unit) + " %" + crop + ", " + z + " screen pixel"
+                    + (z == 1 ? "" : "s") + " a page pixel (Z: 1:1)";
+        }
+        if (z % unit != 0) {
+            return z + " screen pixels a page pixel" + crop;
+        }
+        return (z == unit ? "1:1" : z / unit + "x") + crop;
     }
 }

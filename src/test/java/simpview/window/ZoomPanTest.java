@@ -26,6 +26,30 @@ public class ZoomPanTest {
     }
 
     @Test
+    void onADesktopAt200PercentOneToOneIsTwoDevicePixelsAPagePixelAndThePanelComesBeforeAHalfSizePage() {
+        ZoomPan zoomPan = new ZoomPan(750, 50);
+        // 750 by 733 points: the whole page fits only at one device pixel a page pixel, the panel at two.
+        zoomPan.resize(1500, 1466, 2);
+        assertEquals(2.0, zoomPan.zoom());
+        assertEquals("1:1, margins cropped", zoomPan.describe());
+        // The origin is kept to whole points: a point of the desktop is in one page pixel, not across two.
+        assertEquals(0, (int) zoomPan.originY() % 2);
+        assertEquals(0, (int) zoomPan.originX() % 2);
+        zoomPan.wheel(750, 733, -1);
+        assertEquals(4.0, zoomPan.zoom());
+        assertEquals("2x", zoomPan.describe());
+        zoomPan.actualSize();
+        assertEquals(2.0, zoomPan.zoom());
+        zoomPan.wheel(750, 733, 1);
+        assertEquals(1.0, zoomPan.zoom());
+        assertTrue(zoomPan.describe().startsWith("below 1:1: 50 %, 1 screen pixel a page pixel"), zoomPan.describe());
+        zoomPan.resize(1500, 1600, 2);
+        zoomPan.fit();
+        assertEquals(2.0, zoomPan.zoom());
+        assertEquals("1:1", zoomPan.describe());
+    }
+
+    @Test
     void fitIsTheLargestIntegerZoomThatFits() {
         assertEquals(2.0, in(1600, 1520).zoom());
         assertEquals(1.0, in(1600, 1499).zoom());
