@@ -67,7 +67,8 @@ final class SceneHarness {
 
     /**
      * A file that is not text: none of its bytes is shown, and the offset the
-     * message names is a byte no text holds, on the line it names.
+     * message names is a byte no text holds, on the line and at the column
+     * it names.
      */
     private static void checkNotText(SceneException e, String where) throws IOException {
         assertEquals("", e.lineText(), "a binary line is not shown" + where);
@@ -88,6 +89,19 @@ final class SceneHarness {
         }
         assertEquals(e.line(), line, "on the line named" + where);
         assertEquals(line, Integer.parseInt(m.group(3)), where);
+        int start = offset;
+        while (start > 0 && bytes[start - 1] != '\n') {
+            start--;
+        }
+        if (start == 0 && bytes.length >= 3 && bytes[0] == (byte) 0xEF && bytes[1] == (byte) 0xBB
+                && bytes[2] == (byte) 0xBF) {
+            start = 3;
+        }
+        int column = 1;
+        for (int i = start; i < offset; i++) {
+            column += (bytes[i] & 0xC0) == 0x80 ? 0 : 1;
+        }
+        assertEquals(column, e.column(), "the byte's column, in characters from its line's start" + where);
     }
 
     /**

@@ -395,7 +395,7 @@ class LitScenesTest {
         SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(
                 write("u", "ambient 1 1 1", "obj \"tri\"", "obj \"notepad\""), canvas,
                 ScenePipeline.Options.lit(library), SceneMonitor.NONE));
-        assertTrue(e.getMessage().contains("notepad.obj:1, included from u.simp:3: UTF-16 text, not UTF-8"),
+        assertTrue(e.getMessage().contains("notepad.obj:1:1, included from u.simp:3: UTF-16 text, not UTF-8"),
                 e.getMessage());
         assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the triangle before it stays");
     }

@@ -139,12 +139,12 @@ final class ObjParser {
                 }
             }
         } catch (LineSource.LineTooLongException e) {
-            throw new SceneException(file(), source.lineNumber() + 1, 0, "",
+            throw new SceneException(file(), source.lineNumber() + 1, e.column(), "",
                     "a line is longer than " + LineSource.MAX_LINE + " bytes");
         } catch (LineSource.NotTextException e) {
             // a picture or a program renamed .obj, or text saved as UTF-16 or Latin-1: none of its bytes is shown
             NotText found = e.notText(KIND);
-            throw new SceneException(file(), found.line(), 0, "", found.problem());
+            throw new SceneException(file(), found.line(), found.column(), "", found.problem());
         } catch (IOException e) {
             throw new SceneException(file(), 0, 0, "", "cannot read the obj file: " + FileProblem.of(file(), e));
         } catch (OutOfMemoryError e) {

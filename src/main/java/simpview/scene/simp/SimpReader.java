@@ -176,12 +176,12 @@ public final class SimpReader implements AutoCloseable {
                 return false;
             }
         } catch (LineSource.LineTooLongException e) {
-            throw new SceneException(file(), source.lineNumber() + 1, 0, "", "line is too long (over "
+            throw new SceneException(file(), source.lineNumber() + 1, e.column(), "", "line is too long (over "
                     + LineSource.MAX_LINE + " bytes)");
         } catch (LineSource.NotTextException e) {
             // a program or a picture renamed .simp, or text saved as UTF-16 or Latin-1: none of its bytes is shown
             NotText found = e.notText("a SIMP file");
-            throw new SceneException(file(), found.line(), 0, "", found.problem());
+            throw new SceneException(file(), found.line(), found.column(), "", found.problem());
         } catch (IOException e) {
             throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + FileProblem.of(file(), e));
         }

@@ -192,7 +192,22 @@ public final class LineSource {
             return true;
         }
         int next = notTextAt + 1 < limit ? buf[notTextAt + 1] & 0xFF : -1;
-        throw new NotTextException(head(HEAD), bufferOffset + notTextAt, lineNumber, buf[notTextAt] & 0xFF, next);
+        throw new NotTextException(head(HEAD), bufferOffset + notTextAt, lineNumber,
+                1 + characters(buf, lineStart, notTextAt), buf[notTextAt] & 0xFF, next);
+    }
+
+    /**
+     * How many characters the UTF-8 text b[from, to) holds: its bytes that
+     * do not continue a character (0x80 to 0xBF continue one). The text
+     * before a line's first byte that no UTF-8 text holds is whole
+     * characters, so one plus this is that byte's column.
+     */
+    private static int characters(byte[] b, int from, int to) {
+        int n = 0;
+        for (int i = from; i < to; i++) {
+            n += (b[i] & 0xC0) == 0x80 ? 0 : 1;
+        }
+        return n;
     }
 
     /**
@@ -326,7 +341,10 @@ public final class LineSource {
         }
         if (limit == buf.length) {
             if (buf.length >= MAX_LINE) {
-                throw new LineTooLongException();
+                // the line starts at buf[0] (after a byte order mark on line 1): its first character past the limit
+                int bom = lineNumber == 0 && limit >= 3 && buf[0] == (byte) 0xEF && buf[1] == (byte) 0xBB
+                        && buf[2] == (byte) 0xBF ? 3 : 0;
+                throw new LineTooLongException(1 + characters(buf, bom, MAX_LINE));
             }
             byte[] bigger = new byte[Math.min(MAX_LINE, buf.length * 2)];
             System.arraycopy(buf, 0, bigger, 0, limit);
@@ -413,22 +431,25 @@ public final class LineSource {
         private final byte[] head;
         private final long offset;
         private final int line;
+        /** The byte's 1-based column: one plus the characters before it on its line. */
+        private final int column;
         private final int value;
         /** The byte after it, -1 when there is none: whether the byte is malformed UTF-8 or another encoding's. */
         private final int next;
 
-        NotTextException(byte[] head, long offset, int line, int value, int next) {
+        NotTextException(byte[] head, long offset, int line, int column, int value, int next) {
             super(String.format("byte 0x%02X at offset %d is not UTF-8 text", value, offset));
             this.head = head;
             this.offset = offset;
             this.line = line;
+            this.column = column;
             this.value = value;
             this.next = next;
         }
 
         /** The problem in words, {@code kind} saying what the file should be ("a SIMP file", "an .obj file"). */
         public NotText notText(String kind) {
-            return NotText.of(head, offset, line, value, next, kind);
+            return NotText.of(head, offset, line, column, value, next, kind);
         }
     }
 
@@ -436,8 +457,17 @@ public final class LineSource {
     public static final class LineTooLongException extends IOException {
         private static final long serialVersionUID = 1L;
 
-        LineTooLongException() {
+        /** The column of the line's first character past the limit. */
+        private final int column;
+
+        LineTooLongException(int column) {
             super("a line is longer than " + MAX_LINE + " bytes");
+            this.column = column;
+        }
+
+        /** The 1-based column of the line's first character past {@link #MAX_LINE} bytes: where it is too long. */
+        public int column() {
+            return column;
         }
     }
 }

@@ -10,9 +10,10 @@ package simpview.scene.text;
  * are checked alike, every line of them, comments included.
  *
  * @param line the line the problem is on (1 for UTF-16 and UTF-32: the whole file)
+ * @param column the column of the byte on its line, 1-based (1 for UTF-16 and UTF-32: the file's start)
  * @param problem the words: what the file is, and what was expected
  */
-public record NotText(int line, String problem) {
+public record NotText(int line, int column, String problem) {
 
     /** The first bytes of a kind of file that is not text, and what such a file is. */
     private record Look(int[] start, String what) {
@@ -35,7 +36,7 @@ public record NotText(int line, String problem) {
 
     /**
      * The problem with a file whose byte at {@code offset}, on line
-     * {@code line}, is {@code value}, the first that no UTF-8 text holds
+     * {@code line} and in its column {@code column}, is {@code value}, the first that no UTF-8 text holds
      * ({@link LineSource} finds it as it reads): UTF-16 or UTF-32 text, when
      * the file's first bytes ({@code head}) show it; else that byte, and what
      * the file looks like: a known kind of file by its first bytes, or text
@@ -48,27 +49,27 @@ public record NotText(int line, String problem) {
      *
      * @param kind what the file should be, "a SIMP file" or "an .obj file"
      */
-    public static NotText of(byte[] head, long offset, int line, int value, int next, String kind) {
+    public static NotText of(byte[] head, long offset, int line, int column, int value, int next, String kind) {
         String utf32 = utf32(head, 0, head.length);
         String utf16 = utf32 == null ? utf16(head, 0, head.length) : null;
         if (utf32 != null || utf16 != null) {
-            return new NotText(1, (utf32 != null ? "UTF-32 text, not UTF-8: " + utf32
+            return new NotText(1, 1, (utf32 != null ? "UTF-32 text, not UTF-8: " + utf32
                     : "UTF-16 text, not UTF-8: " + utf16) + SAVE_AS_UTF8.formatted(kind));
         }
         String byteAt = String.format("byte 0x%02X at offset %d (line %d)", value, offset, line);
         String looks = looksLike(head, 0, head.length);
         if (looks != null || value < 0x80) {
-            return new NotText(line, "not a text file: " + byteAt + (looks == null ? "" : "; it looks like " + looks)
+            return new NotText(line, column, "not a text file: " + byteAt + (looks == null ? "" : "; it looks like " + looks)
                     + "; " + kind + " is lines of text");
         }
         if (value >= 0xC0 && next >= 0x80 && next <= 0xBF) {
             // ED A0 80, C0 AF, F4 90 ...: bytes made as UTF-8 is made, by a program that made it wrongly
-            return new NotText(line, "not UTF-8 text: " + byteAt + String.format(" and the byte 0x%02X after it are"
+            return new NotText(line, column, "not UTF-8 text: " + byteAt + String.format(" and the byte 0x%02X after it are"
                     + " malformed UTF-8 (a character cut short, an overlong form, a surrogate or one beyond"
                     + " U+10FFFF), not text in another encoding", next) + SAVE_AS_UTF8.formatted(kind));
         }
         String latin = latin1(value);
-        return new NotText(line, "not UTF-8 text: " + byteAt + " starts or continues no UTF-8 character"
+        return new NotText(line, column, "not UTF-8 text: " + byteAt + " starts or continues no UTF-8 character"
                 + (latin == null ? "" : "; it looks like text saved as Latin-1 or Windows-1252, where that byte is '"
                 + latin + "'") + SAVE_AS_UTF8.formatted(kind));
     }

@@ -338,6 +338,7 @@ class ObjErrorsTest {
         Files.writeString(file, text.append('\n'));
         SceneException e = assertThrows(SceneException.class, () -> ObjReader.stream(file, face -> { }));
         assertEquals(4, e.line());
+        assertEquals(1048577, e.column(), "the first character past the limit");
         assertEquals("a line is longer than 1048576 bytes", e.problem());
     }
 }

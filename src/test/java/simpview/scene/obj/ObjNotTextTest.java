@@ -35,7 +35,9 @@ class ObjNotTextTest {
                 () -> ObjReader.stream(file, bytes, face -> { }));
         assertEquals(fromFile.getMessage(), inMemory.getMessage());
         assertEquals("", fromFile.lineText(), "no byte of it is shown");
-        assertEquals(0, fromFile.column());
+        assertTrue(fromFile.column() >= 1, "a column, for an editor to go to: " + fromFile.getMessage());
+        assertTrue(fromFile.getMessage().startsWith(file + ":" + fromFile.line() + ":" + fromFile.column() + ": "),
+                fromFile.getMessage());
         return fromFile;
     }
 
@@ -93,6 +95,21 @@ class ObjNotTextTest {
                 fails(new byte[] {'a', 'b', 'c', 'd', 0, 1, 2}).problem());
     }
 
+    /**
+     * The byte's column counts the characters before it on its line, a
+     * character of two, three or four bytes as one, as every other error's
+     * column counts; UTF-16 text, wrong from its first byte, is at 1:1.
+     */
+    @Test
+    void theByteIsPlacedAtItsColumn() throws IOException {
+        SceneException e = fails("v 0 0 0\n# \u00e9\u20ac\uD83D\uDE00\u0001\nf 1 2 3\n", StandardCharsets.UTF_8);
+        assertEquals(2, e.line());
+        assertEquals(6, e.column());
+        SceneException utf16 = fails("\uFEFF" + MODEL, StandardCharsets.UTF_16LE);
+        assertEquals(1, utf16.line());
+        assertEquals(1, utf16.column());
+    }
+
     /** A line of a v or f that fails, in a file that is not text, says that rather than what the line lacks. */
     @Test
     void aLineThatFailsInAFileThatIsNotTextSaysSo() throws IOException {
@@ -110,6 +127,7 @@ class ObjNotTextTest {
         assertEquals("not UTF-8 text: byte 0xE9 at offset 29 (line 4) starts or continues no UTF-8 character; it looks"
                 + " like text saved as Latin-1 or Windows-1252, where that byte is '\u00e9'" + SAVE_AS_UTF8, e.problem());
         assertEquals(4, e.line());
+        assertEquals(6, e.column(), "after the five characters '# caf'");
         // a continuation byte alone, an overlong '/', a surrogate and a cut character are no UTF-8 either
         for (byte[] bad : new byte[][] {{'#', (byte) 0x80}, {'#', (byte) 0xC0, (byte) 0xAF}, {'#', (byte) 0xED,
                 (byte) 0xA0, (byte) 0x80}, {'#', (byte) 0xE2, (byte) 0x88}}) {

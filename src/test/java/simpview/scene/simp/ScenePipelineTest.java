@@ -307,6 +307,40 @@ class ScenePipelineTest {
         SceneException e = assertThrows(SceneException.class,
                 () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
         assertEquals("not a text file: byte 0x01 at offset 40 (line 3); a SIMP file is lines of text", e.problem());
+        assertEquals(3, e.line());
+        assertEquals(4, e.column());
+        assertTrue(e.getMessage().startsWith(scene + ":3:4: "), e.getMessage());
+    }
+
+    /**
+     * A Latin-1 letter after UTF-8 ones, included: placed at its column,
+     * the characters before it counted as characters, not bytes, and a byte
+     * order mark not counted at all.
+     */
+    @Test
+    void aNonUtf8ByteIsPlacedAtItsColumnInCharacters() throws Exception {
+        Files.write(dir.resolve("part.simp"), new byte[] {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF, '#', ' ', (byte) 0xC3,
+            (byte) 0xA9, (byte) 0xE2, (byte) 0x82, (byte) 0xAC, (byte) 0xE9, '\n'});
+        Path scene = write("whole.simp", "wire", "file \"part\"");
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals(dir.resolve("part.simp"), e.file());
+        assertEquals(1, e.line());
+        assertEquals(5, e.column(), "after '# \u00e9\u20ac'");
+        assertTrue(e.getMessage().startsWith(dir.resolve("part.simp") + ":1:5, included from whole.simp:2: not UTF-8"),
+                e.getMessage());
+    }
+
+    /** A line over the reader's limit is an error at the column where it passes the limit. */
+    @Test
+    void aLineTooLongIsPlacedWhereItPassesTheLimit() throws Exception {
+        Path scene = write("long.simp", "wire", "#" + "x".repeat(LineSource.MAX_LINE + 10));
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals(2, e.line());
+        assertEquals(LineSource.MAX_LINE + 1, e.column());
+        assertEquals("line is too long (over " + LineSource.MAX_LINE + " bytes)", e.problem());
+        assertTrue(e.getMessage().startsWith(scene + ":2:" + (LineSource.MAX_LINE + 1) + ": "), e.getMessage());
     }
 
     /**
