@@ -179,7 +179,12 @@ final class LitRules implements RuleSet {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
-        ObjCounts counts = models.draw(file, geometry::face, modelsSeen);
+        ObjCounts counts;
+        try {
+            counts = models.draw(file, geometry::face, modelsSeen);
+        } catch (SceneException e) {
+            throw wholeModel(c, file, e);
+        }
         if (firstClampedColour == null && counts.firstClampedColour() > 0) {
             firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
         }
@@ -189,6 +194,20 @@ final class LitRules implements RuleSet {
                     + files.place() + " obj)");
         }
         return true;
+    }
+
+    /**
+     * An error about the model {@code file} as a whole (line 0: a folder, a
+     * pipe, a file that cannot be opened or read), placed as the same
+     * problem with a {@code file} command is: at the name in the obj
+     * command, whose column an editor can go to. An error at a line of the
+     * model is that line's, and stays so.
+     */
+    private SceneException wholeModel(Command c, Path file, SceneException e) {
+        if (e.line() > 0 || !file.equals(e.file())) {
+            return e;
+        }
+        return error(c, c.argumentIndex, e.problem());
     }
 
     @Override

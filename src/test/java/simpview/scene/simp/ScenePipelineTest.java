@@ -435,6 +435,27 @@ class ScenePipelineTest {
         assertFalse(e.getMessage().contains("Exception"), e.getMessage());
     }
 
+    /**
+     * A model that cannot be read as a whole (here a folder) is an error at
+     * the name in its obj command, line and column, as a file command's
+     * is, in an included file too; before, it named the model and the
+     * including line but no column.
+     */
+    @Test
+    void anObjThatCannotBeReadIsAnErrorAtItsName() throws Exception {
+        Files.createDirectory(dir.resolve("models.obj"));
+        Path part = write("part.simp", "# the model", "  obj \"models\"");
+        Path scene = write("whole.simp", "ambient 1 1 1", "{", "file \"part\"", "}");
+        SceneException e = assertThrows(SceneException.class,
+                () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
+        assertEquals(part, e.file());
+        assertEquals(2, e.line());
+        assertEquals(7, e.column());
+        assertEquals("whole.simp:3", e.includedFrom());
+        assertTrue(e.getMessage().startsWith(part + ":2:7, included from whole.simp:3: cannot read the obj file "
+                + dir.resolve("models.obj") + ": not a file but a folder"), e.getMessage());
+    }
+
     @Test
     void theShareOfTheTopFileReadGrowsToOne() throws Exception {
         StringBuilder text = new StringBuilder();
