@@ -590,7 +590,7 @@ public final class CompareBatch {
         if (studentsWithPictures.size() == 1 && !studentsWithout.isEmpty()) {
             err.println(says + "only " + studentsWithPictures.get(0) + " in " + dir + " holds pictures; "
                     + UsageWords.firstThree(studentsWithout) + (studentsWithout.size() == 1 ? ", which holds" : ", which hold")
-                    + " what pictures may be handed in as (a zip, a document, a picture simpview does not read), "
+                    + " only what a class's pictures may be handed in as (a zip, a page in a format simpview does not read), "
                     + (studentsWithout.size() == 1 ? "is" : "are") + " graded as " + Count.of(studentsWithout.size(),
                     "student") + " of the class who handed in no picture (were " + dir + " one student's folder, "
                     + "grade --dir " + dir.resolve(studentsWithPictures.get(0)) + ")");
@@ -808,7 +808,8 @@ public final class CompareBatch {
         List<String> relatives = pictures.stream().map(p -> dir.relativize(p).toString()).toList();
         Set<String> withPictures = relatives.stream().filter(CompareBatch::inAFolder).map(JUnitResults::submission)
                 .collect(Collectors.toSet());
-        // a class of which one student handed in pictures, the others a zip or pictures simpview does not read
+        // a class of which one student handed in pictures, the others a zip or page1.tif; or one student's folder of
+        // pictures beside a write-up (report/writeup.pdf), a project's assets (assets/sky.hdr)
         boolean oneFolderOnly = withPictures.size() == 1 && relatives.stream().allMatch(CompareBatch::inAFolder);
         if (outputs.student() || withPictures.size() < 2 && !oneFolderOnly || !Files.isDirectory(dir)) {
             return without;
@@ -833,9 +834,14 @@ public final class CompareBatch {
                     || written.stream().anyMatch(w -> w.startsWith(folder))
                     || folder.equals(DIFFS) && Files.isRegularFile(dir.resolve(CSV));
             // a folder of reports, a rubric or scripts is no student's: one that holds what a student may hand in
-            // pictures as (a zip, a .webp, a document), is, and so is one that is empty and holds no reports
-            // (when only one folder holds pictures, only the former: an empty build/ beside renders/ is no student)
-            if (holds.stream().anyMatch(FolderListing::mayHoldPictures) || holds.isEmpty() && !reports && !oneFolderOnly) {
+            // pictures as (a zip, a .webp, a document), is, and so is one that is empty and holds no reports.
+            // When only one folder holds pictures, only one that holds nothing but archives and pictures named for
+            // a page simpview does not read is (bob.zip, page1.tif): an empty build/, a report/ with a PDF or an
+            // assets/ of textures beside output/ is one student's submission (a Gradescope upload), not a class of
+            // students lacking every page
+            boolean student = oneFolderOnly ? !holds.isEmpty() && holds.stream().allMatch(FolderListing::handedInInstead)
+                    : holds.stream().anyMatch(FolderListing::mayHoldPictures) || holds.isEmpty() && !reports;
+            if (student) {
                 without.add(new WithoutPictures(folder, holds));
             }
         }

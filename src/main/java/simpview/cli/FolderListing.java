@@ -16,6 +16,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import simpview.compare.Count;
+import simpview.compare.SubmissionNames;
 import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
 
@@ -56,6 +57,19 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
     static boolean mayHoldPictures(String file) {
         Path path = Path.of(file);
         return endsLike(path, WithoutPictures.ARCHIVES) || endsLike(path, UNREAD_ENDINGS) || endsLike(path, DOCUMENTS);
+    }
+
+    /**
+     * Whether a file (a path under the folder) is what a student of a class hands in instead of pictures, told from
+     * what one student's upload holds beside its pictures: an archive (bob.zip), or a picture in a format simpview
+     * does not read named for a page (page1.tif, page2.webp). A PDF, a document, a texture (sky.hdr) is not: a
+     * write-up or a project's assets.
+     */
+    static boolean handedInInstead(String file) {
+        Path path = Path.of(file);
+        Path name = path.getFileName();
+        return endsLike(path, WithoutPictures.ARCHIVES) || endsLike(path, UNREAD_ENDINGS) && !endsLike(path,
+                List.of(".pdf")) && name != null && SubmissionNames.pageNumber(name.toString()).isPresent();
     }
 
     /** The folder a Mac's zip puts its resource forks in. */

@@ -319,8 +319,31 @@ class ClassFolderTest {
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
         assertTrue(run.out().contains("| bob/ | 1 (seed 361) |"), run.out());
         assertFalse(run.out().contains("| build/"), run.out());
-        assertTrue(run.err().contains("only ann in " + subs + " holds pictures; bob, which holds what pictures may be "
-                + "handed in as"), run.err());
+        assertTrue(run.err().contains("only ann in " + subs + " holds pictures; bob, which holds only what a class's "
+                + "pictures may be handed in as"), run.err());
+    }
+
+    /**
+     * One student's upload (a Gradescope submission): output/ with the pictures beside report/writeup.pdf and
+     * assets/sky.hdr. Taken for a class of which only output handed in pictures, report and assets were two more
+     * students lacking every page, and the run failed. Only a folder of archives beside the pictures is a student.
+     */
+    @Test
+    void oneStudentsUploadWithAWriteUpBesideItsPicturesIsOneSubmission() throws Exception {
+        Path subs = dir.resolve("submission");
+        writePng(subs.resolve("output/page1.png"), page(1));
+        Files.createDirectories(subs.resolve("report"));
+        Files.writeString(subs.resolve("report/writeup.pdf"), "%PDF-1.4");
+        Files.createDirectories(subs.resolve("assets"));
+        Files.writeString(subs.resolve("assets/sky.hdr"), "#?RADIANCE");
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir",
+                dir.resolve("out").toString());
+
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        assertTrue(run.out().contains("1 picture: 1 pass, 0 fail, 0 could not be compared, 0 skipped\n"), run.out());
+        assertFalse(run.out().contains("MISSING"), run.out());
+        assertFalse(run.err().contains("only output in"), run.err());
     }
 
     /**
