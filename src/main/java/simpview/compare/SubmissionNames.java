@@ -1,5 +1,6 @@
 package simpview.compare;
 
+import java.text.Normalizer;
 import java.util.Collection;
 import java.util.Locale;
 import java.util.Optional;
@@ -158,7 +159,7 @@ public final class SubmissionNames {
         StringBuilder folded = new StringBuilder(name.length());
         name.codePoints().forEach(c -> folded.appendCodePoint(c >= FULL_WIDTH_FIRST && c <= FULL_WIDTH_LAST
                 ? c - FULL_WIDTH_FIRST + '!' : c == IDEOGRAPHIC_SPACE ? ' ' : c));
-        return java.text.Normalizer.normalize(folded, java.text.Normalizer.Form.NFD).replaceAll("\\p{M}", "");
+        return Normalizer.normalize(folded, Normalizer.Form.NFD).replaceAll("\\p{M}", "");
     }
 
     /**
