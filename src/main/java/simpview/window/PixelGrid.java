@@ -7,7 +7,7 @@ import java.awt.image.BufferedImage;
 
 /**
  * The magnifier's detail, drawn over the picture from 8x (eight units, {@link ZoomPan#unit}) on: a line along
- * the left and top edge of every image pixel (one device pixel wide), and a dot at every pixel's
+ * the left and top edge of every image pixel (one unit wide: a point of a desktop scaled by a whole number), and a dot at every pixel's
  * centre (light on dark pixels, dark on light ones), so that where a sample
  * falls can be seen. An overlay only: the image itself is never touched.
  */
@@ -36,15 +36,22 @@ public final class PixelGrid {
         int top = (int) zoomPan.screenY(rows[0]);
         int right = (int) zoomPan.screenX(cols[1]);
         int bottom = (int) zoomPan.screenY(rows[1]);
+        // A line is one unit wide, as the dots are so many units: a point of the desktop, as wide as it was before
+        // the view was painted in device pixels (at 200 % two of them, not one).
+        int line = zoomPan.unit();
         g.setColor(LINE);
         for (int i = cols[0]; i < cols[1]; i++) {
-            g.fillRect((int) zoomPan.screenX(i), top, 1, bottom - top);
+            g.fillRect((int) zoomPan.screenX(i), top, line, bottom - top);
         }
         for (int j = rows[0]; j < rows[1]; j++) {
-            g.fillRect(left, (int) zoomPan.screenY(j), right - left, 1);
+            g.fillRect(left, (int) zoomPan.screenY(j), right - left, line);
         }
-        int dot = (zoom >= 16 * zoomPan.unit() ? 2 : 1) * zoomPan.unit();
-        int inset = zoom / 2 - dot / 2;
+        int unit = zoomPan.unit();
+        int dots = zoom >= 16 * unit ? 2 : 1;
+        int dot = dots * unit;
+        // The dot's place is counted in units too: in device pixels (zoom / 2 - dot / 2), a dot one unit wide at 8x
+        // would sit a device pixel left of and above where it sat, and where it sits at 100 %.
+        int inset = zoom % unit == 0 ? (zoom / unit / 2 - dots / 2) * unit : zoom / 2 - dot / 2;
         for (int j = rows[0]; j < rows[1]; j++) {
             for (int i = cols[0]; i < cols[1]; i++) {
                 g.setColor(luminance(image.getRGB(i, j)) < 128 ? DOT_ON_DARK : DOT_ON_LIGHT);

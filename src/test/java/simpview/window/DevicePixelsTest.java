@@ -129,6 +129,35 @@ public class DevicePixelsTest {
     }
 
     @Test
+    void at200PercentThePixelGridShowsAsAt100PercentEachPointTwoByTwo() throws Throwable {
+        onEdt(() -> {
+            BufferedImage page = numberedPage();
+            PageView unscaled = new PageView();
+            unscaled.show(page, null);
+            unscaled.setSize(750, 750);
+            unscaled.zoomPan().resize(750, 750, 1);
+            unscaled.zoomPan().zoomAbout(300.5, 410.5, 8);
+            BufferedImage at100 = painted(unscaled, 750, 750, 1);
+            PageView scaled = new PageView();
+            scaled.show(page, null);
+            painted(scaled, 750, 750, 2);
+            scaled.zoomPan().zoomAbout(601, 821, 16);
+            BufferedImage at200 = painted(scaled, 750, 750, 2);
+            assertEquals(2 * unscaled.zoomPan().originX(), scaled.zoomPan().originX());
+            // 8x: the grid's lines a point wide and its dots a point square, where they are at 100 %.
+            long differing = 0;
+            for (int sy = 0; sy < 1500; sy++) {
+                for (int sx = 0; sx < 1500; sx++) {
+                    if (at200.getRGB(sx, sy) != at100.getRGB(sx / 2, sy / 2)) {
+                        differing++;
+                    }
+                }
+            }
+            assertEquals(0, differing, "device pixels at 200 % unlike the point they show at 100 %, at 8x");
+        });
+    }
+
+    @Test
     void theViewAsksForRoomForTheWholePageAtWholeDevicePixels() {
         assertEquals(750, PageView.preferredSide(1));
         assertEquals(750, PageView.preferredSide(2));
