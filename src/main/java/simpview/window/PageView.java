@@ -292,7 +292,7 @@ public final class PageView extends JComponent {
         double zoom = zoomPan.zoom();
         int ox = (int) zoomPan.originX();
         int oy = (int) zoomPan.originY();
-        if (zoomPan.belowOneToOne()) {
+        if (zoomPan.belowOneDevicePixel()) {
             g.drawImage(shownSmall(), ox, oy, null);
             return;
         }

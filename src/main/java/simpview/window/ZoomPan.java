@@ -283,8 +283,16 @@ public final class ZoomPan {
         return originY() + imageY * zoom;
     }
 
-    /** Whether the image is shown smaller than 1:1 (each screen pixel then stands for more than one image pixel). */
+    /**
+     * Whether the image is shown smaller than 1:1, as {@link #describe} says "below 1:1": less than a unit a
+     * page pixel (at 200 % also at one device pixel a page pixel, half the desktop's size).
+     */
     public boolean belowOneToOne() {
+        return zoom < unit;
+    }
+
+    /** Whether each device pixel stands for more than one image pixel: the picture is shrunk to be shown. */
+    public boolean belowOneDevicePixel() {
         return zoom < 1;
     }
 

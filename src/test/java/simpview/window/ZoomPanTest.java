@@ -50,6 +50,18 @@ public class ZoomPanTest {
     }
 
     @Test
+    void atHalfTheDesktopsSizeAt200PercentTheZoomIsBelowOneToOneAsItsWordsSay() {
+        ZoomPan zoomPan = new ZoomPan(750, 50);
+        zoomPan.resize(1500, 1466, 2);
+        assertFalse(zoomPan.belowOneToOne(), zoomPan.describe());
+        // The wheel out of 1:1 goes to one device pixel a page pixel: "below 1:1", so the status line puts it first.
+        zoomPan.wheel(750, 733, 1);
+        assertTrue(zoomPan.describe().startsWith("below 1:1"), zoomPan.describe());
+        assertTrue(zoomPan.belowOneToOne(), "the status line would put '" + zoomPan.describe() + "' last, cut off");
+        assertFalse(zoomPan.belowOneDevicePixel(), "one device pixel a page pixel is copied, not shrunk");
+    }
+
+    @Test
     void fitIsTheLargestIntegerZoomThatFits() {
         assertEquals(2.0, in(1600, 1520).zoom());
         assertEquals(1.0, in(1600, 1499).zoom());
