@@ -29,7 +29,7 @@ public final class ZoomPan {
     public static final int MAX_ZOOM = 32;
     /** Wheel steps above 1:1. */
     private static final int[] STEPS = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
-    /** At least this much of the image stays in view while panning, in screen pixels. */
+    /** At least this much of the image stays in view while panning, in units (points of a desktop scaled by a whole number). */
     private static final int KEEP_VISIBLE = 48;
 
     private final int imageSize;
@@ -225,7 +225,7 @@ public final class ZoomPan {
 
     private void clampOrigin() {
         double size = shownSize();
-        double keep = Math.min(KEEP_VISIBLE, size);
+        double keep = Math.min(KEEP_VISIBLE * unit, size);
         exactX = Math.max(keep - size, Math.min(viewWidth - keep, exactX));
         exactY = Math.max(keep - size, Math.min(viewHeight - keep, exactY));
     }

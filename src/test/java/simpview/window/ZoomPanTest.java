@@ -155,6 +155,21 @@ public class ZoomPanTest {
     }
 
     @Test
+    void at200PercentAPanKeepsAsManyPointsOfThePageInViewAsAt100Percent() {
+        ZoomPan unscaled = in(750, 750);
+        unscaled.zoomAbout(375, 375, 4);
+        unscaled.pan(1e6, -1e6);
+        ZoomPan scaled = new ZoomPan(750, 50);
+        scaled.resize(1500, 1500, 2);
+        scaled.zoomAbout(750, 750, 8);
+        scaled.pan(1e6, -1e6);
+        // 48 points of the page stay in view: 96 device pixels at 200 %, not 48.
+        assertEquals(750 - 48.0, unscaled.originX());
+        assertEquals(2 * unscaled.originX(), scaled.originX());
+        assertEquals(2 * unscaled.originY(), scaled.originY());
+    }
+
+    @Test
     void actualSizeIsOneToOneAboutTheMiddle() {
         ZoomPan zoomPan = in(700, 700);
         zoomPan.actualSize();
