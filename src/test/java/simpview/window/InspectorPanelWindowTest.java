@@ -8,13 +8,10 @@ import java.awt.Point;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Optional;
 import javax.swing.JTextArea;
 import javax.swing.JViewport;
 import org.junit.jupiter.api.Test;
-import simpview.scene.simp.SceneDrawer;
 import simpview.surface.PageCanvas;
-import simpview.window.render.View;
 
 /** The inspector panel under Xvfb: I shows the pinned pixel's history, wrapped, never cut; J steps to its primitive. */
 public class InspectorPanelWindowTest extends WindowTestCase {
@@ -27,11 +24,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
                 + "polygon (-90, -90, -150) (90, -90, -150) (0, 90, -150)\n"
                 + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n"
                 + "polygon (60, -90, -300) (90, -90, -300) (90, -60, -300)\n");
-        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
-        SimpviewWindow window = driver.window();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window.openScene(scene));
-        driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(scene);
 
         Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
         driver.robot().mouseMove(centre.x, centre.y);
@@ -118,11 +111,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\n"
                 + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
                 + "polygon (60, 60, -50) (60, 90, -50) (90, 60, -50)\n");
-        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
-        SimpviewWindow window = driver.window();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window.openScene(scene));
-        driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(scene);
         driver.onEdt(() -> window.goToPixel("325, 325"));
         driver.press(KeyEvent.VK_I);
         driver.press(KeyEvent.VK_CLOSE_BRACKET);
@@ -163,11 +152,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         Path scene = dir.resolve("off.simp");
         Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\n"
                 + "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
-        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
-        SimpviewWindow window = driver.window();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window.openScene(scene));
-        driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(scene);
         driver.press(KeyEvent.VK_CLOSE_BRACKET);
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().startsWith("primitive 1 of 2"),
                 "the first step");
@@ -198,11 +183,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
     void goToAPrimitiveInASceneWithNoneSaysThereIsNone() throws Exception {
         Path scene = dir.resolve("empty.simp");
         Files.writeString(scene, "# nothing yet\n");
-        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
-        SimpviewWindow window = driver.window();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window.openScene(scene));
-        driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(scene);
         driver.press(KeyEvent.VK_G);
         driver.awaitEdt(() -> window.status().messageText().equals(
                 "There is no primitive to go to: this picture has none."), "the words for a picture of no primitives");

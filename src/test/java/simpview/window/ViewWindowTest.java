@@ -40,11 +40,7 @@ public class ViewWindowTest extends WindowTestCase {
         Files.writeString(dir.resolve("leaf.simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
         Path scene = dir.resolve("top.simp");
         Files.writeString(scene, "polygon (-90, -90, -100) (90, -90, -100) (0, 90, -100)\nfile \"leaf\"\n");
-        driver = WindowDriver.open(new WindowOptions(361, dir, Optional.empty()), SceneDrawer.SIMP);
-        SimpviewWindow window = driver.window();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window.openScene(scene));
-        driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(scene);
         // Xvfb's screen is 1280x1024; the window placed as on a 1366x768 laptop's (its height is what binds).
         driver.onEdt(() -> window.placeWithin(new Rectangle(0, 0, 1280, 768)));
         driver.press(KeyEvent.VK_I);
