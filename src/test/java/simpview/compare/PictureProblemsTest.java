@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.charset.StandardCharsets;
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
@@ -95,11 +96,11 @@ class PictureProblemsTest {
             {"mif1", "mif1", "a HEIF picture"},
         };
         for (String[] file : files) {
-            byte[] brands = file[1].getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+            byte[] brands = file[1].getBytes(StandardCharsets.ISO_8859_1);
             byte[] bytes = new byte[16 + brands.length + 8];
             bytes[3] = (byte) (16 + brands.length);
-            System.arraycopy("ftyp".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1), 0, bytes, 4, 4);
-            System.arraycopy(file[0].getBytes(java.nio.charset.StandardCharsets.ISO_8859_1), 0, bytes, 8, 4);
+            System.arraycopy("ftyp".getBytes(StandardCharsets.ISO_8859_1), 0, bytes, 4, 4);
+            System.arraycopy(file[0].getBytes(StandardCharsets.ISO_8859_1), 0, bytes, 8, 4);
             System.arraycopy(brands, 0, bytes, 16, brands.length);
             Path picture = Files.write(dir.resolve("page1.png"), bytes);
             assertEquals(picture + " is not a picture simpview can read (PNG, JPEG, GIF or BMP): it holds " + file[2]
