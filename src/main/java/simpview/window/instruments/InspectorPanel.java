@@ -70,6 +70,18 @@ public final class InspectorPanel {
     /** Counts requests; an answer for an older one is not shown. */
     private int request;
     private boolean answered = true;
+    /** What the panel says of the newest request while its answer is slow to come. */
+    private String waitingWords = "";
+    /**
+     * Shows {@link #waitingWords} {@link #WAITING_WORDS_AFTER_MILLIS} after
+     * the newest request, unless it was answered (or a message said) by then;
+     * each request starts it again. On the EDT, as Swing's timers run.
+     */
+    private final Timer slowReplay = new Timer(WAITING_WORDS_AFTER_MILLIS, e -> {
+        if (!answered) {
+            text.setText(waitingWords);
+        }
+    });
     /** The newest request waiting for the worker, or null: taken by the worker, set on the EDT. */
     private final AtomicReference<Runnable> waiting = new AtomicReference<>();
     /** The places the text's chains name, by the text's spelling ("cube.simp:7"), for the links. */
@@ -85,6 +97,7 @@ public final class InspectorPanel {
     public InspectorPanel(SceneLibrary library) {
         this.library = library;
         this.inspector = new PixelInspector(library, SceneMonitor.NONE);
+        slowReplay.setRepeats(false);
         text.setEditable(false);
         text.setLineWrap(true);
         text.setWrapStyleWord(true);
@@ -262,13 +275,8 @@ public final class InspectorPanel {
         String heading = before == null ? "" : before + "\n\n";
         // The last answer stays until this one's comes: said at once, the waiting words flashed in the panel at
         // every move of the pointer, most replays taking a few milliseconds. A slow one says it is coming.
-        Timer slow = new Timer(WAITING_WORDS_AFTER_MILLIS, e -> {
-            if (mine == request && !answered) {
-                text.setText(heading + waitingText);
-            }
-        });
-        slow.setRepeats(false);
-        slow.start();
+        waitingWords = heading + waitingText;
+        slowReplay.restart();
         Runnable job = () -> {
             Answer answer;
             try {
@@ -355,6 +363,7 @@ public final class InspectorPanel {
     }
 
     public void shutdown() {
+        slowReplay.stop();
         worker.shutdownNow();
     }
 }
