@@ -140,7 +140,7 @@ final class ObjParser {
             }
         } catch (LineSource.LineTooLongException e) {
             throw new SceneException(file(), source.lineNumber() + 1, e.column(), "",
-                    "a line is longer than " + LineSource.MAX_LINE + " bytes");
+                    e.problem(KIND, "one v, vn or f"));
         } catch (LineSource.NotTextException e) {
             // a picture or a program renamed .obj, or text saved as UTF-16 or Latin-1: none of its bytes is shown
             NotText found = e.notText(KIND);

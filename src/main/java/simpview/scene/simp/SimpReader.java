@@ -36,6 +36,8 @@ public final class SimpReader implements AutoCloseable {
 
     /** Axis.values() copies its array on every call; this copy is made once. */
     private static final Axis[] AXES = Axis.values();
+    /** What a file this reads should be, as its messages say. */
+    private static final String KIND = "a SIMP file";
 
     private final LineSource source;
     private final DecimalParser decimal = new DecimalParser();
@@ -176,11 +178,11 @@ public final class SimpReader implements AutoCloseable {
                 return false;
             }
         } catch (LineSource.LineTooLongException e) {
-            throw new SceneException(file(), source.lineNumber() + 1, e.column(), "", "line is too long (over "
-                    + LineSource.MAX_LINE + " bytes)");
+            throw new SceneException(file(), source.lineNumber() + 1, e.column(), "",
+                    e.problem(KIND, "one command"));
         } catch (LineSource.NotTextException e) {
             // a program or a picture renamed .simp, or text saved as UTF-16 or Latin-1: none of its bytes is shown
-            NotText found = e.notText("a SIMP file");
+            NotText found = e.notText(KIND);
             throw new SceneException(file(), found.line(), found.column(), "", found.problem());
         } catch (IOException e) {
             throw new SceneException(file(), source.lineNumber(), 0, "", "cannot read the file: " + FileProblem.of(file(), e));

@@ -469,5 +469,16 @@ public final class LineSource {
         public int column() {
             return column;
         }
+
+        /**
+         * The problem in words, the same for every reader: the limit, and what to do. {@code kind} says what the
+         * file should be ("a SIMP file", "an .obj file"), {@code eachLine} what one of its lines holds ("one
+         * command"). The reader puts the file, line and column in front.
+         */
+        public String problem(String kind, String eachLine) {
+            return "line is too long: over " + MAX_LINE + " bytes (1 MiB), the most a line may hold. Put "
+                    + eachLine + " on each line of " + kind + "; a file saved without its line ends is one long "
+                    + "line: save it again with them";
+        }
     }
 }
