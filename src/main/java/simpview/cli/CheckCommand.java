@@ -120,9 +120,10 @@ public final class CheckCommand implements Callable<Integer> {
             code = check();
             return code;
         } finally {
-            if (code != ExitCode.OK && files != null) {
-                // a FIFO in --out-dir the failed run never wrote would leave its reader waiting
-                files.releaseAfterFailure();
+            if (files != null) {
+                // a FIFO in --out-dir the run did not write (a failure, a passing picture's diff) would leave its
+                // reader waiting
+                files.releaseUnwritten();
             }
         }
     }

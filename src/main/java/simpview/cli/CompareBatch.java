@@ -161,12 +161,22 @@ public final class CompareBatch {
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
     enum DiffImages { ALL, FAILING, NONE }
 
-    /** Where a batch's diff images go ({@code outDir} null: nowhere), which pictures get one, and their names. */
-    private record DiffPlan(Path outDir, DiffImages which, DiffNames names) {
+    /**
+     * Where a batch's diff images go ({@code outDir} null: nowhere), which pictures get one, and their names;
+     * {@code files} is told each one written.
+     */
+    private record DiffPlan(Path outDir, DiffImages which, DiffNames names, OutputPaths files) {
 
         /** Whether a picture (or panel) that passes or not gets a diff image. */
         boolean writes(boolean passes) {
             return outDir != null && which != DiffImages.NONE && !(which == DiffImages.FAILING && passes);
+        }
+
+        /** Writes the diff image {@code name} in {@link #outDir}. */
+        void write(String name, byte[] png) throws IOException {
+            Path file = outDir.resolve(name);
+            PngFiles.writeEncoded(png, file);
+            files.wrote(file);
         }
     }
 
@@ -621,7 +631,7 @@ public final class CompareBatch {
         }
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
         Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
-        DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames);
+        DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames, outputs.files());
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
                 picture -> listing.linkOut(picture, dir));
         double seconds = (System.nanoTime() - start) / 1e9;
@@ -943,7 +953,7 @@ public final class CompareBatch {
             for (Path picture : pictures) {
                 String relative = dir.relativize(picture).toString();
                 for (int panel = 0; panel <= A1Layout.PANELS; panel++) {
-                    files.notRead(outDir.resolve(diffNames.of(relative, panel)), tables);
+                    files.mayWrite(outDir.resolve(diffNames.of(relative, panel)), tables);
                 }
             }
         }
@@ -1265,7 +1275,7 @@ public final class CompareBatch {
         }
         String diff = diffs.names().of(relative, 0);
         try {
-            PngFiles.writeEncoded(HeatMap.diffPng(best.comparison(), rule.tolerance()), diffs.outDir().resolve(diff));
+            diffs.write(diff, HeatMap.diffPng(best.comparison(), rule.tolerance()));
         } catch (IOException e) {
             return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
                     .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage()), other);
@@ -1369,7 +1379,7 @@ public final class CompareBatch {
             }
             String diff = diffs.names().of(relative, k);
             try {
-                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diffs.outDir().resolve(diff));
+                diffs.write(diff, HeatMap.diffPng(comparison, rule.tolerance()));
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint, empty)
                         .decodedAs(cut.format()));
             } catch (IOException e) {
@@ -1458,6 +1468,12 @@ public final class CompareBatch {
                 : SubmissionNames.isSceneName(name, key(target));
     }
 
+    /** Writes a table or report as {@link OutputFiles#writeString} does, and tells {@code files} it is written. */
+    private static void writeString(OutputPaths files, Path file, String text) throws IOException {
+        OutputFiles.writeString(file, text);
+        files.wrote(file);
+    }
+
     /**
      * Writes and prints the results, each page counted once per submission ({@link OnePerPage}: the pictures of
      * a page but one are rows that score nothing), and says what the exit code is: 0 when every row that
@@ -1478,21 +1494,23 @@ public final class CompareBatch {
                 base.metric(), base.flipThreshold());
         Path outDir = outputs.outDir();
         try {
+            OutputPaths files = outputs.files();
             if (outDir != null) {
-                OutputFiles.writeString(outDir.resolve(TABLE), markdown);
-                OutputFiles.writeString(outDir.resolve(CSV), BatchTable.csv(rows, missing));
+                writeString(files, outDir.resolve(TABLE), markdown);
+                writeString(files, outDir.resolve(CSV), BatchTable.csv(rows, missing));
             }
             if (outputs.gradescope() != null) {
                 // results.json is one submission's, however its pictures are foldered (see grading.md)
-                OutputFiles.writeString(outputs.gradescope(),
+                writeString(files, outputs.gradescope(),
                         GradescopeResults.json(OnePerPage.asOne(compared, plainlyNamed), wanted, seconds));
                 sayIfAClass(compared, outputs.gradescope());
             }
             if (outputs.junit() != null) {
-                OutputFiles.writeString(outputs.junit(), JUnitResults.xml(rows, wanted, seconds, submissionOf));
+                writeString(files, outputs.junit(), JUnitResults.xml(rows, wanted, seconds, submissionOf));
             }
             if (outputs.html() != null) {
                 HtmlReport.write(rows, wanted, outputs.html(), outDir, submissionOf);
+                files.wrote(outputs.html().resolve(HtmlReport.INDEX));
             }
         } catch (IOException e) {
             err.println(says + e.getMessage()); // "cannot write report/compare.md: ...", and why

@@ -6,6 +6,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
@@ -76,7 +77,7 @@ import simpview.surface.PageCanvas;
             "1:some picture is below --min, or cannot be read, or has no panel; with --dir, a page asked for has no "
                 + "picture; a scene error; or an output file (a table, a report, a diff image) cannot be written",
             "2:usage error"})
-public final class CompareCommand implements Callable<Integer> {
+public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfCommand {
 
     @Spec
     private CommandSpec spec;
@@ -177,26 +178,32 @@ public final class CompareCommand implements Callable<Integer> {
     private OutputPaths files;
 
     @Override
+    public List<String> outputFileOptions() {
+        return List.of("--diff", "--gradescope", "--junit");
+    }
+
+    @Override
     public Integer call() {
         int code = ExitCode.SCENE_ERROR;
         try {
             code = compare();
             return code;
         } finally {
-            if (code != ExitCode.OK) {
-                releaseOutputs();
-            }
+            releaseOutputs(code);
         }
     }
 
     /**
-     * After a failed run: a FIFO it was to write and may never have written is opened and closed, so that its
-     * reader is not left waiting ({@link OutputPaths#releaseAfterFailure}); before the files were listed (a usage
-     * error), the files --diff, --gradescope and --junit name.
+     * At the end of a run: a FIFO it was to write and did not write is opened and closed, so that its reader is
+     * not left waiting ({@link OutputPaths#releaseUnwritten}); after a usage error found before the files were
+     * listed, the files --diff, --gradescope and --junit name.
      */
-    private void releaseOutputs() {
+    private void releaseOutputs(int code) {
         if (files != null) {
-            files.releaseAfterFailure();
+            files.releaseUnwritten();
+            return;
+        }
+        if (code == ExitCode.OK) {
             return;
         }
         for (Path named : new Path[] {diff, gradescope, junit}) {
@@ -359,6 +366,7 @@ public final class CompareCommand implements Callable<Integer> {
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
+                files.wrote(diff);
                 out.println("diff:    " + diff + " (ours | theirs | heat map: grey identical, blue within "
                         + tolerance + "/255, yellow one pixel off, red different)");
             } catch (IOException e) {
@@ -491,6 +499,7 @@ public final class CompareCommand implements Callable<Integer> {
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), tolerance), diff);
+                files.wrote(diff);
             } catch (IOException e) {
                 err().println("simpview compare: " + e.getMessage());
                 return ExitCode.SCENE_ERROR;

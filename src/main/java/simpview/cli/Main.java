@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicBoolean;
 import picocli.CommandLine;
 import simpview.pages.PageContext;
 import simpview.scene.MemoryAdvice;
@@ -68,11 +69,24 @@ public final class Main {
     }
 
     static int execute(SimpviewCommand command, String[] args, PrintWriter out, PrintWriter err) {
+        // Whether the line was parsed and its command run: a usage error before that never reached the command,
+        // which releases its outputs itself once it runs.
+        AtomicBoolean ran = new AtomicBoolean();
         CommandLine commandLine = new CommandLine(command)
                 .setOut(out)
                 .setErr(err)
+                .setExecutionStrategy(parsed -> {
+                    ran.set(true);
+                    return new CommandLine.RunLast().execute(parsed);
+                })
                 .setExecutionExceptionHandler(Main::reportUnexpected)
-                .setParameterExceptionHandler(Main::reportUsageError);
+                .setParameterExceptionHandler((e, words) -> {
+                    if (!ran.get()) {
+                        // a FIFO named as an output would leave its reader waiting for ever
+                        NamedOutputs.release(e.getCommandLine(), words);
+                    }
+                    return reportUsageError(e, words);
+                });
         sayWhereTheScenesAre(commandLine, command.ownScenes());
         // Every subcommand SimpviewCommand lists (a set: an alias would name one twice).
         for (CommandLine sub : new LinkedHashSet<>(commandLine.getSubcommands().values())) {

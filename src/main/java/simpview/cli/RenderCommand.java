@@ -55,7 +55,7 @@ import simpview.surface.Rgb;
             "      simp/lit-shading.simp simp/lit-lights.simp"},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error, or an output file that cannot be written", "2:usage error"})
-public final class RenderCommand implements Callable<Integer> {
+public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCommand {
 
     /** Exactly one of these says what to render. */
     static final class What {
@@ -136,6 +136,11 @@ public final class RenderCommand implements Callable<Integer> {
     @Mixin
     private A1RuleOption a1Rule;
 
+    @Override
+    public List<String> outputFileOptions() {
+        return List.of("--out", "--primitives");
+    }
+
     /** Whether the scenes to draw were given as SCENE files alone, not by --scenes ({@link #impliedByScenes}). */
     private boolean impliedScenes;
 
@@ -158,9 +163,7 @@ public final class RenderCommand implements Callable<Integer> {
                 drawingThreads = null;
             }
         } finally {
-            if (code != ExitCode.OK) {
-                releaseOutputs();
-            }
+            releaseOutputs(code);
         }
     }
 
@@ -225,6 +228,11 @@ public final class RenderCommand implements Callable<Integer> {
         files = new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
         if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
             files.writes(primitives, "--primitives");
+        }
+        if (what.all) {
+            for (int n = 1; n <= count; n++) {
+                files.writes(pictureOfAll(n), "--out-dir");
+            }
         }
         usage(!pages || near == null && far == null, "--near-color and --far-color go with --scene only");
         usage(pages || seed == null && simpDir == null, "--seed and --simp-dir go with the pages, not with --scene");
@@ -307,13 +315,16 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * After a failed run: a FIFO it was to write and may never have written is opened and closed, so that its
-     * reader is not left waiting ({@link OutputPaths#releaseAfterFailure}); before the files were listed (a usage
-     * error), those --out and --primitives name.
+     * At the end of a run: a FIFO it was to write and did not write (a page that failed, those after a write that
+     * failed) is opened and closed, so that its reader is not left waiting ({@link OutputPaths#releaseUnwritten});
+     * after a usage error found before the files were listed, those --out and --primitives name.
      */
-    private void releaseOutputs() {
+    private void releaseOutputs(int code) {
         if (files != null) {
-            files.releaseAfterFailure();
+            files.releaseUnwritten();
+            return;
+        }
+        if (code == ExitCode.OK) {
             return;
         }
         if (out != null) {
@@ -352,10 +363,15 @@ public final class RenderCommand implements Callable<Integer> {
         }
     }
 
+    /** Where --all writes page n: page3.png, or a1-page3.png for the first assignment's. */
+    private Path pictureOfAll(int n) {
+        return outDir.resolve((firstAssignment() ? "a1-page" : "page") + n + ".png");
+    }
+
     private int renderAll() {
         if (firstAssignment()) {
             for (int n = 1; n <= Assignment1.COUNT; n++) {
-                if (write(Assignment1.render(n, context()), outDir.resolve("a1-page" + n + ".png")) != ExitCode.OK) {
+                if (write(Assignment1.render(n, context()), pictureOfAll(n)) != ExitCode.OK) {
                     return ExitCode.SCENE_ERROR;
                 }
             }
@@ -373,7 +389,7 @@ public final class RenderCommand implements Callable<Integer> {
                 code = ExitCode.SCENE_ERROR;
                 continue;
             }
-            if (write(image, outDir.resolve("page" + n + ".png")) != ExitCode.OK) {
+            if (write(image, pictureOfAll(n)) != ExitCode.OK) {
                 return ExitCode.SCENE_ERROR; // the folder is unwritable: the other pages would fail alike
             }
         }
@@ -496,6 +512,7 @@ public final class RenderCommand implements Callable<Integer> {
         }
         try {
             OutputFiles.writeString(primitives, listing);
+            files.wrote(primitives);
             return ExitCode.OK;
         } catch (IOException e) {
             err().println("simpview: " + e.getMessage());
@@ -506,6 +523,7 @@ public final class RenderCommand implements Callable<Integer> {
     private int write(BufferedImage image, Path file) {
         try {
             PngFiles.write(image, file);
+            files.wrote(file);
             return ExitCode.OK;
         } catch (IOException e) {
             err().println("simpview: " + e.getMessage());

@@ -535,4 +535,38 @@ public class CompareCommandTest {
         assertArrayEquals(new byte[0], Fifos.read(read, fifo));
         assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
     }
+
+    /** A line picocli cannot parse never reaches compare: the readers of the FIFOs --diff and --junit name see the end. */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aLineThatCannotBeParsedGivesTheReaderOfTheDiffsFifoTheEnd() throws Exception {
+        Path fifo = Fifos.make(dir.resolve("diff.png"));
+        Path mine = dir.resolve("mine.png");
+        RenderCommandTest.endSeenAfterAUsageError(fifo, "compare", mine.toString(), "--page", "2", "--diff",
+                fifo.toString(), "--tolerence", "3");
+        Path junit = Fifos.make(dir.resolve("results.xml"));
+        RenderCommandTest.endSeenAfterAUsageError(junit, "compare", "--dir", dir.toString(), "--junit",
+                junit.toString(), "--pages", "one");
+    }
+
+    /**
+     * A batch that writes diff images of failing pictures only writes none for a picture that passes: the reader
+     * of a FIFO where that diff image would go sees the end, whether the run passes or fails.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void theFifoOfADiffImageNotWrittenGivesItsReaderTheEnd() throws Exception {
+        Path pictures = Files.createDirectories(dir.resolve("handed-in"));
+        CliRun drawn = CliRun.of("render", "--page", "1", "--out", pictures.resolve("page1.png").toString());
+        assertEquals(ExitCode.OK, drawn.exitCode(), drawn.err());
+        Path out = dir.resolve("results");
+        Path fifo = Fifos.make(Files.createDirectories(out.resolve("diffs")).resolve("page1-diff.png"));
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        CliRun run = CliRun.of("compare", "--dir", pictures.toString(), "--pages", "1", "--diffs", "failing",
+                "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        assertArrayEquals(new byte[0], Fifos.read(read, fifo));
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+        assertTrue(Files.isRegularFile(out.resolve("compare.md")), "the table is written");
+    }
 }

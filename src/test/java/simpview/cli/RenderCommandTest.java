@@ -6,10 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
@@ -193,5 +195,87 @@ class RenderCommandTest {
         assertEquals(ExitCode.SCENE_ERROR, kept.exitCode(), kept.err());
         assertEquals("drawn before", Files.readString(regular));
         assertEquals(List.of("broken.simp", "drawn.png", "f.png"), names(dir));
+    }
+
+    /**
+     * A line picocli cannot parse never reaches render, whichever word is wrong and wherever it stands: a
+     * mistyped option after --out, a value that is no number before it, --out=F, --primitives, the command's own
+     * name mistyped. The reader of each FIFO the line names as an output still sees the end.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aLineThatCannotBeParsedGivesTheReaderOfItsFifoTheEnd() throws Exception {
+        Path fifo = Fifos.make(dir.resolve("f.png"));
+        String f = fifo.toString();
+        endSeenAfterAUsageError(fifo, "render", "--page", "1", "--out", f, "--sede", "3");
+        endSeenAfterAUsageError(fifo, "render", "--page", "1", "--seed", "three", "--out", f);
+        endSeenAfterAUsageError(fifo, "render", "--page", "1", "--out=" + f, "--sede=3");
+        endSeenAfterAUsageError(fifo, "rendr", "--page", "1", "--out", f);
+        Path listing = Fifos.make(dir.resolve("lines.txt"));
+        endSeenAfterAUsageError(listing, "render", "--page", "1", "--primitives", listing.toString(), "--sede", "3");
+    }
+
+    /** {@code line} is a usage error, and the reader of {@code fifo} sees the end of the file, which stays a FIFO. */
+    static void endSeenAfterAUsageError(Path fifo, String... line) throws Exception {
+        CompletableFuture<byte[]> read = Fifos.readAll(fifo);
+        CliRun run = CliRun.of(line);
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), String.join(" ", line) + ": " + run.err());
+        assertTrue(run.err().startsWith("simpview: "), run.err());
+        assertArrayEquals(new byte[0], Fifos.read(read, fifo), String.join(" ", line));
+        assertTrue(Fifos.isFifo(fifo), "the FIFO was replaced by a file");
+    }
+
+    /**
+     * render --all writes one picture per page: pages that fail (the course's scenes not there: 6 to 8) are not
+     * written, and the readers of their FIFOs see the end; the pages before them reach theirs.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void pagesThatFailAmongAllGiveTheReadersOfTheirFifosTheEnd() throws Exception {
+        Path out = Files.createDirectories(dir.resolve("pages"));
+        Path empty = Files.createDirectories(dir.resolve("no-course-scenes"));
+        List<CompletableFuture<byte[]>> reads = new ArrayList<>();
+        for (int n = 1; n <= 8; n++) {
+            reads.add(Fifos.readAll(Fifos.make(out.resolve("page" + n + ".png"))));
+        }
+        CliRun run = CliRun.of("render", "--all", "--simp-dir", empty.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("page 6 not written: "), run.err());
+        for (int n = 1; n <= 8; n++) {
+            Path fifo = out.resolve("page" + n + ".png");
+            byte[] got = Fifos.read(reads.get(n - 1), fifo);
+            if (n <= 5) {
+                assertEquals(PageCanvas.SIZE, ImageIO.read(new ByteArrayInputStream(got)).getWidth(),
+                        "page " + n);
+            } else {
+                assertArrayEquals(new byte[0], got, "page " + n);
+            }
+            assertTrue(Fifos.isFifo(fifo), "the FIFO of page " + n + " was replaced by a file");
+        }
+    }
+
+    /**
+     * A write that fails midway ends render --all (the other pages would fail alike): the pages after it are not
+     * written, and the readers of their FIFOs see the end.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aWriteThatFailsMidwayGivesTheReadersOfTheFifosAfterItTheEnd() throws Exception {
+        Path out = Files.createDirectories(dir.resolve("a1"));
+        Files.createDirectories(out.resolve("a1-page2.png")); // a folder where page 2 goes: its write fails
+        CompletableFuture<byte[]> first = Fifos.readAll(Fifos.make(out.resolve("a1-page1.png")));
+        List<CompletableFuture<byte[]>> later = new ArrayList<>();
+        for (int n = 3; n <= 5; n++) {
+            later.add(Fifos.readAll(Fifos.make(out.resolve("a1-page" + n + ".png"))));
+        }
+        CliRun run = CliRun.of("render", "--assignment", "1", "--all", "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("it is a folder"), run.err());
+        assertTrue(Fifos.read(first, out.resolve("a1-page1.png")).length > 0, "page 1 was written");
+        for (int n = 3; n <= 5; n++) {
+            Path fifo = out.resolve("a1-page" + n + ".png");
+            assertArrayEquals(new byte[0], Fifos.read(later.get(n - 3), fifo), "page " + n);
+            assertTrue(Fifos.isFifo(fifo), "the FIFO of page " + n + " was replaced by a file");
+        }
     }
 }

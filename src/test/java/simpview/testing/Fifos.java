@@ -64,8 +64,11 @@ public final class Fifos {
      * now on until its writer closes it. The thread is a daemon: when the code
      * under test never opens the FIFO (it replaced it), the reader waits for
      * ever for a writer, and must not keep the tests' JVM from ending.
+     * Returns once the reader waits in its open for a writer: a run that
+     * opens and closes the FIFO at once (one that failed) would otherwise be
+     * over before the reader came, and the reader would wait for ever.
      */
-    public static CompletableFuture<byte[]> readAll(Path fifo) {
+    public static CompletableFuture<byte[]> readAll(Path fifo) throws InterruptedException {
         CompletableFuture<byte[]> bytes = new CompletableFuture<>();
         Thread reader = new Thread(() -> {
             try (InputStream in = Files.newInputStream(fifo)) {
@@ -76,7 +79,24 @@ public final class Fifos {
         }, "reader of " + fifo.getFileName());
         reader.setDaemon(true);
         reader.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(SECONDS);
+        while (!bytes.isDone() && !opening(reader)) {
+            if (System.nanoTime() > deadline) {
+                fail("the reader of " + fifo + " did not come to open it in " + SECONDS + " s");
+            }
+            Thread.sleep(1);
+        }
         return bytes;
+    }
+
+    /** Whether {@code reader} is in the system's open of a file (where a FIFO's reader waits for a writer). */
+    private static boolean opening(Thread reader) {
+        for (StackTraceElement frame : reader.getStackTrace()) {
+            if (frame.getClassName().equals("sun.nio.fs.UnixNativeDispatcher") && frame.getMethodName().startsWith("open")) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** What the reader of {@link #readAll} got, or a failure that says it got nothing in time. */
