@@ -1391,6 +1391,11 @@ public final class SimpviewWindow {
             status.say(StatusStrip.HINTS);
             return;
         }
+        if (shown != null && !shown.view().equals(result.view())) {
+            // Another page or scene opens fitted, as in an image viewer; the same one drawn again (a save, F5, a
+            // new seed, a turn) keeps zoom and pan, to compare before and after.
+            pageView.zoomPan().refit();
+        }
         shown = result;
         overdrawShown = false;
         showPicture();

@@ -88,6 +88,16 @@ public final class ZoomPan {
         centre();
     }
 
+    /**
+     * Back to the fit last chosen: Fit, or Crop when Crop was chosen after it (a zoom or a pan since then leaves
+     * that choice as it was). What a new page opens at.
+     */
+    public void refit() {
+        fitting = true;
+        zoom = fitZoom();
+        centre();
+    }
+
     /** Crop: the fit made on the panel alone, its white margins cut off (followed on resize like fit). */
     public void fitPanel() {
         fitting = true;

@@ -218,4 +218,22 @@ public class ZoomPanTest {
         Rectangle roomy = WindowPlacement.within(new Dimension(766, 846), new Rectangle(100, 50, 1920, 1050));
         assertEquals(new Rectangle(100 + (1920 - 766) / 2, 50 + (1050 - 846) / 2, 766, 846), roomy);
     }
+
+    /** What a new page opens at: the fit last chosen, Fit or Crop, whatever zoom and pan came after it. */
+    @Test
+    void refitGoesBackToTheFitLastChosen() {
+        ZoomPan zoomPan = in(800, 760);
+        zoomPan.zoomAbout(100, 100, 8);
+        zoomPan.pan(-300, 40);
+        zoomPan.refit();
+        assertTrue(zoomPan.fitting());
+        assertEquals(1.0, zoomPan.zoom());
+        assertEquals(25.0, zoomPan.originX());
+        assertEquals("1:1", zoomPan.describe());
+        zoomPan.fitPanel();
+        zoomPan.zoomAbout(100, 100, 8);
+        zoomPan.refit();
+        assertTrue(zoomPan.fitting() && zoomPan.cropped(), zoomPan.describe());
+        assertEquals("1:1, margins cropped", zoomPan.describe());
+    }
 }
