@@ -6,17 +6,26 @@ import simpview.window.render.View;
 import java.awt.BorderLayout;
 import java.awt.CardLayout;
 import java.awt.Dimension;
+import java.awt.Insets;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import javax.swing.BorderFactory;
+import javax.swing.Box;
+import javax.swing.BoxLayout;
 import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
 import javax.swing.Timer;
+import java.util.List;
 import simpview.surface.PageCanvas;
 
 /**
  * The line under the page: key hints and messages, or, while a picture takes
  * more than a moment, a progress bar (lines read) with a Cancel button.
+ * In a narrow window what does not fit is cut with "…" and shown whole on
+ * hovering it: the lines of text, what is being drawn, the bar's words (then
+ * the bar says its share alone); the bar and Cancel always keep their room.
  * Everything here runs on the EDT.
  */
 public final class StatusStrip {
@@ -27,6 +36,8 @@ public final class StatusStrip {
     static final int PROGRESS_DELAY_MS = 150;
     private static final String TEXT = "text";
     private static final String PROGRESS = "progress";
+    /** The bar's width when room is short: enough for "99 %" or "1,234,567 lines"; it grows with the window. */
+    private static final int BAR_LEAST = 110;
 
     private final CardLayout cards = new CardLayout();
     private final JPanel panel = new JPanel(cards);
@@ -37,20 +48,41 @@ public final class StatusStrip {
     private final JButton cancel = new JButton("Cancel");
     private final Timer ticker = new Timer(100, e -> tick());
     private RenderJob watched;
+    /** What the bar says in full, and briefly for when that does not fit it ("30 %"). */
+    private String barWords = "";
+    private String barBrief = "";
     /** The inspector's last line of a pixel, or null. */
     private String lastPixelLine;
 
     StatusStrip(Runnable onCancel) {
         panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 46));
         panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
+        text.setToolTipText(HINTS);
         bar.setStringPainted(true);
         // Keys belong to the page: a focused button would swallow Space.
         cancel.setFocusable(false);
         cancel.addActionListener(e -> onCancel.run());
-        JPanel progress = new JPanel(new BorderLayout(8, 0));
-        progress.add(working, BorderLayout.WEST);
-        progress.add(bar, BorderLayout.CENTER);
-        progress.add(cancel, BorderLayout.EAST);
+        // One row: what is being drawn at its own width, the bar taking the rest, Cancel at the end. When the
+        // row is short of room, the words of what is being drawn give it up (cut with "…"); the bar keeps
+        // BAR_LEAST and Cancel its own width, so neither is covered.
+        JPanel progress = new JPanel();
+        progress.setLayout(new BoxLayout(progress, BoxLayout.X_AXIS));
+        working.setMinimumSize(new Dimension(0, 0));
+        Dimension least = new Dimension(BAR_LEAST, bar.getPreferredSize().height);
+        bar.setMinimumSize(least);
+        bar.setPreferredSize(least);
+        // the bar's words are chosen again whenever its width changes (a window resized, the words beside it)
+        bar.addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                sayOnTheBar();
+            }
+        });
+        progress.add(working);
+        progress.add(Box.createHorizontalStrut(8));
+        progress.add(bar);
+        progress.add(Box.createHorizontalStrut(8));
+        progress.add(cancel);
         JPanel lines = new JPanel(new BorderLayout());
         lines.add(inspector, BorderLayout.NORTH);
         lines.add(text, BorderLayout.SOUTH);
@@ -143,24 +175,59 @@ public final class StatusStrip {
         return cancel;
     }
 
+    /** The words of what is being drawn, beside the bar. */
+    JLabel workingLabel() {
+        return working;
+    }
+
+    JProgressBar progressBar() {
+        return bar;
+    }
+
+    /** The two lines of text: the inspector's, then the hints and messages. */
+    List<JLabel> textLines() {
+        return List.of(inspector, text);
+    }
+
     private void tick() {
         if (watched == null || watched.millisSinceCreated() < PROGRESS_DELAY_MS) {
             return;
         }
-        working.setText("Drawing " + describe(watched.view()) + "…");
+        String drawing = "Drawing " + describe(watched.view()) + "…";
+        working.setText(drawing);
+        working.setToolTipText(drawing);
         long lines = watched.linesSoFar();
         double share = watched.topFileShare();
+        String words;
+        String brief;
         if (share > 0) {
             // The share of the top file's bytes: included files are read in between.
             int percent = (int) Math.min(99, 100 * share);
             bar.setIndeterminate(false);
             bar.setValue(percent);
-            bar.setString(String.format("%,d lines read (%d %% of the scene file)", lines, percent));
+            words = String.format("%,d lines read (%d %% of the scene file)", lines, percent);
+            brief = percent + " %";
         } else {
-            bar.setString(String.format("%,d lines read", lines));
+            words = String.format("%,d lines read", lines);
+            brief = String.format("%,d lines", lines);
             bar.setIndeterminate(true);
         }
+        barWords = words;
+        barBrief = brief;
+        sayOnTheBar();
         cards.show(panel, PROGRESS);
+    }
+
+    /** The bar's words in full when they fit it, else briefly; in full on hovering it. */
+    private void sayOnTheBar() {
+        bar.setString(fitsTheBar(barWords) ? barWords : barBrief);
+        bar.setToolTipText(barWords.isEmpty() ? null : barWords);
+    }
+
+    /** Whether the bar, as wide as it is now, shows {@code words} whole. */
+    private boolean fitsTheBar(String words) {
+        Insets insets = bar.getInsets();
+        return bar.getFontMetrics(bar.getFont()).stringWidth(words) <= bar.getWidth() - insets.left - insets.right - 4;
     }
 
     private static String describe(View view) {
