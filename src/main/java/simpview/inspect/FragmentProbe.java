@@ -9,7 +9,8 @@ import simpview.shading.FragmentStage;
  * at the inspected pixel is resolved here as the fragment stage resolves it
  * (k = x - from, 1 / q = 1 / (q0 + k dq), each channel (v0 + k dv) / q, the
  * same operations in the same order, so the same bits; the colour of a
- * primitive of one colour as it is, {@link FragmentStage#oneColour}), told to the watch
+ * primitive of one colour, or the kd of a phong polygon of one kd, as it is,
+ * {@link FragmentStage#oneColours}), told to the watch
  * with the depth stored before it, and then the span goes on whole to the
  * fragment stage, which draws it; whether it won is read back from the
  * z-buffer. Spans and pixels that miss the inspected pixel go no further:

@@ -17,14 +17,23 @@ final class LightingTerms {
     private LightingTerms() {
     }
 
-    /** Puts P, N, kd, V, the ambient term, every light's terms and their sum into {@code terms}; returns the sum. */
-    static double[] explain(LitState state, double[] point, double[] normal, double[] kd, Terms terms) {
-        return explain(state, point, normal, "N_interpolated", kd, terms);
+    /**
+     * Puts P, N, kd and where it came from ({@code kdFrom}), V, the ambient term, every light's terms and their
+     * sum into {@code terms}; returns the sum.
+     */
+    static double[] explain(LitState state, double[] point, double[] normal, double[] kd, String kdFrom,
+            Terms terms) {
+        return explain(state, point, normal, "N_interpolated", kd, kdFrom, terms);
     }
 
     /** The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed"). */
     static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
             Terms terms) {
+        return explain(state, point, normal, normalName, kd, null, terms);
+    }
+
+    private static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
+            String kdFrom, Terms terms) {
         double[] n = unit(normal);
         boolean perspective = state.camera().isPerspective();
         double[] v = perspective ? unit(new double[] {-point[0], -point[1], -point[2]}) : new double[] {0, 0, 1};
@@ -33,6 +42,9 @@ final class LightingTerms {
         terms.put("N_length", length(normal));
         terms.put("N", n);
         terms.put("kd", kd);
+        if (kdFrom != null) {
+            terms.put("kd_from", kdFrom);
+        }
         terms.put("V", v);
         terms.put("ks", state.ks());
         terms.put("p", state.p());

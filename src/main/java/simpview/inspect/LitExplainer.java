@@ -15,7 +15,8 @@ import simpview.surface.Colors;
  * phong the scene's own lighting ({@link LitState#shade}) of the resolved P,
  * N and kd; then the scene's fog ({@link Fog#apply}); then
  * {@link Colors#pack}. So its bytes are the pixel's bytes. Around that it
- * writes out what went in: the lighting's terms (phong), the lit vertex
+ * writes out what went in: the lighting's terms and where kd came from
+ * (phong: interpolated, or one kd as it is), the lit vertex
  * colours and the pixel's perspective-correct weights (gouraud), the
  * polygon's one colour (flat), the fog.
  */
@@ -50,7 +51,12 @@ final class LitExplainer implements PixelWatch.Explainer {
             double[] p = {ch[FragmentLayout.PX], ch[FragmentLayout.PY], z};
             double[] n = {ch[FragmentLayout.NX], ch[FragmentLayout.NY], ch[FragmentLayout.NZ]};
             double[] kd = {ch[FragmentLayout.R], ch[FragmentLayout.G], ch[FragmentLayout.B]};
-            double[] sum = LightingTerms.explain(state, p, n, kd, terms);
+            String kdFrom = watch.carriesOneColour()
+                    ? "every vertex of the clipped polygon has this kd, so it is every pixel's kd as it is, to the "
+                    + "bit (a lerp between one value and itself is that value); P and N are interpolated"
+                    : "interpolated perspective-correct from the clipped polygon's vertices, (kd q) / q at the pixel, "
+                    + "as P and N are (SPEC Part 2)";
+            double[] sum = LightingTerms.explain(state, p, n, kd, kdFrom, terms);
             state.shade(p[0], p[1], p[2], n[0], n[1], n[2], kd[0], kd[1], kd[2], lit);
             terms.put("clamped", clamp(sum));
             terms.put("lit", lit.clone());

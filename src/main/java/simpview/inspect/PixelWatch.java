@@ -45,7 +45,10 @@ final class PixelWatch implements PrimitiveTrace {
     private double[] outline = new double[64];
     private int stride;
     private int vertices;
-    /** Whether the primitive at hand carries one colour, as it is in its outline (PrimitiveTrace.oneColour). */
+    /**
+     * Whether the primitive at hand carries one colour (phong: one kd), as it is in its outline
+     * (PrimitiveTrace.oneColour).
+     */
     private boolean oneColour;
     /** Told by the trace just before the read it is about. */
     private boolean nextOneColour;
@@ -466,7 +469,10 @@ final class PixelWatch implements PrimitiveTrace {
         return outline;
     }
 
-    /** The colour (r, g, b) outline vertex k carries: its colour channels over its q, or as they are for one colour. */
+    /**
+     * The colour (r, g, b) outline vertex k carries (a phong polygon's: its kd): its colour channels over its q,
+     * or as they are for one colour.
+     */
     double[] colourAt(int k) {
         int at = k * stride;
         double q = oneColour ? 1 : outline[at + FragmentLayout.Q];
@@ -475,7 +481,7 @@ final class PixelWatch implements PrimitiveTrace {
             outline[c + FragmentLayout.B] / q};
     }
 
-    /** Whether the primitive at hand carries one colour, the same at every vertex, to the bit. */
+    /** Whether the primitive at hand carries one colour (phong: one kd), the same at every vertex, to the bit. */
     boolean carriesOneColour() {
         return oneColour;
     }

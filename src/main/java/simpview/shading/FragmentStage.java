@@ -22,10 +22,12 @@ import simpview.surface.ZBuffer;
 /**
  * The fragment stage of lit scenes, per pixel, in this order: resolve depth
  * (z = (z q) / q), test it against the z-buffer (strictly nearer wins, then
- * stored), resolve the attributes (a = (a q) / q: perspective-correct), shade
- * (phong only: the colour of the lit point; flat and gouraud colours arrive
- * already lit), fog on camera-space z, and write round(c * 255) once to the
- * panel. Hidden pixels stop at the depth test and cost no shading.
+ * stored), resolve the attributes (a = (a q) / q: perspective-correct; a
+ * colour, or phong's kd, that every vertex of the primitive shares is taken
+ * as it is: {@link #oneColour}, {@link #phong(PointShader, Fog, boolean)}),
+ * shade (phong only: the colour of the lit point; flat and gouraud colours
+ * arrive already lit), fog on camera-space z, and write round(c * 255) once
+ * to the panel. Hidden pixels stop at the depth test and cost no shading.
  *
  * <p>Channels as {@link FragmentLayout} lays them out, the geometry stage's
  * layout too.
@@ -205,7 +207,10 @@ public final class FragmentStage implements FragmentSink {
     private int waitedShortSpans;
     private int waitedShortPixels;
     private PointShader shader;
-    /** Whether the primitives at hand have one colour each, in their colour channels as it is ({@link #oneColour}). */
+    /**
+     * Whether the primitives at hand have one colour each, in their colour channels as it is: their colour
+     * ({@link #oneColour}), or under phong their kd ({@link #phong(PointShader, Fog, boolean)}).
+     */
     private boolean oneColour;
     private Fog fog = Fog.NONE;
     // The polygon whose spans come (told by polygon(), until primitiveDone):
@@ -237,6 +242,9 @@ public final class FragmentStage implements FragmentSink {
     private int[] spanFrom = new int[64];
     private int[] spanOwner = new int[64];
     private int[] spanLook = new int[64];
+    // Whether a kept span's kd is one kd, as it is in its numbers (its slopes
+    // zero): then its pixels' kd is that kd, not resolved (oneKd).
+    private boolean[] spanOneKd = new boolean[64];
     // The kept spans' looks, each shader and fog once (but see lookOf), and
     // whether the polygons of the look's spans were guessed unlit (see
     // polygonUnlit): their pixels are lit in batches of their own.
@@ -545,8 +553,12 @@ public final class FragmentStage implements FragmentSink {
             resolve(numbers[v0 + NX], numbers[dv + NX], t.nx, numbers[v0 + NY], numbers[dv + NY], t.ny,
                     numbers[v0 + NZ], numbers[dv + NZ], t.nz, at, stop);
         }
-        resolve(numbers[v0 + R], numbers[dv + R], t.kdRed, numbers[v0 + G], numbers[dv + G], t.kdGreen,
-                numbers[v0 + B], numbers[dv + B], t.kdBlue, at, stop);
+        if (spanOneKd[span]) {
+            oneKd(numbers[v0 + R], numbers[v0 + G], numbers[v0 + B], at, stop);
+        } else {
+            resolve(numbers[v0 + R], numbers[dv + R], t.kdRed, numbers[v0 + G], numbers[dv + G], t.kdGreen,
+                    numbers[v0 + B], numbers[dv + B], t.kdBlue, at, stop);
+        }
         return stop;
     }
 
@@ -555,9 +567,12 @@ public final class FragmentStage implements FragmentSink {
      * {@link #SMALL_PIECE} pixels: each pixel's k, 1 / q and z as there (and
      * as pixel() has them), the depth looked at where the row was written
      * over, and kd, P and N of each the span still holds; each run of those
-     * one piece.
+     * one piece. A span of one kd: {@link #addSmallPieceOfOneKd}.
      */
     private int addSmallPiece(int span, int y, int x, int n, int at) {
+        if (spanOneKd[span]) {
+            return addSmallPieceOfOneKd(span, y, x, n, at);
+        }
         int o = span * SPAN_NUMBERS;
         double[] numbers = spanNumbers;
         double q0 = numbers[o];
@@ -610,6 +625,75 @@ public final class FragmentStage implements FragmentSink {
             t.kdRed[j] = (r0 + k * dr) * w;
             t.kdGreen[j] = (g0 + k * dg) * w;
             t.kdBlue[j] = (b0 + k * db) * w;
+            if (point) {
+                t.px[j] = (px0 + k * dpx) * w;
+                t.py[j] = (py0 + k * dpy) * w;
+                t.nx[j] = (nx0 + k * dnx) * w;
+                t.ny[j] = (ny0 + k * dny) * w;
+                t.nz[j] = (nz0 + k * dnz) * w;
+            }
+            j++;
+        }
+        if (runStart >= 0) {
+            addPieceRun(span, y, runStart, x + n - runStart, runAt);
+        }
+        return j;
+    }
+
+    /**
+     * {@link #addSmallPiece} for a span of one kd ({@link #spanOneKd}): the
+     * same, but each pixel's kd is the span's one kd, as it is, not resolved.
+     */
+    private int addSmallPieceOfOneKd(int span, int y, int x, int n, int at) {
+        int o = span * SPAN_NUMBERS;
+        double[] numbers = spanNumbers;
+        double q0 = numbers[o];
+        double dq = numbers[o + 1];
+        int v0 = o + 2;
+        int dv = v0 + FragmentLayout.PHONG_CHANNELS;
+        double z0 = numbers[v0 + Z];
+        double dz = numbers[dv + Z];
+        double kr = numbers[v0 + R];
+        double kg = numbers[v0 + G];
+        double kb = numbers[v0 + B];
+        double px0 = numbers[v0 + PX];
+        double dpx = numbers[dv + PX];
+        double py0 = numbers[v0 + PY];
+        double dpy = numbers[dv + PY];
+        double nx0 = numbers[v0 + NX];
+        double dnx = numbers[dv + NX];
+        double ny0 = numbers[v0 + NY];
+        double dny = numbers[dv + NY];
+        double nz0 = numbers[v0 + NZ];
+        double dnz = numbers[dv + NZ];
+        boolean overwritten = waiting.mayBeWrittenOver(y);
+        boolean point = shader.usesPoint();
+        LitPoints t = points;
+        double[] d = depth;
+        int row = y * width;
+        int from = spanFrom[span];
+        int j = at;
+        int runStart = -1; // the first x of the run of kept pixels at hand, -1 for none
+        int runAt = at;
+        for (int col = x, end = x + n; col < end; col++) {
+            double k = col - from;
+            double w = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * w;
+            if (overwritten && z != d[row + col]) {
+                if (runStart >= 0) {
+                    addPieceRun(span, y, runStart, col - runStart, runAt);
+                    runStart = -1;
+                }
+                continue;
+            }
+            if (runStart < 0) {
+                runStart = col;
+                runAt = j;
+            }
+            batchZ[j] = z;
+            t.kdRed[j] = kr;
+            t.kdGreen[j] = kg;
+            t.kdBlue[j] = kb;
             if (point) {
                 t.px[j] = (px0 + k * dpx) * w;
                 t.py[j] = (py0 + k * dpy) * w;
@@ -818,6 +902,67 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
+     * {@link #waitingShortSpan} for a span of one kd ({@link #phong(PointShader, Fog, boolean)}):
+     * the same, but each point's kd is the span's one kd, as it is, not resolved.
+     */
+    private boolean waitingShortSpanOfOneKd(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double kr = v0[R];
+        double kg = v0[G];
+        double kb = v0[B];
+        double px0 = v0[PX];
+        double dpx = dv[PX];
+        double py0 = v0[PY];
+        double dpy = dv[PY];
+        double nx0 = v0[NX];
+        double dnx = dv[NX];
+        double ny0 = v0[NY];
+        double dny = dv[NY];
+        double nz0 = v0[NZ];
+        double dnz = dv[NZ];
+        WaitingPoints w = waitingPoints;
+        int before = w.count;
+        int row = y * width;
+        int look = -1; // found at the first pixel that passes
+        int owner = Provenance.BACKGROUND;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            if (look < 0) {
+                look = lookOf(shader, fog, false);
+                owner = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
+            }
+            int i = w.add();
+            w.x[i] = x;
+            w.y[i] = y;
+            w.owner[i] = owner;
+            w.look[i] = look;
+            w.z[i] = z;
+            w.kdRed[i] = kr;
+            w.kdGreen[i] = kg;
+            w.kdBlue[i] = kb;
+            w.px[i] = (px0 + k * dpx) * inv;
+            w.py[i] = (py0 + k * dpy) * inv;
+            w.nx[i] = (nx0 + k * dnx) * inv;
+            w.ny[i] = (ny0 + k * dny) * inv;
+            w.nz[i] = (nz0 + k * dnz) * inv;
+        }
+        if (look < 0) {
+            return false;
+        }
+        waitedShortSpans++;
+        waitedShortPixels += w.count - before;
+        wroteOver(y); // a long span's pixel that waits here may be taken
+        return true;
+    }
+
+    /**
      * The waiting points ({@link #waitingShortSpan}) whose pixel is still
      * theirs (its depth still their z), lit in the order they came, in
      * batches of up to {@link #WAITING_BATCH} of one look (a batch ends where
@@ -917,6 +1062,7 @@ public final class FragmentStage implements FragmentSink {
             spanFrom = Arrays.copyOf(spanFrom, capacity);
             spanOwner = Arrays.copyOf(spanOwner, capacity);
             spanLook = Arrays.copyOf(spanLook, capacity);
+            spanOneKd = Arrays.copyOf(spanOneKd, capacity);
         }
         int o = k * SPAN_NUMBERS;
         spanNumbers[o] = q0;
@@ -926,6 +1072,7 @@ public final class FragmentStage implements FragmentSink {
         spanFrom[k] = from;
         spanOwner[k] = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
         spanLook[k] = lookOf(shader, fog, unlit);
+        spanOneKd[k] = oneColour;
         spanCount = k + 1;
         return k;
     }
@@ -1043,16 +1190,32 @@ public final class FragmentStage implements FragmentSink {
         this.fog = fog;
     }
 
-    /** Whether the primitives at hand have one colour each, as it is ({@link #oneColour}). */
+    /**
+     * Whether the primitives at hand have one colour each, as it is ({@link #oneColour}), or under phong one kd
+     * each ({@link #phong(PointShader, Fog, boolean)}): their colour channels are then that, not times q.
+     */
     public boolean oneColours() {
         return oneColour;
     }
 
-    /** The next primitives are phong-shaded by {@code shader} at every pixel, then fogged. */
+    /** The next primitives are phong-shaded by {@code shader} at every pixel, then fogged; their kd interpolated. */
     public void phong(PointShader shader, Fog fog) {
+        phong(shader, fog, false);
+    }
+
+    /**
+     * The next primitives are phong-shaded by {@code shader} at every pixel, then fogged. With {@code oneKd},
+     * every vertex of each has the same kd, carried in its colour channels as it is, not times q (as
+     * {@link #oneColour} carries a colour), and that kd is every pixel's, to the bit; P and N are interpolated
+     * perspective-correct as ever. Resolved as (kd q) / q, kd 0.5 missed by a last bit at some pixels, and under
+     * the ambient light alone came out 127 beside 128. The choice is made here, once: a span of one kd goes
+     * through loops of its own (phongPixelsOfOneKd, waitingShortSpanOfOneKd, addSmallPieceOfOneKd) or fills a
+     * batch's kd with it (oneKd), so no pixel pays a test for it.
+     */
+    public void phong(PointShader shader, Fog fog, boolean oneKd) {
         writePending(); // lit and fogged by the look they were drawn with
         this.shader = shader;
-        this.oneColour = false;
+        this.oneColour = oneKd;
         this.fog = fog;
     }
 
@@ -1060,7 +1223,8 @@ public final class FragmentStage implements FragmentSink {
      * Per pixel every span path below (colour spans, short phong spans,
      * phong batches) does exactly what pixel() does, with k = x - from:
      * inv = 1 / (q0 + k dq), each channel (v0[c] + k dv[c]) * inv, so every
-     * bit is the same. A phong span is done BATCH pixels at a time,
+     * bit is the same; but the colour channels of a primitive of one colour
+     * (or one kd) are v0's as they are, as pixel() takes v's then. A phong span is done BATCH pixels at a time,
      * each step over every pixel of the batch in a small loop of plain
      * arithmetic, which C2 compiles to packed operations: first 1 / q and z
      * for every pixel, then the depth test, gathering the pixels that pass,
@@ -1148,10 +1312,12 @@ public final class FragmentStage implements FragmentSink {
             if (keepShortSpans || shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS) {
                 return keptShortSpan(y, from, start, end, q0, dq, v0, dv);
             }
-            return waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
+            return oneColour ? waitingShortSpanOfOneKd(y, from, start, end, q0, dq, v0, dv)
+                    : waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
         }
         if (isShort) {
-            return phongPixels(y, from, start, end, q0, dq, v0, dv);
+            return oneColour ? phongPixelsOfOneKd(y, from, start, end, q0, dq, v0, dv)
+                    : phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         writePending(); // the batches below use the same arrays
         boolean wrote = false;
@@ -1300,6 +1466,79 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
+     * {@link #phongPixels} for a span of one kd ({@link #phong(PointShader, Fog, boolean)}):
+     * the same, but each pixel's kd is the span's one kd, as it is, not resolved.
+     */
+    private boolean phongPixelsOfOneKd(int y, int from, int start, int end, double q0, double dq, double[] v0,
+            double[] dv) {
+        double z0 = v0[Z];
+        double dz = dv[Z];
+        double kr = v0[R];
+        double kg = v0[G];
+        double kb = v0[B];
+        double px0 = v0[PX];
+        double dpx = dv[PX];
+        double py0 = v0[PY];
+        double dpy = dv[PY];
+        double nx0 = v0[NX];
+        double dnx = dv[NX];
+        double ny0 = v0[NY];
+        double dny = dv[NY];
+        double nz0 = v0[NZ];
+        double dnz = dv[NZ];
+        PointShader s = shader;
+        boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
+        boolean later = shortPixelsWait;
+        LitPoints t = points;
+        int row = y * width;
+        int passed = 0;
+        int n = pendingCount;
+        for (int x = start; x < end; x++) {
+            int k = x - from;
+            double inv = 1 / (q0 + k * dq);
+            double z = (z0 + k * dz) * inv;
+            if (!nearer(row + x, z)) {
+                continue;
+            }
+            passed++;
+            if (later) {
+                pendingX[n] = x;
+                pendingY[n] = y;
+                batchZ[n] = z;
+                t.kdRed[n] = kr;
+                t.kdGreen[n] = kg;
+                t.kdBlue[n] = kb;
+                if (point) {
+                    t.px[n] = (px0 + k * dpx) * inv;
+                    t.py[n] = (py0 + k * dpy) * inv;
+                    t.nx[n] = (nx0 + k * dnx) * inv;
+                    t.ny[n] = (ny0 + k * dny) * inv;
+                    t.nz[n] = (nz0 + k * dnz) * inv;
+                }
+                if (++n == BATCH) {
+                    pendingCount = n;
+                    writePending();
+                    n = 0;
+                }
+                continue;
+            }
+            if (point) {
+                s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
+                        (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv, kr, kg, kb, lit);
+            } else {
+                s.shade(0, 0, z, 0, 0, 0, kr, kg, kb, lit);
+            }
+            panel.setPixel(x, y, z, fogged(z, lit));
+        }
+        pendingCount = n;
+        shortPixels += passed;
+        if (passed > 0) {
+            wroteOver(y);
+        }
+        return passed > 0;
+    }
+
+    /**
      * A span whose colour is known (flat, gouraud, wire, lines), pixel by
      * pixel: with this little arithmetic per pixel, gathering the pixels to
      * write them as runs measured slower (about 10 against 6 ns per pixel).
@@ -1424,8 +1663,20 @@ public final class FragmentStage implements FragmentSink {
             resolve(v0[PX], dv[PX], t.px, v0[PY], dv[PY], t.py, 0, n);
             resolve(v0[NX], dv[NX], t.nx, v0[NY], dv[NY], t.ny, v0[NZ], dv[NZ], t.nz, 0, n);
         }
-        resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, 0, n);
+        if (oneColour) {
+            oneKd(v0[R], v0[G], v0[B], 0, n);
+        } else {
+            resolve(v0[R], dv[R], t.kdRed, v0[G], dv[G], t.kdGreen, v0[B], dv[B], t.kdBlue, 0, n);
+        }
         lightAndPack(n, polygonUnlit());
+    }
+
+    /** The batch's kd from &lt;= i &lt; to: one kd, (r, g, b) as it is, at every pixel (no slope, no q). */
+    private void oneKd(double r, double g, double b, int from, int to) {
+        LitPoints t = points;
+        Arrays.fill(t.kdRed, from, to, r);
+        Arrays.fill(t.kdGreen, from, to, g);
+        Arrays.fill(t.kdBlue, from, to, b);
     }
 
     /**
@@ -1626,7 +1877,7 @@ public final class FragmentStage implements FragmentSink {
         }
         zbuffer.written();
         wroteOver(y);
-        double colourTimes = oneColour ? 1 : inv; // one colour is as it is
+        double colourTimes = oneColour ? 1 : inv; // one colour (or one kd) is as it is
         double r = v[R] * colourTimes;
         double g = v[G] * colourTimes;
         double b = v[B] * colourTimes;

@@ -27,8 +27,10 @@ import simpview.shading.PointShader;
  *     (gouraud), or not yet (phong: the fragment stage lights every pixel);
  *     lines and wire polygons are not lit, they carry kd;</li>
  * <li>clipped against the six planes (Sutherland-Hodgman, attributes lerped
- *     in camera space);</li>
- * <li>projected onto the panel, each attribute multiplied by q = 1/w;</li>
+ *     in camera space); whether the clipped vertices share one colour (phong:
+ *     one kd) is told to the fragment stage;</li>
+ * <li>projected onto the panel, each attribute multiplied by q = 1/w (but
+ *     a colour or kd that every vertex shares, as it is);</li>
  * <li>rasterized: a fan for filled polygons, the clipped outline for wire
  *     ones, a DDA line for lines; the fragments go to the
  *     {@link FragmentStage}.</li>
@@ -65,8 +67,10 @@ public final class LitGeometry implements GeometryStage {
     private FragmentSink raster;
     /**
      * Whether the primitive at hand carries one colour: a line, wire outline or flat or gouraud polygon whose
-     * clipped vertices all have the same colour. Its colour channels are then projected as they are, not times q
-     * ({@link FragmentStage#oneColour}), so that every pixel of it is that colour to the bit.
+     * clipped vertices all have the same colour, or a phong polygon whose clipped vertices all have the same kd.
+     * Its colour channels are then projected as they are, not times q ({@link FragmentStage#oneColour},
+     * {@link FragmentStage#phong(PointShader, Fog, boolean)}), so that every pixel of it is that colour (that kd,
+     * lit there) to the bit.
      */
     private boolean oneColour;
     private final LitRasterizers rasterizers = LitRasterizers.make();
@@ -167,7 +171,7 @@ public final class LitGeometry implements GeometryStage {
         if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
             skipped(Painter.LINE, false, 2);
         } else {
-            carriedColours(2);
+            carriedColours(2, FragmentLayout.COLOUR_CHANNELS);
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
                 if (record != null) {
@@ -262,10 +266,7 @@ public final class LitGeometry implements GeometryStage {
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
-        oneColour = false;
-        if (channels == FragmentLayout.COLOUR_CHANNELS) {
-            carriedColours(kept);
-        }
+        carriedColours(kept, channels);
         if (record != null && trace == null) {
             // Projected straight into the record's batch: no copy of the vertices.
             double[] into = record.room(kept, channels);
@@ -325,20 +326,21 @@ public final class LitGeometry implements GeometryStage {
     /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
     private int recordedLook(boolean wire, int channels) {
         return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null, oneColour)
-                : record.look(state.fog(), state, false);
+                : record.look(state.fog(), state, oneColour);
     }
 
     /**
-     * Step 5's end for a primitive that carries its colours (a line, a wire
-     * outline, a flat or gouraud polygon): whether its n clipped vertices
-     * share one colour ({@link #oneColour}), and the fragment stage told so.
-     * A flat polygon always does (each vertex has the lit colour, and the
-     * clipper's lerp {@code a + t (b - a)} keeps a value both ends share);
-     * a line or outline of the surface colour, or a gouraud polygon whose
-     * vertices are lit alike, does too. A colour that is not a number never
-     * equals itself, so it is lerped as before.
+     * Step 5's end: whether the primitive's n clipped vertices share one
+     * colour, or for a phong polygon ({@code channels} the phong ones) one
+     * kd ({@link #oneColour}), and the fragment stage told so, with how the
+     * primitive is shaded. A flat polygon always does (each vertex has the
+     * lit colour, and the clipper's lerp {@code a + t (b - a)} keeps a value
+     * both ends share); a line or outline of the surface colour, a gouraud
+     * polygon whose vertices are lit alike, or a phong polygon of the surface
+     * colour does too. A colour that is not a number never equals itself, so
+     * it is lerped as before.
      */
-    private void carriedColours(int n) {
+    private void carriedColours(int n, int channels) {
         double[] v = clipper.vertices();
         boolean one = true;
         for (int k = 1; k < n && one; k++) {
@@ -346,7 +348,9 @@ public final class LitGeometry implements GeometryStage {
             one = v[o + CR] == v[CR] && v[o + CG] == v[CG] && v[o + CB] == v[CB];
         }
         oneColour = one && v[CR] == v[CR] && v[CG] == v[CG] && v[CB] == v[CB];
-        if (oneColour) {
+        if (channels == FragmentLayout.PHONG_CHANNELS) {
+            fragments.phong(phongShader(), state.fog(), oneColour);
+        } else if (oneColour) {
             fragments.oneColour(state.fog());
         } else {
             fragments.colours(state.fog());
@@ -390,8 +394,7 @@ public final class LitGeometry implements GeometryStage {
                 yield FragmentLayout.COLOUR_CHANNELS; // the fragment stage is told once clipped: carriedColours
             }
             case PHONG -> {
-                fragments.phong(phongShader(), state.fog());
-                yield FragmentLayout.PHONG_CHANNELS;
+                yield FragmentLayout.PHONG_CHANNELS; // the fragment stage is told once clipped: carriedColours
             }
         };
     }
@@ -505,7 +508,8 @@ public final class LitGeometry implements GeometryStage {
     }
 
     /**
-     * Step 6: the first n clipped vertices to panel space, channels times q (one colour as it is: {@link #oneColour}).
+     * Step 6: the first n clipped vertices to panel space, channels times q (one colour or kd as it is:
+     * {@link #oneColour}).
      *
      * @return how many could be projected (all of them unless one is not finite)
      */

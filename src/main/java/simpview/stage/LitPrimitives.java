@@ -144,8 +144,9 @@ public final class LitPrimitives {
      * The look of the primitives recorded next: their colours known, fogged
      * by {@code fog} ({@code phong} null; {@code oneColour}: each primitive's
      * one colour, as it is, {@link FragmentStage#oneColour}), or lit at every pixel as
-     * {@code phong} lights now, then fogged. Looks are made again only when
-     * one of these changed.
+     * {@code phong} lights now, then fogged ({@code oneColour}: each
+     * primitive's one kd, as it is, {@link FragmentStage#phong(PointShader, Fog, boolean)}).
+     * Looks are made again only when one of these changed.
      */
     int look(Fog fog, LitState phong, boolean oneColour) {
         shadesLater |= phong != null && FragmentStage.paysToWait(phong);
@@ -241,7 +242,7 @@ public final class LitPrimitives {
         /** How primitives are shaded: the fog, and for phong the lighting as it was at the primitive. */
         final List<Fog> fogs = new ArrayList<>();
         final List<Supplier<PointShader>> shaders = new ArrayList<>();
-        /** Whether a look's colours are each primitive's one colour, as it is. */
+        /** Whether a look's colours (under phong, its kd) are each primitive's one colour, as it is. */
         final List<Boolean> oneColours = new ArrayList<>();
         int lastLook = -1;
         /** The parts of look lastLook (when it is not -1). */
@@ -467,7 +468,7 @@ public final class LitPrimitives {
                 madeFrom = s;
                 shader = s.get();
             }
-            fragments.phong(shader, b.fogs.get(l));
+            fragments.phong(shader, b.fogs.get(l), b.oneColours.get(l));
         }
     }
 }

@@ -72,9 +72,10 @@ public interface PrimitiveTrace {
     }
 
     /**
-     * The lit primitive {@link #read} next carries one colour, the same at
-     * every vertex, and its colour channels hold it as it is, not times q as
-     * its other channels are (FragmentStage.oneColour). Told only then, just
+     * The lit primitive {@link #read} next carries one colour (a phong
+     * polygon: one kd), the same at every vertex, and its colour channels
+     * hold it as it is, not times q as its other channels are
+     * (FragmentStage.oneColour, FragmentStage.phong). Told only then, just
      * before that read.
      */
     default void oneColour() {

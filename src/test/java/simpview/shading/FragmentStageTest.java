@@ -438,6 +438,118 @@ class FragmentStageTest {
     }
 
     /**
+     * Phong spans of one kd ({@link FragmentStage#phong(PointShader, Fog, boolean)}: the kd as it is in the
+     * colour channels, with no slope) among spans whose kd is resolved, long and short, lit at once (short spans'
+     * pixels waiting for their primitive, or lit alone after a primitive of a few) and at the picture's end
+     * (kept spans, points, short pieces), draw what their pixels drawn one by one draw ({@link FragmentStage#pixel}
+     * takes the colour channels as they are then): colours, depths and owners, to the bit.
+     */
+    @Property(tries = 120, seed = "1233033")
+    void phongSpansOfOneKdDrawWhatTheirPixelsDrawEveryWay(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = random.nextInt(3) == 0 ? ambientScene(random) : sceneThatWaits(random);
+        PointShader frozen = state.frozenShader().get();
+        StageSetup byPixel = StageSetup.make(state, true);
+        StageSetup atOnce = StageSetup.make(state, true);
+        StageSetup atEnd = StageSetup.deferring(state);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] v = new double[CHANNELS];
+        int spans = 1 + random.nextInt(80);
+        for (int s = 0; s < spans; s++) {
+            boolean oneKd = random.nextInt(3) > 0;
+            double[] q = randomSpan(random, v0, dv);
+            if (oneKd) {
+                for (int c = FragmentLayout.R; c <= FragmentLayout.B; c++) {
+                    v0[c] = random.nextBoolean() ? 0.5 : random.nextDouble();
+                    dv[c] = 0;
+                }
+            }
+            int y = 10 + random.nextInt(4);
+            int from = random.nextInt(SIZE + 40) - 30;
+            int to = from + (random.nextBoolean() ? random.nextInt(12) : random.nextInt(SIZE + 10));
+            for (StageSetup stage : new StageSetup[] {byPixel, atOnce, atEnd}) {
+                stage.fragments().phong(frozen, state.fog(), oneKd);
+                stage.provenance().begin(s);
+            }
+            atOnce.fragments().span(y, from, to, q[0], q[1], v0, dv);
+            atEnd.fragments().span(y, from, to, q[0], q[1], v0, dv);
+            for (int x = from; x < to; x++) {
+                int k = x - from;
+                for (int c = 0; c < CHANNELS; c++) {
+                    v[c] = v0[c] + k * dv[c];
+                }
+                byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
+            }
+            for (StageSetup stage : new StageSetup[] {byPixel, atOnce, atEnd}) {
+                stage.fragments().primitiveDone();
+            }
+        }
+        atEnd.fragments().shadeWaiting();
+        assertSameDrawing(byPixel, atOnce);
+        assertSameDrawing(byPixel, atEnd);
+    }
+
+    /**
+     * A phong span of one kd, 0.5, under an ambient light of 1 and lights behind it (which add nothing) is 0.5
+     * at every pixel, whose byte is round(127.5) = 128, however its q runs: lit at once or at the end, long or
+     * short, on a stage whose short spans are kept or wait as points. Resolved as (kd q) / q it was 127 at some.
+     */
+    @Property(tries = 60, seed = "1233034")
+    void aPhongSpanOfOneKdIsThatKdAtEveryPixel(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = new LitState();
+        state.setCamera(Camera.perspective(-1, -1, 1, 1, -0.1, -200), Matrix4.identity());
+        state.setAmbient(1, 1, 1);
+        int lights = random.nextInt(3);
+        for (int i = 0; i < lights; i++) {
+            state.addLight(i, 0, -1000, 1, 1, 1, 1, 0); // far behind a face turned to +z
+        }
+        PointShader frozen = state.frozenShader().get();
+        WaitingPixels waits = new WaitingPixels(SIZE, SIZE);
+        StageSetup[] stages = {StageSetup.make(state, true), StageSetup.deferring(state),
+            keepingShortSpans(state, frozen, waits)};
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        int rows = 1 + random.nextInt(SIZE);
+        for (StageSetup stage : stages) {
+            stage.fragments().phong(frozen, state.fog(), true);
+        }
+        for (int y = 0; y < rows; y++) {
+            double depth = 4 + random.nextDouble() * 12;
+            double q0 = 1 / depth;
+            double dq = (random.nextDouble() - 0.5) * 1e-3 * q0;
+            v0[FragmentLayout.Z] = -depth * q0;
+            dv[FragmentLayout.Z] = -depth * dq;
+            v0[FragmentLayout.NZ] = q0;
+            dv[FragmentLayout.NZ] = dq;
+            v0[FragmentLayout.R] = 0.5;
+            v0[FragmentLayout.G] = 0.5;
+            v0[FragmentLayout.B] = 0.5;
+            int from = random.nextInt(SIZE) - 5;
+            int to = from + (random.nextBoolean() ? random.nextInt(FragmentStage.SHORT_SPAN) : random.nextInt(SIZE));
+            for (StageSetup stage : stages) {
+                stage.fragments().span(y, from, to, q0, dq, v0, dv);
+                if (random.nextInt(4) == 0) {
+                    stage.fragments().primitiveDone();
+                }
+            }
+        }
+        for (StageSetup stage : stages) {
+            stage.fragments().primitiveDone();
+            stage.fragments().shadeWaiting();
+            int written = 0;
+            for (int p : pixels(stage.image())) {
+                if ((p & 0xFFFFFF) != 0) {
+                    assertEquals(0x808080, p & 0xFFFFFF, lights + " light(s)");
+                    written++;
+                }
+            }
+            assertTrue(written > 0 || rows < 4, "nothing written");
+        }
+    }
+
+    /**
      * A deferring stage that has drawn a picture of one-light short spans of
      * ten pixels, all passing, and now starts a new picture on a surface of
      * its own, its pixels waiting in {@code waits}: its short spans are kept.
