@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
@@ -14,7 +15,9 @@ import simpview.surface.PageCanvas;
  * them: as written, after the CTM (world), after W (camera space), projected
  * (panel coordinates with their fractions) and the pixel each rounds to; for
  * a lit scene the clipper's output (by the program's own {@link Clipper}) and
- * the planes that cut it; for a line, the DDA's start pixel, direction and
+ * the planes that cut it, each vertex of the output named: a vertex as
+ * written, or a new one with the planes it lies on and how much of each
+ * vertex as written it is; for a line, the DDA's start pixel, direction and
  * step count by SPEC's rule; for a filled polygon, whether it covers the
  * pixel's centre, by the rasterizer's own edge tests ({@link CentreTest}), and
  * on an edge, which way the top-left rule took it.
@@ -68,22 +71,50 @@ final class VertexTable {
                 ends = new double[] {cam[0], cam[1], cam[2], cam[3], cam[4], cam[5]};
             }
         } else {
-            Clipper clipper = new Clipper(3);
+            // Each vertex carries its shares of the vertices as written (one-hot), which the clipper lerps
+            // as it lerps colours and normals: a new vertex's shares say what it is made of.
+            int stride = 3 + n;
+            double[] marked = new double[stride * n];
+            for (int k = 0; k < n; k++) {
+                System.arraycopy(cam, 3 * k, marked, k * stride, 3);
+                marked[k * stride + 3 + k] = 1;
+            }
+            Clipper clipper = new Clipper(stride);
             int kept;
             if (s.kind() == Painter.LINE) {
-                kept = clipper.clipLine(camera, cam, 0, 3) ? 2 : 0;
+                kept = clipper.clipLine(camera, marked, 0, stride) ? 2 : 0;
             } else {
-                kept = clipper.clipPolygon(camera, cam, 0, n);
+                kept = clipper.clipPolygon(camera, marked, 0, n);
             }
             double[] out = clipper.vertices();
             Terms clip = new Terms();
             int crossed = clipper.cutPlanes();
             clip.put("cut_by", crossed == 0 ? "none: every vertex is inside the view" : planes(crossed));
             List<Terms> output = new ArrayList<>();
+            boolean anyNew = false;
             for (int k = 0; k < kept; k++) {
-                Terms v = new Terms().put("camera", out[3 * k], out[3 * k + 1], out[3 * k + 2]);
-                project(camera, out[3 * k], out[3 * k + 1], out[3 * k + 2], v);
+                int at = k * stride;
+                double[] shares = Arrays.copyOfRange(out, at + 3, at + stride);
+                int source = asWritten(shares);
+                Terms v = new Terms();
+                if (source >= 0) {
+                    v.put("from", "vertex " + source + ", as written");
+                } else {
+                    anyNew = true;
+                    int on = onPlanes(camera, out[at], out[at + 1], out[at + 2]);
+                    v.put("from", on == 0 ? "new, made by the clipper"
+                            : "new, made by the clipper where the " + (s.kind() == Painter.LINE ? "line" : "outline")
+                            + " crosses the " + and(planeNames(on)) + (Integer.bitCount(on) == 1 ? " plane" : " planes"));
+                    v.put("of_the_vertices", shares);
+                }
+                v.put("camera", out[at], out[at + 1], out[at + 2]);
+                project(camera, out[at], out[at + 1], out[at + 2], v);
                 output.add(v);
+            }
+            if (anyNew) {
+                clip.put("new_vertices", "of_the_vertices is how much of each vertex as written a new vertex is: its "
+                        + "position, colour and normal are those shares of theirs (SPEC Part 2: linear in camera "
+                        + "space at the crossing)");
             }
             clip.put("output", output);
             if (kept == 0) {
@@ -91,7 +122,7 @@ final class VertexTable {
             }
             t.put("clipping", clip);
             if (s.kind() == Painter.LINE && kept == 2) {
-                ends = new double[] {out[0], out[1], out[2], out[3], out[4], out[5]};
+                ends = new double[] {out[0], out[1], out[2], out[stride], out[stride + 1], out[stride + 2]};
             }
         }
         if (ends != null) {
@@ -261,6 +292,41 @@ final class VertexTable {
                     .put("rounds_to", (double) rounded).put("steps_on_pixel", rounded == (xMajor ? y : x)));
         }
         return t;
+    }
+
+    /** The vertex as written that shares are wholly (one-hot), or -1 for a vertex the clipper made. */
+    private static int asWritten(double[] shares) {
+        int source = -1;
+        for (int k = 0; k < shares.length; k++) {
+            if (shares[k] == 1 && source < 0) {
+                source = k;
+            } else if (shares[k] != 0) {
+                return -1;
+            }
+        }
+        return source;
+    }
+
+    /**
+     * The planes (Camera's bits) that the camera-space point lies on, to
+     * within rounding: a vertex the clipper made lies on the plane whose
+     * pass made it (and on two at a corner of the view).
+     */
+    private static int onPlanes(Camera camera, double x, double y, double z) {
+        double tolerance = 1e-9 * (1 + Math.abs(x) + Math.abs(y) + Math.abs(z));
+        int on = 0;
+        for (int p = 0; p < Camera.PLANES; p++) {
+            if (Math.abs(camera.distance(p, x, y, z)) <= tolerance) {
+                on |= 1 << p;
+            }
+        }
+        return on;
+    }
+
+    /** "a", "a and b", "a, b and c". */
+    private static String and(List<String> words) {
+        int n = words.size();
+        return n <= 1 ? String.join("", words) : String.join(", ", words.subList(0, n - 1)) + " and " + words.get(n - 1);
     }
 
     static int commonOutside(Camera camera, double[] cam, int n) {

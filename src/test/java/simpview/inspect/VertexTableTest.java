@@ -169,4 +169,70 @@ class VertexTableTest {
         assertEquals(325, dda.number("steps"), 0);
         assertTrue(String.valueOf(t.get("clipping")).startsWith("none"));
     }
+
+    /**
+     * Where each vertex of the clipper's output comes from. The triangle
+     * (0, 0, -2) (4, 0, -10) (0, 4, -10) with hither -5 is cut 3/8 of the
+     * way from its first vertex along both its edges: (1.5, 0, -5) is 5/8 of
+     * vertex 0 and 3/8 of vertex 1, on the hither plane; (4, 0, -10) is
+     * vertex 1 as written.
+     */
+    @Test
+    void theClippersVerticesSayWhereTheyComeFrom() throws Exception {
+        Terms clip = table("camera -1 -1 1 1 -5 -100\npolygon (0, 0, -2) (4, 0, -10) (0, 4, -10)\n", 380, 380)
+                .terms("clipping");
+        Terms cut = byCamera(clip, 1.5, 0, -5);
+        assertEquals("new, made by the clipper where the outline crosses the hither plane", cut.get("from"));
+        assertArrayEquals(new double[] {5.0 / 8, 3.0 / 8, 0}, cut.vector("of_the_vertices"), EPS);
+        Terms kept = byCamera(clip, 4, 0, -10);
+        assertEquals("vertex 1, as written", kept.get("from"));
+        assertEquals(null, kept.get("of_the_vertices"));
+        assertNotNull(clip.get("new_vertices"));
+    }
+
+    /**
+     * A floor from beside the eye into the distance, (-30, -5, -0.5)
+     * (30, -5, -0.5) (0, -5, -60), window [-1, 1]^2, hither -1: the clipper
+     * leaves a corner at (-5, -5, -5), on the left plane (x = z) and the
+     * bottom one (y = z). Its shares a, b, c of the three vertices: c from
+     * z, -0.5 (1 - c) - 60 c = -5, so c = 9/119; a - b from x, 30 (b - a) =
+     * -5, so a - b = 1/6, a + b = 110/119.
+     */
+    @Test
+    void aCornerOfTheViewIsOnTwoPlanes() throws Exception {
+        Terms clip = table("camera -1 -1 1 1 -1 -100\npolygon (-30, -5, -0.5) (30, -5, -0.5) (0, -5, -60)\n",
+                300, 100).terms("clipping");
+        Terms corner = byCamera(clip, -5, -5, -5);
+        assertEquals("new, made by the clipper where the outline crosses the left and bottom planes",
+                corner.get("from"));
+        double c = 9.0 / 119;
+        double a = (110.0 / 119 + 1.0 / 6) / 2;
+        assertArrayEquals(new double[] {a, 110.0 / 119 - a, c}, corner.vector("of_the_vertices"), EPS);
+    }
+
+    /**
+     * A line from camera (0, 0, -10) to (20, 0, -10) leaves the window's
+     * right side at x = 10, halfway: its new end is half of each end, at
+     * panel (650, 325), and the DDA walks the clipped line, to (650, 325).
+     */
+    @Test
+    void aClippedLinesNewEnd() throws Exception {
+        Terms t = table("camera -1 -1 1 1 -1 -100\nline (0, 0, -10) (20, 0, -10)\n", 400, 325);
+        Terms clip = t.terms("clipping");
+        assertEquals("vertex 0, as written", clip.list("output").get(0).get("from"));
+        Terms end = clip.list("output").get(1);
+        assertEquals("new, made by the clipper where the line crosses the right plane", end.get("from"));
+        assertArrayEquals(new double[] {0.5, 0.5}, end.vector("of_the_vertices"), EPS);
+        assertArrayEquals(new double[] {650, 325}, t.terms("dda").vector("end_pixel"), 0);
+    }
+
+    private static Terms byCamera(Terms clip, double x, double y, double z) {
+        for (Terms o : clip.list("output")) {
+            double[] c = o.vector("camera");
+            if (Math.abs(c[0] - x) < EPS && Math.abs(c[1] - y) < EPS && Math.abs(c[2] - z) < EPS) {
+                return o;
+            }
+        }
+        throw new AssertionError("the clipper's output lacks (" + x + ", " + y + ", " + z + ")");
+    }
 }
