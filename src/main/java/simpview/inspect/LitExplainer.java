@@ -97,12 +97,36 @@ final class LitExplainer implements PixelWatch.Explainer {
         } else {
             double t = (z - fog.far()) / (fog.near() - fog.far());
             terms.put("fog", new Terms().put("near", fog.near()).put("far", fog.far())
-                    .put("colour", fog.r(), fog.g(), fog.b()).put("t", Math.max(0, Math.min(1, t))));
+                    .put("colour", fog.r(), fog.g(), fog.b()).put("t", Math.max(0, Math.min(1, t)))
+                    .put("why", fogWhy(z, fog, t)));
         }
         terms.put("fogged", fogged);
         int argb = Colors.pack(fogged[0], fogged[1], fogged[2]);
         terms.put("final_rgb", argb >>> 16 & 0xFF, argb >>> 8 & 0xFF, argb & 0xFF);
         return argb;
+    }
+
+    /**
+     * Why the fog's t is what it is at depth z, in SPEC's words and with the
+     * numbers put in: no fog at or nearer than near, the fog's colour alone at
+     * or beyond far, between them the share of the way from far to near.
+     */
+    static String fogWhy(double z, Fog fog, double t) {
+        if (!(z < fog.near())) {
+            return "z " + Json.number(z) + " is at or nearer than near " + Json.number(fog.near())
+                    + ": no fog (t = 1), the colour stays as it is";
+        }
+        if (z <= fog.far()) {
+            return "z " + Json.number(z) + " is at or beyond far " + Json.number(fog.far())
+                    + ": the fog's colour alone (t = 0)";
+        }
+        return "t = (z - far) / (near - far) = " + difference(z, fog.far()) + " / " + difference(fog.near(), fog.far())
+                + " = " + Json.number(t) + "; fogged = t (the colour before fog) + (1 - t) (the fog's colour)";
+    }
+
+    /** "(a - b)", written "(a + |b|)" when b is negative. */
+    private static String difference(double a, double b) {
+        return "(" + Json.number(a) + (b < 0 ? " + " + Json.number(-b) : " - " + Json.number(b)) + ")";
     }
 
     /**

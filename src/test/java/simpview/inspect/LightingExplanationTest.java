@@ -246,6 +246,31 @@ class LightingExplanationTest {
         }
     }
 
+    /**
+     * The fog says why its t is what it is: a flat triangle facing the eye at
+     * z = -30 under fog from -10 to -50 is halfway, t = (-30 + 50) / (-10 +
+     * 50) = 0.5; at z = -5 it is nearer than near (no fog), at z = -80
+     * beyond far (the fog's colour alone).
+     */
+    @Test
+    void theFogSaysWhyItsTIsWhatItIs() throws Exception {
+        String[] whys = {
+            "t = (z - far) / (near - far) = (-30 + 50) / (-10 + 50) = 0.5; "
+                    + "fogged = t (the colour before fog) + (1 - t) (the fog's colour)",
+            "z -5 is at or nearer than near -10: no fog (t = 1), the colour stays as it is",
+            "z -80 is at or beyond far -50: the fog's colour alone (t = 0)",
+        };
+        double[] depths = {-30, -5, -80};
+        for (int k = 0; k < depths.length; k++) {
+            double z = depths[k];
+            Path file = dir.resolve("fog" + k + ".simp");
+            Files.writeString(file, "camera -1 -1 1 1 -1 -100\ndepth -10 -50 (0 0 1)\nflat\npolygon (" + z + ", " + z
+                    + ", " + z + ") (" + -z + ", " + z + ", " + z + ") (0, " + -z + ", " + z + ")\n");
+            Terms fog = new PixelInspector().inspect(InspectedScene.of(file), 325, 325).explanation().terms("fog");
+            assertEquals(whys[k], fog.get("why"), "z " + z);
+        }
+    }
+
     /** Fog's t and colour and the bytes, from the unfogged colour; the bytes are the pixel's. */
     private static void fogAndBytes(Terms t, PixelReport report, double[] colour, String where) {
         double z = t.number("z");
