@@ -1013,6 +1013,15 @@ public final class SimpviewWindow {
 
     private void toggleOwnColours() {
         settings = settings.withOwnColours(!settings.ownColours());
+        if (pending == null && shown != null && shown.facts().depthStart() == Double.NEGATIVE_INFINITY) {
+            // A lit scene (its z-buffer starts at -infinity) has no depth cue to leave out: SPEC Part 2 colours it
+            // by its lights and fog, own colours or not, so it is not drawn again.
+            inspect();
+            status.say((settings.ownColours() ? "Own colours: on for depth-cued scenes. " : "Depth cue: on again for "
+                    + "depth-cued scenes. ") + "This scene is lit (its camera, lights and fog make its colours, "
+                    + "SPEC Part 2), so it looks the same either way.");
+            return;
+        }
         status.say(settings.ownColours()
                 ? "Own colours: scenes show their vertices' colours (white where none), without the depth cue."
                 : "Depth cue: scenes are coloured by depth again.");

@@ -46,8 +46,8 @@ public enum WindowAction {
     DEPTH_VIEW(Menu.VIEW, Entry.TOGGLE_FIRST_OF_GROUP,
             "Depth view", "the z-buffer as a picture (again: the page)", "D"),
     OWN_COLOURS(Menu.VIEW, Entry.TOGGLE,
-            "Own colours", "scenes in their vertices' own colours (white where none), without the "
-            + "depth cue", "C"),
+            "Own colours", "depth-cued scenes in their vertices' own colours (white where none), without "
+            + "the cue; a lit scene stays as it is", "C"),
     BACK_FACES(Menu.VIEW, Entry.TOGGLE,
             "Back faces", "pixels of polygons clockwise on the panel (facing away) tinted magenta, "
             + "with how many there are (again: the page)", "K"),

@@ -306,6 +306,27 @@ public class InstrumentsWindowTest extends WindowTestCase {
                 "the scene in its own red");
     }
 
+    /**
+     * C on a lit scene: SPEC Part 2 colours it by its lights and fog, own
+     * colours or not, so the picture stays as it is, and the status line says
+     * why instead of claiming the scene now shows its vertices' colours.
+     */
+    @Test
+    void ownColoursOnALitSceneSayItStaysAsItIs() throws Exception {
+        Path scene = Files.writeString(dir.resolve("lit-red.simp"), "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                + "polygon (-5, -5, -10, 0, 1, 0) (5, -5, -10, 0, 1, 0) (0, 5, -10, 0, 1, 0)\n");
+        openWindowOn(scene);
+        RenderedView lit = driver.onEdt(() -> window().shown());
+        assertEquals(0x00FF00, lit.image().getRGB(375, 375) & 0xFFFFFF);
+        driver.press(KeyEvent.VK_C);
+        driver.awaitEdt(() -> window().status().messageText().contains("This scene is lit"),
+                "the status line saying a lit scene stays as it is");
+        assertEquals("Own colours: on for depth-cued scenes. This scene is lit (its camera, lights and fog make its "
+                + "colours, SPEC Part 2), so it looks the same either way.",
+                driver.onEdt(() -> window().status().messageText()));
+        assertEquals(0, Images.differingPixels(lit.image(), driver.onEdt(() -> window().shown().image())));
+    }
+
     @Test
     void aRightDragTurnsTheSceneAndTheResetKeyRestoresItBitForBit() throws Exception {
         open();
