@@ -1,5 +1,8 @@
 package simpview.inspect;
 
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -45,9 +48,35 @@ public final class SkippedPrimitives {
         public long clipped() {
             return outlined.size() - culled();
         }
+
+        /**
+         * How many of the outlined lie wholly outside the panel: the overlay,
+         * cut to the panel, shows nothing of them.
+         */
+        public long outsideThePanel() {
+            return outlined.stream().filter(s -> missesThePanel(s.outline())).count();
+        }
     }
 
     private SkippedPrimitives() {
+    }
+
+    /**
+     * Whether an outline (panel x and y in turn: a line's two ends, or a
+     * polygon's corners) lies wholly outside the panel, 0 to 650 each way.
+     */
+    static boolean missesThePanel(double[] outline) {
+        Rectangle2D panel = new Rectangle2D.Double(0, 0, PageCanvas.PANEL, PageCanvas.PANEL);
+        if (outline.length == 4) {
+            return !new Line2D.Double(outline[0], outline[1], outline[2], outline[3]).intersects(panel);
+        }
+        Path2D.Double shape = new Path2D.Double();
+        shape.moveTo(outline[0], outline[1]);
+        for (int k = 2; k + 1 < outline.length; k += 2) {
+            shape.lineTo(outline[k], outline[k + 1]);
+        }
+        shape.closePath();
+        return !shape.intersects(panel) && !panel.contains(outline[0], outline[1]);
     }
 
     /**

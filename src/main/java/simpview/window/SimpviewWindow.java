@@ -962,7 +962,10 @@ public final class SimpviewWindow {
             legendStrip.show("skipped", new Legend("never rasterized", List.of(
                     new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size() + " culled"),
                     new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size() + " clipped away"))));
+            long outside = found.outsideThePanel();
             status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
+                    + (outside == 0 ? "" : "; " + outside + " of them " + (outside == 1 ? "lies" : "lie")
+                    + " wholly outside the panel, where the outlines are cut away")
                     + asFarAsTheError() + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more lie wholly at or behind "
                     + "the eye and have no outline" : "") + " · U: off");
         });

@@ -23,6 +23,33 @@ class SkippedPrimitivesTest {
     @TempDir
     Path dir;
 
+    /**
+     * Which outlines U cannot show, the panel (0 to 650 each way) cutting
+     * them away whole. The corner triangle past the right and top planes at
+     * z = -10 projects to (812.5, 520) (520, 812.5) (780, 780): its box
+     * overlaps the panel, but its edge x + y = 1332.5 passes beyond the
+     * panel's corner (650, 650), so none of it is on the panel. The one left
+     * of the left plane lies at panel x -325 and less. The one beyond the far
+     * plane is near the centre.
+     */
+    @Test
+    void theOutlinesWhollyOutsideThePanelAreCounted() throws Exception {
+        Path scene = dir.resolve("outside.simp");
+        Files.writeString(scene, "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                + "polygon (-1, -1, -200) (1, -1, -200) (0, 1, -200)\n"
+                + "polygon (15, 6, -10) (6, 15, -10) (14, 14, -10)\n"
+                + "polygon (-20, 0, -10) (-20, 1, -10) (-20, 0, 5)\n");
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new SceneLibrary());
+        assertEquals(3, found.outlined().size());
+        assertFalse(SkippedPrimitives.missesThePanel(found.outlined().get(0).outline()));
+        assertTrue(SkippedPrimitives.missesThePanel(found.outlined().get(1).outline()));
+        assertTrue(SkippedPrimitives.missesThePanel(found.outlined().get(2).outline()));
+        assertEquals(2, found.outsideThePanel());
+        // A line across the panel with both ends outside it is on the panel; one beside it is not.
+        assertFalse(SkippedPrimitives.missesThePanel(new double[] {-100, 325, 800, 325}));
+        assertTrue(SkippedPrimitives.missesThePanel(new double[] {-100, -100, -50, 800}));
+    }
+
     @Test
     void culledClippedAwayAndBehindTheEyeInALitScene() throws Exception {
         Path scene = dir.resolve("skips.simp");

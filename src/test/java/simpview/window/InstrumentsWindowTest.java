@@ -327,6 +327,24 @@ public class InstrumentsWindowTest extends WindowTestCase {
         assertEquals(0, Images.differingPixels(lit.image(), driver.onEdt(() -> window().shown().image())));
     }
 
+    /**
+     * U on a scene whose one clipped-away triangle lies past the view's
+     * top-left corner: its outline is off the panel, cut away with it, and
+     * the status line says so rather than leaving "1 clipped-away primitive
+     * outlined" over a panel that shows none.
+     */
+    @Test
+    void theOutlinesOffThePanelAreNamedAsSuch() throws Exception {
+        Path scene = Files.writeString(dir.resolve("corner.simp"), "camera -1 -1 1 1 -1 -50\nambient 1 1 1\n"
+                + "polygon (-3, -3, -8) (3, -3, -8) (0, 3, -8)\n"
+                + "polygon (-30, 9, -10) (-9, 30, -10) (-30, 30, -10)\n");
+        openWindowOn(scene);
+        driver.press(KeyEvent.VK_U);
+        driver.awaitEdt(() -> window().skippedShown() != null, "the clipped-away outlines");
+        assertEquals("0 culled and 1 clipped-away primitives outlined; 1 of them lies wholly outside the panel, "
+                + "where the outlines are cut away · U: off", driver.onEdt(() -> window().status().messageText()));
+    }
+
     @Test
     void aRightDragTurnsTheSceneAndTheResetKeyRestoresItBitForBit() throws Exception {
         open();
