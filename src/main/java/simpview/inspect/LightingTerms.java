@@ -26,7 +26,7 @@ final class LightingTerms {
         return explain(state, point, normal, "N_interpolated", kd, kdFrom, terms);
     }
 
-    /** The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed"). */
+    /** The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed", "N_face", "N_vertex"). */
     static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
             Terms terms) {
         return explain(state, point, normal, normalName, kd, null, terms);

@@ -75,10 +75,12 @@ final class LitExplainer implements PixelWatch.Explainer {
                 terms.put("shading", "flat");
                 double[] once = watch.litOnce();
                 if (once != null) {
-                    terms.put("lit_at", "the polygon's centroid, once, with the mean of its vertices' kd and the sum "
-                            + "of their own unit normals (the face normal when some vertex has none): SPEC Part 2");
+                    boolean face = faceNormal(watch, once);
+                    terms.put("lit_at", "the polygon's centroid, once, with the mean of its vertices' kd and "
+                            + (face ? "its face normal (p2 - p1) x (p3 - p1), made unit, as some vertex has no "
+                            + "normal of its own" : "the sum of its vertices' own unit normals") + ": SPEC Part 2");
                     double[] sum = LightingTerms.explain(state, new double[] {once[0], once[1], once[2]},
-                            new double[] {once[3], once[4], once[5]}, "N_summed",
+                            new double[] {once[3], once[4], once[5]}, face ? "N_face" : "N_summed",
                             new double[] {once[6], once[7], once[8]}, terms);
                     terms.put("clamped", clamp(sum));
                 }
@@ -336,6 +338,26 @@ final class LitExplainer implements PixelWatch.Explainer {
             rows[i] = java.util.Arrays.copyOfRange(out, i * stride + 3, i * stride + 3 + m);
         }
         return rows;
+    }
+
+    /**
+     * Whether a flat polygon was lit with its face normal rather than the sum
+     * of its vertices' own normals: the drawing gives the face normal to every
+     * vertex without a normal of its own, and lights with it when there is
+     * one such vertex, so the normal it lit with is then some vertex's, to
+     * the bit (a sum of unit normals equals one of them only when the others
+     * cancel).
+     */
+    private static boolean faceNormal(PixelWatch watch, double[] once) {
+        double[] p = watch.unclippedVertices();
+        int ps = watch.unclippedStride();
+        for (int k = 0; k < watch.unclippedCount() && ps >= 9; k++) {
+            int at = k * ps;
+            if (p[at + 6] == once[3] && p[at + 7] == once[4] && p[at + 8] == once[5]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether some vertex of the polygon before clipping was outside the view. */

@@ -207,9 +207,39 @@ class LightingExplanationTest {
         // worked out term by term where it was lit: at the centroid, with the face normal and kd
         assertArrayEquals(centroid, t.vector("P"), EPS);
         assertArrayEquals(unit(faceNormal()), t.vector("N"), EPS);
+        assertArrayEquals(unit(faceNormal()), t.vector("N_face"), EPS, "a polygon of simp has no normals of its own");
+        assertTrue(t.get("lit_at").toString().contains("its face normal"), t.get("lit_at").toString());
         assertArrayEquals(KD, t.vector("kd"), EPS);
         assertArrayEquals(light(centroid, unit(faceNormal())), t.vector("sum"), EPS, "unclamped");
         assertArrayEquals(expected, t.vector("clamped"), EPS);
+    }
+
+    /**
+     * A flat face whose vertices all have their own normals is lit with
+     * their sum: (0, 0, 1) twice and (0, 0.6, 0.8) make (0, 0.6, 2.8), named
+     * N_summed; one vertex without its own normal gives the face normal,
+     * N_face, (0, 0, 1) for this face square to the eye.
+     */
+    @Test
+    void flatNamesTheNormalItWasLitWith() throws Exception {
+        Files.writeString(dir.resolve("own.obj"), "v -5 -5 0\nv 5 -5 0\nv 0 5 0\nvn 0 0 1\nvn 0 0.6 0.8\n"
+                + "f 1//1 2//1 3//2\n");
+        Files.writeString(dir.resolve("some.obj"), "v -5 -5 0\nv 5 -5 0\nv 0 5 0\nvn 0 0.6 0.8\n"
+                + "f 1 2 3//1\n");
+        for (String model : new String[] {"own", "some"}) {
+            Path file = dir.resolve(model + ".simp");
+            Files.writeString(file, "camera -1 -1 1 1 -1 -100\nflat\n{\ntranslate 0 0 -20\nobj \"" + model
+                    + "\"\n}\n");
+            Terms t = new PixelInspector().inspect(InspectedScene.of(file), 325, 325).explanation();
+            if (model.equals("own")) {
+                assertArrayEquals(new double[] {0, 0.6, 2.8}, t.vector("N_summed"), EPS);
+                assertEquals(null, t.get("N_face"));
+                assertTrue(t.get("lit_at").toString().contains("the sum of its vertices' own unit normals"));
+            } else {
+                assertArrayEquals(new double[] {0, 0, 1}, t.vector("N_face"), EPS);
+                assertEquals(null, t.get("N_summed"));
+            }
+        }
     }
 
     /** A flat polygon's colour is told as the polygon's own, to the bit, at a pixel where its depth runs. */
