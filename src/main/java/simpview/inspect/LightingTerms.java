@@ -46,6 +46,13 @@ final class LightingTerms {
             terms.put("kd_from", kdFrom);
         }
         terms.put("V", v);
+        double nv = dot(n, v);
+        if (nv < 0) {
+            terms.put("N_dot_V", nv);
+            terms.put("facing", "away from the eye (N . V < 0): the eye sees the surface's back, and a light on the "
+                    + "eye's side of it is behind it (a face normal faces away where the vertices run clockwise on "
+                    + "the panel)");
+        }
         terms.put("ks", state.ks());
         terms.put("p", state.p());
         double[] ia = {state.ambientR(), state.ambientG(), state.ambientB()};

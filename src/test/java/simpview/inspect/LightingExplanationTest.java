@@ -242,6 +242,32 @@ class LightingExplanationTest {
         }
     }
 
+    /**
+     * A back face says so: the triangle (-3, -3, -8) (0, 3, -8) (3, -3, -8)
+     * runs clockwise on the panel, its face normal (0, 0, -1) points away
+     * from the eye; lit at its centroid (0, -1, -8), V = (0, 1, 8) / sqrt(65),
+     * so N . V = -8 / sqrt(65), and the light at the eye is behind it. The
+     * same triangle the other way round faces the eye and says nothing.
+     */
+    @Test
+    void aBackFaceSaysItFacesAway() throws Exception {
+        String[] triangles = {"(-3, -3, -8) (0, 3, -8) (3, -3, -8)", "(-3, -3, -8) (3, -3, -8) (0, 3, -8)"};
+        for (int k = 0; k < 2; k++) {
+            Path file = dir.resolve("facing" + k + ".simp");
+            Files.writeString(file, "camera -1 -1 1 1 -1 -100\nambient 0.3 0.3 0.3\nlight 1 1 1 1 0\nflat\npolygon "
+                    + triangles[k] + "\n");
+            Terms t = new PixelInspector().inspect(InspectedScene.of(file), 325, 300).explanation();
+            if (k == 0) {
+                assertEquals(-8 / Math.sqrt(65), t.number("N_dot_V"), EPS);
+                assertTrue(t.get("facing").toString().startsWith("away from the eye"), t.get("facing").toString());
+                assertEquals(true, t.list("lights").get(0).get("behind_surface"));
+            } else {
+                assertEquals(null, t.get("N_dot_V"));
+                assertEquals(null, t.get("facing"));
+            }
+        }
+    }
+
     /** A flat polygon's colour is told as the polygon's own, to the bit, at a pixel where its depth runs. */
     @Test
     void flatCentroidColourIsThePolygonsToTheBit() throws Exception {
