@@ -550,7 +550,10 @@ public final class CompareBatch {
             String name = picture.getFileName().toString();
             Optional<String> scene = SubmissionNames.sceneName(name, scenes);
             OptionalInt page = SubmissionNames.pageNumber(name);
-            String key = scene.isPresent() ? "scene " + scene.get() : page.isPresent() ? "page " + page.getAsInt()
+            // a picture named like no page by its number (p1.png, Page-one 1.png) is taken for that page: two
+            // students, one of whom named every page so, were one student's parts, the other's pages never asked
+            OptionalInt number = page.isPresent() ? page : SubmissionNames.numberIn(name);
+            String key = scene.isPresent() ? "scene " + scene.get() : number.isPresent() ? "page " + number.getAsInt()
                     : SubmissionNames.stem(name).toLowerCase(Locale.ROOT);
             folders.computeIfAbsent(key, k -> new HashSet<>()).add(picture.getName(level).toString());
         }
@@ -568,11 +571,12 @@ public final class CompareBatch {
         List<Path> pictures;
         FolderListing listing;
         List<WithoutPictures> withoutPictures;
+        List<String> besideReports = new ArrayList<>();
         try {
             List<Path> written = teachersFolders(dir, outputs);
             listing = FolderListing.of(dir);
             pictures = handedIn(dir, listing, written);
-            withoutPictures = withoutPictures(dir, pictures, listing, written, outputs);
+            withoutPictures = withoutPictures(dir, pictures, listing, written, outputs, besideReports);
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
@@ -589,6 +593,10 @@ public final class CompareBatch {
             }
         } catch (IOException e) {
             // the folder was listed just now; a rubric's folder that cannot be told is no note
+        }
+        if (!besideReports.isEmpty()) {
+            err.println(says + "taken for the teacher's, not a student's, and not graded: " + String.join("; ",
+                    besideReports) + "; a student who hands in a zip has it in a folder of their own");
         }
         if (!listing.outsideNote(dir).isEmpty()) {
             err.println(says + listing.outsideNote(dir));
@@ -696,7 +704,8 @@ public final class CompareBatch {
             IntStream.rangeClosed(1, Assignment1.COUNT).forEach(firstPages::add);
         }
         firstPages.addAll(firstAssignment.keySet());
-        Map<String, List<Wanted.Misnamed>> misnamed = misnamed(dir, pictures, matches, all, firstPages);
+        Map<String, List<Wanted.Misnamed>> misnamed = misnamed(dir, pictures, matches, all, firstPages,
+                oneStudent ? relative -> "" : JUnitResults::submission);
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             String label = target.label(own.context());
@@ -723,11 +732,12 @@ public final class CompareBatch {
      * why: a name like no page with a number of a page asked for ("pag3.png is named like no page (its number, 3, is
      * not after the word "page"): did you mean page3.png?"), a name a slip from a scene's ("pagC.png is named like
      * no scene: did you mean pageC.png?"), and a name of a page there is not ("page9.png is named for page 9, and
-     * there is no page 9 (the pages are 1 to 8)"), which may have been meant as any page its submission lacks. A
-     * MISSING row of the submission tells of them.
+     * there is no page 9 (the pages are 1 to 8): was it meant as page 3 or 5, which bob lacks?"), told once, on the
+     * first page its submission lacks ({@code submissionOf} names a picture's submission). A MISSING row of the
+     * submission tells of them.
      */
     private Map<String, List<Wanted.Misnamed>> misnamed(Path dir, List<Path> pictures, List<Match> matches,
-            Set<CompareTarget> asked, Set<Integer> firstPages) {
+            Set<CompareTarget> asked, Set<Integer> firstPages, Function<String, String> submissionOf) {
         Map<String, List<Wanted.Misnamed>> misnamed = new HashMap<>();
         List<CompareTarget> pages = asked.stream().filter(CompareTarget::isPage).toList();
         List<CompareTarget> scenes = asked.stream().filter(t -> !t.isPage()).toList();
@@ -742,14 +752,38 @@ public final class CompareBatch {
             BiConsumerOfLabel add = (label, why) -> misnamed.computeIfAbsent(label, l -> new ArrayList<>())
                     .add(new Wanted.Misnamed(relative, relative + " " + why));
             if (page.isPresent()) {
+                // named for a page there is not: said once, on the first page its submission lacks, naming them all
                 int number = page.getAsInt();
+                String submission = submissionOf.apply(relative);
+                Set<String> its = new HashSet<>();
+                for (int j = 0; j < pictures.size(); j++) {
+                    if (submissionOf.apply(dir.relativize(pictures.get(j)).toString()).equals(submission)) {
+                        its.add(matches.get(j).target() != null ? matches.get(j).target().label(own.context())
+                                : matches.get(j).firstAssignmentPage() > 0
+                                        ? firstAssignmentLabel(matches.get(j).firstAssignmentPage()) : "");
+                    }
+                }
+                String whose = submission.isEmpty() || submission.equals(JUnitResults.TOP) ? "the submission"
+                        : submission;
                 if (number > Assignment2.COUNT) {
-                    pages.forEach(t -> add.to(t.label(own.context()), "is named for page " + number + ", and there is "
-                            + "no page " + number + " (the pages are 1 to " + Assignment2.COUNT + ")"));
+                    List<CompareTarget> lacks = pages.stream().filter(t -> !its.contains(t.label(own.context())))
+                            .sorted(Comparator.comparingInt(CompareTarget::page)).toList();
+                    if (!lacks.isEmpty()) {
+                        add.to(lacks.get(0).label(own.context()), "is named for page " + number + ", and there is no "
+                                + "page " + number + " (the pages are 1 to " + Assignment2.COUNT + "): was it meant as "
+                                + UsageWords.joined(lacks.stream().map(t -> "page " + t.page()).toList(), "or")
+                                + ", which " + whose + " lacks?");
+                    }
                 }
                 if (number > Assignment1.COUNT && (pages.isEmpty() || namesFirstAssignment(relative))) {
-                    firstPages.forEach(p -> add.to(firstAssignmentLabel(p), "is named for page " + number + ", and "
-                            + "the first assignment has pages 1 to " + Assignment1.COUNT));
+                    List<Integer> lacks = firstPages.stream().filter(p -> !its.contains(firstAssignmentLabel(p)))
+                            .toList();
+                    if (!lacks.isEmpty()) {
+                        add.to(firstAssignmentLabel(lacks.get(0)), "is named for page " + number + ", and the first "
+                                + "assignment has pages 1 to " + Assignment1.COUNT + ": was it meant as "
+                                + UsageWords.joined(lacks.stream().map(p -> "A1 page " + p).toList(), "or")
+                                + ", which " + whose + " lacks?");
+                    }
                 }
                 continue;
             }
@@ -798,10 +832,12 @@ public final class CompareBatch {
      * own results left out): the whole folder when it holds none; and of a class's folder, one whose pictures are
      * in first-level folders (at least two of them), each first-level folder that holds none, so that a student who
      * handed in a zip is not left out of the results but lacks every page. A student's own folder ({@code check}),
-     * or one whose pictures are at its top beside a src/ folder, is one submission: its other folders are none.
+     * or one whose pictures are at its top beside a src/ folder, is one submission: its other folders are none. A
+     * folder of reports (this run's, or one holding an earlier run's compare.csv) is none whatever it holds: the zips
+     * and documents in it, the teacher's (class-backup.zip), are added to {@code teachers}.
      */
     private static List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, FolderListing listing,
-            List<Path> written, Outputs outputs) throws IOException {
+            List<Path> written, Outputs outputs, List<String> teachers) throws IOException {
         Set<Path> results = outputs.reports().stream().map(r -> r.file().toAbsolutePath().normalize())
                 .collect(Collectors.toSet());
         List<String> others = listing.others().stream()
@@ -849,8 +885,20 @@ public final class CompareBatch {
             // a page simpview does not read is (bob.zip, page1.tif): an empty build/, a report/ with a PDF or an
             // assets/ of textures beside output/ is one student's submission (a Gradescope upload), not a class of
             // students lacking every page
+            // A folder of reports is the teacher's whatever else it holds: a class-backup.zip kept beside the
+            // reports (--out-dir class/output) is no student who handed in a zip
+            // nor is one that holds nothing but zips of the class's own students' folders (backup/class-backup.zip)
+            boolean backups = !holds.isEmpty() && holds.stream().allMatch(f -> FolderListing.studentsInZip(
+                    dir.resolve(f), withPictures).size() > 1);
+            if (reports || backups) {
+                holds.stream().filter(FolderListing::mayHoldPictures).forEach(f -> teachers.add(dir.resolve(f) + (reports
+                        ? " (in a folder of reports)" : " (a zip of the class's own folders "
+                        + UsageWords.firstThree(List.copyOf(FolderListing.studentsInZip(dir.resolve(f), withPictures)))
+                        + ": a copy of the class)")));
+                continue;
+            }
             boolean student = oneFolderOnly ? !holds.isEmpty() && holds.stream().allMatch(FolderListing::handedInInstead)
-                    : holds.stream().anyMatch(FolderListing::mayHoldPictures) || holds.isEmpty() && !reports;
+                    : holds.stream().anyMatch(FolderListing::mayHoldPictures) || holds.isEmpty();
             if (student) {
                 without.add(new WithoutPictures(folder, holds));
             }

@@ -13,8 +13,14 @@ import java.util.EnumSet;
 import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Locale;
+import java.util.Enumeration;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipException;
+import java.util.zip.ZipFile;
 import simpview.compare.Count;
 import simpview.compare.SubmissionNames;
 import simpview.compare.WithoutPictures;
@@ -70,6 +76,34 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
         Path name = path.getFileName();
         return endsLike(path, WithoutPictures.ARCHIVES) || endsLike(path, UNREAD_ENDINGS) && !endsLike(path,
                 List.of(".pdf")) && name != null && SubmissionNames.pageNumber(name.toString()).isPresent();
+    }
+
+    /**
+     * The folders of {@code students} that a zip holds pictures in, at any depth of its entries' names, whichever
+     * separator they were written with (class\alice\page1.png from Windows, class/alice/page1.png): a zip holding
+     * two or more is a copy of the class (the teacher's class-backup.zip), not one student's pages. Empty for a file
+     * that is no zip or cannot be read.
+     */
+    static Set<String> studentsInZip(Path zip, Set<String> students) {
+        Set<String> found = new TreeSet<>();
+        try (ZipFile file = new ZipFile(zip.toFile())) {
+            for (Enumeration<? extends ZipEntry> entries = file.entries(); entries.hasMoreElements();) {
+                String[] names = entries.nextElement().getName().split("[/\\\\]");
+                String last = names[names.length - 1].toLowerCase(Locale.ROOT);
+                if (names.length > 1 && PICTURE_ENDINGS.stream().anyMatch(last::endsWith)) {
+                    for (int i = 0; i < names.length - 1; i++) {
+                        if (students.contains(names[i])) {
+                            found.add(names[i]);
+                        }
+                    }
+                }
+            }
+        } catch (ZipException e) {
+            return Set.of(); // no zip: what it holds is said as for any file
+        } catch (IOException e) {
+            return Set.of(); // unreadable: no class's copy that can be told
+        }
+        return found;
     }
 
     /** The folder a Mac's zip puts its resource forks in. */

@@ -525,7 +525,8 @@ public class CompareBatchTest {
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
                 "--junit", out.resolve("results.xml").toString(), "--html", out.toString());
         String told = "bob/pag2.png is named like no page (its number, 2, is not after the word \"page\"): did you "
-                + "mean page2.png?; bob/page9.png is named for page 9, and there is no page 9 (the pages are 1 to 8)";
+                + "mean page2.png?; bob/page9.png is named for page 9, and there is no page 9 (the pages are 1 to 8): was it meant "
+                + "as page 2, which bob lacks?";
         assertTrue(run.out().contains("| bob/ | 2 (seed 361) |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 2 "
                 + "(seed 361) in bob was found; " + told + " |"), run.out());
         assertTrue(Files.readString(out.resolve("results.xml")).contains(told.replace("\"", "&quot;"))
