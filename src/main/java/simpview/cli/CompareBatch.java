@@ -7,6 +7,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -209,6 +210,12 @@ public final class CompareBatch {
      * ({@link RubricRule#emptyShare}), by its label: measured once, at its first picture that fails.
      */
     private final Map<String, Double> emptyShares = new java.util.concurrent.ConcurrentHashMap<>();
+    /**
+     * The folder a class was zipped in on Windows and unzipped flat, as its files' names begin ("class\\", from
+     * class\alice\page1.png), when {@link #classFolder} found the class in it; "" otherwise. Its pictures are
+     * named without it, as those of a class unzipped into folders are named from the class's folder.
+     */
+    private String flatClass = "";
 
     /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
@@ -287,7 +294,7 @@ public final class CompareBatch {
             }
             // Only a folder on its way says so: one that holds no first-assignment page (A1-Smith/page1.png, a
             // student's folder) is the page its number names.
-            if (PanelGridComparison.holds(dir.resolve(relative), firstAssignmentPanels())) {
+            if (PanelGridComparison.holds(dir.resolve(flatClass + relative), firstAssignmentPanels())) {
                 firstAssignmentUnasked.add(relative);
                 return new Match(null, "a page of the first assignment by its folder's name and its four panels, and "
                         + "--pages names the eight pages (" + FIRST_ASSIGNMENT_GRADED + ")");
@@ -457,8 +464,17 @@ public final class CompareBatch {
         List<Path> alternates;
         try {
             alternates = alternatesInside(dir);
-            pictures = handedIn(dir, FolderListing.of(dir), teachersFolders(dir, outputs)).stream()
+            List<Path> names = handedIn(dir, FolderListing.of(dir), teachersFolders(dir, outputs)).stream()
                     .map(dir::relativize).toList();
+            // a Windows zip's names unzipped flat: class\alice\page1.png is in class/alice, as unzipped into folders
+            List<String> refused = names.stream().filter(p -> asFolders(p).isEmpty()).map(Path::toString).toList();
+            if (!refused.isEmpty()) {
+                err.println(says + UsageWords.firstThree(refused.stream().map(r -> dir.resolve(r).toString())
+                        .toList()) + (refused.size() == 1 ? ": its name leads" : ": their names lead") + " out of "
+                        + dir + " ('..', a drive such as C: or a '\\' at the start) if its backslashes are read as "
+                        + "folders, as a Windows zip writes them: they are not, and it is in no student's folder");
+            }
+            pictures = names.stream().map(CompareBatch::asFolders).flatMap(Optional::stream).toList();
         } catch (IOException | UncheckedIOException e) {
             return dir; // said when the batch lists it
         }
@@ -478,34 +494,92 @@ public final class CompareBatch {
             if (folders.size() > 1) {
                 Optional<String> theClass = theClassBesideOthers(pictures, level, scenes);
                 if (theClass.isPresent()) {
+                    Path graded = gradedIn(dir, inside.resolve(theClass.get()));
                     Path here = dir.resolve(inside);
-                    Path graded = here.resolve(theClass.get());
                     List<Path> in = pictures.stream().filter(p -> p.getName(level).toString().equals(theClass.get()))
                             .toList();
                     List<String> others = folders.stream().filter(f -> !f.equals(theClass.get()))
                             .map(f -> here.resolve(f).toString()).toList();
-                    err.println(says + "the pictures in " + dir + " are the students' of one class, in " + graded
-                            + ": its folders (" + UsageWords.firstThree(studentsOf(in, level + 1)) + ") are graded as "
-                            + "the submissions, as --dir " + graded + " grades them; "
+                    err.println(says + "the pictures in " + dir + " are the students' of one class, in "
+                            + shown(graded) + ": its folders (" + UsageWords.firstThree(studentsOf(in, level + 1))
+                            + ") are graded as the submissions" + asDir(graded) + "; "
                             + Count.of(pictures.size() - in.size(), "picture") + " beside it, in "
                             + UsageWords.joined(others, "and") + ", " + (pictures.size() - in.size() == 1 ? "is" : "are")
                             + " taken for the teacher's (reference pictures: no student's folder of a class) and not "
                             + "graded. Were they a student's, grade that folder with --dir of its own, or move it into "
-                            + graded);
+                            + shown(graded));
                     return graded;
                 }
                 if (depth == 0 || !someNameInTwo(pictures, level, scenes)) {
                     return dir; // a class's folder as given, or one student's pictures foldered by part
                 }
-                Path graded = dir.resolve(inside);
-                err.println(says + handed + " is in " + graded + ": its folders ("
+                Path graded = gradedIn(dir, inside);
+                err.println(says + handed + " is in " + shown(graded) + ": its folders ("
                         + UsageWords.firstThree(studentsOf(pictures, level))
-                        + ") are graded as the submissions, as --dir " + graded + " grades them");
+                        + ") are graded as the submissions" + asDir(graded));
                 return graded;
             }
             inside = inside.resolve(folders.iterator().next());
         }
         return dir;
+    }
+
+    /**
+     * The folder {@code inside} names under {@code dir}, as far as it is folders on disk; the rest of it, folders
+     * only in its files' names (a Windows zip unzipped flat: class\alice\page1.png), becomes {@link #flatClass}.
+     */
+    private Path gradedIn(Path dir, Path inside) {
+        Path real = dir;
+        int at = 0;
+        while (at < inside.getNameCount() && Files.isDirectory(real.resolve(inside.getName(at)))) {
+            real = real.resolve(inside.getName(at));
+            at++;
+        }
+        StringBuilder flat = new StringBuilder();
+        for (int k = at; k < inside.getNameCount(); k++) {
+            flat.append(inside.getName(k)).append('\\');
+        }
+        flatClass = flat.toString();
+        return real;
+    }
+
+    /** The class's folder {@code graded} as a teacher finds it: with the folder in its files' names, if any. */
+    private String shown(Path graded) {
+        return flatClass.isEmpty() ? graded.toString() : graded.resolve(flatClass).toString() + " (folders in its "
+                + "files' names, as a Windows zip writes them, unzipped flat)";
+    }
+
+    /** ", as --dir F grades them", for a class's folder on disk; nothing for one in its files' names alone. */
+    private String asDir(Path graded) {
+        return flatClass.isEmpty() ? ", as --dir " + graded + " grades them" : "";
+    }
+
+    /**
+     * A picture's name in the folder graded: its path under {@code dir}, without the folder of a class unzipped flat
+     * ({@link #flatClass}): alice\page1.png for class\alice\page1.png.
+     */
+    private String name(Path dir, Path picture) {
+        String relative = dir.relativize(picture).toString();
+        return relative.startsWith(flatClass) ? relative.substring(flatClass.length()) : relative;
+    }
+
+    /**
+     * A path under a folder as the folders in its names say, backslashes (a Windows zip's, unzipped flat) read as
+     * the folders they stand for: class\alice\page1.png is class/alice/page1.png. Empty when a name would lead
+     * out of the folder or start at a root or drive ("..", "\\x", "C:"): such a name is refused as folders.
+     */
+    static Optional<Path> asFolders(Path relative) {
+        String path = relative.toString();
+        if (path.indexOf('\\') < 0) {
+            return Optional.of(relative);
+        }
+        String[] names = path.split("[/\\\\]", -1);
+        for (String name : names) {
+            if (name.isEmpty() || name.equals(".") || name.equals("..") || name.matches("[A-Za-z]:")) {
+                return Optional.empty();
+            }
+        }
+        return Optional.of(Path.of(names[0], Arrays.copyOfRange(names, 1, names.length)));
     }
 
     /** The folders at {@code level} of the pictures' paths, in natural order: the students of a class's folder. */
@@ -575,7 +649,15 @@ public final class CompareBatch {
         try {
             List<Path> written = teachersFolders(dir, outputs);
             listing = FolderListing.of(dir);
-            pictures = handedIn(dir, listing, written);
+            List<Path> all = handedIn(dir, listing, written);
+            List<Path> inClass = all.stream().filter(p -> dir.relativize(p).toString().startsWith(flatClass))
+                    .toList();
+            pictures = inClass;
+            if (inClass.size() < all.size()) {
+                err.println(says + UsageWords.firstThree(all.stream().filter(p -> !inClass.contains(p))
+                        .map(Path::toString).toList()) + ": beside the class in " + shown(dir)
+                        + ", not in it: not graded");
+            }
             withoutPictures = withoutPictures(dir, pictures, listing, written, outputs, besideReports);
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
@@ -602,7 +684,7 @@ public final class CompareBatch {
             err.println(says + listing.outsideNote(dir));
         }
         List<String> studentsWithPictures = pictures.stream()
-                .map(p -> JUnitResults.submission(dir.relativize(p).toString())).distinct().toList();
+                .map(p -> JUnitResults.submission(name(dir, p))).distinct().toList();
         List<String> studentsWithout = withoutPictures.stream().map(WithoutPictures::submission)
                 .filter(w -> !w.isEmpty()).toList();
         if (studentsWithPictures.size() == 1 && !studentsWithout.isEmpty()) {
@@ -613,7 +695,7 @@ public final class CompareBatch {
                     "student") + " of the class who handed in no picture (were " + dir + " one student's folder, "
                     + "grade --dir " + dir.resolve(studentsWithPictures.get(0)) + ")");
         }
-        DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> dir.relativize(p).toString()).toList());
+        DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> name(dir, p)).toList());
         claimOutputs(dir, pictures, outputs, diffNames);
         String unwritable = outputs.problem();
         if (unwritable != null) {
@@ -623,7 +705,7 @@ public final class CompareBatch {
         long start = System.nanoTime();
         List<Match> matches = new ArrayList<>();
         for (Path picture : pictures) {
-            matches.add(matcher.apply(dir.relativize(picture).toString()));
+            matches.add(matcher.apply(name(dir, picture)));
         }
         Optional<String> theOneFolder = outputs.student() || matches.stream().anyMatch(Match::alone)
                 ? Optional.empty() : theOneFolder(dir, pictures);
@@ -656,19 +738,19 @@ public final class CompareBatch {
                 .collect(Collectors.toSet());
         List<Match> matchedAsNamed = new ArrayList<>();
         for (int i = 0; i < pictures.size(); i++) {
-            if (!firstAssignmentPictures.contains(dir.relativize(pictures.get(i)).toString())) {
+            if (!firstAssignmentPictures.contains(name(dir, pictures.get(i)))) {
                 matchedAsNamed.add(matches.get(i));
             }
         }
         List<Match> unreadMatches = listing.unreadable().stream()
-                .map(file -> matcher.apply(dir.relativize(file).toString())).toList();
+                .map(file -> matcher.apply(name(dir, file))).toList();
         boolean firstAssignmentFolder = pagesIfHandedIn && firstAssignmentOnly(rows)
                 && unreadMatches.stream().allMatch(m -> m.target() == null
                         || m.target().isPage() && m.target().page() <= Assignment1.COUNT);
         if (firstAssignmentFolder) {
             // as --assignment 1 checks it: page2.webp is named like the first assignment's page 2
             unreadMatches = listing.unreadable().stream()
-                    .map(file -> firstAssignmentMatch(fileName(dir.relativize(file).toString()), null, null)).toList();
+                    .map(file -> firstAssignmentMatch(fileName(name(dir, file)), null, null)).toList();
             err.println(says + "every picture in " + dir + " is a page of the first assignment, so its pages 1 to "
                     + Assignment1.COUNT + " are asked for, as --assignment 1 asks for them, and not the eight pages "
                     + "(--pages RANGE asks for those)");
@@ -687,11 +769,11 @@ public final class CompareBatch {
             CompareTarget target = matches.get(i).target();
             if (target != null) {
                 handedInBy.computeIfAbsent(target, t -> new HashSet<>())
-                        .add(JUnitResults.submission(dir.relativize(pictures.get(i)).toString()));
+                        .add(JUnitResults.submission(name(dir, pictures.get(i))));
             }
         }
         // the submissions: those with pictures, and a class's folders without (each is asked what the others are)
-        long submissions = pictures.stream().map(p -> JUnitResults.submission(dir.relativize(p).toString()))
+        long submissions = pictures.stream().map(p -> JUnitResults.submission(name(dir, p)))
                 .distinct().count() + withoutPictures.stream().filter(w -> !w.submission().isEmpty()).count();
         for (Match match : matchedAsNamed) {
             CompareTarget target = match.target();
@@ -746,7 +828,7 @@ public final class CompareBatch {
             if (match.target() != null || match.firstAssignmentPage() > 0 || match.skipped() == null) {
                 continue;
             }
-            String relative = dir.relativize(pictures.get(i)).toString();
+            String relative = name(dir, pictures.get(i));
             String name = fileName(relative);
             OptionalInt page = SubmissionNames.pageNumber(name);
             BiConsumerOfLabel add = (label, why) -> misnamed.computeIfAbsent(label, l -> new ArrayList<>())
@@ -757,14 +839,14 @@ public final class CompareBatch {
                 String submission = submissionOf.apply(relative);
                 Set<String> its = new HashSet<>();
                 for (int j = 0; j < pictures.size(); j++) {
-                    if (submissionOf.apply(dir.relativize(pictures.get(j)).toString()).equals(submission)) {
+                    if (submissionOf.apply(name(dir, pictures.get(j))).equals(submission)) {
                         its.add(matches.get(j).target() != null ? matches.get(j).target().label(own.context())
                                 : matches.get(j).firstAssignmentPage() > 0
                                         ? firstAssignmentLabel(matches.get(j).firstAssignmentPage()) : "");
                     }
                 }
-                String whose = submission.isEmpty() || submission.equals(JUnitResults.TOP) ? "the submission"
-                        : submission;
+                String whose = submission.isEmpty() ? "the folder" : submission.equals(JUnitResults.TOP)
+                        ? "the top of the folder" : submission;
                 if (number > Assignment2.COUNT) {
                     List<CompareTarget> lacks = pages.stream().filter(t -> !its.contains(t.label(own.context())))
                             .sorted(Comparator.comparingInt(CompareTarget::page)).toList();
@@ -785,9 +867,28 @@ public final class CompareBatch {
                                 + ", which " + whose + " lacks?");
                     }
                 }
+                if (pages.isEmpty() && number <= 'Z' - 'A' + 1) {
+                    // page1.png where the scenes are lettered (pageA to pageI): the scene of the number's letter
+                    char letter = (char) ('A' + number - 1);
+                    SubmissionNames.sceneOfLetter(letter, scenes.stream().map(CompareBatch::key).toList())
+                            .flatMap(k -> scenes.stream().filter(t -> key(t).equals(k)).findFirst())
+                            .ifPresent(t -> add.to(t.label(own.context()), "is named for page " + number + ", and the "
+                                    + "scenes here are lettered: did you mean " + key(t) + ".png (page " + letter
+                                    + ")?"));
+                }
                 continue;
             }
             OptionalInt number = SubmissionNames.numberIn(name);
+            Optional<String> nearest = SubmissionNames.nearestScene(name, scenes.stream().map(CompareBatch::key)
+                    .toList());
+            Optional<Character> letter = SubmissionNames.pageLetter(name);
+            if (nearest.isEmpty() && number.isEmpty() && letter.isPresent() && letter.get() - 'A' + 1 <= Assignment2.COUNT) {
+                // pageA.png where the pages are numbered: the page of the letter's number
+                int lettered = letter.get() - 'A' + 1;
+                pages.stream().filter(t -> t.page() == lettered).forEach(t -> add.to(t.label(own.context()),
+                        "is named for page " + letter.get() + ", and the pages are numbered 1 to " + Assignment2.COUNT
+                                + ": did you mean page" + lettered + ".png?"));
+            }
             String noPage = "is named like no page (its number, " + (number.isPresent() ? number.getAsInt() : 0)
                     + ", is not after the word \"page\"): did you mean ";
             if (number.isPresent()) {
@@ -797,11 +898,10 @@ public final class CompareBatch {
                     add.to(firstAssignmentLabel(number.getAsInt()), noPage + "a1-page" + number.getAsInt() + ".png?");
                 }
             }
-            for (CompareTarget scene : scenes) {
-                if (SubmissionNames.nearlyNames(name, key(scene))) {
-                    add.to(scene.label(own.context()), "is named like no scene: did you mean " + key(scene) + ".png?");
-                }
-            }
+            // the one scene it is nearest, never each scene two letters from it (pageJ.png is as near pageA as pageI)
+            nearest.flatMap(k -> scenes.stream().filter(t -> key(t).equals(k)).findFirst())
+                    .ifPresent(t -> add.to(t.label(own.context()), "is named like no scene: did you mean " + key(t)
+                            + ".png?"));
         }
         return misnamed;
     }
@@ -820,8 +920,8 @@ public final class CompareBatch {
      * pictures at its top is one submission as it is. The folders are the submissions the table, JUnit and the web
      * report name: renders\page8.png (unzipped from a Windows zip) is in renders.
      */
-    private static Optional<String> theOneFolder(Path dir, List<Path> pictures) {
-        Set<String> submissions = pictures.stream().map(p -> JUnitResults.submission(dir.relativize(p).toString()))
+    private Optional<String> theOneFolder(Path dir, List<Path> pictures) {
+        Set<String> submissions = pictures.stream().map(p -> JUnitResults.submission(name(dir, p)))
                 .collect(Collectors.toCollection(TreeSet::new));
         return submissions.size() == 2 && submissions.remove(JUnitResults.TOP)
                 ? Optional.of(submissions.iterator().next()) : Optional.empty();
@@ -836,7 +936,7 @@ public final class CompareBatch {
      * folder of reports (this run's, or one holding an earlier run's compare.csv) is none whatever it holds: the zips
      * and documents in it, the teacher's (class-backup.zip), are added to {@code teachers}.
      */
-    private static List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, FolderListing listing,
+    private List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, FolderListing listing,
             List<Path> written, Outputs outputs, List<String> teachers) throws IOException {
         Set<Path> results = outputs.reports().stream().map(r -> r.file().toAbsolutePath().normalize())
                 .collect(Collectors.toSet());
@@ -844,14 +944,15 @@ public final class CompareBatch {
                 .filter(f -> !results.contains(f.toAbsolutePath().normalize()))
                 .map(dir::relativize)
                 .filter(p -> written.stream().noneMatch(p::startsWith) && !isOutputsTable(dir, p))
-                .map(Path::toString).toList();
+                .map(Path::toString).filter(f -> f.startsWith(flatClass)).map(f -> f.substring(flatClass.length()))
+                .toList();
         List<WithoutPictures> without = new ArrayList<>();
         if (pictures.isEmpty()) {
             without.add(new WithoutPictures("", others));
             return without;
         }
         // the first-level folders that hold pictures; alice\page1.png, from a Windows zip, is in alice
-        List<String> relatives = pictures.stream().map(p -> dir.relativize(p).toString()).toList();
+        List<String> relatives = pictures.stream().map(p -> name(dir, p)).toList();
         Set<String> withPictures = relatives.stream().filter(CompareBatch::inAFolder).map(JUnitResults::submission)
                 .collect(Collectors.toSet());
         // a class of which one student handed in pictures, the others a zip or page1.tif; or one student's folder of
@@ -866,8 +967,10 @@ public final class CompareBatch {
                 .filter(r -> r.startsWith(root) && root.relativize(r).getNameCount() > 1)
                 .map(r -> root.relativize(r).getName(0).toString()).collect(Collectors.toSet());
         Set<String> folders = new TreeSet<>(SceneList.NATURAL_ORDER);
-        try (Stream<Path> entries = Files.list(dir)) {
-            entries.filter(Files::isDirectory).forEach(p -> folders.add(p.getFileName().toString()));
+        if (flatClass.isEmpty()) { // a class unzipped flat has its folders in its files' names alone
+            try (Stream<Path> entries = Files.list(dir)) {
+                entries.filter(Files::isDirectory).forEach(p -> folders.add(p.getFileName().toString()));
+            }
         }
         // and the folders in the names of a Windows zip's files unzipped flat (carol\carol.zip)
         others.stream().filter(f -> Path.of(f).getNameCount() == 1 && inAFolder(f))
@@ -889,11 +992,11 @@ public final class CompareBatch {
             // reports (--out-dir class/output) is no student who handed in a zip
             // nor is one that holds nothing but zips of the class's own students' folders (backup/class-backup.zip)
             boolean backups = !holds.isEmpty() && holds.stream().allMatch(f -> FolderListing.studentsInZip(
-                    dir.resolve(f), withPictures).size() > 1);
+                    dir.resolve(flatClass + f), withPictures).size() > 1);
             if (reports || backups) {
-                holds.stream().filter(FolderListing::mayHoldPictures).forEach(f -> teachers.add(dir.resolve(f) + (reports
+                holds.stream().filter(FolderListing::mayHoldPictures).forEach(f -> teachers.add(dir.resolve(flatClass + f) + (reports
                         ? " (in a folder of reports)" : " (a zip of the class's own folders "
-                        + UsageWords.firstThree(List.copyOf(FolderListing.studentsInZip(dir.resolve(f), withPictures)))
+                        + UsageWords.firstThree(List.copyOf(FolderListing.studentsInZip(dir.resolve(flatClass + f), withPictures)))
                         + ": a copy of the class)")));
                 continue;
             }
@@ -944,11 +1047,11 @@ public final class CompareBatch {
     }
 
     /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
-    private static Set<String> picturesWhere(Path dir, List<Path> pictures, List<Match> matches,
+    private Set<String> picturesWhere(Path dir, List<Path> pictures, List<Match> matches,
             BiPredicate<String, Match> test) {
         Set<String> passing = new HashSet<>();
         for (int i = 0; i < pictures.size(); i++) {
-            String relative = dir.relativize(pictures.get(i)).toString();
+            String relative = name(dir, pictures.get(i));
             if (test.test(relative, matches.get(i))) {
                 passing.add(relative);
             }
@@ -999,7 +1102,7 @@ public final class CompareBatch {
         String tables = outputs.outDirOption();
         if (outDir != null && outputs.diffs() != DiffImages.NONE) {
             for (Path picture : pictures) {
-                String relative = dir.relativize(picture).toString();
+                String relative = name(dir, picture);
                 for (int panel = 0; panel <= A1Layout.PANELS; panel++) {
                     files.mayWrite(outDir.resolve(diffNames.of(relative, panel)), tables);
                 }
@@ -1171,7 +1274,7 @@ public final class CompareBatch {
                 Path picture = pictures.get(i);
                 Match match = matches.get(i);
                 rows.add(workers.submit(() -> {
-                    String relative = dir.relativize(picture).toString();
+                    String relative = name(dir, picture);
                     List<BatchRow> made;
                     Optional<String> notRead = linkOut.apply(picture);
                     if (notRead.isPresent() && match.firstAssignmentPage() > 0) {
@@ -1491,7 +1594,7 @@ public final class CompareBatch {
             String label = match.target() != null ? match.target().label(own.context())
                     : match.firstAssignmentPage() > 0 ? firstAssignmentLabel(match.firstAssignmentPage()) : null;
             if (label != null) {
-                named.computeIfAbsent(label, t -> new ArrayList<>()).add(dir.relativize(files.get(i)).toString());
+                named.computeIfAbsent(label, t -> new ArrayList<>()).add(name(dir, files.get(i)));
             }
         }
         return named;

@@ -199,6 +199,9 @@ public final class JUnitResults {
     public static String submission(String file) {
         String path = file.replace('\\', '/');
         int slash = path.indexOf('/');
-        return slash < 0 ? TOP : path.substring(0, slash);
+        String folder = slash < 0 ? "" : path.substring(0, slash);
+        // a Windows zip's name leading out of the folder (..\page1.png) or from a drive (C:\page1.png): no folder
+        boolean outside = folder.isEmpty() || folder.equals(".") || folder.equals("..") || folder.matches("[A-Za-z]:");
+        return outside ? TOP : folder;
     }
 }

@@ -1,7 +1,9 @@
 package simpview.compare;
 
 import java.text.Normalizer;
+import java.util.ArrayList;
 import java.util.Collection;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalInt;
@@ -25,6 +27,13 @@ public final class SubmissionNames {
     private static final Pattern ZERO_PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0+(?![0-9])");
     private static final Pattern PAGE = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*0*([1-9][0-9]*)(?![0-9])");
     private static final Pattern NUMBER = Pattern.compile("[0-9]+");
+    /** The counter a second copy of a file gets ("page1 (1).png", "Screenshot (3).png"): no page's number. */
+    private static final Pattern COPY_COUNTER = Pattern.compile("\\(\\s*[0-9]+\\s*\\)");
+    /** The names screenshot tools save under ("Screenshot (3)", "Screen Shot 2024-03-05 at 1.02.03 PM"). */
+    private static final Pattern SCREENSHOT = Pattern.compile("(?i)^\\s*(screen[\\s_-]*shot|capture|bildschirmfoto"
+            + "|snapshot|untitled)");
+    /** A letter after the word page, as the lit scenes are named: pageC, page_C, page-c, pageJ. */
+    private static final Pattern PAGE_LETTER = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*([a-z])(?![a-z])");
 
     /** The full-width forms of '!' to '~' (Ｐ, ａ, ８, ＿), U+FF01 to U+FF5E, and the full-width space. */
     private static final int FULL_WIDTH_FIRST = 0xFF01;
@@ -108,10 +117,15 @@ public final class SubmissionNames {
 
     /**
      * The number in a file name that names no page (pag3.png, p3.png, scan_03.png: 3; the "1" of a1 and assignment1
-     * left out), when it is one or two digits: the page the name was likely meant for. Empty when it has none.
+     * left out), when it is one or two digits: the page the name was likely meant for. Empty when it has none; a
+     * copy's counter ("(1)") is none, and a screenshot's name ("Screenshot (3).png") has none.
      */
     public static OptionalInt numberIn(String fileName) {
-        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(plain(stem(fileName))).replaceAll(" "));
+        if (SCREENSHOT.matcher(plain(stem(fileName))).find()) {
+            return OptionalInt.empty(); // its numbers are a date, a time or a counter, never the page's
+        }
+        String counted = COPY_COUNTER.matcher(plain(stem(fileName))).replaceAll(" ");
+        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(counted).replaceAll(" "));
         if (!m.find()) {
             return OptionalInt.empty();
         }
@@ -128,6 +142,56 @@ public final class SubmissionNames {
         String wanted = plain(scene).toLowerCase(Locale.ROOT);
         int distance = editDistance(name, wanted);
         return distance > 0 && distance <= 2 && 2 * distance < wanted.length();
+    }
+
+    /**
+     * The one scene of {@code scenes} a file name that names none was likely meant for, if there is one: the scene
+     * its page letter names (page_C.png, page-c.png: pageC; pageJ.png: tomsPageJ, the one scene whose name ends in
+     * pageJ), else the one scene nearest it that {@link #nearlyNames} (pagC.png, pageCC.png: pageC). Empty when
+     * two are as near (pageK.png is a letter from each of pageA to pageI): a guess between them would as likely
+     * be wrong.
+     */
+    public static Optional<String> nearestScene(String fileName, Collection<String> scenes) {
+        Matcher letter = PAGE_LETTER.matcher(plain(stem(fileName)));
+        if (letter.find()) {
+            Optional<String> lettered = sceneOfLetter(letter.group(1).charAt(0), scenes);
+            if (lettered.isPresent()) {
+                return lettered;
+            }
+        }
+        String name = plain(stem(fileName)).strip().toLowerCase(Locale.ROOT);
+        int nearest = Integer.MAX_VALUE;
+        List<String> best = new ArrayList<>();
+        for (String scene : scenes) {
+            if (!nearlyNames(fileName, scene)) {
+                continue;
+            }
+            int distance = editDistance(name, plain(scene).toLowerCase(Locale.ROOT));
+            if (distance < nearest) {
+                nearest = distance;
+                best.clear();
+            }
+            if (distance == nearest) {
+                best.add(scene);
+            }
+        }
+        return best.size() == 1 ? Optional.of(best.get(0)) : Optional.empty();
+    }
+
+    /**
+     * The one scene of {@code scenes} whose name ends in the word page and {@code letter} (pageC, tomsPageJ), case
+     * ignored; empty when none or more than one does.
+     */
+    public static Optional<String> sceneOfLetter(char letter, Collection<String> scenes) {
+        String ending = "page" + Character.toLowerCase(letter);
+        List<String> found = scenes.stream().filter(s -> plain(s).toLowerCase(Locale.ROOT).endsWith(ending)).toList();
+        return found.size() == 1 ? Optional.of(found.get(0)) : Optional.empty();
+    }
+
+    /** The letter after the word page in a file name (pageA.png: A), when it has one and no page number. */
+    public static Optional<Character> pageLetter(String fileName) {
+        Matcher letter = PAGE_LETTER.matcher(plain(stem(fileName)));
+        return letter.find() ? Optional.of(Character.toUpperCase(letter.group(1).charAt(0))) : Optional.empty();
     }
 
     /** Letters to insert, delete, change or swap (two beside each other) to make one name the other. */

@@ -67,12 +67,14 @@ public class CompareBatchTest {
         assertEquals("bob/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in bob was found", rows.get(6));
         assertEquals("bob/,8,,,,,,,,MISSING,,,no picture of page 8 in bob was found", rows.get(12));
         assertEquals("cy/,1 (seed 361),,,,,,,,MISSING,,,no picture of page 1 (seed 361) in cy was found", rows.get(13));
-        // page10.png is named for a page there is not: each page the top lacks may be the one it was meant as
+        // page10.png is named for a page there is not: each page the top lacks may be the one it was meant as, said
+        // once, on the first
         assertEquals("submission,2 (seed 361),,,,,,,,MISSING,,,\"no picture of page 2 (seed 361) at the top of the folder "
-                + "was found; page10.png is named for page 10, and there is no page 10 (the pages are 1 to 8)\"",
+                + "was found; page10.png is named for page 10, and there is no page 10 (the pages are 1 to 8): was it "
+                + "meant as page 2, page 4, page 5, page 6, page 7 or page 8, which the top of the folder lacks?\"",
                 rows.get(20));
-        assertEquals("submission,4,,,,,,,,MISSING,,,\"no picture of page 4 at the top of the folder was found; page10.png "
-                + "is named for page 10, and there is no page 10 (the pages are 1 to 8)\"", rows.get(21));
+        assertEquals("submission,4,,,,,,,,MISSING,,,no picture of page 4 at the top of the folder was found",
+                rows.get(21));
         assertTrue(rows.subList(6, 26).stream().allMatch(r -> r.contains(",MISSING,")), rows.toString());
         BufferedImage diff = ImageIO.read(out.resolve("diffs/bob_Page_2-diff.png").toFile());
         assertEquals(1970, diff.getWidth());

@@ -145,4 +145,65 @@ class TeacherFolderTest {
         assertTrue(junit.contains("<failure message=\"no picture of page 4 found\" type=\"missing\">No picture's name "
                 + "names page 4.</failure>"), "told on page 2's test only: " + junit);
     }
+
+    /**
+     * A class's lit scenes, lettered: bob's page_C.png was offered on each of his MISSING rows as every scene he
+     * lacked (did you mean pageB.png? on pageB's), each two letters from it; his page1.png, meant as pageA, was
+     * offered as none. Each is offered as the one scene it names.
+     */
+    @Test
+    void aLetteredScenesSlipIsOfferedAsThatSceneOnly() throws Exception {
+        Path scenes = dir.resolve("scenes");
+        Files.createDirectories(scenes);
+        for (String scene : new String[] {"pageA", "pageB", "pageC"}) {
+            Files.writeString(scenes.resolve(scene + ".simp"), "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n");
+        }
+        Path subs = dir.resolve("class");
+        for (String picture : new String[] {"ann/pageA.png", "ann/pageB.png", "ann/pageC.png", "bob/page1.png",
+                "bob/page_C.png"}) {
+            Files.createDirectories(subs.resolve(picture).getParent());
+            assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scenes.resolve("pageA.simp").toString(), "--out",
+                    subs.resolve(picture).toString()).exitCode());
+        }
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--scene", scenes.toString(), "--out-dir",
+                dir.resolve("out").toString());
+
+        String table = run.out();
+        assertTrue(table.contains("| bob/ | pageB.simp |  |  |  |  |  |  |  | MISSING |  |  | no picture of pageB.simp in "
+                + "bob was found |"), table);
+        assertTrue(table.contains("no picture of pageC.simp in bob was found; bob/page_C.png is named like no scene: "
+                + "did you mean pageC.png? |"), table);
+        assertTrue(table.contains("no picture of pageA.simp in bob was found; bob/page1.png is named for page 1, and "
+                + "the scenes here are lettered: did you mean pageA.png (page A)? |"), table);
+    }
+
+    /**
+     * A class zipped on Windows in a folder of its own and unzipped flat (files named class\\ann\\page1.png, as
+     * Python's zipfile or 7-Zip unzips it on Linux): the whole class was one submission, ann's pages counted, the
+     * others' "not counted", and a page bob lacked was no MISSING row. Its students are graded as those of a class
+     * unzipped into folders; a name leading out of the folder (C:\\page1.png) is read as no folder.
+     */
+    @Test
+    void aClassZippedOnWindowsAndUnzippedFlatIsGradedStudentByStudent() throws Exception {
+        Path subs = dir.resolve("subs");
+        writePng(subs.resolve("class\\ann\\page1.png"), page(1));
+        writePng(subs.resolve("class\\ann\\page2.png"), page(2));
+        writePng(subs.resolve("class\\bob\\page1.png"), page(1));
+        writePng(subs.resolve("C:\\page2.png"), page(2));
+        Path xml = dir.resolve("results.xml");
+
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString(), "--junit", xml.toString());
+
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob lacks page 2: " + run.out() + run.err());
+        assertTrue(run.err().contains("every picture in " + subs + " is in " + subs.resolve("class\\") + " (folders in "
+                + "its files' names, as a Windows zip writes them, unzipped flat): its folders (ann, bob) are graded as "
+                + "the submissions\n"), run.err());
+        assertTrue(run.err().contains(subs.resolve("C:\\page2.png") + ": its name leads out of " + subs), run.err());
+        assertTrue(run.out().contains("| bob\\page1.png | 1 (seed 361) |"), run.out());
+        assertTrue(run.out().contains("| bob/ | 2 (seed 361) |  |  |  |  |  |  |  | MISSING |"), run.out());
+        assertFalse(run.out().contains("not counted"), run.out());
+        assertTrue(Files.readString(xml).contains("<testsuite name=\"bob\""), Files.readString(xml));
+    }
 }

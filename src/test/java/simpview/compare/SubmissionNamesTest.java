@@ -112,4 +112,46 @@ class SubmissionNamesTest {
         assertEquals("no page number in the name: its number, 3, is not after the word \"page\" (expected a name like "
                 + "page3.png)", SubmissionNames.noPageNumber("p\uff13.png", "page", 8));
     }
+
+    /**
+     * The names students give their pages, and what each is taken for: a page (counted as named), or, named like
+     * none, the one page or scene it was likely meant for, or no guess where a guess would as likely be wrong.
+     * Before, a lit scene's slip (page_C.png, pageJ.png) was offered as every lettered scene a student lacked, each
+     * two letters from it, and a screenshot's counter (Screenshot (3).png) as page 3.
+     */
+    @Test
+    void realisticMisnamingsAreGuessedRightOrNotAtAll() {
+        List<String> scenes = List.of("pageA", "pageB", "pageC", "pageD", "pageE", "pageF", "pageG", "pageH", "pageI",
+                "tomsPageJ");
+        // named as a page: no guess needed
+        for (String name : List.of("page01.png", "Page 1.PNG", "page_1.png", "page-1.png", "page1 (1).png")) {
+            assertEquals(OptionalInt.of(1), SubmissionNames.pageNumber(name), name);
+        }
+        // named like no page: its number, not a copy's counter or a screenshot's date, time or counter
+        String[][] pages = {
+            {"p1.png", "1"}, {"pg1.png", "1"}, {"p.1.png", "1"}, {"image (2).png", ""}, {"Screenshot (3).png", ""},
+            {"Screenshot 2024-03-05 at 10.15.32.png", ""}, {"Screen Shot 2024-03-05 at 1.02.03 PM.png", ""},
+            {"Capture d’écran (2).png", ""}, {"p3 (1).png", "3"}, {"IMG_0042.png", ""},
+        };
+        for (String[] c : pages) {
+            assertEquals(c[1].isEmpty() ? OptionalInt.empty() : OptionalInt.of(Integer.parseInt(c[1])),
+                    SubmissionNames.numberIn(c[0]), c[0]);
+        }
+        // a lit scene's slips: the one scene meant, or none
+        String[][] slips = {
+            {"page_C.png", "pageC"}, {"page-c.png", "pageC"}, {"pagC.png", "pageC"}, {"pageCC.png", "pageC"},
+            {"pageC2.png", "pageC"}, {"pageJ.png", "tomsPageJ"}, {"tomPageJ.png", "tomsPageJ"}, {"pageK.png", ""},
+            {"pages.png", ""}, {"notes.png", ""},
+        };
+        for (String[] c : slips) {
+            assertEquals(c[1].isEmpty() ? Optional.empty() : Optional.of(c[1]),
+                    SubmissionNames.nearestScene(c[0], scenes), c[0]);
+        }
+        // an A3 page's letter as a number, and the other way round
+        assertEquals(Optional.of("pageA"), SubmissionNames.sceneOfLetter('A', scenes));
+        assertEquals(Optional.of("tomsPageJ"), SubmissionNames.sceneOfLetter('j', scenes));
+        assertEquals(Optional.empty(), SubmissionNames.sceneOfLetter('K', scenes));
+        assertEquals(Optional.of('B'), SubmissionNames.pageLetter("pageb.png"));
+        assertEquals(Optional.empty(), SubmissionNames.pageLetter("page2.png"));
+    }
 }
