@@ -29,9 +29,12 @@ public final class SubmissionNames {
     private static final Pattern NUMBER = Pattern.compile("[0-9]+");
     /** The counter a second copy of a file gets ("page1 (1).png", "Screenshot (3).png"): no page's number. */
     private static final Pattern COPY_COUNTER = Pattern.compile("\\(\\s*[0-9]+\\s*\\)");
-    /** The names screenshot tools save under ("Screenshot (3)", "Screen Shot 2024-03-05 at 1.02.03 PM"). */
+    /**
+     * The names screenshot tools and cameras save under ("Screenshot (3)", "Screen Shot 2024-03-05 at 1.02.03 PM",
+     * "IMG_0003", "DSC_0003"): their numbers are a date, a time or a counter.
+     */
     private static final Pattern SCREENSHOT = Pattern.compile("(?i)^\\s*(screen[\\s_-]*shot|capture|bildschirmfoto"
-            + "|snapshot|untitled)");
+            + "|snapshot|untitled|(img|dsc|dscn|pxl)_[0-9])");
     /** A letter after the word page, as the lit scenes are named: pageC, page_C, page-c, pageJ. */
     private static final Pattern PAGE_LETTER = Pattern.compile("(?i)(?<![a-z])" + PAGE_WORD + "[\\s_-]*([a-z])(?![a-z])");
 

@@ -131,7 +131,7 @@ class SubmissionNamesTest {
         String[][] pages = {
             {"p1.png", "1"}, {"pg1.png", "1"}, {"p.1.png", "1"}, {"image (2).png", ""}, {"Screenshot (3).png", ""},
             {"Screenshot 2024-03-05 at 10.15.32.png", ""}, {"Screen Shot 2024-03-05 at 1.02.03 PM.png", ""},
-            {"Capture d’écran (2).png", ""}, {"p3 (1).png", "3"}, {"IMG_0042.png", ""},
+            {"Capture d’écran (2).png", ""}, {"p3 (1).png", "3"}, {"IMG_0003.png", ""}, {"DSC_0002.JPG", ""}, {"img3.png", "3"},
         };
         for (String[] c : pages) {
             assertEquals(c[1].isEmpty() ? OptionalInt.empty() : OptionalInt.of(Integer.parseInt(c[1])),
