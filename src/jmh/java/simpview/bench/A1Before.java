@@ -11,6 +11,7 @@ import simpview.geometry.Vertex;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Polygons;
+import simpview.pages.Assignment1;
 import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
 import simpview.pages.PolygonTestPage;
@@ -41,7 +42,7 @@ final class A1Before {
     static void draw(int page, PageCanvas canvas, PageContext context) {
         Drawable[] panels = A1Layout.paint(canvas);
         if (page <= 3) {
-            LineTestPage test = (LineTestPage) simpview.pages.Assignment1.page(page);
+            LineTestPage test = (LineTestPage) Assignment1.page(page);
             A1Lines set = test.lines(context.seed());
             double[] n = set.numbers();
             for (int k = 1; k <= A1Layout.PANELS; k++) {
@@ -52,7 +53,7 @@ final class A1Before {
             }
             return;
         }
-        boolean ghost = ((PolygonTestPage) simpview.pages.Assignment1.page(page)).ghost();
+        boolean ghost = ((PolygonTestPage) Assignment1.page(page)).ghost();
         A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
         FilledPolygonRenderer fill = new FilledPolygonRenderer();
         for (int k = 1; k <= A1Polygons.SCENES; k++) {

@@ -1,6 +1,7 @@
 package simpview.bench;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import simpview.scene.simp.SceneLibrary;
 import simpview.surface.BandWatch;
@@ -77,7 +78,7 @@ public final class BandTimeline {
                 two.watchedBy(null);
                 StringBuilder row = new StringBuilder("| ").append(args[i]);
                 for (int c = 0; c < columns.length; c++) {
-                    java.util.Arrays.sort(columns[c]);
+                    Arrays.sort(columns[c]);
                     long median = columns[c][PICTURES / 2];
                     row.append(" | ").append(c == 1 ? Long.toString(median) // batches; the rest in ns, shown in us
                             : String.format(Locale.ROOT, "%.0f", median / 1e3));
@@ -104,8 +105,8 @@ public final class BandTimeline {
         }
 
         synchronized void clear() {
-            java.util.Arrays.fill(drawing, 0);
-            java.util.Arrays.fill(parked, 0);
+            Arrays.fill(drawing, 0);
+            Arrays.fill(parked, 0);
             batches = 0;
         }
 

@@ -1,5 +1,6 @@
 package simpview.bench;
 
+import java.awt.image.BufferedImage;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -45,8 +46,8 @@ public class Metrics {
 
     @Setup
     public void draw() throws Exception {
-        java.awt.image.BufferedImage pa = new PageRenderer().renderImage(3, PageContext.defaults().withSeed(361));
-        java.awt.image.BufferedImage pb = new PageRenderer().renderImage(3, PageContext.defaults().withSeed(7));
+        BufferedImage pa = new PageRenderer().renderImage(3, PageContext.defaults().withSeed(361));
+        BufferedImage pb = new PageRenderer().renderImage(3, PageContext.defaults().withSeed(7));
         ours = Picture.ofPage(pa, "ours").panel();
         theirs = Picture.ofPage(pb, "theirs").panel();
         ourPage = pa.getRGB(0, 0, 750, 750, null, 0, 750);

@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collection;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -21,6 +22,7 @@ import java.util.OptionalInt;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -204,12 +206,12 @@ public final class CompareBatch {
      * as such: skipped by name, or scored 0 as the page of the eight their name names), by their paths under the
      * folder: the teacher who meant --assignment 1 is told so when every picture is one.
      */
-    private final Set<String> firstAssignmentUnasked = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private final Set<String> firstAssignmentUnasked = ConcurrentHashMap.newKeySet();
     /**
      * With --partial, the share an empty panel gets against each page's, scene's or first-assignment panel's own
      * ({@link RubricRule#emptyShare}), by its label: measured once, at its first picture that fails.
      */
-    private final Map<String, Double> emptyShares = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, Double> emptyShares = new ConcurrentHashMap<>();
     /**
      * The folder a class was zipped in on Windows and unzipped flat, as its files' names begin ("class\\", from
      * class\alice\page1.png), when {@link #classFolder} found the class in it; "" otherwise. Its pictures are
@@ -371,7 +373,7 @@ public final class CompareBatch {
      * A scene's name for the example of a picture's name: the first named like a page (pageA), not a file the
      * pages include (cube), when there is one.
      */
-    private static String exampleScene(java.util.Collection<String> names) {
+    private static String exampleScene(Collection<String> names) {
         return names.stream().filter(n -> n.toLowerCase(Locale.ROOT).startsWith("page")).findFirst()
                 .orElse(names.iterator().next());
     }
@@ -1246,7 +1248,7 @@ public final class CompareBatch {
     /** The first assignment's pages the pictures need, drawn once each (they read no files). */
     private Map<Integer, BufferedImage> drawFirstAssignment(List<Match> matches) {
         // concurrent: a picture named like one of the eight pages that holds a first-assignment page adds its page
-        Map<Integer, BufferedImage> drawn = new java.util.concurrent.ConcurrentHashMap<>();
+        Map<Integer, BufferedImage> drawn = new ConcurrentHashMap<>();
         for (Match match : matches) {
             if (match.firstAssignmentPage() > 0) {
                 drawn.computeIfAbsent(match.firstAssignmentPage(), others::firstAssignmentPage);

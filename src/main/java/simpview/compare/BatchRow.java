@@ -2,6 +2,7 @@ package simpview.compare;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * One submitted picture in a batch: what it was compared with and how it
@@ -206,7 +207,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     /** What its verdict's share counts, e.g. "within 8/255 with 1 px slack" or "within FLIP 0.130". */
     public String verdictName() {
         if (rule.metric() == Comparison.Metric.FLIP) {
-            return String.format(java.util.Locale.ROOT, "within FLIP %.3f", rule.flipThreshold());
+            return String.format(Locale.ROOT, "within FLIP %.3f", rule.flipThreshold());
         }
         return "within " + rule.tolerance() + "/255 " + (rule.deviation() == 0 ? "without slack"
                 : "with " + rule.deviation() + " px slack") + (rule.metric() == Comparison.Metric.BLUR ? ", blurred" : "");

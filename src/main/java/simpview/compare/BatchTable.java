@@ -2,6 +2,7 @@ package simpview.compare;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -45,7 +46,7 @@ public final class BatchTable {
                 : (judgedDeviation == 1 ? "one pixel of slack" : judgedDeviation + " pixels of slack")
                         + (panelsWithout ? " (the first assignment's panels: no slack)" : "");
         String judged = metric == Comparison.Metric.FLIP
-                ? String.format(java.util.Locale.ROOT, "FLIP at most %.3f (the shares are colour distances)",
+                ? String.format(Locale.ROOT, "FLIP at most %.3f (the shares are colour distances)",
                         flipThreshold)
                 : String.format("within %d/255 with %s%s", tolerance, slack,
                         metric == Comparison.Metric.BLUR ? ", both panels blurred" : "");

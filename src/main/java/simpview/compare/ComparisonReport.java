@@ -1,6 +1,7 @@
 package simpview.compare;
 
 import java.util.List;
+import java.util.Locale;
 
 /**
  * The outcome of comparing a picture with simpview's own, and the readable
@@ -63,7 +64,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
 
     /** What the verdict's share counts: "within 8/255 with slack", or "within FLIP 0.130". */
     public String verdictName() {
-        return flip() ? String.format(java.util.Locale.ROOT, "within FLIP %.3f", comparison.flipThreshold())
+        return flip() ? String.format(Locale.ROOT, "within FLIP %.3f", comparison.flipThreshold())
                 : "within " + tolerance + "/255" + slackTail(" with slack");
     }
 
@@ -99,7 +100,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
             out.append("metric:  both panels blurred (3x3 binomial) before they are compared\n");
         }
         if (flip()) {
-            out.append(String.format(java.util.Locale.ROOT, "metric:  FLIP (LDR, %.0f pixels per degree): a pixel matches "
+            out.append(String.format(Locale.ROOT, "metric:  FLIP (LDR, %.0f pixels per degree): a pixel matches "
                     + "at FLIP %.3f or less; the shares below are colour distances%n", Flip.DEFAULT_PPD,
                     comparison.flipThreshold()));
         }
@@ -109,7 +110,7 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         appendRow(out, "within 1/255", exact.within1(), slack.within1());
         appendRow(out, "within 8/255", exact.within8(), slack.within8());
         if (flip()) {
-            out.append(String.format("%-22s%12s%18s%n", "within FLIP " + String.format(java.util.Locale.ROOT, "%.3f",
+            out.append(String.format("%-22s%12s%18s%n", "within FLIP " + String.format(Locale.ROOT, "%.3f",
                     comparison.flipThreshold()), "", Percent.of(verdictShare())));
         } else if (tolerance != 0 && tolerance != 1 && tolerance != 8) {
             appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());

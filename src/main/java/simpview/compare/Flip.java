@@ -1,5 +1,7 @@
 package simpview.compare;
 
+import java.util.Arrays;
+
 /**
  * LDR-FLIP, the perceptual difference of two pictures of the same size as
  * Andersson, Nilsson, Akenine-M&ouml;ller, Oskarsson, &Aring;str&ouml;m and
@@ -361,7 +363,7 @@ public final class Flip {
                 padded[x + r] = in[row + Math.max(0, Math.min(width - 1, x))];
             }
             // tap by tap over the whole row: the inner loop is a plain multiply-add the JIT vectorises
-            java.util.Arrays.fill(out, row, row + width, 0f);
+            Arrays.fill(out, row, row + width, 0f);
             for (int k = 0; k < kernel.length; k++) {
                 float w = kernel[k];
                 for (int x = 0; x < width; x++) {
@@ -376,7 +378,7 @@ public final class Flip {
         int r = kernel.length / 2;
         for (int y = 0; y < height; y++) {
             int row = y * width;
-            java.util.Arrays.fill(out, row, row + width, 0f);
+            Arrays.fill(out, row, row + width, 0f);
             for (int k = 0; k < kernel.length; k++) {
                 int from = Math.max(0, Math.min(height - 1, y + k - r)) * width;
                 float w = kernel[k];

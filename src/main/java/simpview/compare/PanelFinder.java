@@ -1,5 +1,7 @@
 package simpview.compare;
 
+import java.util.Locale;
+
 /**
  * Finds the 650x650 panel in a picture: a square whose one-pixel frame just
  * outside it is white (the margins) while its own outermost pixels are mostly
@@ -104,7 +106,7 @@ final class PanelFinder {
         for (int k = 0; k < SIZES.length; k++) {
             double ratio = (double) width / SIZES[k][0];
             if (width != SIZES[k][0] && Math.abs(height - ratio * SIZES[k][1]) <= 0.01 * height) {
-                return String.format(java.util.Locale.ROOT, "; it has the shape of %s, scaled by %.3g: save the "
+                return String.format(Locale.ROOT, "; it has the shape of %s, scaled by %.3g: save the "
                         + "picture at its own size (1:1, no scaling)", SIZE_NAMES[k], ratio);
             }
         }

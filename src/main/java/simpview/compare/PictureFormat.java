@@ -1,5 +1,6 @@
 package simpview.compare;
 
+import java.nio.file.Path;
 import java.util.Locale;
 
 /**
@@ -113,8 +114,8 @@ public enum PictureFormat {
         if (advice.isEmpty() || format == named) {
             return advice;
         }
-        String name = java.nio.file.Path.of(file).getFileName() == null ? file
-                : java.nio.file.Path.of(file).getFileName().toString();
+        String name = Path.of(file).getFileName() == null ? file
+                : Path.of(file).getFileName().toString();
         return name + " holds " + format.article + " picture: " + advice;
     }
 }

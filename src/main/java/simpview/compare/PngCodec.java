@@ -4,6 +4,7 @@ import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
+import java.util.Locale;
 import java.util.zip.CRC32;
 import java.util.zip.DataFormatException;
 import java.util.zip.Deflater;
@@ -36,7 +37,7 @@ final class PngCodec {
         private static final long serialVersionUID = 1L;
 
         TooLarge(long width, long height) {
-            super(String.format(java.util.Locale.ROOT, "is %dx%d pixels (%,d), more than simpview reads (%,d pixels at "
+            super(String.format(Locale.ROOT, "is %dx%d pixels (%,d), more than simpview reads (%,d pixels at "
                     + "most, as 8192x8192): a page is 750x750 and a window capture about 872x782, so save the picture at "
                     + "its own size", width, height, width * height, MAX_PIXELS), null, false, false);
         }

@@ -4,15 +4,18 @@ import com.google.gson.stream.JsonReader;
 import com.google.gson.stream.JsonToken;
 import java.io.IOException;
 import java.io.Reader;
+import java.io.StringReader;
+import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import simpview.scene.FileProblem;
 
 /**
@@ -99,7 +102,7 @@ public final class Rubric {
         } catch (IOException e) {
             throw new CompareException("rubric " + file + ": cannot be read: " + FileProblem.of(file, e));
         }
-        try (Reader reader = new java.io.StringReader(text)) {
+        try (Reader reader = new StringReader(text)) {
             JsonReader json = new JsonReader(reader);
             return new Parser(file, json).rubric(base);
         } catch (IOException | IllegalStateException | NumberFormatException e) {
@@ -115,7 +118,7 @@ public final class Rubric {
      * something else.
      */
     static String trailingComma(String gson, String text) {
-        java.util.regex.Matcher m = GSON_PLACE.matcher(gson);
+        Matcher m = GSON_PLACE.matcher(gson);
         if (!m.find()) {
             return null;
         }
@@ -146,8 +149,8 @@ public final class Rubric {
                 + "; JSON allows no ',' there, so remove it";
     }
 
-    private static final java.util.regex.Pattern GSON_PLACE =
-            java.util.regex.Pattern.compile("^(.*?) at line (\\d+) column (\\d+) path (\\S+)$");
+    private static final Pattern GSON_PLACE =
+            Pattern.compile("^(.*?) at line (\\d+) column (\\d+) path (\\S+)$");
 
     /**
      * Gson's account of JSON it could not read ("End of input at line 2
@@ -156,7 +159,7 @@ public final class Rubric {
      * gives it.
      */
     static String notJson(String gson) {
-        java.util.regex.Matcher m = GSON_PLACE.matcher(gson);
+        Matcher m = GSON_PLACE.matcher(gson);
         if (!m.find()) {
             return "not valid JSON: " + gson;
         }
@@ -448,7 +451,7 @@ public final class Rubric {
         /** E.g. "line 3, column 14 ($.pages[0].tolerance)", from the reader's own account of where it is. */
         private String place() {
             String s = json.toString();
-            java.util.regex.Matcher m = java.util.regex.Pattern.compile("line (\\d+) column (\\d+) path (\\S+)").matcher(s);
+            Matcher m = Pattern.compile("line (\\d+) column (\\d+) path (\\S+)").matcher(s);
             return m.find() ? "line " + m.group(1) + ", column " + m.group(2) + " (" + m.group(3) + ")" : s;
         }
     }

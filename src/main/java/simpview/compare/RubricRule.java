@@ -1,8 +1,10 @@
 package simpview.compare;
 
+import java.math.BigInteger;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.regex.Pattern;
 import simpview.surface.PageCanvas;
 
 /**
@@ -150,7 +152,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
         for (String part : m.split(",")) {
             String[] ends = part.trim().split("-");
             if (ends.length == 2 && ends[0].trim().matches("[0-9]+") && ends[1].trim().matches("[0-9]+")
-                    && new java.math.BigInteger(ends[0].trim()).compareTo(new java.math.BigInteger(ends[1].trim())) > 0) {
+                    && new BigInteger(ends[0].trim()).compareTo(new BigInteger(ends[1].trim())) > 0) {
                 return part.trim();
             }
         }
@@ -178,7 +180,7 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
             switch (c) {
                 case '*' -> regex.append(".*");
                 case '?' -> regex.append('.');
-                default -> regex.append(java.util.regex.Pattern.quote(String.valueOf(c)));
+                default -> regex.append(Pattern.quote(String.valueOf(c)));
             }
         }
         return regex.toString();

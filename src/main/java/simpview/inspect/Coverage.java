@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import java.util.Arrays;
 import simpview.geometry.Camera;
 import simpview.stage.Painter;
 
@@ -135,8 +136,8 @@ final class Coverage {
         if (m < 3) {
             return null;
         }
-        return new double[][] {java.util.Arrays.copyOf(ox, m), java.util.Arrays.copyOf(oy, m),
-            java.util.Arrays.copyOf(oz, m)};
+        return new double[][] {Arrays.copyOf(ox, m), Arrays.copyOf(oy, m),
+            Arrays.copyOf(oz, m)};
     }
 
     /** Even-odd crossing test of the point (cx, cy) against the polygon. */

@@ -1,12 +1,13 @@
 package simpview.inspect;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import simpview.geometry.Clipper;
-import simpview.stage.Painter;
-import simpview.shading.Fog;
 import simpview.raster.FragmentLayout;
+import simpview.shading.Fog;
 import simpview.shading.LitState;
+import simpview.stage.Painter;
 import simpview.surface.Colors;
 
 /**
@@ -335,7 +336,7 @@ final class LitExplainer implements PixelWatch.Explainer {
         double[] out = clipper.vertices();
         double[][] rows = new double[n][];
         for (int i = 0; i < n; i++) {
-            rows[i] = java.util.Arrays.copyOfRange(out, i * stride + 3, i * stride + 3 + m);
+            rows[i] = Arrays.copyOfRange(out, i * stride + 3, i * stride + 3 + m);
         }
         return rows;
     }

@@ -1,5 +1,7 @@
 package simpview.inspect;
 
+import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
@@ -111,7 +113,7 @@ public final class Overdraw {
         public PrimitiveTrace trace() {
             return new PrimitiveTrace() {
                 @Override
-                public void read(int index, java.nio.file.Path file, int line, int kind, double[] p, int at,
+                public void read(int index, Path file, int line, int kind, double[] p, int at,
                         int stride, int vertices) {
                 }
 
@@ -122,8 +124,8 @@ public final class Overdraw {
 
                 @Override
                 public void restart() {
-                    java.util.Arrays.fill(counts, 0);
-                    java.util.Arrays.fill(won, 0);
+                    Arrays.fill(counts, 0);
+                    Arrays.fill(won, 0);
                 }
             };
         }

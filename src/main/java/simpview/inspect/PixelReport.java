@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.IntFunction;
 import simpview.geometry.Camera;
@@ -134,7 +135,7 @@ public final class PixelReport {
      * camera's planes: the scene has no camera and no eye.
      */
     private static String boxSides(int planes) {
-        List<String> sides = new java.util.ArrayList<>();
+        List<String> sides = new ArrayList<>();
         for (String plane : VertexTable.planeNames(planes)) {
             sides.add(switch (plane) {
                 case "hither" -> "near side (z = 0)";

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import simpview.scene.simp.SourcePlace;
 
@@ -58,6 +59,6 @@ final class SourceText {
     }
 
     static boolean isObj(Path file) {
-        return file.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj");
+        return file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj");
     }
 }

@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.List;
 import simpview.surface.PageCanvas;
 
 /**
@@ -13,7 +14,7 @@ import simpview.surface.PageCanvas;
 public sealed interface A1Page extends Page permits LineTestPage, PolygonTestPage {
 
     /** Each panel's name, panel k's at k - 1: its drawer ("Bresenham") on a page of lines, its scene ("mesh") else. */
-    java.util.List<String> panelNames();
+    List<String> panelNames();
 
     /** How many steps draw the whole page: the most lines or triangles of any panel. */
     int steps(PageContext context);

@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import java.util.List;
 import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
@@ -19,8 +20,8 @@ public interface Page {
      * that is not a scene file (a scene's come from its lines); empty when
      * the page does not say.
      */
-    default java.util.List<String> primitiveNames(PageContext context) {
-        return java.util.List.of();
+    default List<String> primitiveNames(PageContext context) {
+        return List.of();
     }
 
     /**
@@ -37,7 +38,7 @@ public interface Page {
      * drawing order within each panel, as given to its drawers; empty for a
      * page that draws a scene file, whose primitives are the file's.
      */
-    java.util.List<ListedPrimitive> primitives(PageContext context);
+    List<ListedPrimitive> primitives(PageContext context);
 
     /**
      * Draws the page. On a scene error what was drawn before it stays on the

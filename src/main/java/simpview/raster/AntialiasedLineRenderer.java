@@ -7,6 +7,7 @@ import static simpview.geometry.Vertex.X;
 import static simpview.geometry.Vertex.Y;
 import static simpview.geometry.Vertex.Z;
 
+import java.util.Arrays;
 import simpview.geometry.Vertex;
 import simpview.surface.Colors;
 import simpview.surface.CoverageDrawable;
@@ -145,7 +146,7 @@ public final class AntialiasedLineRenderer implements LineRenderer {
         double reachNumerator = REACH * scale;
         boolean remember = reachNumerator < REMEMBERED;
         if (remember) {
-            java.util.Arrays.fill(byNumerator, 0, (int) reachNumerator + 1, -1);
+            Arrays.fill(byNumerator, 0, (int) reachNumerator + 1, -1);
         }
         for (double m = lo; m <= hi; m++) {
             double centre = minorA + (m - majorA) * slope;

@@ -2,6 +2,7 @@ package simpview.surface;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.util.Arrays;
 
 /**
  * The end of every chain: a BufferedImage written through its int[] raster.
@@ -205,7 +206,7 @@ public final class ImageDrawable implements Drawable {
         int k0 = from - s.xBase;
         int k1 = to - 1 - s.xBase;
         if (s.dr == 0 && s.dg == 0 && s.db == 0) {
-            java.util.Arrays.fill(pixels, row + from, row + to, s.argbAt(from));
+            Arrays.fill(pixels, row + from, row + to, s.argbAt(from));
         } else {
             int range = to - from < SHORT_SPAN ? 0
                     : byteRange(s.r, s.dr, k0, k1) & byteRange(s.g, s.dg, k0, k1) & byteRange(s.b, s.db, k0, k1);
@@ -375,7 +376,7 @@ public final class ImageDrawable implements Drawable {
             fillOwed(); // the rows owed that this does not cover
         }
         for (int y = Math.max(y0, 0); y < Math.min(y1, height); y++) {
-            java.util.Arrays.fill(pixels, y * width + Math.max(x0, 0), y * width + Math.min(x1, width), argb);
+            Arrays.fill(pixels, y * width + Math.max(x0, 0), y * width + Math.min(x1, width), argb);
         }
     }
 }

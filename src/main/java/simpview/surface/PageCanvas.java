@@ -2,6 +2,7 @@ package simpview.surface;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.util.Arrays;
 import simpview.geometry.Camera;
 
 /**
@@ -38,8 +39,8 @@ public final class PageCanvas {
         imageDrawable = new ImageDrawable(image);
         panel = new PanelDrawable(imageDrawable, MARGIN, MARGIN, PANEL);
         zbuffer = new ZBuffer(PANEL, PANEL);
-        java.util.Arrays.fill(clearedRow, Colors.WHITE);
-        java.util.Arrays.fill(clearedRow, MARGIN, MARGIN + PANEL, BACKGROUND);
+        Arrays.fill(clearedRow, Colors.WHITE);
+        Arrays.fill(clearedRow, MARGIN, MARGIN + PANEL, BACKGROUND);
         clear();
     }
 

@@ -1,5 +1,7 @@
 package simpview.surface;
 
+import java.util.Arrays;
+
 /**
  * Records, for every write that reaches it, which primitive made it (see
  * {@link Provenance}), and passes the write on unchanged. Placed after the
@@ -40,7 +42,7 @@ public final class ProvenanceDrawable extends DrawableDecorator {
             int from = Math.max(0, x);
             int to = Math.min(width, x + count);
             if (from < to) {
-                java.util.Arrays.fill(owner, y * width + from, y * width + to, provenance.currentAt(y));
+                Arrays.fill(owner, y * width + from, y * width + to, provenance.currentAt(y));
             }
         }
         delegate.setRun(x, y, count, depths, colours, at);
@@ -52,7 +54,7 @@ public final class ProvenanceDrawable extends DrawableDecorator {
             int from = Math.max(0, s.x0);
             int to = Math.min(width, s.x1);
             if (from < to) {
-                java.util.Arrays.fill(owner, s.y * width + from, s.y * width + to, provenance.currentAt(s.y));
+                Arrays.fill(owner, s.y * width + from, s.y * width + to, provenance.currentAt(s.y));
             }
         }
         delegate.fillSpan(s);

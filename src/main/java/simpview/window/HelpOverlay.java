@@ -3,6 +3,7 @@ package simpview.window;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.FontMetrics;
+import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.event.MouseAdapter;
@@ -10,6 +11,7 @@ import java.awt.event.MouseEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import javax.swing.JComponent;
 
 /**
  * The key help (F1), drawn in a box over the whole window (its glass pane:
@@ -19,7 +21,7 @@ import java.util.Locale;
  * for that, as many columns as its height needs and its width holds, the
  * words cut short with "…", and what no column holds named at the bottom.
  */
-public final class HelpOverlay extends javax.swing.JComponent {
+public final class HelpOverlay extends JComponent {
 
     private static final long serialVersionUID = 1L;
 
@@ -37,7 +39,7 @@ public final class HelpOverlay extends javax.swing.JComponent {
     }
 
     @Override
-    protected void paintComponent(java.awt.Graphics graphics) {
+    protected void paintComponent(Graphics graphics) {
         Graphics2D g = (Graphics2D) graphics.create();
         try {
             paint(g, getWidth(), getHeight());

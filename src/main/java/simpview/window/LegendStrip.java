@@ -7,6 +7,8 @@ import java.awt.FontMetrics;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import javax.swing.JComponent;
 import simpview.window.instruments.Legend;
 
@@ -25,7 +27,7 @@ final class LegendStrip extends JComponent {
     private static final int PAD = 4;
 
     /** The legends shown, by the overlay that shows each, in the order they came. */
-    private final transient java.util.Map<String, Legend> legends = new java.util.LinkedHashMap<>();
+    private final transient Map<String, Legend> legends = new LinkedHashMap<>();
 
     LegendStrip() {
         setName("legend");

@@ -5,19 +5,23 @@ import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.GraphicsConfiguration;
+import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.RenderingHints;
-import java.awt.GraphicsConfiguration;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
 import java.awt.geom.AffineTransform;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
-import simpview.pages.A1Marks;
-import simpview.window.instruments.Outlines;
 import java.awt.image.BufferedImage;
+import java.util.List;
 import javax.swing.JComponent;
+import simpview.pages.A1Marks;
 import simpview.surface.PageCanvas;
+import simpview.window.instruments.Outlines;
 
 /**
  * The page on screen: the finished image copied at the zoom and place that
@@ -59,11 +63,11 @@ public final class PageView extends JComponent {
     /** A first-assignment page's lines and triangles as given, over its pixels; never null. */
     private transient A1Marks marks = A1Marks.NONE;
     /** Outlines drawn over the whole page (wire over fill), each in image coordinates; null for none. */
-    private transient java.util.List<double[]> wire;
+    private transient List<double[]> wire;
     private static final Color WIRE = new Color(0, 255, 128, 200);
     /** The culled and the clipped-away primitives' outlines (image coordinates), or null for none. */
-    private transient java.util.List<double[]> culled;
-    private transient java.util.List<double[]> clipped;
+    private transient List<double[]> culled;
+    private transient List<double[]> clipped;
     static final Color CULLED = new Color(255, 160, 0);
     static final Color CLIPPED = new Color(0, 200, 255);
     /** Device pixels a point of the desktop, as last laid out or painted (1.5 at 150 %). */
@@ -214,7 +218,7 @@ public final class PageView extends JComponent {
     }
 
     /** Draws these outlines (image coordinates) over the page, or none (null). */
-    void wire(java.util.List<double[]> outlines) {
+    void wire(List<double[]> outlines) {
         wire = outlines;
         repaint();
     }
@@ -224,7 +228,7 @@ public final class PageView extends JComponent {
     }
 
     /** Outlines the primitives culled and those clipped away (image coordinates), or none (nulls). */
-    void skipped(java.util.List<double[]> culledOutlines, java.util.List<double[]> clippedOutlines) {
+    void skipped(List<double[]> culledOutlines, List<double[]> clippedOutlines) {
         culled = culledOutlines;
         clipped = clippedOutlines;
         repaint();
@@ -235,8 +239,8 @@ public final class PageView extends JComponent {
     }
 
     /** Where the image's top-left corner is, in this component's device pixels (its points when unscaled). */
-    java.awt.Point imageOrigin() {
-        return new java.awt.Point((int) zoomPan.originX(), (int) zoomPan.originY());
+    Point imageOrigin() {
+        return new Point((int) zoomPan.originX(), (int) zoomPan.originY());
     }
 
     @Override
@@ -345,7 +349,7 @@ public final class PageView extends JComponent {
         }
     }
 
-    private void outlines(Graphics2D g, java.util.List<double[]> shapes, Color colour) {
+    private void outlines(Graphics2D g, List<double[]> shapes, Color colour) {
         if (shapes == null) {
             return;
         }
@@ -389,9 +393,9 @@ public final class PageView extends JComponent {
             double y0 = zoomPan.screenY(ends[k + 1]);
             double x1 = zoomPan.screenX(ends[k + 2]);
             double y1 = zoomPan.screenY(ends[k + 3]);
-            g.draw(new java.awt.geom.Line2D.Double(x0, y0, x1, y1));
-            g.draw(new java.awt.geom.Ellipse2D.Double(x0 - ring / 2, y0 - ring / 2, ring, ring));
-            g.draw(new java.awt.geom.Ellipse2D.Double(x1 - ring / 2, y1 - ring / 2, ring, ring));
+            g.draw(new Line2D.Double(x0, y0, x1, y1));
+            g.draw(new Ellipse2D.Double(x0 - ring / 2, y0 - ring / 2, ring, ring));
+            g.draw(new Ellipse2D.Double(x1 - ring / 2, y1 - ring / 2, ring, ring));
         }
     }
 

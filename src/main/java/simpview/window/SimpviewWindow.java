@@ -72,6 +72,9 @@ import simpview.surface.PageCanvas;
 import simpview.window.instruments.BackFacePicture;
 import simpview.window.instruments.Legend;
 import simpview.window.instruments.OverdrawPicture;
+import javax.swing.Box;
+import javax.swing.event.MenuEvent;
+import javax.swing.event.MenuListener;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
@@ -321,25 +324,25 @@ public final class SimpviewWindow {
             menu.add(item);
         }
         // What an overlay's colours mean, at the bar's right end: it takes no height from the page.
-        bar.add(javax.swing.Box.createHorizontalGlue());
+        bar.add(Box.createHorizontalGlue());
         bar.add(legendStrip);
         for (int m = 0; m < bar.getMenuCount(); m++) {
             JMenu shown = bar.getMenu(m);
             if (shown == null) {
                 continue;
             }
-            shown.addMenuListener(new javax.swing.event.MenuListener() {
+            shown.addMenuListener(new MenuListener() {
                 @Override
-                public void menuSelected(javax.swing.event.MenuEvent e) {
+                public void menuSelected(MenuEvent e) {
                     tick(shown);
                 }
 
                 @Override
-                public void menuDeselected(javax.swing.event.MenuEvent e) {
+                public void menuDeselected(MenuEvent e) {
                 }
 
                 @Override
-                public void menuCanceled(javax.swing.event.MenuEvent e) {
+                public void menuCanceled(MenuEvent e) {
                 }
             });
         }

@@ -1,6 +1,8 @@
 package simpview.window;
 
+import java.awt.GraphicsEnvironment;
 import java.awt.Toolkit;
+import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;
@@ -242,7 +244,7 @@ public enum WindowAction {
         KeyStroke stroke;
         if (key.startsWith("menu ")) {
             KeyStroke rest = KeyStroke.getKeyStroke(key.substring("menu ".length()));
-            int menu = java.awt.GraphicsEnvironment.isHeadless() ? java.awt.event.InputEvent.CTRL_DOWN_MASK
+            int menu = GraphicsEnvironment.isHeadless() ? InputEvent.CTRL_DOWN_MASK
                     : Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
             stroke = KeyStroke.getKeyStroke(rest.getKeyCode(), rest.getModifiers() | menu);
         } else {

@@ -8,6 +8,7 @@ import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
@@ -84,12 +85,12 @@ class Assignment1CompareTest {
                 + "100.00 %"), run.out());
         // The same in a batch's table, for a teacher.
         Path folder = dir.resolve("subs");
-        java.nio.file.Files.createDirectories(folder.resolve("ann"));
+        Files.createDirectories(folder.resolve("ann"));
         ImageIO.write(swapped, "png", folder.resolve("ann/a1-page1.png").toFile());
         Path out = dir.resolve("out");
         CliRun batch = CliRun.of("compare", "--dir", folder.toString(), "--assignment", "1", "--pages", "1",
                 "--out-dir", out.toString());
-        String table = java.nio.file.Files.readString(out.resolve("compare.csv"));
+        String table = Files.readString(out.resolve("compare.csv"));
         assertTrue(table.contains("looks like simpview's panel 4 (antialiased)"), table);
         assertTrue(table.contains("looks like simpview's panel 2 (Bresenham)"), table);
         assertEquals(ExitCode.SCENE_ERROR, batch.exitCode(), batch.err());
@@ -115,7 +116,7 @@ class Assignment1CompareTest {
                 }
             }
             Path folder = dir.resolve("sub" + number);
-            java.nio.file.Files.createDirectories(folder);
+            Files.createDirectories(folder);
             Path mine = folder.resolve("page" + number + ".png");
             ImageIO.write(over, "png", mine.toFile());
             CliRun run = CliRun.of("compare", mine.toString(), "--assignment", "1", "--page", String.valueOf(number));
@@ -456,8 +457,8 @@ class Assignment1CompareTest {
     void optionsThatDoNothingToTheFirstAssignmentAreUsageErrors() throws Exception {
         Path page = dir.resolve("a1-page1.png");
         assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", page.toString()).exitCode());
-        Path folder = java.nio.file.Files.createDirectories(dir.resolve("mine"));
-        java.nio.file.Files.copy(page, folder.resolve("a1-page1.png"));
+        Path folder = Files.createDirectories(dir.resolve("mine"));
+        Files.copy(page, folder.resolve("a1-page1.png"));
         String one = page.toString();
         String out = dir.resolve("report").toString();
         Object[][] refused = {
@@ -484,7 +485,7 @@ class Assignment1CompareTest {
         }
         assertEquals(ExitCode.OK, CliRun.of("compare", one, "--assignment", "1", "--page", "1", "--threads", "2").exitCode(),
                 "a count in range is taken, as render takes it");
-        Path rubric = java.nio.file.Files.writeString(dir.resolve("compare.json"),
+        Path rubric = Files.writeString(dir.resolve("compare.json"),
                 "{\"pages\": [{\"match\": \"a1-*-panel4\", \"metric\": \"flip\"}]}");
         CliRun ruled = CliRun.of("compare", "--dir", folder.toString(), "--assignment", "1", "--pages", "1", "--out-dir", out,
                 "--deviation", "0", "--rubric", rubric.toString());
@@ -497,7 +498,7 @@ class Assignment1CompareTest {
      */
     @Test
     void aBatchOfTheEightPagesSkipsAFirstAssignmentPage() throws Exception {
-        Path subs = java.nio.file.Files.createDirectories(dir.resolve("subs"));
+        Path subs = Files.createDirectories(dir.resolve("subs"));
         assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2",
                 "--out", subs.resolve("a1-page2.png").toString()).exitCode());
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--out-dir", dir.resolve("report").toString());
@@ -511,7 +512,7 @@ class Assignment1CompareTest {
                 + "eight pages"), run.err());
 
         // a student's folder named like the first assignment, holding a page of the eight: that page, graded
-        Path class_ = java.nio.file.Files.createDirectories(dir.resolve("class"));
+        Path class_ = Files.createDirectories(dir.resolve("class"));
         for (String student : new String[] {"A1-Smith", "bob"}) {
             assertEquals(ExitCode.OK, CliRun.of("render", "--page", "1", "--out",
                     class_.resolve(student + "/page1.png").toString()).exitCode());
@@ -529,7 +530,7 @@ class Assignment1CompareTest {
      */
     @Test
     void aFirstAssignmentNameIsSkippedWhateverItHolds() throws Exception {
-        Path ivy = java.nio.file.Files.createDirectories(dir.resolve("class/ivy"));
+        Path ivy = Files.createDirectories(dir.resolve("class/ivy"));
         assertEquals(ExitCode.OK, CliRun.of("render", "--page", "5", "--out", ivy.resolve("page5.png").toString())
                 .exitCode());
         BufferedImage wrongSize = new BufferedImage(700, 700, BufferedImage.TYPE_INT_RGB);

@@ -2,6 +2,7 @@ package simpview.cli;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 
 /** One in-process run of the command line: exit code and what it printed. */
@@ -17,7 +18,7 @@ public record CliRun(int exitCode, String out, String err) {
     }
 
     /** Runs with simpview's own scenes looked for in {@code ownScenes}, as a start from another folder would. */
-    static CliRun withOwnScenes(java.nio.file.Path ownScenes, String... args) {
+    static CliRun withOwnScenes(Path ownScenes, String... args) {
         return run(new SimpviewCommand(() -> false, ownScenes), args);
     }
 

@@ -13,13 +13,18 @@ import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.stream.ImageOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Picture;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.testing.Fifos;
 
@@ -257,7 +262,7 @@ public class CompareCommandTest {
         assertTrue(run.out().contains("\nnote: JPEG is lossy: saving a page as JPEG changes its colours near every edge, "
                 + "so even a right page can fail; save it as PNG and hand that in\n"), run.out());
 
-        Path a1 = jpeg("a1-page3.jpg", simpview.pages.Assignment1.render(3, PageContext.defaults()));
+        Path a1 = jpeg("a1-page3.jpg", Assignment1.render(3, PageContext.defaults()));
         CliRun first = CliRun.of("compare", a1.toString(), "--assignment", "1", "--page", "3");
         assertEquals(ExitCode.SCENE_ERROR, first.exitCode(), first.out());
         assertTrue(first.out().contains("\nnote: JPEG is lossy: "), first.out());
@@ -274,7 +279,7 @@ public class CompareCommandTest {
     @Test
     void theFormatNoteGoesByWhatTheFileHolds() throws Exception {
         Path named = dir.resolve("named-png.png");
-        java.nio.file.Files.move(jpeg("page2.jpg", page(2)), named);
+        Files.move(jpeg("page2.jpg", page(2)), named);
         CliRun run = CliRun.of("compare", named.toString(), "--page", "2");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
         assertTrue(run.out().contains("\nnote: named-png.png holds a JPEG picture: JPEG is lossy: saving a page as JPEG "
@@ -282,13 +287,13 @@ public class CompareCommandTest {
                 + "in\n"), run.out());
 
         Path a1 = dir.resolve("a1-page3.png");
-        java.nio.file.Files.move(jpeg("a1-page3.jpg", simpview.pages.Assignment1.render(3, PageContext.defaults())), a1);
+        Files.move(jpeg("a1-page3.jpg", Assignment1.render(3, PageContext.defaults())), a1);
         CliRun first = CliRun.of("compare", a1.toString(), "--assignment", "1", "--page", "3");
         assertEquals(ExitCode.SCENE_ERROR, first.exitCode(), first.out());
         assertTrue(first.out().contains("\nnote: a1-page3.png holds a JPEG picture: JPEG is lossy: "), first.out());
 
         Path pngBytes = dir.resolve("page3.jpg");
-        java.nio.file.Files.move(png("wrong.png", page(3)), pngBytes);
+        Files.move(png("wrong.png", page(3)), pngBytes);
         CliRun png = CliRun.of("compare", pngBytes.toString(), "--page", "2");
         assertEquals(ExitCode.SCENE_ERROR, png.exitCode(), png.out());
         assertFalse(png.out().contains("lossy") || png.out().contains("JPEG"), png.out());
@@ -300,13 +305,13 @@ public class CompareCommandTest {
      */
     private Path jpeg(String name, BufferedImage image) throws Exception {
         Path file = dir.resolve(name);
-        javax.imageio.ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
-        javax.imageio.ImageWriteParam param = writer.getDefaultWriteParam();
-        param.setCompressionMode(javax.imageio.ImageWriteParam.MODE_EXPLICIT);
+        ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
+        ImageWriteParam param = writer.getDefaultWriteParam();
+        param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
         param.setCompressionQuality(0.95f);
-        try (javax.imageio.stream.ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile())) {
+        try (ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile())) {
             writer.setOutput(out);
-            writer.write(null, new javax.imageio.IIOImage(image, null, null), param);
+            writer.write(null, new IIOImage(image, null, null), param);
         } finally {
             writer.dispose();
         }

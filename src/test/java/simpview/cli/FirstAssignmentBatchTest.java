@@ -17,6 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.A1Layout;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
 import simpview.testing.CourseFiles;
 
 /**
@@ -171,7 +172,7 @@ class FirstAssignmentBatchTest {
     void aPictureNamedLikeOneOfTheEightPagesThatHoldsAFirstAssignmentPageIsComparedAsOne() throws Exception {
         Path subs = dir.resolve("subs");
         png(subs.resolve("page2.png"), captured(page(2)));
-        png(subs.resolve("page3.png"), new simpview.pages.PageRenderer().renderImage(3, PageContext.defaults()));
+        png(subs.resolve("page3.png"), new PageRenderer().renderImage(3, PageContext.defaults()));
         // --pages asks for the eight pages' pages 2 and 3: page2.png is one of those, and scores 0 saying why
         CliRun asked = CliRun.of("check", subs.toString(), "--pages", "2-3");
         assertEquals(ExitCode.SCENE_ERROR, asked.exitCode(), asked.out());
@@ -298,7 +299,7 @@ class FirstAssignmentBatchTest {
                 + "assignment); 1 picture could not be checked (said above)\n"), check.out());
 
         Path eight = dir.resolve("eight");
-        png(eight.resolve("page4.png"), new simpview.pages.PageRenderer().renderImage(4, PageContext.defaults()));
+        png(eight.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
         png(eight.resolve("page5.png"), small);
         CliRun pages = CliRun.of("check", eight.toString(), "--pages", "4-5");
         assertEquals(ExitCode.SCENE_ERROR, pages.exitCode(), pages.out());
@@ -310,7 +311,7 @@ class FirstAssignmentBatchTest {
     void whereTheEightPagesAreAskedForAFirstAssignmentPageIsNeitherGradedNorAskedOfOthers() throws Exception {
         Path subs = dir.resolve("subs");
         png(subs.resolve("alice/a1-page2.png"), page(2));
-        png(subs.resolve("bob/page1.png"), new simpview.pages.PageRenderer().renderImage(1, PageContext.defaults()));
+        png(subs.resolve("bob/page1.png"), new PageRenderer().renderImage(1, PageContext.defaults()));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", out.toString(),
                 "--diffs", "none", "--gradescope", out.resolve("results.json").toString());
@@ -368,7 +369,7 @@ class FirstAssignmentBatchTest {
         assertTrue(check.err().contains(note), check.err());
         assertFalse(CliRun.of("check", subs.resolve("alice").toString()).err().contains("note:"),
                 "without --pages nothing of the eight pages is asked for");
-        png(subs.resolve("bob/page2.png"), new simpview.pages.PageRenderer().renderImage(2, PageContext.defaults()));
+        png(subs.resolve("bob/page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
         CliRun mixed = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
                 "--diffs", "none");
         assertFalse(mixed.err().contains("note:"), "a page of the eight is handed in: " + mixed.err());
@@ -395,7 +396,7 @@ class FirstAssignmentBatchTest {
         CliRun elsewhere = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
         assertEquals(ExitCode.OK, elsewhere.exitCode(), elsewhere.out() + elsewhere.err());
         assertTrue(elsewhere.out().contains("A1 page 5"), elsewhere.out());
-        png(mine.resolve("page4.png"), new simpview.pages.PageRenderer().renderImage(4, PageContext.defaults()));
+        png(mine.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
         CliRun eighth = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
         assertEquals(ExitCode.SCENE_ERROR, eighth.exitCode(), eighth.out() + eighth.err());
         assertTrue(eighth.err().contains("nothing was graded: simpview cannot draw page 4 itself"), eighth.err());
@@ -432,7 +433,7 @@ class FirstAssignmentBatchTest {
         assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the result "
                 + "is on the judged share: within 8/255 with no slack, 99.00 % needed.\n"),
                 Files.readString(out.resolve("compare.md")));
-        png(mine.resolve("page2.png"), new simpview.pages.PageRenderer().renderImage(2, PageContext.defaults()));
+        png(mine.resolve("page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
         CliRun.of("check", mine.toString(), "--out-dir", out.toString()); // without --pages both are graded
         assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the "
                 + "result is on the judged share: within 8/255 with one pixel of slack (the first assignment's panels: "

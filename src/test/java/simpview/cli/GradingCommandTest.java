@@ -12,9 +12,16 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
+import java.util.regex.Pattern;
+import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.stream.ImageOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 
 /** Grading from the command line: a rubric with alternates, the three result files, and {@code simpview check}. */
@@ -145,7 +152,7 @@ class GradingCommandTest {
         assertTrue(Files.readString(out.resolve("index.html")).contains("note: " + whole), "the web report's view");
         String xml = Files.readString(out.resolve("results.xml"));
         assertTrue(xml.matches("(?s).*<testcase name=\"page 4 \\(st/page4.png\\)\" classname=\"st\"><system-out>PASS: "
-                + "99.18 %[^<]*\nnote: " + java.util.regex.Pattern.quote(whole) + "[^<]*</system-out></testcase>.*"), xml);
+                + "99.18 %[^<]*\nnote: " + Pattern.quote(whole) + "[^<]*</system-out></testcase>.*"), xml);
 
         CliRun check = CliRun.of("check", subs.resolve("st").toString(), "--pages", "4");
         assertEquals(ExitCode.OK, check.exitCode(), check.err());
@@ -170,7 +177,7 @@ class GradingCommandTest {
         String gif = "GIF holds at most 256 colours: saving a page as GIF changes (or dithers) the others, so even a "
                 + "right page can fail; save it as PNG and hand that in";
         assertTrue(run.err().matches("(?s).*st/page1\\.jpg: FAIL [0-9.]+ %; " + jpeg + "\n.*"), run.err());
-        assertTrue(run.err().matches("(?s).*st/page2\\.gif: FAIL [0-9.]+ %; " + java.util.regex.Pattern.quote(gif)
+        assertTrue(run.err().matches("(?s).*st/page2\\.gif: FAIL [0-9.]+ %; " + Pattern.quote(gif)
                 + "\n.*"), run.err());
         assertTrue(run.err().contains("st/page4.gif: PASS 100.00 %\n") && run.err().contains("st/page5.png: FAIL "),
                 run.err());
@@ -213,14 +220,14 @@ class GradingCommandTest {
         Files.createDirectories(first);
         // at quality 95, as an image program saves it "at high quality": at ImageIO's 75 the panels' white rings
         // are not white enough for the page to be found
-        javax.imageio.ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
-        javax.imageio.ImageWriteParam param = writer.getDefaultWriteParam();
-        param.setCompressionMode(javax.imageio.ImageWriteParam.MODE_EXPLICIT);
+        ImageWriter writer = ImageIO.getImageWritersByFormatName("jpg").next();
+        ImageWriteParam param = writer.getDefaultWriteParam();
+        param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
         param.setCompressionQuality(0.95f);
-        try (javax.imageio.stream.ImageOutputStream out = ImageIO.createImageOutputStream(
+        try (ImageOutputStream out = ImageIO.createImageOutputStream(
                 first.resolve("a1-page3.jpg").toFile())) {
             writer.setOutput(out);
-            writer.write(null, new javax.imageio.IIOImage(simpview.pages.Assignment1.render(3, PageContext.defaults()),
+            writer.write(null, new IIOImage(Assignment1.render(3, PageContext.defaults()),
                     null, null), param);
         } finally {
             writer.dispose();
@@ -273,7 +280,7 @@ class GradingCommandTest {
         double score = half.get("score").getAsDouble();
         assertEquals((share - 95.31) / (99 - 95.31), score, 0.015, "in proportion from the empty panel's share: " + output);
         assertTrue(score > 0.3 && score < 0.7, "about halfway: " + output);
-        assertTrue(output.contains(String.format(java.util.Locale.ROOT, "%npartial credit: %.2f of 1 point: the share "
+        assertTrue(output.contains(String.format(Locale.ROOT, "%npartial credit: %.2f of 1 point: the share "
                 + "counts from 95.31 %%", score)), output);
     }
 

@@ -23,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneMonitor;
+import java.io.File;
 
 /**
  * The start script of an installed simpview ({@code gradle installDist},
@@ -138,7 +139,7 @@ public class InstalledLauncherTest {
             environment.put("JAVA_HOME", javaHome.toString());
             environment.remove("JAVA_OPTS");
             environment.remove("SIMPVIEW_OPTS");
-            environment.put("PATH", pathFirst + java.io.File.pathSeparator + System.getenv("PATH"));
+            environment.put("PATH", pathFirst + File.pathSeparator + System.getenv("PATH"));
         }, "--version");
         assertEquals("", run.err(), "the start script printed on stderr");
         return run.out().lines().toList();

@@ -26,6 +26,7 @@ import simpview.pages.PageRenderer;
 import simpview.pages.Assignment2;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
+import java.util.Arrays;
 
 public class MainCommandLineTest {
 
@@ -265,7 +266,7 @@ public class MainCommandLineTest {
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
         List<String> lines = run.err().lines().toList();
         assertEquals("simpview: " + problem, lines.get(0), run.err());
-        String slip = java.util.Arrays.stream(line.split(" ")).filter(w -> !w.startsWith("-") && !w.equals("7"))
+        String slip = Arrays.stream(line.split(" ")).filter(w -> !w.startsWith("-") && !w.equals("7"))
                 .findFirst().orElseThrow();
         assertEquals("Did you mean 'simpview " + meant + "' for '" + slip + "'?", lines.get(1), run.err());
     }
@@ -401,7 +402,7 @@ public class MainCommandLineTest {
             greys[k] = sheet.getRGB(ContactSheet.GAP + k * cell + 187, ContactSheet.GAP + 187) & 0xFF;
         }
         assertTrue(greys[0] == 0xBF && greys[1] < greys[0] && greys[2] < greys[1] && greys[2] > 0,
-                "page1, page2, page10, ever farther: " + java.util.Arrays.toString(greys));
+                "page1, page2, page10, ever farther: " + Arrays.toString(greys));
         CliRun empty = CliRun.of("render", "--contact-sheet", "--out", out.toString(),
                 Files.createDirectories(dir.resolve("nothing")).toString());
         assertEquals(ExitCode.USAGE_ERROR, empty.exitCode(), empty.err());

@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Collectors;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -90,7 +91,7 @@ public class PrimitiveListingTest {
         assertEquals(4 * 30, lines.size(), "the 30 lines in each of the four panels");
         // The colours are whole levels, k / 255, and say so: blended as printed they give simpview's bytes.
         // the header's sentences wrapped at words, as its fixed lines are: none runs on past the width
-        String header = text.lines().filter(l -> l.startsWith("#")).collect(java.util.stream.Collectors.joining("\n"));
+        String header = text.lines().filter(l -> l.startsWith("#")).collect(Collectors.joining("\n"));
         assertTrue(header.lines().allMatch(l -> l.length() <= PrimitiveListing.WIDTH), header);
         String joined = header.replace("\n# ", " ");
         assertTrue(joined.contains("each colour channel is a whole number of 255ths, k / 255 (the first line's red, "),

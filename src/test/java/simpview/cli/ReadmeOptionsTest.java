@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
@@ -28,7 +30,7 @@ public class ReadmeOptionsTest {
                     continue;
                 }
                 for (String name : option.names()) {
-                    if (name.startsWith("--") && !java.util.regex.Pattern.compile("(?<![\\w-])" + name + "(?![\\w-])")
+                    if (name.startsWith("--") && !Pattern.compile("(?<![\\w-])" + name + "(?![\\w-])")
                             .matcher(readme).find()) {
                         missing.add(spec.qualifiedName() + " " + name);
                     }
@@ -39,7 +41,7 @@ public class ReadmeOptionsTest {
     }
 
     private static List<CommandLine> commands(CommandLine root) {
-        List<CommandLine> all = new java.util.ArrayList<>(List.of(root));
+        List<CommandLine> all = new ArrayList<>(List.of(root));
         all.addAll(root.getSubcommands().values());
         return all;
     }

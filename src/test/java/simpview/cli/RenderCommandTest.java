@@ -12,6 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
@@ -101,7 +102,7 @@ class RenderCommandTest {
         assertEquals(ExitCode.OK, one.exitCode(), one.err());
         CliRun asScene = CliRun.of("render", "--scene", near.toString(), "--out", dir.resolve("same.png").toString());
         assertEquals(ExitCode.OK, asScene.exitCode(), asScene.err());
-        assertTrue(java.util.Arrays.equals(Files.readAllBytes(picture), Files.readAllBytes(dir.resolve("same.png"))));
+        assertTrue(Arrays.equals(Files.readAllBytes(picture), Files.readAllBytes(dir.resolve("same.png"))));
         Path out = dir.resolve("out");
         CliRun several = CliRun.of("render", near.toString(), dir.resolve("b").toString(), "--out-dir", out.toString());
         assertEquals(ExitCode.OK, several.exitCode(), several.err());

@@ -21,6 +21,8 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneMonitor;
+import java.util.jar.Attributes;
+import java.util.jar.JarFile;
 
 /**
  * build/libs/simpview.jar (the build makes it before the tests), run with
@@ -98,8 +100,8 @@ public class RunnableJarTest {
     /** java -jar opens the X toolkit to simpview (WindowClass names its X11 windows), and only that. */
     @Test
     void theManifestOpensTheX11ToolkitForTheWindowsClassName() throws Exception {
-        try (java.util.jar.JarFile file = new java.util.jar.JarFile(jar.toFile())) {
-            java.util.jar.Attributes main = file.getManifest().getMainAttributes();
+        try (JarFile file = new JarFile(jar.toFile())) {
+            Attributes main = file.getManifest().getMainAttributes();
             assertEquals("java.desktop/sun.awt.X11", main.getValue("Add-Opens"));
             assertEquals("simpview.cli.Main", main.getValue("Main-Class"));
         }

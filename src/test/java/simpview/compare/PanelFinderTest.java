@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static simpview.testing.Images.page;
 
+import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -116,7 +117,7 @@ class PanelFinderTest {
         BufferedImage page = page(3);
         for (int size : new int[] {700, 1500}) {
             BufferedImage scaled = new BufferedImage(size, size, BufferedImage.TYPE_INT_RGB);
-            java.awt.Graphics2D g = scaled.createGraphics();
+            Graphics2D g = scaled.createGraphics();
             g.drawImage(page, 0, 0, size, size, null);
             g.dispose();
             CompareException e = assertThrows(CompareException.class, () -> Picture.of(scaled, "scaled.png"));

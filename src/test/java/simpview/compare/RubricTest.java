@@ -8,6 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -57,8 +62,8 @@ class RubricTest {
     void metricFlipAndItsThresholdEachDecide() throws Exception {
         int[] grey = new int[Comparison.N * Comparison.N];
         int[] lighter = new int[Comparison.N * Comparison.N];
-        java.util.Arrays.fill(grey, 0x808080);
-        java.util.Arrays.fill(lighter, 0x8C8C8C); // 12/255 lighter: FLIP 0.17 on every pixel
+        Arrays.fill(grey, 0x808080);
+        Arrays.fill(lighter, 0x8C8C8C); // 12/255 lighter: FLIP 0.17 on every pixel
         RubricRule wide = with("{\"match\": \"4\", \"tolerance\": 12}");
         assertTrue(wide.passes(wide.compare(grey, lighter, Comparison.N)), "within 12/255");
         RubricRule flip = with("{\"match\": \"4\", \"tolerance\": 12, \"metric\": \"flip\"}");
@@ -176,7 +181,7 @@ class RubricTest {
                 }
                 """);
         Rubric rubric = Rubric.read(file, BASE);
-        java.util.List<RubricRule> panels = new java.util.ArrayList<>();
+        List<RubricRule> panels = new ArrayList<>();
         for (int k = 1; k <= 4; k++) {
             panels.add(rubric.ruleFor("a1-page2-panel" + k, 0));
         }
@@ -273,22 +278,22 @@ class RubricTest {
                 ]}
                 """);
         Rubric rubric = Rubric.read(file, BASE);
-        java.util.Map<String, Integer> pages = new java.util.HashMap<>();
+        Map<String, Integer> pages = new HashMap<>();
         for (int p = 1; p <= 8; p++) {
             pages.put("page" + p, p);
         }
         pages.put("a1-page1-panel4", 0);
-        assertEquals(java.util.List.of(
+        assertEquals(List.of(
                 "rubric " + file + ": line 3, column 4 ($.pages[1]): the rule \"match\": \"9\" fits no page or scene of "
                         + "this run, so it is not used",
                 "rubric " + file + ": line 4, column 4 ($.pages[2]): the rule \"match\": \"pageZ\" fits no page or scene "
                         + "of this run, so it is not used"), rubric.unusedRules(pages));
         // A run of scenes: the page ranges and the first assignment's panels fit nothing, a scene named pageZ does.
-        java.util.List<String> scenes = rubric.unusedRules(java.util.Map.of("pageZ", 0, "tomsPageJ", 0));
+        List<String> scenes = rubric.unusedRules(Map.of("pageZ", 0, "tomsPageJ", 0));
         assertEquals(3, scenes.size(), scenes.toString());
         assertTrue(scenes.get(0).contains("\"match\": \"1-3\"") && scenes.get(1).contains("\"match\": \"9\"")
                 && scenes.get(2).contains("\"match\": \"a1-*-panel4\""), scenes.toString());
-        assertEquals(java.util.List.of(), Rubric.of(BASE).unusedRules(pages), "no file, no rules");
+        assertEquals(List.of(), Rubric.of(BASE).unusedRules(pages), "no file, no rules");
     }
 
     /** JSON that is not JSON is told in words, where it goes wrong, without the JSON library's advice. */

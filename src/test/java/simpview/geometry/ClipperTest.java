@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /** The clipper against each plane of a camera, worked out by hand. */
@@ -200,7 +202,7 @@ class ClipperTest {
      */
     @Test
     void aSharedEdgeCrossesAtTheSameBitsWalkedEitherWay() {
-        java.util.Random random = new java.util.Random(7);
+        Random random = new Random(7);
         for (int i = 0; i < 200; i++) {
             double z = -2 - 40 * random.nextDouble();
             // A inside the window, B beyond its right side (x > -z); C below and D above the edge, both inside
@@ -215,8 +217,8 @@ class ClipperTest {
             int shared = 0;
             for (int k = 0; k < n; k++) {
                 for (int j = 0; j < m; j++) {
-                    shared += java.util.Arrays.equals(java.util.Arrays.copyOfRange(clipper.vertices(), 4 * k, 4 * k + 4),
-                            java.util.Arrays.copyOfRange(other.vertices(), 4 * j, 4 * j + 4)) ? 1 : 0;
+                    shared += Arrays.equals(Arrays.copyOfRange(clipper.vertices(), 4 * k, 4 * k + 4),
+                            Arrays.copyOfRange(other.vertices(), 4 * j, 4 * j + 4)) ? 1 : 0;
                 }
             }
             assertEquals(2, shared, "A and the crossing on A-B, in both, edge " + i);
@@ -284,8 +286,8 @@ class ClipperTest {
             found |= Math.abs(at(k, 2) + 1) < 1e-12 && Math.abs(at(k, 0) - 0.1) < 1e-12
                     && Math.abs(at(k, 1) + 0.1) < 1e-12;
         }
-        assertTrue(found, "no crossing at (0.1, -0.1, -1) among " + java.util.Arrays.toString(
-                java.util.Arrays.copyOf(clipper.vertices(), 4 * n)));
+        assertTrue(found, "no crossing at (0.1, -0.1, -1) among " + Arrays.toString(
+                Arrays.copyOf(clipper.vertices(), 4 * n)));
     }
 
     @Test
@@ -305,7 +307,7 @@ class ClipperTest {
 
     @Test
     void insideIsEveryPlanesDistanceAtLeastZero() {
-        java.util.Random random = new java.util.Random(11);
+        Random random = new Random(11);
         double[] special = {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 0, -0.0, -1, 1, -100, 20};
         for (Camera camera : new Camera[] {EYE, Camera.PARALLEL}) {
             for (int i = 0; i < 20_000; i++) {

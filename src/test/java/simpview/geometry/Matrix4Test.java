@@ -2,6 +2,9 @@ package simpview.geometry;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 class Matrix4Test {
@@ -52,15 +55,15 @@ class Matrix4Test {
      */
     @Test
     void everyOtherAngleKeepsItsBits() {
-        java.util.Random random = new java.util.Random(7);
-        java.util.List<Double> angles = new java.util.ArrayList<>();
+        Random random = new Random(7);
+        List<Double> angles = new ArrayList<>();
         for (int k = -4000; k <= 4000; k++) {
             angles.add(k * 0.25);
         }
         for (int k = 0; k < 20000; k++) {
             angles.add((random.nextDouble() - 0.5) * Math.pow(10, random.nextInt(16)));
         }
-        angles.addAll(java.util.List.of(1e15, -1e15 + 90, 0x1p52 - 1, -(0x1p52 - 0.5), 1e-300, -0.0));
+        angles.addAll(List.of(1e15, -1e15 + 90, 0x1p52 - 1, -(0x1p52 - 0.5), 1e-300, -0.0));
         for (double angle : angles) {
             for (Axis axis : Axis.values()) {
                 assertSameBits(formerRotation(axis, angle), Matrix4.rotation(axis, angle), axis + " " + angle);

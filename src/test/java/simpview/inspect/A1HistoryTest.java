@@ -46,12 +46,12 @@ class A1HistoryTest {
         for (int n = 1; n <= Assignment1.COUNT; n++) {
             BufferedImage image = page(n);
             Random random = new Random(n);
-            List<int[]> lit = new java.util.ArrayList<>();
+            List<int[]> lit = new ArrayList<>();
             int[] all = image.getRGB(0, 0, LAST + 1, LAST + 1, null, 0, LAST + 1);
             for (int row = 0; row <= LAST; row++) {
                 for (int column = 0; column <= LAST; column++) {
                     int rgb = all[row * (LAST + 1) + column] & 0xFFFFFF;
-                    if (rgb != 0 && simpview.pages.A1Layout.panelAt(column, row) != 0) {
+                    if (rgb != 0 && A1Layout.panelAt(column, row) != 0) {
                         lit.add(new int[] {column, LAST - row});
                     }
                 }

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -14,6 +15,7 @@ import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.surface.Rgb;
 
 /**
  * The explanation's terms against SPEC's formula computed here, in plain
@@ -277,8 +279,8 @@ class LightingExplanationTest {
         for (int[] at : new int[][] {{164, 164}, {325, 200}, {300, 260}}) {
             PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), at[0], at[1]);
             Terms t = report.explanation();
-            assertArrayEquals(new double[] {0.5, 0.5, 0.5}, t.vector("centroid_colour"), 0, java.util.Arrays.toString(at));
-            assertArrayEquals(new int[] {128, 128, 128}, t.bytes("final_rgb"), java.util.Arrays.toString(at));
+            assertArrayEquals(new double[] {0.5, 0.5, 0.5}, t.vector("centroid_colour"), 0, Arrays.toString(at));
+            assertArrayEquals(new int[] {128, 128, 128}, t.bytes("final_rgb"), Arrays.toString(at));
         }
     }
 
@@ -287,7 +289,7 @@ class LightingExplanationTest {
         Path file = dir.resolve("cued.simp");
         Files.writeString(file, "polygon (-90, -90, -20) (90, -90, -180) (0, 90, -100)\n");
         PixelReport report = new PixelInspector().inspect(
-                InspectedScene.cued(file, new simpview.surface.Rgb(0.2, 1, 0.6), new simpview.surface.Rgb(0.1, 0, 0.3)),
+                InspectedScene.cued(file, new Rgb(0.2, 1, 0.6), new Rgb(0.1, 0, 0.3)),
                 325, 325);
         Terms t = report.explanation();
         double z = t.number("z");
@@ -482,7 +484,7 @@ class LightingExplanationTest {
         int drawn = one.panel().getPixel(325, 310);
         assertArrayEquals(new int[] {drawn >>> 16 & 0xFF, drawn >>> 8 & 0xFF, drawn & 0xFF}, t.bytes("final_rgb"));
         double[] kd = t.vector("kd");
-        assertTrue(kd[0] > 0.1 && kd[0] < 0.9 && kd[2] > 0.1 && kd[2] < 0.9, java.util.Arrays.toString(kd));
+        assertTrue(kd[0] > 0.1 && kd[0] < 0.9 && kd[2] > 0.1 && kd[2] < 0.9, Arrays.toString(kd));
     }
 
     /** The scene drawn as render draws it, on {@code threads} threads. */

@@ -3,14 +3,19 @@ package simpview.inspect;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.reference.RandomLitScenes;
+import simpview.scene.SceneException;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.PageCanvas;
+import simpview.testing.CourseFiles;
 
 /**
  * For sampled pixels of random scenes, the history's written plus depth-failed
@@ -63,7 +68,7 @@ class OverdrawTest {
     @Test
     void aSceneWithAnErrorIsCountedAsFarAsTheError() throws Exception {
         Path scene = dir.resolve("broken.simp");
-        java.nio.file.Files.writeString(scene, "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
+        Files.writeString(scene, "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
                 + "polygon (-50, -50, -20) (50, -50, -20) (0, 50, -20)\n"
                 + "rotate Q 5\n"
                 + "polygon (-50, -50, -5) (50, -50, -5) (0, 50, -5)\n");
@@ -73,19 +78,19 @@ class OverdrawTest {
         assertEquals(1, counts.failed()[centre]);
         PixelReport report = inspector.inspect(InspectedScene.of(scene), 325, 325);
         assertEquals(2, report.history().size(), "the history goes as far: " + report.text(true, false));
-        org.junit.jupiter.api.Assertions.assertThrows(simpview.scene.SceneException.class,
+        org.junit.jupiter.api.Assertions.assertThrows(SceneException.class,
                 () -> Overdraw.counts(InspectedScene.of(dir.resolve("missing.simp")), library));
     }
 
     @Test
     void theCoursesPagesCountAsTheirHistories() throws Exception {
-        Path a3 = simpview.testing.CourseFiles.require("course-simp-a3");
-        Path a4 = simpview.testing.CourseFiles.require("course-simp-a4");
+        Path a3 = CourseFiles.require("course-simp-a3");
+        Path a4 = CourseFiles.require("course-simp-a4");
         for (Path file : new Path[] {a4.resolve("page-d.simp"), a3.resolve("pageI.simp")}) {
             InspectedScene scene = InspectedScene.of(file);
             Overdraw.Counts both = Overdraw.counts(scene, library);
             Random random = new Random(file.getFileName().toString().hashCode());
-            java.util.List<Integer> reachedPixels = new java.util.ArrayList<>();
+            List<Integer> reachedPixels = new ArrayList<>();
             for (int i = 0; i < both.reached().length; i++) {
                 if (both.reached()[i] > 0) {
                     reachedPixels.add(i);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -13,12 +14,12 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.reference.RandomLitScenes;
-import simpview.scene.simp.SceneLibrary;
-import simpview.stage.PrimitiveLog;
-import simpview.stage.PrimitiveTrace;
 import simpview.scene.SceneException;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
+import simpview.stage.PrimitiveLog;
+import simpview.stage.PrimitiveTrace;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.Rgb;
@@ -38,7 +39,7 @@ class PixelHistoryTest {
     Path dir;
 
     private static final SceneLibrary LIBRARY = new SceneLibrary();
-    private final PixelInspector inspector = new PixelInspector(LIBRARY, simpview.scene.simp.SceneMonitor.NONE);
+    private final PixelInspector inspector = new PixelInspector(LIBRARY, SceneMonitor.NONE);
 
     @Test
     void litScenesOfEveryKind() throws Exception {
@@ -91,7 +92,7 @@ class PixelHistoryTest {
     @Test
     void aTriangleHiddenWholeIsInTheHistory() throws Exception {
         Path scene = dir.resolve("hidden.simp");
-        java.nio.file.Files.writeString(scene, String.join("\n",
+        Files.writeString(scene, String.join("\n",
                 "camera -1 -1 1 1 -0.1 -200",
                 "ambient 0.5 0.5 0.5",
                 "phong",

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -81,7 +82,7 @@ class VertexTableTest {
         double[][] expected = {{1.5, 0, -5}, {0, 1.5, -5}, {4, 0, -10}, {0, 4, -10}};
         for (double[] e : expected) {
             assertTrue(out.stream().anyMatch(o -> Math.abs(o[0] - e[0]) < EPS && Math.abs(o[1] - e[1]) < EPS
-                    && Math.abs(o[2] - e[2]) < EPS), "the clipper's output lacks " + java.util.Arrays.toString(e));
+                    && Math.abs(o[2] - e[2]) < EPS), "the clipper's output lacks " + Arrays.toString(e));
         }
         int found = 0;
         for (Terms o : clip.list("output")) {

@@ -5,10 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import simpview.scene.SceneException;
+import simpview.surface.Colors;
 import simpview.surface.PageCanvas;
 
 /** The first assignment's five pages: layout, seeds, and what the ghost page must show exactly. */
@@ -51,8 +53,8 @@ class Assignment1PagesTest {
             int[] a = draw(page, 1).getRGB(0, 0, 750, 750, null, 0, 750);
             int[] b = draw(page, 1).getRGB(0, 0, 750, 750, null, 0, 750);
             int[] c = draw(page, 2).getRGB(0, 0, 750, 750, null, 0, 750);
-            assertTrue(java.util.Arrays.equals(a, b), "page " + page + ": the same seed, the same picture");
-            assertEquals(!seeded, java.util.Arrays.equals(a, c), "page " + page);
+            assertTrue(Arrays.equals(a, b), "page " + page + ": the same seed, the same picture");
+            assertEquals(!seeded, Arrays.equals(a, c), "page " + page);
         }
     }
 
@@ -106,7 +108,7 @@ class Assignment1PagesTest {
         int level = 0;
         allowed.add(0);
         for (int n = 1; n <= 20; n++) {
-            level = simpview.surface.Colors.toByte(0.14 + 0.86 * level / 255.0);
+            level = Colors.toByte(0.14 + 0.86 * level / 255.0);
             allowed.add(level);
         }
         for (int y = 0; y < 300; y++) {

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.util.Arrays;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.constraints.DoubleRange;
@@ -96,7 +97,7 @@ class AntialiasedLineRendererTest {
                     int expected = near ? Colors.toByte(closedForm(distance)) : 0;
                     int got = Colors.red(image.getPixel(x, y));
                     if (got != expected) {
-                        assertEquals(expected, got, x + "," + y + " of " + java.util.Arrays.toString(line));
+                        assertEquals(expected, got, x + "," + y + " of " + Arrays.toString(line));
                     }
                 }
             }

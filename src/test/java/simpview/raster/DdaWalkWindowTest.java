@@ -3,6 +3,7 @@ package simpview.raster;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -48,7 +49,7 @@ class DdaWalkWindowTest {
                 DdaWalk windowed = new DdaWalk();
                 windowed.rows(w[0], w[1]);
                 assertEquals(visits(new DdaWalk(), line, w[0], w[1]), visits(windowed, line, 0, SIZE),
-                        "line " + java.util.Arrays.toString(line) + ", rows " + w[0] + " to " + w[1]);
+                        "line " + Arrays.toString(line) + ", rows " + w[0] + " to " + w[1]);
             }
         }
     }

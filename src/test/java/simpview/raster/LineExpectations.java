@@ -4,6 +4,7 @@ import java.math.BigDecimal;
 import java.math.RoundingMode;
 import java.util.ArrayList;
 import java.util.List;
+import simpview.geometry.Vertex;
 import simpview.testing.RecordingDrawable;
 
 /**
@@ -157,7 +158,7 @@ final class LineExpectations {
     /** What the renderer wrote, in order, as "x,y". */
     static List<String> drawn(LineRenderer renderer, double x0, double y0, double x1, double y1, int size) {
         RecordingDrawable d = new RecordingDrawable(size, size);
-        renderer.drawLine(simpview.geometry.Vertex.of(x0, y0, -1), simpview.geometry.Vertex.of(x1, y1, -1), d);
+        renderer.drawLine(Vertex.of(x0, y0, -1), Vertex.of(x1, y1, -1), d);
         List<String> out = new ArrayList<>();
         for (RecordingDrawable.Write w : d.writes()) {
             out.add(w.x() + "," + w.y());

@@ -6,10 +6,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.math.BigDecimal;
+import java.util.HashMap;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import simpview.pages.A1Lines;
 import simpview.pages.A1Rule;
 
 /**
@@ -118,11 +123,11 @@ class A1CoursePicturesTest {
         CourseFiles.require("reference/images/a1");
         int[] theirs = theirs(1, 2);
         int[] ours = ours(1, 2, A1Rule.COURSE);
-        simpview.pages.A1Lines spokes = simpview.pages.A1Lines.starburst();
+        A1Lines spokes = A1Lines.starburst();
         int kept = 0;
         int stepped = 0;
         int oursKept = 0;
-        java.util.Set<Integer> tiedSpokes = new java.util.TreeSet<>();
+        Set<Integer> tiedSpokes = new TreeSet<>();
         for (int i = 0; i < spokes.count(); i++) {
             double[] p = {spokes.start(i).x(), spokes.start(i).y()};
             double[] q = {spokes.end(i).x(), spokes.end(i).y()};
@@ -159,7 +164,7 @@ class A1CoursePicturesTest {
                 oursKept += ours[keepAt] != 0 && ours[stepAt] == 0 ? 1 : 0;
             }
         }
-        assertEquals(java.util.Set.of(15), tiedSpokes, "the spokes with exact ties");
+        assertEquals(Set.of(15), tiedSpokes, "the spokes with exact ties");
         assertEquals(5, kept, "ties where the course's picture kept (stepped: " + stepped + ")");
         assertEquals(0, stepped, "ties where it stepped");
         assertEquals(kept, oursKept, "simpview keeps at every one");
@@ -181,8 +186,8 @@ class A1CoursePicturesTest {
     }
 
     /** Each page drawn once and each picture read once for the class (the tests within a class run one at a time). */
-    private static final java.util.Map<String, BufferedImage> OURS = new java.util.HashMap<>();
-    private static final java.util.Map<Integer, BufferedImage> THEIRS = new java.util.HashMap<>();
+    private static final Map<String, BufferedImage> OURS = new HashMap<>();
+    private static final Map<Integer, BufferedImage> THEIRS = new HashMap<>();
 
     private static int[] ours(int page, int panel, A1Rule rule) {
         return A1Panels.ourPanel(OURS.computeIfAbsent(page + " " + rule, key -> A1Panels.ourPage(page, rule)), panel);

@@ -3,12 +3,14 @@ package simpview.reference;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import simpview.pages.A1Layout;
-import simpview.pages.Assignment1;
 import simpview.pages.A1Rule;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
+import simpview.scene.SceneException;
 import simpview.surface.PageCanvas;
 
 /**
@@ -35,7 +37,7 @@ final class A1Panels {
         PageCanvas canvas = new PageCanvas();
         try {
             Assignment1.page(page).draw(canvas, PageContext.defaults().withA1Rule(rule));
-        } catch (simpview.scene.SceneException e) {
+        } catch (SceneException e) {
             throw new AssertionError("the first assignment's pages read no files", e);
         }
         return canvas.snapshot();
@@ -120,7 +122,7 @@ final class A1Panels {
             for (int page = 1; page <= Assignment1.COUNT; page++) {
                 BufferedImage ours = ourPage(page, rule);
                 BufferedImage theirs = coursePicture(shared, page);
-                boolean differs = rule == A1Rule.SPEC || !java.util.Arrays.equals(
+                boolean differs = rule == A1Rule.SPEC || !Arrays.equals(
                         ours.getRGB(0, 0, ours.getWidth(), ours.getHeight(), null, 0, ours.getWidth()),
                         ourPage(page, A1Rule.SPEC).getRGB(0, 0, ours.getWidth(), ours.getHeight(), null, 0, ours.getWidth()));
                 if (args.length > 1 && differs) {

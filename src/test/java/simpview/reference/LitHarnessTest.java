@@ -2,6 +2,7 @@ package simpview.reference;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -48,9 +49,9 @@ class LitHarnessTest {
     @Test
     void theMeasureTellsTheShadingModesApart() throws Exception {
         Path a4 = CourseFiles.require("course-simp-a4");
-        java.awt.image.BufferedImage flat = ReferencePage.render(a4.resolve("page-b1.simp"));
-        java.awt.image.BufferedImage gouraud = ReferencePage.render(a4.resolve("page-b2.simp"));
-        java.awt.image.BufferedImage phong = ReferencePage.render(a4.resolve("page-b3.simp"));
+        BufferedImage flat = ReferencePage.render(a4.resolve("page-b1.simp"));
+        BufferedImage gouraud = ReferencePage.render(a4.resolve("page-b2.simp"));
+        BufferedImage phong = ReferencePage.render(a4.resolve("page-b3.simp"));
         double flatGouraud = LitReferenceComparisonTest.agreement(flat, gouraud);
         double gouraudPhong = LitReferenceComparisonTest.agreement(gouraud, phong);
         assertTrue(flatGouraud < LitReferenceComparisonTest.REQUIRED, "flat passes for gouraud: " + flatGouraud);

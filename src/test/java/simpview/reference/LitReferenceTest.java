@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -143,7 +144,7 @@ class LitReferenceTest {
         StringBuilder scene = new StringBuilder("ambient 1 1 1\nsurface 1 0.8 0.6\ndepth -20 -180 (0.2 0.4 0.6)\n");
         double[][] squares = {{-90, -40, -20}, {-25, 25, -100}, {40, 90, -180}};
         for (double[] s : squares) {
-            scene.append(String.format(java.util.Locale.ROOT,
+            scene.append(String.format(Locale.ROOT,
                     "polygon (%f, -25, %f) (%f, -25, %f) (%f, 25, %f)%npolygon (%f, -25, %f) (%f, 25, %f) (%f, 25, %f)%n",
                     s[0], s[2], s[1], s[2], s[1], s[2], s[0], s[2], s[1], s[2], s[0], s[2]));
         }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -100,6 +101,6 @@ class RefClipperTest {
     }
 
     private static void assertInside(double[] p) {
-        assertTrue(insideAll(p, 1e-9), () -> java.util.Arrays.toString(p) + " is outside");
+        assertTrue(insideAll(p, 1e-9), () -> Arrays.toString(p) + " is outside");
     }
 }

@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Deque;
 import java.util.List;
 import java.util.regex.Matcher;
@@ -33,7 +34,7 @@ final class ReferenceRenderer {
     ReferenceRenderer(double[] near, double[] far) {
         this.near = near;
         this.far = far;
-        java.util.Arrays.fill(zbuffer, -200);
+        Arrays.fill(zbuffer, -200);
     }
 
     void render(Path file) throws IOException {

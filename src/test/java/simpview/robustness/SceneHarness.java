@@ -11,6 +11,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import net.jqwik.api.lifecycle.LifecycleContext;
 import net.jqwik.api.lifecycle.SkipExecutionHook;
@@ -72,7 +74,7 @@ final class SceneHarness {
      */
     private static void checkNotText(SceneException e, String where) throws IOException {
         assertEquals("", e.lineText(), "a binary line is not shown" + where);
-        java.util.regex.Matcher m = java.util.regex.Pattern
+        Matcher m = Pattern
                 .compile("^not (?:a text file|UTF-8 text): byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)")
                 .matcher(e.problem());
         assertTrue(m.find(), "the byte, its offset and its line" + where);

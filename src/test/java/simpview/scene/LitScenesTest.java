@@ -16,6 +16,10 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import simpview.scene.simp.SceneLibrary;
 
 /** Lit scenes drawn end to end, checked against what the rules say by hand. */
 class LitScenesTest {
@@ -25,24 +29,24 @@ class LitScenesTest {
 
     private Path write(String name, String... lines) throws IOException {
         Path file = dir.resolve(name + ".simp");
-        Files.write(file, String.join("\n", lines).getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        Files.write(file, String.join("\n", lines).getBytes(StandardCharsets.UTF_8));
         return file;
     }
 
     private PageCanvas draw(String... lines) throws Exception {
         PageCanvas canvas = new PageCanvas();
-        ScenePipeline.draw(write("s", lines), canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE);
+        ScenePipeline.draw(write("s", lines), canvas, ScenePipeline.Options.lit(new SceneLibrary()), SceneMonitor.NONE);
         return canvas;
     }
 
     private SceneException failure(String... lines) throws Exception {
         Path file = write("bad", lines);
         return assertThrows(SceneException.class,
-                () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE));
+                () -> ScenePipeline.draw(file, new PageCanvas(), ScenePipeline.Options.lit(new SceneLibrary()), SceneMonitor.NONE));
     }
 
     /** A monitor that keeps every warning it is told in {@code warnings}. */
-    private static SceneMonitor keeping(java.util.List<String> warnings) {
+    private static SceneMonitor keeping(List<String> warnings) {
         return new SceneMonitor() {
             @Override
             public void warning(String message) {
@@ -52,9 +56,9 @@ class LitScenesTest {
     }
 
     /** The warnings of one drawing of {@code scene} on a fresh canvas, its files kept by {@code library}. */
-    private static java.util.List<String> warningsOf(Path scene, simpview.scene.simp.SceneLibrary library)
+    private static List<String> warningsOf(Path scene, SceneLibrary library)
             throws Exception {
-        java.util.List<String> warnings = new java.util.ArrayList<>();
+        List<String> warnings = new ArrayList<>();
         ScenePipeline.draw(scene, new PageCanvas(), ScenePipeline.Options.lit(library), keeping(warnings));
         return warnings;
     }
@@ -121,29 +125,29 @@ class LitScenesTest {
                 "polygon (-10, -10, -100) (10, -10, -100) (10, 10, -100)",
                 "polygon (70, -10, -160) (90, -10, -160) (90, 10, -160)");
         int y = 325 - 10;
-        assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, (int) ((-72 + 100) * 3.25), y)), "nearer than near");
-        assertEquals(java.util.List.of(128, 0, 128), list(rgb(canvas, (int) ((8 + 100) * 3.25), y)), "half way");
-        assertEquals(java.util.List.of(0, 0, 255), list(rgb(canvas, (int) ((88 + 100) * 3.25), y)), "farther than far");
+        assertEquals(List.of(255, 0, 0), list(rgb(canvas, (int) ((-72 + 100) * 3.25), y)), "nearer than near");
+        assertEquals(List.of(128, 0, 128), list(rgb(canvas, (int) ((8 + 100) * 3.25), y)), "half way");
+        assertEquals(List.of(0, 0, 255), list(rgb(canvas, (int) ((88 + 100) * 3.25), y)), "farther than far");
     }
 
-    private static java.util.List<Integer> list(int[] c) {
-        return java.util.List.of(c[0], c[1], c[2]);
+    private static List<Integer> list(int[] c) {
+        return List.of(c[0], c[1], c[2]);
     }
 
     @Test
     void withoutLightsAFilledPolygonIsKdTimesAmbient() throws Exception {
         PageCanvas canvas = draw("ambient 0.5 1 0.25", "surface 1 0.5 1",
                 "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)");
-        assertEquals(java.util.List.of(128, 128, 64), list(rgb(canvas, 325, 325)));
+        assertEquals(List.of(128, 128, 64), list(rgb(canvas, 325, 325)));
     }
 
     @Test
     void wirePolygonsAndLinesCarryKdUnlit() throws Exception {
         PageCanvas canvas = draw("ambient 0 0 0", "surface 0 1 0", "wire",
                 "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)", "line (-80, 80, -100) (80, 80, -100)");
-        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, 325, (int) (180 * 3.25))));
+        assertEquals(List.of(0, 255, 0), list(rgb(canvas, 325, (int) (180 * 3.25))));
         // The triangle's bottom-left corner is at panel (162.5, 162.5): the lines' rounded end is (163, 163).
-        assertEquals(java.util.List.of(0, 255, 0), list(rgb(canvas, 163, 163)));
+        assertEquals(List.of(0, 255, 0), list(rgb(canvas, 163, 163)));
     }
 
     @Test
@@ -243,7 +247,7 @@ class LitScenesTest {
      */
     @Test
     void aMissingFileInTheWorkingDirectoryGetsTheSameWords() throws Exception {
-        ScenePipeline.Options here = ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary())
+        ScenePipeline.Options here = ScenePipeline.Options.lit(new SceneLibrary())
                 .withWorkingDir(dir);
         Path obj = write("obj", "camera -1 -1 1 1 -1 -100", "obj \"x.obj\"");
         SceneException e = assertThrows(SceneException.class,
@@ -273,7 +277,7 @@ class LitScenesTest {
             {"light 1 -1 1 1 0", "9"}};
         for (String[] c : cases) {
             Path file = write("bad", c[0]);
-            simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+            SceneLibrary library = new SceneLibrary();
             for (int drawing = 0; drawing < 2; drawing++) {
                 SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(file, new PageCanvas(),
                         ScenePipeline.Options.lit(library), SceneMonitor.NONE));
@@ -284,15 +288,15 @@ class LitScenesTest {
 
     @Test
     void aColourOutsideZeroToOneIsClampedWithOneWarningNamingTheFirstLine() throws Exception {
-        java.util.List<String> warnings = new java.util.ArrayList<>();
+        List<String> warnings = new ArrayList<>();
         SceneMonitor monitor = keeping(warnings);
         PageCanvas canvas = new PageCanvas();
         ScenePipeline.draw(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
                 "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas,
-                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), monitor);
-        assertEquals(java.util.List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                ScenePipeline.Options.lit(new SceneLibrary()), monitor);
+        assertEquals(List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 warnings);
-        assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
+        assertEquals(List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
     }
 
     /**
@@ -304,20 +308,20 @@ class LitScenesTest {
     void aVertexBeyondTheDoublesIsNamedInALitSceneAndInAModel() throws Exception {
         Files.writeString(dir.resolve("ovf.obj"), "v -50 -50 -100\nv 1e308 -50 -100\nv 0 50 -100\nf 1 2 3\n"
                 + "v -50 -50 -100\nv 50 -50 -100\nv 0 50 -100\nf 4 5 6\n");
-        java.util.List<String> warnings = new java.util.ArrayList<>();
+        List<String> warnings = new ArrayList<>();
         PageCanvas canvas = new PageCanvas();
         ScenePipeline.draw(write("ovf", "ambient 1 1 1", "{", "scale 10 1 1", "obj ovf",
                 "polygon (-50, -50, -100) (1e308, -50, -100) (0, 50, -100)", "}"), canvas,
-                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(warnings));
-        assertEquals(java.util.List.of("ovf.obj:4 face (of the model drawn by ovf.simp:4 obj): a vertex comes out"
+                ScenePipeline.Options.lit(new SceneLibrary()), keeping(warnings));
+        assertEquals(List.of("ovf.obj:4 face (of the model drawn by ovf.simp:4 obj): a vertex comes out"
                 + " infinite or NaN in camera space (its numbers are finite, but the CTM takes them beyond about"
                 + " 1.8e308), so this primitive was not drawn, nor 1 more like it"), warnings);
-        assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the model's second face is drawn");
+        assertEquals(List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the model's second face is drawn");
         warnings.clear();
         ScenePipeline.draw(write("nanlit", "ambient 1 1 1", "polygon (0,0,-10)(50,0,-10)(0,50,-10)", "scale 1e300 1 1",
                 "line (0,0,-10)(1e10,0,-10)"), new PageCanvas(),
-                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(warnings));
-        assertEquals(java.util.List.of("nanlit.simp:4 line: a vertex comes out infinite or NaN in camera space (its"
+                ScenePipeline.Options.lit(new SceneLibrary()), keeping(warnings));
+        assertEquals(List.of("nanlit.simp:4 line: a vertex comes out infinite or NaN in camera space (its"
                 + " numbers are finite, but the CTM takes them beyond about 1.8e308), so this primitive was not drawn"),
                 warnings);
     }
@@ -326,29 +330,29 @@ class LitScenesTest {
     void aModelsColourOutsideZeroToOneIsClampedWithTheSameWarning() throws Exception {
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 2 0 0\nv 0 50 -100 1 -1 0\nf 1 2 3\n");
         for (int drawing = 0; drawing < 2; drawing++) { // the model parsed, then kept and replayed
-            java.util.List<String> warnings = new java.util.ArrayList<>();
+            List<String> warnings = new ArrayList<>();
             SceneMonitor monitor = keeping(warnings);
-            simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+            SceneLibrary library = new SceneLibrary();
             PageCanvas canvas = new PageCanvas();
             Path scene = write("m", "ambient 1 1 1", "obj \"m\"", "obj \"m\"");
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
-            assertEquals(java.util.List.of(
+            assertEquals(List.of(
                     "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)",
                     "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)"), warnings);
-            assertEquals(java.util.List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
+            assertEquals(List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
         }
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
-        java.util.List<String> none = new java.util.ArrayList<>();
+        List<String> none = new ArrayList<>();
         ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\""), new PageCanvas(),
-                ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(none));
-        assertEquals(java.util.List.of(), none, "colours within 0 to 1 warn of nothing");
+                ScenePipeline.Options.lit(new SceneLibrary()), keeping(none));
+        assertEquals(List.of(), none, "colours within 0 to 1 warn of nothing");
         // the first in reading order, a model's or the scene's own
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 2 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
-        java.util.List<String> first = new java.util.ArrayList<>();
+        List<String> first = new ArrayList<>();
         ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\"", "line (0 0 -5 1.5 0 0) (1 1 -5 0 0 0)"),
-                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), keeping(first));
-        assertEquals(java.util.List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
+                new PageCanvas(), ScenePipeline.Options.lit(new SceneLibrary()), keeping(first));
+        assertEquals(List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
                 first);
     }
 
@@ -362,10 +366,10 @@ class LitScenesTest {
     void aModelsDecimalCommasAreNamedBeforeTheClampTheyCause() throws Exception {
         Files.writeString(dir.resolve("de.obj"), "v 0,5 -1,0 -4,0\nv 1,0 0,0 -4,0\nv 0,0 1,0 -4,0\nf 1 2 3\n");
         Path scene = write("de", "obj \"de\"");
-        simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+        SceneLibrary library = new SceneLibrary();
         for (int drawing = 0; drawing < 2; drawing++) {
-            java.util.List<String> warnings = warningsOf(scene, library);
-            assertEquals(java.util.List.of("de.obj:1:3: '0,5' is read as two numbers, so this v line's 6 numbers are"
+            List<String> warnings = warningsOf(scene, library);
+            assertEquals(List.of("de.obj:1:3: '0,5' is read as two numbers, so this v line's 6 numbers are"
                     + " x y z r g b (a comma separates two numbers: one and a half is 1.5, not 1,5); this is the first"
                     + " such line", "de.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)",
                     "de.simp: every lit polygon came out black: the scene has no light and no ambient (ambient 0 0 0)"
@@ -384,20 +388,20 @@ class LitScenesTest {
         Files.writeString(dir.resolve("empty.obj"), "");
         Files.writeString(dir.resolve("tri.obj"), "v -50 -50 -100\nv 50 -50 -100\nv 0 50 -100\nf 1 2 3\n");
         Path scene = write("s", "ambient 1 1 1", "obj \"empty\"", "obj \"tri\"", "obj \"empty\"");
-        simpview.scene.simp.SceneLibrary library = new simpview.scene.simp.SceneLibrary();
+        SceneLibrary library = new SceneLibrary();
         for (int drawing = 0; drawing < 2; drawing++) {
-            java.util.List<String> warnings = warningsOf(scene, library);
-            assertEquals(java.util.List.of("empty.obj: no f lines, so nothing is drawn (the file is empty)"), warnings,
+            List<String> warnings = warningsOf(scene, library);
+            assertEquals(List.of("empty.obj: no f lines, so nothing is drawn (the file is empty)"), warnings,
                     "drawing " + drawing);
         }
-        Files.write(dir.resolve("notepad.obj"), "\uFEFFv 0 0 0\r\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        Files.write(dir.resolve("notepad.obj"), "\uFEFFv 0 0 0\r\n".getBytes(StandardCharsets.UTF_16LE));
         PageCanvas canvas = new PageCanvas();
         SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(
                 write("u", "ambient 1 1 1", "obj \"tri\"", "obj \"notepad\""), canvas,
                 ScenePipeline.Options.lit(library), SceneMonitor.NONE));
         assertTrue(e.getMessage().contains("notepad.obj:1:1, included from u.simp:3: UTF-16 text, not UTF-8"),
                 e.getMessage());
-        assertEquals(java.util.List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the triangle before it stays");
+        assertEquals(List.of(255, 255, 255), list(rgb(canvas, 325, 325)), "the triangle before it stays");
     }
 
     /** An obj name that misses its model only by case, as the course's Windows users write it, names the model. */
@@ -405,7 +409,7 @@ class LitScenesTest {
     void aModelNamedInAnotherCaseIsNamed() throws Exception {
         Files.writeString(dir.resolve("Teapot.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
         SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.draw(write("t", "obj \"teapot\""),
-                new PageCanvas(), ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), SceneMonitor.NONE));
+                new PageCanvas(), ScenePipeline.Options.lit(new SceneLibrary()), SceneMonitor.NONE));
         assertTrue(e.problem().startsWith("file not found: teapot.obj (there is Teapot.obj: names are case-sensitive"
                 + " here); looked for "), e.problem());
     }

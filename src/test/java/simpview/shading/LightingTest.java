@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 
@@ -198,7 +199,7 @@ class LightingTest {
             PlainLighting s = scene(0, 0, 8).light(0, 0, k[4], k[0], k[0], k[0], k[1], k[2]);
             s.perspective = k[3] != 0;
             assertArrayEquals(expected, shade(s.toLighting(), new double[] {0, 0, k[3]}, UP, kd), 0,
-                    java.util.Arrays.toString(k));
+                    Arrays.toString(k));
         }
         // A channel the light has none of keeps its ambient term, even where f is infinite.
         PlainLighting dark = scene(0.1, 0, 8).light(0, 0, -60, 1e300, 0, 1e300, 0, 0);

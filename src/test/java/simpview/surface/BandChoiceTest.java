@@ -9,6 +9,7 @@ import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -72,7 +73,7 @@ class BandChoiceTest {
         Path small = scene("small.simp", 4200, 1);
         Path large = scene("large.simp", 12, 120);
         int[] oneThread = pixels(small, DrawingThreads.one(), new long[1]);
-        assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
+        assertTrue(Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
                 "the faces are drawn");
         long[] tasks = new long[1];
         // 4,200 faces: batches of 16, 32, ... 2,048 faces (4,080 in all, BatchDrawing), each handed off and
@@ -105,7 +106,7 @@ class BandChoiceTest {
         Files.writeString(fills, s);
         long[] tasks = new long[1];
         int[] oneThread = pixels(fills, DrawingThreads.one(), new long[1]);
-        assertTrue(java.util.Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count()
+        assertTrue(Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count()
                 > 100_000, "the fills are drawn");
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();

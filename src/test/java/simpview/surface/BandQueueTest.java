@@ -6,7 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -153,9 +156,9 @@ class BandQueueTest {
             String caller = Thread.currentThread().getName();
             List<String> lines = new ArrayList<>(told.lines);
             List<String> handOffs = new ArrayList<>();
-            java.util.Map<String, String> drawingOn = new java.util.HashMap<>();
-            java.util.Map<String, Boolean> parkedOn = new java.util.HashMap<>();
-            Set<String> drawnItems = new java.util.HashSet<>();
+            Map<String, String> drawingOn = new HashMap<>();
+            Map<String, Boolean> parkedOn = new HashMap<>();
+            Set<String> drawnItems = new HashSet<>();
             for (String line : lines) {
                 String thread = line.substring(0, line.indexOf(' '));
                 String what = line.substring(thread.length() + 1);

@@ -3,6 +3,7 @@ package simpview.surface;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.awt.image.BufferedImage;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /** The two blending decorators: coverage (c colour + (1 - c) old) and the ghost (white at 0.14). */
@@ -59,7 +60,7 @@ class CoverageAndGhostTest {
     /** A ghost span means what its pixels one by one mean, over any greys and colours, clipped by a panel. */
     @Test
     void aGhostSpanIsItsPixelsOneByOne() {
-        java.util.Random random = new java.util.Random(5);
+        Random random = new Random(5);
         ImageDrawable spans = image(Colors.BLACK);
         ImageDrawable pixels = image(Colors.BLACK);
         ImageDrawable[] both = {spans, pixels};

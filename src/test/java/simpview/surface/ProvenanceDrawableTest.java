@@ -3,12 +3,13 @@ package simpview.surface;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
-import simpview.geometry.Camera;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import org.junit.jupiter.api.Test;
+import simpview.geometry.Camera;
 import simpview.geometry.Vertex;
 import simpview.raster.DdaLineRenderer;
 import simpview.raster.FilledPolygonRenderer;
@@ -35,7 +36,7 @@ class ProvenanceDrawableTest {
         RecordingDrawable writes = new RecordingDrawable(SIZE, SIZE);
         Drawable reference = new ScissorDrawable(Camera.PARALLEL, new ZBufferDrawable(new ZBuffer(SIZE, SIZE), writes));
         int[] expected = new int[SIZE * SIZE];
-        java.util.Arrays.fill(expected, Provenance.BACKGROUND);
+        Arrays.fill(expected, Provenance.BACKGROUND);
         int primitives = 1 + random.nextInt(40);
         for (int k = 0; k < primitives; k++) {
             Vertex[] v = {vertex(random), vertex(random), vertex(random)};
@@ -91,7 +92,7 @@ class ProvenanceDrawableTest {
         }
         int[] left = plain.image().getRGB(0, 0, PageCanvas.SIZE, PageCanvas.SIZE, null, 0, PageCanvas.SIZE);
         int[] right = recording.image().getRGB(0, 0, PageCanvas.SIZE, PageCanvas.SIZE, null, 0, PageCanvas.SIZE);
-        assertTrue(java.util.Arrays.equals(left, right), "the record never changes a pixel");
+        assertTrue(Arrays.equals(left, right), "the record never changes a pixel");
         recording.clear();
         assertEquals(Provenance.BACKGROUND, recording.provenance().ownerAt(325, 325), "cleared with the canvas");
     }

@@ -3,6 +3,7 @@ package simpview.surface;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -30,7 +31,7 @@ class ZBufferSpanTest {
         final List<RecordingDrawable.Write> writes = new ArrayList<>();
 
         PlainDepthTest() {
-            java.util.Arrays.fill(depth, FAR);
+            Arrays.fill(depth, FAR);
         }
 
         void fill(Span s) {

@@ -6,10 +6,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import simpview.scene.SceneException;
+import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
-import simpview.surface.PageCanvas;
 import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
 
 /**
  * The golden images of lit scenes: the project's own (own-lit-shading,
@@ -48,7 +49,7 @@ public final class LitGoldens {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 PageCanvas canvas = new PageCanvas();
                 canvas.drawWith(drawing);
-                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()),
+                ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new SceneLibrary()),
                         SceneMonitor.NONE);
                 return canvas.snapshot();
             }

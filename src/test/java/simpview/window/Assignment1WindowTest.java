@@ -6,12 +6,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Point;
 import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.util.Arrays;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import simpview.pages.A1Lines;
+import simpview.pages.A1Marks;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
-import simpview.pages.A1Marks;
 import simpview.scene.simp.SceneDrawer;
 import simpview.surface.PageCanvas;
 import simpview.testing.Images;
@@ -87,7 +90,7 @@ public class Assignment1WindowTest extends WindowTestCase {
     }
 
     /** Page 1 drawn with every panel's first n lines, as the window should show it while stepping. */
-    private static java.awt.image.BufferedImage firstLines(int page, int n) {
+    private static BufferedImage firstLines(int page, int n) {
         PageCanvas canvas = new PageCanvas();
         Assignment1.page(page).drawSteps(canvas, PageContext.defaults().withSeed(SEED), n);
         return canvas.image();
@@ -110,7 +113,7 @@ public class Assignment1WindowTest extends WindowTestCase {
         assertEquals(16, marks.given().length, "one segment in each of the four panels");
         // Panel 2's: pixel centres at integer panel coordinates, rows down in the image.
         assertArrayEquals(new double[] {400 + 150.5, 50 + 299.5 - 150, 400 + 285.5, 50 + 299.5 - 150},
-                java.util.Arrays.copyOfRange(marks.given(), 4, 8), 1e-9);
+                Arrays.copyOfRange(marks.given(), 4, 8), 1e-9);
         driver.press(KeyEvent.VK_CLOSE_BRACKET);
         driver.awaitEdt(() -> !driver.window().busy() && driver.window().status().messageText().startsWith("line 2 of 90"),
                 "stepping at line 2");
@@ -131,8 +134,8 @@ public class Assignment1WindowTest extends WindowTestCase {
         driver.robot().mouseMove(pixel.x, pixel.y);
         driver.awaitEdt(() -> driver.window().pageView().marks().given().length == 4, "the magnifier's line");
         A1Marks spoke = driver.onEdt(() -> driver.window().pageView().marks());
-        double ex = 150 + 135 * Math.cos(23 * simpview.pages.A1Lines.STEP);
-        double ey = 150 + 135 * Math.sin(23 * simpview.pages.A1Lines.STEP);
+        double ex = 150 + 135 * Math.cos(23 * A1Lines.STEP);
+        double ey = 150 + 135 * Math.sin(23 * A1Lines.STEP);
         assertArrayEquals(new double[] {400 + 150.5, 50 + 299.5 - 150, 400 + ex + 0.5, 50 + 299.5 - ey},
                 spoke.given(), 1e-9, "as given");
         assertArrayEquals(new double[] {400 + 150.5, 50 + 299.5 - 150, 400 + 145.5, 50 + 299.5 - 285},

@@ -25,6 +25,7 @@ import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
+import java.awt.Point;
 
 /** Compare mode in the real window under Xvfb: drop a picture, flip with B, heat map with H, stop with Backspace. */
 public class ComparisonWindowTest extends WindowTestCase {
@@ -91,7 +92,7 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertTrue(expected.share(0, true) < 0.99, "the square differs");
         assertEquals(0, driver.screenDiffersFrom(ours), "ours first");
         // The inspector shows both pictures at the pixel: in the square, ours and their cyan.
-        java.awt.Point inSquare = driver.onScreen(50 + 350, 50 + 350);
+        Point inSquare = driver.onScreen(50 + 350, 50 + 350);
         driver.robot().mouseMove(inSquare.x, inSquare.y);
         String ourPixel = Inspector.rgb(ours.getRGB(400, 400));
         driver.awaitEdt(() -> driver.window().status().inspectorText().contains("rgb")

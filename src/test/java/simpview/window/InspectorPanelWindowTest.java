@@ -8,8 +8,10 @@ import java.awt.Point;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.JViewport;
+import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import simpview.surface.PageCanvas;
 
@@ -41,7 +43,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         assertTrue(text.contains("vertices of primitive 2:"), text);
         // Wrapped in a scrolling view that is as wide as the panel: no line runs off its right edge.
         boolean wraps = driver.onEdt(() -> {
-            JViewport port = (JViewport) javax.swing.SwingUtilities.getAncestorOfClass(JViewport.class, textArea(window));
+            JViewport port = (JViewport) SwingUtilities.getAncestorOfClass(JViewport.class, textArea(window));
             return textArea(window).getLineWrap() && textArea(window).getWidth() <= port.getWidth();
         });
         assertTrue(wraps, "the panel's text wraps within its width");
@@ -175,7 +177,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
     }
 
     private static JTextArea textArea(SimpviewWindow window) {
-        return (JTextArea) ((javax.swing.JScrollPane) window.inspectorPanel().component()).getViewport().getView();
+        return (JTextArea) ((JScrollPane) window.inspectorPanel().component()).getViewport().getView();
     }
 
     /** G in a scene that draws nothing says so; it asked "Go to primitive (1 to 0)" in a dialog. */

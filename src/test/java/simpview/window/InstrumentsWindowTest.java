@@ -26,6 +26,15 @@ import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import simpview.pages.ZBufferPage;
 import simpview.surface.PageCanvas;
+import java.awt.Component;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.event.InputEvent;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import simpview.scene.simp.SceneCancelledException;
+import simpview.scene.simp.ScenePipeline;
 
 /** The window's instruments under Xvfb, driven with java.awt.Robot: zoom, grid, inspector, depth view, reload. */
 public class InstrumentsWindowTest extends WindowTestCase {
@@ -144,11 +153,11 @@ public class InstrumentsWindowTest extends WindowTestCase {
         int grey = (int) Math.round(ZBufferPage.grey(nearest) * 255);
         String z = Inspector.number(triangles[nearest][0].z());
         // Scaled to fit on a small screen, the pointer may land a pixel off the centre: the same triangle is there.
-        java.util.regex.Pattern expected = java.util.regex.Pattern.compile(
+        Pattern expected = Pattern.compile(
                 "x (\\d+), y (\\d+) \\(image row \\d+\\) · rgb " + grey + " " + grey + " " + grey + " = .*");
         driver.awaitEdt(() -> expected.matcher(window().status().inspectorText()).matches(), "the inspector on the centre");
         String line = driver.onEdt(() -> window().status().inspectorText());
-        java.util.regex.Matcher at = expected.matcher(line);
+        Matcher at = expected.matcher(line);
         assertTrue(at.matches(), line);
         assertTrue(Math.abs(Integer.parseInt(at.group(1)) - px) <= 2 && Math.abs(Integer.parseInt(at.group(2)) - py) <= 2, line);
         assertTrue(line.contains("depth " + z), line);
@@ -195,7 +204,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         assertEquals(line, driver.onEdt(() -> window().status().inspectorToolTip()));
 
         Point onTheLine = driver.onEdt(() -> {
-            java.awt.Component strip = window().status().component();
+            Component strip = window().status().component();
             Point corner = strip.getLocationOnScreen();
             return new Point(corner.x + strip.getWidth() / 2, corner.y + 10);
         });
@@ -222,7 +231,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window().status().messageText().startsWith("Copied: " + place + " (with the panel open"),
                 "the owner's place copied: " + place);
         assertEquals(place, Toolkit.getDefaultToolkit().getSystemClipboard()
-                .getData(java.awt.datatransfer.DataFlavor.stringFlavor));
+                .getData(DataFlavor.stringFlavor));
     }
 
     @Test
@@ -284,7 +293,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
         open();
         driver.onEdt(() -> window().openScene(scene));
         RenderedView before = driver.awaitShown(new View.OfScene(scene));
-        assertEquals(java.util.List.of(scene, part), driver.onEdt(() -> window().watcher().watched()));
+        assertEquals(List.of(scene, part), driver.onEdt(() -> window().watcher().watched()));
         Files.writeString(part, triangleAt(-50));
         long saved = System.nanoTime();
         driver.awaitEdt(() -> window().shown().image().getRGB(375, 375) != before.image().getRGB(375, 375),
@@ -355,11 +364,11 @@ public class InstrumentsWindowTest extends WindowTestCase {
         Point from = driver.onScreen(375, 375);
         var robot = driver.robot();
         robot.mouseMove(from.x, from.y);
-        robot.mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        robot.mousePress(InputEvent.BUTTON3_DOWN_MASK);
         for (int k = 1; k <= 6; k++) {
             robot.mouseMove(from.x + 10 * k, from.y + 4 * k);
         }
-        robot.mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
         robot.mouseMove(1, 1);
         driver.awaitEdt(() -> !window().busy() && Images.differingPixels(four.image(), window().shown().image()) > 1000
                 && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
@@ -485,11 +494,11 @@ public class InstrumentsWindowTest extends WindowTestCase {
 
         // A right-drag moves the camera about the scene; O puts it back bit for bit.
         driver.robot().mouseMove(centre.x, centre.y);
-        driver.robot().mousePress(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        driver.robot().mousePress(InputEvent.BUTTON3_DOWN_MASK);
         for (int k = 1; k <= 6; k++) {
             driver.robot().mouseMove(centre.x + 12 * k, centre.y + 3 * k);
         }
-        driver.robot().mouseRelease(java.awt.event.InputEvent.BUTTON3_DOWN_MASK);
+        driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
         driver.awaitEdt(() -> !window().busy() && Images.differingPixels(all.image(), window().shown().image()) > 1000
                 && window().shown().facts().owners() != null, "a turned picture, recorded again once the drag ended");
         assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("turned "));
@@ -510,24 +519,24 @@ public class InstrumentsWindowTest extends WindowTestCase {
         assertTrue(Files.size(scene) > (1 << 20));
         // A stand-in that stops half way, still reporting, until the test has seen the fraction: however
         // busy the machine, the scene cannot end before the progress bar shows (and the count is known).
-        java.util.concurrent.atomic.AtomicBoolean seen = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean seen = new AtomicBoolean();
         SceneDrawer halfWayUntilSeen = (file, canvas, options, monitor) -> {
             for (long read = 1000; read <= lines; read += 1000) {
                 monitor.linesRead(read);
                 monitor.topFileRead((double) read / lines);
                 while (read == lines / 2 && !seen.get()) {
                     if (monitor.cancelled()) {
-                        throw new simpview.scene.simp.SceneCancelledException();
+                        throw new SceneCancelledException();
                     }
                     monitor.linesRead(read);
                     try {
                         Thread.sleep(5);
                     } catch (InterruptedException e) {
-                        throw new simpview.scene.simp.SceneCancelledException();
+                        throw new SceneCancelledException();
                     }
                 }
             }
-            return new simpview.scene.simp.ScenePipeline.Drawn(false, null, true, java.util.List.of(file));
+            return new ScenePipeline.Drawn(false, null, true, List.of(file));
         };
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()),
                 halfWayUntilSeen);

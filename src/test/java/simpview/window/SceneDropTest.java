@@ -8,6 +8,7 @@ import java.awt.datatransfer.DataFlavor;
 import java.awt.datatransfer.StringSelection;
 import java.awt.datatransfer.Transferable;
 import java.io.File;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -50,7 +51,7 @@ public class SceneDropTest {
         List<Path> checked = new ArrayList<>();
         List<Path> compared = new ArrayList<>();
         SceneDrop checking = new SceneDrop(opened::add, compared::add, checked::add, told::add);
-        Path folder = java.nio.file.Files.createDirectories(dir.resolve("my pages"));
+        Path folder = Files.createDirectories(dir.resolve("my pages"));
         assertTrue(checking.importData(support(files("notes.txt", folder.toString()))));
         assertEquals(List.of(folder), checked);
         assertFalse(checking.importData(support(files("notes.txt"))));

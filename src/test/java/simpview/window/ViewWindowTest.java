@@ -4,9 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.KeyboardFocusManager;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
+import java.awt.Window;
 import java.awt.datatransfer.DataFlavor;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -14,15 +18,21 @@ import java.awt.geom.Rectangle2D;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JDialog;
+import javax.swing.JFileChooser;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
+import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import simpview.scene.simp.SceneDrawer;
 import simpview.surface.PageCanvas;
+import simpview.testing.CourseFiles;
 import simpview.window.render.RenderedView;
 import simpview.window.render.View;
 
@@ -70,8 +80,8 @@ public class ViewWindowTest extends WindowTestCase {
 
         // Shift+G: go to panel pixel (325, 330), typed; it is pinned, the panel shows it, the image's row is said.
         driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_G);
-        driver.awaitEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
-                instanceof javax.swing.JTextField, "the go-to-pixel dialog");
+        driver.awaitEdt(() -> KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
+                instanceof JTextField, "the go-to-pixel dialog");
         // Typed without waiting for the toolkit to be idle after each key: under a modal dialog that wait
         // (Robot.waitForIdle) can run into its timeout, seconds a key; the X server keeps the keys' order.
         for (int key : new int[] {KeyEvent.VK_3, KeyEvent.VK_2, KeyEvent.VK_5, KeyEvent.VK_COMMA, KeyEvent.VK_3,
@@ -144,13 +154,13 @@ public class ViewWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window.isOn(WindowAction.DEPTH_VIEW), "the depth view on");
         JMenuItem depth = chooseFromMenu(window, "VIEW", WindowAction.DEPTH_VIEW);
         driver.awaitEdt(() -> !window.isOn(WindowAction.DEPTH_VIEW), "the depth view off again");
-        assertTrue(driver.onEdt(() -> depth instanceof javax.swing.JCheckBoxMenuItem));
+        assertTrue(driver.onEdt(() -> depth instanceof JCheckBoxMenuItem));
         // Page > Page 3, clicked: page 3, as the key 3 does.
         chooseFromMenu(window, "PAGE", WindowAction.PAGE_3);
         driver.awaitShown(new View.OfPage(3));
         assertFalse(driver.onEdt(window::busy));
         // Page > Assignment 3: the course's A3 pages (pageA ... tomsPageJ), stepped by the page keys.
-        simpview.testing.CourseFiles.require("course-simp-a3");
+        CourseFiles.require("course-simp-a3");
         Path a3 = CoursePageSet.folder(TestScenes.courseSimpDir(), 3);
         chooseFromMenu(window, "PAGE", WindowAction.ASSIGNMENT_3);
         driver.awaitShown(new View.OfScene(a3.resolve("pageA.simp")));
@@ -217,11 +227,11 @@ public class ViewWindowTest extends WindowTestCase {
     /** The folder File > Open's dialog starts in, read from the dialog itself, which is then cancelled. */
     private Path openDialogFolder(SimpviewWindow window) throws Exception {
         SwingUtilities.invokeLater(() -> window.perform(WindowAction.OPEN)); // modal: it returns when the dialog closes
-        java.util.concurrent.atomic.AtomicReference<javax.swing.JFileChooser> found =
-                new java.util.concurrent.atomic.AtomicReference<>();
+        AtomicReference<JFileChooser> found =
+                new AtomicReference<>();
         driver.awaitEdt(() -> {
-            for (java.awt.Window w : java.awt.Window.getWindows()) {
-                if (w.isShowing() && w instanceof javax.swing.JDialog dialog) {
+            for (Window w : Window.getWindows()) {
+                if (w.isShowing() && w instanceof JDialog dialog) {
                     found.set(chooserIn(dialog.getContentPane()));
                 }
             }
@@ -233,12 +243,12 @@ public class ViewWindowTest extends WindowTestCase {
         return folder;
     }
 
-    private static javax.swing.JFileChooser chooserIn(java.awt.Container container) {
-        for (java.awt.Component c : container.getComponents()) {
-            if (c instanceof javax.swing.JFileChooser chooser) {
+    private static JFileChooser chooserIn(Container container) {
+        for (Component c : container.getComponents()) {
+            if (c instanceof JFileChooser chooser) {
                 return chooser;
             }
-            if (c instanceof java.awt.Container inner && chooserIn(inner) != null) {
+            if (c instanceof Container inner && chooserIn(inner) != null) {
                 return chooserIn(inner);
             }
         }

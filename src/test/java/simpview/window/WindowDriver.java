@@ -33,6 +33,8 @@ import javax.imageio.ImageIO;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
 import simpview.surface.PageCanvas;
+import java.awt.Dimension;
+import java.util.function.ToLongFunction;
 
 /** Drives the real window the way a person would: java.awt.Robot clicks, keys and screen captures. */
 public final class WindowDriver {
@@ -160,7 +162,7 @@ public final class WindowDriver {
     private void pinWindow() throws Exception {
         // Near the top-left corner, but wholly on a screen that has little room (1366x768).
         Rectangle screen = onEdt(() -> window.frame().getGraphicsConfiguration().getBounds());
-        java.awt.Dimension size = onEdt(() -> window.frame().getSize());
+        Dimension size = onEdt(() -> window.frame().getSize());
         int left = Math.max(0, Math.min(PIN_X, screen.width - size.width - 10));
         int top = Math.max(0, Math.min(PIN_Y, screen.height - size.height));
         for (int attempt = 0; attempt < 10; attempt++) {
@@ -399,7 +401,7 @@ public final class WindowDriver {
      * rounding can pick either, one of that pixel's neighbours.
      */
     private long scaledScreenDiffersFrom(BufferedImage page, double zoom) throws Exception {
-        java.util.function.ToLongFunction<BufferedImage> count = screen -> {
+        ToLongFunction<BufferedImage> count = screen -> {
             long differing = 0;
             for (int sy = 0; sy < screen.getHeight(); sy++) {
                 for (int sx = 0; sx < screen.getWidth(); sx++) {

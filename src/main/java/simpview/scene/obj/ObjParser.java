@@ -18,6 +18,7 @@ import simpview.scene.text.DecimalParser;
 import simpview.scene.text.LineSource;
 import simpview.scene.text.NotText;
 import simpview.scene.text.TrailingComment;
+import java.util.Locale;
 
 /**
  * Reads the lines of one .obj file straight from the bytes of its buffer (no
@@ -315,7 +316,7 @@ final class ObjParser {
         }
         String keyword = word.substring(start, letters);
         boolean stuck = start > 0 || letters < word.length() && word.charAt(letters) >= 0x80;
-        if (stuck && List.of("v", "vn", "vt", "f").contains(keyword.toLowerCase(java.util.Locale.ROOT))) {
+        if (stuck && List.of("v", "vn", "vt", "f").contains(keyword.toLowerCase(Locale.ROOT))) {
             throw error(i, "this line's first word reads '" + printable(word) + "'"
                     + CopiedText.hint(word, "the word and what follows it are written in ASCII, a plain space between them") + " (as it is, the word is not '"
                     + keyword + "', and the line would be passed over as one simpview does not read)");

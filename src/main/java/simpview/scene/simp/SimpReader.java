@@ -3,6 +3,7 @@ package simpview.scene.simp;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Locale;
 import simpview.geometry.Axis;
 import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
@@ -472,14 +473,14 @@ public final class SimpReader implements AutoCloseable {
      * is named .obj, or its first command is one a model's lines start with.
      */
     private boolean readsAModel(String word) {
-        return file().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj")
+        return file().toString().toLowerCase(Locale.ROOT).endsWith(".obj")
                 || !commandRead && Keywords.startsModelLine(word);
     }
 
     /** What to do with a model read as a scene: draw it from a scene's obj line, in a lit scene. */
     private String modelHint() {
         String name = file().getFileName().toString();
-        boolean obj = name.toLowerCase(java.util.Locale.ROOT).endsWith(".obj");
+        boolean obj = name.toLowerCase(Locale.ROOT).endsWith(".obj");
         String stem = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
         // obj "up" looks for up.obj, names being case-sensitive: up.OBJ is found only once renamed
         String rename = obj && !name.endsWith(".obj") ? " (once the file is renamed " + stem + ".obj: obj adds .obj in"

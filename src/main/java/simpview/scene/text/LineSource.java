@@ -8,6 +8,7 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.Arrays;
 import java.util.zip.CRC32C;
 import simpview.scene.SceneException;
 
@@ -368,14 +369,14 @@ public final class LineSource {
      */
     public byte[] head(int n) throws IOException {
         if (!fileBacked) {
-            return java.util.Arrays.copyOf(buf, Math.min(n, limit));
+            return Arrays.copyOf(buf, Math.min(n, limit));
         }
         try (FileChannel c = FileChannel.open(path, StandardOpenOption.READ)) {
             ByteBuffer head = ByteBuffer.allocate(n);
             while (head.hasRemaining() && c.read(head) >= 0) {
                 // reads until n bytes or the end of the file
             }
-            return java.util.Arrays.copyOf(head.array(), head.position());
+            return Arrays.copyOf(head.array(), head.position());
         }
     }
 

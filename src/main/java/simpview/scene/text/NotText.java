@@ -1,5 +1,7 @@
 package simpview.scene.text;
 
+import java.nio.charset.Charset;
+
 /**
  * What a file that is not lines of UTF-8 text is, for a reader's message:
  * UTF-16 text (what Windows Notepad saves as "Unicode") or UTF-32, text in
@@ -76,7 +78,7 @@ public record NotText(int line, int column, String problem) {
 
     /** The character byte {@code value} (0x80 up) is in Windows-1252 (Latin-1's superset), when it is a letter or sign; else null. */
     private static String latin1(int value) {
-        String c = new String(new byte[] {(byte) value}, java.nio.charset.Charset.forName("windows-1252"));
+        String c = new String(new byte[] {(byte) value}, Charset.forName("windows-1252"));
         return c.length() == 1 && c.charAt(0) != '\uFFFD' && !Character.isISOControl(c.charAt(0))
                 && !Character.isSpaceChar(c.charAt(0)) ? c : null;
     }

@@ -2,6 +2,7 @@ package simpview.window.instruments;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.util.Arrays;
 import simpview.geometry.Camera;
 import simpview.surface.Colors;
 import simpview.surface.PageCanvas;
@@ -66,7 +67,7 @@ public final class DepthPicture {
         }
         BufferedImage image = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE, BufferedImage.TYPE_INT_RGB);
         int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
-        java.util.Arrays.fill(pixels, Colors.WHITE);
+        Arrays.fill(pixels, Colors.WHITE);
         int panel = PageCanvas.PANEL;
         for (int y = 0; y < panel; y++) {
             int row = (PageCanvas.MARGIN + panel - 1 - y) * PageCanvas.SIZE + PageCanvas.MARGIN;

@@ -7,12 +7,14 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.statistics.Statistics;
+import simpview.scene.SceneException;
 import simpview.scene.obj.CollectedFaces.Corner;
 import simpview.scene.obj.CollectedFaces.Face;
-import simpview.scene.SceneException;
 
 /**
  * Random models written every way the subset allows (any case, any
@@ -198,7 +200,7 @@ class ObjFuzzTest {
         } catch (SceneException e) {
             Statistics.collect("error");
             assertTrue(e.line() >= 1 && e.line() <= lines.length, e.getMessage());
-            java.util.regex.Matcher notText = java.util.regex.Pattern
+            Matcher notText = Pattern
                     .compile("^not a text file: byte 0x([0-9A-F]{2}) at offset (\\d+) \\(line (\\d+)\\)")
                     .matcher(e.problem());
             if (notText.find()) { // the junk's NUL: that byte, on that line, and none of the file's bytes shown

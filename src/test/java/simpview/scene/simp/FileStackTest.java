@@ -16,6 +16,7 @@ import simpview.geometry.Vertex;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.scene.SceneException;
+import simpview.testing.RecordingDrawable;
 
 /** The stack of files: includes, their errors, depth and file descriptors. */
 class FileStackTest {
@@ -247,8 +248,8 @@ class FileStackTest {
         assertEquals(depth, deepest[0]);
         assertTrue(mostOpen[0] <= FileStack.MAX_OPEN, "open files: " + mostOpen[0]);
         // The innermost file draws first, then each level on the way back out.
-        assertEquals(simpview.geometry.Camera.PARALLEL.panelX((depth - 1) / 10.0, 0), order.get(0));
-        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(0, 0), order.get(depth - 1));
+        assertEquals(Camera.PARALLEL.panelX((depth - 1) / 10.0, 0), order.get(0));
+        assertEquals(Camera.PARALLEL.panelX(0, 0), order.get(depth - 1));
         assertEquals(0, files.depth());
     }
 
@@ -279,8 +280,8 @@ class FileStackTest {
         for (Vertex[] l : scene.lines) {
             xs.add(l[0].x());
         }
-        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(15.01, 0), xs.get(1501 + 2 * FileStack.MAX_OPEN));
-        assertEquals(simpview.geometry.Camera.PARALLEL.panelX(29.99, 0), xs.get(xs.size() - 1));
+        assertEquals(Camera.PARALLEL.panelX(15.01, 0), xs.get(1501 + 2 * FileStack.MAX_OPEN));
+        assertEquals(Camera.PARALLEL.panelX(29.99, 0), xs.get(xs.size() - 1));
     }
 
     @Test
@@ -331,7 +332,7 @@ class FileStackTest {
         Path page = Files.writeString(where.resolve("page4.simp"), "# page\n\n{\nfile \"box\"\n}\n");
         for (long readAheadFrom : new long[] {Long.MAX_VALUE, 0}) {
             SceneException e = assertThrows(SceneException.class, () -> new SimpInterpreter(
-                    new SimpClient(new simpview.testing.RecordingDrawable(650, 650)), SceneMonitor.NONE, readAheadFrom)
+                    new SimpClient(new RecordingDrawable(650, 650)), SceneMonitor.NONE, readAheadFrom)
                     .run(page));
             assertTrue(e.getMessage().startsWith(where.resolve("cube.simp") + ":3:1, included from box.simp:2, "
                     + "included from page4.simp:4: unknown command 'frobnicate'"), e.getMessage());
@@ -348,7 +349,7 @@ class FileStackTest {
         Files.writeString(where.resolve("b/part.simp"), "\nfile \"../a/part\"\n");
         Path top = Files.writeString(where.resolve("top.simp"), "file \"b/part\"\n");
         SceneException e = assertThrows(SceneException.class, () -> new SimpInterpreter(
-                new SimpClient(new simpview.testing.RecordingDrawable(650, 650)), SceneMonitor.NONE, Long.MAX_VALUE)
+                new SimpClient(new RecordingDrawable(650, 650)), SceneMonitor.NONE, Long.MAX_VALUE)
                 .run(top));
         // the path through "b/.." is shown without it
         assertTrue(e.getMessage().startsWith(where.resolve("a/part.simp") + ":1:1, included from "

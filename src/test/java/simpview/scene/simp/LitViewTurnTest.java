@@ -70,7 +70,7 @@ class LitViewTurnTest {
     private static BufferedImage draw(Path scene, Matrix4 turn) throws Exception {
         PageCanvas canvas = new PageCanvas();
         canvas.clear();
-        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new simpview.scene.simp.SceneLibrary()), new SceneMonitor() {
+        ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new SceneLibrary()), new SceneMonitor() {
             @Override
             public Matrix4 viewTurn() {
                 return turn;

@@ -14,6 +14,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.geometry.Vertex;
 import simpview.tools.shapes.ShapeGenerator;
+import java.util.HashSet;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Stream;
 
 /** The project's own scenes under simp/: generated files are up to date, pages 4 and 5 do what SPEC asks. */
 class OwnScenesTest {
@@ -37,15 +41,15 @@ class OwnScenesTest {
     @Test
     void everyGeneratedFileUnderSimpIsOneTheGeneratorWrites() throws Exception {
         // A file under simp/ that says it was generated must still come out of the generator.
-        java.util.Set<String> generated = new java.util.TreeSet<>();
-        try (java.util.stream.Stream<Path> files = Files.list(simpDir())) {
+        Set<String> generated = new TreeSet<>();
+        try (Stream<Path> files = Files.list(simpDir())) {
             for (Path f : (Iterable<Path>) files::iterator) {
                 if (Files.readString(f).contains("written by simpview.tools.shapes.ShapeGenerator")) {
                     generated.add(f.getFileName().toString());
                 }
             }
         }
-        assertEquals(new java.util.TreeSet<>(ShapeGenerator.shapes().keySet()), generated);
+        assertEquals(new TreeSet<>(ShapeGenerator.shapes().keySet()), generated);
     }
 
     @Test
@@ -80,7 +84,7 @@ class OwnScenesTest {
         SimpReader reader = SimpReader.open(simpDir().resolve("cube.simp"));
         Command c = new Command();
         int polygons = 0;
-        java.util.Set<String> corners = new java.util.HashSet<>();
+        Set<String> corners = new HashSet<>();
         while (reader.next(c)) {
             assertEquals(Command.Kind.POLYGON, c.kind());
             polygons++;

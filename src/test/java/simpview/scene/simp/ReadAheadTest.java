@@ -13,6 +13,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import java.util.function.IntPredicate;
@@ -213,7 +214,7 @@ class ReadAheadTest {
     @Test
     void errorInAnIncludedFileAndAMissingTopFile() throws IOException {
         String[] closing = new String[300];
-        java.util.Arrays.fill(closing, "}");
+        Arrays.fill(closing, "}");
         Path top = scene(1500, closing);
         Run serial = run(top, NEVER, Integer.MAX_VALUE, k -> false);
         assertSameRun(serial, run(top, ALWAYS, Integer.MAX_VALUE, k -> false));

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,7 +21,9 @@ import simpview.scene.SceneException;
 import simpview.scene.text.LineSource;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
+import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 
@@ -243,7 +246,7 @@ class ScenePipelineTest {
     @Test
     void aSceneSavedAsUtf16SaysSo() throws Exception {
         Path scene = Files.write(dir.resolve("notepad.simp"),
-                "\uFEFFpolygon (0 0 0) (1 0 0) (0 1 0)\r\n".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+                "\uFEFFpolygon (0 0 0) (1 0 0) (0 1 0)\r\n".getBytes(StandardCharsets.UTF_16LE));
         SceneException e = assertThrows(SceneException.class,
                 () -> draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
         assertEquals("UTF-16 text, not UTF-8: it starts with the bytes FF FE, as Windows Notepad saves \"Unicode\"; a"
@@ -255,8 +258,8 @@ class ScenePipelineTest {
     private static SceneMonitor runsOutAtTheFirstPrimitive() {
         return new SceneMonitor() {
             @Override
-            public simpview.stage.PrimitiveTrace trace() {
-                return new simpview.stage.PrimitiveTrace() {
+            public PrimitiveTrace trace() {
+                return new PrimitiveTrace() {
                     @Override
                     public void read(int index, Path file, int line, int kind, double[] p, int at, int stride,
                             int vertices) {
@@ -296,7 +299,7 @@ class ScenePipelineTest {
         Path scene = write("drawn.simp", "polygon (0 0 -1) (50 0 -1) (0 50 -1)");
         Drawable full = SceneFixture.throwingAtEveryWrite(() -> new OutOfMemoryError("Java heap space"));
         SceneException e = assertThrows(SceneException.class, () -> ScenePipeline.drawDepthCued(scene, full,
-                SceneMonitor.NONE, simpview.surface.DrawingThreads.of(2), null));
+                SceneMonitor.NONE, DrawingThreads.of(2), null));
         assertEquals(scene, e.file());
         assertTrue(e.problem().startsWith("out of memory drawing this scene (Java may use at most "), e.problem());
     }
@@ -376,7 +379,7 @@ class ScenePipelineTest {
     void latin1TextIsNotUtf8EvenInAComment() throws Exception {
         String saveAs = "; a SIMP file is read as UTF-8: save it as UTF-8 (in Notepad: Save As, Encoding UTF-8)";
         Path comment = Files.write(dir.resolve("comment.simp"), "wire\n# caf\u00e9\nline (0 0 0) (1 1 1)\n"
-                .getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+                .getBytes(StandardCharsets.ISO_8859_1));
         SceneException e = assertThrows(SceneException.class,
                 () -> draw(comment, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS));
         assertEquals("not UTF-8 text: byte 0xE9 at offset 10 (line 2) starts or continues no UTF-8 character; it looks"

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
@@ -207,7 +208,7 @@ class SimpClientTest {
 
     @Test
     void includedFileIsFoundBesideTheIncludingFile() throws Exception {
-        java.nio.file.Files.createDirectories(dir.resolve("parts/deeper"));
+        Files.createDirectories(dir.resolve("parts/deeper"));
         scene.write("parts/deeper/leaf", "line (0,0,-1) (1,1,-1)");
         scene.write("parts/mid", "file \"deeper/leaf\"");
         scene.write("s", "file \"parts/mid\"");
@@ -254,7 +255,7 @@ class SimpClientTest {
         }
         body.append("line (0,0,-1) (0,0,-2)\n");
         body.append("}\n".repeat(10_000));
-        java.nio.file.Files.writeString(dir.resolve("s.simp"), body);
+        Files.writeString(dir.resolve("s.simp"), body);
         scene.run("s");
         assertPanelVertex(10, 0, -1, scene.lines.get(0)[0]);
         assertEquals(Matrix4.identity(), scene.client.ctm());

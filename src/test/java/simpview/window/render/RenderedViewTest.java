@@ -7,11 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import simpview.pages.A1Rule;
 
 public class RenderedViewTest {
 
     private static RenderedView of(View view) {
-        return new RenderedView(view, 361, simpview.pages.A1Rule.SPEC, null, null, List.of());
+        return new RenderedView(view, 361, A1Rule.SPEC, null, null, List.of());
     }
 
     @Test

@@ -8,8 +8,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.FileStamp;
 
 /** What the window's watcher takes for a changed file: a new stamp, or, while the file is fresh, new bytes. */
 public class SceneWatcherTest {
@@ -72,10 +74,10 @@ public class SceneWatcherTest {
     @Test
     void aSaveSinceTheFilesWereReadIsTold() throws Exception {
         Path file = Files.writeString(dir.resolve("a.simp"), "wire\n");
-        java.util.List<simpview.scene.FileStamp> asRead = java.util.List.of(simpview.scene.FileStamp.of(file));
-        assertFalse(SceneWatcher.savedSinceRead(asRead, java.util.List.of(look(file))), "as it was read");
+        List<FileStamp> asRead = List.of(FileStamp.of(file));
+        assertFalse(SceneWatcher.savedSinceRead(asRead, List.of(look(file))), "as it was read");
         Files.writeString(file, "filled\nwire\n");
-        assertTrue(SceneWatcher.savedSinceRead(asRead, java.util.List.of(look(file))), "saved since");
-        assertFalse(SceneWatcher.savedSinceRead(java.util.List.of(), java.util.List.of(look(file))), "not known: not told");
+        assertTrue(SceneWatcher.savedSinceRead(asRead, List.of(look(file))), "saved since");
+        assertFalse(SceneWatcher.savedSinceRead(List.of(), List.of(look(file))), "not known: not told");
     }
 }
