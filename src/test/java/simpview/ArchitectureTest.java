@@ -19,8 +19,8 @@ import org.junit.jupiter.api.Test;
 /**
  * The shape docs/architecture.md describes, held against the sources: the
  * packages in pipeline order with no package importing one below it in
- * that list, no type named like a package, and every thread the program
- * starts named and listed.
+ * that list, no type named like a package, every thread the program
+ * starts named and listed, and every type named in code by its import.
  */
 class ArchitectureTest {
 
@@ -38,6 +38,12 @@ class ArchitectureTest {
     private static final Pattern PACKAGE = Pattern.compile("^package simpview(?:\\.([a-z.]+))?;", Pattern.MULTILINE);
     /** An import, or a type named in full in the code: simpview.pkg.Type. */
     private static final Pattern USE = Pattern.compile("\\bsimpview\\.([a-z][a-z.]*)\\.[A-Z]");
+
+    /** A type named in full, package and all, as code: java.util.List, simpview.surface.Span. */
+    private static final Pattern IN_FULL = Pattern.compile(
+            "(?<![\\w.])(?:java|javax|simpview)(?:\\.[a-z][a-z0-9_]*)+\\.[A-Z]\\w*");
+    /** A package or import line: the file's names start after the last. */
+    private static final Pattern HEADER_LINE = Pattern.compile("^(?:package|import)\\b[^;]*;", Pattern.MULTILINE);
 
     record Source(Path file, String pkg, String text) {
     }
@@ -231,5 +237,64 @@ class ArchitectureTest {
             }
         }
         assertEquals(List.of(), wrong);
+    }
+
+    @Test
+    void codeNamesTypesByTheirImports() throws IOException {
+        List<String> wrong = new ArrayList<>();
+        for (String root : List.of("src/main/java", "src/test/java", "src/jmh/java", "src/tools/java")) {
+            for (Source s : sources(Path.of(root))) {
+                String code = codeOnly(s.text());
+                Matcher header = HEADER_LINE.matcher(code);
+                int body = 0;
+                while (header.find()) {
+                    body = header.end();
+                }
+                Matcher m = IN_FULL.matcher(code).region(body, code.length());
+                while (m.find()) {
+                    long line = code.substring(0, m.start()).chars().filter(c -> c == '\n').count() + 1;
+                    wrong.add(s.file() + ":" + line + " names " + m.group() + " in full: import it");
+                }
+            }
+        }
+        assertEquals(List.of(), wrong);
+    }
+
+    /**
+     * The text with every comment, string, text block and character literal
+     * blanked out, line breaks kept, so that what is left is code.
+     */
+    static String codeOnly(String text) {
+        StringBuilder out = new StringBuilder(text.length());
+        int i = 0;
+        int n = text.length();
+        while (i < n) {
+            int end;
+            if (text.startsWith("//", i)) {
+                end = text.indexOf('\n', i);
+                end = end < 0 ? n : end;
+            } else if (text.startsWith("/*", i)) {
+                end = text.indexOf("*/", i + 2);
+                end = end < 0 ? n : end + 2;
+            } else if (text.startsWith("\"\"\"", i)) {
+                end = text.indexOf("\"\"\"", i + 3);
+                end = end < 0 ? n : end + 3;
+            } else if (text.charAt(i) == '"' || text.charAt(i) == '\'') {
+                char quote = text.charAt(i);
+                end = i + 1;
+                while (end < n && text.charAt(end) != quote) {
+                    end += text.charAt(end) == '\\' ? 2 : 1;
+                }
+                end = Math.min(end + 1, n);
+            } else {
+                out.append(text.charAt(i++));
+                continue;
+            }
+            for (int k = i; k < end; k++) {
+                out.append(text.charAt(k) == '\n' ? '\n' : ' ');
+            }
+            i = end;
+        }
+        return out.toString();
     }
 }
