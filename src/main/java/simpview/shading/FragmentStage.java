@@ -567,12 +567,9 @@ public final class FragmentStage implements FragmentSink {
      * {@link #SMALL_PIECE} pixels: each pixel's k, 1 / q and z as there (and
      * as pixel() has them), the depth looked at where the row was written
      * over, and kd, P and N of each the span still holds; each run of those
-     * one piece. A span of one kd: {@link #addSmallPieceOfOneKd}.
+     * one piece. A span of one kd ({@link #spanOneKd}) takes its kd as it is.
      */
     private int addSmallPiece(int span, int y, int x, int n, int at) {
-        if (spanOneKd[span]) {
-            return addSmallPieceOfOneKd(span, y, x, n, at);
-        }
         int o = span * SPAN_NUMBERS;
         double[] numbers = spanNumbers;
         double q0 = numbers[o];
@@ -603,6 +600,7 @@ public final class FragmentStage implements FragmentSink {
         double[] d = depth;
         int row = y * width;
         int from = spanFrom[span];
+        boolean oneKd = spanOneKd[span];
         int j = at;
         int runStart = -1; // the first x of the run of kept pixels at hand, -1 for none
         int runAt = at;
@@ -622,78 +620,10 @@ public final class FragmentStage implements FragmentSink {
                 runAt = j;
             }
             batchZ[j] = z;
-            t.kdRed[j] = (r0 + k * dr) * w;
-            t.kdGreen[j] = (g0 + k * dg) * w;
-            t.kdBlue[j] = (b0 + k * db) * w;
-            if (point) {
-                t.px[j] = (px0 + k * dpx) * w;
-                t.py[j] = (py0 + k * dpy) * w;
-                t.nx[j] = (nx0 + k * dnx) * w;
-                t.ny[j] = (ny0 + k * dny) * w;
-                t.nz[j] = (nz0 + k * dnz) * w;
-            }
-            j++;
-        }
-        if (runStart >= 0) {
-            addPieceRun(span, y, runStart, x + n - runStart, runAt);
-        }
-        return j;
-    }
-
-    /**
-     * {@link #addSmallPiece} for a span of one kd ({@link #spanOneKd}): the
-     * same, but each pixel's kd is the span's one kd, as it is, not resolved.
-     */
-    private int addSmallPieceOfOneKd(int span, int y, int x, int n, int at) {
-        int o = span * SPAN_NUMBERS;
-        double[] numbers = spanNumbers;
-        double q0 = numbers[o];
-        double dq = numbers[o + 1];
-        int v0 = o + 2;
-        int dv = v0 + FragmentLayout.PHONG_CHANNELS;
-        double z0 = numbers[v0 + Z];
-        double dz = numbers[dv + Z];
-        double kr = numbers[v0 + R];
-        double kg = numbers[v0 + G];
-        double kb = numbers[v0 + B];
-        double px0 = numbers[v0 + PX];
-        double dpx = numbers[dv + PX];
-        double py0 = numbers[v0 + PY];
-        double dpy = numbers[dv + PY];
-        double nx0 = numbers[v0 + NX];
-        double dnx = numbers[dv + NX];
-        double ny0 = numbers[v0 + NY];
-        double dny = numbers[dv + NY];
-        double nz0 = numbers[v0 + NZ];
-        double dnz = numbers[dv + NZ];
-        boolean overwritten = waiting.mayBeWrittenOver(y);
-        boolean point = shader.usesPoint();
-        LitPoints t = points;
-        double[] d = depth;
-        int row = y * width;
-        int from = spanFrom[span];
-        int j = at;
-        int runStart = -1; // the first x of the run of kept pixels at hand, -1 for none
-        int runAt = at;
-        for (int col = x, end = x + n; col < end; col++) {
-            double k = col - from;
-            double w = 1 / (q0 + k * dq);
-            double z = (z0 + k * dz) * w;
-            if (overwritten && z != d[row + col]) {
-                if (runStart >= 0) {
-                    addPieceRun(span, y, runStart, col - runStart, runAt);
-                    runStart = -1;
-                }
-                continue;
-            }
-            if (runStart < 0) {
-                runStart = col;
-                runAt = j;
-            }
-            batchZ[j] = z;
-            t.kdRed[j] = kr;
-            t.kdGreen[j] = kg;
-            t.kdBlue[j] = kb;
+            double kw = oneKd ? 1 : w; // one kd: r0 + k * 0 times 1, r0 to the bit
+            t.kdRed[j] = (r0 + k * dr) * kw;
+            t.kdGreen[j] = (g0 + k * dg) * kw;
+            t.kdBlue[j] = (b0 + k * db) * kw;
             if (point) {
                 t.px[j] = (px0 + k * dpx) * w;
                 t.py[j] = (py0 + k * dpy) * w;
@@ -866,6 +796,7 @@ public final class FragmentStage implements FragmentSink {
         int row = y * width;
         int look = -1; // found at the first pixel that passes
         int owner = Provenance.BACKGROUND;
+        boolean oneKd = oneColour;
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -883,70 +814,10 @@ public final class FragmentStage implements FragmentSink {
             w.owner[i] = owner;
             w.look[i] = look;
             w.z[i] = z;
-            w.kdRed[i] = (r0 + k * dr) * inv;
-            w.kdGreen[i] = (g0 + k * dg) * inv;
-            w.kdBlue[i] = (b0 + k * db) * inv;
-            w.px[i] = (px0 + k * dpx) * inv;
-            w.py[i] = (py0 + k * dpy) * inv;
-            w.nx[i] = (nx0 + k * dnx) * inv;
-            w.ny[i] = (ny0 + k * dny) * inv;
-            w.nz[i] = (nz0 + k * dnz) * inv;
-        }
-        if (look < 0) {
-            return false;
-        }
-        waitedShortSpans++;
-        waitedShortPixels += w.count - before;
-        wroteOver(y); // a long span's pixel that waits here may be taken
-        return true;
-    }
-
-    /**
-     * {@link #waitingShortSpan} for a span of one kd ({@link #phong(PointShader, Fog, boolean)}):
-     * the same, but each point's kd is the span's one kd, as it is, not resolved.
-     */
-    private boolean waitingShortSpanOfOneKd(int y, int from, int start, int end, double q0, double dq, double[] v0,
-            double[] dv) {
-        double z0 = v0[Z];
-        double dz = dv[Z];
-        double kr = v0[R];
-        double kg = v0[G];
-        double kb = v0[B];
-        double px0 = v0[PX];
-        double dpx = dv[PX];
-        double py0 = v0[PY];
-        double dpy = dv[PY];
-        double nx0 = v0[NX];
-        double dnx = dv[NX];
-        double ny0 = v0[NY];
-        double dny = dv[NY];
-        double nz0 = v0[NZ];
-        double dnz = dv[NZ];
-        WaitingPoints w = waitingPoints;
-        int before = w.count;
-        int row = y * width;
-        int look = -1; // found at the first pixel that passes
-        int owner = Provenance.BACKGROUND;
-        for (int x = start; x < end; x++) {
-            int k = x - from;
-            double inv = 1 / (q0 + k * dq);
-            double z = (z0 + k * dz) * inv;
-            if (!nearer(row + x, z)) {
-                continue;
-            }
-            if (look < 0) {
-                look = lookOf(shader, fog, false);
-                owner = owners == null ? Provenance.BACKGROUND : owners.drawingAt(y);
-            }
-            int i = w.add();
-            w.x[i] = x;
-            w.y[i] = y;
-            w.owner[i] = owner;
-            w.look[i] = look;
-            w.z[i] = z;
-            w.kdRed[i] = kr;
-            w.kdGreen[i] = kg;
-            w.kdBlue[i] = kb;
+            double kw = oneKd ? 1 : inv; // one kd: r0 + k * 0 times 1, r0 to the bit
+            w.kdRed[i] = (r0 + k * dr) * kw;
+            w.kdGreen[i] = (g0 + k * dg) * kw;
+            w.kdBlue[i] = (b0 + k * db) * kw;
             w.px[i] = (px0 + k * dpx) * inv;
             w.py[i] = (py0 + k * dpy) * inv;
             w.nx[i] = (nx0 + k * dnx) * inv;
@@ -1208,9 +1079,11 @@ public final class FragmentStage implements FragmentSink {
      * every vertex of each has the same kd, carried in its colour channels as it is, not times q (as
      * {@link #oneColour} carries a colour), and that kd is every pixel's, to the bit; P and N are interpolated
      * perspective-correct as ever. Resolved as (kd q) / q, kd 0.5 missed by a last bit at some pixels, and under
-     * the ambient light alone came out 127 beside 128. The choice is made here, once: a span of one kd goes
-     * through loops of its own (phongPixelsOfOneKd, waitingShortSpanOfOneKd, addSmallPieceOfOneKd) or fills a
-     * batch's kd with it (oneKd), so no pixel pays a test for it.
+     * the ambient light alone came out 127 beside 128. The choice is made here, once: a batch's kd is filled
+     * with it (oneKd), and a short span's or piece's pixels go through the loops of interpolated kd, their kd's
+     * slopes zero and the factor 1, not 1 / q (r0 + k * 0 times 1 is r0), chosen by a test that is the same for
+     * every pixel of the loop. (Loops of their own for one kd measured 3-6 % slower on PhongFill's
+     * interpolated path, session 33.)
      */
     public void phong(PointShader shader, Fog fog, boolean oneKd) {
         writePending(); // lit and fogged by the look they were drawn with
@@ -1312,12 +1185,10 @@ public final class FragmentStage implements FragmentSink {
             if (keepShortSpans || shader.lightCount() >= LIGHTS_TO_KEEP_SHORT_SPANS) {
                 return keptShortSpan(y, from, start, end, q0, dq, v0, dv);
             }
-            return oneColour ? waitingShortSpanOfOneKd(y, from, start, end, q0, dq, v0, dv)
-                    : waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
+            return waitingShortSpan(y, from, start, end, q0, dq, v0, dv);
         }
         if (isShort) {
-            return oneColour ? phongPixelsOfOneKd(y, from, start, end, q0, dq, v0, dv)
-                    : phongPixels(y, from, start, end, q0, dq, v0, dv);
+            return phongPixels(y, from, start, end, q0, dq, v0, dv);
         }
         writePending(); // the batches below use the same arrays
         boolean wrote = false;
@@ -1419,6 +1290,7 @@ public final class FragmentStage implements FragmentSink {
         int row = y * width;
         int passed = 0;
         int n = pendingCount;
+        boolean oneKd = oneColour;
         for (int x = start; x < end; x++) {
             int k = x - from;
             double inv = 1 / (q0 + k * dq);
@@ -1427,13 +1299,14 @@ public final class FragmentStage implements FragmentSink {
                 continue;
             }
             passed++;
+            double kw = oneKd ? 1 : inv; // one kd: r0 + k * 0 times 1, r0 to the bit
             if (later) {
                 pendingX[n] = x;
                 pendingY[n] = y;
                 batchZ[n] = z;
-                t.kdRed[n] = (r0 + k * dr) * inv;
-                t.kdGreen[n] = (g0 + k * dg) * inv;
-                t.kdBlue[n] = (b0 + k * db) * inv;
+                t.kdRed[n] = (r0 + k * dr) * kw;
+                t.kdGreen[n] = (g0 + k * dg) * kw;
+                t.kdBlue[n] = (b0 + k * db) * kw;
                 if (point) {
                     t.px[n] = (px0 + k * dpx) * inv;
                     t.py[n] = (py0 + k * dpy) * inv;
@@ -1451,82 +1324,9 @@ public final class FragmentStage implements FragmentSink {
             if (point) {
                 s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
                         (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv,
-                        (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
+                        (r0 + k * dr) * kw, (g0 + k * dg) * kw, (b0 + k * db) * kw, lit);
             } else {
-                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * inv, (g0 + k * dg) * inv, (b0 + k * db) * inv, lit);
-            }
-            panel.setPixel(x, y, z, fogged(z, lit));
-        }
-        pendingCount = n;
-        shortPixels += passed;
-        if (passed > 0) {
-            wroteOver(y);
-        }
-        return passed > 0;
-    }
-
-    /**
-     * {@link #phongPixels} for a span of one kd ({@link #phong(PointShader, Fog, boolean)}):
-     * the same, but each pixel's kd is the span's one kd, as it is, not resolved.
-     */
-    private boolean phongPixelsOfOneKd(int y, int from, int start, int end, double q0, double dq, double[] v0,
-            double[] dv) {
-        double z0 = v0[Z];
-        double dz = dv[Z];
-        double kr = v0[R];
-        double kg = v0[G];
-        double kb = v0[B];
-        double px0 = v0[PX];
-        double dpx = dv[PX];
-        double py0 = v0[PY];
-        double dpy = dv[PY];
-        double nx0 = v0[NX];
-        double dnx = dv[NX];
-        double ny0 = v0[NY];
-        double dny = dv[NY];
-        double nz0 = v0[NZ];
-        double dnz = dv[NZ];
-        PointShader s = shader;
-        boolean point = s.usesPoint(); // else the ambient term alone: P and N are not read
-        boolean later = shortPixelsWait;
-        LitPoints t = points;
-        int row = y * width;
-        int passed = 0;
-        int n = pendingCount;
-        for (int x = start; x < end; x++) {
-            int k = x - from;
-            double inv = 1 / (q0 + k * dq);
-            double z = (z0 + k * dz) * inv;
-            if (!nearer(row + x, z)) {
-                continue;
-            }
-            passed++;
-            if (later) {
-                pendingX[n] = x;
-                pendingY[n] = y;
-                batchZ[n] = z;
-                t.kdRed[n] = kr;
-                t.kdGreen[n] = kg;
-                t.kdBlue[n] = kb;
-                if (point) {
-                    t.px[n] = (px0 + k * dpx) * inv;
-                    t.py[n] = (py0 + k * dpy) * inv;
-                    t.nx[n] = (nx0 + k * dnx) * inv;
-                    t.ny[n] = (ny0 + k * dny) * inv;
-                    t.nz[n] = (nz0 + k * dnz) * inv;
-                }
-                if (++n == BATCH) {
-                    pendingCount = n;
-                    writePending();
-                    n = 0;
-                }
-                continue;
-            }
-            if (point) {
-                s.shade((px0 + k * dpx) * inv, (py0 + k * dpy) * inv, z,
-                        (nx0 + k * dnx) * inv, (ny0 + k * dny) * inv, (nz0 + k * dnz) * inv, kr, kg, kb, lit);
-            } else {
-                s.shade(0, 0, z, 0, 0, 0, kr, kg, kb, lit);
+                s.shade(0, 0, z, 0, 0, 0, (r0 + k * dr) * kw, (g0 + k * dg) * kw, (b0 + k * db) * kw, lit);
             }
             panel.setPixel(x, y, z, fogged(z, lit));
         }
