@@ -63,8 +63,10 @@ final class ObjParser {
     /** The first of them: its line and first word. */
     private int firstOtherLine;
     private String firstOtherWord;
-    /** The l lines (polylines) among them. */
+    /** The l lines (polylines) and p lines (points) among them, and the first one's line. */
     private int polylines;
+    private int points;
+    private int firstUndrawnLine;
     /** Faces of 4 vertices or more, some without vn, whose first three lie on one line; the first one's line. */
     private int inLineStarts;
     private int firstInLineStart;
@@ -165,6 +167,10 @@ final class ObjParser {
         }
         if (faceCount == 0) {
             warnings.add(noFaces());
+        } else if (polylines + points > 0) {
+            warnings.add(file().getFileName() + ":" + firstUndrawnLine + ": " + undrawnKinds()
+                    + " are not drawn: a model is drawn by its faces, f lines (" + undrawnCounts()
+                    + " passed over, this the first; the " + count(faceCount, "face") + " drawn)");
         }
         if (inLineStarts > 0) {
             warnings.add(file().getFileName() + ":" + firstInLineStart + ": this face's first three vertices lie on one "
@@ -202,7 +208,27 @@ final class ObjParser {
                     : String.join(", ", held));
         }
         return file().getFileName() + ": no f lines, so nothing is drawn (" + read + ")"
-                + (polylines > 0 ? "; l lines (polylines) are not drawn: a model is drawn by its faces, f lines" : "");
+                + (polylines + points > 0 ? "; " + undrawnKinds() + " are not drawn: a model is drawn by its faces,"
+                + " f lines" : "");
+    }
+
+    /** "l lines (polylines)", "p lines (points)" or both, as the file holds them. */
+    private String undrawnKinds() {
+        String l = "l lines (polylines)";
+        String p = "p lines (points)";
+        return polylines == 0 ? p : points == 0 ? l : l + " and " + p;
+    }
+
+    /** "3 l lines and 1 p line", "1 l line". */
+    private String undrawnCounts() {
+        List<String> kinds = new ArrayList<>(2);
+        if (polylines > 0) {
+            kinds.add(count(polylines, "l line"));
+        }
+        if (points > 0) {
+            kinds.add(count(points, "p line"));
+        }
+        return String.join(" and ", kinds);
     }
 
     /** " (and 3 more faces like it)" after a warning about the first of n faces. */
@@ -250,6 +276,9 @@ final class ObjParser {
         if (i == end) {
             return;
         }
+        if (b[i] == '\f' && onlyFormFeedsAndBlanks(i)) {
+            return; // a page break an editor left on a line of its own: a blank line, as in a scene
+        }
         int first = b[i] | 0x20; // lower case for letters
         if (first != 'v' && first != 'f') {
             if (b[i] != '#') {
@@ -283,23 +312,39 @@ final class ObjParser {
             firstOtherLine = source.lineNumber();
             firstOtherWord = printable(token(i));
         }
-        if ((b[i] | 0x20) == 'l' && (i + 1 == end || isSeparator(b[i + 1]))) {
-            polylines++;
+        int kind = b[i] | 0x20;
+        if ((kind == 'l' || kind == 'p') && (i + 1 == end || isSeparator(b[i + 1]))) {
+            if (kind == 'l') {
+                polylines++;
+            } else {
+                points++;
+            }
+            if (firstUndrawnLine == 0) {
+                firstUndrawnLine = source.lineNumber();
+            }
         }
     }
 
+    /** Whether the line from i on holds only form feeds and blanks (a page break on a line of its own). */
+    private boolean onlyFormFeedsAndBlanks(int i) {
+        while (i < end && (b[i] == '\f' || b[i] == ' ' || b[i] == '\t')) {
+            i++;
+        }
+        return i == end;
+    }
+
     /**
-     * An error for a first word that is v, vn, vt or f with a character beyond ASCII stuck to it: "v" and a
-     * non-breaking space before the numbers, a byte order mark before "f" where two files were joined. The line
-     * looks right, and would be passed over as a kind simpview does not read, leaving a vertex or a face
-     * silently missing (and a later face's index naming nothing). Only a word holding a byte beyond ASCII is
-     * looked at, so the vt lines of a big model cost no String.
+     * An error for a first word that is v, vn, vt or f with a character beyond ASCII or a form feed stuck to
+     * it: "v" and a non-breaking space before the numbers, a byte order mark before "f" where two files were
+     * joined, a form feed (a page break) before "v". The line looks right, and would be passed over as a kind
+     * simpview does not read, leaving a vertex or a face silently missing (and a later face's index naming
+     * nothing). Only a word holding such a byte is looked at, so the vt lines of a big model cost no String.
      */
     private void copiedKeyword(int i) throws SceneException {
         int wordEnd = i;
         boolean beyondAscii = false;
         while (wordEnd < end && !isSeparator(b[wordEnd])) {
-            beyondAscii |= b[wordEnd] < 0;
+            beyondAscii |= b[wordEnd] < 0 || b[wordEnd] == '\f';
             wordEnd++;
         }
         if (!beyondAscii) {
@@ -315,7 +360,8 @@ final class ObjParser {
             letters++;
         }
         String keyword = word.substring(start, letters);
-        boolean stuck = start > 0 || letters < word.length() && word.charAt(letters) >= 0x80;
+        boolean stuck = start > 0 || letters < word.length()
+                && (word.charAt(letters) >= 0x80 || word.charAt(letters) == '\f');
         if (stuck && List.of("v", "vn", "vt", "f").contains(keyword.toLowerCase(Locale.ROOT))) {
             throw error(i, "this line's first word reads '" + printable(word) + "'"
                     + CopiedText.hint(word, "the word and what follows it are written in ASCII, a plain space between them") + " (as it is, the word is not '"

@@ -128,6 +128,20 @@ class ObjErrorsTest {
                 + String.format(passed, "v"));
     }
 
+    /**
+     * A form feed (a page break) stuck to a keyword, before it or after it, is named as in a scene: passed over,
+     * the line left its vertex silently missing.
+     */
+    @Test
+    void aFormFeedStuckToAKeywordIsNamed() {
+        String passed = " (as it is, the word is not 'v', and the line would be passed over as one simpview does not"
+                + " read)";
+        assertError("v 0 0 0\n\fv 1 0 0\n", 2, 1, "this line's first word reads '\\x0Cv', which holds a form feed"
+                + " (U+000C FORM FEED (FF)) before 'v': use a plain space" + passed);
+        assertError("v 0 0 0\nv\f1 0 0\n", 2, 1, "this line's first word reads 'v\\x0C1', which holds a form feed"
+                + " (U+000C FORM FEED (FF)) after 'v': use a plain space" + passed);
+    }
+
     /** A look-alike character stuck to a face's reference is named, as one stuck to a number is. */
     @Test
     void anInvisibleCharacterInAReferenceIsNamed() {

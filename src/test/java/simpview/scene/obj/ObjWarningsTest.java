@@ -154,8 +154,44 @@ class ObjWarningsTest {
                 warnings("# a scene\ncamera -1 -1 1 1 -1 -100\npolygon (0, 0, -5) (1, 0, -5) (0, 1, -5)\n"));
     }
 
+    /** A points-only model (a scan's cloud, as MeshLab writes it) names its p lines, and both kinds together. */
+    @Test
+    void aModelOfPointsOnlySaysThatPLinesAreNotDrawn() throws SceneException {
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (5 lines read: 3 v lines, 2 other lines"
+                + " (the first, line 4, starts with 'p')); p lines (points) are not drawn: a model is drawn by its"
+                + " faces, f lines"), warnings("v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2\nP 3\n"));
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (5 lines read: 3 v lines, 2 other lines"
+                + " (the first, line 4, starts with 'l')); l lines (polylines) and p lines (points) are not drawn:"
+                + " a model is drawn by its faces, f lines"), warnings("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\np 3\n"));
+    }
+
+    /**
+     * A model of faces that also holds l and p lines (an outline or a marker drawn in the modeller): its faces
+     * are drawn, and one warning names the first l or p line and how many were passed over, however many
+     * there are.
+     */
+    @Test
+    void polylinesAndPointsBesideFacesAreNamedOnce() throws SceneException {
+        String triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+        assertEquals(List.of("model.obj:5: l lines (polylines) are not drawn: a model is drawn by its faces, f lines"
+                + " (1000 l lines passed over, this the first; the 1 face drawn)"),
+                warnings(triangle + "l 1 2 3 1\n".repeat(1000)));
+        assertEquals(List.of("model.obj:2: l lines (polylines) and p lines (points) are not drawn: a model is drawn"
+                + " by its faces, f lines (2 l lines and 1 p line passed over, this the first; the 2 faces drawn)"),
+                warnings("v 0 0 0\np 1\nv 1 0 0\nv 0 1 0\nL 1 2\nf 1 2 3\nl 2 3\nf 3 2 1\n"));
+    }
+
+    /** Lines of other kinds beside a face are passed over without a word: vt, g, o, s, usemtl, mtllib. */
     @Test
     void aFileWithAFaceWarnsOfNothing() throws SceneException {
-        assertEquals(List.of(), warnings("l 1 2\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings("mtllib a.mtl\no Cube\ng box\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
+                + "usemtl red\ns 1\nf 1/1 2/1 3/1\n"));
+    }
+
+    /** A page break an editor left on a line of its own is a blank line, as in a scene, not a line of another kind. */
+    @Test
+    void aLineOfFormFeedsIsBlank() throws SceneException {
+        assertEquals(List.of("model.obj: no f lines, so nothing is drawn (3 lines read: only blank lines and"
+                + " comments)"), warnings("\f\n# page two\n \f\t\f\n"));
     }
 }
