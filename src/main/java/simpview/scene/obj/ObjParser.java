@@ -496,12 +496,32 @@ final class ObjParser {
         int after = decimal.scan(b, i, end);
         if (after < 0 || (after < end && !isSeparator(b[after]))) {
             throw error(i, "expected a number, found '" + token(i) + "'" + DecimalParser.nonAsciiHint(token(i))
-                    + TrailingComment.hint(b[i]) + continuationHint(i));
+                    + TrailingComment.hint(b[i]) + continuationHint(i) + notFiniteHint(token(i)));
         }
         if (!Double.isFinite(decimal.value())) {
             throw error(i, "number out of range: '" + token(i) + "'");
         }
         return after;
+    }
+
+    /**
+     * For a word that is how a program prints a value that is not a number or is infinite ("nan", "-nan",
+     * "inf", "Infinity", and Windows' "1.#QNAN", "-1.#IND", "1.#INF"): what it means; else "". An exporter
+     * writes one for a normal it could not compute (that of a face of no area) or a point gone wrong.
+     */
+    private static String notFiniteHint(String word) {
+        String w = word.toLowerCase(Locale.ROOT);
+        if (w.startsWith("-") || w.startsWith("+")) {
+            w = w.substring(1);
+        }
+        boolean nan = w.equals("nan") || w.startsWith("1.#qnan") || w.startsWith("1.#snan") || w.startsWith("1.#ind");
+        boolean inf = w.equals("inf") || w.equals("infinity") || w.startsWith("1.#inf");
+        if (!nan && !inf) {
+            return "";
+        }
+        return " (" + (nan ? "not a number" : "infinite") + ": the program that wrote the file printed a value it"
+                + " could not compute, often the normal of a face of no area; every number must be finite: remove"
+                + " that face, or give this line finite numbers)";
     }
 
     // ---- faces ---------------------------------------------------------------------------------

@@ -219,14 +219,32 @@ class ObjErrorsTest {
         "v 1 2 x|7|x",
         "v 1 2 3.4.5|7|3.4.5",
         "v 1 2 3x|7|3x",
-        "v NaN 1 2|3|NaN",
-        "v 1 Infinity 2|5|Infinity",
         "v 1 2 0x10|7|0x10",
         "vn 1 - 2|6|-",
         "v 1 2 3 1 e 0 0|11|e",
     })
     void aNumberThatDoesNotParse(String line, int column, String token) {
         assertError(line, 1, column, "expected a number, found '" + token + "'");
+    }
+
+    /**
+     * What a program prints for a value it could not compute (C's "nan", "-nan", "inf", Java's "NaN" and
+     * "Infinity", Windows' "1.#QNAN0" and "-1.#IND00") is said to be that, and where it comes from.
+     */
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "v NaN 1 2|3|NaN|not a number",
+        "v 1 Infinity 2|5|Infinity|infinite",
+        "vn -nan -nan -nan|4|-nan|not a number",
+        "vn 0 0 inf|8|inf|infinite",
+        "vn 1.#QNAN0 0 1|4|1.#QNAN0|not a number",
+        "v 0 -1.#IND00 0|5|-1.#IND00|not a number",
+        "v 1 2 3 -1.#INF 0 0|9|-1.#INF|infinite",
+    })
+    void aValueThatIsNotFiniteIsNamedForWhatItIs(String line, int column, String token, String what) {
+        assertError(line, 1, column, "expected a number, found '" + token + "' (" + what + ": the program that wrote"
+                + " the file printed a value it could not compute, often the normal of a face of no area; every"
+                + " number must be finite: remove that face, or give this line finite numbers)");
     }
 
     @Test
