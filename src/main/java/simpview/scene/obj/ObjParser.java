@@ -632,10 +632,48 @@ final class ObjParser {
         }
         long zeroBased = index > 0 ? index - 1 : count + index;
         if (zeroBased < 0 || zeroBased >= count) {
-            throw error(from, what + " index " + text(from, to) + " names nothing: " + count + " "
+            SceneException e = error(from, what + " index " + text(from, to) + " names nothing: " + count + " "
                     + (count == 1 ? one : defined) + " defined so far");
+            if (index > count) {
+                int later = definedLater(index - count, what.equals("normal"));
+                if (later > 0) {
+                    String keyword = what.equals("normal") ? "vn" : "v";
+                    e = new SceneException(e.file(), e.line(), e.column(), e.lineText(), e.problem() + "; the file"
+                            + " defines it further down, at line " + later + ", but a face names only the "
+                            + keyword + " lines above it: move the " + keyword + " lines before the f lines");
+                }
+            }
+            throw e;
         }
         return (int) zeroBased;
+    }
+
+    /**
+     * For a face naming a vertex (or a normal) that is not defined yet: reads on through the rest of the file
+     * to the {@code ahead}-th v (or vn) line after this one, and returns its line number; 0 when the file
+     * holds none so far down, or cannot be read on. Only on the way to an error: the file is not read further.
+     */
+    private int definedLater(long ahead, boolean normal) {
+        long found = 0;
+        try {
+            while (source.nextLine()) {
+                b = source.buffer();
+                lineStart = source.lineStart();
+                end = source.lineEnd();
+                int i = skipBlanks(lineStart);
+                int length = 0;
+                while (i + length < end && !isSeparator(b[i + length])) {
+                    length++;
+                }
+                boolean v = (length == 1 || length == 2 && (b[i + 1] | 0x20) == 'n') && (b[i] | 0x20) == 'v';
+                if (v && (length == 2) == normal && ++found == ahead) {
+                    return source.lineNumber();
+                }
+            }
+        } catch (IOException e) {
+            return 0; // a line too long or not text further down: the error at hand is told without the hint
+        }
+        return 0;
     }
 
     // ---- bytes and messages --------------------------------------------------------------------

@@ -29,8 +29,11 @@ import simpview.scene.SceneException;
  * integer, nothing more: vt lines are ignored), a face of fewer than three
  * vertices; a file that is not UTF-8 text (UTF-16, or no text at all),
  * found when a line fails or the file gave no face. Faces read before an
- * error have already gone to the sink. What is worth a warning (a file
- * without faces, decimal commas) is in {@link ObjCounts#warnings}.
+ * error have already gone to the sink; an index naming what the file
+ * defines only further down says at which line. What is worth a warning (a
+ * file without faces, l and p lines, which are not drawn, decimal commas,
+ * faces filled otherwise than their outline) is in {@link ObjCounts#warnings},
+ * one warning per kind, naming the first line and counting the rest.
  */
 public final class ObjReader {
 

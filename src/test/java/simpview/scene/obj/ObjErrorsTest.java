@@ -301,13 +301,34 @@ class ObjErrorsTest {
         assertError(TRIANGLE + "f 1 2 4", 4, 7, "vertex index 4 names nothing: 3 vertices (v lines) defined so far");
         assertError(TRIANGLE + "f 1 2 -4", 4, 7,
                 "vertex index -4 names nothing: 3 vertices (v lines) defined so far");
-        assertError("f 1 2 3\n" + TRIANGLE, 1, 3, "vertex index 1 names nothing: 0 vertices (v lines) defined so far");
+        assertError("f 1 2 3\n# no v lines\n", 1, 3,
+                "vertex index 1 names nothing: 0 vertices (v lines) defined so far");
         assertError(TRIANGLE + "vn 0 0 1\nf 1//1 2//2 3//1", 5, 11,
                 "normal index 2 names nothing: 1 normal (vn line) defined so far");
         assertError(TRIANGLE + "vn 0 0 1\nf 1//-2 2//1 3//1", 5, 6,
                 "normal index -2 names nothing: 1 normal (vn line) defined so far");
         assertError(TRIANGLE + "f 1 2 99999999999999999999", 4, 7,
                 "vertex index 99999999999999999999 names nothing: 3 vertices (v lines) defined so far");
+    }
+
+    /**
+     * A face before the lines that define what it names (a student's file written faces first): the error
+     * says where the file defines it, and that a face names only what stands above it.
+     */
+    @Test
+    void anIndexDefinedFurtherDownSaysWhere() {
+        assertError("f 1 2 3\n# the points\nV 0 0 0\nvn 0 0 1\nv 1 0 0\n\nv 0 1 0\n", 1, 3,
+                "vertex index 1 names nothing: 0 vertices (v lines) defined so far; the file defines it further"
+                + " down, at line 3, but a face names only the v lines above it: move the v lines before the f lines");
+        assertError("v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n", 2, 5, "vertex index 2 names nothing: 1 vertex (v line)"
+                + " defined so far; the file defines it further down, at line 3, but a face names only the v lines"
+                + " above it: move the v lines before the f lines");
+        assertError(TRIANGLE + "vn 0 0 1\nf 1//1 2//2 3//1\nv 5 5 5\nvn 0 1 0\n", 5, 11, "normal index 2 names"
+                + " nothing: 1 normal (vn line) defined so far; the file defines it further down, at line 7, but a"
+                + " face names only the vn lines above it: move the vn lines before the f lines");
+        // Defined nowhere further down: no more is said.
+        assertError(TRIANGLE + "f 1 2 5\nv 1 1 1\n", 4, 7, "vertex index 5 names nothing: 3 vertices (v lines)"
+                + " defined so far");
     }
 
     @ParameterizedTest
