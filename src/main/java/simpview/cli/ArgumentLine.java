@@ -15,6 +15,19 @@ public final class ArgumentLine {
     private ArgumentLine() {
     }
 
+    /**
+     * {@code word} as a shell (and {@link #split}) reads it back whole: as it is when it holds only letters, digits
+     * and {@code _ . / , : = + -}, else in single quotes, each of its own single quotes written {@code '\''}.
+     */
+    static String shellWord(String word) {
+        boolean plain = word.chars()
+                .allMatch(c -> c < 128 && (Character.isLetterOrDigit(c) || "_./,:=+-".indexOf(c) >= 0));
+        if (!word.isEmpty() && plain) {
+            return word;
+        }
+        return "'" + word.replace("'", "'\\''") + "'";
+    }
+
     /** @throws IllegalArgumentException naming the quote that is never closed */
     static List<String> split(String line) {
         List<String> words = new ArrayList<>();

@@ -37,6 +37,7 @@ import simpview.compare.PngFiles;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.SystematicError;
+import simpview.compare.WorstPixel;
 import simpview.compare.WholePage;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Page;
@@ -44,6 +45,7 @@ import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.PageContext;
+import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.DrawingThreads;
@@ -359,6 +361,10 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                 : others.ofEight(target.page(), theirs.panel(), verdictRule());
         PrintWriter out = spec.commandLine().getOut();
         out.print(report.text());
+        String inspect = inspectCommand(target, report.lookAt());
+        if (inspect != null) {
+            out.println("next:    " + inspect + " (how simpview made that pixel, term by term)");
+        }
         if (other != null) {
             out.println("hint: " + other.hint(Comparison.N));
         }
@@ -387,6 +393,20 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         if (!advice.isEmpty()) {
             out.println("note: " + advice);
         }
+    }
+
+    /**
+     * The command that shows how simpview made the pixel to look at first ({@code look}), with the options that drew
+     * the target; null when there is no such pixel, or the target is a page {@code inspect} does not draw (the
+     * random pages 1 to 3).
+     */
+    private String inspectCommand(CompareTarget target, WorstPixel look) {
+        if (look == null || target.isPage() && !(Assignment2.page(target.page()) instanceof ScenePage)) {
+            return null;
+        }
+        String what = target.isPage() ? "--page " + target.page()
+                : "--scene " + ArgumentLine.shellWord(scene.toString());
+        return "simpview inspect " + what + pictures.drawingOptions() + " --at " + look.at() + " --explain";
     }
 
     /** The hint the search found; an error of its own is the program's and is thrown as such. */

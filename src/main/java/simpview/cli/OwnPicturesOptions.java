@@ -3,6 +3,7 @@ package simpview.cli;
 import java.nio.file.Path;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
@@ -76,6 +77,22 @@ final class OwnPicturesOptions {
     /** " --seed S" when --seed was given, else "": for a command these options suggest. */
     String seedOption() {
         return seed == null ? "" : " --seed " + seed;
+    }
+
+    /**
+     * The options given that change what a scene page or scene draws, as typed: " --simp-dir course/ --seed 7",
+     * " --near-color 1,0,0 --own-colors"; "" when none was. For a command these options suggest ({@code inspect},
+     * which takes them all).
+     */
+    String drawingOptions() {
+        StringBuilder out = new StringBuilder();
+        for (String name : new String[] {"--simp-dir", "--seed", "--near-color", "--far-color"}) {
+            OptionSpec given = spec.commandLine().getParseResult().matchedOption(name);
+            if (given != null) {
+                out.append(' ').append(name).append(' ').append(ArgumentLine.shellWord(given.stringValues().get(0)));
+            }
+        }
+        return ownColours ? out + " --own-colors" : out.toString();
     }
 
     /** Whether --a1-rule was given. */

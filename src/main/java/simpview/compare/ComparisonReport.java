@@ -116,6 +116,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
             appendRow(out, "within " + tolerance + "/255", comparison.share(tolerance, false), verdictShare());
         }
         appendRegions(out);
+        WorstPixel look = lookAt();
+        if (look != null) {
+            out.append("look:    ").append(look.describe()).append('\n');
+        }
         out.append(String.format("%s: %s %s (%s needed)%s%n", passes() ? "PASS" : "FAIL",
                 Percent.of(verdictShare()), verdictName(), Percent.of(minimum / 100),
                 maxFailing < 0 ? "" : "; " + Count.with(regions.pixels(), "pixel", "fails", "fail")
@@ -128,10 +132,31 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (bias != null) {
             out.append("note: ").append(bias).append('\n');
         }
+        String background = systematic == null && !passes()
+                ? Background.note(comparison.ours(), comparison.theirs(), tolerance) : null;
+        if (background != null) {
+            out.append("note: ").append(background).append('\n');
+        }
+        String edges = systematic == null ? EdgeShift.note(comparison, tolerance) : null;
+        if (edges != null) {
+            out.append("note: ").append(edges).append('\n');
+        }
         if (systematic != null) {
             out.append("hint: ").append(systematic.hint(comparison.size())).append('\n');
         }
         return out.toString();
+    }
+
+    /**
+     * The pixel to look at first, of a picture that fails or passes with a solid patch: the one that differs most in
+     * the largest patch ({@link WorstPixel}); null for a picture that passes otherwise, or has no patch.
+     */
+    public WorstPixel lookAt() {
+        List<DiffRegion> largest = regions.largest();
+        if (largest.isEmpty() || passes() && solidPatch(largest) == null) {
+            return null;
+        }
+        return WorstPixel.in(comparison, largest.get(0), tolerance);
     }
 
     /** How wide and tall a patch must be, at least, to be more than an edge or a line a pixel off. */

@@ -18,6 +18,11 @@ final class Rasters {
     private Rasters() {
     }
 
+    /** A colour 0xRRGGBB as the reports write it: "(255,128,0)". */
+    static String words(int rgb) {
+        return "(" + (rgb >> 16 & 0xFF) + "," + (rgb >> 8 & 0xFF) + "," + (rgb & 0xFF) + ")";
+    }
+
     static int[] rgb(BufferedImage image) {
         int w = image.getWidth();
         int h = image.getHeight();
