@@ -1,0 +1,105 @@
+package simpview.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static simpview.testing.Images.page;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A picture that fails is told the one pixel to look at first and the
+ * {@code simpview inspect} command that explains it, with the options that
+ * drew simpview's picture; the command runs as printed and looks at that
+ * pixel.
+ */
+class CompareNextStepTest {
+
+    @TempDir
+    Path dir;
+
+    /** Page 4 with an 80x80 square of its panel (x 250-329, y 470-549) made brighter. */
+    private Path brightened(Path file) throws Exception {
+        BufferedImage page = page(4);
+        for (int y = 150; y < 230; y++) {
+            for (int x = 300; x < 380; x++) {
+                int rgb = page.getRGB(x, y);
+                int lighter = 0;
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    lighter |= Math.min(255, (rgb >> shift & 0xFF) + 60) << shift;
+                }
+                page.setRGB(x, y, lighter);
+            }
+        }
+        ImageIO.write(page, "png", file.toFile());
+        return file;
+    }
+
+    /** The line starting {@code start} in {@code out}. */
+    private static String line(String out, String start) {
+        return out.lines().filter(l -> l.startsWith(start)).findFirst().orElseThrow(() -> new AssertionError(out));
+    }
+
+    @Test
+    void aFailingPageIsToldThePixelToInspectAndTheCommandRunsAsPrinted() throws Exception {
+        CliRun run = CliRun.of("compare", brightened(dir.resolve("mine.png")).toString(), "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String look = line(run.out(), "look:    x ");
+        assertTrue(look.contains(" differs most in patch 1: yours ("), look);
+        assertTrue(look.contains("yours is brighter at 100.00 % and darker at 0.00 %"), look);
+        String[] at = look.substring("look:    x ".length()).split(" differs")[0].split(", y ");
+        int x = Integer.parseInt(at[0]);
+        int y = Integer.parseInt(at[1]);
+        assertTrue(x >= 250 && x <= 329 && y >= 470 && y <= 549, look);
+        String next = line(run.out(), "next:    ");
+        String command = "simpview inspect --page 4 --at " + x + "," + y + " --explain";
+        assertEquals("next:    " + command + " (how simpview made that pixel, term by term)", next);
+        List<String> words = ArgumentLine.split(command);
+        CliRun inspect = CliRun.of(words.subList(1, words.size()).toArray(new String[0]));
+        assertEquals(ExitCode.OK, inspect.exitCode(), inspect.err());
+        assertFalse(inspect.showsStackTrace(), inspect.err());
+    }
+
+    /** A scene in a folder whose name has a space and a quote: the command quotes it, and runs. */
+    @Test
+    void aSceneIsNamedInTheCommandSoThatAShellReadsItBack() throws Exception {
+        Path folder = Files.createDirectories(dir.resolve("my scenes'"));
+        Path scene = folder.resolve("page4.simp");
+        Files.copy(Path.of("simp", "page4.simp"), scene);
+        Files.copy(Path.of("simp", "cube.simp"), folder.resolve("cube.simp")); // page4.simp includes it
+        CliRun run = CliRun.of("compare", brightened(dir.resolve("mine.png")).toString(), "--scene", scene.toString(),
+                "--near-color", "1,1,1");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String next = line(run.out(), "next:    ");
+        assertTrue(next.startsWith("next:    simpview inspect --scene '" + folder.toString().replace("'", "'\\''")
+                + "/page4.simp' --near-color 1,1,1 --at "), next);
+        String command = next.substring("next:    ".length(), next.indexOf(" (how simpview"));
+        List<String> words = ArgumentLine.split(command);
+        assertEquals(scene.toString(), words.get(3));
+        CliRun inspect = CliRun.of(words.subList(1, words.size()).toArray(new String[0]));
+        assertEquals(ExitCode.OK, inspect.exitCode(), inspect.err());
+    }
+
+    /** Pages 1 to 3 are drawn by the program from random values: inspect does not draw them, so none is suggested. */
+    @Test
+    void aRandomPageIsToldThePixelButNoInspectCommand() throws Exception {
+        BufferedImage page = page(2);
+        for (int y = 150; y < 230; y++) {
+            for (int x = 300; x < 380; x++) {
+                page.setRGB(x, y, 0x00FF00);
+            }
+        }
+        Path mine = dir.resolve("two.png");
+        ImageIO.write(page, "png", mine.toFile());
+        CliRun run = CliRun.of("compare", mine.toString(), "--page", "2");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nlook:    x "), run.out());
+        assertFalse(run.out().contains("next:"), run.out());
+    }
+}
