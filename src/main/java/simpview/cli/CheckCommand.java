@@ -5,6 +5,8 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -14,6 +16,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
+import simpview.compare.BatchRow;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
@@ -167,7 +170,7 @@ public final class CheckCommand implements Callable<Integer> {
             OwnPictures own = pictures.ownPictures(parent.ownScenes(),
                     PageDrawing.warningsTo(spec.commandLine().getErr()), drawing);
             CompareBatch batch = new CompareBatch("check", own, judged, false, spec.commandLine().getOut(),
-                    spec.commandLine().getErr(), pages == null && !firstAssignment());
+                    spec.commandLine().getErr(), pages == null && !firstAssignment()).nextSteps(this::compareCommand);
             files = new OutputPaths().reads(rules, "the rubric").reads(scene, "the scene");
             CompareBatch.Outputs outputs = new CompareBatch.Outputs(outDir, null, null, null, true,
                     CompareBatch.DiffImages.FAILING, files);
@@ -180,6 +183,43 @@ public final class CheckCommand implements Callable<Integer> {
             return batch.folder(dir, pages != null ? pages : ALL_PAGES, outputs);
         }
     }
+
+    /**
+     * The command that compares a failing row's picture alone, with this check's options, and writes its diff image
+     * beside where it is run: its report names the pixel to look at first and the command that explains it. Null
+     * when the picture or its scene is not where the row says (a picture named in another way, a first-assignment
+     * page).
+     */
+    private String compareCommand(BatchRow row) {
+        Path picture = dir.resolve(row.file());
+        if (!Files.isRegularFile(picture)) {
+            return null;
+        }
+        String what;
+        if (scene != null) {
+            Path file = Files.isDirectory(scene) ? scene.resolve(row.target()) : scene;
+            if (!Files.isRegularFile(file)) {
+                return null;
+            }
+            what = "--scene " + ArgumentLine.shellWord(file.toString());
+        } else {
+            Matcher number = LEADING_NUMBER.matcher(row.target());
+            if (!number.lookingAt()) {
+                return null;
+            }
+            what = "--page " + number.group();
+        }
+        String name = picture.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String diff = (dot > 0 ? name.substring(0, dot) : name) + "-diff.png";
+        String verdict = rubric == null && !Files.isRegularFile(dir.resolve(FOLDER_RUBRIC))
+                ? pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold") : "";
+        return "simpview compare " + ArgumentLine.shellWord(picture.toString()) + " " + what
+                + pictures.drawingOptions() + verdict + " --diff " + ArgumentLine.shellWord(diff);
+    }
+
+    /** The page number a row's target starts with: "6", "2 (seed 361)". */
+    private static final Pattern LEADING_NUMBER = Pattern.compile("[0-9]+");
 
     /** Whether the first assignment's pages are checked (--assignment 1), not the eight pages or scenes. */
     private boolean firstAssignment() {

@@ -219,6 +219,13 @@ public final class CompareBatch {
      */
     private String flatClass = "";
 
+    /**
+     * For the student's table: the command that compares one failing row's picture alone, which names the pixel to
+     * look at first and how to inspect it; null for a row it cannot be given for. None unless {@link #nextSteps}
+     * sets it.
+     */
+    private Function<BatchRow, String> nextStep = row -> null;
+
     /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
         this(command, own, rubric, partial, out, err, false);
@@ -235,6 +242,15 @@ public final class CompareBatch {
         this.out = out;
         this.err = err;
         this.pagesIfHandedIn = pagesIfHandedIn;
+    }
+
+    /**
+     * This batch, its student's table ({@code check}) followed by {@code command} of each failing row for which it
+     * gives one: the one picture's comparison, which says where and why it differs.
+     */
+    CompareBatch nextSteps(Function<BatchRow, String> command) {
+        this.nextStep = command;
+        return this;
     }
 
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
@@ -1670,7 +1686,7 @@ public final class CompareBatch {
             return ExitCode.SCENE_ERROR;
         }
         if (outputs.student()) {
-            out.print(StudentTable.text(rows, Wanted.missing(wanted, rows)));
+            out.print(StudentTable.text(rows, Wanted.missing(wanted, rows), nextStep));
         } else {
             out.print(markdown);
             if (outDir != null) {

@@ -85,14 +85,20 @@ final class OwnPicturesOptions {
      * which takes them all).
      */
     String drawingOptions() {
+        String typed = typedOptions("--simp-dir", "--seed", "--near-color", "--far-color");
+        return ownColours ? typed + " --own-colors" : typed;
+    }
+
+    /** The options of {@code names} given to the command, each with its value as typed: " --min 99.5". */
+    String typedOptions(String... names) {
         StringBuilder out = new StringBuilder();
-        for (String name : new String[] {"--simp-dir", "--seed", "--near-color", "--far-color"}) {
+        for (String name : names) {
             OptionSpec given = spec.commandLine().getParseResult().matchedOption(name);
             if (given != null) {
                 out.append(' ').append(name).append(' ').append(ArgumentLine.shellWord(given.stringValues().get(0)));
             }
         }
-        return ownColours ? out + " --own-colors" : out.toString();
+        return out.toString();
     }
 
     /** Whether --a1-rule was given. */

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 
 /**
  * {@code simpview check}'s one table for a student: each picture found, the
@@ -27,6 +28,15 @@ public final class StudentTable {
     }
 
     public static String text(List<BatchRow> rows, List<Wanted> missing) {
+        return text(rows, missing, row -> null);
+    }
+
+    /**
+     * The same, with a line after the notes for each failing picture of a page or scene (a whole panel, not the
+     * first assignment's) for which {@code nextStep} gives a command: the one that compares that picture alone and
+     * says where and why it differs ("next: page-c3.png: simpview compare ...").
+     */
+    public static String text(List<BatchRow> rows, List<Wanted> missing, Function<BatchRow, String> nextStep) {
         List<String[]> lines = new ArrayList<>();
         lines.add(HEADINGS);
         for (BatchRow row : rows) {
@@ -82,6 +92,14 @@ public final class StudentTable {
             }
         }
         notes.forEach(out::append);
+        for (BatchRow row : rows) {
+            String command = row.result() == BatchRow.Result.FAIL && row.size() == Comparison.N && row.counts()
+                    ? nextStep.apply(row) : null;
+            if (command != null) {
+                out.append("next: ").append(row.file()).append(": ").append(command)
+                        .append(" (the pixel to look at first, and how simpview made it)\n");
+            }
+        }
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
         Map<String, String> notCounted = new LinkedHashMap<>(); // a first-assignment page: once, not per panel
         rows.stream().filter(r -> !r.counts())

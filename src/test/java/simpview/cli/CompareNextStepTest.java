@@ -102,4 +102,26 @@ class CompareNextStepTest {
         assertTrue(run.out().contains("\nlook:    x "), run.out());
         assertFalse(run.out().contains("next:"), run.out());
     }
+
+    /**
+     * {@code check} ends with the command that compares each failing picture alone, with the options it was given;
+     * run as printed, that comparison names the pixel to look at and how to inspect it.
+     */
+    @Test
+    void checkTellsEachFailingPictureTheCommandThatComparesItAlone() throws Exception {
+        Path folder = Files.createDirectories(dir.resolve("mine"));
+        brightened(folder.resolve("page4.png"));
+        ImageIO.write(page(5), "png", folder.resolve("page5.png").toFile());
+        CliRun run = CliRun.of("check", folder.toString(), "--pages", "4-5", "--min", "98.5");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String command = "simpview compare " + folder.resolve("page4.png") + " --page 4 --min 98.5 --diff page4-diff.png";
+        assertTrue(run.out().contains("\nnext: page4.png: " + command + " (the pixel to look at first, and how"
+                + " simpview made it)\n"), run.out());
+        assertFalse(run.out().contains("next: page5.png"), run.out());
+        List<String> words = ArgumentLine.split(command.replace("page4-diff.png", dir.resolve("d.png").toString()));
+        CliRun alone = CliRun.of(words.subList(1, words.size()).toArray(new String[0]));
+        assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), alone.err());
+        assertTrue(alone.out().contains("FAIL: 98.48 % within 8/255 with slack (98.50 % needed)"), alone.out());
+        assertTrue(alone.out().contains("\nnext:    simpview inspect --page 4 --at "), alone.out());
+    }
 }
