@@ -20,9 +20,11 @@ import javax.imageio.ImageIO;
 import javax.swing.TransferHandler;
 import org.junit.jupiter.api.Test;
 import simpview.compare.Comparison;
+import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
+import simpview.compare.WorstPixel;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import java.awt.Point;
@@ -90,6 +92,10 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertTrue(status.startsWith("vs mine.png: identical " + Percent.of(expected.share(0, true))), status);
         assertTrue(status.contains("≤8/255 " + Percent.of(expected.share(8, true))), status);
         assertTrue(expected.share(0, true) < 0.99, "the square differs");
+        // It fails: the status names the pixel to look at first, the one that differs most in the square.
+        WorstPixel look = WorstPixel.in(expected, DiffRegions.of(expected, 8, 1).largest().get(0), 8);
+        assertTrue(look.x() >= 300 && look.x() < 400 && look.y() >= 250 && look.y() < 350, look.toString());
+        assertTrue(status.contains(" · look at x " + look.x() + ", y " + look.y() + " · showing ours"), status);
         assertEquals(0, driver.screenDiffersFrom(ours), "ours first");
         // The inspector shows both pictures at the pixel: in the square, ours and their cyan.
         Point inSquare = driver.onScreen(50 + 350, 50 + 350);

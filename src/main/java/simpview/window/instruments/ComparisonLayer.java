@@ -6,6 +6,7 @@ import simpview.window.render.View;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -16,11 +17,15 @@ import javax.swing.JFrame;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
+import simpview.compare.ComparisonReport;
+import simpview.compare.DiffRegion;
+import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Shares;
 import simpview.compare.SystematicError;
+import simpview.compare.WorstPixel;
 import simpview.surface.PageCanvas;
 
 /**
@@ -46,6 +51,11 @@ public final class ComparisonLayer {
     private Comparison comparison;
     /** The mistake that changes their whole panel the same way, or null (made once a comparison is). */
     private SystematicError systematic;
+    /**
+     * Of a picture that fails and no such mistake explains, the pixel to look at first (the one that differs most
+     * in its largest patch), else null.
+     */
+    private WorstPixel look;
     private Showing showing = Showing.OURS;
     private String text = "";
 
@@ -83,6 +93,7 @@ public final class ComparisonLayer {
         comparison = picture == null ? null
                 : Comparison.of(Picture.ofPage(view.image(), "simpview").panel(), picture.panel());
         systematic = comparison == null ? null : SystematicError.find(comparison, TOLERANCE);
+        look = comparison == null || systematic != null ? null : lookAt(comparison);
         if (comparison == null) {
             showing = Showing.OURS;
             text = "";
@@ -139,8 +150,18 @@ public final class ComparisonLayer {
         text = String.format("vs %s: identical %s, ≤1/255 %s, ≤8/255 %s (1 px slack)%s · showing %s · B flip · H heat · ⌫ stop",
                 theirs.get(shown.view()).name().replaceFirst(".*[/\\\\]", ""), Percent.of(slack.identical()),
                 Percent.of(slack.within1()), Percent.of(slack.within8()),
-                systematic == null ? "" : " · looks " + systematic.brief(), showing.name().toLowerCase(Locale.ROOT));
+                systematic == null ? look == null ? "" : " · look at x " + look.x() + ", y " + look.y()
+                        : " · looks " + systematic.brief(), showing.name().toLowerCase(Locale.ROOT));
         say.accept(text);
+    }
+
+    /** The pixel to look at first in a comparison that fails by compare's defaults, or null when it passes. */
+    private static WorstPixel lookAt(Comparison comparison) {
+        if (comparison.verdictShare(TOLERANCE) * 100 >= ComparisonReport.DEFAULT_MINIMUM) {
+            return null;
+        }
+        List<DiffRegion> largest = DiffRegions.of(comparison, TOLERANCE, 1).largest();
+        return largest.isEmpty() ? null : WorstPixel.in(comparison, largest.get(0), TOLERANCE);
     }
 
     private BufferedImage heatPage() {
