@@ -149,11 +149,12 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
 
     /**
      * The pixel to look at first, of a picture that fails or passes with a solid patch: the one that differs most in
-     * the largest patch ({@link WorstPixel}); null for a picture that passes otherwise, or has no patch.
+     * the largest patch ({@link WorstPixel}); null for a picture that passes otherwise, has no patch, or has a hint
+     * of a mistake of the whole panel (which says more than one pixel).
      */
     public WorstPixel lookAt() {
         List<DiffRegion> largest = regions.largest();
-        if (largest.isEmpty() || passes() && solidPatch(largest) == null) {
+        if (largest.isEmpty() || systematic != null || passes() && solidPatch(largest) == null) {
             return null;
         }
         return WorstPixel.in(comparison, largest.get(0), tolerance);

@@ -63,6 +63,14 @@ class StudentMistakesTest {
         String text = report(ours, moved);
         assertTrue(text.contains("hint: your panel is simpview's moved 1 px right"), text);
         assertFalse(text.contains("edges a pixel off"), text);
+        // moved 3 pixels it fails: the hint says why, and no pixel of it is pointed to
+        for (int i = 0; i < moved.length; i++) {
+            moved[i] = i % N < 3 ? 0 : ours[i - 3];
+        }
+        String failing = report(ours, moved);
+        assertTrue(failing.contains("FAIL: "), failing);
+        assertTrue(failing.contains("hint: your panel is simpview's moved 3 px right"), failing);
+        assertFalse(failing.contains("look:"), failing);
     }
 
     @Test
