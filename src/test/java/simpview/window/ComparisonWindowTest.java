@@ -8,16 +8,11 @@ import simpview.window.render.View;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.datatransfer.DataFlavor;
-import java.awt.datatransfer.Transferable;
 import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
-import java.io.File;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Optional;
 import javax.imageio.ImageIO;
-import javax.swing.TransferHandler;
 import org.junit.jupiter.api.Test;
 import simpview.compare.Comparison;
 import simpview.compare.DiffRegions;
@@ -54,27 +49,7 @@ public class ComparisonWindowTest extends WindowTestCase {
     }
 
     private void drop(Path file) throws Exception {
-        Transferable files = new Transferable() {
-            @Override
-            public DataFlavor[] getTransferDataFlavors() {
-                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
-            }
-
-            @Override
-            public boolean isDataFlavorSupported(DataFlavor flavor) {
-                return DataFlavor.javaFileListFlavor.equals(flavor);
-            }
-
-            @Override
-            public Object getTransferData(DataFlavor flavor) {
-                return List.of(new File(file.toString()));
-            }
-        };
-        boolean taken = driver.onEdt(() -> {
-            TransferHandler handler = driver.window().frame().getTransferHandler();
-            return handler.importData(new TransferHandler.TransferSupport(driver.window().frame().getRootPane(), files));
-        });
-        assertTrue(taken, "the window took the dropped picture");
+        assertTrue(DroppedFiles.dropOn(driver, file), "the window took the dropped picture");
     }
 
     @Test

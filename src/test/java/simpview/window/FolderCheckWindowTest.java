@@ -3,16 +3,11 @@ package simpview.window;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.datatransfer.DataFlavor;
-import java.awt.datatransfer.Transferable;
 import java.awt.image.BufferedImage;
-import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Optional;
 import javax.imageio.ImageIO;
-import javax.swing.TransferHandler;
 import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
@@ -86,24 +81,7 @@ class FolderCheckWindowTest extends WindowTestCase {
     private String drop(Path mine) throws Exception {
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
         driver.onEdt(() -> driver.window().checkFoldersWith(CheckCommand::checkFolder));
-        Transferable folder = new Transferable() {
-            @Override
-            public DataFlavor[] getTransferDataFlavors() {
-                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
-            }
-
-            @Override
-            public boolean isDataFlavorSupported(DataFlavor flavor) {
-                return DataFlavor.javaFileListFlavor.equals(flavor);
-            }
-
-            @Override
-            public Object getTransferData(DataFlavor flavor) {
-                return List.of(new File(mine.toString()));
-            }
-        };
-        assertTrue(driver.onEdt(() -> driver.window().frame().getTransferHandler().importData(
-                new TransferHandler.TransferSupport(driver.window().frame().getRootPane(), folder))), "the window took the folder");
+        assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the folder");
         driver.awaitEdt(() -> driver.window().lastCheck() != null, "the folder's table");
         return driver.onEdt(() -> driver.window().lastCheck());
     }

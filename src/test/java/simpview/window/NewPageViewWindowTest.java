@@ -5,14 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Point;
-import java.awt.datatransfer.DataFlavor;
-import java.awt.datatransfer.Transferable;
 import java.awt.event.KeyEvent;
-import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
-import javax.swing.TransferHandler.TransferSupport;
 import org.junit.jupiter.api.Test;
 import simpview.window.render.RenderedView;
 import simpview.window.render.View;
@@ -50,8 +45,7 @@ public class NewPageViewWindowTest extends WindowTestCase {
 
         // another scene dropped on the window
         zoomInAndPan();
-        assertTrue(driver.onEdt(() -> window.frame().getTransferHandler()
-                .importData(new TransferSupport(window.frame(), fileList(first)))));
+        assertTrue(DroppedFiles.dropOn(driver, first), "the window took the dropped scene");
         driver.awaitShown(new View.OfScene(first));
         assertFitted("a scene dropped");
 
@@ -102,25 +96,5 @@ public class NewPageViewWindowTest extends WindowTestCase {
 
     private static String triangle(int z) {
         return "polygon (-60, -60, " + z + ") (60, -60, " + z + ") (0, 60, " + z + ")\n";
-    }
-
-    private static Transferable fileList(Path file) {
-        List<File> files = List.of(file.toFile());
-        return new Transferable() {
-            @Override
-            public DataFlavor[] getTransferDataFlavors() {
-                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
-            }
-
-            @Override
-            public boolean isDataFlavorSupported(DataFlavor flavor) {
-                return DataFlavor.javaFileListFlavor.equals(flavor);
-            }
-
-            @Override
-            public Object getTransferData(DataFlavor flavor) {
-                return files;
-            }
-        };
     }
 }

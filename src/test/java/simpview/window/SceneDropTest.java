@@ -4,10 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.datatransfer.DataFlavor;
 import java.awt.datatransfer.StringSelection;
 import java.awt.datatransfer.Transferable;
-import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -24,13 +22,13 @@ public class SceneDropTest {
 
     @Test
     void opensTheFirstSimpFileDropped() {
-        assertTrue(drop.importData(support(files("notes.txt", "house.simp", "tree.simp"))));
+        assertTrue(drop.importData(files("notes.txt", "house.simp", "tree.simp")));
         assertEquals(List.of(Path.of("house.simp")), opened);
     }
 
     @Test
     void saysWhatItWantsWhenNoSimpFileIsDropped() {
-        assertFalse(drop.importData(support(files("notes.txt"))));
+        assertFalse(drop.importData(files("notes.txt")));
         assertEquals(List.of(), opened);
         assertEquals(List.of("Drop a .simp file to open it."), told);
     }
@@ -39,11 +37,11 @@ public class SceneDropTest {
     void aPictureDroppedIsCompared() {
         List<Path> compared = new ArrayList<>();
         SceneDrop comparing = new SceneDrop(opened::add, compared::add, told::add);
-        assertTrue(comparing.importData(support(files("notes.txt", "Mine.PNG"))));
+        assertTrue(comparing.importData(files("notes.txt", "Mine.PNG")));
         assertEquals(List.of(Path.of("Mine.PNG")), compared);
-        assertFalse(comparing.importData(support(files("notes.txt"))));
+        assertFalse(comparing.importData(files("notes.txt")));
         assertEquals(List.of("Drop a .simp file to open it, or a picture (.png, .jpg) to compare it with the page."), told);
-        assertFalse(drop.importData(support(files("mine.png"))), "a window that does not compare refuses pictures");
+        assertFalse(drop.importData(files("mine.png")), "a window that does not compare refuses pictures");
     }
 
     @Test
@@ -52,12 +50,12 @@ public class SceneDropTest {
         List<Path> compared = new ArrayList<>();
         SceneDrop checking = new SceneDrop(opened::add, compared::add, checked::add, told::add);
         Path folder = Files.createDirectories(dir.resolve("my pages"));
-        assertTrue(checking.importData(support(files("notes.txt", folder.toString()))));
+        assertTrue(checking.importData(files("notes.txt", folder.toString())));
         assertEquals(List.of(folder), checked);
-        assertFalse(checking.importData(support(files("notes.txt"))));
+        assertFalse(checking.importData(files("notes.txt")));
         assertEquals(List.of("Drop a .simp file to open it, a picture (.png, .jpg) to compare it with the page, "
                 + "or a folder of your pages to check them all."), told);
-        assertFalse(new SceneDrop(opened::add, compared::add, told::add).importData(support(files(folder.toString()))),
+        assertFalse(new SceneDrop(opened::add, compared::add, told::add).importData(files(folder.toString())),
                 "a window that does not check folders refuses them");
         assertEquals(List.of(), compared);
     }
@@ -73,26 +71,7 @@ public class SceneDropTest {
         return new TransferSupport(new JPanel(), data);
     }
 
-    private static Transferable files(String... names) {
-        List<File> files = new ArrayList<>();
-        for (String name : names) {
-            files.add(new File(name));
-        }
-        return new Transferable() {
-            @Override
-            public DataFlavor[] getTransferDataFlavors() {
-                return new DataFlavor[] {DataFlavor.javaFileListFlavor};
-            }
-
-            @Override
-            public boolean isDataFlavorSupported(DataFlavor flavor) {
-                return DataFlavor.javaFileListFlavor.equals(flavor);
-            }
-
-            @Override
-            public Object getTransferData(DataFlavor flavor) {
-                return files;
-            }
-        };
+    private static TransferSupport files(String... names) {
+        return support(DroppedFiles.named(names));
     }
 }
