@@ -320,18 +320,10 @@ class LitLightingTest {
                 ScenePipeline.draw(write("tilted.simp", scene), canvas, ScenePipeline.Options.lit(new SceneLibrary()),
                         SceneMonitor.NONE);
             }
-            int[] pixels = pixels(canvas);
-            Set<Integer> lit = new HashSet<>();
-            int count = 0;
-            for (int p : pixels) {
-                if ((p & 0xFFFFFF) != 0) {
-                    lit.add(p & 0xFFFFFF);
-                    count++;
-                }
-            }
-            assertEquals(Set.of(0x808080), lit, carrier + ", " + threads + " thread(s)");
+            NotBlack drawn = NotBlack.of(pixels(canvas));
+            assertEquals(Set.of(0x808080), drawn.colours(), carrier + ", " + threads + " thread(s)");
             int least = carrier.equals("line") || carrier.equals("wire") ? 150 : 30_000;
-            assertTrue(count > least, carrier + ": " + count + " pixels");
+            assertTrue(drawn.count() > least, carrier + ": " + drawn.count() + " pixels");
         }
     }
 
@@ -362,23 +354,32 @@ class LitLightingTest {
                     canvas.drawWith(drawing);
                     ScenePipeline.draw(file, canvas, ScenePipeline.Options.lit(new SceneLibrary()), SceneMonitor.NONE);
                     int[] pixels = pixels(canvas);
-                    Set<Integer> lit = new HashSet<>();
-                    int count = 0;
-                    for (int p : pixels) {
-                        if ((p & 0xFFFFFF) != 0) {
-                            lit.add(p & 0xFFFFFF);
-                            count++;
-                        }
-                    }
+                    NotBlack drawn = NotBlack.of(pixels);
                     String where = lights + " light(s), " + threads + " thread(s), picture " + picture;
-                    assertEquals(Set.of(0x808080), lit, where);
-                    assertTrue(count > 30_000, where + ": " + count + " pixels");
+                    assertEquals(Set.of(0x808080), drawn.colours(), where);
+                    assertTrue(drawn.count() > 30_000, where + ": " + drawn.count() + " pixels");
                     if (first == null) {
                         first = pixels;
                     }
                     assertArrayEquals(first, pixels, where + ": the same picture");
                 }
             }
+        }
+    }
+
+    /** The colours (RGB) of a picture's pixels that are not black, and how many such pixels there are. */
+    private record NotBlack(Set<Integer> colours, int count) {
+
+        static NotBlack of(int[] pixels) {
+            Set<Integer> colours = new HashSet<>();
+            int count = 0;
+            for (int p : pixels) {
+                if ((p & 0xFFFFFF) != 0) {
+                    colours.add(p & 0xFFFFFF);
+                    count++;
+                }
+            }
+            return new NotBlack(colours, count);
         }
     }
 
