@@ -28,7 +28,6 @@ import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
-import simpview.compare.OutputFiles;
 import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
@@ -198,7 +197,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     /**
      * At the end of a run: a FIFO it was to write and did not write is opened and closed, so that its reader is
      * not left waiting ({@link OutputPaths#releaseUnwritten}); after a usage error found before the files were
-     * listed, the files --diff, --gradescope and --junit name.
+     * listed, the files --diff, --gradescope and --junit name, but none the line names otherwise too (--diff naming
+     * the picture to compare: it may be another program's input, whose writer must not be let in).
      */
     private void releaseOutputs(int code) {
         if (files != null) {
@@ -208,11 +208,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         if (code == ExitCode.OK) {
             return;
         }
-        for (Path named : new Path[] {diff, gradescope, junit}) {
-            if (named != null) {
-                OutputFiles.release(named);
-            }
-        }
+        NamedOutputs.releaseNamedBy(spec, this);
     }
 
     private int compare() {

@@ -83,7 +83,7 @@ public final class Main {
                 .setParameterExceptionHandler((e, words) -> {
                     if (!ran.get()) {
                         // a FIFO named as an output would leave its reader waiting for ever
-                        NamedOutputs.release(e.getCommandLine(), words);
+                        NamedOutputs.release(e.getCommandLine(), NamedOutputs.expanded(e.getCommandLine(), words));
                     }
                     return reportUsageError(e, words);
                 });

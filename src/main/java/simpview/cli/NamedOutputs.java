@@ -1,10 +1,17 @@
 package simpview.cli;
 
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParseResult;
 import simpview.compare.OutputFiles;
 
 /**
@@ -16,6 +23,9 @@ import simpview.compare.OutputFiles;
  * own are released, never those a folder option (--out-dir, --html) would
  * hold: which of those the run would write depends on the options that could
  * not be read, and a FIFO it was not going to write may be another program's.
+ * For the same reason a file the line also names otherwise (the picture to
+ * compare given again as --diff, a scene) is left alone: it may be an input,
+ * whose writer must not be let in to write into nothing.
  */
 final class NamedOutputs {
 
@@ -54,24 +64,80 @@ final class NamedOutputs {
     }
 
     /**
+     * The words of the line being parsed at {@code where}, each @FILE replaced by the words it holds as picocli
+     * read them ("render @args.txt" names --out in args.txt); {@code args} as given when picocli kept none.
+     */
+    static String[] expanded(CommandLine where, String[] args) {
+        CommandLine top = where;
+        while (top.getParent() != null) {
+            top = top.getParent();
+        }
+        ParseResult parsed = top.getParseResult();
+        return parsed == null || parsed.expandedArgs().isEmpty() ? args : parsed.expandedArgs().toArray(String[]::new);
+    }
+
+    /**
+     * After a usage error met by {@code command} itself, before it listed the files it writes: each file its line
+     * (as {@link #expanded}) names by one of its output options is released, as after a line that cannot be parsed.
+     */
+    static void releaseNamedBy(CommandSpec spec, OfCommand command) {
+        CommandLine where = spec.commandLine();
+        String[] words = expanded(where, new String[0]);
+        filesNamed(command.outputFileOptions(), words).forEach(OutputFiles::release);
+    }
+
+    /**
      * The values {@code args} gives the options {@code options}, as "--out F" or "--out=F", up to "--" (after it,
-     * every word is a parameter); "-" (standard output) is no file.
+     * every word is a parameter); "-" (standard output) is no file. Each file is listed once, however many names
+     * it is given, and none that another word of the line names too (a word of its own, or the value in
+     * "--scene=F"): that one may be read.
      */
     static List<Path> filesNamed(List<String> options, String[] args) {
-        List<Path> files = new ArrayList<>();
-        for (int i = 0; i < args.length && !"--".equals(args[i]); i++) {
+        Map<Path, Path> files = new LinkedHashMap<>();
+        Set<Integer> values = new HashSet<>();
+        int end = args.length;
+        for (int i = 0; i < args.length; i++) {
+            if ("--".equals(args[i])) {
+                end = i;
+                break;
+            }
             for (String option : options) {
                 String value = null;
                 if (args[i].equals(option) && i + 1 < args.length) {
                     value = args[i + 1];
+                    values.add(i + 1);
                 } else if (args[i].startsWith(option + "=")) {
                     value = args[i].substring(option.length() + 1);
+                    values.add(i);
                 }
                 if (value != null && !value.isEmpty() && !"-".equals(value)) {
-                    files.add(Path.of(value));
+                    String named = value;
+                    identity(named).ifPresent(file -> files.putIfAbsent(file, Path.of(named)));
                 }
             }
         }
-        return files;
+        Set<Path> namedOtherwise = new HashSet<>();
+        for (int i = 0; i < args.length; i++) {
+            if (values.contains(i) || i < end && options.contains(args[i])) {
+                continue;
+            }
+            String word = args[i];
+            int equals = word.indexOf('=');
+            if (i < end && word.startsWith("-") && equals > 0) {
+                word = word.substring(equals + 1);
+            }
+            identity(word).ifPresent(namedOtherwise::add);
+        }
+        files.keySet().removeAll(namedOtherwise);
+        return new ArrayList<>(files.values());
+    }
+
+    /** The file {@code word} names ({@link OutputFiles#identity}), or none when it can be no path. */
+    private static Optional<Path> identity(String word) {
+        try {
+            return Optional.of(OutputFiles.identity(Path.of(word)));
+        } catch (InvalidPathException e) {
+            return Optional.empty();
+        }
     }
 }

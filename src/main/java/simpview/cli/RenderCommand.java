@@ -317,7 +317,8 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
     /**
      * At the end of a run: a FIFO it was to write and did not write (a page that failed, those after a write that
      * failed) is opened and closed, so that its reader is not left waiting ({@link OutputPaths#releaseUnwritten});
-     * after a usage error found before the files were listed, those --out and --primitives name.
+     * after a usage error found before the files were listed, those --out and --primitives name, but none the line
+     * names otherwise too (--primitives naming the scene: it may be another program's input).
      */
     private void releaseOutputs(int code) {
         if (files != null) {
@@ -327,12 +328,7 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         if (code == ExitCode.OK) {
             return;
         }
-        if (out != null) {
-            OutputFiles.release(out);
-        }
-        if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
-            OutputFiles.release(primitives);
-        }
+        NamedOutputs.releaseNamedBy(spec, this);
     }
 
     private void usage(boolean fine, String message) {

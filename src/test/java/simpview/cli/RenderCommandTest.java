@@ -200,8 +200,8 @@ class RenderCommandTest {
 
     /**
      * A line picocli cannot parse never reaches render, whichever word is wrong and wherever it stands: a
-     * mistyped option after --out, a value that is no number before it, --out=F, --primitives, the command's own
-     * name mistyped. The reader of each FIFO the line names as an output still sees the end.
+     * mistyped option after --out, a value that is no number before it, --out=F, --out in a file of words
+     * (@words.txt), --primitives, the command's own name mistyped. The reader of each FIFO the line names as an output still sees the end.
      */
     @Test
     @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -212,6 +212,8 @@ class RenderCommandTest {
         endSeenAfterAUsageError(fifo, "render", "--page", "1", "--seed", "three", "--out", f);
         endSeenAfterAUsageError(fifo, "render", "--page", "1", "--out=" + f, "--sede=3");
         endSeenAfterAUsageError(fifo, "rendr", "--page", "1", "--out", f);
+        Path words = Files.writeString(dir.resolve("words.txt"), "--page 1\n--out " + f + " --sede 3\n");
+        endSeenAfterAUsageError(fifo, "render", "@" + words);
         Path listing = Fifos.make(dir.resolve("lines.txt"));
         endSeenAfterAUsageError(listing, "render", "--page", "1", "--primitives", listing.toString(), "--sede", "3");
     }
