@@ -1397,6 +1397,18 @@ public final class SimpviewWindow {
         renderer.submit(pending, this::finished);
     }
 
+    /**
+     * Whether two views show the same page or scene: a scene file however its path is written (relative as
+     * typed at start, absolute from Ctrl+O or a drop); scenes of one name in two folders are two. Told without
+     * asking the file system, on the event thread.
+     */
+    static boolean sameView(View one, View other) {
+        if (one instanceof View.OfScene a && other instanceof View.OfScene b) {
+            return a.file().toAbsolutePath().normalize().equals(b.file().toAbsolutePath().normalize());
+        }
+        return one.equals(other);
+    }
+
     private void finished(RenderJob job, RenderedView result) {
         if (job != pending) {
             return; // cancelled or overtaken by a newer request
@@ -1406,7 +1418,7 @@ public final class SimpviewWindow {
             status.say(StatusStrip.HINTS);
             return;
         }
-        if (shown != null && !shown.view().equals(result.view())) {
+        if (shown != null && !sameView(shown.view(), result.view())) {
             // Another page or scene opens fitted, as in an image viewer; the same one drawn again (a save, F5, a
             // new seed, a turn) keeps zoom and pan, to compare before and after.
             pageView.zoomPan().refit();

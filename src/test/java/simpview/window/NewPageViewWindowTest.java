@@ -69,6 +69,32 @@ public class NewPageViewWindowTest extends WindowTestCase {
                 "the next page opens cropped, as Crop was the fit chosen");
     }
 
+    /**
+     * The scene on screen opened again keeps zoom and pan however its path is written: the window opened on a
+     * relative path ({@code simpview first.simp}), Ctrl+O and a drop give the absolute one. A scene of the same
+     * name in another folder is another scene, and opens fitted.
+     */
+    @Test
+    void theSceneOnScreenOpenedAgainByAnotherPathKeepsZoomAndAnotherOfItsNameOpensFitted() throws Exception {
+        Path first = Files.writeString(dir.resolve("first.simp"), triangle(-150));
+        Path relative = Path.of("").toAbsolutePath().relativize(first);
+        assertFalse(relative.isAbsolute());
+        SimpviewWindow window = openWindowOn(relative);
+        Point zoomed = zoomInAndPan();
+        driver.onEdt(() -> window.openScene(first));
+        driver.awaitShown(new View.OfScene(first));
+        assertZoomedAt(zoomed, "after the scene on screen was opened again by its absolute path");
+        driver.onEdt(() -> window.openScene(dir.resolve("sub").resolve("..").resolve("first.simp")));
+        driver.awaitShown(new View.OfScene(dir.resolve("sub").resolve("..").resolve("first.simp")));
+        assertZoomedAt(zoomed, "after the scene on screen was opened again through a folder and ..");
+
+        Path namesake = Files.writeString(Files.createDirectories(dir.resolve("other")).resolve("first.simp"),
+                triangle(-50));
+        driver.onEdt(() -> window.openScene(namesake));
+        driver.awaitShown(new View.OfScene(namesake));
+        assertFitted("a scene of the same name in another folder");
+    }
+
     /** Zooms in to 4x about a point off the middle and pans; returns the image's corner on screen then. */
     private Point zoomInAndPan() throws Exception {
         return driver.onEdt(() -> {
