@@ -1,7 +1,6 @@
 package simpview.inspect;
 
 import java.awt.geom.Line2D;
-import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -63,20 +62,25 @@ public final class SkippedPrimitives {
 
     /**
      * Whether an outline (panel x and y in turn: a line's two ends, or a
-     * polygon's corners) lies wholly outside the panel, 0 to 650 each way.
+     * polygon's corners) lies wholly outside the panel, 0 to 650 each way:
+     * none of its edges crosses the panel. U draws outlines, not fills, so a
+     * polygon running all round the panel shows nothing of it either.
      */
     static boolean missesThePanel(double[] outline) {
         Rectangle2D panel = new Rectangle2D.Double(0, 0, PageCanvas.PANEL, PageCanvas.PANEL);
-        if (outline.length == 4) {
-            return !new Line2D.Double(outline[0], outline[1], outline[2], outline[3]).intersects(panel);
+        if (outline.length < 4) {
+            return !panel.contains(outline[0], outline[1]);
         }
-        Path2D.Double shape = new Path2D.Double();
-        shape.moveTo(outline[0], outline[1]);
-        for (int k = 2; k + 1 < outline.length; k += 2) {
-            shape.lineTo(outline[k], outline[k + 1]);
+        int corners = outline.length / 2;
+        int edges = corners == 2 ? 1 : corners;
+        for (int k = 0; k < edges; k++) {
+            int next = (k + 1) % corners;
+            if (new Line2D.Double(outline[2 * k], outline[2 * k + 1], outline[2 * next], outline[2 * next + 1])
+                    .intersects(panel)) {
+                return false;
+            }
         }
-        shape.closePath();
-        return !shape.intersects(panel) && !panel.contains(outline[0], outline[1]);
+        return true;
     }
 
     /**

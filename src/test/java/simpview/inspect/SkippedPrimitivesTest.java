@@ -50,6 +50,25 @@ class SkippedPrimitivesTest {
         assertTrue(SkippedPrimitives.missesThePanel(new double[] {-100, -100, -50, 800}));
     }
 
+    /**
+     * U draws outlines, not fills: a skipped polygon whose outline runs all round the panel (a wide wall beyond
+     * the far plane: at z = -200 the view reaches 200 each way, the wall 1,000 and more) shows nothing on it, and is
+     * counted among those wholly outside. One with a corner on the panel, or an edge across it, shows.
+     */
+    @Test
+    void anOutlineRunningAllRoundThePanelShowsNothingOfIt() throws Exception {
+        Path scene = dir.resolve("wall.simp");
+        Files.writeString(scene, "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                + "polygon (-1000, -1000, -200) (1000, -1000, -200) (0, 2000, -200)\n");
+        SkippedPrimitives.Found found = SkippedPrimitives.of(InspectedScene.of(scene), new SceneLibrary());
+        assertEquals(1, found.outlined().size());
+        assertEquals(1, found.outsideThePanel());
+        assertTrue(SkippedPrimitives.missesThePanel(new double[] {-1000, -100, 1650, -100, 325, 3000}));
+        assertFalse(SkippedPrimitives.missesThePanel(new double[] {-100, -100, 800, -100, 325, 300}));
+        assertFalse(SkippedPrimitives.missesThePanel(new double[] {-100, 325, 800, 325, 800, 2000}));
+        assertFalse(SkippedPrimitives.missesThePanel(new double[] {100, 100, 200, 100, 150, 200}));
+    }
+
     @Test
     void culledClippedAwayAndBehindTheEyeInALitScene() throws Exception {
         Path scene = dir.resolve("skips.simp");
