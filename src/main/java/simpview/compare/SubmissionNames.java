@@ -91,7 +91,9 @@ public final class SubmissionNames {
      * Why a file name names no page, for a name {@link #pageNumber} finds none in: "no page number in the name
      * (expected a name like page3.png)", or, when it has a number that is not after the word page (p1.png,
      * scan_1.png), that it is not and the name it would have ("...: its number, 1, is not after the word "page"
-     * (expected a name like page1.png)"). {@code word}: the name's start it expects ("page", "a1-page"), and
+     * (expected a name like page1.png)"); a copy's counter ("image (2).png") and a screenshot's or a camera's
+     * name ("Screenshot (3).png", "IMG_0003.png") have no number that may be a page's, as for {@link #numberIn}.
+     * {@code word}: the name's start it expects ("page", "a1-page"), and
      * {@code pages} how many pages there are: a number above them is no page's, and the example is page 3.
      */
     public static String noPageNumber(String fileName, String word, int pages) {
@@ -107,10 +109,18 @@ public final class SubmissionNames {
             return "no page number in the name: 0 is no page's number, pages count from 1 (expected a name like "
                     + word + "1" + ending + ")";
         }
-        // "a1" names the first assignment, not a page
-        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(plain(stem(fileName))).replaceAll(" "));
+        String expected = "(expected a name like " + word + "3" + ending + ")";
+        if (SCREENSHOT.matcher(plain(stem(fileName))).find()) { // its numbers are no page's, as numberIn says
+            return "no page number in the name: it is named as a screenshot tool or a camera names its pictures, by "
+                    + "a date, a time or a counter " + expected;
+        }
+        // "a1" names the first assignment, not a page; a copy's counter ("(2)") is none either
+        Matcher counter = COPY_COUNTER.matcher(plain(stem(fileName)));
+        String counted = counter.replaceAll(" ");
+        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(counted).replaceAll(" "));
         if (!m.find()) {
-            return "no page number in the name (expected a name like " + word + "3" + ending + ")";
+            return counter.reset().find() ? "no page number in the name: " + counter.group().replaceAll("\\s", "")
+                    + " is a copy's counter " + expected : "no page number in the name " + expected;
         }
         String number = m.group().replaceFirst("^0+(?=[0-9])", "");
         boolean aPage = number.length() <= 2 && Integer.parseInt(number) >= 1 && Integer.parseInt(number) <= pages;

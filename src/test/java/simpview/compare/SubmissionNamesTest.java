@@ -47,6 +47,17 @@ class SubmissionNamesTest {
                 + "like page3.png)", SubmissionNames.noPageNumber("IMG 2024.png", "page", 8));
         assertEquals("no page number in the name (expected a name like page3.png)",
                 SubmissionNames.noPageNumber("notes.png", "page", 8));
+        // a screenshot's, a camera's or a copy's number is no page's: not offered as one, as in a MISSING row's guess
+        assertEquals("no page number in the name: it is named as a screenshot tool or a camera names its pictures, "
+                + "by a date, a time or a counter (expected a name like page3.png)",
+                SubmissionNames.noPageNumber("Screenshot (5).png", "page", 8));
+        assertEquals("no page number in the name: it is named as a screenshot tool or a camera names its pictures, "
+                + "by a date, a time or a counter (expected a name like page3.jpg)",
+                SubmissionNames.noPageNumber("IMG_0005.JPG", "page", 8));
+        assertEquals("no page number in the name: (2) is a copy's counter (expected a name like page3.png)",
+                SubmissionNames.noPageNumber("image ( 2 ).png", "page", 8));
+        assertEquals("no page number in the name: its number, 4, is not after the word \"page\" (expected a name like "
+                + "page4.png)", SubmissionNames.noPageNumber("p4 (1).png", "page", 8));
         assertEquals("no page number in the name: its number, 3, is not after the word \"page\" (expected a name like "
                 + "a1-page3.png)", SubmissionNames.noPageNumber("a1-p3.png", "a1-page", 5));
         assertEquals("no page number in the name: 99999999999 is no page's number (expected a name like page3.png)",
