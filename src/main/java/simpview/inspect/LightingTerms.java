@@ -32,6 +32,22 @@ final class LightingTerms {
         return explain(state, point, normal, normalName, kd, null, terms);
     }
 
+    /**
+     * What N . V &lt; 0 means for a normal named {@code normalName}: a face normal faces away only from a polygon
+     * seen from its back; the vertices' own normals (summed, at a vertex, interpolated) may point away near an
+     * outline of a polygon that faces the eye.
+     */
+    static String facingAway(String normalName) {
+        String behind = "a light on the eye's side of it is behind it";
+        if (normalName.equals("N_face")) {
+            return "away from the eye (N . V < 0): the eye sees the polygon's back (its face normal faces away where "
+                    + "its vertices run clockwise on the panel), and " + behind;
+        }
+        return "away from the eye (N . V < 0): N, made from the vertices' own normals, points away from the eye, and "
+                + behind + "; such normals may point away near an outline (a silhouette) even where the polygon faces "
+                + "the eye, its vertices running counter-clockwise on the panel";
+    }
+
     private static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
             String kdFrom, Terms terms) {
         double[] n = unit(normal);
@@ -49,9 +65,7 @@ final class LightingTerms {
         double nv = dot(n, v);
         if (nv < 0) {
             terms.put("N_dot_V", nv);
-            terms.put("facing", "away from the eye (N . V < 0): the eye sees the surface's back, and a light on the "
-                    + "eye's side of it is behind it (a face normal faces away where the vertices run clockwise on "
-                    + "the panel)");
+            terms.put("facing", facingAway(normalName));
         }
         terms.put("ks", state.ks());
         terms.put("p", state.p());

@@ -2,6 +2,7 @@ package simpview.inspect;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -261,13 +262,34 @@ class LightingExplanationTest {
             Terms t = new PixelInspector().inspect(InspectedScene.of(file), 325, 300).explanation();
             if (k == 0) {
                 assertEquals(-8 / Math.sqrt(65), t.number("N_dot_V"), EPS);
-                assertTrue(t.get("facing").toString().startsWith("away from the eye"), t.get("facing").toString());
+                assertTrue(t.get("facing").toString().startsWith("away from the eye (N . V < 0): the eye sees the "
+                        + "polygon's back"), t.get("facing").toString());
                 assertEquals(true, t.list("lights").get(0).get("behind_surface"));
             } else {
                 assertEquals(null, t.get("N_dot_V"));
                 assertEquals(null, t.get("facing"));
             }
         }
+    }
+
+    /**
+     * A polygon that faces the eye (counter-clockwise on the panel) whose own vertex normals point away, (0, 0.6,
+     * -0.8) at every vertex, as they may near a smooth model's outline: phong's N . V is below 0, and the words
+     * say it is N, from the vertices' normals, that points away, not that the eye sees the polygon's back.
+     */
+    @Test
+    void vertexNormalsPointingAwayOnAFrontFaceAreNotCalledItsBack() throws Exception {
+        Files.writeString(dir.resolve("bent.obj"), "v -3 -3 0\nv 3 -3 0\nv 0 3 0\nvn 0 0.6 -0.8\n"
+                + "f 1//1 2//1 3//1\n");
+        Path file = dir.resolve("bent.simp");
+        Files.writeString(file, "camera -1 -1 1 1 -1 -100\nambient 0.2 0.2 0.2\nlight 1 1 1 1 0\nphong\n"
+                + "translate 0 0 -8\nobj bent\n");
+        Terms t = new PixelInspector().inspect(InspectedScene.of(file), 325, 300).explanation();
+        assertTrue(t.number("N_dot_V") < 0);
+        String facing = t.get("facing").toString();
+        assertTrue(facing.startsWith("away from the eye (N . V < 0): N, made from the vertices' own normals"), facing);
+        assertFalse(facing.contains("back"), facing);
+        assertEquals(true, t.list("lights").get(0).get("behind_surface"));
     }
 
     /** A flat polygon's colour is told as the polygon's own, to the bit, at a pixel where its depth runs. */
