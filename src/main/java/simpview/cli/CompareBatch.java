@@ -633,18 +633,30 @@ public final class CompareBatch {
     /**
      * Whether two of the folders at {@code level} of the pictures' paths hold a picture named alike: of the same
      * scene of {@code scenes} (pageA.png and bob_pageA.png), of the same page (page1.png and alice_page1.png), or,
-     * naming neither, of the same name. Each student of a class hands in the same pages; one student's pictures
-     * foldered by part (output/part1/page1.png, output/part2/page5.png) are each page once, and are one submission.
+     * naming neither, of the same name; in a folder none of whose pictures names a page or scene, a number names
+     * its page (p1.png). Each student of a class hands in the same pages; one student's pictures foldered by part
+     * (output/part1/page1.png, output/part2/page5.png, a draft part2/p1.png) are each page once, and are one
+     * submission.
      */
     private static boolean someNameInTwo(List<Path> pictures, int level, Set<String> scenes) {
+        // the folders some picture of which names a page or a scene
+        Set<String> naming = new HashSet<>();
+        for (Path picture : pictures) {
+            String name = picture.getFileName().toString();
+            if (SubmissionNames.sceneName(name, scenes).isPresent() || SubmissionNames.pageNumber(name).isPresent()) {
+                naming.add(picture.getName(level).toString());
+            }
+        }
         Map<String, Set<String>> folders = new HashMap<>();
         for (Path picture : pictures) {
             String name = picture.getFileName().toString();
             Optional<String> scene = SubmissionNames.sceneName(name, scenes);
             OptionalInt page = SubmissionNames.pageNumber(name);
-            // a picture named like no page by its number (p1.png, Page-one 1.png) is taken for that page: two
-            // students, one of whom named every page so, were one student's parts, the other's pages never asked
-            OptionalInt number = page.isPresent() ? page : SubmissionNames.numberIn(name);
+            // a picture named like no page by its number (p1.png, Page-one 1.png) is taken for that page in a folder
+            // that names no page at all: two students, one of whom named every page so, were one student's parts,
+            // the other's pages never asked. Beside a named page (part2/page2.png) it is a draft of one student's.
+            OptionalInt number = page.isPresent() || naming.contains(picture.getName(level).toString()) ? page
+                    : SubmissionNames.numberIn(name);
             String key = scene.isPresent() ? "scene " + scene.get() : number.isPresent() ? "page " + number.getAsInt()
                     : SubmissionNames.stem(name).toLowerCase(Locale.ROOT);
             folders.computeIfAbsent(key, k -> new HashSet<>()).add(picture.getName(level).toString());

@@ -118,6 +118,25 @@ class TeacherFolderTest {
     }
 
     /**
+     * One student's parts stay one submission with a draft named like no page beside a named page (part2/p1.png
+     * beside part2/page2.png): only a folder whose pictures all name no page has its numbers taken for pages, as
+     * bob's above; a part that names its page is one student's part, its p1.png a draft of page 1, not a second
+     * student who lacks page 1.
+     */
+    @Test
+    void oneStudentsPartsWithADraftNamedLikeNoPageStayOneSubmission() throws Exception {
+        Path parts = dir.resolve("mine");
+        writePng(parts.resolve("output/part1/page1.png"), page(1));
+        writePng(parts.resolve("output/part2/page2.png"), page(2));
+        writePng(parts.resolve("output/part2/p1.png"), page(1));
+        CliRun one = CliRun.of("compare", "--dir", parts.toString(), "--pages", "1-2", "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, one.exitCode(), one.out() + one.err());
+        assertFalse(one.err().contains("graded as the submissions"), one.err());
+        assertFalse(one.out().contains("MISSING"), one.out());
+    }
+
+    /**
      * bob/page9.png, named for a page there is not, was told on each of bob's MISSING rows. It is told once, on the
      * first page bob lacks, naming every page it may have been meant as.
      */
