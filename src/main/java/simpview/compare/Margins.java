@@ -10,8 +10,9 @@ package simpview.compare;
  * @param worst the largest difference from white of any channel, 0 to 255
  * @param firstX the first pixel not white, in the picture (x right, y down); -1 if none
  * @param firstY its row
+ * @param jpeg whether the tolerance is a JPEG's slack (its noise leaves white margins only near white)
  */
-public record Margins(int checked, int notWhite, int offByMore, int worst, int firstX, int firstY) {
+public record Margins(int checked, int notWhite, int offByMore, int worst, int firstX, int firstY, boolean jpeg) {
 
     static final int WIDTH = 50;
 
@@ -20,7 +21,7 @@ public record Margins(int checked, int notWhite, int offByMore, int worst, int f
         return offByMore == 0;
     }
 
-    static Margins of(int[] rgb, int width, int height, PanelPlace place, int tolerance) {
+    static Margins of(int[] rgb, int width, int height, PanelPlace place, int tolerance, boolean jpeg) {
         int x0 = Math.max(0, place.left() - WIDTH);
         int y0 = Math.max(0, place.top() - WIDTH);
         int x1 = Math.min(width, place.left() + PanelPlace.SIZE + WIDTH);
@@ -50,10 +51,14 @@ public record Margins(int checked, int notWhite, int offByMore, int worst, int f
                 }
             }
         }
-        return new Margins(checked, notWhite, offByMore, worst, firstX, firstY);
+        return new Margins(checked, notWhite, offByMore, worst, firstX, firstY, jpeg);
     }
 
-    /** E.g. "white (52,500 pixels)" or "1,204 of 52,500 pixels not white (up to 255/255 off), the first at x 3, y 7". */
+    /**
+     * E.g. "white (52,500 pixels)", "white within a JPEG's slack (288 of 140,000 pixels slightly off, up to 16/255;
+     * ...)" or "NOT white: 1,204 of 52,500 pixels off by more than the tolerance (up to 255/255), the first at x 3,
+     * y 7 of the picture".
+     */
     public String describe() {
         if (checked == 0) {
             return "none in the picture";
@@ -62,11 +67,12 @@ public record Margins(int checked, int notWhite, int offByMore, int worst, int f
             return String.format("white (%,d pixels)", checked);
         }
         String first = String.format("the first at x %d, y %d of the picture", firstX, firstY);
+        String allowed = jpeg ? "a JPEG's slack" : "the tolerance";
         if (offByMore == 0) {
-            return String.format("white within the tolerance (%,d of %,d pixels slightly off, up to %d/255; %s)",
-                    notWhite, checked, worst, first);
+            return String.format("white within %s (%,d of %,d pixels slightly off, up to %d/255; %s)",
+                    allowed, notWhite, checked, worst, first);
         }
-        return String.format("NOT white: %,d of %,d pixels off by more than the tolerance (up to %d/255), %s",
-                offByMore, checked, worst, first);
+        return String.format("NOT white: %,d of %,d pixels off by more than %s (up to %d/255), %s",
+                offByMore, checked, allowed, worst, first);
     }
 }

@@ -16,6 +16,11 @@ final class PanelFinder {
     static final int PAGE_MARGIN = 50;
     /** A channel at least this bright counts as white (JPEG captures are not exactly 255). */
     private static final int WHITE_LEVEL = 200;
+    /**
+     * How far from white a JPEG's margin pixel may be and still count as white: the same slack that finds its panel
+     * ({@link #WHITE_LEVEL}), for a JPEG's noise leaves near-white pixels in white margins, even at high quality.
+     */
+    static final int JPEG_SLACK = 255 - WHITE_LEVEL;
     /** Each side of the frame outside the panel must be at least this white. */
     private static final double FRAME_WHITE = 0.9;
     /** The panel's own outermost pixels must be at least this much not white. */

@@ -330,8 +330,13 @@ public final class Picture {
         return panel;
     }
 
-    /** The margins around the panel, judged with a tolerance (in 1/255 steps). */
+    /**
+     * The margins around the panel, judged with a tolerance (in 1/255 steps); a picture decoded as JPEG with at
+     * least a JPEG's slack ({@link PanelFinder#JPEG_SLACK}), for its noise leaves white margins only near white.
+     */
     public Margins margins(int tolerance) {
-        return Margins.of(rgb, width, height, place, tolerance);
+        boolean jpeg = format == PictureFormat.JPEG;
+        return Margins.of(rgb, width, height, place, jpeg ? Math.max(tolerance, PanelFinder.JPEG_SLACK) : tolerance,
+                jpeg);
     }
 }

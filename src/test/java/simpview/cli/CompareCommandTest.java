@@ -300,6 +300,32 @@ public class CompareCommandTest {
     }
 
     /**
+     * A JPEG that passes is not told its margins are NOT white for pixels a JPEG leaves near white: its margins get
+     * the slack a JPEG gets where its panel is found. The same pixels in a PNG are not white, as ever.
+     */
+    @Test
+    void aPassingJpegsNearWhiteMarginsAreWhiteWithinItsSlack() throws Exception {
+        BufferedImage page = page(2);
+        BufferedImage greyish = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        greyish.setData(page.getRaster());
+        // one 8x8 block of the top margin, JPEG's own block, 16/255 off white: what a JPEG's noise can leave there
+        for (int y = 8; y < 16; y++) {
+            for (int x = 96; x < 104; x++) {
+                greyish.setRGB(x, y, 0xEFEFEF);
+            }
+        }
+        CliRun run = CliRun.of("compare", jpeg("page2.jpg", greyish).toString(), "--page", "2", "--min", "98");
+        assertEquals(ExitCode.OK, run.exitCode(), run.out());
+        assertFalse(run.out().contains("NOT white"), run.out());
+        assertTrue(run.out().contains("\nmargins: white within a JPEG's slack ("), run.out());
+
+        CliRun png = CliRun.of("compare", png("page2.png", greyish).toString(), "--page", "2");
+        assertEquals(ExitCode.OK, png.exitCode(), png.out());
+        assertTrue(png.out().contains("\nmargins: NOT white: 64 of 140,000 pixels off by more than the tolerance (up to "
+                + "16/255), the first at x 96, y 8 of the picture\n"), png.out());
+    }
+
+    /**
      * The picture as JPEG at quality 95, as an image program saves it "at high quality": its margins stay white
      * enough for the panel to be found (at ImageIO's 75 they do not), and its colours still change near edges.
      */
