@@ -61,7 +61,7 @@ public final class GradescopeResults {
             String unreadable = lost.whyMissing("");
             test.addProperty("output", "No picture of " + name(lost.target()) + " was found in the submission"
                     + (unreadable.isEmpty() ? " (a picture is matched by its name, e.g. " + lost.example() + ")."
-                            : ": " + unreadable + "."));
+                            : ": " + Sentence.ended(unreadable)));
             test.addProperty("visibility", lost.rule().visibility());
             JsonArray tags = new JsonArray();
             tags.add(name(lost.target()));

@@ -157,7 +157,7 @@ public final class JUnitResults {
             element(xml, "failure", "no picture of " + GradescopeResults.name(wanted.target()) + " found"
                     + (unreadable.isEmpty() ? "" : "; " + unreadable), "missing",
                     "No picture's name names " + GradescopeResults.name(wanted.target()) + "."
-                            + (unreadable.isEmpty() ? "" : " " + unreadable + "."));
+                            + (unreadable.isEmpty() ? "" : " " + Sentence.ended(unreadable)));
             xml.writeEndElement();
         }
         xml.writeCharacters("\n  ");

@@ -56,6 +56,27 @@ class ReportWordsTest {
         assertFalse(html.contains("no picture of this page"), html);
     }
 
+    /**
+     * Why a page is missing ends a sentence once: a why that ends in "?" (a picture named for a page there is not,
+     * asked whether it was meant as the page lacked) is not followed by ".", in JUnit's text or Gradescope's.
+     */
+    @Test
+    void aWhyThatEndsInAQuestionMarkIsNotEndedAgain() throws Exception {
+        List<BatchRow> rows = List.of(GradingFixtures.row("bob/page1.png", "1 (seed 361)", STRIPES, STRIPES, ONE, false,
+                null));
+        String asked = "bob/page9.png is named for page 9, and there is no page 9 (the pages are 1 to 8): was it meant "
+                + "as page 3, which bob lacks?";
+        List<Wanted> wanted = List.of(new Wanted("1 (seed 361)", ONE), new Wanted("3", ONE, List.of(),
+                Wanted.PAGE_EXAMPLE, List.of(), List.of(new Wanted.Misnamed("bob/page9.png", asked))));
+
+        String xml = JUnitResults.xml(rows, wanted, 1);
+        assertTrue(xml.contains(" which bob lacks?</failure>"), xml);
+        assertFalse(xml.contains("lacks?."), xml);
+        String json = GradescopeResults.json(rows, wanted, 1);
+        assertTrue(json.contains(" which bob lacks?\""), json);
+        assertFalse(json.contains("lacks?."), json);
+    }
+
     @Test
     void theTableShowsNamesAsTheyAreWrittenNotAsMarkup() throws Exception {
         List<BatchRow> rows = List.of(
