@@ -18,7 +18,7 @@ public final class ErrorOverlay {
     static final String HEADING = "Scene error — the page shows what was drawn before it (E hides this):";
     /** When the scene drew nothing at all, e.g. its file is missing. */
     static final String HEADING_NOTHING_DRAWN = "Scene error — nothing was drawn (E hides this):";
-    private static final Font FONT = new Font(Font.MONOSPACED, Font.PLAIN, 13);
+    static final Font FONT = new Font(Font.MONOSPACED, Font.PLAIN, 13);
     private static final Color BOX = new Color(70, 0, 0, 225);
     private static final Color BORDER = new Color(255, 120, 120);
     private static final int PAD = 10;
@@ -31,8 +31,8 @@ public final class ErrorOverlay {
         g.setFont(FONT);
         FontMetrics metrics = g.getFontMetrics();
         int boxWidth = width - 2 * PAD;
-        List<String> lines = new ArrayList<>();
-        lines.add(heading);
+        List<String> lines = new ArrayList<>(headingLines(heading, metrics, width));
+        int headingCount = lines.size();
         lines.addAll(wrap(message, Math.max(20, (boxWidth - 2 * PAD) / metrics.charWidth('m'))));
         int boxHeight = lines.size() * metrics.getHeight() + 2 * PAD;
         int top = Math.max(0, height - PAD - boxHeight);
@@ -42,10 +42,32 @@ public final class ErrorOverlay {
         g.drawRect(PAD, top, boxWidth - 1, boxHeight - 1);
         int baseline = top + PAD + metrics.getAscent();
         for (int i = 0; i < lines.size(); i++) {
-            g.setColor(i == 0 ? BORDER : Color.WHITE);
+            g.setColor(i < headingCount ? BORDER : Color.WHITE);
             g.drawString(lines.get(i), 2 * PAD, baseline);
             baseline += metrics.getHeight();
         }
+    }
+
+    /**
+     * The heading as the box in a view {@code width} pixels wide shows it, in {@code metrics}' font: whole on one
+     * line where it fits, else broken at spaces into lines that each fit the box (a window 320 pixels wide cut
+     * "Scene error — the page shows what was" at its right edge), so every word of it is read.
+     */
+    static List<String> headingLines(String heading, FontMetrics metrics, int width) {
+        int room = width - 4 * PAD;
+        List<String> lines = new ArrayList<>();
+        String line = "";
+        for (String word : heading.split(" ")) {
+            String longer = line.isEmpty() ? word : line + " " + word;
+            if (!line.isEmpty() && metrics.stringWidth(longer) > room) {
+                lines.add(line);
+                line = word;
+            } else {
+                line = longer;
+            }
+        }
+        lines.add(line);
+        return lines;
     }
 
     /**

@@ -182,6 +182,16 @@ public final class PageView extends JComponent {
         return error;
     }
 
+    /** The heading of the error box: what the page shows under it. */
+    private String errorHeading() {
+        return errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN;
+    }
+
+    /** The lines the error box's heading takes at this view's width, as it paints them. */
+    List<String> errorHeadingLines() {
+        return ErrorOverlay.headingLines(errorHeading(), getFontMetrics(ErrorOverlay.FONT), getWidth());
+    }
+
     /** Hides or shows the error box; the error itself stays known. */
     boolean toggleErrorHidden() {
         errorHidden = !errorHidden;
@@ -252,8 +262,7 @@ public final class PageView extends JComponent {
             g.fillRect(clip.x, clip.y, clip.width, clip.height);
             paintInDevicePixels(g);
             if (error != null && !errorHidden) {
-                ErrorOverlay.paint(g, errorAfterDrawing ? ErrorOverlay.HEADING : ErrorOverlay.HEADING_NOTHING_DRAWN,
-                        error, getWidth(), getHeight());
+                ErrorOverlay.paint(g, errorHeading(), error, getWidth(), getHeight());
             }
         } finally {
             g.dispose();
