@@ -1019,9 +1019,12 @@ public final class SimpviewWindow {
 
     private void toggleOwnColours() {
         settings = settings.withOwnColours(!settings.ownColours());
-        if (pending == null && shown != null && shown.facts().depthStart() == Double.NEGATIVE_INFINITY) {
-            // A lit scene (its z-buffer starts at -infinity) has no depth cue to leave out: SPEC Part 2 colours it
-            // by its lights and fog, own colours or not, so it is not drawn again.
+        boolean lit = pending != null ? pending.lit()
+                : shown != null && shown.facts().depthStart() == Double.NEGATIVE_INFINITY;
+        if (lit) {
+            // A lit scene (its z-buffer starts at -infinity; one still being drawn tells its job so) has no depth cue
+            // to leave out: SPEC Part 2 colours it by its lights and fog, own colours or not, so it is not drawn
+            // again, nor its drawing started over.
             inspect();
             status.say((settings.ownColours() ? "Own colours: on for depth-cued scenes. " : "Depth cue: on again for "
                     + "depth-cued scenes. ") + "This scene is lit (its camera, lights and fog make its colours, "

@@ -58,6 +58,12 @@ public final class StandInDrawers {
         throw new SceneCancelledException();
     };
 
+    /** As {@link #UNTIL_CANCELLED}, of a scene that tells it is lit before it reports any progress. */
+    static final SceneDrawer LIT_UNTIL_CANCELLED = (file, canvas, options, monitor) -> {
+        monitor.turnedLit();
+        return UNTIL_CANCELLED.draw(file, canvas, options, monitor);
+    };
+
     /** Draws a white diagonal at the near plane, whatever the file says. */
     static final SceneDrawer DIAGONAL = (file, canvas, options, monitor) -> {
         Drawable panel = canvas.depthTested();

@@ -27,6 +27,14 @@ public interface SceneMonitor {
     default void topFileRead(double share) {
     }
 
+    /**
+     * Called when the scene is drawn by the lit rules (SPEC Part 2: its camera, lights and fog colour it), from its
+     * first command or from the command that turned it lit, before it is drawn whole; perhaps more than once. A
+     * depth-cued scene never calls it.
+     */
+    default void turnedLit() {
+    }
+
     /** Polled now and then; true stops the scene with a {@link SceneCancelledException}. */
     default boolean cancelled() {
         return false;

@@ -228,6 +228,7 @@ public final class ScenePipeline {
 
     /** The lit rules on the canvas: its z-buffer from -infinity, fragments onto its panel. */
     private static LitRules lit(PageCanvas canvas, Options options, FileStack files, SceneMonitor monitor) {
+        monitor.turnedLit();
         Drawable panel = canvas.litPanel();
         FragmentStages stages = FragmentStages.keptBy(canvas.drawingThreads(), canvas.zbuffer());
         FragmentStage fragments = stages.next(panel);

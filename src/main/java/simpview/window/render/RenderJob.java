@@ -41,6 +41,8 @@ public final class RenderJob implements SceneMonitor {
     private volatile long linesRead;
     private volatile boolean cancelled;
     private volatile double topFileShare = -1;
+    /** Whether the scene is drawn by the lit rules, told by its pipeline on the render thread as it draws. */
+    private volatile boolean lit;
     /** Set on the render thread when the job starts; read there, and by the EDT only after the job is done. */
     private PrimitiveLog trace;
     /** A lit scene's centre of what was shown, in camera space, when told; the render thread's, like trace. */
@@ -92,6 +94,19 @@ public final class RenderJob implements SceneMonitor {
     @Override
     public boolean cancelled() {
         return cancelled;
+    }
+
+    @Override
+    public void turnedLit() {
+        lit = true;
+    }
+
+    /**
+     * Whether the scene being drawn is lit, as far as it has been read: its camera, lights and fog colour it (SPEC
+     * Part 2), own colours or not; false until its pipeline tells, and for a depth-cued scene or a page.
+     */
+    public boolean lit() {
+        return lit;
     }
 
     @Override

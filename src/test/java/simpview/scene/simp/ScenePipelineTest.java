@@ -491,6 +491,31 @@ class ScenePipelineTest {
         assertEquals(1.0, shares.get(shares.size() - 1), "all of it at the end");
     }
 
+    /**
+     * The monitor is told a scene is lit as it turns lit, before it is drawn whole (what a window that draws it
+     * asks, to leave own colours out of a scene they do not change); a depth-cued scene never tells it.
+     */
+    @Test
+    void aLitSceneTellsItsMonitorItIsLitAndADepthCuedOneDoesNot() throws Exception {
+        Path lit = write("lit.simp", "camera -1 -1 1 1 -1 -100\nambient 1 1 1\n"
+                + "polygon (-5, -5, -10, 0, 1, 0) (5, -5, -10, 0, 1, 0) (0, 5, -10, 0, 1, 0)\n");
+        Path cued = write("cued.simp", "polygon (-50, -50, -50) (50, -50, -50) (0, 50, -50)\n");
+        List<String> told = new ArrayList<>();
+        for (Path scene : List.of(lit, cued)) {
+            SceneMonitor monitor = new SceneMonitor() {
+                @Override
+                public void turnedLit() {
+                    told.add(scene.getFileName().toString());
+                }
+            };
+            PageCanvas canvas = new PageCanvas();
+            canvas.clear();
+            ScenePipeline.draw(scene, canvas, ScenePipeline.Options.byCommands(new SceneLibrary()), monitor);
+        }
+        assertFalse(told.isEmpty(), "the lit scene told nothing");
+        assertTrue(told.stream().allMatch("lit.simp"::equals), "told: " + told);
+    }
+
     @Test
     void theCueColoursArePassedOn() throws Exception {
         Path scene = write("near.simp", "polygon (-50 -50 0) (50 -50 0) (0 50 0)");
