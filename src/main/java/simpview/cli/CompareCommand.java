@@ -190,25 +190,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             code = compare();
             return code;
         } finally {
-            releaseOutputs(code);
+            NamedOutputs.releaseAtEnd(files, code, spec, this);
         }
-    }
-
-    /**
-     * At the end of a run: a FIFO it was to write and did not write is opened and closed, so that its reader is
-     * not left waiting ({@link OutputPaths#releaseUnwritten}); after a usage error found before the files were
-     * listed, the files --diff, --gradescope and --junit name, but none the line names otherwise too (--diff naming
-     * the picture to compare: it may be another program's input, whose writer must not be let in).
-     */
-    private void releaseOutputs(int code) {
-        if (files != null) {
-            files.releaseUnwritten();
-            return;
-        }
-        if (code == ExitCode.OK) {
-            return;
-        }
-        NamedOutputs.releaseNamedBy(spec, this);
     }
 
     private int compare() {

@@ -77,12 +77,21 @@ final class NamedOutputs {
     }
 
     /**
-     * After a usage error met by {@code command} itself, before it listed the files it writes: each file its line
-     * (as {@link #expanded}) names by one of its output options is released, as after a line that cannot be parsed.
+     * At the end of a command's run, failed or not: once it listed the files it writes ({@code files}), each FIFO
+     * among them it did not write is opened and closed ({@link OutputPaths#releaseUnwritten}: a page that failed,
+     * those after a write that failed, a diff image not made); after a usage error met before that ({@code files}
+     * null), each file its line (as {@link #expanded}) names by one of its output options, as after a line that
+     * cannot be parsed: so that no reader is left waiting.
      */
-    static void releaseNamedBy(CommandSpec spec, OfCommand command) {
-        CommandLine where = spec.commandLine();
-        String[] words = expanded(where, new String[0]);
+    static void releaseAtEnd(OutputPaths files, int code, CommandSpec spec, OfCommand command) {
+        if (files != null) {
+            files.releaseUnwritten();
+            return;
+        }
+        if (code == ExitCode.OK) {
+            return;
+        }
+        String[] words = expanded(spec.commandLine(), new String[0]);
         filesNamed(command.outputFileOptions(), words).forEach(OutputFiles::release);
     }
 

@@ -163,7 +163,7 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
                 drawingThreads = null;
             }
         } finally {
-            releaseOutputs(code);
+            NamedOutputs.releaseAtEnd(files, code, spec, this);
         }
     }
 
@@ -312,23 +312,6 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         if (!drawn.drawn()) {
             throw new UsageProblem(PageDrawing.cueColoursProblem(scene, drawn.litBecause(), ownColours));
         }
-    }
-
-    /**
-     * At the end of a run: a FIFO it was to write and did not write (a page that failed, those after a write that
-     * failed) is opened and closed, so that its reader is not left waiting ({@link OutputPaths#releaseUnwritten});
-     * after a usage error found before the files were listed, those --out and --primitives name, but none the line
-     * names otherwise too (--primitives naming the scene: it may be another program's input).
-     */
-    private void releaseOutputs(int code) {
-        if (files != null) {
-            files.releaseUnwritten();
-            return;
-        }
-        if (code == ExitCode.OK) {
-            return;
-        }
-        NamedOutputs.releaseNamedBy(spec, this);
     }
 
     private void usage(boolean fine, String message) {
