@@ -97,32 +97,31 @@ public final class SubmissionNames {
      * {@code pages} how many pages there are: a number above them is no page's, and the example is page 3.
      */
     public static String noPageNumber(String fileName, String word, int pages) {
-        Matcher page = PAGE.matcher(plain(stem(fileName)));
+        String name = plain(stem(fileName));
+        Matcher page = PAGE.matcher(name);
         String ending = fileName.equals(stem(fileName)) ? ".png" : fileName.substring(stem(fileName).length())
                 .toLowerCase(Locale.ROOT);
         if (page.find()) { // more digits than any page number has
             return "no page number in the name: " + page.group(1) + " is no page's number (expected a name like " + word
                     + "3" + ending + ")";
         }
-        Matcher zero = ZERO_PAGE.matcher(plain(stem(fileName)));
+        Matcher zero = ZERO_PAGE.matcher(name);
         if (zero.find()) { // page0.png: pages count from 1
             return "no page number in the name: 0 is no page's number, pages count from 1 (expected a name like "
                     + word + "1" + ending + ")";
         }
         String expected = "(expected a name like " + word + "3" + ending + ")";
-        if (SCREENSHOT.matcher(plain(stem(fileName))).find()) { // its numbers are no page's, as numberIn says
+        if (SCREENSHOT.matcher(name).find()) { // its numbers are no page's, as numberIn says
             return "no page number in the name: it is named as a screenshot tool or a camera names its pictures, by "
                     + "a date, a time or a counter " + expected;
         }
-        // "a1" names the first assignment, not a page; a copy's counter ("(2)") is none either
-        Matcher counter = COPY_COUNTER.matcher(plain(stem(fileName)));
-        String counted = counter.replaceAll(" ");
-        Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(counted).replaceAll(" "));
-        if (!m.find()) {
-            return counter.reset().find() ? "no page number in the name: " + counter.group().replaceAll("\\s", "")
+        Optional<String> found = firstNumber(name);
+        if (found.isEmpty()) {
+            Matcher counter = COPY_COUNTER.matcher(name);
+            return counter.find() ? "no page number in the name: " + counter.group().replaceAll("\\s", "")
                     + " is a copy's counter " + expected : "no page number in the name " + expected;
         }
-        String number = m.group().replaceFirst("^0+(?=[0-9])", "");
+        String number = found.get();
         boolean aPage = number.length() <= 2 && Integer.parseInt(number) >= 1 && Integer.parseInt(number) <= pages;
         return "no page number in the name: its number, " + number + ", is not after the word \"page\" (expected a "
                 + "name like " + word + (aPage ? number : "3") + ending + ")";
@@ -134,16 +133,22 @@ public final class SubmissionNames {
      * copy's counter ("(1)") is none, and a screenshot's name ("Screenshot (3).png") has none.
      */
     public static OptionalInt numberIn(String fileName) {
-        if (SCREENSHOT.matcher(plain(stem(fileName))).find()) {
+        String name = plain(stem(fileName));
+        if (SCREENSHOT.matcher(name).find()) {
             return OptionalInt.empty(); // its numbers are a date, a time or a counter, never the page's
         }
-        String counted = COPY_COUNTER.matcher(plain(stem(fileName))).replaceAll(" ");
+        Optional<String> number = firstNumber(name).filter(n -> n.length() <= 2);
+        return number.isPresent() ? OptionalInt.of(Integer.parseInt(number.get())) : OptionalInt.empty();
+    }
+
+    /**
+     * The first number of a name ({@code plainStem}: its stem, {@link #plain}), its leading zeros dropped: a copy's counter ("(2)") and
+     * the "1" of a1 or assignment1 (which name the first assignment, not a page) left out. Empty when it has none.
+     */
+    private static Optional<String> firstNumber(String plainStem) {
+        String counted = COPY_COUNTER.matcher(plainStem).replaceAll(" ");
         Matcher m = NUMBER.matcher(FIRST_ASSIGNMENT.matcher(counted).replaceAll(" "));
-        if (!m.find()) {
-            return OptionalInt.empty();
-        }
-        String number = m.group().replaceFirst("^0+(?=[0-9])", "");
-        return number.length() <= 2 ? OptionalInt.of(Integer.parseInt(number)) : OptionalInt.empty();
+        return m.find() ? Optional.of(m.group().replaceFirst("^0+(?=[0-9])", "")) : Optional.empty();
     }
 
     /**
@@ -165,12 +170,9 @@ public final class SubmissionNames {
      * be wrong.
      */
     public static Optional<String> nearestScene(String fileName, Collection<String> scenes) {
-        Matcher letter = PAGE_LETTER.matcher(plain(stem(fileName)));
-        if (letter.find()) {
-            Optional<String> lettered = sceneOfLetter(letter.group(1).charAt(0), scenes);
-            if (lettered.isPresent()) {
-                return lettered;
-            }
+        Optional<String> lettered = pageLetter(fileName).flatMap(letter -> sceneOfLetter(letter, scenes));
+        if (lettered.isPresent()) {
+            return lettered;
         }
         String name = plain(stem(fileName)).strip().toLowerCase(Locale.ROOT);
         int nearest = Integer.MAX_VALUE;
