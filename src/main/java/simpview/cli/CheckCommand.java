@@ -22,6 +22,7 @@ import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
+import simpview.compare.SubmissionNames;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.surface.DrawingThreads;
@@ -209,9 +210,7 @@ public final class CheckCommand implements Callable<Integer> {
             }
             what = "--page " + number.group();
         }
-        String name = picture.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        String diff = (dot > 0 ? name.substring(0, dot) : name) + "-diff.png";
+        String diff = SubmissionNames.stem(picture.getFileName().toString()) + "-diff.png";
         String verdict = rubric == null && !Files.isRegularFile(dir.resolve(FOLDER_RUBRIC))
                 ? pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold") : "";
         return "simpview compare " + ArgumentLine.shellWord(picture.toString()) + " " + what
