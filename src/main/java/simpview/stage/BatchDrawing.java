@@ -113,15 +113,18 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
                 ring.add(newBatch.get());
             }
         }
+        // The drawers reach the ring through a reference of their own, not through this object, whose weight
+        // the reading thread writes for every primitive (a line shared by the two cores costs each store).
+        List<B> drawnFrom = ring;
         this.queue = threads.queue(bands.count(), SLOTS, new BandQueue.Drawer() {
             @Override
             public void band(int slot, int number) {
-                band.accept(ring.get(slot), number);
+                band.accept(drawnFrom.get(slot), number);
             }
 
             @Override
             public void whole(int slot) {
-                wholePanel.accept(ring.get(slot));
+                wholePanel.accept(drawnFrom.get(slot));
             }
         });
         if (provenance != null) {

@@ -149,7 +149,11 @@ public final class LitPrimitives {
      * Looks are made again only when one of these changed.
      */
     int look(Fog fog, LitState phong, boolean oneColour) {
-        shadesLater |= phong != null && FragmentStage.paysToWait(phong);
+        // Written once, not stored again for every primitive: the band drawers read this object's fields, and
+        // each store made the reading thread fetch the line back from the drawing core (session 34).
+        if (!shadesLater && phong != null && FragmentStage.paysToWait(phong)) {
+            shadesLater = true;
+        }
         return batches.filling().look(fog, phong == null ? null : phong.frozenShader(), oneColour);
     }
 
