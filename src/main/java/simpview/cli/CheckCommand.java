@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -50,7 +51,7 @@ import simpview.surface.DrawingThreads;
             "1:some picture fails or cannot be read, a page asked for has no picture, no picture was found, a scene "
                 + "error, or an output file cannot be written",
             "2:usage error"})
-public final class CheckCommand implements Callable<Integer> {
+public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCommand {
 
     @Spec
     private CommandSpec spec;
@@ -117,6 +118,18 @@ public final class CheckCommand implements Callable<Integer> {
     /** The rubric a folder carries for itself, used when --rubric does not name one. */
     static final String FOLDER_RUBRIC = "compare.json";
 
+    /** Check names no file of its own: what it writes goes to --out-dir. */
+    @Override
+    public List<String> outputFileOptions() {
+        return List.of();
+    }
+
+    /** The tables check writes in --out-dir whatever else its line says (its diff images are named for the pictures). */
+    @Override
+    public List<Path> filesInOutputFolders(String[] args) {
+        return NamedOutputs.inFolders("--out-dir", List.of(CompareBatch.TABLE, CompareBatch.CSV), args);
+    }
+
     @Override
     public Integer call() {
         int code = ExitCode.SCENE_ERROR;
@@ -124,11 +137,9 @@ public final class CheckCommand implements Callable<Integer> {
             code = check();
             return code;
         } finally {
-            if (files != null) {
-                // a FIFO in --out-dir the run did not write (a failure, a passing picture's diff) would leave its
-                // reader waiting
-                files.releaseUnwritten();
-            }
+            // a FIFO in --out-dir the run did not write (a failure, a passing picture's diff, a usage error) would
+            // leave its reader waiting
+            NamedOutputs.releaseAtEnd(files, code, spec, this);
         }
     }
 

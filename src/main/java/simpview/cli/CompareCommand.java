@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -26,6 +27,7 @@ import simpview.compare.ComparisonReport;
 import simpview.compare.DiffRegion;
 import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
+import simpview.compare.HtmlReport;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
 import simpview.compare.PanelHint;
@@ -181,6 +183,23 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     @Override
     public List<String> outputFileOptions() {
         return List.of("--diff", "--gradescope", "--junit");
+    }
+
+    /**
+     * The tables in --out-dir (or in --html's folder without it) and the web report's index.html, which a batch
+     * writes whatever else its line says. Its diff images are not known: their names are those of the pictures
+     * found in --dir, and which of them get one depends on --diffs and on how each fares.
+     */
+    @Override
+    public List<Path> filesInOutputFolders(String[] args) {
+        List<Path> files = new ArrayList<>();
+        List<String> tables = List.of(CompareBatch.TABLE, CompareBatch.CSV);
+        files.addAll(NamedOutputs.inFolders("--out-dir", tables, args));
+        if (!NamedOutputs.given("--out-dir", args)) {
+            files.addAll(NamedOutputs.inFolders("--html", tables, args));
+        }
+        files.addAll(NamedOutputs.inFolders("--html", List.of(HtmlReport.INDEX), args));
+        return files;
     }
 
     @Override

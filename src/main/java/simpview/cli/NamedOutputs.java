@@ -19,13 +19,17 @@ import simpview.compare.OutputFiles;
  * line that could not be parsed (a mistyped option, a value that is no
  * number), whose options never reached its command, so that a FIFO it names
  * as an output is still opened and closed ({@link OutputFiles#release}) and
- * its reader sees the end of the file. Only files named by an option of their
- * own are released, never those a folder option (--out-dir, --html) would
- * hold: which of those the run would write depends on the options that could
- * not be read, and a FIFO it was not going to write may be another program's.
- * For the same reason a file the line also names otherwise (the picture to
- * compare given again as --diff, a scene) is left alone: it may be an input,
- * whose writer must not be let in to write into nothing.
+ * its reader sees the end of the file. Those are the files named by an option
+ * of their own (--out, --diff), and those in a folder option's folder
+ * (--out-dir, --html) that the line's words tell it would have written: the
+ * tables compare and check write there whatever else the line says, the
+ * pages render --all or --page N writes there when the line says which. A
+ * file there whose name depends on what the run would have read (a batch's
+ * diff images, named for the pictures found; the pictures of --scenes) is
+ * not known and left alone: a FIFO it was not going to write may be another
+ * program's. For the same reason a file the line also names otherwise (the
+ * picture to compare given again as --diff, a scene) is left alone: it may
+ * be an input, whose writer must not be let in to write into nothing.
  */
 final class NamedOutputs {
 
@@ -33,6 +37,15 @@ final class NamedOutputs {
     interface OfCommand {
         /** The options whose value is a file the command writes, e.g. "--out". */
         List<String> outputFileOptions();
+
+        /**
+         * The files the command would write in the folders its folder options name in {@code args} (render's
+         * --out-dir, compare's --html), as far as the words tell them without being parsed ({@link #valuesOf},
+         * {@link #given}); none by default.
+         */
+        default List<Path> filesInOutputFolders(String[] args) {
+            return List.of();
+        }
     }
 
     private NamedOutputs() {
@@ -59,7 +72,7 @@ final class NamedOutputs {
             }
         }
         if (command instanceof OfCommand writer) {
-            filesNamed(writer.outputFileOptions(), args).forEach(OutputFiles::release);
+            filesNamed(writer, args).forEach(OutputFiles::release);
         }
     }
 
@@ -92,16 +105,70 @@ final class NamedOutputs {
             return;
         }
         String[] words = expanded(spec.commandLine(), new String[0]);
-        filesNamed(command.outputFileOptions(), words).forEach(OutputFiles::release);
+        filesNamed(command, words).forEach(OutputFiles::release);
+    }
+
+    /** The files {@code args} names as outputs of {@code command}: by its output options, and in its folders. */
+    static List<Path> filesNamed(OfCommand command, String[] args) {
+        return filesNamed(command.outputFileOptions(), command.filesInOutputFolders(args), args);
+    }
+
+    /**
+     * The values {@code args} gives {@code option}, as "--out-dir D" or "--out-dir=D", in order, up to "--"
+     * (after it, every word is a parameter).
+     */
+    static List<String> valuesOf(String option, String[] args) {
+        List<String> values = new ArrayList<>();
+        for (int i = 0; i < args.length && !"--".equals(args[i]); i++) {
+            if (args[i].equals(option) && i + 1 < args.length) {
+                values.add(args[i + 1]);
+                i++;
+            } else if (args[i].startsWith(option + "=")) {
+                values.add(args[i].substring(option.length() + 1));
+            }
+        }
+        return values;
+    }
+
+    /** Whether {@code args} gives {@code option} (a word of its own, or with "="), before any "--". */
+    static boolean given(String option, String[] args) {
+        for (int i = 0; i < args.length && !"--".equals(args[i]); i++) {
+            if (args[i].equals(option) || args[i].startsWith(option + "=")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The files named {@code names} in each folder {@code args} gives {@code option} ("--out-dir"); none for
+     * a value that is empty or no path.
+     */
+    static List<Path> inFolders(String option, List<String> names, String[] args) {
+        List<Path> files = new ArrayList<>();
+        for (String folder : valuesOf(option, args)) {
+            if (folder.isEmpty()) {
+                continue;
+            }
+            try {
+                Path given = Path.of(folder);
+                for (String name : names) {
+                    files.add(given.resolve(name));
+                }
+            } catch (InvalidPathException e) {
+                // no folder: nothing in it
+            }
+        }
+        return files;
     }
 
     /**
      * The values {@code args} gives the options {@code options}, as "--out F" or "--out=F", up to "--" (after it,
-     * every word is a parameter); "-" (standard output) is no file. Each file is listed once, however many names
-     * it is given, and none that another word of the line names too (a word of its own, or the value in
-     * "--scene=F"): that one may be read.
+     * every word is a parameter); "-" (standard output) is no file; then the files {@code inFolders} (those a
+     * folder option's folder would hold). Each file is listed once, however many names it is given, and none that
+     * another word of the line names too (a word of its own, or the value in "--scene=F"): that one may be read.
      */
-    static List<Path> filesNamed(List<String> options, String[] args) {
+    static List<Path> filesNamed(List<String> options, List<Path> inFolders, String[] args) {
         Map<Path, Path> files = new LinkedHashMap<>();
         Set<Integer> values = new HashSet<>();
         int end = args.length;
@@ -124,6 +191,9 @@ final class NamedOutputs {
                     identity(named).ifPresent(file -> files.putIfAbsent(file, Path.of(named)));
                 }
             }
+        }
+        for (Path inFolder : inFolders) {
+            identity(inFolder.toString()).ifPresent(file -> files.putIfAbsent(file, inFolder));
         }
         Set<Path> namedOtherwise = new HashSet<>();
         for (int i = 0; i < args.length; i++) {

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -139,6 +140,49 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
     @Override
     public List<String> outputFileOptions() {
         return List.of("--out", "--primitives");
+    }
+
+    /**
+     * The pages --all or --page N would write in --out-dir, and --scene F's picture there, when the words name
+     * one of those alone, once, and (for the pages) an assignment that has them. The pictures of --scenes and of
+     * SCENE files are not known: which words are scenes depends on the options that could not be read.
+     */
+    @Override
+    public List<Path> filesInOutputFolders(String[] args) {
+        List<String> pages = NamedOutputs.valuesOf("--page", args);
+        List<String> scene = NamedOutputs.valuesOf("--scene", args);
+        boolean all = NamedOutputs.given("--all", args);
+        if ((all ? 1 : 0) + pages.size() + scene.size() != 1) {
+            return List.of();
+        }
+        if (!scene.isEmpty()) {
+            try {
+                Path named = Path.of(scene.get(0));
+                return named.getFileName() == null ? List.of()
+                        : NamedOutputs.inFolders("--out-dir", List.of(SceneList.pictureName(named)), args);
+            } catch (InvalidPathException e) {
+                return List.of();
+            }
+        }
+        List<String> assignments = NamedOutputs.valuesOf("--assignment", args);
+        if (assignments.size() > 1 || !assignments.isEmpty() && !List.of("1", "2").contains(assignments.get(0))) {
+            return List.of();
+        }
+        boolean first = assignments.equals(List.of("1"));
+        int count = first ? Assignment1.COUNT : Assignment2.COUNT;
+        int page;
+        try {
+            page = all ? 0 : Integer.parseInt(pages.get(0));
+        } catch (NumberFormatException e) {
+            return List.of();
+        }
+        List<String> names = new ArrayList<>();
+        for (int n = 1; n <= count; n++) {
+            if (all || n == page) {
+                names.add((first ? "a1-page" : "page") + n + ".png");
+            }
+        }
+        return NamedOutputs.inFolders("--out-dir", names, args);
     }
 
     /** Whether the scenes to draw were given as SCENE files alone, not by --scenes ({@link #impliedByScenes}). */

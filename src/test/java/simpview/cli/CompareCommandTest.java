@@ -581,6 +581,32 @@ public class CompareCommandTest {
     }
 
     /**
+     * A line picocli cannot parse releases the tables a batch writes in --out-dir and the web report's
+     * index.html in --html's folder (the tables too, without --out-dir); check's --out-dir alike.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aLineThatCannotBeParsedGivesTheReadersOfTheFifosInItsFoldersTheEnd() throws Exception {
+        Path pictures = Files.createDirectories(dir.resolve("handed-in"));
+        Path out = Files.createDirectories(dir.resolve("results"));
+        Path web = Files.createDirectories(dir.resolve("web"));
+        Path table = Fifos.make(out.resolve("compare.md"));
+        Path index = Fifos.make(web.resolve("index.html"));
+        Path csv = Fifos.make(web.resolve("compare.csv"));
+        RenderCommandTest.endSeenAfterAUsageError(table, "compare", "--dir", pictures.toString(), "--pages", "one",
+                "--out-dir", out.toString(), "--html", web.toString());
+        RenderCommandTest.endSeenAfterAUsageError(index, "compare", "--dir", pictures.toString(), "--pages", "1-8",
+                "--html=" + web, "--tolerence", "3");
+        RenderCommandTest.endSeenAfterAUsageError(csv, "compare", "--dir", pictures.toString(), "--pages", "1-8",
+                "--html", web.toString(), "--tolerence", "3");
+        Path checked = Fifos.make(out.resolve("compare.csv"));
+        RenderCommandTest.endSeenAfterAUsageError(checked, "check", pictures.toString(), "--out-dir", out.toString(),
+                "--sede", "3");
+        RenderCommandTest.endSeenAfterAUsageError(checked, "check", pictures.toString(), "--out-dir", out.toString(),
+                "--pages", "1-3", "--scene", dir.resolve("house.simp").toString());
+    }
+
+    /**
      * A batch that writes diff images of failing pictures only writes none for a picture that passes: the reader
      * of a FIFO where that diff image would go sees the end, whether the run passes or fails.
      */

@@ -14,7 +14,7 @@ class NamedOutputsTest {
     Path dir;
 
     private List<Path> named(List<String> options, String... line) {
-        return NamedOutputs.filesNamed(options, line);
+        return NamedOutputs.filesNamed(options, List.of(), line);
     }
 
     @Test
@@ -52,5 +52,50 @@ class NamedOutputsTest {
         assertEquals(List.of(), named(List.of("--out", "--primitives"), "render", "--scene=" + scene, "--primitives",
                 scene, "--sede", "3"));
         assertEquals(List.of(), named(List.of("--out"), "render", "--out", scene, "--sede", "3", "--", scene));
+    }
+
+    private List<Path> ofLine(NamedOutputs.OfCommand command, String... line) {
+        return NamedOutputs.filesNamed(command, line);
+    }
+
+    /**
+     * render's --out-dir files are known when the words name --all, --page N or --scene F alone (and an
+     * assignment that has the page); the pictures of --scenes or of scene files, and a page named twice or not as
+     * a number, are not: the options that could not be read may say otherwise.
+     */
+    @Test
+    void renderReleasesInItsFolderOnlyThePicturesItsWordsName() {
+        String d = dir.resolve("out").toString();
+        RenderCommand render = new RenderCommand();
+        assertEquals(List.of(Path.of(d, "a1-page1.png"), Path.of(d, "a1-page5.png")), List.of(
+                ofLine(render, "--assignment", "1", "--all", "--out-dir", d, "--sede").get(0),
+                ofLine(render, "--assignment", "1", "--all", "--out-dir", d, "--sede").get(4)));
+        assertEquals(8, ofLine(render, "--all", "--out-dir", d, "--sede").size());
+        assertEquals(List.of(Path.of(d, "page7.png")), ofLine(render, "--page", "7", "--out-dir=" + d, "--sede"));
+        assertEquals(List.of(Path.of(d, "cube.png")), ofLine(render, "--scene", "a3/cube.simp", "--out-dir", d, "-x"));
+        assertEquals(List.of(), ofLine(render, "--page", "7", "--all", "--out-dir", d));
+        assertEquals(List.of(), ofLine(render, "--page", "seven", "--out-dir", d));
+        assertEquals(List.of(), ofLine(render, "--assignment", "1", "--page", "7", "--out-dir", d));
+        assertEquals(List.of(), ofLine(render, "--assignment", "3", "--all", "--out-dir", d));
+        assertEquals(List.of(), ofLine(render, "--scenes", "a.simp", "b.simp", "--out-dir", d, "--sede"));
+        assertEquals(List.of(), ofLine(render, "--all", "--sede", "--", "--out-dir", d));
+    }
+
+    /**
+     * compare's tables go to --out-dir, or to --html's folder without it, and index.html to --html's folder: each
+     * file once, however many options name its folder. Its diff images are named for the pictures found, not known.
+     */
+    @Test
+    void compareReleasesItsTablesAndItsWebReport() {
+        String d = dir.resolve("out").toString();
+        String h = dir.resolve("web").toString();
+        CompareCommand compare = new CompareCommand();
+        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv"), Path.of(h, "index.html")),
+                ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", h, "--pages", "one"));
+        assertEquals(List.of(Path.of(h, "compare.md"), Path.of(h, "compare.csv"), Path.of(h, "index.html")),
+                ofLine(compare, "--dir", "subs", "--html", h, "--pages", "one"));
+        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv")),
+                ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").subList(0, 2));
+        assertEquals(3, ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").size());
     }
 }

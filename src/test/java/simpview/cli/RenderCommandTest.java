@@ -218,6 +218,28 @@ class RenderCommandTest {
         endSeenAfterAUsageError(listing, "render", "--page", "1", "--primitives", listing.toString(), "--sede", "3");
     }
 
+    /**
+     * A line picocli cannot parse releases the FIFOs in --out-dir that its words say render would have written
+     * there: a page of --all, --page N's (the first assignment's a1-pageN.png), --scene F's picture; and, once
+     * the line parses, a usage error of render's own (--out-dir and --out both given) releases them alike.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aLineThatCannotBeParsedGivesTheReadersOfTheFifosInItsOutDirTheEnd() throws Exception {
+        Path out = Files.createDirectories(dir.resolve("pages"));
+        Path third = Fifos.make(out.resolve("page3.png"));
+        endSeenAfterAUsageError(third, "render", "--all", "--out-dir", out.toString(), "--sede", "3");
+        endSeenAfterAUsageError(third, "render", "--page=3", "--seed", "three", "--out-dir=" + out);
+        Path first = Fifos.make(out.resolve("a1-page2.png"));
+        endSeenAfterAUsageError(first, "render", "--assignment", "1", "--page", "2", "--out-dir", out.toString(),
+                "--sede", "3");
+        Path house = Fifos.make(out.resolve("house.png"));
+        endSeenAfterAUsageError(house, "render", "--scene", dir.resolve("house.simp").toString(), "--out-dir",
+                out.toString(), "--sede", "3");
+        endSeenAfterAUsageError(third, "render", "--page", "3", "--out", dir.resolve("f.png").toString(),
+                "--out-dir", out.toString());
+    }
+
     /** {@code line} is a usage error, and the reader of {@code fifo} sees the end of the file, which stays a FIFO. */
     static void endSeenAfterAUsageError(Path fifo, String... line) throws Exception {
         CompletableFuture<byte[]> read = Fifos.readAll(fifo);
