@@ -675,6 +675,7 @@ public final class CompareBatch {
         List<Path> pictures;
         FolderListing listing;
         List<WithoutPictures> withoutPictures;
+        List<String> others;
         List<String> besideReports = new ArrayList<>();
         try {
             List<Path> written = teachersFolders(dir, outputs);
@@ -688,7 +689,8 @@ public final class CompareBatch {
                         .map(Path::toString).toList()) + ": beside the class in " + shown(dir)
                         + ", not in it: not graded");
             }
-            withoutPictures = withoutPictures(dir, pictures, listing, written, outputs, besideReports);
+            others = othersHandedIn(dir, listing, written, outputs);
+            withoutPictures = withoutPictures(dir, pictures, others, written, outputs, besideReports);
         } catch (IOException | UncheckedIOException e) {
             err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
             return ExitCode.USAGE_ERROR;
@@ -818,17 +820,24 @@ public final class CompareBatch {
         firstPages.addAll(firstAssignment.keySet());
         Map<String, List<Wanted.Misnamed>> misnamed = misnamed(dir, pictures, matches, all, firstPages,
                 oneStudent ? relative -> "" : JUnitResults::submission);
+        // the archives a submission holds beside its pictures, never opened: a page it lacks may be in one (those of a
+        // folder without pictures are said by its WithoutPictures; a zip elsewhere in a class's folder is no
+        // submission's)
+        Set<String> submissionsWithPictures = pictures.stream().map(p -> JUnitResults.submission(name(dir, p)))
+                .collect(Collectors.toSet());
+        List<String> archives = others.stream().filter(FolderListing::isArchive)
+                .filter(f -> oneStudent || submissionsWithPictures.contains(JUnitResults.submission(f))).toList();
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             String label = target.label(own.context());
             asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
                     target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE, withoutPictures,
-                    misnamed.getOrDefault(label, List.of())));
+                    misnamed.getOrDefault(label, List.of()), archives));
         }
         for (int page : firstPages) {
             String label = firstAssignmentLabel(page);
             asked.add(new Wanted(label, firstAssignmentPageRule(page), unreadable.getOrDefault(label, List.of()),
-                    "a1-page" + page + ".png", withoutPictures, misnamed.getOrDefault(label, List.of())));
+                    "a1-page" + page + ".png", withoutPictures, misnamed.getOrDefault(label, List.of()), archives));
         }
         Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
@@ -966,16 +975,10 @@ public final class CompareBatch {
      * folder of reports (this run's, or one holding an earlier run's compare.csv) is none whatever it holds: the zips
      * and documents in it, the teacher's (class-backup.zip), are added to {@code teachers}.
      */
-    private List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, FolderListing listing,
+    private List<WithoutPictures> withoutPictures(Path dir, List<Path> pictures, List<String> others,
             List<Path> written, Outputs outputs, List<String> teachers) throws IOException {
         Set<Path> results = outputs.reports().stream().map(r -> r.file().toAbsolutePath().normalize())
                 .collect(Collectors.toSet());
-        List<String> others = listing.others().stream()
-                .filter(f -> !results.contains(f.toAbsolutePath().normalize()))
-                .map(dir::relativize)
-                .filter(p -> written.stream().noneMatch(p::startsWith) && !isOutputsTable(dir, p))
-                .map(Path::toString).filter(f -> f.startsWith(flatClass)).map(f -> f.substring(flatClass.length()))
-                .toList();
         List<WithoutPictures> without = new ArrayList<>();
         if (pictures.isEmpty()) {
             without.add(new WithoutPictures("", others));
@@ -1037,6 +1040,22 @@ public final class CompareBatch {
             }
         }
         return without;
+    }
+
+    /**
+     * The files handed in that are no picture simpview reads, by their paths in the folder graded (in the class
+     * of one unzipped flat): the listing's others but the batch's own results, and the tables and diff images of
+     * this run or of an earlier one.
+     */
+    private List<String> othersHandedIn(Path dir, FolderListing listing, List<Path> written, Outputs outputs) {
+        Set<Path> results = outputs.reports().stream().map(r -> r.file().toAbsolutePath().normalize())
+                .collect(Collectors.toSet());
+        return listing.others().stream()
+                .filter(f -> !results.contains(f.toAbsolutePath().normalize()))
+                .map(dir::relativize)
+                .filter(p -> written.stream().noneMatch(p::startsWith) && !isOutputsTable(dir, p))
+                .map(Path::toString).filter(f -> f.startsWith(flatClass)).map(f -> f.substring(flatClass.length()))
+                .toList();
     }
 
     /** Whether a file's path in the folder graded is in a folder: alice/page1.png, or alice\page1.png from a Windows zip. */

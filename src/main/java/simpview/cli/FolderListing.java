@@ -65,6 +65,11 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
         return endsLike(path, WithoutPictures.ARCHIVES) || endsLike(path, UNREAD_ENDINGS) || endsLike(path, DOCUMENTS);
     }
 
+    /** Whether a file (a path under the folder) is an archive (bob.zip, pages.tar.gz), which simpview does not open. */
+    static boolean isArchive(String file) {
+        return endsLike(Path.of(file), WithoutPictures.ARCHIVES);
+    }
+
     /**
      * Whether a file (a path under the folder) is what a student of a class hands in instead of pictures, told from
      * what one student's upload holds beside its pictures: an archive (bob.zip), or a picture in a format simpview

@@ -3,6 +3,7 @@ package simpview.compare;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.Function;
 
@@ -23,15 +24,23 @@ import java.util.function.Function;
  * @param misnamed the pictures handed in that were not taken for it but may have been meant as it, each with why
  *     ("pag3.png is named like no page: did you mean page3.png?"): a submission that lacks it and handed in one
  *     of these is told so
+ * @param archives the archives handed in beside pictures (alice/alice_A2.zip beside alice/page1.png), by their
+ *     paths in the folder, which simpview does not open: a submission that lacks it and holds one of these is told
+ *     that it may be in there
  */
 public record Wanted(String target, RubricRule rule, List<String> unreadable, String example,
-        List<WithoutPictures> withoutPictures, List<Misnamed> misnamed) {
+        List<WithoutPictures> withoutPictures, List<Misnamed> misnamed, List<String> archives) {
 
     /**
      * A picture (its path in the folder) that names no page or scene asked for, but may have been meant as this one,
      * and why: "pag3.png is named like no page: did you mean page3.png?".
      */
     public record Misnamed(String file, String why) {
+    }
+
+    public Wanted(String target, RubricRule rule, List<String> unreadable, String example,
+            List<WithoutPictures> withoutPictures, List<Misnamed> misnamed) {
+        this(target, rule, unreadable, example, withoutPictures, misnamed, List.of());
     }
 
     public Wanted(String target, RubricRule rule, List<String> unreadable, String example,
@@ -133,13 +142,18 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
     /**
      * Why {@code submission} ("" or {@link JUnitResults#TOP} for the whole folder) has no picture of it, when what
      * it handed in tells: a file named like it in a format simpview does not read ({@link #unreadableNote}), or
-     * no picture at all but a zip or other files ({@link WithoutPictures#note}); then each picture of it that may
-     * have been meant as it ({@link #misnamed}); "" when none tells.
+     * no picture at all but a zip or other files ({@link WithoutPictures#note}); the archives it holds beside its
+     * pictures, unopened ({@link #archiveNote}); then each picture of it that may have been meant as it
+     * ({@link #misnamed}); "" when none tells.
      */
     public String whyMissing(String submission) {
         String unreadable = unreadableNote(submission);
         String why = !unreadable.isEmpty() ? unreadable : withoutPictures.stream().filter(w -> w.isOf(submission))
                 .map(WithoutPictures::note).findFirst().orElse("");
+        if (withoutPictures.stream().noneMatch(w -> w.isOf(submission))) {
+            String archived = archiveNote(submission);
+            why = why.isEmpty() || archived.isEmpty() ? why + archived : why + "; " + archived;
+        }
         // the pictures of the submission that may have been meant as it: misnamed, or named for no page there is
         for (Misnamed picture : misnamed) {
             if (submission.isEmpty() || JUnitResults.submission(picture.file()).equals(submission)) {
@@ -147,6 +161,25 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
             }
         }
         return why;
+    }
+
+    /**
+     * The archives {@code submission} ("" for the whole folder) holds beside its pictures, which simpview does not
+     * open: "alice/alice_A2.zip is in the folder too, not opened (simpview does not look inside a zip): the page
+     * may be in it; unzip it"; "" when it holds none.
+     */
+    public String archiveNote(String submission) {
+        List<String> files = archives.stream()
+                .filter(file -> submission.isEmpty() || JUnitResults.submission(file).equals(submission)).toList();
+        if (files.isEmpty()) {
+            return "";
+        }
+        boolean zips = files.stream().allMatch(f -> f.toLowerCase(Locale.ROOT).endsWith(".zip"));
+        boolean one = files.size() == 1;
+        return String.join(" and ", files) + (one ? " is" : " are") + " in the folder too, not opened (simpview does "
+                + "not look inside " + (zips ? "a zip" : "an archive") + "): the " + (target.endsWith(".simp")
+                ? "picture" : "page") + " may be in " + (one ? "it; " : "them; ") + (zips ? "unzip " : "unpack ")
+                + (one ? "it" : "them");
     }
 
     /** Its unreadable files handed in by {@code submission} (a first-level folder, or "" for the whole folder). */

@@ -205,6 +205,46 @@ class SubmissionContentsTest {
                 CheckCommand.checkFolder(class_.resolve("sybil"), PageContext.defaults()), "dropped on the window");
     }
 
+    /**
+     * A student's folder holding pictures and a zip: the pages it lacks may be in the zip, which simpview does not
+     * open; the MISSING row says the zip is there, in the table, the web report and JUnit's, and for one student in
+     * Gradescope's results and check's table. A student without a zip is told nothing of it.
+     */
+    @Test
+    void aStudentWithPicturesAndAZipLacksPagesAndIsToldTheZipIsThere() throws Exception {
+        Path class_ = dir.resolve("class");
+        writePng(class_.resolve("ann/page1.png"), page(1));
+        writePng(class_.resolve("ann/page2.png"), page(2));
+        writePng(class_.resolve("bob/page1.png"), page(1));
+        Files.write(class_.resolve("bob/bob_A2.zip"), new byte[] {'P', 'K', 3, 4});
+        Path out = dir.resolve("out");
+        String zip = "bob/bob_A2.zip is in the folder too, not opened (simpview does not look inside a zip): the page "
+                + "may be in it; unzip it";
+
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--junit", dir.resolve("results.xml").toString(), "--html", dir.resolve("web").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), "bob lacks page 2: " + run.out());
+        String csv = Files.readString(out.resolve("compare.csv"));
+        assertTrue(csv.contains("bob/,2 (seed 361),,,,,,,,MISSING,,,\"no picture of page 2 (seed 361) in bob was "
+                + "found; " + zip + "\""), csv);
+        assertEquals(1, csv.split("not opened", -1).length - 1, "ann holds no zip: " + csv);
+        assertTrue(Files.readString(out.resolve("compare.md")).contains(zip), "the Markdown table too");
+        assertTrue(Files.readString(dir.resolve("web/index.html")).contains(zip), "the web report too");
+        assertTrue(Files.readString(dir.resolve("results.xml")).contains(zip), "JUnit's too");
+
+        Path results = dir.resolve("results.json");
+        CliRun one = CliRun.of("compare", "--dir", class_.resolve("bob").toString(), "--pages", "1-2",
+                "--gradescope", results.toString());
+        assertEquals(ExitCode.SCENE_ERROR, one.exitCode(), one.out() + one.err());
+        String mine = "bob_A2.zip is in the folder too, not opened (simpview does not look inside a zip): the page "
+                + "may be in it; unzip it";
+        assertTrue(Files.readString(results).contains("No picture of page 2 (seed 361) was found in the submission: "
+                + mine + "."), Files.readString(results));
+        CliRun check = CliRun.of("check", class_.resolve("bob").toString(), "--pages", "1-2");
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        assertTrue(check.out().contains("no picture of page 2 (seed 361) found: " + mine + "\n"), check.out());
+    }
+
     @Test
     void aStudentsFolderWithPicturesAtItsTopHasNoOtherSubmissions() throws Exception {
         Path mine = dir.resolve("mine");
