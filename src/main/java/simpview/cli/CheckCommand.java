@@ -24,6 +24,7 @@ import simpview.compare.ComparisonReport;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.SubmissionNames;
+import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 import simpview.surface.DrawingThreads;
@@ -199,37 +200,59 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
     /**
      * The command that compares a failing row's picture alone, with this check's options, and writes its diff image
      * beside where it is run: its report names the pixel to look at first and the command that explains it. Null
-     * when the picture or its scene is not where the row says (a picture named in another way, a first-assignment
-     * page).
+     * when the picture or its scene is not where the row says (a picture named in another way).
      */
     private String compareCommand(BatchRow row) {
+        boolean ownVerdict = rubric == null && !Files.isRegularFile(dir.resolve(FOLDER_RUBRIC));
+        String verdict = ownVerdict
+                ? pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold") : "";
+        // the first assignment's pages are compared without slack: --deviation does not go with them
+        String firstVerdict = ownVerdict ? pictures.typedOptions("--tolerance", "--min", "--metric", "--flip-threshold")
+                : "";
+        return compareCommand(dir, scene, row, pictures.drawingOptions() + verdict,
+                pictures.typedOptions("--seed", "--a1-rule") + firstVerdict);
+    }
+
+    /**
+     * The command that compares the picture of a failing row ({@code dir}'s {@code row.file()}) alone with what it
+     * was compared with: a page of the eight pages, a scene of {@code scene} (a file, or a folder of them; null:
+     * none), or a page of the first assignment ("A1 page 2 panel 4 (antialiased)": --assignment 1 --page 2). The
+     * options as typed follow: {@code options} those that draw the eight pages and the scenes and judge them,
+     * {@code firstOptions} those that draw the first assignment's pages and judge them (without slack). Null when
+     * the picture or its scene is not where the row says.
+     */
+    static String compareCommand(Path dir, Path scene, BatchRow row, String options, String firstOptions) {
         Path picture = dir.resolve(row.file());
         if (!Files.isRegularFile(picture)) {
             return null;
         }
         String what;
-        if (scene != null) {
+        Matcher first = FIRST_ASSIGNMENT_PAGE.matcher(row.target());
+        if (first.lookingAt()) {
+            what = "--assignment 1 --page " + first.group(1) + firstOptions;
+        } else if (scene != null) {
             Path file = Files.isDirectory(scene) ? scene.resolve(row.target()) : scene;
             if (!Files.isRegularFile(file)) {
                 return null;
             }
-            what = "--scene " + ArgumentLine.shellWord(file.toString());
+            what = "--scene " + ArgumentLine.shellWord(file.toString()) + options;
         } else {
-            Matcher number = LEADING_NUMBER.matcher(row.target());
-            if (!number.lookingAt()) {
-                return null;
+            Matcher number = PAGE_NUMBER.matcher(row.target());
+            if (!number.matches()) {
+                return null; // a scene of the folder's own (3d.simp), not a page
             }
-            what = "--page " + number.group();
+            what = "--page " + number.group(1) + options;
         }
         String diff = SubmissionNames.stem(picture.getFileName().toString()) + "-diff.png";
-        String verdict = rubric == null && !Files.isRegularFile(dir.resolve(FOLDER_RUBRIC))
-                ? pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold") : "";
-        return "simpview compare " + ArgumentLine.shellWord(picture.toString()) + " " + what
-                + pictures.drawingOptions() + verdict + " --diff " + ArgumentLine.shellWord(diff);
+        return "simpview compare " + ArgumentLine.shellWord(picture.toString()) + " " + what + " --diff "
+                + ArgumentLine.shellWord(diff);
     }
 
-    /** The page number a row's target starts with: "6", "2 (seed 361)". */
-    private static final Pattern LEADING_NUMBER = Pattern.compile("[0-9]+");
+    /** The page of the first assignment a row's target names: "A1 page 2 panel 4 (antialiased)" is its page 2. */
+    private static final Pattern FIRST_ASSIGNMENT_PAGE = Pattern.compile("A1 page ([0-9]+)");
+
+    /** A row's target that is a page of the eight, and its number: "6", "2 (seed 361)". */
+    private static final Pattern PAGE_NUMBER = Pattern.compile("([0-9]+)(?: \\(seed -?[0-9]+\\))?");
 
     /** Whether the first assignment's pages are checked (--assignment 1), not the eight pages or scenes. */
     private boolean firstAssignment() {
@@ -272,8 +295,13 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
         }
         try (DrawingThreads drawing = DrawingThreads.one()) {
             OwnPictures own = new OwnPictures(context, null, null, false, PageDrawing.warningsTo(errors), drawing);
+            // the command that compares a failing picture alone, drawn as the window draws it
+            String seed = context.seed() == PageContext.DEFAULT_SEED ? "" : " --seed " + context.seed();
+            String simpDir = context.simpDir() == null || context.simpDir().equals(context.ownSimpDir()) ? ""
+                    : " --simp-dir " + ArgumentLine.shellWord(context.simpDir().toString());
+            String rule = context.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + context.a1Rule().key();
             CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors,
-                    true);
+                    true).nextSteps(row -> compareCommand(folder, null, row, simpDir + seed, seed + rule));
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }

@@ -407,6 +407,23 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         return "simpview inspect " + what + pictures.drawingOptions() + " --at " + look.at() + " --explain";
     }
 
+    /**
+     * The command that explains the pixel of a failing panel of the first assignment's page to look at first (the
+     * one that differs most in its largest patch, {@link WorstPixel}), at that pixel in page coordinates, as
+     * {@code inspect --assignment 1} takes it; null when no pixel of it differs beyond the tolerance.
+     */
+    private String firstAssignmentInspect(Comparison panel, PanelGridComparison.Panel where) {
+        List<DiffRegion> largest = DiffRegions.of(panel, tolerance, ComparisonReport.REGIONS_LISTED).largest();
+        WorstPixel look = largest.isEmpty() ? null : WorstPixel.in(panel, largest.get(0), tolerance);
+        if (look == null) {
+            return null;
+        }
+        int x = where.left() + look.x();
+        int y = PageCanvas.SIZE - 1 - (where.top() + where.size() - 1 - look.y());
+        return "simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule")
+                + " --at " + x + "," + y + " --explain";
+    }
+
     /** The hint the search found; an error of its own is the program's and is thrown as such. */
     private static SystematicError awaitHint(FutureTask<SystematicError> hint) {
         try {
@@ -482,6 +499,13 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         }
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
+        for (int k = 0; k < panels.length; k++) {
+            String inspect = passing[k] ? null : firstAssignmentInspect(compared[k], panels[k]);
+            if (inspect != null) {
+                out.println("next:    " + inspect + " (panel " + (k + 1) + ", " + panelName(shown, k) + ": how simpview "
+                        + "made the pixel that differs most in its largest patch, term by term)");
+            }
+        }
         // A panel passes with up to 1 % of its pixels wrong, 900: a small shape left out still passes. Its patches
         // are not listed, so a solid one is said, as of a page of the eight pages, by the panel it is in.
         for (int k = 0; k < panels.length; k++) {

@@ -1,6 +1,7 @@
 package simpview.compare;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -32,9 +33,9 @@ public final class StudentTable {
     }
 
     /**
-     * The same, with a line after the notes for each failing picture of a page or scene (a whole panel, not the
-     * first assignment's) for which {@code nextStep} gives a command: the one that compares that picture alone and
-     * says where and why it differs ("next: page-c3.png: simpview compare ...").
+     * The same, with a line after the notes for each failing picture (of a page, a scene, or the first assignment's
+     * page of panels, once however many of its panels fail) for which {@code nextStep} gives a command: the one that
+     * compares that picture alone and says where and why it differs ("next: page-c3.png: simpview compare ...").
      */
     public static String text(List<BatchRow> rows, List<Wanted> missing, Function<BatchRow, String> nextStep) {
         List<String[]> lines = new ArrayList<>();
@@ -92,12 +93,15 @@ public final class StudentTable {
             }
         }
         notes.forEach(out::append);
+        Set<String> told = new HashSet<>(); // a page of panels: its picture's command once, however many fail
         for (BatchRow row : rows) {
-            String command = row.result() == BatchRow.Result.FAIL && row.size() == Comparison.N && row.counts()
+            String command = row.result() == BatchRow.Result.FAIL && row.counts() && !told.contains(row.file())
                     ? nextStep.apply(row) : null;
             if (command != null) {
+                told.add(row.file());
                 out.append("next: ").append(row.file()).append(": ").append(command)
-                        .append(" (the pixel to look at first, and how simpview made it)\n");
+                        .append(isPanel(row) ? " (each failing panel's pixel to look at first, and how simpview made it)\n"
+                                : " (the pixel to look at first, and how simpview made it)\n");
             }
         }
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();

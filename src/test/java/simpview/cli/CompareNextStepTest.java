@@ -12,6 +12,8 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.Assignment1;
+import simpview.pages.PageContext;
 
 /**
  * A picture that fails is told the one pixel to look at first and the
@@ -123,5 +125,70 @@ class CompareNextStepTest {
         assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), alone.err());
         assertTrue(alone.out().contains("FAIL: 98.48 % within 8/255 with slack (98.50 % needed)"), alone.out());
         assertTrue(alone.out().contains("\nnext:    simpview inspect --page 4 --at "), alone.out());
+    }
+
+    /** The first assignment's page 2 with a green square (image columns and rows 100 to 159) in its panel 1. */
+    private Path firstAssignmentTampered(Path file) throws Exception {
+        BufferedImage page = Assignment1.render(2, PageContext.defaults());
+        for (int y = 100; y < 160; y++) {
+            for (int x = 100; x < 160; x++) {
+                page.setRGB(x, y, 0x00FF00);
+            }
+        }
+        Files.createDirectories(file.getParent());
+        ImageIO.write(page, "png", file.toFile());
+        return file;
+    }
+
+    /**
+     * A page of the first assignment that fails is told, for its failing panel, the {@code inspect --assignment 1}
+     * command of the pixel that differs most, in page coordinates; it runs as printed and looks at that pixel.
+     */
+    @Test
+    void aFailingFirstAssignmentPageIsToldThePixelToInspect() throws Exception {
+        Path mine = firstAssignmentTampered(dir.resolve("a1-page2.png"));
+        CliRun run = CliRun.of("compare", mine.toString(), "--assignment", "1", "--page", "2", "--seed", "7");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String next = line(run.out(), "next:    ");
+        assertTrue(next.startsWith("next:    simpview inspect --assignment 1 --page 2 --seed 7 --at "), next);
+        assertTrue(next.endsWith(" --explain (panel 1, DDA: how simpview made the pixel that differs most in its "
+                + "largest patch, term by term)"), next);
+        assertEquals(1, run.out().lines().filter(l -> l.startsWith("next:")).count(), "one panel fails: " + run.out());
+        String command = next.substring("next:    ".length(), next.indexOf(" (panel"));
+        String[] at = command.split(" --at ")[1].split(" ")[0].split(",");
+        int x = Integer.parseInt(at[0]);
+        int y = Integer.parseInt(at[1]);
+        assertTrue(x >= 100 && x < 160 && y > 749 - 160 && y <= 749 - 100, command);
+        List<String> words = ArgumentLine.split(command);
+        CliRun inspect = CliRun.of(words.subList(1, words.size()).toArray(new String[0]));
+        assertEquals(ExitCode.OK, inspect.exitCode(), inspect.err());
+        assertTrue(inspect.out().contains("panel 1"), inspect.out());
+    }
+
+    /**
+     * check --assignment 1 and the window's folder check end with the command that compares a failing page of the
+     * first assignment alone, once for the page; run as printed, it names the pixel to inspect.
+     */
+    @Test
+    void checkTellsAFailingFirstAssignmentPageTheCommandThatComparesItAlone() throws Exception {
+        Path folder = Files.createDirectories(dir.resolve("a1"));
+        firstAssignmentTampered(folder.resolve("a1-page2.png"));
+        ImageIO.write(Assignment1.render(3, PageContext.defaults()), "png", folder.resolve("a1-page3.png").toFile());
+        CliRun run = CliRun.of("check", folder.toString(), "--assignment", "1", "--pages", "2-3", "--min", "99.5");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
+        String command = "simpview compare " + folder.resolve("a1-page2.png") + " --assignment 1 --page 2 --min 99.5"
+                + " --diff a1-page2-diff.png";
+        String said = "\nnext: a1-page2.png: " + command + " (each failing panel's pixel to look at first, and how "
+                + "simpview made it)\n";
+        assertTrue(run.out().contains(said), run.out());
+        assertEquals(1, run.out().lines().filter(l -> l.startsWith("next:")).count(), run.out());
+        List<String> words = ArgumentLine.split(command.replace("a1-page2-diff.png", dir.resolve("d.png").toString()));
+        CliRun alone = CliRun.of(words.subList(1, words.size()).toArray(new String[0]));
+        assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), alone.err());
+        assertTrue(alone.out().contains("\nnext:    simpview inspect --assignment 1 --page 2 --at "), alone.out());
+
+        String window = CheckCommand.checkFolder(folder, PageContext.defaults());
+        assertTrue(window.contains("\nnext: a1-page2.png: simpview compare " + folder.resolve("a1-page2.png")
+                + " --assignment 1 --page 2 --diff a1-page2-diff.png (each failing panel's"), window);
     }
 }
