@@ -28,11 +28,44 @@ final class FaceShape {
     private FaceShape() {
     }
 
+    /**
+     * Whether the face of vertices refs[0] to refs[n - 1] has no area: they all lie on one line, or all coincide.
+     * Each is held against the line from the first to the one farthest from it, as {@link #firstThreeInLine} holds
+     * three.
+     */
+    static boolean noArea(double[] p, int[] refs, int n) {
+        int a = 3 * refs[0];
+        int far = -1;
+        double farthest = 0;
+        for (int k = 1; k < n; k++) {
+            int b = 3 * refs[k];
+            double dx = p[b] - p[a];
+            double dy = p[b + 1] - p[a + 1];
+            double dz = p[b + 2] - p[a + 2];
+            double d = dx * dx + dy * dy + dz * dz;
+            if (d > farthest) {
+                farthest = d;
+                far = refs[k];
+            }
+        }
+        if (far < 0) {
+            return true; // every vertex where the first is
+        }
+        for (int k = 1; k < n; k++) {
+            if (refs[k] != far && !inLine(p, a, 3 * far, 3 * refs[k])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** Whether vertices refs[0], refs[1], refs[2] lie on one line (or two of them coincide). */
     static boolean firstThreeInLine(double[] p, int[] refs) {
-        int a = 3 * refs[0];
-        int b = 3 * refs[1];
-        int c = 3 * refs[2];
+        return inLine(p, 3 * refs[0], 3 * refs[1], 3 * refs[2]);
+    }
+
+    /** Whether the points at p[a], p[b] and p[c] (three doubles each) lie on one line (or two of them coincide). */
+    private static boolean inLine(double[] p, int a, int b, int c) {
         double ux = p[b] - p[a];
         double uy = p[b + 1] - p[a + 1];
         double uz = p[b + 2] - p[a + 2];

@@ -70,6 +70,13 @@ final class ObjParser {
     /** Faces of 4 vertices or more, some without vn, whose first three lie on one line; the first one's line. */
     private int inLineStarts;
     private int firstInLineStart;
+    /** Faces whose vertices lie on one line or coincide (no area); the first one's line. */
+    private int flatFaces;
+    private int firstFlatFace;
+    /** Faces that use a normal of zero length (vn 0 0 0); the first one's line, and that normal's number (from 1). */
+    private int zeroNormalFaces;
+    private int firstZeroNormalFace;
+    private int firstZeroNormal;
     /** Faces of 5 vertices or more that are not convex; the first one's line and size. */
     private int concaveFaces;
     private int firstConcaveFace;
@@ -171,6 +178,19 @@ final class ObjParser {
             warnings.add(file().getFileName() + ":" + firstUndrawnLine + ": " + undrawnKinds()
                     + " are not drawn: a model is drawn by its faces, f lines (" + undrawnCounts()
                     + " passed over, this the first; the " + count(faceCount, "face") + " drawn)");
+        }
+        if (flatFaces > 0) {
+            warnings.add(file().getFileName() + ":" + firstFlatFace + ": this face has no area (its vertices lie on "
+                    + "one line, or coincide), so, as SPEC fills a triangle of no area, it fills no pixel (in wire "
+                    + "style only its edges show, along that line): remove it, or check which v lines it names"
+                    + more(flatFaces));
+        }
+        if (zeroNormalFaces > 0) {
+            warnings.add(file().getFileName() + ":" + firstZeroNormalFace + ": this face uses a normal of zero length "
+                    + "(vn 0 0 0, the file's vn line number " + firstZeroNormal + "), which SPEC cannot make unit "
+                    + "length, and a zero normal gives only the ambient term, so where it is used the face is lit by "
+                    + "the ambient light alone: give that vn a direction, or leave it out of the face (its face normal "
+                    + "is then used)" + more(zeroNormalFaces));
         }
         if (inLineStarts > 0) {
             warnings.add(file().getFileName() + ":" + firstInLineStart + ": this face's first three vertices lie on one "
@@ -550,7 +570,14 @@ final class ObjParser {
         }
         faceCount++;
         int line = source.lineNumber();
-        if (n > 3) {
+        if (anyNormal) {
+            noteZeroNormal(n, line);
+        }
+        if (FaceShape.noArea(vertices.positions, vertexRefs, n)) {
+            if (flatFaces++ == 0) {
+                firstFlatFace = line;
+            }
+        } else if (n > 3) {
             noteShape(n, everyNormal, line);
         }
         if (recorder != null) {
@@ -559,6 +586,21 @@ final class ObjParser {
         face.bind(vertices.positions, vertices.colours, vertices.normals, vertexRefs, normalRefs);
         face.select(0, n, line);
         sink.face(face);
+    }
+
+    /** Counts a face that uses a normal of zero length (vn 0 0 0) at one of its n vertices or more. */
+    private void noteZeroNormal(int n, int line) {
+        double[] normals = vertices.normals;
+        for (int k = 0; k < n; k++) {
+            int i = 3 * normalRefs[k];
+            if (i >= 0 && normals[i] == 0 && normals[i + 1] == 0 && normals[i + 2] == 0) {
+                if (zeroNormalFaces++ == 0) {
+                    firstZeroNormalFace = line;
+                    firstZeroNormal = normalRefs[k] + 1;
+                }
+                return;
+            }
+        }
     }
 
     /** Counts a face of n > 3 vertices that SPEC draws otherwise than its outline suggests ({@link FaceShape}). */

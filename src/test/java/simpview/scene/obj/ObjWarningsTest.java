@@ -38,7 +38,7 @@ class ObjWarningsTest {
 
     @Test
     void commasThatCannotBeDecimalCommasWarnOfNothing() throws SceneException {
-        assertEquals(List.of(), warnings("v 1,2,3\nv (1,5, 2, 3)\nv 1, 2, 3, 0.5, 0.5, 0.5\nv 0.5,1 2 3\nv 1,5,2 3\nf 1,2,3\n"));
+        assertEquals(List.of(), warnings("v 1,2,3\nv (1,5, 2, 3)\nv 1, 2, 3, 0.5, 0.5, 0.5\nv 0.5,1 2 3\nv 1,5,2 3\nf 1,2,4\n"));
     }
 
     // ---- faces SPEC draws otherwise than their outline ------------------------------------------
@@ -56,7 +56,39 @@ class ObjWarningsTest {
                 + " is lit by the ambient light alone or wrongly: start the face at a corner, or give its vertices vn"
                 + " normals (and 1 more face like it)"),
                 warnings(square + "f 1 2 3 4 5\nf 2 3 4 5 1\nf 3 2 1 5 4\nf 1/1/1 2//1 3//1 4//1 5//1\n"));
-        assertEquals(List.of(), warnings(square + "f 3 4 5 1 2\nf 1//1 2//1 3//1 4//1 5//1\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings(square + "f 3 4 5 1 2\nf 1//1 2//1 3//1 4//1 5//1\nf 1 3 4\n"));
+    }
+
+    /**
+     * Faces of no area (a triangle whose vertices lie on one line, a quad naming one vertex four times, a
+     * five-vertex face along one line) fill nothing: one warning names the first and counts them, and the one of
+     * more than three vertices is not named again for its first three vertices on one line. A thin face is not
+     * named.
+     */
+    @Test
+    void aFaceOfNoAreaIsNamedOnce() throws SceneException {
+        String points = "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 3 3 3\nv 0 1 0\n";
+        assertEquals(List.of("model.obj:7: this face has no area (its vertices lie on one line, or coincide), so, as"
+                + " SPEC fills a triangle of no area, it fills no pixel (in wire style only its edges show, along that"
+                + " line): remove it, or check which v lines it names (and 2 more faces like it)"),
+                warnings(points + "f 1 2 5\nf 1 2 3\nf 4 4 4 4\nf 2 1 4 3 2\n"));
+        assertEquals(List.of(), warnings(points + "v 1 1.000001 1\nf 1 2 6\nf 1 2 5\n"));
+    }
+
+    /**
+     * A face that uses vn 0 0 0 is lit by the ambient light alone where it is used: one warning names the first
+     * such face, the normal's number, and counts the faces; a face that names the normal only through other faces,
+     * or a tiny normal, is not named.
+     */
+    @Test
+    void aFaceUsingANormalOfZeroLengthIsNamedOnce() throws SceneException {
+        String model = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 -0 0\nvn 0 0 1e-30\n";
+        assertEquals(List.of("model.obj:8: this face uses a normal of zero length (vn 0 0 0, the file's vn line number"
+                + " 2), which SPEC cannot make unit length, and a zero normal gives only the ambient term, so where it is"
+                + " used the face is lit by the ambient light alone: give that vn a direction, or leave it out of the face"
+                + " (its face normal is then used) (and 1 more face like it)"),
+                warnings(model + "f 1//1 2//1 3//1\nf 1//1 2//2 3//1\nf 1//3 2//3 3//3\nf 1/1/2 2 3\n"));
+        assertEquals(List.of(), warnings(model + "f 1//1 2//1 3//1\nf 1//3 2//3 3//3\nf 1 2 3\n"));
     }
 
     /** A star of ten vertices is filled as a fan from its first, which is not its outline: named. */
