@@ -30,8 +30,8 @@ final class FaceShape {
 
     /**
      * Whether the face of vertices refs[0] to refs[n - 1] has no area: they all lie on one line, or all coincide.
-     * Each is held against the line from the first to the one farthest from it, as {@link #firstThreeInLine} holds
-     * three.
+     * Each is held against the line from the first to the one farthest from it, by the angle they make at the
+     * first, as {@link #firstThreeInLine} holds three (the coordinates near the end of the doubles too).
      */
     static boolean noArea(double[] p, int[] refs, int n) {
         int a = 3 * refs[0];
@@ -39,10 +39,12 @@ final class FaceShape {
         double farthest = 0;
         for (int k = 1; k < n; k++) {
             int b = 3 * refs[k];
-            double dx = p[b] - p[a];
-            double dy = p[b + 1] - p[a + 1];
-            double dz = p[b + 2] - p[a + 2];
-            double d = dx * dx + dy * dy + dz * dz;
+            // the largest of the three differences: no square to overflow
+            double d = Math.max(Math.abs(p[b] - p[a]), Math.max(Math.abs(p[b + 1] - p[a + 1]),
+                    Math.abs(p[b + 2] - p[a + 2])));
+            if (!Double.isFinite(d)) {
+                return false; // beyond the doubles: drawn or refused as such, not named here
+            }
             if (d > farthest) {
                 farthest = d;
                 far = refs[k];
@@ -51,8 +53,28 @@ final class FaceShape {
         if (far < 0) {
             return true; // every vertex where the first is
         }
+        // each edge from the first vertex divided by its largest difference, so that nothing overflows and no
+        // square of a face small against its length underflows: the sine of the angle at the first vertex is
+        // measured whatever the sizes
+        int b = 3 * far;
+        double ux = (p[b] - p[a]) / farthest;
+        double uy = (p[b + 1] - p[a + 1]) / farthest;
+        double uz = (p[b + 2] - p[a + 2]) / farthest;
+        double u = ux * ux + uy * uy + uz * uz;
         for (int k = 1; k < n; k++) {
-            if (refs[k] != far && !inLine(p, a, 3 * far, 3 * refs[k])) {
+            int c = 3 * refs[k];
+            double largest = Math.max(Math.abs(p[c] - p[a]), Math.max(Math.abs(p[c + 1] - p[a + 1]),
+                    Math.abs(p[c + 2] - p[a + 2])));
+            if (largest == 0) {
+                continue; // where the first vertex is
+            }
+            double vx = (p[c] - p[a]) / largest;
+            double vy = (p[c + 1] - p[a + 1]) / largest;
+            double vz = (p[c + 2] - p[a + 2]) / largest;
+            double cx = uy * vz - uz * vy;
+            double cy = uz * vx - ux * vz;
+            double cz = ux * vy - uy * vx;
+            if (cx * cx + cy * cy + cz * cz > IN_LINE * IN_LINE * u * (vx * vx + vy * vy + vz * vz)) {
                 return false;
             }
         }
@@ -61,11 +83,9 @@ final class FaceShape {
 
     /** Whether vertices refs[0], refs[1], refs[2] lie on one line (or two of them coincide). */
     static boolean firstThreeInLine(double[] p, int[] refs) {
-        return inLine(p, 3 * refs[0], 3 * refs[1], 3 * refs[2]);
-    }
-
-    /** Whether the points at p[a], p[b] and p[c] (three doubles each) lie on one line (or two of them coincide). */
-    private static boolean inLine(double[] p, int a, int b, int c) {
+        int a = 3 * refs[0];
+        int b = 3 * refs[1];
+        int c = 3 * refs[2];
         double ux = p[b] - p[a];
         double uy = p[b + 1] - p[a + 1];
         double uz = p[b + 2] - p[a + 2];

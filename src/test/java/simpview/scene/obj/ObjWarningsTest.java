@@ -63,7 +63,7 @@ class ObjWarningsTest {
      * Faces of no area (a triangle whose vertices lie on one line, a quad naming one vertex four times, a
      * five-vertex face along one line) fill nothing: one warning names the first and counts them, and the one of
      * more than three vertices is not named again for its first three vertices on one line. A thin face is not
-     * named.
+     * named, nor one whose vertices are far apart, near the end of the doubles, unless they do lie on one line.
      */
     @Test
     void aFaceOfNoAreaIsNamedOnce() throws SceneException {
@@ -73,6 +73,12 @@ class ObjWarningsTest {
                 + " line): remove it, or check which v lines it names (and 2 more faces like it)"),
                 warnings(points + "f 1 2 5\nf 1 2 3\nf 4 4 4 4\nf 2 1 4 3 2\n"));
         assertEquals(List.of(), warnings(points + "v 1 1.000001 1\nf 1 2 6\nf 1 2 5\n"));
+        // a vertex near the doubles' end: its squares would overflow and make any face look like one of no area
+        assertEquals(List.of(), warnings("v -50 -50 -100\nv 1e308 -50 -100\nv 0 50 -100\nf 1 2 3\n"));
+        assertEquals(List.of("model.obj:4: this face has no area (its vertices lie on one line, or coincide), so, as"
+                + " SPEC fills a triangle of no area, it fills no pixel (in wire style only its edges show, along that"
+                + " line): remove it, or check which v lines it names"),
+                warnings("v 0 0 0\nv 1e308 1e308 1e308\nv 5e307 5e307 5e307\nf 1 2 3\n"));
     }
 
     /**
