@@ -104,6 +104,42 @@ public final class LitState implements PointShader {
         return true;
     }
 
+    /** True when a light of an intensity above 0 is on (whatever it faces). */
+    public boolean anyLightOn() {
+        for (int i = 0; i < lights.count(); i++) {
+            if (lights.red(i) + lights.green(i) + lights.blue(i) > 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * True when a light of an intensity above 0 stands in front of a face of
+     * normal N at one of its n vertices ({@code points}, x y z at each
+     * multiple of {@code stride}): N . (light - vertex) above 0 there. Every
+     * point of the face, clipped or not, is a mean of its vertices, and
+     * N . (light - P) is linear in P, so a light in front at no vertex is
+     * in front nowhere on the face: by SPEC's formula it adds nothing to it,
+     * neither diffuse nor specular.
+     */
+    public boolean lightInFront(double nx, double ny, double nz, double[] points, int stride, int n) {
+        for (int i = 0; i < lights.count(); i++) {
+            if (!(lights.red(i) + lights.green(i) + lights.blue(i) > 0)) {
+                continue;
+            }
+            for (int k = 0; k < n; k++) {
+                int o = k * stride;
+                double toLight = nx * (lights.x(i) - points[o]) + ny * (lights.y(i) - points[o + 1])
+                        + nz * (lights.z(i) - points[o + 2]);
+                if (toLight > 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     /** The surface colour; ks and p stay as they were. */
     public void setSurface(double r, double g, double b) {
         kdR = r;

@@ -109,6 +109,14 @@ public final class LitGeometry implements GeometryStage {
      */
     private long shaded;
     private boolean anyNotBlack;
+    /**
+     * Filled polygons lit while a light of some intensity was on, and whether
+     * such a light stood in front of one of them (or one had normals of its
+     * own, which no test here judges): while not, no light reached the front
+     * of any, and each showed the ambient light alone.
+     */
+    private long shadedUnderLights;
+    private boolean anyLightReached;
     /** Primitives not drawn because a vertex is not finite in camera space; the first one's line, for an obj face. */
     private long nonFinite;
     private int firstNonFiniteLine;
@@ -365,9 +373,8 @@ public final class LitGeometry implements GeometryStage {
      */
     private int shade(int n) {
         shaded++;
-        if (!anyNotBlack) {
-            Fog fog = state.fog();
-            anyNotBlack = !state.inTheDark() || fog.r() + fog.g() + fog.b() > 0;
+        if (!anyNotBlack || !anyLightReached) {
+            lookForLight(n);
         }
         return switch (state.shading()) {
             case FLAT -> {
@@ -397,6 +404,40 @@ public final class LitGeometry implements GeometryStage {
                 yield FragmentLayout.PHONG_CHANNELS; // the fragment stage is told once clipped: carriedColours
             }
         };
+    }
+
+    /**
+     * Notes whether a light reaches the filled polygon at hand, whose n
+     * camera-space vertices and normals are in place, and whether anything
+     * makes it other than black. A light reaches it when it stands in front
+     * of its face normal at one of its vertices ({@link LitState#lightInFront});
+     * with a normal of its own at some vertex, or no face normal (three
+     * vertices on a line), any light of some intensity is taken to reach it,
+     * as nothing here tells.
+     */
+    private void lookForLight(int n) {
+        boolean reached = false;
+        if (state.anyLightOn()) {
+            shadedUnderLights++;
+            boolean faceNormalOnly = !anyOwnNormal(n) && (faceNx != 0 || faceNy != 0 || faceNz != 0);
+            reached = !faceNormalOnly || state.lightInFront(faceNx, faceNy, faceNz, cam, CAMERA_STRIDE, n);
+        }
+        anyLightReached |= reached;
+        if (!anyNotBlack) {
+            Fog fog = state.fog();
+            anyNotBlack = reached || state.ambientR() + state.ambientG() + state.ambientB() > 0
+                    || fog.r() + fog.g() + fog.b() > 0;
+        }
+    }
+
+    /** True when one of the n vertices has a normal of its own. */
+    private boolean anyOwnNormal(int n) {
+        for (int k = 0; k < n; k++) {
+            if (ownNormal[k]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -683,12 +724,23 @@ public final class LitGeometry implements GeometryStage {
 
     /**
      * True when polygons were lit (filled, not culled) and every one of them
-     * came out black because nothing lit it: no ambient light, no light of
-     * any intensity, no fog of a colour, at its command (SPEC's formula then
-     * gives 0 whatever the surface). Lines and wire polygons are not lit.
+     * came out black because nothing lit it: no ambient light, no fog of a
+     * colour, at its command, and no light of some intensity in front of it
+     * (SPEC's formula then gives 0 whatever the surface). Lines and wire
+     * polygons are not lit.
      */
     public boolean everyLitPolygonBlack() {
         return shaded > 0 && !anyNotBlack;
+    }
+
+    /**
+     * True when filled polygons were lit while a light of some intensity was
+     * on, and that light, and every other, stood behind each of them (their
+     * face normals turned away from it): no light reached the front of any,
+     * so each shows the ambient light alone (black without one).
+     */
+    public boolean noLightReachedAPolygon() {
+        return shadedUnderLights > 0 && !anyLightReached;
     }
 
     /** The line in its model of the first primitive {@link #nonFiniteCount} counted, when that was an obj face. */

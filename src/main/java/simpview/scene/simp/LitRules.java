@@ -333,6 +333,11 @@ final class LitRules implements RuleSet {
         return geometry.everyLitPolygonBlack();
     }
 
+    /** True when lights were on and none reached the front of a lit polygon (see {@link LitGeometry#noLightReachedAPolygon}). */
+    boolean noLightReachedAPolygon() {
+        return geometry.noLightReachedAPolygon();
+    }
+
     /** For a scene that was followed: the centre of what its view showed, in camera space; else null. */
     double[] shownCentre() {
         return geometry.shownCentre();

@@ -299,11 +299,21 @@ public final class ScenePipeline {
                             : "x and y from -100 to 100, z from 0 near to -200 far")
                     + "), so it was culled");
         }
-        if (client.everyLitPolygonBlack()) {
+        boolean lightsBehind = client.noLightReachedAPolygon();
+        if (client.everyLitPolygonBlack() && !lightsBehind) {
             // correct by SPEC (ambient starts at 0 0 0), but a black panel with no word looks like a bug
             monitor.warning(files.reached().get(0).getFileName() + ": every lit polygon came out black: the scene"
                     + " has no light and no ambient (ambient 0 0 0) where they are drawn; add 'ambient 0.2 0.2 0.2'"
                     + " or a 'light' before them");
+        } else if (lightsBehind) {
+            // correct by SPEC too (a light behind a face adds nothing), and the commonest cause is a face's
+            // vertices listed clockwise
+            monitor.warning(files.reached().get(0).getFileName() + ": no light reached the front of any lit polygon,"
+                    + " so " + (client.everyLitPolygonBlack() ? "every one came out black (there is no ambient light"
+                            + " where they are drawn)" : "each shows the ambient light alone")
+                    + ": every light stands behind every polygon, on the side its face normal (p2 - p1) x (p3 - p1)"
+                    + " points away from; a polygon's front is the side from which its vertices run"
+                    + " counter-clockwise, so list them the other way round, or move the lights in front");
         }
         if (!client.isLit() && !options.ownColours() && options.rules() == Rules.BY_COMMANDS
                 && client.firstOwnColours() != null) {

@@ -259,6 +259,11 @@ public final class SimpClient {
         return rules instanceof LitRules lit && lit.everyLitPolygonBlack();
     }
 
+    /** True for a lit scene whose lights, while on, all stood behind every lit polygon. */
+    boolean noLightReachedAPolygon() {
+        return rules instanceof LitRules lit && lit.noLightReachedAPolygon();
+    }
+
     /** True once the scene is drawn by the lit rules. */
     boolean isLit() {
         return rules instanceof LitRules;

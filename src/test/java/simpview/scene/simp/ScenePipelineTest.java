@@ -191,6 +191,58 @@ class ScenePipelineTest {
         }
     }
 
+    /**
+     * A light behind every polygon (the commonest cause: vertices listed clockwise as the camera sees them) adds
+     * nothing, by SPEC's formula (N . L at most 0): the polygons show the ambient light alone, black without it.
+     * The scene says so, and only then: not when a light stands in front of one polygon, nor for an obj face whose
+     * own normals decide instead, nor for a light of no intensity in front (which lights nothing).
+     */
+    @Test
+    void aSceneWhoseLightsAreAllBehindItsPolygonsSaysSo() throws Exception {
+        String camera = "camera -1 -1 1 1 -1 -200";
+        String light = "light 1 1 1 1 0"; // at the eye
+        String clockwise = "polygon (-1 -1 -5) (0 1 -5) (1 -1 -5)"; // (p2 - p1) x (p3 - p1) = (0, 0, -4): away
+        String counterClockwise = "polygon (-1 -1 -6) (1 -1 -6) (0 1 -6)";
+        PageCanvas canvas = new PageCanvas();
+        draw(write("back.simp", camera, light, clockwise), canvas, ScenePipeline.Rules.BY_COMMANDS);
+        String behind = ": every light stands behind every polygon, on the side its face normal (p2 - p1) x (p3 - p1)"
+                + " points away from; a polygon's front is the side from which its vertices run counter-clockwise,"
+                + " so list them the other way round, or move the lights in front";
+        assertEquals(List.of("back.simp: no light reached the front of any lit polygon, so every one came out black"
+                + " (there is no ambient light where they are drawn)" + behind), warnings);
+        int centre = canvas.image().getRGB(50 + 325, 749 - 50 - 325) & 0xFFFFFF;
+        assertEquals(0, centre, "no ambient, and the light behind adds nothing");
+        warnings.clear();
+        draw(write("dim.simp", camera, "ambient 0.2 0.2 0.2", light, "light 1 1 1 1 0", clockwise), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("dim.simp: no light reached the front of any lit polygon, so each shows the ambient light"
+                + " alone" + behind), warnings);
+        long level = Math.round(1 * 0.2 * 255); // kd * Ia, clamped, times 255
+        centre = canvas.image().getRGB(50 + 325, 749 - 50 - 325) & 0xFFFFFF;
+        assertEquals(level << 16 | level << 8 | level, centre);
+        warnings.clear();
+        // a light of no intensity in front of the polygon lights nothing either
+        draw(write("zero.simp", camera, "light 0 0 0 1 0", "{", "translate 0 0 -10", light, "}", counterClockwise),
+                canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(1, warnings.size(), "the only light of some intensity stands behind it");
+        warnings.clear();
+        Files.writeString(dir.resolve("inward.obj"), "v -1 -1 -5\nv 1 -1 -5\nv 0 1 -5\nvn 0 0 -1\nf 1//1 2//1 3//1\n");
+        String[][] notForThis = {
+            {camera, light, counterClockwise},
+            {camera, light, clockwise, counterClockwise},
+            {camera, light, "flat", clockwise, counterClockwise},
+            {camera, "{", "translate 0 0 -10", light, "}", clockwise},
+            {camera, light, "obj inward"},
+            {camera, clockwise, light},
+        };
+        for (String[] scene : notForThis) {
+            draw(write("lit.simp", scene), canvas, ScenePipeline.Rules.BY_COMMANDS);
+            assertEquals(List.of(), warnings.stream().filter(w -> w.contains("no light reached")).toList(),
+                    String.join(" / ", scene));
+            warnings.clear();
+        }
+    }
+
     @Test
     void ownColoursADepthCuedSceneDoesNotDrawAreNamed() throws Exception {
         Path scene = write("colours.simp", "line (0 0 -5) (10 10 -5)",
