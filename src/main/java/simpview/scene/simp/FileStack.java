@@ -440,6 +440,16 @@ final class FileStack implements AutoCloseable {
         return readers.get(readers.size() - 1);
     }
 
+    /** True while {@code reader} is one of the files being read: the top one or one that included it. */
+    boolean reading(SimpReader reader) {
+        for (int i = readers.size() - 1; i >= 0; i--) {
+            if (readers.get(i) == reader) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The file the last command came from. */
     SimpReader current() {
         return top();

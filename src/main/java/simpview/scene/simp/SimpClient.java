@@ -2,6 +2,7 @@ package simpview.scene.simp;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Matrix4;
@@ -61,9 +62,15 @@ public final class SimpClient {
     private String firstOwnColours;
     /** A lit command met and ignored ({@link OnLit#IGNORE}): where the first stood, or null. */
     private String firstIgnored;
-    /** The file and line of the outermost '{' still open (while the matrix stack is not empty). */
-    private Path outermostOpenFile;
-    private int outermostOpenLine;
+    /**
+     * Where each '{' on the matrix stack was read, at the same index: the
+     * reader of its file (one per time a file is read, so two readings of one
+     * file are told apart) and its line.
+     */
+    private SimpReader[] openedIn = new SimpReader[16];
+    private int[] openedAt = new int[16];
+    /** The first '}' that closed a '{' of another file, said once the scene is drawn; null while none did. */
+    private String firstClosedAcross;
     /** Where the command that made the scene lit stands, "pageA.simp:3 camera", or null. */
     private String litBecause;
 
@@ -117,10 +124,13 @@ public final class SimpClient {
     public boolean execute(Command c) throws SceneException {
         return switch (c.kind) {
             case PUSH -> {
-                if (matrices.isEmpty()) {
-                    outermostOpenFile = files.current().file();
-                    outermostOpenLine = files.current().lineNumber();
+                int d = matrices.depth();
+                if (d == openedIn.length) {
+                    openedIn = Arrays.copyOf(openedIn, 2 * d);
+                    openedAt = Arrays.copyOf(openedAt, 2 * d);
                 }
+                openedIn[d] = files.current();
+                openedAt[d] = files.current().lineNumber();
                 matrices.push(ctm);
                 yield false;
             }
@@ -227,10 +237,40 @@ public final class SimpClient {
 
     private boolean pop(Command c) throws SceneException {
         if (matrices.isEmpty()) {
-            throw files.current().error(c.commandIndex, "'}' has no '{' to match: the matrix stack is empty");
+            throw files.current().error(c.commandIndex, "'}' has no '{' to match: the matrix stack is empty"
+                    + (firstClosedAcross == null ? "" : " (" + firstClosedAcross + ")"));
         }
+        int d = matrices.depth() - 1;
+        SimpReader here = files.current();
+        if (openedIn[d] != here && firstClosedAcross == null) {
+            firstClosedAcross = closedAcross(openedIn[d], openedAt[d], here);
+        }
+        openedIn[d] = null;
         ctm = matrices.pop();
         return false;
+    }
+
+    /**
+     * What to say of a '}' in {@code here} that closes the '{' read at line
+     * {@code at} of {@code opened}, another file: each file should close the
+     * '{' it opens. Either the '{' file has ended (an included file left it
+     * open: its '}' is missing, and the including file's '}' closes it), or
+     * it is still being read (an included file closes the including file's
+     * '{': one '}' too many there).
+     */
+    private String closedAcross(SimpReader opened, int at, SimpReader here) {
+        Path openedName = opened.file().getFileName();
+        Path hereName = here.file().getFileName();
+        String open = openedName + ":" + at;
+        String close = hereName + ":" + here.lineNumber();
+        if (!files.reading(opened)) {
+            return open + ": this '{' is still open at the end of " + openedName + ", so the '}' at " + close
+                    + " closes it, not the '{' it was written for: each file closes the '{' it opens;"
+                    + " is a '}' missing at the end of " + openedName + "?";
+        }
+        return close + ": this '}' closes the '{' at " + open + ", opened before " + hereName + " was included,"
+                + " so the '}' written for that '{' closes another, or none: each file closes the '{' it opens;"
+                + " is this '}' one too many?";
     }
 
     /** The command's own colours, or null; notes the first line whose colours were clamped. */
@@ -330,9 +370,12 @@ public final class SimpClient {
         if (firstIgnored != null) {
             w.add(firstIgnored + ": commands of lit scenes were ignored in this depth-cued drawing (the first of them)");
         }
+        if (firstClosedAcross != null) {
+            w.add(firstClosedAcross);
+        }
         int open = matrices.depth();
         if (open > 0) {
-            w.add(outermostOpenFile.getFileName() + ":" + outermostOpenLine
+            w.add(openedIn[0].file().getFileName() + ":" + openedAt[0]
                     + ": '{' never closed by the end of the scene" + (open > 1 ? ", nor the " + (open - 1)
                     + " opened after it" : ""));
         }

@@ -177,6 +177,40 @@ class SimpClientTest {
                 scene.warnings);
     }
 
+    /**
+     * An included file whose last '}' is missing: the including file's '}' closes the included file's '{', the
+     * CTM after it is not the one meant, and the '{' left open at the end is the including file's, which is
+     * closed as written. The warning names the included file's '{' and the '}' that closed it.
+     */
+    @Test
+    void anIncludedFileThatLeavesABraceOpenIsNamed() throws Exception {
+        Files.createDirectories(dir.resolve("parts"));
+        scene.write("parts/open", "{", "  translate 3 0 0", "  line (0,0,-1) (1,1,-1)");
+        scene.write("s", "{", "  translate 0 0 -10", "  file \"parts/open\"", "}", "line (0,0,-1) (1,1,-1)");
+        scene.run("s");
+        assertEquals(List.of("open.simp:1: this '{' is still open at the end of open.simp, so the '}' at s.simp:4"
+                + " closes it, not the '{' it was written for: each file closes the '{' it opens; is a '}' missing at"
+                + " the end of open.simp?", "s.simp:1: '{' never closed by the end of the scene"), scene.warnings);
+        assertPanelVertex(0, 0, -11, scene.lines.get(1)[0]);
+    }
+
+    /** An included file with a '}' too many closes the including file's '{': the error that follows says so. */
+    @Test
+    void anIncludedFileThatClosesTheIncludersBraceIsNamed() throws Exception {
+        scene.write("extra", "{", "line (0,0,-1) (1,1,-1)", "}", "}");
+        scene.write("s", "{", "file extra", "line (0,0,-1) (1,1,-1)", "}");
+        SceneException e = scene.failure("s");
+        assertEquals(4, e.line());
+        assertEquals("'}' has no '{' to match: the matrix stack is empty (extra.simp:4: this '}' closes the '{' at"
+                + " s.simp:1, opened before extra.simp was included, so the '}' written for that '{' closes another,"
+                + " or none: each file closes the '{' it opens; is this '}' one too many?)", e.problem());
+        // braces that match within each file, a file included twice, say nothing
+        scene.write("fine", "{", "line (0,0,-1) (1,1,-1)", "}");
+        scene.write("s", "{", "file fine", "file fine", "}", "{", "{", "file fine", "}", "}");
+        scene.run("s");
+        assertEquals(List.of(), scene.warnings);
+    }
+
     @Test
     void styleStartsFilledAndIsNotSavedByBraces() throws Exception {
         scene.write("s", "polygon (0,0,-1) (1,0,-1) (0,1,-1)", "{", "wire", "}", "polygon (0,0,-1) (1,0,-1) (0,1,-1)");
