@@ -40,6 +40,8 @@ final class LitRules implements RuleSet {
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     /** Where the first model colour outside 0 to 1 stands ("dummy.obj:12"), or null. */
     private String firstClampedColour;
+    /** The first surface or fog colour with a channel above 1, as the warning names it, or null. */
+    private String firstColourAboveOne;
     /** What the models read so far warned of, each warning once however often its model is drawn. */
     private final Set<String> modelWarnings = new LinkedHashSet<>();
     private final FileStack files;
@@ -222,6 +224,8 @@ final class LitRules implements RuleSet {
 
     boolean surface(Command c) throws SceneException {
         notNegative(c, 0, c.count, c.count == 3 ? "surface colour" : "surface colour, ks and p");
+        aboveOne(c, 0, "surface colour", "a surface above 1 gives back more light than falls on it, and comes out"
+                + " brighter than white would");
         double[] n = c.numbers;
         if (c.count == 3) {
             state.setSurface(n[0], n[1], n[2]);
@@ -238,6 +242,7 @@ final class LitRules implements RuleSet {
                     + n[0] + " and far " + n[1]);
         }
         notNegative(c, 2, 5, "fog colour");
+        aboveOne(c, 2, "fog colour", "the fog is clamped to full in that channel where it is thick");
         state.setFog(new Fog(n[0], n[1], n[2], n[3], n[4]));
         return false;
     }
@@ -263,6 +268,40 @@ final class LitRules implements RuleSet {
                 throw errorAtNumber(c, i, what + " may not be negative, found " + c.numbers[i]);
             }
         }
+    }
+
+    /**
+     * Notes the first colour, the three numbers of {@code c} from
+     * {@code from} on, with a channel above 1: a colour runs from 0 to 1
+     * (reference/assignment3.txt: "All colors are in [0, 1]"), and one of 0
+     * to 255 (255 0 0 for red) draws as white or nearly, with no word of why.
+     * It is drawn as written: SPEC clamps the lit colour, not kd. The
+     * warning names {@code what} it is and its {@code effect}.
+     */
+    private void aboveOne(Command c, int from, String what, String effect) {
+        if (firstColourAboveOne != null) {
+            return;
+        }
+        for (int i = from; i < from + 3; i++) {
+            double v = c.numbers[i];
+            if (v > 1) {
+                String scale = v >= 2 ? ", not 0 to 255 (" + plain(v) + " of 255 is "
+                        + plain(Math.round(v / 255 * 1000) / 1000.0) + ")" : "";
+                firstColourAboveOne = files.place() + ": " + what + " " + plain(v) + " is above 1: a colour runs"
+                        + " from 0 to 1" + scale + "; " + effect + " (this is the first such command)";
+                return;
+            }
+        }
+    }
+
+    /** A number as written in a scene: 255, not 255.0. */
+    private static String plain(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    /** Where the first surface or fog colour above 1 stands and what it was, as a warning; or null. */
+    String colourAboveOne() {
+        return firstColourAboveOne;
     }
 
     private SceneException error(Command c, int at, String problem) {

@@ -358,6 +358,9 @@ public final class SimpClient {
      */
     public List<String> warnings() {
         List<String> w = new ArrayList<>(rules.modelWarnings());
+        if (rules instanceof LitRules lit && lit.colourAboveOne() != null) {
+            w.add(lit.colourAboveOne());
+        }
         if (firstClamped != null) {
             w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }

@@ -243,6 +243,38 @@ class ScenePipelineTest {
         }
     }
 
+    /**
+     * A surface or fog colour runs from 0 to 1; one written 0 to 255 draws white or nearly, and is drawn as
+     * written (SPEC clamps the lit colour, not kd), with a warning naming the first such command. Light
+     * intensities, the ambient light and ks are not colours, and may be above 1 (the course's own scenes have
+     * light 8, 8, 12).
+     */
+    @Test
+    void aSurfaceOrFogColourAboveOneIsNamed() throws Exception {
+        String camera = "camera -1 -1 1 1 -1 -200";
+        String triangle = "polygon (-1 -1 -5) (1 -1 -5) (0 1 -5)";
+        PageCanvas canvas = new PageCanvas();
+        draw(write("rgb.simp", camera, "ambient 0.2 0.2 0.2", "surface 255 128 0", triangle, "surface 300 0 0"),
+                canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("rgb.simp:3: surface colour 255 is above 1: a colour runs from 0 to 1, not 0 to 255"
+                + " (255 of 255 is 1); a surface above 1 gives back more light than falls on it, and comes out brighter"
+                + " than white would (this is the first such command)"), warnings);
+        // kd * Ia per channel, clamped to [0, 1], then times 255
+        long r = Math.round(Math.min(1, 255 * 0.2) * 255);
+        long g = Math.round(Math.min(1, 128 * 0.2) * 255);
+        long b = Math.round(Math.min(1, 0 * 0.2) * 255);
+        assertEquals(r << 16 | g << 8 | b, canvas.image().getRGB(50 + 325, 749 - 50 - 325) & 0xFFFFFF);
+        warnings.clear();
+        draw(write("fog.simp", camera, "ambient 1 1 1", "depth -1 -10 0 1.5 0", triangle), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("fog.simp:3: fog colour 1.5 is above 1: a colour runs from 0 to 1; the fog is clamped to"
+                + " full in that channel where it is thick (this is the first such command)"), warnings);
+        warnings.clear();
+        draw(write("fine.simp", camera, "ambient 1 1 1", "light 8, 8, 12, 1, .2", "surface 1 1 1 2 8",
+                "depth -1 -10 1 1 1", triangle), canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(), warnings);
+    }
+
     @Test
     void ownColoursADepthCuedSceneDoesNotDrawAreNamed() throws Exception {
         Path scene = write("colours.simp", "line (0 0 -5) (10 10 -5)",
