@@ -21,25 +21,29 @@ final class LightingTerms {
      * Puts P, N, kd and where it came from ({@code kdFrom}), V, the ambient term, every light's terms and their
      * sum into {@code terms}; returns the sum.
      */
-    static double[] explain(LitState state, double[] point, double[] normal, double[] kd, String kdFrom,
-            Terms terms) {
-        return explain(state, point, normal, "N_interpolated", kd, kdFrom, terms);
-    }
-
-    /** The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed", "N_face", "N_vertex"). */
-    static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
-            Terms terms) {
-        return explain(state, point, normal, normalName, kd, null, terms);
+    static double[] explain(LitState state, double[] point, double[] normal, boolean faceNormal, double[] kd,
+            String kdFrom, Terms terms) {
+        return explain(state, point, normal, "N_interpolated", faceNormal, kd, kdFrom, terms);
     }
 
     /**
-     * What N . V &lt; 0 means for a normal named {@code normalName}: a face normal faces away only from a polygon
-     * seen from its back; the vertices' own normals (summed, at a vertex, interpolated) may point away near an
-     * outline of a polygon that faces the eye.
+     * The same, the normal before it is made unit named {@code normalName} ("N_interpolated", "N_summed",
+     * "N_face", "N_vertex"); {@code faceNormal} when it is the polygon's face normal, no vertex having its own.
      */
-    static String facingAway(String normalName) {
+    static double[] explain(LitState state, double[] point, double[] normal, String normalName, boolean faceNormal,
+            double[] kd, Terms terms) {
+        return explain(state, point, normal, normalName, faceNormal, kd, null, terms);
+    }
+
+    /**
+     * What N . V &lt; 0 means for a polygon's face normal ({@code faceNormal}; interpolated or not, it is the
+     * same at every vertex), or for its vertices' own normals: a face normal faces away only from a polygon seen
+     * from its back; the vertices' own normals (summed, at a vertex, interpolated) may point away near an outline
+     * of a polygon that faces the eye.
+     */
+    static String facingAway(boolean faceNormal) {
         String behind = "a light on the eye's side of it is behind it";
-        if (normalName.equals("N_face")) {
+        if (faceNormal) {
             return "away from the eye (N . V < 0): the eye sees the polygon's back (its face normal faces away where "
                     + "its vertices run clockwise on the panel), and " + behind;
         }
@@ -48,8 +52,8 @@ final class LightingTerms {
                 + "the eye, its vertices running counter-clockwise on the panel";
     }
 
-    private static double[] explain(LitState state, double[] point, double[] normal, String normalName, double[] kd,
-            String kdFrom, Terms terms) {
+    private static double[] explain(LitState state, double[] point, double[] normal, String normalName,
+            boolean faceNormal, double[] kd, String kdFrom, Terms terms) {
         double[] n = unit(normal);
         boolean perspective = state.camera().isPerspective();
         double[] v = perspective ? unit(new double[] {-point[0], -point[1], -point[2]}) : new double[] {0, 0, 1};
@@ -65,7 +69,7 @@ final class LightingTerms {
         double nv = dot(n, v);
         if (nv < 0) {
             terms.put("N_dot_V", nv);
-            terms.put("facing", facingAway(normalName));
+            terms.put("facing", facingAway(faceNormal));
         }
         terms.put("ks", state.ks());
         terms.put("p", state.p());

@@ -57,7 +57,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                     + "bit (a lerp between one value and itself is that value); P and N are interpolated"
                     : "interpolated perspective-correct from the clipped polygon's vertices, (kd q) / q at the pixel, "
                     + "as P and N are (SPEC Part 2)";
-            double[] sum = LightingTerms.explain(state, p, n, kd, kdFrom, terms);
+            double[] sum = LightingTerms.explain(state, p, n, watch.hasFaceNormalOnly(), kd, kdFrom, terms);
             state.shade(p[0], p[1], p[2], n[0], n[1], n[2], kd[0], kd[1], kd[2], lit);
             terms.put("clamped", clamp(sum));
             terms.put("lit", lit.clone());
@@ -81,7 +81,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                             + (face ? "its face normal (p2 - p1) x (p3 - p1), made unit, as some vertex has no "
                             + "normal of its own" : "the sum of its vertices' own unit normals") + ": SPEC Part 2");
                     double[] sum = LightingTerms.explain(state, new double[] {once[0], once[1], once[2]},
-                            new double[] {once[3], once[4], once[5]}, face ? "N_face" : "N_summed",
+                            new double[] {once[3], once[4], once[5]}, face ? "N_face" : "N_summed", face,
                             new double[] {once[6], once[7], once[8]}, terms);
                     terms.put("clamped", clamp(sum));
                 }
@@ -285,7 +285,7 @@ final class LitExplainer implements PixelWatch.Explainer {
                 if (kd != null && kd.length >= 3 * m) {
                     Terms lighting = new Terms();
                     double[] sum = LightingTerms.explain(state, new double[] {p[at], p[at + 1], p[at + 2]},
-                            new double[] {p[at + 6], p[at + 7], p[at + 8]}, "N_vertex",
+                            new double[] {p[at + 6], p[at + 7], p[at + 8]}, "N_vertex", watch.hasFaceNormalOnly(),
                             new double[] {kd[3 * k], kd[3 * k + 1], kd[3 * k + 2]}, lighting);
                     lighting.put("clamped", clamp(sum));
                     vertex.put("lighting", lighting);

@@ -62,6 +62,8 @@ final class PixelWatch implements PrimitiveTrace {
     private double[] unclipped = new double[9 * 8];
     private int unclippedStride;
     private int unclippedCount;
+    /** Whether the primitive at hand has its face normal at every vertex, none of its own (PrimitiveTrace.faceNormalOnly). */
+    private boolean faceNormalOnly;
     /** What the flat polygon at hand was lit with: centroid, normal, mean kd; null when not flat. */
     private double[] litOnce;
     /** The kd each vertex of the gouraud polygon at hand was lit with, 3 a vertex; null when not gouraud. */
@@ -170,6 +172,7 @@ final class PixelWatch implements PrimitiveTrace {
     public void unclipped(double[] p, int at, int numbers, int count) {
         litOnce = null;
         litEach = null;
+        faceNormalOnly = false;
         if (unclipped.length < numbers * count) {
             unclipped = new double[2 * numbers * count];
         }
@@ -277,6 +280,16 @@ final class PixelWatch implements PrimitiveTrace {
             e.here = point;
             e.herePlanes = outside;
         }
+    }
+
+    @Override
+    public void faceNormalOnly() {
+        faceNormalOnly = true;
+    }
+
+    /** True when no vertex of the lit polygon at hand has a normal of its own: each carries its face normal. */
+    boolean hasFaceNormalOnly() {
+        return faceNormalOnly;
     }
 
     /** The lit primitive at hand in camera space before clipping: vertices() of unclippedStride() numbers; read only. */

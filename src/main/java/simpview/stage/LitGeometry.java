@@ -263,6 +263,9 @@ public final class LitGeometry implements GeometryStage {
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
+            if (!anyOwnNormal(n)) {
+                trace.faceNormalOnly();
+            }
             if (!wire && state.shading() == LitState.ShadingMode.FLAT) {
                 trace.litOnce(litOnce);
             } else if (!wire && state.shading() == LitState.ShadingMode.GOURAUD) {

@@ -82,6 +82,15 @@ public interface PrimitiveTrace {
     }
 
     /**
+     * The polygon just told by {@link #unclipped} has no normal of its own at
+     * any vertex: the normal each vertex carries is its face normal,
+     * (p2 - p1) x (p3 - p1) made unit (a simp polygon, or an obj face without
+     * vn references). Told only then, just after that.
+     */
+    default void faceNormalOnly() {
+    }
+
+    /**
      * The filled polygon just told by {@link #unclipped} is flat shaded: it
      * was lit once, at {@code once}[0..2] (its vertices' centroid, camera
      * space), with the normal {@code once}[3..5] (the sum of its vertices'

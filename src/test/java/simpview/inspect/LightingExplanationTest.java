@@ -273,6 +273,32 @@ class LightingExplanationTest {
     }
 
     /**
+     * The same back face under phong (the shading a scene starts with), whose N is interpolated, and gouraud,
+     * lit at each vertex: a simp polygon has no normal of its own at any vertex, so its N is its face normal
+     * everywhere, and the words say the eye sees its back, not that vertex normals point away near an outline.
+     * At the pixel (325, 300) phong's P lies on the plane z = -8 on the ray through the pixel's centre,
+     * (x' (-z), y' (-z), z) with x' = (325.5 - 325) / 325 and y' = (300.5 - 325) / 325.
+     */
+    @Test
+    void aBackFaceSaysItFacesAwayUnderEveryShading() throws Exception {
+        for (String shading : new String[] {"phong", "gouraud"}) {
+            Path file = dir.resolve("facing-" + shading + ".simp");
+            Files.writeString(file, "camera -1 -1 1 1 -1 -100\nambient 0.3 0.3 0.3\nlight 1 1 1 1 0\n" + shading
+                    + "\npolygon (-3, -3, -8) (0, 3, -8) (3, -3, -8)\n");
+            Terms t = new PixelInspector().inspect(InspectedScene.of(file), 325, 300).explanation();
+            Terms lit = shading.equals("phong") ? t : (Terms) t.list("vertex_colours").get(0).get("lighting");
+            String facing = String.valueOf(lit.get("facing"));
+            assertTrue(facing.startsWith("away from the eye (N . V < 0): the eye sees the polygon's back"),
+                    shading + ": " + facing);
+            assertFalse(facing.contains("own normals"), shading + ": " + facing);
+            if (shading.equals("phong")) {
+                double[] p = {0.5 / 325 * 8, -24.5 / 325 * 8, -8};
+                assertEquals(-8 / length(p), t.number("N_dot_V"), 1e-6);
+            }
+        }
+    }
+
+    /**
      * A polygon that faces the eye (counter-clockwise on the panel) whose own vertex normals point away, (0, 0.6,
      * -0.8) at every vertex, as they may near a smooth model's outline: phong's N . V is below 0, and the words
      * say it is N, from the vertices' normals, that points away, not that the eye sees the polygon's back.
