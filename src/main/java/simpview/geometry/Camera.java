@@ -228,12 +228,21 @@ public final class Camera {
      * the same plane, so that the primitive cannot touch the view.
      */
     public boolean culls(double[] p, int stride, int count) {
+        return outsideEvery(p, stride, count) != 0;
+    }
+
+    /**
+     * The planes (bits 1 &lt;&lt; {@link #HITHER} ...) that every one of the
+     * first {@code count} vertices of {@code p} is outside of; 0 when there is
+     * none, and the primitive is not culled.
+     */
+    public int outsideEvery(double[] p, int stride, int count) {
         int common = ~0;
         for (int k = 0; k < count && common != 0; k++) {
             int o = k * stride;
             common &= outcode(p[o], p[o + 1], p[o + 2]);
         }
-        return common != 0;
+        return common;
     }
 
     /** The depth cue's weight of the near colour: 0 at the far plane, 1 at the near plane. */

@@ -23,6 +23,8 @@ public final class DepthCuedGeometry implements GeometryStage {
     /** The same in panel space with colours, as the painter takes them. */
     private final double[] panel = new double[Painter.STRIDE];
     private long culled;
+    /** The planes every culled primitive lies wholly outside of (see {@link #culledOutside}). */
+    private int culledOutside;
     private long primitives;
     /** Primitives not drawn because a vertex of theirs is not finite in camera space, or on the panel. */
     private long nonFinite;
@@ -57,8 +59,9 @@ public final class DepthCuedGeometry implements GeometryStage {
             nonFinite++;
             return;
         }
-        if (VIEW.culls(camera, 3, count)) {
-            culled++;
+        int outside = VIEW.outsideEvery(camera, 3, count);
+        if (outside != 0) {
+            culledOutside = culled++ == 0 ? outside : culledOutside & outside;
             if (trace != null) {
                 trace.skipped(null, 0, kind, true, camera, 0, 3, count);
             }
@@ -144,6 +147,11 @@ public final class DepthCuedGeometry implements GeometryStage {
     @Override
     public long culledCount() {
         return culled;
+    }
+
+    @Override
+    public int culledOutside() {
+        return culledOutside;
     }
 
     @Override

@@ -25,6 +25,23 @@ public interface GeometryStage {
     /** Primitives skipped because they lie wholly outside one plane of the view. */
     long culledCount();
 
+    /**
+     * The planes of the view (bits 1 &lt;&lt; Camera.HITHER ...) that every
+     * culled primitive so far lies wholly outside of: what a scene that drew
+     * nothing can be told. 0 while none was culled, or when no plane is
+     * outside them all.
+     */
+    int culledOutside();
+
+    /**
+     * Primitives that were not culled, but that the clipper cut away whole
+     * (a polygon around a corner of the view, outside it but not wholly
+     * outside one plane); 0 where nothing is clipped.
+     */
+    default long clippedAwayCount() {
+        return 0;
+    }
+
     /** Primitives taken, culled or not: lines, triangles and .obj faces. */
     long primitiveCount();
 

@@ -101,6 +101,10 @@ public final class LitGeometry implements GeometryStage {
     private boolean objWire;
     private Path objFile;
     private long culled;
+    /** The planes every culled primitive lies wholly outside of (see {@link #culledOutside}). */
+    private int culledOutside;
+    /** Primitives not culled that the clipper cut away whole. */
+    private long clippedAway;
     private long primitives;
     /**
      * Filled polygons lit so far (after culling), and whether one of them was
@@ -168,8 +172,7 @@ public final class LitGeometry implements GeometryStage {
         if (!finite(2)) {
             return;
         }
-        if (state.camera().culls(cam, CAMERA_STRIDE, 2)) {
-            culled++;
+        if (culled(state.camera(), 2)) {
             skipped(Painter.LINE, true, 2);
             return;
         }
@@ -177,6 +180,7 @@ public final class LitGeometry implements GeometryStage {
             trace.unclipped(cam, 0, CAMERA_STRIDE, 2);
         }
         if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
+            clippedAway++;
             skipped(Painter.LINE, false, 2);
         } else {
             carriedColours(2, FragmentLayout.COLOUR_CHANNELS);
@@ -254,8 +258,7 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         Camera camera = state.camera();
-        if (camera.culls(cam, CAMERA_STRIDE, n)) {
-            culled++;
+        if (culled(camera, n)) {
             skipped(wire ? Painter.WIRE : Painter.FILLED, true, n);
             return;
         }
@@ -274,6 +277,7 @@ public final class LitGeometry implements GeometryStage {
         }
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
+            clippedAway++;
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
@@ -309,6 +313,16 @@ public final class LitGeometry implements GeometryStage {
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
+    }
+
+    /** Step 2: whether the n camera-space vertices are all outside one plane of the view; counted so. */
+    private boolean culled(Camera camera, int n) {
+        int outside = camera.outsideEvery(cam, CAMERA_STRIDE, n);
+        if (outside == 0) {
+            return false;
+        }
+        culledOutside = culled++ == 0 ? outside : culledOutside & outside;
+        return true;
     }
 
     /**
@@ -713,6 +727,16 @@ public final class LitGeometry implements GeometryStage {
     @Override
     public long culledCount() {
         return culled;
+    }
+
+    @Override
+    public int culledOutside() {
+        return culledOutside;
+    }
+
+    @Override
+    public long clippedAwayCount() {
+        return clippedAway;
     }
 
     @Override

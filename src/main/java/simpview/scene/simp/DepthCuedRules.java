@@ -105,6 +105,16 @@ final class DepthCuedRules implements RuleSet {
     }
 
     @Override
+    public int culledOutside() {
+        return geometry.culledOutside();
+    }
+
+    @Override
+    public long clippedAwayCount() {
+        return geometry.clippedAwayCount();
+    }
+
+    @Override
     public long primitiveCount() {
         return geometry.primitiveCount();
     }

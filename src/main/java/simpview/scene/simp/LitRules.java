@@ -133,6 +133,16 @@ final class LitRules implements RuleSet {
     }
 
     @Override
+    public int culledOutside() {
+        return geometry.culledOutside();
+    }
+
+    @Override
+    public long clippedAwayCount() {
+        return geometry.clippedAwayCount();
+    }
+
+    @Override
     public long primitiveCount() {
         return geometry.primitiveCount();
     }

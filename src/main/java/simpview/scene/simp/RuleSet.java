@@ -22,6 +22,12 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     long culledCount();
 
+    /** The planes every culled primitive lies wholly outside of, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
+    int culledOutside();
+
+    /** Primitives not culled that the clipper cut away whole. */
+    long clippedAwayCount();
+
     /** Primitives taken, culled or not. */
     long primitiveCount();
 

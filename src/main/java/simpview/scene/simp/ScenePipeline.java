@@ -1,7 +1,9 @@
 package simpview.scene.simp;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import simpview.geometry.Camera;
 import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
 import simpview.shading.FragmentStage;
@@ -285,19 +287,76 @@ public final class ScenePipeline {
                 : new SimpInterpreter(client, monitor);
     }
 
+    /**
+     * Why a scene whose every primitive was culled or clipped away drew
+     * nothing: the view, and where they lie when one plane of it has every
+     * culled primitive outside it (a scene at z = +10 looked at down -z).
+     */
+    private static String outsideTheView(SimpClient client) {
+        long n = client.primitiveCount();
+        long clipped = client.clippedAwayCount();
+        Camera view = client.view();
+        String words = (n == 1 ? "its one primitive lies" : "every one of its " + n + " primitives lies")
+                + " wholly outside the view (" + (view.isPerspective()
+                        ? "the camera's view volume: in front of the camera, between its near and far planes"
+                        : "x and y from -100 to 100, z from 0 near to -200 far")
+                + "), so " + (clipped == 0 ? "it was culled" : clipped == n ? "the clipper cut it away whole"
+                        : "it was culled or cut away whole by the clipper");
+        int outside = client.culledOutside();
+        if (clipped > 0 || outside == 0) {
+            return words;
+        }
+        if (view.isPerspective() && (outside & 1 << Camera.HITHER) != 0) {
+            // behind the eye every side plane's outside half-space holds the point too: nothing to say of them
+            outside = 1 << Camera.HITHER;
+        }
+        List<String> where = new ArrayList<>();
+        for (int plane = 0; plane < Camera.PLANES; plane++) {
+            if ((outside & 1 << plane) != 0) {
+                where.add(beyond(view, plane, n == 1 ? "it" : "them"));
+            }
+        }
+        return words + ": " + (n == 1 ? "it lies " : "every one lies ") + String.join(", and ", where);
+    }
+
+    /** Where a point outside one plane of the view lies, in words a student placing a scene reads. */
+    private static String beyond(Camera view, int plane, String them) {
+        if (view.isPerspective()) {
+            return switch (plane) {
+                case Camera.HITHER -> "nearer than the near plane z = " + plain(view.hither()) + " (hither): behind"
+                        + " the camera, or too near its eye; the camera looks down its own -z axis";
+                case Camera.YON -> "beyond the far plane z = " + plain(view.yon()) + " (yon): bring " + them + " nearer, or"
+                        + " give yon a number further below 0";
+                case Camera.LEFT -> "left of the camera's window";
+                case Camera.RIGHT -> "right of the camera's window";
+                case Camera.BOTTOM -> "below the camera's window";
+                default -> "above the camera's window";
+            };
+        }
+        return switch (plane) {
+            case Camera.HITHER -> "at z above 0, in front of the near plane z = 0: you look down the -z axis, so what"
+                    + " is seen has z from 0 to -200";
+            case Camera.YON -> "at z below -200, beyond the far plane";
+            case Camera.LEFT -> "at x below -100, left of the panel";
+            case Camera.RIGHT -> "at x above 100, right of the panel";
+            case Camera.BOTTOM -> "at y below -100, below the panel";
+            default -> "at y above 100, above the panel";
+        };
+    }
+
+    /** A number as a scene writes it: -100, not -100.0. */
+    private static String plain(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
     private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor,
             Options options) {
         if (!client.drew()) {
             monitor.warning(files.reached().get(0).getFileName()
                     + " drew nothing: no line, polygon or obj in it or in the files it includes");
-        } else if (client.primitiveCount() > 0 && client.culledCount() == client.primitiveCount()) {
-            long n = client.primitiveCount();
-            monitor.warning(files.reached().get(0).getFileName() + " drew nothing: "
-                    + (n == 1 ? "its one primitive lies" : "every one of its " + n + " primitives lies")
-                    + " wholly outside the view (" + (client.isLit()
-                            ? "the camera's view volume: in front of the camera, between its near and far planes"
-                            : "x and y from -100 to 100, z from 0 near to -200 far")
-                    + "), so it was culled");
+        } else if (client.primitiveCount() > 0
+                && client.culledCount() + client.clippedAwayCount() == client.primitiveCount()) {
+            monitor.warning(files.reached().get(0).getFileName() + " drew nothing: " + outsideTheView(client));
         }
         boolean lightsBehind = client.noLightReachedAPolygon();
         if (client.everyLitPolygonBlack() && !lightsBehind) {

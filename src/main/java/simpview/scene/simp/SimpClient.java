@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
+import simpview.geometry.Camera;
 import simpview.geometry.Matrix4;
 import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
@@ -388,6 +389,21 @@ public final class SimpClient {
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
     public long culledCount() {
         return rules.culledCount();
+    }
+
+    /** The planes every culled primitive lies wholly outside of, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
+    int culledOutside() {
+        return rules.culledOutside();
+    }
+
+    /** Primitives not culled that the clipper cut away whole. */
+    long clippedAwayCount() {
+        return rules.clippedAwayCount();
+    }
+
+    /** The view the primitives were culled and clipped by: the camera's, or the parallel box. */
+    Camera view() {
+        return rules instanceof LitRules lit ? lit.state().camera() : Camera.PARALLEL;
     }
 
     /** Where the first line or polygon with its vertices' own colours stands ("house.simp:3"), or null. */

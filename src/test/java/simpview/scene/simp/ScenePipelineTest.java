@@ -139,17 +139,55 @@ class ScenePipelineTest {
                 warnings);
     }
 
+    /**
+     * A scene whose every primitive is culled says so, and, when one plane of the view has them all outside it,
+     * where they lie: at z above 0 (a student who looks down +z), beyond the far plane. A lit scene without a
+     * camera is seen through the parallel box, and is told of that box, not of a camera it does not have.
+     */
     @Test
     void aSceneWhosePrimitivesAreAllCulledSaysSo() throws Exception {
+        String nearSide = ": every one lies at z above 0, in front of the near plane z = 0: you look down the -z axis,"
+                + " so what is seen has z from 0 to -200";
+        String box = " (x and y from -100 to 100, z from 0 near to -200 far), so it was culled";
         Path behind = write("behind.simp", "polygon (0 0 10) (50 0 10) (0 50 10)", "line (0 0 5) (10 10 5)");
         draw(behind, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of("behind.simp drew nothing: every one of its 2 primitives lies wholly outside the view"
-                + " (x and y from -100 to 100, z from 0 near to -200 far), so it was culled"), warnings);
+                + box + nearSide), warnings);
         warnings.clear();
+        Path litNoCamera = write("bright.simp", "ambient 1 1 1", "polygon (0 0 10) (50 0 10) (0 50 10)",
+                "line (0 0 5) (10 10 5)");
+        draw(litNoCamera, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("bright.simp drew nothing: every one of its 2 primitives lies wholly outside the view"
+                + box + nearSide), warnings);
+        warnings.clear();
+        String volume = " wholly outside the view (the camera's view volume: in front of the camera, between its near"
+                + " and far planes), ";
         Path lit = write("lit.simp", "camera -1 -1 1 1 -1 -100", "ambient 1 1 1", "polygon (0 0 5) (1 0 5) (0 1 5)");
         draw(lit, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
-        assertEquals(List.of("lit.simp drew nothing: its one primitive lies wholly outside the view (the camera's"
-                + " view volume: in front of the camera, between its near and far planes), so it was culled"), warnings);
+        assertEquals(List.of("lit.simp drew nothing: its one primitive lies" + volume + "so it was culled: it lies"
+                + " nearer than the near plane z = -1 (hither): behind the camera, or too near its eye; the camera"
+                + " looks down its own -z axis"), warnings);
+        warnings.clear();
+        Path far = write("far.simp", "camera -1 -1 1 1 -0.1 -100", "ambient 1 1 1",
+                "polygon (0 0 -200) (1 0 -200) (0 1 -200)", "line (0 0 -300) (1 1 -300)");
+        draw(far, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("far.simp drew nothing: every one of its 2 primitives lies" + volume + "so it was culled:"
+                + " every one lies beyond the far plane z = -100 (yon): bring them nearer, or give yon a number"
+                + " further below 0"), warnings);
+        warnings.clear();
+        // one beyond the far plane, one behind the eye: no one plane to name
+        Path both = write("both.simp", "camera -1 -1 1 1 -0.1 -100", "ambient 1 1 1",
+                "polygon (0 0 -200) (1 0 -200) (0 1 -200)", "polygon (0 0 5) (1 0 5) (0 1 5)");
+        draw(both, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("both.simp drew nothing: every one of its 2 primitives lies" + volume + "so it was"
+                + " culled"), warnings);
+        warnings.clear();
+        // around a corner of the view: outside it, but not wholly outside one plane; the clipper leaves nothing
+        Path corner = write("corner.simp", "camera -1 -1 1 1 -1 -100", "ambient 1 1 1",
+                "polygon (-40 15 -10) (15 -40 -10) (-40 -40 -10)");
+        draw(corner, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("corner.simp drew nothing: its one primitive lies" + volume + "so the clipper cut it away"
+                + " whole"), warnings);
         warnings.clear();
         // one culled of two: no warning
         Path half = write("half.simp", "polygon (0 0 10) (50 0 10) (0 50 10)", "polygon (0 0 -10) (50 0 -10) (0 50 -10)");
