@@ -97,12 +97,38 @@ public final class Camera {
         }
         if (!(0 > hither && hither > yon)) {
             return new Problem(0 > hither ? 5 : 4,
-                    "the planes need 0 > hither > yon, found hither " + hither + " and yon " + yon);
+                    "the planes need 0 > hither > yon, found hither " + hither + " and yon " + yon
+                            + planesHint(hither, yon));
         }
         if (!Double.isFinite(PANEL_SIZE / Math.max(xhigh - xlow, yhigh - ylow))) {
             return new Problem(0, "the window is too small or too large to map onto the panel");
         }
         return null;
+    }
+
+    /**
+     * What a hither and yon that are not 0 &gt; hither &gt; yon most likely
+     * meant: distances in front of the eye, as OpenGL's near and far are
+     * given (both above 0); the two planes swapped; a near plane at the eye.
+     */
+    private static String planesHint(double hither, double yon) {
+        if (hither > 0 && yon > hither) {
+            return ": they are z values, and the camera looks down its -z axis, so what it sees has z below 0;"
+                    + " as distances in front of it they are hither " + plain(-hither) + " and yon " + plain(-yon);
+        }
+        if (yon > hither && hither < 0) {
+            return ": hither is the near plane and yon the far one, further below 0: swap them";
+        }
+        if (hither == 0 && yon < 0) {
+            return ": hither 0 is the eye itself, where nothing can be projected; give it a small number below 0,"
+                    + " such as -0.1";
+        }
+        return "";
+    }
+
+    /** A number as a scene writes it: -100, not -100.0. */
+    private static String plain(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 
     public boolean isPerspective() {

@@ -197,9 +197,25 @@ class LitScenesTest {
         assertTrue(compared > 650 * 640, "compared " + compared);
     }
 
+    /**
+     * Hither and yon are camera-space z values, below 0 in front of the eye. Given as distances in front of it,
+     * as OpenGL's near and far are, or swapped, the error says what they most likely meant.
+     */
+    @Test
+    void theCamerasPlanesGivenAsDistancesOrSwappedSayWhatWasMeant() throws Exception {
+        assertEquals("the planes need 0 > hither > yon, found hither 0.1 and yon 100.0: they are z values, and the"
+                + " camera looks down its -z axis, so what it sees has z below 0; as distances in front of it they are"
+                + " hither -0.1 and yon -100", failure("camera -1 -1 1 1 0.1 100").problem());
+        assertEquals("the planes need 0 > hither > yon, found hither -200.0 and yon -1.0: hither is the near plane"
+                + " and yon the far one, further below 0: swap them", failure("camera -1 -1 1 1 -200 -1").problem());
+        assertEquals("the planes need 0 > hither > yon, found hither -1.0 and yon -1.0",
+                failure("camera -1 -1 1 1 -1 -1").problem());
+    }
+
     @Test
     void theCameraIsCheckedAtItsLine() throws Exception {
-        assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0",
+        assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0: hither 0 is the eye itself,"
+                + " where nothing can be projected; give it a small number below 0, such as -0.1",
                 failure("camera -1 -1 1 1 0 -200").problem());
         assertTrue(failure("camera 1 -1 -1 1 -1 -200").problem().contains("xlow < xhigh"));
         // the caret under the number at fault: ylow, hither at 0 or above, else yon
