@@ -251,13 +251,45 @@ final class FileStack implements AutoCloseable {
             reach(places.here());
             reach(places.working());
             String hint = (name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "")
-                    + places.nearMisses(name);
+                    + places.nearMisses(name) + besideAnIncluder(name, extension, from, c);
             String here = places.here().toAbsolutePath().normalize().toString();
             throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for " + here
                     + (places.hereIsWorking() ? "" : " and " + places.working().normalize()));
         }
         boolean takesOver = !places.hereIsWorking() && found.equals(places.working());
         return new Located(found, takesOver ? places.here() : null);
+    }
+
+    /**
+     * When a name not found from the folder of the file holding the command
+     * is there from the folder of a file that included it (most often the
+     * scene's own: a student names a model from the scene's folder, inside a
+     * part in a folder of its own), says so and how to name it from here;
+     * else "". Found that way only from the working directory, the scene
+     * reads it when started in its folder and not from elsewhere.
+     */
+    private String besideAnIncluder(String name, String extension, SimpReader from, Command c) {
+        Path fromDir = from.file().toAbsolutePath().normalize().getParent();
+        for (int i = readers.size() - 1; i >= 0 && fromDir != null; i--) {
+            SimpReader includer = readers.get(i);
+            if (fromDir.equals(includer.file().toAbsolutePath().normalize().getParent())) {
+                continue; // the same folder: looked for there already
+            }
+            Path there;
+            try {
+                there = FilePlaces.of(includer.file(), name, extension, workingDir).here().toAbsolutePath().normalize();
+            } catch (InvalidPathException e) {
+                return "";
+            }
+            if (Files.isRegularFile(there)) {
+                String relative = fromDir.relativize(there).toString().replace('\\', '/');
+                String meant = relative.substring(0, relative.length() - extension.length());
+                return "; there is " + there + ", this name read from the folder of " + includer.file().getFileName()
+                        + ", but a name is looked for from the folder of the file that holds the command, "
+                        + from.file().getFileName() + ": write " + c.kind.spelling + " \"" + meant + "\"";
+            }
+        }
+        return "";
     }
 
     /**

@@ -58,6 +58,31 @@ class FileStackTest {
         assertTrue(scene.failure("s").problem().startsWith("file not found: cubes.simp; looked for "), "no near miss");
     }
 
+    /**
+     * A part in a folder of its own that names a file as the scene's folder sees it ("parts/wheel" inside
+     * parts/car.simp): names are looked for from the folder of the file holding the command, so it is not found
+     * (unless the scene runs in its own folder, the working directory); the error names the file that is there
+     * and how to name it from the part. A name found from no including file's folder gets no such hint.
+     */
+    @Test
+    void aNameReadFromTheIncludingFilesFolderSaysHowToNameIt() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        Path parts = Files.createDirectory(dir.resolve("parts"));
+        Files.createDirectory(parts.resolve("round"));
+        scene.write("parts/round/wheel", "line (0,0,-1) (1,1,-1)");
+        scene.write("parts/car", "file \"parts/round/wheel\"");
+        scene.write("s", "file \"parts/car\"");
+        SceneException e = scene.failure("s");
+        assertEquals(parts.resolve("car.simp"), e.file());
+        assertEquals("file not found: parts/round/wheel.simp; there is " + parts.resolve("round/wheel.simp")
+                + ", this name read from the folder of s.simp, but a name is looked for from the folder of the file"
+                + " that holds the command, car.simp: write file \"round/wheel\"; looked for "
+                + parts.resolve("parts/round/wheel.simp") + " and " + Path.of("parts/round/wheel.simp").toAbsolutePath(),
+                e.problem());
+        scene.write("parts/car", "file \"parts/round/tyre\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: parts/round/tyre.simp; looked for "));
+    }
+
     /** The working directory, the second place looked, is named in full. */
     @Test
     void aFileThatDiffersOnlyInCaseInTheWorkingDirectoryIsNamedInFull() throws Exception {
