@@ -105,6 +105,13 @@ public final class LitGeometry implements GeometryStage {
     private int culledOutside;
     /** Primitives not culled that the clipper cut away whole. */
     private long clippedAway;
+    /**
+     * Whether a primitive not culled had a vertex nearer than the far plane
+     * of its fog (or no fog); while not, the fog of the first one, which
+     * every one so far lies wholly beyond: drawn in the fog's colour alone.
+     */
+    private boolean anyNearerThanFog;
+    private Fog firstFoggedWhole;
     private long primitives;
     /**
      * Filled polygons lit so far (after culling), and whether one of them was
@@ -175,6 +182,9 @@ public final class LitGeometry implements GeometryStage {
         if (culled(state.camera(), 2)) {
             skipped(Painter.LINE, true, 2);
             return;
+        }
+        if (!anyNearerThanFog) {
+            lookAtFog(2);
         }
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, 2);
@@ -262,6 +272,9 @@ public final class LitGeometry implements GeometryStage {
             skipped(wire ? Painter.WIRE : Painter.FILLED, true, n);
             return;
         }
+        if (!anyNearerThanFog) {
+            lookAtFog(n);
+        }
         faceNormals(n);
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
@@ -313,6 +326,31 @@ public final class LitGeometry implements GeometryStage {
         for (int k = 0; k < kept; k++) {
             lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
         }
+    }
+
+    /**
+     * Notes whether the primitive at hand, its n camera-space vertices in
+     * place and not culled, has a vertex nearer than its fog's far plane.
+     * When none has, every point of it (each a mean of its vertices) is at
+     * or beyond far, and SPEC's fog gives it the fog's colour alone.
+     */
+    private void lookAtFog(int n) {
+        Fog fog = state.fog();
+        for (int k = 0; k < n && !anyNearerThanFog; k++) {
+            anyNearerThanFog = fog.isNone() || cam[k * CAMERA_STRIDE + CZ] > fog.far();
+        }
+        if (!anyNearerThanFog && firstFoggedWhole == null) {
+            firstFoggedWhole = fog;
+        }
+    }
+
+    /**
+     * The fog of the first primitive drawn, when every primitive drawn (not
+     * culled) lies wholly at or beyond the far plane of its fog, and so is
+     * the fog's colour alone; null otherwise.
+     */
+    public Fog everyPrimitiveFoggedWhole() {
+        return anyNearerThanFog ? null : firstFoggedWhole;
     }
 
     /** Step 2: whether the n camera-space vertices are all outside one plane of the view; counted so. */

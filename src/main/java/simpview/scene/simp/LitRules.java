@@ -382,6 +382,11 @@ final class LitRules implements RuleSet {
         return geometry.everyLitPolygonBlack();
     }
 
+    /** The fog every primitive drawn lies wholly beyond, or null (see {@link LitGeometry#everyPrimitiveFoggedWhole}). */
+    Fog everyPrimitiveFoggedWhole() {
+        return geometry.everyPrimitiveFoggedWhole();
+    }
+
     /** True when lights were on and none reached the front of a lit polygon (see {@link LitGeometry#noLightReachedAPolygon}). */
     boolean noLightReachedAPolygon() {
         return geometry.noLightReachedAPolygon();

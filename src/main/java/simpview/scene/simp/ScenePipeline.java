@@ -6,6 +6,7 @@ import java.util.List;
 import simpview.geometry.Camera;
 import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
+import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.FragmentStages;
 import simpview.stage.PrimitiveTrace;
@@ -357,6 +358,14 @@ public final class ScenePipeline {
         } else if (client.primitiveCount() > 0
                 && client.culledCount() + client.clippedAwayCount() == client.primitiveCount()) {
             monitor.warning(files.reached().get(0).getFileName() + " drew nothing: " + outsideTheView(client));
+        } else if (client.everyPrimitiveFoggedWhole() != null) {
+            // correct by SPEC, but a picture of the fog's colour alone (black, most often) looks like a bug
+            Fog fog = client.everyPrimitiveFoggedWhole();
+            monitor.warning(files.reached().get(0).getFileName() + ": every primitive lies at or beyond the far plane"
+                    + " of its fog, z = " + plain(fog.far()) + " (depth " + plain(fog.near()) + " " + plain(fog.far())
+                    + " " + plain(fog.r()) + " " + plain(fog.g()) + " " + plain(fog.b()) + "), so each is drawn in the"
+                    + " fog's colour alone: near and far are z values in the camera's coordinates, below 0 in front of"
+                    + " it; give far a number further below 0");
         }
         boolean lightsBehind = client.noLightReachedAPolygon();
         if (client.everyLitPolygonBlack() && !lightsBehind) {

@@ -11,6 +11,7 @@ import simpview.raster.LineRenderer;
 import simpview.raster.PolygonRenderer;
 import simpview.scene.SceneException;
 import simpview.scene.obj.ObjLibrary;
+import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
 import simpview.stage.CuedRenderers;
@@ -298,6 +299,11 @@ public final class SimpClient {
     /** True for a lit scene whose lit polygons all came out black, nothing lighting them. */
     boolean everyLitPolygonBlack() {
         return rules instanceof LitRules lit && lit.everyLitPolygonBlack();
+    }
+
+    /** For a lit scene whose every primitive drawn lies wholly beyond its fog's far plane: the first one's fog; else null. */
+    Fog everyPrimitiveFoggedWhole() {
+        return rules instanceof LitRules lit ? lit.everyPrimitiveFoggedWhole() : null;
     }
 
     /** True for a lit scene whose lights, while on, all stood behind every lit polygon. */

@@ -219,7 +219,7 @@ class ScenePipelineTest {
             {"light 1 1 1 1 0", "obj model"},
             {"obj model", "ambient 1 1 1", "obj model"},
             {"surface 0 0 0", "ambient 1 1 1", "obj model"},
-            {"depth -10 -50 0 0 1", "obj model"},
+            {"depth -10 -150 0 0 1", "obj model"},
             {"camera -1 -1 1 1 -1 -200", "line (0 0 -5) (1 1 -5)"},
             {"camera -1 -1 1 1 -1 -200", "wire", "polygon (-1 -1 -5) (1 -1 -5) (0 1 -5)"},
         };
@@ -311,6 +311,38 @@ class ScenePipelineTest {
         draw(write("fine.simp", camera, "ambient 1 1 1", "light 8, 8, 12, 1, .2", "surface 1 1 1 2 8",
                 "depth -1 -10 1 1 1", triangle), canvas, ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of(), warnings);
+    }
+
+    /**
+     * A fog whose far plane is nearer than everything drawn gives every pixel the fog's colour alone (SPEC: z at
+     * or below far is the fog's colour): a picture of one colour, black most often, and the scene says why. Not
+     * when one primitive has a vertex nearer than far, nor without fog.
+     */
+    @Test
+    void aSceneWhollyBeyondItsFogSaysSo() throws Exception {
+        String camera = "camera -1 -1 1 1 -0.1 -200";
+        String light = "light 1 1 1 1 0";
+        String fog = "depth -10 -50 0 0 0.2";
+        String far = "polygon (-5 -5 -80) (5 -5 -80) (0 5 -80)";
+        PageCanvas canvas = new PageCanvas();
+        draw(write("fogged.simp", camera, light, fog, far, "line (0 0 -60) (1 1 -70)"), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("fogged.simp: every primitive lies at or beyond the far plane of its fog, z = -50 (depth"
+                + " -10 -50 0 0 0.2), so each is drawn in the fog's colour alone: near and far are z values in the"
+                + " camera's coordinates, below 0 in front of it; give far a number further below 0"), warnings);
+        long blue = Math.round(0.2 * 255); // the fog's colour, z = -80 being at or below far
+        assertEquals(blue, canvas.image().getRGB(50 + 325, 749 - 50 - 325) & 0xFFFFFF);
+        warnings.clear();
+        String[][] notForThis = {
+            {camera, light, far},
+            {camera, light, fog, far, "line (0 0 -60) (1 1 -40)"},
+            {camera, light, fog, "polygon (-5 -5 -80) (5 -5 -80) (0 5 -49)"},
+            {camera, light, far, fog},
+        };
+        for (String[] scene : notForThis) {
+            draw(write("clear.simp", scene), canvas, ScenePipeline.Rules.BY_COMMANDS);
+            assertEquals(List.of(), warnings, String.join(" / ", scene));
+        }
     }
 
     @Test
