@@ -212,6 +212,18 @@ class LitScenesTest {
                 failure("camera -1 -1 1 1 -1 -1").problem());
     }
 
+    /** The fog's near and far are camera-space z values too: given as distances, or swapped, the error says so. */
+    @Test
+    void theFogsPlanesGivenAsDistancesOrSwappedSayWhatWasMeant() throws Exception {
+        assertEquals("fog needs near > far (camera-space z, far more negative), found near 0.0 and far 200.0: they are"
+                + " z values, below 0 in front of the camera; as distances in front of it they are depth 0 -200",
+                failure("depth 0 200 0 0 0").problem());
+        assertEquals("fog needs near > far (camera-space z, far more negative), found near -50.0 and far -10.0: near"
+                + " is the nearer z and far the one further below 0: swap them", failure("depth -50 -10 0 0 0").problem());
+        assertEquals("fog needs near > far (camera-space z, far more negative), found near -10.0 and far -10.0",
+                failure("depth -10 -10 0 0 0").problem());
+    }
+
     @Test
     void theCameraIsCheckedAtItsLine() throws Exception {
         assertEquals("the planes need 0 > hither > yon, found hither 0.0 and yon -200.0: hither 0 is the eye itself,"

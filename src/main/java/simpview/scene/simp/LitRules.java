@@ -248,8 +248,12 @@ final class LitRules implements RuleSet {
     boolean depth(Command c) throws SceneException {
         double[] n = c.numbers;
         if (!(n[0] > n[1])) {
+            String meant = n[0] >= 0 && n[1] > n[0] && n[1] > 0
+                    ? ": they are z values, below 0 in front of the camera; as distances in front of it they are"
+                    + " depth " + plain(-n[0]) + " " + plain(-n[1])
+                    : n[1] > n[0] ? ": near is the nearer z and far the one further below 0: swap them" : "";
             throw error(c, c.argumentIndex, "fog needs near > far (camera-space z, far more negative), found near "
-                    + n[0] + " and far " + n[1]);
+                    + n[0] + " and far " + n[1] + meant);
         }
         notNegative(c, 2, 5, "fog colour");
         aboveOne(c, 2, "fog colour", "the fog is clamped to full in that channel where it is thick");
