@@ -87,24 +87,9 @@ public final class LitState implements PointShader {
     }
 
     /**
-     * True while nothing lights a point: the ambient light is 0 0 0 and no
-     * light has an intensity above 0, so by SPEC's formula every lit colour
-     * is black whatever the surface (the fog, if any, may still tint it).
+     * True when a light of an intensity above 0 is on (whatever it faces).
      * Negative numbers are errors at their command, so a sum tells.
      */
-    public boolean inTheDark() {
-        if (ambientR + ambientG + ambientB > 0) {
-            return false;
-        }
-        for (int i = 0; i < lights.count(); i++) {
-            if (lights.red(i) + lights.green(i) + lights.blue(i) > 0) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** True when a light of an intensity above 0 is on (whatever it faces). */
     public boolean anyLightOn() {
         for (int i = 0; i < lights.count(); i++) {
             if (lights.red(i) + lights.green(i) + lights.blue(i) > 0) {
