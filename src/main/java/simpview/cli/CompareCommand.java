@@ -45,6 +45,7 @@ import simpview.pages.A1Page;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
+import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
@@ -407,23 +408,6 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         return "simpview inspect " + what + pictures.drawingOptions() + " --at " + look.at() + " --explain";
     }
 
-    /**
-     * The command that explains the pixel of a failing panel of the first assignment's page to look at first (the
-     * one that differs most in its largest patch, {@link WorstPixel}), at that pixel in page coordinates, as
-     * {@code inspect --assignment 1} takes it; null when no pixel of it differs beyond the tolerance.
-     */
-    private String firstAssignmentInspect(Comparison panel, PanelGridComparison.Panel where) {
-        List<DiffRegion> largest = DiffRegions.of(panel, tolerance, ComparisonReport.REGIONS_LISTED).largest();
-        WorstPixel look = largest.isEmpty() ? null : WorstPixel.in(panel, largest.get(0), tolerance);
-        if (look == null) {
-            return null;
-        }
-        int x = where.left() + look.x();
-        int y = PageCanvas.SIZE - 1 - (where.top() + where.size() - 1 - look.y());
-        return "simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule")
-                + " --at " + x + "," + y + " --explain";
-    }
-
     /** The hint the search found; an error of its own is the program's and is thrown as such. */
     private static SystematicError awaitHint(FutureTask<SystematicError> hint) {
         try {
@@ -499,13 +483,6 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         }
         out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
                 passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
-        for (int k = 0; k < panels.length; k++) {
-            String inspect = passing[k] ? null : firstAssignmentInspect(compared[k], panels[k]);
-            if (inspect != null) {
-                out.println("next:    " + inspect + " (panel " + (k + 1) + ", " + panelName(shown, k) + ": how simpview "
-                        + "made the pixel that differs most in its largest patch, term by term)");
-            }
-        }
         // A panel passes with up to 1 % of its pixels wrong, 900: a small shape left out still passes. Its patches
         // are not listed, so a solid one is said, as of a page of the eight pages, by the panel it is in.
         for (int k = 0; k < panels.length; k++) {
@@ -538,6 +515,9 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                 }
             }
         }
+        if (!passes) {
+            lookAtFirstAssignment(out, shown, compared, passing);
+        }
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), tolerance), diff);
@@ -551,6 +531,39 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                     + (flip ? "yellow beyond it but forgiven by FLIP, red above FLIP's threshold)" : "red beyond it)"));
         }
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /**
+     * Of a first-assignment page that fails, the pixel to look at first, in its lowest failing panel: the one that
+     * differs most in that panel's largest patch ({@link WorstPixel}), in the panel's and the page's coordinates;
+     * and the {@code inspect} command that shows which lines or triangles wrote it there, or went past it.
+     */
+    private void lookAtFirstAssignment(PrintWriter out, A1Page shown, Comparison[] compared, boolean[] passing) {
+        int worst = -1;
+        for (int k = 0; k < compared.length; k++) {
+            if (!passing[k] && (worst < 0
+                    || compared[k].verdictShare(tolerance) < compared[worst].verdictShare(tolerance))) {
+                worst = k;
+            }
+        }
+        if (worst < 0) {
+            return;
+        }
+        List<DiffRegion> patches = DiffRegions.of(compared[worst], tolerance, ComparisonReport.REGIONS_LISTED)
+                .largest();
+        WorstPixel look = patches.isEmpty() ? null : WorstPixel.in(compared[worst], patches.get(0), tolerance);
+        if (look == null) {
+            return;
+        }
+        int panel = worst + 1;
+        int pageX = A1Layout.left(panel) + look.x();
+        int pageY = PageCanvas.SIZE - 1 - (A1Layout.top(panel) + A1Layout.PANEL - 1 - look.y());
+        out.println("look:    " + look.describe("panel " + panel + " (" + panelName(shown, worst) + ") x " + look.x()
+                + ", y " + look.y() + " (page x " + pageX + ", y " + pageY + ")"));
+        out.println("next:    simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule")
+                + " --at " + pageX + "," + pageY + " (the page's pixel: the " + (shown instanceof LineTestPage
+                        ? "lines that wrote it, or wrote beside it" : "triangles that wrote it and why its centre is in "
+                        + "or out of each") + ")");
     }
 
     /** The rule each of the first assignment's panels is judged by here: the command line's, without slack. */

@@ -100,7 +100,8 @@ public final class StudentTable {
             if (command != null) {
                 told.add(row.file());
                 out.append("next: ").append(row.file()).append(": ").append(command)
-                        .append(isPanel(row) ? " (each failing panel's pixel to look at first, and how simpview made it)\n"
+                        .append(isPanel(row) ? " (the pixel to look at first, in the panel that fails most, and how "
+                                + "simpview made it)\n"
                                 : " (the pixel to look at first, and how simpview made it)\n");
             }
         }

@@ -68,7 +68,15 @@ public record WorstPixel(int x, int y, int ours, int theirs, int brighter, int d
      * differ, yours is brighter at 97 % and darker at 3 %".
      */
     public String describe() {
-        return "x " + x + ", y " + y + " differs most in patch 1: yours " + Rasters.words(theirs) + ", simpview's "
+        return describe("x " + x + ", y " + y);
+    }
+
+    /**
+     * The same, the pixel named by {@code place} ("panel 2 (Bresenham) x 150, y 149 (page x 550, y 549)"), as a
+     * page of several panels names it.
+     */
+    public String describe(String place) {
+        return place + " differs most in patch 1: yours " + Rasters.words(theirs) + ", simpview's "
                 + Rasters.words(ours) + "; of the patch's " + Count.of(differing, "pixel") + " that "
                 + (differing == 1 ? "differs" : "differ") + ", yours is brighter at "
                 + Percent.of((double) brighter / differing) + " and darker at " + Percent.of((double) darker / differing);

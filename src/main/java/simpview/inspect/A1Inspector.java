@@ -61,13 +61,14 @@ public final class A1Inspector {
         int argb = Colors.WHITE; // the page around the panels
         List<A1Report.Write> writes = new ArrayList<>();
         List<A1Report.CentreCase> centre = new ArrayList<>();
+        List<A1Report.Beside> beside = new ArrayList<>();
         String drawer = null;
         int px = -1;
         int py = -1;
         if (panel != 0) {
             px = column - A1Layout.left(panel);
             py = A1Layout.top(panel) + A1Layout.PANEL - 1 - row;
-            Watch watch = new Watch(px, py, writes);
+            Watch watch = new Watch(px, py, writes, beside);
             // The panel as the replay needs it: the one pixel watched, the panel's background elsewhere (what a ghost
             // or a blend reads beside it only makes writes the probe drops). A page drawn for each pixel inspected
             // was most of an inspection's time, and its garbage, while the pointer swept a page.
@@ -96,10 +97,16 @@ public final class A1Inspector {
             for (A1Report.Write w : writes) {
                 w.of = watch.count;
             }
+            for (A1Report.Beside b : beside) {
+                b.of = watch.count;
+            }
             argb = pixel.colour();
         }
+        if (!writes.isEmpty()) {
+            beside.clear(); // said only of a pixel no line reached
+        }
         return new A1Report(page, shown.title(), shown instanceof LineTestPage, shown.usesSeed() ? seed : null, rule, x, y, column, row,
-                argb, panel, drawer, px, py, writes, centre);
+                argb, panel, drawer, px, py, writes, centre, beside);
     }
 
     /**
@@ -134,6 +141,7 @@ public final class A1Inspector {
         final int x;
         final int y;
         final List<A1Report.Write> writes;
+        final List<A1Report.Beside> beside;
         int primitive;
         int count;
         A1Lines lines;
@@ -144,10 +152,27 @@ public final class A1Inspector {
         int incoming;
         double coverage;
 
-        Watch(int x, int y, List<A1Report.Write> writes) {
+        Watch(int x, int y, List<A1Report.Write> writes, List<A1Report.Beside> beside) {
             this.x = x;
             this.y = y;
             this.writes = writes;
+            this.beside = beside;
+        }
+
+        /**
+         * On a page of lines, a write at (wx, wy), one of the eight pixels around the watched one, is told as the
+         * line's: where a line went instead of here. Polygons' neighbours are not told (their centres say it).
+         */
+        void besideAt(int wx, int wy) {
+            if (lines == null || Math.abs(wx - x) > 1 || Math.abs(wy - y) > 1 || wx == x && wy == y) {
+                return;
+            }
+            A1Report.Beside last = beside.isEmpty() ? null : beside.get(beside.size() - 1);
+            if (last == null || last.number() != primitive + 1) {
+                last = new A1Report.Beside(primitive + 1, lines.start(primitive), lines.end(primitive));
+                beside.add(last);
+            }
+            last.add(wx, wy);
         }
 
         void wrote(double z, int old, int now) {
@@ -191,6 +216,8 @@ public final class A1Inspector {
                 int old = delegate.getPixel(x, y);
                 delegate.setPixel(x, y, z, argb);
                 watch.wrote(z, old, delegate.getPixel(x, y));
+            } else {
+                watch.besideAt(x, y);
             }
         }
 
@@ -218,6 +245,8 @@ public final class A1Inspector {
                 watch.incoming = argb;
                 watch.coverage = coverage();
                 super.setPixel(x, y, z, argb);
+            } else {
+                watch.besideAt(x, y);
             }
         }
     }

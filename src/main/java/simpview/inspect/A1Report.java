@@ -1,5 +1,6 @@
 package simpview.inspect;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import simpview.geometry.Vertex;
@@ -133,6 +134,72 @@ public final class A1Report {
     public record CentreCase(int number, boolean covered, String why) {
     }
 
+    /**
+     * A line that wrote one or more of the eight pixels around a pixel no line reached: where it went instead.
+     * Its ends are given as the page gives them; {@link #minorAt} is where the line through its rounded ends
+     * is at the pixel's major coordinate, the value a DDA rounds there.
+     */
+    public static final class Beside {
+        private final int number;
+        int of;
+        private final double[] ends;
+        private final List<int[]> pixels = new ArrayList<>();
+
+        Beside(int number, Vertex p, Vertex q) {
+            this.number = number;
+            this.ends = new double[] {p.x(), p.y(), q.x(), q.y()};
+        }
+
+        void add(int x, int y) {
+            for (int[] known : pixels) {
+                if (known[0] == x && known[1] == y) {
+                    return;
+                }
+            }
+            pixels.add(new int[] {x, y});
+        }
+
+        /** 1, 2, ... in the panel's drawing order. */
+        public int number() {
+            return number;
+        }
+
+        /** How many lines the panel draws. */
+        public int of() {
+            return of;
+        }
+
+        /** The line's x0, y0, x1, y1 as given, panel coordinates. */
+        public double[] ends() {
+            return ends.clone();
+        }
+
+        /** The pixels next to the inspected one it wrote, each {x, y} in panel coordinates, in drawing order. */
+        public List<int[]> pixels() {
+            return pixels.stream().map(int[]::clone).toList();
+        }
+
+        /** Whether its rounded ends make it x-major (|dx| at least |dy|), as every drawer walks it. */
+        public boolean xMajor() {
+            return Math.abs(round(ends[2]) - round(ends[0])) >= Math.abs(round(ends[3]) - round(ends[1]));
+        }
+
+        /**
+         * The minor coordinate (y of an x-major line, x of a y-major one) of the line through its rounded ends at
+         * the major coordinate {@code major}; NaN for a line of one pixel.
+         */
+        public double minorAt(double major) {
+            double ax = round(ends[0]);
+            double ay = round(ends[1]);
+            double bx = round(ends[2]);
+            double by = round(ends[3]);
+            if (xMajor()) {
+                return ax == bx ? Double.NaN : ay + (major - ax) * (by - ay) / (bx - ax);
+            }
+            return ax + (major - ay) * (bx - ax) / (by - ay);
+        }
+    }
+
     private final int page;
     private final String title;
     private final Long seed;
@@ -149,9 +216,11 @@ public final class A1Report {
     private final List<Write> writes;
     private final boolean lines;
     private final List<CentreCase> centre;
+    private final List<Beside> beside;
 
     A1Report(int page, String title, boolean lines, Long seed, A1Rule rule, int x, int y, int column, int row, int argb,
-            int panel, String drawer, int panelX, int panelY, List<Write> writes, List<CentreCase> centre) {
+            int panel, String drawer, int panelX, int panelY, List<Write> writes, List<CentreCase> centre,
+            List<Beside> beside) {
         this.page = page;
         this.lines = lines;
         this.title = title;
@@ -168,6 +237,15 @@ public final class A1Report {
         this.panelY = panelY;
         this.writes = List.copyOf(writes);
         this.centre = List.copyOf(centre);
+        this.beside = List.copyOf(beside);
+    }
+
+    /**
+     * On a page of lines, for a pixel no line reached: the lines that wrote a pixel next to it, in drawing
+     * order; empty otherwise.
+     */
+    public List<Beside> beside() {
+        return beside;
     }
 
     /**
@@ -232,9 +310,64 @@ public final class A1Report {
                     .append('\n');
             if (!lines) {
                 centreText(sb);
+            } else if (writes.isEmpty()) {
+                besideText(sb);
             }
         }
         return sb.toString();
+    }
+
+    /**
+     * The lines that went past this pixel: which of its neighbours each wrote, and where the line through its
+     * rounded ends is at this pixel's column (an x-major line) or row (a y-major one).
+     */
+    private void besideText(StringBuilder sb) {
+        if (beside.isEmpty()) {
+            sb.append("beside: no line wrote any of the eight pixels around it either\n");
+            return;
+        }
+        sb.append("beside: the lines that wrote a pixel next to it, and where each is at this pixel's column (x-major)"
+                + " or row (y-major), on the line through its rounded ends:\n");
+        for (Beside b : beside) {
+            sb.append("  line ").append(b.number()).append(" of ").append(b.of()).append(", ")
+                    .append(point(b.ends[0], b.ends[1])).append(" to ").append(point(b.ends[2], b.ends[3]));
+            if (!(isWhole(b.ends[0]) && isWhole(b.ends[1]) && isWhole(b.ends[2]) && isWhole(b.ends[3]))) {
+                sb.append(", rounded ").append(point(round(b.ends[0]), round(b.ends[1]))).append(" to ")
+                        .append(point(round(b.ends[2]), round(b.ends[3])));
+            }
+            sb.append(": wrote ");
+            List<int[]> pixels = b.pixels();
+            for (int k = 0; k < pixels.size(); k++) {
+                int[] p = pixels.get(k);
+                sb.append(k == 0 ? "" : ", ").append(point(p[0], p[1])).append(' ').append(direction(p[0], p[1]));
+            }
+            char major = b.xMajor() ? 'x' : 'y';
+            char minor = b.xMajor() ? 'y' : 'x';
+            int here = b.xMajor() ? panelX : panelY;
+            int mine = b.xMajor() ? panelY : panelX;
+            double at = b.minorAt(here);
+            if (!Double.isNaN(at)) {
+                sb.append(String.format(Locale.ROOT, "; at %c %d it is at %c %s, which rounds to %d, %s from this"
+                        + " pixel's %d", major, here, minor, decimal(at), (long) round(at), decimal(Math.abs(at - mine)),
+                        mine));
+            }
+            sb.append('\n');
+        }
+    }
+
+
+    /** Where panel pixel (px, py) is from the inspected one: "above", "below left", ... */
+    private String direction(int px, int py) {
+        String vertical = py > panelY ? "above" : py < panelY ? "below" : "";
+        String horizontal = px > panelX ? "right" : px < panelX ? "left" : "";
+        return vertical.isEmpty() ? horizontal : horizontal.isEmpty() ? vertical : vertical + " " + horizontal;
+    }
+
+    /** At most three decimals, no trailing zeros: 152.333, 0.5, 3. */
+    private static String decimal(double v) {
+        String s = String.format(Locale.ROOT, "%.3f", v);
+        s = s.replaceAll("0+$", "");
+        return s.endsWith(".") ? s.substring(0, s.length() - 1) : s;
     }
 
     /** The pixel's centre and the triangles whose box holds it, each covering it or not and why. */
@@ -309,9 +442,45 @@ public final class A1Report {
                 }
                 sb.append("]}");
             }
+            if (lines && panel != 0 && writes.isEmpty()) {
+                besideJson(sb.append(", \"beside\": ["));
+                sb.append(']');
+            }
             sb.append('}');
         }
         return sb.append('}').toString();
+    }
+
+    /**
+     * The lines beside a pixel no line reached, as JSON objects, comma-separated: each line's number, its ends as
+     * given, the neighbours it wrote, its major axis and where it is on the minor one at this pixel's major
+     * coordinate (null for a line of one pixel).
+     */
+    private void besideJson(StringBuilder sb) {
+        for (int k = 0; k < beside.size(); k++) {
+            Beside b = beside.get(k);
+            sb.append(k == 0 ? "" : ", ").append("{\"primitive\": ").append(b.number()).append(", \"vertices\": [[");
+            Json.number(sb, b.ends[0]);
+            sb.append(", ");
+            Json.number(sb, b.ends[1]);
+            sb.append("], [");
+            Json.number(sb, b.ends[2]);
+            sb.append(", ");
+            Json.number(sb, b.ends[3]);
+            sb.append("]], \"pixels\": [");
+            List<int[]> pixels = b.pixels();
+            for (int i = 0; i < pixels.size(); i++) {
+                sb.append(i == 0 ? "[" : ", [").append(pixels.get(i)[0]).append(", ").append(pixels.get(i)[1]).append(']');
+            }
+            double at = b.minorAt(b.xMajor() ? panelX : panelY);
+            sb.append("], \"major\": \"").append(b.xMajor() ? 'x' : 'y').append("\", \"minor_here\": ");
+            if (Double.isNaN(at)) {
+                sb.append("null");
+            } else {
+                Json.number(sb, at);
+            }
+            sb.append('}');
+        }
     }
 
     /** The history's entries as JSON objects, comma-separated. */

@@ -24,6 +24,47 @@ class Assignment1CompareTest {
     @TempDir
     Path dir;
 
+    /**
+     * A page that fails points to one pixel and to the inspect command that explains it, in page coordinates; that
+     * command runs, and check names the same compare command once for the picture. Panel 1 of page 1 gets a grey
+     * 40x40 square in its empty bottom-left corner (every pixel 20/255 off, more than 1 % of the panel) with one
+     * white pixel at panel (10, 12): that pixel differs most. Panel 1's bottom-left pixel is page (50, 400) (SPEC
+     * Part 3), so the pixel is page (60, 412).
+     */
+    @Test
+    void aFailingPageNamesThePixelToLookAtAndHowToInspectIt() throws Exception {
+        Path page = dir.resolve("a1-page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--a1-rule", "course", "--out",
+                page.toString()).exitCode());
+        BufferedImage mine = ImageIO.read(page.toFile());
+        int left = 50;
+        int bottomRow = 749 - 400; // the image row of panel 1's bottom row
+        for (int y = 0; y < 40; y++) {
+            for (int x = 0; x < 40; x++) {
+                mine.setRGB(left + x, bottomRow - y, 0x141414);
+            }
+        }
+        mine.setRGB(left + 10, bottomRow - 12, 0xFFFFFF);
+        Path subs = Files.createDirectories(dir.resolve("mine"));
+        Path wrong = subs.resolve("a1-page1.png");
+        ImageIO.write(mine, "png", wrong.toFile());
+        CliRun run = CliRun.of("compare", wrong.toString(), "--assignment", "1", "--page", "1", "--a1-rule", "course");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("look:    panel 1 (DDA) x 10, y 12 (page x 60, y 412) differs most in patch 1: "
+                + "yours (255,255,255), simpview's (0,0,0)"), run.out());
+        String next = "simpview inspect --assignment 1 --page 1 --a1-rule course --at 60,412";
+        assertTrue(run.out().contains("next:    " + next + " ("), run.out());
+        CliRun inspect = CliRun.of(next.substring("simpview ".length()).split(" "));
+        assertEquals(ExitCode.OK, inspect.exitCode(), inspect.err());
+        assertTrue(inspect.out().contains("panel 1 (DDA), panel pixel (10, 12)"), inspect.out());
+
+        CliRun check = CliRun.of("check", subs.toString(), "--assignment", "1", "--pages", "1", "--a1-rule", "course");
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        String compare = "simpview compare " + wrong + " --assignment 1 --page 1 --a1-rule course --diff a1-page1-diff.png";
+        assertEquals(1, check.out().lines().filter(l -> l.startsWith("next: ")).count(), check.out());
+        assertTrue(check.out().contains("next: a1-page1.png: " + compare + " ("), check.out());
+    }
+
     @Test
     void ourOwnPageAgreesEverywhere() {
         Path page = dir.resolve("a1-page3.png");

@@ -252,6 +252,87 @@ class A1HistoryTest {
         assertTrue(smooth.json().contains("\"outcome\": \"blended\", \"coverage\": "), smooth.json());
     }
 
+    /**
+     * A black pixel of a line panel names the lines that lit a pixel next to it. Page 2 (the handout's
+     * parallelogram, integer ends, so every drawer's pixels are SPEC's DDA's): panel 1's pixel (85, 133) is
+     * just below the band of the first 51 lines. Which lines light which neighbour is worked out here by
+     * SPEC's DDA rule on the handout's lines; line 51, (20, 169) to (150, 99), is at y = 169 - 65 * 70 / 130
+     * = 134 in column 85.
+     */
+    @Test
+    void aBlackLinePixelNamesTheLinesBesideIt() {
+        int px = 85;
+        int py = 133;
+        List<String> expected = new ArrayList<>();
+        for (int i = 0; i < 102; i++) {
+            int p = i % 51;
+            int[] line = i < 51 ? new int[] {20, 299 - 80 - p, 150, 299 - 150 - p}
+                    : new int[] {160 + p, 299 - 270, 240 + p, 299 - 40};
+            List<int[]> pixels = ddaPixels(line[0], line[1], line[2], line[3]);
+            StringBuilder near = new StringBuilder();
+            for (int[] q : pixels) {
+                assertTrue(q[0] != px || q[1] != py, "line " + (i + 1) + " lights the pixel itself");
+                if (Math.abs(q[0] - px) <= 1 && Math.abs(q[1] - py) <= 1) {
+                    near.append(near.length() == 0 ? "" : " ").append(q[0]).append(',').append(q[1]);
+                }
+            }
+            if (near.length() > 0) {
+                expected.add((i + 1) + ": " + near);
+            }
+        }
+        assertTrue(expected.stream().anyMatch(e -> e.startsWith("51: ")), expected.toString());
+        for (int panel : new int[] {1, 2, 3}) {
+            int left = panel == 2 ? 400 : 50;
+            int bottom = panel == 3 ? 50 : 400;
+            A1Report report = A1Inspector.inspect(2, SEED, A1Rule.SPEC, left + px, bottom + py);
+            assertEquals(0, report.writes().size());
+            List<String> found = new ArrayList<>();
+            for (A1Report.Beside b : report.beside()) {
+                StringBuilder near = new StringBuilder();
+                for (int[] q : b.pixels()) {
+                    near.append(near.length() == 0 ? "" : " ").append(q[0]).append(',').append(q[1]);
+                }
+                found.add(b.number() + ": " + near);
+            }
+            // the test's DDA lists a line's pixels from its smaller-x end, as the drawers walk them
+            assertEquals(expected, found, "panel " + panel);
+            String text = report.text();
+            assertTrue(text.contains("line 51 of 102, (20, 169) to (150, 99): wrote ")
+                    && text.contains("; at x 85 it is at y 134, which rounds to 134, 1 from this pixel's 133"), text);
+            assertTrue(report.json().contains("\"beside\": [{\"primitive\": "), report.json());
+        }
+        // a lit pixel names no lines beside it
+        assertTrue(A1Inspector.inspect(2, SEED, A1Rule.SPEC, 50 + px, 400 + 134).beside().isEmpty());
+    }
+
+    /** SPEC Part 1's DDA on integer ends: from the smaller major end, the minor coordinate summed and rounded half up. */
+    private static List<int[]> ddaPixels(int x0, int y0, int x1, int y1) {
+        List<int[]> pixels = new ArrayList<>();
+        boolean xMajor = Math.abs(x1 - x0) >= Math.abs(y1 - y0);
+        if (xMajor ? x1 < x0 : y1 < y0) {
+            int t = x0;
+            x0 = x1;
+            x1 = t;
+            t = y0;
+            y0 = y1;
+            y1 = t;
+        }
+        if (xMajor) {
+            double slope = x1 == x0 ? 0 : (double) (y1 - y0) / (x1 - x0);
+            double y = y0;
+            for (int x = x0; x <= x1; x++, y += slope) {
+                pixels.add(new int[] {x, (int) Math.floor(y + 0.5)});
+            }
+        } else {
+            double slope = (double) (x1 - x0) / (y1 - y0);
+            double x = x0;
+            for (int y = y0; y <= y1; y++, x += slope) {
+                pixels.add(new int[] {(int) Math.floor(x + 0.5), y});
+            }
+        }
+        return pixels;
+    }
+
     @Test
     void marginsAndPixelsOffThePage() {
         A1Report margin = A1Inspector.inspect(4, SEED, A1Rule.SPEC, 10, 10);
