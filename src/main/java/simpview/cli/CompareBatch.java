@@ -53,6 +53,7 @@ import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PngFiles;
+import simpview.compare.RandomValues;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
@@ -1591,8 +1592,14 @@ public final class CompareBatch {
             RubricRule[] rules = IntStream.rangeClosed(1, A1Layout.PANELS).mapToObj(k -> firstAssignmentRule(page, k))
                     .toArray(RubricRule[]::new);
             OtherPage other = others.ofFirstAssignment(page, cut.theirs(), rules);
+            // a page of the student's own random values, which no panel's own mistake explains
+            RandomValues random = other != null || Arrays.stream(hints).anyMatch(h -> h != null) ? null
+                    : RandomValues.find(firstAssignmentLabel(page), page, Assignment1.page(page), own.context().seed(),
+                            cut.ours(), cut.theirs(), A1Layout.PANEL, firstAssignmentRule(page, 1).tolerance());
             if (other != null) { // the page is another of the five: that says more than each panel's own hint
                 rows.replaceAll(row -> row.withHint(other));
+            } else if (random != null) {
+                rows.replaceAll(row -> row.withHint(random));
             }
         }
         return rows;

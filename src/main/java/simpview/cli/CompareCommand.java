@@ -35,6 +35,7 @@ import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PictureFormat;
 import simpview.compare.PngFiles;
+import simpview.compare.RandomValues;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.SystematicError;
@@ -504,8 +505,14 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                 shown.panelNames());
         // a page that fails as a whole and passes as another of the five: that one hint, of the page
         OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, firstAssignmentRules(panels.length));
+        // a page of the student's own random values, which no panel's own mistake explains
+        RandomValues random = passes || other != null || Arrays.stream(hints).anyMatch(h -> h != null) ? null
+                : RandomValues.find("A1 page " + page, page, shown, context.seed(), ourPanels, theirPanels,
+                        A1Layout.PANEL, tolerance);
         if (other != null) {
             out.println("hint: " + other.hint(A1Layout.PANEL));
+        } else if (random != null) {
+            out.println("hint: " + random.hint(A1Layout.PANEL));
         } else if (hints[0] instanceof WholePage whole) {
             out.println("hint: " + whole.hint(A1Layout.PANEL));
         } else {

@@ -9,9 +9,10 @@ import java.util.List;
  * ({@link SystematicError}), or on a page of several panels, another of
  * simpview's panels ({@link SwappedPanel}), or a part of simpview's whole
  * page turned ({@link WholePage}); or, when the picture fails, another of the assignment's pages
- * ({@link OtherPage}: the file named for the wrong page).
+ * ({@link OtherPage}: the file named for the wrong page), or a first-assignment page drawn from the student's
+ * own random numbers ({@link RandomValues}).
  */
-public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage, OtherPage {
+public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage, OtherPage, RandomValues {
 
     /** Briefly, to follow "looks": "upside down", "like simpview's panel 4 (antialiased)". */
     String brief();

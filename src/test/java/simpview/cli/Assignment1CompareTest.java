@@ -65,6 +65,61 @@ class Assignment1CompareTest {
         assertTrue(check.out().contains("next: a1-page1.png: " + compare + " ("), check.out());
     }
 
+    /**
+     * Pages 3 to 5 drawn from random numbers of one's own (here simpview's of another seed, as a student's
+     * renderer draws its own) fail, and are told why and how to draw simpview's; page 4 with simpview's triangles in
+     * other colours (each lit pixel's channels turned by 128) is told its colours are not simpview's. A page drawn
+     * from simpview's numbers with a mistake, or left empty, is not told so.
+     */
+    @Test
+    void aPageOfOnesOwnRandomNumbersIsToldToDrawSimpviews() throws Exception {
+        Path subs = Files.createDirectories(dir.resolve("own"));
+        for (int p = 3; p <= 5; p++) {
+            Path page = subs.resolve("a1-page" + p + ".png");
+            assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", String.valueOf(p), "--seed", "6",
+                    "--out", page.toString()).exitCode());
+            CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", String.valueOf(p));
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+            String what = p == 3 ? "lines" : "random triangles";
+            assertTrue(run.out().contains("hint: your " + what + " are not simpview's, which it draws at random from "
+                    + "seed 361: "), run.out());
+            assertTrue(run.out().contains("simpview render --assignment 1 --page " + p + " --seed 361 --primitives a1-page"
+                    + p + "-primitives.txt lists"), run.out());
+            CliRun same = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", String.valueOf(p), "--seed", "6");
+            assertEquals(ExitCode.OK, same.exitCode(), same.out());
+        }
+        CliRun check = CliRun.of("check", subs.toString(), "--assignment", "1", "--pages", "3-5");
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
+        assertEquals(3, check.out().lines().filter(l -> l.startsWith("hint: ")).count(), check.out());
+        assertTrue(check.out().contains("hint: a1-page3.png (A1 page 3 (seed 361)): your lines are not simpview's"),
+                check.out());
+
+        Path four = dir.resolve("a1-page4.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "4", "--out", four.toString()).exitCode());
+        BufferedImage recoloured = ImageIO.read(four.toFile());
+        BufferedImage empty = ImageIO.read(four.toFile());
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                int rgb = recoloured.getRGB(x, y) & 0xFFFFFF;
+                if (rgb != 0 && rgb != 0xFFFFFF) {
+                    recoloured.setRGB(x, y, rgb ^ 0x808080);
+                    empty.setRGB(x, y, 0);
+                }
+            }
+        }
+        Path colours = dir.resolve("colours.png");
+        ImageIO.write(recoloured, "png", colours.toFile());
+        CliRun other = CliRun.of("compare", colours.toString(), "--assignment", "1", "--page", "4");
+        assertTrue(other.out().contains("hint: your colours are not simpview's, which it draws at random from seed 361: "
+                + "your triangles of panels 1 and 2 fill simpview's pixels, but of the pixels both fill, 0.00 % at most "
+                + "have simpview's colour within 8/255."), other.out());
+        Path blank = dir.resolve("blank.png");
+        ImageIO.write(empty, "png", blank.toFile());
+        CliRun none = CliRun.of("compare", blank.toString(), "--assignment", "1", "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, none.exitCode(), none.out());
+        assertFalse(none.out().contains("which it draws at random"), none.out());
+    }
+
     @Test
     void ourOwnPageAgreesEverywhere() {
         Path page = dir.resolve("a1-page3.png");

@@ -1,0 +1,137 @@
+package simpview.compare;
+
+import java.util.Locale;
+import simpview.pages.A1Page;
+import simpview.pages.LineTestPage;
+import simpview.pages.PolygonTestPage;
+import simpview.surface.PageCanvas;
+
+/**
+ * A first-assignment page drawn from the student's own random numbers: page 3's lines, page 4's colours, the
+ * random triangles of pages 4 and 5. The handout asks each student to choose them; simpview draws its own from
+ * the seed, so such a picture cannot match and every panel fails with nothing wrong in the renderer. Told by
+ * the panels whose drawing does not depend on blending: on page 3, panels 1 to 3 (DDA, Bresenham,
+ * alternating) light pixels that simpview's hardly light ({@link #OTHER_LINES}); on pages 4 and 5, panel 4's
+ * random triangles cover other pixels ({@link #OTHER_TRIANGLES}); on page 4, panels 1 and 2 (the starburst
+ * and the mesh, whose shapes are fixed) fill simpview's pixels in other colours ({@link #OTHER_COLOURS}).
+ * A student who drew simpview's values (its {@code --primitives} listing) with a mistake of their own lights
+ * nearly the same pixels, in the same colours, and gets no such hint.
+ *
+ * @param page the page, "A1 page 3 (seed 361)"
+ * @param number the page's number, 1 to 5
+ * @param seed the seed simpview drew it with
+ * @param what what is not simpview's: "lines", "random triangles", "colours"
+ * @param evidence what was measured, in words
+ */
+public record RandomValues(String page, int number, long seed, String what, String evidence) implements PanelHint {
+
+    /** Of the pixels either of panels 1 to 3 lights, at most this share lit in both: other lines. */
+    static final double OTHER_LINES = 0.25;
+    /** Of the pixels either of panel 4 fills, at most this share filled in both: other triangles. */
+    static final double OTHER_TRIANGLES = 0.9;
+    /** Of the pixels both fill in panels 1 and 2, at most this share of simpview's colour: other colours. */
+    static final double OTHER_COLOURS = 0.5;
+
+    /**
+     * The hint for first-assignment page {@code number} ({@code shown}, drawn with {@code seed}; ours and theirs
+     * its four n x n panels, row by row from the top), or null when its values look like simpview's, or it draws
+     * none at random.
+     */
+    public static RandomValues find(String page, int number, A1Page shown, long seed, int[][] ours, int[][] theirs,
+            int n, int tolerance) {
+        if (!shown.usesSeed() || ours.length != 4 || theirs.length != 4) {
+            return null;
+        }
+        if (shown instanceof LineTestPage) {
+            double most = 0;
+            for (int k = 0; k < 3; k++) {
+                if (!drawsAsMuch(ours[k], theirs[k])) {
+                    return null; // a panel left (nearly) empty is a mistake of its own
+                }
+                most = Math.max(most, bothOfEither(ours[k], theirs[k], n));
+            }
+            return most > OTHER_LINES ? null : new RandomValues(page, number, seed, "lines", "of the pixels either "
+                    + "picture lights in panels 1 to 3, both light " + Percent.of(most) + " at most");
+        }
+        double triangles = bothOfEither(ours[3], theirs[3], n);
+        if (triangles <= OTHER_TRIANGLES && drawsAsMuch(ours[3], theirs[3])) {
+            return new RandomValues(page, number, seed, "random triangles", "of the pixels either picture fills in "
+                    + "panel 4, both fill " + Percent.of(triangles));
+        }
+        if (shown instanceof PolygonTestPage polygons && !polygons.ghost()) {
+            double shapes = Math.min(bothOfEither(ours[0], theirs[0], n), bothOfEither(ours[1], theirs[1], n));
+            double colours = Math.max(sameColour(ours[0], theirs[0], tolerance), sameColour(ours[1], theirs[1], tolerance));
+            if (shapes > OTHER_TRIANGLES && colours <= OTHER_COLOURS) {
+                return new RandomValues(page, number, seed, "colours", "your triangles of panels 1 and 2 fill "
+                        + "simpview's pixels, but of the pixels both fill, " + Percent.of(colours) + " at most have "
+                        + "simpview's colour within " + tolerance + "/255");
+            }
+        }
+        return null;
+    }
+
+    /** Whether theirs lights at least half as many pixels as ours: a panel drawn, not left black. */
+    private static boolean drawsAsMuch(int[] ours, int[] theirs) {
+        int a = 0;
+        int b = 0;
+        for (int i = 0; i < ours.length; i++) {
+            a += lit(ours[i]) ? 1 : 0;
+            b += lit(theirs[i]) ? 1 : 0;
+        }
+        return 2L * b >= a;
+    }
+
+    /** Of the pixels lit (not the panel's black) in ours or theirs, the share lit in both; 1 when neither lights any. */
+    private static double bothOfEither(int[] ours, int[] theirs, int n) {
+        int either = 0;
+        int both = 0;
+        for (int i = 0; i < n * n; i++) {
+            boolean a = lit(ours[i]);
+            boolean b = lit(theirs[i]);
+            either += a || b ? 1 : 0;
+            both += a && b ? 1 : 0;
+        }
+        return either == 0 ? 1 : (double) both / either;
+    }
+
+    /** Of the pixels lit in both, the share within the tolerance in every channel; 1 when none is. */
+    private static double sameColour(int[] ours, int[] theirs, int tolerance) {
+        int both = 0;
+        int same = 0;
+        for (int i = 0; i < ours.length; i++) {
+            if (lit(ours[i]) && lit(theirs[i])) {
+                both++;
+                same += Rasters.distance(ours[i], theirs[i]) <= tolerance ? 1 : 0;
+            }
+        }
+        return both == 0 ? 1 : (double) same / both;
+    }
+
+    private static boolean lit(int rgb) {
+        return (rgb & 0xFFFFFF) != (PageCanvas.BACKGROUND & 0xFFFFFF);
+    }
+
+    @Override
+    public String brief() {
+        return "drawn from other random numbers than simpview's seed " + seed;
+    }
+
+    @Override
+    public String hint(int n) {
+        return String.format(Locale.ROOT, "your %s are not simpview's, which it draws at random from seed %d: %s. A "
+                + "page drawn from random numbers of your own cannot match; to compare your renderer, draw simpview's "
+                + "lines and triangles with their colours, which simpview render --assignment 1 --page %d --seed %d "
+                + "--primitives a1-page%d-primitives.txt lists (panel coordinates, y up), and compare again.",
+                what, seed, evidence, number, seed, number);
+    }
+
+    @Override
+    public boolean wholePage() {
+        return true;
+    }
+
+    @Override
+    public double shareThere() {
+        return Double.NaN;
+    }
+}
