@@ -45,6 +45,7 @@ import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
+import simpview.compare.LineEnds;
 import simpview.compare.OnePerPage;
 import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
@@ -61,6 +62,8 @@ import simpview.compare.SubmissionNames;
 import simpview.compare.Wanted;
 import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
+import simpview.pages.A1Lines;
+import simpview.pages.A1Page;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
@@ -1561,6 +1564,8 @@ public final class CompareBatch {
         // the hints by panel 1's tolerance: a page turned whole is one hint for its four panels
         PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL, PageCanvas.SIZE,
                 firstAssignmentRule(page, 1).tolerance(), Assignment1.page(page).panelNames());
+        lineEnds(hints, Assignment1.page(page), own.context().seed(), cut.ours(), cut.theirs(),
+                firstAssignmentRule(page, 1).tolerance());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);
             Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
@@ -1603,6 +1608,23 @@ public final class CompareBatch {
             }
         }
         return rows;
+    }
+
+    /**
+     * On a page of lines, each of the DDA, Bresenham and alternating panels that no other hint explains and whose
+     * differing pixels are mostly its lines' ends or one past them gets that hint ({@link LineEnds}), passing or
+     * not: a line a pixel short passes, and the student would not learn of it.
+     */
+    static void lineEnds(PanelHint[] hints, A1Page shown, long seed, int[][] ours, int[][] theirs, int tolerance) {
+        if (!(shown instanceof LineTestPage page) || hints.length != A1Layout.PANELS) {
+            return;
+        }
+        A1Lines lines = page.lines(seed);
+        for (int k = 0; k < 3; k++) {
+            if (hints[k] == null) {
+                hints[k] = LineEnds.find(ours[k], theirs[k], A1Layout.PANEL, tolerance, lines);
+            }
+        }
     }
 
     /** The file name of a path relative to the submissions folder. */

@@ -120,6 +120,40 @@ class Assignment1CompareTest {
         assertFalse(none.out().contains("which it draws at random"), none.out());
     }
 
+    /**
+     * Lines a pixel short or long pass (a hundred pixels of 90,000) and are said. Page 2's lines, in the panel's
+     * frame y up (y = 299 - the handout's): (20, 219 - p) to (150, 149 - p) and (160 + p, 29) to (240 + p, 259),
+     * p = 0..50. In panel 1 (DDA) each line's second end is left black: (150, 149 - p) and (240 + p, 259), each
+     * on no other line. In panel 2 (Bresenham) the first set's lines run one pixel on: at x = 151 the line is at
+     * y = 149 - p - 70/130, which rounds to 148 - p, black in simpview's panel.
+     */
+    @Test
+    void linesAPixelShortOrLongAreSaid() throws Exception {
+        Path subs = Files.createDirectories(dir.resolve("ends"));
+        Path page = subs.resolve("a1-page2.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "2", "--out", page.toString()).exitCode());
+        BufferedImage mine = ImageIO.read(page.toFile());
+        for (int p = 0; p <= 50; p++) {
+            mine.setRGB(50 + 150, 349 - (149 - p), 0); // panel 1: image row of panel y is 349 - y
+            mine.setRGB(50 + 240 + p, 349 - 259, 0);
+            mine.setRGB(400 + 151, 349 - (148 - p), 0xFFFFFF); // panel 2
+        }
+        ImageIO.write(mine, "png", page.toFile());
+        CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "2");
+        assertEquals(ExitCode.OK, run.exitCode(), run.out());
+        assertTrue(run.out().contains("hint: panel 1: your lines stop a pixel short: 102 of the 102 pixels that differ "
+                + "are ends of simpview's lines that yours leaves black (line 1's end (150, 149))."), run.out());
+        assertTrue(run.out().contains("hint: panel 2: your lines run a pixel long: 51 of the 51 pixels that differ are "
+                + "one step past the end of a line of simpview's, lit in yours and black in simpview's ((151, 148) past "
+                + "line 1's end (150, 149))."), run.out());
+        assertFalse(run.out().contains("hint: panel 3"), run.out());
+        CliRun check = CliRun.of("check", subs.toString(), "--assignment", "1", "--pages", "2");
+        assertTrue(check.out().contains("hint: a1-page2.png (A1 page 2 panel 1 (DDA)): your lines stop a pixel short"),
+                check.out());
+        assertTrue(check.err().contains("panel 1 looks to stop a pixel short of its lines' ends; "
+                + "panel 2 looks to run a pixel past its lines' ends"), check.err());
+    }
+
     @Test
     void ourOwnPageAgreesEverywhere() {
         Path page = dir.resolve("a1-page3.png");
