@@ -7,8 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.Point;
 import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Optional;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Marks;
@@ -30,6 +32,35 @@ import simpview.window.render.View;
 public class Assignment1WindowTest extends WindowTestCase {
 
     private static final long SEED = 361;
+
+    /**
+     * A picture of the first assignment's page dropped on the window is not taken for one 650x650 panel with a
+     * pixel of slack (what the window compares on the eight pages): the status says so and gives the command that
+     * compares it panel by panel, with the shown page's number, seed and rule. Dropped on the eight pages, it is
+     * said to be a first-assignment page.
+     */
+    @Test
+    void aFirstAssignmentPictureDroppedIsSentToCompareAssignment1() throws Exception {
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        driver.focusByClicking(new View.OfPage(2));
+        driver.press(KeyEvent.VK_1);
+        driver.awaitShown(new View.OfPage(1));
+        Path mine = dir.resolve("a1-page3.png");
+        ImageIO.write(Assignment1.render(3, PageContext.defaults().withSeed(SEED)), "png", mine.toFile());
+        assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the dropped picture");
+        String onEight = mine.getFileName() + " is a page of the first assignment (four 300x300 panels), not a page of "
+                + "one 650x650 panel: its panels are compared one by one, without slack, by simpview compare " + mine
+                + " --assignment 1 --page N";
+        driver.awaitEdt(() -> driver.window().status().text().equals(onEight), "the status says where it is compared");
+        driver.press(KeyEvent.VK_A);
+        driver.awaitShown(new View.OfAssignment1Page(1));
+        driver.press(KeyEvent.VK_3);
+        driver.awaitShown(new View.OfAssignment1Page(3));
+        assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the dropped picture");
+        String onA1 = onEight.replace(" --page N", " --page 3 --seed 361");
+        driver.awaitEdt(() -> driver.window().status().text().equals(onA1), "the status names the page and its seed");
+        assertTrue(driver.onEdt(() -> driver.window().comparison().comparison()) == null, "nothing is compared");
+    }
 
     @Test
     void aSwitchesAssignmentAndTheKeysStepWithinIt() throws Exception {

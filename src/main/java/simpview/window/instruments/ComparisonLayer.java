@@ -21,11 +21,15 @@ import simpview.compare.ComparisonReport;
 import simpview.compare.DiffRegion;
 import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
+import simpview.compare.PanelGridComparison;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Shares;
 import simpview.compare.SystematicError;
 import simpview.compare.WorstPixel;
+import simpview.pages.A1Layout;
+import simpview.pages.A1Rule;
+import simpview.pages.Assignment1;
 import simpview.surface.PageCanvas;
 
 /**
@@ -76,6 +80,13 @@ public final class ComparisonLayer {
             say.accept("Wait for the page to be drawn, then drop the picture again.");
             return;
         }
+        boolean firstAssignment = PanelGridComparison.holds(file, firstAssignmentPanels());
+        if (shown.view() instanceof View.OfAssignment1Page || firstAssignment) {
+            // compared here, a page of four panels would be taken for one 650x650 panel with a pixel of slack: an
+            // answer that is not compare's, which judges each panel without slack
+            say.accept(firstAssignmentElsewhere(file, firstAssignment));
+            return;
+        }
         try {
             theirs.put(shown.view(), Picture.read(file));
         } catch (CompareException e) {
@@ -84,6 +95,37 @@ public final class ComparisonLayer {
         }
         showing = Showing.OURS;
         viewShown(shown);
+    }
+
+    /**
+     * Why a first assignment's picture (or any picture, on its pages) is not compared in the window, and the
+     * command that compares it panel by panel, as check does: the shown page's number, seed and rule when the
+     * first assignment's page is shown, else "N".
+     */
+    private String firstAssignmentElsewhere(Path file, boolean firstAssignment) {
+        String path = file.toString();
+        // as a shell takes it: a path of plain characters as it is, any other in single quotes
+        String name = path.matches("[A-Za-z0-9_./,:=+-]+") ? path : "'" + path.replace("'", "'\\''") + "'";
+        String page;
+        if (shown.view() instanceof View.OfAssignment1Page a1) {
+            page = a1.number() + (Assignment1.page(a1.number()).usesSeed() ? " --seed " + shown.seed() : "")
+                    + (shown.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + shown.a1Rule().key());
+        } else {
+            page = "N";
+        }
+        String what = firstAssignment ? file.getFileName() + " is a page of the first assignment (four 300x300 "
+                + "panels), not a page of one 650x650 panel" : "The first assignment's pages are not compared here";
+        return what + ": its panels are compared one by one, without slack, by simpview compare " + name
+                + " --assignment 1 --page " + page;
+    }
+
+    /** The first assignment's four panels on its page. */
+    private static PanelGridComparison.Panel[] firstAssignmentPanels() {
+        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
+        for (int k = 1; k <= A1Layout.PANELS; k++) {
+            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
+        }
+        return panels;
     }
 
     /** The window calls this when a new picture is on screen. */
