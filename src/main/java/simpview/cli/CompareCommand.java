@@ -94,7 +94,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     @Parameters(arity = "0..1", paramLabel = "IMAGE", description = "the picture to compare (PNG, JPEG, GIF or BMP)")
     private Path image;
 
-    @Option(names = "--page", paramLabel = "N", description = "compare with page N, 1 to 8")
+    @Option(names = "--page", paramLabel = "N", description = "compare with page N, 1 to 8 (with --assignment 1: 1 to 5)")
     private Integer page;
 
     @Option(names = "--assignment", paramLabel = "A",
