@@ -35,6 +35,7 @@ import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import simpview.cli.CompareOptions.PageRange;
+import simpview.compare.AntialiasWeighting;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
 import simpview.compare.CompareException;
@@ -1613,7 +1614,8 @@ public final class CompareBatch {
     /**
      * On a page of lines, each of the DDA, Bresenham and alternating panels that no other hint explains and whose
      * differing pixels are mostly its lines' ends or one past them gets that hint ({@link LineEnds}), passing or
-     * not: a line a pixel short passes, and the student would not learn of it.
+     * not: a line a pixel short passes, and the student would not learn of it. The antialiased panel of white
+     * lines gets its levels on and beside a line told when they are not simpview's ({@link AntialiasWeighting}).
      */
     static void lineEnds(PanelHint[] hints, A1Page shown, long seed, int[][] ours, int[][] theirs, int tolerance) {
         if (!(shown instanceof LineTestPage page) || hints.length != A1Layout.PANELS) {
@@ -1624,6 +1626,9 @@ public final class CompareBatch {
             if (hints[k] == null) {
                 hints[k] = LineEnds.find(ours[k], theirs[k], A1Layout.PANEL, tolerance, lines);
             }
+        }
+        if (hints[3] == null) {
+            hints[3] = AntialiasWeighting.find(ours[3], theirs[3], A1Layout.PANEL, tolerance, lines);
         }
     }
 

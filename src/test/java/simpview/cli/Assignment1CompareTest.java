@@ -10,6 +10,8 @@ import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -153,6 +155,59 @@ class Assignment1CompareTest {
                 check.out());
         assertTrue(check.err().contains("panel 1 looks to stop a pixel short of its lines' ends; "
                 + "panel 2 looks to run a pixel past its lines' ends"), check.err());
+    }
+
+    /**
+     * An antialiased panel blended in linear light is told its levels on and beside a line and what they look
+     * like. SPEC Part 3: a pixel is a disc of radius r = sqrt(2)/2, the line a slab of width 1; on the line the
+     * disc loses two caps at distance 1/2, cap(h) = r^2 acos(h / r) - h sqrt(r^2 - h^2), so its coverage is
+     * 1 - 2 cap(1/2) / (pi r^2); one pixel beside it, cap(1/2) / (pi r^2). The picture is simpview's page 1 with
+     * panel 4's every level v made sRGB's encoding of v / 255, as a white line blended over black in linear light
+     * gives.
+     */
+    @Test
+    void anAntialiasedPanelOfAnotherWeightingIsToldItsLevels() throws Exception {
+        double r = Math.sqrt(2) / 2;
+        double cap = r * r * Math.acos(0.5 / r) - 0.5 * Math.sqrt(r * r - 0.25);
+        int on = (int) Math.floor(255 * (1 - 2 * cap / (Math.PI * r * r)) + 0.5);
+        int beside = (int) Math.floor(255 * (cap / (Math.PI * r * r)) + 0.5);
+        assertEquals(209, on);
+        assertEquals(23, beside);
+        Path page = dir.resolve("a1-page1.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "1", "--out", page.toString()).exitCode());
+        CliRun own = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", "1");
+        assertFalse(own.out().contains("hint:"), own.out());
+        BufferedImage mine = ImageIO.read(page.toFile());
+        for (int y = 400; y < 700; y++) { // panel 4: image rows 400 to 699, columns 400 to 699
+            for (int x = 400; x < 700; x++) {
+                mine.setRGB(x, y, grey(srgb((mine.getRGB(x, y) & 0xFF) / 255.0)));
+            }
+        }
+        Path gamma = dir.resolve("gamma.png");
+        ImageIO.write(mine, "png", gamma.toFile());
+        CliRun run = CliRun.of("compare", gamma.toString(), "--assignment", "1", "--page", "1");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        Matcher hint = Pattern.compile("hint: panel 4: where one line alone reaches a pixel, your antialiased levels are "
+                + "([0-9]+) on the line and ([0-9]+) one pixel beside it, simpview's ([0-9]+) and ([0-9]+) \\(")
+                .matcher(run.out());
+        assertTrue(hint.find(), run.out());
+        // medians of pixels within 0.1 of distance 0 and 1: simpview's near SPEC's levels there, the picture's their sRGB
+        int oursOn = Integer.parseInt(hint.group(3));
+        int oursBeside = Integer.parseInt(hint.group(4));
+        assertTrue(Math.abs(oursOn - on) <= 3 && Math.abs(oursBeside - beside) <= 3, hint.group());
+        assertEquals(srgb(oursOn / 255.0), Integer.parseInt(hint.group(1)), hint.group());
+        assertEquals(srgb(oursBeside / 255.0), Integer.parseInt(hint.group(2)), hint.group());
+        assertTrue(run.out().contains("; yours look like the coverage put through sRGB's gamma"), run.out());
+    }
+
+    /** sRGB's encoding of a linear level c, as a byte. */
+    private static int srgb(double c) {
+        double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+        return (int) Math.floor(255 * encoded + 0.5);
+    }
+
+    private static int grey(int level) {
+        return level << 16 | level << 8 | level;
     }
 
     @Test
