@@ -10,7 +10,7 @@ import simpview.raster.AntialiasedLineRenderer;
  * A first-assignment antialiased panel of white lines whose levels follow another weighting than the handout's:
  * measured where one line alone reaches a pixel, on the line (distance 0 from it: simpview's coverage 0.818,
  * level 209) and one pixel beside it (distance 1: 0.091, level 23). The picture's levels there are told beside
- * simpview's, and what they look like: the coverage put through sRGB's gamma (a blend in linear light, 235 and
+ * simpview's, and what they look like: the coverage put through sRGB's gamma (a blend in linear light, about 234 and
  * 85), or a full pixel on the line (a disc of radius 1/2, or a weight of 1 - d: 255 and 0).
  *
  * @param theirsOn the picture's median level on the line, 0 to 255
