@@ -141,7 +141,7 @@ class CompareNextStepTest {
     }
 
     /**
-     * A page of the first assignment that fails is told, for its failing panel, the {@code inspect --assignment 1}
+     * A page of the first assignment that fails is told, in its failing panel, the {@code inspect --assignment 1}
      * command of the pixel that differs most, in page coordinates; it runs as printed and looks at that pixel.
      */
     @Test
@@ -151,10 +151,9 @@ class CompareNextStepTest {
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
         String next = line(run.out(), "next:    ");
         assertTrue(next.startsWith("next:    simpview inspect --assignment 1 --page 2 --seed 7 --at "), next);
-        assertTrue(next.endsWith(" --explain (panel 1, DDA: how simpview made the pixel that differs most in its "
-                + "largest patch, term by term)"), next);
+        assertTrue(next.endsWith(" (the page's pixel: the lines that wrote it, or wrote beside it)"), next);
         assertEquals(1, run.out().lines().filter(l -> l.startsWith("next:")).count(), "one panel fails: " + run.out());
-        String command = next.substring("next:    ".length(), next.indexOf(" (panel"));
+        String command = next.substring("next:    ".length(), next.indexOf(" (the page's pixel"));
         String[] at = command.split(" --at ")[1].split(" ")[0].split(",");
         int x = Integer.parseInt(at[0]);
         int y = Integer.parseInt(at[1]);
@@ -178,8 +177,8 @@ class CompareNextStepTest {
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());
         String command = "simpview compare " + folder.resolve("a1-page2.png") + " --assignment 1 --page 2 --min 99.5"
                 + " --diff a1-page2-diff.png";
-        String said = "\nnext: a1-page2.png: " + command + " (each failing panel's pixel to look at first, and how "
-                + "simpview made it)\n";
+        String said = "\nnext: a1-page2.png: " + command + " (the pixel to look at first, in the panel that fails most, "
+                + "and how simpview made it)\n";
         assertTrue(run.out().contains(said), run.out());
         assertEquals(1, run.out().lines().filter(l -> l.startsWith("next:")).count(), run.out());
         List<String> words = ArgumentLine.split(command.replace("a1-page2-diff.png", dir.resolve("d.png").toString()));
@@ -189,6 +188,6 @@ class CompareNextStepTest {
 
         String window = CheckCommand.checkFolder(folder, PageContext.defaults());
         assertTrue(window.contains("\nnext: a1-page2.png: simpview compare " + folder.resolve("a1-page2.png")
-                + " --assignment 1 --page 2 --diff a1-page2-diff.png (each failing panel's"), window);
+                + " --assignment 1 --page 2 --diff a1-page2-diff.png (the pixel to look at first, in the panel"), window);
     }
 }
