@@ -1,5 +1,7 @@
 package simpview.scene.obj;
 
+import java.math.BigDecimal;
+
 /**
  * Two shapes of a face of four vertices or more that SPEC draws otherwise
  * than its outline suggests, for the reader's warnings: its first three
@@ -29,56 +31,84 @@ final class FaceShape {
     }
 
     /**
-     * Whether the face of vertices refs[0] to refs[n - 1] has no area: they all lie on one line, or all coincide.
-     * Each is held against the line from the first to the one farthest from it, by the angle they make at the
-     * first, as {@link #firstThreeInLine} holds three (the coordinates near the end of the doubles too).
+     * Whether the face of vertices refs[0] to refs[n - 1] has no area: they all lie on one line, or all coincide,
+     * exactly, as the doubles given are. No tolerance: a sliver however thin against its length has an area, and
+     * seen close enough it fills pixels. Each vertex is held against the line from the first to the first other
+     * one ({@link #inLine}). A vertex or a difference of two beyond the doubles names nothing: such a face is drawn
+     * or refused as such.
      */
     static boolean noArea(double[] p, int[] refs, int n) {
         int a = 3 * refs[0];
-        int far = -1;
-        double farthest = 0;
+        int other = -1;
         for (int k = 1; k < n; k++) {
             int b = 3 * refs[k];
-            // the largest of the three differences: no square to overflow
-            double d = Math.max(Math.abs(p[b] - p[a]), Math.max(Math.abs(p[b + 1] - p[a + 1]),
-                    Math.abs(p[b + 2] - p[a + 2])));
-            if (!Double.isFinite(d)) {
-                return false; // beyond the doubles: drawn or refused as such, not named here
+            boolean apart = false;
+            for (int i = 0; i < 3; i++) {
+                double d = p[b + i] - p[a + i];
+                if (!Double.isFinite(d)) {
+                    return false;
+                }
+                apart |= d != 0;
             }
-            if (d > farthest) {
-                farthest = d;
-                far = refs[k];
+            if (apart && other < 0) {
+                other = b;
             }
         }
-        if (far < 0) {
+        if (other < 0) {
             return true; // every vertex where the first is
         }
-        // each edge from the first vertex divided by its largest difference, so that nothing overflows and no
-        // square of a face small against its length underflows: the sine of the angle at the first vertex is
-        // measured whatever the sizes
-        int b = 3 * far;
-        double ux = (p[b] - p[a]) / farthest;
-        double uy = (p[b + 1] - p[a + 1]) / farthest;
-        double uz = (p[b + 2] - p[a + 2]) / farthest;
-        double u = ux * ux + uy * uy + uz * uz;
         for (int k = 1; k < n; k++) {
-            int c = 3 * refs[k];
-            double largest = Math.max(Math.abs(p[c] - p[a]), Math.max(Math.abs(p[c + 1] - p[a + 1]),
-                    Math.abs(p[c + 2] - p[a + 2])));
-            if (largest == 0) {
-                continue; // where the first vertex is
-            }
-            double vx = (p[c] - p[a]) / largest;
-            double vy = (p[c + 1] - p[a + 1]) / largest;
-            double vz = (p[c + 2] - p[a + 2]) / largest;
-            double cx = uy * vz - uz * vy;
-            double cy = uz * vx - ux * vz;
-            double cz = ux * vy - uy * vx;
-            if (cx * cx + cy * cy + cz * cz > IN_LINE * IN_LINE * u * (vx * vx + vy * vy + vz * vz)) {
+            if (!inLine(p, a, other, 3 * refs[k])) {
                 return false;
             }
         }
         return true;
+    }
+
+    /**
+     * How much a cross product's component computed in doubles may differ from the exact one, against the sum of
+     * its two products' sizes: a few roundings of the differences, the products and their difference, with room.
+     */
+    private static final double ROUNDING = 1e-14;
+
+    /** Below this, a product of doubles may have lost its relative precision to underflow. */
+    private static final double NORMAL = 1e-280;
+
+    /**
+     * Whether the points at p[a], p[b], p[c] (each three doubles) lie on one line, exactly: (b - a) x (c - a) is
+     * zero. Computed in doubles where that tells for certain that it is not; else exactly, in decimals.
+     */
+    private static boolean inLine(double[] p, int a, int b, int c) {
+        double ux = p[b] - p[a];
+        double uy = p[b + 1] - p[a + 1];
+        double uz = p[b + 2] - p[a + 2];
+        double vx = p[c] - p[a];
+        double vy = p[c + 1] - p[a + 1];
+        double vz = p[c + 2] - p[a + 2];
+        if (surelyNotZero(uy * vz, uz * vy) || surelyNotZero(uz * vx, ux * vz) || surelyNotZero(ux * vy, uy * vx)) {
+            return false;
+        }
+        BigDecimal[] u = new BigDecimal[3];
+        BigDecimal[] v = new BigDecimal[3];
+        for (int i = 0; i < 3; i++) {
+            BigDecimal first = new BigDecimal(p[a + i]);
+            u[i] = new BigDecimal(p[b + i]).subtract(first);
+            v[i] = new BigDecimal(p[c + i]).subtract(first);
+        }
+        for (int i = 0; i < 3; i++) {
+            int j = (i + 1) % 3;
+            int k = (i + 2) % 3;
+            if (u[j].multiply(v[k]).compareTo(u[k].multiply(v[j])) != 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether {@code s - t}, both products of rounded differences, is surely not zero exactly. */
+    private static boolean surelyNotZero(double s, double t) {
+        double difference = Math.abs(s - t);
+        return difference > NORMAL && difference > ROUNDING * (Math.abs(s) + Math.abs(t));
     }
 
     /** Whether vertices refs[0], refs[1], refs[2] lie on one line (or two of them coincide). */

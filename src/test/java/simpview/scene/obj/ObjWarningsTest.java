@@ -82,6 +82,25 @@ class ObjWarningsTest {
     }
 
     /**
+     * The test of no area is exact: a sliver thin against its length has an area (seen close, it fills pixels), at
+     * any size of coordinates, and is never named; vertices exactly on one line, large integers or tiny numbers,
+     * are.
+     */
+    @Test
+    void aThinSliverIsNoFaceOfNoArea() throws SceneException {
+        assertEquals(List.of(), warnings("v 0 0 0\nv 1000000 0 0\nv 2000000 0.001 0\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings("v 0 0 0\nv 1000000000 0 0\nv 2000000000 1 0\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings("v 0 0 0\nv 2 0 0\nv 1 0.0000000001 0\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings("v 0 0 0\nv 1e-300 0 0\nv 2e-300 1e-310 0\nf 1 2 3\n"));
+        assertEquals(List.of(), warnings("v 1e200 0 0\nv 2e200 1e200 0\nv 3e200 2e200 1\nf 1 2 3\n"));
+        String noArea = "model.obj:4: this face has no area (its vertices lie on one line, or coincide), so, as SPEC"
+                + " fills a triangle of no area, it fills no pixel (in wire style only its edges show, along that"
+                + " line): remove it, or check which v lines it names";
+        assertEquals(List.of(noArea), warnings("v 1 2 3\nv 4 6 8\nv 1000000003 1333333338 1666666673\nf 1 2 3\n"));
+        assertEquals(List.of(noArea), warnings("v 0 0 0\nv 1e-300 1e-300 0\nv 3e-300 3e-300 0\nf 1 2 3\n"));
+    }
+
+    /**
      * A face that uses vn 0 0 0 is lit by the ambient light alone where it is used: one warning names the first
      * such face, the normal's number, and counts the faces; a face that names the normal only through other faces,
      * or a tiny normal, is not named.
