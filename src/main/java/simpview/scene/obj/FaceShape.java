@@ -40,6 +40,7 @@ final class FaceShape {
     static boolean noArea(double[] p, int[] refs, int n) {
         int a = 3 * refs[0];
         int other = -1;
+        int otherAt = n;
         for (int k = 1; k < n; k++) {
             int b = 3 * refs[k];
             boolean apart = false;
@@ -52,12 +53,14 @@ final class FaceShape {
             }
             if (apart && other < 0) {
                 other = b;
+                otherAt = k;
             }
         }
         if (other < 0) {
             return true; // every vertex where the first is
         }
-        for (int k = 1; k < n; k++) {
+        // those before it are where the first vertex is, on any line through it
+        for (int k = otherAt + 1; k < n; k++) {
             if (!inLine(p, a, other, 3 * refs[k])) {
                 return false;
             }
