@@ -187,10 +187,10 @@ final class ObjParser {
         }
         if (zeroNormalFaces > 0) {
             warnings.add(file().getFileName() + ":" + firstZeroNormalFace + ": this face uses a normal of zero length "
-                    + "(vn 0 0 0, the file's vn line number " + firstZeroNormal + "), which SPEC cannot make unit "
-                    + "length, and a zero normal gives only the ambient term, so where it is used the face is lit by "
-                    + "the ambient light alone: give that vn a direction, or leave it out of the face (its face normal "
-                    + "is then used)" + more(zeroNormalFaces));
+                    + "(vn 0 0 0, normal " + firstZeroNormal + " as f lines number the vn lines), which SPEC cannot "
+                    + "make unit length, and a zero normal gives only the ambient term, so where it is used the face "
+                    + "is lit by the ambient light alone: give that vn a direction, or leave it out of the face (its "
+                    + "face normal is then used)" + more(zeroNormalFaces));
         }
         if (inLineStarts > 0) {
             warnings.add(file().getFileName() + ":" + firstInLineStart + ": this face's first three vertices lie on one "

@@ -108,8 +108,8 @@ class ObjWarningsTest {
     @Test
     void aFaceUsingANormalOfZeroLengthIsNamedOnce() throws SceneException {
         String model = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 -0 0\nvn 0 0 1e-30\n";
-        assertEquals(List.of("model.obj:8: this face uses a normal of zero length (vn 0 0 0, the file's vn line number"
-                + " 2), which SPEC cannot make unit length, and a zero normal gives only the ambient term, so where it is"
+        assertEquals(List.of("model.obj:8: this face uses a normal of zero length (vn 0 0 0, normal 2 as f lines number"
+                + " the vn lines), which SPEC cannot make unit length, and a zero normal gives only the ambient term, so where it is"
                 + " used the face is lit by the ambient light alone: give that vn a direction, or leave it out of the face"
                 + " (its face normal is then used) (and 1 more face like it)"),
                 warnings(model + "f 1//1 2//1 3//1\nf 1//1 2//2 3//1\nf 1//3 2//3 3//3\nf 1/1/2 2 3\n"));
