@@ -1,6 +1,8 @@
 package simpview.compare;
 
+import java.util.HashMap;
 import java.util.Locale;
+import java.util.Map;
 import simpview.pages.A1Page;
 import simpview.pages.LineTestPage;
 import simpview.pages.PolygonTestPage;
@@ -15,7 +17,8 @@ import simpview.surface.PageCanvas;
  * random triangles cover other pixels ({@link #OTHER_TRIANGLES}); on page 4, panels 1 and 2 (the starburst
  * and the mesh, whose shapes are fixed) fill simpview's pixels in other colours ({@link #OTHER_COLOURS}).
  * A student who drew simpview's values (its {@code --primitives} listing) with a mistake of their own lights
- * nearly the same pixels, in the same colours, and gets no such hint.
+ * nearly the same pixels, in the same colours, and gets no such hint; nor does one whose colours are simpview's
+ * turned one way (halved, put through a gamma), which keeps their order ({@link #orderKept}).
  *
  * @param page the page, "A1 page 3 (seed 361)"
  * @param number the page's number, 1 to 5
@@ -31,6 +34,10 @@ public record RandomValues(String page, int number, long seed, String what, Stri
     static final double OTHER_TRIANGLES = 0.9;
     /** Of the pixels both fill in panels 1 and 2, at most this share of simpview's colour: other colours. */
     static final double OTHER_COLOURS = 0.5;
+    /** Of the pairs of simpview's colours {@link #orderKept} compares, at most this share in the other order. */
+    static final double ORDER_BROKEN = 0.05;
+    /** The most of simpview's colours {@link #orderKept} compares. */
+    static final int MOST_COLOURS = 1024;
 
     /**
      * The hint for first-assignment page {@code number} ({@code shown}, drawn with {@code seed}; ours and theirs
@@ -61,13 +68,76 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         if (shown instanceof PolygonTestPage polygons && !polygons.ghost()) {
             double shapes = Math.min(bothOfEither(ours[0], theirs[0], n), bothOfEither(ours[1], theirs[1], n));
             double colours = Math.max(sameColour(ours[0], theirs[0], tolerance), sameColour(ours[1], theirs[1], tolerance));
-            if (shapes > OTHER_TRIANGLES && colours <= OTHER_COLOURS) {
+            if (shapes > OTHER_TRIANGLES && colours <= OTHER_COLOURS
+                    && !orderKept(new int[][] {ours[0], ours[1]}, new int[][] {theirs[0], theirs[1]}, tolerance)) {
                 return new RandomValues(page, number, seed, "colours", "your triangles of panels 1 and 2 fill "
                         + "simpview's pixels, but of the pixels both fill, " + Percent.of(colours) + " at most have "
                         + "simpview's colour within " + tolerance + "/255");
             }
         }
         return null;
+    }
+
+    /**
+     * Whether the colours of the pixels lit in both follow simpview's channel by channel, in the same order: of
+     * each two of simpview's colours whose channel differs by more than the tolerance, the two colours drawn in
+     * their place (the mean over the pixels of each) differ the other way by more than it in at most
+     * {@value #ORDER_BROKEN} of them. A renderer that turns every colour one way (halves it, puts it through a
+     * gamma, floors it on another scale) keeps the order; its own random colours break it about every second
+     * time. Simpview's panels hold a colour per triangle, a few hundred at most; beyond {@value #MOST_COLOURS}
+     * the rest are left out.
+     */
+    static boolean orderKept(int[][] ours, int[][] theirs, int tolerance) {
+        Map<Integer, long[]> drawn = new HashMap<>();
+        for (int k = 0; k < ours.length; k++) {
+            for (int i = 0; i < ours[k].length; i++) {
+                if (!lit(ours[k][i]) || !lit(theirs[k][i])) {
+                    continue;
+                }
+                long[] sum = drawn.get(ours[k][i] & 0xFFFFFF);
+                if (sum == null) {
+                    if (drawn.size() == MOST_COLOURS) {
+                        continue;
+                    }
+                    sum = new long[4];
+                    drawn.put(ours[k][i] & 0xFFFFFF, sum);
+                }
+                int t = theirs[k][i];
+                sum[0] += t >> 16 & 0xFF;
+                sum[1] += t >> 8 & 0xFF;
+                sum[2] += t & 0xFF;
+                sum[3]++;
+            }
+        }
+        int count = drawn.size();
+        int[] simpviews = new int[count];
+        double[][] means = new double[count][3];
+        int at = 0;
+        for (Map.Entry<Integer, long[]> e : drawn.entrySet()) {
+            simpviews[at] = e.getKey();
+            long[] sum = e.getValue();
+            for (int c = 0; c < 3; c++) {
+                means[at][c] = (double) sum[c] / sum[3];
+            }
+            at++;
+        }
+        long compared = 0;
+        long broken = 0;
+        for (int c = 0; c < 3; c++) {
+            int shift = 16 - 8 * c;
+            for (int i = 0; i < count; i++) {
+                for (int j = i + 1; j < count; j++) {
+                    int ourStep = (simpviews[j] >> shift & 0xFF) - (simpviews[i] >> shift & 0xFF);
+                    if (Math.abs(ourStep) <= tolerance) {
+                        continue;
+                    }
+                    double theirStep = means[j][c] - means[i][c];
+                    compared++;
+                    broken += Math.abs(theirStep) > tolerance && Math.signum(theirStep) != Math.signum(ourStep) ? 1 : 0;
+                }
+            }
+        }
+        return compared > 0 && broken <= ORDER_BROKEN * compared;
     }
 
     /** Whether theirs lights at least half as many pixels as ours: a panel drawn, not left black. */

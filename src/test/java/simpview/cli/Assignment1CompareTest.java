@@ -124,6 +124,41 @@ class Assignment1CompareTest {
     }
 
     /**
+     * Page 4 drawn with simpview's triangles and colours by a renderer that turns every colour one way (each
+     * channel halved, or put through a gamma of 2.2) fails in every panel, but its colours keep simpview's order:
+     * it is not told its colours are random ones of its own, nor to draw simpview's.
+     */
+    @Test
+    void coloursTurnedOneWayAreNotCalledRandom() throws Exception {
+        Path four = dir.resolve("a1-page4.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "4", "--out", four.toString()).exitCode());
+        BufferedImage halved = ImageIO.read(four.toFile());
+        BufferedImage gamma = ImageIO.read(four.toFile());
+        for (int y = 0; y < 750; y++) {
+            for (int x = 0; x < 750; x++) {
+                int rgb = halved.getRGB(x, y) & 0xFFFFFF;
+                if (rgb != 0 && rgb != 0xFFFFFF) {
+                    halved.setRGB(x, y, rgb >> 1 & 0x7F7F7F);
+                    int turned = 0;
+                    for (int shift = 0; shift <= 16; shift += 8) {
+                        double c = (rgb >> shift & 0xFF) / 255.0;
+                        turned |= (int) Math.round(255 * Math.pow(c, 1 / 2.2)) << shift;
+                    }
+                    gamma.setRGB(x, y, turned);
+                }
+            }
+        }
+        for (BufferedImage turned : new BufferedImage[] {halved, gamma}) {
+            Path picture = dir.resolve("turned.png");
+            ImageIO.write(turned, "png", picture.toFile());
+            CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "4");
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+            assertTrue(run.out().contains("FAIL: "), run.out());
+            assertFalse(run.out().contains("which it draws at random"), run.out());
+        }
+    }
+
+    /**
      * Lines a pixel short or long pass (a hundred pixels of 90,000) and are said. Page 2's lines, in the panel's
      * frame y up (y = 299 - the handout's): (20, 219 - p) to (150, 149 - p) and (160 + p, 29) to (240 + p, 259),
      * p = 0..50. In panel 1 (DDA) each line's second end is left black: (150, 149 - p) and (240 + p, 259), each
