@@ -346,7 +346,18 @@ public final class A1Report {
             int here = b.xMajor() ? panelX : panelY;
             int mine = b.xMajor() ? panelY : panelX;
             double at = b.minorAt(here);
-            if (!Double.isNaN(at)) {
+            double first = b.xMajor() ? round(b.ends[0]) : round(b.ends[1]);
+            double last = b.xMajor() ? round(b.ends[2]) : round(b.ends[3]);
+            if (pastEnd(b)) {
+                // beyond the line's last pixel along its major axis: it stops there, wherever the line through
+                // its ends would be
+                boolean pastSecond = here > Math.max(first, last) == last > first;
+                double endX = round(pastSecond ? b.ends[2] : b.ends[0]);
+                double endY = round(pastSecond ? b.ends[3] : b.ends[1]);
+                sb.append(String.format(Locale.ROOT, "; %c %d is past its end %s, where it stops: a line is drawn"
+                        + " between its rounded ends, both included, and no further", major, here,
+                        point(endX, endY)));
+            } else if (!Double.isNaN(at)) {
                 sb.append(String.format(Locale.ROOT, "; at %c %d it is at %c %s, which rounds to %d, %s from this"
                         + " pixel's %d", major, here, minor, decimal(at), (long) round(at), decimal(Math.abs(at - mine)),
                         mine));
@@ -355,6 +366,17 @@ public final class A1Report {
         }
     }
 
+
+    /**
+     * Whether this pixel's column (of an x-major line; its row of a y-major one) is beyond the line's rounded
+     * ends, where no drawer writes it: the line through the ends goes on there, the line drawn does not.
+     */
+    private boolean pastEnd(Beside b) {
+        int here = b.xMajor() ? panelX : panelY;
+        double first = b.xMajor() ? round(b.ends[0]) : round(b.ends[1]);
+        double last = b.xMajor() ? round(b.ends[2]) : round(b.ends[3]);
+        return here < Math.min(first, last) || here > Math.max(first, last);
+    }
 
     /** Where panel pixel (px, py) is from the inspected one: "above", "below left", ... */
     private String direction(int px, int py) {
@@ -479,7 +501,7 @@ public final class A1Report {
             } else {
                 Json.number(sb, at);
             }
-            sb.append('}');
+            sb.append(", \"past_end\": ").append(pastEnd(b)).append('}');
         }
     }
 

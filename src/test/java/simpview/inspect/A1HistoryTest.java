@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -300,9 +301,33 @@ class A1HistoryTest {
             assertTrue(text.contains("line 51 of 102, (20, 169) to (150, 99): wrote ")
                     && text.contains("; at x 85 it is at y 134, which rounds to 134, 1 from this pixel's 133"), text);
             assertTrue(report.json().contains("\"beside\": [{\"primitive\": "), report.json());
+            assertFalse(report.json().contains("\"past_end\": true"), report.json());
         }
         // a lit pixel names no lines beside it
         assertTrue(A1Inspector.inspect(2, SEED, A1Rule.SPEC, 50 + px, 400 + 134).beside().isEmpty());
+    }
+
+    /**
+     * A black pixel one step past a line's end is said to be past it, not to lie on the line through its ends.
+     * Page 1's line 1 (t = 0) runs from (150, 150) to (150 + 135, 150) = (285, 150), line 46 (t = 180 degrees) to
+     * (150 - 135, 150) = (15, 150) (SPEC Part 3); the lines beside them (t = 4 and 176, 356 and 184 degrees) end
+     * nine rows away, at y 150 +- 135 sin 4 = 159.4 or 140.6. So panel 1's pixels (286, 150) and (14, 150), page
+     * (336, 550) and (64, 550), have only those lines beside them, and are past their second ends.
+     */
+    @Test
+    void aBlackPixelPastALinesEndIsSaidToBePastIt() {
+        A1Report after = A1Inspector.inspect(1, SEED, A1Rule.SPEC, 50 + 286, 400 + 150);
+        assertEquals(0, after.writes().size());
+        assertEquals(1, after.beside().size(), after.text());
+        assertTrue(after.text().contains("line 1 of 90, (150, 150) to (285, 150): wrote (285, 150) left; x 286 is past"
+                + " its end (285, 150), where it stops"), after.text());
+        assertFalse(after.text().contains("which rounds to"), after.text());
+        assertTrue(after.json().contains("\"past_end\": true"), after.json());
+        A1Report before = A1Inspector.inspect(1, SEED, A1Rule.SPEC, 50 + 14, 400 + 150);
+        assertEquals(1, before.beside().size(), before.text());
+        assertTrue(before.text().contains("  line 46 of 90, "), before.text());
+        assertTrue(before.text().contains(": wrote (15, 150) right; x 14 is past its end (15, 150), where it stops"),
+                before.text());
     }
 
     /** SPEC Part 1's DDA on integer ends: from the smaller major end, the minor coordinate summed and rounded half up. */
