@@ -13,11 +13,13 @@ import simpview.surface.PageCanvas;
  * random triangles of pages 4 and 5. The handout asks each student to choose them; simpview draws its own from
  * the seed, so such a picture cannot match and every panel fails with nothing wrong in the renderer. Told by
  * the panels whose drawing does not depend on blending: on page 3, panels 1 to 3 (DDA, Bresenham,
- * alternating) light pixels that simpview's hardly light ({@link #OTHER_LINES}); on pages 4 and 5, panel 4's
+ * alternating) light pixels that simpview's hardly light ({@link #OTHER_LINES}), and leave most of simpview's
+ * black ({@link #OURS_LIT}); on pages 4 and 5, panel 4's
  * random triangles cover other pixels ({@link #OTHER_TRIANGLES}); on page 4, panels 1 and 2 (the starburst
  * and the mesh, whose shapes are fixed) fill simpview's pixels in other colours ({@link #OTHER_COLOURS}).
  * A student who drew simpview's values (its {@code --primitives} listing) with a mistake of their own lights
- * nearly the same pixels, in the same colours, and gets no such hint; nor does one whose colours are simpview's
+ * nearly the same pixels, in the same colours, and gets no such hint; nor does a right picture saved as a JPEG
+ * (a pixel is lit when it is further than the tolerance from black); nor does one whose colours are simpview's
  * turned one way (halved, put through a gamma), which keeps their order ({@link #orderKept}).
  *
  * @param page the page, "A1 page 3 (seed 361)"
@@ -30,6 +32,8 @@ public record RandomValues(String page, int number, long seed, String what, Stri
 
     /** Of the pixels either of panels 1 to 3 lights, at most this share lit in both: other lines. */
     static final double OTHER_LINES = 0.25;
+    /** And of the pixels simpview's panels 1 to 3 light, at most this share lit in the picture's too. */
+    static final double OURS_LIT = 0.5;
     /** Of the pixels either of panel 4 fills, at most this share filled in both: other triangles. */
     static final double OTHER_TRIANGLES = 0.9;
     /** Of the pixels both fill in panels 1 and 2, at most this share of simpview's colour: other colours. */
@@ -51,22 +55,27 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         }
         if (shown instanceof LineTestPage) {
             double most = 0;
+            double mostOfOurs = 0;
             for (int k = 0; k < 3; k++) {
-                if (!drawsAsMuch(ours[k], theirs[k])) {
+                if (!drawsAsMuch(ours[k], theirs[k], tolerance)) {
                     return null; // a panel left (nearly) empty is a mistake of its own
                 }
-                most = Math.max(most, bothOfEither(ours[k], theirs[k], n));
+                most = Math.max(most, bothOfEither(ours[k], theirs[k], n, tolerance));
+                mostOfOurs = Math.max(mostOfOurs, ofOurs(ours[k], theirs[k], tolerance));
             }
-            return most > OTHER_LINES ? null : new RandomValues(page, number, seed, "lines", "of the pixels either "
+            // a JPEG's rings light the pixels beside a line too: its lines share few of the pixels either lights,
+            // yet they light every one of simpview's
+            return most > OTHER_LINES || mostOfOurs > OURS_LIT ? null : new RandomValues(page, number, seed, "lines", "of the pixels either "
                     + "picture lights in panels 1 to 3, both light " + Percent.of(most) + " at most");
         }
-        double triangles = bothOfEither(ours[3], theirs[3], n);
-        if (triangles <= OTHER_TRIANGLES && drawsAsMuch(ours[3], theirs[3])) {
+        double triangles = bothOfEither(ours[3], theirs[3], n, tolerance);
+        if (triangles <= OTHER_TRIANGLES && drawsAsMuch(ours[3], theirs[3], tolerance)) {
             return new RandomValues(page, number, seed, "random triangles", "of the pixels either picture fills in "
                     + "panel 4, both fill " + Percent.of(triangles));
         }
         if (shown instanceof PolygonTestPage polygons && !polygons.ghost()) {
-            double shapes = Math.min(bothOfEither(ours[0], theirs[0], n), bothOfEither(ours[1], theirs[1], n));
+            double shapes = Math.min(bothOfEither(ours[0], theirs[0], n, tolerance),
+                    bothOfEither(ours[1], theirs[1], n, tolerance));
             double colours = Math.max(sameColour(ours[0], theirs[0], tolerance), sameColour(ours[1], theirs[1], tolerance));
             if (shapes > OTHER_TRIANGLES && colours <= OTHER_COLOURS
                     && !orderKept(new int[][] {ours[0], ours[1]}, new int[][] {theirs[0], theirs[1]}, tolerance)) {
@@ -91,7 +100,7 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         Map<Integer, long[]> drawn = new HashMap<>();
         for (int k = 0; k < ours.length; k++) {
             for (int i = 0; i < ours[k].length; i++) {
-                if (!lit(ours[k][i]) || !lit(theirs[k][i])) {
+                if (!lit(ours[k][i], tolerance) || !lit(theirs[k][i], tolerance)) {
                     continue;
                 }
                 long[] sum = drawn.get(ours[k][i] & 0xFFFFFF);
@@ -140,24 +149,37 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         return compared > 0 && broken <= ORDER_BROKEN * compared;
     }
 
+    /** Of the pixels lit in ours, the share lit in theirs too; 1 when ours lights none. */
+    private static double ofOurs(int[] ours, int[] theirs, int tolerance) {
+        int lit = 0;
+        int both = 0;
+        for (int i = 0; i < ours.length; i++) {
+            if (lit(ours[i], tolerance)) {
+                lit++;
+                both += lit(theirs[i], tolerance) ? 1 : 0;
+            }
+        }
+        return lit == 0 ? 1 : (double) both / lit;
+    }
+
     /** Whether theirs lights at least half as many pixels as ours: a panel drawn, not left black. */
-    private static boolean drawsAsMuch(int[] ours, int[] theirs) {
+    private static boolean drawsAsMuch(int[] ours, int[] theirs, int tolerance) {
         int a = 0;
         int b = 0;
         for (int i = 0; i < ours.length; i++) {
-            a += lit(ours[i]) ? 1 : 0;
-            b += lit(theirs[i]) ? 1 : 0;
+            a += lit(ours[i], tolerance) ? 1 : 0;
+            b += lit(theirs[i], tolerance) ? 1 : 0;
         }
         return 2L * b >= a;
     }
 
     /** Of the pixels lit (not the panel's black) in ours or theirs, the share lit in both; 1 when neither lights any. */
-    private static double bothOfEither(int[] ours, int[] theirs, int n) {
+    private static double bothOfEither(int[] ours, int[] theirs, int n, int tolerance) {
         int either = 0;
         int both = 0;
         for (int i = 0; i < n * n; i++) {
-            boolean a = lit(ours[i]);
-            boolean b = lit(theirs[i]);
+            boolean a = lit(ours[i], tolerance);
+            boolean b = lit(theirs[i], tolerance);
             either += a || b ? 1 : 0;
             both += a && b ? 1 : 0;
         }
@@ -169,7 +191,7 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         int both = 0;
         int same = 0;
         for (int i = 0; i < ours.length; i++) {
-            if (lit(ours[i]) && lit(theirs[i])) {
+            if (lit(ours[i], tolerance) && lit(theirs[i], tolerance)) {
                 both++;
                 same += Rasters.distance(ours[i], theirs[i]) <= tolerance ? 1 : 0;
             }
@@ -177,8 +199,13 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         return both == 0 ? 1 : (double) same / both;
     }
 
-    private static boolean lit(int rgb) {
-        return (rgb & 0xFFFFFF) != (PageCanvas.BACKGROUND & 0xFFFFFF);
+    /**
+     * Whether a pixel is lit: further than the tolerance from the panel's black in some channel. A JPEG's black
+     * is rarely 0 0 0 to the bit, and taken as lit everywhere it made a right picture's lines or triangles look
+     * like others.
+     */
+    private static boolean lit(int rgb, int tolerance) {
+        return Rasters.distance(rgb, PageCanvas.BACKGROUND) > tolerance;
     }
 
     @Override
