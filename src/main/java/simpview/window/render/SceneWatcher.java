@@ -22,6 +22,14 @@ import simpview.scene.FileStamp;
  * for a disk; the change is told on the EDT. Looking sees an editor's save
  * however the editor writes (in place, or a new file renamed over the old).
  *
+ * <p>An editor's save is not one step: it may empty the file and then write
+ * it (vim, nano), write it in several calls, or leave no file for a moment
+ * between renames. A look in the middle would draw a half-written file, and
+ * what the window keeps from a picture (the step it shows) would follow it.
+ * So a change is told only once the files have held still: when a look
+ * finds them as the look before it found them ({@link #POLL_MS} earlier),
+ * and not as the picture on screen read them ({@link Changes}).
+ *
  * <p>A file system keeps the time of last change to a tick (a few
  * milliseconds on ext4, two seconds on FAT), so two saves of the same size
  * within one tick look alike. A file changed less than {@link #FRESH_MILLIS}
@@ -47,9 +55,9 @@ public final class SceneWatcher {
     private volatile List<Path> watched = List.of();
     /** True once the looks are scheduled (by the first {@link #watch}). */
     private boolean polling;
-    /** The watcher thread's: the files it looks at, and what it saw of them last. */
+    /** The watcher thread's: the files it looks at, and what it saw of them. */
     private List<Path> files = List.of();
-    private List<Look> looks = List.of();
+    private Changes changes = new Changes(List.of(), List.of());
 
     /** @param changed what to do, on the EDT, when a watched file changed */
     public SceneWatcher(Runnable changed) {
@@ -65,6 +73,49 @@ public final class SceneWatcher {
     record Look(FileStamp stamp, long checksum) {
     }
 
+    /**
+     * What the looks at the watched files have found, and when a change is
+     * to be told: the files differ from what the picture on screen was drawn
+     * from, and the newest look found them as the one before it did, so no
+     * save is half done (as far as a look can tell). Told once; the picture
+     * drawn then is what the next change is held against.
+     */
+    static final class Changes {
+        /** The files as the picture on screen was drawn from them, as far as known. */
+        private List<Look> drawn;
+        /** The files at the newest look. */
+        private List<Look> last;
+
+        /**
+         * @param drawn the files as the picture on screen read them
+         * @param now the files as they are now (in the same order)
+         */
+        Changes(List<Look> drawn, List<Look> now) {
+            this.drawn = drawn;
+            this.last = now;
+        }
+
+        /** Takes the newest look; true when it is a change to tell now. */
+        boolean told(List<Look> now) {
+            boolean heldStill = !anyChanged(last, now);
+            last = now;
+            if (heldStill && anyChanged(drawn, now)) {
+                drawn = now;
+                return true;
+            }
+            return false;
+        }
+
+        private static boolean anyChanged(List<Look> before, List<Look> now) {
+            for (int i = 0; i < now.size(); i++) {
+                if (changed(before.get(i), now.get(i))) {
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+
     /** From now on watches {@code toWatch}, as they are when the watcher thread first looks (soon). */
     public void watch(List<Path> toWatch) {
         watch(toWatch, List.of());
@@ -74,7 +125,8 @@ public final class SceneWatcher {
      * From now on watches {@code toWatch}; {@code asRead} are their stamps as
      * the picture on screen read them (same order; empty when not known). A
      * file saved while the picture was drawn differs from its stamp as read,
-     * and is told at once: its picture is not what the file now says.
+     * and is told at the next look that finds it held still: its picture is
+     * not what the file now says.
      */
     public synchronized void watch(List<Path> toWatch, List<FileStamp> asRead) {
         List<Path> list = List.copyOf(toWatch);
@@ -85,10 +137,8 @@ public final class SceneWatcher {
         }
         thread.execute(() -> {
             files = list;
-            looks = looksNow();
-            if (savedSinceRead(read, looks)) {
-                SwingUtilities.invokeLater(changed);
-            }
+            List<Look> now = looksNow();
+            changes = new Changes(asDrawn(read, now), now);
         });
         if (!polling) {
             thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
@@ -107,13 +157,7 @@ public final class SceneWatcher {
 
     /** On the watcher thread: looks again, and tells the EDT when something changed. */
     private void poll() {
-        List<Look> now = looksNow();
-        boolean any = false;
-        for (int i = 0; i < now.size(); i++) {
-            any |= changed(looks.get(i), now.get(i));
-        }
-        looks = now;
-        if (any) {
+        if (changes.told(looksNow())) {
             SwingUtilities.invokeLater(changed);
         }
     }
@@ -129,15 +173,24 @@ public final class SceneWatcher {
 
     /** True when a file's stamp now is not its stamp as read (the two lists in the same order). */
     static boolean savedSinceRead(List<FileStamp> asRead, List<Look> now) {
+        return !asDrawn(asRead, now).equals(now);
+    }
+
+    /**
+     * The files as the picture on screen read them: each file's look now
+     * where its stamp is the one it was read at (or the stamps are not
+     * known), else its stamp as read, without checksum.
+     */
+    static List<Look> asDrawn(List<FileStamp> asRead, List<Look> now) {
         if (asRead.size() != now.size()) {
-            return false; // not known, or not of these files
+            return now; // not known, or not of these files
         }
+        List<Look> drawn = new ArrayList<>(now.size());
         for (int i = 0; i < now.size(); i++) {
-            if (!asRead.get(i).equals(now.get(i).stamp())) {
-                return true;
-            }
+            Look look = now.get(i);
+            drawn.add(asRead.get(i).equals(look.stamp()) ? look : new Look(asRead.get(i), NO_CHECKSUM));
         }
-        return false;
+        return drawn;
     }
 
     /** True when {@code now} shows another file than {@code before}. */
