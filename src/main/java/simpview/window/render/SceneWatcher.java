@@ -171,11 +171,6 @@ public final class SceneWatcher {
         return seen;
     }
 
-    /** True when a file's stamp now is not its stamp as read (the two lists in the same order). */
-    static boolean savedSinceRead(List<FileStamp> asRead, List<Look> now) {
-        return !asDrawn(asRead, now).equals(now);
-    }
-
     /**
      * The files as the picture on screen read them: each file's look now
      * where its stamp is the one it was read at (or the stamps are not

@@ -128,9 +128,11 @@ public class SceneWatcherTest {
     void aSaveSinceTheFilesWereReadIsTold() throws Exception {
         Path file = Files.writeString(dir.resolve("a.simp"), "wire\n");
         List<FileStamp> asRead = List.of(FileStamp.of(file));
-        assertFalse(SceneWatcher.savedSinceRead(asRead, List.of(look(file))), "as it was read");
+        List<SceneWatcher.Look> before = List.of(look(file));
+        assertEquals(before, SceneWatcher.asDrawn(asRead, before), "as it was read");
         Files.writeString(file, "filled\nwire\n");
-        assertTrue(SceneWatcher.savedSinceRead(asRead, List.of(look(file))), "saved since");
-        assertFalse(SceneWatcher.savedSinceRead(List.of(), List.of(look(file))), "not known: not told");
+        List<SceneWatcher.Look> after = List.of(look(file));
+        assertNotEquals(after, SceneWatcher.asDrawn(asRead, after), "saved since");
+        assertEquals(after, SceneWatcher.asDrawn(List.of(), after), "not known: not told");
     }
 }
