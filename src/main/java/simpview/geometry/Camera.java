@@ -114,7 +114,7 @@ public final class Camera {
     private static String planesHint(double hither, double yon) {
         if (hither > 0 && yon > hither) {
             return ": they are z values, and the camera looks down its -z axis, so what it sees has z below 0;"
-                    + " as distances in front of it they are hither " + plain(-hither) + " and yon " + plain(-yon);
+                    + " as distances in front of it they are hither " + written(-hither) + " and yon " + written(-yon);
         }
         if (yon > hither && hither < 0) {
             return ": hither is the near plane and yon the far one, further below 0: swap them";
@@ -126,8 +126,8 @@ public final class Camera {
         return "";
     }
 
-    /** A number as a scene writes it: -100, not -100.0. */
-    private static String plain(double v) {
+    /** A number as a scene file writes it, for messages: -100, not -100.0. */
+    public static String written(double v) {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 

@@ -250,7 +250,7 @@ final class LitRules implements RuleSet {
         if (!(n[0] > n[1])) {
             String meant = n[0] >= 0 && n[1] > n[0] && n[1] > 0
                     ? ": they are z values, below 0 in front of the camera; as distances in front of it they are"
-                    + " depth " + plain(-n[0]) + " " + plain(-n[1])
+                    + " depth " + Camera.written(-n[0]) + " " + Camera.written(-n[1])
                     : n[1] > n[0] ? ": near is the nearer z and far the one further below 0: swap them" : "";
             throw error(c, c.argumentIndex, "fog needs near > far (camera-space z, far more negative), found near "
                     + n[0] + " and far " + n[1] + meant);
@@ -299,18 +299,13 @@ final class LitRules implements RuleSet {
         for (int i = from; i < from + 3; i++) {
             double v = c.numbers[i];
             if (v > 1) {
-                String scale = v >= 2 ? ", not 0 to 255 (" + plain(v) + " of 255 is "
-                        + plain(Math.round(v / 255 * 1000) / 1000.0) + ")" : "";
-                firstColourAboveOne = files.place() + ": " + what + " " + plain(v) + " is above 1: a colour runs"
-                        + " from 0 to 1" + scale + "; " + effect + " (this is the first such command)";
+                String scale = v >= 2 ? ", not 0 to 255 (" + Camera.written(v) + " of 255 is "
+                        + Camera.written(Math.round(v / 255 * 1000) / 1000.0) + ")" : "";
+                firstColourAboveOne = files.place() + ": " + what + " " + Camera.written(v) + " is above 1: a colour"
+                        + " runs from 0 to 1" + scale + "; " + effect + " (this is the first such command)";
                 return;
             }
         }
-    }
-
-    /** A number as written in a scene: 255, not 255.0. */
-    private static String plain(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 
     /** Where the first surface or fog colour above 1 stands and what it was, as a warning; or null. */

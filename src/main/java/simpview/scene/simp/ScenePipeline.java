@@ -324,10 +324,10 @@ public final class ScenePipeline {
     private static String beyond(Camera view, int plane, String them) {
         if (view.isPerspective()) {
             return switch (plane) {
-                case Camera.HITHER -> "nearer than the near plane z = " + plain(view.hither()) + " (hither): behind"
-                        + " the camera, or too near its eye; the camera looks down its own -z axis";
-                case Camera.YON -> "beyond the far plane z = " + plain(view.yon()) + " (yon): bring " + them + " nearer, or"
-                        + " give yon a number further below 0";
+                case Camera.HITHER -> "nearer than the near plane z = " + Camera.written(view.hither())
+                        + " (hither): behind the camera, or too near its eye; the camera looks down its own -z axis";
+                case Camera.YON -> "beyond the far plane z = " + Camera.written(view.yon()) + " (yon): bring " + them
+                        + " nearer, or give yon a number further below 0";
                 case Camera.LEFT -> "left of the camera's window";
                 case Camera.RIGHT -> "right of the camera's window";
                 case Camera.BOTTOM -> "below the camera's window";
@@ -345,10 +345,6 @@ public final class ScenePipeline {
         };
     }
 
-    /** A number as a scene writes it: -100, not -100.0. */
-    private static String plain(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-    }
 
     private static Drawn drawn(SimpClient client, String litBecause, FileStack files, SceneMonitor monitor,
             Options options) {
@@ -362,10 +358,10 @@ public final class ScenePipeline {
             // correct by SPEC, but a picture of the fog's colour alone (black, most often) looks like a bug
             Fog fog = client.everyPrimitiveFoggedWhole();
             monitor.warning(files.reached().get(0).getFileName() + ": every primitive lies at or beyond the far plane"
-                    + " of its fog, z = " + plain(fog.far()) + " (depth " + plain(fog.near()) + " " + plain(fog.far())
-                    + " " + plain(fog.r()) + " " + plain(fog.g()) + " " + plain(fog.b()) + "), so each is drawn in the"
-                    + " fog's colour alone: near and far are z values in the camera's coordinates, below 0 in front of"
-                    + " it; give far a number further below 0");
+                    + " of its fog, z = " + Camera.written(fog.far()) + " (depth " + Camera.written(fog.near()) + " "
+                    + Camera.written(fog.far()) + " " + Camera.written(fog.r()) + " " + Camera.written(fog.g()) + " "
+                    + Camera.written(fog.b()) + "), so each is drawn in the fog's colour alone: near and far are z"
+                    + " values in the camera's coordinates, below 0 in front of it; give far a number further below 0");
         }
         boolean lightsBehind = client.noLightReachedAPolygon();
         if (client.everyLitPolygonBlack() && !lightsBehind) {
