@@ -129,7 +129,7 @@ public final class SimpviewWindow {
     private String ownerWords;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
-            legend -> legendStrip.show("compare", legend));
+            legend -> legendStrip.show("compare", legend), () -> options.pageContext());
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel;
     private boolean overdrawShown;

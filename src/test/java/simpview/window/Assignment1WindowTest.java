@@ -36,30 +36,41 @@ public class Assignment1WindowTest extends WindowTestCase {
     /**
      * A picture of the first assignment's page dropped on the window is not taken for one 650x650 panel with a
      * pixel of slack (what the window compares on the eight pages): the status says so and gives the command that
-     * compares it panel by panel, with the shown page's number, seed and rule. Dropped on the eight pages, it is
-     * said to be a first-assignment page.
+     * compares it panel by panel as the window would draw it: the page its name names (else the page on screen,
+     * else N), with the window's seed and rule as compare takes them, wherever the window is.
      */
     @Test
     void aFirstAssignmentPictureDroppedIsSentToCompareAssignment1() throws Exception {
-        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        long seed = 7;
+        driver = WindowDriver.open(new WindowOptions(seed, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
         driver.focusByClicking(new View.OfPage(2));
         driver.press(KeyEvent.VK_1);
         driver.awaitShown(new View.OfPage(1));
-        Path mine = dir.resolve("a1-page3.png");
-        ImageIO.write(Assignment1.render(3, PageContext.defaults().withSeed(SEED)), "png", mine.toFile());
-        assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the dropped picture");
-        String onEight = mine.getFileName() + " is a page of the first assignment (four 300x300 panels), not a page of "
-                + "one 650x650 panel: its panels are compared one by one, without slack, by simpview compare " + mine
-                + " --assignment 1 --page N";
-        driver.awaitEdt(() -> driver.window().status().text().equals(onEight), "the status says where it is compared");
+        driver.pressWith(KeyEvent.VK_SHIFT, KeyEvent.VK_R);
+        driver.awaitEdt(() -> driver.window().status().text().contains(A1Rule.COURSE.label()), "the course's rule");
+        BufferedImage page3 = Assignment1.render(3, PageContext.defaults().withSeed(seed).withA1Rule(A1Rule.COURSE));
+        Path named = dir.resolve("a1-page3.png");
+        ImageIO.write(page3, "png", named.toFile());
+        Path unnamed = dir.resolve("mine.png");
+        ImageIO.write(page3, "png", unnamed.toFile());
+        String sent = " is a page of the first assignment (four 300x300 panels), not a page of one 650x650 panel: its "
+                + "panels are compared one by one, without slack, by simpview compare ";
+        // on the eight pages: the page its name names, else N (the seed, as N may be a page drawn from it)
+        assertSays(named, named.getFileName() + sent + named + " --assignment 1 --page 3 --seed 7 --a1-rule course");
+        assertSays(unnamed, unnamed.getFileName() + sent + unnamed + " --assignment 1 --page N --seed 7 --a1-rule course");
+        // on another page of the first assignment: the page its name names, else the page on screen
         driver.press(KeyEvent.VK_A);
         driver.awaitShown(new View.OfAssignment1Page(1));
-        driver.press(KeyEvent.VK_3);
-        driver.awaitShown(new View.OfAssignment1Page(3));
-        assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the dropped picture");
-        String onA1 = onEight.replace(" --page N", " --page 3 --seed 361");
-        driver.awaitEdt(() -> driver.window().status().text().equals(onA1), "the status names the page and its seed");
+        assertSays(named, named.getFileName() + sent + named + " --assignment 1 --page 3 --seed 7 --a1-rule course");
+        assertSays(unnamed, unnamed.getFileName() + sent + unnamed + " --assignment 1 --page 1 --a1-rule course");
         assertTrue(driver.onEdt(() -> driver.window().comparison().comparison()) == null, "nothing is compared");
+    }
+
+    /** Drops {@code picture} on the window and waits for the status to say {@code said}. */
+    private void assertSays(Path picture, String said) throws Exception {
+        driver.onEdt(() -> driver.window().status().say("")); // the same words said again are waited for
+        assertTrue(DroppedFiles.dropOn(driver, picture), "the window took the dropped picture");
+        driver.awaitEdt(() -> driver.window().status().text().equals(said), "the status says: " + said);
     }
 
     @Test

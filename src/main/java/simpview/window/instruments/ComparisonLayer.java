@@ -10,8 +10,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalInt;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.filechooser.FileNameExtensionFilter;
@@ -25,11 +27,13 @@ import simpview.compare.PanelGridComparison;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Shares;
+import simpview.compare.SubmissionNames;
 import simpview.compare.SystematicError;
 import simpview.compare.WorstPixel;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
+import simpview.pages.PageContext;
 import simpview.surface.PageCanvas;
 
 /**
@@ -65,13 +69,16 @@ public final class ComparisonLayer {
 
     /** The heat map's legend while it is shown, else null. */
     private final Consumer<Legend> legend;
+    /** How the window draws its pages now: the seed and the first assignment's rule a page asked for is drawn with. */
+    private final Supplier<PageContext> drawing;
 
     public ComparisonLayer(JFrame owner, BiConsumer<BufferedImage, String> pageView, Consumer<String> say,
-            Consumer<Legend> legend) {
+            Consumer<Legend> legend, Supplier<PageContext> drawing) {
         this.owner = owner;
         this.pageView = pageView;
         this.say = say;
         this.legend = legend;
+        this.drawing = drawing;
     }
 
     /** Compares a picture with the view on screen; a picture that cannot be compared is said why. */
@@ -99,20 +106,24 @@ public final class ComparisonLayer {
 
     /**
      * Why a first assignment's picture (or any picture, on its pages) is not compared in the window, and the
-     * command that compares it panel by panel, as check does: the shown page's number, seed and rule when the
-     * first assignment's page is shown, else "N".
+     * command that compares it panel by panel as the window would have drawn it: the page its file name names, as
+     * check reads names (a1-page3.png, page3.png: page 3), else the first assignment's page on screen, else "N";
+     * the window's seed when the page is drawn from it (or may be: "N"), and its rule when it is not SPEC's (the
+     * default).
      */
     private String firstAssignmentElsewhere(Path file, boolean firstAssignment) {
         String path = file.toString();
         // as a shell takes it: a path of plain characters as it is, any other in single quotes
         String name = path.matches("[A-Za-z0-9_./,:=+-]+") ? path : "'" + path.replace("'", "'\\''") + "'";
-        String page;
-        if (shown.view() instanceof View.OfAssignment1Page a1) {
-            page = a1.number() + (Assignment1.page(a1.number()).usesSeed() ? " --seed " + shown.seed() : "")
-                    + (shown.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + shown.a1Rule().key());
-        } else {
-            page = "N";
-        }
+        OptionalInt named = SubmissionNames.pageNumber(file.getFileName().toString());
+        int number = named.isPresent() && named.getAsInt() <= Assignment1.COUNT ? named.getAsInt()
+                : shown.view() instanceof View.OfAssignment1Page a1 ? a1.number() : 0;
+        // the window's seed and rule, not those of the picture on screen: one of the eight pages that does not use
+        // the seed, or any of them, is not drawn again when they change
+        PageContext context = drawing.get();
+        boolean seeded = number == 0 || Assignment1.page(number).usesSeed();
+        String page = (number == 0 ? "N" : String.valueOf(number)) + (seeded ? " --seed " + context.seed() : "")
+                + (context.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + context.a1Rule().key());
         String what = firstAssignment ? file.getFileName() + " is a page of the first assignment (four 300x300 "
                 + "panels), not a page of one 650x650 panel" : "The first assignment's pages are not compared here";
         return what + ": its panels are compared one by one, without slack, by simpview compare " + name
