@@ -65,8 +65,11 @@ public record RandomValues(String page, int number, long seed, String what, Stri
             }
             // a JPEG's rings light the pixels beside a line too: its lines share few of the pixels either lights,
             // yet they light every one of simpview's
-            return most > OTHER_LINES || mostOfOurs > OURS_LIT ? null : new RandomValues(page, number, seed, "lines", "of the pixels either "
-                    + "picture lights in panels 1 to 3, both light " + Percent.of(most) + " at most");
+            if (most > OTHER_LINES || mostOfOurs > OURS_LIT) {
+                return null;
+            }
+            return new RandomValues(page, number, seed, "lines", "of the pixels either picture lights in panels 1 to "
+                    + "3, both light " + Percent.of(most) + " at most");
         }
         double triangles = bothOfEither(ours[3], theirs[3], n, tolerance);
         if (triangles <= OTHER_TRIANGLES && drawsAsMuch(ours[3], theirs[3], tolerance)) {
@@ -76,7 +79,8 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         if (shown instanceof PolygonTestPage polygons && !polygons.ghost()) {
             double shapes = Math.min(bothOfEither(ours[0], theirs[0], n, tolerance),
                     bothOfEither(ours[1], theirs[1], n, tolerance));
-            double colours = Math.max(sameColour(ours[0], theirs[0], tolerance), sameColour(ours[1], theirs[1], tolerance));
+            double colours = Math.max(sameColour(ours[0], theirs[0], tolerance),
+                    sameColour(ours[1], theirs[1], tolerance));
             if (shapes > OTHER_TRIANGLES && colours <= OTHER_COLOURS
                     && !orderKept(new int[][] {ours[0], ours[1]}, new int[][] {theirs[0], theirs[1]}, tolerance)) {
                 return new RandomValues(page, number, seed, "colours", "your triangles of panels 1 and 2 fill "
