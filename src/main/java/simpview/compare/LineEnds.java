@@ -61,8 +61,10 @@ public record LineEnds(int shortEnds, int longEnds, int differing, String exampl
                     continue;
                 }
                 boolean xMajor = Math.abs(dx) >= Math.abs(dy);
-                long px = xMajor ? e[0] + Long.signum(dx) : Math.round(Math.floor(e[0] + (double) dx / Math.abs(dy) + 0.5));
-                long py = xMajor ? Math.round(Math.floor(e[1] + (double) dy / Math.abs(dx) + 0.5)) : e[1] + Long.signum(dy);
+                long px = xMajor ? e[0] + Long.signum(dx)
+                        : Math.round(Math.floor(e[0] + (double) dx / Math.abs(dy) + 0.5));
+                long py = xMajor ? Math.round(Math.floor(e[1] + (double) dy / Math.abs(dx) + 0.5))
+                        : e[1] + Long.signum(dy);
                 int past = index(px, py, n);
                 if (past >= 0 && !counted[past] && differs(ours[past], theirs[past], tolerance) && !lit(ours[past])
                         && lit(theirs[past])) {
@@ -99,7 +101,8 @@ public record LineEnds(int shortEnds, int longEnds, int differing, String exampl
 
     @Override
     public String brief() {
-        return shortEnds >= longEnds ? "to stop a pixel short of its lines' ends" : "to run a pixel past its lines' ends";
+        return shortEnds >= longEnds ? "to stop a pixel short of its lines' ends"
+                : "to run a pixel past its lines' ends";
     }
 
     @Override
