@@ -57,7 +57,7 @@ public final class PanelGridComparison {
             addPast(past, pageLeft + page - width, "right");
             addPast(past, -pageTop, "top");
             addPast(past, pageTop + page - height, "bottom");
-            return past.isEmpty() ? "" : "the page runs past the picture's " + joined(past)
+            return past.isEmpty() ? "" : "the page runs past the picture's " + Sentence.listed(past)
                     + " (its margins are cut there; its panels are whole)";
         }
 
@@ -242,17 +242,12 @@ public final class PanelGridComparison {
             // the first panel says what is wrong; the others are most likely so for the same reason
             return "no panel is framed where a " + page + "x" + page + " page has them; " + why.get(0) + eightPages;
         }
-        return (framed.size() == 1 ? "panel " : "panels ") + joined(framed) + (framed.size() == 1 ? " is" : " are")
-                + " framed with the page's top-left at x " + best[0] + ", y " + best[1] + " of the picture, but not "
+        return (framed.size() == 1 ? "panel " : "panels ") + Sentence.listed(framed)
+                + (framed.size() == 1 ? " is" : " are") + " framed with the page's top-left at x " + best[0] + ", y " + best[1] + " of the picture, but not "
                 + String.join("; nor ", why) + eightPages;
     }
 
     /** "1", "1 and 3", "1, 3 and 4". */
-    private static String joined(List<String> words) {
-        int last = words.size() - 1;
-        return last == 0 ? words.get(0) : String.join(", ", words.subList(0, last)) + " and " + words.get(last);
-    }
-
     private static boolean framed(int[] rgb, int width, int left, int top, Panel[] panels) {
         for (Panel p : panels) {
             int x0 = left + p.left();

@@ -1,6 +1,8 @@
 package simpview.compare;
 
-/** Text made a sentence: ended once, whatever its last words already end in. */
+import java.util.List;
+
+/** Text made a sentence: words listed as a sentence lists them, ended once whatever its last words end in. */
 final class Sentence {
 
     private Sentence() {
@@ -16,5 +18,11 @@ final class Sentence {
             return trimmed;
         }
         return trimmed + ".";
+    }
+
+    /** The words as a sentence lists them: "a", "a and b", "a, b and c" (at least one word). */
+    static String listed(List<String> words) {
+        int last = words.size() - 1;
+        return last == 0 ? words.get(0) : String.join(", ", words.subList(0, last)) + " and " + words.get(last);
     }
 }

@@ -176,9 +176,7 @@ public record Wanted(String target, RubricRule rule, List<String> unreadable, St
         }
         boolean zips = files.stream().allMatch(f -> f.toLowerCase(Locale.ROOT).endsWith(".zip"));
         boolean one = files.size() == 1;
-        String named = one ? files.get(0)
-                : String.join(", ", files.subList(0, files.size() - 1)) + " and " + files.get(files.size() - 1);
-        return named + (one ? " is" : " are") + " in the folder too, not opened (simpview does "
+        return Sentence.listed(files) + (one ? " is" : " are") + " in the folder too, not opened (simpview does "
                 + "not look inside " + (zips ? "a zip" : "an archive") + "): the " + (target.endsWith(".simp")
                 ? "picture" : "page") + " may be in " + (one ? "it; " : "them; ") + (zips ? "unzip " : "unpack ")
                 + (one ? "it" : "them");
