@@ -21,6 +21,9 @@ class CentreCoverageTest {
     @TempDir
     Path dir;
 
+    /** One inspector for every replay of a test, as the window keeps one: its canvas and models reused. */
+    private final PixelInspector inspector = new PixelInspector();
+
     /**
      * A depth-cued scene's world x = -100 + 4j lands on panel x = 13j exactly
      * ((x + 100) 650 / 200), so these triangles' vertices are whole panel
@@ -53,7 +56,7 @@ class CentreCoverageTest {
         Files.writeString(file, "polygon (-100, -100, -10) (100, -100, -10) (100, 100, -10)\n"
                 + "polygon (-100, -100, -20) (100, 100, -20) (-100, 100, -20)\n");
         for (int i = 0; i < 650; i += 59) {
-            PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), i, i, 1);
+            PixelReport report = inspector.inspect(InspectedScene.of(file), i, i, 1);
             Terms below = report.vertices(0).terms("centre");
             Terms above = report.vertices(1).terms("centre");
             String where = "pixel (" + i + ", " + i + ")";
@@ -65,13 +68,13 @@ class CentreCoverageTest {
             assertEquals(0, report.history().get(0).primitive(), where);
         }
         // a vertex on the panel's edge rounds to a pixel past it, and the table says so
-        Terms corner = new PixelInspector().inspect(InspectedScene.of(file), 300, 300, 0).vertices(0).list("vertices")
+        Terms corner = inspector.inspect(InspectedScene.of(file), 300, 300, 0).vertices(0).list("vertices")
                 .get(2);
         assertEquals("past the panel's pixels, 0 to 649 each way", corner.get("pixel_outside"));
-        assertEquals(null, new PixelInspector().inspect(InspectedScene.of(file), 300, 300, 0).vertices(0)
+        assertEquals(null, inspector.inspect(InspectedScene.of(file), 300, 300, 0).vertices(0)
                 .list("vertices").get(0).get("pixel_outside"), "vertex (0, 0) is the panel's first pixel");
         // off the diagonal, above it: outside the first, inside the second
-        PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), 100, 400, 0);
+        PixelReport report = inspector.inspect(InspectedScene.of(file), 100, 400, 0);
         assertEquals("the centre is outside the outline", report.vertices(0).terms("centre").get("why"));
         assertEquals("the centre is inside the triangle", report.vertices(1).terms("centre").get("why"));
     }
@@ -85,7 +88,7 @@ class CentreCoverageTest {
                 int covering = 0;
                 for (int k = 0; k < AROUND.length; k++) {
                     int p = k;
-                    PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), x, y, p);
+                    PixelReport report = inspector.inspect(InspectedScene.of(file), x, y, p);
                     Terms centre = report.vertices(p).terms("centre");
                     assertNotNull(centre, "no centre for primitive " + p);
                     boolean covered = (Boolean) centre.get("covered");
@@ -119,7 +122,7 @@ class CentreCoverageTest {
         int outside = 0;
         for (int y = 150; y < 500; y += 7) {
             for (int x = 150; x < 500; x += 7) {
-                PixelReport report = new PixelInspector().inspect(InspectedScene.of(file), x, y, 0);
+                PixelReport report = inspector.inspect(InspectedScene.of(file), x, y, 0);
                 Terms centre = report.vertices(0).terms("centre");
                 boolean covered = (Boolean) centre.get("covered");
                 // a write reached the pixel (an entry "clipped" says only that the uncut triangle would have covered it)
