@@ -36,6 +36,14 @@ public final class Camera {
     /** Part 1's view: the box -100..100 x -100..100 x -200..0, parallel projection. */
     public static final Camera PARALLEL = new Camera(false, -100, -100, 100, 100, 0, -200);
 
+    /**
+     * Part 1's view grown by one pixel of the panel (200 / 650) on each of its four sides: a depth-cued
+     * primitive that misses this box writes no pixel of the panel, as a line's rounded ends and DDA steps stray
+     * less than a pixel from it. For telling whether something can show, never for projecting.
+     */
+    public static final Camera PARALLEL_AND_A_PIXEL = new Camera(false, -100 - 200.0 / PANEL_SIZE,
+            -100 - 200.0 / PANEL_SIZE, 100 + 200.0 / PANEL_SIZE, 100 + 200.0 / PANEL_SIZE, 0, -200);
+
     private final boolean perspective;
     private final double xlow;
     private final double ylow;
@@ -269,6 +277,26 @@ public final class Camera {
             common &= outcode(p[o], p[o + 1], p[o + 2]);
         }
         return common;
+    }
+
+    /**
+     * The planes (bits 1 &lt;&lt; {@link #HITHER} ...) that one or more of the
+     * first {@code count} vertices of {@code p} is outside of; 0 when every
+     * vertex is in view. Of a primitive not culled, these are the sides of
+     * the view it reaches beyond: the corner it lies round, when the clipper
+     * leaves nothing of it. In perspective a vertex nearer than the near
+     * plane counts for that plane alone: behind the eye the side planes'
+     * outside half-spaces cross (see {@link #outcode}), so its side bits say
+     * nothing of where it is.
+     */
+    public int outsideAny(double[] p, int stride, int count) {
+        int any = 0;
+        for (int k = 0; k < count; k++) {
+            int o = k * stride;
+            int code = outcode(p[o], p[o + 1], p[o + 2]);
+            any |= perspective && (code & 1 << HITHER) != 0 ? 1 << HITHER : code;
+        }
+        return any;
     }
 
     /** The depth cue's weight of the near colour: 0 at the far plane, 1 at the near plane. */

@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import simpview.geometry.Camera;
+import simpview.geometry.Clipper;
 import simpview.geometry.Matrix4;
 import simpview.geometry.Vertex;
 
@@ -26,6 +27,14 @@ public final class DepthCuedGeometry implements GeometryStage {
     /** The planes every culled primitive lies wholly outside of (see {@link #culledOutside}). */
     private int culledOutside;
     private long primitives;
+    /**
+     * Primitives not culled that lie wholly outside the view round one of its corners, a pixel or more from
+     * it: drawn, and every pixel of theirs dropped by the scissor. Told, never clipped: the clipper only looks.
+     */
+    private long roundACorner;
+    /** The sides every one of those reaches beyond (see {@link #clippedAwayOutside}). */
+    private int roundACornerOutside;
+    private final Clipper looker = new Clipper(3);
     /** Primitives not drawn because a vertex of theirs is not finite in camera space, or on the panel. */
     private long nonFinite;
     /** Whether the first of those was finite in camera space and overflowed on its way to the panel. */
@@ -67,12 +76,33 @@ public final class DepthCuedGeometry implements GeometryStage {
             }
             return;
         }
+        noteRoundACorner(count);
         project(rgb, count);
         if (!onPanel(kind, count)) {
             firstBeyondPanel |= nonFinite++ == 0;
             return;
         }
         sink.add(kind, panel);
+    }
+
+    /**
+     * Counts the primitive at hand, not culled, when it misses the view
+     * grown by a pixel ({@link Camera#PARALLEL_AND_A_PIXEL}): a polygon whose
+     * box overlaps a corner of the panel but whose edge passes outside it
+     * writes no pixel there, as a culled one does not. Only one with a vertex
+     * outside the view is clipped to see: most have none.
+     */
+    private void noteRoundACorner(int count) {
+        int reaches = VIEW.outsideAny(camera, 3, count);
+        if (reaches == 0) {
+            return;
+        }
+        Camera grown = Camera.PARALLEL_AND_A_PIXEL;
+        boolean missed = count == 2 ? !looker.clipLine(grown, camera, 0, 3)
+                : looker.clipPolygon(grown, camera, 0, 3) < 3;
+        if (missed) {
+            roundACornerOutside = roundACorner++ == 0 ? reaches : roundACornerOutside & reaches;
+        }
     }
 
     /**
@@ -152,6 +182,17 @@ public final class DepthCuedGeometry implements GeometryStage {
     @Override
     public int culledOutside() {
         return culledOutside;
+    }
+
+    /** Primitives not culled that lie round a corner of the view, a pixel or more outside it: none of them shows. */
+    @Override
+    public long clippedAwayCount() {
+        return roundACorner;
+    }
+
+    @Override
+    public int clippedAwayOutside() {
+        return roundACornerOutside;
     }
 
     @Override

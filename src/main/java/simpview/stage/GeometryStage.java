@@ -36,9 +36,20 @@ public interface GeometryStage {
     /**
      * Primitives that were not culled, but that the clipper cut away whole
      * (a polygon around a corner of the view, outside it but not wholly
-     * outside one plane); 0 where nothing is clipped.
+     * outside one plane). Part 1 clips nothing: there, those that lie so,
+     * whose pixels the scissor drops every one of, are counted instead.
      */
     default long clippedAwayCount() {
+        return 0;
+    }
+
+    /**
+     * The sides of the view (bits 1 &lt;&lt; Camera.HITHER ...) that every
+     * primitive {@link #clippedAwayCount} counts reaches beyond: the corner
+     * of the view they lie round, for a scene that drew nothing. 0 while
+     * there is none, or when they lie round different corners.
+     */
+    default int clippedAwayOutside() {
         return 0;
     }
 

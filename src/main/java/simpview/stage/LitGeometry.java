@@ -105,6 +105,8 @@ public final class LitGeometry implements GeometryStage {
     private int culledOutside;
     /** Primitives not culled that the clipper cut away whole. */
     private long clippedAway;
+    /** The sides of the view every one of those reaches beyond (see {@link #clippedAwayOutside}). */
+    private int clippedAwayOutside;
     /**
      * Whether a primitive not culled had a vertex nearer than the far plane
      * of its fog (or no fog); while not, the fog of the first one, which
@@ -190,7 +192,7 @@ public final class LitGeometry implements GeometryStage {
             trace.unclipped(cam, 0, CAMERA_STRIDE, 2);
         }
         if (!clipper.clipLine(state.camera(), cam, 0, CAMERA_STRIDE)) {
-            clippedAway++;
+            clippedAway(state.camera(), 2);
             skipped(Painter.LINE, false, 2);
         } else {
             carriedColours(2, FragmentLayout.COLOUR_CHANNELS);
@@ -290,7 +292,7 @@ public final class LitGeometry implements GeometryStage {
         }
         int kept = clipper.clipPolygon(camera, cam, 0, n);
         if (kept < 3) {
-            clippedAway++;
+            clippedAway(camera, n);
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
@@ -351,6 +353,12 @@ public final class LitGeometry implements GeometryStage {
      */
     public Fog everyPrimitiveFoggedWhole() {
         return anyNearerThanFog ? null : firstFoggedWhole;
+    }
+
+    /** Counts a primitive of n camera-space vertices, not culled, that the clipper cut away whole. */
+    private void clippedAway(Camera camera, int n) {
+        int reaches = camera.outsideAny(cam, CAMERA_STRIDE, n);
+        clippedAwayOutside = clippedAway++ == 0 ? reaches : clippedAwayOutside & reaches;
     }
 
     /** Step 2: whether the n camera-space vertices are all outside one plane of the view; counted so. */
@@ -775,6 +783,11 @@ public final class LitGeometry implements GeometryStage {
     @Override
     public long clippedAwayCount() {
         return clippedAway;
+    }
+
+    @Override
+    public int clippedAwayOutside() {
+        return clippedAwayOutside;
     }
 
     @Override

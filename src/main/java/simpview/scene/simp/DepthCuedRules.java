@@ -115,6 +115,11 @@ final class DepthCuedRules implements RuleSet {
     }
 
     @Override
+    public int clippedAwayOutside() {
+        return geometry.clippedAwayOutside();
+    }
+
+    @Override
     public long primitiveCount() {
         return geometry.primitiveCount();
     }

@@ -143,6 +143,11 @@ final class LitRules implements RuleSet {
     }
 
     @Override
+    public int clippedAwayOutside() {
+        return geometry.clippedAwayOutside();
+    }
+
+    @Override
     public long primitiveCount() {
         return geometry.primitiveCount();
     }

@@ -25,8 +25,11 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     /** The planes every culled primitive lies wholly outside of, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
     int culledOutside();
 
-    /** Primitives not culled that the clipper cut away whole. */
+    /** Primitives not culled that the clipper cut away whole (Part 1: that lie so, none of their pixels shown). */
     long clippedAwayCount();
+
+    /** The sides of the view every one of those reaches beyond, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
+    int clippedAwayOutside();
 
     /** Primitives taken, culled or not. */
     long primitiveCount();

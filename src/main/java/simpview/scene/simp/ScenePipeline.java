@@ -290,34 +290,67 @@ public final class ScenePipeline {
 
     /**
      * Why a scene whose every primitive was culled or clipped away drew
-     * nothing: the view, and where they lie when one plane of it has every
-     * culled primitive outside it (a scene at z = +10 looked at down -z).
+     * nothing: the view, and where they lie: the plane of it that has every
+     * culled primitive outside it (a scene at z = +10 looked at down -z), and
+     * the corner of it that those not culled lie round (a triangle beyond the
+     * panel's top-left corner whose box overlaps the panel). Part 1 clips
+     * nothing: its scissor drops every pixel of those.
      */
     private static String outsideTheView(SimpClient client) {
         long n = client.primitiveCount();
         long clipped = client.clippedAwayCount();
         Camera view = client.view();
+        String them = n == 1 ? "it" : "them";
+        String how = clipped == 0 ? "it was culled"
+                : !client.isLit() ? (clipped == n ? "" : "it was culled, or ") + "none of it reaches the panel"
+                : clipped == n ? "the clipper cut it away whole" : "it was culled or cut away whole by the clipper";
         String words = (n == 1 ? "its one primitive lies" : "every one of its " + n + " primitives lies")
                 + " wholly outside the view (" + (view.isPerspective()
                         ? "the camera's view volume: in front of the camera, between its near and far planes"
                         : "x and y from -100 to 100, z from 0 near to -200 far")
-                + "), so " + (clipped == 0 ? "it was culled" : clipped == n ? "the clipper cut it away whole"
-                        : "it was culled or cut away whole by the clipper");
+                + "), so " + how;
         int outside = client.culledOutside();
-        if (clipped > 0 || outside == 0) {
-            return words;
-        }
         if (view.isPerspective() && (outside & 1 << Camera.HITHER) != 0) {
             // behind the eye every side plane's outside half-space holds the point too: nothing to say of them
             outside = 1 << Camera.HITHER;
         }
+        if (clipped == 0) {
+            return outside == 0 ? words : words + ": " + (n == 1 ? "it lies " : "every one lies ")
+                    + where(view, outside, them, ", and ");
+        }
+        String corner = roundACorner(view, client.clippedAwayOutside(), clipped == 1 ? "it" : "them");
+        if (clipped == n) {
+            return words + ": " + (n == 1 ? "it lies " : "every one lies ") + corner;
+        }
+        long culled = n - clipped;
+        String culledWhere = outside == 0 ? "" : ", " + (culled == 1 ? "lying " : "every one lying ")
+                + where(view, outside, culled == 1 ? "it" : "them", ", and ");
+        return words + ": " + culled + " culled" + culledWhere + ", and " + clipped + " " + corner;
+    }
+
+    /**
+     * Where primitives not culled but wholly outside the view lie: round a corner of it, partly beyond two sides
+     * (or more), {@code sides} those every one of them reaches beyond.
+     */
+    private static String roundACorner(Camera view, int sides, String them) {
+        String culling = ", wholly beyond none (which is all culling looks for)";
+        return switch (Integer.bitCount(sides)) {
+            case 0 -> "round corners of the view, each partly beyond two of its sides" + culling;
+            case 1 -> "round corners of the view, partly " + where(view, sides, them, "") + " and partly beyond another"
+                    + " side" + culling;
+            default -> "round a corner of the view, partly " + where(view, sides, them, ", and partly ") + culling;
+        };
+    }
+
+    /** The sides of the view in {@code planes} (bits 1 &lt;&lt; Camera.HITHER ...), each as {@link #beyond} says it. */
+    private static String where(Camera view, int planes, String them, String joiner) {
         List<String> where = new ArrayList<>();
         for (int plane = 0; plane < Camera.PLANES; plane++) {
-            if ((outside & 1 << plane) != 0) {
-                where.add(beyond(view, plane, n == 1 ? "it" : "them"));
+            if ((planes & 1 << plane) != 0) {
+                where.add(beyond(view, plane, them));
             }
         }
-        return words + ": " + (n == 1 ? "it lies " : "every one lies ") + String.join(", and ", where);
+        return String.join(joiner, where);
     }
 
     /** Where a point outside one plane of the view lies, in words a student placing a scene reads. */

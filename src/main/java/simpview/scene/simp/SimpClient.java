@@ -402,9 +402,14 @@ public final class SimpClient {
         return rules.culledOutside();
     }
 
-    /** Primitives not culled that the clipper cut away whole. */
+    /** Primitives not culled that the clipper cut away whole (Part 1: that lie so, none of their pixels shown). */
     long clippedAwayCount() {
         return rules.clippedAwayCount();
+    }
+
+    /** The sides of the view every one of those reaches beyond, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
+    int clippedAwayOutside() {
+        return rules.clippedAwayOutside();
     }
 
     /** The view the primitives were culled and clipped by: the camera's, or the parallel box. */

@@ -184,15 +184,53 @@ class ScenePipelineTest {
         warnings.clear();
         // around a corner of the view: outside it, but not wholly outside one plane; the clipper leaves nothing
         Path corner = write("corner.simp", "camera -1 -1 1 1 -1 -100", "ambient 1 1 1",
-                "polygon (-40 15 -10) (15 -40 -10) (-40 -40 -10)");
+                "polygon (-40 5 -10) (-5 40 -10) (-40 40 -10)");
         draw(corner, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of("corner.simp drew nothing: its one primitive lies" + volume + "so the clipper cut it away"
-                + " whole"), warnings);
+                + " whole: it lies round a corner of the view, partly left of the camera's window, and partly above the"
+                + " camera's window, wholly beyond none (which is all culling looks for)"), warnings);
         warnings.clear();
         // one culled of two: no warning
         Path half = write("half.simp", "polygon (0 0 10) (50 0 10) (0 50 10)", "polygon (0 0 -10) (50 0 -10) (0 50 -10)");
         draw(half, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
         assertEquals(List.of(), warnings);
+    }
+
+    /**
+     * A depth-cued polygon whose vertices all lie outside the view, but none wholly beyond one side, is not culled:
+     * drawn, the scissor dropping each pixel. When it misses the view round a corner, nothing of it shows, and a
+     * scene of nothing else says so, and where it lies, as a culled one's does; one that covers part of the view
+     * draws there, and a line that passes less than a pixel from the corner is not counted (its rounded pixels may
+     * reach the panel).
+     */
+    @Test
+    void aDepthCuedSceneRoundACornerOfTheViewSaysItDrewNothingAndWhere() throws Exception {
+        String box = " wholly outside the view (x and y from -100 to 100, z from 0 near to -200 far), so";
+        Path corner = write("corner.simp", "polygon (-150 90 -50) (-90 150 -50) (-160 160 -50)");
+        PageCanvas canvas = new PageCanvas();
+        draw(corner, canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("corner.simp drew nothing: its one primitive lies" + box + " none of it reaches the panel:"
+                + " it lies round a corner of the view, partly at x below -100, left of the panel, and partly at y above"
+                + " 100, above the panel, wholly beyond none (which is all culling looks for)"), warnings);
+        warnings.clear();
+        Path two = write("two.simp", "polygon (-150 90 -50) (-90 150 -50) (-160 160 -50)",
+                "line (0 300 -50) (10 101 -50)", "polygon (150 90 -50) (90 150 -50) (160 160 -50)");
+        draw(two, canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("two.simp drew nothing: every one of its 3 primitives lies" + box + " it was culled, or"
+                + " none of it reaches the panel: 1 culled, lying at y above 100, above the panel, and 2 round corners of"
+                + " the view, partly at y above 100, above the panel and partly beyond another side, wholly beyond none"
+                + " (which is all culling looks for)"), warnings);
+        warnings.clear();
+        // its box over the corner and its edge across it: drawn, no warning
+        Path across = write("across.simp", "polygon (-150 40 -50) (-40 150 -50) (-160 160 -50)");
+        draw(across, canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(), warnings);
+        assertTrue((canvas.panel().getPixel(0, PageCanvas.PANEL - 1) & 0xFFFFFF) != 0, "the corner pixel is drawn");
+        // a line round the corner less than a pixel from it, whose rounded ends are the corner pixel: not counted
+        Path near = write("near.simp", "line (-100.1 -100 -50) (-100 -100.1 -50)");
+        draw(near, canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of(), warnings);
+        assertTrue((canvas.panel().getPixel(0, 0) & 0xFFFFFF) != 0, "the line's one pixel is drawn");
     }
 
     /**
