@@ -81,6 +81,8 @@ final class ObjParser {
     private int concaveFaces;
     private int firstConcaveFace;
     private int firstConcaveSize;
+    /** Whether the model is inside out: its normals against its faces' fronts, or its fronts facing inward. */
+    private final Orientation orientation = new Orientation();
     /** The value of the index just read (capped, so that it never overflows). */
     private long index;
     private byte[] b;
@@ -197,6 +199,10 @@ final class ObjParser {
                     + "line, so its face normal, (p2 - p1) x (p3 - p1) by SPEC, is zero or made of rounding errors, and "
                     + "where a vertex has no vn it is lit by the ambient light alone or wrongly: start the face at a "
                     + "corner, or give its vertices vn normals" + more(inLineStarts));
+        }
+        String insideOut = orientation.warning(file().getFileName().toString());
+        if (insideOut != null) {
+            warnings.add(insideOut);
         }
         if (concaveFaces > 0) {
             warnings.add(file().getFileName() + ":" + firstConcaveFace + ": this face of " + firstConcaveSize
@@ -580,6 +586,8 @@ final class ObjParser {
         } else if (n > 3) {
             noteShape(n, everyNormal, line);
         }
+        orientation.face(vertices.positions, vertices.vertexCount, vertices.normals, vertexRefs, normalRefs, n,
+                everyNormal, line);
         if (recorder != null) {
             recorder.add(vertexRefs, normalRefs, n, anyNormal, line, vertices.modelBytes());
         }

@@ -32,7 +32,8 @@ import simpview.scene.SceneException;
  * error have already gone to the sink; an index naming what the file
  * defines only further down says at which line. What is worth a warning (a
  * file without faces, l and p lines, which are not drawn, decimal commas,
- * faces filled otherwise than their outline) is in {@link ObjCounts#warnings},
+ * faces filled otherwise than their outline, a model inside out:
+ * {@link Orientation}) is in {@link ObjCounts#warnings},
  * one warning per kind, naming the first line and counting the rest.
  */
 public final class ObjReader {

@@ -5,15 +5,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import simpview.scene.SceneException;
+import simpview.testing.CourseFiles;
 
 /**
  * The course's own .obj files (read from ../shared, never copied here) read
@@ -123,5 +130,82 @@ class CourseObjFilesTest {
             }
         });
         assertEquals(0, without[0]);
+    }
+
+    /** An {@code obj} command of a scene, and the model's name: {@code obj "name"} or {@code obj name}. */
+    private static final Pattern OBJ = Pattern.compile("(?m)^\\s*obj\\s+\"?([^\"\\s]+)");
+
+    /**
+     * No scene of the course's lit folders says its model is inside out: that warning is the model reader's,
+     * whatever the scene does with the model, so each model the scenes of course-simp-a3 and course-simp-a4 name
+     * is read (once: the same bytes in both folders are read once) and none gives it.
+     */
+    @Test
+    void noModelTheCourseScenesReadIsSaidToBeInsideOut() throws IOException, SceneException {
+        List<Path> models = new ArrayList<>();
+        for (String folder : List.of("course-simp-a3", "course-simp-a4")) {
+            Path dir = CourseFiles.require(folder);
+            List<Path> scenes;
+            try (Stream<Path> files = Files.list(dir)) {
+                scenes = files.filter(f -> f.toString().endsWith(".simp")).sorted().collect(Collectors.toList());
+            }
+            for (Path scene : scenes) {
+                Matcher m = OBJ.matcher(Files.readString(scene));
+                while (m.find()) {
+                    Path model = dir.resolve(m.group(1) + ".obj");
+                    if (!models.contains(model)) {
+                        models.add(model);
+                    }
+                }
+            }
+        }
+        List<Path> read = new ArrayList<>();
+        for (Path model : models) {
+            if (read.stream().anyMatch(r -> sameBytes(r, model))) {
+                continue;
+            }
+            read.add(model);
+            List<String> insideOut = ObjReader.stream(model, face -> { }).warnings().stream()
+                    .filter(w -> w.contains("inside out")).collect(Collectors.toList());
+            assertEquals(List.of(), insideOut, model.toString());
+        }
+        assertEquals(List.of("bowling.obj", "cylinder.obj", "dummy.obj", "octohedron.obj"), read.stream()
+                .map(p -> p.getFileName().toString()).sorted().collect(Collectors.toList()), "the models read");
+    }
+
+    private static boolean sameBytes(Path a, Path b) {
+        try {
+            return Files.mismatch(a, b) == -1;
+        } catch (IOException e) {
+            throw new AssertionError(a + " or " + b + " cannot be read", e);
+        }
+    }
+
+    /**
+     * The course's own cylinder with its normals negated, and its octahedron with each face's vertices reversed
+     * (made from them in memory), are each said to be inside out, naming the face the warning gives as example.
+     */
+    @Test
+    void theCourseModelsTurnedInsideOutAreSaidToBe() throws IOException, SceneException {
+        StringBuilder cylinder = new StringBuilder();
+        for (String line : Files.readAllLines(courseFile("course-simp-a4/cylinder.obj"))) {
+            String[] w = line.trim().split("\\s+");
+            cylinder.append(w[0].equals("vn") ? "vn " + -Double.parseDouble(w[1]) + " " + -Double.parseDouble(w[2])
+                    + " " + -Double.parseDouble(w[3]) : line).append('\n');
+        }
+        StringBuilder octahedron = new StringBuilder();
+        for (String line : Files.readAllLines(courseFile("course-simp-a4/octohedron.obj"))) {
+            String[] w = line.trim().split("\\s+");
+            octahedron.append(w[0].equals("f") ? "f " + w[3] + " " + w[2] + " " + w[1] : line).append('\n');
+        }
+        assertEquals(List.of("cylinder.obj:25"), insideOut("cylinder.obj", cylinder.toString()));
+        assertEquals(List.of("octohedron.obj:8"), insideOut("octohedron.obj", octahedron.toString()));
+    }
+
+    /** The places the inside-out warnings of the model {@code text} name. */
+    private static List<String> insideOut(String name, String text) throws SceneException {
+        return ObjReader.stream(Path.of(name), text.getBytes(StandardCharsets.UTF_8), face -> { })
+                .warnings().stream().filter(w -> w.contains(": the model is inside out"))
+                .map(w -> w.substring(0, w.indexOf(": the model is inside out"))).collect(Collectors.toList());
     }
 }

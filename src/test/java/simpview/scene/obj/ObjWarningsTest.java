@@ -251,4 +251,64 @@ class ObjWarningsTest {
         assertEquals(List.of("model.obj: no f lines, so nothing is drawn (3 lines read: only blank lines and"
                 + " comments)"), warnings("\f\n# page two\n \f\t\f\n"));
     }
+
+    // ---- models inside out -----------------------------------------------------------------------
+
+    /** A tetrahedron, (0, 0, 0) and the three unit points, and its normals pointing out of it. */
+    private static final String TETRA = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+            + "vn 0 0 -1\nvn 0 -1 0\nvn -1 0 0\nvn 1 1 1\n";
+    /** Its faces counter-clockwise seen from outside, each vertex with the face's normal (lines 9 to 12). */
+    private static final String OUTWARD = "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1//3 4//3 3//3\nf 2//4 3//4 4//4\n";
+    /** The same faces listed clockwise. */
+    private static final String CLOCKWISE = "f 1//1 2//1 3//1\nf 1//2 4//2 2//2\nf 1//3 3//3 4//3\nf 2//4 4//4 3//4\n";
+    private static final String DARK = "so point lights outside it light nothing there: it shows black, or the ambient"
+            + " light alone: ";
+
+    private static String negated(String model) {
+        return model.replace("vn 0 0 -1\nvn 0 -1 0\nvn -1 0 0\nvn 1 1 1", "vn 0 0 1\nvn 0 1 0\nvn 1 0 0\nvn -1 -1 -1");
+    }
+
+    private static String withoutNormals(String faces) {
+        return faces.replaceAll("//[0-9]", "");
+    }
+
+    /**
+     * A closed model whose vn normals point into it, its faces wound as seen from outside: every face has its
+     * normals against its front, so point lights outside light nothing; one warning names the first face and says
+     * to negate the normals. Not when its normals point out, nor when one face of many has a normal turned.
+     */
+    @Test
+    void aModelWhoseNormalsPointIntoItIsNamedOnce() throws SceneException {
+        assertEquals(List.of("model.obj:9: the model is inside out: its vn normals point against the front of 4 of"
+                + " the 4 faces whose vertices all have one (this face the first), the side from which a face's"
+                + " vertices run counter-clockwise, and SPEC lights a face by its normals, " + DARK + "negate the vn"
+                + " lines (vn x y z becomes vn -x -y -z)"), warnings(negated(TETRA) + OUTWARD));
+        assertEquals(List.of(), warnings(TETRA + OUTWARD));
+        assertEquals(List.of(), warnings(TETRA + OUTWARD.replace("f 1//1 3//1 2//1", "f 1//4 3//4 2//4")));
+    }
+
+    /**
+     * A closed model whose faces are listed clockwise as seen from outside and that has no normals: each face is
+     * lit on its front, its inside; one warning names the first face and says to reverse the faces. With vn
+     * normals pointing out it is lit right, and not named; with normals pointing in along the faces, both are
+     * to be turned. A flat model, which has no inside, is not named either way round.
+     */
+    @Test
+    void aModelListedClockwiseIsNamedOnce() throws SceneException {
+        assertEquals(List.of("model.obj:9: the model is inside out: its faces are listed clockwise as seen from"
+                + " outside (the fronts of 100 % of its surface, weighted by distance from its centre, face inward;"
+                + " this face the first), and a face without vn normals is lit on its front, the side from which its"
+                + " vertices run counter-clockwise, " + DARK + "reverse the order of each f line's vertices"
+                + " (f 1 2 3 becomes f 3 2 1)"), warnings(TETRA + withoutNormals(CLOCKWISE)));
+        assertEquals(List.of(), warnings(TETRA + withoutNormals(OUTWARD)));
+        assertEquals(List.of(), warnings(TETRA + CLOCKWISE));
+        assertEquals(List.of("model.obj:9: the model is inside out: its faces are listed clockwise as seen from"
+                + " outside (the fronts of 100 % of its surface, weighted by distance from its centre, face inward;"
+                + " this face the first), and its vn normals point inward with them, " + DARK + "reverse the order of"
+                + " each f line's vertices and negate the vn lines (vn x y z becomes vn -x -y -z)"),
+                warnings(negated(TETRA) + CLOCKWISE));
+        String square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+        assertEquals(List.of(), warnings(square + "f 1 2 3\nf 1 3 4\n"));
+        assertEquals(List.of(), warnings(square + "f 3 2 1\nf 4 3 1\n"));
+    }
 }
