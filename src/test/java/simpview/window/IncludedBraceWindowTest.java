@@ -22,8 +22,8 @@ public class IncludedBraceWindowTest extends WindowTestCase {
         Path scene = Files.writeString(dir.resolve("scene.simp"),
                 "{\n  translate 0 0 -50\n  file \"parts/open\"\n}\npolygon (-60, -60, -20) (-40, -60, -20) (-50, -40, -20)\n");
         SimpviewWindow window = openWindowOn(scene);
-        String named = "open.simp:1: this '{' is still open at the end of open.simp, so the '}' at scene.simp:4 closes"
-                + " it";
+        String named = "parts/open.simp:1: this '{' is still open at the end of parts/open.simp, so the '}' at"
+                + " scene.simp:4 closes it";
         driver.awaitEdt(() -> !window.busy() && window.status().messageText().contains(named),
                 "the status to name the part's '{': " + driver.onEdt(() -> window.status().messageText()));
         assertEquals(2, driver.onEdt(() -> window.shown()).warnings().size(), "and the scene's '{' left open");

@@ -64,6 +64,8 @@ final class FileStack implements AutoCloseable {
     private long linesOfFinishedFiles;
     /** The top file's size when it was opened, for the share of it read so far. */
     private long topFileBytes;
+    /** The top file's folder, absolute, without "." and "x/..": what {@link #shown} names files from. */
+    private Path topFolder;
 
     FileStack() {
         this(SMALL_FILE);
@@ -93,7 +95,24 @@ final class FileStack implements AutoCloseable {
         Resolved top = resolve(file, null, problem -> new SceneException(file, 0, 0, "",
                 problem.startsWith("file not found") ? problem + alsoLooked : problem));
         topFileBytes = top.stamp.size();
+        topFolder = file.toAbsolutePath().normalize().getParent();
         push(open(file, top), top);
+    }
+
+    /**
+     * A file as the scene's messages name it at their start ("parts/car.simp:3"): by its path from the top
+     * file's folder when it lies there or below, so a scene of one folder (the course's) names its files by
+     * their names alone and a part in a folder of its own by that folder too, whichever folder simpview runs
+     * in; else by its path as it was opened, without "." and "x/.." (relative stays relative), as an error
+     * names the file at fault ({@link SceneException}). Never by the name alone when two folders' files of
+     * that name could be meant.
+     */
+    String shown(Path file) {
+        Path absolute = file.toAbsolutePath().normalize();
+        if (topFolder != null && absolute.startsWith(topFolder) && !absolute.equals(topFolder)) {
+            return topFolder.relativize(absolute).toString().replace('\\', '/');
+        }
+        return file.normalize().toString();
     }
 
     /**
@@ -311,10 +330,10 @@ final class FileStack implements AutoCloseable {
         return located.path;
     }
 
-    /** "file:line" of the command being carried out, for messages. */
+    /** "file:line" of the command being carried out, for messages: the file as {@link #shown} names it. */
     String place() {
         SimpReader r = top();
-        return r.file().getFileName() + ":" + r.lineNumber();
+        return shown(r.file()) + ":" + r.lineNumber();
     }
 
     /** Notes a file the scene read or looked for, once. */

@@ -203,12 +203,16 @@ final class LitRules implements RuleSet {
             throw wholeModel(c, file, e);
         }
         if (firstClampedColour == null && counts.firstClampedColour() > 0) {
-            firstClampedColour = file.getFileName() + ":" + counts.firstClampedColour();
+            firstClampedColour = files.shown(file) + ":" + counts.firstClampedColour();
         }
-        modelWarnings.addAll(counts.warnings());
+        // the reader names the model by its file name alone (it knows no scene): the scene names it as its files
+        String bare = String.valueOf(file.getFileName());
+        for (String w : counts.warnings()) {
+            modelWarnings.add(w.startsWith(bare + ":") ? files.shown(file) + w.substring(bare.length()) : w);
+        }
         if (firstNonFinite.justCounted()) {
-            firstNonFinite.noteAs(file.getFileName() + ":" + geometry.firstNonFiniteLine() + " face (of the model drawn by "
-                    + files.place() + " obj)");
+            firstNonFinite.noteAs(files.shown(file) + ":" + geometry.firstNonFiniteLine()
+                    + " face (of the model drawn by " + files.place() + " obj)");
         }
         return true;
     }

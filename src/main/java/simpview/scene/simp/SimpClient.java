@@ -261,8 +261,8 @@ public final class SimpClient {
      * '{': one '}' too many there).
      */
     private String closedAcross(SimpReader opened, int at, SimpReader here) {
-        Path openedName = opened.file().getFileName();
-        Path hereName = here.file().getFileName();
+        String openedName = files.shown(opened.file());
+        String hereName = files.shown(here.file());
         String open = openedName + ":" + at;
         String close = hereName + ":" + here.lineNumber();
         if (!files.reading(opened)) {
@@ -385,7 +385,7 @@ public final class SimpClient {
         }
         int open = matrices.depth();
         if (open > 0) {
-            w.add(openedIn[0].file().getFileName() + ":" + openedAt[0]
+            w.add(files.shown(openedIn[0].file()) + ":" + openedAt[0]
                     + ": '{' never closed by the end of the scene" + (open > 1 ? ", nor the " + (open - 1)
                     + " opened after it" : ""));
         }

@@ -197,6 +197,28 @@ class ScenePipelineTest {
     }
 
     /**
+     * A scene whose parts lie in folders of their own, two of them a part.simp, names each file in its warnings
+     * by its path from the scene's folder, as the scene's file commands name them: never by the name alone,
+     * which both part.simp files share. The scene's own file, in that folder, is named alone.
+     */
+    @Test
+    void warningsNameFilesFromTheScenesFolder() throws Exception {
+        Files.createDirectories(dir.resolve("a"));
+        Files.createDirectories(dir.resolve("b"));
+        write("a/part.simp", "polygon (0, 0, -10, 2, 0, 0) (10, 0, -10, 0, 0, 0) (0, 10, -10, 0, 0, 0)");
+        write("b/part.simp", "obj \"part\"", "{");
+        write("b/part.obj", "v 0 0 -10", "v 1 1 -10", "v 2 2 -10", "f 1 2 3");
+        Path scene = write("scene.simp", "ambient 1 1 1", "file \"a/part\"", "file \"b/part\"", "{",
+                "polygon (0, 0, -300) (1, 0, -300) (0, 1, -300)", "}");
+        draw(scene, new PageCanvas(), ScenePipeline.Rules.BY_COMMANDS);
+        List<String> places = new ArrayList<>();
+        for (String w : warnings) {
+            places.add(w.substring(0, w.indexOf(": ")));
+        }
+        assertEquals(List.of("b/part.obj:4", "a/part.simp:1", "b/part.simp:2"), places, String.join("\n", warnings));
+    }
+
+    /**
      * A depth-cued polygon whose vertices all lie outside the view, but none wholly beyond one side, is not culled:
      * drawn, the scissor dropping each pixel. When it misses the view round a corner, nothing of it shows, and a
      * scene of nothing else says so, and where it lies, as a culled one's does; one that covers part of the view

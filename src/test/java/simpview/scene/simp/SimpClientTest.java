@@ -188,9 +188,9 @@ class SimpClientTest {
         scene.write("parts/open", "{", "  translate 3 0 0", "  line (0,0,-1) (1,1,-1)");
         scene.write("s", "{", "  translate 0 0 -10", "  file \"parts/open\"", "}", "line (0,0,-1) (1,1,-1)");
         scene.run("s");
-        assertEquals(List.of("open.simp:1: this '{' is still open at the end of open.simp, so the '}' at s.simp:4"
-                + " closes it, not the '{' it was written for: each file closes the '{' it opens; is a '}' missing at"
-                + " the end of open.simp?", "s.simp:1: '{' never closed by the end of the scene"), scene.warnings);
+        assertEquals(List.of("parts/open.simp:1: this '{' is still open at the end of parts/open.simp, so the '}' at"
+                + " s.simp:4 closes it, not the '{' it was written for: each file closes the '{' it opens; is a '}'"
+                + " missing at the end of parts/open.simp?", "s.simp:1: '{' never closed by the end of the scene"), scene.warnings);
         assertPanelVertex(0, 0, -11, scene.lines.get(1)[0]);
     }
 
