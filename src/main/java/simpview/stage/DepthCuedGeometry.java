@@ -34,6 +34,11 @@ public final class DepthCuedGeometry implements GeometryStage {
     private long roundACorner;
     /** The sides every one of those reaches beyond (see {@link #clippedAwayOutside}). */
     private int roundACornerOutside;
+    /**
+     * Whether a primitive has been found that reaches the view: then the scene cannot have drawn nothing, the
+     * only case in which {@link #roundACorner} is told, and no more primitives are looked at for it.
+     */
+    private boolean someReachTheView;
     private final Clipper looker = new Clipper(3);
     /** Primitives not drawn because a vertex of theirs is not finite in camera space, or on the panel. */
     private long nonFinite;
@@ -93,8 +98,12 @@ public final class DepthCuedGeometry implements GeometryStage {
      * outside the view is clipped to see: most have none.
      */
     private void noteRoundACorner(int count) {
+        if (someReachTheView) {
+            return;
+        }
         int reaches = VIEW.outsideAny(camera, 3, count);
         if (reaches == 0) {
+            someReachTheView = true;
             return;
         }
         Camera grown = Camera.PARALLEL_AND_A_PIXEL;
@@ -102,6 +111,8 @@ public final class DepthCuedGeometry implements GeometryStage {
                 : looker.clipPolygon(grown, camera, 0, 3) < 3;
         if (missed) {
             roundACornerOutside = roundACorner++ == 0 ? reaches : roundACornerOutside & reaches;
+        } else {
+            someReachTheView = true;
         }
     }
 
@@ -184,7 +195,10 @@ public final class DepthCuedGeometry implements GeometryStage {
         return culledOutside;
     }
 
-    /** Primitives not culled that lie round a corner of the view, a pixel or more outside it: none of them shows. */
+    /**
+     * Primitives not culled that lie round a corner of the view, a pixel or more outside it: none of them shows.
+     * Counted only until a primitive is found that reaches the view, when the count can no longer be told.
+     */
     @Override
     public long clippedAwayCount() {
         return roundACorner;
