@@ -203,14 +203,22 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
      * when the picture or its scene is not where the row says (a picture named in another way).
      */
     private String compareCommand(BatchRow row) {
-        boolean ownVerdict = rubric == null && !Files.isRegularFile(dir.resolve(FOLDER_RUBRIC));
-        String verdict = ownVerdict
-                ? pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold") : "";
-        // the first assignment's pages are compared without slack: --deviation does not go with them
-        String firstVerdict = ownVerdict ? pictures.typedOptions("--tolerance", "--min", "--metric", "--flip-threshold")
-                : "";
+        Path rules = rubric != null ? rubric : Files.isRegularFile(dir.resolve(FOLDER_RUBRIC))
+                ? dir.resolve(FOLDER_RUBRIC) : null;
+        // the rubric is read over the options as typed, as here: the picture alone is judged by its page's rule
+        String verdict = pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold")
+                + rubricOption(rules);
+        // the first assignment's pages are compared without slack: --deviation does not go with them; a page of them
+        // alone is judged by the command line's rule, not a rubric's
+        String firstVerdict = rules == null ? pictures.typedOptions("--tolerance", "--min", "--metric",
+                "--flip-threshold") : "";
         return compareCommand(dir, scene, row, pictures.drawingOptions() + verdict,
                 pictures.typedOptions("--seed", "--a1-rule") + firstVerdict);
+    }
+
+    /** " --rubric F.json" of the rubric a batch was judged by, as a shell reads it back; "" for none. */
+    private static String rubricOption(Path rules) {
+        return rules == null ? "" : " --rubric " + ArgumentLine.shellWord(rules.toString());
     }
 
     /**
@@ -301,7 +309,8 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
                     : " --simp-dir " + ArgumentLine.shellWord(context.simpDir().toString());
             String rule = context.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + context.a1Rule().key();
             CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors,
-                    true).nextSteps(row -> compareCommand(folder, null, row, simpDir + seed, seed + rule));
+                    true).nextSteps(row -> compareCommand(folder, null, row, simpDir + seed + rubricOption(rules),
+                            seed + rule));
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }

@@ -1165,7 +1165,7 @@ public final class CompareBatch {
     }
 
     /** The rubric's key of a target: "page6" for page 6, "pageC" for pageC.simp. */
-    private static String key(CompareTarget target) {
+    static String key(CompareTarget target) {
         return target.isPage() ? "page" + target.page() : SubmissionNames.stem(target.scene().getFileName().toString());
     }
 

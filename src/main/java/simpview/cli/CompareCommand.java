@@ -150,8 +150,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     private Double flipThreshold;
 
     @Option(names = "--rubric", paramLabel = "F.json",
-            description = "with --dir: per page or pattern, the tolerance, deviation, minimum share, failing-pixel "
-                    + "limit, points and accepted alternates (see docs/grading.md)")
+            description = "per page or pattern, the tolerance, deviation, minimum share, failing-pixel limit, points and "
+                    + "accepted alternates (see docs/grading.md); one picture: judged by its page's or scene's rule")
     private Path rubric;
 
     @Option(names = "--gradescope", paramLabel = "results.json", description = "with --dir: write Gradescope's results.json")
@@ -243,10 +243,17 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                 }
                 return pages != null ? batch.pages(graded, pages, outputs) : batch.scenes(graded, scene, outputs);
             }
+            Rubric judged;
+            try {
+                judged = rubricOf(rubric, verdictRule());
+            } catch (CompareException e) {
+                err().println("simpview compare: " + e.getMessage());
+                return ExitCode.USAGE_ERROR;
+            }
             // the other pages a failing picture may be of, drawn only if it fails, their scenes' warnings unsaid
             OtherPages others = new OtherPages(
                     () -> pictures.ownPictures(parent.ownScenes(), SceneMonitor.NONE, drawing), own.context());
-            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene), others);
+            return compareOne(own, page != null ? CompareTarget.page(page) : CompareTarget.scene(scene), others, judged);
         }
     }
 
@@ -276,13 +283,15 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             usage(page != null || scene != null, "say what to compare with: --page N or --scene F.simp");
             usage(page == null || scene == null, "give --page N or --scene F.simp, not both");
             usage(pages == null && outDir == null, "--pages and --out-dir go with --dir");
-            usage(rubric == null && gradescope == null && junit == null && html == null && !partial
+            usage(gradescope == null && junit == null && html == null && !partial
                     && diffs == CompareBatch.DiffImages.ALL,
-                    "--rubric, --gradescope, --junit, --html, --diffs and --partial go with --dir");
+                    "--gradescope, --junit, --html, --diffs and --partial go with --dir");
+            usage(rubric == null || !first, "--rubric goes with one picture of the eight pages or a scene, or with --dir: "
+                    + "a page of the first assignment alone is judged by the command line's rule");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
             usage(diff == null || PngFiles.isPngName(diff), "--diff " + diff + ": " + PngFiles.PNG_ONLY);
             files = new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene")
-                    .writes(diff, "--diff");
+                    .reads(rubric, "the rubric").writes(diff, "--diff");
         }
         usage(assignment == null || assignment == 1 || assignment == 2, "--assignment must be 1 or 2, not " + assignment);
         usage(!first || batch || page != null,
@@ -326,7 +335,12 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         }
     }
 
-    private int compareOne(OwnPictures own, CompareTarget target, OtherPages others) {
+    /**
+     * One picture against its page or scene, judged by {@code judged}'s rule for it (the command line's alone
+     * without --rubric), as a batch judges it against simpview's own picture.
+     */
+    private int compareOne(OwnPictures own, CompareTarget target, OtherPages others, Rubric judged) {
+        RubricRule rule = judged.ruleFor(CompareBatch.key(target), target.isPage() ? target.page() : 0);
         Picture theirs;
         Picture ours;
         try {
@@ -349,21 +363,26 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         // The hint's search reads the two panels only, as the comparison does: it runs beside it, on the second
         // core, so that a wrong picture costs the command no more time than a right one (its 60 ms, cold).
         FutureTask<SystematicError> hint = new FutureTask<>(
-                () -> SystematicError.find(ours.panel(), theirs.panel(), Comparison.N, tolerance));
+                () -> SystematicError.find(ours.panel(), theirs.panel(), Comparison.N, rule.tolerance()));
         Thread hinting = new Thread(hint, "simpview-compare-hint");
         hinting.setDaemon(true);
         hinting.start();
-        Comparison comparison = Comparison.of(ours.panel(), theirs.panel(), deviation, metric, flipThreshold());
-        ComparisonReport report = ComparisonReport.of(theirs, own.describe(target), comparison, tolerance, min,
-                awaitHint(hint));
+        Comparison comparison = rule.compare(ours.panel(), theirs.panel(), Comparison.N);
+        ComparisonReport report = ComparisonReport.of(theirs, own.describe(target), comparison, rule, awaitHint(hint));
         // a picture that fails and no mistake explains may be another page, its file named for the wrong one
         OtherPage other = report.passes() || report.systematic() != null || !target.isPage() ? null
-                : others.ofEight(target.page(), theirs.panel(), verdictRule());
+                : others.ofEight(target.page(), theirs.panel(), rule);
         PrintWriter out = spec.commandLine().getOut();
+        if (rubric != null) {
+            out.println("rubric:  " + rubric + ", " + ("*".equals(rule.match()) ? "its defaults (no rule names "
+                    + CompareBatch.key(target) + ")" : "its rule \"match\": \"" + rule.match() + "\"")
+                    + (rule.alternates() == null ? "" : "; its accepted alternates (" + rule.alternates() + ") are "
+                            + "tried by --dir and check only"));
+        }
         out.print(report.text());
         String inspect = inspectCommand(target, report.lookAt());
         if (inspect != null) {
-            out.println("next:    " + inspect + " (how simpview made that pixel, term by term)");
+            nextStep(out, "how simpview made that pixel, term by term", inspect);
         }
         if (other != null) {
             out.println("hint: " + other.hint(Comparison.N));
@@ -371,10 +390,10 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         sayFormat(out, report.passes(), theirs.format());
         if (diff != null) {
             try {
-                PngFiles.writeEncoded(HeatMap.diffPng(comparison, tolerance), diff);
+                PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diff);
                 files.wrote(diff);
                 out.println("diff:    " + diff + " (ours | theirs | heat map: grey identical, blue within "
-                        + tolerance + "/255, yellow one pixel off, red different)");
+                        + rule.tolerance() + "/255, yellow one pixel off, red different)");
             } catch (IOException e) {
                 err().println("simpview compare: " + e.getMessage());
                 return ExitCode.SCENE_ERROR;
@@ -568,10 +587,20 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         int pageY = PageCanvas.SIZE - 1 - (A1Layout.top(panel) + A1Layout.PANEL - 1 - look.y());
         out.println("look:    " + look.describe("panel " + panel + " (" + panelName(shown, worst) + ") x " + look.x()
                 + ", y " + look.y() + " (page x " + pageX + ", y " + pageY + ")"));
-        out.println("next:    simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule")
-                + " --at " + pageX + "," + pageY + " (the page's pixel: the " + (shown instanceof LineTestPage
-                        ? "lines that wrote it, or wrote beside it" : "triangles that wrote it and why its centre is in "
-                        + "or out of each") + ")");
+        nextStep(out, shown instanceof LineTestPage ? "the lines that wrote the page's pixel, or wrote beside it"
+                : "the triangles that wrote the page's pixel and why its centre is in or out of each",
+                "simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule") + " --at "
+                        + pageX + "," + pageY);
+    }
+
+    /**
+     * The command to run next, on a line of its own that ends with it ({@code next:    simpview inspect ...}), so that
+     * all of the line after its label pastes into a shell whole; {@code why}, what it shows, on the line above it,
+     * in the same column.
+     */
+    private static void nextStep(PrintWriter out, String why, String command) {
+        out.println("         " + why + ":");
+        out.println("next:    " + command);
     }
 
     /** The rule each of the first assignment's panels is judged by here: the command line's, without slack. */

@@ -48,9 +48,15 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
 
     /** Judged by a rubric's rule (its tolerance, minimum share and pixel limit; the comparison made with its deviation). */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule) {
+        return of(theirs, against, comparison, rule, SystematicError.find(comparison, rule.tolerance()));
+    }
+
+    /** The same, with the hint found already ({@link SystematicError#find} of the same panels and the rule's tolerance). */
+    public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule,
+            SystematicError systematic) {
         return new ComparisonReport(theirs, against, comparison, theirs.margins(rule.tolerance()),
                 DiffRegions.of(comparison, rule.tolerance(), REGIONS_LISTED), rule.tolerance(), rule.minShare(),
-                rule.maxFailing(), SystematicError.find(comparison, rule.tolerance()));
+                rule.maxFailing(), systematic);
     }
 
     /** The share the verdict is on: within the tolerance, with slack; with FLIP, at most FLIP's threshold. */

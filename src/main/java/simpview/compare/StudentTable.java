@@ -33,9 +33,10 @@ public final class StudentTable {
     }
 
     /**
-     * The same, with a line after the notes for each failing picture (of a page, a scene, or the first assignment's
-     * page of panels, once however many of its panels fail) for which {@code nextStep} gives a command: the one that
-     * compares that picture alone and says where and why it differs ("next: page-c3.png: simpview compare ...").
+     * The same, with two lines after the notes for each failing picture (of a page, a scene, or the first assignment's
+     * page of panels, once however many of its panels fail) for which {@code nextStep} gives a command: the picture
+     * and what the command shows, then the command, the one that compares that picture alone and says where and why
+     * it differs ({@code next: simpview compare page-c3.png ...}), which is all of its line after the label.
      */
     public static String text(List<BatchRow> rows, List<Wanted> missing, Function<BatchRow, String> nextStep) {
         List<String[]> lines = new ArrayList<>();
@@ -99,10 +100,12 @@ public final class StudentTable {
                     ? nextStep.apply(row) : null;
             if (command != null) {
                 told.add(row.file());
-                out.append("next: ").append(row.file()).append(": ").append(command)
-                        .append(isPanel(row) ? " (the pixel to look at first, in the panel that fails most, and how "
-                                + "simpview made it)\n"
-                                : " (the pixel to look at first, and how simpview made it)\n");
+                // what the command shows on a line of its own above it, so that all of the next: line after its
+                // label pastes into a shell whole
+                out.append("      ").append(row.file()).append(isPanel(row)
+                        ? ": the pixel to look at first, in the panel that fails most, and how simpview made it:\n"
+                        : ": the pixel to look at first, and how simpview made it:\n");
+                out.append("next: ").append(command).append('\n');
             }
         }
         long skipped = rows.stream().filter(r -> r.result() == BatchRow.Result.SKIPPED).count();
