@@ -2,9 +2,10 @@ package simpview.compare;
 
 /**
  * One pixel to look at first: of the largest patch that differs, the pixel
- * whose colour is farthest from simpview's (without slack), and which way
- * the patch's pixels differ, brighter or darker. A student who asks how
- * simpview made that one pixel ({@code simpview inspect --at X,Y --explain})
+ * whose colour is farthest from simpview's (without slack; with the FLIP
+ * metric, of the patch FLIP fails, the pixel of another colour whose FLIP
+ * value is highest), and which way the patch's pixels differ, brighter or
+ * darker. A student who asks how simpview made that one pixel ({@code simpview inspect --at X,Y --explain})
  * sees the terms their own renderer must have got otherwise there.
  *
  * @param x the pixel's x in panel coordinates (right from the panel's left column)
@@ -19,14 +20,19 @@ public record WorstPixel(int x, int y, int ours, int theirs, int brighter, int d
 
     /**
      * The pixel of {@code patch} (a patch of {@code comparison} beyond {@code tolerance}) that differs most, the
-     * first from the top-left of those that differ as much; or null when no pixel in the patch's box fails.
+     * first from the top-left of those that differ as much; or null when no pixel in the patch's box fails. With the
+     * FLIP metric a pixel fails by its FLIP value, and the one that differs most is the one FLIP rates highest (the
+     * one the verdict fails on most; the colour farthest from simpview's may be one the eye sees little of) of those
+     * whose colour is not simpview's: FLIP also fails the pixels beside one that differs, and a pixel of simpview's
+     * own colour is no place to look.
      */
     public static WorstPixel in(Comparison comparison, DiffRegion patch, int tolerance) {
         int n = comparison.size();
         int[] ours = comparison.ours();
         int[] theirs = comparison.theirs();
+        boolean flip = comparison.metric() == Comparison.Metric.FLIP;
         int best = -1;
-        int worst = -1;
+        double worst = -1;
         int brighter = 0;
         int darker = 0;
         int differing = 0;
@@ -43,8 +49,10 @@ public record WorstPixel(int x, int y, int ours, int theirs, int brighter, int d
                 } else if (way < 0) {
                     darker++;
                 }
-                if (comparison.distance(i) > worst) {
-                    worst = comparison.distance(i);
+                // with FLIP, a pixel of simpview's colour (failed for its neighbour) comes after every other
+                double by = !flip ? comparison.distance(i) : comparison.distance(i) == 0 ? -0.5 : comparison.flip(i);
+                if (by > worst) {
+                    worst = by;
                     best = i;
                 }
             }
