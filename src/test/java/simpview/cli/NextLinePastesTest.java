@@ -80,13 +80,16 @@ class NextLinePastesTest {
         assertEquals(ExitCode.OK, inspect.exitCode(), command + "\n" + inspect.err());
     }
 
-    /** A compare command of a next: line runs whole, fails as its batch said, and gives an inspect line of its own. */
+    /**
+     * A compare command of a next: line runs whole, fails as its batch said, and gives an inspect line of its own
+     * (run as {@link CompareNextStepTest} runs it).
+     */
     private void compareRunsAndFails(String command) {
         assertTrue(command.startsWith("simpview compare "), command);
         CliRun alone = runPasted(command);
         assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), command + "\n" + alone.out() + alone.err());
         assertTrue(alone.out().contains("\nFAIL: "), alone.out());
-        nextCommands(alone.out()).forEach(this::inspectRuns);
+        assertTrue(nextCommands(alone.out()).get(0).startsWith("simpview inspect --page 4 --at "), alone.out());
     }
 
     @Test
@@ -131,8 +134,8 @@ class NextLinePastesTest {
         // the folder's own compare.json, as a folder dropped on the window is judged
         Files.copy(rubric, folder.resolve("compare.json"));
         List<String> window = nextCommands(CheckCommand.checkFolder(folder, PageContext.defaults()));
-        assertTrue(window.get(0).contains(" --rubric " + folder.resolve("compare.json") + " "), window.get(0));
-        compareRunsAndFails(window.get(0));
+        assertEquals(commands.get(0).replace(rubric.toString(), folder.resolve("compare.json").toString()),
+                window.get(0), "the command check printed, with the folder's rubric: run above");
     }
 
     /** One picture judged by the rubric's rule for its page; --rubric no longer needs --dir. */
