@@ -42,11 +42,14 @@ import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Count;
+import simpview.compare.FillRule;
+import simpview.compare.FlooredEnds;
 import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
 import simpview.compare.LineEnds;
+import simpview.compare.OctantLines;
 import simpview.compare.OnePerPage;
 import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
@@ -65,10 +68,12 @@ import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
 import simpview.pages.A1Lines;
 import simpview.pages.A1Page;
+import simpview.pages.A1Polygons;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
+import simpview.pages.PolygonTestPage;
 import simpview.pages.SceneList;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
@@ -1415,13 +1420,23 @@ public final class CompareBatch {
         long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
         StringBuilder looks = new StringBuilder();
         PanelHint said = null;
+        Set<Integer> saidAlike = new HashSet<>(); // panels said with an earlier panel that looks the same
         for (int k = 0; k < rows.size(); k++) {
             PanelHint hint = rows.get(k).panelHint();
-            if (hint != null && hint != said) { // a page turned whole is one hint for its panels
-                looks.append(hint.wholePage() ? "; looks " : "; panel " + (k + 1) + " looks ")
-                        .append(hint.brief());
-                said = hint;
+            if (hint == null || hint == said || saidAlike.contains(k)) { // a page turned whole: one hint for its panels
+                continue;
             }
+            List<Integer> alike = new ArrayList<>(List.of(k + 1));
+            for (int j = k + 1; j < rows.size() && !hint.wholePage(); j++) {
+                PanelHint other = rows.get(j).panelHint();
+                if (other != null && !other.wholePage() && other.brief().equals(hint.brief())) {
+                    alike.add(j + 1);
+                    saidAlike.add(j);
+                }
+            }
+            looks.append(hint.wholePage() ? "; looks " : "; " + StudentTable.panels(alike)
+                    + (alike.size() > 1 ? " look " : " looks ")).append(hint.brief());
+            said = hint;
         }
         // a note of the picture (its format) is said once, not for each panel
         rows.stream().flatMap(r -> r.briefNotes().stream()).distinct().forEach(note -> looks.append("; ").append(note));
@@ -1565,7 +1580,7 @@ public final class CompareBatch {
         // the hints by panel 1's tolerance: a page turned whole is one hint for its four panels
         PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL, PageCanvas.SIZE,
                 firstAssignmentRule(page, 1).tolerance(), Assignment1.page(page).panelNames());
-        lineEnds(hints, Assignment1.page(page), own.context().seed(), cut.ours(), cut.theirs(),
+        firstAssignmentHints(hints, Assignment1.page(page), own.context(), cut.ours(), cut.theirs(),
                 firstAssignmentRule(page, 1).tolerance());
         for (int k = 1; k <= A1Layout.PANELS; k++) {
             RubricRule rule = firstAssignmentRule(page, k);
@@ -1612,23 +1627,48 @@ public final class CompareBatch {
     }
 
     /**
-     * On a page of lines, each of the DDA, Bresenham and alternating panels that no other hint explains and whose
-     * differing pixels are mostly its lines' ends or one past them gets that hint ({@link LineEnds}), passing or
-     * not: a line a pixel short passes, and the student would not learn of it. The antialiased panel of white
-     * lines gets its levels on and beside a line told when they are not simpview's ({@link AntialiasWeighting}).
+     * The first assignment's own hints, for each panel that no other hint explains, passing or not (a line a pixel
+     * short passes, and the student would not learn of it). On a page of lines, the DDA, Bresenham and alternating
+     * panels: lines drawn with floored ends ({@link FlooredEnds}), differing pixels that are mostly the lines' ends or
+     * one past them ({@link LineEnds}), or lines that differ in some octants only ({@link OctantLines}); the
+     * antialiased panel: floored ends, or its levels on and beside a line told when they are not simpview's
+     * ({@link AntialiasWeighting}). On a page of polygons, each panel: a fill without the top-left rule
+     * ({@link FillRule}).
      */
-    static void lineEnds(PanelHint[] hints, A1Page shown, long seed, int[][] ours, int[][] theirs, int tolerance) {
-        if (!(shown instanceof LineTestPage page) || hints.length != A1Layout.PANELS) {
+    static void firstAssignmentHints(PanelHint[] hints, A1Page shown, PageContext context, int[][] ours,
+            int[][] theirs, int tolerance) {
+        if (hints.length != A1Layout.PANELS) {
             return;
         }
-        A1Lines lines = page.lines(seed);
+        int n = A1Layout.PANEL;
+        if (shown instanceof PolygonTestPage polygons) {
+            A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
+            for (int k = 0; k < A1Layout.PANELS; k++) {
+                if (hints[k] == null) {
+                    hints[k] = FillRule.find(ours[k], theirs[k], n, tolerance, scenes.scene(k + 1), polygons.ghost());
+                }
+            }
+            return;
+        }
+        if (!(shown instanceof LineTestPage page)) {
+            return;
+        }
+        A1Lines lines = page.lines(context.seed());
+        for (int k = 0; k < A1Layout.PANELS; k++) {
+            if (hints[k] == null) {
+                hints[k] = FlooredEnds.find(ours[k], theirs[k], n, tolerance, k + 1, context.a1Rule(), lines);
+            }
+        }
         for (int k = 0; k < 3; k++) {
             if (hints[k] == null) {
-                hints[k] = LineEnds.find(ours[k], theirs[k], A1Layout.PANEL, tolerance, lines);
+                hints[k] = LineEnds.find(ours[k], theirs[k], n, tolerance, lines);
+            }
+            if (hints[k] == null) {
+                hints[k] = OctantLines.find(ours[k], theirs[k], n, tolerance, lines);
             }
         }
         if (hints[3] == null) {
-            hints[3] = AntialiasWeighting.find(ours[3], theirs[3], A1Layout.PANEL, tolerance, lines);
+            hints[3] = AntialiasWeighting.find(ours[3], theirs[3], n, tolerance, lines);
         }
     }
 

@@ -522,7 +522,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         }
         PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, tolerance,
                 shown.panelNames());
-        CompareBatch.lineEnds(hints, shown, context.seed(), ourPanels, theirPanels, tolerance);
+        CompareBatch.firstAssignmentHints(hints, shown, context, ourPanels, theirPanels, tolerance);
         // a page that fails as a whole and passes as another of the five: that one hint, of the page
         OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, firstAssignmentRules(panels.length));
         // a page of the student's own random values, which no panel's own mistake explains

@@ -133,6 +133,20 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         return size != Comparison.N && at >= 0 ? target.substring(0, at) : target;
     }
 
+    /** Its panel's number (1, 2, ...) when it is one panel of a page compared panel by panel; 0 else. */
+    public int panel() {
+        int at = target.indexOf(" panel ");
+        if (size == Comparison.N || at < 0) {
+            return 0;
+        }
+        int from = at + " panel ".length();
+        int end = from;
+        while (end < target.length() && Character.isDigit(target.charAt(end))) {
+            end++;
+        }
+        return end > from ? Integer.parseInt(target.substring(from, end)) : 0;
+    }
+
     /** Whether it counts: it is the picture of its page that is scored in its submission (or was skipped). */
     public boolean counts() {
         return notCounted.isEmpty();

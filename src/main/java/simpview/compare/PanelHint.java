@@ -11,10 +11,12 @@ import java.util.List;
  * page turned ({@link WholePage}); or, when the picture fails, another of the assignment's pages
  * ({@link OtherPage}: the file named for the wrong page), or a first-assignment page drawn from the student's
  * own random numbers ({@link RandomValues}), or a line panel whose lines are a pixel short or long
- * ({@link LineEnds}), or an antialiased panel of another weighting ({@link AntialiasWeighting}).
+ * ({@link LineEnds}), drawn with floored ends ({@link FlooredEnds}) or otherwise in some octants
+ * ({@link OctantLines}), or an antialiased panel of another weighting ({@link AntialiasWeighting}), or a polygon
+ * panel filled without the top-left rule ({@link FillRule}).
  */
 public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage, OtherPage, RandomValues,
-        LineEnds, AntialiasWeighting {
+        LineEnds, AntialiasWeighting, FlooredEnds, OctantLines, FillRule {
 
     /** Briefly, to follow "looks": "upside down", "like simpview's panel 4 (antialiased)". */
     String brief();

@@ -72,14 +72,27 @@ public final class StudentTable {
             out.append(one.toString().stripTrailing()).append('\n');
         }
         PanelHint said = null;
-        for (BatchRow row : rows) {
+        Set<Integer> saidAlike = new HashSet<>(); // rows whose hint was said with an earlier panel's
+        for (int r = 0; r < rows.size(); r++) {
+            BatchRow row = rows.get(r);
             PanelHint hint = row.panelHint();
-            if (hint != null && hint != said) { // a page turned whole: one hint for its four panels
-                String which = hint.wholePage() ? row.page() : row.target();
-                out.append("hint: ").append(row.file()).append(" (").append(GradescopeResults.name(which)).append("): ")
-                        .append(hint.hint(row.size())).append('\n');
-                said = hint;
+            if (hint == null || hint == said || saidAlike.contains(r)) { // a page turned whole: one hint for its panels
+                continue;
             }
+            String which = hint.wholePage() ? row.page() : row.target();
+            String text = hint.hint(row.size());
+            List<Integer> alike = hint.wholePage() || row.panel() == 0 ? List.of() : alike(rows, r, saidAlike);
+            if (alike.size() > 1) { // the same mistake in several panels of the picture: said once, for all of them
+                which = row.page() + " " + panels(alike);
+                String first = text;
+                boolean sameWords = alike.stream().allMatch(k -> first.equals(hintOfPanel(rows, row.file(), k)));
+                text = sameWords ? text : text + " The numbers are panel " + alike.get(0) + "'s; "
+                        + panels(alike.subList(1, alike.size())) + (alike.size() == 2 ? " looks" : " look")
+                        + " the same.";
+            }
+            out.append("hint: ").append(row.file()).append(" (").append(GradescopeResults.name(which)).append("): ")
+                    .append(text).append('\n');
+            said = hint;
         }
         Set<String> notes = new LinkedHashSet<>(); // a page of panels: its picture's note (its format) once
         for (BatchRow row : rows) {
@@ -149,6 +162,41 @@ public final class StudentTable {
                 skipped == 0 ? "" : "; " + Count.of(skipped, "other file") + " not checked (each said above)",
                 missing.isEmpty() ? "" : "; " + Count.of(missing.size(), "page") + " without a picture"));
         return out.toString();
+    }
+
+    /**
+     * The panels of row r's picture whose hints look as row r's does (the same {@link PanelHint#brief}), row r's
+     * first; the rows after it so found are added to {@code saidAlike}.
+     */
+    private static List<Integer> alike(List<BatchRow> rows, int r, Set<Integer> saidAlike) {
+        BatchRow row = rows.get(r);
+        List<Integer> panels = new ArrayList<>(List.of(row.panel()));
+        for (int s = r + 1; s < rows.size(); s++) {
+            BatchRow other = rows.get(s);
+            PanelHint hint = other.panelHint();
+            if (other.file().equals(row.file()) && other.panel() > 0 && hint != null && !hint.wholePage()
+                    && hint.brief().equals(row.panelHint().brief())) {
+                panels.add(other.panel());
+                saidAlike.add(s);
+            }
+        }
+        return panels;
+    }
+
+    /** The hint of panel k of the picture {@code file}, in words, or null. */
+    private static String hintOfPanel(List<BatchRow> rows, String file, int k) {
+        return rows.stream().filter(r -> r.file().equals(file) && r.panel() == k && r.panelHint() != null)
+                .map(r -> r.panelHint().hint(r.size())).findFirst().orElse(null);
+    }
+
+    /** "panel 2", "panels 1 and 3", "panels 1-4" (three or more in a row), "panels 1, 2 and 4": k in order. */
+    public static String panels(List<Integer> panels) {
+        if (panels.size() == 1) {
+            return "panel " + panels.get(0);
+        }
+        boolean inARow = panels.get(panels.size() - 1) - panels.get(0) == panels.size() - 1;
+        return "panels " + (inARow && panels.size() > 2 ? panels.get(0) + "-" + panels.get(panels.size() - 1)
+                : Sentence.listed(panels.stream().map(String::valueOf).toList()));
     }
 
     /** Whether a row is one panel of a page compared panel by panel (the first assignment's), not a whole picture. */

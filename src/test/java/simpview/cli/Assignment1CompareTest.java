@@ -474,6 +474,19 @@ class Assignment1CompareTest {
             assertFalse(course.out().contains("hint:"), "no move, turn or swap explains a course's panel: " + course.out());
             assertFalse(course.out().contains("note:"), "the course's panels differ in thin patches only: " + course.out());
         }
+        // the course's pages of random lines and polygons are drawn from other numbers: none is taken for a fill
+        // without the top-left rule, floored ends or a drawer wrong in some octants
+        for (int p = 3; p <= 5; p++) {
+            String course = CourseFiles.require("reference/images/a1/page" + p + ".png").toString();
+            for (String rule : new String[] {"spec", "course"}) {
+                CliRun random = CliRun.of("compare", course, "--assignment", "1", "--page", String.valueOf(p),
+                        "--a1-rule", rule);
+                assertEquals(ExitCode.SCENE_ERROR, random.exitCode(), random.out());
+                for (String other : new String[] {"top-left rule", "look floored", "in some directions only"}) {
+                    assertFalse(random.out().contains(other), random.out());
+                }
+            }
+        }
         CliRun wrong = CliRun.of("compare", page1, "--assignment", "1", "--page", "1", "--a1-rule", "mine");
         assertEquals(ExitCode.USAGE_ERROR, wrong.exitCode());
         assertTrue(wrong.err().contains("--a1-rule must be spec or course, not mine"), wrong.err());
