@@ -267,6 +267,51 @@ class Assignment1CompareTest {
         assertTrue(run.out().contains("; yours look like the coverage put through sRGB's gamma"), run.out());
     }
 
+    /**
+     * The antialiased panels of pages 2 and 3 are measured too. Page 2's white lines lie a pixel apart, so no pixel
+     * on a line is reached by it alone: its level there is measured where one other line reaches too, that line's
+     * share taken out, and its panel blended in
+     * linear light (each level v made sRGB's encoding of v / 255, as white lines blended over black in linear light
+     * give) is told so. Page 3's lines are coloured: each channel encoded so, a level is measured as a share of
+     * its line's brightest channel, and the picture's are above simpview's on the line and beside it.
+     */
+    @Test
+    void theAntialiasedPanelsOfPagesTwoAndThreeAreMeasured() throws Exception {
+        for (int p = 2; p <= 3; p++) {
+            Path page = dir.resolve("a1-page" + p + ".png");
+            assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", String.valueOf(p), "--out",
+                    page.toString()).exitCode());
+            BufferedImage mine = ImageIO.read(page.toFile());
+            for (int y = 400; y < 700; y++) { // panel 4: image rows 400 to 699, columns 400 to 699
+                for (int x = 400; x < 700; x++) {
+                    int rgb = mine.getRGB(x, y);
+                    mine.setRGB(x, y, srgb((rgb >> 16 & 0xFF) / 255.0) << 16 | srgb((rgb >> 8 & 0xFF) / 255.0) << 8
+                            | srgb((rgb & 0xFF) / 255.0));
+                }
+            }
+            ImageIO.write(mine, "png", page.toFile());
+            CliRun run = CliRun.of("compare", page.toString(), "--assignment", "1", "--page", String.valueOf(p));
+            assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+            String hint = p == 2 ? "hint: panel 4: where your white lines overlap, your antialiased levels are "
+                    + "([0-9]+) on the line and ([0-9]+) one pixel beside it, simpview's "
+                    + "([0-9]+) and ([0-9]+) \\("
+                    : "hint: panel 4: where one line alone reaches a pixel, your antialiased levels \\(as shares of "
+                    + "each line's brightest channel, out of 255\\) are ([0-9]+) on the line and ([0-9]+) one pixel "
+                    + "beside it, simpview's ([0-9]+) and ([0-9]+) \\(";
+            Matcher levels = Pattern.compile(hint).matcher(run.out());
+            assertTrue(levels.find(), run.out());
+            int oursOn = Integer.parseInt(levels.group(3));
+            int oursBeside = Integer.parseInt(levels.group(4));
+            assertTrue(Math.abs(oursOn - 209) <= 3 && Math.abs(oursBeside - 23) <= 3, levels.group());
+            assertTrue(Integer.parseInt(levels.group(1)) > oursOn + 8, levels.group());
+            assertTrue(Integer.parseInt(levels.group(2)) > oursBeside + 8, levels.group());
+            if (p == 2) { // beside a line, at the lines' edge, one line alone: its level is the gamma's
+                assertTrue(Math.abs(srgb(oursBeside / 255.0) - Integer.parseInt(levels.group(2))) <= 3, levels.group());
+                assertTrue(run.out().contains("; yours look like the coverage put through sRGB's gamma"), run.out());
+            }
+        }
+    }
+
     /** sRGB's encoding of a linear level c, as a byte. */
     private static int srgb(double c) {
         double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
