@@ -283,7 +283,7 @@ public record AntialiasWeighting(int theirsOn, int oursOn, int theirsBeside, int
             return "the coverage put through sRGB's gamma (" + gammaOn + " and " + gammaBeside + "), as a blend in linear light gives: SPEC blends the levels as they are, c * colour + (1 - c) "
                     + "* old, no gamma";
         }
-        if (theirsOn >= FULL && oursOn < FULL) {
+        if (theirsOn >= FULL && oursOn < FULL && theirsBeside < oursBeside) { // nothing beside: not brighter overall
             return "a full pixel on the line, as a disc of radius 1/2 (it fits inside the slab) or a weight of "
                     + "1 - d gives: SPEC's disc has radius sqrt(2)/2, the one that holds the pixel's square, so a pixel "
                     + "on the line is only 0.818 covered";

@@ -272,8 +272,9 @@ class Assignment1CompareTest {
      * on a line is reached by it alone: its level there is measured where one other line reaches too, that line's
      * share taken out, and its panel blended in
      * linear light (each level v made sRGB's encoding of v / 255, as white lines blended over black in linear light
-     * give) is told so. Page 3's lines are coloured: each channel encoded so, a level is measured as a share of
-     * its line's brightest channel, and the picture's are above simpview's on the line and beside it.
+     * give) is told so. Page 3's lines are coloured: each channel encoded so (a picture put through a gamma at its
+     * end), a level is measured as a share of its line's brightest channel, and the picture's are above simpview's
+     * on the line and beside it.
      */
     @Test
     void theAntialiasedPanelsOfPagesTwoAndThreeAreMeasured() throws Exception {
@@ -305,6 +306,8 @@ class Assignment1CompareTest {
             assertTrue(Math.abs(oursOn - 209) <= 3 && Math.abs(oursBeside - 23) <= 3, levels.group());
             assertTrue(Integer.parseInt(levels.group(1)) > oursOn + 8, levels.group());
             assertTrue(Integer.parseInt(levels.group(2)) > oursBeside + 8, levels.group());
+            // brighter on the line and beside it: not a full pixel on the line, which leaves the pixel beside it dark
+            assertFalse(run.out().contains("a full pixel on the line"), run.out());
             if (p == 2) { // beside a line, at the lines' edge, one line alone: its level is the gamma's
                 assertTrue(Math.abs(srgb(oursBeside / 255.0) - Integer.parseInt(levels.group(2))) <= 3, levels.group());
                 assertTrue(run.out().contains("; yours look like the coverage put through sRGB's gamma"), run.out());
