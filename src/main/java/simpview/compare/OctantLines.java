@@ -170,7 +170,7 @@ public record OctantLines(List<Integer> differingOctants, List<Integer> matching
         }
     }
 
-    /** "octants 2, 3, 6 and 7 (steep lines, |dy| > |dx|)", or "octant 5". */
+    /** The octants in words, their family named where they are one: "octants 2, 3, 6 and 7 (steep lines, ...)". */
     private static String named(List<Integer> octants) {
         String which = (octants.size() == 1 ? "octant " : "octants ")
                 + Sentence.listed(octants.stream().map(String::valueOf).toList());
