@@ -165,8 +165,13 @@ class Assignment1MistakesTest {
                 }
                 int colour = k == 2 ? Colors.toByte(v[0].r()) << 16 | Colors.toByte(v[0].g()) << 8
                         | Colors.toByte(v[0].b()) : 0;
-                for (int y = 0; y < A1Layout.PANEL; y++) {
-                    for (int x = 0; x < A1Layout.PANEL; x++) {
+                // the triangle's box only: its vertices are whole numbers inside the panel
+                int x0 = (int) Math.min(v[0].x(), Math.min(v[1].x(), v[2].x()));
+                int x1 = (int) Math.max(v[0].x(), Math.max(v[1].x(), v[2].x()));
+                int y0 = (int) Math.min(v[0].y(), Math.min(v[1].y(), v[2].y()));
+                int y1 = (int) Math.max(v[0].y(), Math.max(v[1].y(), v[2].y()));
+                for (int y = y0; y <= y1; y++) {
+                    for (int x = x0; x <= x1; x++) {
                         if (onEdge(v, 2 * x + 1, 2 * y + 1)) {
                             mine.setRGB(A1Layout.left(k) + x, A1Layout.top(k) + A1Layout.PANEL - 1 - y, colour);
                         }
