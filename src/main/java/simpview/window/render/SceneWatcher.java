@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -148,6 +149,24 @@ public final class SceneWatcher {
 
     public List<Path> watched() {
         return watched;
+    }
+
+    /**
+     * Returns once the watcher thread has taken every {@link #watch} given
+     * before this call: from then on a save is held against the files as
+     * the picture on screen read them. Before, a save that keeps a file's
+     * size, time and inode (two within one tick of a coarse clock) may be
+     * taken for what was read, its bytes being the first the thread sees.
+     * Not on the EDT.
+     *
+     * @throws InterruptedException when interrupted while waiting
+     */
+    public void awaitWatching() throws InterruptedException {
+        try {
+            thread.submit(() -> { }).get();
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("the watcher thread failed", e.getCause());
+        }
     }
 
     /** Stops looking for good and ends the watcher thread. */
