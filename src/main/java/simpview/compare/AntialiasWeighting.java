@@ -280,8 +280,8 @@ public record AntialiasWeighting(int theirsOn, int oursOn, int theirsBeside, int
     /** What the levels look like, or "" when none of the known weightings. */
     private String looksLike() {
         if (linearLight) {
-            return "the coverage put through sRGB's gamma (" + gammaOn + " and " + gammaBeside + "), as a blend in linear light gives: SPEC blends the levels as they are, c * colour + (1 - c) "
-                    + "* old, no gamma";
+            return "the coverage put through sRGB's gamma (" + gammaOn + " and " + gammaBeside + "), as a blend in "
+                    + "linear light gives: SPEC blends the levels as they are, c * colour + (1 - c) * old, no gamma";
         }
         if (theirsOn >= FULL && oursOn < FULL && theirsBeside < oursBeside) { // nothing beside: not brighter overall
             return "a full pixel on the line, as a disc of radius 1/2 (it fits inside the slab) or a weight of "
@@ -302,11 +302,11 @@ public record AntialiasWeighting(int theirsOn, int oursOn, int theirsBeside, int
         String like = looksLike();
         String where = fitted ? "where your white lines overlap, your antialiased levels are"
                 : coloured ? "where one line alone reaches a pixel, your antialiased levels (as shares of each line's "
-                + "brightest channel, out of 255) are" : "where one line alone reaches a pixel, your antialiased levels are";
-        String how = fitted ? String.format(Locale.ROOT, "medians of %,d pixels within %s of those distances, on a line "
-                + "where one other line reaches too: one minus the level is the product of one minus each line's share, "
-                + "the other's that one line alone gives at its distance", pixels, NARROW) : String.format(Locale.ROOT, "medians of %,d pixels "
-                + "within %s of those distances", pixels, NARROW);
+                        + "brightest channel, out of 255) are"
+                : "where one line alone reaches a pixel, your antialiased levels are";
+        String how = String.format(Locale.ROOT, "medians of %,d pixels within %s of those distances", pixels, NARROW)
+                + (fitted ? ", on a line where one other line reaches too: one minus the level is the product of one "
+                        + "minus each line's share, the other's that one line alone gives at its distance" : "");
         return String.format(Locale.ROOT, "%s %d on the line and %d one pixel beside it, simpview's %d and %d (the share "
                 + "of a disc of radius sqrt(2)/2 inside the slab of width 1, 0.818 at distance 0 and 0.091 at 1; %s)%s.",
                 where, theirsOn, theirsBeside, oursOn, oursBeside, how, like.isEmpty() ? "" : "; yours look like " + like);
