@@ -72,8 +72,8 @@ final class DepthCuedRules implements RuleSet {
     }
 
     @Override
-    public long nonFiniteCount() {
-        return geometry.nonFiniteCount();
+    public DepthCuedGeometry geometry() {
+        return geometry;
     }
 
     @Override
@@ -97,31 +97,6 @@ final class DepthCuedRules implements RuleSet {
         if (trace != null && trace.wantsSource()) {
             trace.source(viewed(ctm), xyz, vertices);
         }
-    }
-
-    @Override
-    public long culledCount() {
-        return geometry.culledCount();
-    }
-
-    @Override
-    public int culledOutside() {
-        return geometry.culledOutside();
-    }
-
-    @Override
-    public long clippedAwayCount() {
-        return geometry.clippedAwayCount();
-    }
-
-    @Override
-    public int clippedAwayOutside() {
-        return geometry.clippedAwayOutside();
-    }
-
-    @Override
-    public long primitiveCount() {
-        return geometry.primitiveCount();
     }
 
     /** turn * ctm, worked out again only when the CTM changed (it is a new object each time it does). */

@@ -94,8 +94,8 @@ final class LitRules implements RuleSet {
     }
 
     @Override
-    public long nonFiniteCount() {
-        return geometry.nonFiniteCount();
+    public LitGeometry geometry() {
+        return geometry;
     }
 
     @Override
@@ -125,31 +125,6 @@ final class LitRules implements RuleSet {
     void fragmentsThrough(FragmentSink sink, FragmentStages stages) {
         this.stages = stages;
         geometry.fragmentsThrough(sink);
-    }
-
-    @Override
-    public long culledCount() {
-        return geometry.culledCount();
-    }
-
-    @Override
-    public int culledOutside() {
-        return geometry.culledOutside();
-    }
-
-    @Override
-    public long clippedAwayCount() {
-        return geometry.clippedAwayCount();
-    }
-
-    @Override
-    public int clippedAwayOutside() {
-        return geometry.clippedAwayOutside();
-    }
-
-    @Override
-    public long primitiveCount() {
-        return geometry.primitiveCount();
     }
 
     /*

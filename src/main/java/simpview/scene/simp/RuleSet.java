@@ -3,6 +3,7 @@ package simpview.scene.simp;
 import java.util.List;
 import simpview.geometry.Matrix4;
 import simpview.scene.SceneException;
+import simpview.stage.GeometryStage;
 
 /**
  * What a scene's primitives do under the rules it is drawn by: the
@@ -19,23 +20,38 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
     /** A triangle, likewise; {@code wire} for its outline. */
     void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) throws SceneException;
 
+    /** The stage these rules send their primitives through: what it counts is what the scene warns of. */
+    GeometryStage geometry();
+
     /** Primitives skipped because they lie wholly outside one plane of the view volume. */
-    long culledCount();
+    default long culledCount() {
+        return geometry().culledCount();
+    }
 
     /** The planes every culled primitive lies wholly outside of, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
-    int culledOutside();
+    default int culledOutside() {
+        return geometry().culledOutside();
+    }
 
     /** Primitives not culled that the clipper cut away whole (Part 1: that lie so, none of their pixels shown). */
-    long clippedAwayCount();
+    default long clippedAwayCount() {
+        return geometry().clippedAwayCount();
+    }
 
     /** The sides of the view every one of those reaches beyond, bits 1 &lt;&lt; Camera.HITHER ...; 0 when none. */
-    int clippedAwayOutside();
+    default int clippedAwayOutside() {
+        return geometry().clippedAwayOutside();
+    }
 
     /** Primitives taken, culled or not. */
-    long primitiveCount();
+    default long primitiveCount() {
+        return geometry().primitiveCount();
+    }
 
     /** Primitives not drawn because a vertex came out infinite or NaN in camera space. */
-    long nonFiniteCount();
+    default long nonFiniteCount() {
+        return geometry().nonFiniteCount();
+    }
 
     /**
      * Where the first of those stands, for the scene's warning: "ovf.simp:3
