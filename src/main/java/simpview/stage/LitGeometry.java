@@ -234,6 +234,7 @@ public final class LitGeometry implements GeometryStage {
         int n = f.size();
         room(n);
         transform(objCtm);
+        boolean normalsRead = !objWire || trace != null; // an outline is drawn in its colours, unlit
         for (int k = 0; k < n; k++) {
             vertex(k, f.x(k), f.y(k), f.z(k));
             int o = k * CAMERA_STRIDE;
@@ -245,7 +246,7 @@ public final class LitGeometry implements GeometryStage {
                 colour(k, null, 0);
             }
             ownNormal[k] = f.hasNormal(k);
-            if (ownNormal[k]) {
+            if (ownNormal[k] && normalsRead) {
                 normal(k, f.nx(k), f.ny(k), f.nz(k));
             }
         }
@@ -277,7 +278,9 @@ public final class LitGeometry implements GeometryStage {
         if (!anyNearerThanFog) {
             lookAtFog(n);
         }
-        faceNormals(n);
+        if (!wire || trace != null) { // as in face(ObjFace): only the trace reads an outline's normals
+            faceNormals(n);
+        }
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
