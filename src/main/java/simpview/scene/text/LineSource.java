@@ -9,7 +9,8 @@ import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.Arrays;
-import java.util.zip.CRC32C;
+import java.util.zip.Checksum;
+import simpview.scene.FileChecksum;
 import simpview.scene.SceneException;
 
 /**
@@ -41,8 +42,12 @@ public final class LineSource {
     public static final int MAX_LINE = 1 << 20;
 
     private final Path path;
-    /** The CRC-32C of every byte read so far, when asked for ({@link #checksummed}); else null. */
-    private CRC32C crc;
+    /** The checksum of every byte read so far, when asked for ({@link #checksummed}); else null. */
+    private Checksum crc;
+    /** The file offset the checksum has taken the bytes up to: a suspended source reads some of them again. */
+    private long checksummedTo;
+    /** True once the checksum has taken every byte of the file. */
+    private boolean checksummedWhole;
     private FileChannel channel;
     private boolean fileBacked;
     private byte[] buf;
@@ -82,21 +87,33 @@ public final class LineSource {
     }
 
     /**
-     * From now on (call it before the first line) keeps the CRC-32C of the
-     * bytes read, so that a reader that reads a file to its end learns its
-     * checksum without reading it a second time ({@link #checksum}).
+     * From now on (call it before the first line) keeps the checksum of the
+     * bytes read ({@link FileChecksum}), so that a reader that reads a file to
+     * its end learns its checksum without reading it a second time
+     * ({@link #checksum}). Each byte is taken once, also when a suspended
+     * source reads again the bytes after its place.
      */
     public LineSource checksummed() {
-        crc = new CRC32C();
+        crc = FileChecksum.running();
         if (!fileBacked) {
             crc.update(buf, 0, limit);
         }
+        checksummedTo = limit;
+        checksummedWhole = !fileBacked;
         return this;
     }
 
-    /** The CRC-32C of the bytes read so far: of the whole file once it was read to its end (as FileChecksum gives it). */
+    /** The checksum of the bytes read so far: of the whole file once it was read to its end (as FileChecksum gives it). */
     public long checksum() {
         return crc.getValue();
+    }
+
+    /**
+     * The checksum of the whole file, when this source was {@link #checksummed}
+     * and has read it to its end; else {@link FileChecksum#NONE}.
+     */
+    public long checksumOfWhole() {
+        return checksummedWhole ? crc.getValue() : FileChecksum.NONE;
     }
 
     public Path path() {
@@ -354,9 +371,13 @@ public final class LineSource {
         int n = channel.read(ByteBuffer.wrap(buf, limit, buf.length - limit));
         if (n < 0) {
             eof = true;
+            checksummedWhole = crc != null;
         } else {
             if (crc != null) {
-                crc.update(buf, limit, n);
+                long from = bufferOffset + limit;
+                int skip = (int) Math.max(0, Math.min(n, checksummedTo - from));
+                crc.update(buf, limit + skip, n - skip);
+                checksummedTo = Math.max(checksummedTo, from + n);
             }
             limit += n;
         }
