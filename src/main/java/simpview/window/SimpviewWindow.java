@@ -1432,7 +1432,7 @@ public final class SimpviewWindow {
         boolean coursePage = coursePages != null && result.view().equals(new View.OfScene(coursePages.current()));
         frame.setTitle(coursePage ? "simpview — " + coursePages.describe() + (result.error() == null ? "" : " — error")
                 : result.title());
-        watcher.watch(result.facts().files(), job.stampsAsRead());
+        watcher.watch(result.facts().files(), job.versionsAsRead());
         status.forgetLastPixel();
         followPointer();
         inspect();

@@ -82,9 +82,9 @@ public class ModelReloadWindowTest extends WindowTestCase {
             FileTime tick = Files.getLastModifiedTime(model);
             driver.awaitEdt(() -> !driver.window().busy() && driver.window().shown() != shown,
                     "the redraw after saving the same model again");
-            // The save below is held against the files as that picture read them once the watcher has taken
-            // them; before, its bytes could be the first the watcher thread sees of them (it failed so once, on a
-            // slow host), and size, time and inode alike say nothing.
+            // The save below is held against the bytes that picture read (their checksums, taken as they were
+            // read), however late the watcher thread first looks. Before those were told, its bytes could be the
+            // first the thread saw (it failed so once, on a slow host); the wait stays, harmless.
             driver.window().watcher().awaitWatching();
             if (System.currentTimeMillis() - tick.toMillis() < SceneWatcher.FRESH_MILLIS / 2) {
                 Files.writeString(model, LOW);

@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import simpview.scene.FileLook;
+import simpview.scene.FileVersion;
 
 /**
  * The .obj files one picture has drawn ({@link ObjLibrary#draw}): where each
@@ -17,12 +18,19 @@ import simpview.scene.FileLook;
  * 16). So every draw of a model in one picture is the same model; a save
  * while the picture is drawn is seen by the next picture.
  *
+ * <p>It also keeps what the picture drew of each file ({@link #asRead}): the
+ * stamp it looked at and the checksum of the bytes the model was parsed
+ * from, so that whoever watches the files for a save holds the file against
+ * the very bytes drawn, not against the file as it is when it first looks.
+ *
  * <p>One picture's own: not shared between threads.
  */
 public final class ObjFilesSeen {
 
     private final Map<Path, FileLook> looks = new HashMap<>();
     private final Set<Path> read = new HashSet<>();
+    /** By real path: the version of each file the picture drew its model from. */
+    private final Map<Path, FileVersion> drawn = new HashMap<>();
 
     /** The look at {@code file} (as named) this picture took, or null. */
     FileLook look(Path file) {
@@ -40,5 +48,22 @@ public final class ObjFilesSeen {
 
     void reading(Path real) {
         read.add(real);
+    }
+
+    /** Notes that the picture drew {@code real}'s model from this version of it (the first one noted stays). */
+    void drew(Path real, FileVersion version) {
+        drawn.putIfAbsent(real, version);
+    }
+
+    /**
+     * The version of {@code file} (as named) this picture drew its model
+     * from: the stamp looked at before reading and the checksum of the bytes
+     * parsed (also when the model was kept from an earlier picture: those it
+     * was parsed from); null when none was drawn (the file could not be read,
+     * or had an error).
+     */
+    public FileVersion asRead(Path file) {
+        FileLook look = looks.get(file);
+        return look == null ? null : drawn.get(look.real());
     }
 }

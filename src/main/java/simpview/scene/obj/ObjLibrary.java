@@ -7,6 +7,7 @@ import simpview.scene.FileChecksum;
 import simpview.scene.FileLook;
 import simpview.scene.FileProblem;
 import simpview.scene.FileStamp;
+import simpview.scene.FileVersion;
 import simpview.scene.KeptFiles;
 import simpview.scene.SceneException;
 
@@ -36,6 +37,10 @@ import simpview.scene.SceneException;
  * of the file's bytes with the one of the bytes it was parsed from (taken as
  * they were parsed, so a first draw reads the file once; a later one reads it
  * once more, far cheaper than parsing it), and parses again when they differ.
+ * A file of at most {@link FileChecksum#LIMIT} bytes is checksummed as it is
+ * parsed also when settled: what the picture drew of it
+ * ({@link ObjFilesSeen#asRead}) is what a window's watcher holds a save
+ * against.
  */
 public final class ObjLibrary {
 
@@ -70,7 +75,9 @@ public final class ObjLibrary {
     /**
      * A parsed model.
      *
-     * @param checksum the CRC-32C of the file's bytes before it was parsed (0 when settled then)
+     * @param checksum the checksum of the bytes it was parsed from ({@link FileChecksum}), taken as they were
+     *     parsed when the file was not settled or small enough for a watcher to checksum it; else
+     *     {@link FileChecksum#NONE}
      */
     private record Parsed(long checksum, ObjModel model) {
     }
@@ -93,7 +100,8 @@ public final class ObjLibrary {
      * picture has looked at already is not looked at again, and one whose
      * bytes it has read already is replayed on its stamp alone, so a model
      * drawn twice in one picture is looked up and read once. A save while the
-     * picture is drawn is seen by the next one.
+     * picture is drawn is seen by the next one. {@code seen} is told the
+     * version of the file drawn ({@link ObjFilesSeen#asRead}).
      */
     public ObjCounts draw(Path file, ObjSink sink, ObjFilesSeen seen) throws SceneException {
         FileLook look = seen.look(file);
@@ -106,6 +114,7 @@ public final class ObjLibrary {
         boolean settled = look.settled(settleMillis);
         KeptFiles.Kept<Parsed> kept = models.get(real, stamp);
         if (kept != null && (kept.settled() || seen.hasRead(real))) {
+            seen.drew(real, new FileVersion(stamp, kept.value().checksum()));
             return replay(kept.value().model(), sink);
         }
         seen.reading(real);
@@ -113,18 +122,22 @@ public final class ObjLibrary {
             if (settled) {
                 models.settle(real, kept);
             }
+            seen.drew(real, new FileVersion(stamp, kept.value().checksum()));
             return replay(kept.value().model(), sink);
         }
         parses.incrementAndGet();
-        // A file not settled yet is checksummed as it is parsed: its bytes are read once.
+        // Checksummed as it is parsed, its bytes read once: a file not settled yet (the next draw compares it), and
+        // one small enough for a watcher to hold a save against the bytes drawn.
         ObjParser parser = ObjParser.open(file).record(budget);
-        if (!settled) {
+        if (!settled || FileChecksum.taken(stamp.size())) {
             parser.checksummed();
         }
         ObjCounts counts = parser.run(sink);
+        long checksum = parser.checksum();
+        seen.drew(real, new FileVersion(stamp, checksum));
         ObjModel parsed = parser.model();
         if (parsed != null) {
-            models.keep(real, stamp, settled, new Parsed(settled ? 0 : parser.checksum(), parsed));
+            models.keep(real, stamp, settled, new Parsed(checksum, parsed));
         }
         return counts;
     }

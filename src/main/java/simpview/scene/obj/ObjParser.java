@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntPredicate;
+import simpview.scene.FileChecksum;
 import simpview.scene.FileProblem;
 import simpview.scene.MemoryAdvice;
 import simpview.scene.SceneException;
@@ -118,9 +119,13 @@ final class ObjParser {
         return this;
     }
 
-    /** The CRC-32C of the file's bytes, after a {@link #run} of a {@link #checksummed} parser. */
+    /**
+     * The checksum of the file's bytes, after a {@link #run} of a
+     * {@link #checksummed} parser that read it to its end; else
+     * {@link FileChecksum#NONE}.
+     */
     long checksum() {
-        return source.checksum();
+        return source.checksumOfWhole();
     }
 
     /** Records the faces too, up to {@code budget} bytes of arrays with the vertices. */

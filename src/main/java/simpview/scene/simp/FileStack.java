@@ -13,9 +13,11 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.function.IntConsumer;
+import simpview.scene.FileChecksum;
 import simpview.scene.FileLook;
 import simpview.scene.FileProblem;
 import simpview.scene.FileStamp;
+import simpview.scene.FileVersion;
 import simpview.scene.SceneException;
 import simpview.scene.text.LineSource;
 
@@ -50,6 +52,8 @@ final class FileStack implements AutoCloseable {
     private final Map<Name, Found> found = new HashMap<>();
     /** Where each .obj name led, for {@link #locateModel}. */
     private final Map<Name, Path> models = new HashMap<>();
+    /** The place in {@link #reached} of each model {@link #locateModel} found, by the path it gave. */
+    private final Map<Path, Integer> modelsReached = new HashMap<>();
     private final long smallFileLimit;
     private final SimpLibrary library;
     /** The real paths of the files whose bytes this scene has read: replayed on their stamps from then on. */
@@ -57,10 +61,14 @@ final class FileStack implements AutoCloseable {
     /** The working directory names are also looked for in (where the course's programs looked), absolute. */
     private final Path workingDir;
     /** Every file the scene read or looked for, each once, in the order met: what a window watches. */
-    private final Set<Path> reachedKeys = new HashSet<>();
     private final List<Path> reached = new ArrayList<>();
-    /** Each reached file as it was when it was reached, before it was read. */
-    private final List<FileStamp> stamps = new ArrayList<>();
+    /** Each reached file's place in {@link #reached}, by its real path (where it is known). */
+    private final Map<Path, Integer> reachedKeys = new HashMap<>();
+    /**
+     * Each reached file as it was read: its stamp when it was reached, before it was read, and the checksum of the
+     * bytes read once they are (see {@link #versionsAsRead}).
+     */
+    private final List<FileVersion> versions = new ArrayList<>();
     private long linesOfFinishedFiles;
     /** The top file's size when it was opened, for the share of it read so far. */
     private long topFileBytes;
@@ -324,7 +332,7 @@ final class FileStack implements AutoCloseable {
             return known;
         }
         Located located = locate(c.fileName, ".obj", from, c);
-        reach(located.path);
+        modelsReached.put(located.path, reach(located.path));
         reachAlso(located.alsoWatched);
         models.put(name, located.path);
         return located.path;
@@ -336,22 +344,60 @@ final class FileStack implements AutoCloseable {
         return shown(r.file()) + ":" + r.lineNumber();
     }
 
-    /** Notes a file the scene read or looked for, once. */
-    private void reach(Path file) {
-        Path key;
-        try {
-            key = file.toRealPath();
-        } catch (IOException | SecurityException e) {
-            key = file.toAbsolutePath().normalize();
-        }
-        reach(file, key, FileStamp.of(file));
+    /** Notes a file the scene read or looked for, once; returns its place in {@link #reached}. */
+    private int reach(Path file) {
+        return reach(file, realOrAbsolute(file), FileStamp.of(file));
     }
 
-    /** Notes {@code file}, really {@code key}, as it is now ({@code stamp}), unless it is noted already. */
-    private void reach(Path file, Path key, FileStamp stamp) {
-        if (reachedKeys.add(key)) {
-            reached.add(file);
-            stamps.add(stamp);
+    /** Where {@code file} really leads, or where it would be when it cannot be told: what it is reached by. */
+    private static Path realOrAbsolute(Path file) {
+        try {
+            return file.toRealPath();
+        } catch (IOException | SecurityException e) {
+            return file.toAbsolutePath().normalize();
+        }
+    }
+
+    /**
+     * Notes {@code file}, really {@code key}, as it is now ({@code stamp}), unless it is noted already; returns its
+     * place in {@link #reached}.
+     */
+    private int reach(Path file, Path key, FileStamp stamp) {
+        Integer at = reachedKeys.putIfAbsent(key, reached.size());
+        if (at != null) {
+            return at;
+        }
+        reached.add(file);
+        versions.add(FileVersion.of(stamp));
+        return reached.size() - 1;
+    }
+
+    /**
+     * Notes the checksum of the bytes the scene read of the reached file
+     * {@code real} (a {@link FileChecksum#NONE} is no news): the first one
+     * noted stays, so a file read twice in one picture (a big file streamed
+     * at each include) is held against its first reading.
+     */
+    private void readAs(Path real, long checksum) {
+        Integer at = reachedKeys.get(real);
+        if (at != null && checksum != FileChecksum.NONE && !versions.get(at).checksummed()) {
+            versions.set(at, new FileVersion(versions.get(at).stamp(), checksum));
+        }
+    }
+
+    /**
+     * Notes the model {@code file}, found by {@link #locateModel}, as it was
+     * drawn ({@code drawn}: the stamp its reader looked at before reading it
+     * and the checksum of the bytes parsed); null, when none was drawn, is
+     * no news. The first one noted stays.
+     */
+    void modelDrawn(Path file, FileVersion drawn) {
+        if (drawn == null) {
+            return;
+        }
+        Integer at = modelsReached.get(file);
+        if (at != null && !versions.get(at).checksummed()) {
+            versions.set(at, drawn);
         }
     }
 
@@ -367,12 +413,17 @@ final class FileStack implements AutoCloseable {
     }
 
     /**
-     * The stamps of {@link #reached()}'s files, in the same order, taken
-     * before each was read: a save made while the scene was read differs
-     * from them, so a window that watches the files sees it.
+     * {@link #reached()}'s files as the scene read them, in the same order:
+     * each one's stamp, taken before it was read, and the checksum of the
+     * very bytes read ({@link FileChecksum}), where they were read whole (a
+     * small file, one streamed to its end, a model parsed to its end) and
+     * are checksummed at all. A save made after the stamp was taken differs
+     * from them whenever it is looked at, also one that keeps size, time
+     * and inode (two saves within one tick of the file system's clock), so a
+     * window that watches the files sees it.
      */
-    List<FileStamp> stampsAsRead() {
-        return List.copyOf(stamps);
+    List<FileVersion> versionsAsRead() {
+        return List.copyOf(versions);
     }
 
     /**
@@ -453,12 +504,14 @@ final class FileStack implements AutoCloseable {
     /**
      * A reader of {@code file}: a small one from the library (its commands
      * replayed when kept and unchanged, else read whole and recorded), a
-     * bigger one streamed. A small file's size is the one it had when it was
+     * bigger one streamed (and checksummed as it is read, when not too big
+     * for that: {@link FileChecksum#taken}). A small file's size is the one it had when it was
      * reached; readAllBytes reads what is there now.
      */
     private SimpReader open(Path file, Resolved resolved) throws SceneException {
         if (resolved.stamp.size() > smallFileLimit) {
-            return SimpReader.open(file);
+            SimpReader streamed = SimpReader.open(file);
+            return FileChecksum.taken(resolved.stamp.size()) ? streamed.checksummed() : streamed;
         }
         try {
             return library.open(file, resolved.real, resolved.stamp, resolved.settled, readThisPicture);
@@ -468,6 +521,7 @@ final class FileStack implements AutoCloseable {
     }
 
     private void push(SimpReader reader, Resolved resolved) throws SceneException {
+        readAs(resolved.real, reader.checksumAsRead());
         readers.add(reader);
         resolvedReaders.add(resolved);
         onStack.add(resolved.real);
@@ -484,6 +538,7 @@ final class FileStack implements AutoCloseable {
         linesOfFinishedFiles += done.linesRead();
         Resolved resolved = resolvedReaders.remove(resolvedReaders.size() - 1);
         onStack.remove(resolved.real);
+        readAs(resolved.real, done.checksumAsRead());
         library.keep(resolved.real, resolved.stamp, resolved.settled, done);
     }
 

@@ -177,6 +177,7 @@ final class LitRules implements RuleSet {
         } catch (SceneException e) {
             throw wholeModel(c, file, e);
         }
+        files.modelDrawn(file, modelsSeen.asRead(file));
         if (firstClampedColour == null && counts.firstClampedColour() > 0) {
             firstClampedColour = files.shown(file) + ":" + counts.firstClampedColour();
         }

@@ -3,7 +3,7 @@ package simpview.scene.simp;
 import java.nio.file.Path;
 import java.util.List;
 import simpview.geometry.Matrix4;
-import simpview.scene.FileStamp;
+import simpview.scene.FileVersion;
 import simpview.stage.PrimitiveTrace;
 
 /**
@@ -49,10 +49,11 @@ public interface SceneMonitor {
     }
 
     /**
-     * Told just before {@link #reached}: the files' stamps, in the same order,
-     * as they were before the scene read them (see {@link FileStack}).
+     * Told just before {@link #reached}: the files as the scene read them, in
+     * the same order: each one's stamp before it was read and, where known,
+     * the checksum of the bytes read (see {@link FileStack#versionsAsRead}).
      */
-    default void stampsAsRead(List<FileStamp> stamps) {
+    default void versionsAsRead(List<FileVersion> versions) {
     }
 
     /** Something worth telling that is not an error, e.g. a '{' never closed. */

@@ -135,7 +135,7 @@ public final class ScenePipeline {
      * Draws the scene in {@code file} on {@code canvas}, which has just been
      * cleared, from a fresh state (identity CTM, empty stacks, style filled).
      * On an error what was drawn before it stays and the error is thrown on;
-     * the monitor is told the files reached (and their stamps) either way.
+     * the monitor is told the files reached (and how it read them) either way.
      */
     public static Drawn draw(Path file, PageCanvas canvas, Options options, SceneMonitor monitor)
             throws SceneException {
@@ -154,7 +154,7 @@ public final class ScenePipeline {
             litAfterDrawing = turn.because;
         } finally {
             if (litAfterDrawing == null) {
-                monitor.stampsAsRead(files.stampsAsRead());
+                monitor.versionsAsRead(files.versionsAsRead());
                 monitor.reached(files.reached());
             }
         }
@@ -180,7 +180,7 @@ public final class ScenePipeline {
             run(client, monitor, file);
             return drawn(client, litBecause, files, monitor, options);
         } finally {
-            monitor.stampsAsRead(files.stampsAsRead());
+            monitor.versionsAsRead(files.versionsAsRead());
             monitor.reached(files.reached());
         }
     }
@@ -273,7 +273,7 @@ public final class ScenePipeline {
             cued.drawWith(threads, null, () -> OwedRows.NONE, panel, provenance);
             run(new SimpClient(files, cued, SimpClient.OnLit.IGNORE, SimpClient::neverLit), monitor, file);
         } finally {
-            monitor.stampsAsRead(files.stampsAsRead());
+            monitor.versionsAsRead(files.versionsAsRead());
             monitor.reached(files.reached());
         }
     }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
+import simpview.scene.FileChecksum;
 import simpview.scene.FileLook;
 import simpview.scene.FileStamp;
 import simpview.scene.KeptFiles;
@@ -40,8 +41,11 @@ public final class SimpLibrary {
     private final AtomicInteger reads = new AtomicInteger();
     private final AtomicInteger scans = new AtomicInteger();
 
-    /** A file's bytes and its commands, recorded as it was read to its end without an error. */
-    record Read(byte[] content, Recording recording) {
+    /**
+     * A file's bytes and its commands, recorded as it was read to its end without an error, and the checksum of
+     * those bytes ({@link FileChecksum}), taken as they were read.
+     */
+    record Read(byte[] content, Recording recording, long checksum) {
 
         long bytes() {
             return content.length + recording.bytes();
@@ -90,7 +94,7 @@ public final class SimpLibrary {
     }
 
     private static SimpReader replaying(Path file, Read read) {
-        return SimpReader.replaying(file, read.content(), read.recording());
+        return SimpReader.replaying(file, read.content(), read.recording(), read.checksum());
     }
 
     /** Keeps what {@code done}, a reader {@link #open} gave, recorded, if it read its file to the end. */

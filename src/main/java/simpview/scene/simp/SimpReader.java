@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Locale;
 import simpview.geometry.Axis;
+import simpview.scene.FileChecksum;
 import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 import simpview.scene.simp.Command.Kind;
@@ -47,6 +48,8 @@ public final class SimpReader implements AutoCloseable {
     private boolean replaying;
     /** The bytes a recording or replaying reader reads; null when streamed. */
     private byte[] content;
+    /** The checksum of {@link #content} ({@link FileChecksum}), or NONE. */
+    private long contentChecksum = FileChecksum.NONE;
     /** Commands replayed so far. */
     private int replayed;
     private byte[] b;
@@ -74,12 +77,25 @@ public final class SimpReader implements AutoCloseable {
         return new SimpReader(LineSource.of(file, content));
     }
 
-    /** Reads a small file's text and records its commands, to be replayed on later includes. */
+    /**
+     * Reads a small file's text, just read whole, and records its commands, to be replayed on later includes; its
+     * checksum is taken from these bytes.
+     */
     static SimpReader recording(Path file, byte[] content) {
         SimpReader r = of(file, content);
         r.recording = new Recording(lineCount(content));
         r.content = content;
+        r.contentChecksum = FileChecksum.of(content);
         return r;
+    }
+
+    /**
+     * From now on (before the first line) takes the checksum of the bytes of
+     * the file it streams, as it reads them ({@link #checksumAsRead}).
+     */
+    SimpReader checksummed() {
+        source.checksummed();
+        return this;
     }
 
     private static int lineCount(byte[] content) {
@@ -91,18 +107,33 @@ public final class SimpReader implements AutoCloseable {
         return lines;
     }
 
-    /** Replays the commands of {@code content}, recorded from a full reading of it. */
-    static SimpReader replaying(Path file, byte[] content, Recording recording) {
+    /**
+     * Replays the commands of {@code content}, recorded from a full reading of it; {@code checksum} is the one taken
+     * of those bytes then.
+     */
+    static SimpReader replaying(Path file, byte[] content, Recording recording, long checksum) {
         SimpReader r = of(file, content);
         r.recording = recording;
         r.replaying = true;
         r.content = content;
+        r.contentChecksum = checksum;
         return r;
     }
 
     /** This file's bytes and commands, once it has been read (not replayed) to its end without an error; else null. */
     SimpLibrary.Read newlyRecorded() {
-        return replaying || finishedRecording() == null ? null : new SimpLibrary.Read(content, recording);
+        return replaying || finishedRecording() == null ? null
+                : new SimpLibrary.Read(content, recording, contentChecksum);
+    }
+
+    /**
+     * The checksum of the bytes this reader read ({@link FileChecksum}): of
+     * a small file's, read whole (or kept from when they were); of a
+     * {@link #checksummed} streamed file's once it was read to its end; else
+     * {@link FileChecksum#NONE}.
+     */
+    long checksumAsRead() {
+        return content != null ? contentChecksum : source.checksumOfWhole();
     }
 
     /** The recording of this file, once it has been read to its end without an error; else null. */

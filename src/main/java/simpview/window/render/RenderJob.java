@@ -1,7 +1,7 @@
 package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
-import simpview.scene.FileStamp;
+import simpview.scene.FileVersion;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.ScenePipeline;
 
@@ -49,8 +49,8 @@ public final class RenderJob implements SceneMonitor {
     private double[] shownCentre;
     /** The files the scene read or looked for, as its pipeline told them; the render thread's, like trace. */
     private List<Path> reached = List.of();
-    /** Their stamps before they were read; set on the render thread, read on the EDT once the job is done. */
-    private volatile List<FileStamp> stampsAsRead = List.of();
+    /** How the scene read them (stamps, checksums); set on the render thread, read on the EDT once the job is done. */
+    private volatile List<FileVersion> versionsAsRead = List.of();
 
     public RenderJob(View view, PageContext context) {
         this(view, context, DrawSettings.PLAIN);
@@ -141,13 +141,16 @@ public final class RenderJob implements SceneMonitor {
     }
 
     @Override
-    public void stampsAsRead(List<FileStamp> stamps) {
-        stampsAsRead = List.copyOf(stamps);
+    public void versionsAsRead(List<FileVersion> versions) {
+        versionsAsRead = List.copyOf(versions);
     }
 
-    /** The stamps of {@link PageFacts#files}' files as the scene read them (empty for a page that reads none). */
-    public List<FileStamp> stampsAsRead() {
-        return stampsAsRead;
+    /**
+     * {@link PageFacts#files}' files as the scene read them: stamps, and checksums of the bytes read (empty for a
+     * page that reads none).
+     */
+    public List<FileVersion> versionsAsRead() {
+        return versionsAsRead;
     }
 
     @Override

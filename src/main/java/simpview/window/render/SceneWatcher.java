@@ -13,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import simpview.scene.FileChecksum;
 import simpview.scene.FileStamp;
+import simpview.scene.FileVersion;
 
 /**
  * Watches the files of the picture on screen (the scene and every file it
@@ -35,14 +36,16 @@ import simpview.scene.FileStamp;
  * milliseconds on ext4, two seconds on FAT), so two saves of the same size
  * within one tick look alike. A file changed less than {@link #FRESH_MILLIS}
  * ago is therefore also compared by a CRC-32C of its bytes, while it is at
- * most {@link #CHECKSUM_LIMIT} long (a few milliseconds of reading at most).
+ * most {@link FileChecksum#LIMIT} long (a few milliseconds of reading at
+ * most). The picture's readers took that checksum of the very bytes they
+ * drew ({@link FileVersion}), so a save after the reading is seen however
+ * soon or late the watcher thread first looks: its bytes are held against
+ * those drawn, not against the first the thread happens to see.
  */
 public final class SceneWatcher {
 
     static final int POLL_MS = 200;
     public static final long FRESH_MILLIS = 3_000;
-    static final long CHECKSUM_LIMIT = 8L << 20;
-    private static final long NO_CHECKSUM = -1;
 
     /** Runs every look, one at a time: the files and the looks are this thread's only. */
     private final ScheduledExecutorService thread = Executors.newSingleThreadScheduledExecutor(task -> {
@@ -66,15 +69,6 @@ public final class SceneWatcher {
     }
 
     /**
-     * What was seen of a file at one look.
-     *
-     * @param stamp size, last change and inode, or {@link FileStamp#MISSING}
-     * @param checksum the CRC-32C of its bytes when it was fresh and small, else {@link #NO_CHECKSUM}
-     */
-    record Look(FileStamp stamp, long checksum) {
-    }
-
-    /**
      * What the looks at the watched files have found, and when a change is
      * to be told: the files differ from what the picture on screen was drawn
      * from, and the newest look found them as the one before it did, so no
@@ -83,21 +77,21 @@ public final class SceneWatcher {
      */
     static final class Changes {
         /** The files as the picture on screen was drawn from them, as far as known. */
-        private List<Look> drawn;
+        private List<FileVersion> drawn;
         /** The files at the newest look. */
-        private List<Look> last;
+        private List<FileVersion> last;
 
         /**
          * @param drawn the files as the picture on screen read them
          * @param now the files as they are now (in the same order)
          */
-        Changes(List<Look> drawn, List<Look> now) {
+        Changes(List<FileVersion> drawn, List<FileVersion> now) {
             this.drawn = drawn;
             this.last = now;
         }
 
         /** Takes the newest look; true when it is a change to tell now. */
-        boolean told(List<Look> now) {
+        boolean told(List<FileVersion> now) {
             boolean heldStill = !anyChanged(last, now);
             last = now;
             if (heldStill && anyChanged(drawn, now)) {
@@ -107,7 +101,7 @@ public final class SceneWatcher {
             return false;
         }
 
-        private static boolean anyChanged(List<Look> before, List<Look> now) {
+        private static boolean anyChanged(List<FileVersion> before, List<FileVersion> now) {
             for (int i = 0; i < now.size(); i++) {
                 if (changed(before.get(i), now.get(i))) {
                     return true;
@@ -123,23 +117,23 @@ public final class SceneWatcher {
     }
 
     /**
-     * From now on watches {@code toWatch}; {@code asRead} are their stamps as
-     * the picture on screen read them (same order; empty when not known). A
-     * file saved while the picture was drawn differs from its stamp as read,
-     * and is told at the next look that finds it held still: its picture is
-     * not what the file now says.
+     * From now on watches {@code toWatch}; {@code asRead} are the files as
+     * the picture on screen read them (same order; empty when not known):
+     * each one's stamp before it was read and the checksum of the bytes read.
+     * A file saved after it was read differs from that, also by its bytes
+     * alone, and is told at the next look that finds it held still: its
+     * picture is not what the file now says.
      */
-    public synchronized void watch(List<Path> toWatch, List<FileStamp> asRead) {
+    public synchronized void watch(List<Path> toWatch, List<FileVersion> asRead) {
         List<Path> list = List.copyOf(toWatch);
-        List<FileStamp> read = List.copyOf(asRead);
+        List<FileVersion> read = List.copyOf(asRead);
         watched = list;
         if (thread.isShutdown()) {
             return;
         }
         thread.execute(() -> {
             files = list;
-            List<Look> now = looksNow();
-            changes = new Changes(asDrawn(read, now), now);
+            changes = firstLook(list, read, System.currentTimeMillis());
         });
         if (!polling) {
             thread.scheduleWithFixedDelay(this::poll, POLL_MS, POLL_MS, TimeUnit.MILLISECONDS);
@@ -153,11 +147,9 @@ public final class SceneWatcher {
 
     /**
      * Returns once the watcher thread has taken every {@link #watch} given
-     * before this call: from then on a save is held against the files as
-     * the picture on screen read them. Before, a save that keeps a file's
-     * size, time and inode (two within one tick of a coarse clock) may be
-     * taken for what was read, its bytes being the first the thread sees.
-     * Not on the EDT.
+     * before this call (for tests that look at what it watches). A save is
+     * held against the files as the picture read them either way, before
+     * or after the thread first looks. Not on the EDT.
      *
      * @throws InterruptedException when interrupted while waiting
      */
@@ -181,9 +173,12 @@ public final class SceneWatcher {
         }
     }
 
-    private List<Look> looksNow() {
-        long now = System.currentTimeMillis();
-        List<Look> seen = new ArrayList<>(files.size());
+    private List<FileVersion> looksNow() {
+        return looks(files, System.currentTimeMillis());
+    }
+
+    private static List<FileVersion> looks(List<Path> files, long now) {
+        List<FileVersion> seen = new ArrayList<>(files.size());
         for (Path file : files) {
             seen.add(look(file, now));
         }
@@ -191,50 +186,61 @@ public final class SceneWatcher {
     }
 
     /**
-     * The files as the picture on screen read them: each file's look now
-     * where its stamp is the one it was read at (or the stamps are not
-     * known), else its stamp as read, without checksum.
+     * What the watcher thread does with a {@link #watch}: looks at
+     * {@code files} for the first time, at {@code now}, and holds the looks
+     * to come against the files as the picture read them ({@code asRead}).
      */
-    static List<Look> asDrawn(List<FileStamp> asRead, List<Look> now) {
+    static Changes firstLook(List<Path> files, List<FileVersion> asRead, long now) {
+        List<FileVersion> looks = looks(files, now);
+        return new Changes(asDrawn(asRead, looks), looks);
+    }
+
+    /**
+     * The files as the picture on screen read them: each file as it was
+     * read, where the checksum of the bytes read is known or its stamp
+     * differs from the look now; where only its stamp as read is known and
+     * is the look's, the look now (the best there is: a save between the
+     * reading and this look that keeps size, time and inode is not seen);
+     * all the looks now when the files as read are not known.
+     */
+    static List<FileVersion> asDrawn(List<FileVersion> asRead, List<FileVersion> now) {
         if (asRead.size() != now.size()) {
             return now; // not known, or not of these files
         }
-        List<Look> drawn = new ArrayList<>(now.size());
+        List<FileVersion> drawn = new ArrayList<>(now.size());
         for (int i = 0; i < now.size(); i++) {
-            Look look = now.get(i);
-            drawn.add(asRead.get(i).equals(look.stamp()) ? look : new Look(asRead.get(i), NO_CHECKSUM));
+            FileVersion read = asRead.get(i);
+            FileVersion look = now.get(i);
+            drawn.add(read.checksummed() || !read.stamp().equals(look.stamp()) ? read : look);
         }
         return drawn;
     }
 
     /** True when {@code now} shows another file than {@code before}. */
-    static boolean changed(Look before, Look now) {
-        if (!before.stamp().equals(now.stamp())) {
-            return true;
-        }
-        return before.checksum() != NO_CHECKSUM && now.checksum() != NO_CHECKSUM && before.checksum() != now.checksum();
+    static boolean changed(FileVersion before, FileVersion now) {
+        return before.differsFrom(now);
     }
 
     /** Size, last change and inode of a file, and its checksum when it changed within FRESH_MILLIS of {@code now}. */
-    static Look look(Path file, long now) {
+    static FileVersion look(Path file, long now) {
         BasicFileAttributes attributes;
         try {
             attributes = Files.readAttributes(file, BasicFileAttributes.class);
         } catch (IOException e) {
-            return new Look(FileStamp.MISSING, NO_CHECKSUM);
+            return FileVersion.of(FileStamp.MISSING);
         }
         FileStamp stamp = FileStamp.of(attributes);
         boolean fresh = attributes.lastModifiedTime().toMillis() > now - FRESH_MILLIS;
-        boolean small = attributes.isRegularFile() && attributes.size() <= CHECKSUM_LIMIT;
-        return new Look(stamp, fresh && small ? checksum(file) : NO_CHECKSUM);
+        boolean small = attributes.isRegularFile() && FileChecksum.taken(attributes.size());
+        return new FileVersion(stamp, fresh && small ? checksum(file) : FileChecksum.NONE);
     }
 
-    /** The CRC-32C of the file's bytes, or NO_CHECKSUM when it cannot be read now. */
+    /** The CRC-32C of the file's bytes, or none when it cannot be read now. */
     private static long checksum(Path file) {
         try {
             return FileChecksum.of(file);
         } catch (IOException e) {
-            return NO_CHECKSUM;
+            return FileChecksum.NONE;
         }
     }
 }

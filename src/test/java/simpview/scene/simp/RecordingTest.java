@@ -16,6 +16,7 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.scene.FileChecksum;
 import simpview.scene.SceneException;
 
 /** Replaying a small file's recorded commands is indistinguishable from reading its bytes again. */
@@ -30,7 +31,7 @@ class RecordingTest {
         List<String> read = everything(first);
         Recording recording = first.finishedRecording();
         assertEquals(read, everything(SimpReader.of(FILE, bytes)));
-        assertEquals(read, everything(SimpReader.replaying(FILE, bytes, recording)));
+        assertEquals(read, everything(SimpReader.replaying(FILE, bytes, recording, FileChecksum.of(bytes))));
     }
 
     /** Per command: what it says, where it stands, and the errors that would point into it; then the line count. */
