@@ -172,6 +172,13 @@ public class SceneWatcherTest {
         return new Picture(files, asRead);
     }
 
+    /** True when the watcher, taking {@code picture}'s files now, tells a change at its next look. */
+    private static boolean toldAfterFirstLook(Picture picture) {
+        SceneWatcher.Changes changes = SceneWatcher.firstLook(picture.files(), picture.asRead(),
+                System.currentTimeMillis());
+        return changes.told(looks(picture.files().toArray(Path[]::new)));
+    }
+
     /** Writes {@code text} over the file in place, keeping its size, inode and time: a second save within one tick. */
     private static void saveWithinOneTick(Path file, String text) throws Exception {
         FileTime time = Files.getLastModifiedTime(file);
@@ -199,23 +206,12 @@ public class SceneWatcherTest {
         Path top = scene();
         Picture picture = draw(top, new SceneLibrary());
         assertEquals(List.of(top, dir.resolve("part.simp"), dir.resolve("tri.obj")), picture.files());
+        assertFalse(toldAfterFirstLook(picture), "nothing saved yet: the bytes read are the file's");
         Path file = dir.resolve(saved);
         FileStamp asRead = FileStamp.of(file);
         saveWithinOneTick(file, saved.endsWith(".obj") ? MODEL_SAVED : PART_SAVED);
         assertEquals(asRead, FileStamp.of(file), "size, time and inode alike");
-
-        SceneWatcher.Changes changes = SceneWatcher.firstLook(picture.files(), picture.asRead(),
-                System.currentTimeMillis());
-        assertTrue(changes.told(looks(picture.files().toArray(Path[]::new))), saved + " saved after it was read");
-    }
-
-    @Test
-    void filesUnchangedSinceTheyWereReadAreNotTold() throws Exception {
-        Path top = scene();
-        Picture picture = draw(top, new SceneLibrary());
-        SceneWatcher.Changes changes = SceneWatcher.firstLook(picture.files(), picture.asRead(),
-                System.currentTimeMillis());
-        assertFalse(changes.told(looks(picture.files().toArray(Path[]::new))), "nothing saved");
+        assertTrue(toldAfterFirstLook(picture), saved + " saved after it was read");
     }
 
     /**
@@ -229,11 +225,9 @@ public class SceneWatcherTest {
         draw(top, library);
         Picture second = draw(top, library);
         assertEquals(1, library.models().parseCount(), "the second picture drew the kept model");
+        assertFalse(toldAfterFirstLook(second), "nothing saved yet");
         saveWithinOneTick(dir.resolve("tri.obj"), MODEL_SAVED);
-
-        SceneWatcher.Changes changes = SceneWatcher.firstLook(second.files(), second.asRead(),
-                System.currentTimeMillis());
-        assertTrue(changes.told(looks(second.files().toArray(Path[]::new))), "the model saved after it was drawn");
+        assertTrue(toldAfterFirstLook(second), "the model saved after it was drawn");
     }
 
     /** A part too big to be read whole is checksummed as it is streamed. */
@@ -244,10 +238,8 @@ public class SceneWatcherTest {
         Path part = Files.writeString(dir.resolve("part.simp"), comments + PART);
         assertTrue(Files.size(part) > LineSource.CHUNK, "streamed");
         Picture picture = draw(top, new SceneLibrary());
+        assertFalse(toldAfterFirstLook(picture), "nothing saved yet: the checksum streamed is the file's");
         saveWithinOneTick(part, comments + PART_SAVED);
-
-        SceneWatcher.Changes changes = SceneWatcher.firstLook(picture.files(), picture.asRead(),
-                System.currentTimeMillis());
-        assertTrue(changes.told(looks(picture.files().toArray(Path[]::new))), "the part saved after it was read");
+        assertTrue(toldAfterFirstLook(picture), "the part saved after it was read");
     }
 }
