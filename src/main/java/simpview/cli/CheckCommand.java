@@ -208,10 +208,10 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
         // the rubric is read over the options as typed, as here: the picture alone is judged by its page's rule
         String verdict = pictures.typedOptions("--tolerance", "--min", "--deviation", "--metric", "--flip-threshold")
                 + rubricOption(rules);
-        // the first assignment's pages are compared without slack: --deviation does not go with them; a page of them
-        // alone is judged by the command line's rule, not a rubric's
+        // the first assignment's pages are compared without slack: --deviation goes with them only with a rubric, whose
+        // panel rules judge a page of them alone as they judged it here
         String firstVerdict = rules == null ? pictures.typedOptions("--tolerance", "--min", "--metric",
-                "--flip-threshold") : "";
+                "--flip-threshold") : verdict;
         return compareCommand(dir, scene, row, pictures.drawingOptions() + verdict,
                 pictures.typedOptions("--seed", "--a1-rule") + firstVerdict);
     }
@@ -310,7 +310,7 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
             String rule = context.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + context.a1Rule().key();
             CompareBatch batch = new CompareBatch("check", own, judged, false, new PrintWriter(out, true), errors,
                     true).nextSteps(row -> compareCommand(folder, null, row, simpDir + seed + rubricOption(rules),
-                            seed + rule));
+                            seed + rule + rubricOption(rules)));
             batch.folder(folder, ALL_PAGES, new CompareBatch.Outputs(null, null, null, null, true,
                     CompareBatch.DiffImages.NONE, new OutputPaths()));
         }

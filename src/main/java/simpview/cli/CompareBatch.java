@@ -55,6 +55,7 @@ import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.PanelHint;
+import simpview.compare.PanelWords;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PngFiles;
@@ -111,10 +112,6 @@ public final class CompareBatch {
         static Match alone(CompareTarget target) {
             return new Match(target, null, 0, true);
         }
-    }
-
-    /** A panel a picture may match: simpview's own (name "") or an accepted alternate. */
-    private record AcceptedPanel(String name, int[] panel) {
     }
 
     /**
@@ -271,12 +268,14 @@ public final class CompareBatch {
                 wanted.add(CompareTarget.page(p));
             }
         }
-        Function<String, Optional<String>> namer = name -> {
-            OptionalInt n = SubmissionNames.pageNumber(name);
-            return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
-        };
         warnUnusedRules(pageSubjects(pages));
-        return run(dir, outputs, wanted, Set.of(), namer, relative -> pageMatch(dir, relative, pages));
+        return run(dir, outputs, wanted, Set.of(), CompareBatch::pageNamed, relative -> pageMatch(dir, relative, pages));
+    }
+
+    /** The rubric key of the page a file's name names ("page3" of page3.png), for the alternates; none: empty. */
+    static Optional<String> pageNamed(String name) {
+        OptionalInt n = SubmissionNames.pageNumber(name);
+        return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
     }
 
     /**
@@ -382,17 +381,24 @@ public final class CompareBatch {
         warnUnusedRules(subjects);
         Function<String, Optional<String>> namer = name -> {
             Optional<String> scene = SubmissionNames.sceneName(name, scenes.keySet());
-            if (scene.isPresent()) {
-                return scene;
-            }
-            OptionalInt n = SubmissionNames.pageNumber(name);
-            return n.isPresent() ? Optional.of("page" + n.getAsInt()) : Optional.empty();
+            return scene.isPresent() ? scene : pageNamed(name);
         };
         return run(dir, outputs, wanted, Set.of(), namer, relative -> {
             Optional<String> named = SubmissionNames.sceneName(fileName(relative), scenes.keySet());
             return named.map(name -> new Match(CompareTarget.scene(scenes.get(name)), null))
                     .orElseGet(() -> pageMatch(dir, relative, pages));
         });
+    }
+
+    /**
+     * The rubric key of the scene a file's name names, among those of {@code scene}'s folder, for the alternates of
+     * one scene file: an alternate named for another scene beside it (pageD_v2.png beside pageC.simp) is not pageC's,
+     * as it is not when the folder is given; none: empty.
+     */
+    static Function<String, Optional<String>> sceneNamed(Path scene) {
+        Path folder = scene.toAbsolutePath().getParent();
+        Set<String> names = folder == null ? Set.of() : scenesIn(folder).keySet();
+        return name -> SubmissionNames.sceneName(name, names);
     }
 
     /**
@@ -408,7 +414,7 @@ public final class CompareBatch {
     int scenes(Path dir, Path scene, Outputs outputs) {
         if (Files.isRegularFile(scene)) {
             warnUnusedRules(Map.of(SubmissionNames.stem(scene.getFileName().toString()), 0));
-            return run(dir, outputs, List.of(CompareTarget.scene(scene)), Set.of(), name -> Optional.empty(),
+            return run(dir, outputs, List.of(CompareTarget.scene(scene)), Set.of(), sceneNamed(scene),
                     relative -> Match.alone(CompareTarget.scene(scene)));
         }
         if (!Files.isDirectory(scene)) {
@@ -457,7 +463,7 @@ public final class CompareBatch {
         Map<String, Integer> subjects = new HashMap<>();
         for (int page : pages) {
             for (int k = 1; k <= A1Layout.PANELS; k++) {
-                subjects.put("a1-page" + page + "-panel" + k, 0);
+                subjects.put(firstAssignmentKey(page, k), 0);
             }
         }
         return subjects;
@@ -762,7 +768,7 @@ public final class CompareBatch {
             return ExitCode.SCENE_ERROR;
         }
         Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
-        Map<CompareTarget, List<AcceptedPanel>> alternates = alternatesOf(drawn.keySet(), namer);
+        Map<CompareTarget, List<Alternates.Accepted>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames, outputs.files());
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
                 picture -> listing.linkOut(picture, dir));
@@ -1183,40 +1189,12 @@ public final class CompareBatch {
      * names a page or scene (as submissions do) is for that one only; one that names
      * none is for every target of the rule. An unreadable alternate is said and left out.
      */
-    private Map<CompareTarget, List<AcceptedPanel>> alternatesOf(Iterable<CompareTarget> targets,
+    private Map<CompareTarget, List<Alternates.Accepted>> alternatesOf(Iterable<CompareTarget> targets,
             Function<String, Optional<String>> namer) {
-        Map<CompareTarget, List<AcceptedPanel>> all = new HashMap<>();
+        Map<CompareTarget, List<Alternates.Accepted>> all = new HashMap<>();
         Map<Path, Object> read = new HashMap<>();
         for (CompareTarget target : targets) {
-            RubricRule rule = ruleOf(target);
-            List<AcceptedPanel> refs = new ArrayList<>();
-            if (rule.alternates() != null) {
-                List<Path> files;
-                try {
-                    files = picturesIn(rule.alternates());
-                } catch (IOException | UncheckedIOException e) {
-                    err.println(says + "alternates " + rule.alternates() + ": cannot be listed");
-                    files = List.of();
-                }
-                for (Path file : files) {
-                    Optional<String> named = namer.apply(file.getFileName().toString());
-                    if (named.isPresent() && !named.get().equals(key(target))) {
-                        continue;
-                    }
-                    Object picture = read.computeIfAbsent(file, f -> {
-                        try {
-                            return Picture.read(f);
-                        } catch (CompareException e) {
-                            err.println(says + "alternate left out: " + e.getMessage());
-                            return e;
-                        }
-                    });
-                    if (picture instanceof Picture p) {
-                        refs.add(new AcceptedPanel(rule.alternates().relativize(file).toString(), p.panel()));
-                    }
-                }
-            }
-            all.put(target, refs);
+            all.put(target, Alternates.of(ruleOf(target), key(target), namer, read, err, says));
         }
         return all;
     }
@@ -1320,7 +1298,7 @@ public final class CompareBatch {
      */
     private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
             Map<CompareTarget, Picture> drawn, Map<Integer, BufferedImage> firstAssignment,
-            Map<CompareTarget, List<AcceptedPanel>> alternates, DiffPlan diffs,
+            Map<CompareTarget, List<Alternates.Accepted>> alternates, DiffPlan diffs,
             Function<Path, Optional<String>> linkOut) {
         AtomicInteger named = new AtomicInteger();
         ExecutorService workers = Executors.newFixedThreadPool(
@@ -1380,7 +1358,7 @@ public final class CompareBatch {
      * named page2.png), it is compared as that, panel by panel; else as the page it names.
      */
     private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Picture ours,
-            List<AcceptedPanel> alternates, Map<Integer, BufferedImage> firstAssignment, DiffPlan diffs) {
+            List<Alternates.Accepted> alternates, Map<Integer, BufferedImage> firstAssignment, DiffPlan diffs) {
         if (!target.isPage() || target.page() > Assignment1.COUNT) {
             return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
@@ -1419,24 +1397,12 @@ public final class CompareBatch {
                 .min(Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
         long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
         StringBuilder looks = new StringBuilder();
-        PanelHint said = null;
-        Set<Integer> saidAlike = new HashSet<>(); // panels said with an earlier panel that looks the same
-        for (int k = 0; k < rows.size(); k++) {
-            PanelHint hint = rows.get(k).panelHint();
-            if (hint == null || hint == said || saidAlike.contains(k)) { // a page turned whole: one hint for its panels
-                continue;
-            }
-            List<Integer> alike = new ArrayList<>(List.of(k + 1));
-            for (int j = k + 1; j < rows.size() && !hint.wholePage(); j++) {
-                PanelHint other = rows.get(j).panelHint();
-                if (other != null && !other.wholePage() && other.brief().equals(hint.brief())) {
-                    alike.add(j + 1);
-                    saidAlike.add(j);
-                }
-            }
-            looks.append(hint.wholePage() ? "; looks " : "; " + StudentTable.panels(alike)
+        // the same mistake in several panels said once for them; a page turned whole once for its panels
+        PanelHint[] hints = rows.stream().map(BatchRow::panelHint).toArray(PanelHint[]::new);
+        for (List<Integer> alike : PanelWords.alike(hints)) {
+            PanelHint hint = hints[alike.get(0) - 1];
+            looks.append(hint.wholePage() ? "; looks " : "; " + PanelWords.panels(alike)
                     + (alike.size() > 1 ? " look " : " looks ")).append(hint.brief());
-            said = hint;
         }
         // a note of the picture (its format) is said once, not for each panel
         rows.stream().flatMap(r -> r.briefNotes().stream()).distinct().forEach(note -> looks.append("; ").append(note));
@@ -1458,7 +1424,7 @@ public final class CompareBatch {
      * that passes is its result; when none does, the comparison with simpview's own is. Thread-safe.
      */
     private BatchRow compare(Path file, String relative, CompareTarget target, Picture ours,
-            List<AcceptedPanel> alternates, DiffPlan diffs, Picture read) {
+            List<Alternates.Accepted> alternates, DiffPlan diffs, Picture read) {
         String label = target.label(own.context());
         RubricRule rule = ruleOf(target);
         Picture theirs = read;
@@ -1469,22 +1435,11 @@ public final class CompareBatch {
                 return BatchRow.broken(relative, label, e.getMessage(), rule);
             }
         }
-        List<AcceptedPanel> references = new ArrayList<>();
-        references.add(new AcceptedPanel("", ours.panel()));
-        references.addAll(alternates);
-        ComparisonReport best = null;
-        String bestName = "";
-        for (AcceptedPanel reference : references) {
-            Comparison comparison = rule.compare(reference.panel(), theirs.panel(), Comparison.N);
-            ComparisonReport report = ComparisonReport.of(theirs, target.describe(own.context()), comparison, rule);
-            if (best == null || report.passes()) {
-                best = report;
-                bestName = reference.name();
-            }
-            if (report.passes()) {
-                break;
-            }
-        }
+        String against = target.describe(own.context());
+        Alternates.Judged judged = Alternates.judge(ComparisonReport.of(theirs, against,
+                rule.compare(ours.panel(), theirs.panel(), Comparison.N), rule), theirs, against, rule, alternates);
+        ComparisonReport best = judged.report();
+        String bestName = judged.alternate();
         double empty = partial && !best.passes() ? emptyShare(label, rule, ours.panel(), Comparison.N) : Double.NaN;
         double score = rule.score(best.comparison(), partial, empty);
         // a failing picture no mistake explains may be another page, its file named for the wrong one
@@ -1525,6 +1480,11 @@ public final class CompareBatch {
         return panels;
     }
 
+    /** The rubric key of the first assignment's page's panel: "a1-page2-panel4". */
+    static String firstAssignmentKey(int page, int panel) {
+        return "a1-page" + page + "-panel" + panel;
+    }
+
     /** E.g. "A1 page 1", "A1 page 3 (seed 361)": a page of the first assignment as a whole (one that is missing). */
     private String firstAssignmentLabel(int page) {
         return "A1 page " + page + (Assignment1.page(page).usesSeed() ? " (seed " + own.context().seed() + ")" : "");
@@ -1554,7 +1514,12 @@ public final class CompareBatch {
      * {@code compare --assignment 1} judges: which pixels a line drawer lights is the point.
      */
     private RubricRule firstAssignmentRule(int page, int panel) {
-        RubricRule rule = rubric.ruleFor("a1-page" + page + "-panel" + panel, 0);
+        return firstAssignmentRule(rubric, page, panel);
+    }
+
+    /** Of {@code rubric}, the rule of the first assignment's page's panel, as a batch judges it ({@link #firstAssignmentRule(int, int)}). */
+    static RubricRule firstAssignmentRule(Rubric rubric, int page, int panel) {
+        RubricRule rule = rubric.ruleFor(firstAssignmentKey(page, panel), 0);
         if (!"*".equals(rule.match())) {
             return rule;
         }
@@ -1914,7 +1879,7 @@ public final class CompareBatch {
         return false;
     }
 
-    private static Map<String, Path> scenesIn(Path folder) {
+    static Map<String, Path> scenesIn(Path folder) {
         Map<String, Path> scenes = new TreeMap<>();
         try {
             SceneList.folder(folder).forEach(f -> scenes.put(SubmissionNames.stem(f.getFileName().toString()), f));

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -23,6 +24,7 @@ import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
+import simpview.compare.Count;
 import simpview.compare.ComparisonReport;
 import simpview.compare.DiffRegion;
 import simpview.compare.DiffRegions;
@@ -31,6 +33,7 @@ import simpview.compare.HtmlReport;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
 import simpview.compare.PanelHint;
+import simpview.compare.PanelWords;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PictureFormat;
@@ -151,7 +154,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
 
     @Option(names = "--rubric", paramLabel = "F.json",
             description = "per page or pattern, the tolerance, deviation, minimum share, failing-pixel limit, points and "
-                    + "accepted alternates (see docs/grading.md); one picture: judged by its page's or scene's rule")
+                    + "accepted alternates (see docs/grading.md); one picture: judged by its page's or scene's rule "
+                    + "and its alternates, or with --assignment 1 each panel by its panel's rule")
     private Path rubric;
 
     @Option(names = "--gradescope", paramLabel = "results.json", description = "with --dir: write Gradescope's results.json")
@@ -286,8 +290,6 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             usage(gradescope == null && junit == null && html == null && !partial
                     && diffs == CompareBatch.DiffImages.ALL,
                     "--gradescope, --junit, --html, --diffs and --partial go with --dir");
-            usage(rubric == null || !first, "--rubric goes with one picture of the eight pages or a scene, or with --dir: "
-                    + "a page of the first assignment alone is judged by the command line's rule");
             usage(diff == null || !diff.toString().isEmpty(), "--diff needs a file name");
             usage(diff == null || PngFiles.isPngName(diff), "--diff " + diff + ": " + PngFiles.PNG_ONLY);
             files = new OutputPaths().reads(image, "the picture to compare").reads(scene, "the scene")
@@ -310,8 +312,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             pictures.checkFirstAssignment();
             usage(rubric != null || !spec.commandLine().getParseResult().hasMatchedOption("--deviation"),
                     "--deviation does not go with --assignment 1: the first assignment's panels are judged without "
-                            + "slack (which pixels a line drawer lights is the point)" + (batch ? "; a rubric rule may "
-                            + "give them one (\"deviation\")" : ""));
+                            + "slack (which pixels a line drawer lights is the point); a rubric rule may give them one "
+                            + "(\"deviation\")");
         }
     }
 
@@ -336,11 +338,12 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     }
 
     /**
-     * One picture against its page or scene, judged by {@code judged}'s rule for it (the command line's alone
-     * without --rubric), as a batch judges it against simpview's own picture.
+     * One picture against its page or scene, judged by {@code rubricRead}'s rule for it (the command line's alone
+     * without --rubric), as a batch judges it: against simpview's own picture, and when it fails that, against each
+     * of the rule's accepted alternates in turn ({@link Alternates}).
      */
-    private int compareOne(OwnPictures own, CompareTarget target, OtherPages others, Rubric judged) {
-        RubricRule rule = judged.ruleFor(CompareBatch.key(target), target.isPage() ? target.page() : 0);
+    private int compareOne(OwnPictures own, CompareTarget target, OtherPages others, Rubric rubricRead) {
+        RubricRule rule = rubricRead.ruleFor(CompareBatch.key(target), target.isPage() ? target.page() : 0);
         Picture theirs;
         Picture ours;
         try {
@@ -367,8 +370,15 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         Thread hinting = new Thread(hint, "simpview-compare-hint");
         hinting.setDaemon(true);
         hinting.start();
-        Comparison comparison = rule.compare(ours.panel(), theirs.panel(), Comparison.N);
-        ComparisonReport report = ComparisonReport.of(theirs, own.describe(target), comparison, rule, awaitHint(hint));
+        ComparisonReport againstOurs = ComparisonReport.of(theirs, own.describe(target),
+                rule.compare(ours.panel(), theirs.panel(), Comparison.N), rule, awaitHint(hint));
+        // as a batch judges it: a picture that fails against simpview's own, against each accepted alternate in turn
+        List<Alternates.Accepted> alternates = againstOurs.passes() ? List.of() : Alternates.of(rule,
+                CompareBatch.key(target), target.isPage() ? CompareBatch::pageNamed : CompareBatch.sceneNamed(scene),
+                new HashMap<>(), err(), "simpview compare: ");
+        Alternates.Judged judged = Alternates.judge(againstOurs, theirs, own.describe(target), rule, alternates);
+        ComparisonReport report = judged.report();
+        Comparison comparison = report.comparison();
         // a picture that fails and no mistake explains may be another page, its file named for the wrong one
         OtherPage other = report.passes() || report.systematic() != null || !target.isPage() ? null
                 : others.ofEight(target.page(), theirs.panel(), rule);
@@ -376,10 +386,18 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         if (rubric != null) {
             out.println("rubric:  " + rubric + ", " + ("*".equals(rule.match()) ? "its defaults (no rule names "
                     + CompareBatch.key(target) + ")" : "its rule \"match\": \"" + rule.match() + "\"")
-                    + (rule.alternates() == null ? "" : "; its accepted alternates (" + rule.alternates() + ") are "
-                            + "tried by --dir and check only"));
+                    + (rule.alternates() == null ? "" : "; its accepted alternates, in " + rule.alternates() + ", "
+                            + "are tried when simpview's own fails it"));
         }
         out.print(report.text());
+        if (!judged.alternate().isEmpty()) {
+            out.println("note: matched the accepted alternate " + judged.alternate() + "; against simpview's own it "
+                    + "fails: " + Percent.of(againstOurs.verdictShare()) + " " + againstOurs.verdictName() + " ("
+                    + Percent.of(againstOurs.minimum() / 100) + " needed)");
+        } else if (!alternates.isEmpty()) {
+            out.println("note: it passes against none of the rule's " + Count.of(alternates.size(),
+                    "accepted alternate") + " either (in " + rule.alternates() + ")");
+        }
         String inspect = inspectCommand(target, report.lookAt());
         if (inspect != null) {
             nextStep(out, "how simpview made that pixel, term by term", inspect);
@@ -392,7 +410,8 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diff);
                 files.wrote(diff);
-                out.println("diff:    " + diff + " (ours | theirs | heat map: grey identical, blue within "
+                out.println("diff:    " + diff + " (" + (judged.alternate().isEmpty() ? "ours"
+                        : "the accepted alternate " + judged.alternate()) + " | theirs | heat map: grey identical, blue within "
                         + rule.tolerance() + "/255, yellow one pixel off, red different)");
             } catch (IOException e) {
                 err().println("simpview compare: " + e.getMessage());
@@ -449,11 +468,23 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     }
 
     /**
-     * The first assignment's page beside the picture, panel by panel, without slack: the verdict passes when every
-     * panel does. Each failing panel's largest differing patches are listed; --diff writes the three pages.
+     * The first assignment's page beside the picture, panel by panel, each panel by its rule: the rubric's rule for
+     * it ({@code a1-page2-panel4}) with --rubric, as a batch judges it, else the command line's, without slack. The
+     * verdict passes when every panel does. Each failing panel's largest differing patches are listed; a hint that
+     * fits several panels is said once for them; --diff writes the three pages.
      */
     private int compareAssignment1() {
         PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
+        RubricRule[] rules = new RubricRule[panels.length];
+        try {
+            Rubric read = rubricOf(rubric, verdictRule());
+            for (int k = 0; k < panels.length; k++) {
+                rules[k] = CompareBatch.firstAssignmentRule(read, page, k + 1);
+            }
+        } catch (CompareException e) {
+            err().println("simpview compare: " + e.getMessage());
+            return ExitCode.USAGE_ERROR;
+        }
         PageContext context = context();
         A1Page shown = Assignment1.page(page);
         BufferedImage ours = Assignment1.render(page, context);
@@ -466,48 +497,62 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         }
         Comparison[] compared = new Comparison[panels.length];
         for (int k = 0; k < panels.length; k++) {
-            // which pixels a line drawer lights is the point: no slack
-            compared[k] = Comparison.of(cut.ours()[k], cut.theirs()[k], panels[k].size(), 0, metric, flipThreshold());
+            compared[k] = rules[k].compare(cut.ours()[k], cut.theirs()[k], panels[k].size());
         }
         PrintWriter out = spec.commandLine().getOut();
+        if (rubric != null) {
+            sayPanelRules(out, shown, rules);
+        }
         out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
                 + (shown.usesSeed() ? ", seed " + context.seed() : "")
                 + (context.a1Rule() == A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
         out.println("page:    " + cut.describe());
-        if (metric == Comparison.Metric.BLUR) {
+        RubricRule first = rules[0];
+        // one rule's terms for all four panels (always so without a rubric): said once, in the table's head
+        boolean alike = Arrays.stream(rules).allMatch(r -> sameVerdict(r, first));
+        if (alike && first.metric() == Comparison.Metric.BLUR) {
             out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
         }
-        boolean flip = metric == Comparison.Metric.FLIP;
-        String within = flip ? String.format(Locale.ROOT, "FLIP <= %.3f", flipThreshold())
-                : "within " + tolerance + "/255";
-        if (flip) {
+        boolean flip = first.metric() == Comparison.Metric.FLIP;
+        if (alike && flip) {
             out.println("metric:  FLIP (LDR, 67 pixels per degree) of each panel: a pixel matches at FLIP "
-                    + String.format(Locale.ROOT, "%.3f", flipThreshold()) + " or less");
+                    + String.format(Locale.ROOT, "%.3f", first.flipThreshold()) + " or less");
         }
-        out.printf(Locale.ROOT, "%-38s %9s %12s%n", "panel", "identical", within);
+        String within = alike ? within(first) : "by its rule";
+        out.printf(Locale.ROOT, "%-38s %9s %12s%s%n", "panel", "identical", within, alike ? "" : "  needed");
         boolean[] passing = new boolean[panels.length];
         for (int k = 0; k < panels.length; k++) {
             Comparison c = compared[k];
             // rounded down, as every share is printed (Percent): a hint's share of the panel reads the same
-            out.printf(Locale.ROOT, "%-38s %7s %% %10s %%%n", (k + 1) + " " + panelName(shown, k),
-                    Percent.number(c.share(0, false)), Percent.number(c.verdictShare(tolerance)));
-            passing[k] = 100 * c.verdictShare(tolerance) >= min;
+            out.printf(Locale.ROOT, "%-38s %7s %% %10s %%%s%n", (k + 1) + " " + panelName(shown, k),
+                    Percent.number(c.share(0, false)), Percent.number(c.verdictShare(rules[k].tolerance())),
+                    alike ? "" : "  " + needed(rules[k]));
+            passing[k] = rules[k].passes(c);
         }
         boolean passes = true;
         for (int k = 0; k < panels.length; k++) {
             passes &= passing[k];
             if (!passing[k]) {
+                int tolerance = rules[k].tolerance();
                 out.print("panel " + (k + 1) + " (" + panelName(shown, k) + "): " + ComparisonReport.regionsText(
                         compared[k], DiffRegions.of(compared[k], tolerance, ComparisonReport.REGIONS_LISTED), tolerance));
             }
         }
-        out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%n", passes ? "PASS" : "FAIL",
-                passes ? "reaches" : "must reach", min, flip ? within : within + " (no slack)");
+        if (alike) {
+            out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%s%n", passes ? "PASS" : "FAIL",
+                    passes ? "reaches" : "must reach", first.minShare(), flip ? within : within + " ("
+                    + (first.deviation() == 0 ? "no slack" : "with " + first.deviation() + " px slack") + ")",
+                    first.maxFailing() < 0 ? "" : String.format(Locale.ROOT, ", at most %,d pixels failing",
+                            first.maxFailing()));
+        } else {
+            out.println((passes ? "PASS: every panel reaches" : "FAIL: every panel must reach") + " what its rule "
+                    + "needs (the table's last column)");
+        }
         // A panel passes with up to 1 % of its pixels wrong, 900: a small shape left out still passes. Its patches
         // are not listed, so a solid one is said, as of a page of the eight pages, by the panel it is in.
         for (int k = 0; k < panels.length; k++) {
-            DiffRegion patch = passing[k] ? ComparisonReport.solidPatch(
-                    DiffRegions.of(compared[k], tolerance, ComparisonReport.REGIONS_LISTED).largest()) : null;
+            DiffRegion patch = passing[k] ? ComparisonReport.solidPatch(DiffRegions.of(compared[k],
+                    rules[k].tolerance(), ComparisonReport.REGIONS_LISTED).largest()) : null;
             if (patch != null) {
                 out.println("note: panel " + (k + 1) + " (" + panelName(shown, k) + "): "
                         + ComparisonReport.solidPatchNote(patch));
@@ -520,15 +565,16 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             ourPanels[k] = compared[k].ours();
             theirPanels[k] = compared[k].theirs();
         }
-        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, tolerance,
+        // the hints by panel 1's tolerance, as a batch finds them
+        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, first.tolerance(),
                 shown.panelNames());
-        CompareBatch.firstAssignmentHints(hints, shown, context, ourPanels, theirPanels, tolerance);
+        CompareBatch.firstAssignmentHints(hints, shown, context, ourPanels, theirPanels, first.tolerance());
         // a page that fails as a whole and passes as another of the five: that one hint, of the page
-        OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, firstAssignmentRules(panels.length));
+        OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, rules);
         // a page of the student's own random values, which no panel's own mistake explains
         RandomValues random = passes || other != null || Arrays.stream(hints).anyMatch(h -> h != null) ? null
                 : RandomValues.find("A1 page " + page, page, shown, context.seed(), ourPanels, theirPanels,
-                        A1Layout.PANEL, tolerance);
+                        A1Layout.PANEL, first.tolerance());
         if (other != null) {
             out.println("hint: " + other.hint(A1Layout.PANEL));
         } else if (random != null) {
@@ -536,28 +582,79 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         } else if (hints[0] instanceof WholePage whole) {
             out.println("hint: " + whole.hint(A1Layout.PANEL));
         } else {
-            for (int k = 1; k <= panels.length; k++) {
-                if (hints[k - 1] != null) {
-                    out.println("hint: panel " + k + ": " + hints[k - 1].hint(A1Layout.PANEL));
-                }
+            // the same mistake in several panels: said once for them, as check says it
+            for (List<Integer> alikePanels : PanelWords.alike(hints)) {
+                String text = hints[alikePanels.get(0) - 1].hint(A1Layout.PANEL);
+                boolean sameWords = alikePanels.stream().allMatch(k -> text.equals(hints[k - 1].hint(A1Layout.PANEL)));
+                out.println("hint: " + PanelWords.panels(alikePanels) + ": "
+                        + PanelWords.sharedHint(text, sameWords, alikePanels));
             }
         }
         if (!passes) {
-            lookAtFirstAssignment(out, shown, compared, passing);
+            lookAtFirstAssignment(out, shown, compared, passing, rules);
         }
         if (diff != null) {
             try {
-                PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), tolerance), diff);
+                PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), first.tolerance()), diff);
                 files.wrote(diff);
             } catch (IOException e) {
                 err().println("simpview compare: " + e.getMessage());
                 return ExitCode.SCENE_ERROR;
             }
             out.println("diff:    " + diff + " (ours | theirs | heat map, each the whole page, their panels on white: "
-                    + "grey identical, blue within " + tolerance + "/255, "
+                    + "grey identical, blue within " + first.tolerance() + "/255, "
                     + (flip ? "yellow beyond it but forgiven by FLIP, red above FLIP's threshold)" : "red beyond it)"));
         }
         return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
+    }
+
+    /**
+     * Which of the rubric's rules judged which panels, a line a rule, in the order of their first panels, as one
+     * picture's report begins: {@code rubric:  compare.json, panel 4 (antialiased): its rule "match": "a1-*-panel4"}.
+     */
+    private void sayPanelRules(PrintWriter out, A1Page shown, RubricRule[] rules) {
+        List<String> said = new ArrayList<>();
+        for (int k = 0; k < rules.length; k++) {
+            String match = rules[k].match();
+            if (said.contains(match)) {
+                continue;
+            }
+            said.add(match);
+            List<Integer> judged = new ArrayList<>();
+            List<String> keys = new ArrayList<>();
+            for (int j = k; j < rules.length; j++) {
+                if (rules[j].match().equals(match)) {
+                    judged.add(j + 1);
+                    keys.add(CompareBatch.firstAssignmentKey(page, j + 1));
+                }
+            }
+            String which = PanelWords.panels(judged) + (judged.size() == 1 ? " (" + panelName(shown, k) + ")" : "");
+            out.println("rubric:  " + rubric + ", " + which + ": " + ("*".equals(match)
+                    ? "its defaults, without slack (no rule names " + UsageWords.joined(keys, "or") + ")"
+                    : "its rule \"match\": \"" + match + "\""));
+        }
+    }
+
+    /** Whether two rules judge a panel alike: the same tolerance, minimum share, slack, pixel limit and metric. */
+    private static boolean sameVerdict(RubricRule a, RubricRule b) {
+        return a.tolerance() == b.tolerance() && a.minShare() == b.minShare() && a.deviation() == b.deviation()
+                && a.maxFailing() == b.maxFailing() && a.metric() == b.metric()
+                && (a.metric() != Comparison.Metric.FLIP || a.flipThreshold() == b.flipThreshold());
+    }
+
+    /** What a rule's share counts: "within 8/255", or "FLIP {@code <=} 0.130". */
+    private static String within(RubricRule rule) {
+        return rule.metric() == Comparison.Metric.FLIP ? String.format(Locale.ROOT, "FLIP <= %.3f",
+                rule.flipThreshold()) : "within " + rule.tolerance() + "/255";
+    }
+
+    /** What a panel's rule needs, for the table's last column: "99.00 % within 8/255, no slack, blurred". */
+    private static String needed(RubricRule rule) {
+        return String.format(Locale.ROOT, "%.2f %% %s, %s%s%s", rule.minShare(), within(rule),
+                rule.deviation() == 0 ? "no slack" : rule.deviation() + " px slack",
+                rule.metric() == Comparison.Metric.BLUR ? ", blurred" : "",
+                rule.maxFailing() < 0 ? "" : String.format(Locale.ROOT, ", at most %,d pixels failing",
+                        rule.maxFailing()));
     }
 
     /**
@@ -565,17 +662,19 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
      * differs most in that panel's largest patch ({@link WorstPixel}), in the panel's and the page's coordinates;
      * and the {@code inspect} command that shows which lines or triangles wrote it there, or went past it.
      */
-    private void lookAtFirstAssignment(PrintWriter out, A1Page shown, Comparison[] compared, boolean[] passing) {
+    private void lookAtFirstAssignment(PrintWriter out, A1Page shown, Comparison[] compared, boolean[] passing,
+            RubricRule[] rules) {
         int worst = -1;
         for (int k = 0; k < compared.length; k++) {
-            if (!passing[k] && (worst < 0
-                    || compared[k].verdictShare(tolerance) < compared[worst].verdictShare(tolerance))) {
+            if (!passing[k] && (worst < 0 || compared[k].verdictShare(rules[k].tolerance())
+                    < compared[worst].verdictShare(rules[worst].tolerance()))) {
                 worst = k;
             }
         }
         if (worst < 0) {
             return;
         }
+        int tolerance = rules[worst].tolerance();
         List<DiffRegion> patches = DiffRegions.of(compared[worst], tolerance, ComparisonReport.REGIONS_LISTED)
                 .largest();
         WorstPixel look = patches.isEmpty() ? null : WorstPixel.in(compared[worst], patches.get(0), tolerance);
@@ -601,13 +700,6 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     private static void nextStep(PrintWriter out, String why, String command) {
         out.println("         " + why + ":");
         out.println("next:    " + command);
-    }
-
-    /** The rule each of the first assignment's panels is judged by here: the command line's, without slack. */
-    private RubricRule[] firstAssignmentRules(int count) {
-        RubricRule[] rules = new RubricRule[count];
-        Arrays.fill(rules, RubricRule.defaults(tolerance, min, 0, metric, flipThreshold()));
-        return rules;
     }
 
     /** Panel k's (from 0) drawer ("Bresenham") on a page of lines, its scene ("mesh") on a page of polygons. */

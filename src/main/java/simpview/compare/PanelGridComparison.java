@@ -224,7 +224,7 @@ public final class PanelGridComparison {
         if (best == null) {
             return rule + eightPages;
         }
-        List<String> framed = new ArrayList<>();
+        List<Integer> framed = new ArrayList<>();
         List<String> why = new ArrayList<>();
         for (int k = 0; k < panels.length; k++) {
             Panel p = panels[k];
@@ -232,7 +232,7 @@ public final class PanelGridComparison {
             int y0 = best[1] + p.top();
             String problem = problem(rgb, width, x0, y0, p.size());
             if (problem == null) {
-                framed.add(String.valueOf(k + 1));
+                framed.add(k + 1);
             } else {
                 why.add("panel " + (k + 1) + " (x " + x0 + "-" + (x0 + p.size() - 1) + ", y " + y0 + "-"
                         + (y0 + p.size() - 1) + " of the picture): " + problem);
@@ -242,8 +242,7 @@ public final class PanelGridComparison {
             // the first panel says what is wrong; the others are most likely so for the same reason
             return "no panel is framed where a " + page + "x" + page + " page has them; " + why.get(0) + eightPages;
         }
-        return (framed.size() == 1 ? "panel " : "panels ") + Sentence.listed(framed)
-                + (framed.size() == 1 ? " is" : " are") + " framed with the page's top-left at x " + best[0] + ", y " + best[1] + " of the picture, but not "
+        return PanelWords.panels(framed) + (framed.size() == 1 ? " is" : " are") + " framed with the page's top-left at x " + best[0] + ", y " + best[1] + " of the picture, but not "
                 + String.join("; nor ", why) + eightPages;
     }
 

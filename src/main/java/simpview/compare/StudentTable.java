@@ -83,12 +83,10 @@ public final class StudentTable {
             String text = hint.hint(row.size());
             List<Integer> alike = hint.wholePage() || row.panel() == 0 ? List.of() : alike(rows, r, saidAlike);
             if (alike.size() > 1) { // the same mistake in several panels of the picture: said once, for all of them
-                which = row.page() + " " + panels(alike);
+                which = row.page() + " " + PanelWords.panels(alike);
                 String first = text;
                 boolean sameWords = alike.stream().allMatch(k -> first.equals(hintOfPanel(rows, row.file(), k)));
-                text = sameWords ? text : text + " The numbers are panel " + alike.get(0) + "'s; "
-                        + panels(alike.subList(1, alike.size())) + (alike.size() == 2 ? " looks" : " look")
-                        + " the same.";
+                text = PanelWords.sharedHint(text, sameWords, alike);
             }
             out.append("hint: ").append(row.file()).append(" (").append(GradescopeResults.name(which)).append("): ")
                     .append(text).append('\n');
@@ -187,16 +185,6 @@ public final class StudentTable {
     private static String hintOfPanel(List<BatchRow> rows, String file, int k) {
         return rows.stream().filter(r -> r.file().equals(file) && r.panel() == k && r.panelHint() != null)
                 .map(r -> r.panelHint().hint(r.size())).findFirst().orElse(null);
-    }
-
-    /** "panel 2", "panels 1 and 3", "panels 1-4" (three or more in a row), "panels 1, 2 and 4": k in order. */
-    public static String panels(List<Integer> panels) {
-        if (panels.size() == 1) {
-            return "panel " + panels.get(0);
-        }
-        boolean inARow = panels.get(panels.size() - 1) - panels.get(0) == panels.size() - 1;
-        return "panels " + (inARow && panels.size() > 2 ? panels.get(0) + "-" + panels.get(panels.size() - 1)
-                : Sentence.listed(panels.stream().map(String::valueOf).toList()));
     }
 
     /** Whether a row is one panel of a page compared panel by panel (the first assignment's), not a whole picture. */

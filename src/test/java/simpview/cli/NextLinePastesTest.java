@@ -13,6 +13,7 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
 
 /**
@@ -84,12 +85,13 @@ class NextLinePastesTest {
      * A compare command of a next: line runs whole, fails as its batch said, and gives an inspect line of its own
      * (run as {@link CompareNextStepTest} runs it).
      */
-    private void compareRunsAndFails(String command) {
+    private CliRun compareRunsAndFails(String command) {
         assertTrue(command.startsWith("simpview compare "), command);
         CliRun alone = runPasted(command);
         assertEquals(ExitCode.SCENE_ERROR, alone.exitCode(), command + "\n" + alone.out() + alone.err());
         assertTrue(alone.out().contains("\nFAIL: "), alone.out());
         assertTrue(nextCommands(alone.out()).get(0).startsWith("simpview inspect --page 4 --at "), alone.out());
+        return alone;
     }
 
     @Test
@@ -149,5 +151,85 @@ class NextLinePastesTest {
         assertTrue(run.out().startsWith("rubric:  " + rubric + ", its defaults (no rule names page4)\n"), run.out());
         assertTrue(run.out().contains("\nFAIL: 99.97 % within 8/255 with slack (99.99 % needed)\n"), run.out());
         assertEquals(ExitCode.OK, CliRun.of("compare", mine.toString(), "--page", "4").exitCode());
+    }
+    /**
+     * A picture that fails against simpview's own page and matches a rubric's accepted alternate passes alone by that
+     * alternate, as a batch passes it ({@link GradingCommandTest}); and the compare command check prints for one that
+     * matches none (an alternate named for another page is not tried) tries the same alternates and fails against
+     * simpview's own.
+     */
+    @Test
+    void aPictureAloneTriesItsRulesAlternatesAsItsBatchDoes() throws Exception {
+        Path alternates = Files.createDirectories(dir.resolve("alt"));
+        brightened(alternates.resolve("page4-brighter.png"), 80);
+        brightened(alternates.resolve("page5-other.png"), 120); // names page 5: not one of page 4's
+        Path rubric = Files.writeString(dir.resolve("r.json"), "{\"pages\": [{\"match\": \"4\", \"alternates\": \"alt\"}]}");
+        Path folder = dir.resolve("graded");
+        Path mine = brightened(folder.resolve("page4.png"), 80);
+        CliRun alone = CliRun.of("compare", mine.toString(), "--page", "4", "--rubric", rubric.toString());
+        assertEquals(ExitCode.OK, alone.exitCode(), alone.out() + alone.err());
+        assertTrue(alone.out().startsWith("rubric:  " + rubric + ", its rule \"match\": \"4\"; its accepted alternates, in "
+                + alternates + ", are tried when simpview's own fails it\n"), alone.out());
+        assertTrue(alone.out().contains("\nPASS: 100.00 % within 8/255 with slack (99.00 % needed)\nnote: matched the "
+                + "accepted alternate page4-brighter.png; against simpview's own it fails: "), alone.out());
+
+        // the page 5 alternate's picture, as page 4: the batch fails it, and so does the command it prints
+        brightened(folder.resolve("page4.png"), 120);
+        CliRun failing = CliRun.of("check", folder.toString(), "--pages", "4", "--rubric", rubric.toString());
+        assertEquals(ExitCode.SCENE_ERROR, failing.exitCode(), failing.out() + failing.err());
+        String command = nextCommands(failing.out()).get(0);
+        CliRun pasted = compareRunsAndFails(command);
+        assertTrue(pasted.out().contains("\nnote: it passes against none of the rule's 1 accepted alternate either (in "
+                + alternates + ")\n"), pasted.out());
+        assertFalse(pasted.out().contains("matched the accepted alternate"), pasted.out());
+    }
+    /**
+     * A first-assignment page is judged alone by the rubric's panel rules, as check judges it, and says which rule
+     * judged which panel: its panel 1 (4 % green), which the defaults fail, passes by a rule that needs 95 %; its
+     * panel 2 (25 pixels off), which the defaults pass, fails by a rule of at most 10 failing pixels, in check, in the
+     * command check prints and in the one a folder dropped on the window prints.
+     */
+    @Test
+    void aFirstAssignmentPageAloneIsJudgedByTheRubricsPanelRules() throws Exception {
+        BufferedImage page = Assignment1.render(2, PageContext.defaults());
+        for (int y = 100; y < 160; y++) {
+            for (int x = 100; x < 160; x++) {
+                page.setRGB(x, y, 0x00FF00); // panel 1: 3,600 of its 90,000 pixels
+                if (x < 105 && y < 105) {
+                    page.setRGB(x + 400, y, 0x00FF00); // panel 2: 25
+                }
+            }
+        }
+        Path folder = Files.createDirectories(dir.resolve("a1"));
+        Path mine = folder.resolve("a1-page2.png");
+        ImageIO.write(page, "png", mine.toFile());
+        Path strict = Files.writeString(dir.resolve("strict.json"), "{\"pages\": [{\"match\": \"a1-*-panel1\", "
+                + "\"min_share\": 95}, {\"match\": \"a1-page2-panel2\", \"max_failing_pixels\": 10}]}");
+        CliRun check = CliRun.of("check", folder.toString(), "--assignment", "1", "--pages", "2", "--rubric",
+                strict.toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out() + check.err());
+        List<String> commands = nextCommands(check.out());
+        assertEquals(1, commands.size(), check.out());
+        assertTrue(commands.get(0).contains(" --assignment 1 --page 2 --rubric " + strict + " "), commands.get(0));
+        CliRun pasted = runPasted(commands.get(0));
+        assertEquals(ExitCode.SCENE_ERROR, pasted.exitCode(), pasted.out() + pasted.err());
+        assertTrue(pasted.out().startsWith("rubric:  " + strict + ", panel 1 (DDA): its rule \"match\": \"a1-*-panel1\"\n"
+                + "rubric:  " + strict + ", panel 2 (Bresenham): its rule \"match\": \"a1-page2-panel2\"\n"
+                + "rubric:  " + strict + ", panels 3 and 4: its defaults, without slack (no rule names a1-page2-panel3 or "
+                + "a1-page2-panel4)\n"), pasted.out());
+        assertTrue(pasted.out().contains("\n1 DDA                                    96.00 %      96.00 %  95.00 % within "
+                + "8/255, 1 px slack\n"), pasted.out());
+        assertTrue(pasted.out().contains("\npanel 2 (Bresenham): 25 pixels in 1 patch differ by more than 8/255 even "
+                + "with slack"), pasted.out());
+        assertFalse(pasted.out().contains("\npanel 1 (DDA): "), "panel 1 passes by its rule: " + pasted.out());
+        assertTrue(pasted.out().contains("\nFAIL: every panel must reach what its rule needs"), pasted.out());
+        assertTrue(nextCommands(pasted.out()).get(0).startsWith("simpview inspect --assignment 1 --page 2 --at "),
+                pasted.out());
+
+        // the folder's own compare.json, as a folder dropped on the window is judged
+        Files.copy(strict, folder.resolve("compare.json"));
+        List<String> window = nextCommands(CheckCommand.checkFolder(folder, PageContext.defaults()));
+        assertEquals(commands.get(0).replace(strict.toString(), folder.resolve("compare.json").toString()),
+                window.get(0));
     }
 }
