@@ -194,6 +194,12 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     private List<String> notes(boolean brief) {
         List<String> notes = new ArrayList<>();
+        if (brief) { // the whole of it is in the FAIL line of the Gradescope and JUnit feedback and the web report
+            String limit = pixelLimit(true);
+            if (!limit.isEmpty()) {
+                notes.add(limit);
+            }
+        }
         DiffRegion patch = solidPatch();
         if (patch != null) {
             notes.add(brief ? ComparisonReport.solidPatchBrief(patch) : ComparisonReport.solidPatchNote(patch));
@@ -203,6 +209,29 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
             notes.add(format);
         }
         return notes;
+    }
+
+    /**
+     * Of a row that fails and has more failing pixels than its rule's {@code max_failing_pixels} allows, how many
+     * fail and how many may; "" for any other. Briefly ("449 pixels fail, at most 300 allowed"; of a panel of the
+     * first assignment's, after "panel 2: "), for the table's note column and the progress line, whose FAIL and
+     * share alone ("FAIL 99.89 %" where 99 % is needed) read as a wrong verdict; whole for {@code check}'s table,
+     * with the share beside what its rule needs, so that the reason is plain whichever of the two failed it.
+     */
+    public String pixelLimit(boolean brief) {
+        if (result != Result.FAIL || rule == null || rule.maxFailing() < 0 || failing <= rule.maxFailing()) {
+            return "";
+        }
+        String count = Count.with(failing, "pixel", "fails", "fail");
+        if (brief) {
+            return (panel() > 0 ? "panel " + panel() + ": " : "")
+                    + String.format(Locale.ROOT, "%s, at most %,d allowed", count, rule.maxFailing());
+        }
+        boolean shareEnough = verdict * 100 >= rule.minShare() - 1e-9; // as RubricRule.passes has it
+        return String.format(Locale.ROOT, "%s%s, and the rubric's max_failing_pixels allows at most %,d; its share, %s, "
+                + "%s the %s needed", shareEnough ? "it fails on its pixel count, not its share: " : "", count,
+                rule.maxFailing(), Percent.of(verdict), shareEnough ? "reaches" : "is below",
+                Percent.of(rule.minShare() / 100)) + (shareEnough ? "" : " too");
     }
 
     /**

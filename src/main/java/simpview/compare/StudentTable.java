@@ -16,8 +16,8 @@ import java.util.function.Function;
  * worst region (the largest patch that differs even with slack), in aligned
  * plain-text columns; then the hints of what a whole panel looks like
  * ({@link PanelHint}) and the notes of pictures that pass with a solid patch or fail saved as JPEG or GIF
- * ({@link BatchRow#notes}); then the pictures that do not count (another picture of
- * their page does) and why, the pages asked for that no picture matched, and
+ * ({@link BatchRow#notes}) or by their rubric's pixel limit ({@link BatchRow#pixelLimit}); then the pictures
+ * that do not count (another picture of their page does) and why, the pages asked for that no picture matched, and
  * one line of counts, of the pictures that count (of the first assignment's
  * pages, of their panels).
  */
@@ -94,6 +94,10 @@ public final class StudentTable {
         }
         Set<String> notes = new LinkedHashSet<>(); // a page of panels: its picture's note (its format) once
         for (BatchRow row : rows) {
+            String limit = row.pixelLimit(false); // a FAIL whose share reaches what is needed says why it fails
+            if (!limit.isEmpty()) {
+                notes.add("note: " + row.file() + " (" + GradescopeResults.name(row.target()) + "): " + limit + "\n");
+            }
             DiffRegion patch = row.solidPatch();
             String patchNote = patch == null ? null : ComparisonReport.solidPatchNote(patch);
             for (String note : row.notes()) {

@@ -159,6 +159,41 @@ class GradingCommandTest {
         assertTrue(check.out().contains("\nnote: page4.png (page 4): " + whole), check.out());
     }
 
+    /**
+     * A picture whose share passes but whose failing pixels are more than the rubric's max_failing_pixels allows
+     * fails, and says why where its share alone is shown (99.18 % FAIL, where 99 % is needed, read as a wrong
+     * verdict): the progress line, the table's note column and check's table.
+     */
+    @Test
+    void aFailByTheRubricsPixelLimitSaysSoBesideItsShare() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("st/page4.png"), holed());
+        Path rubric = Files.writeString(dir.resolve("compare.json"),
+                "{\"pages\": [{\"match\": \"4\", \"max_failing_pixels\": 1000}]}");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "4", "--rubric", rubric.toString(),
+                "--out-dir", out.toString(), "--diffs", "none");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        String brief = "3,447 pixels fail, at most 1,000 allowed";
+        assertTrue(run.err().contains("st/page4.png: FAIL 99.18 %; " + brief + "\n"), run.err());
+        assertTrue(Files.readString(out.resolve("compare.md")).contains("| FAIL | white |  | panel at x 50-699, y 50-699 "
+                + "of the picture, counted from its top-left (a 750x750 page); " + brief + " |"), "the note column");
+
+        CliRun check = CliRun.of("check", subs.resolve("st").toString(), "--pages", "4", "--rubric", rubric.toString());
+        assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.err());
+        assertTrue(check.out().contains("\nnote: page4.png (page 4): it fails on its pixel count, not its share: 3,447 "
+                + "pixels fail, and the rubric's max_failing_pixels allows at most 1,000; its share, 99.18 %, reaches "
+                + "the 99.00 % needed\n"), check.out());
+
+        // below both: said too, the share first not being enough either
+        Path stricter = Files.writeString(dir.resolve("stricter.json"),
+                "{\"pages\": [{\"match\": \"4\", \"min_share\": 99.5, \"max_failing_pixels\": 1000}]}");
+        CliRun both = CliRun.of("check", subs.resolve("st").toString(), "--pages", "4", "--rubric", stricter.toString());
+        assertTrue(both.out().contains("\nnote: page4.png (page 4): 3,447 pixels fail, and the rubric's "
+                + "max_failing_pixels allows at most 1,000; its share, 99.18 %, is below the 99.50 % needed too\n"),
+                both.out());
+    }
+
     @Test
     void aPictureSavedAsJpegOrGifThatFailsIsToldToBeHandedInAsPng() throws Exception {
         Path st = dir.resolve("subs/st");
