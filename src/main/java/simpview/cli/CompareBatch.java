@@ -888,20 +888,27 @@ public final class CompareBatch {
             OptionalInt page = SubmissionNames.pageNumber(name);
             BiConsumerOfLabel add = (label, why) -> misnamed.computeIfAbsent(label, l -> new ArrayList<>())
                     .add(new Wanted.Misnamed(relative, relative + " " + why));
+            String submission = submissionOf.apply(relative);
+            Set<String> its = new HashSet<>(); // the pages and scenes its submission has a picture of
+            for (int j = 0; j < pictures.size(); j++) {
+                if (submissionOf.apply(name(dir, pictures.get(j))).equals(submission)) {
+                    its.add(matches.get(j).target() != null ? matches.get(j).target().label(own.context())
+                            : matches.get(j).firstAssignmentPage() > 0
+                                    ? firstAssignmentLabel(matches.get(j).firstAssignmentPage()) : "");
+                }
+            }
+            String whose = submission.isEmpty() ? "the folder" : submission.equals(JUnitResults.TOP)
+                    ? "the top of the folder" : submission;
             if (page.isPresent()) {
                 // named for a page there is not: said once, on the first page its submission lacks, naming them all
                 int number = page.getAsInt();
-                String submission = submissionOf.apply(relative);
-                Set<String> its = new HashSet<>();
-                for (int j = 0; j < pictures.size(); j++) {
-                    if (submissionOf.apply(name(dir, pictures.get(j))).equals(submission)) {
-                        its.add(matches.get(j).target() != null ? matches.get(j).target().label(own.context())
-                                : matches.get(j).firstAssignmentPage() > 0
-                                        ? firstAssignmentLabel(matches.get(j).firstAssignmentPage()) : "");
-                    }
+                if (firstAssignmentUnasked.contains(relative) && number <= Assignment1.COUNT) {
+                    // a1-page2.png where the eight pages are graded: the wrong assignment's page, or page 2 misnamed
+                    pages.stream().filter(t -> t.page() == number && !its.contains(t.label(own.context())))
+                            .forEach(t -> add.to(t.label(own.context()), "is named as the first assignment's page "
+                                    + number + ", not graded here (--pages names the eight pages): if it is page "
+                                    + number + " of the eight pages, name it page" + number + ".png"));
                 }
-                String whose = submission.isEmpty() ? "the folder" : submission.equals(JUnitResults.TOP)
-                        ? "the top of the folder" : submission;
                 if (number > Assignment2.COUNT) {
                     List<CompareTarget> lacks = pages.stream().filter(t -> !its.contains(t.label(own.context())))
                             .sorted(Comparator.comparingInt(CompareTarget::page)).toList();
@@ -957,6 +964,28 @@ public final class CompareBatch {
             nearest.flatMap(k -> scenes.stream().filter(t -> key(t).equals(k)).findFirst())
                     .ifPresent(t -> add.to(t.label(own.context()), "is named like no scene: did you mean " + key(t)
                             + ".png?"));
+            if (number.isEmpty() && nearest.isEmpty() && letter.isEmpty()) {
+                // no number, letter or scene in its name (Screenshot 2026-12-01 at 10.00.00.png, image.png): it may be
+                // any page its submission lacks, told once, on the first of them, naming them all
+                List<String[]> lacks = new ArrayList<>(); // label, words, file name
+                if (!pages.isEmpty() || !scenes.isEmpty()) {
+                    (pages.isEmpty() ? scenes : pages).stream()
+                            .sorted(Comparator.<CompareTarget>comparingInt(CompareTarget::page)
+                                    .thenComparing(CompareBatch::key))
+                            .filter(t -> !its.contains(t.label(own.context())))
+                            .forEach(t -> lacks.add(new String[] {t.label(own.context()),
+                                t.isPage() ? "page " + t.page() : key(t), key(t) + ".png"}));
+                } else {
+                    firstPages.stream().filter(p -> !its.contains(firstAssignmentLabel(p))).forEach(p -> lacks.add(
+                            new String[] {firstAssignmentLabel(p), "A1 page " + p, "a1-page" + p + ".png"}));
+                }
+                if (!lacks.isEmpty()) {
+                    add.to(lacks.get(0)[0], "has no page number in its name: was it meant as "
+                            + UsageWords.joined(lacks.stream().map(l -> l[1]).toList(), "or") + ", which " + whose
+                            + " lacks? If so, name it " + (lacks.size() == 1 ? lacks.get(0)[2]
+                                    : "for its page, like " + lacks.get(0)[2]));
+                }
+            }
         }
         return misnamed;
     }

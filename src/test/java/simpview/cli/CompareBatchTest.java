@@ -512,6 +512,46 @@ public class CompareBatchTest {
     }
 
     /**
+     * A page missing beside a picture whose name has no page number at all (a screenshot left as the tool named it)
+     * or names the first assignment's page of its number (a1-page1.png where the eight pages are graded): both were
+     * skipped, and the MISSING row said only that no picture was found. It names them, on the first page the
+     * submission lacks, wherever the row's notes go.
+     */
+    @Test
+    void aMissingPageIsToldOfAScreenshotOrAFirstAssignmentPageBesideIt() throws Exception {
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page1.png"), page(1));
+        png(subs.resolve("ann/page2.png"), page(2));
+        png(subs.resolve("cara/page1.png"), page(1));
+        png(subs.resolve("cara/Screenshot 2026-12-01 at 10.00.00.png"), page(2));
+        png(subs.resolve("dan/Screenshot (3).png"), page(2));
+        png(subs.resolve("gil/a1-page1.png"), page(1));
+        png(subs.resolve("gil/page2.png"), page(2));
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
+                "--diffs", "none", "--junit", out.resolve("results.xml").toString());
+        String screenshot = "cara/Screenshot 2026-12-01 at 10.00.00.png has no page number in its name: was it meant "
+                + "as page 2, which cara lacks? If so, name it page2.png";
+        assertTrue(run.out().contains("| cara/ | 2 (seed 361) |  |  |  |  |  |  |  | MISSING |  |  | no picture of page 2 "
+                + "(seed 361) in cara was found; " + screenshot + " |"), run.out());
+        // lacking both pages: said once, on the first, naming both
+        assertTrue(run.out().contains("no picture of page 1 (seed 361) in dan was found; dan/Screenshot (3).png has no "
+                + "page number in its name: was it meant as page 1 or page 2, which dan lacks? If so, name it for its "
+                + "page, like page1.png |"), run.out());
+        assertTrue(run.out().contains("| MISSING |  |  | no picture of page 2 (seed 361) in dan was found |"), run.out());
+        String firstAssignment = "gil/a1-page1.png is named as the first assignment's page 1, not graded here (--pages "
+                + "names the eight pages): if it is page 1 of the eight pages, name it page1.png";
+        assertTrue(run.out().contains("no picture of page 1 (seed 361) in gil was found; " + firstAssignment + " |"),
+                run.out());
+        assertTrue(Files.readString(out.resolve("results.xml")).contains(screenshot), "JUnit's failure says it too");
+
+        CliRun check = CliRun.of("check", subs.resolve("cara").toString(), "--pages", "1-2");
+        assertTrue(check.out().contains("no picture of page 2 (seed 361) found: Screenshot 2026-12-01 at 10.00.00.png "
+                + "has no page number in its name: was it meant as page 2, which the folder lacks? If so, name it "
+                + "page2.png\n"), check.out());
+    }
+
+    /**
      * A page missing beside a picture named like no page (pag2.png) or for a page there is not (page9.png): the
      * MISSING row said only that no picture was found. It names them, wherever the row's notes go.
      */
