@@ -30,11 +30,12 @@ import java.util.Locale;
  * @param emptyShare of a row scored in part (with --partial, one that fails), the share an empty panel gets
  *     against simpview's under its rule ({@link RubricRule#emptyShare}), which its zero point is at least; else NaN
  * @param format the format its file's bytes were decoded as ({@link Picture#format}), or null when it was not read
+ * @param colourless of a row that fails, whether its panel has no colour where simpview's has ({@link Colourless})
  */
 public record BatchRow(String file, String target, Shares exact, Shares slack, double verdict,
         Result result, String margins, String diff, String note, RubricRule rule, double score, int failing,
         List<DiffRegion> regions, String alternate, int size, String notCounted, PanelHint panelHint,
-        double emptyShare, PictureFormat format) {
+        double emptyShare, PictureFormat format, boolean colourless) {
 
     public enum Result { PASS, FAIL, ERROR, SKIPPED }
 
@@ -56,7 +57,9 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 report.verdictShare(), report.passes() ? Result.PASS : Result.FAIL,
                 report.margins().white() ? "white" : "not white", diff, note, rule, score,
                 report.regions().pixels(), report.regions().largest(), alternate, report.comparison().size(), "",
-                report.systematic(), emptyShare, report.theirs().format());
+                report.systematic(), emptyShare, report.theirs().format(), !report.passes()
+                        && Colourless.note(report.comparison().ours(), report.comparison().theirs(),
+                                report.tolerance()) != null);
     }
 
     /**
@@ -73,10 +76,12 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
     public static BatchRow panel(String file, String target, Comparison comparison, RubricRule rule, double score,
             String diff, String note, PanelHint hint, double emptyShare) {
         DiffRegions.Found regions = DiffRegions.of(comparison, rule.tolerance(), ComparisonReport.REGIONS_LISTED);
+        boolean passes = rule.passes(comparison);
         return new BatchRow(file, target, comparison.exact(), comparison.withSlack(),
-                comparison.verdictShare(rule.tolerance()), rule.passes(comparison) ? Result.PASS : Result.FAIL, "",
+                comparison.verdictShare(rule.tolerance()), passes ? Result.PASS : Result.FAIL, "",
                 diff, note, rule, score, regions.pixels(), regions.largest(), "", comparison.size(), "", hint,
-                emptyShare, null);
+                emptyShare, null, !passes && Colourless.note(comparison.ours(), comparison.theirs(),
+                        rule.tolerance()) != null);
     }
 
     public static BatchRow broken(String file, String target, String problem) {
@@ -85,30 +90,30 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
 
     public static BatchRow broken(String file, String target, String problem, RubricRule rule) {
         return new BatchRow(file, target, null, null, Double.NaN, Result.ERROR, "", "", problem, rule, 0, 0,
-                List.of(), "", Comparison.N, "", null, Double.NaN, null);
+                List.of(), "", Comparison.N, "", null, Double.NaN, null, false);
     }
 
     public static BatchRow skipped(String file, String why) {
         return new BatchRow(file, "", null, null, Double.NaN, Result.SKIPPED, "", "", why, null, 0, 0, List.of(), "",
-                Comparison.N, "", null, Double.NaN, null);
+                Comparison.N, "", null, Double.NaN, null, false);
     }
 
     /** The same row with another note (and no diff image). */
     public BatchRow withoutDiff(String why) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, "", why, rule, score, failing,
-                regions, alternate, size, notCounted, panelHint, emptyShare, format);
+                regions, alternate, size, notCounted, panelHint, emptyShare, format, colourless);
     }
 
     /** The same row with {@code hint} what its panel looks like ({@link OtherPage}: another page, found after it failed). */
     public BatchRow withHint(PanelHint hint) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, rule, score, failing,
-                regions, alternate, size, notCounted, hint, emptyShare, format);
+                regions, alternate, size, notCounted, hint, emptyShare, format, colourless);
     }
 
     /** The same row of a picture whose bytes were decoded as {@code decoded} (a first-assignment panel's page). */
     public BatchRow decodedAs(PictureFormat decoded) {
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, rule, score, failing,
-                regions, alternate, size, notCounted, panelHint, emptyShare, decoded);
+                regions, alternate, size, notCounted, panelHint, emptyShare, decoded, colourless);
     }
 
     /**
@@ -120,7 +125,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
                 rule.maxFailing(), 0, rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(),
                 rule.flipThreshold());
         return new BatchRow(file, target, exact, slack, verdict, result, margins, diff, note, worthNothing, 0, failing,
-                regions, alternate, size, why, panelHint, emptyShare, format);
+                regions, alternate, size, why, panelHint, emptyShare, format, colourless);
     }
 
     /**
@@ -203,6 +208,9 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
         DiffRegion patch = solidPatch();
         if (patch != null) {
             notes.add(brief ? ComparisonReport.solidPatchBrief(patch) : ComparisonReport.solidPatchNote(patch));
+        }
+        if (colourless && result == Result.FAIL) {
+            notes.add(brief ? Colourless.BRIEF : Colourless.NOTE);
         }
         String format = formatAdvice();
         if (!format.isEmpty()) {

@@ -143,6 +143,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (background != null) {
             out.append("note: ").append(background).append('\n');
         }
+        String colourless = passes() ? null : Colourless.note(comparison.ours(), comparison.theirs(), tolerance);
+        if (colourless != null) {
+            out.append("note: ").append(colourless).append('\n');
+        }
         String edges = systematic == null ? EdgeShift.note(comparison, tolerance) : null;
         if (edges != null) {
             out.append("note: ").append(edges).append('\n');

@@ -194,6 +194,42 @@ class GradingCommandTest {
                 both.out());
     }
 
+    /**
+     * A right page saved in greyscale fails with its shapes where simpview's are and nothing said why: it is told its
+     * panel has no colour, by compare of one picture, the batch (progress line, table, Gradescope) and check; a
+     * coloured picture that fails is not.
+     */
+    @Test
+    void aPageSavedInGreyscaleIsToldItHasNoColour() throws Exception {
+        Path st = dir.resolve("subs/st");
+        BufferedImage grey = new BufferedImage(750, 750, BufferedImage.TYPE_BYTE_GRAY);
+        grey.createGraphics().drawImage(page(4), 0, 0, null);
+        png(st.resolve("page4.png"), grey);
+        png(st.resolve("page5.png"), spoiled(5)); // fails, in colour
+        String whole = "your picture has no colour: every pixel of its panel is a shade of grey, where simpview's "
+                + "panel is coloured; was it saved in greyscale, or does your renderer write one channel into all "
+                + "three? Save it in colour (RGB) and compare again";
+        String brief = "no colour: every pixel is grey where simpview's are coloured; save it in colour (RGB)";
+
+        CliRun one = CliRun.of("compare", st.resolve("page4.png").toString(), "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, one.exitCode(), one.err());
+        assertTrue(one.out().contains("\nnote: " + whole + "\n"), one.out());
+
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "4-5", "--out-dir",
+                out.toString(), "--diffs", "none", "--gradescope", out.resolve("results.json").toString());
+        assertTrue(run.err().matches("(?s).*st/page4\\.png: FAIL [0-9.]+ %; " + Pattern.quote(brief) + "\n.*"),
+                run.err());
+        assertTrue(run.err().matches("(?s).*st/page5\\.png: FAIL [0-9.]+ %\n.*"), "in colour: " + run.err());
+        assertTrue(Files.readString(out.resolve("compare.md")).contains(brief + " |"), "the note column");
+        String results = Files.readString(out.resolve("results.json"));
+        assertEquals(1, results.split(Pattern.quote("no colour"), -1).length - 1, results);
+
+        CliRun check = CliRun.of("check", st.toString(), "--pages", "4-5");
+        assertTrue(check.out().contains("\nnote: page4.png (page 4): " + whole + "\n"), check.out());
+        assertFalse(check.out().contains("page5.png (page 5): your picture has no colour"), check.out());
+    }
+
     @Test
     void aPictureSavedAsJpegOrGifThatFailsIsToldToBeHandedInAsPng() throws Exception {
         Path st = dir.resolve("subs/st");
