@@ -5,6 +5,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.List;
 import simpview.scene.text.CopiedText;
 
 /**
@@ -59,7 +60,8 @@ record FilePlaces(String fileName, Path here, Path working) {
      * Teapot.obj: names are case-sensitive here)"; a backslash, which is part
      * of a name here, not a folder separator (one or a doubled one, as a C
      * string writes it); curly quotes, as a name copied from a PDF has them
-     * (obj “filename” in the handouts). Looked for only once the name
+     * (obj “filename” in the handouts); a file the name misses only by its extension
+     * ({@link #otherExtension}). Looked for only once the name
      * was not found, so a scene that finds its files costs nothing more.
      */
     String nearMisses(String name) {
@@ -78,11 +80,74 @@ record FilePlaces(String fileName, Path here, Path working) {
             hints.append(" (the name").append(CopiedText.hint(name, "")).append(": write ")
                     .append(fileName.endsWith(".obj") ? "obj" : "file").append(" \"").append(plain).append("\")");
         }
+        hints.append(otherExtension(name));
         if (name.indexOf('\\') >= 0) {
             hints.append(" (a backslash is part of a name here: write \"").append(name.replaceAll("\\\\+", "/"))
                     .append("\", with / between folders)");
         }
         return hints.toString();
+    }
+
+    /**
+     * For a name found in neither place ({@code name}, as the command gave it): a file there that the name
+     * meant with another extension, beside the including file or else in the working directory, and what to
+     * write; or "". The name names a model where a scene file is wanted, or the other way round ({@code file
+     * "teapot"} beside teapot.obj, {@code file "teapot.obj"}, {@code obj "cube"} beside cube.simp): the other
+     * command draws it. The name as written is a file with another extension (Oct.OBJ, teapot.txt): the file is
+     * to be renamed. The name's extension replaced by the right one is a file ({@code obj "teapot.simp"} beside
+     * teapot.obj): the extension is to be left off. A name ending in the extension added already has its hint.
+     */
+    private String otherExtension(String name) {
+        String extension = fileName.substring(name.length());
+        boolean model = extension.equals(".obj");
+        String command = model ? "obj" : "file";
+        String otherExtension = model ? ".simp" : ".obj";
+        String other = model ? "a scene file: file \"" : "a model: obj \"";
+        String otherDoes = model ? "\" includes it" : "\" draws it";
+        int slash = name.lastIndexOf('/');
+        int dot = name.lastIndexOf('.');
+        String suffix = dot > slash + 1 ? name.substring(dot) : "";
+        String base = suffix.isEmpty() ? name : name.substring(0, dot);
+        String baseFile = base.substring(slash + 1);
+        for (Path place : hereIsWorking() ? List.of(here) : List.of(here, working)) {
+            boolean beside = place == here;
+            if (suffix.equalsIgnoreCase(otherExtension) && isFile(place, name)) {
+                return " (there is " + shown(place, name, beside) + ", " + other + base + otherDoes + ")";
+            }
+            if (!name.endsWith(extension) && isFile(place, name)) {
+                return " (there is " + shown(place, name, beside) + ", but " + command + " adds " + extension
+                        + " to the name it is given: rename the file " + baseFile + extension + " and write "
+                        + command + " \"" + base + "\")";
+            }
+            if (!suffix.isEmpty() && !name.endsWith(extension) && isFile(place, base + extension)) {
+                return " (there is " + shown(place, base + extension, beside) + ": " + command + " adds " + extension
+                        + " to the name it is given, so write " + command + " \"" + base + "\")";
+            }
+            if (isFile(place, name + otherExtension)) {
+                return " (there is " + shown(place, name + otherExtension, beside) + ", " + other + name + otherDoes
+                        + ")";
+            }
+        }
+        return "";
+    }
+
+    /** True when {@code file}, a name as a command gives it, is a file in the folder of {@code place}. */
+    private boolean isFile(Path place, String file) {
+        Path folder = place.toAbsolutePath().normalize().getParent();
+        try {
+            return folder != null && Files.isRegularFile(folder.resolve(Path.of(file).getFileName().toString()));
+        } catch (InvalidPathException e) {
+            return false;
+        }
+    }
+
+    /**
+     * {@code file}, in the folder of {@code place}, as a hint names it: as the command would name it when it is
+     * beside the including file, in full in the working directory.
+     */
+    private static String shown(Path place, String file, boolean beside) {
+        Path named = Path.of(file);
+        return (beside ? named : place.toAbsolutePath().normalize().resolveSibling(named.getFileName())).toString();
     }
 
     /** A file in the folder of {@code wanted} whose name is that of {@code wanted} but for case; null when none. */

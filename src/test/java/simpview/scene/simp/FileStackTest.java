@@ -95,6 +95,42 @@ class FileStackTest {
         assertEquals("", FilePlaces.of(scenes.resolve("s.simp"), "kettle", ".obj", working).nearMisses("kettle"));
     }
 
+    /**
+     * A name that misses its file only by the extension says what to write: a model named to {@code file}, or
+     * a scene file to {@code obj} (the other command draws it); a file whose own extension is not the one added
+     * (Oct.OBJ, wing.txt: rename it); a name given the wrong extension (obj "oct.simp" beside oct.obj: leave it
+     * off). In the working directory the file is named in full. A name near nothing gets no such hint.
+     */
+    @Test
+    void aFileThatDiffersOnlyInItsExtensionIsNamed() throws Exception {
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Path working = Files.createDirectory(dir.resolve("working"));
+        Path from = scenes.resolve("s.simp");
+        for (String file : List.of("oct.obj", "Oct.OBJ", "cube.simp", "wing.txt")) {
+            Files.writeString(scenes.resolve(file), "");
+        }
+        Files.writeString(working.resolve("tyre.obj"), "");
+        assertEquals(" (there is oct.obj, a model: obj \"oct\" draws it)",
+                FilePlaces.of(from, "oct", ".simp", working).nearMisses("oct"));
+        assertEquals(" (there is oct.obj, a model: obj \"oct\" draws it)",
+                FilePlaces.of(from, "oct.obj", ".simp", working).nearMisses("oct.obj"));
+        assertEquals(" (there is cube.simp, a scene file: file \"cube\" includes it)",
+                FilePlaces.of(from, "cube", ".obj", working).nearMisses("cube"));
+        assertEquals(" (there is Oct.OBJ, but obj adds .obj to the name it is given: rename the file Oct.obj and write"
+                + " obj \"Oct\")", FilePlaces.of(from, "Oct.OBJ", ".obj", working).nearMisses("Oct.OBJ"));
+        assertEquals(" (there is wing.txt, but obj adds .obj to the name it is given: rename the file wing.obj and"
+                + " write obj \"wing\")", FilePlaces.of(from, "wing.txt", ".obj", working).nearMisses("wing.txt"));
+        assertEquals(" (there is oct.obj: obj adds .obj to the name it is given, so write obj \"oct\")",
+                FilePlaces.of(from, "oct.simp", ".obj", working).nearMisses("oct.simp"));
+        assertEquals(" (there is " + working.resolve("tyre.obj") + ", a model: obj \"tyre\" draws it)",
+                FilePlaces.of(from, "tyre", ".simp", working).nearMisses("tyre"));
+        assertEquals("", FilePlaces.of(from, "kettle", ".obj", working).nearMisses("kettle"));
+        SceneFixture scene = new SceneFixture(scenes);
+        scene.write("s", "file \"oct\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: oct.simp (there is oct.obj, a model: obj"
+                + " \"oct\" draws it); looked for "), "from a scene");
+    }
+
     /** A backslash is part of a name on this system, not a folder separator: the name with / is suggested. */
     @Test
     void aBackslashInANameGetsAHint() throws Exception {
