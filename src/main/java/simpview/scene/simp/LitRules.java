@@ -42,6 +42,12 @@ final class LitRules implements RuleSet {
     private String firstClampedColour;
     /** The first surface or fog colour with a channel above 1, as the warning names it, or null. */
     private String firstColourAboveOne;
+    /** The fog the last depth command set, where that command stands, and the last such fog checked. */
+    private Fog fogSet;
+    private String fogSetAt;
+    private Fog fogChecked;
+    /** The first fog in force at a primitive whose near plane lies at or beyond the view's far plane, or null. */
+    private String firstFogUnseen;
     /** What the models read so far warned of, each warning once however often its model is drawn. */
     private final Set<String> modelWarnings = new LinkedHashSet<>();
     private final FileStack files;
@@ -242,7 +248,9 @@ final class LitRules implements RuleSet {
         }
         notNegative(c, 2, 5, "fog colour");
         aboveOne(c, 2, "fog colour", "the fog is clamped to full in that channel where it is thick");
-        state.setFog(new Fog(n[0], n[1], n[2], n[3], n[4]));
+        fogSet = new Fog(n[0], n[1], n[2], n[3], n[4]);
+        fogSetAt = files.place();
+        state.setFog(fogSet);
         return false;
     }
 
@@ -293,6 +301,33 @@ final class LitRules implements RuleSet {
         }
     }
 
+    /**
+     * Notes {@code fog}, in force at a primitive, when its near plane lies at or beyond the view's far plane:
+     * SPEC fogs only what lies beyond near, and draws nothing beyond yon, so it shows nowhere (a student who
+     * wrote it sees no fog and no word of why). The camera is known by now: it comes before every primitive.
+     */
+    private void noteFogUnseen(Fog fog) {
+        Camera view = state.camera();
+        if (firstFogUnseen != null || fog.near() > view.yon()) {
+            return;
+        }
+        String far = view.isPerspective() ? "the camera's far plane z = " + Camera.written(view.yon()) + " (yon)"
+                : "the far plane z = " + Camera.written(view.yon()) + " (the parallel view of a scene without a"
+                + " camera)";
+        String between = view.isPerspective() ? "between hither " + Camera.written(view.hither()) + " and yon "
+                + Camera.written(view.yon()) : "between 0 and -200";
+        firstFogUnseen = fogSetAt + ": this fog shows nowhere: its near plane z = " + Camera.written(fog.near())
+                + " lies at or beyond " + far + ", and only what lies beyond near is fogged, while nothing beyond"
+                + " the far plane is drawn; give near a z " + between + " (depth " + Camera.written(fog.near()) + " "
+                + Camera.written(fog.far()) + " " + Camera.written(fog.r()) + " " + Camera.written(fog.g()) + " "
+                + Camera.written(fog.b()) + ", the first such fog)";
+    }
+
+    /** Where the first fog that shows nowhere stands and why, as a warning; or null. */
+    String fogUnseen() {
+        return firstFogUnseen;
+    }
+
     /** Where the first surface or fog colour above 1 stands and what it was, as a warning; or null. */
     String colourAboveOne() {
         return firstColourAboveOne;
@@ -311,6 +346,10 @@ final class LitRules implements RuleSet {
     private void primitive() {
         if (firstPrimitiveAt == null) {
             firstPrimitiveAt = files.place();
+        }
+        if (fogSet != fogChecked) {
+            fogChecked = fogSet;
+            noteFogUnseen(fogSet);
         }
         if (traced) {
             geometry.from(files.current().file(), files.current().lineNumber());

@@ -368,6 +368,9 @@ public final class SimpClient {
         if (rules instanceof LitRules lit && lit.colourAboveOne() != null) {
             w.add(lit.colourAboveOne());
         }
+        if (rules instanceof LitRules lit && lit.fogUnseen() != null) {
+            w.add(lit.fogUnseen());
+        }
         if (firstClamped != null) {
             w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
         }

@@ -405,6 +405,42 @@ class ScenePipelineTest {
         }
     }
 
+    /**
+     * A fog whose near plane lies at or beyond the view's far plane fogs nothing that is drawn (SPEC: z at or
+     * above near keeps its colour; nothing beyond yon is drawn), so the picture shows no fog; the scene says so,
+     * at the depth command, with the planes to choose between. Not for a fog that reaches into the view, nor
+     * for one replaced before any primitive.
+     */
+    @Test
+    void aFogBeyondTheFarPlaneIsNamed() throws Exception {
+        String triangle = "polygon (-5 -5 -20) (5 -5 -20) (0 5 -20)";
+        PageCanvas canvas = new PageCanvas();
+        draw(write("unseen.simp", "camera -1 -1 1 1 -0.1 -50", "ambient 1 1 1", "depth -60 -100 1 0 0", triangle),
+                canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("unseen.simp:3: this fog shows nowhere: its near plane z = -60 lies at or beyond the"
+                + " camera's far plane z = -50 (yon), and only what lies beyond near is fogged, while nothing beyond"
+                + " the far plane is drawn; give near a z between hither -0.1 and yon -50 (depth -60 -100 1 0 0, the"
+                + " first such fog)"), warnings);
+        assertEquals(0xFFFFFF, canvas.image().getRGB(50 + 325, 749 - 50 - 325) & 0xFFFFFF, "no fog, as SPEC says");
+        warnings.clear();
+        draw(write("parallel.simp", "ambient 1 1 1", "depth -200 -300 1 0 0", triangle), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("parallel.simp:2: this fog shows nowhere: its near plane z = -200 lies at or beyond the"
+                + " far plane z = -200 (the parallel view of a scene without a camera), and only what lies beyond near"
+                + " is fogged, while nothing beyond the far plane is drawn; give near a z between 0 and -200 (depth"
+                + " -200 -300 1 0 0, the first such fog)"), warnings);
+        warnings.clear();
+        String[][] notForThis = {
+            {"camera -1 -1 1 1 -0.1 -50", "ambient 1 1 1", "depth -49 -100 1 0 0", triangle},
+            {"camera -1 -1 1 1 -0.1 -50", "ambient 1 1 1", "depth -60 -100 1 0 0", "depth -10 -40 1 0 0", triangle},
+            {"ambient 1 1 1", "depth 0 -200 0 0 0", triangle},
+        };
+        for (String[] scene : notForThis) {
+            draw(write("seen.simp", scene), canvas, ScenePipeline.Rules.BY_COMMANDS);
+            assertEquals(List.of(), warnings, String.join(" / ", scene));
+        }
+    }
+
     @Test
     void ownColoursADepthCuedSceneDoesNotDrawAreNamed() throws Exception {
         Path scene = write("colours.simp", "line (0 0 -5) (10 10 -5)",
