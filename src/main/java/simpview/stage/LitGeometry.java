@@ -130,6 +130,13 @@ public final class LitGeometry implements GeometryStage {
      */
     private long shadedUnderLights;
     private boolean anyLightReached;
+    /**
+     * The unit face normal of the first polygon judged with every light behind it, and whether another such
+     * polygon faced against it (normals at more than 90 degrees): lights behind faces that face opposite ways
+     * stand between them, inside what they enclose, which no turning of the faces mends.
+     */
+    private double[] firstBehind;
+    private boolean behindFacingOppositeWays;
     /** Primitives not drawn because a vertex is not finite in camera space; the first one's line, for an obj face. */
     private long nonFinite;
     private int firstNonFiniteLine;
@@ -487,12 +494,24 @@ public final class LitGeometry implements GeometryStage {
             shadedUnderLights++;
             boolean faceNormalOnly = !anyOwnNormal(n) && (faceNx != 0 || faceNy != 0 || faceNz != 0);
             reached = !faceNormalOnly || state.lightInFront(faceNx, faceNy, faceNz, cam, CAMERA_STRIDE, n);
+            if (!reached && !anyLightReached) {
+                noteBehind();
+            }
         }
         anyLightReached |= reached;
         if (!anyNotBlack) {
             Fog fog = state.fog();
             anyNotBlack = reached || state.ambientR() + state.ambientG() + state.ambientB() > 0
                     || fog.r() + fog.g() + fog.b() > 0;
+        }
+    }
+
+    /** Notes the face normal of a polygon every light stands behind ({@link #firstBehind}). */
+    private void noteBehind() {
+        if (firstBehind == null) {
+            firstBehind = new double[] {faceNx, faceNy, faceNz};
+        } else if (faceNx * firstBehind[0] + faceNy * firstBehind[1] + faceNz * firstBehind[2] < 0) {
+            behindFacingOppositeWays = true;
         }
     }
 
@@ -822,6 +841,15 @@ public final class LitGeometry implements GeometryStage {
      */
     public boolean noLightReachedAPolygon() {
         return shadedUnderLights > 0 && !anyLightReached;
+    }
+
+    /**
+     * True when {@link #noLightReachedAPolygon} and two of those polygons face opposite ways (their face normals
+     * at more than 90 degrees): the lights stand behind both, between them, most often inside a closed model,
+     * where turning the faces round would not light what the camera sees.
+     */
+    public boolean lightsInsideThePolygons() {
+        return noLightReachedAPolygon() && behindFacingOppositeWays;
     }
 
     /** The line in its model of the first primitive {@link #nonFiniteCount} counted, when that was an obj face. */

@@ -410,6 +410,14 @@ final class LitRules implements RuleSet {
         return geometry.everyPrimitiveFoggedWhole();
     }
 
+    /**
+     * True when no light reached a lit polygon's front and those polygons face opposite ways (see
+     * {@link LitGeometry#lightsInsideThePolygons}).
+     */
+    boolean lightsInsideThePolygons() {
+        return geometry.lightsInsideThePolygons();
+    }
+
     /** True when lights were on and none reached the front of a lit polygon (see {@link LitGeometry#noLightReachedAPolygon}). */
     boolean noLightReachedAPolygon() {
         return geometry.noLightReachedAPolygon();

@@ -409,8 +409,13 @@ public final class ScenePipeline {
                     + " so " + (client.everyLitPolygonBlack() ? "every one came out black (there is no ambient light"
                             + " where they are drawn)" : "each shows the ambient light alone")
                     + ": every light stands behind every polygon, on the side its face normal (p2 - p1) x (p3 - p1)"
-                    + " points away from; a polygon's front is the side from which its vertices run"
-                    + " counter-clockwise, so list them the other way round, or move the lights in front");
+                    + " points away from; " + (client.lightsInsideThePolygons() ? "polygons that face opposite ways"
+                            + " all have the lights behind them, so the lights stand between them, inside what they"
+                            + " enclose (a light inside a closed model lights only its inside): move the lights out,"
+                            + " in front of the polygons the camera sees (or, where polygons are meant to face in,"
+                            + " list their vertices the other way round)" : "a polygon's front is the side from which"
+                            + " its vertices run counter-clockwise, so list them the other way round, or move the"
+                            + " lights in front"));
         }
         if (!client.isLit() && !options.ownColours() && options.rules() == Rules.BY_COMMANDS
                 && client.firstOwnColours() != null) {

@@ -306,6 +306,11 @@ public final class SimpClient {
         return rules instanceof LitRules lit ? lit.everyPrimitiveFoggedWhole() : null;
     }
 
+    /** True for a lit scene whose lights all stood behind every lit polygon, polygons that face opposite ways. */
+    boolean lightsInsideThePolygons() {
+        return rules instanceof LitRules lit && lit.lightsInsideThePolygons();
+    }
+
     /** True for a lit scene whose lights, while on, all stood behind every lit polygon. */
     boolean noLightReachedAPolygon() {
         return rules instanceof LitRules lit && lit.noLightReachedAPolygon();

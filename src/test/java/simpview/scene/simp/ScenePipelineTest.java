@@ -406,6 +406,35 @@ class ScenePipelineTest {
     }
 
     /**
+     * A light inside a closed model stands behind every face of it, as a light behind clockwise polygons does,
+     * but turning the faces round is not the mend: the faces behind which it stands face opposite ways, so it
+     * stands between them, and the warning says to move it out. Two polygons that face one way keep the advice
+     * to list their vertices the other way round.
+     */
+    @Test
+    void aLightInsideAClosedModelIsToldToMoveOut() throws Exception {
+        // a tetrahedron round (0, 0, -5), its faces counter-clockwise seen from outside
+        Files.writeString(dir.resolve("tet.obj"), "v 0 0 -4\nv 1 -1 -6\nv -1 -1 -6\nv 0 1 -6\n"
+                + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+        PageCanvas canvas = new PageCanvas();
+        draw(write("inside.simp", "camera -1 -1 1 1 -1 -200", "ambient 0.1 0.1 0.1", "{", "translate 0 0 -5.2",
+                "light 1 1 1 1 0", "}", "obj tet"), canvas, ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(List.of("inside.simp: no light reached the front of any lit polygon, so each shows the ambient"
+                + " light alone: every light stands behind every polygon, on the side its face normal (p2 - p1) x"
+                + " (p3 - p1) points away from; polygons that face opposite ways all have the lights behind them, so"
+                + " the lights stand between them, inside what they enclose (a light inside a closed model lights"
+                + " only its inside): move the lights out, in front of the polygons the camera sees (or, where"
+                + " polygons are meant to face in, list their vertices the other way round)"), warnings);
+        warnings.clear();
+        draw(write("oneway.simp", "camera -1 -1 1 1 -1 -200", "light 1 1 1 1 0",
+                "polygon (-1 -1 -5) (0 1 -5) (1 -1 -5)", "polygon (-1 -1 -7) (0 1 -7) (1 -1 -7)"), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals(1, warnings.size(), "both clockwise, facing one way");
+        assertTrue(warnings.get(0).endsWith("so list them the other way round, or move the lights in front"),
+                warnings.get(0));
+    }
+
+    /**
      * A fog whose near plane lies at or beyond the view's far plane fogs nothing that is drawn (SPEC: z at or
      * above near keeps its colour; nothing beyond yon is drawn), so the picture shows no fog; the scene says so,
      * at the depth command, with the planes to choose between. Not for a fog that reaches into the view, nor
