@@ -135,7 +135,8 @@ record FilePlaces(String fileName, Path here, Path working) {
     private boolean isFile(Path place, String file) {
         Path folder = place.toAbsolutePath().normalize().getParent();
         try {
-            return folder != null && Files.isRegularFile(folder.resolve(Path.of(file).getFileName().toString()));
+            Path last = Path.of(file).getFileName(); // none for "/"
+            return folder != null && last != null && Files.isRegularFile(folder.resolve(last.toString()));
         } catch (InvalidPathException e) {
             return false;
         }

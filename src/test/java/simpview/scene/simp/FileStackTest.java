@@ -125,6 +125,9 @@ class FileStackTest {
         assertEquals(" (there is " + working.resolve("tyre.obj") + ", a model: obj \"tyre\" draws it)",
                 FilePlaces.of(from, "tyre", ".simp", working).nearMisses("tyre"));
         assertEquals("", FilePlaces.of(from, "kettle", ".obj", working).nearMisses("kettle"));
+        for (String name : List.of("/", "", ".", "..", "a/")) {
+            assertEquals("", FilePlaces.of(from, name, ".obj", working).nearMisses(name), "a name of no file: " + name);
+        }
         SceneFixture scene = new SceneFixture(scenes);
         scene.write("s", "file \"oct\"");
         assertTrue(scene.failure("s").problem().startsWith("file not found: oct.simp (there is oct.obj, a model: obj"
