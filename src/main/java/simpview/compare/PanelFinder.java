@@ -28,6 +28,12 @@ final class PanelFinder {
     /** The sizes a page comes in, and what each is; a picture of one of their shapes at another size was scaled. */
     private static final int[][] SIZES = {{PAGE, PAGE}, {872, 782}};
     private static final String[] SIZE_NAMES = {"a 750x750 page", "a 872x782 window capture of a page"};
+    /**
+     * The plain scales screens and screenshot tools draw at (a HiDPI screen's 2x, a desktop at 125 % or 150 %, a
+     * capture saved at half size), at which a picture without a panel at 1:1 is searched for the panel drawn larger
+     * or smaller, by the same evidence measured at that scale.
+     */
+    private static final double[] SCALES = {2, 1.5, 1.25, 1.75, 2.5, 3, 4, 0.5, 0.75, 0.8, 2.0 / 3};
 
     private final int[] rgb;
     private final int width;
@@ -61,14 +67,15 @@ final class PanelFinder {
         int size = PanelPlace.SIZE;
         if (width < size || height < size) {
             throw new CompareException(name + " is " + width + "x" + height
-                    + ": too small to hold the 650x650 panel (a page is 750x750)");
+                    + ": too small to hold the 650x650 panel (a page is 750x750)"
+                    + new PanelFinder(rgb, width, height).atAnotherScale());
         }
         if (width == size && height == size) {
             return new PanelPlace(0, 0, "the whole 650x650 picture is the panel");
         }
         PanelFinder finder = new PanelFinder(rgb, width, height);
         if (width == PAGE && height == PAGE) {
-            if (finder.score(PAGE_MARGIN, PAGE_MARGIN) >= 0) {
+            if (finder.score(PAGE_MARGIN, PAGE_MARGIN, PanelPlace.SIZE, PanelPlace.SIZE) >= 0) {
                 return new PanelPlace(PAGE_MARGIN, PAGE_MARGIN, "a 750x750 page");
             }
             PanelPlace found = finder.search();
@@ -78,9 +85,10 @@ final class PanelFinder {
         }
         PanelPlace found = finder.search();
         if (found == null) {
+            String atAnotherScale = finder.atAnotherScale();
             throw new CompareException("no 650x650 panel found in " + name + " (" + width + "x" + height
                     + "): looked for a square with white margins around it and a dark edge inside"
-                    + scaled(width, height));
+                    + (atAnotherScale.isEmpty() ? scaled(width, height) : atAnotherScale));
         }
         return new PanelPlace(found.left(), found.top(), "found in a " + width + "x" + height + " picture");
     }
@@ -118,15 +126,48 @@ final class PanelFinder {
         return "";
     }
 
-    /** The best place that qualifies, or null. */
+    /**
+     * For a picture that holds the panel drawn at one of the {@link #SCALES} (a square of that many times 650
+     * pixels framed as at 1:1, each side give or take the pixel a smooth scaling blends its edges by), a sentence
+     * that says where and at what scale; else "".
+     */
+    private String atAnotherScale() {
+        for (double scale : SCALES) {
+            int least = (int) Math.floor(PanelPlace.SIZE * scale) - 1;
+            int most = (int) Math.ceil(PanelPlace.SIZE * scale) + 1;
+            for (int across = least; across <= most; across++) {
+                for (int down = Math.max(least, across - 1); down <= Math.min(most, across + 1); down++) {
+                    PanelPlace found = across + 2 <= width && down + 2 <= height ? search(across, down) : null;
+                    if (found != null) {
+                        return String.format(Locale.ROOT, "; it holds the panel scaled by %.3g: a %dx%d square at x "
+                                + "%d, y %d with white margins around it and a dark edge inside (%s); a scaled "
+                                + "picture cannot be compared pixel for pixel: save the page itself (750x750), or "
+                                + "capture the window with the display at 100 %% (1:1, no scaling)", scale, across,
+                                down, found.left(), found.top(), scale > 1
+                                        ? "a HiDPI screen, or a desktop at 125 % or 150 %, captures so"
+                                        : "a screenshot tool saving a smaller copy makes one so");
+                    }
+                }
+            }
+        }
+        return "";
+    }
+
+    /** The best place that qualifies for the 650x650 panel, or null. */
     private PanelPlace search() {
-        countWhite();
-        int size = PanelPlace.SIZE;
+        return search(PanelPlace.SIZE, PanelPlace.SIZE);
+    }
+
+    /** The best place that qualifies for a square {@code across} pixels wide and {@code down} high, or null. */
+    private PanelPlace search(int across, int down) {
+        if (rowWhite == null) {
+            countWhite();
+        }
         int bestScore = -1;
         PanelPlace best = null;
-        for (int top = 1; top + size < height; top++) {
-            for (int left = 1; left + size < width; left++) {
-                int score = score(left, top);
+        for (int top = 1; top + down < height; top++) {
+            for (int left = 1; left + across < width; left++) {
+                int score = score(left, top, across, down);
                 if (score > bestScore) {
                     bestScore = score;
                     best = new PanelPlace(left, top, "");
@@ -137,36 +178,38 @@ final class PanelFinder {
     }
 
     /**
-     * White pixels of the frame outside plus dark pixels of the border inside,
-     * or -1 when some side of the frame is not white enough or the border is
-     * not dark enough (or the frame does not fit in the picture).
+     * White pixels of the frame outside plus dark pixels of the border inside
+     * of the square {@code across} by {@code down} pixels at (left, top) (650
+     * by 650 at 1:1), or -1 when some side of the frame is not white enough
+     * or the border is not dark enough (or the frame does not fit in the
+     * picture).
      */
-    private int score(int left, int top) {
-        int size = PanelPlace.SIZE;
-        int right = left + size;
-        int bottom = top + size;
+    private int score(int left, int top, int across, int down) {
+        int right = left + across;
+        int bottom = top + down;
         if (left < 1 || top < 1 || right >= width || bottom >= height) {
             return -1;
         }
-        int need = (int) Math.ceil(FRAME_WHITE * size);
+        int needAcross = (int) Math.ceil(FRAME_WHITE * across);
+        int needDown = (int) Math.ceil(FRAME_WHITE * down);
         int above = row(top - 1, left, right);
         int below = row(bottom, left, right);
         int before = column(left - 1, top, bottom);
         int after = column(right, top, bottom);
-        if (above < need || below < need || before < need || after < need) {
+        if (above < needAcross || below < needAcross || before < needDown || after < needDown) {
             return -1;
         }
         int topWhite = row(top, left, right);
         int bottomWhite = row(bottom - 1, left, right);
         int leftWhite = column(left, top + 1, bottom - 1);
         int rightWhite = column(right - 1, top + 1, bottom - 1);
-        if (topWhite == size || bottomWhite == size || leftWhite == size - 2 || rightWhite == size - 2) {
+        if (topWhite == across || bottomWhite == across || leftWhite == down - 2 || rightWhite == down - 2) {
             // A side of the square white throughout is margin, not panel: a scaled page's smaller panel
             // framed with margin on two sides, say; a panel's drawing does not fill a whole edge in white.
             return -1;
         }
         int borderWhite = topWhite + bottomWhite + leftWhite + rightWhite;
-        int border = 4 * size - 4;
+        int border = 2 * across + 2 * down - 4;
         int dark = border - borderWhite;
         if (dark < BORDER_DARK * border) {
             return -1;

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static simpview.testing.Images.page;
 
 import java.awt.Graphics2D;
+import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -123,11 +124,82 @@ class PanelFinderTest {
             CompareException e = assertThrows(CompareException.class, () -> Picture.of(scaled, "scaled.png"));
             assertTrue(e.getMessage().startsWith("no 650x650 panel found in scaled.png (" + size + "x" + size + ")"),
                     e.getMessage());
-            assertTrue(e.getMessage().endsWith("it has the shape of a 750x750 page, scaled by "
-                    + (size == 700 ? "0.933" : "2.00") + ": save the picture at its own size (1:1, no scaling)"),
-                    e.getMessage());
+            assertTrue(e.getMessage().endsWith(size == 700
+                    ? "it has the shape of a 750x750 page, scaled by 0.933: save the picture at its own size (1:1, no "
+                    + "scaling)" : "it holds the panel scaled by 2.00: a 1300x1300 square at x 100, y 100 with white "
+                    + "margins around it and a dark edge inside (a HiDPI screen, or a desktop at 125 % or 150 %, "
+                    + "captures so); a scaled picture cannot be compared pixel for pixel: save the page itself "
+                    + "(750x750), or capture the window with the display at 100 % (1:1, no scaling)"), e.getMessage());
         }
         assertEquals("", PanelFinder.scaled(800, 700), "not a page's shape");
+    }
+
+    /** The picture drawn {@code scale} times its size, each pixel's colour from the nearest or a smooth blend. */
+    private static BufferedImage scaled(BufferedImage picture, double scale, boolean smooth) {
+        int width = (int) Math.round(picture.getWidth() * scale);
+        int height = (int) Math.round(picture.getHeight() * scale);
+        BufferedImage scaled = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = scaled.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, smooth ? RenderingHints.VALUE_INTERPOLATION_BILINEAR
+                : RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+        g.drawImage(picture, 0, 0, width, height, null);
+        g.dispose();
+        return scaled;
+    }
+
+    /**
+     * A HiDPI capture of a window of another size than the course's 872x782 has no page's shape to go by: the panel
+     * is found drawn at 2x (each pixel doubled), or at 1.5x by a smooth scaling, and the picture is told its scale.
+     */
+    @Test
+    void aHiDpiCaptureOfAWindowOfAnotherSizeIsToldItsScale() throws Exception {
+        BufferedImage capture = capture(page(3), 800, 760, 60, 85);
+        CompareException doubled = assertThrows(CompareException.class,
+                () -> Picture.of(scaled(capture, 2, false), "hidpi.png"));
+        assertEquals("no 650x650 panel found in hidpi.png (1600x1520): looked for a square with white margins around "
+                + "it and a dark edge inside; it holds the panel scaled by 2.00: a 1300x1300 square at x 120, y 170 "
+                + "with white margins around it and a dark edge inside (a HiDPI screen, or a desktop at 125 % or "
+                + "150 %, captures so); a scaled picture cannot be compared pixel for pixel: save the page itself "
+                + "(750x750), or capture the window with the display at 100 % (1:1, no scaling)",
+                doubled.getMessage());
+        CompareException smooth = assertThrows(CompareException.class,
+                () -> Picture.of(scaled(capture, 1.5, true), "desktop150.png"));
+        assertTrue(smooth.getMessage().startsWith("no 650x650 panel found in desktop150.png (1200x1140): looked for a "
+                + "square with white margins around it and a dark edge inside; it holds the panel scaled by 1.50: a "),
+                smooth.getMessage());
+    }
+
+    /** A page saved at half size is smaller than the panel, and told it is the page at 0.5, not only too small. */
+    @Test
+    void aHalfSizePageIsToldItsScaleNotOnlyThatItIsTooSmall() throws Exception {
+        CompareException e = assertThrows(CompareException.class,
+                () -> Picture.of(scaled(page(3), 0.5, true), "half.png"));
+        assertEquals("half.png is 375x375: too small to hold the 650x650 panel (a page is 750x750); it holds the panel "
+                + "scaled by 0.500: a 325x325 square at x 25, y 25 with white margins around it and a dark edge "
+                + "inside (a screenshot tool saving a smaller copy makes one so); a scaled picture cannot be compared "
+                + "pixel for pixel: save the page itself (750x750), or capture the window with the display at 100 % "
+                + "(1:1, no scaling)", e.getMessage());
+    }
+
+    /**
+     * A picture that is no page, large or small, with a dark shape framed in white that is no panel at any scale (not
+     * square), is told what it was told before: no panel, or too small, and no scale.
+     */
+    @Test
+    void aPictureThatIsNoPageIsToldNoScale() {
+        for (int scale : new int[] {1, 2}) {
+            BufferedImage picture = new BufferedImage(500 * scale, 350 * scale, BufferedImage.TYPE_INT_RGB);
+            for (int y = 0; y < picture.getHeight(); y++) {
+                for (int x = 0; x < picture.getWidth(); x++) {
+                    boolean dark = x >= 20 * scale && x < 420 * scale && y >= 20 * scale && y < 330 * scale;
+                    picture.setRGB(x, y, dark ? 0x101010 : 0xFFFFFF);
+                }
+            }
+            CompareException e = assertThrows(CompareException.class, () -> Picture.of(picture, "photo.png"));
+            assertEquals(scale == 1 ? "photo.png is 500x350: too small to hold the 650x650 panel (a page is 750x750)"
+                    : "no 650x650 panel found in photo.png (1000x700): looked for a square with white margins around it "
+                    + "and a dark edge inside", e.getMessage());
+        }
     }
 
     @Test
