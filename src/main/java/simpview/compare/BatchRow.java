@@ -235,7 +235,7 @@ public record BatchRow(String file, String target, Shares exact, Shares slack, d
             return (panel() > 0 ? "panel " + panel() + ": " : "")
                     + String.format(Locale.ROOT, "%s, at most %,d allowed", count, rule.maxFailing());
         }
-        boolean shareEnough = verdict * 100 >= rule.minShare() - 1e-9; // as RubricRule.passes has it
+        boolean shareEnough = rule.shareReaches(verdict);
         return String.format(Locale.ROOT, "%s%s, and the rubric's max_failing_pixels allows at most %,d; its share, %s, "
                 + "%s the %s needed", shareEnough ? "it fails on its pixel count, not its share: " : "", count,
                 rule.maxFailing(), Percent.of(verdict), shareEnough ? "reaches" : "is below",

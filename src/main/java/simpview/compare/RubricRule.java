@@ -73,8 +73,13 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
 
     /** The verdict of a comparison made under this rule (with its deviation and metric). */
     public boolean passes(Comparison comparison) {
-        return comparison.verdictShare(tolerance) * 100 >= minShare - 1e-9
+        return shareReaches(comparison.verdictShare(tolerance))
                 && (maxFailing < 0 || comparison.failing(tolerance) <= maxFailing);
+    }
+
+    /** Whether a verdict share (0 to 1) reaches what this rule needs, the share half of {@link #passes}. */
+    public boolean shareReaches(double verdictShare) {
+        return verdictShare * 100 >= minShare - 1e-9;
     }
 
     /** The score of a comparison, its zero point {@code zeroShare} alone ({@link #score(Comparison, boolean, double)}). */
