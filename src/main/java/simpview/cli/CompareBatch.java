@@ -1607,8 +1607,9 @@ public final class CompareBatch {
             RubricRule[] rules = IntStream.rangeClosed(1, A1Layout.PANELS).mapToObj(k -> firstAssignmentRule(page, k))
                     .toArray(RubricRule[]::new);
             OtherPage other = others.ofFirstAssignment(page, cut.theirs(), rules);
-            // a page of the student's own random values, which no panel's own mistake explains
-            RandomValues random = other != null || Arrays.stream(hints).anyMatch(h -> h != null) ? null
+            // a page of the student's own random values, which no panel's own mistake explains (nor a lack of colour)
+            RandomValues random = other != null || rows.stream().anyMatch(BatchRow::colourless)
+                    || Arrays.stream(hints).anyMatch(h -> h != null) ? null
                     : RandomValues.find(firstAssignmentLabel(page), page, Assignment1.page(page), own.context().seed(),
                             cut.ours(), cut.theirs(), A1Layout.PANEL, firstAssignmentRule(page, 1).tolerance());
             if (other != null) { // the page is another of the five: that says more than each panel's own hint

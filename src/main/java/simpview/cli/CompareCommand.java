@@ -24,6 +24,7 @@ import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
+import simpview.compare.Colourless;
 import simpview.compare.Count;
 import simpview.compare.ComparisonReport;
 import simpview.compare.DiffRegion;
@@ -558,6 +559,16 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                         + ComparisonReport.solidPatchNote(patch));
             }
         }
+        // A failing panel without colour where simpview's has some, as a batch notes it of each panel: said once.
+        List<Integer> colourless = new ArrayList<>();
+        for (int k = 0; k < panels.length; k++) {
+            if (!passing[k] && Colourless.note(compared[k].ours(), compared[k].theirs(), rules[k].tolerance()) != null) {
+                colourless.add(k + 1);
+            }
+        }
+        if (!colourless.isEmpty()) {
+            out.println("note: " + PanelWords.panels(colourless) + ": " + Colourless.NOTE);
+        }
         sayFormat(out, passes, cut.format());
         int[][] ourPanels = new int[panels.length][];
         int[][] theirPanels = new int[panels.length][];
@@ -572,7 +583,9 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         // a page that fails as a whole and passes as another of the five: that one hint, of the page
         OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, rules);
         // a page of the student's own random values, which no panel's own mistake explains
-        RandomValues random = passes || other != null || Arrays.stream(hints).anyMatch(h -> h != null) ? null
+        // (a page without colour is told so above: its colours are not another draw's)
+        RandomValues random = passes || other != null || !colourless.isEmpty()
+                || Arrays.stream(hints).anyMatch(h -> h != null) ? null
                 : RandomValues.find("A1 page " + page, page, shown, context.seed(), ourPanels, theirPanels,
                         A1Layout.PANEL, first.tolerance());
         if (other != null) {

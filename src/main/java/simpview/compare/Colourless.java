@@ -30,7 +30,7 @@ public final class Colourless {
      * {@link #NOTE} of theirs against ours, two panels of 0xRRGGBB pixels, when theirs is grey throughout and ours is
      * coloured beyond {@code tolerance} on at least {@link #MIN_SHARE} of its pixels; null otherwise.
      */
-    static String note(int[] ours, int[] theirs, int tolerance) {
+    public static String note(int[] ours, int[] theirs, int tolerance) {
         long coloured = 0;
         for (int i = 0; i < ours.length; i++) {
             if (spread(theirs[i]) > GREY_SPREAD) {

@@ -163,6 +163,32 @@ class Assignment1CompareTest {
     }
 
     /**
+     * Page 4 saved in greyscale fails, and is told, once for its panels, that it has no colour where simpview's
+     * panels have, as a batch and check tell it of each panel.
+     */
+    @Test
+    void aPageSavedInGreyscaleIsToldItHasNoColourOnceForItsPanels() throws Exception {
+        Path four = dir.resolve("a1-page4.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "4", "--out", four.toString()).exitCode());
+        BufferedImage grey = new BufferedImage(750, 750, BufferedImage.TYPE_BYTE_GRAY);
+        grey.createGraphics().drawImage(ImageIO.read(four.toFile()), 0, 0, null);
+        Path picture = dir.resolve("grey.png");
+        ImageIO.write(grey, "png", picture.toFile());
+        CliRun run = CliRun.of("compare", picture.toString(), "--assignment", "1", "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().matches("(?s).*\nnote: panels? [-0-9, and]+: your picture has no colour: every pixel of "
+                + "its panel is a shade of grey, where simpview's panel is coloured; .*"), run.out());
+        assertEquals(1, run.out().split("no colour", -1).length - 1, "said once: " + run.out());
+        assertFalse(run.out().contains("which it draws at random"), "not another draw's colours: " + run.out());
+        Path folder = dir.resolve("mine");
+        Files.createDirectories(folder);
+        Files.copy(picture, folder.resolve("a1-page4.png"));
+        CliRun check = CliRun.of("check", folder.toString(), "--assignment", "1", "--pages", "4");
+        assertTrue(check.out().contains("your picture has no colour"), check.out());
+        assertFalse(check.out().contains("which it draws at random"), "not another draw's colours: " + check.out());
+    }
+
+    /**
      * Simpview's own pages 3 and 4 saved as JPEGs fail without slack (a JPEG's black beside a line or an edge is
      * not 0 0 0), but they are drawn from simpview's random numbers, and are not told they are drawn from others.
      */
