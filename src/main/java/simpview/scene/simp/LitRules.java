@@ -42,8 +42,7 @@ final class LitRules implements RuleSet {
     private String firstClampedColour;
     /** The first surface or fog colour with a channel above 1, as the warning names it, or null. */
     private String firstColourAboveOne;
-    /** The fog the last depth command set, where that command stands, and the last such fog checked. */
-    private Fog fogSet;
+    /** Where the last depth command stands (null before one: no fog yet), and the last fog checked (state.fog()). */
     private String fogSetAt;
     private Fog fogChecked;
     /** The first fog in force at a primitive whose near plane lies at or beyond the view's far plane, or null. */
@@ -248,9 +247,8 @@ final class LitRules implements RuleSet {
         }
         notNegative(c, 2, 5, "fog colour");
         aboveOne(c, 2, "fog colour", "the fog is clamped to full in that channel where it is thick");
-        fogSet = new Fog(n[0], n[1], n[2], n[3], n[4]);
         fogSetAt = files.place();
-        state.setFog(fogSet);
+        state.setFog(new Fog(n[0], n[1], n[2], n[3], n[4]));
         return false;
     }
 
@@ -347,9 +345,9 @@ final class LitRules implements RuleSet {
         if (firstPrimitiveAt == null) {
             firstPrimitiveAt = files.place();
         }
-        if (fogSet != fogChecked) {
-            fogChecked = fogSet;
-            noteFogUnseen(fogSet);
+        if (fogSetAt != null && state.fog() != fogChecked) {
+            fogChecked = state.fog();
+            noteFogUnseen(fogChecked);
         }
         if (traced) {
             geometry.from(files.current().file(), files.current().lineNumber());
