@@ -241,7 +241,7 @@ public final class LitGeometry implements GeometryStage {
         int n = f.size();
         room(n);
         transform(objCtm);
-        boolean normalsRead = !objWire || trace != null; // an outline is drawn in its colours, unlit
+        boolean normalsRead = normalsRead(objWire);
         for (int k = 0; k < n; k++) {
             vertex(k, f.x(k), f.y(k), f.z(k));
             int o = k * CAMERA_STRIDE;
@@ -285,7 +285,7 @@ public final class LitGeometry implements GeometryStage {
         if (!anyNearerThanFog) {
             lookAtFog(n);
         }
-        if (!wire || trace != null) { // as in face(ObjFace): only the trace reads an outline's normals
+        if (normalsRead(wire)) {
             faceNormals(n);
         }
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
@@ -622,6 +622,14 @@ public final class LitGeometry implements GeometryStage {
                 cam[o + CNZ] = faceNz;
             }
         }
+    }
+
+    /**
+     * Whether a polygon's normals are read: a filled one's are lit with; an outline ({@code wire}) is drawn in
+     * its colours, unlit, and only the trace, when one follows, reads its normals.
+     */
+    private boolean normalsRead(boolean wire) {
+        return !wire || trace != null;
     }
 
     /** True when each of the n vertices has its own normal: then no face normal is made or read. */
