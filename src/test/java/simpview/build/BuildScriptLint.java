@@ -61,7 +61,7 @@ final class BuildScriptLint {
             GradleRule.added("lazy task configuration (tasks.register, tasks.named, configureEach)",
                     "\\btasks\\.(register|named)\\b|\\bconfigureEach\\b", "4.9", "task x(type: T) { }"),
             GradleRule.added("useJUnitPlatform()", "\\buseJUnitPlatform\\b", "4.6",
-                    "under gradleBelow('4.6') else; the console launcher below"),
+                    "under gradleBelow('4.6') else; the build's own launcher below"),
             GradleRule.added("Java toolchains", "\\btoolchain\\b", "6.7", "--release 17"),
             GradleRule.added("filePermissions and dirPermissions", "\\b(filePermissions|dirPermissions)\\b", "8.3",
                     "under gradleBelow('8.3') else"),
