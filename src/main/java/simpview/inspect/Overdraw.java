@@ -23,6 +23,7 @@ import simpview.surface.PageCanvas;
 import simpview.surface.Rgb;
 import simpview.surface.ScissorDrawable;
 import simpview.surface.Span;
+import simpview.surface.ZBuffer;
 import simpview.surface.ZBufferDrawable;
 
 /**
@@ -70,7 +71,7 @@ public final class Overdraw {
         PageCanvas canvas = new PageCanvas();
         int[] counts = new int[PageCanvas.PANEL * PageCanvas.PANEL];
         int[] won = new int[counts.length];
-        Counting counting = new Counting(counts, won, canvas.zbuffer().depths());
+        Counting counting = new Counting(counts, won, canvas.zbuffer());
         ScenePipeline.Options options = ScenePipeline.Options.byCommands(library).withRules(scene.rules())
                 .withCue(scene.near(), scene.far()).withOwnColours(scene.ownColours());
         try {
@@ -99,13 +100,13 @@ public final class Overdraw {
     private static final class Counting implements SceneMonitor, DrawingWatch {
         private final int[] counts;
         private final int[] won;
-        /** The canvas's depths, read after each lit span to see which of its pixels won. */
-        private final double[] depths;
+        /** The canvas's z-buffer, whose depths a lit span tests and writes here to see which of its pixels won. */
+        private final ZBuffer zbuffer;
 
-        Counting(int[] counts, int[] won, double[] depths) {
+        Counting(int[] counts, int[] won, ZBuffer zbuffer) {
             this.counts = counts;
             this.won = won;
-            this.depths = depths;
+            this.zbuffer = zbuffer;
         }
 
         /** A scene that turns lit after drawing is drawn again from the start: the counts start again too. */
@@ -146,7 +147,7 @@ public final class Overdraw {
         public FragmentSink fragments(FragmentStage stage) {
             int width = stage.width();
             int height = stage.height();
-            double[] z = depths;
+            double[] z = zbuffer.depths();
             return new FragmentSink() {
                 // k at each pixel of a span as an exact double, and each pixel's 1 / q and z: plain loops over
                 // arrays, which C2 compiles to packed operations, as the fragment stage's batches are.
@@ -186,6 +187,7 @@ public final class Overdraw {
                             won[at + j]++;
                         }
                     }
+                    zbuffer.written(y, start, start + m);
                 }
 
                 @Override
@@ -200,6 +202,7 @@ public final class Overdraw {
                     if (depth > z[i]) {
                         z[i] = depth;
                         won[i]++;
+                        zbuffer.written(y, x, x + 1);
                     }
                 }
             };

@@ -1120,7 +1120,7 @@ public final class FragmentStage implements FragmentSink {
         boolean wrote = shader == null ? colourSpan(y, from, Math.max(from, 0), end, q0, dq, v0, dv)
                 : phongSpan(y, from, end, q0, dq, v0, dv);
         if (wrote) {
-            zbuffer.written();
+            zbuffer.written(y, Math.max(from, 0), end);
         }
     }
 
@@ -1675,7 +1675,7 @@ public final class FragmentStage implements FragmentSink {
         if (!nearer(i, z)) {
             return;
         }
-        zbuffer.written();
+        zbuffer.written(y, x, x + 1);
         wroteOver(y);
         double colourTimes = oneColour ? 1 : inv; // one colour (or one kd) is as it is
         double r = v[R] * colourTimes;

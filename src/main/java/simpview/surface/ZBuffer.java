@@ -7,10 +7,15 @@ import java.util.Arrays;
  * ones); larger z is nearer. Reset to the farthest depth of the picture: the
  * far plane, z = -200, for depth-cued scenes; -infinity for lit ones.
  *
- * <p>Only a {@link ZBufferDrawable} writes the depths, and it says so
- * ({@link #written}) before it returns from a write. So the buffer knows when
- * every entry is still at the far plane, and a reset then costs nothing: the
- * pages that draw without depth (1 and 2) do not pay for filling 3.4 MB.
+ * <p>Whoever writes depths (a {@link ZBufferDrawable}, the lit fragment stage)
+ * says which ({@link #written(int, int, int)}: a row and a run of it) before it
+ * returns from a write. So the buffer knows when every entry is still at the
+ * far plane, and a reset then costs nothing: the pages that draw without depth
+ * (1 and 2) do not pay for filling 3.4 MB. And it knows, row by row, the run
+ * outside which every entry still holds the depth that row was last reset to
+ * ({@link #rowReset}): a reset to the same depth fills that run alone, so a
+ * picture pays for the rows and columns the one before it wrote, not for the
+ * whole panel (a model in the middle of the panel leaves most of it alone).
  *
  * <p>A reset may also be owed ({@link #resetWhenNeeded}, the canvas's clear):
  * the entries are filled by the first that reads or tests them
@@ -36,11 +41,25 @@ public final class ZBuffer {
      * write of several threads at once, and cleared by the first, which fills.
      */
     private volatile boolean owed;
+    /**
+     * Row y's entries outside x from writtenFrom[y] to writtenTo[y] (excluded)
+     * all hold rowReset[y], the depth the row was last reset to: the run is
+     * empty (from = width, to = 0) after a reset, widened by every write. Each
+     * row's three are read and written only by the thread drawing that row, or
+     * the one resetting it.
+     */
+    private final int[] writtenFrom;
+    private final int[] writtenTo;
+    private final double[] rowReset;
 
     public ZBuffer(int width, int height) {
         this.width = width;
         this.height = height;
         this.depth = new double[width * height];
+        this.writtenFrom = new int[height];
+        this.writtenTo = new int[height];
+        this.rowReset = new double[height];
+        Arrays.fill(rowReset, Double.NaN); // no row holds a known depth yet: the first reset fills every entry
         reset(-200);
     }
 
@@ -55,8 +74,8 @@ public final class ZBuffer {
     /** Every entry back to {@code farthest}: -200 for depth-cued pictures, -infinity for lit ones. */
     public void reset(double farthest) {
         if (!atFarPlane || Double.doubleToLongBits(farthest) != Double.doubleToLongBits(resetTo)) {
-            Arrays.fill(depth, farthest);
             resetTo = farthest;
+            resetRows(0, height);
             atFarPlane = true;
         }
         owed = false;
@@ -89,7 +108,7 @@ public final class ZBuffer {
 
     private synchronized void fillOwed() {
         if (owed) {
-            Arrays.fill(depth, resetTo);
+            resetRows(0, height);
             atFarPlane = true;
             owed = false;
         }
@@ -122,9 +141,26 @@ public final class ZBuffer {
         return true;
     }
 
-    /** Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} or {@link #resetWhenNeeded} gave. */
+    /**
+     * Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} or {@link #resetWhenNeeded} gave: of a
+     * row last reset to that same depth, the run written since; of any other, every entry.
+     */
     public void resetRows(int from, int to) {
-        Arrays.fill(depth, from * width, to * width, resetTo);
+        double farthest = resetTo;
+        long bits = Double.doubleToLongBits(farthest);
+        for (int y = from; y < to; y++) {
+            int row = y * width;
+            if (Double.doubleToLongBits(rowReset[y]) == bits) {
+                if (writtenFrom[y] < writtenTo[y]) {
+                    Arrays.fill(depth, row + writtenFrom[y], row + writtenTo[y], farthest);
+                }
+            } else {
+                Arrays.fill(depth, row, row + width, farthest);
+                rowReset[y] = farthest;
+            }
+            writtenFrom[y] = width;
+            writtenTo[y] = 0;
+        }
     }
 
     /** The depth every entry had after the last reset. */
@@ -132,18 +168,28 @@ public final class ZBuffer {
         return resetTo;
     }
 
-    /** Some entry may now differ from the far plane. */
-    public void written() {
+    /**
+     * Entries x from &lt;= x &lt; to of row y (inside the buffer) may now differ from the depth the row was
+     * reset to: said by every write, before it returns.
+     */
+    public void written(int y, int from, int to) {
         // Read before written: threads drawing bands call this for every span, and a
         // store each time would pull the line holding it from core to core.
         if (atFarPlane) {
             atFarPlane = false;
         }
+        if (from < writtenFrom[y]) {
+            writtenFrom[y] = from;
+        }
+        if (to > writtenTo[y]) {
+            writtenTo[y] = to;
+        }
     }
 
     /**
      * The raw depths, row by row from the bottom, for a stage that tests and
-     * writes them itself, an owed reset made first ({@link #settle}).
+     * writes them itself (and says which it wrote, {@link #written(int, int, int)}),
+     * an owed reset made first ({@link #settle}).
      */
     public double[] depths() {
         settle();
@@ -153,7 +199,8 @@ public final class ZBuffer {
     /**
      * The raw depths for a stage whose user resets them ({@link #reset} or
      * {@link #resetByRows}) before it tests any, which replaces a reset
-     * still owed: the lit fragment stage. Nothing owed is made here.
+     * still owed: the lit fragment stage, which says which it wrote
+     * ({@link #written(int, int, int)}). Nothing owed is made here.
      */
     public double[] depthsToReset() {
         return depth;

@@ -52,7 +52,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
         int i = y * width + x;
         if (z > depth[i]) {
             depth[i] = z;
-            zbuffer.written();
+            zbuffer.written(y, x, x + 1);
             delegate.setPixel(x, y, z, argb);
         }
     }
@@ -99,7 +99,7 @@ public final class ZBufferDrawable extends DrawableDecorator {
     }
 
     private void emit(Span s, int from, int to) {
-        zbuffer.written();
+        zbuffer.written(s.y, from, to);
         s.x0 = from;
         s.x1 = to;
         delegate.fillSpan(s);

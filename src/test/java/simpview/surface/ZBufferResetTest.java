@@ -5,7 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -48,6 +50,80 @@ class ZBufferResetTest {
         assertEquals(Double.NEGATIVE_INFINITY, z.depthAt(3, 4), "a band's drawer reset its rows");
         assertEquals(Double.NEGATIVE_INFINITY, z.depthAt(0, 0));
         assertEquals(Double.NEGATIVE_INFINITY, z.farthest());
+    }
+
+    /**
+     * A reset fills only the runs written since the row was last reset to the
+     * same depth: after random writes (through the drawable, and raw as the
+     * lit stage writes, each said by {@link ZBuffer#written(int, int, int)})
+     * and random resets of every kind, to -200 and to -infinity, whole or by
+     * rows, every depth is what a buffer filled whole at each reset holds.
+     */
+    @Test
+    void aResetLeavesEveryDepthAsAWholeFillWould() {
+        int w = 37;
+        int h = 23;
+        ZBuffer z = new ZBuffer(w, h);
+        ZBufferDrawable tested = new ZBufferDrawable(z, new Drawable() {
+            @Override
+            public int width() {
+                return w;
+            }
+
+            @Override
+            public int height() {
+                return h;
+            }
+
+            @Override
+            public void setPixel(int x, int y, double depth, int argb) {
+                // kept nowhere: the depths are what is tested
+            }
+
+            @Override
+            public int getPixel(int x, int y) {
+                return 0;
+            }
+        });
+        double[] plain = new double[w * h];
+        Arrays.fill(plain, -200);
+        Random random = new Random(20261206);
+        for (int step = 0; step < 4000; step++) {
+            int what = random.nextInt(10);
+            if (what < 4) {
+                int x = random.nextInt(w);
+                int y = random.nextInt(h);
+                double d = -random.nextInt(300);
+                tested.setPixel(x, y, d, Colors.WHITE);
+                plain[y * w + x] = Math.max(plain[y * w + x], d);
+            } else if (what < 7) {
+                int y = random.nextInt(h);
+                int from = random.nextInt(w);
+                int to = from + 1 + random.nextInt(w - from);
+                double[] raw = what == 4 ? z.depths() : z.depthsToReset();
+                for (int x = from; x < to; x++) {
+                    raw[y * w + x] = plain[y * w + x] = -random.nextInt(300);
+                }
+                z.written(y, from, to);
+            } else {
+                double farthest = random.nextBoolean() ? -200 : Double.NEGATIVE_INFINITY;
+                if (what == 7) {
+                    z.reset(farthest);
+                } else if (what == 8) {
+                    z.resetWhenNeeded(farthest);
+                    z.settle();
+                } else {
+                    z.resetByRows(farthest);
+                    int cut = random.nextInt(h + 1);
+                    z.resetRows(cut, h);
+                    z.resetRows(0, cut);
+                }
+                Arrays.fill(plain, farthest);
+            }
+            for (int i = 0; i < plain.length; i++) {
+                assertEquals(plain[i], z.depthAt(i % w, i / w), "step " + step + ", pixel " + i % w + ", " + i / w);
+            }
+        }
     }
 
     @Test
