@@ -128,7 +128,7 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
     /** The tables check writes in --out-dir whatever else its line says (its diff images are named for the pictures). */
     @Override
     public List<Path> filesInOutputFolders(String[] args) {
-        return NamedOutputs.inFolders("--out-dir", List.of(CompareBatch.TABLE, CompareBatch.CSV), args);
+        return NamedOutputs.inFolders("--out-dir", List.of(CompareBatch.TABLE, CompareBatch.CSV, CompareBatch.TOTALS), args);
     }
 
     @Override

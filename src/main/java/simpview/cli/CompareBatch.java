@@ -64,6 +64,7 @@ import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
+import simpview.compare.SubmissionTotals;
 import simpview.compare.Wanted;
 import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
@@ -89,6 +90,8 @@ public final class CompareBatch {
 
     static final String TABLE = "compare.md";
     static final String CSV = "compare.csv";
+    /** Each submission's total, for a gradebook to import ({@link SubmissionTotals}), beside the table. */
+    static final String TOTALS = "totals.csv";
     static final String DIFFS = "diffs";
     /** What a row's note starts with when its diff image could not be written; the reason follows. */
     private static final String DIFF_NOT_WRITTEN = "diff not written: ";
@@ -145,6 +148,7 @@ public final class CompareBatch {
             if (outDir != null) {
                 reports.add(new Report(outDir.resolve(TABLE), outDirOption(), outDir));
                 reports.add(new Report(outDir.resolve(CSV), outDirOption(), outDir));
+                reports.add(new Report(outDir.resolve(TOTALS), outDirOption(), outDir));
             }
             if (gradescope != null) {
                 reports.add(new Report(gradescope, "--gradescope", gradescope));
@@ -1109,13 +1113,14 @@ public final class CompareBatch {
     }
 
     /**
-     * Whether a file (relative to {@code dir}) is a table or web report some batch wrote: compare.md, compare.csv or
-     * index.html beside a compare.csv. Only those: the folder they are in may be a student's, or the class's.
+     * Whether a file (relative to {@code dir}) is a table or web report some batch wrote: compare.md, compare.csv,
+     * totals.csv or index.html beside a compare.csv. Only those: the folder they are in may be a student's, or the
+     * class's.
      */
     private static boolean isOutputsTable(Path dir, Path file) {
         String name = file.getFileName().toString();
         Path folder = file.getParent() == null ? dir : dir.resolve(file.getParent());
-        return (name.equals(TABLE) || name.equals(CSV) || name.equals(HtmlReport.INDEX))
+        return (name.equals(TABLE) || name.equals(CSV) || name.equals(TOTALS) || name.equals(HtmlReport.INDEX))
                 && Files.isRegularFile(folder.resolve(CSV));
     }
 
@@ -1759,14 +1764,19 @@ public final class CompareBatch {
         List<Map.Entry<String, Wanted>> missing = oneStudent
                 ? Wanted.missing(wanted, rows).stream().map(w -> Map.entry("", w)).toList()
                 : Wanted.missingBySubmission(wanted, rows);
-        String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
-                base.metric(), base.flipThreshold());
         Path outDir = outputs.outDir();
+        // each submission's total, by the submission its pages are counted in (a picture of its own where each
+        // picture is a student's), as results.json would score it graded alone
+        List<SubmissionTotals.Total> totals = SubmissionTotals.of(rows, missing,
+                oneStudent ? submissionOf : file -> alone.test(file) ? file : submissionOf.apply(file));
+        String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
+                base.metric(), base.flipThreshold()) + SubmissionTotals.markdown(totals, outDir == null ? null : TOTALS);
         try {
             OutputPaths files = outputs.files();
             if (outDir != null) {
                 writeString(files, outDir.resolve(TABLE), markdown);
                 writeString(files, outDir.resolve(CSV), BatchTable.csv(rows, missing));
+                writeString(files, outDir.resolve(TOTALS), SubmissionTotals.csv(totals));
             }
             if (outputs.gradescope() != null) {
                 // results.json is one submission's, however its pictures are foldered (see grading.md)
@@ -1778,7 +1788,8 @@ public final class CompareBatch {
                 writeString(files, outputs.junit(), JUnitResults.xml(rows, wanted, seconds, submissionOf));
             }
             if (outputs.html() != null) {
-                HtmlReport.write(rows, wanted, outputs.html(), outDir, submissionOf);
+                HtmlReport.write(rows, Wanted.missingBySubmission(wanted, rows, submissionOf), outputs.html(), outDir,
+                        submissionOf, totals);
                 files.wrote(outputs.html().resolve(HtmlReport.INDEX));
             }
         } catch (IOException e) {
@@ -1791,6 +1802,7 @@ public final class CompareBatch {
             out.print(markdown);
             if (outDir != null) {
                 out.println("table: " + outDir.resolve(TABLE) + " and " + outDir.resolve(CSV));
+                out.println("totals: " + outDir.resolve(TOTALS));
             }
         }
         if (rows.isEmpty()) {

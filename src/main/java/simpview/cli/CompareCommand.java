@@ -200,7 +200,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     @Override
     public List<Path> filesInOutputFolders(String[] args) {
         List<Path> files = new ArrayList<>();
-        List<String> tables = List.of(CompareBatch.TABLE, CompareBatch.CSV);
+        List<String> tables = List.of(CompareBatch.TABLE, CompareBatch.CSV, CompareBatch.TOTALS);
         files.addAll(NamedOutputs.inFolders("--out-dir", tables, args));
         if (!NamedOutputs.given("--out-dir", args)) {
             files.addAll(NamedOutputs.inFolders("--html", tables, args));

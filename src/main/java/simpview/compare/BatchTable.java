@@ -192,7 +192,7 @@ public final class BatchTable {
                 row.result().name(), row.margins(), diff, row.remarks());
     }
 
-    private static String quoted(String cell) {
+    static String quoted(String cell) {
         if (cell.contains(",") || cell.contains("\"") || cell.contains("\n") || cell.contains("\r")) {
             return "\"" + cell.replace("\"", "\"\"") + "\"";
         }

@@ -45,8 +45,17 @@ public final class HtmlReport {
      */
     public static void write(List<BatchRow> rows, List<Wanted> wanted, Path htmlDir, Path outDir,
             Function<String, String> submissionOf) throws IOException {
-        OutputFiles.writeString(htmlDir.resolve(INDEX),
-                page(rows, Wanted.missingBySubmission(wanted, rows, submissionOf), htmlDir, outDir, submissionOf));
+        List<Map.Entry<String, Wanted>> missing = Wanted.missingBySubmission(wanted, rows, submissionOf);
+        write(rows, missing, htmlDir, outDir, submissionOf, SubmissionTotals.of(rows, missing, submissionOf));
+    }
+
+    /**
+     * The same with the pages each submission lacks ({@link Wanted#missingBySubmission}) and each submission's
+     * total given: the batch's, whose submissions may be pictures of their own (one scene for every picture).
+     */
+    public static void write(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir,
+            Function<String, String> submissionOf, List<SubmissionTotals.Total> totals) throws IOException {
+        OutputFiles.writeString(htmlDir.resolve(INDEX), page(rows, missing, htmlDir, outDir, submissionOf, totals));
     }
 
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir) {
@@ -55,6 +64,11 @@ public final class HtmlReport {
 
     static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir,
             Function<String, String> submissionOf) {
+        return page(rows, missing, htmlDir, outDir, submissionOf, SubmissionTotals.of(rows, missing, submissionOf));
+    }
+
+    static String page(List<BatchRow> rows, List<Map.Entry<String, Wanted>> missing, Path htmlDir, Path outDir,
+            Function<String, String> submissionOf, List<SubmissionTotals.Total> totals) {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<title>simpview compare: ").append(esc(BatchTable.summary(rows, missing))).append("</title>\n")
@@ -66,6 +80,7 @@ public final class HtmlReport {
         h.append("<p class=\"hint\">Click a column's heading to sort by it (again: the other way); "
                 + "index.html#sort=4-down opens it sorted by share, lowest last. "
                 + "Shares are of the 650x650 panel's pixels, in percent.</p>\n");
+        totals(h, totals);
         int index = 0;
         for (BatchRow row : rows) {
             if (row.compared()) {
@@ -140,6 +155,37 @@ public final class HtmlReport {
         h.append("</tbody>\n</table>\n");
     }
 
+    /**
+     * Each submission's total ({@link SubmissionTotals}): what a gradebook is given, after the table of rows; nothing
+     * when there is none.
+     */
+    private static void totals(StringBuilder h, List<SubmissionTotals.Total> totals) {
+        if (totals.isEmpty()) {
+            return;
+        }
+        h.append("<h2>Each submission's total</h2>\n<p class=\"hint\">The sum of its scores (each page counted once) "
+                + "out of what its pages are worth, as results.json scores the submission graded alone.</p>\n")
+                .append("<table id=\"totals\">\n<thead><tr>");
+        for (String heading : SubmissionTotals.headings()) {
+            h.append("<th>").append(esc(heading)).append("</th>");
+        }
+        h.append("</tr></thead>\n<tbody>\n");
+        List<List<String>> lines = SubmissionTotals.cells(totals);
+        for (int i = 0; i < totals.size(); i++) {
+            SubmissionTotals.Total total = totals.get(i);
+            List<String> cells = lines.get(i);
+            Number[] values = {total.score(), total.maxScore(), total.passed(), total.failed(), total.errors(),
+                total.missing()};
+            h.append("<tr class=\"total\">");
+            cell(h, cells.get(0), null);
+            for (int c = 1; c < cells.size(); c++) {
+                cell(h, cells.get(c), values[c - 1]);
+            }
+            h.append("</tr>\n");
+        }
+        h.append("</tbody>\n</table>\n");
+    }
+
     private static void cell(StringBuilder h, String text, Number sortValue) {
         h.append("<td");
         if (sortValue != null) {
@@ -206,6 +252,7 @@ public final class HtmlReport {
             .diff img { display: block; image-rendering: pixelated; }
             .region { position: absolute; box-sizing: content-box; border: 1px solid #%06x; pointer-events: auto; }
             .hint { color: #555555; font-size: 13px; }
+            #totals th { cursor: default; } #totals td { border-bottom: 1px solid #dddddd; }
             """, PASS_COLOUR, FAIL_COLOUR, ERROR_COLOUR, SKIPPED_COLOUR, MISSING_COLOUR, OUTLINE_COLOUR);
 
     private static final String SCRIPT = """

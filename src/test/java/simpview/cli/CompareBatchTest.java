@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static simpview.testing.Images.page;
 
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -13,6 +16,7 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import simpview.compare.HtmlReport;
 
 /** {@code simpview compare --dir ...}: one row per picture, good, bad or broken, in Markdown and CSV. */
 public class CompareBatchTest {
@@ -227,6 +231,78 @@ public class CompareBatchTest {
                 out.resolve("ann.json").toString());
         assertFalse(one.err().contains("note:"), one.err());
         assertEquals(ExitCode.OK, one.exitCode(), one.err());
+    }
+
+    /** The picture with rows 300 to 399 of its panel painted black: a band across the middle of tri.simp. */
+    private static BufferedImage banded(Path picture) throws Exception {
+        BufferedImage image = ImageIO.read(picture.toFile());
+        for (int y = 300; y < 400; y++) {
+            for (int x = 50; x < 700; x++) {
+                image.setRGB(x, y, 0);
+            }
+        }
+        return image;
+    }
+
+    /**
+     * Each submission's total, in the printed table, totals.csv and the web report, is what results.json gives
+     * that student's folder graded alone: a student who passes, one who fails a page scored in part, one who lacks
+     * a page and handed in a second picture of another (not counted).
+     */
+    @Test
+    void eachSubmissionsTotalIsWhatItsOwnResultsJsonScores() throws Exception {
+        Path scenes = scenes("bar");
+        Path right = dir.resolve("right");
+        render(scenes.resolve("tri.simp"), right.resolve("tri.png"));
+        render(scenes.resolve("bar.simp"), right.resolve("bar.png"));
+        Path class_ = dir.resolve("class");
+        for (String student : new String[] {"ann", "bob", "cy"}) {
+            Files.createDirectories(class_.resolve(student));
+            Files.copy(right.resolve("bar.png"), class_.resolve(student + "/bar.png"));
+        }
+        Files.copy(right.resolve("tri.png"), class_.resolve("ann/tri.png"));
+        png(class_.resolve("bob/tri.png"), banded(right.resolve("tri.png"))); // 96.74 %: 1.49 of 2 points
+        Files.delete(class_.resolve("cy/bar.png"));
+        Files.copy(right.resolve("tri.png"), class_.resolve("cy/tri.png"));
+        Files.copy(class_.resolve("bob/tri.png"), class_.resolve("cy/tri copy.png")); // fails, and does not count
+        // the rubric names both scenes, so each is asked of a student's folder graded alone too
+        Path rubric = dir.resolve("compare.json");
+        Files.writeString(rubric, "{\"pages\": [{\"match\": \"tri\", \"points\": 2}, {\"match\": \"bar\", "
+                + "\"points\": 0.5}]}");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--rubric",
+                rubric.toString(), "--partial", "--diffs", "none", "--out-dir", out.toString(), "--html",
+                out.toString());
+        assertFalse(run.showsStackTrace(), run.err());
+        List<String> totals = Files.readAllLines(out.resolve("totals.csv"));
+        assertEquals("submission,score,max_score,passed,failed,errors,missing", totals.get(0));
+        assertEquals("ann,2.50,2.50,2,0,0,0", totals.get(1));
+        assertEquals("bob,1.99,2.50,1,1,0,0", totals.get(2), "his tri scored in part, 1.49 of 2");
+        assertEquals("cy,2,2.50,1,0,0,1", totals.get(3), "her copy of tri counts nothing; bar is missing");
+        assertEquals(4, totals.size(), totals.toString());
+        for (String line : totals.subList(1, totals.size())) {
+            String[] cells = line.split(",");
+            Path results = dir.resolve(cells[0] + ".json");
+            CliRun alone = CliRun.of("compare", "--dir", class_.resolve(cells[0]).toString(), "--scene",
+                    scenes.toString(), "--rubric", rubric.toString(), "--partial", "--diffs", "none", "--gradescope",
+                    results.toString());
+            assertFalse(alone.showsStackTrace(), alone.err());
+            JsonObject json = JsonParser.parseString(Files.readString(results)).getAsJsonObject();
+            double worth = 0;
+            for (JsonElement test : json.getAsJsonArray("tests")) {
+                worth += test.getAsJsonObject().get("max_score").getAsDouble();
+            }
+            assertEquals(json.get("score").getAsDouble(), Double.parseDouble(cells[1]), 1e-9, line);
+            assertEquals(worth, Double.parseDouble(cells[2]), 1e-9, line);
+        }
+        assertTrue(run.out().contains("| submission | score | out of | pass | fail | could not be compared | missing |\n"
+                + "|---|---:|---:|---:|---:|---:|---:|\n| ann | 2.50 | 2.50 | 2 | 0 | 0 | 0 |\n"
+                + "| bob | 1.99 | 2.50 | 1 | 1 | 0 | 0 |\n| cy | 2 | 2.50 | 1 | 0 | 0 | 1 |\n"), run.out());
+        assertTrue(Files.readString(out.resolve("compare.md")).endsWith("| cy | 2 | 2.50 | 1 | 0 | 0 | 1 |\n"));
+        assertTrue(run.out().contains("\ntotals: " + out.resolve("totals.csv") + "\n"), run.out());
+        String html = Files.readString(out.resolve(HtmlReport.INDEX));
+        assertTrue(html.contains("<tr class=\"total\"><td>cy</td><td data-v=\"2.0\">2</td><td data-v=\"2.5\">2.50</td>"),
+                html);
     }
 
     /**

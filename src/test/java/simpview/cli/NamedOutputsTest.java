@@ -90,12 +90,12 @@ class NamedOutputsTest {
         String d = dir.resolve("out").toString();
         String h = dir.resolve("web").toString();
         CompareCommand compare = new CompareCommand();
-        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv"), Path.of(h, "index.html")),
-                ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", h, "--pages", "one"));
-        assertEquals(List.of(Path.of(h, "compare.md"), Path.of(h, "compare.csv"), Path.of(h, "index.html")),
-                ofLine(compare, "--dir", "subs", "--html", h, "--pages", "one"));
-        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv")),
-                ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").subList(0, 2));
-        assertEquals(3, ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").size());
+        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv"), Path.of(d, "totals.csv"),
+                Path.of(h, "index.html")), ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", h, "--pages", "one"));
+        assertEquals(List.of(Path.of(h, "compare.md"), Path.of(h, "compare.csv"), Path.of(h, "totals.csv"),
+                Path.of(h, "index.html")), ofLine(compare, "--dir", "subs", "--html", h, "--pages", "one"));
+        assertEquals(List.of(Path.of(d, "compare.md"), Path.of(d, "compare.csv"), Path.of(d, "totals.csv")),
+                ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").subList(0, 3));
+        assertEquals(4, ofLine(compare, "--dir", "subs", "--out-dir", d, "--html", d, "--pages", "one").size());
     }
 }
