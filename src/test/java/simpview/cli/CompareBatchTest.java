@@ -306,6 +306,35 @@ public class CompareBatchTest {
     }
 
     /**
+     * Of two pictures whose names differ only in case (tri.png and tri.PNG, side by side on Linux), the first by name
+     * is tri.PNG: it counted even when it was no picture, and the right tri.png scored nothing. The one that can be
+     * compared counts, and then the one whose bytes hold a PNG.
+     */
+    @Test
+    void ofTwoNamesDifferingOnlyInCaseTheReadablePngCounts() throws Exception {
+        Path scenes = scenes("bar");
+        Path class_ = dir.resolve("class");
+        render(scenes.resolve("tri.simp"), class_.resolve("bob/tri.png"));
+        Files.writeString(class_.resolve("bob/tri.PNG"), "not a picture");
+        Files.createDirectories(class_.resolve("cy"));
+        Files.copy(class_.resolve("bob/tri.png"), class_.resolve("cy/tri.png"));
+        ImageIO.write(banded(class_.resolve("bob/tri.png")), "jpeg", class_.resolve("cy/tri.PNG").toFile());
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("compare", "--dir", class_.toString(), "--scene", scenes.toString(), "--diffs", "none",
+                "--out-dir", out.toString());
+        assertEquals(ExitCode.OK, run.exitCode(), run.out() + run.err());
+        List<String> rows = csvRows(out);
+        assertTrue(rows.get(1).startsWith("bob/tri.PNG,tri.simp,,,,,,,,ERROR,,,\"not counted: bob/tri.png counts for "
+                + "tri.simp instead: both are named the page's name and nothing else, their names differ only in case, "
+                + "and it could be compared, this one not; "), rows.get(1));
+        assertTrue(rows.get(3).startsWith("cy/tri.PNG,tri.simp,") && rows.get(3).contains(",FAIL,white,,\"not counted: "
+                + "cy/tri.png counts for tri.simp instead: both are named the page's name and nothing else, their "
+                + "names differ only in case, and by what their bytes hold a PNG is exact, a JPEG is not;"), rows.get(3));
+        assertEquals(List.of("bob,1,1,1,0,0,0", "cy,1,1,1,0,0,0"),
+                Files.readAllLines(out.resolve("totals.csv")).subList(1, 3));
+    }
+
+    /**
      * A scene is asked of every submission when at least half of them handed it in: one student's picture of
      * another scene of the folder (cube.simp, which the pages include) asks nothing of the others.
      */
