@@ -101,16 +101,7 @@ public final class Comparison {
      * with FLIP a pixel matches at {@code flipThreshold} or less (0 to 1).
      */
     public static Comparison of(int[] ours, int[] theirs, int size, int deviation, Metric metric, double flipThreshold) {
-        if (!(flipThreshold >= 0 && flipThreshold <= 1)) {
-            throw new IllegalArgumentException("a FLIP threshold is 0 to 1, not " + flipThreshold);
-        }
-        if (size < 1 || ours.length != size * size || theirs.length != size * size) {
-            throw new IllegalArgumentException("both panels must be " + size + "x" + size + " pixels");
-        }
-        if (deviation < 0 || deviation > MAX_DEVIATION) {
-            throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
-        }
-        Comparison c = new Comparison(ours, theirs, size, deviation, metric, flipThreshold);
+        Comparison c = unmeasured(ours, theirs, size, deviation, metric, flipThreshold);
         if (metric == Metric.BLUR) {
             c.measure(Blur.of(ours, size), Blur.of(theirs, size));
         } else {
@@ -125,26 +116,84 @@ public final class Comparison {
         return c;
     }
 
+    /** A comparison of these panels with nothing measured yet, its arguments checked. */
+    private static Comparison unmeasured(int[] ours, int[] theirs, int size, int deviation, Metric metric,
+            double flipThreshold) {
+        if (!(flipThreshold >= 0 && flipThreshold <= 1)) {
+            throw new IllegalArgumentException("a FLIP threshold is 0 to 1, not " + flipThreshold);
+        }
+        if (size < 1 || ours.length != size * size || theirs.length != size * size) {
+            throw new IllegalArgumentException("both panels must be " + size + "x" + size + " pixels");
+        }
+        if (deviation < 0 || deviation > MAX_DEVIATION) {
+            throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
+        }
+        return new Comparison(ours, theirs, size, deviation, metric, flipThreshold);
+    }
+
     private void measure(int[] ours, int[] theirs) {
-        int r = deviation;
-        int n = size;
-        for (int y = 0; y < n; y++) {
-            for (int x = 0; x < n; x++) {
-                int i = y * n + x;
-                int d = Rasters.distance(ours[i], theirs[i]);
-                int s = d;
-                if (d != 0 && r != 0) {
-                    int one = nearest(ours[i], theirs, n, x, y, r, d, 0);
-                    // The other way only matters where it is larger than the first: it may stop at that.
-                    s = one == d ? d : nearest(theirs[i], ours, n, x, y, r, d, one);
-                }
-                direct[i] = (byte) d;
-                slack[i] = (byte) s;
-                directCount[d]++;
-                slackCount[s]++;
-            }
+        for (int y = 0; y < size; y++) {
+            measureRow(ours, theirs, y, LEVELS);
         }
     }
+
+    /**
+     * Row y's distances, without and with slack, measured and counted; how many of its pixels are beyond
+     * {@code tolerance} with slack.
+     */
+    private int measureRow(int[] ours, int[] theirs, int y, int tolerance) {
+        int r = deviation;
+        int n = size;
+        int beyond = 0;
+        for (int x = 0; x < n; x++) {
+            int i = y * n + x;
+            int d = Rasters.distance(ours[i], theirs[i]);
+            int s = d;
+            if (d != 0 && r != 0) {
+                int one = nearest(ours[i], theirs, n, x, y, r, d, 0);
+                // The other way only matters where it is larger than the first: it may stop at that.
+                s = one == d ? d : nearest(theirs[i], ours, n, x, y, r, d, one);
+            }
+            direct[i] = (byte) d;
+            slack[i] = (byte) s;
+            directCount[d]++;
+            slackCount[s]++;
+            beyond += s > tolerance ? 1 : 0;
+        }
+        return beyond;
+    }
+
+    /**
+     * The comparison {@link #of(int[], int[], int, int, Metric, double)} makes, unless at least {@code enough}
+     * pixels fail by {@code tolerance} (beyond it even with slack): then null, as soon as that many are found.
+     * The rows are measured every {@link #ROW_STRIDE}-th first, then those between, so that pixels failing
+     * anywhere in the panel are found early. Each pixel's distances are its own, whatever order the rows are
+     * measured in, so a comparison returned is the one {@code of} makes; and null means that comparison would
+     * have at least {@code enough} failing pixels ({@link #failing}), for those found are among them. With
+     * {@link Metric#FLIP}, whose failing pixels are FLIP's, the comparison is always made.
+     */
+    static Comparison unlessFailing(int[] ours, int[] theirs, int size, int deviation, Metric metric,
+            double flipThreshold, int tolerance, long enough) {
+        if (metric == Metric.FLIP || enough > (long) size * size) {
+            return of(ours, theirs, size, deviation, metric, flipThreshold);
+        }
+        Comparison c = unmeasured(ours, theirs, size, deviation, metric, flipThreshold);
+        int[] measuredOurs = metric == Metric.BLUR ? Blur.of(ours, size) : ours;
+        int[] measuredTheirs = metric == Metric.BLUR ? Blur.of(theirs, size) : theirs;
+        long failing = 0;
+        for (int phase = 0; phase < ROW_STRIDE; phase++) {
+            for (int y = phase; y < size; y += ROW_STRIDE) {
+                failing += c.measureRow(measuredOurs, measuredTheirs, y, tolerance);
+                if (failing >= enough) {
+                    return null;
+                }
+            }
+        }
+        return c;
+    }
+
+    /** Rows apart that {@link #unlessFailing} measures first. */
+    static final int ROW_STRIDE = 16;
 
     /**
      * The smallest distance from {@code colour} to a pixel of {@code other} within r pixels of (x, y)

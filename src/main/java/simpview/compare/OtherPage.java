@@ -60,8 +60,9 @@ public record OtherPage(String page, String named, double shareThere) implements
     private static double passes(int[][] ours, int[][] theirs, int n, RubricRule[] rules) {
         double lowest = 1;
         for (int k = 0; k < rules.length; k++) {
-            Comparison comparison = rules[k].compare(ours[k], theirs[k], n);
-            if (!rules[k].passes(comparison)) {
+            // null: so many pixels fail that it cannot pass, told without measuring the rest (exact)
+            Comparison comparison = rules[k].compareUnlessFailing(ours[k], theirs[k], n);
+            if (comparison == null || !rules[k].passes(comparison)) {
                 return Double.NaN;
             }
             lowest = Math.min(lowest, comparison.verdictShare(rules[k].tolerance()));
@@ -74,7 +75,8 @@ public record OtherPage(String page, String named, double shareThere) implements
         int[] empty = new int[n * n];
         Arrays.fill(empty, PageCanvas.BACKGROUND & 0xFFFFFF);
         for (int k = 0; k < rules.length; k++) {
-            if (!rules[k].passes(rules[k].compare(ours[k], empty, n))) {
+            Comparison comparison = rules[k].compareUnlessFailing(ours[k], empty, n);
+            if (comparison == null || !rules[k].passes(comparison)) {
                 return false;
             }
         }

@@ -71,6 +71,39 @@ public record RubricRule(String match, int tolerance, int deviation, double minS
         return Comparison.of(ours, theirs, size, deviation, metric, flipThreshold);
     }
 
+    /**
+     * The comparison {@link #compare} makes, unless so many of its pixels fail that it cannot pass by this rule:
+     * then null, told from those pixels alone (a picture of another page is told so within its first rows).
+     * Exact: null only where {@link #passes} of that comparison would be false ({@link #failingThatFails}).
+     */
+    Comparison compareUnlessFailing(int[] ours, int[] theirs, int size) {
+        return Comparison.unlessFailing(ours, theirs, size, deviation, metric, flipThreshold, tolerance,
+                failingThatFails((long) size * size));
+    }
+
+    /**
+     * The fewest failing pixels of a panel of {@code total} that fail this rule, or {@code total + 1} when none
+     * do: more than {@code maxFailing}, or so many that the share left within the tolerance is short of
+     * {@code minShare}. Without FLIP, a comparison's {@link Comparison#verdictShare} is its pixels within the
+     * tolerance, {@code total} less its failing ones, over {@code total}, a division of whole numbers below
+     * 2^53 that rounds the same here; and it only falls as the failing pixels grow. So the least count whose
+     * share {@link #shareReaches} refuses, found by halving, is exact: at that many failing pixels or more, the
+     * comparison fails.
+     */
+    long failingThatFails(long total) {
+        long low = 0;
+        long high = total + 1;
+        while (low < high) {
+            long middle = (low + high) >>> 1;
+            if (shareReaches((double) (total - middle) / total)) {
+                low = middle + 1;
+            } else {
+                high = middle;
+            }
+        }
+        return maxFailing >= 0 ? Math.min(low, maxFailing + 1L) : low;
+    }
+
     /** The verdict of a comparison made under this rule (with its deviation and metric). */
     public boolean passes(Comparison comparison) {
         return shareReaches(comparison.verdictShare(tolerance))
