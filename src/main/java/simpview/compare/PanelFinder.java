@@ -42,6 +42,8 @@ final class PanelFinder {
     private int[] rowWhite;
     /** colWhite[y * width + x]: white pixels in column x above row y (row-major, so it fills in order). */
     private int[] colWhite;
+    /** The picture's pixels that are not white, counted with {@link #rowWhite}. */
+    private long notWhite;
 
     private PanelFinder(int[] rgb, int width, int height) {
         this.rgb = rgb;
@@ -59,6 +61,7 @@ final class PanelFinder {
                 rowWhite[y * (width + 1) + x + 1] = rowWhite[y * (width + 1) + x] + white;
                 colWhite[(y + 1) * width + x] = colWhite[y * width + x] + white;
             }
+            notWhite += width - rowWhite[y * (width + 1) + width];
         }
     }
 
@@ -99,10 +102,7 @@ final class PanelFinder {
      * gutter, as the first assignment's page of four panels is.
      */
     static boolean holdsOnePanel(int[] rgb, int width, int height) {
-        if (width < PanelPlace.SIZE || height < PanelPlace.SIZE) {
-            return false;
-        }
-        PanelPlace found = new PanelFinder(rgb, width, height).search();
+        PanelPlace found = framedPanel(rgb, width, height);
         if (found == null) {
             return false;
         }
@@ -112,6 +112,14 @@ final class PanelFinder {
             white += isWhite(rgb[y * width + middle]) ? 1 : 0;
         }
         return white < FRAME_WHITE * PanelPlace.SIZE;
+    }
+
+    /** The best place for a 650x650 panel framed by white margins in the picture, at 1:1, or null. */
+    static PanelPlace framedPanel(int[] rgb, int width, int height) {
+        if (width < PanelPlace.SIZE || height < PanelPlace.SIZE) {
+            return null;
+        }
+        return new PanelFinder(rgb, width, height).search();
     }
 
     /** For a picture the size of a page or capture scaled, a sentence that says so; else "". */
@@ -163,9 +171,20 @@ final class PanelFinder {
         if (rowWhite == null) {
             countWhite();
         }
+        // Two shortcuts, each taken only where score would refuse every place it skips: a border needs
+        // BORDER_DARK of its pixels not white, and the picture may not have so many at all (a white picture);
+        // the rows above and below a square need FRAME_WHITE of it white, and a row may not have so many.
+        int border = 2 * across + 2 * down - 4;
+        if (notWhite < BORDER_DARK * border) {
+            return null;
+        }
+        int needAcross = (int) Math.ceil(FRAME_WHITE * across);
         int bestScore = -1;
         PanelPlace best = null;
         for (int top = 1; top + down < height; top++) {
+            if (row(top - 1, 0, width) < needAcross || row(top + down, 0, width) < needAcross) {
+                continue;
+            }
             for (int left = 1; left + across < width; left++) {
                 int score = score(left, top, across, down);
                 if (score > bestScore) {

@@ -158,6 +158,13 @@ public final class PanelGridComparison {
 
     /** The first place (rows first, then columns) where every panel is framed, or null. */
     private static int[] place(int[] rgb, int width, int height, Panel[] panels) {
+        int need = 0;
+        for (Panel p : panels) {
+            need = Math.max(need, darkNeeded(p.size()));
+        }
+        if (fewerDark(rgb, need)) {
+            return null; // some panel can be mostly dark nowhere: a white picture, say
+        }
         Span span = Span.of(panels);
         for (int top = 1 - span.top(); top + span.bottom() < height; top++) {
             for (int left = 1 - span.left(); left + span.right() < width; left++) {
@@ -207,7 +214,13 @@ public final class PanelGridComparison {
         int most = 0;
         // a picture of a page's size is looked at where a page has its panels, when nothing better is found
         int[] best = width == page && height == page ? new int[] {0, 0} : null;
-        for (int top = 1 - span.top(); top + span.bottom() < height; top++) {
+        int need = Integer.MAX_VALUE;
+        for (Panel p : panels) {
+            need = Math.min(need, darkNeeded(p.size()));
+        }
+        // where no panel can be mostly dark anywhere, none is framed anywhere: the search would find nothing
+        int from = fewerDark(rgb, need) ? height : 1 - span.top();
+        for (int top = from; top + span.bottom() < height; top++) {
             for (int left = 1 - span.left(); left + span.right() < width; left++) {
                 int framed = 0;
                 for (Panel p : panels) {
@@ -312,6 +325,24 @@ public final class PanelGridComparison {
             samples += 4;
         }
         return 2 * dark >= samples;
+    }
+
+    /**
+     * The fewest dark pixels a picture must have for a square of side {@code s} to be mostly dark anywhere in it
+     * ({@link #mostlyDark}): half its samples, and a pixel is sampled at most once by each of the four sides.
+     */
+    private static int darkNeeded(int s) {
+        int samples = 4 * ((s + 4) / 5);
+        return (samples + 7) / 8;
+    }
+
+    /** Whether the picture has fewer than {@code count} dark pixels, counted only as far as that. */
+    private static boolean fewerDark(int[] rgb, int count) {
+        int dark = 0;
+        for (int i = 0; i < rgb.length && dark < count; i++) {
+            dark += dark(rgb[i]) ? 1 : 0;
+        }
+        return dark < count;
     }
 
     private static boolean white(int rgb) {

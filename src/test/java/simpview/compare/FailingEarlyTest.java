@@ -1,9 +1,13 @@
 package simpview.compare;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -108,5 +112,38 @@ class FailingEarlyTest {
                 assertNull(found, wrong + " failing");
             }
         }
+    }
+
+    /**
+     * A white page with the first assignment's four 300x300 panels white inside but dark on exactly half the
+     * pixels their edges are sampled at (the least a panel is taken at), or one fewer on the last panel's left.
+     */
+    private static Picture fourPanelsBarelyDark(boolean oneFewer) throws CompareException {
+        BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        Arrays.fill(((DataBufferInt) page.getRaster().getDataBuffer()).getData(), 0xFFFFFF);
+        for (int k = 0; k < 4; k++) {
+            int x0 = 50 + k % 2 * 350;
+            int y0 = 50 + k / 2 * 350;
+            for (int i = 0; i < 300; i += 5) {
+                page.setRGB(x0 + i, y0 + 299, 0x101010); // 60 samples along the bottom
+                if (i > 0) {
+                    page.setRGB(x0 + i, y0, 0x101010); // 59 along the top, its corner left white
+                }
+            }
+            if (!(oneFewer && k == 3)) {
+                page.setRGB(x0, y0 + 5, 0x101010); // the 120th of 240
+            }
+        }
+        return Picture.of(page, "four.png");
+    }
+
+    @Test
+    void aPageOfFourPanelsIsFoundWithTheLeastDarkAndNotWithoutIt() throws Exception {
+        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[4];
+        for (int k = 0; k < 4; k++) {
+            panels[k] = new PanelGridComparison.Panel(50 + k % 2 * 350, 50 + k / 2 * 350, 300);
+        }
+        assertTrue(PanelGridComparison.holds(fourPanelsBarelyDark(false), panels));
+        assertFalse(PanelGridComparison.holds(fourPanelsBarelyDark(true), panels));
     }
 }

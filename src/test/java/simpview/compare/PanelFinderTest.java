@@ -10,6 +10,7 @@ import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Random;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -111,6 +112,52 @@ class PanelFinderTest {
             CompareException e = assertThrows(CompareException.class, () -> Picture.of(picture, "x.png"));
             assertTrue(e.getMessage().startsWith("no 650x650 panel found in x.png (800x700)"), e.getMessage());
         }
+    }
+
+    /**
+     * A white 700x700 picture whose only other pixels are a 650x650 square's border at (20, 20), dark on 649 of its
+     * 2,596 pixels, the 25 % a panel needs; and, when asked, the row above with just the 90 % of the square's width
+     * white that a frame needs, dark elsewhere. The search's shortcuts skip a place only where its count falls short.
+     */
+    private static int[] framedAtTheEdge(int dark, boolean rowAboveAtItsLeast) {
+        int size = 700;
+        int[] rgb = new int[size * size];
+        Arrays.fill(rgb, 0xFFFFFF);
+        int left = 20;
+        int top = 20;
+        int right = left + 649;
+        int bottom = top + 649;
+        int[] sides = {dark - 3 * (dark / 4), dark / 4, dark / 4, dark / 4}; // top, bottom, left, right
+        for (int i = 0; i < sides[0]; i++) {
+            rgb[top * size + left + 4 * i] = 0x101010;
+        }
+        for (int i = 0; i < sides[1]; i++) {
+            rgb[bottom * size + left + 2 + 4 * i] = 0x101010;
+        }
+        for (int i = 0; i < sides[2]; i++) {
+            rgb[(top + 1 + 4 * i) * size + left] = 0x101010;
+            rgb[(top + 3 + 4 * i) * size + right] = 0x101010;
+        }
+        if (rowAboveAtItsLeast) {
+            for (int x = 0; x < size; x++) {
+                boolean white = x >= left && x < left + 585; // 585 of 650: ceil(0.9 * 650)
+                rgb[(top - 1) * size + x] = white ? 0xFFFFFF : 0x101010;
+            }
+        }
+        return rgb;
+    }
+
+    @Test
+    void aPanelWithJustEnoughDarkBorderAndWhiteFrameIsFoundAndWithOnePixelLessIsNot() throws Exception {
+        for (boolean rowAbove : new boolean[] {false, true}) {
+            PanelPlace found = PanelFinder.find(framedAtTheEdge(649, rowAbove), 700, 700, "edge.png");
+            assertEquals(20, found.left());
+            assertEquals(20, found.top());
+        }
+        assertEquals(null, PanelFinder.framedPanel(framedAtTheEdge(648, false), 700, 700));
+        int[] rowShort = framedAtTheEdge(649, true);
+        rowShort[19 * 700 + 20] = 0x101010; // 584 white above the square
+        assertEquals(null, PanelFinder.framedPanel(rowShort, 700, 700));
     }
 
     @Test
