@@ -2,7 +2,9 @@ package simpview.compare;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 
 /**
@@ -91,6 +93,18 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
             };
         }
 
+        /**
+         * How far {@link #source} moves for a pixel one to the right: it is x times this plus what y gives, so a
+         * row's pixels are found by stepping.
+         */
+        int step(int n) {
+            return switch (this) {
+                case NONE, UPSIDE_DOWN -> 1;
+                case MIRRORED, HALF_TURN -> -1;
+                case TRANSPOSED -> n;
+            };
+        }
+
         /** The farthest move tried with this turn: a picture turned over is often also a pixel off. */
         int mostMoved() {
             return this == NONE || this == UPSIDE_DOWN ? MOST_MOVED : 1;
@@ -126,11 +140,27 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
 
         /** Its share of every pixel beyond the tolerance, swap-blind; NaN until a tie needs it. */
         double full = Double.NaN;
+        /** The pixels beyond the tolerance behind {@link #full}, once measured. */
+        long fullWrong;
 
         Way(Turn turn, int right, int down) {
             this.turn = turn;
             this.right = right;
             this.down = down;
+        }
+
+        /** Its turn and move as one number: {@link #full} is theirs alone. */
+        int key() {
+            return key(turn, right, down);
+        }
+
+        static int key(Turn turn, int right, int down) {
+            return (turn.ordinal() * 256 + right + 128) * 256 + down + 128;
+        }
+
+        /** How many pixels it matches: those p of theirs with p - s in the panel. */
+        long matched(int n) {
+            return (long) (n - Math.abs(down)) * (n - Math.abs(right));
         }
 
         /** How far it moves, in pixels across and down together. */
@@ -156,14 +186,21 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         if (wrongAsIs < MIN_WRONG * n * n) {
             return null;
         }
+        // The ways are ranked blind to the swap: on both panels' colours made so once (swapBlind).
+        int[] oursBlind = swapBlind(ours);
+        int[] theirsBlind = swapBlind(theirs);
         // First every way on a coarse grid of pixels, then the few best on a finer one.
         List<Way> ways = new ArrayList<>();
+        // Every way tried, by its turn and move, so that a way met again keeps its share of every pixel.
+        Map<Integer, Way> tried = new HashMap<>();
         for (Turn turn : Turn.values()) {
             int most = turn.mostMoved();
             for (int down = -most; down <= most; down++) {
                 for (int right = -most; right <= most; right++) {
                     Way way = new Way(turn, right, down);
-                    way.rate = sampledRate(ours, theirs, n, way, COARSE_STRIDE, tolerance, Double.POSITIVE_INFINITY);
+                    tried.put(way.key(), way);
+                    way.rate = sampledRate(oursBlind, theirsBlind, n, way, COARSE_STRIDE, tolerance,
+                            Double.POSITIVE_INFINITY);
                     ways.add(way);
                 }
             }
@@ -176,16 +213,16 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
             if (finer.size() >= KEPT && way.rate > finer.get(finer.size() - 1).rate) {
                 break;
             }
-            if (!toldApart(ours, n, way, tolerance)) {
+            if (!toldApart(oursBlind, n, way, tolerance)) {
                 continue; // a turn that lays simpview's panel on itself: see the class's comment
             }
             finer.add(way);
         }
         Way best = null;
         for (Way way : finer) {
-            way.rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance,
+            way.rate = sampledRate(oursBlind, theirsBlind, n, way, FINE_STRIDE, tolerance,
                     best == null ? Double.POSITIVE_INFINITY : best.rate);
-            if (best == null || nearer(ours, theirs, n, way, best, tolerance)) {
+            if (best == null || nearer(oursBlind, theirsBlind, n, way, best, tolerance)) {
                 best = way;
             }
         }
@@ -202,12 +239,16 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                 if (k == 4 || Math.abs(right) > FARTHEST_MOVED || Math.abs(down) > FARTHEST_MOVED) {
                     continue;
                 }
-                Way step = new Way(best.turn, right, down);
-                if (!toldApart(ours, n, step, tolerance)) {
+                Way step = tried.get(Way.key(best.turn, right, down));
+                if (step == null) {
+                    step = new Way(best.turn, right, down);
+                    tried.put(step.key(), step);
+                }
+                if (!toldApart(oursBlind, n, step, tolerance)) {
                     continue;
                 }
-                step.rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, best.rate);
-                if (nearer(ours, theirs, n, step, best, tolerance)) {
+                step.rate = sampledRate(oursBlind, theirsBlind, n, step, FINE_STRIDE, tolerance, best.rate);
+                if (nearer(oursBlind, theirsBlind, n, step, best, tolerance)) {
                     best = step;
                     nearer = true;
                 }
@@ -218,7 +259,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         Way asIs = new Way(Turn.NONE, 0, 0);
         boolean moved = best.turn != Turn.NONE || best.right != 0 || best.down != 0;
-        if (moved && best.rate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
+        if (moved && best.rate * BETTER > sampledRate(oursBlind, theirsBlind, n, asIs, FINE_STRIDE, tolerance, 1)) {
             return null; // the swap aside, no way is near to the share it would need
         }
         // Red and blue swapped or not, by the finer grid; then that one measured on every pixel.
@@ -248,16 +289,43 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         if (way.rate != best.rate) {
             return way.rate < best.rate;
         }
-        double full = fullRate(ours, theirs, n, way, tolerance);
-        double bestFull = fullRate(ours, theirs, n, best, tolerance);
+        double bestFull = fullRate(ours, theirs, n, best, tolerance, null);
+        double full = fullRate(ours, theirs, n, way, tolerance, best);
         return full != bestFull ? full < bestFull : way.moveSize() < best.moveSize();
     }
 
-    /** A way's share of every pixel it matches beyond the tolerance, swap-blind: measured once, then kept. */
-    private static double fullRate(int[] ours, int[] theirs, int n, Way way, int tolerance) {
-        if (Double.isNaN(way.full)) {
-            way.full = sampledRate(ours, theirs, n, way, 1, tolerance, Double.POSITIVE_INFINITY);
+    /**
+     * A way's share of every pixel it matches beyond the tolerance, of two panels made blind to the swap
+     * ({@link #swapBlind}): measured once, then kept. Or, given
+     * a way {@code than} measured so already, infinity (not kept) as soon as the pixels beyond are so many that the
+     * share must be above {@code than}'s: W of its M pixels matched once W * M' exceeds W' * M, whole numbers. Its
+     * share W / M is then above W' / M', and the two doubles they round to keep that order: two fractions of
+     * denominators at most n * n that differ, differ by at least 1 / n^4, far more than either rounds by (a
+     * part in 2^53) for any panel under 7,000 pixels a side. So {@link #nearer} answers as it would have.
+     */
+    private static double fullRate(int[] ours, int[] theirs, int n, Way way, int tolerance, Way than) {
+        if (!Double.isNaN(way.full)) {
+            return way.full;
         }
+        Turn turn = way.turn;
+        int right = way.right;
+        int down = way.down;
+        int fromX = Math.max(0, right);
+        int toX = Math.min(n, n + right);
+        long matched = way.matched(n);
+        int step = turn.step(n);
+        long wrong = 0;
+        for (int y = Math.max(0, down); y < Math.min(n, n + down); y++) {
+            int o = turn.source(fromX - right, y - down, n);
+            for (int t = y * n + fromX; t < y * n + toX; t++, o += step) {
+                wrong += Rasters.distance(ours[o], theirs[t]) > tolerance ? 1 : 0;
+            }
+            if (than != null && wrong * than.matched(n) > than.fullWrong * matched) {
+                return Double.POSITIVE_INFINITY;
+            }
+        }
+        way.fullWrong = wrong;
+        way.full = (double) wrong / matched;
         return way.full;
     }
 
@@ -308,8 +376,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
     }
 
     /**
-     * The share of sampled pixels beyond the tolerance under a way, the swap left out of account (the
-     * distance of red and blue as a pair, whichever way round); or, as soon as it must be above
+     * The share of sampled pixels beyond the tolerance under a way, of two panels made blind to the swap
+     * ({@link #swapBlind}: red and blue compared as a pair, whichever way round); or, as soon as it must be above
      * {@code bound}, a value above it (never one equal to it, which would tie).
      */
     private static double sampledRate(int[] ours, int[] theirs, int n, Way way, int stride, int tolerance,
@@ -323,11 +391,12 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         int toX = Math.min(n, n + right);
         long samples = (long) ((toY - fromY + stride - 1) / stride) * ((toX - fromX + stride - 1) / stride);
         double most = bound * samples; // wrong pixels past this make a rate above the bound
+        int step = turn.step(n) * stride;
         long wrong = 0;
         for (int y = fromY; y < toY; y += stride) {
-            for (int x = fromX; x < toX; x += stride) {
-                wrong += swapBlindDistance(ours[turn.source(x - right, y - down, n)], theirs[y * n + x]) > tolerance
-                        ? 1 : 0;
+            int o = turn.source(fromX - right, y - down, n);
+            for (int t = y * n + fromX; t < y * n + toX; t += stride, o += step) {
+                wrong += Rasters.distance(ours[o], theirs[t]) > tolerance ? 1 : 0;
             }
             if (wrong > most) {
                 return Math.nextUp(bound);
@@ -348,16 +417,19 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         return wrong;
     }
 
-    /** The colours' distance with red and blue compared as a pair, the smaller with the smaller. */
-    private static int swapBlindDistance(int a, int b) {
-        int ar = a >> 16 & 0xFF;
-        int ab = a & 0xFF;
-        int br = b >> 16 & 0xFF;
-        int bb = b & 0xFF;
-        int g = Math.abs((a >> 8 & 0xFF) - (b >> 8 & 0xFF));
-        int low = Math.abs(Math.min(ar, ab) - Math.min(br, bb));
-        int high = Math.abs(Math.max(ar, ab) - Math.max(br, bb));
-        return Math.max(g, Math.max(low, high));
+    /**
+     * The colours with red and blue each made the smaller and the larger of the two (green between them): the
+     * distance of two colours made so ({@link Rasters#distance}) is theirs with red and blue compared as a pair,
+     * the smaller with the smaller, blind to the swap.
+     */
+    private static int[] swapBlind(int[] rgb) {
+        int[] blind = new int[rgb.length];
+        for (int i = 0; i < rgb.length; i++) {
+            int red = rgb[i] >> 16 & 0xFF;
+            int blue = rgb[i] & 0xFF;
+            blind[i] = Math.min(red, blue) << 16 | rgb[i] & 0xFF00 | Math.max(red, blue);
+        }
+        return blind;
     }
 
     private static int redBlueSwapped(int rgb) {

@@ -146,4 +146,54 @@ class FailingEarlyTest {
         assertTrue(PanelGridComparison.holds(fourPanelsBarelyDark(false), panels));
         assertFalse(PanelGridComparison.holds(fourPanelsBarelyDark(true), panels));
     }
+
+    /**
+     * A 40x40 panel of cells of a few colours (rows of cells, or a grid), and it turned and moved: cells of one
+     * colour match under several ways, so ways tie on the sampled pixels and on every pixel too, and only the
+     * smaller move decides. A way's share of every pixel is cut short only when it must be above the best's: cut
+     * short at equal shares, the larger move would be named.
+     */
+    private static int[][] cellsTurned(long seed, int n) {
+        Random random = new Random(seed);
+        int cell = 2 + random.nextInt(8);
+        int colours = 2 + random.nextInt(3);
+        int[] palette = new int[colours];
+        for (int i = 0; i < colours; i++) {
+            palette[i] = random.nextInt(0x1000000);
+        }
+        int[] ours = new int[n * n];
+        boolean rows = random.nextBoolean();
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int c = rows ? y / cell : y / cell * 7 + x / cell;
+                ours[y * n + x] = palette[Math.floorMod(c * 31 + (c >> 2), colours)];
+            }
+        }
+        SystematicError.Turn turn = SystematicError.Turn.values()[random.nextInt(5)];
+        int right = random.nextInt(9) - 4;
+        int down = random.nextInt(9) - 4;
+        int[] theirs = new int[n * n];
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++) {
+                int sx = x - right;
+                int sy = y - down;
+                theirs[y * n + x] = sx >= 0 && sy >= 0 && sx < n && sy < n ? ours[turn.source(sx, sy, n)] : 0;
+            }
+        }
+        return new int[][] {ours, theirs};
+    }
+
+    @Test
+    void waysTiedOnEveryPixelAreToldApartByTheSmallerMove() {
+        // seed, then the move named: as simpview named it before ways were cut short
+        int[][] cases = {{3, -3, 0}, {63, 3, -1}, {181, 3, 0}};
+        for (int[] c : cases) {
+            int[][] panels = cellsTurned(c[0], 40);
+            SystematicError found = SystematicError.find(panels[0], panels[1], 40, 8);
+            assertNotNull(found, "seed " + c[0]);
+            assertEquals(SystematicError.Turn.TRANSPOSED, found.turn(), "seed " + c[0]);
+            assertEquals(c[1], found.right(), "seed " + c[0]);
+            assertEquals(c[2], found.down(), "seed " + c[0]);
+        }
+    }
 }
