@@ -186,9 +186,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         if (wrongAsIs < MIN_WRONG * n * n) {
             return null;
         }
-        // The ways are ranked blind to the swap: on both panels' colours made so once (swapBlind).
-        int[] oursBlind = swapBlind(ours);
-        int[] theirsBlind = swapBlind(theirs);
+        // Both panels made blind to the swap (swapBlind) once a tie needs every pixel measured; until then, none.
+        int[][] blind = new int[2][];
         // First every way on a coarse grid of pixels, then the few best on a finer one.
         List<Way> ways = new ArrayList<>();
         // Every way tried, by its turn and move, so that a way met again keeps its share of every pixel.
@@ -199,7 +198,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                 for (int right = -most; right <= most; right++) {
                     Way way = new Way(turn, right, down);
                     tried.put(way.key(), way);
-                    way.rate = sampledRate(oursBlind, theirsBlind, n, way, COARSE_STRIDE, tolerance,
+                    way.rate = sampledRate(ours, theirs, n, way, COARSE_STRIDE, tolerance,
                             Double.POSITIVE_INFINITY);
                     ways.add(way);
                 }
@@ -213,16 +212,16 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
             if (finer.size() >= KEPT && way.rate > finer.get(finer.size() - 1).rate) {
                 break;
             }
-            if (!toldApart(oursBlind, n, way, tolerance)) {
+            if (!toldApart(ours, n, way, tolerance)) {
                 continue; // a turn that lays simpview's panel on itself: see the class's comment
             }
             finer.add(way);
         }
         Way best = null;
         for (Way way : finer) {
-            way.rate = sampledRate(oursBlind, theirsBlind, n, way, FINE_STRIDE, tolerance,
+            way.rate = sampledRate(ours, theirs, n, way, FINE_STRIDE, tolerance,
                     best == null ? Double.POSITIVE_INFINITY : best.rate);
-            if (best == null || nearer(oursBlind, theirsBlind, n, way, best, tolerance)) {
+            if (best == null || nearer(ours, theirs, blind, n, way, best, tolerance)) {
                 best = way;
             }
         }
@@ -244,11 +243,11 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
                     step = new Way(best.turn, right, down);
                     tried.put(step.key(), step);
                 }
-                if (!toldApart(oursBlind, n, step, tolerance)) {
+                if (!toldApart(ours, n, step, tolerance)) {
                     continue;
                 }
-                step.rate = sampledRate(oursBlind, theirsBlind, n, step, FINE_STRIDE, tolerance, best.rate);
-                if (nearer(oursBlind, theirsBlind, n, step, best, tolerance)) {
+                step.rate = sampledRate(ours, theirs, n, step, FINE_STRIDE, tolerance, best.rate);
+                if (nearer(ours, theirs, blind, n, step, best, tolerance)) {
                     best = step;
                     nearer = true;
                 }
@@ -259,7 +258,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         }
         Way asIs = new Way(Turn.NONE, 0, 0);
         boolean moved = best.turn != Turn.NONE || best.right != 0 || best.down != 0;
-        if (moved && best.rate * BETTER > sampledRate(oursBlind, theirsBlind, n, asIs, FINE_STRIDE, tolerance, 1)) {
+        if (moved && best.rate * BETTER > sampledRate(ours, theirs, n, asIs, FINE_STRIDE, tolerance, 1)) {
             return null; // the swap aside, no way is near to the share it would need
         }
         // Red and blue swapped or not, by the finer grid; then that one measured on every pixel.
@@ -285,12 +284,16 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
      * the tolerance; tied there, fewer of every pixel (the ties measured so only); tied there too, the smaller
      * move. The order is strict, so following the move out always ends.
      */
-    private static boolean nearer(int[] ours, int[] theirs, int n, Way way, Way best, int tolerance) {
+    private static boolean nearer(int[] ours, int[] theirs, int[][] blind, int n, Way way, Way best, int tolerance) {
         if (way.rate != best.rate) {
             return way.rate < best.rate;
         }
-        double bestFull = fullRate(ours, theirs, n, best, tolerance, null);
-        double full = fullRate(ours, theirs, n, way, tolerance, best);
+        if (blind[0] == null) {
+            blind[0] = swapBlind(ours);
+            blind[1] = swapBlind(theirs);
+        }
+        double bestFull = fullRate(blind[0], blind[1], n, best, tolerance, null);
+        double full = fullRate(blind[0], blind[1], n, way, tolerance, best);
         return full != bestFull ? full < bestFull : way.moveSize() < best.moveSize();
     }
 
@@ -376,8 +379,8 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
     }
 
     /**
-     * The share of sampled pixels beyond the tolerance under a way, of two panels made blind to the swap
-     * ({@link #swapBlind}: red and blue compared as a pair, whichever way round); or, as soon as it must be above
+     * The share of sampled pixels beyond the tolerance under a way, the swap left out of account (the
+     * distance of red and blue as a pair, whichever way round); or, as soon as it must be above
      * {@code bound}, a value above it (never one equal to it, which would tie).
      */
     private static double sampledRate(int[] ours, int[] theirs, int n, Way way, int stride, int tolerance,
@@ -396,7 +399,7 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         for (int y = fromY; y < toY; y += stride) {
             int o = turn.source(fromX - right, y - down, n);
             for (int t = y * n + fromX; t < y * n + toX; t += stride, o += step) {
-                wrong += Rasters.distance(ours[o], theirs[t]) > tolerance ? 1 : 0;
+                wrong += swapBlindDistance(ours[o], theirs[t]) > tolerance ? 1 : 0;
             }
             if (wrong > most) {
                 return Math.nextUp(bound);
@@ -417,10 +420,23 @@ public record SystematicError(Turn turn, int right, int down, boolean redBlueSwa
         return wrong;
     }
 
+    /** The colours' distance with red and blue compared as a pair, the smaller with the smaller. */
+    private static int swapBlindDistance(int a, int b) {
+        int ar = a >> 16 & 0xFF;
+        int ab = a & 0xFF;
+        int br = b >> 16 & 0xFF;
+        int bb = b & 0xFF;
+        int g = Math.abs((a >> 8 & 0xFF) - (b >> 8 & 0xFF));
+        int low = Math.abs(Math.min(ar, ab) - Math.min(br, bb));
+        int high = Math.abs(Math.max(ar, ab) - Math.max(br, bb));
+        return Math.max(g, Math.max(low, high));
+    }
+
     /**
      * The colours with red and blue each made the smaller and the larger of the two (green between them): the
      * distance of two colours made so ({@link Rasters#distance}) is theirs with red and blue compared as a pair,
-     * the smaller with the smaller, blind to the swap.
+     * the smaller with the smaller, blind to the swap ({@link #swapBlindDistance}): for the shares of every pixel,
+     * where it saves more than it costs.
      */
     private static int[] swapBlind(int[] rgb) {
         int[] blind = new int[rgb.length];
