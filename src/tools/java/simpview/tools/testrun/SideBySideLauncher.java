@@ -29,8 +29,8 @@ import org.junit.platform.reporting.legacy.xml.LegacyXmlReportGeneratingListener
  *
  * <p>Why not the console launcher: the JUnit Platform runs one engine after another, and jqwik runs its
  * properties one at a time. On a machine of two cores the properties (about 29 s) then ran alone at the end
- * with one core idle, and Jupiter's window tests, which run alone for the X server's sake, left the other core
- * idle for about 38 s more. Side by side, each fills the other's idle core. The engines share nothing but the
+ * with one core idle. Side by side, they fill whatever core Jupiter leaves idle (its window tests run alone, for
+ * the X server's sake). The engines share nothing but the
  * JVM: each has its own launcher, discovery request and listeners, and its properties and tests run as they would
  * alone (Jupiter two classes at a time, as {@code junit-platform.properties} says; jqwik one property at a time).
  * The threads are {@code test-engine-ID}.
