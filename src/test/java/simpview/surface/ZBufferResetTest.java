@@ -64,27 +64,7 @@ class ZBufferResetTest {
         int w = 37;
         int h = 23;
         ZBuffer z = new ZBuffer(w, h);
-        ZBufferDrawable tested = new ZBufferDrawable(z, new Drawable() {
-            @Override
-            public int width() {
-                return w;
-            }
-
-            @Override
-            public int height() {
-                return h;
-            }
-
-            @Override
-            public void setPixel(int x, int y, double depth, int argb) {
-                // kept nowhere: the depths are what is tested
-            }
-
-            @Override
-            public int getPixel(int x, int y) {
-                return 0;
-            }
-        });
+        ZBufferDrawable tested = new ZBufferDrawable(z, new DiscardingDrawable(w, h));
         double[] plain = new double[w * h];
         Arrays.fill(plain, -200);
         Random random = new Random(20261206);
