@@ -70,7 +70,7 @@ public final class GradescopeResults {
             tests.add(test);
         }
         JsonObject results = new JsonObject();
-        results.addProperty("score", Math.round(total * 100) / 100.0);
+        results.addProperty("score", hundredths(total));
         results.addProperty("execution_time", Math.max(1, (int) Math.ceil(seconds)));
         results.addProperty("output", BatchTable.summary(rows, missing.size())
                 + (skipped.length() == 0 ? "" : "\nNot matched to any page:" + skipped));
@@ -101,6 +101,11 @@ public final class GradescopeResults {
         return String.format(Locale.ROOT, "%npartial credit: %s of %s: the share counts from %s up to %s%s",
                 points(row.score()), points(rule.points()) + (rule.points() == 1 ? " point" : " points"), from,
                 Percent.of(rule.minShare() / 100), pixels);
+    }
+
+    /** A sum of scores rounded to hundredths, as the top-level score is (and each submission's total). */
+    static double hundredths(double value) {
+        return Math.round(value * 100) / 100.0;
     }
 
     /** Points as a score is read: "2", "0.26" (the web report writes them so too). */

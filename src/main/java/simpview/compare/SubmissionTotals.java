@@ -84,7 +84,8 @@ public final class SubmissionTotals {
         List<Total> totals = new ArrayList<>();
         points.forEach((key, p) -> {
             int[] c = counts.get(key);
-            totals.add(new Total(key, hundredths(p[0]), hundredths(p[1]), c[0], c[1], c[2], c[3]));
+            totals.add(new Total(key, GradescopeResults.hundredths(p[0]), GradescopeResults.hundredths(p[1]), c[0], c[1],
+                    c[2], c[3]));
         });
         totals.sort((a, b) -> SceneList.NATURAL_ORDER.compare(a.submission(), b.submission()));
         return totals;
@@ -93,11 +94,6 @@ public final class SubmissionTotals {
     /** A submission's name as shown: the whole folder ("") is {@link JUnitResults#TOP}. */
     private static String shown(String key) {
         return key.isEmpty() ? JUnitResults.TOP : key;
-    }
-
-    /** Rounded to hundredths as results.json's top-level score is. */
-    private static double hundredths(double value) {
-        return Math.round(value * 100) / 100.0;
     }
 
     /**
