@@ -34,10 +34,12 @@ import simpview.surface.DrawingThreads;
 /**
  * One frame of a turning view, as the window's render thread makes it while
  * a right-drag turns a scene: clear, draw the whole scene turned (yaw 30°,
- * pitch 15°), then copy out the image and the depths for the EDT. The
- * window draws a drag's frames without the inspector's record, and the frame
- * after the drag with it: @Param record=true adds the provenance decorator, a
- * fresh {@link PrimitiveLog} and the copy of the owners. @Param scene:
+ * pitch 15°), then copy out the image for the EDT. The window draws a drag's
+ * frames without the inspector's record, and the frame after the drag with
+ * it: @Param record=true adds the provenance decorator, a fresh
+ * {@link PrimitiveLog} and the copies of the depths and the owners. A drag's
+ * frames keep their depths only while the depth view is on: @Param
+ * depthView=true copies them out too (DrawSettings.keepsDepths). @Param scene:
  * "page7" (depth-cued, turned about the view volume's centre) or a course
  * page of the third or fourth assignment, as "a3/pageI" or "a4/page-d" (lit: the camera
  * moves about the centre of what the unturned view showed, found in the
@@ -73,6 +75,9 @@ public class OrbitFrame {
 
     @Param({"false"})
     public boolean record;
+
+    @Param({"false"})
+    public boolean depthView;
 
     private static final double YAW = 30;
     private static final double PITCH = 15;
@@ -171,6 +176,7 @@ public class OrbitFrame {
         if (!copy) {
             return null;
         }
-        return new Frame(canvas.snapshot(), canvas.zbuffer().copyDepths(), record ? provenance.copyOwners() : null);
+        return new Frame(canvas.snapshot(), record || depthView ? canvas.zbuffer().copyDepths() : null,
+                record ? provenance.copyOwners() : null);
     }
 }

@@ -1013,6 +1013,11 @@ public final class SimpviewWindow {
             return;
         }
         depthView = !depthView;
+        settings = settings.withDepthView(depthView);
+        if (depthView && !settings.record() && (pending != null ? !pending.settings().keepsDepths()
+                : shown != null && shown.facts().depths() == null)) {
+            reload(); // a frame of a turning drag, drawn or being drawn without its depths: drawn again with them
+        }
         showPicture();
         inspect();
     }

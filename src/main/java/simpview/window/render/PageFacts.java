@@ -6,7 +6,8 @@ import java.util.List;
 /**
  * What the instruments can read about a finished picture besides its image.
  *
- * @param depths the panel's z-buffer when the picture was done (row y at y * 650, panel y up), or null
+ * @param depths the panel's z-buffer when the picture was done (row y at y * 650, panel y up), or null: not
+ *     kept for a frame of a drag that turns the view, unless the depth view is on ({@link DrawSettings#keepsDepths})
  * @param depthStart what the z-buffer started at: the far plane, -200, or a lit scene's -infinity
  * @param owners which primitive drew each panel pixel, laid out like depths, or null when not recorded
  * @param primitives the primitives read, in drawing order (owners index into them)

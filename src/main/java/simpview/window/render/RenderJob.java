@@ -206,7 +206,8 @@ public final class RenderJob implements SceneMonitor {
             return null;
         }
         boolean keepsOwners = !(view instanceof View.OfPage page) || Assignment2.page(page.number()).keepsOwners();
-        PageFacts facts = new PageFacts(canvas.zbuffer().copyDepths(), canvas.zbuffer().farthest(),
+        PageFacts facts = new PageFacts(settings.keepsDepths() ? canvas.zbuffer().copyDepths() : null,
+                canvas.zbuffer().farthest(),
                 canvas.provenance() == null || !keepsOwners ? null : canvas.provenance().copyOwners(),
                 primitives(), filesRead(), drewSomething, shownCentre);
         canvas.recordProvenance(null);

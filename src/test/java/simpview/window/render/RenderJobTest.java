@@ -91,5 +91,18 @@ public class RenderJobTest {
         RenderedView plain = draw(new View.OfScene(scene), DrawSettings.PLAIN);
         assertEquals(null, plain.facts().owners());
         assertEquals(0, plain.facts().primitives().size());
+        assertEquals(null, plain.facts().depths(), "nor its depths copied out");
+    }
+
+    @Test
+    void aFrameNotTracedKeepsItsDepthsOnlyForTheDepthView() throws Exception {
+        Path scene = Files.writeString(dir.resolve("one.simp"), "line (-50, -50, -10) (50, 50, -10)\n");
+        DrawSettings turning = DrawSettings.WINDOW.withRecord(false);
+        assertEquals(null, draw(new View.OfScene(scene), turning).facts().depths(), "a turning drag's frame");
+        double[] shown = draw(new View.OfScene(scene), turning.withDepthView(true)).facts().depths();
+        double[] traced = draw(new View.OfScene(scene), DrawSettings.WINDOW).facts().depths();
+        assertNotNull(shown);
+        assertEquals(-10, shown[325 * PageCanvas.PANEL + 325], "the line's depth at the panel's centre");
+        assertArrayEquals(traced, shown, "the same depths as the traced picture's");
     }
 }
