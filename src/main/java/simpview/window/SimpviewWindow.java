@@ -90,7 +90,6 @@ public final class SimpviewWindow {
     private final SceneWatcher watcher = new SceneWatcher(this::reload);
     private DrawSettings settings = DrawSettings.WINDOW;
     private final Orbit orbit = new Orbit();
-    private boolean depthView;
     /** The pointer's last place over the page view (x = -1: off it): the hovered pixel follows a zoom under it. */
     private int pointerX = -1;
     private int pointerY = -1;
@@ -364,7 +363,7 @@ public final class SimpviewWindow {
      */
     boolean isOn(WindowAction action) {
         return switch (action) {
-            case DEPTH_VIEW -> depthView;
+            case DEPTH_VIEW -> settings.depthView();
             case OWN_COLOURS -> settings.ownColours();
             case A1_RULE -> options.a1Rule() == A1Rule.COURSE;
             case BACK_FACES -> backFacesShown;
@@ -483,7 +482,7 @@ public final class SimpviewWindow {
         int x = pinnedX >= 0 ? pinnedX : hoverX;
         int y = pinnedX >= 0 ? pinnedY : hoverY;
         String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
-        String zoom = pageView.zoomPan().describe() + (depthView ? " · depth view" : "")
+        String zoom = pageView.zoomPan().describe() + (settings.depthView() ? " · depth view" : "")
                 + (settings.ownColours() ? " · own colours" : "");
         String theirs = x < 0 || y < 0 ? "" : comparison.theirsAt(x, y)
                 .map(rgb -> " · theirs " + Inspector.rgb(rgb)).orElse("");
@@ -1007,14 +1006,13 @@ public final class SimpviewWindow {
     }
 
     private void toggleDepthView() {
-        if (!depthView && shown != null && shown.view() instanceof View.OfAssignment1Page) {
+        if (!settings.depthView() && shown != null && shown.view() instanceof View.OfAssignment1Page) {
             status.say("The first assignment's pages have no depths to show: their panels are drawn without a "
                     + "z-buffer (SPEC Part 3).");
             return;
         }
-        depthView = !depthView;
-        settings = settings.withDepthView(depthView);
-        if (depthView && !settings.record() && (pending != null ? !pending.settings().keepsDepths()
+        settings = settings.withDepthView(!settings.depthView());
+        if (settings.depthView() && !settings.record() && (pending != null ? !pending.settings().keepsDepths()
                 : shown != null && shown.facts().depths() == null)) {
             reload(); // a frame of a turning drag, drawn or being drawn without its depths: drawn again with them
         }
@@ -1178,7 +1176,7 @@ public final class SimpviewWindow {
         backFacesShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
-            boolean depths = depthView && facts.depths() != null && !(shown.view() instanceof View.OfAssignment1Page);
+            boolean depths = settings.depthView() && facts.depths() != null && !(shown.view() instanceof View.OfAssignment1Page);
             pageView.show(depths ? DepthPicture.of(facts.depths(), facts.depthStart()) : shown.image(), shown.error(),
                     facts.drewSomething());
         }
