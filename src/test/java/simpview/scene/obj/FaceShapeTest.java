@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
+import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 
@@ -72,7 +73,7 @@ class FaceShapeTest {
             }
             boolean expected = exactlyInLine(p);
             inLine += expected ? 1 : 0;
-            assertEquals(expected, FaceShape.noArea(p, TRIANGLE, 3), () -> java.util.Arrays.toString(p));
+            assertEquals(expected, FaceShape.noArea(p, TRIANGLE, 3), () -> Arrays.toString(p));
         }
         assertTrue(inLine > 10_000, "points on one line tried: " + inLine);
     }
