@@ -1176,7 +1176,8 @@ public final class SimpviewWindow {
         backFacesShown = false;
         if (shown != null) {
             PageFacts facts = shown.facts();
-            boolean depths = settings.depthView() && facts.depths() != null && !(shown.view() instanceof View.OfAssignment1Page);
+            boolean depths = settings.depthView() && facts.depths() != null
+                    && !(shown.view() instanceof View.OfAssignment1Page);
             pageView.show(depths ? DepthPicture.of(facts.depths(), facts.depthStart()) : shown.image(), shown.error(),
                     facts.drewSomething());
         }

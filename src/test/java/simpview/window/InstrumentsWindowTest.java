@@ -541,14 +541,17 @@ public class InstrumentsWindowTest extends WindowTestCase {
                     "the drag's frame drawn again with its depths");
             RenderedView depths = driver.onEdt(() -> window().shown());
             assertNull(depths.facts().owners(), "still a frame of the drag");
-            assertEquals(0, driver.screenDiffersFrom(DepthPicture.of(depths.facts().depths(), Double.NEGATIVE_INFINITY)));
+            assertEquals(0, driver.screenDiffersFrom(DepthPicture.of(depths.facts().depths(),
+                    Double.NEGATIVE_INFINITY)));
             driver.robot().mouseMove(centre.x + 60, centre.y + 10);
             driver.awaitEdt(() -> !window().busy() && window().shown() != depths, "a later frame of the drag");
-            assertNotNull(driver.onEdt(() -> window().shown().facts().depths()), "with the depth view on, a drag's frames keep them");
+            assertNotNull(driver.onEdt(() -> window().shown().facts().depths()),
+                    "with the depth view on, a drag's frames keep them");
         } finally {
             driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
         }
-        driver.awaitEdt(() -> !window().busy() && window().shown().facts().owners() != null, "traced again once the drag ended");
+        driver.awaitEdt(() -> !window().busy() && window().shown().facts().owners() != null,
+                "traced again once the drag ended");
         driver.press(KeyEvent.VK_D);
     }
 

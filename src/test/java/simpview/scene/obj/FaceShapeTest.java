@@ -36,10 +36,12 @@ class FaceShapeTest {
         return switch (kind) {
             case 0 -> random.nextInt(2001) - 1000; // small integers
             case 1 -> (double) (random.nextLong() >> 12); // integers up to 2^51
-            case 2 -> Math.scalb((double) (random.nextInt(1 << 20) - (1 << 19)), -random.nextInt(40)); // binary fractions
+            // binary fractions
+            case 2 -> Math.scalb((double) (random.nextInt(1 << 20) - (1 << 19)), -random.nextInt(40));
             case 3 -> (random.nextInt(20001) - 10000) / 1000.0; // decimals, as most .obj files hold
             case 4 -> Math.scalb(random.nextDouble() - 0.5, random.nextInt(2000) - 1000); // any size
-            default -> Math.scalb((double) (random.nextInt(1 << 10) - (1 << 9)), 900 - random.nextInt(1900)); // huge, tiny
+            // huge and tiny
+            default -> Math.scalb((double) (random.nextInt(1 << 10) - (1 << 9)), 900 - random.nextInt(1900));
         };
     }
 
