@@ -1448,7 +1448,12 @@ public final class SimpviewWindow {
             status.say(orbit.describe());
         }
         showStep(result);
-        refreshPanel();
+        if (job.settings().record()) {
+            // A turning drag's frames (untraced) leave the panel as it is: its history is the unturned view's,
+            // which the turn does not change, and a replay a frame (25 ms for A3 pageI on this project's 2-core
+            // machine) would take a core from the drawing. The traced frame after the drag replays it.
+            refreshPanel();
+        }
         comparison.viewShown(result); // compare (issue 15)
         if (turnWaiting) {
             reload();

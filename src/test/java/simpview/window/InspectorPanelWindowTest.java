@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Point;
+import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,9 +15,51 @@ import javax.swing.JViewport;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import simpview.surface.PageCanvas;
+import simpview.testing.Images;
+import simpview.window.render.RenderedView;
 
 /** The inspector panel under Xvfb: I shows the pinned pixel's history, wrapped, never cut; J steps to its primitive. */
 public class InspectorPanelWindowTest extends WindowTestCase {
+
+    @Test
+    void aTurningDragLeavesThePanelsReplayToTheFrameAfterIt() throws Exception {
+        Path scene = dir.resolve("lit.simp");
+        Files.writeString(scene, String.join("\n", "ambient 0.3 0.3 0.3", "camera -1 -1 1 1 -1 -100",
+                "light 1 1 1 1 0", "surface 0.9 0.5 0.1",
+                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
+                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)", ""));
+        SimpviewWindow window = openWindowOn(scene);
+        RenderedView unturned = driver.onEdt(() -> window.shown());
+        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+        driver.robot().mouseMove(centre.x, centre.y);
+        driver.awaitEdt(() -> window.status().inspectorText().contains("drawn by primitive"), "the inspector on the centre");
+        driver.press(KeyEvent.VK_P);
+        driver.press(KeyEvent.VK_I);
+        driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
+                && window.inspectorPanel().text().contains("history:"), "the panel's report");
+        int before = driver.onEdt(() -> window.inspectorPanel().requests());
+
+        // Frames of the drag: each a new picture, none replayed for the panel (its history is the unturned view's).
+        driver.robot().mousePress(InputEvent.BUTTON3_DOWN_MASK);
+        try {
+            for (int k = 1; k <= 4; k++) {
+                driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
+            }
+            driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() == null
+                    && Images.differingPixels(unturned.image(), window.shown().image()) > 100, "a frame of the drag");
+            RenderedView first = driver.onEdt(() -> window.shown());
+            driver.robot().mouseMove(centre.x + 70, centre.y + 14);
+            driver.awaitEdt(() -> !window.busy() && window.shown() != first, "another frame of the drag");
+            assertEquals(before, driver.onEdt(() -> window.inspectorPanel().requests()), "no replay during the drag");
+        } finally {
+            driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
+        }
+        // The frame after the drag, traced, replays the pinned pixel's history once more, saying which view it is of.
+        driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() != null
+                && window.inspectorPanel().answered() && window.inspectorPanel().text().contains("unturned view"),
+                "the panel replayed after the drag");
+        assertTrue(driver.onEdt(() -> window.inspectorPanel().requests()) > before);
+    }
 
     @Test
     void thePinnedPixelsHistoryAndSteppingToItsPrimitive() throws Exception {

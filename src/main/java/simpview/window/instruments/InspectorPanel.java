@@ -352,6 +352,11 @@ public final class InspectorPanel {
         return text.getText();
     }
 
+    /** How many times the panel has been asked to show something: a replay, or words of its own. */
+    public int requests() {
+        return request;
+    }
+
     /** True when the last request has its answer on screen. */
     public boolean answered() {
         return answered;
