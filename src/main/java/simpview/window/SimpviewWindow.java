@@ -1449,12 +1449,14 @@ public final class SimpviewWindow {
         }
         showStep(result);
         if (job.settings().record()) {
-            // A turning drag's frames (untraced) leave the panel as it is: its history is the unturned view's,
-            // which the turn does not change, and a replay a frame (25 ms for A3 pageI on this project's 2-core
-            // machine) would take a core from the drawing. The traced frame after the drag replays it.
+            // A turning drag's frames (untraced) leave the panel and the comparison as they are: the panel's
+            // history is the unturned view's, which the turn does not change, and a replay a frame (25 ms for A3
+            // pageI on this project's 2-core machine) would take a core from the drawing; a comparison (with
+            // its search for a mistake of the whole panel, tens of ms) would hold the event thread, and with it
+            // the next frame. The traced frame after the drag does both.
             refreshPanel();
+            comparison.viewShown(result); // compare (issue 15)
         }
-        comparison.viewShown(result); // compare (issue 15)
         if (turnWaiting) {
             reload();
         } else if (job == ownerJob) {
