@@ -10,10 +10,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 import javax.imageio.ImageIO;
@@ -27,8 +25,6 @@ import simpview.compare.WorstPixel;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import java.awt.Point;
-import simpview.surface.PageCanvas;
-import simpview.testing.Images;
 
 /** Compare mode in the real window under Xvfb: drop a picture, flip with B, heat map with H, stop with Backspace. */
 public class ComparisonWindowTest extends WindowTestCase {
@@ -126,32 +122,16 @@ public class ComparisonWindowTest extends WindowTestCase {
      */
     @Test
     void aTurningDragLeavesTheComparisonToTheFrameAfterIt() throws Exception {
-        Path scene = Files.writeString(dir.resolve("lit.simp"), String.join("\n", "ambient 0.3 0.3 0.3",
-                "camera -1 -1 1 1 -1 -100", "light 1 1 1 1 0", "surface 0.9 0.5 0.1",
-                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
-                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)", ""));
-        SimpviewWindow window = openWindowOn(scene);
+        SimpviewWindow window = openWindowOn(litSquare());
         RenderedView unturned = driver.onEdt(() -> window.shown());
         drop(theirPicture(unturned.image()));
         driver.awaitEdt(() -> window.comparison().comparison() != null, "the dropped picture compared");
         Comparison before = driver.onEdt(() -> window.comparison().comparison());
 
-        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
-        driver.robot().mouseMove(centre.x, centre.y);
-        driver.robot().mousePress(InputEvent.BUTTON3_DOWN_MASK);
-        try {
-            for (int k = 1; k <= 4; k++) {
-                driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
-            }
-            driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() == null
-                    && Images.differingPixels(unturned.image(), window.shown().image()) > 100, "a frame of the drag");
-            RenderedView first = driver.onEdt(() -> window.shown());
-            driver.robot().mouseMove(centre.x + 70, centre.y + 14);
-            driver.awaitEdt(() -> !window.busy() && window.shown() != first, "another frame of the drag");
+        dragTurning(unturned, first -> {
+            nextDragFrame(first);
             assertSame(before, driver.onEdt(() -> window.comparison().comparison()), "not compared during the drag");
-        } finally {
-            driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
-        }
+        });
         driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() != null
                 && window.comparison().comparison() != before, "the frame after the drag compared");
     }

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Point;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -15,21 +14,13 @@ import javax.swing.JViewport;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 import simpview.surface.PageCanvas;
-import simpview.testing.Images;
 import simpview.window.render.RenderedView;
 
 /** The inspector panel under Xvfb: I shows the pinned pixel's history, wrapped, never cut; J steps to its primitive. */
 public class InspectorPanelWindowTest extends WindowTestCase {
 
-    @Test
-    void aTurningDragLeavesThePanelsReplayToTheFrameAfterIt() throws Exception {
-        Path scene = dir.resolve("lit.simp");
-        Files.writeString(scene, String.join("\n", "ambient 0.3 0.3 0.3", "camera -1 -1 1 1 -1 -100",
-                "light 1 1 1 1 0", "surface 0.9 0.5 0.1",
-                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
-                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)", ""));
-        SimpviewWindow window = openWindowOn(scene);
-        RenderedView unturned = driver.onEdt(() -> window.shown());
+    /** Points at the panel's centre, pins it (P) and opens the inspector panel (I), and waits for its report. */
+    private void pinTheCentreAndOpenThePanel(SimpviewWindow window) throws Exception {
         Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
         driver.robot().mouseMove(centre.x, centre.y);
         driver.awaitEdt(() -> window.status().inspectorText().contains("drawn by primitive"), "the inspector on the centre");
@@ -37,23 +28,20 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
                 && window.inspectorPanel().text().contains("history:"), "the panel's report");
+    }
+
+    @Test
+    void aTurningDragLeavesThePanelsReplayToTheFrameAfterIt() throws Exception {
+        SimpviewWindow window = openWindowOn(litSquare());
+        RenderedView unturned = driver.onEdt(() -> window.shown());
+        pinTheCentreAndOpenThePanel(window);
         int before = driver.onEdt(() -> window.inspectorPanel().requests());
 
         // Frames of the drag: each a new picture, none replayed for the panel (its history is the unturned view's).
-        driver.robot().mousePress(InputEvent.BUTTON3_DOWN_MASK);
-        try {
-            for (int k = 1; k <= 4; k++) {
-                driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
-            }
-            driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() == null
-                    && Images.differingPixels(unturned.image(), window.shown().image()) > 100, "a frame of the drag");
-            RenderedView first = driver.onEdt(() -> window.shown());
-            driver.robot().mouseMove(centre.x + 70, centre.y + 14);
-            driver.awaitEdt(() -> !window.busy() && window.shown() != first, "another frame of the drag");
+        dragTurning(unturned, first -> {
+            nextDragFrame(first);
             assertEquals(before, driver.onEdt(() -> window.inspectorPanel().requests()), "no replay during the drag");
-        } finally {
-            driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
-        }
+        });
         // The frame after the drag, traced, replays the pinned pixel's history once more, saying which view it is of.
         driver.awaitEdt(() -> !window.busy() && window.shown().facts().owners() != null
                 && window.inspectorPanel().answered() && window.inspectorPanel().text().contains("unturned view"),
@@ -71,13 +59,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
                 + "polygon (60, -90, -300) (90, -90, -300) (90, -60, -300)\n");
         SimpviewWindow window = openWindowOn(scene);
 
-        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
-        driver.robot().mouseMove(centre.x, centre.y);
-        driver.awaitEdt(() -> window.status().inspectorText().contains("drawn by primitive"), "the inspector on the centre");
-        driver.press(KeyEvent.VK_P);
-        driver.press(KeyEvent.VK_I);
-        driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
-                && window.inspectorPanel().text().contains("history:"), "the panel's report");
+        pinTheCentreAndOpenThePanel(window);
         String text = driver.onEdt(() -> window.inspectorPanel().text());
         assertTrue(text.contains("drawn by primitive 2: top.simp:2 › leaf.simp:1 polygon"), text);
         assertTrue(text.contains("history: 3 writes attempted"), text);

@@ -510,13 +510,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
 
     @Test
     void aDragsFramesKeepNoDepthsUnlessTheDepthViewShowsThem() throws Exception {
-        Path scene = Files.writeString(dir.resolve("turned.simp"), String.join("\n",
-                "ambient 0.3 0.3 0.3",
-                "camera -1 -1 1 1 -1 -100",
-                "light 1 1 1 1 0",
-                "surface 0.9 0.5 0.1",
-                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
-                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)", ""));
+        Path scene = litSquare();
         open();
         driver.focusByClicking(new View.OfPage(2));
         driver.onEdt(() -> window().openScene(scene));
@@ -524,16 +518,8 @@ public class InstrumentsWindowTest extends WindowTestCase {
         assertNotNull(unturned.facts().depths(), "a traced picture keeps its depths");
 
         // While the right button is held, the frames are neither traced nor given their depths...
-        Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
-        driver.robot().mouseMove(centre.x, centre.y);
-        driver.robot().mousePress(InputEvent.BUTTON3_DOWN_MASK);
-        try {
-            for (int k = 1; k <= 4; k++) {
-                driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
-            }
-            driver.awaitEdt(() -> !window().busy() && window().shown().facts().owners() == null
-                    && Images.differingPixels(unturned.image(), window().shown().image()) > 100, "a frame of the drag");
-            assertNull(driver.onEdt(() -> window().shown().facts().depths()), "a drag's frame without its depths");
+        dragTurning(unturned, first -> {
+            assertNull(first.facts().depths(), "a drag's frame without its depths");
 
             // ... until the depth view asks for them: the frame is drawn again, with them, and shown as depths.
             driver.press(KeyEvent.VK_D);
@@ -543,13 +529,8 @@ public class InstrumentsWindowTest extends WindowTestCase {
             assertNull(depths.facts().owners(), "still a frame of the drag");
             assertEquals(0, driver.screenDiffersFrom(DepthPicture.of(depths.facts().depths(),
                     Double.NEGATIVE_INFINITY)));
-            driver.robot().mouseMove(centre.x + 60, centre.y + 10);
-            driver.awaitEdt(() -> !window().busy() && window().shown() != depths, "a later frame of the drag");
-            assertNotNull(driver.onEdt(() -> window().shown().facts().depths()),
-                    "with the depth view on, a drag's frames keep them");
-        } finally {
-            driver.robot().mouseRelease(InputEvent.BUTTON3_DOWN_MASK);
-        }
+            assertNotNull(nextDragFrame(depths).facts().depths(), "with the depth view on, a drag's frames keep them");
+        });
         driver.awaitEdt(() -> !window().busy() && window().shown().facts().owners() != null,
                 "traced again once the drag ended");
         driver.press(KeyEvent.VK_D);
