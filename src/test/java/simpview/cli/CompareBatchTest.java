@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static simpview.testing.Images.page;
+import static simpview.testing.Images.paint;
 
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
@@ -235,13 +236,7 @@ public class CompareBatchTest {
 
     /** The picture with rows 300 to 399 of its panel painted black: a band across the middle of tri.simp. */
     private static BufferedImage banded(Path picture) throws Exception {
-        BufferedImage image = ImageIO.read(picture.toFile());
-        for (int y = 300; y < 400; y++) {
-            for (int x = 50; x < 700; x++) {
-                image.setRGB(x, y, 0);
-            }
-        }
-        return image;
+        return paint(ImageIO.read(picture.toFile()), 50, 300, 700, 400, 0x000000);
     }
 
     /**

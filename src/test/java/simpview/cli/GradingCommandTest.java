@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static simpview.testing.Images.page;
+import static simpview.testing.Images.paint;
 
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
@@ -32,13 +33,7 @@ class GradingCommandTest {
 
     /** The page with a 100x100 block of its panel painted cyan: about 2.4 % of the panel wrong. */
     private static BufferedImage spoiled(int number) throws Exception {
-        BufferedImage image = page(number);
-        for (int y = 200; y < 300; y++) {
-            for (int x = 200; x < 300; x++) {
-                image.setRGB(x, y, 0x00FFFF);
-            }
-        }
-        return image;
+        return paint(page(number), 200, 200, 300, 300, 0x00FFFF);
     }
 
     private static Path png(Path file, BufferedImage image) throws Exception {
@@ -120,13 +115,7 @@ class GradingCommandTest {
      * patch, and the page still passes (99.18 %).
      */
     private static BufferedImage holed() throws Exception {
-        BufferedImage image = page(4);
-        for (int y = 240; y < 300; y++) {
-            for (int x = 300; x < 380; x++) {
-                image.setRGB(x, y, 0x000000);
-            }
-        }
-        return image;
+        return paint(page(4), 300, 240, 380, 300, 0x000000);
     }
 
     @Test
@@ -309,13 +298,7 @@ class GradingCommandTest {
 
     /** Page 1 with the top {@code rows} rows of its panel painted black, its background: those lines left out. */
     private static BufferedImage withoutTopRows(int rows) throws Exception {
-        BufferedImage image = page(1);
-        for (int y = 50; y < 50 + rows; y++) {
-            for (int x = 50; x < 700; x++) {
-                image.setRGB(x, y, 0x000000);
-            }
-        }
-        return image;
+        return paint(page(1), 50, 50, 700, 50 + rows, 0x000000);
     }
 
     /** The one test of a run of compare --partial over {@code picture} as page 1, judged by the defaults. */

@@ -26,6 +26,16 @@ public final class Images {
         ImageIO.write(image, "png", file.toFile());
     }
 
+    /** Paints the pixels x0 &lt;= x &lt; x1, y0 &lt;= y &lt; y1 of {@code image} (rows down from the top) {@code rgb}; returns it. */
+    public static BufferedImage paint(BufferedImage image, int x0, int y0, int x1, int y1, int rgb) {
+        for (int y = y0; y < y1; y++) {
+            for (int x = x0; x < x1; x++) {
+                image.setRGB(x, y, rgb);
+            }
+        }
+        return image;
+    }
+
     /** How many pixels differ in colour (alpha ignored); every pixel counts when the sizes differ. */
     public static long differingPixels(BufferedImage expected, BufferedImage actual) {
         if (expected.getWidth() != actual.getWidth() || expected.getHeight() != actual.getHeight()) {
