@@ -1,5 +1,7 @@
 package simpview.cli;
 
+import static simpview.testing.Images.writePng;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -56,12 +58,6 @@ class FirstAssignmentBatchTest {
         return window;
     }
 
-    private static Path png(Path file, BufferedImage image) throws Exception {
-        Files.createDirectories(file.getParent());
-        ImageIO.write(image, "png", file.toFile());
-        return file;
-    }
-
     private static String line(String text, String containing) {
         return text.lines().filter(l -> l.contains(containing)).findFirst().orElse("(no line with " + containing + ")");
     }
@@ -80,8 +76,8 @@ class FirstAssignmentBatchTest {
     @Test
     void eachPanelIsARowInEveryResultFormat() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("alice/a1-page2.png"), spoiled(2, 3));
-        png(subs.resolve("bob/a1/page2.png"), captured(page(2)));
+        writePng(subs.resolve("alice/a1-page2.png"), spoiled(2, 3));
+        writePng(subs.resolve("bob/a1/page2.png"), captured(page(2)));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--assignment", "1", "--pages", "2", "--out-dir",
                 out.toString(), "--diffs", "failing", "--gradescope", out.resolve("results.json").toString(),
@@ -171,8 +167,8 @@ class FirstAssignmentBatchTest {
     @Test
     void aPictureNamedLikeOneOfTheEightPagesThatHoldsAFirstAssignmentPageIsComparedAsOne() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("page2.png"), captured(page(2)));
-        png(subs.resolve("page3.png"), new PageRenderer().renderImage(3, PageContext.defaults()));
+        writePng(subs.resolve("page2.png"), captured(page(2)));
+        writePng(subs.resolve("page3.png"), new PageRenderer().renderImage(3, PageContext.defaults()));
         // --pages asks for the eight pages' pages 2 and 3: page2.png is one of those, and scores 0 saying why
         CliRun asked = CliRun.of("check", subs.toString(), "--pages", "2-3");
         assertEquals(ExitCode.SCENE_ERROR, asked.exitCode(), asked.out());
@@ -195,11 +191,11 @@ class FirstAssignmentBatchTest {
     @Test
     void withAssignment1ItsPagesAreAskedForAndAMissingOneCostsItsFourPanels() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("alice/a1-page1.png"), page(1));
-        png(subs.resolve("alice/a1-page2.png"), page(2));
-        png(subs.resolve("alice/a1-page3.png"), Assignment1.render(3, PageContext.defaults().withSeed(7)));
-        png(subs.resolve("bob/a1-page1.png"), page(1));
-        png(subs.resolve("bob/page3.png"), captured(Assignment1.render(3, PageContext.defaults().withSeed(7))));
+        writePng(subs.resolve("alice/a1-page1.png"), page(1));
+        writePng(subs.resolve("alice/a1-page2.png"), page(2));
+        writePng(subs.resolve("alice/a1-page3.png"), Assignment1.render(3, PageContext.defaults().withSeed(7)));
+        writePng(subs.resolve("bob/a1-page1.png"), page(1));
+        writePng(subs.resolve("bob/page3.png"), captured(Assignment1.render(3, PageContext.defaults().withSeed(7))));
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [{\"match\": \"a1-*-panel4\", \"points\": 2}]}");
         Path out = dir.resolve("out");
@@ -257,7 +253,7 @@ class FirstAssignmentBatchTest {
     @Test
     void aFirstAssignmentPictureThatCannotBeComparedCostsItsWholePageOnce() throws Exception {
         Path bob = dir.resolve("bob");
-        png(bob.resolve("a1-page1 copy.png"), page(1));
+        writePng(bob.resolve("a1-page1 copy.png"), page(1));
         Files.write(bob.resolve("a1-page1.png"), new byte[] {1, 2, 3}); // named the page alone: it counts, broken
         Files.write(bob.resolve("a1-page2.png"), new byte[] {1, 2, 3});
         Path json = dir.resolve("results.json");
@@ -288,19 +284,19 @@ class FirstAssignmentBatchTest {
     void checksLastLineCountsAPictureThatCouldNotBeCheckedAsOneOfThoseHandedIn() throws Exception {
         Path mine = dir.resolve("mine");
         for (int p = 1; p <= 4; p++) {
-            png(mine.resolve("a1-page" + p + ".png"), page(p));
+            writePng(mine.resolve("a1-page" + p + ".png"), page(p));
         }
         BufferedImage small = new BufferedImage(700, 700, BufferedImage.TYPE_INT_RGB);
         small.getGraphics().drawImage(page(5), 0, 0, 700, 700, null);
-        png(mine.resolve("a1-page5.png"), small);
+        writePng(mine.resolve("a1-page5.png"), small);
         CliRun check = CliRun.of("check", mine.toString(), "--assignment", "1");
         assertEquals(ExitCode.SCENE_ERROR, check.exitCode(), check.out());
         assertTrue(check.out().endsWith("\n4 of 5 pictures pass; 16 of 16 panels pass (4 pages of the first "
                 + "assignment); 1 picture could not be checked (said above)\n"), check.out());
 
         Path eight = dir.resolve("eight");
-        png(eight.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
-        png(eight.resolve("page5.png"), small);
+        writePng(eight.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
+        writePng(eight.resolve("page5.png"), small);
         CliRun pages = CliRun.of("check", eight.toString(), "--pages", "4-5");
         assertEquals(ExitCode.SCENE_ERROR, pages.exitCode(), pages.out());
         assertTrue(pages.out().endsWith("\n1 of 2 pictures pass; 1 picture could not be checked (said above)\n"),
@@ -310,8 +306,8 @@ class FirstAssignmentBatchTest {
     @Test
     void whereTheEightPagesAreAskedForAFirstAssignmentPageIsNeitherGradedNorAskedOfOthers() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("alice/a1-page2.png"), page(2));
-        png(subs.resolve("bob/page1.png"), new PageRenderer().renderImage(1, PageContext.defaults()));
+        writePng(subs.resolve("alice/a1-page2.png"), page(2));
+        writePng(subs.resolve("bob/page1.png"), new PageRenderer().renderImage(1, PageContext.defaults()));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--out-dir", out.toString(),
                 "--diffs", "none", "--gradescope", out.resolve("results.json").toString());
@@ -352,8 +348,8 @@ class FirstAssignmentBatchTest {
     @Test
     void pagesOverAFolderOfFirstAssignmentPagesSaysSoOnceAndGradesAsBefore() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("alice/a1-page1.png"), page(1));
-        png(subs.resolve("bob/a1-page1.png"), page(1));
+        writePng(subs.resolve("alice/a1-page1.png"), page(1));
+        writePng(subs.resolve("bob/a1-page1.png"), page(1));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
                 "--diffs", "none");
@@ -369,7 +365,7 @@ class FirstAssignmentBatchTest {
         assertTrue(check.err().contains(note), check.err());
         assertFalse(CliRun.of("check", subs.resolve("alice").toString()).err().contains("note:"),
                 "without --pages nothing of the eight pages is asked for");
-        png(subs.resolve("bob/page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
+        writePng(subs.resolve("bob/page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
         CliRun mixed = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-5", "--out-dir", out.toString(),
                 "--diffs", "none");
         assertFalse(mixed.err().contains("note:"), "a page of the eight is handed in: " + mixed.err());
@@ -383,7 +379,7 @@ class FirstAssignmentBatchTest {
     void checkOfAFolderOfFirstAssignmentPagesAsksForThoseAsAssignment1Does() throws Exception {
         Path mine = dir.resolve("mine");
         for (int n = 1; n <= Assignment1.COUNT; n++) {
-            png(mine.resolve("page" + n + ".png"), page(n));
+            writePng(mine.resolve("page" + n + ".png"), page(n));
         }
         CliRun check = CliRun.of("check", mine.toString());
         assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
@@ -396,11 +392,11 @@ class FirstAssignmentBatchTest {
         CliRun elsewhere = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
         assertEquals(ExitCode.OK, elsewhere.exitCode(), elsewhere.out() + elsewhere.err());
         assertTrue(elsewhere.out().contains("A1 page 5"), elsewhere.out());
-        png(mine.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
+        writePng(mine.resolve("page4.png"), new PageRenderer().renderImage(4, PageContext.defaults()));
         CliRun eighth = CliRun.withOwnScenes(dir.resolve("no-such-folder"), "check", mine.toString());
         assertEquals(ExitCode.SCENE_ERROR, eighth.exitCode(), eighth.out() + eighth.err());
         assertTrue(eighth.err().contains("nothing was graded: simpview cannot draw page 4 itself"), eighth.err());
-        png(mine.resolve("page4.png"), page(4));
+        writePng(mine.resolve("page4.png"), page(4));
         Files.delete(mine.resolve("page5.png"));
         Files.writeString(mine.resolve("page5.webp"), "not read");
         CliRun four = CliRun.of("check", mine.toString());
@@ -411,7 +407,7 @@ class FirstAssignmentBatchTest {
 
         // beside a scene of the folder and its picture, a first-assignment page names none of the eight pages either
         Path mixed = dir.resolve("mixed");
-        png(mixed.resolve("page1.png"), page(1));
+        writePng(mixed.resolve("page1.png"), page(1));
         Path scene = Files.writeString(mixed.resolve("tri.simp"), "polygon (-50,-50,-10) (50,-50,-10) (0,50,-100)\n");
         assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out",
                 mixed.resolve("tri.png").toString()).exitCode());
@@ -427,13 +423,13 @@ class FirstAssignmentBatchTest {
     @Test
     void theTablesHeadingSaysThePanelsAreJudgedWithoutSlack() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("a1-page1.png"), page(1));
+        writePng(mine.resolve("a1-page1.png"), page(1));
         Path out = dir.resolve("out");
         CliRun.of("check", mine.toString(), "--out-dir", out.toString());
         assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the result "
                 + "is on the judged share: within 8/255 with no slack, 99.00 % needed.\n"),
                 Files.readString(out.resolve("compare.md")));
-        png(mine.resolve("page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
+        writePng(mine.resolve("page2.png"), new PageRenderer().renderImage(2, PageContext.defaults()));
         CliRun.of("check", mine.toString(), "--out-dir", out.toString()); // without --pages both are graded
         assertTrue(Files.readString(out.resolve("compare.md")).startsWith("Shares of panel pixels in percent; the "
                 + "result is on the judged share: within 8/255 with one pixel of slack (the first assignment's panels: "
@@ -448,13 +444,13 @@ class FirstAssignmentBatchTest {
     void checkPassesAFolderOfRightFirstAssignmentPages() throws Exception {
         Path subs = dir.resolve("mine");
         for (int n = 1; n <= Assignment1.COUNT; n++) {
-            png(subs.resolve("a1-page" + n + ".png"), page(n));
+            writePng(subs.resolve("a1-page" + n + ".png"), page(n));
         }
         // without --pages a folder of the first assignment's pages is asked for its five pages, not the eight pages
         CliRun check = CliRun.of("check", subs.toString());
         assertEquals(ExitCode.OK, check.exitCode(), check.out() + check.err());
         assertTrue(check.out().endsWith("20 of 20 panels pass (5 pages of the first assignment)\n"), check.out());
-        png(subs.resolve("a1-page7.png"), page(2));
+        writePng(subs.resolve("a1-page7.png"), page(2));
         CliRun seven = CliRun.of("check", subs.toString());
         assertTrue(seven.err().contains("a1-page7.png: SKIPPED: the first assignment has pages 1 to 5, not 7"), seven.err());
     }

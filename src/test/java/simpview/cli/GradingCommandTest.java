@@ -1,5 +1,7 @@
 package simpview.cli;
 
+import static simpview.testing.Images.writePng;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -36,19 +38,13 @@ class GradingCommandTest {
         return paint(page(number), 200, 200, 300, 300, 0x00FFFF);
     }
 
-    private static Path png(Path file, BufferedImage image) throws Exception {
-        Files.createDirectories(file.getParent());
-        ImageIO.write(image, "png", file.toFile());
-        return file;
-    }
-
     @Test
     void aPictureMatchingAnAcceptedAlternatePasses() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("alice/page1.png"), spoiled(1));
-        png(subs.resolve("bob/page1.png"), spoiled(2)); // the wrong page: no alternate is like it
-        png(dir.resolve("alternates/page1-other-method.png"), spoiled(1));
-        png(dir.resolve("alternates/page2-alt.png"), spoiled(2)); // names page 2: not an alternate of page 1
+        writePng(subs.resolve("alice/page1.png"), spoiled(1));
+        writePng(subs.resolve("bob/page1.png"), spoiled(2)); // the wrong page: no alternate is like it
+        writePng(dir.resolve("alternates/page1-other-method.png"), spoiled(1));
+        writePng(dir.resolve("alternates/page2-alt.png"), spoiled(2)); // names page 2: not an alternate of page 1
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [{\"match\": \"1-2\", \"alternates\": \"alternates\"}]}");
 
@@ -70,8 +66,8 @@ class GradingCommandTest {
     @Test
     void aBatchWritesGradescopeJUnitAndHtmlAndABrokenFileStopsNothing() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("page1.png"), page(1));
-        png(subs.resolve("page2.png"), spoiled(2));
+        writePng(subs.resolve("page1.png"), page(1));
+        writePng(subs.resolve("page2.png"), spoiled(2));
         Files.write(subs.resolve("page3.png"), new byte[] {1, 2, 3});
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"defaults\": {\"points\": 4, \"zero_share\": 90}}");
@@ -98,8 +94,8 @@ class GradingCommandTest {
     @Test
     void diffsFailingWritesTheDiffsOfThoseThatDoNotPassOnly() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("page1.png"), page(1));
-        png(subs.resolve("page2.png"), spoiled(2));
+        writePng(subs.resolve("page1.png"), page(1));
+        writePng(subs.resolve("page2.png"), spoiled(2));
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-2", "--out-dir", out.toString(),
                 "--diffs", "failing");
@@ -121,7 +117,7 @@ class GradingCommandTest {
     @Test
     void aPassWithASolidPatchSaysSoInEveryResult() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("st/page4.png"), holed());
+        writePng(subs.resolve("st/page4.png"), holed());
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "4", "--out-dir", out.toString(),
                 "--gradescope", out.resolve("results.json").toString(), "--junit", out.resolve("results.xml").toString(),
@@ -156,7 +152,7 @@ class GradingCommandTest {
     @Test
     void aFailByTheRubricsPixelLimitSaysSoBesideItsShare() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("st/page4.png"), holed());
+        writePng(subs.resolve("st/page4.png"), holed());
         Path rubric = Files.writeString(dir.resolve("compare.json"),
                 "{\"pages\": [{\"match\": \"4\", \"max_failing_pixels\": 1000}]}");
         Path out = dir.resolve("out");
@@ -193,8 +189,8 @@ class GradingCommandTest {
         Path st = dir.resolve("subs/st");
         BufferedImage grey = new BufferedImage(750, 750, BufferedImage.TYPE_BYTE_GRAY);
         grey.createGraphics().drawImage(page(4), 0, 0, null);
-        png(st.resolve("page4.png"), grey);
-        png(st.resolve("page5.png"), spoiled(5)); // fails, in colour
+        writePng(st.resolve("page4.png"), grey);
+        writePng(st.resolve("page5.png"), spoiled(5)); // fails, in colour
         String whole = "your picture has no colour: every pixel of its panel is a shade of grey, where simpview's "
                 + "panel is coloured; was it saved in greyscale, or does your renderer write one channel into all "
                 + "three? Save it in colour (RGB) and compare again";
@@ -226,7 +222,7 @@ class GradingCommandTest {
         ImageIO.write(page(1), "jpeg", st.resolve("page1.jpg").toFile()); // lossy: fails
         ImageIO.write(page(2), "gif", st.resolve("page2.gif").toFile()); // thousands of colours: fails
         ImageIO.write(page(4), "gif", st.resolve("page4.gif").toFile()); // few colours: passes, nothing to say
-        png(st.resolve("page5.png"), spoiled(5)); // fails, but not for its format
+        writePng(st.resolve("page5.png"), spoiled(5)); // fails, but not for its format
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "1-5", "--out-dir",
                 out.toString(), "--gradescope", out.resolve("results.json").toString(), "--junit",
@@ -270,7 +266,7 @@ class GradingCommandTest {
         Path st = dir.resolve("subs/st");
         Files.createDirectories(st);
         ImageIO.write(page(1), "jpeg", st.resolve("page1.jpg").toFile());
-        png(st.resolve("page1.png"), spoiled(1)); // counts over the JPEG, and fails
+        writePng(st.resolve("page1.png"), spoiled(1)); // counts over the JPEG, and fails
         CliRun check = CliRun.of("check", st.toString(), "--pages", "1");
         assertTrue(check.out().contains("\nnote: page1.jpg (page 1 (seed 361)): JPEG is lossy: saving a page as JPEG "
                 + "changes its colours near every edge, so even a right page can fail\n"), check.out());
@@ -304,7 +300,7 @@ class GradingCommandTest {
     /** The one test of a run of compare --partial over {@code picture} as page 1, judged by the defaults. */
     private JsonObject partiallyScored(String name, BufferedImage picture) throws Exception {
         Path student = dir.resolve(name);
-        png(student.resolve("page1.png"), picture);
+        writePng(student.resolve("page1.png"), picture);
         Path results = dir.resolve(name + ".json");
         CliRun run = CliRun.of("compare", "--dir", student.toString(), "--pages", "1", "--partial", "--gradescope",
                 results.toString());
@@ -372,7 +368,7 @@ class GradingCommandTest {
     @Test
     void aRubricRuleThatFitsNothingInTheRunIsAWarning() throws Exception {
         Path subs = dir.resolve("subs");
-        png(subs.resolve("page1.png"), page(1));
+        writePng(subs.resolve("page1.png"), page(1));
         Path rubric = dir.resolve("compare.json");
         Files.writeString(rubric, "{\"pages\": [\n {\"match\": \"1\"},\n {\"match\": \"9\"},\n {\"match\": \"pageZ\"}\n]}");
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--rubric", rubric.toString(),
@@ -387,8 +383,8 @@ class GradingCommandTest {
     @Test
     void checkPrintsOneTableAndPassesOnlyWhenEveryPictureDoes() throws Exception {
         Path mine = dir.resolve("mine");
-        png(mine.resolve("page1.png"), page(1));
-        png(mine.resolve("Page_2.png"), spoiled(2));
+        writePng(mine.resolve("page1.png"), page(1));
+        writePng(mine.resolve("Page_2.png"), spoiled(2));
         Files.writeString(mine.resolve("readme.txt"), "not a picture");
         CliRun run = CliRun.of("check", mine.toString(), "--pages", "1-3");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out() + run.err());

@@ -20,10 +20,11 @@ public final class Images {
         return new PageRenderer().renderImage(number, PageContext.defaults());
     }
 
-    /** Writes {@code image} to {@code file} as a PNG, making its folders first. */
-    public static void writePng(Path file, BufferedImage image) throws IOException {
+    /** Writes {@code image} to {@code file} as a PNG, making its folders first; returns the file. */
+    public static Path writePng(Path file, BufferedImage image) throws IOException {
         Files.createDirectories(file.getParent());
         ImageIO.write(image, "png", file.toFile());
+        return file;
     }
 
     /** Paints the pixels x0 &lt;= x &lt; x1, y0 &lt;= y &lt; y1 of {@code image} (rows down from the top) {@code rgb}; returns it. */
