@@ -115,7 +115,7 @@ public final class BandTimeline {
         }
 
         @Override
-        public synchronized void handedIn(int batch, boolean whole) {
+        public synchronized void handedIn(int batch) {
             batches++;
         }
 

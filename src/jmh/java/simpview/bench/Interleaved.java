@@ -50,7 +50,7 @@ import org.openjdk.jmh.annotations.TearDown;
  * {@code simpview.bench.LitPages}, PARAMS as {@code scene=a3/pageI,threads=1}
  * (or "" for the defaults), each DIR a build's {@code build/classes/java},
  * perhaps followed by parameters of its own that override PARAMS for it
- * ({@code build/classes/java@threads=2,perPicture=true}), so that one build
+ * ({@code build/classes/java@threads=2,turned=false}), so that one build
  * can also be measured against itself set up another way.
  * The course's files are found as the benchmarks find them
  * ({@code -Dsimpview.courseSimp}). Give it the JVM options simpview's start

@@ -86,15 +86,6 @@ public class OrbitFrame {
     @Param({"1"})
     public int threads;
 
-    /**
-     * True: at most {@code threads}, each batch in bands or whole as
-     * {@link simpview.surface.BandChoice} finds it pays, as the window draws
-     * when no {@code --threads} is given; false: every batch in bands by all
-     * {@code threads}, as with {@code --threads N}.
-     */
-    @Param({"false"})
-    public boolean perPicture;
-
     private PageRenderer renderer;
     private DrawingThreads drawing;
     private final SceneLibrary library = new SceneLibrary();
@@ -132,7 +123,7 @@ public class OrbitFrame {
 
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
-        drawing = perPicture ? DrawingThreads.upTo(threads) : DrawingThreads.of(threads);
+        drawing = DrawingThreads.of(threads);
         renderer = new PageRenderer(drawing);
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.PROJECT_SCENES, monitor);

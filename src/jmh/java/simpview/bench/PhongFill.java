@@ -83,17 +83,8 @@ public class PhongFill {
         state.addLight(-8, 6, -4, 0.8, 0.6, 0.5, 1, 0.01);
         drawing = DrawingThreads.of(threads);
         RowBands bands = drawing.bands(PageCanvas.PANEL);
-        queue = drawing.queue(bands.count(), 2, new BandQueue.Drawer() {
-            @Override
-            public void band(int slot, int b) {
-                rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL, PageCanvas.PANEL, fragments[b]);
-            }
-
-            @Override
-            public void whole(int slot) {
-                throw new IllegalStateException("the quad is always drawn in bands");
-            }
-        });
+        queue = drawing.queue(bands.count(), 2,
+                (slot, b) -> rasterizers[b].fill(quad, 4, CHANNELS, PageCanvas.PANEL, PageCanvas.PANEL, fragments[b]));
         rasterizers = new LitPolygonRasterizer[bands.count()];
         fragments = new FragmentStage[bands.count()];
         for (int b = 0; b < bands.count(); b++) {
@@ -138,7 +129,7 @@ public class PhongFill {
     @OperationsPerInvocation(PageCanvas.PANEL * PageCanvas.PANEL)
     public PageCanvas fill() {
         queue.slot();
-        queue.publish(false);
+        queue.publish();
         queue.finish();
         return canvas;
     }

@@ -165,7 +165,7 @@ public final class SimpviewCommand implements Callable<Integer> {
             return ExitCode.USAGE_ERROR;
         }
         WindowOptions options = new WindowOptions(seed, simpDir == null ? ownScenes : simpDir, openAtStart(),
-                sceneList(), ownScenes, threads.count(), threads.given(), a1Rule.rule());
+                sceneList(), ownScenes, threads.count(), a1Rule.rule());
         SwingUtilities.invokeLater(() -> SimpviewWindow.open(options).checkFoldersWith(CheckCommand::checkFolder));
         openedWindow = true;
         return ExitCode.OK;

@@ -16,8 +16,8 @@ final class ThreadsOption {
     private CommandSpec spec;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "threads that draw each picture, 1 to " + MOST + " (default: up to one per processor, "
-                    + "one alone for a scene of small faces); every picture is the same to the bit at any N")
+            description = "threads that draw each picture, 1 to " + MOST + " (default: one per processor); "
+                    + "every picture is the same to the bit at any N")
     private Integer threads;
 
     /** The count asked for, or one per processor; a count out of range is a usage error. */
@@ -31,16 +31,8 @@ final class ThreadsOption {
         return threads;
     }
 
-    /** True when the user gave {@code --threads}: then every picture is drawn by that many. */
-    boolean given() {
-        return threads != null;
-    }
-
-    /**
-     * The threads, for the caller to close: as many as given, or with none
-     * given up to one per processor, chosen per picture ({@link DrawingThreads#upTo}).
-     */
+    /** The threads, for the caller to close: as many as given, or one per processor ({@link #count}). */
     DrawingThreads open() {
-        return given() ? DrawingThreads.of(count()) : DrawingThreads.upTo(count());
+        return DrawingThreads.of(count());
     }
 }

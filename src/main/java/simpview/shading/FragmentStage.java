@@ -226,13 +226,10 @@ public final class FragmentStage implements FragmentSink {
     private int rowTo;
 
     // Phong shading deferred ({@link #shadeLater}): the pixels that wait, by
-    // the index of the kept span each waits for; null when every pixel is
-    // shaded as it passes the depth test.
+    // the index of the kept span each waits for, told of every write of a
+    // known colour (writtenOver); null when every pixel is shaded as it
+    // passes the depth test.
     private WaitingPixels waiting;
-    // The pixels that may wait in this stage's rows, its own or another
-    // stage's: told of every write of a known colour (writtenOver); null
-    // when none may.
-    private WaitingPixels told;
     private Provenance owners;
     // The kept phong spans that won a pixel: q0, dq, then v0 and dv of the
     // phong channels; where k counts from; who drew them; their look (an
@@ -326,7 +323,6 @@ public final class FragmentStage implements FragmentSink {
         shader = null;
         fog = Fog.NONE;
         waiting = null;
-        told = null;
         owners = null;
         forgetSpans();
     }
@@ -358,10 +354,9 @@ public final class FragmentStage implements FragmentSink {
      * point of its own ({@link WaitingPoints}), for {@link #shadeWaiting} at
      * the picture's end, which shades each pixel the last span or point that
      * won it still holds: one whose depth is still the z it gave it. A later
-     * write there, of this stage or of another that draws the same rows (a
-     * batch kept whole, {@link #writesOver}), was nearer, so it left a larger
-     * depth; it only marks its row, so that the depths are looked at there
-     * alone (a waiting point's depth is always looked at). The
+     * write there was nearer, so it left a larger depth; it only marks its
+     * row, so that the depths are looked at there alone (a waiting point's
+     * depth is always looked at). The
      * owner each waiting pixel gets is the one {@code owners} (or null) has
      * for its row when it wins. The picture is the same to the bit: a pixel's
      * colour is its last winning fragment's, and a point is lit the same
@@ -372,26 +367,13 @@ public final class FragmentStage implements FragmentSink {
             throw new IllegalArgumentException("waiting pixels for another panel");
         }
         this.waiting = waiting;
-        this.told = waiting;
         this.owners = owners;
-    }
-
-    /**
-     * This stage shades at once, in rows where other stages' pixels may wait
-     * in {@code waiting} (a stage drawing the batches kept whole): it tells
-     * them of its writes ({@link WaitingPixels#writtenOver}).
-     */
-    public void writesOver(WaitingPixels waiting) {
-        if (waiting.width() != width || waiting.height() != height) {
-            throw new IllegalArgumentException("waiting pixels for another panel");
-        }
-        this.told = waiting;
     }
 
     /** Row y was written with a known colour: a pixel there that waits may be taken from its span. */
     private void wroteOver(int y) {
-        if (told != null) {
-            told.writtenOver(y);
+        if (waiting != null) {
+            waiting.writtenOver(y);
         }
     }
 

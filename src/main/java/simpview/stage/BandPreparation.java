@@ -5,11 +5,9 @@ import java.util.function.IntConsumer;
 /**
  * What a band's drawer does to its own rows once a picture, before it first
  * draws there (its rows of the z-buffer reset, say): at most once a band, on
- * the thread drawing that band. A batch drawn whole prepares every band
- * first, and the picture's end the bands no drawer reached. A band's flag is
- * touched only by whoever draws that band, in the band queue's order (a
- * batch drawn whole waits for every band, and every band for it), so it
- * needs no lock.
+ * the thread drawing that band; the picture's end prepares the bands no
+ * drawer reached, once every band is drawn. A band's flag is touched only by
+ * whoever draws that band, in the band queue's order, so it needs no lock.
  */
 final class BandPreparation {
 

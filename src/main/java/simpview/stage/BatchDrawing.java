@@ -2,10 +2,8 @@ package simpview.stage;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.Consumer;
 import java.util.function.ObjIntConsumer;
 import java.util.function.Supplier;
-import simpview.surface.BandChoice;
 import simpview.surface.BandQueue;
 import simpview.surface.DrawingThreads;
 import simpview.surface.Provenance;
@@ -17,18 +15,16 @@ import simpview.surface.RowBands;
  * in recording order, band by band, while the recording thread goes on with
  * the next batch ({@link BandQueue}). A batch is handed off when the record
  * finds it full, or when it covers as many pixels as the record says is
- * worth a batch of its own, so that a page of a few large fills is drawn while the rest of it is read; each batch is
- * split into the panel's row bands or drawn as one band, as
- * {@link BandChoice} finds it pays. A batch kept as one band is drawn by one
- * thread alone, beside the recording: on a page of many small faces the
- * geometry stage and the rasterizers then take a core each. Each pixel sees
- * the writes in drawing order, so the picture is the same to the bit as one
- * thread drawing the scene as it reads it.
+ * worth a batch of its own, so that a page of a few large fills is drawn
+ * while the rest of it is read. Each pixel sees the writes in drawing order,
+ * so the picture is the same to the bit as one thread drawing the scene as
+ * it reads it.
  *
  * <p>It keeps the record's ring of batches and which one is being filled,
  * and weighs each batch as it is recorded (about how many pixels its
- * primitives cover). Used on the one thread that records; the bands'
- * drawers are the record's own, and draw only the batch they are given.
+ * primitives cover, {@link #pixels}) when the record hands batches off by
+ * their pixels. Used on the one thread that records; the bands' drawers are
+ * the record's own, and draw only the batch they are given.
  */
 final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
@@ -63,13 +59,9 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     private final Class<B> kind;
     private final List<B> ring;
     private final BandQueue queue;
-    /**
-     * True when a batch's pixels decide something: whether it is split (the
-     * thread count chosen per picture) or when it is handed off (a record
-     * with a pixel threshold), with threads to draw beside the recording.
-     */
+    /** True when a batch is handed off once it covers {@link #mostPixels}: its pixels are counted. */
     private final boolean weighs;
-    /** About how many pixels the batch being recorded covers ({@link BandChoice#pixels}), when weighed. */
+    /** About how many pixels the batch being recorded covers ({@link #pixels}), when weighed. */
     private double pixels;
     /** A batch covering this many pixels is handed off, however few its primitives. */
     private final double mostPixels;
@@ -84,22 +76,21 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      * For a panel {@code height} rows high, drawn by {@code threads};
      * {@code provenance} is the owners' record, or null; {@code newBatch}
      * makes the ring's batches (of class {@code kind}) when the threads kept
-     * none from the last picture; a batch is drawn by {@code band} (given the
-     * batch and the band's number) when split, or by {@code wholePanel}; a
-     * batch is handed off once it covers {@code mostPixels} or holds
+     * none from the last picture; a batch's band is drawn by {@code band}
+     * (given the batch and the band's number); a batch is handed off once it
+     * covers {@code mostPixels} (when finite) or holds
      * {@code mostPrimitives} (fewer at first, see {@link #FIRST_PRIMITIVES});
      * the panel is split into {@code bandsPerThread} bands per thread.
      */
     BatchDrawing(DrawingThreads threads, int height, Provenance provenance, Class<B> kind, Supplier<B> newBatch,
-            ObjIntConsumer<B> band, Consumer<B> wholePanel, double mostPixels, int mostPrimitives,
+            ObjIntConsumer<B> band, double mostPixels, int mostPrimitives,
             int bandsPerThread) {
         this.threads = threads;
         this.mostPixels = mostPixels;
         this.mostPrimitives = mostPrimitives;
         this.primitivesLimit = threads.isOne() ? mostPrimitives : Math.min(FIRST_PRIMITIVES, mostPrimitives);
         this.bands = threads.bands(height, bandsPerThread);
-        this.weighs = !threads.isOne()
-                && (threads.choosesPerPicture() || mostPixels < Double.POSITIVE_INFINITY);
+        this.weighs = mostPixels < Double.POSITIVE_INFINITY;
         this.kind = kind;
         List<B> kept = threads.takeKept(kind);
         if (kept != null && kept.size() == SLOTS) {
@@ -116,17 +107,7 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
         // The drawers reach the ring through a reference of their own, not through this object, whose weight
         // the reading thread writes for every primitive (a line shared by the two cores costs each store).
         List<B> drawnFrom = ring;
-        this.queue = threads.queue(bands.count(), SLOTS, new BandQueue.Drawer() {
-            @Override
-            public void band(int slot, int number) {
-                band.accept(drawnFrom.get(slot), number);
-            }
-
-            @Override
-            public void whole(int slot) {
-                wholePanel.accept(drawnFrom.get(slot));
-            }
-        });
+        this.queue = threads.queue(bands.count(), SLOTS, (slot, number) -> band.accept(drawnFrom.get(slot), number));
         if (provenance != null) {
             provenance.drawnFromRecords();
             provenance.useBands(bands);
@@ -188,15 +169,37 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
     }
 
     /**
-     * Adds a primitive to the batch's weight, {@link BandChoice#pixels} of
-     * its n corners, when weighed; true when the batch now covers the
-     * pixels that make it worth handing off.
+     * Adds a primitive to the batch's weight, {@link #pixels} of its n
+     * corners, when weighed; true when the batch now covers the pixels that
+     * make it worth handing off.
      */
     boolean weigh(double[] v, int at, int n, int stride, boolean filled, boolean closed) {
         if (weighs) {
-            pixels += BandChoice.pixels(v, at, n, stride, filled, closed);
+            pixels += pixels(v, at, n, stride, filled, closed);
         }
         return pixels >= mostPixels;
+    }
+
+    /**
+     * About how many pixels a primitive covers: a filled polygon's area (the
+     * shoelace formula over its n corners, corner k's x at
+     * {@code v[at + k * stride]} and its y next to it), and for lines
+     * ({@code filled} false) the length in pixels of its n - 1 edges, or of
+     * all n when {@code closed} (an outline).
+     */
+    static double pixels(double[] v, int at, int n, int stride, boolean filled, boolean closed) {
+        double sum = 0;
+        int edges = closed || filled ? n : n - 1;
+        for (int k = 0; k < edges; k++) {
+            int i = at + k * stride;
+            int j = k + 1 < n ? i + stride : at;
+            double x0 = v[i];
+            double y0 = v[i + 1];
+            double x1 = v[j];
+            double y1 = v[j + 1];
+            sum += filled ? x0 * y1 - x1 * y0 : Math.max(Math.abs(x1 - x0), Math.abs(y1 - y0)) + 1;
+        }
+        return filled ? Math.abs(sum) / 2 : sum;
     }
 
     /** True when the batch being filled holds as many primitives as it may before it is handed off. */
@@ -211,23 +214,22 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
 
     /**
      * Hands off the batch being filled, if it holds anything, to be drawn in
-     * bands by all the threads, or whole (as {@link BandChoice} says), and
-     * takes the next batch of the ring to fill, once every band has drawn
-     * what was in it; the weight is back at nothing.
+     * bands by all the threads, and takes the next batch of the ring to
+     * fill, once every band has drawn what was in it; the weight is back at
+     * nothing.
      */
     void handOff() {
         if (filling.size() > 0) {
-            publish(!BandChoice.splits(threads, pixels));
+            publish();
         }
     }
 
     /**
-     * Hands off the batch being filled, empty or not, to be drawn in bands,
-     * never whole: a picture's last, whose band drawers then finish their
-     * rows.
+     * Hands off the batch being filled, empty or not: a picture's last, whose
+     * band drawers then finish their rows.
      */
     void handOffLast() {
-        publish(false);
+        publish();
     }
 
     /**
@@ -238,13 +240,13 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      */
     void prepareBands() {
         int first = primitivesLimit;
-        publish(false);
+        publish();
         primitivesLimit = first;
     }
 
-    /** Publishes the batch being filled, whole or in bands, and takes the next of the ring, empty, to fill. */
-    private void publish(boolean whole) {
-        queue.publish(whole);
+    /** Publishes the batch being filled and takes the next of the ring, empty, to fill. */
+    private void publish() {
+        queue.publish();
         pixels = 0;
         primitivesLimit = (int) Math.min((long) primitivesLimit * 2, mostPrimitives);
         filling = ring.get(queue.slot());

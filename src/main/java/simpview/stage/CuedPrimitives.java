@@ -5,7 +5,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
 import simpview.geometry.Vertex;
-import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.OwedRows;
@@ -56,8 +55,6 @@ public final class CuedPrimitives {
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
-    /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
-    private final Band wholeDrawer;
     private final Provenance provenance;
     private final RowBands bands;
     private final ZBuffer zbuffer;
@@ -93,7 +90,7 @@ public final class CuedPrimitives {
     public CuedPrimitives(DrawingThreads threads, ZBuffer zbuffer, Supplier<OwedRows> panelRows, Drawable panel,
             Provenance provenance) {
         this.batches = new BatchDrawing<>(threads, panel.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES, BANDS_PER_THREAD);
+                this::drawBand, MOST_PIXELS, MOST_PRIMITIVES, BANDS_PER_THREAD);
         this.provenance = provenance;
         this.bands = batches.bands();
         this.zbuffer = zbuffer;
@@ -106,8 +103,6 @@ public final class CuedPrimitives {
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), panel, renderers(b));
         }
-        this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(Provenance.EVERY_BAND, 0, panel.height(), panel, renderers(drawers.length));
     }
 
     /** The k-th drawer's renderers: kept ones, or new. */
@@ -156,16 +151,7 @@ public final class CuedPrimitives {
         drawers[band].draw(b);
     }
 
-    private void drawWhole(Batch b) {
-        preparation.everyBand();
-        wholeDrawer.draw(b);
-    }
-
-    /**
-     * Draws what is recorded, band by band (or as one band, when
-     * {@link BandChoice} says splitting it does not pay), and returns when
-     * all is drawn.
-     */
+    /** Draws what is recorded, band by band, and returns when all is drawn. */
     public void flush() {
         if (preparation == null) {
             batches.finish(); // nothing recorded, nothing taken: the threads keep the ring

@@ -12,7 +12,6 @@ import simpview.shading.LitState;
 import simpview.shading.FragmentStage;
 import simpview.shading.FragmentStages;
 import simpview.shading.PointShader;
-import simpview.surface.BandChoice;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
 import simpview.surface.OwedRows;
@@ -65,8 +64,6 @@ public final class LitPrimitives {
 
     private final BatchDrawing<Batch> batches;
     private final Band[] drawers;
-    /** The whole panel as one band, for batches {@link BandChoice} keeps whole. */
-    private final Band wholeDrawer;
     private final Provenance provenance;
     private final RowBands bands;
     /**
@@ -97,15 +94,13 @@ public final class LitPrimitives {
      * ({@code panelRows}) are made the same way; the drawers start on them at
      * once, while the scene's first batch is read. Lit phong spans wait in
      * {@code waiting} (the panel's) and each band's drawer shades its rows'
-     * at the end ({@link FragmentStage#shadeLater}); a batch kept whole is
-     * shaded at once and marks the rows it writes
-     * ({@link FragmentStage#writesOver}). The drawers' fragment stages come
-     * from {@code stages}.
+     * at the end ({@link FragmentStage#shadeLater}). The drawers' fragment
+     * stages come from {@code stages}.
      */
     public LitPrimitives(DrawingThreads threads, ZBuffer zbuffer, OwedRows panelRows, Drawable panel,
             Provenance provenance, WaitingPixels waiting, FragmentStages stages) {
         this.batches = new BatchDrawing<>(threads, zbuffer.height(), provenance, Batch.class, Batch::new,
-                this::drawBand, this::drawWhole, MOST_PIXELS, MOST_PRIMITIVES, DrawingThreads.BANDS_PER_THREAD);
+                this::drawBand, MOST_PIXELS, MOST_PRIMITIVES, DrawingThreads.BANDS_PER_THREAD);
         this.provenance = provenance;
         this.threads = threads;
         zbuffer.resetByRows(Double.NEGATIVE_INFINITY);
@@ -116,12 +111,6 @@ public final class LitPrimitives {
         for (int b = 0; b < drawers.length; b++) {
             drawers[b] = new Band(b, bands.start(b), bands.end(b), stages.next(panel), rasterizers(b));
             drawers[b].fragments.shadeLater(waiting, provenance);
-        }
-        this.wholeDrawer = bands.count() == 1 ? drawers[0]
-                : new Band(Provenance.EVERY_BAND, 0, zbuffer.height(), stages.next(panel),
-                        rasterizers(drawers.length));
-        if (wholeDrawer != drawers[0]) {
-            wholeDrawer.fragments.writesOver(waiting); // shades at once, telling the bands' waits
         }
         this.preparation = new BandPreparation(bands.count(), b -> {
             zbuffer.resetRows(bands.start(b), bands.end(b));
@@ -203,15 +192,7 @@ public final class LitPrimitives {
         drawers[band].draw(b);
     }
 
-    private void drawWhole(Batch b) {
-        wholeDrawer.draw(b);
-    }
-
-    /**
-     * Draws what is recorded, band by band (or as one band, when
-     * {@link BandChoice} says splitting it does not pay), and returns when
-     * all is drawn.
-     */
+    /** Draws what is recorded, band by band, and returns when all is drawn. */
     public void flush() {
         if (shadesLater) {
             batches.filling().last = true;
@@ -375,8 +356,6 @@ public final class LitPrimitives {
     /** One band's drawer: its own rasterizers and fragment stage, its rows only. */
     private final class Band {
         private final int band;
-        private final int from;
-        private final int to;
         private final FragmentStage fragments;
         private final LitPolygonRasterizer fill;
         private final LitLineRasterizer lines;
@@ -387,8 +366,6 @@ public final class LitPrimitives {
 
         Band(int band, int from, int to, FragmentStage fragments, LitRasterizers rasterizers) {
             this.band = band;
-            this.from = from;
-            this.to = to;
             this.fragments = fragments;
             this.fill = rasterizers.fill();
             this.lines = rasterizers.lines();
@@ -399,25 +376,16 @@ public final class LitPrimitives {
 
         void draw(Batch b) {
             look = -1;
-            if (band == Provenance.EVERY_BAND) {
-                preparation.everyBand();
-                for (int k = 0; k < b.size; k++) {
-                    if (BatchDrawing.mayTouch(b.lowY[k], b.highY[k], from, to)) {
-                        draw(b, k);
-                    }
+            preparation.band(band);
+            if (b.size > 0) { // an empty batch may never have been binned
+                int[] mine = b.inBand[band];
+                int m = b.inBandCount[band];
+                for (int j = 0; j < m; j++) {
+                    draw(b, mine[j]);
                 }
-            } else {
-                preparation.band(band);
-                if (b.size > 0) { // an empty batch may never have been binned
-                    int[] mine = b.inBand[band];
-                    int m = b.inBandCount[band];
-                    for (int j = 0; j < m; j++) {
-                        draw(b, mine[j]);
-                    }
-                }
-                if (b.last) {
-                    fragments.shadeWaiting();
-                }
+            }
+            if (b.last) {
+                fragments.shadeWaiting();
             }
         }
 

@@ -18,9 +18,7 @@ import java.util.concurrent.locks.ReentrantLock;
  * slot k mod slots. The caller fills the slot {@link #slot} gives, hands it
  * in with {@link #publish}, and asks for the next slot, which is free once
  * every band has drawn the batch that was in it; waiting for it, the caller
- * draws bands itself. A batch may instead be drawn whole, as one band, by
- * one thread ({@link BandChoice}): it is drawn once every band has drawn
- * every batch before it, and every band's next batch waits for it.
+ * draws bands itself.
  *
  * <p>Which thread draws which band does not change the picture; for speed,
  * each thread first draws its own bands (band b is thread b mod threads's,
@@ -36,12 +34,10 @@ import java.util.concurrent.locks.ReentrantLock;
 public final class BandQueue {
 
     /** Draws the batches: what the queue hands each thread. */
+    @FunctionalInterface
     public interface Drawer {
         /** Draws band {@code band}'s rows of the batch in {@code slot}. */
         void band(int slot, int band);
-
-        /** Draws the batch in {@code slot} over the whole panel. */
-        void whole(int slot);
     }
 
     /** How long a thread waiting for a change spins before it parks ({@link #awaitChange}). */
@@ -69,18 +65,14 @@ public final class BandQueue {
     /** Who is told what the threads do, or null. */
     private final BandWatch watch;
     private final ReentrantLock lock = new ReentrantLock();
-    /** Signalled when a batch is handed in, a band or whole batch is drawn, or the picture is done. */
+    /** Signalled when a batch is handed in, a band is drawn, or the picture is done. */
     private final Condition changed = lock.newCondition();
 
     // Guarded by lock.
-    /** How many batches each band has drawn (a batch drawn whole counts for every band). */
+    /** How many batches each band has drawn. */
     private final int[] drawn;
     /** True while a thread draws the band. */
     private final boolean[] claimed;
-    /** True when the batch in the slot is drawn whole. */
-    private final boolean[] whole;
-    /** True while a thread draws a batch whole. */
-    private boolean wholeClaimed;
     /** Batches handed in so far. */
     private int published;
     /** Threads waiting for a change, parked. */
@@ -116,7 +108,6 @@ public final class BandQueue {
         this.watch = watch;
         this.drawn = new int[bands];
         this.claimed = new boolean[bands];
-        this.whole = new boolean[slots];
         this.finishSpin = threads.threads() <= Runtime.getRuntime().availableProcessors() ? FINISH_SPIN_NANOS
                 : SPIN_NANOS;
     }
@@ -145,15 +136,13 @@ public final class BandQueue {
 
     /**
      * Hands in the batch filled in the slot {@link #slot} gave, to be drawn
-     * band by band, or whole when {@code drawnWhole}; returns at once (with
-     * no worker, after drawing it).
+     * band by band; returns at once (with no worker, after drawing it).
      */
-    public void publish(boolean drawnWhole) {
+    public void publish() {
         lock.lock();
         try {
-            whole[published % slots] = drawnWhole;
             if (watch != null) {
-                watch.handedIn(published, drawnWhole);
+                watch.handedIn(published);
             }
             published++;
             if (stopping) {
@@ -168,7 +157,7 @@ public final class BandQueue {
         } finally {
             lock.unlock();
         }
-        threads.counted(drawnWhole ? 1 : bands, 0);
+        threads.counted(bands, 0);
         if (threads.isOne()) {
             finish();
         }
@@ -306,11 +295,9 @@ public final class BandQueue {
     }
 
     /**
-     * With the lock held: takes something to draw, for thread {@code home}:
-     * a band of its own whose next batch is handed in, else another thread's,
-     * the least drawn first; else a batch to be drawn whole, once every band
-     * has reached it and none is being drawn. Returns the batch times
-     * (bands + 1) plus the band, or plus bands for a batch drawn whole;
+     * With the lock held: takes a band to draw, for thread {@code home}: one
+     * of its own whose next batch is handed in, else another thread's, the
+     * least drawn first. Returns the batch times bands plus the band;
      * NOTHING when there is nothing to draw now, or a drawer has failed.
      */
     private int claim(int home) {
@@ -319,14 +306,10 @@ public final class BandQueue {
         }
         int best = NOTHING;
         boolean bestMine = false;
-        int lowest = Integer.MAX_VALUE;
-        boolean anyClaimed = false;
         int count = threads.threads();
         for (int b = 0; b < bands; b++) {
             int k = drawn[b];
-            lowest = Math.min(lowest, k);
-            anyClaimed |= claimed[b];
-            if (claimed[b] || k >= published || whole[k % slots]) {
+            if (claimed[b] || k >= published) {
                 continue;
             }
             boolean mine = b % count == home;
@@ -335,15 +318,11 @@ public final class BandQueue {
                 bestMine = mine;
             }
         }
-        if (best != NOTHING) {
-            claimed[best] = true;
-            return drawn[best] * (bands + 1) + best;
+        if (best == NOTHING) {
+            return NOTHING;
         }
-        if (!anyClaimed && !wholeClaimed && lowest < published && whole[lowest % slots]) {
-            wholeClaimed = true; // every band is at this batch: none can pass a batch drawn whole
-            return lowest * (bands + 1) + bands;
-        }
-        return NOTHING;
+        claimed[best] = true;
+        return drawn[best] * bands + best;
     }
 
     /**
@@ -351,35 +330,25 @@ public final class BandQueue {
      * meanwhile, then marks it drawn and wakes whoever waits.
      */
     private void draw(int item) {
-        int batch = item / (bands + 1);
-        int band = item % (bands + 1);
+        int batch = item / bands;
+        int band = item % bands;
         Throwable failed = null;
-        int watched = band == bands ? -1 : band; // as the watch names a batch drawn whole
         lock.unlock();
         if (watch != null) {
-            watch.drawing(batch, watched);
+            watch.drawing(batch, band);
         }
         try {
-            if (band == bands) {
-                drawer.whole(batch % slots);
-            } else {
-                drawer.band(batch % slots, band);
-            }
+            drawer.band(batch % slots, band);
         } catch (RuntimeException | Error e) {
             failed = e;
         } finally {
             if (watch != null) {
-                watch.drawn(batch, watched);
+                watch.drawn(batch, band);
             }
             lock.lock();
         }
-        if (band == bands) {
-            Arrays.fill(drawn, batch + 1);
-            wholeClaimed = false;
-        } else {
-            drawn[band] = batch + 1;
-            claimed[band] = false;
-        }
+        drawn[band] = batch + 1;
+        claimed[band] = false;
         if (failed != null && failure == null) {
             failure = failed;
         }
@@ -395,9 +364,6 @@ public final class BandQueue {
     }
 
     private boolean nothingClaimed() {
-        if (wholeClaimed) {
-            return false;
-        }
         for (boolean c : claimed) {
             if (c) {
                 return false;

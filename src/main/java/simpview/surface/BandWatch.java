@@ -13,13 +13,13 @@ package simpview.surface;
 public interface BandWatch {
 
     /**
-     * Batch {@code batch} is handed in, to be drawn in bands or
-     * {@code whole}; batches are counted from 0 in each queue, and a picture
-     * drawn from a record makes its own queue.
+     * Batch {@code batch} is handed in, to be drawn in bands; batches are
+     * counted from 0 in each queue, and a picture drawn from a record makes
+     * its own queue.
      */
-    void handedIn(int batch, boolean whole);
+    void handedIn(int batch);
 
-    /** This thread starts drawing band {@code band} of batch {@code batch}; band -1: the batch drawn whole. */
+    /** This thread starts drawing band {@code band} of batch {@code batch}. */
     void drawing(int batch, int band);
 
     /** This thread has drawn what {@link #drawing} said. */

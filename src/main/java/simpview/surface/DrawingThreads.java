@@ -17,12 +17,13 @@ import java.util.concurrent.LinkedBlockingQueue;
  * <p>Which thread draws which band does not matter to the picture: a band's
  * pixels are written by that band's drawer only, in drawing order.
  *
- * <p>Made by {@link #of}, every picture is drawn in bands by all the threads
- * (the count the user gave with {@code --threads}). Made by {@link #upTo}
- * (no count given), each recorded batch of a picture is drawn in bands or as
- * one band by one thread, as {@link BandChoice} finds it pays; the picture is
- * the same either way. Batches are handed to a {@link BandQueue}, drawn
- * while the caller goes on reading the next one.
+ * <p>With more than one thread, every recorded batch of a picture is drawn
+ * in bands by all of them, handed to a {@link BandQueue} and drawn while the
+ * caller goes on reading the next one; the caller draws bands too whenever
+ * it waits. No batch is kept whole for one thread, however little work it
+ * holds: the default once kept a batch of under 50,000 pixels so, and every
+ * course page drew as fast or faster in bands (on two threads, turned as the
+ * orbit turns them, 0.57-1.03 of the time; docs/performance.md, session 39).
  */
 public final class DrawingThreads implements AutoCloseable {
 
@@ -49,8 +50,6 @@ public final class DrawingThreads implements AutoCloseable {
     private static final long IDLE_SPIN_NANOS = 100_000;
 
     private final int threads;
-    /** True when each batch's band count is chosen by {@link BandChoice}; false when every batch uses all threads. */
-    private final boolean perPicture;
     /** The workers; empty for one thread. */
     private final List<Thread> workers = new ArrayList<>();
     /** What the workers are to run, each by one of them. */
@@ -70,12 +69,11 @@ public final class DrawingThreads implements AutoCloseable {
     /** Who is told what the queues' threads do, or null: nobody. */
     private volatile BandWatch watch;
 
-    private DrawingThreads(int threads, boolean perPicture) {
+    private DrawingThreads(int threads) {
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
         this.threads = threads;
-        this.perPicture = perPicture && threads > 1;
         for (int w = 1; w < threads; w++) {
             Thread t = new Thread(this::work, "simpview-band-" + w);
             t.setDaemon(true);
@@ -111,37 +109,23 @@ public final class DrawingThreads implements AutoCloseable {
         }
     }
 
-    /** Drawing every picture with {@code threads} threads (the caller's and threads - 1 workers): a count given. */
+    /** Drawing every picture with {@code threads} threads: the caller's and threads - 1 workers. */
     public static DrawingThreads of(int threads) {
-        return new DrawingThreads(threads, false);
-    }
-
-    /**
-     * Drawing with at most {@code threads} threads: each recorded batch in
-     * bands by all of them, or as one band by the caller alone, as
-     * {@link BandChoice} finds it pays (no count given: the default).
-     */
-    public static DrawingThreads upTo(int threads) {
-        return new DrawingThreads(threads, true);
+        return new DrawingThreads(threads);
     }
 
     /** The caller's thread alone. */
     public static DrawingThreads one() {
-        return new DrawingThreads(1, false);
+        return new DrawingThreads(1);
     }
 
-    /** At most as many threads as the JVM sees processors, chosen per picture ({@link #upTo}). */
+    /** As many threads as the JVM sees processors: what simpview draws with when no {@code --threads} is given. */
     public static DrawingThreads perProcessor() {
-        return upTo(Runtime.getRuntime().availableProcessors());
+        return of(Runtime.getRuntime().availableProcessors());
     }
 
     public int threads() {
         return threads;
-    }
-
-    /** True when each batch's band count is chosen by {@link BandChoice} (made by {@link #upTo}, more than one thread). */
-    public boolean choosesPerPicture() {
-        return perPicture;
     }
 
     /** True when there is only the caller's thread: then scenes are drawn as they are read, unrecorded. */

@@ -12,8 +12,6 @@ public final class Provenance {
 
     /** No primitive wrote the pixel. */
     public static final int BACKGROUND = -1;
-    /** The band number, for {@link #begin(int, int)}, of a drawer of every row. */
-    public static final int EVERY_BAND = -1;
 
     private final int width;
     private final int height;
@@ -102,16 +100,11 @@ public final class Provenance {
 
     /**
      * The writes from now on to the rows of band {@code band} (of those
-     * given to {@link #useBands}), or to every row ({@link #EVERY_BAND}), are
-     * primitive {@code primitive}'s. Only the thread drawing those rows calls
-     * it, while no other draws.
+     * given to {@link #useBands}) are primitive {@code primitive}'s. Only the
+     * thread drawing those rows calls it, while no other draws.
      */
     public void begin(int band, int primitive) {
-        if (band == EVERY_BAND) {
-            Arrays.fill(current, primitive);
-        } else {
-            current[band] = primitive;
-        }
+        current[band] = primitive;
     }
 
     /**

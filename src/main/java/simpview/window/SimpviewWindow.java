@@ -147,7 +147,7 @@ public final class SimpviewWindow {
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
         this.stepper = new PageStepper(options.sceneList().size());
-        this.renderer = new BackgroundRenderer(drawer, options.threads(), options.threadsGiven());
+        this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
     }

@@ -16,13 +16,11 @@ import simpview.scene.simp.Setting;
  * @param scene a scene to open at start as an extra view (stepping goes on to the pages)
  * @param sceneList scenes that are the window's first pages, before the eight; empty for none
  * @param ownScenes where the project's own scenes (pages 4 and 5) are
- * @param threads how many threads draw each picture (the window's render thread and its helpers), at most
- * @param threadsGiven true when the user gave the count ({@code --threads}): every picture is drawn by that
- *     many; false: each picture by as many as pay, up to {@code threads} ({@link simpview.surface.BandChoice})
+ * @param threads how many threads draw each picture: the window's render thread and its helpers
  * @param a1Rule the first assignment's rule for its Bresenham panels and fills
  */
 public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
-        int threads, boolean threadsGiven, A1Rule a1Rule) {
+        int threads, A1Rule a1Rule) {
 
     /** Warns nobody; names each setting as the command line that opened the window does, by its option. */
     private static final SceneMonitor NAMING_OPTIONS = new SceneMonitor() {
@@ -41,13 +39,13 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
 
     /** SPEC's rule for the first assignment. */
     public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes,
-            int threads, boolean threadsGiven) {
-        this(seed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, A1Rule.SPEC);
+            int threads) {
+        this(seed, simpDir, scene, sceneList, ownScenes, threads, A1Rule.SPEC);
     }
 
-    /** Drawn by up to one thread per processor, as many as pay for each picture. */
+    /** Drawn by one thread per processor. */
     public WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<Path> sceneList, Path ownScenes) {
-        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors(), false);
+        this(seed, simpDir, scene, sceneList, ownScenes, Runtime.getRuntime().availableProcessors());
     }
 
     /** Started from the repository's folder: the project's scenes in simp/. */
@@ -65,11 +63,11 @@ public record WindowOptions(long seed, Path simpDir, Optional<Path> scene, List<
     }
 
     WindowOptions withSeed(long newSeed) {
-        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, a1Rule);
+        return new WindowOptions(newSeed, simpDir, scene, sceneList, ownScenes, threads, a1Rule);
     }
 
     WindowOptions withA1Rule(A1Rule rule) {
-        return new WindowOptions(seed, simpDir, scene, sceneList, ownScenes, threads, threadsGiven, rule);
+        return new WindowOptions(seed, simpDir, scene, sceneList, ownScenes, threads, rule);
     }
 
     /** The pages' context; its messages name settings as the command line that opened the window does. */

@@ -91,6 +91,19 @@ class BatchDrawingTest {
         }
     }
 
+    @Test
+    void pixelsAreAreasOfFillsAndLengthsOfLines() {
+        // x, y and one more number per corner (stride 3): a right triangle of legs 10 and 20, either winding.
+        double[] v = {5, 5, 0, 15, 5, 0, 5, 25, 0};
+        assertEquals(100, BatchDrawing.pixels(v, 0, 3, 3, true, false), 1e-12);
+        double[] w = {5, 5, 0, 5, 25, 0, 15, 5, 0};
+        assertEquals(100, BatchDrawing.pixels(w, 0, 3, 3, true, false), 1e-12);
+        // The line from the first corner to the second: 10 steps along x, both ends: 11 pixels.
+        assertEquals(11, BatchDrawing.pixels(v, 0, 2, 3, false, false), 1e-12);
+        // The outline: 11 + 21 + 21 (the hypotenuse's longer side is 20).
+        assertEquals(53, BatchDrawing.pixels(v, 0, 3, 3, false, true), 1e-12);
+    }
+
     /** Adds primitives to the batch being filled until the drawing says it is full: how many it took. */
     private static int fillUntilFull(BatchDrawing<Counted> p) {
         Counted b = p.filling();
@@ -173,10 +186,6 @@ class BatchDrawingTest {
             made.add(c);
             return c;
         }, (b, band) -> {
-            synchronized (drawn) {
-                drawn.add(b);
-            }
-        }, b -> {
             synchronized (drawn) {
                 drawn.add(b);
             }

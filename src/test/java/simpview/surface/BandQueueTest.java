@@ -10,7 +10,6 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Random;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
@@ -20,24 +19,25 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The band queue: every band of every batch drawn once, each band's batches
- * in order, batches drawn whole apart from everything, no wait at a batch's
- * end, slots given back only when drawn, failures passed on.
+ * in order, no wait at a batch's end, slots given back only when drawn,
+ * failures passed on.
  */
 class BandQueueTest {
 
-    /** Logs what was drawn: per band, the batches in the order drawn (a batch drawn whole logged for every band). */
+    /** Logs what was drawn: per band, the batches in the order drawn. */
     private static final class Log implements BandQueue.Drawer {
         final int bands;
         /** The batch in each slot, set by the test before it hands the slot in. */
         final int[] batchIn;
         final List<List<Integer>> perBand = new ArrayList<>();
         final Set<String> threads = ConcurrentHashMap.newKeySet();
-        /** Bands being drawn now, and batches drawn whole now: a whole batch must see none of either. */
-        final AtomicIntegerArray busy = new AtomicIntegerArray(2);
+        /** How many threads draw each band now: never more than one. */
+        final AtomicIntegerArray busy;
 
         Log(int bands, int slots) {
             this.bands = bands;
             this.batchIn = new int[slots];
+            this.busy = new AtomicIntegerArray(bands);
             for (int b = 0; b < bands; b++) {
                 perBand.add(Collections.synchronizedList(new ArrayList<>()));
             }
@@ -45,22 +45,10 @@ class BandQueueTest {
 
         @Override
         public void band(int slot, int band) {
-            busy.incrementAndGet(0);
-            assertEquals(0, busy.get(1), "a band drawn while a batch is drawn whole");
+            assertEquals(1, busy.incrementAndGet(band), "band " + band + " drawn by two threads at once");
             threads.add(Thread.currentThread().getName());
             perBand.get(band).add(batchIn[slot]);
-            busy.decrementAndGet(0);
-        }
-
-        @Override
-        public void whole(int slot) {
-            busy.incrementAndGet(1);
-            assertEquals(0, busy.get(0), "a batch drawn whole while bands are drawn");
-            threads.add(Thread.currentThread().getName());
-            for (List<Integer> band : perBand) {
-                band.add(batchIn[slot]);
-            }
-            busy.decrementAndGet(1);
+            busy.decrementAndGet(band);
         }
     }
 
@@ -70,13 +58,10 @@ class BandQueueTest {
             try (DrawingThreads threads = DrawingThreads.of(threadCount)) {
                 Log log = new Log(5, 3);
                 BandQueue queue = threads.queue(5, 3, log);
-                Random random = new Random(22);
-                boolean[] drawnWhole = new boolean[60];
                 for (int k = 0; k < 60; k++) {
                     int slot = queue.slot();
                     log.batchIn[slot] = k;
-                    drawnWhole[k] = random.nextInt(4) == 0;
-                    queue.publish(drawnWhole[k]);
+                    queue.publish();
                 }
                 queue.finish();
                 for (int b = 0; b < 5; b++) {
@@ -90,11 +75,7 @@ class BandQueueTest {
                 for (String name : log.threads) {
                     assertTrue(name.equals(caller) || name.startsWith("simpview-band-"), name);
                 }
-                int whole = 0;
-                for (boolean w : drawnWhole) {
-                    whole += w ? 1 : 0;
-                }
-                assertEquals(whole + 5L * (60 - whole), threads.tasks());
+                assertEquals(5L * 60, threads.tasks());
             }
         }
     }
@@ -108,8 +89,8 @@ class BandQueueTest {
         }
 
         @Override
-        public void handedIn(int batch, boolean whole) {
-            add("handedIn " + batch + (whole ? " whole" : ""));
+        public void handedIn(int batch) {
+            add("handedIn " + batch);
         }
 
         @Override
@@ -140,16 +121,12 @@ class BandQueueTest {
             threads.watchedBy(told);
             Log log = new Log(5, 3);
             BandQueue queue = threads.queue(5, 3, log);
-            Random random = new Random(16);
             List<String> handedIn = new ArrayList<>();
-            int draws = 0;
             for (int k = 0; k < 40; k++) {
                 int slot = queue.slot();
                 log.batchIn[slot] = k;
-                boolean whole = random.nextInt(4) == 0;
-                handedIn.add("handedIn " + k + (whole ? " whole" : ""));
-                draws += whole ? 1 : 5;
-                queue.publish(whole);
+                handedIn.add("handedIn " + k);
+                queue.publish();
             }
             queue.finish();
             threads.watchedBy(null);
@@ -171,9 +148,6 @@ class BandQueueTest {
                     String item = what.substring(6);
                     assertEquals(item, drawingOn.remove(thread), thread + " ended what it had not begun");
                     assertTrue(drawnItems.add(item), item + " drawn twice");
-                    String[] parts = item.split("/");
-                    boolean whole = handedIn.get(Integer.parseInt(parts[0])).endsWith("whole");
-                    assertEquals(whole, parts[1].equals("-1"), item);
                 } else if (what.equals("parked")) {
                     assertEquals(null, parkedOn.put(thread, true), thread + " parked twice");
                 } else {
@@ -182,7 +156,7 @@ class BandQueueTest {
                 }
             }
             assertEquals(handedIn, handOffs);
-            assertEquals(draws, drawnItems.size());
+            assertEquals(40 * 5, drawnItems.size());
             assertTrue(drawingOn.isEmpty(), "every draw ended: " + drawingOn);
             // A worker parked at the end may wake after finish returns: its last park may be unmatched.
             assertTrue(parkedOn.keySet().stream().allMatch(t -> t.startsWith("simpview-band-")), "" + parkedOn);
@@ -195,30 +169,22 @@ class BandQueueTest {
             CountDownLatch nextBatchDrawn = new CountDownLatch(1);
             int[] batchIn = new int[3];
             boolean[] waited = new boolean[1];
-            BandQueue queue = threads.queue(2, 3, new BandQueue.Drawer() {
-                @Override
-                public void band(int slot, int band) {
-                    if (batchIn[slot] == 0 && band == 0) {
-                        try {
-                            // With a wait at each batch's end, band 1 of batch 1 could not be drawn before this returns.
-                            waited[0] = nextBatchDrawn.await(20, TimeUnit.SECONDS);
-                        } catch (InterruptedException e) {
-                            Thread.currentThread().interrupt();
-                        }
-                    }
-                    if (batchIn[slot] == 1 && band == 1) {
-                        nextBatchDrawn.countDown();
+            BandQueue queue = threads.queue(2, 3, (slot, band) -> {
+                if (batchIn[slot] == 0 && band == 0) {
+                    try {
+                        // With a wait at each batch's end, band 1 of batch 1 could not be drawn before this returns.
+                        waited[0] = nextBatchDrawn.await(20, TimeUnit.SECONDS);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
                     }
                 }
-
-                @Override
-                public void whole(int slot) {
-                    throw new AssertionError("nothing is drawn whole here");
+                if (batchIn[slot] == 1 && band == 1) {
+                    nextBatchDrawn.countDown();
                 }
             });
             for (int k = 0; k < 2; k++) {
                 batchIn[queue.slot()] = k;
-                queue.publish(false);
+                queue.publish();
             }
             queue.finish();
             assertTrue(waited[0], "band 1 of batch 1 was drawn while band 0 of batch 0 was being drawn");
@@ -237,7 +203,7 @@ class BandQueueTest {
                     assertTrue(log.perBand.get(b).size() >= k - 1, "batch " + k + ", band " + b);
                 }
                 log.batchIn[slot] = k;
-                queue.publish(false);
+                queue.publish();
             }
             queue.finish();
         }
@@ -249,7 +215,7 @@ class BandQueueTest {
             Log log = new Log(3, 2);
             BandQueue queue = threads.queue(3, 2, log);
             log.batchIn[queue.slot()] = 0;
-            queue.publish(false);
+            queue.publish();
             for (int b = 0; b < 3; b++) {
                 assertEquals(List.of(0), log.perBand.get(b));
             }
@@ -263,33 +229,25 @@ class BandQueueTest {
         try (DrawingThreads threads = DrawingThreads.of(2)) {
             int[] batchIn = new int[2];
             AtomicIntegerArray drawn = new AtomicIntegerArray(16);
-            BandQueue queue = threads.queue(8, 2, new BandQueue.Drawer() {
-                @Override
-                public void band(int slot, int band) {
-                    drawn.incrementAndGet(batchIn[slot]);
-                    if (batchIn[slot] == 1 && band == 5) {
-                        throw new IllegalStateException("band 5 of batch 1");
-                    }
-                }
-
-                @Override
-                public void whole(int slot) {
-                    drawn.incrementAndGet(batchIn[slot]);
+            BandQueue queue = threads.queue(8, 2, (slot, band) -> {
+                drawn.incrementAndGet(batchIn[slot]);
+                if (batchIn[slot] == 1 && band == 5) {
+                    throw new IllegalStateException("band 5 of batch 1");
                 }
             });
             IllegalStateException e = assertThrows(IllegalStateException.class, () -> {
                 for (int k = 0; k < 10; k++) {
                     batchIn[queue.slot()] = k;
-                    queue.publish(false);
+                    queue.publish();
                 }
                 queue.finish();
             });
             assertEquals("band 5 of batch 1", e.getMessage());
             int before = drawn.get(15);
             batchIn[queue.slot()] = 15;
-            queue.publish(true);
+            queue.publish();
             queue.finish();
-            assertEquals(before + 1, drawn.get(15), "drawn again after the failure");
+            assertEquals(before + 8, drawn.get(15), "drawn again after the failure, every band");
         }
     }
 }

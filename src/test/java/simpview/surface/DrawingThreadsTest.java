@@ -24,11 +24,12 @@ class DrawingThreadsTest {
     void oneThreadHasNoWorker() {
         try (DrawingThreads threads = DrawingThreads.one()) {
             assertTrue(threads.isOne());
-            assertFalse(threads.choosesPerPicture());
         }
-        try (DrawingThreads two = DrawingThreads.upTo(2)) {
+        try (DrawingThreads two = DrawingThreads.of(2)) {
             assertFalse(two.isOne());
-            assertTrue(two.choosesPerPicture());
+        }
+        try (DrawingThreads everyProcessor = DrawingThreads.perProcessor()) {
+            assertEquals(Runtime.getRuntime().availableProcessors(), everyProcessor.threads(), "no --threads given");
         }
     }
 

@@ -35,17 +35,13 @@ public final class BackgroundRenderer {
 
     /** Draws on the render thread alone. */
     public BackgroundRenderer(SceneDrawer drawer) {
-        this(drawer, 1, true);
+        this(drawer, 1);
     }
 
-    /**
-     * Draws each picture with {@code threads} threads, the render thread and
-     * threads - 1 helpers: all of them for every picture when the count was
-     * {@code given}, else as many as pay for each ({@link DrawingThreads#upTo}).
-     */
-    public BackgroundRenderer(SceneDrawer drawer, int threads, boolean given) {
+    /** Draws each picture with {@code threads} threads, the render thread and threads - 1 helpers. */
+    public BackgroundRenderer(SceneDrawer drawer, int threads) {
         this.drawer = drawer;
-        this.drawing = given ? DrawingThreads.of(threads) : DrawingThreads.upTo(threads);
+        this.drawing = DrawingThreads.of(threads);
         this.renderer = new PageRenderer(drawing);
     }
 

@@ -81,13 +81,10 @@ class BandedDrawingTest {
     void severalThreadsDrawWhatOneDraws(Case c) throws Exception {
         Drawing one = draw(c, 1);
         assertTrue(one.logged() > 0, "something was drawn");
-        // Every batch in bands by 2 or 7 threads (a count given), and up to 2 as pay for each batch (none given:
-        // the default on two cores; a scene of small faces drawn whole, then as it is read).
-        String[] hows = {"2 threads", "7 threads", "up to 2 threads, chosen per picture"};
-        for (String how : hows) {
-            try (DrawingThreads threads = how.startsWith("up to") ? DrawingThreads.upTo(2)
-                    : DrawingThreads.of(Integer.parseInt(how.substring(0, 1)))) {
-                assertSameDrawing(one, draw(c, threads), how);
+        // Every batch in bands by 2 threads (the default on two cores) or 7 (more than the bands' rows need).
+        for (int count : new int[] {2, 7}) {
+            try (DrawingThreads threads = DrawingThreads.of(count)) {
+                assertSameDrawing(one, draw(c, threads), count + " threads");
             }
         }
     }

@@ -1,8 +1,7 @@
-package simpview.surface;
+package simpview.scene.simp;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.DataBufferInt;
@@ -14,80 +13,40 @@ import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.SceneException;
-import simpview.scene.simp.SceneLibrary;
-import simpview.scene.simp.SceneMonitor;
-import simpview.scene.simp.ScenePipeline;
 import simpview.stage.CuedPrimitives;
+import simpview.surface.Colors;
+import simpview.surface.DrawingThreads;
+import simpview.surface.PageCanvas;
 
 /**
- * The rule that picks, when no thread count was given, one band (drawn by a
- * worker while the next batch is read) for a batch of little work and bands
- * on every thread for the rest; a count that was given is always used.
+ * When a record hands a batch off to be drawn in bands (BatchDrawing): a
+ * picture's first batches are small, each later one twice the one before, a
+ * lit batch goes once it covers many pixels, a depth-cued one by its count
+ * alone; every batch in bands on every thread, to the one thread's pixels.
  */
-class BandChoiceTest {
+class BatchHandOffTest {
 
     @TempDir
     Path dir;
 
     @Test
-    void batchesOfLittleWorkAreDrawnWholeAndTheRestInBands() {
-        try (DrawingThreads chosen = DrawingThreads.upTo(2)) {
-            assertTrue(chosen.choosesPerPicture());
-            // A4 page-d's batch of 4,096 faces, turned: about 62,000 pixels (15 a face).
-            assertTrue(BandChoice.splits(chosen, 61_800));
-            // A4 page-f2's: 1,012 faces over 515,850 pixels (510 a face).
-            assertTrue(BandChoice.splits(chosen, 515_850));
-            // Too few pixels in all to be worth a second thread (1,000 of A4 page-d's faces: about 15,000).
-            assertFalse(BandChoice.splits(chosen, BandChoice.LEAST_PIXELS - 1));
-            assertFalse(BandChoice.splits(chosen, 15_000));
-        }
-    }
-
-    @Test
-    void aCountGivenIsAlwaysUsed() {
-        try (DrawingThreads given = DrawingThreads.of(2); DrawingThreads one = DrawingThreads.one();
-                DrawingThreads upToOne = DrawingThreads.upTo(1)) {
-            assertFalse(given.choosesPerPicture());
-            assertTrue(BandChoice.splits(given, 1), "two threads given: bands even for a batch of one pixel");
-            assertFalse(BandChoice.splits(one, 515_850), "one thread: never bands");
-            assertFalse(upToOne.choosesPerPicture());
-            assertFalse(BandChoice.splits(upToOne, 515_850));
-        }
-    }
-
-    @Test
-    void pixelsAreAreasOfFillsAndLengthsOfLines() {
-        // x, y and one more number per corner (stride 3): a right triangle of legs 10 and 20, either winding.
-        double[] v = {5, 5, 0, 15, 5, 0, 5, 25, 0};
-        assertEquals(100, BandChoice.pixels(v, 0, 3, 3, true, false), 1e-12);
-        double[] w = {5, 5, 0, 5, 25, 0, 15, 5, 0};
-        assertEquals(100, BandChoice.pixels(w, 0, 3, 3, true, false), 1e-12);
-        // The line from the first corner to the second: 10 steps along x, both ends: 11 pixels.
-        assertEquals(11, BandChoice.pixels(v, 0, 2, 3, false, false), 1e-12);
-        // The outline: 11 + 21 + 21 (the hypotenuse's longer side is 20).
-        assertEquals(53, BandChoice.pixels(v, 0, 3, 3, false, true), 1e-12);
-    }
-
-    @Test
-    void aSceneOfLittleWorkIsDrawnAsOneBandBesideTheReadingToTheSamePixels() throws Exception {
+    void aSceneOfSmallFacesIsDrawnInBandsBatchByBatchToTheSamePixels() throws Exception {
         Path small = scene("small.simp", 4200, 1);
         Path large = scene("large.simp", 12, 120);
         int[] oneThread = pixels(small, DrawingThreads.one(), new long[1]);
         assertTrue(Arrays.stream(oneThread).filter(p -> p != Colors.BLACK && p != Colors.WHITE).count() > 1000,
                 "the faces are drawn");
         long[] tasks = new long[1];
-        // 4,200 faces: batches of 16, 32, ... 2,048 faces (4,080 in all, BatchDrawing), each handed off and
-        // drawn whole, then the other 120; the same pixels. Before the first, an empty batch in bands: each
-        // band's drawer makes its rows ready (what the canvas's clear owes) while the first batch is read.
+        // 4,200 faces: batches of 16, 32, ... 2,048 faces (4,080 in all), each handed off and drawn in bands,
+        // then the other 120; the same pixels. Before the first, an empty batch in bands: each band's drawer
+        // makes its rows ready (what the canvas's clear owes) while the first batch is read.
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL, CuedPrimitives.BANDS_PER_THREAD).count(); // depth-cued scenes
-            assertArrayEquals(oneThread, pixels(small, DrawingThreads.upTo(2), tasks));
-            assertEquals(bands + 9, tasks[0], "4,200 faces of a pixel or two, no count given: each batch one task");
             assertArrayEquals(oneThread, pixels(small, DrawingThreads.of(2), tasks));
-            assertEquals(bands + 9 * bands, tasks[0], "small faces, two threads given: every batch in bands");
+            assertEquals(bands + 9 * bands, tasks[0], "4,200 faces of a pixel or two: nine batches, in bands");
             // A depth-cued batch is handed off by its count alone, however many pixels it covers.
-            assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.upTo(2), tasks));
-            assertEquals(bands + bands, tasks[0], "12 large depth-cued fills, no count given: one batch, in bands");
+            assertArrayEquals(pixels(large, DrawingThreads.one(), new long[1]), pixels(large, DrawingThreads.of(2), tasks));
+            assertEquals(bands + bands, tasks[0], "12 large depth-cued fills: one batch, in bands");
         }
     }
 
@@ -110,7 +69,7 @@ class BandChoiceTest {
                 > 100_000, "the fills are drawn");
         try (DrawingThreads two = DrawingThreads.of(2)) {
             int bands = two.bands(PageCanvas.PANEL).count();
-            assertArrayEquals(oneThread, pixels(fills, DrawingThreads.upTo(2), tasks));
+            assertArrayEquals(oneThread, pixels(fills, DrawingThreads.of(2), tasks));
             // Lit by the ambient term alone: no pixel waits to be shaded, so no last batch is handed off for it;
             // the first, empty, makes the bands' rows ready.
             assertEquals(bands + 6 * bands, tasks[0], "6 lit fills of 211,250 pixels: each its own batch, in bands");
