@@ -21,9 +21,10 @@ import java.util.concurrent.LinkedBlockingQueue;
  * in bands by all of them, handed to a {@link BandQueue} and drawn while the
  * caller goes on reading the next one; the caller draws bands too whenever
  * it waits. No batch is kept whole for one thread, however little work it
- * holds: the default once kept a batch of under 50,000 pixels so, and every
- * course page drew as fast or faster in bands (on two threads, turned as the
- * orbit turns them, 0.57-1.03 of the time; docs/performance.md, session 39).
+ * holds: the default once kept a batch of under 50,000 pixels so, and took
+ * up to 1.67 times as long for it (A4 page-c3 turned, two threads), faster
+ * on no course page beyond the measurements' noise (docs/performance.md,
+ * session 39).
  */
 public final class DrawingThreads implements AutoCloseable {
 
@@ -58,7 +59,7 @@ public final class DrawingThreads implements AutoCloseable {
     private volatile boolean closed;
     /** Wall time from each picture's first batch to the end of its finish, summed: the parallel part of drawing. */
     private long nanosInBands;
-    /** Tasks handed to queues (bands of batches, batches drawn whole), summed. */
+    /** Tasks handed to queues (a band of a batch each), summed. */
     private long tasks;
     /**
      * What a picture's drawing made and gave back for the next picture, by
@@ -221,7 +222,7 @@ public final class DrawingThreads implements AutoCloseable {
         return nanosInBands;
     }
 
-    /** How many tasks (bands of batches, and batches drawn whole) were handed in so far: for benchmarks and tests, as {@link #nanosInBands}. */
+    /** How many tasks (a band of a batch each) were handed in so far: for benchmarks and tests, as {@link #nanosInBands}. */
     public long tasks() {
         return tasks;
     }
