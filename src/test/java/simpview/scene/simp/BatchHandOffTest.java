@@ -76,7 +76,7 @@ class BatchHandOffTest {
         }
     }
 
-    /** The scene's pixels drawn by {@code drawing}; in tasks[0] how many tasks (bands or whole batches) it ran. */
+    /** The scene's pixels drawn by {@code drawing}; in tasks[0] how many tasks (bands of batches) it ran. */
     private static int[] pixels(Path scene, DrawingThreads drawing, long[] tasks) throws SceneException {
         try (drawing) {
             PageCanvas canvas = new PageCanvas();
