@@ -30,6 +30,7 @@ import simpview.scene.simp.ScenePipeline;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.DrawingThreads;
+import simpview.window.render.DrawSettings;
 
 /**
  * One frame of a turning view, as the window's render thread makes it while
@@ -88,6 +89,8 @@ public class OrbitFrame {
 
     private PageRenderer renderer;
     private DrawingThreads drawing;
+    /** The window's settings for such a frame: which copies it keeps ({@link DrawSettings#keepsDepths}). */
+    private DrawSettings settings;
     private final SceneLibrary library = new SceneLibrary();
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
     private final Turned monitor = new Turned();
@@ -124,6 +127,7 @@ public class OrbitFrame {
     @Setup(Level.Trial)
     public void setUp() throws SceneException {
         drawing = DrawingThreads.of(threads);
+        settings = DrawSettings.WINDOW.withRecord(record).withDepthView(depthView);
         renderer = new PageRenderer(drawing);
         Path course = Path.of(System.getProperty("simpview.courseSimp", "../shared/course-simp"));
         context = new PageContext(PageContext.DEFAULT_SEED, course, PageContext.PROJECT_SCENES, monitor);
@@ -167,7 +171,7 @@ public class OrbitFrame {
         if (!copy) {
             return null;
         }
-        return new Frame(canvas.snapshot(), record || depthView ? canvas.zbuffer().copyDepths() : null,
+        return new Frame(canvas.snapshot(), settings.keepsDepths() ? canvas.zbuffer().copyDepths() : null,
                 record ? provenance.copyOwners() : null);
     }
 }
