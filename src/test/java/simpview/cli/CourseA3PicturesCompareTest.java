@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import simpview.compare.CourseFiles;
@@ -29,6 +30,9 @@ public class CourseA3PicturesCompareTest {
     /** How far below the measured share a page may fall, in percentage points. */
     static final double MARGIN = 0.5;
 
+    @TempDir
+    Path dir;
+
     @ParameterizedTest(name = "{0}")
     @CsvSource({
         // scene, the course's picture, the share within 8/255 with slack measured here (percent)
@@ -45,7 +49,7 @@ public class CourseA3PicturesCompareTest {
     void sceneAgainstTheCoursesPicture(String scene, String pictureName, double measured) throws Exception {
         Path file = CourseFiles.require("course-simp-a3/" + scene);
         Path picture = CourseFiles.require("reference/images/a3/" + pictureName);
-        Path ours = Path.of(System.getProperty("java.io.tmpdir")).resolve("simpview-a3-" + scene + ".png");
+        Path ours = dir.resolve(scene + ".png");
         CliRun render = CliRun.of("render", "--scene", file.toString(), "--out", ours.toString());
         assertEquals(ExitCode.OK, render.exitCode(), render.err());
         CliRun run = CliRun.of("compare", picture.toString(), "--scene", file.toString());
