@@ -90,8 +90,13 @@ class HtmlReportBrowserTest {
         command.addAll(List.of(args));
         command.add(page.toUri() + fragment);
         Path stdout = Files.createTempFile(dir, "stdout", ".txt");
-        Process process = new ProcessBuilder(command).redirectOutput(stdout.toFile())
-                .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(stdout.toFile())
+                .redirectError(ProcessBuilder.Redirect.DISCARD);
+        // Chromium keeps its crash reporter's settings and its caches under these, not under --user-data-dir:
+        // pointed into the test's folder, a run leaves nothing in the user's home.
+        builder.environment().put("XDG_CONFIG_HOME", Files.createTempDirectory(dir, "config").toString());
+        builder.environment().put("XDG_CACHE_HOME", Files.createTempDirectory(dir, "cache").toString());
+        Process process = builder.start();
         if (!process.waitFor(90, TimeUnit.SECONDS)) {
             process.destroyForcibly();
             fail("chromium did not finish within 90 s: " + command);
