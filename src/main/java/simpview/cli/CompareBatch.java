@@ -58,7 +58,6 @@ import simpview.compare.PanelHint;
 import simpview.compare.PanelWords;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
-import simpview.compare.PngFiles;
 import simpview.compare.RandomValues;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
@@ -93,8 +92,6 @@ public final class CompareBatch {
     /** Each submission's total, for a gradebook to import ({@link SubmissionTotals}), beside the table. */
     static final String TOTALS = "totals.csv";
     static final String DIFFS = "diffs";
-    /** What a row's note starts with when its diff image could not be written; the reason follows. */
-    private static final String DIFF_NOT_WRITTEN = "diff not written: ";
 
     /**
      * What a picture's name matched: a target, a page of the first assignment (compared panel by
@@ -174,25 +171,6 @@ public final class CompareBatch {
 
     /** Which pictures get a diff image: every one compared, only those that do not pass, or none. */
     enum DiffImages { ALL, FAILING, NONE }
-
-    /**
-     * Where a batch's diff images go ({@code outDir} null: nowhere), which pictures get one, and their names;
-     * {@code files} is told each one written.
-     */
-    private record DiffPlan(Path outDir, DiffImages which, DiffNames names, OutputPaths files) {
-
-        /** Whether a picture (or panel) that passes or not gets a diff image. */
-        boolean writes(boolean passes) {
-            return outDir != null && which != DiffImages.NONE && !(which == DiffImages.FAILING && passes);
-        }
-
-        /** Writes the diff image {@code name} in {@link #outDir}. */
-        void write(String name, byte[] png) throws IOException {
-            Path file = outDir.resolve(name);
-            PngFiles.writeEncoded(png, file);
-            files.wrote(file);
-        }
-    }
 
     private final OwnPictures own;
     /** The pages a failing picture may be of instead, drawn once, if ever. */
@@ -1168,7 +1146,7 @@ public final class CompareBatch {
         if (unwritten.isEmpty()) {
             return false;
         }
-        String first = unwritten.get(0).note().replaceFirst("^" + DIFF_NOT_WRITTEN, "");
+        String first = unwritten.get(0).note().replaceFirst("^" + DiffPlan.NOT_WRITTEN, "");
         err.println(says + Count.of(unwritten.size(), "diff image") + " could not be written ("
                 + first + (unwritten.size() == 1 ? "" : "; each row says why") + ")");
         return true;
@@ -1487,7 +1465,7 @@ public final class CompareBatch {
             diffs.write(diff, HeatMap.diffPng(best.comparison(), rule.tolerance()));
         } catch (IOException e) {
             return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
-                    .withoutDiff(DIFF_NOT_WRITTEN + e.getMessage()), other);
+                    .withoutDiff(DiffPlan.NOT_WRITTEN + e.getMessage()), other);
         }
         return hinted(BatchRow.compared(relative, label, best, diff, rule, score, bestName, empty), other);
     }
@@ -1605,7 +1583,7 @@ public final class CompareBatch {
                         .decodedAs(cut.format()));
             } catch (IOException e) {
                 rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
-                        DIFF_NOT_WRITTEN + e.getMessage(), hint, empty).decodedAs(cut.format()));
+                        DiffPlan.NOT_WRITTEN + e.getMessage(), hint, empty).decodedAs(cut.format()));
             }
         }
         if (rows.stream().anyMatch(r -> r.result() == BatchRow.Result.FAIL)) {
