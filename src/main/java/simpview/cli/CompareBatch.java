@@ -35,21 +35,16 @@ import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import simpview.cli.CompareOptions.PageRange;
-import simpview.compare.AntialiasWeighting;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
 import simpview.compare.ComparisonReport;
 import simpview.compare.Count;
-import simpview.compare.FillRule;
-import simpview.compare.FlooredEnds;
 import simpview.compare.GradescopeResults;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
-import simpview.compare.LineEnds;
-import simpview.compare.OctantLines;
 import simpview.compare.OnePerPage;
 import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
@@ -58,7 +53,6 @@ import simpview.compare.PanelHint;
 import simpview.compare.PanelWords;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
-import simpview.compare.RandomValues;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.StudentTable;
@@ -67,18 +61,12 @@ import simpview.compare.SubmissionTotals;
 import simpview.compare.Wanted;
 import simpview.compare.WithoutPictures;
 import simpview.pages.A1Layout;
-import simpview.pages.A1Lines;
-import simpview.pages.A1Page;
-import simpview.pages.A1Polygons;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
-import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
-import simpview.pages.PolygonTestPage;
 import simpview.pages.SceneList;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
-import simpview.surface.PageCanvas;
 
 /**
  * {@code simpview compare --dir ...}: every picture in a folder (and its
@@ -98,7 +86,7 @@ public final class CompareBatch {
      * panel), or why it was skipped; {@code alone}: the picture is a submission of its own (one scene for
      * every picture: one picture a student), not one of its folder's.
      */
-    private record Match(CompareTarget target, String skipped, int firstAssignmentPage, boolean alone) {
+    record Match(CompareTarget target, String skipped, int firstAssignmentPage, boolean alone) {
 
         Match(CompareTarget target, String skipped) {
             this(target, skipped, 0, false);
@@ -177,11 +165,10 @@ public final class CompareBatch {
     private final OtherPages others;
     private final Rubric rubric;
     private final boolean partial;
+    /** How the first assignment's pages are graded, panel by panel. */
+    private final FirstAssignmentGrading firstAssignmentGrading;
     private final PrintWriter out;
     private final PrintWriter err;
-    /** How the first assignment's pages are graded, for a picture of one where the eight pages are asked for. */
-    private static final String FIRST_ASSIGNMENT_GRADED = "--assignment 1 grades the first assignment's pages";
-
     /** What its messages start with: the command that runs it ("simpview compare: "). */
     private final String says;
     /**
@@ -197,8 +184,9 @@ public final class CompareBatch {
      */
     private final Set<String> firstAssignmentUnasked = ConcurrentHashMap.newKeySet();
     /**
-     * With --partial, the share an empty panel gets against each page's, scene's or first-assignment panel's own
-     * ({@link RubricRule#emptyShare}), by its label: measured once, at its first picture that fails.
+     * With --partial, the share an empty panel gets against each page's or scene's own ({@link RubricRule#emptyShare}),
+     * by its label: measured once, at its first picture that fails (a first-assignment panel's:
+     * {@link FirstAssignmentGrading}'s).
      */
     private final Map<String, Double> emptyShares = new ConcurrentHashMap<>();
     /**
@@ -228,6 +216,7 @@ public final class CompareBatch {
         this.others = new OtherPages(own);
         this.rubric = rubric;
         this.partial = partial;
+        this.firstAssignmentGrading = new FirstAssignmentGrading(own.context(), others, rubric, partial);
         this.out = out;
         this.err = err;
         this.pagesIfHandedIn = pagesIfHandedIn;
@@ -273,19 +262,19 @@ public final class CompareBatch {
                 asked.add(page);
             }
         }
-        warnUnusedRules(firstAssignmentSubjects(asked));
+        warnUnusedRules(FirstAssignmentGrading.subjects(asked));
         // nothing of the eight pages or of a scene is drawn, so no alternate is looked for by its name
         return run(dir, outputs, List.of(), asked, name -> Optional.empty(),
-                relative -> firstAssignmentMatch(fileName(relative), pages, "--pages " + pages));
+                relative -> FirstAssignmentGrading.match(fileName(relative), pages, "--pages " + pages));
     }
 
     /** The page a picture's name names: one of the eight (if among {@code pages}), or of the first assignment. */
     private Match pageMatch(Path dir, String relative, PageRange pages) {
         String name = fileName(relative);
         OptionalInt number = SubmissionNames.pageNumber(name);
-        if (number.isPresent() && namesFirstAssignment(relative)) {
+        if (number.isPresent() && FirstAssignmentGrading.namesFirstAssignment(relative)) {
             if (pagesIfHandedIn) {
-                return firstAssignmentMatch(name, null, null); // check without --pages: compared as its own page
+                return FirstAssignmentGrading.match(name, null, null); // check without --pages: compared as its own page
             }
             // --pages names the eight pages: only those are graded, and asked of everyone. A picture whose own name
             // says first assignment (a1-page5.png) is none of them, whatever it holds: one of the wrong size is no
@@ -299,14 +288,14 @@ public final class CompareBatch {
                 }
                 firstAssignmentUnasked.add(relative);
                 return new Match(null, "a page of the first assignment by its name, and --pages names the eight "
-                        + "pages (" + FIRST_ASSIGNMENT_GRADED + ")");
+                        + "pages (" + FirstAssignmentGrading.HOW_GRADED + ")");
             }
             // Only a folder on its way says so: one that holds no first-assignment page (A1-Smith/page1.png, a
             // student's folder) is the page its number names.
-            if (PanelGridComparison.holds(dir.resolve(flatClass + relative), firstAssignmentPanels())) {
+            if (PanelGridComparison.holds(dir.resolve(flatClass + relative), FirstAssignmentGrading.panels())) {
                 firstAssignmentUnasked.add(relative);
                 return new Match(null, "a page of the first assignment by its folder's name and its four panels, and "
-                        + "--pages names the eight pages (" + FIRST_ASSIGNMENT_GRADED + ")");
+                        + "--pages names the eight pages (" + FirstAssignmentGrading.HOW_GRADED + ")");
             }
         }
         if (number.isEmpty()) {
@@ -316,25 +305,6 @@ public final class CompareBatch {
             return new Match(null, "page " + number.getAsInt() + " is not among --pages " + pages);
         }
         return new Match(CompareTarget.page(number.getAsInt()), null);
-    }
-
-    /**
-     * The first assignment's page a picture's file name names (a1-page3.png, page3.png: page 3), when it is one of
-     * {@code pages} (null: any of the five); else why it is skipped, {@code option} naming the pages asked for.
-     */
-    private static Match firstAssignmentMatch(String name, PageRange pages, String option) {
-        OptionalInt number = SubmissionNames.pageNumber(name);
-        if (number.isEmpty()) {
-            return new Match(null, SubmissionNames.noPageNumber(name, "a1-page", Assignment1.COUNT));
-        }
-        int page = number.getAsInt();
-        if (page > Assignment1.COUNT) {
-            return new Match(null, "the first assignment has pages 1 to " + Assignment1.COUNT + ", not " + page);
-        }
-        if (pages != null && !pages.contains(page)) {
-            return new Match(null, "A1 page " + page + " is not among " + option);
-        }
-        return new Match(null, null, page);
     }
 
     /**
@@ -435,19 +405,8 @@ public final class CompareBatch {
                 subjects.put("page" + p, p);
             }
         }
-        subjects.putAll(firstAssignmentSubjects(
+        subjects.putAll(FirstAssignmentGrading.subjects(
                 IntStream.rangeClosed(1, Assignment1.COUNT).boxed().collect(Collectors.toSet())));
-        return subjects;
-    }
-
-    /** The rubric keys of every panel of the first assignment's {@code pages}: "a1-page2-panel4". */
-    private static Map<String, Integer> firstAssignmentSubjects(Set<Integer> pages) {
-        Map<String, Integer> subjects = new HashMap<>();
-        for (int page : pages) {
-            for (int k = 1; k <= A1Layout.PANELS; k++) {
-                subjects.put(firstAssignmentKey(page, k), 0);
-            }
-        }
         return subjects;
     }
 
@@ -749,7 +708,7 @@ public final class CompareBatch {
             err.print(stopped(undrawable, dir));
             return ExitCode.SCENE_ERROR;
         }
-        Map<Integer, BufferedImage> firstAssignment = drawFirstAssignment(matches);
+        Map<Integer, BufferedImage> firstAssignment = firstAssignmentGrading.draw(matches);
         Map<CompareTarget, List<Alternates.Accepted>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames, outputs.files());
         List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
@@ -764,7 +723,7 @@ public final class CompareBatch {
         }
         // A picture named like one of the eight pages that holds a first-assignment page was compared as that: it
         // names none of the eight pages.
-        Set<String> firstAssignmentPictures = rows.stream().filter(this::isFirstAssignments).map(BatchRow::file)
+        Set<String> firstAssignmentPictures = rows.stream().filter(firstAssignmentGrading::isOfAPage).map(BatchRow::file)
                 .collect(Collectors.toSet());
         List<Match> matchedAsNamed = new ArrayList<>();
         for (int i = 0; i < pictures.size(); i++) {
@@ -780,7 +739,7 @@ public final class CompareBatch {
         if (firstAssignmentFolder) {
             // as --assignment 1 checks it: page2.webp is named like the first assignment's page 2
             unreadMatches = listing.unreadable().stream()
-                    .map(file -> firstAssignmentMatch(fileName(name(dir, file)), null, null)).toList();
+                    .map(file -> FirstAssignmentGrading.match(fileName(name(dir, file)), null, null)).toList();
             err.println(says + "every picture in " + dir + " is a page of the first assignment, so its pages 1 to "
                     + Assignment1.COUNT + " are asked for, as --assignment 1 asks for them, and not the eight pages "
                     + "(--pages RANGE asks for those)");
@@ -833,8 +792,8 @@ public final class CompareBatch {
                     misnamed.getOrDefault(label, List.of()), archives));
         }
         for (int page : firstPages) {
-            String label = firstAssignmentLabel(page);
-            asked.add(new Wanted(label, firstAssignmentPageRule(page), unreadable.getOrDefault(label, List.of()),
+            String label = firstAssignmentGrading.label(page);
+            asked.add(new Wanted(label, firstAssignmentGrading.pageRule(page), unreadable.getOrDefault(label, List.of()),
                     "a1-page" + page + ".png", withoutPictures, misnamed.getOrDefault(label, List.of()), archives));
         }
         Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
@@ -876,7 +835,7 @@ public final class CompareBatch {
                 if (submissionOf.apply(name(dir, pictures.get(j))).equals(submission)) {
                     its.add(matches.get(j).target() != null ? matches.get(j).target().label(own.context())
                             : matches.get(j).firstAssignmentPage() > 0
-                                    ? firstAssignmentLabel(matches.get(j).firstAssignmentPage()) : "");
+                                    ? firstAssignmentGrading.label(matches.get(j).firstAssignmentPage()) : "");
                 }
             }
             String whose = submission.isEmpty() ? "the folder" : submission.equals(JUnitResults.TOP)
@@ -901,12 +860,13 @@ public final class CompareBatch {
                                 + ", which " + whose + " lacks?");
                     }
                 }
-                if (number > Assignment1.COUNT && (pages.isEmpty() || namesFirstAssignment(relative))) {
-                    List<Integer> lacks = firstPages.stream().filter(p -> !its.contains(firstAssignmentLabel(p)))
-                            .toList();
+                if (number > Assignment1.COUNT
+                        && (pages.isEmpty() || FirstAssignmentGrading.namesFirstAssignment(relative))) {
+                    List<Integer> lacks = firstPages.stream()
+                            .filter(p -> !its.contains(firstAssignmentGrading.label(p))).toList();
                     if (!lacks.isEmpty()) {
-                        add.to(firstAssignmentLabel(lacks.get(0)), "is named for page " + number + ", and the first "
-                                + "assignment has pages 1 to " + Assignment1.COUNT + ": was it meant as "
+                        add.to(firstAssignmentGrading.label(lacks.get(0)), "is named for page " + number
+                                + ", and the first assignment has pages 1 to " + Assignment1.COUNT + ": was it meant as "
                                 + UsageWords.joined(lacks.stream().map(p -> "A1 page " + p).toList(), "or")
                                 + ", which " + whose + " lacks?");
                     }
@@ -938,8 +898,10 @@ public final class CompareBatch {
             if (number.isPresent()) {
                 pages.stream().filter(t -> t.page() == number.getAsInt())
                         .forEach(t -> add.to(t.label(own.context()), noPage + "page" + t.page() + ".png?"));
-                if (firstPages.contains(number.getAsInt()) && (pages.isEmpty() || namesFirstAssignment(relative))) {
-                    add.to(firstAssignmentLabel(number.getAsInt()), noPage + "a1-page" + number.getAsInt() + ".png?");
+                if (firstPages.contains(number.getAsInt())
+                        && (pages.isEmpty() || FirstAssignmentGrading.namesFirstAssignment(relative))) {
+                    add.to(firstAssignmentGrading.label(number.getAsInt()),
+                            noPage + "a1-page" + number.getAsInt() + ".png?");
                 }
             }
             // the one scene it is nearest, never each scene two letters from it (pageJ.png is as near pageA as pageI)
@@ -958,8 +920,8 @@ public final class CompareBatch {
                             .forEach(t -> lacks.add(new String[] {t.label(own.context()),
                                 t.isPage() ? "page " + t.page() : key(t), key(t) + ".png"}));
                 } else {
-                    firstPages.stream().filter(p -> !its.contains(firstAssignmentLabel(p))).forEach(p -> lacks.add(
-                            new String[] {firstAssignmentLabel(p), "A1 page " + p, "a1-page" + p + ".png"}));
+                    firstPages.stream().filter(p -> !its.contains(firstAssignmentGrading.label(p))).forEach(p -> lacks.add(
+                            new String[] {firstAssignmentGrading.label(p), "A1 page " + p, "a1-page" + p + ".png"}));
                 }
                 if (!lacks.isEmpty()) {
                     add.to(lacks.get(0)[0], "has no page number in its name: was it meant as "
@@ -1110,17 +1072,7 @@ public final class CompareBatch {
         List<BatchRow> compared = rows.stream().filter(r -> r.result() != BatchRow.Result.SKIPPED
                 || firstAssignmentUnasked.contains(r.file())).toList();
         return !compared.isEmpty() && compared.stream()
-                .allMatch(r -> isFirstAssignments(r) || firstAssignmentUnasked.contains(r.file()));
-    }
-
-    /** Whether a row is of one of the first assignment's pages: one of its panels, or a picture of it that is broken. */
-    private boolean isFirstAssignments(BatchRow row) {
-        for (int page = 1; page <= Assignment1.COUNT; page++) {
-            if (new Wanted(firstAssignmentLabel(page), rubric.defaults()).metBy(row)) {
-                return true;
-            }
-        }
-        return false;
+                .allMatch(r -> firstAssignmentGrading.isOfAPage(r) || firstAssignmentUnasked.contains(r.file()));
     }
 
     /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
@@ -1239,7 +1191,7 @@ public final class CompareBatch {
     private boolean allHoldFirstAssignmentPages(List<Path> pictures, List<Match> matches, CompareTarget target) {
         for (int i = 0; i < pictures.size(); i++) {
             if (target.equals(matches.get(i).target())
-                    && !PanelGridComparison.holds(pictures.get(i), firstAssignmentPanels())) {
+                    && !PanelGridComparison.holds(pictures.get(i), FirstAssignmentGrading.panels())) {
                 return false;
             }
         }
@@ -1292,18 +1244,6 @@ public final class CompareBatch {
         return "--scene names it: correct it, or name the right scene or folder with --scene.";
     }
 
-    /** The first assignment's pages the pictures need, drawn once each (they read no files). */
-    private Map<Integer, BufferedImage> drawFirstAssignment(List<Match> matches) {
-        // concurrent: a picture named like one of the eight pages that holds a first-assignment page adds its page
-        Map<Integer, BufferedImage> drawn = new ConcurrentHashMap<>();
-        for (Match match : matches) {
-            if (match.firstAssignmentPage() > 0) {
-                drawn.computeIfAbsent(match.firstAssignmentPage(), others::firstAssignmentPage);
-            }
-        }
-        return drawn;
-    }
-
     /**
      * The comparisons, on a thread a core up to four; rows in the pictures' order. {@code linkOut}: why a picture is
      * not read, when it is a link out of the folder (its row says so).
@@ -1328,15 +1268,15 @@ public final class CompareBatch {
                     Optional<String> notRead = linkOut.apply(picture);
                     if (notRead.isPresent() && match.firstAssignmentPage() > 0) {
                         int page = match.firstAssignmentPage();
-                        made = List.of(BatchRow.broken(relative, firstAssignmentLabel(page), notRead.get(),
-                                firstAssignmentPageRule(page)));
+                        made = List.of(BatchRow.broken(relative, firstAssignmentGrading.label(page), notRead.get(),
+                                firstAssignmentGrading.pageRule(page)));
                     } else if (notRead.isPresent() && match.target() != null) {
                         made = List.of(BatchRow.broken(relative, match.target().label(own.context()), notRead.get(),
                                 ruleOf(match.target())));
                     } else if (match.firstAssignmentPage() > 0) {
                         int page = match.firstAssignmentPage();
-                        made = compareFirstAssignment(relative, page, firstAssignment.get(page), diffs,
-                                ours -> PanelGridComparison.cut(picture, ours, firstAssignmentPanels()));
+                        made = firstAssignmentGrading.compare(relative, page, firstAssignment.get(page), diffs,
+                                ours -> PanelGridComparison.cut(picture, ours, FirstAssignmentGrading.panels()));
                     } else if (match.target() == null) {
                         made = List.of(BatchRow.skipped(relative, match.skipped()));
                     } else {
@@ -1381,23 +1321,18 @@ public final class CompareBatch {
             return List.of(compare(file, relative, target, ours, alternates, diffs, null));
         }
         int page = target.page();
-        if (PanelGridComparison.holds(theirs, firstAssignmentPanels())) {
+        if (PanelGridComparison.holds(theirs, FirstAssignmentGrading.panels())) {
             if (!pagesIfHandedIn) {
                 firstAssignmentUnasked.add(relative);
                 return List.of(BatchRow.broken(relative, target.label(own.context()), "it holds a page of the first "
                         + "assignment (four framed 300x300 panels), not page " + page + " of the eight pages that "
-                        + "--pages names (" + FIRST_ASSIGNMENT_GRADED + ")", ruleOf(target)));
+                        + "--pages names (" + FirstAssignmentGrading.HOW_GRADED + ")", ruleOf(target)));
             }
             BufferedImage first = firstAssignment.computeIfAbsent(page, others::firstAssignmentPage);
-            return compareFirstAssignment(relative, page, first, diffs,
-                    mine -> PanelGridComparison.cut(theirs, mine, firstAssignmentPanels()));
+            return firstAssignmentGrading.compare(relative, page, first, diffs,
+                    mine -> PanelGridComparison.cut(theirs, mine, FirstAssignmentGrading.panels()));
         }
         return List.of(compare(file, relative, target, ours, alternates, diffs, theirs));
-    }
-
-    /** How a first-assignment picture is cut beside simpview's page (its file read, or a picture already read). */
-    private interface Cutter {
-        PanelGridComparison.Cut cut(BufferedImage ours) throws CompareException;
     }
 
     /** One picture's progress line: its row's result, or of a page of panels the worst panel's. */
@@ -1483,193 +1418,12 @@ public final class CompareBatch {
         return emptyShares.computeIfAbsent(label, l -> rule.emptyShare(ours, size));
     }
 
-    /** The panels of the first assignment's pages, in page coordinates. */
-    static PanelGridComparison.Panel[] firstAssignmentPanels() {
-        PanelGridComparison.Panel[] panels = new PanelGridComparison.Panel[A1Layout.PANELS];
-        for (int k = 1; k <= A1Layout.PANELS; k++) {
-            panels[k - 1] = new PanelGridComparison.Panel(A1Layout.left(k), A1Layout.top(k), A1Layout.PANEL);
-        }
-        return panels;
-    }
-
-    /** The rubric key of the first assignment's page's panel: "a1-page2-panel4". */
-    static String firstAssignmentKey(int page, int panel) {
-        return "a1-page" + page + "-panel" + panel;
-    }
-
-    /** E.g. "A1 page 1", "A1 page 3 (seed 361)": a page of the first assignment as a whole (one that is missing). */
-    private String firstAssignmentLabel(int page) {
-        return "A1 page " + page + (Assignment1.page(page).usesSeed() ? " (seed " + own.context().seed() + ")" : "");
-    }
-
-    /** E.g. "A1 page 1 panel 4 (antialiased)", "A1 page 3 (seed 361) panel 1 (DDA)", "A1 page 4 panel 2". */
-    private String firstAssignmentLabel(int page, int panel) {
-        return firstAssignmentLabel(page) + " panel " + panel
-                + (Assignment1.page(page) instanceof LineTestPage ? " (" + LineTestPage.DRAWERS.get(panel - 1) + ")" : "");
-    }
-
-    /**
-     * A first-assignment page's rule as a whole (when it is missing, or its picture cannot be compared): its four
-     * panels' rules, worth their points.
-     */
-    private RubricRule firstAssignmentPageRule(int page) {
-        List<RubricRule> panels = new ArrayList<>();
-        for (int k = 1; k <= A1Layout.PANELS; k++) {
-            panels.add(firstAssignmentRule(page, k));
-        }
-        return RubricRule.whole(panels);
-    }
-
-    /**
-     * A panel's rule: the rubric's rule for "a1-page2-panel4" (a pattern like "a1-*-panel4" picks out the
-     * antialiased panels); when no rule of the rubric names it, the defaults without slack, as
-     * {@code compare --assignment 1} judges: which pixels a line drawer lights is the point.
-     */
-    private RubricRule firstAssignmentRule(int page, int panel) {
-        return firstAssignmentRule(rubric, page, panel);
-    }
-
-    /** Of {@code rubric}, the rule of the first assignment's page's panel, as a batch judges it ({@link #firstAssignmentRule(int, int)}). */
-    static RubricRule firstAssignmentRule(Rubric rubric, int page, int panel) {
-        RubricRule rule = rubric.ruleFor(firstAssignmentKey(page, panel), 0);
-        if (!"*".equals(rule.match())) {
-            return rule;
-        }
-        return new RubricRule(rule.match(), rule.tolerance(), 0, rule.minShare(), rule.maxFailing(), rule.points(),
-                rule.zeroShare(), rule.metric(), rule.alternates(), rule.visibility(), rule.flipThreshold());
-    }
-
-    /**
-     * A picture of one of the first assignment's pages, panel by panel against simpview's page: one row per
-     * panel, or one ERROR row when it cannot be read or holds no such page. Thread-safe.
-     */
-    private List<BatchRow> compareFirstAssignment(String relative, int page, BufferedImage ours, DiffPlan diffs,
-            Cutter cutter) {
-        PanelGridComparison.Cut cut;
-        try {
-            cut = cutter.cut(ours);
-        } catch (CompareException e) {
-            // it scores nothing of what its four panels are worth, as a page not handed in
-            return List.of(BatchRow.broken(relative, firstAssignmentLabel(page), e.getMessage(),
-                    firstAssignmentPageRule(page)));
-        }
-        List<BatchRow> rows = new ArrayList<>();
-        // the hints by panel 1's tolerance: a page turned whole is one hint for its four panels
-        PanelHint[] hints = PanelHint.ofPage(cut.ours(), cut.theirs(), A1Layout.PANEL, PageCanvas.SIZE,
-                firstAssignmentRule(page, 1).tolerance(), Assignment1.page(page).panelNames());
-        firstAssignmentHints(hints, Assignment1.page(page), own.context(), cut.ours(), cut.theirs(),
-                firstAssignmentRule(page, 1).tolerance());
-        for (int k = 1; k <= A1Layout.PANELS; k++) {
-            RubricRule rule = firstAssignmentRule(page, k);
-            Comparison comparison = rule.compare(cut.ours()[k - 1], cut.theirs()[k - 1], A1Layout.PANEL);
-            PanelHint hint = hints[k - 1];
-            String note = "page at x " + cut.pageLeft() + ", y " + cut.pageTop() + " of the picture, counted from its "
-                    + "top-left; panel " + k + " at x " + A1Layout.left(k) + "-" + (A1Layout.left(k) + A1Layout.PANEL - 1)
-                    + ", y " + A1Layout.top(k) + "-" + (A1Layout.top(k) + A1Layout.PANEL - 1) + " of the page"
-                    + (cut.runsPast().isEmpty() ? "" : "; " + cut.runsPast());
-            boolean passes = rule.passes(comparison);
-            String label = firstAssignmentLabel(page, k);
-            double empty = partial && !passes ? emptyShare(label, rule, cut.ours()[k - 1], A1Layout.PANEL) : Double.NaN;
-            double score = rule.score(comparison, partial, empty);
-            if (!diffs.writes(passes)) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "", note, hint, empty)
-                        .decodedAs(cut.format()));
-                continue;
-            }
-            String diff = diffs.names().of(relative, k);
-            try {
-                diffs.write(diff, HeatMap.diffPng(comparison, rule.tolerance()));
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, diff, note, hint, empty)
-                        .decodedAs(cut.format()));
-            } catch (IOException e) {
-                rows.add(BatchRow.panel(relative, label, comparison, rule, score, "",
-                        DiffPlan.NOT_WRITTEN + e.getMessage(), hint, empty).decodedAs(cut.format()));
-            }
-        }
-        if (rows.stream().anyMatch(r -> r.result() == BatchRow.Result.FAIL)) {
-            RubricRule[] rules = IntStream.rangeClosed(1, A1Layout.PANELS).mapToObj(k -> firstAssignmentRule(page, k))
-                    .toArray(RubricRule[]::new);
-            OtherPage other = others.ofFirstAssignment(page, cut.theirs(), rules);
-            // a page of the student's own random values, which no panel's own mistake explains (nor a lack of colour)
-            RandomValues random = other != null || rows.stream().anyMatch(BatchRow::colourless)
-                    || Arrays.stream(hints).anyMatch(h -> h != null) ? null
-                    : RandomValues.find(firstAssignmentLabel(page), page, Assignment1.page(page), own.context().seed(),
-                            cut.ours(), cut.theirs(), A1Layout.PANEL, firstAssignmentRule(page, 1).tolerance());
-            if (other != null) { // the page is another of the five: that says more than each panel's own hint
-                rows.replaceAll(row -> row.withHint(other));
-            } else if (random != null) {
-                rows.replaceAll(row -> row.withHint(random));
-            }
-        }
-        return rows;
-    }
-
-    /**
-     * The first assignment's own hints, for each panel that no other hint explains, passing or not (a line a pixel
-     * short passes, and the student would not learn of it). On a page of lines, the DDA, Bresenham and alternating
-     * panels: lines drawn with floored ends ({@link FlooredEnds}), differing pixels that are mostly the lines' ends or
-     * one past them ({@link LineEnds}), or lines that differ in some octants only ({@link OctantLines}); the
-     * antialiased panel: floored ends, or its levels on and beside a line told when they are not simpview's
-     * ({@link AntialiasWeighting}). On a page of polygons, each panel: a fill without the top-left rule
-     * ({@link FillRule}).
-     */
-    static void firstAssignmentHints(PanelHint[] hints, A1Page shown, PageContext context, int[][] ours,
-            int[][] theirs, int tolerance) {
-        if (hints.length != A1Layout.PANELS) {
-            return;
-        }
-        int n = A1Layout.PANEL;
-        if (shown instanceof PolygonTestPage polygons) {
-            A1Polygons scenes = new A1Polygons(context.seed(), context.a1Rule());
-            for (int k = 0; k < A1Layout.PANELS; k++) {
-                if (hints[k] == null) {
-                    hints[k] = FillRule.find(ours[k], theirs[k], n, tolerance, scenes.scene(k + 1), polygons.ghost());
-                }
-            }
-            return;
-        }
-        if (!(shown instanceof LineTestPage page)) {
-            return;
-        }
-        A1Lines lines = page.lines(context.seed());
-        for (int k = 0; k < A1Layout.PANELS; k++) {
-            if (hints[k] == null) {
-                hints[k] = FlooredEnds.find(ours[k], theirs[k], n, tolerance, k + 1, context.a1Rule(), lines);
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            if (hints[k] == null) {
-                hints[k] = LineEnds.find(ours[k], theirs[k], n, tolerance, lines);
-            }
-            if (hints[k] == null) {
-                hints[k] = OctantLines.find(ours[k], theirs[k], n, tolerance, lines);
-            }
-        }
-        if (hints[3] == null) {
-            hints[3] = AntialiasWeighting.find(ours[3], theirs[3], n, tolerance, lines);
-        }
-    }
-
     /** The file name of a path relative to the submissions folder. */
     private static String fileName(String relative) {
         Path name = Path.of(relative).getFileName();
         String file = name == null ? relative : name.toString();
         // alice\page1.png, unzipped flat from a Windows zip: its name is page1.png, in the folder alice
         return file.substring(file.lastIndexOf('\\') + 1);
-    }
-
-    /**
-     * Whether a picture is one of the first assignment's pages: its file name says so (a1-page2.png,
-     * a1page2.png, assignment1_page2.png) or a folder on its way does (a1/page2.png, the course's own
-     * captures' folder).
-     */
-    static boolean namesFirstAssignment(String relative) {
-        for (Path part : Path.of(relative)) {
-            if (SubmissionNames.namesFirstAssignment(part.toString())) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /**
@@ -1693,7 +1447,7 @@ public final class CompareBatch {
         for (int i = 0; i < files.size(); i++) {
             Match match = matches.get(i);
             String label = match.target() != null ? match.target().label(own.context())
-                    : match.firstAssignmentPage() > 0 ? firstAssignmentLabel(match.firstAssignmentPage()) : null;
+                    : match.firstAssignmentPage() > 0 ? firstAssignmentGrading.label(match.firstAssignmentPage()) : null;
             if (label != null) {
                 named.computeIfAbsent(label, t -> new ArrayList<>()).add(name(dir, files.get(i)));
             }

@@ -354,13 +354,13 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.SCENE_ERROR;
         } catch (CompareException e) {
-            err().println("simpview compare: " + (PanelGridComparison.holds(image, CompareBatch.firstAssignmentPanels())
+            err().println("simpview compare: " + (PanelGridComparison.holds(image, FirstAssignmentGrading.panels())
                     ? firstAssignmentsPage(target) : e.getMessage()));
             return ExitCode.SCENE_ERROR;
         }
         // A page of four framed 300x300 panels also frames a 650x650 square (two panels and their gutter): the
         // first assignment's page is what it is.
-        if (PanelGridComparison.holds(theirs, CompareBatch.firstAssignmentPanels())) {
+        if (PanelGridComparison.holds(theirs, FirstAssignmentGrading.panels())) {
             err().println("simpview compare: " + firstAssignmentsPage(target));
             return ExitCode.SCENE_ERROR;
         }
@@ -475,12 +475,12 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
      * fits several panels is said once for them; --diff writes the three pages.
      */
     private int compareAssignment1() {
-        PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
+        PanelGridComparison.Panel[] panels = FirstAssignmentGrading.panels();
         RubricRule[] rules = new RubricRule[panels.length];
         try {
             Rubric read = rubricOf(rubric, verdictRule());
             for (int k = 0; k < panels.length; k++) {
-                rules[k] = CompareBatch.firstAssignmentRule(read, page, k + 1);
+                rules[k] = FirstAssignmentGrading.rule(read, page, k + 1);
             }
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
@@ -579,7 +579,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         // the hints by panel 1's tolerance, as a batch finds them
         PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, first.tolerance(),
                 shown.panelNames());
-        CompareBatch.firstAssignmentHints(hints, shown, context, ourPanels, theirPanels, first.tolerance());
+        FirstAssignmentGrading.hints(hints, shown, context, ourPanels, theirPanels, first.tolerance());
         // a page that fails as a whole and passes as another of the five: that one hint, of the page
         OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, rules);
         // a page of the student's own random values, which no panel's own mistake explains
@@ -638,7 +638,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
             for (int j = k; j < rules.length; j++) {
                 if (rules[j].match().equals(match)) {
                     judged.add(j + 1);
-                    keys.add(CompareBatch.firstAssignmentKey(page, j + 1));
+                    keys.add(FirstAssignmentGrading.key(page, j + 1));
                 }
             }
             String which = PanelWords.panels(judged) + (judged.size() == 1 ? " (" + panelName(shown, k) + ")" : "");

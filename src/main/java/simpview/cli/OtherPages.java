@@ -65,7 +65,7 @@ final class OtherPages {
      * {@code named} by its panels' {@code rules}, passes as, every panel by its rule; null when none does (or several).
      */
     OtherPage ofFirstAssignment(int named, int[][] theirs, RubricRule[] rules) {
-        PanelGridComparison.Panel[] panels = CompareBatch.firstAssignmentPanels();
+        PanelGridComparison.Panel[] panels = FirstAssignmentGrading.panels();
         return OtherPage.find(named, Assignment1.COUNT, theirs, panels[0].size(), rules,
                 k -> PanelGridComparison.panels(firstAssignmentPage(k), panels),
                 k -> "A1 page " + k + (Assignment1.page(k).usesSeed() ? " (seed " + context.seed() + ")" : ""));

@@ -66,10 +66,10 @@ class FirstAssignmentBatchTest {
     void namesAndFoldersOfTheFirstAssignmentAreKnown() {
         for (String name : List.of("a1-page2.png", "a1page2.png", "A1_Page_2.png", "assignment1-page2.png",
                 "a1/page2.png", "alice/A1/page2_starburst.png", "assignment-1/page2.png")) {
-            assertTrue(CompareBatch.namesFirstAssignment(name), name);
+            assertTrue(FirstAssignmentGrading.namesFirstAssignment(name), name);
         }
         for (String name : List.of("page2.png", "alice/page2.png", "a2/page2.png", "a12/page2.png", "page12.png")) {
-            assertFalse(CompareBatch.namesFirstAssignment(name), name);
+            assertFalse(FirstAssignmentGrading.namesFirstAssignment(name), name);
         }
     }
 
