@@ -51,7 +51,7 @@ final class Alternates {
         }
         List<Path> files;
         try {
-            files = CompareBatch.picturesIn(rule.alternates());
+            files = picturesIn(rule.alternates());
         } catch (IOException | UncheckedIOException e) {
             err.println(says + "alternates " + rule.alternates() + ": cannot be listed");
             return accepted;
@@ -74,6 +74,14 @@ final class Alternates {
             }
         }
         return accepted;
+    }
+
+    /**
+     * The pictures under {@code dir} (a rule's folder of accepted alternates), in natural order of their paths (page2
+     * before page10), hidden ones left out.
+     */
+    static List<Path> picturesIn(Path dir) throws IOException {
+        return FolderListing.of(dir).pictures();
     }
 
     /**
