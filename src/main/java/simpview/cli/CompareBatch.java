@@ -541,7 +541,7 @@ public final class CompareBatch {
         List<Wanted> asked = new ArrayList<>();
         for (CompareTarget target : all) {
             String label = target.label(own.context());
-            asked.add(new Wanted(label, ruleOf(target), unreadable.getOrDefault(label, List.of()),
+            asked.add(new Wanted(label, target.ruleIn(rubric), unreadable.getOrDefault(label, List.of()),
                     target.isPage() ? "page" + target.page() + ".png" : Wanted.PAGE_EXAMPLE, withoutPictures,
                     misnamed.getOrDefault(label, List.of()), archives));
         }
@@ -628,16 +628,16 @@ public final class CompareBatch {
                 if (pages.isEmpty() && number <= 'Z' - 'A' + 1) {
                     // page1.png where the scenes are lettered (pageA to pageI): the scene of the number's letter
                     char letter = (char) ('A' + number - 1);
-                    SubmissionNames.sceneOfLetter(letter, scenes.stream().map(CompareBatch::key).toList())
-                            .flatMap(k -> scenes.stream().filter(t -> key(t).equals(k)).findFirst())
+                    SubmissionNames.sceneOfLetter(letter, scenes.stream().map(CompareTarget::key).toList())
+                            .flatMap(k -> scenes.stream().filter(t -> t.key().equals(k)).findFirst())
                             .ifPresent(t -> add.to(t.label(own.context()), "is named for page " + number + ", and the "
-                                    + "scenes here are lettered: did you mean " + key(t) + ".png (page " + letter
+                                    + "scenes here are lettered: did you mean " + t.key() + ".png (page " + letter
                                     + ")?"));
                 }
                 continue;
             }
             OptionalInt number = SubmissionNames.numberIn(name);
-            Optional<String> nearest = SubmissionNames.nearestScene(name, scenes.stream().map(CompareBatch::key)
+            Optional<String> nearest = SubmissionNames.nearestScene(name, scenes.stream().map(CompareTarget::key)
                     .toList());
             Optional<Character> letter = SubmissionNames.pageLetter(name);
             if (nearest.isEmpty() && number.isEmpty() && letter.isPresent() && letter.get() - 'A' + 1 <= Assignment2.COUNT) {
@@ -659,8 +659,8 @@ public final class CompareBatch {
                 }
             }
             // the one scene it is nearest, never each scene two letters from it (pageJ.png is as near pageA as pageI)
-            nearest.flatMap(k -> scenes.stream().filter(t -> key(t).equals(k)).findFirst())
-                    .ifPresent(t -> add.to(t.label(own.context()), "is named like no scene: did you mean " + key(t)
+            nearest.flatMap(k -> scenes.stream().filter(t -> t.key().equals(k)).findFirst())
+                    .ifPresent(t -> add.to(t.label(own.context()), "is named like no scene: did you mean " + t.key()
                             + ".png?"));
             if (number.isEmpty() && nearest.isEmpty() && letter.isEmpty()) {
                 // no number, letter or scene in its name (Screenshot 2026-12-01 at 10.00.00.png, image.png): it may be
@@ -669,10 +669,10 @@ public final class CompareBatch {
                 if (!pages.isEmpty() || !scenes.isEmpty()) {
                     (pages.isEmpty() ? scenes : pages).stream()
                             .sorted(Comparator.<CompareTarget>comparingInt(CompareTarget::page)
-                                    .thenComparing(CompareBatch::key))
+                                    .thenComparing(CompareTarget::key))
                             .filter(t -> !its.contains(t.label(own.context())))
                             .forEach(t -> lacks.add(new String[] {t.label(own.context()),
-                                t.isPage() ? "page " + t.page() : key(t), key(t) + ".png"}));
+                                t.isPage() ? "page " + t.page() : t.key(), t.key() + ".png"}));
                 } else {
                     firstPages.stream().filter(p -> !its.contains(firstAssignmentGrading.label(p))).forEach(p -> lacks.add(
                             new String[] {firstAssignmentGrading.label(p), "A1 page " + p, "a1-page" + p + ".png"}));
@@ -768,15 +768,6 @@ public final class CompareBatch {
         }
     }
 
-    /** The rubric's key of a target: "page6" for page 6, "pageC" for pageC.simp. */
-    static String key(CompareTarget target) {
-        return target.isPage() ? "page" + target.page() : SubmissionNames.stem(target.scene().getFileName().toString());
-    }
-
-    private RubricRule ruleOf(CompareTarget target) {
-        return rubric.ruleFor(key(target), target.isPage() ? target.page() : 0);
-    }
-
     /**
      * Each target's accepted alternates from its rule's folder: a picture there that
      * names a page or scene (as submissions do) is for that one only; one that names
@@ -787,7 +778,7 @@ public final class CompareBatch {
         Map<CompareTarget, List<Alternates.Accepted>> all = new HashMap<>();
         Map<Path, Object> read = new HashMap<>();
         for (CompareTarget target : targets) {
-            all.put(target, Alternates.of(ruleOf(target), key(target), namer, read, err, says));
+            all.put(target, Alternates.of(target.ruleIn(rubric), target.key(), namer, read, err, says));
         }
         return all;
     }
@@ -901,7 +892,7 @@ public final class CompareBatch {
                                 firstAssignmentGrading.pageRule(page)));
                     } else if (notRead.isPresent() && match.target() != null) {
                         made = List.of(BatchRow.broken(relative, match.target().label(own.context()), notRead.get(),
-                                ruleOf(match.target())));
+                                match.target().ruleIn(rubric)));
                     } else if (match.firstAssignmentPage() > 0) {
                         int page = match.firstAssignmentPage();
                         made = firstAssignmentGrading.compare(relative, page, firstAssignment.get(page), diffs,
@@ -955,7 +946,7 @@ public final class CompareBatch {
                 firstAssignmentUnasked.add(relative);
                 return List.of(BatchRow.broken(relative, target.label(own.context()), "it holds a page of the first "
                         + "assignment (four framed 300x300 panels), not page " + page + " of the eight pages that "
-                        + "--pages names (" + FirstAssignmentGrading.HOW_GRADED + ")", ruleOf(target)));
+                        + "--pages names (" + FirstAssignmentGrading.HOW_GRADED + ")", target.ruleIn(rubric)));
             }
             BufferedImage first = firstAssignment.computeIfAbsent(page, others::firstAssignmentPage);
             return firstAssignmentGrading.compare(relative, page, first, diffs,
@@ -1002,7 +993,7 @@ public final class CompareBatch {
     private BatchRow compare(Path file, String relative, CompareTarget target, Picture ours,
             List<Alternates.Accepted> alternates, DiffPlan diffs, Picture read) {
         String label = target.label(own.context());
-        RubricRule rule = ruleOf(target);
+        RubricRule rule = target.ruleIn(rubric);
         Picture theirs = read;
         if (theirs == null) {
             try {
@@ -1100,7 +1091,7 @@ public final class CompareBatch {
             return false;
         }
         return target.isPage() ? SubmissionNames.isPageName(name, target.page())
-                : SubmissionNames.isSceneName(name, key(target));
+                : SubmissionNames.isSceneName(name, target.key());
     }
 
     /** Writes a table or report as {@link OutputFiles#writeString} does, and tells {@code files} it is written. */

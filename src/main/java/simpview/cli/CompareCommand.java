@@ -344,7 +344,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
      * of the rule's accepted alternates in turn ({@link Alternates}).
      */
     private int compareOne(OwnPictures own, CompareTarget target, OtherPages others, Rubric rubricRead) {
-        RubricRule rule = rubricRead.ruleFor(CompareBatch.key(target), target.isPage() ? target.page() : 0);
+        RubricRule rule = target.ruleIn(rubricRead);
         Picture theirs;
         Picture ours;
         try {
@@ -375,7 +375,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
                 rule.compare(ours.panel(), theirs.panel(), Comparison.N), rule, awaitHint(hint));
         // as a batch judges it: a picture that fails against simpview's own, against each accepted alternate in turn
         List<Alternates.Accepted> alternates = againstOurs.passes() ? List.of() : Alternates.of(rule,
-                CompareBatch.key(target), target.isPage() ? CompareBatch::pageNamed : CompareBatch.sceneNamed(scene),
+                target.key(), target.isPage() ? CompareBatch::pageNamed : CompareBatch.sceneNamed(scene),
                 new HashMap<>(), err(), "simpview compare: ");
         Alternates.Judged judged = Alternates.judge(againstOurs, theirs, own.describe(target), rule, alternates);
         ComparisonReport report = judged.report();
@@ -386,7 +386,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         PrintWriter out = spec.commandLine().getOut();
         if (rubric != null) {
             out.println("rubric:  " + rubric + ", " + ("*".equals(rule.match()) ? "its defaults (no rule names "
-                    + CompareBatch.key(target) + ")" : "its rule \"match\": \"" + rule.match() + "\"")
+                    + target.key() + ")" : "its rule \"match\": \"" + rule.match() + "\"")
                     + (rule.alternates() == null ? "" : "; its accepted alternates, in " + rule.alternates() + ", "
                             + "are tried when simpview's own fails it"));
         }

@@ -1,6 +1,9 @@
 package simpview.cli;
 
 import java.nio.file.Path;
+import simpview.compare.Rubric;
+import simpview.compare.RubricRule;
+import simpview.compare.SubmissionNames;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment2;
 
@@ -34,5 +37,15 @@ public record CompareTarget(int page, Path scene) {
             return scene.getFileName().toString();
         }
         return Assignment2.page(page).usesSeed() ? page + " (seed " + context.seed() + ")" : String.valueOf(page);
+    }
+
+    /** The rubric's key of the target: "page6" for page 6, "pageC" for pageC.simp. */
+    String key() {
+        return isPage() ? "page" + page : SubmissionNames.stem(scene.getFileName().toString());
+    }
+
+    /** The target's rule in {@code rubric}: the rule its key names (for a page, of a range that holds its number). */
+    RubricRule ruleIn(Rubric rubric) {
+        return rubric.ruleFor(key(), isPage() ? page : 0);
     }
 }
