@@ -22,11 +22,6 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
 import java.util.function.Predicate;
@@ -36,21 +31,13 @@ import java.util.stream.Stream;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.BatchRow;
 import simpview.compare.BatchTable;
-import simpview.compare.CompareException;
-import simpview.compare.Comparison;
-import simpview.compare.ComparisonReport;
 import simpview.compare.Count;
 import simpview.compare.GradescopeResults;
-import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.JUnitResults;
 import simpview.compare.OnePerPage;
-import simpview.compare.OtherPage;
 import simpview.compare.OutputFiles;
 import simpview.compare.PanelGridComparison;
-import simpview.compare.PanelHint;
-import simpview.compare.PanelWords;
-import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
@@ -160,14 +147,13 @@ public final class CompareBatch {
     enum DiffImages { ALL, FAILING, NONE }
 
     private final OwnPictures own;
-    /** The pages a failing picture may be of instead, drawn once, if ever. */
-    private final OtherPages others;
     private final Rubric rubric;
-    private final boolean partial;
     /** How the first assignment's pages are graded, panel by panel. */
     private final FirstAssignmentGrading firstAssignmentGrading;
     /** What was handed in to the folder graded, and the class's folder in the one given. */
     private final HandedIn handedIn;
+    /** The comparisons, picture by picture. */
+    private final PictureComparisons comparisons;
     private final PrintWriter out;
     private final PrintWriter err;
     /** What its messages start with: the command that runs it ("simpview compare: "). */
@@ -185,12 +171,6 @@ public final class CompareBatch {
      */
     private final Set<String> firstAssignmentUnasked = ConcurrentHashMap.newKeySet();
     /**
-     * With --partial, the share an empty panel gets against each page's or scene's own ({@link RubricRule#emptyShare}),
-     * by its label: measured once, at its first picture that fails (a first-assignment panel's:
-     * {@link FirstAssignmentGrading}'s).
-     */
-    private final Map<String, Double> emptyShares = new ConcurrentHashMap<>();
-    /**
      * For the student's table: the command that compares one failing row's picture alone, which names the pixel to
      * look at first and how to inspect it; null for a row it cannot be given for. None unless {@link #nextSteps}
      * sets it.
@@ -207,14 +187,16 @@ public final class CompareBatch {
             boolean pagesIfHandedIn) {
         this.says = "simpview " + command + ": ";
         this.own = own;
-        this.others = new OtherPages(own);
         this.rubric = rubric;
-        this.partial = partial;
+        // the pages a failing picture may be of instead, drawn once, if ever
+        OtherPages others = new OtherPages(own);
         this.firstAssignmentGrading = new FirstAssignmentGrading(own.context(), others, rubric, partial);
         this.handedIn = new HandedIn(rubric, err, says);
         this.out = out;
         this.err = err;
         this.pagesIfHandedIn = pagesIfHandedIn;
+        this.comparisons = new PictureComparisons(own, others, rubric, partial, firstAssignmentGrading, handedIn, err,
+                pagesIfHandedIn, firstAssignmentUnasked);
     }
 
     /**
@@ -465,7 +447,7 @@ public final class CompareBatch {
         Map<Integer, BufferedImage> firstAssignment = firstAssignmentGrading.draw(matches);
         Map<CompareTarget, List<Alternates.Accepted>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames, outputs.files());
-        List<BatchRow> rows = compareAll(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
+        List<BatchRow> rows = comparisons.rows(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
                 picture -> listing.linkOut(picture, dir));
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", Count.of(pictures.size(), "picture"), seconds);
@@ -862,180 +844,6 @@ public final class CompareBatch {
                     + "or name the course's scenes with --scene.";
         }
         return "--scene names it: correct it, or name the right scene or folder with --scene.";
-    }
-
-    /**
-     * The comparisons, on a thread a core up to four; rows in the pictures' order. {@code linkOut}: why a picture is
-     * not read, when it is a link out of the folder (its row says so).
-     */
-    private List<BatchRow> compareAll(Path dir, List<Path> pictures, List<Match> matches,
-            Map<CompareTarget, Picture> drawn, Map<Integer, BufferedImage> firstAssignment,
-            Map<CompareTarget, List<Alternates.Accepted>> alternates, DiffPlan diffs,
-            Function<Path, Optional<String>> linkOut) {
-        AtomicInteger named = new AtomicInteger();
-        ExecutorService workers = Executors.newFixedThreadPool(
-                Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())),
-                task -> new Thread(task, "simpview-compare-" + named.incrementAndGet()));
-        AtomicInteger finished = new AtomicInteger();
-        try {
-            List<Future<List<BatchRow>>> rows = new ArrayList<>();
-            for (int i = 0; i < pictures.size(); i++) {
-                Path picture = pictures.get(i);
-                Match match = matches.get(i);
-                rows.add(workers.submit(() -> {
-                    String relative = handedIn.name(dir, picture);
-                    List<BatchRow> made;
-                    Optional<String> notRead = linkOut.apply(picture);
-                    if (notRead.isPresent() && match.firstAssignmentPage() > 0) {
-                        int page = match.firstAssignmentPage();
-                        made = List.of(BatchRow.broken(relative, firstAssignmentGrading.label(page), notRead.get(),
-                                firstAssignmentGrading.pageRule(page)));
-                    } else if (notRead.isPresent() && match.target() != null) {
-                        made = List.of(BatchRow.broken(relative, match.target().label(own.context()), notRead.get(),
-                                match.target().ruleIn(rubric)));
-                    } else if (match.firstAssignmentPage() > 0) {
-                        int page = match.firstAssignmentPage();
-                        made = firstAssignmentGrading.compare(relative, page, firstAssignment.get(page), diffs,
-                                ours -> PanelGridComparison.cut(picture, ours, FirstAssignmentGrading.panels()));
-                    } else if (match.target() == null) {
-                        made = List.of(BatchRow.skipped(relative, match.skipped()));
-                    } else {
-                        made = compareRead(picture, relative, match.target(), drawn.get(match.target()),
-                                alternates.get(match.target()), firstAssignment, diffs);
-                    }
-                    synchronized (err) {
-                        err.printf("[%d/%d] %s: %s%n", finished.incrementAndGet(), pictures.size(), relative, progress(made));
-                    }
-                    return made;
-                }));
-            }
-            List<BatchRow> done = new ArrayList<>();
-            for (Future<List<BatchRow>> row : rows) {
-                done.addAll(row.get());
-            }
-            return done;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while comparing", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("a comparison failed", e.getCause());
-        } finally {
-            workers.shutdownNow();
-        }
-    }
-
-    /**
-     * A picture matched to one of the eight pages by its name. When that page's number is also one of the
-     * first assignment's and the picture holds a first-assignment page (four framed 300x300 panels: a capture
-     * named page2.png), it is compared as that, panel by panel; else as the page it names.
-     */
-    private List<BatchRow> compareRead(Path file, String relative, CompareTarget target, Picture ours,
-            List<Alternates.Accepted> alternates, Map<Integer, BufferedImage> firstAssignment, DiffPlan diffs) {
-        if (!target.isPage() || target.page() > Assignment1.COUNT) {
-            return List.of(compare(file, relative, target, ours, alternates, diffs, null));
-        }
-        Picture theirs;
-        try {
-            theirs = Picture.read(file);
-        } catch (CompareException e) {
-            return List.of(compare(file, relative, target, ours, alternates, diffs, null));
-        }
-        int page = target.page();
-        if (PanelGridComparison.holds(theirs, FirstAssignmentGrading.panels())) {
-            if (!pagesIfHandedIn) {
-                firstAssignmentUnasked.add(relative);
-                return List.of(BatchRow.broken(relative, target.label(own.context()), "it holds a page of the first "
-                        + "assignment (four framed 300x300 panels), not page " + page + " of the eight pages that "
-                        + "--pages names (" + FirstAssignmentGrading.HOW_GRADED + ")", target.ruleIn(rubric)));
-            }
-            BufferedImage first = firstAssignment.computeIfAbsent(page, others::firstAssignmentPage);
-            return firstAssignmentGrading.compare(relative, page, first, diffs,
-                    mine -> PanelGridComparison.cut(theirs, mine, FirstAssignmentGrading.panels()));
-        }
-        return List.of(compare(file, relative, target, ours, alternates, diffs, theirs));
-    }
-
-    /** One picture's progress line: its row's result, or of a page of panels the worst panel's. */
-    private static String progress(List<BatchRow> rows) {
-        if (rows.size() == 1) {
-            return progress(rows.get(0));
-        }
-        BatchRow worst = rows.stream().filter(BatchRow::compared)
-                .min(Comparator.comparingDouble(BatchRow::verdict)).orElse(rows.get(0));
-        long passing = rows.stream().filter(r -> r.result() == BatchRow.Result.PASS).count();
-        StringBuilder looks = new StringBuilder();
-        // the same mistake in several panels said once for them; a page turned whole once for its panels
-        PanelHint[] hints = rows.stream().map(BatchRow::panelHint).toArray(PanelHint[]::new);
-        for (List<Integer> alike : PanelWords.alike(hints)) {
-            PanelHint hint = hints[alike.get(0) - 1];
-            looks.append(hint.wholePage() ? "; looks " : "; " + PanelWords.panels(alike)
-                    + (alike.size() > 1 ? " look " : " looks ")).append(hint.brief());
-        }
-        // a note of the picture (its format) is said once, not for each panel
-        rows.stream().flatMap(r -> r.briefNotes().stream()).distinct().forEach(note -> looks.append("; ").append(note));
-        return (passing == rows.size() ? "PASS: " : "FAIL: ") + passing + " of " + rows.size() + " panels pass; lowest "
-                + Percent.of(worst.verdict()) + " (" + worst.target() + ")" + looks;
-    }
-
-    private static String progress(BatchRow row) {
-        return switch (row.result()) {
-            case PASS, FAIL -> row.result() + " " + Percent.of(row.verdict())
-                    + (row.panelHint() == null ? "" : "; looks " + row.panelHint().brief())
-                    + row.briefNotes().stream().map(note -> "; " + note).collect(Collectors.joining());
-            case ERROR, SKIPPED -> row.result() + ": " + row.note().lines().findFirst().orElse("");
-        };
-    }
-
-    /**
-     * One picture against simpview's, and when it does not pass, against each accepted alternate: the first
-     * that passes is its result; when none does, the comparison with simpview's own is. Thread-safe.
-     */
-    private BatchRow compare(Path file, String relative, CompareTarget target, Picture ours,
-            List<Alternates.Accepted> alternates, DiffPlan diffs, Picture read) {
-        String label = target.label(own.context());
-        RubricRule rule = target.ruleIn(rubric);
-        Picture theirs = read;
-        if (theirs == null) {
-            try {
-                theirs = Picture.read(file);
-            } catch (CompareException e) {
-                return BatchRow.broken(relative, label, e.getMessage(), rule);
-            }
-        }
-        String against = target.describe(own.context());
-        Alternates.Judged judged = Alternates.judge(ComparisonReport.of(theirs, against,
-                rule.compare(ours.panel(), theirs.panel(), Comparison.N), rule), theirs, against, rule, alternates);
-        ComparisonReport best = judged.report();
-        String bestName = judged.alternate();
-        double empty = partial && !best.passes() ? emptyShare(label, rule, ours.panel(), Comparison.N) : Double.NaN;
-        double score = rule.score(best.comparison(), partial, empty);
-        // a failing picture no mistake explains may be another page, its file named for the wrong one
-        OtherPage other = best.passes() || best.systematic() != null || !target.isPage() ? null
-                : others.ofEight(target.page(), theirs.panel(), rule);
-        if (!diffs.writes(best.passes())) {
-            return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty), other);
-        }
-        String diff = diffs.names().of(relative, 0);
-        try {
-            diffs.write(diff, HeatMap.diffPng(best.comparison(), rule.tolerance()));
-        } catch (IOException e) {
-            return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty)
-                    .withoutDiff(DiffPlan.NOT_WRITTEN + e.getMessage()), other);
-        }
-        return hinted(BatchRow.compared(relative, label, best, diff, rule, score, bestName, empty), other);
-    }
-
-    /** The row with the other page it is of as its hint, when it is one. */
-    private static BatchRow hinted(BatchRow row, OtherPage other) {
-        return other == null ? row : row.withHint(other);
-    }
-
-    /**
-     * The share an empty panel gets against simpview's own {@code ours} (of {@code size} pixels a side) under
-     * {@code rule}, for the page, scene or panel of {@code label}: measured once. Thread-safe.
-     */
-    private double emptyShare(String label, RubricRule rule, int[] ours, int size) {
-        return emptyShares.computeIfAbsent(label, l -> rule.emptyShare(ours, size));
     }
 
     /** The file name of a path relative to the submissions folder. */
