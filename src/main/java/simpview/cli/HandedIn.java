@@ -351,6 +351,14 @@ final class HandedIn {
         return relative.startsWith(flatClass) ? relative.substring(flatClass.length()) : relative;
     }
 
+    /** The file name of a path relative to the submissions folder. */
+    static String fileName(String relative) {
+        Path name = Path.of(relative).getFileName();
+        String file = name == null ? relative : name.toString();
+        // alice\page1.png, unzipped flat from a Windows zip: its name is page1.png, in the folder alice
+        return file.substring(file.lastIndexOf('\\') + 1);
+    }
+
     /**
      * The file of a picture's name in the folder graded ({@link #name}), with the folder of a class unzipped flat:
      * class\alice\page1.png for alice\page1.png.
