@@ -23,23 +23,16 @@ import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BiPredicate;
 import java.util.function.Function;
-import java.util.function.Predicate;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.BatchRow;
-import simpview.compare.BatchTable;
 import simpview.compare.Count;
-import simpview.compare.GradescopeResults;
 import simpview.compare.HtmlReport;
-import simpview.compare.JUnitResults;
-import simpview.compare.OnePerPage;
 import simpview.compare.OutputFiles;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.Picture;
 import simpview.compare.Rubric;
-import simpview.compare.RubricRule;
-import simpview.compare.StudentTable;
 import simpview.compare.SubmissionNames;
 import simpview.compare.SubmissionTotals;
 import simpview.compare.Wanted;
@@ -154,7 +147,8 @@ public final class CompareBatch {
     private final PictureComparisons comparisons;
     /** What each submission is asked for. */
     private final PagesAskedFor pagesAskedFor;
-    private final PrintWriter out;
+    /** The results, written and printed. */
+    private final BatchResults results;
     private final PrintWriter err;
     /** What its messages start with: the command that runs it ("simpview compare: "). */
     private final String says;
@@ -170,12 +164,6 @@ public final class CompareBatch {
      * folder: the teacher who meant --assignment 1 is told so when every picture is one.
      */
     private final Set<String> firstAssignmentUnasked = ConcurrentHashMap.newKeySet();
-    /**
-     * For the student's table: the command that compares one failing row's picture alone, which names the pixel to
-     * look at first and how to inspect it; null for a row it cannot be given for. None unless {@link #nextSteps}
-     * sets it.
-     */
-    private Function<BatchRow, String> nextStep = row -> null;
 
     /** A batch of {@code command} ("compare", "check"), which its messages name; every page of the range asked for. */
     CompareBatch(String command, OwnPictures own, Rubric rubric, boolean partial, PrintWriter out, PrintWriter err) {
@@ -192,13 +180,13 @@ public final class CompareBatch {
         OtherPages others = new OtherPages(own);
         this.firstAssignmentGrading = new FirstAssignmentGrading(own.context(), others, rubric, partial);
         this.handedIn = new HandedIn(rubric, err, says);
-        this.out = out;
         this.err = err;
         this.pagesIfHandedIn = pagesIfHandedIn;
         this.comparisons = new PictureComparisons(own, others, rubric, partial, firstAssignmentGrading, handedIn, err,
                 pagesIfHandedIn, firstAssignmentUnasked);
         this.pagesAskedFor = new PagesAskedFor(own.context(), rubric, firstAssignmentGrading, handedIn, pagesIfHandedIn,
                 firstAssignmentUnasked, err, says);
+        this.results = new BatchResults(rubric, out, err, says);
     }
 
     /**
@@ -206,7 +194,7 @@ public final class CompareBatch {
      * gives one: the one picture's comparison, which says where and why it differs.
      */
     CompareBatch nextSteps(Function<BatchRow, String> command) {
-        this.nextStep = command;
+        results.nextSteps(command);
         return this;
     }
 
@@ -466,9 +454,9 @@ public final class CompareBatch {
         Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
         String instead = withoutPictures.stream().filter(w -> w.submission().isEmpty()).map(WithoutPictures::instead)
                 .findFirst().orElse("");
-        int written = writeResults(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
+        int written = results.write(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
                 instead, oneStudent);
-        return saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+        return results.saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
     }
 
     /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
@@ -482,22 +470,6 @@ public final class CompareBatch {
             }
         }
         return passing;
-    }
-
-    /**
-     * Whether some diff image could not be written, said once on stderr with the first reason (each row
-     * says its own): an output file that cannot be written fails the run, as a table that cannot does.
-     */
-    private boolean saidUnwrittenDiffs(List<BatchRow> rows, DiffPlan diffs) {
-        List<BatchRow> unwritten = rows.stream().filter(r -> r.compared() && r.diff().isEmpty()
-                && diffs.writes(r.result() == BatchRow.Result.PASS)).toList();
-        if (unwritten.isEmpty()) {
-            return false;
-        }
-        String first = unwritten.get(0).note().replaceFirst("^" + DiffPlan.NOT_WRITTEN, "");
-        err.println(says + Count.of(unwritten.size(), "diff image") + " could not be written ("
-                + first + (unwritten.size() == 1 ? "" : "; each row says why") + ")");
-        return true;
     }
 
     /**
@@ -648,109 +620,6 @@ public final class CompareBatch {
         }
         return target.isPage() ? SubmissionNames.isPageName(name, target.page())
                 : SubmissionNames.isSceneName(name, target.key());
-    }
-
-    /** Writes a table or report as {@link OutputFiles#writeString} does, and tells {@code files} it is written. */
-    private static void writeString(OutputPaths files, Path file, String text) throws IOException {
-        OutputFiles.writeString(file, text);
-        files.wrote(file);
-    }
-
-    /**
-     * Writes and prints the results, each page counted once per submission ({@link OnePerPage}: the pictures of
-     * a page but one are rows that score nothing), and says what the exit code is: 0 when every row that
-     * counts passes and no submission lacks a page asked for.
-     */
-    private int writeResults(Path dir, List<BatchRow> compared, List<Wanted> wanted, Outputs outputs, double seconds,
-            Predicate<String> plainlyNamed, Predicate<String> alone, String instead, boolean oneStudent) {
-        // A student's folder (check's, or one whose pictures are at its top and in one folder) is one submission,
-        // however its pictures are foldered; a class's, one a first-level folder.
-        List<BatchRow> rows = oneStudent ? OnePerPage.asOne(compared, plainlyNamed)
-                : OnePerPage.bySubmission(compared, plainlyNamed, alone);
-        Function<String, String> submissionOf = oneStudent ? file -> "" : JUnitResults::submission;
-        RubricRule base = rubric.defaults();
-        List<Map.Entry<String, Wanted>> missing = oneStudent
-                ? Wanted.missing(wanted, rows).stream().map(w -> Map.entry("", w)).toList()
-                : Wanted.missingBySubmission(wanted, rows);
-        Path outDir = outputs.outDir();
-        // each submission's total, by the submission its pages are counted in (a picture of its own where each
-        // picture is a student's), as results.json would score it graded alone
-        List<SubmissionTotals.Total> totals = SubmissionTotals.of(rows, missing,
-                oneStudent ? submissionOf : file -> alone.test(file) ? file : submissionOf.apply(file));
-        String markdown = BatchTable.markdown(rows, missing, base.tolerance(), base.minShare(), base.deviation(),
-                base.metric(), base.flipThreshold()) + SubmissionTotals.markdown(totals, outDir == null ? null : TOTALS);
-        try {
-            OutputPaths files = outputs.files();
-            if (outDir != null) {
-                writeString(files, outDir.resolve(TABLE), markdown);
-                writeString(files, outDir.resolve(CSV), BatchTable.csv(rows, missing));
-                writeString(files, outDir.resolve(TOTALS), SubmissionTotals.csv(totals));
-            }
-            if (outputs.gradescope() != null) {
-                // results.json is one submission's, however its pictures are foldered (see grading.md)
-                writeString(files, outputs.gradescope(),
-                        GradescopeResults.json(OnePerPage.asOne(compared, plainlyNamed), wanted, seconds));
-                sayIfAClass(compared, outputs.gradescope());
-            }
-            if (outputs.junit() != null) {
-                writeString(files, outputs.junit(), JUnitResults.xml(rows, wanted, seconds, submissionOf));
-            }
-            if (outputs.html() != null) {
-                HtmlReport.write(rows, Wanted.missingBySubmission(wanted, rows, submissionOf), outputs.html(), outDir,
-                        submissionOf, totals);
-                files.wrote(outputs.html().resolve(HtmlReport.INDEX));
-            }
-        } catch (IOException e) {
-            err.println(says + e.getMessage()); // "cannot write report/compare.md: ...", and why
-            return ExitCode.SCENE_ERROR;
-        }
-        if (outputs.student()) {
-            out.print(StudentTable.text(rows, Wanted.missing(wanted, rows), nextStep));
-        } else {
-            out.print(markdown);
-            if (outDir != null) {
-                out.println("table: " + outDir.resolve(TABLE) + " and " + outDir.resolve(CSV));
-                out.println("totals: " + outDir.resolve(TOTALS));
-            }
-        }
-        if (rows.isEmpty()) {
-            // a folder holding only a zip: the student is told to unzip it
-            err.println(says + "no pictures (.png, .jpg, .gif, .bmp) found"
-                    + (instead.isEmpty() ? "" : " in " + dir + ": " + instead));
-            return ExitCode.SCENE_ERROR;
-        }
-        boolean allPass = rows.stream().filter(BatchRow::counts)
-                .allMatch(r -> r.result() != BatchRow.Result.FAIL && r.result() != BatchRow.Result.ERROR);
-        if (outputs.student() && rows.stream().noneMatch(r -> r.result() == BatchRow.Result.PASS)) {
-            return ExitCode.SCENE_ERROR;
-        }
-        // a page asked for without a picture is work not done: it fails as a failing picture does
-        return allPass && missing.isEmpty() ? ExitCode.OK : ExitCode.SCENE_ERROR;
-    }
-
-    /**
-     * Says so when results.json was written for what looks like a class: one page handed in by the pictures of
-     * several first-level folders. It is one submission's (Gradescope grades one student at a time), so all of
-     * them were counted as one, each page once; the class's own results are the table, JUnit and the web report.
-     */
-    private void sayIfAClass(List<BatchRow> compared, Path results) {
-        Map<String, Set<String>> foldersOfPage = new HashMap<>();
-        for (BatchRow row : compared) {
-            String folder = JUnitResults.submission(row.file());
-            if (row.compared() && !folder.equals(JUnitResults.TOP)) {
-                foldersOfPage.computeIfAbsent(row.page(), p -> new TreeSet<>(SceneList.NATURAL_ORDER)).add(folder);
-            }
-        }
-        Set<String> folders = foldersOfPage.values().stream().filter(f -> f.size() > 1).findFirst().orElse(null);
-        if (folders == null) {
-            return;
-        }
-        List<String> named = folders.stream().limit(3).map(f -> f + "/").toList();
-        err.println(says + "note: " + results + " is one submission's, as Gradescope grades one student at a time, "
-                + "but " + UsageWords.joined(named, "and") + (folders.size() > 3 ? " and others" : "")
-                + " each hold a picture of one page: they were counted as one submission, each page once. For a "
-                + "class, read the table, --junit or --html (a submission a first-level folder), or run compare "
-                + "on each student's folder for a results.json of its own.");
     }
 
     static Map<String, Path> scenesIn(Path folder) {
