@@ -49,6 +49,12 @@ import simpview.scene.SceneException;
  * {@code simpview compare --dir ...}: every picture in a folder (and its
  * subfolders) against the page or scene its name names, one table row each.
  * A picture that cannot be read is a row saying why; the rest go on.
+ *
+ * A batch finds what was handed in ({@link HandedIn}), matches each picture to
+ * a page or scene by its name, draws those, compares each picture with
+ * simpview's ({@link PictureComparisons}; a page of the first assignment panel
+ * by panel, {@link FirstAssignmentGrading}), works out what each submission was
+ * asked for ({@link PagesAskedFor}) and writes the results ({@link BatchResults}).
  */
 public final class CompareBatch {
 
@@ -196,6 +202,15 @@ public final class CompareBatch {
     CompareBatch nextSteps(Function<BatchRow, String> command) {
         results.nextSteps(command);
         return this;
+    }
+
+    /**
+     * The folder a teacher's batch of {@code dir} grades, whose first-level folders are the submissions: {@code dir}
+     * itself or the class's folder inside it, as {@link HandedIn#classFolder} finds it. The batch names its pictures
+     * in that folder from then on.
+     */
+    Path classFolder(Path dir, Outputs outputs, Path sceneFolder) {
+        return handedIn.classFolder(dir, outputs, sceneFolder);
     }
 
     /** Pictures matched to pages by the number in their names: page3.png is page 3. */
@@ -387,15 +402,6 @@ public final class CompareBatch {
     }
 
     /**
-     * The folder a teacher's batch of {@code dir} grades, whose first-level folders are the submissions: {@code dir}
-     * itself or the class's folder inside it, as {@link HandedIn#classFolder} finds it. The batch names its pictures
-     * in that folder from then on.
-     */
-    Path classFolder(Path dir, Outputs outputs, Path sceneFolder) {
-        return handedIn.classFolder(dir, outputs, sceneFolder);
-    }
-
-    /**
      * Compares the pictures under {@code dir} and writes the results. {@code wanted}: the pages and scenes asked
      * for; {@code firstAssignmentWanted}: the first assignment's pages asked for (besides those some picture is
      * of); {@code namer}: the rubric key a file name names, for the alternates; {@code matcher}: what a picture
@@ -412,9 +418,6 @@ public final class CompareBatch {
         }
         handedIn.sayWhatWasFound(dir, found);
         List<Path> pictures = found.pictures();
-        FolderListing listing = found.listing();
-        List<WithoutPictures> withoutPictures = found.withoutPictures();
-        List<String> others = found.others();
         DiffNames diffNames = DiffNames.of(pictures.stream().map(p -> handedIn.name(dir, p)).toList());
         claimOutputs(dir, pictures, outputs, diffNames);
         String unwritable = outputs.problem();
@@ -438,38 +441,14 @@ public final class CompareBatch {
         Map<CompareTarget, List<Alternates.Accepted>> alternates = alternatesOf(drawn.keySet(), namer);
         DiffPlan diffPlan = new DiffPlan(outputs.outDir(), outputs.diffs(), diffNames, outputs.files());
         List<BatchRow> rows = comparisons.rows(dir, pictures, matches, drawn, firstAssignment, alternates, diffPlan,
-                picture -> listing.linkOut(picture, dir));
+                picture -> found.listing().linkOut(picture, dir));
         double seconds = (System.nanoTime() - start) / 1e9;
         err.printf(Locale.ROOT, "%s in %.2f s%n", Count.of(pictures.size(), "picture"), seconds);
-        if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage)
-                && pagesAskedFor.firstAssignmentOnly(rows)) {
-            err.println(says + "note: every picture is a page of the first assignment, but --pages names the eight "
-                    + "pages: none was graded as a page of the first assignment, and each of the eight pages asked for "
-                    + "is missing or scored 0. To grade the first assignment, give --assignment 1: its --pages are its "
-                    + "pages 1 to 5 (default: 1-5).");
-        }
+        noteIfFirstAssignmentOnly(wanted, rows);
         List<Wanted> asked = pagesAskedFor.of(dir, found, matches, rows, oneStudent, wanted, firstAssignmentWanted,
                 firstAssignment.keySet(), matcher);
-        Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
-        Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
-        String instead = withoutPictures.stream().filter(w -> w.submission().isEmpty()).map(WithoutPictures::instead)
-                .findFirst().orElse("");
-        int written = results.write(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains,
-                instead, oneStudent);
+        int written = writeResults(dir, found, matches, rows, asked, outputs, seconds, oneStudent);
         return results.saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
-    }
-
-    /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
-    private Set<String> picturesWhere(Path dir, List<Path> pictures, List<Match> matches,
-            BiPredicate<String, Match> test) {
-        Set<String> passing = new HashSet<>();
-        for (int i = 0; i < pictures.size(); i++) {
-            String relative = handedIn.name(dir, pictures.get(i));
-            if (test.test(relative, matches.get(i))) {
-                passing.add(relative);
-            }
-        }
-        return passing;
     }
 
     /**
@@ -505,21 +484,6 @@ public final class CompareBatch {
                 }
             }
         }
-    }
-
-    /**
-     * Each target's accepted alternates from its rule's folder: a picture there that
-     * names a page or scene (as submissions do) is for that one only; one that names
-     * none is for every target of the rule. An unreadable alternate is said and left out.
-     */
-    private Map<CompareTarget, List<Alternates.Accepted>> alternatesOf(Iterable<CompareTarget> targets,
-            Function<String, Optional<String>> namer) {
-        Map<CompareTarget, List<Alternates.Accepted>> all = new HashMap<>();
-        Map<Path, Object> read = new HashMap<>();
-        for (CompareTarget target : targets) {
-            all.put(target, Alternates.of(target.ruleIn(rubric), target.key(), namer, read, err, says));
-        }
-        return all;
     }
 
     /**
@@ -604,6 +568,65 @@ public final class CompareBatch {
     }
 
     /**
+     * Each target's accepted alternates from its rule's folder: a picture there that
+     * names a page or scene (as submissions do) is for that one only; one that names
+     * none is for every target of the rule. An unreadable alternate is said and left out.
+     */
+    private Map<CompareTarget, List<Alternates.Accepted>> alternatesOf(Iterable<CompareTarget> targets,
+            Function<String, Optional<String>> namer) {
+        Map<CompareTarget, List<Alternates.Accepted>> all = new HashMap<>();
+        Map<Path, Object> read = new HashMap<>();
+        for (CompareTarget target : targets) {
+            all.put(target, Alternates.of(target.ruleIn(rubric), target.key(), namer, read, err, says));
+        }
+        return all;
+    }
+
+    /**
+     * Says so when every picture is a page of the first assignment but the eight pages were asked for by --pages:
+     * the teacher meant --assignment 1, and each of the eight pages is missing or scored 0.
+     */
+    private void noteIfFirstAssignmentOnly(List<CompareTarget> wanted, List<BatchRow> rows) {
+        if (!pagesIfHandedIn && wanted.stream().anyMatch(CompareTarget::isPage)
+                && pagesAskedFor.firstAssignmentOnly(rows)) {
+            err.println(says + "note: every picture is a page of the first assignment, but --pages names the eight "
+                    + "pages: none was graded as a page of the first assignment, and each of the eight pages asked for "
+                    + "is missing or scored 0. To grade the first assignment, give --assignment 1: its --pages are its "
+                    + "pages 1 to 5 (default: 1-5).");
+        }
+    }
+
+    /**
+     * Writes and prints the results of the pictures {@code found} in {@code dir}, compared as {@code matches} says,
+     * against what each submission was {@code asked} for ({@link BatchResults#write}), and returns its exit code: of
+     * several pictures of one page, the one named for it and nothing else counts; a picture of the scene every picture
+     * is compared with is a submission of its own.
+     */
+    private int writeResults(Path dir, HandedIn.Found found, List<Match> matches, List<BatchRow> rows,
+            List<Wanted> asked, Outputs outputs, double seconds, boolean oneStudent) {
+        List<Path> pictures = found.pictures();
+        Set<String> plainlyNamed = picturesWhere(dir, pictures, matches, CompareBatch::namesItsPageOnly);
+        Set<String> alone = picturesWhere(dir, pictures, matches, (relative, match) -> match.alone());
+        String instead = found.withoutPictures().stream().filter(w -> w.submission().isEmpty())
+                .map(WithoutPictures::instead).findFirst().orElse("");
+        return results.write(dir, rows, asked, outputs, seconds, plainlyNamed::contains, alone::contains, instead,
+                oneStudent);
+    }
+
+    /** The pictures (by their paths under {@code dir}) whose path and match pass {@code test}. */
+    private Set<String> picturesWhere(Path dir, List<Path> pictures, List<Match> matches,
+            BiPredicate<String, Match> test) {
+        Set<String> passing = new HashSet<>();
+        for (int i = 0; i < pictures.size(); i++) {
+            String relative = handedIn.name(dir, pictures.get(i));
+            if (test.test(relative, matches.get(i))) {
+                passing.add(relative);
+            }
+        }
+        return passing;
+    }
+
+    /**
      * Whether a picture's file name is the name of the page or scene it was matched to and nothing else
      * (page3.png, pageC.png, a1-page2.png): of several pictures of one page, that one counts.
      */
@@ -622,6 +645,7 @@ public final class CompareBatch {
                 : SubmissionNames.isSceneName(name, target.key());
     }
 
+    /** The scenes of a folder by their names (pageC of pageC.simp), in order; none when it cannot be read. */
     static Map<String, Path> scenesIn(Path folder) {
         Map<String, Path> scenes = new TreeMap<>();
         try {
