@@ -46,14 +46,11 @@ import javax.swing.SwingUtilities;
 import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
-import simpview.pages.PageStepper;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import java.awt.event.KeyAdapter;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 import javax.swing.JCheckBoxMenuItem;
@@ -101,14 +98,8 @@ public final class SimpviewWindow {
     private final StatusStrip status = new StatusStrip(this::cancel);
     private static final String STEPPING_WORKS_ON =
             "Stepping through the drawing works on scenes (pages 4–8, opened scenes) and the first assignment's pages.";
-    private final PageStepper stepper;
-    /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
-    private int assignment1Page;
-    /** The first assignment's page last shown (1 to 5): where Alt+1 and A come back to. */
-    private int lastAssignment1Page = 1;
-    /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
-    private CoursePageSet coursePages;
-    private final Map<Integer, CoursePageSet> courseSets = new HashMap<>();
+    /** Where the window is among the pages its keys step through. */
+    private final PageCycle pages;
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
@@ -146,7 +137,7 @@ public final class SimpviewWindow {
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
-        this.stepper = new PageStepper(options.sceneList().size());
+        this.pages = new PageCycle(options.sceneList(), options.simpDir(), status, this::leaveFor);
         this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
@@ -164,7 +155,7 @@ public final class SimpviewWindow {
         WindowClass.apply();
         SimpviewWindow window = new SimpviewWindow(options, drawer);
         window.build();
-        window.show(options.scene().<View>map(View.OfScene::new).orElse(window.viewAt(window.stepper.current())));
+        window.show(options.scene().<View>map(View.OfScene::new).orElse(window.pages.current()));
         return window;
     }
 
@@ -418,30 +409,21 @@ public final class SimpviewWindow {
             case UNTURN -> () -> unturn();
             case NEXT -> () -> next();
             case PREVIOUS -> () -> previous();
-            case FIRST -> () -> end(true);
-            case LAST -> () -> end(false);
-            case PAGE_1 -> () -> jump(1);
-            case PAGE_2 -> () -> jump(2);
-            case PAGE_3 -> () -> jump(3);
-            case PAGE_4 -> () -> jump(4);
-            case PAGE_5 -> () -> jump(5);
-            case PAGE_6 -> () -> jump(6);
-            case PAGE_7 -> () -> jump(7);
-            case PAGE_8 -> () -> jump(8);
-            case ASSIGNMENT -> () -> switchAssignment();
-            case ASSIGNMENT_1 -> () -> {
-                if (assignment1Page == 0) {
-                    coursePages = null;
-                    switchAssignment();
-                }
-            };
-            case ASSIGNMENT_2 -> () -> {
-                if (assignment1Page > 0 || coursePages != null) {
-                    stepTo(stepper.current());
-                }
-            };
-            case ASSIGNMENT_3 -> () -> showCoursePages(3);
-            case ASSIGNMENT_4 -> () -> showCoursePages(4);
+            case FIRST -> () -> pages.end(true);
+            case LAST -> () -> pages.end(false);
+            case PAGE_1 -> () -> pages.jump(1);
+            case PAGE_2 -> () -> pages.jump(2);
+            case PAGE_3 -> () -> pages.jump(3);
+            case PAGE_4 -> () -> pages.jump(4);
+            case PAGE_5 -> () -> pages.jump(5);
+            case PAGE_6 -> () -> pages.jump(6);
+            case PAGE_7 -> () -> pages.jump(7);
+            case PAGE_8 -> () -> pages.jump(8);
+            case ASSIGNMENT -> () -> pages.switchAssignment();
+            case ASSIGNMENT_1 -> () -> pages.firstAssignment();
+            case ASSIGNMENT_2 -> () -> pages.secondAssignment();
+            case ASSIGNMENT_3 -> () -> pages.showCoursePages(3);
+            case ASSIGNMENT_4 -> () -> pages.showCoursePages(4);
             case A1_RULE -> () -> toggleA1Rule();
             case SEED -> () -> newSeed();
             case CANCEL -> () -> {
@@ -1119,6 +1101,12 @@ public final class SimpviewWindow {
         }
     }
 
+    /** Leaving a view for another: its stepping, its turn and its pin are left behind. */
+    private void leaveFor(View view) {
+        forgetViewState();
+        show(view);
+    }
+
     /** Leaving a view leaves its stepping and its turn. */
     private void forgetViewState() {
         orbit.reset();
@@ -1200,119 +1188,15 @@ public final class SimpviewWindow {
         reload();
     }
 
-    /**
-     * The third or fourth assignment's pages (Alt+3, Alt+4), where they were
-     * left: the course's scenes beside its pages' folder. The keys that step
-     * through pages step through them until another assignment is chosen.
-     */
-    private void showCoursePages(int assignment) {
-        CoursePageSet set = courseSets.computeIfAbsent(assignment, n -> CoursePageSet.of(options.simpDir(), n));
-        if (set == null) {
-            courseSets.remove(assignment);
-            status.say("No pages of assignment " + assignment + " in " + CoursePageSet.folder(options.simpDir(), assignment)
-                    + ": its scenes are looked for beside the course's pages.");
-            return;
-        }
-        showCoursePage(set, set.current());
-    }
-
-    private void showCoursePage(CoursePageSet set, Path page) {
-        assignment1Page = 0;
-        forgetViewState();
-        coursePages = set;
-        show(new View.OfScene(page));
-    }
-
     /** The next page of the assignment on show (after its last comes its first). */
     void next() {
-        if (coursePages != null) {
-            showCoursePage(coursePages, coursePages.next());
-            return;
-        }
-        if (assignment1Page > 0) {
-            showAssignment1(assignment1Page % Assignment1.COUNT + 1);
-        } else {
-            stepTo(stepper.next());
-        }
+        pages.next();
     }
 
     void previous() {
-        if (coursePages != null) {
-            showCoursePage(coursePages, coursePages.previous());
-            return;
-        }
-        if (assignment1Page > 0) {
-            showAssignment1((assignment1Page + Assignment1.COUNT - 2) % Assignment1.COUNT + 1);
-        } else {
-            stepTo(stepper.previous());
-        }
+        pages.previous();
     }
 
-    /** The first or the last place of the assignment on show. */
-    private void end(boolean first) {
-        if (coursePages != null) {
-            showCoursePage(coursePages, first ? coursePages.first() : coursePages.last());
-            return;
-        }
-        if (assignment1Page > 0) {
-            showAssignment1(first ? 1 : Assignment1.COUNT);
-        } else {
-            stepTo(first ? stepper.first() : stepper.last());
-        }
-    }
-
-    /** Page n of the assignment on show. */
-    private void jump(int n) {
-        if (coursePages != null) {
-            Path page = coursePages.jump(n);
-            if (page == null) {
-                status.say("Assignment " + coursePages.assignment() + " has pages 1 to " + coursePages.size()
-                        + " (Page Down steps on to the rest); Alt+2 goes back to the eight pages.");
-            } else {
-                showCoursePage(coursePages, page);
-            }
-            return;
-        }
-        if (assignment1Page == 0) {
-            stepTo(stepper.jump(n));
-        } else if (n <= Assignment1.COUNT) {
-            showAssignment1(n);
-        } else {
-            status.say("The first assignment has pages 1 to " + Assignment1.COUNT + "; A switches to the eight pages.");
-        }
-    }
-
-    /** A: from the eight pages (and scenes) to the first assignment's five pages and back, each where it was left. */
-    void switchAssignment() {
-        if (coursePages != null || assignment1Page > 0) {
-            stepTo(stepper.current());
-        } else {
-            showAssignment1(lastAssignment1Page);
-        }
-    }
-
-    private void showAssignment1(int page) {
-        coursePages = null;
-        forgetViewState();
-        assignment1Page = page;
-        lastAssignment1Page = page;
-        show(new View.OfAssignment1Page(page));
-    }
-
-    private void stepTo(int position) {
-        assignment1Page = 0;
-        coursePages = null;
-        forgetViewState();
-        show(viewAt(position));
-    }
-
-    /** What stands at a place among the pages: one of the scenes named at start, or one of the eight pages. */
-    private View viewAt(int position) {
-        int scene = stepper.sceneAt(position);
-        return scene >= 0 ? new View.OfScene(options.sceneList().get(scene)) : new View.OfPage(stepper.pageAt(position));
-    }
-
-    /** Shows a scene file as an extra view; stepping keys go back to the pages. */
     /** What a dropped folder does from now on: the command line gives {@code simpview check}. Call on the EDT. */
     public SimpviewWindow checkFoldersWith(FolderCheck check) {
         this.folderCheck = check;
@@ -1356,14 +1240,11 @@ public final class SimpviewWindow {
         return lastCheck;
     }
 
+    /** Shows a scene file as an extra view; stepping keys go back to the pages. */
     void openScene(Path file) {
-        assignment1Page = 0;
-        coursePages = null;
-        forgetViewState();
-        show(new View.OfScene(file));
+        pages.openScene(file);
     }
 
-    /** A fresh seed for pages 1 to 3; redraws the page if it is one of them. */
     /** Switches the first assignment between SPEC's rule and the course's pictures' (A1Rule); A1 pages are drawn again. */
     private void toggleA1Rule() {
         A1Rule rule = options.a1Rule() == A1Rule.SPEC ? A1Rule.COURSE : A1Rule.SPEC;
@@ -1374,6 +1255,7 @@ public final class SimpviewWindow {
         status.say("The first assignment's Bresenham panels and fills now follow " + rule.label() + ".");
     }
 
+    /** A fresh seed for pages 1 to 3; redraws the page if it is one of them. */
     void newSeed() {
         long seed = options.seed();
         while (seed == options.seed()) {
@@ -1390,7 +1272,7 @@ public final class SimpviewWindow {
     }
 
     private View requested() {
-        return pending != null ? pending.view() : shown == null ? viewAt(stepper.current()) : shown.view();
+        return pending != null ? pending.view() : shown == null ? pages.current() : shown.view();
     }
 
     /** Draws the view on the render thread; the page on screen stays until the new one is finished. */
@@ -1433,16 +1315,16 @@ public final class SimpviewWindow {
         shown = result;
         overdrawShown = false;
         showPicture();
-        boolean coursePage = coursePages != null && result.view().equals(new View.OfScene(coursePages.current()));
-        frame.setTitle(coursePage ? "simpview — " + coursePages.describe() + (result.error() == null ? "" : " — error")
+        String coursePage = pages.coursePageOf(result.view());
+        frame.setTitle(coursePage != null ? "simpview — " + coursePage + (result.error() == null ? "" : " — error")
                 : result.title());
         watcher.watch(result.facts().files(), job.versionsAsRead());
         status.forgetLastPixel();
         followPointer();
         inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
-        if (coursePage && result.warnings().isEmpty()) {
-            status.say(coursePages.describe() + " · → ← Home End 1-8: its pages · Alt+2: the eight pages");
+        if (coursePage != null && result.warnings().isEmpty()) {
+            status.say(coursePage + " · → ← Home End 1-8: its pages · Alt+2: the eight pages");
         }
         if (orbit.turned()) {
             status.say(orbit.describe());
@@ -1477,11 +1359,8 @@ public final class SimpviewWindow {
         }
         pending.cancel();
         pending = null;
-        if (shown != null && shown.view() instanceof View.OfPage page) {
-            stepper.jump(page.number());
-        } else if (shown != null && shown.view() instanceof View.OfScene scene
-                && options.sceneList().contains(scene.file())) {
-            stepper.moveTo(options.sceneList().indexOf(scene.file()) + 1);
+        if (shown != null) {
+            pages.stayAt(shown.view());
         }
         status.say("Cancelled: the page on screen is unchanged.");
     }
