@@ -5,13 +5,11 @@ import simpview.pages.A1Pixel;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneDrawer;
 import simpview.window.instruments.ComparisonLayer;
-import simpview.window.instruments.DepthPicture;
 import simpview.window.instruments.FolderCheck;
 import simpview.window.instruments.Inspector;
 import simpview.window.instruments.InspectorPanel;
 import simpview.window.render.BackgroundRenderer;
 import simpview.window.render.DrawSettings;
-import simpview.window.render.PageFacts;
 import simpview.window.render.Primitives;
 import simpview.window.render.RenderJob;
 import simpview.window.render.RenderedView;
@@ -49,26 +47,17 @@ import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import java.awt.event.KeyAdapter;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
-import javax.swing.JPanel;
 import javax.swing.JTextField;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
-import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
-import simpview.window.instruments.Outlines;
 import simpview.surface.PageCanvas;
-import simpview.window.instruments.BackFacePicture;
-import simpview.window.instruments.Legend;
-import simpview.window.instruments.OverdrawPicture;
 import javax.swing.Box;
 import javax.swing.event.MenuEvent;
 import javax.swing.event.MenuListener;
@@ -122,16 +111,10 @@ public final class SimpviewWindow {
             legend -> legendStrip.show("compare", legend), () -> options.pageContext());
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel;
-    private boolean overdrawShown;
-    /** The overdraw overlay shows the depth-test failures (Shift+V), not every write (V). */
-    private boolean overdrawFailures;
-    private boolean backFacesShown;
-    private int backFaces = -1;
-    private int overdrawMax = -1;
+    /** The overlays over the finished picture, and the picture again without them. */
+    private final OverlayToggles overlays;
     /** The frame's width before the inspector panel widened it, or 0. */
     private int widthBeforePanel;
-    /** What the culled and clipped-away overlay last found: for the tests. */
-    private SkippedPrimitives.Found skippedFound;
     /** The screen area a test placed the frame in, or null for the real one. */
     private Rectangle placedWithin;
 
@@ -141,6 +124,8 @@ public final class SimpviewWindow {
         this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
+        this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, () -> shown, () -> settings,
+                this::inspectedScene);
     }
 
     /**
@@ -357,9 +342,9 @@ public final class SimpviewWindow {
             case DEPTH_VIEW -> settings.depthView();
             case OWN_COLOURS -> settings.ownColours();
             case A1_RULE -> options.a1Rule() == A1Rule.COURSE;
-            case BACK_FACES -> backFacesShown;
-            case OVERDRAW -> overdrawShown && !overdrawFailures;
-            case DEPTH_FAILURES -> overdrawShown && overdrawFailures;
+            case BACK_FACES -> overlays.backFacesShown();
+            case OVERDRAW -> overlays.overdrawShown(false);
+            case DEPTH_FAILURES -> overlays.overdrawShown(true);
             case CULLED -> pageView.skippedShown();
             case WIRE -> pageView.wireShown();
             case COMPARE_HEAT -> comparison.showing() == ComparisonLayer.Showing.HEAT;
@@ -397,11 +382,11 @@ public final class SimpviewWindow {
             case CROP -> () -> zoom(ZoomPan::fitPanel);
             case DEPTH_VIEW -> () -> toggleDepthView();
             case OWN_COLOURS -> () -> toggleOwnColours();
-            case BACK_FACES -> () -> toggleBackFaces();
-            case OVERDRAW -> () -> toggleOverdraw(false);
-            case DEPTH_FAILURES -> () -> toggleOverdraw(true);
-            case CULLED -> () -> toggleSkipped();
-            case WIRE -> () -> toggleWire();
+            case BACK_FACES -> () -> overlays.toggleBackFaces();
+            case OVERDRAW -> () -> overlays.toggleOverdraw(false);
+            case DEPTH_FAILURES -> () -> overlays.toggleOverdraw(true);
+            case CULLED -> () -> overlays.toggleSkipped();
+            case WIRE -> () -> overlays.toggleWire();
             case COMPARE_FLIP -> () -> comparison.flip();
             case COMPARE_HEAT -> () -> comparison.heat();
             case COMPARE_STOP -> () -> comparison.stop();
@@ -577,100 +562,6 @@ public final class SimpviewWindow {
             why.accept(e.getMessage());
             return null;
         }
-    }
-
-    /**
-     * The overdraw overlay (V): each pixel by how many writes reached its
-     * depth test, with its scale; or (Shift+V) by how many of them lost it.
-     * Again: the page.
-     */
-    private void toggleOverdraw(boolean failures) {
-        if (overdrawShown) {
-            boolean same = overdrawFailures == failures;
-            showPicture();
-            if (same) {
-                status.say(StatusStrip.HINTS);
-                return;
-            }
-            // the other count asked for while one is shown: it takes the place of the one shown
-        }
-        replayForOverlay("Counting the writes of every pixel ...",
-                "The overdraw could not be counted: the scene could not be read.", inspectorPanel::overdraw, counts -> {
-            int[] shownCounts = failures ? counts.failed() : counts.reached();
-            overdrawShown = true;
-            overdrawFailures = failures;
-            overdrawMax = Overdraw.max(shownCounts);
-            pageView.show(failures
-                    ? OverdrawPicture.of(shownCounts,
-                            "depth-test failures: writes that lost each pixel's depth test")
-                    : OverdrawPicture.of(shownCounts), null, true);
-            String writes = overdrawMax == 1 ? " write" : " writes";
-            status.say((failures ? "Depth-test failures: up to " + overdrawMax + " lost" + writes + " at a pixel"
-                    : "Overdraw: up to " + overdrawMax + writes + " at a pixel") + asFarAsTheError()
-                    + " (the scale is above the panel) · " + (failures ? "Shift+V" : "V") + ": the page again");
-        });
-    }
-
-    /** What an overlay of a scene with an error says it covers: the drawing up to the error, as the page shows. */
-    private String asFarAsTheError() {
-        return shown != null && shown.error() != null ? ", as far as the scene's error" : "";
-    }
-
-    /**
-     * An overlay made by replaying the shown scene on the inspector's thread:
-     * says {@code working} meanwhile, then gives the answer to {@code show}
-     * on the EDT, unless the picture changed first (then nothing) or
-     * nothing of the scene could be read (then {@code failed} is said).
-     */
-    private <T> void replayForOverlay(String working, String failed,
-            BiConsumer<InspectedScene, Consumer<T>> replay, Consumer<T> show) {
-        if (shown == null) {
-            return;
-        }
-        InspectedScene scene = inspectedScene(status::say);
-        if (scene == null) {
-            return;
-        }
-        RenderedView of = shown;
-        status.say(working);
-        replay.accept(scene, answer -> {
-            if (shown != of || answer == null) {
-                status.say(answer == null ? failed : "");
-                return;
-            }
-            show.accept(answer);
-        });
-    }
-
-    /** The back-face overlay (K): pixels of clockwise polygons tinted magenta; again: the page. */
-    private void toggleBackFaces() {
-        if (backFacesShown) {
-            showPicture();
-            status.say(StatusStrip.HINTS);
-            return;
-        }
-        if (shown == null) {
-            return;
-        }
-        if (shown.view() instanceof View.OfAssignment1Page) {
-            status.say("Back faces are a scene's (pages 4-8, opened scenes): the first assignment's triangles are "
-                    + "filled whichever way round they are given.");
-            return;
-        }
-        BackFacePicture.Tinted tinted =
-                BackFacePicture.of(shown.image(), shown.facts());
-        if (tinted == null) {
-            status.say("Who drew each pixel was not recorded for this picture: no back faces to show.");
-            return;
-        }
-        showPicture();
-        backFacesShown = true;
-        backFaces = tinted.backFacing();
-        pageView.show(tinted.image(), null, true);
-        legendStrip.show("back faces", new Legend("back faces", List.of(
-                new Legend.Entry(0xFF00FF, "clockwise on the panel (facing away)"))));
-        status.say("Back faces tinted magenta: " + tinted.backFacing() + " of " + tinted.polygons()
-                + " polygons are clockwise on the panel · K: the page again");
     }
 
     /**
@@ -922,63 +813,6 @@ public final class SimpviewWindow {
         return null;
     }
 
-    /**
-     * The culled and clipped-away outlines (U): found by a replay on the
-     * inspector's thread that writes no pixel, drawn over the page with a
-     * legend; again: off. A new picture takes them away.
-     */
-    private void toggleSkipped() {
-        if (pageView.skippedShown()) {
-            pageView.skipped(null, null);
-            legendStrip.show("skipped", null);
-            status.say(StatusStrip.HINTS);
-            return;
-        }
-        replayForOverlay("Finding the primitives culled and clipped away ...",
-                "The scene could not be read: no outlines.", inspectorPanel::skipped, found -> {
-            List<double[]> culled = new ArrayList<>();
-            List<double[]> clipped = new ArrayList<>();
-            for (SkippedPrimitives.Skipped s : found.outlined()) {
-                (s.culled() ? culled : clipped).add(Inspector.toImage(s.outline()));
-            }
-            skippedFound = found;
-            pageView.skipped(culled, clipped);
-            legendStrip.show("skipped", new Legend("never rasterized", List.of(
-                    new Legend.Entry(PageView.CULLED.getRGB() & 0xFFFFFF, culled.size() + " culled"),
-                    new Legend.Entry(PageView.CLIPPED.getRGB() & 0xFFFFFF, clipped.size() + " clipped away"))));
-            long outside = found.outsideThePanel();
-            status.say(culled.size() + " culled and " + clipped.size() + " clipped-away primitives outlined"
-                    + (outside == 0 ? "" : "; " + outside + " of them " + (outside == 1 ? "lies" : "lie")
-                    + " wholly outside the panel, where the outlines are cut away")
-                    + asFarAsTheError() + (found.unprojectable() > 0 ? "; " + found.unprojectable() + " more lie wholly at or behind "
-                    + "the eye and have no outline" : "") + " · U: off");
-        });
-    }
-
-    /** Wire over fill (W): every primitive's edges over the page; again: off. */
-    private void toggleWire() {
-        if (pageView.wireShown()) {
-            pageView.wire(null);
-            legendStrip.show("wire", null);
-            status.say(StatusStrip.HINTS);
-            return;
-        }
-        showWire();
-    }
-
-    private void showWire() {
-        List<double[]> outlines = Outlines.wire(shown == null ? null : shown.facts().primitives());
-        if (outlines.isEmpty()) {
-            pageView.wire(null);
-            legendStrip.show("wire", null);
-            status.say("Wire over fill needs a scene's record of its primitives: pages 4-8 and opened scenes.");
-            return;
-        }
-        pageView.wire(outlines);
-        legendStrip.show("wire", new Legend("wire over fill", List.of(
-                new Legend.Entry(0x00FF80, "the edges of all " + outlines.size() + " primitives"))));
-    }
-
     /** Puts the inspector's line on the clipboard. */
     private void copyInspected() {
         String selected = inspectorPanel.isShown() ? inspectorPanel.selectedText() : "";
@@ -998,7 +832,7 @@ public final class SimpviewWindow {
                 : shown != null && shown.facts().depths() == null)) {
             reload(); // a frame of a turning drag, drawn or being drawn without its depths: drawn again with them
         }
-        showPicture();
+        overlays.showPicture();
         inspect();
     }
 
@@ -1158,24 +992,6 @@ public final class SimpviewWindow {
         pageView.outline(Inspector.toImage(primitives.outline(limit - 1)));
     }
 
-    /** Shows the picture, or its depths, of the finished view. */
-    private void showPicture() {
-        overdrawShown = false;
-        backFacesShown = false;
-        if (shown != null) {
-            PageFacts facts = shown.facts();
-            boolean depths = settings.depthView() && facts.depths() != null
-                    && !(shown.view() instanceof View.OfAssignment1Page);
-            pageView.show(depths ? DepthPicture.of(facts.depths(), facts.depthStart()) : shown.image(), shown.error(),
-                    facts.drewSomething());
-        }
-        legendStrip.clear();
-        pageView.skipped(null, null);
-        if (pageView.wireShown()) {
-            showWire();
-        }
-    }
-
     /** Draws what is on screen again (F5, a save of one of its files), keeping zoom and pan. */
     void reload() {
         show(requested());
@@ -1313,8 +1129,7 @@ public final class SimpviewWindow {
             pageView.zoomPan().refit();
         }
         shown = result;
-        overdrawShown = false;
-        showPicture();
+        overlays.showPicture();
         String coursePage = pages.coursePageOf(result.view());
         frame.setTitle(coursePage != null ? "simpview — " + coursePage + (result.error() == null ? "" : " — error")
                 : result.title());
@@ -1400,7 +1215,7 @@ public final class SimpviewWindow {
 
     /** What the culled and clipped-away overlay shows, or null while it is off. */
     SkippedPrimitives.Found skippedShown() {
-        return pageView.skippedShown() ? skippedFound : null;
+        return overlays.skippedShown();
     }
 
     LegendStrip legendStrip() {
@@ -1413,7 +1228,7 @@ public final class SimpviewWindow {
 
     /** How many polygons the back-face overlay tints while it is shown, else -1. */
     int backFacesShownCount() {
-        return backFacesShown ? backFaces : -1;
+        return overlays.backFacesShownCount();
     }
 
     /** The step shown: how many primitives are drawn, or -1 for the whole picture. */
@@ -1423,7 +1238,7 @@ public final class SimpviewWindow {
 
     /** The overdraw overlay's largest count while it is shown, else -1. */
     int overdrawShownMax() {
-        return overdrawShown ? overdrawMax : -1;
+        return overlays.overdrawShownMax();
     }
 
     // compare (issue 15)
