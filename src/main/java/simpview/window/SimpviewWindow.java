@@ -23,11 +23,9 @@ import java.awt.GraphicsConfiguration;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
-import java.awt.datatransfer.StringSelection;
 import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
-import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
@@ -46,18 +44,13 @@ import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
-import java.awt.event.KeyAdapter;
 import java.util.function.Consumer;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
-import javax.swing.JOptionPane;
-import javax.swing.JTextField;
-import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.SkippedPrimitives;
-import simpview.surface.PageCanvas;
 import javax.swing.Box;
 import javax.swing.event.MenuEvent;
 import javax.swing.event.MenuListener;
@@ -76,14 +69,6 @@ public final class SimpviewWindow {
     private final SceneWatcher watcher = new SceneWatcher(this::reload);
     private DrawSettings settings = DrawSettings.WINDOW;
     private final Orbit orbit = new Orbit();
-    /** The pointer's last place over the page view (x = -1: off it): the hovered pixel follows a zoom under it. */
-    private int pointerX = -1;
-    private int pointerY = -1;
-    /** The image pixel under the pointer, and the pinned one (x = -1: none). */
-    private int hoverX = -1;
-    private int hoverY = -1;
-    private int pinnedX = -1;
-    private int pinnedY = -1;
     private final StatusStrip status = new StatusStrip(this::cancel);
     private static final String STEPPING_WORKS_ON =
             "Stepping through the drawing works on scenes (pages 4–8, opened scenes) and the first assignment's pages.";
@@ -111,6 +96,8 @@ public final class SimpviewWindow {
             legend -> legendStrip.show("compare", legend), () -> options.pageContext());
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel;
+    /** The pixel the inspector looks at, and what is said of it. */
+    private final InspectedPixel inspected;
     /** The overlays over the finished picture, and the picture again without them. */
     private final OverlayToggles overlays;
     /** The frame's width before the inspector panel widened it, or 0. */
@@ -126,6 +113,8 @@ public final class SimpviewWindow {
         this.dialogs = new FileDialogs(frame, options.simpDir());
         this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, () -> shown, () -> settings,
                 this::inspectedScene);
+        this.inspected = new InspectedPixel(frame, pageView, status, inspectorPanel, comparison, orbit, () -> shown,
+                () -> settings, this::inspectedScene);
     }
 
     /**
@@ -161,7 +150,7 @@ public final class SimpviewWindow {
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
-                inspectUnderPointer();
+                inspected.inspectUnderPointer();
             }
         });
         bindKeys();
@@ -198,7 +187,7 @@ public final class SimpviewWindow {
         @Override
         public void zoomPanChanged() {
             pageView.repaint();
-            inspectUnderPointer();
+            inspected.inspectUnderPointer();
         }
 
         @Override
@@ -220,31 +209,7 @@ public final class SimpviewWindow {
 
         @Override
         public void hover(int x, int y) {
-            pointerX = x;
-            pointerY = y;
-            inspectUnderPointer();
-        }
-    }
-
-    /**
-     * The pixel under the pointer's last place, found again: the pointer
-     * moved, or the zoom, the pan or the view's size changed under it.
-     * Returns whether it is another pixel than before.
-     */
-    private boolean followPointer() {
-        int wasX = hoverX;
-        int wasY = hoverY;
-        hoverX = pointerX < 0 ? -1 : pageView.imageX(pointerX);
-        hoverY = pointerY < 0 ? -1 : pageView.imageY(pointerY);
-        return hoverX != wasX || hoverY != wasY;
-    }
-
-    /** The status line's inspector, and the panel while nothing is pinned, on the pixel under the pointer. */
-    private void inspectUnderPointer() {
-        boolean another = followPointer();
-        inspect();
-        if (pinnedX < 0 && hoverX >= 0 && hoverY >= 0 && another) {
-            refreshPanel(); // the panel follows the pointer while nothing is pinned
+            inspected.pointerAt(x, y);
         }
     }
 
@@ -350,7 +315,7 @@ public final class SimpviewWindow {
             case COMPARE_HEAT -> comparison.showing() == ComparisonLayer.Showing.HEAT;
             case HIDE_ERROR -> pageView.errorHidden();
             case INSPECTOR -> inspectorPanel.isShown();
-            case PIN -> pinnedX >= 0;
+            case PIN -> inspected.isPinned();
             case HELP -> help.isVisible();
             default -> throw new IllegalArgumentException(action + " is a toggle without its state here, "
                     + "or no toggle: WindowAction says which");
@@ -419,10 +384,10 @@ public final class SimpviewWindow {
                 }
             };
             case INSPECTOR -> () -> toggleInspectorPanel();
-            case PIN -> () -> togglePin();
-            case GO_TO_PIXEL -> () -> askForPixel();
-            case COPY -> () -> copyInspected();
-            case COPY_CHAIN -> () -> copyChain();
+            case PIN -> () -> inspected.togglePin();
+            case GO_TO_PIXEL -> () -> inspected.askForPixel();
+            case COPY -> () -> inspected.copyInspected();
+            case COPY_CHAIN -> () -> inspected.copyChain();
             case STEP_ON -> () -> step(1);
             case STEP_BACK -> () -> step(-1);
             case STEP_ON_10 -> () -> step(10);
@@ -441,44 +406,7 @@ public final class SimpviewWindow {
     private void zoom(Consumer<ZoomPan> change) {
         change.accept(pageView.zoomPan());
         pageView.repaint();
-        inspectUnderPointer();
-    }
-
-    /** The status line's inspector: the pinned pixel, else the one under the pointer, and the zoom. */
-    private void inspect() {
-        int x = pinnedX >= 0 ? pinnedX : hoverX;
-        int y = pinnedX >= 0 ? pinnedY : hoverY;
-        String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
-        String zoom = pageView.zoomPan().describe() + (settings.depthView() ? " · depth view" : "")
-                + (settings.ownColours() ? " · own colours" : "");
-        String theirs = x < 0 || y < 0 ? "" : comparison.theirsAt(x, y)
-                .map(rgb -> " · theirs " + Inspector.rgb(rgb)).orElse("");
-        String line = (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs;
-        // Below 1:1 the zoom comes first: the line may be cut at its end, and that must not be lost.
-        status.inspect(pixel == null ? zoom : pageView.zoomPan().belowOneToOne() ? zoom + " · " + line
-                : line + " · " + zoom, pixel != null);
-        if (settings.stepLimit() < 0) {
-            boolean magnified = PixelGrid.shows(pageView.zoomPan());
-            pageView.outline(magnified ? Inspector.outlineAt(shown, x, y) : null);
-            pageView.marks(magnified ? Inspector.marksAt(shown, x, y) : null);
-        }
-    }
-
-    private void togglePin() {
-        if (pinnedX >= 0) {
-            pinnedX = pinnedY = -1;
-            if (status.messageText().startsWith("Pinned ")) {
-                status.say("Unpinned: the inspector follows the pointer again.");
-            }
-        } else if (hoverX >= 0 && hoverY >= 0) {
-            pinnedX = hoverX;
-            pinnedY = hoverY;
-        } else {
-            status.say("Move the pointer over a pixel, then press P to pin it.");
-        }
-        pageView.pin(pinnedX, pinnedY);
-        inspect();
-        refreshPanel();
+        inspected.inspectUnderPointer();
     }
 
     /** Shows or hides the side panel of the pinned pixel's history (I). */
@@ -487,60 +415,8 @@ public final class SimpviewWindow {
         makeRoomForThePanel(shownNow);
         frame.getContentPane().validate();
         if (shownNow) {
-            refreshPanel();
+            inspected.refreshPanel();
         }
-    }
-
-    /** The side panel, when shown: the pinned pixel's history (else the one under the pointer's), replayed. */
-    private void refreshPanel() {
-        if (!inspectorPanel.isShown()) {
-            return;
-        }
-        int ix = pinnedX >= 0 ? pinnedX : hoverX;
-        int iy = pinnedX >= 0 ? pinnedY : hoverY;
-        if (ix < 0 || iy < 0 || shown == null) {
-            inspectorPanel.say("Point at a pixel, or pin one (P, or Shift+G for its coordinates), to see every write "
-                    + "it received, how its colour was made, and its primitive's vertices.");
-            return;
-        }
-        String theirs = comparedAt(ix, iy);
-        if (shown.view() instanceof View.OfAssignment1Page a1) {
-            // The first assignment's pixels go by page coordinates, y up: every panel is on the page.
-            inspectorPanel.inspectFirstAssignment(a1.number(), shown.seed(), shown.a1Rule(), ix, PageCanvas.SIZE - 1 - iy, theirs);
-            return;
-        }
-        int x = ix - PageCanvas.MARGIN;
-        int y = PageCanvas.MARGIN + PageCanvas.PANEL - 1 - iy;
-        if (x < 0 || y < 0 || x >= PageCanvas.PANEL || y >= PageCanvas.PANEL) {
-            inspectorPanel.say((theirs == null ? "" : theirs + "\n\n")
-                    + "The pixel is in the margin: nothing is drawn there.");
-            return;
-        }
-        InspectedScene scene = inspectedScene(message ->
-                inspectorPanel.say((theirs == null ? "" : theirs + "\n\n") + message));
-        if (scene == null) {
-            return;
-        }
-        // While stepping (unturned, where the replay numbers the primitives as the steps do), the vertex table is
-        // the stepped primitive's: RenderDoc's mesh view of the draw at hand, with whether it covers the pixel.
-        int stepped = settings.stepLimit() >= 1 && !orbit.turned() ? settings.stepLimit() - 1 : HistoryEntry.NO_NUMBER;
-        String note = orbit.turned() || settings.stepLimit() >= 0
-                ? "The history is of the whole drawing in the unturned view (stepping and turning are left out)."
-                : null;
-        inspectorPanel.inspect(scene, x, y, note, theirs, stepped);
-    }
-
-    /** While comparing: both pictures' values at image pixel (ix, iy) and how far apart they are; else null. */
-    private String comparedAt(int ix, int iy) {
-        return comparison.theirsAt(ix, iy).map(theirs -> {
-            int ours = shown.image().getRGB(ix, iy);
-            int dr = ((theirs >> 16) & 0xFF) - ((ours >> 16) & 0xFF);
-            int dg = ((theirs >> 8) & 0xFF) - ((ours >> 8) & 0xFF);
-            int db = (theirs & 0xFF) - (ours & 0xFF);
-            return "comparing with " + comparison.theirName() + ":\n  ours   " + Inspector.rgb(ours) + "\n  theirs "
-                    + Inspector.rgb(theirs) + "\n  theirs - ours (" + dr + ", " + dg + ", " + db + "), largest "
-                    + Math.max(Math.abs(dr), Math.max(Math.abs(dg), Math.abs(db))) + "/255";
-        }).orElse(null);
     }
 
     /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
@@ -572,9 +448,9 @@ public final class SimpviewWindow {
      * {@link #finished} calls this again with {@code wholeDrawn}.
      */
     private void stepToOwner(boolean wholeDrawn) {
-        int x = pinnedX >= 0 ? pinnedX : hoverX;
-        int y = pinnedX >= 0 ? pinnedY : hoverY;
-        String pixel = pinnedX >= 0 ? "the pinned pixel" : "the pixel under the pointer";
+        int x = inspected.x();
+        int y = inspected.y();
+        String pixel = inspected.isPinned() ? "the pinned pixel" : "the pixel under the pointer";
         if (x < 0 || y < 0) {
             // The pointer is off the picture (over the side panel, the status strip, beside the page) and none is pinned.
             nothingToStepTo("There is no pixel under the pointer: point at the picture, or pin a pixel (P, or Shift+G "
@@ -628,7 +504,7 @@ public final class SimpviewWindow {
             status.say("There is no primitive to go to: this picture has none.");
             return;
         }
-        String answer = askAfterKey("Go to primitive (1 to " + total + "):", 'g');
+        String answer = QuestionAfterKey.ask(frame, "Go to primitive (1 to " + total + "):", 'g');
         if (answer == null) {
             return;
         }
@@ -684,116 +560,12 @@ public final class SimpviewWindow {
     }
 
     /**
-     * Asks for a line of text in a dialog opened by the key {@code key}: the
-     * dialog opens on the key's press, and the letter that key types comes
-     * after, into the dialog's field; the field lets that first letter go by
-     * (an answer here never starts with it). Null when cancelled.
-     */
-    private String askAfterKey(String question, char key) {
-        JTextField field = new JTextField(12);
-        field.setName("answer");
-        field.addKeyListener(new KeyAdapter() {
-            private boolean first = true;
-
-            @Override
-            public void keyTyped(KeyEvent e) {
-                if (first && Character.toLowerCase(e.getKeyChar()) == key && field.getText().isEmpty()) {
-                    e.consume();
-                }
-                first = false;
-            }
-        });
-        JOptionPane pane = new JOptionPane(new Object[] {question, field},
-                JOptionPane.QUESTION_MESSAGE, JOptionPane.OK_CANCEL_OPTION);
-        JDialog dialog = pane.createDialog(frame, "simpview");
-        dialog.addWindowFocusListener(new WindowAdapter() {
-            @Override
-            public void windowGainedFocus(WindowEvent e) {
-                field.requestFocusInWindow();
-            }
-        });
-        field.addActionListener(e -> pane.setValue(JOptionPane.OK_OPTION));
-        dialog.setVisible(true);
-        dialog.dispose();
-        Object chosen = pane.getValue();
-        return chosen instanceof Integer option && option == JOptionPane.OK_OPTION ? field.getText() : null;
-    }
-
-    /** Asks for a pixel by its panel coordinates (x right, y up), pins it and shows it (Shift+G). */
-    private void askForPixel() {
-        if (shown == null) {
-            return;
-        }
-        boolean pageCoordinates = shown.view() instanceof View.OfAssignment1Page;
-        int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
-        String answer = askAfterKey(pageCoordinates
-                ? "Go to the page's pixel x, y (x right, y up from the page's bottom-left, 0 to " + last + "):"
-                : "Go to the panel's pixel x, y (x right, y up from the panel's bottom-left, 0 to " + last + "):", 'g');
-        if (answer != null) {
-            goToPixel(answer);
-        }
-    }
-
-    /**
      * Pins the pixel "x, y" (the panel's coordinates, x right and y up; on
      * the first assignment's pages the page's) and brings it into view; says
      * why not when the text is not a pixel.
      */
     void goToPixel(String answer) {
-        String[] parts = answer.strip().split("[,\\s]+");
-        boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
-        int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
-        int x;
-        int y;
-        try {
-            if (parts.length != 2) {
-                throw new NumberFormatException();
-            }
-            x = Integer.parseInt(parts[0]);
-            y = Integer.parseInt(parts[1]);
-        } catch (NumberFormatException e) {
-            status.say("'" + answer + "' is not a pixel: give x, y, for example 325, 400.");
-            return;
-        }
-        if (x < 0 || y < 0 || x > last || y > last) {
-            status.say("(" + x + ", " + y + ") is outside the " + (pageCoordinates ? "page" : "panel") + ": x and y go "
-                    + "from 0 to " + last + ".");
-            return;
-        }
-        int offset = pageCoordinates ? 0 : PageCanvas.MARGIN;
-        pinnedX = offset + x;
-        pinnedY = offset + last - y;
-        pageView.zoomPan().bringIntoView(pinnedX, pinnedY);
-        pageView.pin(pinnedX, pinnedY);
-        followPointer();
-        inspect();
-        refreshPanel();
-        status.say("Pinned " + (pageCoordinates ? "page" : "panel") + " pixel (" + x + ", " + y + "): the image's column "
-                + pinnedX + ", row " + pinnedY + " (rows run down from the top)");
-    }
-
-    /** Copies the include chain of the inspected pixel's owner, whole paths (Ctrl+Shift+C). */
-    private void copyChain() {
-        String chain = inspectorPanel.isShown() ? inspectorPanel.ownerChainText() : "";
-        String note = "";
-        if (chain.isEmpty()) {
-            // Without the panel: the owner's own file:line, where a scene gave it; a page's own primitive by its name.
-            int x = pinnedX >= 0 ? pinnedX : hoverX;
-            int y = pinnedX >= 0 ? pinnedY : hoverY;
-            int owner = Inspector.ownerAt(shown, x, y);
-            String place = owner < 0 ? null : shown.facts().primitives().place(owner);
-            String line = x < 0 ? null : Inspector.describe(shown, x, y);
-            if (place == null && (line == null || !line.contains("drawn by primitive"))) {
-                status.say(shown != null && shown.facts().owners() == null && x >= 0
-                        ? "This page records no primitive for its pixels: no chain to copy."
-                        : "No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
-                return;
-            }
-            chain = place != null ? place : line.substring(line.indexOf("drawn by primitive"));
-            note = " (with the panel open, I, the copy is the whole include chain)";
-        }
-        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(chain), null);
-        status.say("Copied: " + chain + note);
+        inspected.goToPixel(answer);
     }
 
     /** Where the compare dialog opens: the shown scene's folder, else the course's pages' folder. */
@@ -813,14 +585,6 @@ public final class SimpviewWindow {
         return null;
     }
 
-    /** Puts the inspector's line on the clipboard. */
-    private void copyInspected() {
-        String selected = inspectorPanel.isShown() ? inspectorPanel.selectedText() : "";
-        String line = selected.isEmpty() ? status.inspectorText() : selected;
-        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(line), null);
-        status.say("Copied: " + line);
-    }
-
     private void toggleDepthView() {
         if (!settings.depthView() && shown != null && shown.view() instanceof View.OfAssignment1Page) {
             status.say("The first assignment's pages have no depths to show: their panels are drawn without a "
@@ -833,7 +597,7 @@ public final class SimpviewWindow {
             reload(); // a frame of a turning drag, drawn or being drawn without its depths: drawn again with them
         }
         overlays.showPicture();
-        inspect();
+        inspected.inspect();
     }
 
     private void toggleOwnColours() {
@@ -844,7 +608,7 @@ public final class SimpviewWindow {
             // A lit scene (its z-buffer starts at -infinity; one still being drawn tells its job so) has no depth cue
             // to leave out: SPEC Part 2 colours it by its lights and fog, own colours or not, so it is not drawn
             // again, nor its drawing started over.
-            inspect();
+            inspected.inspect();
             status.say((settings.ownColours() ? "Own colours: on for depth-cued scenes. " : "Depth cue: on again for "
                     + "depth-cued scenes. ") + "This scene is lit (its camera, lights and fog make its colours, "
                     + "SPEC Part 2), so it looks the same either way.");
@@ -945,8 +709,7 @@ public final class SimpviewWindow {
     private void forgetViewState() {
         orbit.reset();
         settings = settings.withStepLimit(-1).withViewTurn(null).withRecord(true);
-        pinnedX = pinnedY = -1;
-        pageView.pin(-1, -1);
+        inspected.unpin();
     }
 
     /** The line under the page while stepping: which primitive, from where; and its outline on the page. */
@@ -1135,8 +898,8 @@ public final class SimpviewWindow {
                 : result.title());
         watcher.watch(result.facts().files(), job.versionsAsRead());
         status.forgetLastPixel();
-        followPointer();
-        inspect();
+        inspected.followPointer();
+        inspected.inspect();
         status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
         if (coursePage != null && result.warnings().isEmpty()) {
             status.say(coursePage + " · → ← Home End 1-8: its pages · Alt+2: the eight pages");
@@ -1151,7 +914,7 @@ public final class SimpviewWindow {
             // pageI on this project's 2-core machine) would take a core from the drawing; a comparison (with
             // its search for a mistake of the whole panel, tens of ms) would hold the event thread, and with it
             // the next frame. The traced frame after the drag does both.
-            refreshPanel();
+            inspected.refreshPanel();
             comparison.viewShown(result); // compare (issue 15)
         }
         if (turnWaiting) {
