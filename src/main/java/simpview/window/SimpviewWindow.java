@@ -19,10 +19,7 @@ import simpview.window.render.View;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Font;
-import java.awt.GraphicsConfiguration;
-import java.awt.Insets;
 import java.awt.Rectangle;
-import java.awt.Toolkit;
 import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
@@ -100,10 +97,8 @@ public final class SimpviewWindow {
     private final InspectedPixel inspected;
     /** The overlays over the finished picture, and the picture again without them. */
     private final OverlayToggles overlays;
-    /** The frame's width before the inspector panel widened it, or 0. */
-    private int widthBeforePanel;
-    /** The screen area a test placed the frame in, or null for the real one. */
-    private Rectangle placedWithin;
+    /** The frame's place on the screen, widened for the inspector panel. */
+    private final WindowPlacement placement;
 
     private SimpviewWindow(WindowOptions options, SceneDrawer drawer) {
         this.options = options;
@@ -111,6 +106,7 @@ public final class SimpviewWindow {
         this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
+        this.placement = new WindowPlacement(frame, inspectorPanel.component());
         this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, () -> shown, () -> settings,
                 this::inspectedScene);
         this.inspected = new InspectedPixel(frame, pageView, status, inspectorPanel, comparison, orbit, () -> shown,
@@ -164,17 +160,8 @@ public final class SimpviewWindow {
         });
         frame.pack();
         frame.setMinimumSize(new Dimension(320, 240));
-        frame.setBounds(WindowPlacement.within(frame.getSize(), usableScreen()));
+        placement.placeAsOpened();
         frame.setVisible(true);
-    }
-
-    /** The screen's area for windows: without taskbars and docks. */
-    private Rectangle usableScreen() {
-        GraphicsConfiguration screen = frame.getGraphicsConfiguration();
-        Rectangle bounds = screen.getBounds();
-        Insets taken = Toolkit.getDefaultToolkit().getScreenInsets(screen);
-        return new Rectangle(bounds.x + taken.left, bounds.y + taken.top,
-                bounds.width - taken.left - taken.right, bounds.height - taken.top - taken.bottom);
     }
 
     /** What the pointer does over the page. */
@@ -412,7 +399,7 @@ public final class SimpviewWindow {
     /** Shows or hides the side panel of the pinned pixel's history (I). */
     private void toggleInspectorPanel() {
         boolean shownNow = inspectorPanel.toggle();
-        makeRoomForThePanel(shownNow);
+        placement.makeRoomForThePanel(shownNow);
         frame.getContentPane().validate();
         if (shownNow) {
             inspected.refreshPanel();
@@ -522,41 +509,11 @@ public final class SimpviewWindow {
     }
 
     /**
-     * The frame grows by the panel's width when the panel is shown (as far as
-     * the screen allows) and shrinks back when it is hidden, so that the page
-     * keeps its zoom beside it; a maximized frame keeps its size.
-     */
-    private void makeRoomForThePanel(boolean shownNow) {
-        if ((frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) != 0) {
-            return;
-        }
-        int panel = inspectorPanel.component().getPreferredSize().width;
-        Rectangle bounds = frame.getBounds();
-        Rectangle usable = screenForPlacing();
-        int width;
-        if (shownNow) {
-            widthBeforePanel = bounds.width;
-            width = Math.min(usable.width, bounds.width + panel);
-        } else {
-            width = widthBeforePanel > 0 ? widthBeforePanel : Math.max(320, bounds.width - panel);
-        }
-        int x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - width));
-        frame.setBounds(x, bounds.y, width, bounds.height);
-    }
-
-    /** The screen area the frame is placed in: the usable screen, or what a test said. */
-    private Rectangle screenForPlacing() {
-        return placedWithin != null ? placedWithin : usableScreen();
-    }
-
-    /**
      * Places the frame as it would open on a screen whose usable area is
      * {@code usable} (for tests of a small screen on a larger one).
      */
     void placeWithin(Rectangle usable) {
-        placedWithin = usable;
-        frame.setBounds(WindowPlacement.within(frame.getPreferredSize(), usable));
-        frame.validate();
+        placement.placeWithin(usable);
     }
 
     /**

@@ -1,12 +1,32 @@
 package simpview.window;
 
 import java.awt.Dimension;
+import java.awt.GraphicsConfiguration;
+import java.awt.Insets;
 import java.awt.Rectangle;
+import java.awt.Toolkit;
+import javax.swing.JComponent;
+import javax.swing.JFrame;
 
-/** Where a window opens: at the size it wants, cut down to the screen's usable area, centred in it. */
+/**
+ * Where a window opens: at the size it wants, cut down to the screen's usable
+ * area, centred in it. An instance keeps one window's frame there: it opens
+ * it so, and widens it for the inspector panel beside the page and narrows
+ * it back. On the EDT.
+ */
 public final class WindowPlacement {
 
-    private WindowPlacement() {
+    private final JFrame frame;
+    private final JComponent panel;
+    /** The frame's width before the inspector panel widened it, or 0. */
+    private int widthBeforePanel;
+    /** The screen area a test placed the frame in, or null for the real one. */
+    private Rectangle placedWithin;
+
+    /** The placement of {@code frame}, whose inspector panel is {@code panel}. */
+    WindowPlacement(JFrame frame, JComponent panel) {
+        this.frame = frame;
+        this.panel = panel;
     }
 
     /** The frame's bounds for a frame that would like to be {@code wanted}, on a screen whose usable area is {@code usable}. */
@@ -16,5 +36,57 @@ public final class WindowPlacement {
         int x = usable.x + (usable.width - width) / 2;
         int y = usable.y + (usable.height - height) / 2;
         return new Rectangle(x, y, width, height);
+    }
+
+    /** Places the packed frame as it opens: at its size, within the usable screen. */
+    void placeAsOpened() {
+        frame.setBounds(within(frame.getSize(), usableScreen()));
+    }
+
+    /** The screen's area for windows: without taskbars and docks. */
+    private Rectangle usableScreen() {
+        GraphicsConfiguration screen = frame.getGraphicsConfiguration();
+        Rectangle bounds = screen.getBounds();
+        Insets taken = Toolkit.getDefaultToolkit().getScreenInsets(screen);
+        return new Rectangle(bounds.x + taken.left, bounds.y + taken.top,
+                bounds.width - taken.left - taken.right, bounds.height - taken.top - taken.bottom);
+    }
+
+    /**
+     * The frame grows by the panel's width when the panel is shown (as far as
+     * the screen allows) and shrinks back when it is hidden, so that the page
+     * keeps its zoom beside it; a maximized frame keeps its size.
+     */
+    void makeRoomForThePanel(boolean shownNow) {
+        if ((frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) != 0) {
+            return;
+        }
+        int panelWidth = panel.getPreferredSize().width;
+        Rectangle bounds = frame.getBounds();
+        Rectangle usable = screenForPlacing();
+        int width;
+        if (shownNow) {
+            widthBeforePanel = bounds.width;
+            width = Math.min(usable.width, bounds.width + panelWidth);
+        } else {
+            width = widthBeforePanel > 0 ? widthBeforePanel : Math.max(320, bounds.width - panelWidth);
+        }
+        int x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - width));
+        frame.setBounds(x, bounds.y, width, bounds.height);
+    }
+
+    /** The screen area the frame is placed in: the usable screen, or what a test said. */
+    private Rectangle screenForPlacing() {
+        return placedWithin != null ? placedWithin : usableScreen();
+    }
+
+    /**
+     * Places the frame as it would open on a screen whose usable area is
+     * {@code usable} (for tests of a small screen on a larger one).
+     */
+    void placeWithin(Rectangle usable) {
+        placedWithin = usable;
+        frame.setBounds(within(frame.getPreferredSize(), usable));
+        frame.validate();
     }
 }
