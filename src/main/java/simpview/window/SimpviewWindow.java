@@ -18,7 +18,6 @@ import simpview.window.render.View;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.Font;
 import java.awt.Rectangle;
 import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;
@@ -30,12 +29,8 @@ import java.util.concurrent.ThreadLocalRandom;
 import javax.swing.AbstractAction;
 import javax.swing.InputMap;
 import javax.swing.JComponent;
-import javax.swing.JDialog;
 import javax.swing.JFrame;
-import javax.swing.JScrollPane;
-import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
-import javax.swing.SwingUtilities;
 import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
@@ -74,8 +69,8 @@ public final class SimpviewWindow {
     private final BackgroundRenderer renderer;
     private final FileDialogs dialogs;
     private WindowOptions options;
-    private String lastCheck;
-    private FolderCheck folderCheck = FolderCheck.NONE;
+    /** The check of a folder dropped on the window. */
+    private final DroppedFolderCheck folders;
     private RenderedView shown;
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
@@ -107,6 +102,7 @@ public final class SimpviewWindow {
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
         this.placement = new WindowPlacement(frame, inspectorPanel.component());
+        this.folders = new DroppedFolderCheck(frame, status, () -> this.options.pageContext());
         this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, () -> shown, () -> settings,
                 this::inspectedScene);
         this.inspected = new InspectedPixel(frame, pageView, status, inspectorPanel, comparison, orbit, () -> shown,
@@ -735,45 +731,18 @@ public final class SimpviewWindow {
 
     /** What a dropped folder does from now on: the command line gives {@code simpview check}. Call on the EDT. */
     public SimpviewWindow checkFoldersWith(FolderCheck check) {
-        this.folderCheck = check;
+        folders.checkWith(check);
         return this;
     }
 
-    /**
-     * A folder dropped (issue 21): {@code simpview check FOLDER} (its pages, the first assignment's,
-     * its own scenes with their pictures, its own compare.json), on its own thread (drawn with this
-     * window's seed and scene folder); the table in a window of its own.
-     */
+    /** A folder dropped (issue 21): checked as {@code simpview check FOLDER}, on its own thread. */
     void checkFolder(Path folder) {
-        status.say("Checking the pictures in " + folder + " against the pages ...");
-        PageContext context = options.pageContext();
-        FolderCheck check = folderCheck;
-        Runnable work = () -> {
-            String table = check.text(folder, context);
-            SwingUtilities.invokeLater(() -> showCheck(folder, table));
-        };
-        Thread thread = new Thread(work, "simpview-folder-check");
-        thread.setDaemon(true);
-        thread.start();
-    }
-
-    private void showCheck(Path folder, String table) {
-        JTextArea text = new JTextArea(table);
-        text.setEditable(false);
-        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
-        JDialog dialog = new JDialog(frame, "check: " + folder.getFileName(), false);
-        dialog.getContentPane().add(new JScrollPane(text));
-        dialog.pack();
-        dialog.setLocationRelativeTo(frame);
-        dialog.setVisible(true);
-        lastCheck = table;
-        String[] lines = table.split("\n");
-        status.say(folder.getFileName() + ": " + lines[lines.length - 1]);
+        folders.check(folder);
     }
 
     /** The table of the last folder checked, or null: for the tests. */
     String lastCheck() {
-        return lastCheck;
+        return folders.lastCheck();
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */
