@@ -19,33 +19,21 @@ import simpview.window.render.View;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Rectangle;
-import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.concurrent.ThreadLocalRandom;
-import javax.swing.AbstractAction;
-import javax.swing.InputMap;
-import javax.swing.JComponent;
 import javax.swing.JFrame;
-import javax.swing.KeyStroke;
 import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.ScenePage;
 import java.util.function.Consumer;
-import javax.swing.JCheckBoxMenuItem;
-import javax.swing.JMenu;
-import javax.swing.JMenuBar;
-import javax.swing.JMenuItem;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.SkippedPrimitives;
-import javax.swing.Box;
-import javax.swing.event.MenuEvent;
-import javax.swing.event.MenuListener;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
@@ -132,7 +120,7 @@ public final class SimpviewWindow {
         frame.getContentPane().add(pageView, BorderLayout.CENTER);
         frame.getContentPane().add(status.component(), BorderLayout.SOUTH);
         frame.getContentPane().add(inspectorPanel.component(), BorderLayout.EAST);
-        frame.setJMenuBar(menuBar());
+        frame.setJMenuBar(MenusAndKeys.menuBar(legendStrip, this::isOn, this::perform));
         frame.setGlassPane(help);
         inspectorPanel.onCopy(status::say);
         frame.setResizable(true);
@@ -145,7 +133,7 @@ public final class SimpviewWindow {
                 inspected.inspectUnderPointer();
             }
         });
-        bindKeys();
+        MenusAndKeys.bindKeys(frame.getRootPane(), this::perform);
         frame.addWindowListener(new WindowAdapter() {
             @Override
             public void windowClosed(WindowEvent e) {
@@ -193,91 +181,6 @@ public final class SimpviewWindow {
         @Override
         public void hover(int x, int y) {
             inspected.pointerAt(x, y);
-        }
-    }
-
-    /** Every key of the table on the root pane, whichever component has the keyboard. */
-    private void bindKeys() {
-        JComponent root = frame.getRootPane();
-        InputMap keys = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
-        for (WindowAction action : WindowAction.values()) {
-            for (KeyStroke stroke : action.strokes()) {
-                keys.put(stroke, action);
-            }
-            root.getActionMap().put(action, new AbstractAction() {
-                private static final long serialVersionUID = 1L;
-
-                @Override
-                public void actionPerformed(ActionEvent e) {
-                    perform(action);
-                }
-            });
-        }
-    }
-
-    /**
-     * The menu bar, from the same table as the keys: each entry shows its
-     * accelerator and does what its key does (the key itself is handled by
-     * the root pane's binding, which consumes it, so it acts once).
-     */
-    private JMenuBar menuBar() {
-        JMenuBar bar = new JMenuBar();
-        bar.setName("menu bar");
-        JMenu menu = null;
-        for (WindowAction action : WindowAction.values()) {
-            if (menu == null || !menu.getName().equals(action.menu().name())) {
-                menu = new JMenu(action.menu().title());
-                menu.setName(action.menu().name());
-                menu.setMnemonic(action.menu().mnemonic());
-                bar.add(menu);
-            }
-            if (action.firstOfGroup()) {
-                menu.addSeparator();
-            }
-            JMenuItem item;
-            if (action.toggle()) {
-                isOn(action); // a toggle isOn does not know fails here, as the window opens
-                item = new JCheckBoxMenuItem(action.label());
-            } else {
-                item = new JMenuItem(action.label());
-            }
-            item.setName(action.name());
-            item.setAccelerator(action.accelerator());
-            item.addActionListener(e -> perform(action));
-            menu.add(item);
-        }
-        // What an overlay's colours mean, at the bar's right end: it takes no height from the page.
-        bar.add(Box.createHorizontalGlue());
-        bar.add(legendStrip);
-        for (int m = 0; m < bar.getMenuCount(); m++) {
-            JMenu shown = bar.getMenu(m);
-            if (shown == null) {
-                continue;
-            }
-            shown.addMenuListener(new MenuListener() {
-                @Override
-                public void menuSelected(MenuEvent e) {
-                    tick(shown);
-                }
-
-                @Override
-                public void menuDeselected(MenuEvent e) {
-                }
-
-                @Override
-                public void menuCanceled(MenuEvent e) {
-                }
-            });
-        }
-        return bar;
-    }
-
-    /** Ticks a menu's toggles that are on, as it opens. */
-    private void tick(JMenu menu) {
-        for (int k = 0; k < menu.getItemCount(); k++) {
-            if (menu.getItem(k) instanceof JCheckBoxMenuItem toggle) {
-                toggle.setSelected(isOn(WindowAction.valueOf(toggle.getName())));
-            }
         }
     }
 
