@@ -2,9 +2,6 @@ package simpview.window;
 
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
-import java.util.function.Consumer;
-import java.util.function.Function;
-import java.util.function.Supplier;
 import javax.swing.JFrame;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
@@ -30,9 +27,7 @@ final class InspectedPixel {
     private final InspectorPanel inspectorPanel;
     private final ComparisonLayer comparison;
     private final Orbit orbit;
-    private final Supplier<RenderedView> onScreen;
-    private final Supplier<DrawSettings> drawSettings;
-    private final Function<Consumer<String>, InspectedScene> inspectedScene;
+    private final OnScreen onScreen;
     /** The pointer's last place over the page view (x = -1: off it): the hovered pixel follows a zoom under it. */
     private int pointerX = -1;
     private int pointerY = -1;
@@ -42,15 +37,9 @@ final class InspectedPixel {
     private int pinnedX = -1;
     private int pinnedY = -1;
 
-    /**
-     * The inspected pixel of the picture {@code onScreen} gives (null before
-     * the first is finished), drawn with {@code drawSettings} and turned by
-     * {@code orbit}; {@code inspectedScene} gives the shown view as the
-     * inspector replays it, or null after saying why.
-     */
+    /** The inspected pixel of the view {@code onScreen}, turned by {@code orbit} and compared by {@code comparison}. */
     InspectedPixel(JFrame frame, PageView pageView, StatusStrip status, InspectorPanel inspectorPanel,
-            ComparisonLayer comparison, Orbit orbit, Supplier<RenderedView> onScreen,
-            Supplier<DrawSettings> drawSettings, Function<Consumer<String>, InspectedScene> inspectedScene) {
+            ComparisonLayer comparison, Orbit orbit, OnScreen onScreen) {
         this.frame = frame;
         this.pageView = pageView;
         this.status = status;
@@ -58,8 +47,6 @@ final class InspectedPixel {
         this.comparison = comparison;
         this.orbit = orbit;
         this.onScreen = onScreen;
-        this.drawSettings = drawSettings;
-        this.inspectedScene = inspectedScene;
     }
 
     /** The pointer is at (x, y) over the page view, or off it (-1): the inspector follows it. */
@@ -114,8 +101,8 @@ final class InspectedPixel {
 
     /** The status line's inspector: the pinned pixel, else the one under the pointer, and the zoom. */
     void inspect() {
-        RenderedView shown = onScreen.get();
-        DrawSettings settings = drawSettings.get();
+        RenderedView shown = onScreen.picture();
+        DrawSettings settings = onScreen.settings();
         int x = x();
         int y = y();
         String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
@@ -153,8 +140,8 @@ final class InspectedPixel {
 
     /** The side panel, when shown: the pinned pixel's history (else the one under the pointer's), replayed. */
     void refreshPanel() {
-        RenderedView shown = onScreen.get();
-        DrawSettings settings = drawSettings.get();
+        RenderedView shown = onScreen.picture();
+        DrawSettings settings = onScreen.settings();
         if (!inspectorPanel.isShown()) {
             return;
         }
@@ -178,7 +165,7 @@ final class InspectedPixel {
                     + "The pixel is in the margin: nothing is drawn there.");
             return;
         }
-        InspectedScene scene = inspectedScene.apply(message ->
+        InspectedScene scene = onScreen.inspectedScene(message ->
                 inspectorPanel.say((theirs == null ? "" : theirs + "\n\n") + message));
         if (scene == null) {
             return;
@@ -194,7 +181,7 @@ final class InspectedPixel {
 
     /** While comparing: both pictures' values at image pixel (ix, iy) and how far apart they are; else null. */
     private String comparedAt(int ix, int iy) {
-        RenderedView shown = onScreen.get();
+        RenderedView shown = onScreen.picture();
         return comparison.theirsAt(ix, iy).map(theirs -> {
             int ours = shown.image().getRGB(ix, iy);
             int dr = ((theirs >> 16) & 0xFF) - ((ours >> 16) & 0xFF);
@@ -208,7 +195,7 @@ final class InspectedPixel {
 
     /** Asks for a pixel by its panel coordinates (x right, y up), pins it and shows it (Shift+G). */
     void askForPixel() {
-        RenderedView shown = onScreen.get();
+        RenderedView shown = onScreen.picture();
         if (shown == null) {
             return;
         }
@@ -228,7 +215,7 @@ final class InspectedPixel {
      * why not when the text is not a pixel.
      */
     void goToPixel(String answer) {
-        RenderedView shown = onScreen.get();
+        RenderedView shown = onScreen.picture();
         String[] parts = answer.strip().split("[,\\s]+");
         boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
         int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
@@ -263,7 +250,7 @@ final class InspectedPixel {
 
     /** Copies the include chain of the inspected pixel's owner, whole paths (Ctrl+Shift+C). */
     void copyChain() {
-        RenderedView shown = onScreen.get();
+        RenderedView shown = onScreen.picture();
         String chain = inspectorPanel.isShown() ? inspectorPanel.ownerChainText() : "";
         String note = "";
         if (chain.isEmpty()) {

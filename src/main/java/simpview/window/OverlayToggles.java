@@ -4,8 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
-import java.util.function.Function;
-import java.util.function.Supplier;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.Overdraw;
 import simpview.inspect.SkippedPrimitives;
@@ -16,7 +14,6 @@ import simpview.window.instruments.InspectorPanel;
 import simpview.window.instruments.Legend;
 import simpview.window.instruments.OverdrawPicture;
 import simpview.window.instruments.Outlines;
-import simpview.window.render.DrawSettings;
 import simpview.window.render.PageFacts;
 import simpview.window.render.RenderedView;
 import simpview.window.render.View;
@@ -35,9 +32,7 @@ final class OverlayToggles {
     private final LegendStrip legendStrip;
     private final StatusStrip status;
     private final InspectorPanel inspectorPanel;
-    private final Supplier<RenderedView> shown;
-    private final Supplier<DrawSettings> settings;
-    private final Function<Consumer<String>, InspectedScene> inspectedScene;
+    private final OnScreen onScreen;
     private boolean overdrawShown;
     /** The overdraw overlay shows the depth-test failures (Shift+V), not every write (V). */
     private boolean overdrawFailures;
@@ -47,21 +42,14 @@ final class OverlayToggles {
     /** What the culled and clipped-away overlay last found: for the tests. */
     private SkippedPrimitives.Found skippedFound;
 
-    /**
-     * The overlays of the picture {@code shown} gives (null before the first
-     * is finished), drawn with {@code settings}; {@code inspectedScene} gives
-     * the shown view as the inspector replays it, or null after saying why.
-     */
+    /** The overlays of the view {@code onScreen}, drawn on {@code pageView} with their legends and words. */
     OverlayToggles(PageView pageView, LegendStrip legendStrip, StatusStrip status, InspectorPanel inspectorPanel,
-            Supplier<RenderedView> shown, Supplier<DrawSettings> settings,
-            Function<Consumer<String>, InspectedScene> inspectedScene) {
+            OnScreen onScreen) {
         this.pageView = pageView;
         this.legendStrip = legendStrip;
         this.status = status;
         this.inspectorPanel = inspectorPanel;
-        this.shown = shown;
-        this.settings = settings;
-        this.inspectedScene = inspectedScene;
+        this.onScreen = onScreen;
     }
 
     /** Whether the overdraw overlay is shown, counting the depth-test failures ({@code failures}) or every write. */
@@ -107,7 +95,7 @@ final class OverlayToggles {
 
     /** What an overlay of a scene with an error says it covers: the drawing up to the error, as the page shows. */
     private String asFarAsTheError() {
-        RenderedView view = shown.get();
+        RenderedView view = onScreen.picture();
         return view != null && view.error() != null ? ", as far as the scene's error" : "";
     }
 
@@ -119,17 +107,17 @@ final class OverlayToggles {
      */
     private <T> void replayForOverlay(String working, String failed,
             BiConsumer<InspectedScene, Consumer<T>> replay, Consumer<T> show) {
-        if (shown.get() == null) {
+        if (onScreen.picture() == null) {
             return;
         }
-        InspectedScene scene = inspectedScene.apply(status::say);
+        InspectedScene scene = onScreen.inspectedScene(status::say);
         if (scene == null) {
             return;
         }
-        RenderedView of = shown.get();
+        RenderedView of = onScreen.picture();
         status.say(working);
         replay.accept(scene, answer -> {
-            if (shown.get() != of || answer == null) {
+            if (onScreen.picture() != of || answer == null) {
                 status.say(answer == null ? failed : "");
                 return;
             }
@@ -144,7 +132,7 @@ final class OverlayToggles {
             status.say(StatusStrip.HINTS);
             return;
         }
-        RenderedView view = shown.get();
+        RenderedView view = onScreen.picture();
         if (view == null) {
             return;
         }
@@ -214,7 +202,7 @@ final class OverlayToggles {
     }
 
     private void showWire() {
-        RenderedView view = shown.get();
+        RenderedView view = onScreen.picture();
         List<double[]> outlines = Outlines.wire(view == null ? null : view.facts().primitives());
         if (outlines.isEmpty()) {
             pageView.wire(null);
@@ -231,10 +219,10 @@ final class OverlayToggles {
     void showPicture() {
         overdrawShown = false;
         backFacesShown = false;
-        RenderedView view = shown.get();
+        RenderedView view = onScreen.picture();
         if (view != null) {
             PageFacts facts = view.facts();
-            boolean depths = settings.get().depthView() && facts.depths() != null
+            boolean depths = onScreen.settings().depthView() && facts.depths() != null
                     && !(view.view() instanceof View.OfAssignment1Page);
             pageView.show(depths ? DepthPicture.of(facts.depths(), facts.depthStart()) : view.image(), view.error(),
                     facts.drewSomething());

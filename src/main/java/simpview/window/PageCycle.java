@@ -19,11 +19,8 @@ import simpview.window.render.View;
  */
 final class PageCycle {
 
+    /** The place among the eight pages and the scenes named at start. */
     private final PageStepper stepper;
-    private final List<Path> sceneList;
-    private final Path simpDir;
-    private final StatusStrip status;
-    private final Consumer<View> goTo;
     /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
     private int assignment1Page;
     /** The first assignment's page last shown (1 to 5): where Alt+1 and A come back to. */
@@ -31,6 +28,13 @@ final class PageCycle {
     /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
     private CoursePageSet coursePages;
     private final Map<Integer, CoursePageSet> courseSets = new HashMap<>();
+    private final List<Path> sceneList;
+    /** The course's pages' folder: the third and fourth assignments' are beside it. */
+    private final Path simpDir;
+    /** Says where a move has nowhere to go. */
+    private final StatusStrip status;
+    /** Leaves the view on screen and draws the one a move comes to. */
+    private final Consumer<View> goTo;
 
     /** The cycle through the eight pages and {@code sceneList}, the course's pages being in {@code simpDir}. */
     PageCycle(List<Path> sceneList, Path simpDir, StatusStrip status, Consumer<View> goTo) {

@@ -91,10 +91,9 @@ public final class SimpviewWindow {
         this.dialogs = new FileDialogs(frame, options.simpDir());
         this.placement = new WindowPlacement(frame, inspectorPanel.component());
         this.folders = new DroppedFolderCheck(frame, status, () -> this.options.pageContext());
-        this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, () -> shown, () -> settings,
-                this::inspectedScene);
-        this.inspected = new InspectedPixel(frame, pageView, status, inspectorPanel, comparison, orbit, () -> shown,
-                () -> settings, this::inspectedScene);
+        OnScreen onScreen = new Screen();
+        this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, onScreen);
+        this.inspected = new InspectedPixel(frame, pageView, status, inspectorPanel, comparison, orbit, onScreen);
     }
 
     /**
@@ -146,6 +145,24 @@ public final class SimpviewWindow {
         frame.setMinimumSize(new Dimension(320, 240));
         placement.placeAsOpened();
         frame.setVisible(true);
+    }
+
+    /** The view on screen as the inspected pixel and the overlays read it. */
+    private final class Screen implements OnScreen {
+        @Override
+        public RenderedView picture() {
+            return shown;
+        }
+
+        @Override
+        public DrawSettings settings() {
+            return settings;
+        }
+
+        @Override
+        public InspectedScene inspectedScene(Consumer<String> why) {
+            return SimpviewWindow.this.inspectedScene(why);
+        }
     }
 
     /** What the pointer does over the page. */
