@@ -37,7 +37,14 @@ import simpview.inspect.SkippedPrimitives;
 
 /**
  * The window: one page at a time, stepped by clicks and keys, pictures drawn
- * on the render thread. All methods run on the EDT.
+ * on the render thread. Its parts are the page view, the status and legend
+ * strips, the inspector panel and the comparison, with PageCycle (where it is
+ * among the pages), InspectedPixel (the pixel the inspector looks at),
+ * OverlayToggles, MenusAndKeys and WindowPlacement; every key and menu entry
+ * comes to {@link #perform}, which hands it to the part it belongs to. The
+ * window itself steps through a drawing and turns it (both change the
+ * settings it draws with), and asks for a picture and shows it finished.
+ * All methods run on the EDT.
  */
 public final class SimpviewWindow {
 
