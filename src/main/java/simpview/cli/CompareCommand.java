@@ -1,15 +1,12 @@
 package simpview.cli;
 
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.FutureTask;
@@ -24,39 +21,27 @@ import picocli.CommandLine.Spec;
 import simpview.cli.CompareOptions.PageRange;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
-import simpview.compare.Colourless;
 import simpview.compare.Count;
 import simpview.compare.ComparisonReport;
-import simpview.compare.DiffRegion;
-import simpview.compare.DiffRegions;
 import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
-import simpview.compare.PanelHint;
-import simpview.compare.PanelWords;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PictureFormat;
 import simpview.compare.PngFiles;
-import simpview.compare.RandomValues;
 import simpview.compare.Rubric;
 import simpview.compare.RubricRule;
 import simpview.compare.SystematicError;
 import simpview.compare.WorstPixel;
-import simpview.compare.WholePage;
-import simpview.pages.A1Layout;
-import simpview.pages.A1Page;
-import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
-import simpview.pages.LineTestPage;
 import simpview.pages.PageContext;
 import simpview.pages.ScenePage;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneMonitor;
 import simpview.surface.DrawingThreads;
-import simpview.surface.PageCanvas;
 
 /** {@code simpview compare ...}: how close a picture is to simpview's own, one picture or a folder of them. */
 @Command(name = "compare",
@@ -406,7 +391,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         if (other != null) {
             out.println("hint: " + other.hint(Comparison.N));
         }
-        sayFormat(out, report.passes(), theirs.format());
+        sayFormat(out, image, report.passes(), theirs.format());
         if (diff != null) {
             try {
                 PngFiles.writeEncoded(HeatMap.diffPng(comparison, rule.tolerance()), diff);
@@ -423,11 +408,11 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     }
 
     /**
-     * What a picture that fails is told of its format, as check tells it ({@link PictureFormat#failingAdvice(String,
-     * PictureFormat, boolean)}), by the format its bytes were {@code decoded} as: a right page saved as JPEG fails,
-     * and without this the student would look for the fault in their renderer.
+     * What a picture that fails, {@code image}, is told of its format, as check tells it ({@link
+     * PictureFormat#failingAdvice(String, PictureFormat, boolean)}), by the format its bytes were {@code decoded} as:
+     * a right page saved as JPEG fails, and without this the student would look for the fault in their renderer.
      */
-    private void sayFormat(PrintWriter out, boolean passes, PictureFormat decoded) {
+    static void sayFormat(PrintWriter out, Path image, boolean passes, PictureFormat decoded) {
         String advice = passes ? "" : PictureFormat.failingAdvice(image.toString(), decoded, true);
         if (!advice.isEmpty()) {
             out.println("note: " + advice);
@@ -469,240 +454,20 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
     }
 
     /**
-     * The first assignment's page beside the picture, panel by panel, each panel by its rule: the rubric's rule for
-     * it ({@code a1-page2-panel4}) with --rubric, as a batch judges it, else the command line's, without slack. The
-     * verdict passes when every panel does. Each failing panel's largest differing patches are listed; a hint that
-     * fits several panels is said once for them; --diff writes the three pages.
+     * The picture against the first assignment's page, panel by panel ({@link FirstAssignmentComparison}): each panel
+     * by the rubric's rule for it with --rubric, as a batch judges it, else by the command line's, without slack.
      */
     private int compareAssignment1() {
-        PanelGridComparison.Panel[] panels = FirstAssignmentGrading.panels();
-        RubricRule[] rules = new RubricRule[panels.length];
+        Rubric read;
         try {
-            Rubric read = rubricOf(rubric, verdictRule());
-            for (int k = 0; k < panels.length; k++) {
-                rules[k] = FirstAssignmentGrading.rule(read, page, k + 1);
-            }
+            read = rubricOf(rubric, verdictRule());
         } catch (CompareException e) {
             err().println("simpview compare: " + e.getMessage());
             return ExitCode.USAGE_ERROR;
         }
-        PageContext context = context();
-        A1Page shown = Assignment1.page(page);
-        BufferedImage ours = Assignment1.render(page, context);
-        PanelGridComparison.Cut cut;
-        try {
-            cut = PanelGridComparison.cut(image, ours, panels);
-        } catch (CompareException e) {
-            err().println("simpview compare: " + e.getMessage());
-            return ExitCode.SCENE_ERROR;
-        }
-        Comparison[] compared = new Comparison[panels.length];
-        for (int k = 0; k < panels.length; k++) {
-            compared[k] = rules[k].compare(cut.ours()[k], cut.theirs()[k], panels[k].size());
-        }
-        PrintWriter out = spec.commandLine().getOut();
-        if (rubric != null) {
-            sayPanelRules(out, shown, rules);
-        }
-        out.println(image + " against simpview's assignment 1, page " + page + ": " + shown.title()
-                + (shown.usesSeed() ? ", seed " + context.seed() : "")
-                + (context.a1Rule() == A1Rule.SPEC ? "" : ", by " + context.a1Rule().label()));
-        out.println("page:    " + cut.describe());
-        RubricRule first = rules[0];
-        // one rule's terms for all four panels (always so without a rubric): said once, in the table's head
-        boolean alike = Arrays.stream(rules).allMatch(r -> sameVerdict(r, first));
-        if (alike && first.metric() == Comparison.Metric.BLUR) {
-            out.println("metric:  both pictures' panels blurred (3x3) before they are compared");
-        }
-        boolean flip = first.metric() == Comparison.Metric.FLIP;
-        if (alike && flip) {
-            out.println("metric:  FLIP (LDR, 67 pixels per degree) of each panel: a pixel matches at FLIP "
-                    + String.format(Locale.ROOT, "%.3f", first.flipThreshold()) + " or less");
-        }
-        String within = alike ? within(first) : "by its rule";
-        out.printf(Locale.ROOT, "%-38s %9s %12s%s%n", "panel", "identical", within, alike ? "" : "  needed");
-        boolean[] passing = new boolean[panels.length];
-        for (int k = 0; k < panels.length; k++) {
-            Comparison c = compared[k];
-            // rounded down, as every share is printed (Percent): a hint's share of the panel reads the same
-            out.printf(Locale.ROOT, "%-38s %7s %% %10s %%%s%n", (k + 1) + " " + panelName(shown, k),
-                    Percent.number(c.share(0, false)), Percent.number(c.verdictShare(rules[k].tolerance())),
-                    alike ? "" : "  " + needed(rules[k]));
-            passing[k] = rules[k].passes(c);
-        }
-        boolean passes = true;
-        for (int k = 0; k < panels.length; k++) {
-            passes &= passing[k];
-            if (!passing[k]) {
-                int tolerance = rules[k].tolerance();
-                out.print("panel " + (k + 1) + " (" + panelName(shown, k) + "): " + ComparisonReport.regionsText(
-                        compared[k], DiffRegions.of(compared[k], tolerance, ComparisonReport.REGIONS_LISTED), tolerance));
-            }
-        }
-        if (alike) {
-            out.printf(Locale.ROOT, "%s: every panel %s %.2f %% %s%s%n", passes ? "PASS" : "FAIL",
-                    passes ? "reaches" : "must reach", first.minShare(), flip ? within : within + " ("
-                    + (first.deviation() == 0 ? "no slack" : "with " + first.deviation() + " px slack") + ")",
-                    first.maxFailing() < 0 ? "" : String.format(Locale.ROOT, ", at most %,d pixels failing",
-                            first.maxFailing()));
-        } else {
-            out.println((passes ? "PASS: every panel reaches" : "FAIL: every panel must reach") + " what its rule "
-                    + "needs (the table's last column)");
-        }
-        // A panel passes with up to 1 % of its pixels wrong, 900: a small shape left out still passes. Its patches
-        // are not listed, so a solid one is said, as of a page of the eight pages, by the panel it is in.
-        for (int k = 0; k < panels.length; k++) {
-            DiffRegion patch = passing[k] ? ComparisonReport.solidPatch(DiffRegions.of(compared[k],
-                    rules[k].tolerance(), ComparisonReport.REGIONS_LISTED).largest()) : null;
-            if (patch != null) {
-                out.println("note: panel " + (k + 1) + " (" + panelName(shown, k) + "): "
-                        + ComparisonReport.solidPatchNote(patch));
-            }
-        }
-        // A failing panel without colour where simpview's has some, as a batch notes it of each panel: said once.
-        List<Integer> colourless = new ArrayList<>();
-        for (int k = 0; k < panels.length; k++) {
-            if (!passing[k] && Colourless.note(compared[k].ours(), compared[k].theirs(), rules[k].tolerance()) != null) {
-                colourless.add(k + 1);
-            }
-        }
-        if (!colourless.isEmpty()) {
-            out.println("note: " + PanelWords.panels(colourless) + ": " + Colourless.NOTE);
-        }
-        sayFormat(out, passes, cut.format());
-        int[][] ourPanels = new int[panels.length][];
-        int[][] theirPanels = new int[panels.length][];
-        for (int k = 0; k < panels.length; k++) {
-            ourPanels[k] = compared[k].ours();
-            theirPanels[k] = compared[k].theirs();
-        }
-        // the hints by panel 1's tolerance, as a batch finds them
-        PanelHint[] hints = PanelHint.ofPage(ourPanels, theirPanels, A1Layout.PANEL, PageCanvas.SIZE, first.tolerance(),
-                shown.panelNames());
-        FirstAssignmentGrading.hints(hints, shown, context, ourPanels, theirPanels, first.tolerance());
-        // a page that fails as a whole and passes as another of the five: that one hint, of the page
-        OtherPage other = passes ? null : OtherPages.firstAssignment(context).ofFirstAssignment(page, theirPanels, rules);
-        // a page of the student's own random values, which no panel's own mistake explains
-        // (a page without colour is told so above: its colours are not another draw's)
-        RandomValues random = passes || other != null || !colourless.isEmpty()
-                || Arrays.stream(hints).anyMatch(h -> h != null) ? null
-                : RandomValues.find("A1 page " + page, page, shown, context.seed(), ourPanels, theirPanels,
-                        A1Layout.PANEL, first.tolerance());
-        if (other != null) {
-            out.println("hint: " + other.hint(A1Layout.PANEL));
-        } else if (random != null) {
-            out.println("hint: " + random.hint(A1Layout.PANEL));
-        } else if (hints[0] instanceof WholePage whole) {
-            out.println("hint: " + whole.hint(A1Layout.PANEL));
-        } else {
-            // the same mistake in several panels: said once for them, as check says it
-            for (List<Integer> alikePanels : PanelWords.alike(hints)) {
-                String text = hints[alikePanels.get(0) - 1].hint(A1Layout.PANEL);
-                boolean sameWords = alikePanels.stream().allMatch(k -> text.equals(hints[k - 1].hint(A1Layout.PANEL)));
-                out.println("hint: " + PanelWords.panels(alikePanels) + ": "
-                        + PanelWords.sharedHint(text, sameWords, alikePanels));
-            }
-        }
-        if (!passes) {
-            lookAtFirstAssignment(out, shown, compared, passing, rules);
-        }
-        if (diff != null) {
-            try {
-                PngFiles.writeEncoded(HeatMap.pageDiffPng(compared, panels, ours.getWidth(), first.tolerance()), diff);
-                files.wrote(diff);
-            } catch (IOException e) {
-                err().println("simpview compare: " + e.getMessage());
-                return ExitCode.SCENE_ERROR;
-            }
-            out.println("diff:    " + diff + " (ours | theirs | heat map, each the whole page, their panels on white: "
-                    + "grey identical, blue within " + first.tolerance() + "/255, "
-                    + (flip ? "yellow beyond it but forgiven by FLIP, red above FLIP's threshold)" : "red beyond it)"));
-        }
-        return passes ? ExitCode.OK : ExitCode.SCENE_ERROR;
-    }
-
-    /**
-     * Which of the rubric's rules judged which panels, a line a rule, in the order of their first panels, as one
-     * picture's report begins: {@code rubric:  compare.json, panel 4 (antialiased): its rule "match": "a1-*-panel4"}.
-     */
-    private void sayPanelRules(PrintWriter out, A1Page shown, RubricRule[] rules) {
-        List<String> said = new ArrayList<>();
-        for (int k = 0; k < rules.length; k++) {
-            String match = rules[k].match();
-            if (said.contains(match)) {
-                continue;
-            }
-            said.add(match);
-            List<Integer> judged = new ArrayList<>();
-            List<String> keys = new ArrayList<>();
-            for (int j = k; j < rules.length; j++) {
-                if (rules[j].match().equals(match)) {
-                    judged.add(j + 1);
-                    keys.add(FirstAssignmentGrading.key(page, j + 1));
-                }
-            }
-            String which = PanelWords.panels(judged) + (judged.size() == 1 ? " (" + panelName(shown, k) + ")" : "");
-            out.println("rubric:  " + rubric + ", " + which + ": " + ("*".equals(match)
-                    ? "its defaults, without slack (no rule names " + UsageWords.joined(keys, "or") + ")"
-                    : "its rule \"match\": \"" + match + "\""));
-        }
-    }
-
-    /** Whether two rules judge a panel alike: the same tolerance, minimum share, slack, pixel limit and metric. */
-    private static boolean sameVerdict(RubricRule a, RubricRule b) {
-        return a.tolerance() == b.tolerance() && a.minShare() == b.minShare() && a.deviation() == b.deviation()
-                && a.maxFailing() == b.maxFailing() && a.metric() == b.metric()
-                && (a.metric() != Comparison.Metric.FLIP || a.flipThreshold() == b.flipThreshold());
-    }
-
-    /** What a rule's share counts: "within 8/255", or "FLIP {@code <=} 0.130". */
-    private static String within(RubricRule rule) {
-        return rule.metric() == Comparison.Metric.FLIP ? String.format(Locale.ROOT, "FLIP <= %.3f",
-                rule.flipThreshold()) : "within " + rule.tolerance() + "/255";
-    }
-
-    /** What a panel's rule needs, for the table's last column: "99.00 % within 8/255, no slack, blurred". */
-    private static String needed(RubricRule rule) {
-        return String.format(Locale.ROOT, "%.2f %% %s, %s%s%s", rule.minShare(), within(rule),
-                rule.deviation() == 0 ? "no slack" : rule.deviation() + " px slack",
-                rule.metric() == Comparison.Metric.BLUR ? ", blurred" : "",
-                rule.maxFailing() < 0 ? "" : String.format(Locale.ROOT, ", at most %,d pixels failing",
-                        rule.maxFailing()));
-    }
-
-    /**
-     * Of a first-assignment page that fails, the pixel to look at first, in its lowest failing panel: the one that
-     * differs most in that panel's largest patch ({@link WorstPixel}), in the panel's and the page's coordinates;
-     * and the {@code inspect} command that shows which lines or triangles wrote it there, or went past it.
-     */
-    private void lookAtFirstAssignment(PrintWriter out, A1Page shown, Comparison[] compared, boolean[] passing,
-            RubricRule[] rules) {
-        int worst = -1;
-        for (int k = 0; k < compared.length; k++) {
-            if (!passing[k] && (worst < 0 || compared[k].verdictShare(rules[k].tolerance())
-                    < compared[worst].verdictShare(rules[worst].tolerance()))) {
-                worst = k;
-            }
-        }
-        if (worst < 0) {
-            return;
-        }
-        int tolerance = rules[worst].tolerance();
-        List<DiffRegion> patches = DiffRegions.of(compared[worst], tolerance, ComparisonReport.REGIONS_LISTED)
-                .largest();
-        WorstPixel look = patches.isEmpty() ? null : WorstPixel.in(compared[worst], patches.get(0), tolerance);
-        if (look == null) {
-            return;
-        }
-        int panel = worst + 1;
-        int pageX = A1Layout.left(panel) + look.x();
-        int pageY = PageCanvas.SIZE - 1 - (A1Layout.top(panel) + A1Layout.PANEL - 1 - look.y());
-        out.println("look:    " + look.describe("panel " + panel + " (" + panelName(shown, worst) + ") x " + look.x()
-                + ", y " + look.y() + " (page x " + pageX + ", y " + pageY + ")"));
-        nextStep(out, shown instanceof LineTestPage ? "the lines that wrote the page's pixel, or wrote beside it"
-                : "the triangles that wrote the page's pixel and why its centre is in or out of each",
-                "simpview inspect --assignment 1 --page " + page + pictures.typedOptions("--seed", "--a1-rule") + " --at "
-                        + pageX + "," + pageY);
+        FirstAssignmentComparison comparison = new FirstAssignmentComparison(image, page, rubric, read,
+                pictures.typedOptions("--seed", "--a1-rule"), spec.commandLine().getOut(), err());
+        return comparison.compare(context(), diff, files);
     }
 
     /**
@@ -710,14 +475,9 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
      * all of the line after its label pastes into a shell whole; {@code why}, what it shows, on the line above it,
      * in the same column.
      */
-    private static void nextStep(PrintWriter out, String why, String command) {
+    static void nextStep(PrintWriter out, String why, String command) {
         out.println("         " + why + ":");
         out.println("next:    " + command);
-    }
-
-    /** Panel k's (from 0) drawer ("Bresenham") on a page of lines, its scene ("mesh") on a page of polygons. */
-    private static String panelName(A1Page shown, int k) {
-        return shown.panelNames().get(k);
     }
 
     /** The rubric file read over the command line's rule, or the command line's rule alone. */
