@@ -16,7 +16,7 @@ and depth, one draw call per group, glFinish), their times printed on one
 line, in ms. It returns at the end of stdin. The two sides never draw at the
 same time, and their turns alternate over the whole run, so both see the
 host's cores as they are then (on this machine the same two-thread picture
-takes 20-25 % longer for a second or so at a time, see docs/performance.md,
+takes 20-25 % longer for a second or so at a time, see docs/performance-log.md,
 session 17).
 
 Usage: python draw.py DIR NAME   (with SIMPVIEW_LLVMPIPE_PNG=1 also writes

@@ -31,7 +31,7 @@ import simpview.surface.Span;
  * and packed per pixel), its coverage blend (dividing by 255 per channel) and
  * the ghost (a span pixel by pixel). Not used by simpview. Its pixels are
  * simpview's: compared once, pages 1 to 5 with 40 seeds each for 3 to 5
- * (docs/performance.md).
+ * (docs/performance-log.md, "The first assignment's pages made fast").
  */
 final class A1Before {
 

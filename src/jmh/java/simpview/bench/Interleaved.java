@@ -38,7 +38,7 @@ import org.openjdk.jmh.annotations.TearDown;
  * round instead, the first and the last build had every other turn right
  * after one of their own, and the builds between them never: on A4 page-g
  * the second of three ran 2-8 % slower than the others, copies of one build
- * alike; docs/performance.md, session 21.)
+ * alike; docs/performance-log.md, session 21.)
  *
  * <p>The JIT compiles each build once per process, and how well it does
  * varies from process to process by several per cent with the same code; so

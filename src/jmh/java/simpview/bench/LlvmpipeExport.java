@@ -71,7 +71,7 @@ import simpview.surface.Rgb;
  * their groups ask draw.py for none.
  *
  * <p>Why turns: on this machine a two-thread picture takes 20-25 % longer
- * for a second or so at a time (docs/performance.md, session 17), one
+ * for a second or so at a time (docs/performance-log.md, session 17), one
  * thread's much less; 61 redraws of each side one after the other fell in
  * one such spell or not, and the ratio of the two moved by as much between
  * runs. Taking turns, both sides see the same spells.

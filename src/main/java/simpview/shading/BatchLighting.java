@@ -30,7 +30,7 @@ import java.util.Arrays;
  * So a step reads and writes at most seven arrays, storing a value and
  * reading it back in the next step where it must (a stored double is the
  * same bits). Each loop costs a batch about 0.2 ns a point on the machine of
- * docs/performance.md whatever its arithmetic, so what a step can work out
+ * docs/performance-log.md whatever its arithmetic, so what a step can work out
  * again from the points is not stored: L = light - P is made in each of the
  * three steps that read it, E (-P or (0, 0, 1)) is never stored, and the
  * reach and ks times the power are made where the light is added, the

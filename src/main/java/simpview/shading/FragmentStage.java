@@ -134,7 +134,7 @@ public final class FragmentStage implements FragmentSink {
      * the lighting had 31 arrays a batch (session 19); with its 23 (session
      * 21), A4 page-f2, page-e and page-f1 took 0.90-0.96 of their time
      * against batches of 128, and the other pages measured the same within
-     * their copies (docs/performance.md).
+     * their copies (docs/performance-log.md).
      */
     static final int WAITING_BATCH = 256;
     /**

@@ -39,7 +39,7 @@ public final class CuedPrimitives {
      * Pixels after which a batch is handed off, however few its primitives:
      * never, a depth-cued batch goes by its count alone. Its pixels are cheap,
      * and handing off every 120,000 of them, as the lit record does, made A2's
-     * page 7 slower (docs/performance.md, session 5).
+     * page 7 slower (docs/performance-log.md, session 5).
      */
     private static final double MOST_PIXELS = Double.POSITIVE_INFINITY;
     /**

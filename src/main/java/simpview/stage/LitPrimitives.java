@@ -57,7 +57,7 @@ public final class LitPrimitives {
     /**
      * Pixels after which a batch is handed off, however few its primitives:
      * the first large fills of a page are drawn while its later primitives
-     * are read. Measured on the course's fill-bound pages (docs/performance.md,
+     * are read. Measured on the course's fill-bound pages (docs/performance-log.md,
      * session 5).
      */
     private static final double MOST_PIXELS = 120_000;

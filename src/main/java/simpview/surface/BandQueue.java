@@ -169,7 +169,7 @@ public final class BandQueue {
      * failure of a drawer once every thread has stopped drawing. The workers
      * are let go and return on their own: waiting for them to be seen
      * returning took two wake-ups one after the other, 0.1-0.15 ms of A2's
-     * page 5 (docs/performance.md, session 11). The queue can be used again
+     * page 5 (docs/performance-log.md, session 11). The queue can be used again
      * after a failure; the failed picture's undrawn rest is left undrawn.
      */
     public void finish() {

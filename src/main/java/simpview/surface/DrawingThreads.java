@@ -23,7 +23,7 @@ import java.util.concurrent.LinkedBlockingQueue;
  * it waits. No batch is kept whole for one thread, however little work it
  * holds: the default once kept a batch of under 50,000 pixels so, and took
  * up to 1.67 times as long for it (A4 page-c3 turned, two threads), faster
- * on no course page beyond the measurements' noise (docs/performance.md,
+ * on no course page beyond the measurements' noise (docs/performance-log.md,
  * session 39).
  */
 public final class DrawingThreads implements AutoCloseable {
@@ -35,7 +35,7 @@ public final class DrawingThreads implements AutoCloseable {
      * picture's end for the last band; each band costs the row test of
      * every primitive and the set-up of each triangle that crosses into it.
      * 8 measured faster than 3 on the course's lit pages on two threads
-     * (0.84 to 0.99 of the time, docs/performance.md, session 4), and than 4
+     * (0.84 to 0.99 of the time, docs/performance-log.md, session 4), and than 4
      * (A3 pageE, pageF and A4 page-e 1.10-1.15 of 8's time with 4, session
      * 14).
      */

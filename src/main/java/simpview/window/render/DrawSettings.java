@@ -26,7 +26,7 @@ public record DrawSettings(boolean ownColours, boolean record, int stepLimit, Ma
      * for one the depth view shows. A frame of a drag that turns the view is
      * neither, unless the depth view is on: its copy of the 650 x 650
      * depths, 3.4 MB made and filled on the render thread after every
-     * frame, is left out (docs/performance.md, session 38), and the frame
+     * frame, is left out (docs/performance-log.md, session 38), and the frame
      * after the drag is traced again.
      */
     public boolean keepsDepths() {
