@@ -457,4 +457,29 @@ class LitScenesTest {
         SceneException e = assertThrows(SceneException.class, () -> DrawnScenes.draw(cycle));
         assertTrue(e.getMessage().contains("file cycle"), e.getMessage());
     }
+
+    /**
+     * SPEC's nine commands that make a scene lit, each alone, in the top
+     * file or in a file it includes: each makes it lit and is named as the
+     * reason; the same scene with the command only in a comment is depth-cued.
+     */
+    @Test
+    void eachOfTheNineLitCommandsMakesASceneLit() throws Exception {
+        Files.writeString(dir.resolve("tri.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+        String[] commands = {"camera -1 -1 1 1 -1 -100", "ambient 0.5 0.5 0.5", "surface 1 0 0",
+            "depth -10 -50 0 0 0", "light 1 1 1 1 0", "obj \"tri\"", "flat", "gouraud", "phong"};
+        String polygon = "polygon (0 0 -10) (1 0 -10) (0 1 -10)";
+        for (String command : commands) {
+            String word = command.split(" ")[0];
+            ScenePipeline.Drawn alone = DrawnScenes.draw(write("alone", command, polygon));
+            assertTrue(alone.lit(), command);
+            assertEquals("alone.simp:1 " + word, alone.litBecause());
+            write("part", command);
+            ScenePipeline.Drawn included = DrawnScenes.draw(write("top", "{", "file \"part\"", "}", polygon));
+            assertTrue(included.lit(), command + " in an included file");
+            assertEquals("part.simp:1 " + word, included.litBecause());
+            ScenePipeline.Drawn commented = DrawnScenes.draw(write("commented", "# " + command, polygon));
+            assertFalse(commented.lit(), command + " in a comment");
+        }
+    }
 }
