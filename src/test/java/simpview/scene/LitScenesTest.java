@@ -15,7 +15,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.testing.ThreadCounts;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
@@ -139,6 +141,31 @@ class LitScenesTest {
         PageCanvas canvas = draw("ambient 0.5 1 0.25", "surface 1 0.5 1",
                 "polygon (-50, -50, -100) (50, -50, -100) (0, 50, -100)");
         assertEquals(List.of(128, 128, 64), list(rgb(canvas, 325, 325)));
+    }
+
+    /**
+     * The z-buffer of a lit picture starts at -infinity (SPEC Part 2), not at
+     * Part 1's far plane: a camera's view reaches as far as its yon plane, and
+     * what lies beyond z = -200 there is drawn like the rest.
+     */
+    @Test
+    void whatACameraSeesBeyondMinus200IsDrawn() throws Exception {
+        for (int threads : ThreadCounts.ALL) {
+            for (double z : new double[] {-150, -500, -999}) {
+                Path scene = write("far", "camera -1 -1 1 1 -1 -1000", "ambient 1 1 1",
+                        "polygon (" + 0.2 * z + ", " + 0.2 * z + ", " + z + ") (" + -0.2 * z + ", " + 0.2 * z + ", "
+                                + z + ") (0, " + -0.2 * z + ", " + z + ")");
+                PageCanvas canvas = new PageCanvas();
+                try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                    canvas.drawWith(drawing);
+                    ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(new SceneLibrary()), SceneMonitor.NONE);
+                }
+                // The triangle covers x' and y' in [-0.2, 0.2] on the window: panel 260 to 390.
+                String where = "a triangle at z = " + z + ", " + threads + " threads";
+                assertEquals(List.of(255, 255, 255), list(rgb(canvas, 325, 300)), where);
+                assertEquals(List.of(0, 0, 0), list(rgb(canvas, 250, 300)), "beside " + where);
+            }
+        }
     }
 
     @Test
