@@ -19,6 +19,9 @@ import simpview.compare.OutputFiles;
  */
 final class OutputPaths {
 
+    /** The name that means standard output where an option takes it (--primitives), and a file nowhere. */
+    static final String STANDARD_OUTPUT = "-";
+
     /** The files read, each with what it is to the run: "the picture to compare". */
     private final Map<Path, String> read = new HashMap<>();
     /** The files written, each with the option that names it. */
@@ -40,11 +43,18 @@ final class OutputPaths {
      * {@code file} (null: none) is written by {@code option} ("--diff"), and
      * no other file of the run is written there.
      *
-     * @throws UsageProblem when the run reads that file, or writes it already
+     * @throws UsageProblem when the run reads that file, or writes it already, or when it is named {@code -},
+     *     which names standard output for --primitives (not given here) and would elsewhere be a file of that
+     *     name in the working folder
      */
     OutputPaths writes(Path file, String option) {
         if (file == null) {
             return this;
+        }
+        if (file.toString().equals(STANDARD_OUTPUT)) {
+            throw new UsageProblem(option + " " + file + ": simpview writes it to a file, not to standard output ('"
+                    + STANDARD_OUTPUT + "' is standard output for --primitives only): name a file, or /dev/stdout "
+                    + "to pipe it");
         }
         notRead(file, option);
         String other = written.putIfAbsent(OutputFiles.identity(file), option);

@@ -270,7 +270,7 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
                     : (firstAssignment() ? "a1-page" : "page") + what.page + ".png");
         }
         files = new OutputPaths().reads(what.scene, "the scene").writes(out, outOption);
-        if (primitives != null && !STANDARD_OUTPUT.equals(primitives.toString())) {
+        if (primitives != null && !OutputPaths.STANDARD_OUTPUT.equals(primitives.toString())) {
             files.writes(primitives, "--primitives");
         }
         if (what.all) {
@@ -515,9 +515,6 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         return tiles.size() == sheet.size() ? written : ExitCode.SCENE_ERROR;
     }
 
-    /** What --primitives names as standard output. */
-    private static final String STANDARD_OUTPUT = "-";
-
     /** --primitives: the page's own lines and triangles; a page that draws a scene file has none of its own. */
     private int writePrimitives(int number) {
         Page page = firstAssignment() ? Assignment1.page(number) : Assignment2.page(number);
@@ -528,7 +525,7 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         }
         String listing = PrimitiveListing.of(page, (firstAssignment() ? "the first assignment's page " : "page ")
                 + number, context);
-        if (STANDARD_OUTPUT.equals(primitives.toString())) {
+        if (OutputPaths.STANDARD_OUTPUT.equals(primitives.toString())) {
             spec.commandLine().getOut().print(listing);
             spec.commandLine().getOut().flush();
             return ExitCode.OK;

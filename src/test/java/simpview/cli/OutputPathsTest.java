@@ -64,6 +64,31 @@ class OutputPathsTest {
     }
 
     @Test
+    void aDashNamesNoFileButStandardOutputOnlyForPrimitives() throws Exception {
+        // '-' is standard output for --primitives; elsewhere it was a file named '-' in the working folder
+        Path mine = page(dir.resolve("mine.png"), 3);
+        Path dash = Path.of("-");
+        String why = ": simpview writes it to a file, not to standard output ('-' is standard output for "
+                + "--primitives only): name a file, or /dev/stdout to pipe it";
+        refusedWithoutWriting(CliRun.of("render", "--page", "3", "--out", "-"), "--out -" + why, dash);
+        refusedWithoutWriting(CliRun.of("compare", mine.toString(), "--page", "3", "--diff", "-"),
+                "--diff -" + why, dash);
+        refusedWithoutWriting(CliRun.of("compare", "--dir", dir.toString(), "--pages", "3", "--junit", "-"),
+                "--junit -" + why, dash);
+        refusedWithoutWriting(CliRun.of("compare", "--dir", dir.toString(), "--pages", "3", "--gradescope", "-"),
+                "--gradescope -" + why, dash);
+        assertEquals(ExitCode.OK, CliRun.of("render", "--page", "3", "--primitives", "-").exitCode());
+    }
+
+    /** The run was refused with {@code message} as its first line, and wrote no {@code file}. */
+    private static void refusedWithoutWriting(CliRun run, String message, Path file) throws IOException {
+        boolean written = Files.deleteIfExists(file);
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.out() + run.err());
+        assertEquals("simpview: " + message, run.err().lines().findFirst().orElse(""), run.err());
+        assertFalse(written, file + " is not written");
+    }
+
+    @Test
     void renderWritesNoPictureOverTheSceneItDraws() throws Exception {
         // a scene may be named without .simp, and a picture without .png
         Path scene = Files.writeString(dir.resolve("tri"), TRIANGLE);
