@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -63,6 +64,14 @@ public final class CompareBatch {
     /** Each submission's total, for a gradebook to import ({@link SubmissionTotals}), beside the table. */
     static final String TOTALS = "totals.csv";
     static final String DIFFS = "diffs";
+
+    /**
+     * The order the pages and scenes simpview cannot draw are named in: pages by number, then scenes by name in
+     * natural order (pageA ... pageJ), not the order the pictures that need them happen to come in.
+     */
+    private static final Comparator<CompareTarget> MENTIONED_IN_ORDER =
+            Comparator.comparing((CompareTarget target) -> !target.isPage()).thenComparingInt(CompareTarget::page)
+                    .thenComparing(target -> target.scene().getFileName().toString(), SceneList.NATURAL_ORDER);
 
     /**
      * What a picture's name matched: a target, a page of the first assignment (compared panel by
@@ -527,15 +536,16 @@ public final class CompareBatch {
      * picture of them 0 for the teacher's setup, not for what the student drew.
      */
     private String stopped(Map<CompareTarget, SceneException> undrawable, Path dir) {
-        List<String> names = undrawable.keySet().stream().map(CompareBatch::named).toList();
+        List<CompareTarget> targets = undrawable.keySet().stream().sorted(MENTIONED_IN_ORDER).toList();
+        List<String> names = targets.stream().map(CompareBatch::named).toList();
         String all = UsageWords.joined(names, "and");
         StringBuilder text = new StringBuilder(says + "nothing was graded: simpview cannot draw " + all
                 + " itself, so every picture of " + (names.size() == 1 ? "it" : "them")
                 + " would score 0 whatever it shows:\n");
-        undrawable.forEach((target, e) -> text.append("  ").append(named(target)).append(": ")
-                .append(e.getMessage().replace("\n", "\n  ")).append('\n'));
+        targets.forEach(target -> text.append("  ").append(named(target)).append(": ")
+                .append(undrawable.get(target).getMessage().replace("\n", "\n  ")).append('\n'));
         Set<String> fixes = new LinkedHashSet<>();
-        undrawable.keySet().forEach(target -> fixes.add(fixFor(target, dir)));
+        targets.forEach(target -> fixes.add(fixFor(target, dir)));
         fixes.forEach(fix -> text.append(fix).append('\n'));
         return text.append("No picture was compared and no result file written.\n").toString();
     }

@@ -577,6 +577,24 @@ public class CompareBatchTest {
     }
 
     @Test
+    void thePagesSimpviewCannotDrawAreNamedInPageOrderWhateverPicturesNeedThem() throws Exception {
+        // ann's page8.png comes before bob's page6.png by name: the message went "page 8 and page 6"
+        Path subs = dir.resolve("subs");
+        png(subs.resolve("ann/page8.png"), page(1));
+        png(subs.resolve("bob/page6.png"), page(1));
+        png(subs.resolve("bob/page7.png"), page(1));
+        Path course = Files.createDirectories(dir.resolve("course"));
+        CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1-8", "--simp-dir", course.toString(),
+                "--out-dir", dir.resolve("out").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("simpview compare: nothing was graded: simpview cannot draw page 6, page 7 "
+                + "and page 8 itself"), run.err());
+        List<String> named = run.err().lines().filter(line -> line.startsWith("  page ")).map(line -> line.substring(
+                0, line.indexOf(':'))).toList();
+        assertEquals(List.of("  page 6", "  page 7", "  page 8"), named, run.err());
+    }
+
+    @Test
     void aFolderThatIsNotThereIsAClearError() {
         Path out = dir.resolve("out");
         CliRun run = CliRun.of("compare", "--dir", dir.resolve("nope").toString(), "--pages", "1-8", "--out-dir", out.toString());
