@@ -60,7 +60,8 @@ record FilePlaces(String fileName, Path here, Path working) {
      * Teapot.obj: names are case-sensitive here)"; a backslash, which is part
      * of a name here, not a folder separator (one or a doubled one, as a C
      * string writes it); curly quotes, as a name copied from a PDF has them
-     * (obj “filename” in the handouts); a file the name misses only by its extension
+     * (obj “filename” in the handouts); single quotes, as Python or a shell
+     * quotes a name ('cube'); a file the name misses only by its extension
      * ({@link #otherExtension}). Looked for only once the name
      * was not found, so a scene that finds its files costs nothing more.
      */
@@ -75,10 +76,15 @@ record FilePlaces(String fileName, Path here, Path working) {
         if (shown != null) {
             hints.append(" (there is ").append(shown).append(": names are case-sensitive here)");
         }
+        String command = fileName.endsWith(".obj") ? "obj" : "file";
         if (CopiedText.hasCurlyQuote(name)) {
             String plain = CopiedText.withoutQuotes(name);
             hints.append(" (the name").append(CopiedText.hint(name, "")).append(": write ")
-                    .append(fileName.endsWith(".obj") ? "obj" : "file").append(" \"").append(plain).append("\")");
+                    .append(command).append(" \"").append(plain).append("\")");
+        }
+        if (name.length() > 2 && name.startsWith("'") && name.endsWith("'")) {
+            hints.append(" (a name is quoted with '\"', not with \"'\": write ").append(command).append(" \"")
+                    .append(name, 1, name.length() - 1).append("\")");
         }
         hints.append(otherExtension(name));
         if (name.indexOf('\\') >= 0) {

@@ -148,6 +148,22 @@ class FileStackTest {
                 + " write \"parts/cube\", with / between folders); looked for "), e.problem());
     }
 
+    /** A name in single quotes, as Python or a shell quotes it, is not a quoted name here: write it in '"'. */
+    @Test
+    void aNameInSingleQuotesGetsAHint() throws Exception {
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("cube", "line (0,0,-1) (1,1,-1)");
+        scene.write("s", "file 'cube'");
+        SceneException e = scene.failure("s");
+        assertTrue(e.problem().startsWith("file not found: 'cube'.simp (a name is quoted with '\"', not with \"'\": "
+                + "write file \"cube\"); looked for "), e.problem());
+        assertEquals(" (a name is quoted with '\"', not with \"'\": write obj \"cube\")",
+                FilePlaces.of(dir.resolve("s.simp"), "'cube'", ".obj", dir).nearMisses("'cube'"), "a model's name too");
+        scene.write("s", "file \"it's\"");
+        assertTrue(scene.failure("s").problem().startsWith("file not found: it's.simp; looked for "),
+                "a quote inside a name is part of it");
+    }
+
     @Test
     void missingTopFileIsAnError() {
         SceneException e = assertThrows(SceneException.class,
