@@ -5,6 +5,7 @@ import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
 import simpview.compare.Comparison;
+import simpview.compare.Percent;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 
@@ -32,13 +33,22 @@ public final class CompareOptions {
         }
     }
 
-    /** A share in percent: {@code 99}, {@code 99.5} or {@code 99.5%}, 0 to 100. */
+    /**
+     * A share in percent: {@code 99}, {@code 99.5} or {@code 99.5%}, 0 to 100; one between 0 and 1 only with its
+     * sign ({@code 0.5%}), since {@code 0.99} is a fraction meant as 99 % ({@link Percent#fractionInstead}).
+     */
     static final class Share implements ITypeConverter<Double> {
         @Override
         public Double convert(String text) {
-            String number = text.trim().endsWith("%") ? text.trim().substring(0, text.trim().length() - 1) : text.trim();
+            boolean signed = text.trim().endsWith("%");
+            String number = signed ? text.trim().substring(0, text.trim().length() - 1) : text.trim();
             try {
                 double value = Double.parseDouble(number.trim());
+                String fraction = Percent.fractionInstead(value, "'" + text + "'");
+                if (fraction != null && !signed) {
+                    throw new TypeConversionException(fraction + " (or " + number.trim() + "% for " + number.trim()
+                            + " %)");
+                }
                 if (value >= 0 && value <= 100) {
                     return value;
                 }

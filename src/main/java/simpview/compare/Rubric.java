@@ -291,14 +291,14 @@ public final class Rubric {
                             "a position deviation of 0, 1 or 2 pixels");
                     case "min_share" -> {
                         minShareAt = lineAndColumn();
-                        minShare = number(0, 100, false, "a share in percent, 0 to 100");
+                        minShare = share();
                     }
                     case "max_failing_pixels" -> maxFailing = (int) number(0, Comparison.N * Comparison.N, true,
                             "a whole number of pixels, 0 to 422500");
                     case "points" -> points = number(0, 1e6, false, "points, 0 or more");
                     case "zero_share" -> {
                         zeroShareAt = lineAndColumn();
-                        zeroShare = number(0, 100, false, "a share in percent, 0 to 100");
+                        zeroShare = share();
                     }
                     case "metric" -> metric = switch (string("\"exact\", \"blur\" or \"flip\"")) {
                         case "exact" -> Comparison.Metric.EXACT;
@@ -411,6 +411,19 @@ public final class Rubric {
             double value = json.nextDouble();
             if (value < min || value > max || whole && value != Math.rint(value)) {
                 throw new CompareException("rubric " + file + ": " + where + ": " + value + " is not " + what);
+            }
+            return value;
+        }
+
+        /** A share in percent, 0 to 100; not one between 0 and 1: a fraction ({@link Percent#fractionInstead}). */
+        private double share() throws IOException, CompareException {
+            String what = "a share in percent, 0 to 100";
+            expect(JsonToken.NUMBER, what);
+            String where = place();
+            double value = number(0, 100, false, what);
+            String fraction = Percent.fractionInstead(value, String.valueOf(value));
+            if (fraction != null) {
+                throw new CompareException("rubric " + file + ": " + where + ": " + fraction);
             }
             return value;
         }

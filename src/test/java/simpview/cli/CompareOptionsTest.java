@@ -31,6 +31,19 @@ public class CompareOptionsTest {
         }
     }
 
+    /** 0.99 meant as 99 % would pass nearly any picture: a share between 0 and 1 is refused unless given with %. */
+    @Test
+    void aFractionWhereAShareInPercentGoesIsRefused() {
+        CompareOptions.Share s = new CompareOptions.Share();
+        TypeConversionException e = assertThrows(TypeConversionException.class, () -> s.convert("0.99"));
+        assertEquals("'0.99' is a fraction, not a share in percent (0 to 100): for 99 %, write 99 (or 0.99% for "
+                + "0.99 %)", e.getMessage());
+        assertThrows(TypeConversionException.class, () -> s.convert("0.575"), "any fraction");
+        assertEquals(0.99, s.convert("0.99%"), "a share under 1 % given with its sign is meant");
+        assertEquals(0.0, s.convert("0"));
+        assertEquals(1.0, s.convert("1"));
+    }
+
     @Test
     void pageRanges() {
         CompareOptions.PageRangeConverter c = new CompareOptions.PageRangeConverter();

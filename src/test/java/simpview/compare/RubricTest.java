@@ -209,6 +209,18 @@ class RubricTest {
     }
 
     /** JSON readers keep the last of a key given twice; a rubric says so, at the second, whatever the object. */
+    /** A min_share or zero_share of 0.95 meant as 95 % would pass, or score, nearly any picture: an error. */
+    @Test
+    void aFractionWhereAShareInPercentGoesIsAnError() throws Exception {
+        assertTrue(bad("{\"defaults\": {\"min_share\": 0.95}}").getMessage().endsWith(
+                "line 1, column 28 ($.defaults.min_share): 0.95 is a fraction, not a share in percent (0 to 100): "
+                        + "for 95 %, write 95"));
+        assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"zero_share\": 0.5}]}").getMessage().endsWith(
+                "($.pages[0].zero_share): 0.5 is a fraction, not a share in percent (0 to 100): for 50 %, write 50"));
+        assertEquals(0.0, with("{\"match\": \"4\", \"min_share\": 0}").minShare(), "0 % is a share");
+        assertEquals(1.0, with("{\"match\": \"4\", \"min_share\": 1}").minShare(), "and so is 1 %");
+    }
+
     @Test
     void aKeyGivenTwiceInOneObjectIsAnError() throws Exception {
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": 2, \"points\": 5}]}").getMessage().endsWith(
