@@ -76,6 +76,7 @@ public final class Main {
                 .setOut(out)
                 .setErr(err)
                 .setExecutionStrategy(parsed -> {
+                    SimpviewCommand.refuseOptionsBeforeCommand(parsed);
                     ran.set(true);
                     return new CommandLine.RunLast().execute(parsed);
                 })

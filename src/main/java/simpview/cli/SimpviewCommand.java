@@ -19,9 +19,11 @@ import javax.swing.SwingUtilities;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParseResult;
 import picocli.CommandLine.Spec;
 import simpview.pages.PageContext;
 import simpview.pages.SceneList;
@@ -117,6 +119,44 @@ public final class SimpviewCommand implements Callable<Integer> {
     /** True once the window was asked to open: then the program lives until it closes. */
     boolean openedWindow() {
         return openedWindow;
+    }
+
+    /**
+     * Refuses the window's options given before a command ({@code simpview --seed 5 render ...}): they are the
+     * window's, the command reads its own, and it would draw with its defaults without a word (seed 361, page 6
+     * away from the --simp-dir given). Says where each goes: after the command, or nowhere when the command has
+     * no such option. Help and version are the window's to give wherever they stand.
+     *
+     * @throws ParameterException of the command, so that its --help is the one pointed to
+     */
+    static void refuseOptionsBeforeCommand(ParseResult parsed) {
+        ParseResult command = parsed.subcommand();
+        if (command == null) {
+            return;
+        }
+        List<OptionSpec> before = parsed.matchedOptions().stream()
+                .filter(option -> !option.usageHelp() && !option.versionHelp()).toList();
+        if (before.isEmpty()) {
+            return;
+        }
+        String name = command.commandSpec().name();
+        List<String> names = before.stream().map(OptionSpec::longestName).toList();
+        List<String> itsOwn = names.stream().filter(option -> command.commandSpec().findOption(option) != null)
+                .toList();
+        List<String> notItsOwn = names.stream().filter(option -> !itsOwn.contains(option)).toList();
+        boolean one = names.size() == 1;
+        String words = UsageWords.joined(names, "and") + (one ? " is" : " are") + " given before '" + name
+                + "', where " + (one ? "it is the window's option" : "they are the window's options") + " and "
+                + name + " does not read " + (one ? "it" : "them") + ": ";
+        List<String> where = new ArrayList<>();
+        if (!itsOwn.isEmpty()) {
+            where.add("give " + UsageWords.joined(itsOwn, "and") + " after '" + name + "' (simpview " + name + " "
+                    + String.join(" ... ", itsOwn) + " ...)");
+        }
+        if (!notItsOwn.isEmpty()) {
+            where.add(name + " has no " + UsageWords.joined(notItsOwn, "or"));
+        }
+        throw new ParameterException(command.commandSpec().commandLine(), words + String.join("; ", where));
     }
 
     /**

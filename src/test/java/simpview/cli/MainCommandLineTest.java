@@ -46,6 +46,29 @@ public class MainCommandLineTest {
         assertTrue(version.out().startsWith("simpview "), version.out());
     }
 
+    /**
+     * The window's options given before a command (simpview --seed 5 render ...) were the window's, so the command
+     * drew with its defaults and said nothing: page 1 of seed 361, or page 6 looked for away from --simp-dir D.
+     */
+    @Test
+    void theWindowsOptionsBeforeACommandAreAUsageErrorSayingWhereTheyGo() throws Exception {
+        Path out = dir.resolve("page1.png");
+        CliRun seeded = CliRun.of("--seed", "5", "render", "--page", "1", "--out", out.toString());
+        assertEquals(ExitCode.USAGE_ERROR, seeded.exitCode(), seeded.err());
+        assertEquals(List.of("simpview: --seed is given before 'render', where it is the window's option and render "
+                + "does not read it: give --seed after 'render' (simpview render --seed ...)",
+                "See 'simpview render --help' for how to use it."), seeded.err().lines().toList());
+        assertFalse(Files.exists(out), "nothing drawn with the seed left out");
+        CliRun two = CliRun.of("--threads", "2", "--simp-dir", dir.toString(), "inspect", "--page", "6", "--at", "1,1");
+        assertEquals(ExitCode.USAGE_ERROR, two.exitCode(), two.err());
+        assertEquals("simpview: --threads and --simp-dir are given before 'inspect', where they are the window's "
+                + "options and inspect does not read them: give --simp-dir after 'inspect' (simpview inspect "
+                + "--simp-dir ...); inspect has no --threads", two.err().lines().findFirst().orElse(""), two.err());
+        assertEquals(ExitCode.OK, CliRun.of("render", "--seed", "5", "--page", "1", "--out", out.toString())
+                .exitCode(), "after the command, as its own");
+        assertEquals(ExitCode.OK, CliRun.of("--help", "render").exitCode(), "help is help wherever it stands");
+    }
+
     @ParameterizedTest
     @ValueSource(ints = {1, 2, 3})
     void pageOutputEqualsHeadlessRenderPixelForPixel(int page) throws Exception {
