@@ -4,6 +4,8 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -421,8 +423,11 @@ public final class CompareBatch {
         HandedIn.Found found;
         try {
             found = handedIn.find(dir, outputs);
-        } catch (IOException | UncheckedIOException e) {
-            err.println(says + dir + ": " + (Files.isDirectory(dir) ? "cannot be listed" : "no such folder"));
+        } catch (IOException e) {
+            err.println(says + unlisted(dir, e));
+            return ExitCode.USAGE_ERROR;
+        } catch (UncheckedIOException e) {
+            err.println(says + unlisted(dir, e.getCause()));
             return ExitCode.USAGE_ERROR;
         }
         handedIn.sayWhatWasFound(dir, found);
@@ -493,6 +498,24 @@ public final class CompareBatch {
                 }
             }
         }
+    }
+
+    /**
+     * Why the pictures under {@code dir} could not be found, as {@code e} says: the folder, or the one below it
+     * that could not be read (a student's, copied without read access), and why: "class/bob: cannot be listed
+     * (permission denied), so nothing in class was graded"; "class: no such folder" when it is gone.
+     */
+    static String unlisted(Path dir, IOException e) {
+        if (!Files.isDirectory(dir)) {
+            return dir + ": no such folder";
+        }
+        Path folder = e instanceof FileSystemException system && system.getFile() != null
+                ? Path.of(system.getFile()) : dir;
+        String reason = e instanceof AccessDeniedException ? "permission denied"
+                : e instanceof FileSystemException system ? system.getReason() : e.getMessage();
+        String why = reason == null || reason.isBlank() ? "the system could not read it"
+                : Character.toLowerCase(reason.charAt(0)) + reason.substring(1);
+        return folder + ": cannot be listed (" + why + "), so nothing in " + dir + " was graded";
     }
 
     /**

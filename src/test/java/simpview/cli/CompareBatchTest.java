@@ -11,7 +11,9 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
 import javax.imageio.ImageIO;
@@ -592,6 +594,25 @@ public class CompareBatchTest {
         List<String> named = run.err().lines().filter(line -> line.startsWith("  page ")).map(line -> line.substring(
                 0, line.indexOf(':'))).toList();
         assertEquals(List.of("  page 6", "  page 7", "  page 8"), named, run.err());
+    }
+
+    /**
+     * A folder below the one graded that cannot be read (a student's, copied without read access) stopped the
+     * batch with "class: cannot be listed", naming neither that folder nor why. (Root reads every folder, so
+     * the tests, run as root, tell it from the walk's own exception.)
+     */
+    @Test
+    void aFolderThatCannotBeListedIsNamedWithWhy() throws Exception {
+        Path subs = Files.createDirectories(dir.resolve("subs/bob"));
+        String bob = subs.toString();
+        assertEquals(dir.resolve("subs") + "/bob: cannot be listed (permission denied), so nothing in "
+                + dir.resolve("subs") + " was graded", CompareBatch.unlisted(dir.resolve("subs"),
+                        new AccessDeniedException(bob)));
+        assertEquals(dir.resolve("subs") + ": cannot be listed (input/output error), so nothing in "
+                + dir.resolve("subs") + " was graded", CompareBatch.unlisted(dir.resolve("subs"),
+                        new IOException("Input/output error")));
+        assertEquals(dir.resolve("nope") + ": no such folder", CompareBatch.unlisted(dir.resolve("nope"),
+                new NoSuchFileException(dir.resolve("nope").toString())));
     }
 
     @Test
