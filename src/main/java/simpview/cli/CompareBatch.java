@@ -4,7 +4,6 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -46,6 +45,7 @@ import simpview.pages.Assignment2;
 import simpview.pages.PageContext;
 import simpview.pages.SceneList;
 import simpview.pages.ScenePage;
+import simpview.scene.FileProblem;
 import simpview.scene.SceneException;
 
 /**
@@ -366,7 +366,13 @@ public final class CompareBatch {
             err.println(says + "--scene " + scene + ": no such file or folder");
             return ExitCode.USAGE_ERROR;
         }
-        Map<String, Path> scenes = scenesIn(scene);
+        Map<String, Path> scenes;
+        try {
+            scenes = scenesOf(scene);
+        } catch (IllegalArgumentException e) {
+            err.println(says + "--scene " + scene + ": " + e.getMessage());
+            return ExitCode.USAGE_ERROR;
+        }
         if (scenes.isEmpty()) {
             err.println(says + "--scene " + scene + ": no .simp files in that folder");
             return ExitCode.USAGE_ERROR;
@@ -511,11 +517,7 @@ public final class CompareBatch {
         }
         Path folder = e instanceof FileSystemException system && system.getFile() != null
                 ? Path.of(system.getFile()) : dir;
-        String reason = e instanceof AccessDeniedException ? "permission denied"
-                : e instanceof FileSystemException system ? system.getReason() : e.getMessage();
-        String why = reason == null || reason.isBlank() ? "the system could not read it"
-                : Character.toLowerCase(reason.charAt(0)) + reason.substring(1);
-        return folder + ": cannot be listed (" + why + "), so nothing in " + dir + " was graded";
+        return folder + ": cannot be listed (" + FileProblem.ofFolder(e) + "), so nothing in " + dir + " was graded";
     }
 
     /**
@@ -680,12 +682,21 @@ public final class CompareBatch {
 
     /** The scenes of a folder by their names (pageC of pageC.simp), in order; none when it cannot be read. */
     static Map<String, Path> scenesIn(Path folder) {
-        Map<String, Path> scenes = new TreeMap<>();
         try {
-            SceneList.folder(folder).forEach(f -> scenes.put(SubmissionNames.stem(f.getFileName().toString()), f));
+            return scenesOf(folder);
         } catch (IllegalArgumentException e) {
-            // an unreadable folder has no scenes; the caller says so
+            return new TreeMap<>(); // an unreadable folder has no scenes; --scene's folder is told why (scenes)
         }
+    }
+
+    /**
+     * The scenes of a folder by their names, in order.
+     *
+     * @throws IllegalArgumentException saying why, when the folder cannot be read
+     */
+    private static Map<String, Path> scenesOf(Path folder) {
+        Map<String, Path> scenes = new TreeMap<>();
+        SceneList.folder(folder).forEach(f -> scenes.put(SubmissionNames.stem(f.getFileName().toString()), f));
         return scenes;
     }
 }

@@ -10,6 +10,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import simpview.scene.FileProblem;
 
 /**
  * Scenes named on the command line, as pages in the order given: a folder
@@ -69,7 +70,7 @@ public final class SceneList {
                 }
             }
         } catch (IOException e) {
-            throw new IllegalArgumentException("cannot read the folder " + dir + ": " + e.getMessage());
+            throw new IllegalArgumentException("cannot read the folder " + dir + ": " + FileProblem.ofFolder(e));
         }
         scenes.sort(Comparator.comparing(p -> p.getFileName().toString(), NATURAL_ORDER));
         return scenes;

@@ -5,6 +5,7 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
+import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
 
@@ -27,6 +28,25 @@ public final class FileProblem {
         }
         if (Files.isDirectory(file)) {
             return "not a file but a folder";
+        }
+        String reason = e instanceof FileSystemException fs ? fs.getReason() : e.getMessage();
+        return reason == null || reason.isBlank() ? "the system could not read it" : lowerFirst(reason);
+    }
+
+    /**
+     * Why a folder could not be listed, from the exception that said so: "permission denied", "no such folder",
+     * "not a folder but a file", or the system's own words; never the exception's message alone, which for most
+     * is the folder's path again.
+     */
+    public static String ofFolder(IOException e) {
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof NoSuchFileException) {
+            return "no such folder";
+        }
+        if (e instanceof NotDirectoryException) {
+            return "not a folder but a file";
         }
         String reason = e instanceof FileSystemException fs ? fs.getReason() : e.getMessage();
         return reason == null || reason.isBlank() ? "the system could not read it" : lowerFirst(reason);

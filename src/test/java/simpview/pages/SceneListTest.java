@@ -35,6 +35,16 @@ class SceneListTest {
                 "page10.simp", "pageA.simp", "pageB.simp", "pageJ.simp"), names(SceneList.of(List.of(dir))));
     }
 
+    /** Why a folder could not be read, in words: the exception's message was its path again. */
+    @Test
+    void aFolderThatCannotBeReadSaysWhy() throws IOException {
+        Path file = Files.writeString(dir.resolve("scenes"), "");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SceneList.folder(file));
+        assertEquals("cannot read the folder " + file + ": not a folder but a file", e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> SceneList.folder(dir.resolve("gone")));
+        assertEquals("cannot read the folder " + dir.resolve("gone") + ": no such folder", e.getMessage());
+    }
+
     @Test
     void scenesKeepTheOrderGivenAndMayOmitTheExtension() throws IOException {
         Files.writeString(dir.resolve("pageB.simp"), "");

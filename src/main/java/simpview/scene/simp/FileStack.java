@@ -516,7 +516,7 @@ final class FileStack implements AutoCloseable {
         try {
             return library.open(file, resolved.real, resolved.stamp, resolved.settled, readThisPicture);
         } catch (IOException e) {
-            throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + e.getMessage());
+            throw new SceneException(file, 0, 0, "", "cannot read " + file + ": " + FileProblem.of(file, e));
         }
     }
 
