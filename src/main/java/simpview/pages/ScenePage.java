@@ -68,10 +68,19 @@ public final class ScenePage implements Page {
         Path file = file(context);
         if (!Files.isRegularFile(file)) {
             Path dir = ownScene ? context.ownSimpDir() : context.simpDir();
-            throw new SceneException(file, 0, 0, "", fileName + " was not found in "
-                    + dir.toAbsolutePath().normalize()
-                    + (ownScene ? "" : "; name the folder of the course's scene files with "
-                            + context.monitor().nameOf(Setting.COURSE_FOLDER)));
+            Path folder = dir.toAbsolutePath().normalize();
+            String missing = fileName + " was not found in " + folder;
+            if (ownScene) {
+                throw new SceneException(file, 0, 0, "", missing);
+            }
+            String setting = context.monitor().nameOf(Setting.COURSE_FOLDER);
+            if (Files.isRegularFile(folder) && folder.getParent() != null) {
+                // the course's page6.simp named itself, not its folder
+                throw new SceneException(file, 0, 0, "", missing + ", which is a file, not a folder: name its "
+                        + "folder, " + folder.getParent() + ", with " + setting);
+            }
+            throw new SceneException(file, 0, 0, "", missing + "; name the folder of the course's scene files with "
+                    + setting);
         }
         return file;
     }

@@ -103,6 +103,18 @@ public class MainCommandLineTest {
         }
     }
 
+    /** --simp-dir naming the course's page6.simp itself, not its folder: said so, and which folder to name. */
+    @Test
+    void aSimpDirThatIsAFileIsToldToNameItsFolder() throws IOException {
+        Path course = Files.createDirectories(dir.resolve("course"));
+        Path page6 = Files.writeString(course.resolve("page6.simp"), "line (0,0,0) (10,10,0)\n");
+        CliRun run = CliRun.of("render", "--page", "6", "--simp-dir", page6.toString(), "--out",
+                dir.resolve("page6.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().contains("page6.simp was not found in " + page6.toAbsolutePath() + ", which is a file, "
+                + "not a folder: name its folder, " + course.toAbsolutePath() + ", with --simp-dir DIR"), run.err());
+    }
+
     @Test
     void allReportsMissingCourseFilesAndStillWritesTheOtherPages() {
         Path empty = dir.resolve("no-course-files");
