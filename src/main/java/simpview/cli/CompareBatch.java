@@ -355,8 +355,12 @@ public final class CompareBatch {
                 .orElse(names.iterator().next());
     }
 
-    /** Every picture against one scene file, or against the scene of a folder that its name names. */
-    int scenes(Path dir, Path scene, Outputs outputs) {
+    /**
+     * Every picture against one scene file, or against the scene of a folder that its name names. A scene file
+     * may be named without .simp ({@link SceneList#scene}), as compare, render and inspect take it.
+     */
+    int scenes(Path dir, Path given, Outputs outputs) {
+        Path scene = orWithExtension(given);
         if (Files.isRegularFile(scene)) {
             warnUnusedRules(Map.of(SubmissionNames.stem(scene.getFileName().toString()), 0));
             return run(dir, outputs, List.of(CompareTarget.scene(scene)), Set.of(), sceneNamed(scene),
@@ -391,6 +395,18 @@ public final class CompareBatch {
                     .orElseGet(() -> new Match(null, "its name names none of the scenes in " + scene
                             + " (expected a name like " + exampleScene(scenes.keySet()) + ".png)"));
         });
+    }
+
+    /** {@code named}, or it with .simp added when only that is a file ({@link SceneList#scene}). */
+    private static Path orWithExtension(Path named) {
+        if (Files.exists(named)) {
+            return named;
+        }
+        try {
+            return SceneList.scene(named);
+        } catch (IllegalArgumentException e) {
+            return named; // neither is there: the caller says so
+        }
     }
 
     /**

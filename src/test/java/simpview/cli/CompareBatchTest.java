@@ -131,6 +131,25 @@ public class CompareBatchTest {
         assertEquals(ExitCode.OK, CliRun.of("render", "--scene", scene.toString(), "--out", picture.toString()).exitCode());
     }
 
+    /** --scene may name the scene without .simp in a batch too, as compare, render and inspect take it. */
+    @Test
+    void aBatchsSceneMayBeNamedWithoutItsExtension() throws Exception {
+        Path scenes = scenes("bar");
+        Path ann = dir.resolve("ann");
+        render(scenes.resolve("tri.simp"), ann.resolve("tri.png"));
+        String named = scenes.resolve("tri").toString();
+        CliRun check = CliRun.of("check", ann.toString(), "--scene", named);
+        assertEquals(ExitCode.OK, check.exitCode(), check.err());
+        assertTrue(check.out().contains("tri.png  tri.simp  PASS"), check.out());
+        CliRun batch = CliRun.of("compare", "--dir", ann.toString(), "--scene", named, "--out-dir",
+                dir.resolve("out").toString());
+        assertEquals(ExitCode.OK, batch.exitCode(), batch.err());
+        CliRun missing = CliRun.of("check", ann.toString(), "--scene", scenes.resolve("nothere").toString());
+        assertEquals(ExitCode.USAGE_ERROR, missing.exitCode(), missing.err());
+        assertTrue(missing.err().startsWith("simpview check: --scene " + scenes.resolve("nothere")
+                + ": no such file or folder"), missing.err());
+    }
+
     @Test
     void aSceneFolderIsMatchedToPicturesByName() throws Exception {
         Path scenes = scenes("triBar");
