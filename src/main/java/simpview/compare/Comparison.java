@@ -1,5 +1,7 @@
 package simpview.compare;
 
+import java.util.Objects;
+
 /**
  * Two 650x650 panels compared pixel by pixel. A pixel's distance is the
  * largest difference of one channel (0 to 255). Its distance with slack is
@@ -85,6 +87,7 @@ public final class Comparison {
 
     /** Compares with slack of {@code deviation} pixels (0 to 2), measuring by {@code metric}. */
     public static Comparison of(int[] ours, int[] theirs, int deviation, Metric metric) {
+        requirePanels(ours, theirs);
         if (ours.length != N * N || theirs.length != N * N) {
             throw new IllegalArgumentException("panels are 650x650 pixels");
         }
@@ -119,6 +122,8 @@ public final class Comparison {
     /** A comparison of these panels with nothing measured yet, its arguments checked. */
     private static Comparison unmeasured(int[] ours, int[] theirs, int size, int deviation, Metric metric,
             double flipThreshold) {
+        requirePanels(ours, theirs);
+        Objects.requireNonNull(metric, "metric must not be null");
         if (!(flipThreshold >= 0 && flipThreshold <= 1)) {
             throw new IllegalArgumentException("a FLIP threshold is 0 to 1, not " + flipThreshold);
         }
@@ -129,6 +134,12 @@ public final class Comparison {
             throw new IllegalArgumentException("position deviation is 0 to " + MAX_DEVIATION + " pixels, not " + deviation);
         }
         return new Comparison(ours, theirs, size, deviation, metric, flipThreshold);
+    }
+
+    /** Refuses a null panel where the caller hands it in, naming which. */
+    private static void requirePanels(int[] ours, int[] theirs) {
+        Objects.requireNonNull(ours, "ours must not be null");
+        Objects.requireNonNull(theirs, "theirs must not be null");
     }
 
     private void measure(int[] ours, int[] theirs) {

@@ -2,6 +2,7 @@ package simpview.compare;
 
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 
 /**
  * The outcome of comparing a picture with simpview's own, and the readable
@@ -36,27 +37,40 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
      * on at least {@code minimum} percent of the panel; the hint of a systematic mistake searched for.
      */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum) {
+        requireArguments(theirs, against, comparison);
         return of(theirs, against, comparison, tolerance, minimum, SystematicError.find(comparison, tolerance));
     }
 
     /** The same, with the hint found already ({@link SystematicError#find} of the same panels and tolerance). */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, int tolerance, double minimum,
             SystematicError systematic) {
+        requireArguments(theirs, against, comparison);
         return new ComparisonReport(theirs, against, comparison, theirs.margins(tolerance),
                 DiffRegions.of(comparison, tolerance, REGIONS_LISTED), tolerance, minimum, -1, systematic);
     }
 
     /** Judged by a rubric's rule (its tolerance, minimum share and pixel limit; the comparison made with its deviation). */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule) {
+        requireArguments(theirs, against, comparison);
+        Objects.requireNonNull(rule, "rule must not be null");
         return of(theirs, against, comparison, rule, SystematicError.find(comparison, rule.tolerance()));
     }
 
     /** The same, with the hint found already ({@link SystematicError#find} of the same panels and the rule's tolerance). */
     public static ComparisonReport of(Picture theirs, String against, Comparison comparison, RubricRule rule,
             SystematicError systematic) {
+        requireArguments(theirs, against, comparison);
+        Objects.requireNonNull(rule, "rule must not be null");
         return new ComparisonReport(theirs, against, comparison, theirs.margins(rule.tolerance()),
                 DiffRegions.of(comparison, rule.tolerance(), REGIONS_LISTED), rule.tolerance(), rule.minShare(),
                 rule.maxFailing(), systematic);
+    }
+
+    /** Refuses a null picture, words or comparison where the caller hands them in, naming which. */
+    private static void requireArguments(Picture theirs, String against, Comparison comparison) {
+        Objects.requireNonNull(theirs, "theirs must not be null");
+        Objects.requireNonNull(against, "against must not be null");
+        Objects.requireNonNull(comparison, "comparison must not be null");
     }
 
     /** The share the verdict is on: within the tolerance, with slack; with FLIP, at most FLIP's threshold. */

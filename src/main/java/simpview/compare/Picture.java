@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
@@ -52,6 +53,7 @@ public final class Picture {
 
     /** Reads a picture file and finds its panel; every way this can fail is a clear CompareException. */
     public static Picture read(Path file) throws CompareException {
+        Objects.requireNonNull(file, "file must not be null");
         PngCodec.Pixels pixels = readPixels(file);
         String name = file.toString();
         PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
@@ -62,6 +64,8 @@ public final class Picture {
 
     /** A picture in memory (a page, a capture), its panel found as in a file. */
     public static Picture of(BufferedImage image, String name) throws CompareException {
+        Objects.requireNonNull(image, "image must not be null");
+        Objects.requireNonNull(name, "name must not be null");
         int[] rgb = Rasters.rgb(image);
         PanelPlace place = PanelFinder.find(rgb, image.getWidth(), image.getHeight(), name);
         return new Picture(name, rgb, null, image.getWidth(), image.getHeight(), place, null);
@@ -69,6 +73,8 @@ public final class Picture {
 
     /** One of simpview's own 750x750 pages: the panel is where the page puts it, nothing is searched. */
     public static Picture ofPage(BufferedImage page, String name) {
+        Objects.requireNonNull(page, "page must not be null");
+        Objects.requireNonNull(name, "name must not be null");
         if (page.getWidth() != PanelFinder.PAGE || page.getHeight() != PanelFinder.PAGE) {
             throw new IllegalArgumentException("a page is 750x750, not " + page.getWidth() + "x" + page.getHeight());
         }

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Objects;
 import javax.imageio.ImageIO;
 import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
@@ -26,6 +27,8 @@ public final class PngFiles {
      *     "cannot write out/x.png: permission denied"
      */
     public static void write(BufferedImage image, Path file) throws IOException {
+        Objects.requireNonNull(image, "image must not be null");
+        Objects.requireNonNull(file, "file must not be null");
         // Encoded in memory first: ImageIO's own file streams report a full
         // disk as "I/O error writing PNG file!" and can fail again at exit.
         writeEncoded(encode(image), file);

@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import java.nio.file.Path;
+import java.util.Objects;
 import simpview.pages.Page;
 import simpview.pages.PageContext;
 import simpview.pages.Assignment2;
@@ -18,6 +19,7 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
 
     /** A scene file drawn as {@code render --scene} draws it: by its own rules, depth-cued white to black. */
     public static InspectedScene of(Path file) {
+        Objects.requireNonNull(file, "file must not be null");
         return new InspectedScene(file, Rgb.WHITE, Rgb.BLACK, false, ScenePipeline.Rules.BY_COMMANDS);
     }
 
@@ -27,11 +29,15 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
      * colours, and its replay draws nothing (the report says so).
      */
     public static InspectedScene cued(Path file, Rgb near, Rgb far) {
+        Objects.requireNonNull(file, "file must not be null");
+        Objects.requireNonNull(near, "near must not be null");
+        Objects.requireNonNull(far, "far must not be null");
         return new InspectedScene(file, near, far, false, ScenePipeline.Rules.DEPTH_CUED_OR_NOTHING);
     }
 
     /** A depth-cued scene in its vertices' own colours (white where none), without the cue. */
     public static InspectedScene ownColours(Path file) {
+        Objects.requireNonNull(file, "file must not be null");
         return new InspectedScene(file, Rgb.WHITE, Rgb.BLACK, true, ScenePipeline.Rules.BY_COMMANDS);
     }
 
@@ -42,6 +48,7 @@ public record InspectedScene(Path file, Rgb near, Rgb far, boolean ownColours, S
      * @throws SceneException when the page's scene file is missing
      */
     public static InspectedScene page(int number, PageContext context) throws SceneException {
+        Objects.requireNonNull(context, "context must not be null");
         if (number < 1 || number > Assignment2.COUNT) {
             throw new IllegalArgumentException("InspectedScene.page takes pages 4 to " + Assignment2.COUNT
                     + " (the pages drawn from scene files), not " + number);

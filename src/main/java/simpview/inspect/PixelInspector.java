@@ -1,6 +1,7 @@
 package simpview.inspect;
 
 import java.util.List;
+import java.util.Objects;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.raster.FragmentSink;
@@ -49,8 +50,8 @@ public final class PixelInspector {
 
     /** @param monitor told the scene's warnings (its trace and turn are the inspector's own) */
     public PixelInspector(SceneLibrary library, SceneMonitor monitor) {
-        this.library = library;
-        this.monitor = monitor;
+        this.library = Objects.requireNonNull(library, "library must not be null");
+        this.monitor = Objects.requireNonNull(monitor, "monitor must not be null");
     }
 
     /**
@@ -84,6 +85,7 @@ public final class PixelInspector {
      * @throws SceneException when the scene cannot be read at all (its file is not there)
      */
     public PixelReport inspect(InspectedScene scene, int x, int y, int primitive) throws SceneException {
+        Objects.requireNonNull(scene, "scene must not be null");
         if (x < 0 || x >= PageCanvas.PANEL || y < 0 || y >= PageCanvas.PANEL) {
             throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is outside the panel: x and y are 0 to "
                     + (PageCanvas.PANEL - 1) + ", from the panel's bottom-left pixel, y up");

@@ -1,6 +1,7 @@
 package simpview.pages;
 
 import java.nio.file.Path;
+import java.util.Objects;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 
@@ -41,6 +42,7 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
 
     /** The defaults with the project's own scenes (and, until told otherwise, the course's) in {@code ownScenes}. */
     public static PageContext of(Path ownScenes) {
+        Objects.requireNonNull(ownScenes, "ownScenes must not be null");
         return new PageContext(DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
     }
 
@@ -49,14 +51,17 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
     }
 
     public PageContext withSimpDir(Path dir) {
+        Objects.requireNonNull(dir, "dir must not be null");
         return new PageContext(seed, dir, ownSimpDir, monitor, ownColours, a1Rule, library);
     }
 
     public PageContext withMonitor(SceneMonitor newMonitor) {
+        Objects.requireNonNull(newMonitor, "newMonitor must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours, a1Rule, library);
     }
 
     public PageContext withA1Rule(A1Rule rule) {
+        Objects.requireNonNull(rule, "rule must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, rule, library);
     }
 
@@ -65,6 +70,7 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
     }
 
     public PageContext withLibrary(SceneLibrary kept) {
+        Objects.requireNonNull(kept, "kept must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, a1Rule, kept);
     }
 }

@@ -2,6 +2,7 @@ package simpview.pages;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.Objects;
 import simpview.scene.SceneException;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
@@ -38,6 +39,7 @@ public final class PageRenderer {
      * to the same pictures as one thread; whoever gives them closes them.
      */
     public PageRenderer(DrawingThreads threads) {
+        Objects.requireNonNull(threads, "threads must not be null");
         canvas.drawWith(threads);
     }
 
@@ -46,6 +48,7 @@ public final class PageRenderer {
      * and the exception is thrown on.
      */
     public PageCanvas render(int pageNumber, PageContext context) throws SceneException {
+        Objects.requireNonNull(context, "context must not be null");
         canvas.clear();
         Assignment2.page(pageNumber).draw(canvas, context);
         return canvas;
@@ -68,6 +71,7 @@ public final class PageRenderer {
      * @throws SceneException where the scene is wrong: its file, line and column (or a file that is not there)
      */
     public PageCanvas renderScene(Path file) throws SceneException {
+        Objects.requireNonNull(file, "file must not be null");
         renderScene(file, ScenePipeline.Options.byCommands(library), SceneMonitor.NONE);
         return canvas;
     }
@@ -83,6 +87,9 @@ public final class PageRenderer {
      */
     public ScenePipeline.Drawn renderScene(Path file, ScenePipeline.Options options, SceneMonitor monitor)
             throws SceneException {
+        Objects.requireNonNull(file, "file must not be null");
+        Objects.requireNonNull(options, "options must not be null");
+        Objects.requireNonNull(monitor, "monitor must not be null");
         canvas.clear();
         return ScenePipeline.draw(file, canvas, options, monitor);
     }

@@ -10,6 +10,7 @@ import java.security.CodeSource;
 import java.util.Comparator;
 import java.util.Enumeration;
 import java.util.List;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
@@ -88,6 +89,7 @@ public final class UnpackedScenes implements AutoCloseable {
      *     scenes, or they cannot be written; nothing is left behind
      */
     public static UnpackedScenes from(Path jar) throws IOException {
+        Objects.requireNonNull(jar, "jar must not be null");
         return into(jar, null);
     }
 
