@@ -15,6 +15,8 @@ import java.util.Optional;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
 import java.util.stream.Stream;
+import java.util.zip.ZipException;
+import simpview.scene.FileProblem;
 
 /**
  * The project's own scenes (page4.simp, page5.simp and the shapes they
@@ -98,7 +100,7 @@ public final class UnpackedScenes implements AutoCloseable {
      * the system's temporary folder).
      */
     static UnpackedScenes into(Path jar, Path parent) throws IOException {
-        try (JarFile file = new JarFile(jar.toFile())) {
+        try (JarFile file = open(jar)) {
             if (!hasScenes(file)) {
                 throw new IOException(jar + " carries no scenes (no " + FOLDER + " in it)");
             }
@@ -124,6 +126,17 @@ public final class UnpackedScenes implements AutoCloseable {
                 throw new IOException("cannot unpack the scenes of " + jar + " into " + dir + ": " + e.getMessage(), e);
             }
             return new UnpackedScenes(dir);
+        }
+    }
+
+    /** {@code jar} opened, or an IOException that names it and says why not (a file that is no zip archive). */
+    private static JarFile open(Path jar) throws IOException {
+        try {
+            return new JarFile(jar.toFile());
+        } catch (ZipException e) {
+            throw new IOException(jar + " cannot be read as a jar: it is no zip archive (" + e.getMessage() + ")", e);
+        } catch (IOException e) {
+            throw new IOException(jar + " cannot be read: " + FileProblem.of(jar, e), e);
         }
     }
 

@@ -75,6 +75,18 @@ class UnpackedScenesTest {
         assertEquals(List.of("plain.jar"), names(temporary));
     }
 
+    /** A file that is no jar at all (a scene, a missing path) is named, with why, not left to the zip reader's words. */
+    @Test
+    void aFileThatIsNoJarIsNamedWithWhy(@TempDir Path temporary) throws Exception {
+        Path scene = Files.writeString(temporary.resolve("page4.simp"), "polygon (0, 0, -1) (1, 0, -1) (1, 1, -1)\n");
+        IOException e = assertThrows(IOException.class, () -> UnpackedScenes.from(scene));
+        assertTrue(e.getMessage().startsWith(scene + " cannot be read as a jar: it is no zip archive ("), e.getMessage());
+        Path missing = temporary.resolve("simpview.jar");
+        IOException none = assertThrows(IOException.class, () -> UnpackedScenes.from(missing));
+        assertEquals(missing + " cannot be read: file not found", none.getMessage());
+        assertEquals(List.of("page4.simp"), names(temporary));
+    }
+
     @Test
     void simpviewLoadedFromItsClassesFolderIsToldToNameTheFolder() {
         // the tests run simpview from build/classes, not from a jar
