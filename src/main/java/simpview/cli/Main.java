@@ -28,6 +28,10 @@ public final class Main {
     private Main() {
     }
 
+    /**
+     * Runs the command line and exits the JVM with its exit code, unless it opened the window, which keeps the
+     * program until it is closed. For use from Java, {@link #run} returns the code instead.
+     */
     public static void main(String[] args) {
         PrintWriter out = new PrintWriter(System.out, true, StandardCharsets.UTF_8);
         PrintWriter err = new PrintWriter(System.err, true, StandardCharsets.UTF_8);
@@ -48,7 +52,12 @@ public final class Main {
         }
     }
 
-    /** Runs one command line in-process and returns its exit code (never exits the JVM). */
+    /**
+     * Runs one command line in-process and returns its exit code ({@link ExitCode}); never exits the JVM.
+     * Its output and messages go to {@code out} and {@code err}. A line that opens the window (no command, or
+     * scenes alone) returns once it is open, and the window keeps the JVM running until it is closed; without
+     * a display that is a message on {@code err} and exit code 2.
+     */
     public static int run(String[] args, PrintWriter out, PrintWriter err) {
         return execute(new SimpviewCommand(SimpviewCommand::displayMissing), args, out, err);
     }

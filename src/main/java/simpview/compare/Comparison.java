@@ -28,6 +28,7 @@ import java.util.Objects;
  */
 public final class Comparison {
 
+    /** The side of a page's panel in pixels, 650: the panels {@link #of(int[], int[])} takes are N x N. */
     public static final int N = PanelPlace.SIZE;
     private static final int LEVELS = 256;
 
@@ -279,14 +280,20 @@ public final class Comparison {
         return deviation;
     }
 
+    /** How the distances were measured, and whether a pixel matches by its tolerance or by FLIP. */
     public Metric metric() {
         return metric;
     }
 
+    /**
+     * The shares of the panel identical, within 1/255 and within 8/255, pixel for pixel, without slack
+     * (on the blurred panels with {@link Metric#BLUR}).
+     */
     public Shares exact() {
         return new Shares(share(0, false), share(1, false), share(8, false));
     }
 
+    /** The same shares with {@link #deviation()} pixels of slack: what {@code compare}'s verdict counts. */
     public Shares withSlack() {
         return new Shares(share(0, true), share(1, true), share(8, true));
     }
@@ -301,10 +308,12 @@ public final class Comparison {
         return slack[i] & 0xFF;
     }
 
+    /** Simpview's panel as given, 0xRRGGBB row by row from the top (not a copy: do not change it). */
     public int[] ours() {
         return ours;
     }
 
+    /** The other panel as given, 0xRRGGBB row by row from the top (not a copy: do not change it). */
     public int[] theirs() {
         return theirs;
     }

@@ -307,6 +307,7 @@ public final class Picture {
         return alpha;
     }
 
+    /** The picture's name in reports: its file's path as given, or the name it was made with. */
     public String name() {
         return name;
     }
@@ -319,14 +320,17 @@ public final class Picture {
         return format;
     }
 
+    /** The whole picture's width in pixels, margins included (750 for a page). */
     public int width() {
         return width;
     }
 
+    /** The whole picture's height in pixels, margins included (750 for a page). */
     public int height() {
         return height;
     }
 
+    /** Where the 650x650 panel was found in the picture, and how. */
     public PanelPlace place() {
         return place;
     }

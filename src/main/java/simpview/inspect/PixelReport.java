@@ -51,10 +51,12 @@ public final class PixelReport {
         this.history = List.copyOf(history);
     }
 
+    /** The pixel's x in the panel, 0 to 649 from the left. */
     public int x() {
         return x;
     }
 
+    /** The pixel's y in the panel, 0 to 649 from the bottom (y up). */
     public int y() {
         return y;
     }
@@ -84,6 +86,7 @@ public final class PixelReport {
         return drawn.litBecause();
     }
 
+    /** Every write attempted at the pixel, in drawing order, each with its outcome (unmodifiable). */
     public List<HistoryEntry> history() {
         return history;
     }
@@ -183,6 +186,14 @@ public final class PixelReport {
         return primitive + 1;
     }
 
+    /**
+     * The report as {@code simpview inspect} prints it: the pixel's colour, depth and owner, then, when asked for,
+     * every write attempted ({@code --history}) and how the owner's colour was made ({@code --explain}).
+     *
+     * @param withHistory list every write attempted at the pixel
+     * @param withExplanation explain the colour, term by term
+     * @return lines of text, each ending in a line break
+     */
     public String text(boolean withHistory, boolean withExplanation) {
         return text(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
     }
@@ -323,6 +334,12 @@ public final class PixelReport {
         return sb.toString();
     }
 
+    /**
+     * The report as one JSON object, as {@code simpview inspect --json} prints it.
+     *
+     * @param withHistory with the writes attempted at the pixel
+     * @param withExplanation with how the owner's colour was made
+     */
     public String json(boolean withHistory, boolean withExplanation) {
         return json(withHistory, withExplanation, HistoryEntry.NO_NUMBER);
     }

@@ -21,6 +21,7 @@ import simpview.scene.simp.SceneMonitor;
 public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor monitor, boolean ownColours,
         A1Rule a1Rule, SceneLibrary library) {
 
+    /** The seed of the random pages unless told otherwise ({@code --seed}). */
     public static final long DEFAULT_SEED = 361;
 
     /**
@@ -46,29 +47,35 @@ public record PageContext(long seed, Path simpDir, Path ownSimpDir, SceneMonitor
         return new PageContext(DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
     }
 
+    /** The same, the random pages (1 to 3, and the first assignment's 3 to 5) seeded with {@code newSeed}: {@code --seed}. */
     public PageContext withSeed(long newSeed) {
         return new PageContext(newSeed, simpDir, ownSimpDir, monitor, ownColours, a1Rule, library);
     }
 
+    /** The same, page6.simp to page8.simp read from {@code dir}, the course's folder: {@code --simp-dir}. */
     public PageContext withSimpDir(Path dir) {
         Objects.requireNonNull(dir, "dir must not be null");
         return new PageContext(seed, dir, ownSimpDir, monitor, ownColours, a1Rule, library);
     }
 
+    /** The same, the scene pages' progress and warnings told to {@code newMonitor}. */
     public PageContext withMonitor(SceneMonitor newMonitor) {
         Objects.requireNonNull(newMonitor, "newMonitor must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, newMonitor, ownColours, a1Rule, library);
     }
 
+    /** The same, the first assignment's Bresenham panels and fills drawn by {@code rule}: {@code --a1-rule}. */
     public PageContext withA1Rule(A1Rule rule) {
         Objects.requireNonNull(rule, "rule must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, rule, library);
     }
 
+    /** The same, the scene pages in their vertices' own colours, without the depth cue, when {@code own}: {@code --own-colors}. */
     public PageContext withOwnColours(boolean own) {
         return new PageContext(seed, simpDir, ownSimpDir, monitor, own, a1Rule, library);
     }
 
+    /** The same, the scene pages' files kept in {@code kept}, to be read again only when changed. */
     public PageContext withLibrary(SceneLibrary kept) {
         Objects.requireNonNull(kept, "kept must not be null");
         return new PageContext(seed, simpDir, ownSimpDir, monitor, ownColours, a1Rule, kept);

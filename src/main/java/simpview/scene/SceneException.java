@@ -95,18 +95,22 @@ public final class SceneException extends Exception {
         return sb.toString();
     }
 
+    /** The file at fault; null when there is none. */
     public Path file() {
         return file;
     }
 
+    /** The line at fault, from 1; 0 when the problem is the file as a whole (not there, not text). */
     public int line() {
         return line;
     }
 
+    /** The column at fault, from 1; 0 when the problem is the line (or the file) as a whole. */
     public int column() {
         return column;
     }
 
+    /** The line at fault as written; "" when there is none. */
     public String lineText() {
         return lineText;
     }

@@ -125,6 +125,7 @@ public final class DrawingThreads implements AutoCloseable {
         return of(Runtime.getRuntime().availableProcessors());
     }
 
+    /** How many threads draw each picture: the caller's and {@code threads() - 1} workers. */
     public int threads() {
         return threads;
     }

@@ -12,8 +12,11 @@ import simpview.geometry.Camera;
  */
 public final class PageCanvas {
 
+    /** The white margin around the panel, in pixels. */
     public static final int MARGIN = 50;
+    /** The panel's side in pixels, 650. */
     public static final int PANEL = Camera.PANEL_SIZE;
+    /** The page's side in pixels, 750: the panel and its margins. */
     public static final int SIZE = PANEL + 2 * MARGIN;
     /**
      * The colour a panel is cleared to, the background of every page and scene (pages 1 to 8, depth-cued and lit
@@ -34,6 +37,7 @@ public final class PageCanvas {
     /** The threads scenes are drawn on this canvas with: the owner's, given to it; one (the caller's) by default. */
     private DrawingThreads threads = DrawingThreads.one();
 
+    /** A cleared page, drawn on the caller's thread alone until {@link #drawWith} says otherwise. */
     public PageCanvas() {
         image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
         imageDrawable = new ImageDrawable(image);
@@ -143,6 +147,7 @@ public final class PageCanvas {
         return panel;
     }
 
+    /** The panel's depths, one a pixel, as the last page or scene left them. */
     public ZBuffer zbuffer() {
         return zbuffer;
     }

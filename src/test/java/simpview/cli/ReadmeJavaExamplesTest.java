@@ -302,4 +302,43 @@ public class ReadmeJavaExamplesTest {
         assertTrue(types >= 10, "the examples import simpview's types: " + imports);
         assertEquals(List.of(), undocumented);
     }
+
+    /**
+     * Beyond the types the examples import, those the section's calls lead to: the canvas
+     * {@code renderScene} returns ({@code image()}, {@code snapshot()}), and the command line run in-process.
+     */
+    private static final List<String> ALSO_REACHED = List.of("simpview.surface.PageCanvas", "simpview.cli.Main");
+
+    /**
+     * Every public member of those types (constructor, method, constant, nested type) has a comment of its
+     * own, so the API pages say what each takes and gives, not only its signature: javadoc's doclint runs
+     * without "missing" for the rest of the code.
+     */
+    @Test
+    void everyPublicMemberOfTheTypesTheExamplesUseHasAComment() throws IOException {
+        Path main = project.resolve("src/main/java");
+        List<String> types = new ArrayList<>(ALSO_REACHED);
+        Matcher m = Pattern.compile("(?m)^import (simpview(?:\\.[a-z]+)+\\.[A-Z]\\w*);$").matcher(imports);
+        while (m.find()) {
+            types.add(m.group(1));
+        }
+        Pattern member = Pattern.compile("^    public .*");
+        List<String> uncommented = new ArrayList<>();
+        for (String type : types) {
+            List<String> lines = Files.readAllLines(main.resolve(type.replace('.', '/') + ".java"));
+            for (int i = 0; i < lines.size(); i++) {
+                if (!member.matcher(lines.get(i)).matches()) {
+                    continue;
+                }
+                int before = i - 1;
+                while (before >= 0 && lines.get(before).strip().startsWith("@")) {
+                    before--; // an annotation stands between a member and its comment
+                }
+                if (before < 0 || !lines.get(before).strip().endsWith("*/")) {
+                    uncommented.add(type + ":" + (i + 1) + ": " + lines.get(i).strip());
+                }
+            }
+        }
+        assertEquals(List.of(), uncommented);
+    }
 }
