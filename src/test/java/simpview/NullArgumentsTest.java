@@ -43,6 +43,7 @@ class NullArgumentsTest {
         refuses("context", () -> new PageRenderer().renderImage(2, null));
         refuses("context", () -> new PageRenderer().render(4, null));
         refuses("file", () -> new PageRenderer().renderScene(null));
+        refuses("workingDir", () -> new PageRenderer().renderScene(SCENE, null));
         refuses("ownScenes", () -> PageContext.of(null));
         refuses("dir", () -> PageContext.defaults().withSimpDir(null));
         refuses("newMonitor", () -> PageContext.defaults().withMonitor(null));

@@ -77,6 +77,21 @@ public final class PageRenderer {
     }
 
     /**
+     * As {@link #renderScene(Path)}, a {@code file} or {@code obj} name that is not beside the file naming it
+     * looked for in {@code workingDir} instead of the Java process's working directory (SPEC's second place: the
+     * folder the course's program ran in).
+     *
+     * @return the canvas, overwritten by the next page or scene
+     * @throws SceneException where the scene is wrong: its file, line and column (or a file that is not there)
+     */
+    public PageCanvas renderScene(Path file, Path workingDir) throws SceneException {
+        Objects.requireNonNull(file, "file must not be null");
+        Objects.requireNonNull(workingDir, "workingDir must not be null");
+        renderScene(file, ScenePipeline.Options.byCommands(library).withWorkingDir(workingDir), SceneMonitor.NONE);
+        return canvas;
+    }
+
+    /**
      * Draws the scene in {@code file} as a whole page, by {@code options}
      * (other depth-cue colours, the vertices' own colours, which rules),
      * telling {@code monitor} its warnings and progress. The picture is on

@@ -69,6 +69,27 @@ class PageRendererTest {
         assertEquals(0, Images.differingPixels(viaOptions, renderer.renderScene(OWN.resolve("cube.simp")).snapshot()));
     }
 
+    /**
+     * A name found only where the course's program ran is found from Java by naming that folder, with no
+     * type of the scene package: the scene draws as if the included file were beside it.
+     */
+    @Test
+    void aNameFoundOnlyInTheNamedWorkingFolderIsDrawnFromThere() throws Exception {
+        String triangle = "polygon (-20, -20, -10) (20, -20, -10) (0, 20, -10)\n";
+        Path beside = Files.createDirectory(dir.resolve("beside"));
+        Files.writeString(beside.resolve("shape.simp"), triangle);
+        Path together = Files.writeString(beside.resolve("scene.simp"), "file \"shape\"\n");
+        Path ran = Files.createDirectory(dir.resolve("ran"));
+        Files.writeString(ran.resolve("shape.simp"), triangle);
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Path apart = Files.writeString(scenes.resolve("scene.simp"), "file \"shape\"\n");
+
+        BufferedImage expected = new PageRenderer().renderScene(together).snapshot();
+        PageRenderer renderer = new PageRenderer();
+        assertThrows(SceneException.class, () -> renderer.renderScene(apart));
+        assertEquals(0, Images.differingPixels(expected, renderer.renderScene(apart, ran).snapshot()));
+    }
+
     @Test
     void aBrokenSceneIsACheckedSceneExceptionAtItsLineAndColumn() throws Exception {
         Path scene = Files.writeString(dir.resolve("broken.simp"), "line (0, 0, -1) (1, x, -1)\n");
