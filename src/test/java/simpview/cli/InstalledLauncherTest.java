@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
 import java.util.function.Consumer;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
@@ -92,6 +93,22 @@ public class InstalledLauncherTest {
         Path ownScenes = Path.of(System.getProperty("simpview.projectDir", ".")).resolve("simp");
         PageContext here = new PageContext(PageContext.DEFAULT_SEED, ownScenes, ownScenes, SceneMonitor.NONE);
         assertEquals(0, Images.differingPixels(new PageRenderer().renderImage(4, here), ImageIO.read(png.toFile())));
+    }
+
+    /** The installed copy carries picocli's and Gson's licence beside the jars that hold them (licenses/THIRD-PARTY.md). */
+    @Test
+    void theInstalledCopyCarriesItsLibrariesLicence() throws IOException {
+        Path home = Path.of(System.getProperty("simpview.installDir"));
+        assertTrue(Files.readString(home.resolve("licenses/Apache-2.0.txt")).contains("Version 2.0, January 2004"));
+        String notice = Files.readString(home.resolve("licenses/THIRD-PARTY.md"));
+        try (Stream<Path> jars = Files.list(home.resolve("lib"))) {
+            for (String jar : jars.map(p -> p.getFileName().toString()).filter(name -> !name.startsWith("simpview"))
+                    .toList()) {
+                String library = jar.substring(0, jar.lastIndexOf('-'));
+                String version = jar.substring(jar.lastIndexOf('-') + 1, jar.length() - ".jar".length());
+                assertTrue(notice.contains(":" + library + "`) | " + version + " |"), jar + " named in the notice");
+            }
+        }
     }
 
     /**

@@ -22,7 +22,13 @@ import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneMonitor;
 import java.util.jar.Attributes;
+import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
+import java.nio.charset.StandardCharsets;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * build/libs/simpview.jar (the build makes it before the tests), run with
@@ -104,6 +110,33 @@ public class RunnableJarTest {
             Attributes main = file.getManifest().getMainAttributes();
             assertEquals("java.desktop/sun.awt.X11", main.getValue("Add-Opens"));
             assertEquals("simpview.cli.Main", main.getValue("Main-Class"));
+        }
+    }
+
+    /**
+     * The jar carries picocli's and Gson's classes, whose own jars carry no licence: it carries their licence's
+     * text and the notice naming them at the versions the build takes, and no other library's classes (one added
+     * to the build without its notice fails here).
+     */
+    @Test
+    void theJarCarriesTheLicenceOfEachLibraryInIt() throws Exception {
+        String build = Files.readString(Path.of(System.getProperty("simpview.projectDir"), "build.gradle"));
+        Set<String> libraries = new TreeSet<>();
+        try (JarFile file = new JarFile(jar.toFile())) {
+            assertNotNull(file.getEntry("META-INF/licenses/Apache-2.0.txt"), "the Apache License's text");
+            String notice = new String(file.getInputStream(file.getEntry("META-INF/licenses/THIRD-PARTY.md"))
+                    .readAllBytes(), StandardCharsets.UTF_8);
+            file.stream().map(JarEntry::getName).filter(name -> name.endsWith(".class") && !name.contains("/versions/"))
+                    .map(name -> name.startsWith("com/google/gson/") ? "gson" : name.substring(0, name.indexOf('/') + 1))
+                    .forEach(libraries::add);
+            assertEquals(List.of("gson", "picocli/", "simpview/"), List.copyOf(libraries),
+                    "the code the jar carries: simpview's, picocli's and Gson's alone");
+            for (String[] library : new String[][] {{"picocli", "picocliVersion"}, {"Gson", "gsonVersion"}}) {
+                Matcher version = Pattern.compile(library[1] + " = '([^']+)'").matcher(build);
+                assertTrue(version.find(), library[1] + " in build.gradle");
+                assertTrue(notice.contains("| " + library[0] + " (") && notice.contains("| " + version.group(1) + " |"),
+                        library[0] + " " + version.group(1) + " named in licenses/THIRD-PARTY.md:\n" + notice);
+            }
         }
     }
 
