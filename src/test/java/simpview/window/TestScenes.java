@@ -57,6 +57,37 @@ public final class TestScenes {
         return file;
     }
 
+    /**
+     * A lit scene, {@code name}.simp, that draws one model, {@code name}.obj: a grid of {@code side} by
+     * {@code side} squares, two faces each, its points at whole coordinates (the scene scales it into view), so
+     * that its lines are written fast. 500 squares a side is some 750,000 lines, read in about a second.
+     */
+    static Path writeGridModelScene(Path folder, String name, int side) throws IOException {
+        int points = side + 1;
+        try (BufferedWriter out = Files.newBufferedWriter(folder.resolve(name + ".obj"))) {
+            StringBuilder line = new StringBuilder(48);
+            for (int i = 0; i < points; i++) {
+                for (int j = 0; j < points; j++) {
+                    line.setLength(0);
+                    out.append(line.append("v ").append(i).append(' ').append(j).append(" 0\n"));
+                }
+            }
+            for (int i = 0; i < side; i++) {
+                for (int j = 0; j < side; j++) {
+                    int a = i * points + j + 1;
+                    line.setLength(0);
+                    line.append("f ").append(a).append(' ').append(a + points).append(' ').append(a + points + 1)
+                            .append("\nf ").append(a).append(' ').append(a + points + 1).append(' ').append(a + 1)
+                            .append('\n');
+                    out.append(line);
+                }
+            }
+        }
+        return Files.writeString(folder.resolve(name + ".simp"), String.join("\n", "ambient 1 1 1",
+                "camera -1 -1 1 1 -1 -100", "translate -1 -1 -3", "scale " + 2.0 / side + " " + 2.0 / side + " 1",
+                "filled", "obj \"" + name + "\"", ""));
+    }
+
     /** "(x, y, z.0)" with x and y given in hundredths, two decimals each. */
     private static StringBuilder point(StringBuilder line, int x100, int y100, int z) {
         line.append('(');

@@ -11,12 +11,14 @@ import simpview.scene.SceneException;
 import simpview.scene.obj.ObjCounts;
 import simpview.scene.obj.ObjFilesSeen;
 import simpview.scene.obj.ObjLibrary;
+import simpview.scene.obj.ObjSink;
 import simpview.shading.Fog;
 import simpview.shading.FragmentStage;
 import simpview.shading.FragmentStages;
 import simpview.shading.LitState;
 import simpview.stage.LitGeometry;
 import simpview.stage.LitPrimitives;
+import simpview.stage.ObjFace;
 import simpview.stage.PrimitiveTrace;
 import simpview.surface.Drawable;
 import simpview.surface.DrawingThreads;
@@ -50,6 +52,8 @@ final class LitRules implements RuleSet {
     /** What the models read so far warned of, each warning once however often its model is drawn. */
     private final Set<String> modelWarnings = new LinkedHashSet<>();
     private final FileStack files;
+    /** Who is told of a model's lines as they are read, and may stop the scene in the middle of one. */
+    private final SceneMonitor monitor;
     private final boolean traced;
     private final PrimitiveTrace trace;
     /** Where the camera command stands, and where the first primitive did ("file:line"), or null. */
@@ -67,15 +71,18 @@ final class LitRules implements RuleSet {
     /**
      * @param fragments where the fragments go: the canvas's z-buffer (reset to -infinity) and panel
      * @param models where obj models come from (kept by whoever draws, across pictures)
+     * @param monitor who is told of a model's lines as they are read, and may cancel in the middle of one
      * @param trace who follows the primitives, or null
      * @param turn the window's turn of the view, after W (the camera moves about the world), or null
      */
-    LitRules(FragmentStage fragments, ObjLibrary models, FileStack files, PrimitiveTrace trace, Matrix4 turn) {
+    LitRules(FragmentStage fragments, ObjLibrary models, FileStack files, SceneMonitor monitor, PrimitiveTrace trace,
+            Matrix4 turn) {
         this.geometry = new LitGeometry(state, fragments);
         this.firstNonFinite = new FirstNonFinite(geometry);
         this.fragments = fragments;
         this.models = models;
         this.files = files;
+        this.monitor = monitor;
         this.traced = trace != null;
         this.trace = trace;
         geometry.follow(trace);
@@ -172,13 +179,35 @@ final class LitRules implements RuleSet {
         return false;
     }
 
+    /**
+     * Where a model's faces go: the geometry stage. Every so many of its lines the monitor is told the lines read
+     * so far, the model's among them (the scene's count goes on from there once the model is drawn), and asked
+     * whether to stop: a model of millions of faces is cancelled as it is read, not once it is drawn whole.
+     */
+    private ObjSink modelFaces() {
+        return new ObjSink() {
+            @Override
+            public void face(ObjFace face) throws SceneException {
+                geometry.face(face);
+            }
+
+            @Override
+            public void progress(int line) {
+                monitor.linesRead(files.linesRead() + line);
+                if (monitor.cancelled()) {
+                    throw new SceneCancelledException();
+                }
+            }
+        };
+    }
+
     boolean obj(Command c, Matrix4 ctm, SimpClient.Style style) throws SceneException {
         primitive();
         Path file = files.locateModel(c);
         geometry.beginObj(ctm, style == SimpClient.Style.WIRE, file);
         ObjCounts counts;
         try {
-            counts = models.draw(file, geometry::face, modelsSeen);
+            counts = models.draw(file, modelFaces(), modelsSeen);
         } catch (SceneException e) {
             throw wholeModel(c, file, e);
         }

@@ -235,7 +235,8 @@ public final class ScenePipeline {
         Drawable panel = canvas.litPanel();
         FragmentStages stages = FragmentStages.keptBy(canvas.drawingThreads(), canvas.zbuffer());
         FragmentStage fragments = stages.next(panel);
-        LitRules lit = new LitRules(fragments, options.library().models(), files, monitor.trace(), monitor.viewTurn());
+        LitRules lit = new LitRules(fragments, options.library().models(), files, monitor, monitor.trace(),
+                monitor.viewTurn());
         DrawingWatch watch = monitor.watch();
         if (watch != null) {
             // Drawn on this thread alone: the watch sees each fragment as the rasterizers make it.

@@ -114,7 +114,7 @@ public final class SimpClient {
     /** A client that draws by the lit rules from its first command: fragments through {@code fragments}. */
     public static SimpClient lit(FragmentStage fragments, ObjLibrary models, PrimitiveTrace trace) {
         FileStack files = new FileStack();
-        return new SimpClient(files, new LitRules(fragments, models, files, trace, null), OnLit.TURN_LIT,
+        return new SimpClient(files, new LitRules(fragments, models, files, SceneMonitor.NONE, trace, null), OnLit.TURN_LIT,
                 SimpClient::neverLit);
     }
 
