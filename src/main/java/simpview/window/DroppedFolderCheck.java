@@ -1,12 +1,17 @@
 package simpview.window;
 
 import java.awt.Font;
+import java.awt.event.ActionEvent;
+import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import java.util.function.Supplier;
+import javax.swing.AbstractAction;
+import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JFrame;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
+import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import simpview.pages.PageContext;
 import simpview.window.instruments.FolderCheck;
@@ -14,7 +19,11 @@ import simpview.window.instruments.FolderCheck;
 /**
  * A folder dropped on the window (issue 21), checked as {@code simpview check
  * FOLDER} checks it, on a thread of its own; its table shown in a window of
- * its own and its last line on the status line. Called on the EDT.
+ * its own and its last line on the status line. The table's window is one
+ * per window, each folder's table shown in it in turn; it comes up beside the
+ * page without taking the keys from it (the check ends seconds after the
+ * drop, while the keys may be turning pages), and Escape closes it, giving
+ * the keys back to the page. Called on the EDT.
  */
 final class DroppedFolderCheck {
 
@@ -23,6 +32,9 @@ final class DroppedFolderCheck {
     private final Supplier<PageContext> pageContext;
     private FolderCheck folderCheck = FolderCheck.NONE;
     private String lastCheck;
+    /** The window the tables are shown in, made with the first; null before. */
+    private JDialog tableWindow;
+    private JTextArea tableText;
 
     /** The check of the folders dropped on {@code frame}, drawn with what {@code pageContext} gives as each is dropped. */
     DroppedFolderCheck(JFrame frame, StatusStrip status, Supplier<PageContext> pageContext) {
@@ -55,17 +67,47 @@ final class DroppedFolderCheck {
     }
 
     private void showCheck(Path folder, String table) {
-        JTextArea text = new JTextArea(table);
-        text.setEditable(false);
-        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
-        JDialog dialog = new JDialog(frame, "check: " + folder.getFileName(), false);
-        dialog.getContentPane().add(new JScrollPane(text));
-        dialog.pack();
-        dialog.setLocationRelativeTo(frame);
-        dialog.setVisible(true);
+        if (tableWindow == null) {
+            makeTableWindow();
+        }
+        tableText.setText(table);
+        tableText.setCaretPosition(0);
+        tableWindow.setTitle("check: " + folder.getFileName());
+        if (!tableWindow.isShowing()) {
+            tableWindow.pack();
+            tableWindow.setLocationRelativeTo(frame);
+            tableWindow.setVisible(true);
+        }
         lastCheck = table;
         String[] lines = table.split("\n");
         status.say(folder.getFileName() + ": " + lines[lines.length - 1]);
+    }
+
+    private void makeTableWindow() {
+        tableText = new JTextArea();
+        tableText.setEditable(false);
+        tableText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
+        tableWindow = new JDialog(frame, false);
+        tableWindow.setAutoRequestFocus(false);
+        tableWindow.getContentPane().add(new JScrollPane(tableText));
+        String close = "close";
+        tableWindow.getRootPane().getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW)
+                .put(KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), close);
+        tableWindow.getRootPane().getActionMap().put(close, new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                tableWindow.setVisible(false);
+                // the keys go back to the page (with no window manager to give them, nothing would have them)
+                frame.requestFocus();
+            }
+        });
+    }
+
+    /** The window the last table is shown in, or null before the first: for the tests. */
+    JDialog tableWindow() {
+        return tableWindow;
     }
 
     /** The table of the last folder checked, or null: for the tests. */

@@ -25,6 +25,7 @@ import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.concurrent.ThreadLocalRandom;
+import javax.swing.JDialog;
 import javax.swing.JFrame;
 import simpview.pages.A1Rule;
 import simpview.pages.PageContext;
@@ -670,6 +671,11 @@ public final class SimpviewWindow {
     /** The table of the last folder checked, or null: for the tests. */
     String lastCheck() {
         return folders.lastCheck();
+    }
+
+    /** The window of the dropped folders' tables, or null before the first. */
+    JDialog checkTable() {
+        return folders.tableWindow();
     }
 
     /** Shows a scene file as an extra view; stepping keys go back to the pages. */

@@ -3,6 +3,7 @@ package simpview.window;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,6 +15,8 @@ import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneDrawer;
 import simpview.cli.CheckCommand;
 import simpview.pages.Assignment1;
+import simpview.window.render.View;
+import javax.swing.JDialog;
 
 /**
  * A folder dropped on the real window is checked as {@code simpview check FOLDER} checks it (issue 21):
@@ -77,12 +80,52 @@ class FolderCheckWindowTest extends WindowTestCase {
         assertTrue(table.endsWith("1 of 2 pictures pass; 4 of 4 panels pass (1 page of the first assignment)\n"), table);
     }
 
-    /** Drops the folder on the window (opened here) and waits for its table. */
-    private String drop(Path mine) throws Exception {
+    @Test
+    void theTableShowsWithoutTakingTheKeysFromThePage() throws Exception {
+        Path mine = Files.createDirectories(dir.resolve("mine"));
+        ImageIO.write(new PageRenderer().renderImage(1, PageContext.defaults().withSeed(SEED)), "png",
+                mine.resolve("page1.png").toFile());
+        openWindow();
+        driver.focusByClicking(new View.OfPage(2));
+        drop(mine);
+        JDialog table = driver.onEdt(() -> driver.window().checkTable());
+        driver.awaitEdt(table::isShowing, "the table's window");
+        driver.press(KeyEvent.VK_RIGHT);
+        driver.awaitShown(new View.OfPage(3));
+        drop(mine); // the next table comes in the same window, and again leaves the keys with the page
+        driver.awaitEdt(() -> table == driver.window().checkTable() && table.isShowing(), "the table again");
+        driver.press(KeyEvent.VK_RIGHT);
+        driver.awaitShown(new View.OfPage(4));
+    }
+
+    @Test
+    void escapeClosesTheTable() throws Exception {
+        Path mine = Files.createDirectories(dir.resolve("mine"));
+        drop(mine);
+        JDialog table = driver.onEdt(() -> driver.window().checkTable());
+        driver.awaitEdt(table::isShowing, "the table's window");
+        driver.click(table.getRootPane());
+        driver.awaitEdt(table::isFocused, "the table's window to have the keys");
+        driver.press(KeyEvent.VK_ESCAPE);
+        driver.awaitEdt(() -> !table.isShowing(), "Escape to close the table");
+        driver.awaitEdt(() -> driver.window().frame().isFocused(), "the page to have the keys again");
+        driver.press(KeyEvent.VK_RIGHT);
+        driver.awaitShown(new View.OfPage(2));
+    }
+
+    private void openWindow() throws Exception {
         driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
         driver.onEdt(() -> driver.window().checkFoldersWith(CheckCommand::checkFolder));
+    }
+
+    /** Drops the folder on the window (opened here, or the one open) and waits for its table. */
+    private String drop(Path mine) throws Exception {
+        if (driver == null) {
+            openWindow();
+        }
+        String before = driver.onEdt(() -> driver.window().lastCheck());
         assertTrue(DroppedFiles.dropOn(driver, mine), "the window took the folder");
-        driver.awaitEdt(() -> driver.window().lastCheck() != null, "the folder's table");
+        driver.awaitEdt(() -> driver.window().lastCheck() != before, "the folder's table");
         return driver.onEdt(() -> driver.window().lastCheck());
     }
 }
