@@ -257,6 +257,11 @@ final class InspectedPixel {
             // Without the panel: the owner's own file:line, where a scene gave it; a page's own primitive by its name.
             int x = x();
             int y = y();
+            if (x < 0) {
+                status.say("No chain to copy: no pixel is inspected. Point at the picture, or pin a pixel (P, or "
+                        + "Shift+G for its coordinates), then press Ctrl+Shift+C.");
+                return;
+            }
             int owner = Inspector.ownerAt(shown, x, y);
             String place = owner < 0 ? null : shown.facts().primitives().place(owner);
             String line = x < 0 ? null : Inspector.describe(shown, x, y);
@@ -273,9 +278,15 @@ final class InspectedPixel {
         status.say("Copied: " + chain + note);
     }
 
-    /** Puts the inspector's line on the clipboard. */
+    /** Puts the text selected in the panel, else the inspector's line, on the clipboard; with neither, says so. */
     void copyInspected() {
         String selected = inspectorPanel.isShown() ? inspectorPanel.selectedText() : "";
+        if (selected.isEmpty() && x() < 0) {
+            // the status line's inspector then holds the zoom alone ("1:1"): no pixel's line to copy
+            status.say("Nothing to copy: no pixel is inspected. Point at the picture, or pin a pixel (P, or Shift+G "
+                    + "for its coordinates), then press Ctrl+C; or select text in the inspector panel (I).");
+            return;
+        }
         String line = selected.isEmpty() ? status.inspectorText() : selected;
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(line), null);
         status.say("Copied: " + line);

@@ -28,6 +28,7 @@ import simpview.pages.ZBufferPage;
 import simpview.surface.PageCanvas;
 import java.awt.Component;
 import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.StringSelection;
 import java.awt.event.InputEvent;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -231,6 +232,27 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window().status().messageText().startsWith("Copied: " + place + " (with the panel open"),
                 "the owner's place copied: " + place);
         assertEquals(place, Toolkit.getDefaultToolkit().getSystemClipboard()
+                .getData(DataFlavor.stringFlavor));
+    }
+
+    @Test
+    void withNoPixelInspectedTheCopiesSaySoAndLeaveTheClipboard() throws Exception {
+        Path scene = Files.writeString(dir.resolve("own.simp"), "# one\n" + triangleAt(-150));
+        open();
+        driver.onEdt(() -> window().openScene(scene));
+        driver.awaitShown(new View.OfScene(scene));
+        driver.movePointer(1, 1); // off the window: no pixel under the pointer, and none pinned
+        driver.awaitEdt(() -> !window().status().inspectorText().contains("rgb"), "no pixel inspected");
+        StringSelection before = new StringSelection("the student's own copy");
+        driver.onEdt(() -> Toolkit.getDefaultToolkit().getSystemClipboard().setContents(before, null));
+
+        driver.onEdt(() -> window().perform(WindowAction.COPY));
+        driver.awaitEdt(() -> window().status().messageText().startsWith("Nothing to copy: no pixel is inspected"),
+                "Ctrl+C to say there is nothing to copy");
+        driver.onEdt(() -> window().perform(WindowAction.COPY_CHAIN));
+        driver.awaitEdt(() -> window().status().messageText().startsWith("No chain to copy: no pixel is inspected"),
+                "Ctrl+Shift+C to say there is no pixel to copy the chain of");
+        assertEquals("the student's own copy", Toolkit.getDefaultToolkit().getSystemClipboard()
                 .getData(DataFlavor.stringFlavor));
     }
 
