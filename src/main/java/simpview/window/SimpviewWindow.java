@@ -97,7 +97,7 @@ public final class SimpviewWindow {
         this.renderer = new BackgroundRenderer(drawer, options.threads());
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
-        this.placement = new WindowPlacement(frame, inspectorPanel.component());
+        this.placement = new WindowPlacement(frame, InspectorPanel.WIDTH);
         this.folders = new DroppedFolderCheck(frame, status, () -> this.options.pageContext());
         OnScreen onScreen = new Screen();
         this.overlays = new OverlayToggles(pageView, legendStrip, status, inspectorPanel, onScreen);

@@ -5,7 +5,6 @@ import java.awt.GraphicsConfiguration;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
-import javax.swing.JComponent;
 import javax.swing.JFrame;
 
 /**
@@ -17,16 +16,17 @@ import javax.swing.JFrame;
 public final class WindowPlacement {
 
     private final JFrame frame;
-    private final JComponent panel;
+    /** The inspector panel's width: what the frame widens by to show it. */
+    private final int panelWidth;
     /** The frame's width before the inspector panel widened it, or 0. */
     private int widthBeforePanel;
     /** The screen area a test placed the frame in, or null for the real one. */
     private Rectangle placedWithin;
 
-    /** The placement of {@code frame}, whose inspector panel is {@code panel}. */
-    WindowPlacement(JFrame frame, JComponent panel) {
+    /** The placement of {@code frame}, whose inspector panel is {@code panelWidth} wide. */
+    WindowPlacement(JFrame frame, int panelWidth) {
         this.frame = frame;
-        this.panel = panel;
+        this.panelWidth = panelWidth;
     }
 
     /** The frame's bounds for a frame that would like to be {@code wanted}, on a screen whose usable area is {@code usable}. */
@@ -61,7 +61,6 @@ public final class WindowPlacement {
         if ((frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) != 0) {
             return;
         }
-        int panelWidth = panel.getPreferredSize().width;
         Rectangle bounds = frame.getBounds();
         Rectangle usable = screenForPlacing();
         int width;

@@ -1,5 +1,7 @@
 package simpview.window;
 
+import simpview.window.instruments.InspectorPanel;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -28,6 +30,21 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.press(KeyEvent.VK_I);
         driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.inspectorPanel().answered()
                 && window.inspectorPanel().text().contains("history:"), "the panel's report");
+    }
+
+    @Test
+    void inANarrowWindowThePanelLeavesThePageHalfTheWidth() throws Exception {
+        SimpviewWindow window = openWindowOn(litSquare());
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        driver.awaitEdt(() -> window.inspectorPanel().isShown(), "the panel shown");
+        driver.onEdt(() -> window.frame().setSize(400, 400));
+        driver.awaitEdt(() -> window.frame().getWidth() == 400 && window.inspectorPanel().component().isShowing()
+                && window.pageView().getWidth() >= window.frame().getContentPane().getWidth() / 2,
+                "the page beside the panel at half the window's width at least");
+        driver.onEdt(() -> window.frame().setSize(1200, 600));
+        driver.awaitEdt(() -> window.frame().getWidth() == 1200
+                && window.inspectorPanel().component().getWidth() == InspectorPanel.WIDTH,
+                "the panel at its whole width again in a wide window");
     }
 
     @Test

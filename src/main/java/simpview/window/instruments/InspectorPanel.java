@@ -1,6 +1,7 @@
 package simpview.window.instruments;
 
 import simpview.pages.A1Rule;
+import java.awt.Container;
 import java.awt.Dimension;
 import java.awt.Font;
 import java.util.concurrent.ExecutorService;
@@ -52,7 +53,8 @@ import simpview.scene.simp.SourcePlace;
  */
 public final class InspectorPanel {
 
-    private static final int WIDTH = 420;
+    /** The panel's width beside the page, where the window is at least twice as wide. */
+    public static final int WIDTH = 420;
     /** How long a replay may take before the panel says it is drawing again, in place of the last answer. */
     private static final int WAITING_WORDS_AFTER_MILLIS = 250;
 
@@ -107,7 +109,18 @@ public final class InspectorPanel {
         // Keys belong to the page (a focused text would take the arrows and Ctrl+C): the mouse still selects.
         text.setFocusable(false);
         scroll = new JScrollPane(text, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
-                ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
+                ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER) {
+            private static final long serialVersionUID = 1L;
+
+            /** WIDTH, but never more than half the window's: in a narrow window the page beside it keeps the rest. */
+            @Override
+            public Dimension getPreferredSize() {
+                Dimension wanted = super.getPreferredSize();
+                Container beside = getParent();
+                return beside == null || beside.getWidth() <= 0 ? wanted
+                        : new Dimension(Math.min(wanted.width, beside.getWidth() / 2), wanted.height);
+            }
+        };
         scroll.setPreferredSize(new Dimension(WIDTH, 400));
         scroll.setName("inspector panel");
         scroll.setVisible(false);
