@@ -394,15 +394,22 @@ public final class PageView extends JComponent {
 
     /** Whether the outlines' pictures are of the outlines shown, as now zoomed and panned, at the view's size. */
     private boolean drawnAsNow(int width, int height) {
-        return wirePicture != null && wirePicture.getWidth() == width && wirePicture.getHeight() == height
+        BufferedImage either = wirePicture != null ? wirePicture : skippedPicture;
+        return either != null && either.getWidth() == width && either.getHeight() == height
                 && wireDrawn == wire && culledDrawn == culled && clippedDrawn == clipped
                 && drawnZoom == zoomPan.zoom() && drawnX == zoomPan.originX() && drawnY == zoomPan.originY()
                 && drawnUnit == zoomPan.unit();
     }
 
-    /** {@code picture} (or a new one when it is not of the view's size) with only these outlines on it, opaque. */
+    /**
+     * {@code picture} (or a new one when it is not of the view's size) with only these outlines on it, opaque; null
+     * when there are none to draw.
+     */
     private BufferedImage drawOutlines(BufferedImage picture, int width, int height, List<double[]> shapes,
             Color colour, List<double[]> moreShapes, Color moreColour) {
+        if (shapes == null && moreShapes == null) {
+            return null;
+        }
         BufferedImage drawn = picture != null && picture.getWidth() == width && picture.getHeight() == height
                 ? picture : new BufferedImage(width, height, BufferedImage.TYPE_INT_ARGB);
         Graphics2D g = drawn.createGraphics();
