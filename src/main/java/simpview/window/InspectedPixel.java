@@ -264,9 +264,9 @@ final class InspectedPixel {
             }
             int owner = Inspector.ownerAt(shown, x, y);
             String place = owner < 0 ? null : shown.facts().primitives().place(owner);
-            String line = x < 0 ? null : Inspector.describe(shown, x, y);
+            String line = Inspector.describe(shown, x, y);
             if (place == null && (line == null || !line.contains("drawn by primitive"))) {
-                status.say(shown != null && shown.facts().owners() == null && x >= 0
+                status.say(shown != null && shown.facts().owners() == null
                         ? "This page records no primitive for its pixels: no chain to copy."
                         : "No primitive drew the inspected pixel: no chain to copy (I shows the panel's chains).");
                 return;
