@@ -6,7 +6,8 @@ package simpview.compare;
  * pixels are coloured (their channels further apart than the tolerance). A page saved in greyscale, or a renderer
  * that writes one channel into all three, fails with nothing else to say why: its shapes are where simpview's are,
  * its colours all wrong. Said of a picture that fails, by {@code compare} of one picture, a batch and {@code check}
- * in the same words.
+ * in the same words. A panel of one colour throughout (black: nothing drawn in it) is not said to have no colour:
+ * saving it in colour would change nothing.
  */
 public final class Colourless {
 
@@ -28,10 +29,12 @@ public final class Colourless {
 
     /**
      * {@link #NOTE} of theirs against ours, two panels of 0xRRGGBB pixels, when theirs is grey throughout and ours is
-     * coloured beyond {@code tolerance} on at least {@link #MIN_SHARE} of its pixels; null otherwise.
+     * coloured beyond {@code tolerance} on at least {@link #MIN_SHARE} of its pixels, and theirs holds more than
+     * one colour; null otherwise.
      */
     public static String note(int[] ours, int[] theirs, int tolerance) {
         long coloured = 0;
+        boolean flat = true;
         for (int i = 0; i < ours.length; i++) {
             if (spread(theirs[i]) > GREY_SPREAD) {
                 return null;
@@ -39,8 +42,9 @@ public final class Colourless {
             if (spread(ours[i]) > tolerance) {
                 coloured++;
             }
+            flat &= theirs[i] == theirs[0];
         }
-        return ours.length > 0 && coloured >= MIN_SHARE * ours.length ? NOTE : null;
+        return ours.length > 0 && !flat && coloured >= MIN_SHARE * ours.length ? NOTE : null;
     }
 
     /** How far apart a pixel's channels are: 0 for a grey. */

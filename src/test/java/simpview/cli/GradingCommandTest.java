@@ -215,6 +215,24 @@ class GradingCommandTest {
         assertFalse(check.out().contains("page5.png (page 5): your picture has no colour"), check.out());
     }
 
+    /**
+     * A page whose panel holds nothing drawn, black throughout in its white margins (a renderer that never wrote a
+     * pixel), is grey everywhere too, but saving it in colour would change nothing: it is not told to.
+     */
+    @Test
+    void aBlankPanelIsNotToldToBeSavedInColour() throws Exception {
+        Path st = dir.resolve("subs/st");
+        writePng(st.resolve("page4.png"), paint(paint(page(4), 0, 0, 750, 750, 0xFFFFFF), 50, 50, 700, 700, 0));
+
+        CliRun one = CliRun.of("compare", st.resolve("page4.png").toString(), "--page", "4");
+        assertEquals(ExitCode.SCENE_ERROR, one.exitCode(), one.err());
+        assertFalse(one.out().contains("no colour"), one.out());
+
+        CliRun run = CliRun.of("compare", "--dir", dir.resolve("subs").toString(), "--pages", "4", "--out-dir",
+                dir.resolve("out").toString(), "--diffs", "none");
+        assertTrue(run.err().matches("(?s).*st/page4\\.png: FAIL [0-9.]+ %\n.*"), run.err());
+    }
+
     @Test
     void aPictureSavedAsJpegOrGifThatFailsIsToldToBeHandedInAsPng() throws Exception {
         Path st = dir.resolve("subs/st");
