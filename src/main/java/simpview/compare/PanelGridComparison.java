@@ -106,7 +106,17 @@ public final class PanelGridComparison {
     private static Cut cut(int[] rgb, byte[] alpha, int width, int height, String name, BufferedImage ours,
             Panel[] panels, PictureFormat format) throws CompareException {
         int page = ours.getWidth();
-        int[] at = find(rgb, width, height, page, panels, name);
+        int[] at;
+        try {
+            at = find(rgb, width, height, page, panels, name);
+        } catch (CompareException e) {
+            if (format != PictureFormat.JPEG) {
+                throw e;
+            }
+            // the rings are looked for within 16/255 of white: a JPEG's ringing beside the panels' edges is more
+            throw new CompareException(e.getMessage() + "; it holds a JPEG, whose lossy compression changes the "
+                    + "white around each panel: save the page as PNG and compare again", e);
+        }
         for (int k = 0; k < panels.length; k++) {
             Picture.requireOpaque(alpha, width, at[0] + panels[k].left(), at[1] + panels[k].top(), panels[k].size(),
                     name, "panel " + (k + 1));

@@ -217,6 +217,30 @@ class Assignment1CompareTest {
     }
 
     /**
+     * Page 3 saved as a JPEG at ImageIO's default quality (0.75): its compression leaves the white rings around
+     * the panels off white, so no page is found, and the student is told that the JPEG is why, not only which ring
+     * pixel is not white; alone and in check.
+     */
+    @Test
+    void aPageNotFoundInAJpegSaysToSaveItAsPng() throws Exception {
+        Path png = dir.resolve("a1-page3.png");
+        assertEquals(ExitCode.OK, CliRun.of("render", "--assignment", "1", "--page", "3", "--out", png.toString())
+                .exitCode());
+        Path st = dir.resolve("st");
+        Files.createDirectories(st);
+        Path jpeg = st.resolve("a1-page3.jpg");
+        assertTrue(ImageIO.write(ImageIO.read(png.toFile()), "jpeg", jpeg.toFile()));
+        String advice = "it holds a JPEG, whose lossy compression changes the white around each panel: save the page "
+                + "as PNG";
+
+        CliRun one = CliRun.of("compare", jpeg.toString(), "--assignment", "1", "--page", "3");
+        assertTrue(one.err().contains("no page of 4 panels of 300x300 found in ") && one.err().contains(advice),
+                one.out() + one.err());
+        CliRun check = CliRun.of("check", st.toString(), "--assignment", "1", "--pages", "3");
+        assertTrue(check.out().contains(advice), check.out());
+    }
+
+    /**
      * Lines a pixel short or long pass (a hundred pixels of 90,000) and are said. Page 2's lines, in the panel's
      * frame y up (y = 299 - the handout's): (20, 219 - p) to (150, 149 - p) and (160 + p, 29) to (240 + p, 259),
      * p = 0..50. In panel 1 (DDA) each line's second end is left black: (150, 149 - p) and (240 + p, 259), each
