@@ -117,8 +117,10 @@ public final class HtmlReport {
         h.append("</tr></thead>\n<tbody>\n");
         int index = 0;
         for (BatchRow row : rows) {
-            String result = row.result().name();
-            h.append("<tr class=\"row ").append(result.toLowerCase(Locale.ROOT)).append("\">");
+            // one that does not count (another picture of its page does) is no failure here, as in the tallies
+            String result = row.result().name() + (row.counts() ? "" : ", not counted");
+            h.append("<tr class=\"row ").append(row.counts() ? result.toLowerCase(Locale.ROOT) : "notcounted")
+                    .append("\">");
             String submission = submissionOf.apply(row.file());
             cell(h, submission.isEmpty() ? JUnitResults.TOP : submission, null);
             cell(h, row.file(), null);
@@ -245,7 +247,7 @@ public final class HtmlReport {
             td { padding: 4px 10px; white-space: nowrap; }
             td[data-v] { text-align: right; }
             tr.pass td { background: #%06x; } tr.fail td { background: #%06x; } tr.error td { background: #%06x; }
-            tr.skipped td { background: #%06x; } tr.missing td { background: #%06x; }
+            tr.skipped td, tr.notcounted td { background: #%06x; } tr.missing td { background: #%06x; }
             pre { background: #f4f4f4; padding: 6px; white-space: pre-wrap; overflow-wrap: anywhere; }
             .view { overflow: auto; max-width: 100%%; border: 1px solid #888888; }
             .diff { position: relative; transform-origin: 0 0; }

@@ -57,6 +57,26 @@ class ReportWordsTest {
     }
 
     /**
+     * A picture that does not count (another of its page does) is no failure in the web report, as in the tallies
+     * and JUnit: a failing "page3 copy.png" beside the page3.png that counts is a grey row that says it is not
+     * counted, not a red FAIL among the student's rows; the details still give its result.
+     */
+    @Test
+    void theWebReportSaysWhichPictureDoesNotCount() throws Exception {
+        int[] wrong = GradingFixtures.stripes(2);
+        List<BatchRow> rows = OnePerPage.bySubmission(List.of(
+                GradingFixtures.row("ann/page3 copy.png", "3 (seed 361)", STRIPES, wrong, ONE, false, null),
+                GradingFixtures.row("ann/page3.png", "3 (seed 361)", STRIPES, STRIPES, ONE, false, null)),
+                "ann/page3.png"::equals, file -> false);
+
+        String html = HtmlReport.page(rows, List.of(), Path.of("web"), null);
+        assertTrue(html.contains("<tr class=\"row notcounted\"><td>ann</td><td>ann/page3 copy.png</td>"
+                + "<td>page 3 (seed 361)</td><td>FAIL, not counted</td>"), html);
+        assertFalse(html.contains("<tr class=\"row fail\">"), html);
+        assertTrue(html.contains("<tr class=\"row pass\"><td>ann</td><td>ann/page3.png</td>"), html);
+    }
+
+    /**
      * Why a page is missing ends a sentence once: a why that ends in "?" (a picture named for a page there is not,
      * asked whether it was meant as the page lacked) is not followed by ".", in JUnit's text or Gradescope's.
      */
