@@ -25,7 +25,8 @@ public final class KeyHelp {
             new Row("drag", "pan (scroll the page)"),
             new Row("right-drag, Shift+drag", "turn the scene about its centre"),
             new Row("Ctrl+wheel, Alt+wheel", "move the scene's view nearer or farther"),
-            new Row("drop a file", "a .simp: open it; a picture: compare with it; a folder: check its pictures"));
+            new Row("drop a file", "a .simp: open it (several: the first pages); a picture: compare with it; "
+                    + "a folder: check its pictures"));
 
     static final List<Row> ROWS = rows();
 

@@ -19,8 +19,8 @@ import simpview.window.render.View;
  */
 final class PageCycle {
 
-    /** The place among the eight pages and the scenes named at start. */
-    private final PageStepper stepper;
+    /** The place among the eight pages and the scenes before them (named at start, or dropped since). */
+    private PageStepper stepper;
     /** The first assignment's page on show (1 to 5), or 0 while the window steps through the eight pages and scenes. */
     private int assignment1Page;
     /** The first assignment's page last shown (1 to 5): where Alt+1 and A come back to. */
@@ -28,7 +28,8 @@ final class PageCycle {
     /** The third or fourth assignment's pages while they are on show, else null; each kept where it was left. */
     private CoursePageSet coursePages;
     private final Map<Integer, CoursePageSet> courseSets = new HashMap<>();
-    private final List<Path> sceneList;
+    /** The scenes that are the first pages: those named at start, until several are dropped in their place. */
+    private List<Path> sceneList;
     /** The course's pages' folder: the third and fourth assignments' are beside it. */
     private final Path simpDir;
     /** Says where a move has nowhere to go. */
@@ -173,6 +174,16 @@ final class PageCycle {
         assignment1Page = 0;
         coursePages = null;
         goTo.accept(new View.OfScene(file));
+    }
+
+    /**
+     * Several scenes dropped at once: the first pages from now on, in the order given, in place of the scenes
+     * named at start (or dropped before), as {@code simpview A.simp B.simp} makes them; the first is shown.
+     */
+    void openScenes(List<Path> scenes) {
+        sceneList = List.copyOf(scenes);
+        stepper = new PageStepper(sceneList.size());
+        stepTo(stepper.first());
     }
 
     /** What stands at a place among the pages: one of the scenes named at start, or one of the eight pages. */

@@ -24,7 +24,9 @@ import java.awt.event.ComponentEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.stream.Collectors;
 import javax.swing.JDialog;
 import javax.swing.JFrame;
 import simpview.pages.A1Rule;
@@ -79,6 +81,9 @@ public final class SimpviewWindow {
     private RenderJob ownerJob;
     private int stepBeforeOwner;
     private String ownerWords;
+    /** What to say once {@link #wordsFor} is shown (what a drop opened and left out), or "". */
+    private String wordsWhenShown = "";
+    private View wordsFor;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
     private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
             legend -> legendStrip.show("compare", legend), () -> options.pageContext());
@@ -132,7 +137,7 @@ public final class SimpviewWindow {
         inspectorPanel.onCopy(status::say);
         frame.setResizable(true);
         // compare (issue 15): a picture dropped; check (issue 21): a folder dropped
-        frame.setTransferHandler(new SceneDrop(this::openScene, comparison::compareWith, this::checkFolder, status::say));
+        frame.setTransferHandler(new SceneDrop(this::openDropped, comparison::compareWith, this::checkFolder, status::say));
         new PointerGestures(pageView, new Gestures()).attach(pageView);
         pageView.addComponentListener(new ComponentAdapter() {
             @Override
@@ -683,6 +688,25 @@ public final class SimpviewWindow {
         pages.openScene(file);
     }
 
+    /**
+     * The .simp files of a drop, in the order given: one is opened as {@link #openScene} opens it; several become
+     * the first pages, before the eight. Once the first is shown, the status line says so and names what the drop
+     * left out ({@code leftOut}, "" for nothing).
+     */
+    void openDropped(List<Path> scenes, String leftOut) {
+        String opened = "";
+        if (scenes.size() == 1) {
+            pages.openScene(scenes.get(0));
+        } else {
+            pages.openScenes(scenes);
+            opened = "Opened the " + scenes.size() + " scenes dropped as the first pages, before the eight: "
+                    + scenes.stream().map(scene -> scene.getFileName().toString()).collect(Collectors.joining(", "))
+                    + " (→ steps through them).";
+        }
+        wordsWhenShown = (opened + " " + leftOut).strip();
+        wordsFor = requested();
+    }
+
     /** Switches the first assignment between SPEC's rule and the course's pictures' (A1Rule); A1 pages are drawn again. */
     private void toggleA1Rule() {
         A1Rule rule = options.a1Rule() == A1Rule.SPEC ? A1Rule.COURSE : A1Rule.SPEC;
@@ -765,6 +789,12 @@ public final class SimpviewWindow {
         }
         if (orbit.turned()) {
             status.say(orbit.describe());
+        }
+        if (!wordsWhenShown.isEmpty()) {
+            if (result.view().equals(wordsFor)) {
+                status.say(wordsWhenShown);
+            }
+            wordsWhenShown = "";
         }
         showStep(result);
         if (job.settings().record()) {

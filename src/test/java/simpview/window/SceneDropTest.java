@@ -17,13 +17,26 @@ import org.junit.jupiter.api.Test;
 public class SceneDropTest {
 
     private final List<Path> opened = new ArrayList<>();
+    private final List<String> leftOut = new ArrayList<>();
     private final List<String> told = new ArrayList<>();
-    private final SceneDrop drop = new SceneDrop(opened::add, told::add);
+    private final SceneDrop drop = new SceneDrop(this::open, told::add);
+
+    private void open(List<Path> scenes, String left) {
+        opened.addAll(scenes);
+        leftOut.add(left);
+    }
 
     @Test
-    void opensTheFirstSimpFileDropped() {
-        assertTrue(drop.importData(files("notes.txt", "house.simp", "tree.simp")));
+    void opensEverySimpFileDroppedInTheOrderGivenAndNamesTheRest() {
+        assertTrue(drop.importData(files("notes.txt", "tree.simp", "house.simp", "mine.png")));
+        assertEquals(List.of(Path.of("tree.simp"), Path.of("house.simp")), opened);
+        assertEquals(List.of("Left out notes.txt and mine.png: a drop with .simp files opens those alone (drop a "
+                + "picture or a folder on its own)."), leftOut);
+        opened.clear();
+        leftOut.clear();
+        assertTrue(drop.importData(files("house.simp")));
         assertEquals(List.of(Path.of("house.simp")), opened);
+        assertEquals(List.of(""), leftOut);
     }
 
     @Test
@@ -36,7 +49,7 @@ public class SceneDropTest {
     @Test
     void aPictureDroppedIsCompared() {
         List<Path> compared = new ArrayList<>();
-        SceneDrop comparing = new SceneDrop(opened::add, compared::add, told::add);
+        SceneDrop comparing = new SceneDrop(this::open, compared::add, told::add);
         assertTrue(comparing.importData(files("notes.txt", "Mine.PNG")));
         assertEquals(List.of(Path.of("Mine.PNG")), compared);
         assertFalse(comparing.importData(files("notes.txt")));
@@ -48,14 +61,14 @@ public class SceneDropTest {
     void aFolderDroppedIsChecked(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         List<Path> checked = new ArrayList<>();
         List<Path> compared = new ArrayList<>();
-        SceneDrop checking = new SceneDrop(opened::add, compared::add, checked::add, told::add);
+        SceneDrop checking = new SceneDrop(this::open, compared::add, checked::add, told::add);
         Path folder = Files.createDirectories(dir.resolve("my pages"));
         assertTrue(checking.importData(files("notes.txt", folder.toString())));
         assertEquals(List.of(folder), checked);
         assertFalse(checking.importData(files("notes.txt")));
         assertEquals(List.of("Drop a .simp file to open it, a picture (.png, .jpg) to compare it with the page, "
                 + "or a folder of your pages to check them all."), told);
-        assertFalse(new SceneDrop(opened::add, compared::add, told::add).importData(files(folder.toString())),
+        assertFalse(new SceneDrop(this::open, compared::add, told::add).importData(files(folder.toString())),
                 "a window that does not check folders refuses them");
         assertEquals(List.of(), compared);
     }
