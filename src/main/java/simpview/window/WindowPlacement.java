@@ -18,8 +18,8 @@ public final class WindowPlacement {
     private final JFrame frame;
     /** The inspector panel's width: what the frame widens by to show it. */
     private final int panelWidth;
-    /** The frame's width before the inspector panel widened it, or 0. */
-    private int widthBeforePanel;
+    /** How much wider showing the inspector panel made the frame (0 where the screen or a maximized frame left no room). */
+    private int widenedForPanel;
     /** The screen area a test placed the frame in, or null for the real one. */
     private Rectangle placedWithin;
 
@@ -54,21 +54,25 @@ public final class WindowPlacement {
 
     /**
      * The frame grows by the panel's width when the panel is shown (as far as
-     * the screen allows) and shrinks back when it is hidden, so that the page
-     * keeps its zoom beside it; a maximized frame keeps its size.
+     * the screen allows), so that the page keeps its zoom beside it, and
+     * hiding it takes away what showing added, from the width the frame has
+     * then (a frame the user resized meanwhile keeps the rest of its new
+     * width), never below the frame's minimum; a maximized frame keeps its size.
      */
     void makeRoomForThePanel(boolean shownNow) {
         if ((frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) != 0) {
+            widenedForPanel = 0;
             return;
         }
         Rectangle bounds = frame.getBounds();
         Rectangle usable = screenForPlacing();
         int width;
         if (shownNow) {
-            widthBeforePanel = bounds.width;
             width = Math.min(usable.width, bounds.width + panelWidth);
+            widenedForPanel = Math.max(0, width - bounds.width);
         } else {
-            width = widthBeforePanel > 0 ? widthBeforePanel : Math.max(320, bounds.width - panelWidth);
+            width = Math.max(frame.getMinimumSize().width, bounds.width - widenedForPanel);
+            widenedForPanel = 0;
         }
         int x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - width));
         frame.setBounds(x, bounds.y, width, bounds.height);

@@ -47,6 +47,37 @@ public class InspectorPanelWindowTest extends WindowTestCase {
                 "the panel at its whole width again in a wide window");
     }
 
+    /**
+     * Hiding the panel (I) takes away what showing it added, from the width the window has then: a window the user
+     * resized between keeps the rest of its new size, and never goes below its minimum.
+     */
+    @Test
+    void hidingThePanelTakesAwayWhatShowingAddedFromTheWidthNow() throws Exception {
+        SimpviewWindow window = openWindowOn(litSquare());
+        int opened = driver.onEdt(() -> window.frame().getWidth());
+        int height = driver.onEdt(() -> window.frame().getHeight());
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.frame().getWidth() > opened,
+                "the window widened for the panel");
+        int added = driver.onEdt(() -> window.frame().getWidth()) - opened;
+
+        driver.onEdt(() -> window.frame().setSize(opened + added - 150, height)); // the user narrows it
+        driver.awaitEdt(() -> window.frame().getWidth() == opened + added - 150, "the window as the user left it");
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        driver.awaitEdt(() -> !window.inspectorPanel().isShown() && window.frame().getWidth() == opened - 150,
+                "the window " + added + " px narrower than the user left it, at " + (opened - 150));
+
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        driver.awaitEdt(() -> window.inspectorPanel().isShown() && window.frame().getWidth() == opened - 150 + added,
+                "the window widened for the panel again");
+        driver.onEdt(() -> window.frame().setSize(added + 50, height)); // narrowed to little more than the panel
+        driver.awaitEdt(() -> window.frame().getWidth() == added + 50, "the narrow window as the user left it");
+        driver.onEdt(() -> window.perform(WindowAction.INSPECTOR));
+        int least = driver.onEdt(() -> window.frame().getMinimumSize().width);
+        driver.awaitEdt(() -> !window.inspectorPanel().isShown() && window.frame().getWidth() == least,
+                "the window at its minimum width, " + least);
+    }
+
     @Test
     void aTurningDragLeavesThePanelsReplayToTheFrameAfterIt() throws Exception {
         SimpviewWindow window = openWindowOn(litSquare());
