@@ -107,7 +107,7 @@ final class InspectedPixel {
         int y = y();
         String pixel = x < 0 || y < 0 ? null : Inspector.describe(shown, x, y);
         String zoom = pageView.zoomPan().describe() + (settings.depthView() ? " · depth view" : "")
-                + (settings.ownColours() ? " · own colours" : "");
+                + (onScreen.ownColoursShown() ? " · own colours" : "");
         String theirs = x < 0 || y < 0 ? "" : comparison.theirsAt(x, y)
                 .map(rgb -> " · theirs " + Inspector.rgb(rgb)).orElse("");
         String line = (pinnedX >= 0 ? "pinned · " : "") + pixel + theirs;

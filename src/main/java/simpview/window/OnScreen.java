@@ -18,6 +18,12 @@ interface OnScreen {
     /** The settings the view on screen is drawn with (its stepping, turn, depth view, own colours). */
     DrawSettings settings();
 
+    /**
+     * Whether the picture on screen shows its vertices' own colours in place of a depth cue: own colours (C) on,
+     * and the picture a depth-cued scene's, the one kind of view C changes.
+     */
+    boolean ownColoursShown();
+
     /** The view on screen as the inspector replays it, or null (told to {@code why}) when it is not a scene. */
     InspectedScene inspectedScene(Consumer<String> why);
 }

@@ -173,6 +173,12 @@ public final class SimpviewWindow {
         }
 
         @Override
+        public boolean ownColoursShown() {
+            return settings.ownColours() && shown != null
+                    && withoutDepthCue(shown.view(), shown.facts().depthStart() == Double.NEGATIVE_INFINITY) == null;
+        }
+
+        @Override
         public InspectedScene inspectedScene(Consumer<String> why) {
             return SimpviewWindow.this.inspectedScene(why);
         }
@@ -486,24 +492,47 @@ public final class SimpviewWindow {
         inspected.inspect();
     }
 
+    /**
+     * C: a depth-cued scene (pages 4 to 8, an opened scene drawn by SPEC Part 1) drawn in its vertices' own
+     * colours, without the depth cue, or with it again. The setting stays for the views shown after; on a view
+     * without a depth cue the picture stays as it is, and the status line says why.
+     */
     private void toggleOwnColours() {
         settings = settings.withOwnColours(!settings.ownColours());
         boolean lit = pending != null ? pending.lit()
                 : shown != null && shown.facts().depthStart() == Double.NEGATIVE_INFINITY;
-        if (lit) {
-            // A lit scene (its z-buffer starts at -infinity; one still being drawn tells its job so) has no depth cue
-            // to leave out: SPEC Part 2 colours it by its lights and fog, own colours or not, so it is not drawn
-            // again, nor its drawing started over.
+        String noCue = withoutDepthCue(requested(), lit);
+        if (noCue != null) {
+            // Nothing to draw again, nor a drawing (of a lit scene still being drawn) to start over.
             inspected.inspect();
             status.say((settings.ownColours() ? "Own colours: on for depth-cued scenes. " : "Depth cue: on again for "
-                    + "depth-cued scenes. ") + "This scene is lit (its camera, lights and fog make its colours, "
-                    + "SPEC Part 2), so it looks the same either way.");
+                    + "depth-cued scenes. ") + noCue + ", so it looks the same either way.");
             return;
         }
         status.say(settings.ownColours()
                 ? "Own colours: scenes show their vertices' colours (white where none), without the depth cue."
                 : "Depth cue: scenes are coloured by depth again.");
         reload();
+    }
+
+    /**
+     * Why own colours (C) leave {@code view} as it is, or null for a depth-cued scene, the one kind of view they
+     * change: pages 1 to 3 and the first assignment's pages are drawn in their own colours, without a depth cue,
+     * and a lit scene ({@code lit}: its z-buffer starts at -infinity, or its job says so while it is drawn) is
+     * coloured by its camera, lights and fog (SPEC Part 2).
+     */
+    private static String withoutDepthCue(View view, boolean lit) {
+        if (view instanceof View.OfAssignment1Page) {
+            return "The first assignment's pages have no depth cue";
+        }
+        if (view instanceof View.OfPage page && !(Assignment2.page(page.number()) instanceof ScenePage)) {
+            return "Page " + page.number() + " has no depth cue (its triangles are drawn in their vertices' own "
+                    + "colours)";
+        }
+        if (lit) {
+            return "This scene is lit (its camera, lights and fog make its colours, SPEC Part 2)";
+        }
+        return null;
     }
 
     /** Whether the view is drawn from a scene file (pages 4 to 8, an opened scene): what stepping and turning work on. */

@@ -49,7 +49,8 @@ public enum WindowAction {
             "Depth view", "the z-buffer as a picture (again: the page)", "D"),
     OWN_COLOURS(Menu.VIEW, Entry.TOGGLE,
             "Own colours", "depth-cued scenes in their vertices' own colours (white where none), without "
-            + "the cue; a lit scene stays as it is", "C"),
+            + "the cue (the status line then says \"own colours\"); a lit scene, pages 1-3 and the first "
+            + "assignment's pages, which have no cue, stay as they are", "C"),
     BACK_FACES(Menu.VIEW, Entry.TOGGLE,
             "Back faces", "pixels of polygons clockwise on the panel (facing away) tinted magenta, "
             + "with how many there are (again: the page)", "K"),
