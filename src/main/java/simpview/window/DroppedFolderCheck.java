@@ -1,6 +1,9 @@
 package simpview.window;
 
+import java.awt.Dimension;
 import java.awt.Font;
+import java.awt.Insets;
+import java.awt.Rectangle;
 import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
 import java.nio.file.Path;
@@ -35,6 +38,7 @@ final class DroppedFolderCheck {
     /** The window the tables are shown in, made with the first; null before. */
     private JDialog tableWindow;
     private JTextArea tableText;
+    private JScrollPane tableScroll;
 
     /** The check of the folders dropped on {@code frame}, drawn with what {@code pageContext} gives as each is dropped. */
     DroppedFolderCheck(JFrame frame, StatusStrip status, Supplier<PageContext> pageContext) {
@@ -74,22 +78,47 @@ final class DroppedFolderCheck {
         tableText.setCaretPosition(0);
         tableWindow.setTitle("check: " + folder.getFileName());
         if (!tableWindow.isShowing()) {
-            tableWindow.pack();
+            fitTableWindow(new Dimension());
             tableWindow.setLocationRelativeTo(frame);
             tableWindow.setVisible(true);
+        } else {
+            fitTableWindow(tableWindow.getSize()); // a wider or longer table: grown to show it, never shrunk
         }
         lastCheck = table;
         String[] lines = table.split("\n");
         status.say(folder.getFileName() + ": " + lines[lines.length - 1]);
     }
 
+    /**
+     * Sizes the table's window to show its widest line whole, with a margin, within the usable screen, and no
+     * smaller than {@code atLeast}: a table longer than the screen is as high as the screen allows, and wider by
+     * the scroll bar beside its lines, which would otherwise take the width of its last column.
+     */
+    private void fitTableWindow(Dimension atLeast) {
+        tableWindow.pack();
+        Rectangle usable = WindowPlacement.usableArea(frame.getGraphicsConfiguration());
+        Dimension wanted = tableWindow.getSize();
+        if (wanted.height > usable.height) {
+            wanted.width += tableScroll.getVerticalScrollBar().getPreferredSize().width;
+        }
+        wanted.width = Math.min(usable.width, Math.max(wanted.width, atLeast.width));
+        wanted.height = Math.min(usable.height, Math.max(wanted.height, atLeast.height));
+        Rectangle bounds = new Rectangle(tableWindow.getLocation(), wanted);
+        bounds.x = Math.max(usable.x, Math.min(bounds.x, usable.x + usable.width - bounds.width));
+        bounds.y = Math.max(usable.y, Math.min(bounds.y, usable.y + usable.height - bounds.height));
+        tableWindow.setBounds(bounds);
+        tableWindow.validate();
+    }
+
     private void makeTableWindow() {
         tableText = new JTextArea();
         tableText.setEditable(false);
         tableText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
+        tableText.setMargin(new Insets(4, 8, 4, 8)); // the last column clear of the window's edge
         tableWindow = new JDialog(frame, false);
         tableWindow.setAutoRequestFocus(false);
-        tableWindow.getContentPane().add(new JScrollPane(tableText));
+        tableScroll = new JScrollPane(tableText);
+        tableWindow.getContentPane().add(tableScroll);
         String close = "close";
         tableWindow.getRootPane().getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW)
                 .put(KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), close);

@@ -45,7 +45,11 @@ public final class WindowPlacement {
 
     /** The screen's area for windows: without taskbars and docks. */
     private Rectangle usableScreen() {
-        GraphicsConfiguration screen = frame.getGraphicsConfiguration();
+        return usableArea(frame.getGraphicsConfiguration());
+    }
+
+    /** The area for windows of {@code screen}: without its taskbars and docks. */
+    static Rectangle usableArea(GraphicsConfiguration screen) {
         Rectangle bounds = screen.getBounds();
         Insets taken = Toolkit.getDefaultToolkit().getScreenInsets(screen);
         return new Rectangle(bounds.x + taken.left, bounds.y + taken.top,

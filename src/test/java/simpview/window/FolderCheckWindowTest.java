@@ -17,6 +17,10 @@ import simpview.cli.CheckCommand;
 import simpview.pages.Assignment1;
 import simpview.window.render.View;
 import javax.swing.JDialog;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
+import java.awt.Rectangle;
+import java.util.Comparator;
 
 /**
  * A folder dropped on the real window is checked as {@code simpview check FOLDER} checks it (issue 21):
@@ -111,6 +115,37 @@ class FolderCheckWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> driver.window().frame().isFocused(), "the page to have the keys again");
         driver.press(KeyEvent.VK_RIGHT);
         driver.awaitShown(new View.OfPage(2));
+    }
+
+    /**
+     * The table's window shows its widest line whole, clear of its edge, within the screen: a table longer than
+     * the screen scrolls, and its scroll bar takes none of the last column's width.
+     */
+    @Test
+    void theTableShowsItsWidestLineWholeWithinTheScreen() throws Exception {
+        StringBuilder lines = new StringBuilder();
+        for (int row = 1; row <= 200; row++) {
+            lines.append(String.format("page%03d.png  page 1 (seed 361)  FAIL  99.%02d %%  x 250-269, y 299-299  last", row,
+                    row % 100)).append(row == 120 ? "  the widest line of all, ending here" : "").append('\n');
+        }
+        String table = lines.toString();
+        driver = WindowDriver.open(new WindowOptions(SEED, TestScenes.courseSimpDir(), Optional.empty()), SceneDrawer.SIMP);
+        driver.onEdt(() -> driver.window().checkFoldersWith((folder, context) -> table));
+        assertTrue(DroppedFiles.dropOn(driver, Files.createDirectories(dir.resolve("mine"))), "the window took the folder");
+        driver.awaitEdt(() -> table.equals(driver.window().lastCheck()), "the folder's table");
+        JDialog window = driver.onEdt(() -> driver.window().checkTable());
+        JScrollPane scroll = (JScrollPane) window.getContentPane().getComponent(0);
+        JTextArea text = (JTextArea) scroll.getViewport().getView();
+        driver.awaitEdt(() -> window.isShowing() && scroll.getViewport().getExtentSize().height > 0, "the table's window");
+        Rectangle screen = driver.onEdt(() -> WindowPlacement.usableArea(window.getGraphicsConfiguration()));
+        Rectangle bounds = driver.onEdt(() -> window.getBounds());
+        assertTrue(screen.contains(bounds), "the table's window " + bounds + " within the screen " + screen);
+        int widest = driver.onEdt(() -> text.getFontMetrics(text.getFont())
+                .stringWidth(table.lines().max(Comparator.comparingInt(String::length)).orElseThrow()));
+        assertTrue(driver.onEdt(() -> text.getInsets().right) > 0, "the last column clear of the edge");
+        driver.awaitEdt(() -> scroll.getViewport().getExtentSize().width >= text.getPreferredSize().width
+                && text.getPreferredSize().width >= widest + text.getInsets().left + text.getInsets().right
+                && !scroll.getHorizontalScrollBar().isVisible(), "the widest line (" + widest + " px) shown whole");
     }
 
     private void openWindow() throws Exception {
