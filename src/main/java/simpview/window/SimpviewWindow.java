@@ -85,8 +85,7 @@ public final class SimpviewWindow {
     private String wordsWhenShown = "";
     private View wordsFor;
     // compare (issue 15): a picture dropped or opened, compared with the view on screen
-    private final ComparisonLayer comparison = new ComparisonLayer(frame, pageView::show, status::say,
-            legend -> legendStrip.show("compare", legend), () -> options.pageContext());
+    private final ComparisonLayer comparison;
     // the pixel's history, explanation and vertices (issue 20)
     private final InspectorPanel inspectorPanel;
     /** The pixel the inspector looks at, and what is said of it. */
@@ -100,6 +99,9 @@ public final class SimpviewWindow {
         this.options = options;
         this.pages = new PageCycle(options.sceneList(), options.simpDir(), status, this::leaveFor);
         this.renderer = new BackgroundRenderer(drawer, options.threads());
+        this.comparison = new ComparisonLayer(frame, pageView::show, status::say,
+                legend -> legendStrip.show("compare", legend), () -> this.options.pageContext(),
+                renderer::runAfterDrawing); // compared on the render thread, after the picture compared with
         this.inspectorPanel = new InspectorPanel(renderer.library()); // one library: the files each has read
         this.dialogs = new FileDialogs(frame, options.simpDir());
         this.placement = new WindowPlacement(frame, InspectorPanel.WIDTH);
@@ -830,7 +832,7 @@ public final class SimpviewWindow {
             // A turning drag's frames (untraced) leave the panel and the comparison as they are: the panel's
             // history is the unturned view's, which the turn does not change, and a replay a frame (25 ms for A3
             // pageI on this project's 2-core machine) would take a core from the drawing; a comparison (with
-            // its search for a mistake of the whole panel, tens of ms) would hold the event thread, and with it
+            // its search for a mistake of the whole panel, tens of ms) would hold the render thread, and with it
             // the next frame. The traced frame after the drag does both.
             inspected.refreshPanel();
             comparison.viewShown(result); // compare (issue 15)

@@ -65,6 +65,7 @@ public class ComparisonWindowTest extends WindowTestCase {
 
         drop(mine);
         Comparison expected = Comparison.of(Picture.ofPage(ours, "ours").panel(), Picture.read(mine).panel());
+        driver.awaitEdt(() -> driver.window().status().text().startsWith("vs mine.png"), "the comparison made");
         String status = driver.onEdt(() -> driver.window().status().text());
         assertTrue(status.startsWith("vs mine.png: identical " + Percent.of(expected.share(0, true))), status);
         assertTrue(status.contains("≤8/255 " + Percent.of(expected.share(8, true))), status);
@@ -108,7 +109,7 @@ public class ComparisonWindowTest extends WindowTestCase {
         assertEquals("", driver.onEdt(() -> driver.window().comparison().statusText()));
         driver.press(KeyEvent.VK_LEFT);
         driver.awaitShown(new View.OfPage(1));
-        assertTrue(driver.onEdt(() -> driver.window().status().text()).startsWith("vs mine.png"));
+        driver.awaitEdt(() -> driver.window().status().text().startsWith("vs mine.png"), "page 1 compared again");
 
         driver.press(KeyEvent.VK_BACK_SPACE);
         assertEquals(0, driver.screenDiffersFrom(ours), "ours once stopped");
@@ -153,6 +154,7 @@ public class ComparisonWindowTest extends WindowTestCase {
         Path file = dir.resolve("over.png");
         ImageIO.write(over, "png", file.toFile());
         drop(file);
+        driver.awaitEdt(() -> driver.window().status().text().startsWith("vs over.png: "), "the comparison made");
         String status = driver.onEdt(() -> driver.window().status().text());
         assertTrue(status.startsWith("vs over.png: ") && status.contains(" (1 px slack) · looks upside down · showing ours"),
                 status);
@@ -164,6 +166,7 @@ public class ComparisonWindowTest extends WindowTestCase {
         Path blank = dir.resolve("blank.png");
         ImageIO.write(new BufferedImage(800, 800, BufferedImage.TYPE_INT_RGB), "png", blank.toFile());
         drop(blank);
+        driver.awaitEdt(() -> driver.window().status().text().startsWith("Cannot compare"), "the picture refused");
         String status = driver.onEdt(() -> driver.window().status().text());
         assertTrue(status.startsWith("Cannot compare: no 650x650 panel found in " + blank), status);
         assertEquals(null, driver.onEdt(() -> driver.window().comparison().comparison()));

@@ -13,9 +13,11 @@ import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
+import java.util.concurrent.Executor;
 import java.util.function.Supplier;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
+import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import simpview.compare.CompareException;
 import simpview.compare.Comparison;
@@ -41,7 +43,10 @@ import simpview.surface.PageCanvas;
  * opened with Ctrl+Shift+O (the dialog opens in the scene's folder), is compared with the view on screen and stays
  * with that view (stepping away and back keeps it). B flips between ours and
  * theirs, H shows the heat map, Backspace stops comparing; the status line
- * gives the shares. Everything here runs on the EDT.
+ * gives the shares. Everything here runs on the EDT but the comparisons
+ * themselves: the picture read, compared, and searched for a mistake of the
+ * whole panel on a thread the window hands over (its render thread), each
+ * shown when it is done if its view is still on screen.
  */
 public final class ComparisonLayer {
 
@@ -71,37 +76,74 @@ public final class ComparisonLayer {
     private final Consumer<Legend> legend;
     /** How the window draws its pages now: the seed and the first assignment's rule a page asked for is drawn with. */
     private final Supplier<PageContext> drawing;
+    /** Where the comparisons are made, off the EDT, one after another. */
+    private final Executor offEdt;
 
     public ComparisonLayer(JFrame owner, BiConsumer<BufferedImage, String> pageView, Consumer<String> say,
-            Consumer<Legend> legend, Supplier<PageContext> drawing) {
+            Consumer<Legend> legend, Supplier<PageContext> drawing, Executor offEdt) {
         this.owner = owner;
         this.pageView = pageView;
         this.say = say;
         this.legend = legend;
         this.drawing = drawing;
+        this.offEdt = offEdt;
     }
 
-    /** Compares a picture with the view on screen; a picture that cannot be compared is said why. */
+    /**
+     * A comparison made off the EDT: the mistake that changes their whole panel the same way, or else the pixel
+     * to look at first, with it.
+     */
+    private record Found(Comparison comparison, SystematicError systematic, WorstPixel look) {
+
+        static Found of(RenderedView ours, Picture theirs) {
+            Comparison comparison = Comparison.of(Picture.ofPage(ours.image(), "simpview").panel(), theirs.panel());
+            SystematicError systematic = SystematicError.find(comparison, TOLERANCE);
+            return new Found(comparison, systematic, systematic != null ? null : lookAt(comparison));
+        }
+    }
+
+    /**
+     * Compares a picture with the view on screen, off the EDT; a picture that cannot be compared is said why.
+     * Its outcome is shown when it is done, if the view is still on screen (else when the view is shown again).
+     */
     public void compareWith(Path file) {
         if (shown == null) {
             say.accept("Wait for the page to be drawn, then drop the picture again.");
             return;
         }
-        boolean firstAssignment = PanelGridComparison.holds(file, firstAssignmentPanels());
-        if (shown.view() instanceof View.OfAssignment1Page || firstAssignment) {
-            // compared here, a page of four panels would be taken for one 650x650 panel with a pixel of slack: an
-            // answer that is not compare's, which judges each panel without slack
-            say.accept(firstAssignmentElsewhere(file, firstAssignment));
-            return;
-        }
-        try {
-            theirs.put(shown.view(), Picture.read(file));
-        } catch (CompareException e) {
-            say.accept("Cannot compare: " + e.getMessage());
-            return;
-        }
+        RenderedView ours = shown;
+        PageContext context = drawing.get();
+        say.accept("Comparing with " + file.getFileName() + " ...");
+        offEdt.execute(() -> {
+            Runnable outcome;
+            try {
+                boolean firstAssignment = PanelGridComparison.holds(file, firstAssignmentPanels());
+                if (ours.view() instanceof View.OfAssignment1Page || firstAssignment) {
+                    // compared here, a page of four panels would be taken for one 650x650 panel with a pixel of
+                    // slack: an answer that is not compare's, which judges each panel without slack
+                    String words = firstAssignmentElsewhere(file, firstAssignment, ours, context);
+                    outcome = () -> say.accept(words);
+                } else {
+                    Picture picture = Picture.read(file);
+                    Found found = Found.of(ours, picture);
+                    outcome = () -> compared(ours, picture, found);
+                }
+            } catch (CompareException | RuntimeException e) {
+                outcome = () -> say.accept("Cannot compare: " + e.getMessage());
+            }
+            SwingUtilities.invokeLater(outcome);
+        });
+    }
+
+    /** A picture dropped is compared with {@code ours}: it stays with ours's view, shown now if ours is on screen. */
+    private void compared(RenderedView ours, Picture picture, Found found) {
+        theirs.put(ours.view(), picture);
         showing = Showing.OURS;
-        viewShown(shown);
+        if (shown == ours) {
+            show(found);
+        } else if (shown.view().equals(ours.view())) {
+            viewShown(shown); // the same view drawn again meanwhile: compared again
+        }
     }
 
     /**
@@ -111,16 +153,16 @@ public final class ComparisonLayer {
      * the window's seed when the page is drawn from it (or may be: "N"), and its rule when it is not SPEC's (the
      * default).
      */
-    private String firstAssignmentElsewhere(Path file, boolean firstAssignment) {
+    private static String firstAssignmentElsewhere(Path file, boolean firstAssignment, RenderedView shown,
+            PageContext context) {
         String path = file.toString();
         // as a shell takes it: a path of plain characters as it is, any other in single quotes
         String name = path.matches("[A-Za-z0-9_./,:=+-]+") ? path : "'" + path.replace("'", "'\\''") + "'";
         OptionalInt named = SubmissionNames.pageNumber(file.getFileName().toString());
         int number = named.isPresent() && named.getAsInt() <= Assignment1.COUNT ? named.getAsInt()
                 : shown.view() instanceof View.OfAssignment1Page a1 ? a1.number() : 0;
-        // the window's seed and rule, not those of the picture on screen: one of the eight pages that does not use
-        // the seed, or any of them, is not drawn again when they change
-        PageContext context = drawing.get();
+        // the window's seed and rule (context), not those of the picture on screen: one of the eight pages that does
+        // not use the seed, or any of them, is not drawn again when they change
         boolean seeded = number == 0 || Assignment1.page(number).usesSeed();
         String page = (number == 0 ? "N" : String.valueOf(number)) + (seeded ? " --seed " + context.seed() : "")
                 + (context.a1Rule() == A1Rule.SPEC ? "" : " --a1-rule " + context.a1Rule().key());
@@ -139,19 +181,42 @@ public final class ComparisonLayer {
         return panels;
     }
 
-    /** The window calls this when a new picture is on screen. */
+    /**
+     * The window calls this when a new picture is on screen: a picture dropped on its view is compared with it off
+     * the EDT, and shown compared (as ours, theirs or the heat map, as before) when that is done, if it is still on
+     * screen and the picture still compared with.
+     */
     public void viewShown(RenderedView view) {
         shown = view;
+        comparison = null;
+        systematic = null;
+        look = null;
         Picture picture = theirs.get(view.view());
-        comparison = picture == null ? null
-                : Comparison.of(Picture.ofPage(view.image(), "simpview").panel(), picture.panel());
-        systematic = comparison == null ? null : SystematicError.find(comparison, TOLERANCE);
-        look = comparison == null || systematic != null ? null : lookAt(comparison);
-        if (comparison == null) {
+        if (picture == null) {
             showing = Showing.OURS;
             text = "";
             return;
         }
+        offEdt.execute(() -> {
+            Runnable outcome;
+            try {
+                Found found = Found.of(view, picture);
+                outcome = () -> {
+                    if (shown == view && theirs.get(view.view()) == picture) {
+                        show(found);
+                    }
+                };
+            } catch (RuntimeException e) {
+                outcome = () -> say.accept("Cannot compare: " + e.getMessage());
+            }
+            SwingUtilities.invokeLater(outcome);
+        });
+    }
+
+    private void show(Found found) {
+        comparison = found.comparison();
+        systematic = found.systematic();
+        look = found.look();
         repaint();
     }
 
@@ -170,8 +235,8 @@ public final class ComparisonLayer {
     }
 
     public void stop() {
-        if (comparison != null) {
-            theirs.remove(shown.view());
+        if (shown != null && theirs.containsKey(shown.view())) {
+            theirs.remove(shown.view()); // a comparison still being made for it is not shown
             comparison = null;
             showing = Showing.OURS;
             text = "";

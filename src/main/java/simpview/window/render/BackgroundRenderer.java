@@ -54,6 +54,14 @@ public final class BackgroundRenderer {
     }
 
     /**
+     * Runs {@code task} on the render thread, after the pictures asked for before it and before those asked for
+     * after: work on a finished picture that would hold the EDT (a dropped picture's comparison with it).
+     */
+    public void runAfterDrawing(Runnable task) {
+        thread.execute(task);
+    }
+
+    /**
      * The files its pictures read, kept across redraws: thread safe, so that
      * whoever else draws the window's scenes (its inspector) may share them.
      */
