@@ -18,8 +18,8 @@ import org.junit.jupiter.api.Test;
  */
 public class DevicePixelsTest {
 
-    /** Runs {@code test} on the EDT, its failure thrown here. */
-    private static void onEdt(Runnable test) throws Throwable {
+    /** Runs {@code test} on the EDT, its failure thrown here (also for the other tests that paint a view off screen). */
+    static void onEdt(Runnable test) throws Throwable {
         try {
             SwingUtilities.invokeAndWait(test);
         } catch (InvocationTargetException e) {

@@ -6,9 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
-import java.lang.reflect.InvocationTargetException;
 import java.util.List;
-import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -23,14 +21,6 @@ class OutlinesOverPageTest {
     private static final int GREY = 0x40;
     /** A horizontal outline along image row 200, from column 150 to 600 and back. */
     private static final List<double[]> ROW_200 = List.of(new double[] {150, 200.5, 600, 200.5});
-
-    private static void onEdt(Runnable test) throws Throwable {
-        try {
-            SwingUtilities.invokeAndWait(test);
-        } catch (InvocationTargetException e) {
-            throw e.getCause();
-        }
-    }
 
     private static BufferedImage greyPage() {
         BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
@@ -80,7 +70,7 @@ class OutlinesOverPageTest {
 
     @Test
     void theWireIsOverThePageWhereTheZoomPutsItAndGoneWhenTurnedOff() throws Throwable {
-        onEdt(() -> {
+        DevicePixelsTest.onEdt(() -> {
             PageView view = new PageView();
             view.show(greyPage(), null);
             view.wire(ROW_200);
@@ -104,7 +94,7 @@ class OutlinesOverPageTest {
 
     @Test
     void culledAndClippedOutlinesAreOpaqueAloneAndWithTheWire() throws Throwable {
-        onEdt(() -> {
+        DevicePixelsTest.onEdt(() -> {
             PageView view = new PageView();
             view.show(greyPage(), null);
             List<double[]> row400 = List.of(new double[] {150, 400.5, 600, 400.5});
