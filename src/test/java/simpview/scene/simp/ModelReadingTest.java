@@ -8,6 +8,7 @@ import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicLong;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.scene.obj.ObjReader;
@@ -23,10 +24,18 @@ class ModelReadingTest {
     private static final int SIDE = 260;
 
     @TempDir
-    Path dir;
+    static Path dir;
+
+    /** The scene both tests draw, written once. */
+    private static Path scene;
+
+    @BeforeAll
+    static void writeScene() throws IOException {
+        scene = sceneWithABigModel();
+    }
 
     /** A scene of five commands that draws one model of a grid of SIDE x SIDE squares. */
-    private Path sceneWithABigModel() throws IOException {
+    private static Path sceneWithABigModel() throws IOException {
         int points = SIDE + 1;
         try (Writer obj = Files.newBufferedWriter(dir.resolve("grid.obj"))) {
             for (int i = 0; i < points; i++) {
@@ -54,7 +63,6 @@ class ModelReadingTest {
 
     @Test
     void theLinesReadCountOnThroughTheModel() throws Exception {
-        Path scene = sceneWithABigModel();
         AtomicLong most = new AtomicLong();
         draw(scene, new SceneMonitor() {
             @Override
@@ -68,7 +76,6 @@ class ModelReadingTest {
 
     @Test
     void aCancelStopsTheSceneInTheMiddleOfTheModel() throws Exception {
-        Path scene = sceneWithABigModel();
         AtomicLong told = new AtomicLong();
         SceneMonitor cancelling = new SceneMonitor() {
             @Override
