@@ -154,7 +154,9 @@ public final class CompareOptions {
                 int from = page(ends[0], text);
                 int to = ends.length == 2 ? page(ends[1], text) : from;
                 if (to < from) {
-                    throw invalid(text);
+                    // as a rubric's "match" says it: the range named, and how to write it
+                    throw new TypeConversionException(String.format(Locale.ROOT, "'%s' is not a set of pages: the "
+                            + "range %d-%d runs backwards, so it fits no page: write it %d-%d", text, from, to, to, from));
                 }
                 pages.set(from, to + 1);
             }

@@ -53,7 +53,10 @@ public class CompareOptionsTest {
         }
         assertFalse(range.contains(0));
         assertTrue(c.convert("1-8").contains(8));
-        for (String bad : new String[] {"0-8", "1-9", "8-1", "1--3", "a", ""}) {
+        TypeConversionException backwards = assertThrows(TypeConversionException.class, () -> c.convert("1,8-6"));
+        assertEquals("'1,8-6' is not a set of pages: the range 8-6 runs backwards, so it fits no page: write it 6-8",
+                backwards.getMessage());
+        for (String bad : new String[] {"0-8", "1-9", "1--3", "a", ""}) {
             TypeConversionException e = assertThrows(TypeConversionException.class, () -> c.convert(bad), bad);
             assertTrue(e.getMessage().contains("expected pages 1 to 8"), e.getMessage());
         }
