@@ -39,12 +39,6 @@ import simpview.scene.SceneException;
  * and well-formed scenes with one bad line that must be reported at that line.
  * Whatever the input, ScenePipeline.drawDepthCued returns or throws a SceneException
  * with a sound location, within 2 seconds, without touching the margins.
- *
- * <p>Each property's seed is fixed, so every run tries the same inputs; the
- * counts of tries (1,000 token streams, 900 mutated scenes, 500 webs) are
- * half of what they were until session 41, when this class took 46 s of
- * jqwik's 87-99 s: the test run, jqwik beside Jupiter on two cores, must
- * stay under four minutes.
  */
 class SceneFuzzProperties {
 
@@ -159,7 +153,7 @@ class SceneFuzzProperties {
     }
 
     /** Random token soup, one file, possibly including the scenes beside it. */
-    @Property(tries = 1000, seed = "1969")
+    @Property(tries = 2000, seed = "1969")
     void randomTokenStreamsRenderOrFailWithALocation(@ForAll("tokenLines") List<List<String>> lines,
             @ForAll boolean commas) throws Exception {
         StringBuilder text = new StringBuilder();
@@ -276,7 +270,7 @@ class SceneFuzzProperties {
     }
 
     /** The project's and the course's scenes (and two small inline ones), each mutated a few times. */
-    @Property(tries = 900, seed = "4004")
+    @Property(tries = 1800, seed = "4004")
     void mutatedScenesRenderOrFailWithALocation(@ForAll("bases") String base,
             @ForAll("mutations") List<Mutation> mutations) throws Exception {
         Path original = BASES.get(base);
@@ -523,7 +517,7 @@ class SceneFuzzProperties {
      * exactly: the first missing file or cycle met in reading order is the
      * error, in the file and at the line of its `file` command; else it renders.
      */
-    @Property(tries = 500, seed = "8128")
+    @Property(tries = 1000, seed = "8128")
     void fileWebsFailAtTheFirstMissingFileOrCycle(@ForAll long seed) throws Exception {
         Random r = new Random(seed);
         Map<String, List<String>> files = new TreeMap<>();
