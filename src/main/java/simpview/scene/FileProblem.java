@@ -29,8 +29,7 @@ public final class FileProblem {
         if (Files.isDirectory(file)) {
             return "not a file but a folder";
         }
-        String reason = e instanceof FileSystemException fs ? fs.getReason() : e.getMessage();
-        return reason == null || reason.isBlank() ? "the system could not read it" : lowerFirst(reason);
+        return systemWords(e);
     }
 
     /**
@@ -48,6 +47,11 @@ public final class FileProblem {
         if (e instanceof NotDirectoryException) {
             return "not a folder but a file";
         }
+        return systemWords(e);
+    }
+
+    /** The system's own words for {@code e} (its reason, not the path it names), or a plain phrase when it gave none. */
+    private static String systemWords(IOException e) {
         String reason = e instanceof FileSystemException fs ? fs.getReason() : e.getMessage();
         return reason == null || reason.isBlank() ? "the system could not read it" : lowerFirst(reason);
     }
