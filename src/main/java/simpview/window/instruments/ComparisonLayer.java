@@ -114,22 +114,37 @@ public final class ComparisonLayer {
         RenderedView ours = shown;
         PageContext context = drawing.get();
         say.accept("Comparing with " + file.getFileName() + " ...");
+        compareOffEdt(() -> {
+            boolean firstAssignment = PanelGridComparison.holds(file, firstAssignmentPanels());
+            if (ours.view() instanceof View.OfAssignment1Page || firstAssignment) {
+                // compared here, a page of four panels would be taken for one 650x650 panel with a pixel of
+                // slack: an answer that is not compare's, which judges each panel without slack
+                String words = firstAssignmentElsewhere(file, firstAssignment, ours, context);
+                return () -> say.accept(words);
+            }
+            Picture picture = Picture.read(file);
+            Found found = Found.of(ours, picture);
+            return () -> compared(ours, picture, found);
+        });
+    }
+
+    /** What a comparison made off the EDT does there once it is done. */
+    private interface Outcome {
+        Runnable made() throws CompareException;
+    }
+
+    /**
+     * Makes {@code work}'s outcome on the thread the window handed over, then runs it on the EDT; a picture that
+     * cannot be compared (unreadable, or failing in the comparison) is said why there instead.
+     */
+    private void compareOffEdt(Outcome work) {
         offEdt.execute(() -> {
             Runnable outcome;
             try {
-                boolean firstAssignment = PanelGridComparison.holds(file, firstAssignmentPanels());
-                if (ours.view() instanceof View.OfAssignment1Page || firstAssignment) {
-                    // compared here, a page of four panels would be taken for one 650x650 panel with a pixel of
-                    // slack: an answer that is not compare's, which judges each panel without slack
-                    String words = firstAssignmentElsewhere(file, firstAssignment, ours, context);
-                    outcome = () -> say.accept(words);
-                } else {
-                    Picture picture = Picture.read(file);
-                    Found found = Found.of(ours, picture);
-                    outcome = () -> compared(ours, picture, found);
-                }
+                outcome = work.made();
             } catch (CompareException | RuntimeException e) {
-                outcome = () -> say.accept("Cannot compare: " + e.getMessage());
+                String why = "Cannot compare: " + e.getMessage();
+                outcome = () -> say.accept(why);
             }
             SwingUtilities.invokeLater(outcome);
         });
@@ -138,11 +153,14 @@ public final class ComparisonLayer {
     /** A picture dropped is compared with {@code ours}: it stays with ours's view, shown now if ours is on screen. */
     private void compared(RenderedView ours, Picture picture, Found found) {
         theirs.put(ours.view(), picture);
-        showing = Showing.OURS;
-        if (shown == ours) {
-            show(found);
-        } else if (shown.view().equals(ours.view())) {
-            viewShown(shown); // the same view drawn again meanwhile: compared again
+        // on another view, its own comparison, and what it shows of it, stay as they are
+        if (shown.view().equals(ours.view())) {
+            showing = Showing.OURS;
+            if (shown == ours) {
+                show(found);
+            } else {
+                viewShown(shown); // the same view drawn again meanwhile: compared again
+            }
         }
     }
 
@@ -197,19 +215,13 @@ public final class ComparisonLayer {
             text = "";
             return;
         }
-        offEdt.execute(() -> {
-            Runnable outcome;
-            try {
-                Found found = Found.of(view, picture);
-                outcome = () -> {
-                    if (shown == view && theirs.get(view.view()) == picture) {
-                        show(found);
-                    }
-                };
-            } catch (RuntimeException e) {
-                outcome = () -> say.accept("Cannot compare: " + e.getMessage());
-            }
-            SwingUtilities.invokeLater(outcome);
+        compareOffEdt(() -> {
+            Found found = Found.of(view, picture);
+            return () -> {
+                if (shown == view && theirs.get(view.view()) == picture) {
+                    show(found);
+                }
+            };
         });
     }
 
