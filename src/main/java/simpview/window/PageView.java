@@ -77,13 +77,12 @@ public final class PageView extends JComponent {
      */
     private transient BufferedImage wirePicture;
     private transient BufferedImage skippedPicture;
-    private transient List<double[]> wireDrawn;
-    private transient List<double[]> culledDrawn;
-    private transient List<double[]> clippedDrawn;
-    private double drawnZoom;
-    private double drawnX;
-    private double drawnY;
-    private int drawnUnit;
+    private transient OutlinesDrawn outlinesDrawn;
+
+    /** What the outlines' pictures were drawn of, and at which zoom, pan and size: equal, they are drawn again the same. */
+    private record OutlinesDrawn(List<double[]> wire, List<double[]> culled, List<double[]> clipped, double zoom,
+            double x, double y, int unit, int width, int height) {
+    }
     static final Color CULLED = new Color(255, 160, 0);
     static final Color CLIPPED = new Color(0, 200, 255);
     /** Device pixels a point of the desktop, as last laid out or painted (1.5 at 150 %). */
@@ -363,6 +362,7 @@ public final class PageView extends JComponent {
         if (wire == null && culled == null) {
             wirePicture = null;
             skippedPicture = null;
+            outlinesDrawn = null;
             return;
         }
         int width = (int) Math.ceil(getWidth() * scale);
@@ -370,16 +370,12 @@ public final class PageView extends JComponent {
         if (width <= 0 || height <= 0) {
             return;
         }
-        if (!drawnAsNow(width, height)) {
+        OutlinesDrawn now = new OutlinesDrawn(wire, culled, clipped, zoomPan.zoom(), zoomPan.originX(),
+                zoomPan.originY(), zoomPan.unit(), width, height);
+        if (!now.equals(outlinesDrawn)) {
             wirePicture = drawOutlines(wirePicture, width, height, wire, WIRE, null, null);
             skippedPicture = drawOutlines(skippedPicture, width, height, culled, CULLED, clipped, CLIPPED);
-            wireDrawn = wire;
-            culledDrawn = culled;
-            clippedDrawn = clipped;
-            drawnZoom = zoomPan.zoom();
-            drawnX = zoomPan.originX();
-            drawnY = zoomPan.originY();
-            drawnUnit = zoomPan.unit();
+            outlinesDrawn = now;
         }
         if (wire != null) {
             Graphics2D g = (Graphics2D) graphics.create();
@@ -390,15 +386,6 @@ public final class PageView extends JComponent {
         if (culled != null) {
             graphics.drawImage(skippedPicture, 0, 0, null);
         }
-    }
-
-    /** Whether the outlines' pictures are of the outlines shown, as now zoomed and panned, at the view's size. */
-    private boolean drawnAsNow(int width, int height) {
-        BufferedImage either = wirePicture != null ? wirePicture : skippedPicture;
-        return either != null && either.getWidth() == width && either.getHeight() == height
-                && wireDrawn == wire && culledDrawn == culled && clippedDrawn == clipped
-                && drawnZoom == zoomPan.zoom() && drawnX == zoomPan.originX() && drawnY == zoomPan.originY()
-                && drawnUnit == zoomPan.unit();
     }
 
     /**
