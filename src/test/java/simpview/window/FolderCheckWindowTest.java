@@ -110,8 +110,7 @@ class FolderCheckWindowTest extends WindowTestCase {
         driver.awaitEdt(table::isShowing, "the table's window");
         driver.click(table.getRootPane());
         driver.awaitEdt(table::isFocused, "the table's window to have the keys");
-        driver.press(KeyEvent.VK_ESCAPE);
-        driver.awaitEdt(() -> !table.isShowing(), "Escape to close the table");
+        driver.pressToClose(KeyEvent.VK_ESCAPE, table);
         driver.awaitEdt(() -> driver.window().frame().isFocused(), "the page to have the keys again");
         driver.press(KeyEvent.VK_RIGHT);
         driver.awaitShown(new View.OfPage(2));

@@ -64,13 +64,16 @@ public final class WindowDriver {
      * 20 s without).
      */
     private static final class InputSeen implements AWTEventListener {
+        private final Map<Integer, AtomicLong> keyPresses = new ConcurrentHashMap<>();
         private final Map<Integer, AtomicLong> keyReleases = new ConcurrentHashMap<>();
         private final AtomicLong buttonReleases = new AtomicLong();
         private volatile Point pointer;
 
         @Override
         public void eventDispatched(AWTEvent event) {
-            if (event.getID() == KeyEvent.KEY_RELEASED) {
+            if (event.getID() == KeyEvent.KEY_PRESSED) {
+                presses(((KeyEvent) event).getKeyCode()).incrementAndGet();
+            } else if (event.getID() == KeyEvent.KEY_RELEASED) {
                 releases(((KeyEvent) event).getKeyCode()).incrementAndGet();
             } else if (event instanceof MouseEvent mouse) {
                 if (mouse.getID() == MouseEvent.MOUSE_RELEASED) {
@@ -78,6 +81,10 @@ public final class WindowDriver {
                 }
                 pointer = mouse.getLocationOnScreen();
             }
+        }
+
+        AtomicLong presses(int keyCode) {
+            return keyPresses.computeIfAbsent(keyCode, k -> new AtomicLong());
         }
 
         AtomicLong releases(int keyCode) {
@@ -301,6 +308,21 @@ public final class WindowDriver {
         robot.keyPress(keyCode);
         robot.keyRelease(keyCode);
         awaitKeyRelease(keyCode, before);
+    }
+
+    /**
+     * Presses and releases a key that closes {@code closing}, the window that has the keys, and waits until
+     * the press has been handled and the window is gone. The release is not waited for: the window closed on
+     * the press, and the X server hands the release to whichever window has the keys by then, which may be
+     * none of this JVM's while the focus moves.
+     */
+    void pressToClose(int keyCode, Window closing) throws Exception {
+        long before = input.presses(keyCode).get();
+        robot.keyPress(keyCode);
+        robot.keyRelease(keyCode);
+        await(() -> input.presses(keyCode).get() > before, "the window to receive " + KeyEvent.getKeyText(keyCode));
+        awaitEdt(() -> !closing.isShowing(), KeyEvent.getKeyText(keyCode) + " to close its window");
+        settle();
     }
 
     /** The same with {@code modifier} (a key code such as VK_SHIFT) held down. */
