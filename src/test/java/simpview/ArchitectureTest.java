@@ -172,6 +172,27 @@ class ArchitectureTest {
         assertEquals(List.of(), shared, "window test classes without @Isolated (or WindowTestCase)");
     }
 
+    /**
+     * A window test that times what it tests (how long the event thread stalls, how soon a save is redrawn)
+     * is tagged {@code timed}: the build's test launcher runs those after all others, with the machine to
+     * themselves, rather than beside the tests that share it (docs/building.md).
+     */
+    @Test
+    void everyWindowTestThatTimesIsTaggedTimed() throws IOException {
+        List<String> untagged = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(Path.of("src/test/java/simpview/window"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
+                String text = Files.readString(file);
+                boolean times = text.contains("@Test") && (text.contains("EdtProbe.start()")
+                        || text.contains("System.nanoTime() -"));
+                if (times && !text.contains("@Tag(\"timed\")")) {
+                    untagged.add(file.getFileName().toString());
+                }
+            }
+        }
+        assertEquals(List.of(), untagged, "window tests that time what they test, not tagged timed");
+    }
+
     @Test
     void everyThreadIsNamedAndListed() throws IOException {
         String doc = Files.readString(DOC);

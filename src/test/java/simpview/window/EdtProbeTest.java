@@ -5,6 +5,7 @@ import org.junit.jupiter.api.parallel.Isolated;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -13,6 +14,7 @@ import org.junit.jupiter.api.Test;
  * LargeSceneWindowTest's allowance for a busy machine cannot hide a window
  * that blocks its EDT.
  */
+@Tag("timed")
 @Isolated
 public class EdtProbeTest {
 

@@ -6,6 +6,7 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.Optional;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
@@ -17,6 +18,7 @@ import simpview.scene.simp.SceneDrawer;
  * compiled) happen on the render thread, and the outcome is shown when it is done. A class of its own, so that
  * no comparison before it in the same JVM has warmed that code up.
  */
+@Tag("timed")
 public class FirstComparisonWindowTest extends WindowTestCase {
 
     /** The longest the EDT may stall for the drop, beyond what a busy machine excuses. */

@@ -23,6 +23,7 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import simpview.pages.ZBufferPage;
 import simpview.surface.PageCanvas;
@@ -281,6 +282,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    @Tag("timed")
     void editingAnOpenSceneFileChangesTheScreenWithinTwoSeconds() throws Exception {
         Path scene = dir.resolve("edit.simp");
         Files.writeString(scene, triangleAt(-150));
@@ -308,6 +310,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
     }
 
     @Test
+    @Tag("timed")
     void editingAFileTheSceneIncludesRedrawsItToo() throws Exception {
         Path part = dir.resolve("part.simp");
         Files.writeString(part, triangleAt(-150));

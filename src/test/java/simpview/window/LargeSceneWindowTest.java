@@ -18,6 +18,7 @@ import java.util.Optional;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
@@ -28,6 +29,7 @@ import simpview.pages.PageRenderer;
  * answering while it is drawn, shows progress, and Cancel leaves the page
  * that was showing.
  */
+@Tag("timed")
 @Isolated
 public class LargeSceneWindowTest {
 

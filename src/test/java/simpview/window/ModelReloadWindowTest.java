@@ -16,9 +16,11 @@ import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.util.List;
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Under Xvfb: saving the .obj model of an open lit scene redraws it, as saving its .simp file does. */
+@Tag("timed")
 public class ModelReloadWindowTest extends WindowTestCase {
 
     /** A grey-red triangle over the middle of the page, on black. */

@@ -3,12 +3,14 @@ package simpview.window;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * Wire over fill (W) on a scene of tens of thousands of primitives, in the real window: zooming and panning
  * under it keeps the window answering, as a page of the course's size (page-d, 16,026 outlines) must.
  */
+@Tag("timed")
 class WireOverFillWindowTest extends WindowTestCase {
 
     private static final int POLYGONS = 40_000;
