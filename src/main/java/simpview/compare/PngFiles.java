@@ -23,12 +23,18 @@ public final class PngFiles {
      * the file is replaced only once the whole picture is written, and a FIFO
      * or a device there is written into ({@link OutputFiles}).
      *
+     * @throws IllegalArgumentException when the name has another extension
+     *     than .png ({@link #isPngName}): PNG bytes under a name such as
+     *     x.jpg would be opened as what they are not
      * @throws IOException whose message says which file and why, e.g.
      *     "cannot write out/x.png: permission denied"
      */
     public static void write(BufferedImage image, Path file) throws IOException {
         Objects.requireNonNull(image, "image must not be null");
         Objects.requireNonNull(file, "file must not be null");
+        if (!isPngName(file)) {
+            throw new IllegalArgumentException(file + ": " + PNG_ONLY);
+        }
         // Encoded in memory first: ImageIO's own file streams report a full
         // disk as "I/O error writing PNG file!" and can fail again at exit.
         writeEncoded(encode(image), file);

@@ -129,6 +129,19 @@ class OutputFilesTest {
         return picture;
     }
 
+    /** PNG bytes under another picture format's name would be opened as what they are not: refused, nothing written. */
+    @Test
+    void aPictureIsWrittenOnlyUnderAPngName() throws IOException {
+        Path jpeg = dir.resolve("page3.jpg");
+        IllegalArgumentException refused = assertThrows(IllegalArgumentException.class,
+                () -> PngFiles.write(picture(), jpeg));
+        assertEquals(jpeg + ": " + PngFiles.PNG_ONLY, refused.getMessage());
+        assertEquals(List.of(), names());
+        PngFiles.write(picture(), dir.resolve("page3.PNG"));
+        PngFiles.write(picture(), dir.resolve("page3"));
+        assertEquals(List.of("page3", "page3.PNG"), names());
+    }
+
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void aFifoIsWrittenIntoAndKeptNotReplaced() throws Exception {
