@@ -1,5 +1,6 @@
 package simpview.pages;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -41,6 +42,25 @@ class PageRendererTest {
             assertSame(renderer.canvas(), canvas);
             assertEquals(0, Images.differingPixels(golden, canvas.snapshot()));
         }
+    }
+
+    /**
+     * A snapshot is the page's image as it was, pixel for pixel and of its type (TYPE_INT_RGB, which Java2D
+     * draws without converting), and stays so while the canvas draws on.
+     */
+    @Test
+    void aSnapshotIsACopyOfThePageOfItsType() throws Exception {
+        PageRenderer renderer = new PageRenderer();
+        PageCanvas canvas = renderer.render(2, PageContext.of(OWN));
+        BufferedImage snapshot = canvas.snapshot();
+        assertEquals(BufferedImage.TYPE_INT_RGB, snapshot.getType());
+        assertEquals(canvas.image().getType(), snapshot.getType());
+        assertEquals(0, Images.differingPixels(canvas.image(), snapshot));
+        int side = snapshot.getWidth();
+        int[] before = snapshot.getRGB(0, 0, side, side, null, 0, side);
+        renderer.render(5, PageContext.of(OWN));
+        assertTrue(Images.differingPixels(canvas.image(), snapshot) > 100_000, "page 5 differs from page 2");
+        assertArrayEquals(before, snapshot.getRGB(0, 0, side, side, null, 0, side), "the snapshot kept page 2");
     }
 
     /**
