@@ -86,19 +86,19 @@ public final class SideBySideLauncher {
         long start = System.nanoTime();
         List<EngineRun> shared = new ArrayList<>();
         List<EngineRun> alone = new ArrayList<>();
+        List<EngineRun> isolated = new ArrayList<>();
         List<EngineRun> timed = new ArrayList<>();
         for (TestEngine engine : ServiceLoader.load(TestEngine.class)) {
             String id = engine.getId();
             if (id.equals(JUPITER)) {
                 shared.add(new EngineRun(id, request(id, roots, classes, Sharing.SHARED), reports));
+                isolated.add(new EngineRun(id + "-alone", request(id, roots, classes, Sharing.ALONE), reports));
                 timed.add(new EngineRun(id + "-timed", request(id, roots, classes, Sharing.TIMED), reports));
             } else {
                 alone.add(new EngineRun(id, request(id, roots, classes, Sharing.ANY), reports));
             }
         }
-        if (!shared.isEmpty()) {
-            alone.add(new EngineRun(JUPITER + "-alone", request(JUPITER, roots, classes, Sharing.ALONE), reports));
-        }
+        alone.addAll(isolated); // after the other engines: the window tests, one class at a time
         Thread sharedLane = lane("shared", shared);
         Thread aloneLane = lane("alone", alone);
         sharedLane.start();
