@@ -10,6 +10,7 @@ import simpview.scene.simp.DrawingWatch;
 import simpview.scene.simp.SceneLibrary;
 import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
+import simpview.scene.simp.Setting;
 import simpview.scene.simp.SourcePlace;
 import simpview.shading.FragmentStage;
 import simpview.shading.LitState;
@@ -132,6 +133,12 @@ public final class PixelInspector {
         @Override
         public void warning(String message) {
             monitor.warning(message);
+        }
+
+        /** The inspector's reader's name for it: the command line's option, not the library's method. */
+        @Override
+        public String nameOf(Setting setting) {
+            return monitor.nameOf(setting);
         }
 
         @Override

@@ -185,6 +185,16 @@ class InspectCommandTest {
         assertTrue(owner.out().contains("explain (primitive 2):\n"), "the owner's, as without --primitive: " + owner.out());
     }
 
+    /** The warning of a depth-cued scene's unused vertex colours names the option, as render's does, not a Java method. */
+    @Test
+    void theOwnColoursWarningNamesTheOption() throws Exception {
+        Path scene = write("coloured.simp", "polygon (-50, -50, -50, 1, 0, 0) (50, -50, -50, 1, 0, 0) (0, 50, -50, 1, 0, 0)\n");
+        CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300");
+        assertEquals(0, run.exitCode(), run.err());
+        assertTrue(run.err().contains("--own-colors (render, compare, check, inspect)"), run.err());
+        assertFalse(run.err().contains("withOwnColours"), run.err());
+    }
+
     @Test
     void aCulledPrimitiveIsNoWriteAndADepthCuedOneIsCulledByItsBox() throws Exception {
         Path scene = write("behind.simp", "polygon (0 0 10) (50 0 10) (0 50 10)\n");
