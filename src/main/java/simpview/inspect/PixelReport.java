@@ -204,17 +204,35 @@ public final class PixelReport {
     }
 
     /**
-     * The last write primitive n attempted at the pixel (written, or lost at
-     * the depth test); null when it made none here.
+     * The last write primitive n attempted at the pixel (written, lost at
+     * the depth test, or dropped by the scissor); null when it made none here.
      */
     public HistoryEntry attemptOf(int primitive) {
         for (int k = history.size() - 1; k >= 0; k--) {
             HistoryEntry e = history.get(k);
-            if (e.primitive() == primitive && (e.outcome() == Outcome.WRITTEN || e.outcome() == Outcome.DEPTH_FAILED)) {
+            if (e.primitive() == primitive && (e.outcome() == Outcome.WRITTEN || e.outcome() == Outcome.DEPTH_FAILED
+                    || e.outcome() == Outcome.SCISSORED)) {
                 return e;
             }
         }
         return null;
+    }
+
+    /**
+     * What the text says of a write it does not work out term by term: a
+     * depth-cued one that lost the depth test (its colour, and where that
+     * came from: the cue, or the vertices' own colours), or one the scissor
+     * dropped before the z-buffer.
+     */
+    private String unexplained(HistoryEntry e) {
+        if (e.outcome() == Outcome.SCISSORED) {
+            return "z " + Json.number(e.z()) + ", outside the view's depth range (z 0 to -200), so it never reached "
+                    + "the z-buffer: nothing of it shows here";
+        }
+        int c = e.argb();
+        return "rgb (" + (c >>> 16 & 0xFF) + ", " + (c >>> 8 & 0xFF) + ", " + (c & 0xFF) + "), "
+                + (scene.ownColours() ? "its vertices' own colours at the pixel" : "the depth cue's colour at its depth")
+                + "; not worked out term by term for a write that lost the depth test";
     }
 
     /** Whether the explanation asked for is another primitive's than the owner's. */
@@ -304,11 +322,8 @@ public final class PixelReport {
             } else {
                 sb.append(", ").append(e.outcome().word()).append(" here").append(owner == null ? ""
                         : ", under primitive " + shown(owner.primitive()) + ", the pixel's");
-                int c = e.argb();
                 if (e.explanation() == null) {
-                    sb.append("): rgb (").append(c >>> 16 & 0xFF).append(", ").append(c >>> 8 & 0xFF).append(", ")
-                            .append(c & 0xFF).append("), the depth cue's colour at its depth; not worked out term by "
-                            + "term for a write that lost the depth test\n");
+                    sb.append("): ").append(unexplained(e)).append('\n');
                 } else {
                     sb.append("):\n");
                     e.explanation().appendText(sb, "  ");

@@ -185,6 +185,51 @@ class InspectCommandTest {
         assertTrue(owner.out().contains("explain (primitive 2):\n"), "the owner's, as without --primitive: " + owner.out());
     }
 
+    /**
+     * A write the depth test threw away in a scene drawn in its own colours
+     * came with its vertices' colour, not the depth cue's: the explanation
+     * says so, as the history gives it.
+     */
+    @Test
+    void aLostWriteInOwnColoursIsNotCalledTheCuesColour() throws Exception {
+        Path scene = write("own.simp", "polygon (-50, -50, -50, 0, 0, 1) (50, -50, -50, 0, 0, 1) (0, 50, -50, 0, 0, 1)\n"
+                + "polygon (-50, -50, -60, 1, 1, 0) (50, -50, -60, 1, 1, 0) (0, 50, -60, 1, 1, 0)\n");
+        CliRun own = CliRun.of("inspect", "--scene", scene.toString(), "--own-colors", "--at", "325,300", "--explain",
+                "--primitive", "2");
+        assertEquals(0, own.exitCode(), own.err());
+        assertTrue(own.out().contains("explain (primitive 2, depth-failed here, under primitive 1, the pixel's): "
+                + "rgb (255, 255, 0), its vertices' own colours at the pixel; not worked out term by term"), own.out());
+        assertFalse(own.out().contains("depth cue"), own.out());
+        CliRun cued = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--explain",
+                "--primitive", "2");
+        assertTrue(cued.out().contains("), the depth cue's colour at its depth; not worked out"), cued.out());
+    }
+
+    /**
+     * A write the scissor dropped (z beyond 0) was made at the pixel:
+     * --explain --primitive says what became of it, as the history does, not
+     * that the primitive made no write there while its vertex table says it
+     * covers the pixel.
+     */
+    @Test
+    void aScissoredWriteIsExplainedAsOne() throws Exception {
+        Path scene = write("near.simp", "polygon (-50, -50, 20) (50, -50, 20) (0, 50, -20)\n"
+                + "polygon (60, 60, -10) (70, 60, -10) (65, 70, -10)\n");
+        CliRun text = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,200", "--explain",
+                "--primitive", "1");
+        assertEquals(0, text.exitCode(), text.err());
+        assertTrue(text.out().contains("explain (primitive 1, scissored here): z 15."), text.out());
+        assertTrue(text.out().contains("outside the view's depth range (z 0 to -200), so it never reached the "
+                + "z-buffer"), text.out());
+        CliRun json = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,200", "--explain",
+                "--primitive", "1", "--json");
+        assertTrue(json.out().contains("\"explained\": {\"primitive\": 1, \"outcome\": \"scissored\"}, \"explain\": null"),
+                json.out());
+        CliRun none = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,200", "--explain",
+                "--primitive", "2");
+        assertTrue(none.out().contains("explain (primitive 2): it made no write at this pixel"), none.out());
+    }
+
     /** The warning of a depth-cued scene's unused vertex colours names the option, as render's does, not a Java method. */
     @Test
     void theOwnColoursWarningNamesTheOption() throws Exception {
