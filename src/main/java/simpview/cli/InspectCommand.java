@@ -195,6 +195,7 @@ final class InspectCommand implements Callable<Integer> {
                 + "pages are drawn in panel coordinates, and the history names each line's or triangle's vertices");
         usage(simpDir == null, "--simp-dir goes with assignment 2's pages: the first assignment's read no files");
         usage(near == null && far == null, "--near-color and --far-color go with --scene only");
+        usage(!ownColours, "--own-colors goes with --scene only");
         long chosen = PageDrawing.context(parent.ownScenes(), seed, null, PageDrawing.warningsTo(err())).seed();
         A1Report report = A1Inspector.inspect(what.page, chosen, a1Rule.rule(), xy[0], xy[1]);
         PrintWriter out = spec.commandLine().getOut();

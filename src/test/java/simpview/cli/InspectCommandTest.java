@@ -230,6 +230,19 @@ class InspectCommandTest {
         assertTrue(none.out().contains("explain (primitive 2): it made no write at this pixel"), none.out());
     }
 
+    /**
+     * --own-colors does nothing to the first assignment's pages: inspect
+     * refuses it there, as render and compare do, instead of taking it
+     * without a word.
+     */
+    @Test
+    void ownColoursWithTheFirstAssignmentIsAUsageError() {
+        CliRun run = CliRun.of("inspect", "--assignment", "1", "--page", "4", "--at", "200,550", "--own-colors");
+        assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.out() + run.err());
+        assertTrue(run.err().startsWith("simpview: --own-colors goes with --scene only"), run.err());
+        assertFalse(run.showsStackTrace(), run.err());
+    }
+
     /** The warning of a depth-cued scene's unused vertex colours names the option, as render's does, not a Java method. */
     @Test
     void theOwnColoursWarningNamesTheOption() throws Exception {
