@@ -118,7 +118,7 @@ public final class PixelReport {
      */
     public Terms vertices(int primitive) {
         PrimitiveSource s = sources.apply(primitive);
-        return s == null ? null : VertexTable.of(s, x, y);
+        return s == null ? null : VertexTable.of(s, text.describe(s.chain()), x, y);
     }
 
     /** The planes of outcode bits as a JSON list of their names. */

@@ -329,8 +329,8 @@ final class PixelWatch implements PrimitiveTrace {
                 drawn[2 * k] = outline[k * stride];
                 drawn[2 * k + 1] = outline[k * stride + 1];
             }
-            sources.put(primitive, new PrimitiveSource(primitive, kind, sourceCtm, worldToCamera.get(), camera.get(),
-                    lit, Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices, drawn));
+            sources.put(primitive, new PrimitiveSource(primitive, chain(), kind, sourceCtm, worldToCamera.get(),
+                    camera.get(), lit, Arrays.copyOf(sourceXyz, 3 * sourceVertices), sourceVertices, drawn));
         }
     }
 

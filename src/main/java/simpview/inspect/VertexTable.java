@@ -29,10 +29,14 @@ final class VertexTable {
     private VertexTable() {
     }
 
-    /** Primitive s's table, its coverage asked at pixel (x, y). */
-    static Terms of(PrimitiveSource s, int pixelX, int pixelY) {
+    /**
+     * Primitive s's table, named by its command (its include chain, as the
+     * history names a write), its coverage asked at pixel (x, y).
+     */
+    static Terms of(PrimitiveSource s, String command, int pixelX, int pixelY) {
         Terms t = new Terms();
         t.put("primitive", PixelReport.shown(s.primitive()));
+        t.put("command", command);
         t.put("kind", s.kind() == Painter.LINE ? "line" : s.kind() == Painter.WIRE ? "wire polygon" : "filled polygon");
         t.put("ctm", rows(s.ctm()));
         Matrix4 toCamera = s.worldToCamera().times(s.ctm());

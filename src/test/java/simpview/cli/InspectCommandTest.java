@@ -129,6 +129,25 @@ class InspectCommandTest {
         assertTrue(run.out().contains("final_rgb: "), run.out());
     }
 
+    /**
+     * --vertices --primitive N names the command N is, with its include
+     * chain, as the history names a write: on the command line nothing else
+     * tells which triangle N is when it made no write at the pixel.
+     */
+    @Test
+    void theVertexTableNamesItsPrimitivesCommand() throws Exception {
+        write("leaf.simp", "polygon (-90, -90, -20) (-80, -90, -20) (-85, -80, -20)\n");
+        Path scene = write("top.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\nfile leaf\n");
+        CliRun text = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "2");
+        assertEquals(0, text.exitCode(), text.err());
+        assertTrue(text.out().contains("vertices of primitive 2:\n  primitive: 2\n  command: top.simp:2 › leaf.simp:1 "
+                + "polygon (-90, -90, -20) (-80, -90, -20) (-85, -80, -20)\n"), text.out());
+        CliRun json = CliRun.of("inspect", "--scene", scene.toString(), "--at", "325,300", "--vertices", "--primitive", "2",
+                "--json");
+        assertTrue(json.out().contains("\"vertices\": {\"primitive\": 2, \"command\": \"top.simp:2 › leaf.simp:1 polygon"),
+                json.out());
+    }
+
     @Test
     void aPrimitiveByItsNumberAndOneTheSceneHasNot() throws Exception {
         Path scene = write("two.simp", "polygon (-50, -50, -10) (50, -50, -10) (0, 50, -10)\n"
