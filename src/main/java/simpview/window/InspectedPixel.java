@@ -211,12 +211,17 @@ final class InspectedPixel {
 
     /**
      * Pins the pixel "x, y" (the panel's coordinates, x right and y up; on
-     * the first assignment's pages the page's) and brings it into view; says
-     * why not when the text is not a pixel.
+     * the first assignment's pages the page's), or "(x, y)" as the inspector
+     * writes a pixel, and brings it into view; says why not when the text is
+     * not a pixel.
      */
     void goToPixel(String answer) {
         RenderedView shown = onScreen.picture();
-        String[] parts = answer.strip().split("[,\\s]+");
+        String text = answer.strip();
+        if (text.length() > 1 && text.startsWith("(") && text.endsWith(")")) {
+            text = text.substring(1, text.length() - 1).strip();
+        }
+        String[] parts = text.split("[,\\s]+");
         boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
         int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
         int x;

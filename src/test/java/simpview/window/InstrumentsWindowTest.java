@@ -260,6 +260,12 @@ public class InstrumentsWindowTest extends WindowTestCase {
     @Test
     void unpinningTakesAwayTheLineThatSaidWhatWasPinned() throws Exception {
         open();
+        // A pixel as the inspector writes it, in parentheses, is one too; half a pair of them is not.
+        driver.onEdt(() -> window().goToPixel(" (3, 4) "));
+        assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("Pinned panel pixel (3, 4)"));
+        driver.onEdt(() -> window().goToPixel("(3, 4"));
+        assertEquals("'(3, 4' is not a pixel: give x, y, for example 325, 400.",
+                driver.onEdt(() -> window().status().messageText()));
         driver.onEdt(() -> window().goToPixel("0, 0"));
         assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("Pinned panel pixel (0, 0)"));
         driver.onEdt(() -> window().perform(WindowAction.PIN));
