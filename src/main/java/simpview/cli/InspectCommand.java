@@ -1,8 +1,10 @@
 package simpview.cli;
 
 import java.io.PrintWriter;
+import java.math.BigInteger;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -41,6 +43,9 @@ import simpview.surface.Rgb;
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error", "2:usage error (a pixel outside the panel, too)"})
 final class InspectCommand implements Callable<Integer> {
+
+    /** A whole number as --at takes it: ASCII digits, perhaps a sign. */
+    private static final Pattern WHOLE_NUMBER = Pattern.compile("[+-]?[0-9]+");
 
     static final class What {
         @Option(names = "--page", paramLabel = "N", required = true,
@@ -215,11 +220,11 @@ final class InspectCommand implements Callable<Integer> {
         int[] xy = new int[2];
         usage(parts.length == 2, "--at takes X,Y (two whole numbers, " + where + " coordinates), not '" + at + "'");
         for (int k = 0; k < 2; k++) {
-            try {
-                xy[k] = Integer.parseInt(parts[k].strip());
-            } catch (NumberFormatException e) {
-                usage(false, "--at takes X,Y (two whole numbers, " + where + " coordinates), not '" + at + "'");
-            }
+            String number = parts[k].strip();
+            usage(WHOLE_NUMBER.matcher(number).matches(), "--at takes X,Y (two whole numbers, " + where
+                    + " coordinates), not '" + at + "'");
+            // A whole number of any size is a place, outside the panel when it is not in it.
+            xy[k] = new BigInteger(number).max(BigInteger.valueOf(-1)).min(BigInteger.valueOf(last + 1)).intValue();
         }
         usage(xy[0] >= 0 && xy[0] <= last && xy[1] >= 0 && xy[1] <= last, "--at " + at
                 + " is outside the " + where + ": x and y are 0 to " + last + ", from the " + where

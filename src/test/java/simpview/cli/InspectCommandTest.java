@@ -294,6 +294,15 @@ class InspectCommandTest {
         }
         CliRun outside = CliRun.of("inspect", "--scene", scene.toString(), "--at", "650,10");
         assertTrue(outside.err().contains("outside the panel: x and y are 0 to 649"), outside.err());
+        // A whole number too large for an int is still a place outside the panel, not "not a number".
+        for (String far : new String[] {"99999999999,1", "1,-99999999999999999999"}) {
+            CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", far);
+            assertEquals(2, run.exitCode(), far);
+            assertTrue(run.err().contains("--at " + far + " is outside the panel"), run.err());
+        }
+        // Digits of another script are not the whole numbers --at takes.
+        CliRun wide = CliRun.of("inspect", "--scene", scene.toString(), "--at", "\uFF13,4");
+        assertTrue(wide.err().contains("--at takes X,Y (two whole numbers"), wide.err());
     }
 
     @Test
