@@ -199,7 +199,7 @@ final class FileStack implements AutoCloseable {
         Name name = Name.of(from, c);
         Found found = found(name, from, c);
         if (onStack.contains(found.resolved.real)) {
-            throw from.error(c.argumentIndex, "file cycle: " + chain(found.resolved.real));
+            throw from.error(c.argumentIndex, "file cycle: " + chain(found.resolved.real, found.path));
         }
         SimpReader reader;
         try {
@@ -468,8 +468,12 @@ final class FileStack implements AutoCloseable {
         }
     }
 
-    /** "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second. */
-    private String chain(Path real) {
+    /**
+     * "a.simp → b.simp → a.simp": the files from the first visit of {@code real} to its second, {@code closing}
+     * (the name that leads back to it), each as {@link #shown} names files, so that two folders' files of one
+     * name are told apart.
+     */
+    private String chain(Path real, Path closing) {
         StringBuilder sb = new StringBuilder();
         int first = 0;
         while (!resolvedReaders.get(first).real.equals(real)) {
@@ -479,7 +483,7 @@ final class FileStack implements AutoCloseable {
         int start = first;
         int files = readers.size() - first + 1;
         forEachNamed(files, i -> sb.append(sb.length() == 0 ? "" : " → ")
-                .append(i == files - 1 ? real.getFileName() : readers.get(start + i).file().getFileName()),
+                .append(shown(i == files - 1 ? closing : readers.get(start + i).file())),
                 hidden -> sb.append(" → ... ").append(hidden).append(" more ..."));
         return sb.toString();
     }

@@ -185,6 +185,20 @@ class FileStackTest {
         assertEquals(1, scene.lines.size(), "what came before the error was drawn");
     }
 
+    /**
+     * A cycle through two folders' files of one name names each by its folder too, as the files at the start of
+     * a message are named: "x.simp → x.simp → x.simp" would not say which file to mend.
+     */
+    @Test
+    void fileCycleTellsTwoFoldersFilesOfOneNameApart() throws Exception {
+        Files.createDirectories(dir.resolve("parts"));
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "file \"x\"");
+        scene.write("x", "file \"parts/x\"");
+        Files.write(dir.resolve("parts/x.simp"), List.of("file \"../x\""));
+        assertEquals("file cycle: x.simp → parts/x.simp → x.simp", scene.failure("s").problem());
+    }
+
     @Test
     void fileIncludingItselfIsACycle() throws Exception {
         SceneFixture scene = new SceneFixture(dir);
