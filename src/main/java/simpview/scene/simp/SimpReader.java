@@ -324,14 +324,14 @@ public final class SimpReader implements AutoCloseable {
             if (n == most) {
                 int found = n + DecimalCommas.words(b, i, end);
                 String comma = decimalCommaHint(from, kind, found);
-                throw error(i, wrongCount(kind, found) + (comma.isEmpty() ? triangleHint(kind, found) : comma));
+                throw error(i, wrongCount(kind, found) + (comma.isEmpty() ? countHint(from, kind, found) : comma));
             }
             i = number(i);
             c.numbers[n++] = decimal.value();
             i = skipSeparators(i);
         }
         if (!kind.takes(n)) {
-            throw error(end, wrongCount(kind, n) + triangleHint(kind, n));
+            throw error(end, wrongCount(kind, n) + countHint(from, kind, n));
         }
         c.count = n;
         return end;
@@ -525,6 +525,21 @@ public final class SimpReader implements AutoCloseable {
     private static String wrongCount(Kind kind, int found) {
         String got = found == 0 ? "none" : found + (found == 1 ? " number" : " numbers");
         return "wrong number of arguments: " + kind.spelling + " takes " + kind.takesText() + ", found " + got;
+    }
+
+    /**
+     * For a line or polygon given a count of numbers it does not take, from
+     * its arguments at {@code from} on: what each of its points holds, when
+     * it writes as many points as it takes; else, for a polygon given more
+     * numbers than a triangle's, what a polygon is.
+     */
+    private String countHint(int from, Kind kind, int found) {
+        int afterWord = from;
+        while (afterWord > source.lineStart() && isSeparator(b[afterWord - 1])) {
+            afterWord--; // the arguments start past the first point's '('
+        }
+        String points = kind.vertices() > 0 ? PointGroups.hint(b, afterWord, end, kind.vertices()) : "";
+        return points.isEmpty() ? triangleHint(kind, found) : points;
     }
 
     /** For a polygon given more numbers than a triangle's, what a polygon is. */

@@ -407,12 +407,14 @@ class SimpReaderTest {
 
     @Test
     void pointWithTwoNumbers() {
-        assertError("line (0, 0) (1, 1, 1)", 1, 22, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 5 numbers");
+        assertError("line (0, 0) (1, 1, 1)", 1, 22, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 5 numbers"
+                + " (its 2 points hold 2 and 3 numbers: a point is 3 numbers, x y z, or 6 with its colour, x y z r g b)");
     }
 
     @Test
     void pointWithFourNumbers() {
-        assertError("line (0 0 0 0) (1 1 1)", 1, 23, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 7 numbers");
+        assertError("line (0 0 0 0) (1 1 1)", 1, 23, "wrong number of arguments: line takes 6 numbers (2 points) or 12 (2 points, each followed by its colour), found 7 numbers"
+                + " (its 2 points hold 4 and 3 numbers: a point is 3 numbers, x y z, or 6 with its colour, x y z r g b)");
     }
 
     @Test
@@ -430,6 +432,25 @@ class SimpReaderTest {
         assertError("translate 1 \u20132 3", 1, 13, "expected a number, found '\u20132', whose '\u2013' is U+2013 EN DASH,"
                 + " not ASCII: a number is written with the ASCII digits, '-', '+', '.' and 'e' (text copied from a PDF"
                 + " or a word processor often looks right and is not)");
+    }
+
+    /**
+     * A polygon of three points, only some with a colour, is told what each point holds, not that a polygon is
+     * one triangle: its count of numbers is that of four points, but it writes three.
+     */
+    @Test
+    void aPolygonOfThreePointsSomeColouredIsToldWhatEachHolds() {
+        String takes = "wrong number of arguments: polygon takes 9 numbers (3 points) or 18 (3 points, each followed by"
+                + " its colour), found ";
+        String point = "numbers: a point is 3 numbers, x y z, or 6 with its colour, x y z r g b; either every point has"
+                + " its colour or none has)";
+        assertError("polygon (0,0,-10,1,0,0) (50,0,-10) (0,50,-10)", 1, 46, takes + "12 numbers (its 3 points hold 6,"
+                + " 3 and 3 " + point);
+        assertError("polygon (0,0,-10,(1,0,0)) (5,0,-10,(0,1,0)) (0,5,-10)", 1, 54, takes + "15 numbers (its 3 points"
+                + " hold 6, 6 and 3 " + point);
+        assertError("line (0,0,-10,1,0,0) (50,50,-10)", 1, 33, "wrong number of arguments: line takes 6 numbers"
+                + " (2 points) or 12 (2 points, each followed by its colour), found 9 numbers (its 2 points hold 6 and 3 "
+                + point);
     }
 
     @Test
