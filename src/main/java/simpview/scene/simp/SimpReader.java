@@ -346,7 +346,7 @@ public final class SimpReader implements AutoCloseable {
             // 'X' then a non-breaking space reads as one word with the angle: the space is what is wrong
             String found = text(from, axisEnd);
             throw error(from, "expected an axis X, Y or Z (upper case), found '" + found + "'"
-                    + CopiedText.invisibleHint(found));
+                    + CopiedText.invisibleHint(found) + angleStuckHint(from, axisEnd));
         }
         c.axis = AXES[b[from] - 'X'];
         int i = skipSeparators(axisEnd);
@@ -360,6 +360,16 @@ public final class SimpReader implements AutoCloseable {
             throw error(next, "rotate takes an axis and one angle, found more: '" + token(next) + "'");
         }
         return i;
+    }
+
+    /**
+     * For an axis with the angle stuck to it, "Y30" in b[from, axisEnd): that they are two words; else "".
+     */
+    private String angleStuckHint(int from, int axisEnd) {
+        int axis = Character.toUpperCase(b[from]);
+        boolean stuck = axisEnd - from > 1 && axis >= 'X' && axis <= 'Z' && startsNumber(b[from + 1]);
+        return stuck ? ": the axis and the angle are two words, with a blank between them: write rotate " + (char) axis
+                + " " + text(from + 1, axisEnd) : "";
     }
 
     private int fileName(int from, Command c) throws SceneException {
@@ -429,7 +439,14 @@ public final class SimpReader implements AutoCloseable {
 
     /** "expected a number, found ..." for what stands at i, no number: a unit word after a number is told so. */
     private String numberExpected(int i) {
-        return "expected a number, found " + found(i) + (i < end && afterANumber(i) ? StuckUnit.alone(token(i)) : "");
+        return "expected a number, found " + found(i) + (i < end && afterANumber(i) ? StuckUnit.alone(token(i)) : "")
+                + (i < end ? bracketHint(b[i]) : "");
+    }
+
+    /** For a bracket of another kind where a number was expected, "[0, 0, 0]": how a point is written. */
+    private static String bracketHint(byte c) {
+        return c == '[' || c == ']' || c == '{' || c == '}' || c == '<' || c == '>'
+                ? " (a point is written in parentheses, (x, y, z): '" + (char) c + "' is no separator)" : "";
     }
 
     /**

@@ -453,6 +453,25 @@ class SimpReaderTest {
                 + point);
     }
 
+    /** Points in brackets of another kind, as other languages write lists: how a point is written. */
+    @Test
+    void aPointInSquareOrCurlyBracketsIsToldToUseParentheses() {
+        assertError("polygon [0,0,-10] [50,0,-10] [0,50,-10]", 1, 9, "expected a number, found '[0' (a point is written"
+                + " in parentheses, (x, y, z): '[' is no separator)");
+        assertError("line {0,0,-10} {5,5,-10}", 1, 6, "expected a number, found '{0' (a point is written in parentheses,"
+                + " (x, y, z): '{' is no separator)");
+    }
+
+    /** An angle written against its axis, "Y30": the two words are named, not only what an axis is. */
+    @Test
+    void anAngleStuckToItsAxisIsToldToStandApart() {
+        assertError("rotate Y30", 1, 8, "expected an axis X, Y or Z (upper case), found 'Y30': the axis and the angle"
+                + " are two words, with a blank between them: write rotate Y 30");
+        assertError("rotate z-45.5", 1, 8, "expected an axis X, Y or Z (upper case), found 'z-45.5': the axis and the"
+                + " angle are two words, with a blank between them: write rotate Z -45.5");
+        assertError("rotate XY 30", 1, 8, "expected an axis X, Y or Z (upper case), found 'XY'");
+    }
+
     @Test
     void aPolygonOfFourPointsIsToldItIsATriangle() {
         assertError("polygon (0,0,0) (1,0,0) (1,1,0) (0,1,0)", 1, 40, "wrong number of arguments: polygon takes 9 numbers"
