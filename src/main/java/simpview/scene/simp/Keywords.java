@@ -53,13 +53,15 @@ final class Keywords {
      * edit ('fill' is 'filled' cut short). Between words equally near, one
      * that takes arguments when the line has some, or none when it has
      * none, is meant: 'fill' and 'filed' alone on a line are 'filled' (file
-     * takes a name), 'fill "cube"' is 'file'.
+     * takes a name), 'fill "cube"' is 'file'. A word near none, but
+     * another language's for a command ('include', 'push'), is told the
+     * SIMP word ({@link WordsElsewhere}).
      *
      * @param arguments whether anything follows the word on its line
      */
     static String suggestion(String word, boolean arguments) {
         String near = word.length() == 1 ? bracket(word.charAt(0)) : nearestWord(word, arguments);
-        return near == null ? "" : " (did you mean '" + near + "'?"
+        return near == null ? WordsElsewhere.hint(word) : " (did you mean '" + near + "'?"
                 + (near.equalsIgnoreCase(word) ? " commands are case-sensitive)" : ")");
     }
 

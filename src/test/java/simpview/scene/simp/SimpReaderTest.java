@@ -216,6 +216,21 @@ class SimpReaderTest {
                 + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
+    /** Another language's word for a command, near no SIMP word in spelling: the SIMP word is named. */
+    @Test
+    void anotherLanguagesWordForACommandIsToldTheSimpWord() {
+        String expected = "; expected {, }, scale, translate, rotate, line, polygon, file, wire, filled, camera, obj,"
+                + " ambient, surface, depth, light, flat, gouraud or phong";
+        assertError("include \"cube\"", 1, 1, "unknown command 'include' (SIMP's word for that is 'file')" + expected);
+        assertError("  pushMatrix", 1, 3, "unknown command 'pushMatrix' (SIMP's word for that is '{')" + expected);
+        assertError("pop", 1, 1, "unknown command 'pop' (SIMP's word for that is '}')" + expected);
+        assertError("triangle (0,0,0) (1,0,0) (0,1,0)", 1, 1, "unknown command 'triangle' (SIMP's word for that is"
+                + " 'polygon')" + expected);
+        assertError("color 1 0 0", 1, 1, "unknown command 'color' (a colour is no command: a vertex carries its own in"
+                + " its point, (x, y, z, r, g, b), and in a lit scene surface r g b gives the colour of the vertices"
+                + " after it)" + expected);
+    }
+
     @Test
     void aMistypedCommandGetsTheNearestOneSuggested() {
         assertError("Polygon (0, 0, 0) (1, 0, 0) (0, 1, 0)", 1, 1, "unknown command 'Polygon' (did you mean 'polygon'? "
