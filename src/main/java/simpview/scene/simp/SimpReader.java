@@ -397,6 +397,12 @@ public final class SimpReader implements AutoCloseable {
                 nameEnd++;
             }
             after = nameEnd;
+            int more = skipBlanks(after);
+            if (more < end && b[more] != '#') {
+                // file my cube: a bare name ends at a blank, so the rest reads as text after the command
+                throw error(more, endExpected(more) + " (a name with blanks in it is quoted: " + c.kind.spelling
+                        + " \"" + text(nameStart, end).strip() + "\")");
+            }
         }
         if (nameEnd == nameStart) {
             throw error(from, "expected a file name, found an empty one");

@@ -216,6 +216,15 @@ class SimpReaderTest {
                 + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
     }
 
+    /** A bare name followed by more words, as a name with blanks written bare reads: it is told to quote them. */
+    @Test
+    void aBareNameWithBlanksIsToldToQuoteIt() {
+        assertError("file my cube", 1, 9, "expected the end of the line, found 'cube' (a name with blanks in it is"
+                + " quoted: file \"my cube\")");
+        assertError("obj\tbig  teapot ", 1, 10, "expected the end of the line, found 'teapot ' (a name with blanks in"
+                + " it is quoted: obj \"big  teapot\")");
+    }
+
     /** Another language's word for a command, near no SIMP word in spelling: the SIMP word is named. */
     @Test
     void anotherLanguagesWordForACommandIsToldTheSimpWord() {
