@@ -152,17 +152,28 @@ public final class LineSource {
 
     /**
      * For a message about the current line: a hint when it holds a carriage
-     * return, which only a file whose lines end in CR alone (old Mac files)
-     * leaves inside a line, so that the whole file reads as one line; else "".
+     * return. In a line that an LF ends, that is a stray one (pasted from
+     * another editor); else the file's lines end in CR alone (old Mac files),
+     * so that the whole file reads as one line. Else "".
      */
     public String lineEndHint() {
         for (int i = lineStart; i < lineEnd; i++) {
             if (buf[i] == '\r') {
-                return " (this file's lines end in a carriage return alone, so it reads as one line: "
-                        + "save it with LF or CR LF line ends)";
+                return endsInLineFeed() ? " (a carriage return stands alone in this line, where it ends no line (an LF"
+                        + " ends this one): remove it)" : " (this file's lines end in a carriage return alone,"
+                        + " so it reads as one line: save it with LF or CR LF line ends)";
             }
         }
         return "";
+    }
+
+    /** Whether an LF ends the current line, past the CRs before it. */
+    private boolean endsInLineFeed() {
+        int j = lineEnd;
+        while (j < limit && buf[j] == '\r') {
+            j++;
+        }
+        return j < limit && buf[j] == '\n';
     }
 
     /** The 1-based number of the current line. */

@@ -379,6 +379,20 @@ class SimpReaderTest {
                 + " in lower case, and names are case-sensitive)"), e.problem());
     }
 
+    /**
+     * A carriage return alone inside a line of a file whose lines end in LF (pasted from another editor) is
+     * named as the stray it is: the file's lines do not end in CR alone.
+     */
+    @Test
+    void aStrayCarriageReturnInALineOfALineFeedFileIsNamedAsOne() {
+        SceneException e = error("line (0,0,-10)\r(50,50,-10)\nwire\n");
+        assertEquals(1, e.line());
+        assertEquals("expected a number, found ' ' (a carriage return stands alone in this line, where it ends no line"
+                + " (an LF ends this one): remove it)", e.problem());
+        assertEquals("expected a number, found ' ' (a carriage return stands alone in this line, where it ends no line"
+                + " (an LF ends this one): remove it)", error("wire\r\nline (0,0,-10)\r(50,50,-10)\r\n").problem());
+    }
+
     @Test
     void linesEndingInACarriageReturnAloneAreNamedSo() {
         SceneException e = error("scale 1 2 3\rwire\r");
