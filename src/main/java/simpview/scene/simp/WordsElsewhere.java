@@ -7,8 +7,9 @@ import java.util.Map;
  * Words other scene languages and graphics libraries give what a SIMP
  * command does, as students bring them along: C's {@code #include} and
  * Python's {@code import} for {@code file}, OpenGL's push and pop for the
- * brackets, "triangle" for {@code polygon}. An unknown command that is one
- * of them is told the SIMP word, which no spelling near it would find.
+ * brackets, "triangle" for {@code polygon}, and "//" to start a comment.
+ * An unknown command that is one of them is told the SIMP word, which no
+ * spelling near it would find.
  */
 final class WordsElsewhere {
 
@@ -27,15 +28,24 @@ final class WordsElsewhere {
     private static final String COLOUR = " (a colour is no command: a vertex carries its own in its point, (x, y, z,"
             + " r, g, b), and in a lit scene surface r g b gives the colour of the vertices after it)";
 
+    /** How other languages start a comment: C's and Java's, SQL's and Lua's, Lisp's and assembly's, TeX's. */
+    private static final String[] COMMENT_MARKS = {"//", "/*", "--", ";", "%"};
+
     private WordsElsewhere() {
     }
 
     /**
      * " (SIMP's word for that is 'file')" when {@code word}, in any case, is
      * another language's word for a SIMP command; what a colour is for
-     * "color" and "colour"; else "".
+     * "color" and "colour"; how a comment starts for a word that starts as
+     * another language's comment ("//"); else "".
      */
     static String hint(String word) {
+        for (String mark : COMMENT_MARKS) {
+            if (word.startsWith(mark)) {
+                return " (a comment starts with '#' here, not with '" + mark + "')";
+            }
+        }
         String lower = word.toLowerCase(Locale.ROOT);
         if (lower.equals("color") || lower.equals("colour") || lower.equals("rgb")) {
             return COLOUR;

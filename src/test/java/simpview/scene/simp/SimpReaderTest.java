@@ -235,6 +235,9 @@ class SimpReaderTest {
         assertError("pop", 1, 1, "unknown command 'pop' (SIMP's word for that is '}')" + expected);
         assertError("triangle (0,0,0) (1,0,0) (0,1,0)", 1, 1, "unknown command 'triangle' (SIMP's word for that is"
                 + " 'polygon')" + expected);
+        assertError("// the house", 1, 1, "unknown command '//' (a comment starts with '#' here, not with '//')"
+                + expected);
+        assertError("; the house", 1, 1, "unknown command ';' (a comment starts with '#' here, not with ';')" + expected);
         assertError("color 1 0 0", 1, 1, "unknown command 'color' (a colour is no command: a vertex carries its own in"
                 + " its point, (x, y, z, r, g, b), and in a lit scene surface r g b gives the colour of the vertices"
                 + " after it)" + expected);
