@@ -273,7 +273,8 @@ public final class SimpReader implements AutoCloseable {
             // a non-breaking space or a byte order mark inside the word: named, since the word looks right
             String invisible = CopiedText.hasInvisible(word) ? CopiedText.hint(word, "") : "";
             throw error(start, "unknown command '" + word + "'" + (!invisible.isEmpty() ? invisible
-                    : readsAModel(word) ? modelHint() : Keywords.suggestion(word, skipBlanks(wordEnd) < end) + "; expected " + Keywords.all()));
+                    : readsAModel(word) ? modelHint() : (numbersWithoutCommand(start) ? NO_COMMAND
+                    : Keywords.suggestion(word, skipBlanks(wordEnd) < end)) + "; expected " + Keywords.all()));
         }
         c.kind = kind;
         // An expression, so that a new Shape does not build until it is read here.
@@ -520,6 +521,17 @@ public final class SimpReader implements AutoCloseable {
     }
 
     // ---- messages ----------------------------------------------------------------------------
+
+    /** For numbers or points where a command should stand. */
+    private static final String NO_COMMAND = " (these numbers have no command: a line starts with its command, as"
+            + " polygon (x, y, z) (x, y, z) (x, y, z) does)";
+
+    /** Whether the line starts, at {@code start}, with a number or a point, where its command should stand. */
+    private boolean numbersWithoutCommand(int start) {
+        int i = b[start] == '(' ? skipSeparators(start) : start;
+        int digit = i < end && (b[i] == '-' || b[i] == '+' || b[i] == '.') ? i + 1 : i;
+        return digit < end && b[digit] >= '0' && b[digit] <= '9';
+    }
 
     /**
      * Whether the unknown command {@code word} shows this file to be an .obj

@@ -225,6 +225,19 @@ class SimpReaderTest {
                 + " it is quoted: obj \"big  teapot\")");
     }
 
+    /** Points or numbers on a line of their own, their command left out: told so, not "did you mean '{'". */
+    @Test
+    void numbersWithoutACommandAreToldSo() {
+        String problem = " (these numbers have no command: a line starts with its command, as polygon (x, y, z)"
+                + " (x, y, z) (x, y, z) does); expected {, }, scale, translate, rotate, line, polygon, file, wire, filled,"
+                + " camera, obj, ambient, surface, depth, light, flat, gouraud or phong";
+        assertError("(0,0,-10) (50,50,-10)", 1, 1, "unknown command '('" + problem);
+        assertError("  -5 0 0", 1, 3, "unknown command '-5'" + problem);
+        assertError("( 2.5, 0, 0)", 1, 1, "unknown command '('" + problem);
+        assertError("(", 1, 1, "unknown command '(' (did you mean '{'?); expected {, }, scale, translate, rotate, line,"
+                + " polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+    }
+
     /** Another language's word for a command, near no SIMP word in spelling: the SIMP word is named. */
     @Test
     void anotherLanguagesWordForACommandIsToldTheSimpWord() {
