@@ -21,6 +21,9 @@ import simpview.scene.text.TrailingComment;
 class SimpReaderTest {
 
     private static final Path FILE = Path.of("scene.simp");
+    /** What an unknown command's message ends with: every command the reader knows. */
+    private static final String EXPECTED_COMMANDS = "; expected {, }, scale, translate, rotate, line, polygon, file,"
+            + " wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong";
 
     private static SimpReader reader(String text) {
         return SimpReader.of(FILE, text.getBytes(StandardCharsets.UTF_8));
@@ -206,14 +209,14 @@ class SimpReaderTest {
 
     @Test
     void unknownCommand() {
-        assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal' (did you mean 'scale'?); expected {, }, scale, translate, "
-                + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+        assertError("# c\n\n  scal 1 2 3", 3, 3, "unknown command 'scal' (did you mean 'scale'?)"
+                + EXPECTED_COMMANDS);
     }
 
     @Test
     void commandsAreCaseSensitive() {
-        assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale' (did you mean 'scale'? commands are case-sensitive); expected {, }, scale, translate, "
-                + "rotate, line, polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+        assertError("Scale 1 2 3", 1, 1, "unknown command 'Scale' (did you mean 'scale'? commands are case-sensitive)"
+                + EXPECTED_COMMANDS);
     }
 
     /** A bare name followed by more words, as a name with blanks written bare reads: it is told to quote them. */
@@ -229,40 +232,37 @@ class SimpReaderTest {
     @Test
     void numbersWithoutACommandAreToldSo() {
         String problem = " (these numbers have no command: a line starts with its command, as polygon (x, y, z)"
-                + " (x, y, z) (x, y, z) does); expected {, }, scale, translate, rotate, line, polygon, file, wire, filled,"
-                + " camera, obj, ambient, surface, depth, light, flat, gouraud or phong";
+                + " (x, y, z) (x, y, z) does)" + EXPECTED_COMMANDS;
         assertError("(0,0,-10) (50,50,-10)", 1, 1, "unknown command '('" + problem);
         assertError("  -5 0 0", 1, 3, "unknown command '-5'" + problem);
         assertError("( 2.5, 0, 0)", 1, 1, "unknown command '('" + problem);
-        assertError("(", 1, 1, "unknown command '(' (did you mean '{'?); expected {, }, scale, translate, rotate, line,"
-                + " polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+        assertError("(", 1, 1, "unknown command '(' (did you mean '{'?)" + EXPECTED_COMMANDS);
     }
 
     /** Another language's word for a command, near no SIMP word in spelling: the SIMP word is named. */
     @Test
     void anotherLanguagesWordForACommandIsToldTheSimpWord() {
-        String expected = "; expected {, }, scale, translate, rotate, line, polygon, file, wire, filled, camera, obj,"
-                + " ambient, surface, depth, light, flat, gouraud or phong";
-        assertError("include \"cube\"", 1, 1, "unknown command 'include' (SIMP's word for that is 'file')" + expected);
-        assertError("  pushMatrix", 1, 3, "unknown command 'pushMatrix' (SIMP's word for that is '{')" + expected);
-        assertError("pop", 1, 1, "unknown command 'pop' (SIMP's word for that is '}')" + expected);
+        assertError("include \"cube\"", 1, 1, "unknown command 'include' (SIMP's word for that is 'file')"
+                + EXPECTED_COMMANDS);
+        assertError("  pushMatrix", 1, 3, "unknown command 'pushMatrix' (SIMP's word for that is '{')"
+                + EXPECTED_COMMANDS);
+        assertError("pop", 1, 1, "unknown command 'pop' (SIMP's word for that is '}')" + EXPECTED_COMMANDS);
         assertError("triangle (0,0,0) (1,0,0) (0,1,0)", 1, 1, "unknown command 'triangle' (SIMP's word for that is"
-                + " 'polygon')" + expected);
+                + " 'polygon')" + EXPECTED_COMMANDS);
         assertError("// the house", 1, 1, "unknown command '//' (a comment starts with '#' here, not with '//')"
-                + expected);
-        assertError("; the house", 1, 1, "unknown command ';' (a comment starts with '#' here, not with ';')" + expected);
+                + EXPECTED_COMMANDS);
+        assertError("; the house", 1, 1, "unknown command ';' (a comment starts with '#' here, not with ';')"
+                + EXPECTED_COMMANDS);
         assertError("color 1 0 0", 1, 1, "unknown command 'color' (a colour is no command: a vertex carries its own in"
                 + " its point, (x, y, z, r, g, b), and in a lit scene surface r g b gives the colour of the vertices"
-                + " after it)" + expected);
+                + " after it)" + EXPECTED_COMMANDS);
     }
 
     @Test
     void aMistypedCommandGetsTheNearestOneSuggested() {
         assertError("Polygon (0, 0, 0) (1, 0, 0) (0, 1, 0)", 1, 1, "unknown command 'Polygon' (did you mean 'polygon'? "
-                + "commands are case-sensitive); expected {, }, scale, translate, rotate, line, polygon, file, wire, "
-                + "filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
-        assertError("frobnicate 1", 1, 1, "unknown command 'frobnicate'; expected {, }, scale, translate, rotate, line, "
-                + "polygon, file, wire, filled, camera, obj, ambient, surface, depth, light, flat, gouraud or phong");
+                + "commands are case-sensitive)" + EXPECTED_COMMANDS);
+        assertError("frobnicate 1", 1, 1, "unknown command 'frobnicate'" + EXPECTED_COMMANDS);
     }
 
     /**
@@ -272,16 +272,14 @@ class SimpReaderTest {
      */
     @Test
     void aSuggestionIsMadeOnlyForAPlausibleMiss() {
-        String expected = "; expected {, }, scale, translate, rotate, line, polygon, file, wire, filled, camera, obj, "
-                + "ambient, surface, depth, light, flat, gouraud or phong";
-        assertError("wire\nx 1", 2, 1, "unknown command 'x'" + expected);
-        assertError("wire\n, 1", 2, 1, "unknown command ','" + expected);
-        assertError("wire\nl 1", 2, 1, "unknown command 'l'" + expected);
-        assertError("wire\nab", 2, 1, "unknown command 'ab'" + expected);
-        assertError("wire\n[", 2, 1, "unknown command '[' (did you mean '{'?)" + expected);
-        assertError("wire\n)", 2, 1, "unknown command ')' (did you mean '}'?)" + expected);
-        assertError("wire\nob \"m\"", 2, 1, "unknown command 'ob' (did you mean 'obj'?)" + expected);
-        assertError("wire\nfiel \"m\"", 2, 1, "unknown command 'fiel' (did you mean 'file'?)" + expected);
+        assertError("wire\nx 1", 2, 1, "unknown command 'x'" + EXPECTED_COMMANDS);
+        assertError("wire\n, 1", 2, 1, "unknown command ','" + EXPECTED_COMMANDS);
+        assertError("wire\nl 1", 2, 1, "unknown command 'l'" + EXPECTED_COMMANDS);
+        assertError("wire\nab", 2, 1, "unknown command 'ab'" + EXPECTED_COMMANDS);
+        assertError("wire\n[", 2, 1, "unknown command '[' (did you mean '{'?)" + EXPECTED_COMMANDS);
+        assertError("wire\n)", 2, 1, "unknown command ')' (did you mean '}'?)" + EXPECTED_COMMANDS);
+        assertError("wire\nob \"m\"", 2, 1, "unknown command 'ob' (did you mean 'obj'?)" + EXPECTED_COMMANDS);
+        assertError("wire\nfiel \"m\"", 2, 1, "unknown command 'fiel' (did you mean 'file'?)" + EXPECTED_COMMANDS);
     }
 
     /** A model given where a scene is wanted (render --scene t1.obj) is told how a model is drawn. */
