@@ -4,11 +4,13 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -484,7 +486,46 @@ public final class CompareBatch {
         List<Wanted> asked = pagesAskedFor.of(dir, found, matches, rows, oneStudent, wanted, firstAssignmentWanted,
                 firstAssignment.keySet(), matcher);
         int written = writeResults(dir, found, matches, rows, asked, outputs, seconds, oneStudent);
+        noteEarlierDiffs(outputs.outDir(), rows);
         return results.saidUnwrittenDiffs(rows, diffPlan) ? ExitCode.SCENE_ERROR : written;
+    }
+
+    /** How many of an earlier run's diff images the note names before "and N more". */
+    private static final int EARLIER_DIFFS_NAMED = 3;
+
+    /**
+     * Names the diff images in the out folder's diffs that this run did not write: an earlier run's, of pictures
+     * that pass now (under --diffs failing) or are gone, which no row of this run links. They are left where
+     * they are (the folder may hold what a teacher keeps), and the note says what they are.
+     */
+    private void noteEarlierDiffs(Path outDir, List<BatchRow> rows) {
+        if (outDir == null) {
+            return;
+        }
+        Path folder = outDir.resolve(DIFFS);
+        Set<Path> thisRun = new HashSet<>();
+        rows.stream().map(BatchRow::diff).filter(diff -> !diff.isEmpty())
+                .forEach(diff -> thisRun.add(outDir.resolve(diff).normalize()));
+        List<String> earlier = new ArrayList<>();
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*-diff.png")) {
+            for (Path file : files) {
+                if (!thisRun.contains(file.normalize())) {
+                    earlier.add(file.getFileName().toString());
+                }
+            }
+        } catch (IOException | UncheckedIOException e) {
+            return; // no such folder, or one that cannot be listed: nothing of an earlier run to name
+        }
+        if (earlier.isEmpty()) {
+            return;
+        }
+        Collections.sort(earlier);
+        int more = earlier.size() - EARLIER_DIFFS_NAMED;
+        String named = String.join(", ", earlier.subList(0, Math.min(EARLIER_DIFFS_NAMED, earlier.size())))
+                + (more > 0 ? " and " + more + " more" : "");
+        err.println(says + "note: " + folder + " also holds " + Count.of(earlier.size(), "diff image")
+                + " this run did not write (" + named + "): an earlier run's, which no row of this one links; they "
+                + "are left as they are");
     }
 
     /**

@@ -607,6 +607,37 @@ public class CompareCommandTest {
     }
 
     /**
+     * A run into the out folder of an earlier one names the diff images it did not write itself: the earlier run's
+     * of a picture that passes now. They are left where they are.
+     */
+    @Test
+    void anEarlierRunsDiffImagesAreNamedAndLeft() throws Exception {
+        Path pictures = Files.createDirectories(dir.resolve("handed-in"));
+        Path page2 = pictures.resolve("page2.png");
+        for (String[] picture : new String[][] {{"1", "page1.png"}, {"1", "page2.png"}}) {
+            CliRun drawn = CliRun.of("render", "--page", picture[0], "--out", pictures.resolve(picture[1]).toString());
+            assertEquals(ExitCode.OK, drawn.exitCode(), drawn.err());
+        }
+        Path out = dir.resolve("results");
+        String[] compare = {"compare", "--dir", pictures.toString(), "--pages", "1-2", "--diffs", "failing",
+            "--out-dir", out.toString()};
+        CliRun first = CliRun.of(compare);
+        assertEquals(ExitCode.SCENE_ERROR, first.exitCode(), first.err());
+        Path diff = out.resolve("diffs").resolve("page2-diff.png");
+        assertTrue(Files.isRegularFile(diff), "page 2 fails: its diff image is written");
+        assertFalse(first.err().contains("did not write"), first.err());
+
+        CliRun drawn = CliRun.of("render", "--page", "2", "--out", page2.toString());
+        assertEquals(ExitCode.OK, drawn.exitCode(), drawn.err());
+        CliRun second = CliRun.of(compare);
+        assertEquals(ExitCode.OK, second.exitCode(), second.err());
+        assertTrue(second.err().contains("note: " + out.resolve("diffs") + " also holds 1 diff image this run did not "
+                + "write (page2-diff.png): an earlier run's, which no row of this one links; they are left as they are"),
+                second.err());
+        assertTrue(Files.isRegularFile(diff), "left where it was");
+    }
+
+    /**
      * A batch that writes diff images of failing pictures only writes none for a picture that passes: the reader
      * of a FIFO where that diff image would go sees the end, whether the run passes or fails.
      */
