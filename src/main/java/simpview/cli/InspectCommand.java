@@ -44,8 +44,11 @@ import simpview.surface.Rgb;
         exitCodeList = {"0:success", "1:scene error", "2:usage error (a pixel outside the panel, too)"})
 final class InspectCommand implements Callable<Integer> {
 
-    /** A whole number as --at takes it: ASCII digits, perhaps a sign. */
-    private static final Pattern WHOLE_NUMBER = Pattern.compile("[+-]?[0-9]+");
+    /**
+     * A whole number as --at takes it: digits, perhaps a sign. Digits of any script, as every number option
+     * takes them (a Japanese keyboard's full-width ３ is 3).
+     */
+    private static final Pattern WHOLE_NUMBER = Pattern.compile("[+-]?\\p{Nd}+");
 
     static final class What {
         @Option(names = "--page", paramLabel = "N", required = true,

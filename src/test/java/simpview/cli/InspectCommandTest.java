@@ -300,9 +300,10 @@ class InspectCommandTest {
             assertEquals(2, run.exitCode(), far);
             assertTrue(run.err().contains("--at " + far + " is outside the panel"), run.err());
         }
-        // Digits of another script are not the whole numbers --at takes.
+        // Digits of another script are the numbers they are, as in every number option: full-width 3 is 3.
         CliRun wide = CliRun.of("inspect", "--scene", scene.toString(), "--at", "\uFF13,4");
-        assertTrue(wide.err().contains("--at takes X,Y (two whole numbers"), wide.err());
+        assertEquals(0, wide.exitCode(), wide.err());
+        assertTrue(wide.out().contains("(3, 4)"), wide.out());
     }
 
     @Test
