@@ -507,7 +507,7 @@ public final class CompareBatch {
         rows.stream().map(BatchRow::diff).filter(diff -> !diff.isEmpty())
                 .forEach(diff -> thisRun.add(outDir.resolve(diff).normalize()));
         List<String> earlier = new ArrayList<>();
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*-diff.png")) {
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*" + DiffNames.ENDING)) {
             for (Path file : files) {
                 if (!thisRun.contains(file.normalize())) {
                     earlier.add(file.getFileName().toString());

@@ -20,6 +20,9 @@ import simpview.pages.A1Layout;
  */
 final class DiffNames {
 
+    /** How every diff image's name ends. */
+    static final String ENDING = "-diff.png";
+
     private final Map<String, String> stems;
 
     private DiffNames(Map<String, String> stems) {
@@ -59,7 +62,7 @@ final class DiffNames {
     }
 
     private static String name(String stem, int panel) {
-        return stem + (panel == 0 ? "" : "-panel" + panel) + "-diff.png";
+        return stem + (panel == 0 ? "" : "-panel" + panel) + ENDING;
     }
 
     /** Every name a stem may give diff images (a page's, and a first-assignment page's panels), case folded. */
