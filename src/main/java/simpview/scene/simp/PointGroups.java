@@ -34,7 +34,7 @@ final class PointGroups {
             } else if (c == ')' && --depth < 0) {
                 return null;
             }
-            boolean separator = c == ' ' || c == '\t' || c == ',' || c == '(' || c == ')';
+            boolean separator = SimpReader.isSeparator(c);
             if (!separator && !inWord) {
                 if (depth == 0) {
                     return null;

@@ -512,7 +512,8 @@ public final class SimpReader implements AutoCloseable {
         return c == ' ' || c == '\t';
     }
 
-    private static boolean isSeparator(byte c) {
+    /** Whether c separates a command's numbers: a blank, a comma or a parenthesis. */
+    static boolean isSeparator(byte c) {
         return c == ' ' || c == '\t' || c == ',' || c == '(' || c == ')';
     }
 
