@@ -104,10 +104,10 @@ public final class Rubric {
         }
         try (Reader reader = new StringReader(text)) {
             JsonReader json = new JsonReader(reader);
-            return new Parser(file, json).rubric(base);
+            return new Parser(file, text, json).rubric(base);
         } catch (IOException | IllegalStateException | NumberFormatException e) {
             String comma = trailingComma(e.getMessage(), text);
-            throw new CompareException("rubric " + file + ": " + (comma != null ? comma : notJson(e.getMessage())));
+            throw new CompareException("rubric " + file + ": " + (comma != null ? comma : notJson(e.getMessage(), text)));
         }
     }
 
@@ -124,11 +124,7 @@ public final class Rubric {
         }
         int line = Integer.parseInt(m.group(2));
         int column = Integer.parseInt(m.group(3));
-        int at = 0;
-        for (int l = 1; l < line && at >= 0; l++) {
-            at = text.indexOf('\n', at);
-            at = at < 0 ? -1 : at + 1;
-        }
+        int at = lineStart(text, line);
         int closer = at < 0 ? -1 : at + column - 2; // Gson has read the '}' or ']' it met instead of a key or value
         if (closer < 1 || closer >= text.length() || "}]".indexOf(text.charAt(closer)) < 0) {
             return null;
@@ -158,12 +154,23 @@ public final class Rubric {
      * malformed JSON at ..."), in words, the place first as {@link Parser}
      * gives it.
      */
-    static String notJson(String gson) {
+    static String notJson(String gson, String text) {
         Matcher m = GSON_PLACE.matcher(gson);
         if (!m.find()) {
             return "not valid JSON: " + gson;
         }
         String what = m.group(1);
+        int line = Integer.parseInt(m.group(2));
+        int column = Integer.parseInt(m.group(3));
+        int at = Math.max(lineStart(text, line), 0) + column - 1;
+        // Gson's place is past the character it stopped at, except at the end, where a value was expected, and
+        // at a word without quotes (which starts there, after a blank or a mark).
+        boolean atIt = what.equals("End of input") || what.equals("Expected value")
+                || what.startsWith("Use JsonReader.setLenient") && at < text.length() && isLiteral(text.charAt(at))
+                && (at == 0 || !isLiteral(text.charAt(at - 1)) && text.charAt(at - 1) != '\'');
+        if (!atIt && column > 1) {
+            column--;
+        }
         String words;
         if (what.equals("End of input")) {
             words = "the file ends before its JSON does (a ']' or '}' missing?)";
@@ -171,12 +178,31 @@ public final class Rubric {
             words = "an object's '}', or a ',' between two of its entries, is missing";
         } else if (what.equals("Unterminated array")) {
             words = "a list's ']', or a ',' between two of its items, is missing";
+        } else if (what.equals("Expected ':'")) {
+            words = "a ':' between a key and its value is missing";
+        } else if (what.equals("Expected name")) {
+            words = "expected a key in double quotes (\"points\")";
         } else if (what.startsWith("Use JsonReader.setLenient")) {
             words = "not valid JSON here (a word without its quotes, a missing comma, or a comment?)";
         } else {
             words = "not valid JSON: " + what;
         }
-        return "line " + m.group(2) + ", column " + m.group(3) + " (" + m.group(4) + "): " + words;
+        return "line " + line + ", column " + column + " (" + m.group(4) + "): " + words;
+    }
+
+    /** A character of a literal: a number, true, false, null, or a word without quotes. */
+    private static boolean isLiteral(char c) {
+        return Character.isLetterOrDigit(c) || c == '-' || c == '+' || c == '.';
+    }
+
+    /** Where {@code text}'s line {@code line} (from 1) starts; -1 past its last. */
+    private static int lineStart(String text, int line) {
+        int at = 0;
+        for (int l = 1; l < line && at >= 0; l++) {
+            at = text.indexOf('\n', at);
+            at = at < 0 ? -1 : at + 1;
+        }
+        return at;
     }
 
     /** The streaming parse, one object at a time, each error with its place. */
@@ -191,13 +217,58 @@ public final class Rubric {
 
         private final Path file;
         private final Path folder;
+        private final String text;
         private final JsonReader json;
+        /** Where the token last looked at ({@link #peek}) starts: its line and its column, each from 1. */
+        private int tokenLine = 1;
+        private int tokenColumn = 1;
 
-        Parser(Path file, JsonReader json) {
+        Parser(Path file, String text, JsonReader json) {
             this.file = file;
             this.folder = file.toAbsolutePath().getParent();
+            this.text = text;
             this.json = json;
         }
+
+        /**
+         * The next token, its start kept for what is said about it. Gson's own place is past what its peek has
+         * read: the opening '{', '[' or '"' of a bracket, a string or a key; the whole of a whole number, true,
+         * false or null; nothing of a number with a fraction or an exponent. So the start is one character back
+         * for the first kind, and at the first of the characters of a literal just before Gson's place for the
+         * others (none, for a number Gson has not read: a literal follows a ':', ',', '[' or a blank). Neither
+         * crosses a line's end.
+         */
+        private JsonToken peek() throws IOException {
+            JsonToken token = json.peek();
+            Matcher m = GSON_PLACE.matcher(json.toString().trim());
+            if (!m.find()) {
+                return token;
+            }
+            int line = Integer.parseInt(m.group(2));
+            int column = Integer.parseInt(m.group(3));
+            int back = switch (token) {
+                case NUMBER, BOOLEAN, NULL -> {
+                    int at = Math.max(lineStart(text, line), 0) + column - 1;
+                    int start = at;
+                    while (start > 0 && start <= text.length() && isLiteral(text.charAt(start - 1))) {
+                        start--;
+                    }
+                    yield at - start;
+                }
+                case END_DOCUMENT -> 0;
+                default -> 1;
+            };
+            tokenLine = line;
+            tokenColumn = Math.max(1, column - back);
+            return token;
+        }
+
+        /** A key, its start kept as for a value. */
+        private String name() throws IOException {
+            peek();
+            return json.nextName();
+        }
+
 
         Rubric rubric(RubricRule base) throws IOException, CompareException {
             expect(JsonToken.BEGIN_OBJECT, "an object with \"defaults\" and \"pages\"");
@@ -206,7 +277,7 @@ public final class Rubric {
             List<Read> rules = new ArrayList<>();
             Map<String, String> seen = new HashMap<>();
             while (json.hasNext()) {
-                String name = json.nextName();
+                String name = name();
                 once(name, seen);
                 switch (name) {
                     case "defaults" -> defaults = defaults(base);
@@ -222,7 +293,7 @@ public final class Rubric {
                 }
             }
             json.endObject();
-            if (json.peek() != JsonToken.END_DOCUMENT) {
+            if (peek() != JsonToken.END_DOCUMENT) {
                 throw error("text after the rubric's closing }");
             }
             if (seen.isEmpty()) {
@@ -268,7 +339,7 @@ public final class Rubric {
             String zeroShareAt = null;
             Map<String, String> seen = new HashMap<>();
             while (json.hasNext()) {
-                String name = json.nextName();
+                String name = name();
                 once(name, seen);
                 switch (name) {
                     case "match" -> {
@@ -429,7 +500,7 @@ public final class Rubric {
         }
 
         private void expect(JsonToken token, String what) throws IOException, CompareException {
-            JsonToken found = json.peek();
+            JsonToken found = peek();
             if (found != token) {
                 throw error("expected " + what + ", found " + inWords(found));
             }
@@ -454,18 +525,18 @@ public final class Rubric {
             return new CompareException("rubric " + file + ": " + place() + ": " + message);
         }
 
-        /** E.g. "line 3, column 14", where the reader is. */
+        /** E.g. "line 3, column 14": where the token last looked at starts. */
         private String lineAndColumn() {
-            String place = place();
-            int path = place.indexOf(" (");
-            return path < 0 ? place : place.substring(0, path);
+            return "line " + tokenLine + ", column " + tokenColumn;
         }
 
-        /** E.g. "line 3, column 14 ($.pages[0].tolerance)", from the reader's own account of where it is. */
+        /**
+         * E.g. "line 3, column 14 ($.pages[0].tolerance)": where the token last looked at starts, and the reader's
+         * path to it (after a key is read, the key's own).
+         */
         private String place() {
-            String s = json.toString();
-            Matcher m = Pattern.compile("line (\\d+) column (\\d+) path (\\S+)").matcher(s);
-            return m.find() ? "line " + m.group(1) + ", column " + m.group(2) + " (" + m.group(3) + ")" : s;
+            Matcher m = GSON_PLACE.matcher(json.toString().trim());
+            return lineAndColumn() + (m.find() ? " (" + m.group(4) + ")" : "");
         }
     }
 }

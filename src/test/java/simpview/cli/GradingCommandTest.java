@@ -374,7 +374,7 @@ class GradingCommandTest {
     void aKeyGivenTwiceInTheRubricIsAUsageError() throws Exception {
         CliRun run = gradedByRubric("{\"pages\": [\n {\"match\": \"1\", \"points\": 2, \"points\": 5}\n]}");
         assertEquals(ExitCode.USAGE_ERROR, run.exitCode(), run.err());
-        assertTrue(run.err().contains("compare.json: line 2, column 38 ($.pages[0].points): \"points\" is given twice"),
+        assertTrue(run.err().contains("compare.json: line 2, column 30 ($.pages[0].points): \"points\" is given twice"),
                 run.err());
         assertFalse(run.showsStackTrace(), run.err());
         CliRun check = CliRun.of("check", dir.resolve("subs").toString(), "--rubric",
@@ -392,7 +392,7 @@ class GradingCommandTest {
         CliRun run = CliRun.of("compare", "--dir", subs.toString(), "--pages", "1", "--rubric", rubric.toString(),
                 "--out-dir", dir.resolve("o").toString());
         assertEquals(ExitCode.OK, run.exitCode(), "a warning only: " + run.err());
-        assertTrue(run.err().contains("simpview compare: warning: rubric " + rubric + ": line 3, column 3 ($.pages[1]): "
+        assertTrue(run.err().contains("simpview compare: warning: rubric " + rubric + ": line 3, column 2 ($.pages[1]): "
                 + "the rule \"match\": \"9\" fits no page or scene of this run, so it is not used"), run.err());
         assertTrue(run.err().contains("($.pages[2]): the rule \"match\": \"pageZ\" fits no page"), run.err());
         assertFalse(run.err().contains("\"match\": \"1\" fits"), run.err());

@@ -192,7 +192,7 @@ class RubricTest {
 
     @Test
     void badRubricsSayWhereAndWhat() throws Exception {
-        assertEquals("line 2, column 29 ($.pages[0].tolerence)", placeOf("{\"pages\": [\n  {\"match\": \"1\", \"tolerence\": 3}]}"));
+        assertEquals("line 2, column 18 ($.pages[0].tolerence)", placeOf("{\"pages\": [\n  {\"match\": \"1\", \"tolerence\": 3}]}"));
         CompareException deviation = bad("{\"pages\": [{\"match\": \"1\", \"deviation\": 3}]}");
         assertTrue(deviation.getMessage().contains("3.0 is not a position deviation of 0, 1 or 2 pixels"), deviation.getMessage());
         assertTrue(deviation.getMessage().contains("line 1, column"), deviation.getMessage());
@@ -204,8 +204,8 @@ class RubricTest {
         assertTrue(bad("{\"pages\": [").getMessage().endsWith(
                 "line 1, column 12 ($.pages[0]): the file ends before its JSON does (a ']' or '}' missing?)"), "cut short");
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"min_share\": 95, \"zero_share\": 96}]}").getMessage()
-                .endsWith("line 1, column 13 ($.pages[0]): the rule for \"1\" has zero_share 96 (its own, line 1, column "
-                        + "56) above its min_share 95 (its own, line 1, column 38); zero_share must be at most min_share"));
+                .endsWith("line 1, column 12 ($.pages[0]): the rule for \"1\" has zero_share 96 (its own, line 1, column "
+                        + "44) above its min_share 95 (its own, line 1, column 27); zero_share must be at most min_share"));
     }
 
     /** JSON readers keep the last of a key given twice; a rubric says so, at the second, whatever the object. */
@@ -224,13 +224,13 @@ class RubricTest {
     @Test
     void aKeyGivenTwiceInOneObjectIsAnError() throws Exception {
         assertTrue(bad("{\"pages\": [{\"match\": \"1\", \"points\": 2, \"points\": 5}]}").getMessage().endsWith(
-                "line 1, column 48 ($.pages[0].points): \"points\" is given twice in this object (first at line 1, "
-                        + "column 35); give it once"));
+                "line 1, column 40 ($.pages[0].points): \"points\" is given twice in this object (first at line 1, "
+                        + "column 27); give it once"));
         assertTrue(bad("{\"defaults\": {\"min_share\": 97,\n \"min_share\": 98}}").getMessage().endsWith(
-                "line 2, column 13 ($.defaults.min_share): \"min_share\" is given twice in this object (first at line 1, "
-                        + "column 26); give it once"));
+                "line 2, column 2 ($.defaults.min_share): \"min_share\" is given twice in this object (first at line 1, "
+                        + "column 15); give it once"));
         assertTrue(bad("{\"pages\": [], \"defaults\": {}, \"pages\": [{\"match\": \"1\"}]}").getMessage()
-                .contains("($.pages): \"pages\" is given twice in this object (first at line 1, column 9)"));
+                .contains("($.pages): \"pages\" is given twice in this object (first at line 1, column 2)"));
         // The same key in two objects is no repeat.
         assertEquals(3, with("{\"match\": \"4\", \"points\": 3}, {\"match\": \"5\", \"points\": 4}").points());
     }
@@ -239,25 +239,25 @@ class RubricTest {
     @Test
     void zeroShareAboveMinShareIsAnErrorSayingWhereEachCameFrom() throws Exception {
         assertTrue(bad("{\"defaults\": {\"min_share\": 95, \"zero_share\": 96}}").getMessage().endsWith(
-                "line 1, column 15 ($.defaults): \"defaults\" has zero_share 96 (line 1, column 44) above its min_share 95 "
-                        + "(line 1, column 26); zero_share must be at most min_share"));
+                "line 1, column 14 ($.defaults): \"defaults\" has zero_share 96 (line 1, column 32) above its min_share 95 "
+                        + "(line 1, column 15); zero_share must be at most min_share"));
         // Inherited from the defaults: silently lowered to the rule's min_share before.
         assertTrue(bad("{\"defaults\": {\"zero_share\": 95},\n \"pages\": [{\"match\": \"8\", \"min_share\": 92}]}")
-                .getMessage().endsWith("line 2, column 13 ($.pages[0]): the rule for \"8\" has zero_share 95 (from "
-                        + "\"defaults\", line 1, column 27) above its min_share 92 (its own, line 2, column 38); zero_share "
+                .getMessage().endsWith("line 2, column 12 ($.pages[0]): the rule for \"8\" has zero_share 95 (from "
+                        + "\"defaults\", line 1, column 15) above its min_share 92 (its own, line 2, column 27); zero_share "
                         + "must be at most min_share"));
         assertTrue(bad("{\"defaults\": {\"min_share\": 92.5},\n \"pages\": [{\"match\": \"8\", \"zero_share\": 93}]}")
-                .getMessage().contains("the rule for \"8\" has zero_share 93 (its own, line 2, column 39) above its "
-                        + "min_share 92.5 (from \"defaults\", line 1, column 26)"));
+                .getMessage().contains("the rule for \"8\" has zero_share 93 (its own, line 2, column 27) above its "
+                        + "min_share 92.5 (from \"defaults\", line 1, column 15)"));
         // min_share from the command line (--min 92), zero_share from the file.
         Path file = dir.resolve("compare.json");
         Files.writeString(file, "{\"pages\": [{\"match\": \"8\", \"zero_share\": 95}]}");
         RubricRule min92 = RubricRule.defaults(8, 92, 1, Comparison.Metric.EXACT);
         assertTrue(assertThrows(CompareException.class, () -> Rubric.read(file, min92)).getMessage().contains(
-                "has zero_share 95 (its own, line 1, column 39) above its min_share 92 (from --min: the rubric sets none)"));
+                "has zero_share 95 (its own, line 1, column 27) above its min_share 92 (from --min: the rubric sets none)"));
         Files.writeString(file, "{\"defaults\": {\"zero_share\": 95}}");
         assertTrue(assertThrows(CompareException.class, () -> Rubric.read(file, min92)).getMessage().contains(
-                "\"defaults\" has zero_share 95 (line 1, column 27) above its min_share 92 (from --min: the rubric sets "
+                "\"defaults\" has zero_share 95 (line 1, column 15) above its min_share 92 (from --min: the rubric sets "
                         + "none)"));
     }
 
@@ -296,9 +296,9 @@ class RubricTest {
         }
         pages.put("a1-page1-panel4", 0);
         assertEquals(List.of(
-                "rubric " + file + ": line 3, column 4 ($.pages[1]): the rule \"match\": \"9\" fits no page or scene of "
+                "rubric " + file + ": line 3, column 3 ($.pages[1]): the rule \"match\": \"9\" fits no page or scene of "
                         + "this run, so it is not used",
-                "rubric " + file + ": line 4, column 4 ($.pages[2]): the rule \"match\": \"pageZ\" fits no page or scene "
+                "rubric " + file + ": line 4, column 3 ($.pages[2]): the rule \"match\": \"pageZ\" fits no page or scene "
                         + "of this run, so it is not used"), rubric.unusedRules(pages));
         // A run of scenes: the page ranges and the first assignment's panels fit nothing, a scene named pageZ does.
         List<String> scenes = rubric.unusedRules(Map.of("pageZ", 0, "tomsPageJ", 0));
@@ -312,11 +312,11 @@ class RubricTest {
     @Test
     void jsonThatIsNotJsonIsToldInWords() throws Exception {
         assertTrue(bad("[1, 2]").getMessage().endsWith(
-                "line 1, column 2 ($): expected an object with \"defaults\" and \"pages\", found a list ('[')"));
+                "line 1, column 1 ($): expected an object with \"defaults\" and \"pages\", found a list ('[')"));
         assertTrue(bad("{pages: []}").getMessage().endsWith(": not valid JSON here (a word without its quotes, "
                 + "a missing comma, or a comment?)"), bad("{pages: []}").getMessage());
         assertTrue(bad("{\"pages\": [] \"defaults\": {}}").getMessage().endsWith(
-                "line 1, column 15 ($.pages): an object's '}', or a ',' between two of its entries, is missing"));
+                "line 1, column 14 ($.pages): an object's '}', or a ',' between two of its entries, is missing"));
         assertTrue(bad("").getMessage().contains("the file ends before its JSON does"));
         assertFalse(bad("{\"pages\": [], // c\n}").getMessage().contains("setLenient"));
     }
@@ -338,12 +338,44 @@ class RubricTest {
     @Test
     void aBackwardsPageRangeIsAnError() throws Exception {
         Path file = dir.resolve("compare.json");
-        assertEquals("rubric " + file + ": line 1, column 27 ($.pages[0].match): \"match\": \"3-1\": the range 3-1 runs "
+        assertEquals("rubric " + file + ": line 1, column 22 ($.pages[0].match): \"match\": \"3-1\": the range 3-1 runs "
                 + "backwards, so it fits no page: write it 1-3", bad("{\"pages\": [{\"match\": \"3-1\"}]}").getMessage());
         assertTrue(bad("{\"pages\": [{\"match\": \"1, 8 - 6\"}]}").getMessage().contains("the range 8 - 6 runs "
                 + "backwards, so it fits no page: write it 6-8"));
         Files.writeString(file, "{\"pages\": [{\"match\": \"1-3, 5\"}, {\"match\": \"4-4\"}]}");
         assertEquals(2, Rubric.read(file, BASE).rules().size(), "ranges that run forwards, or one page, are fine");
+    }
+
+    /**
+     * Every place given is where what it is about starts, whatever the JSON reader has read of it by then: the
+     * opening quote of a key or a string, a bracket, the first digit of a number, the first letter of a word. Each
+     * column below is counted by hand from the text (from 1).
+     */
+    @Test
+    void placesAreWhereTheirTokensStart() throws Exception {
+        String defaults = "{ \"defaults\": { ";
+        assertEquals(17, defaults.length() + 1, "a value after it starts at column 17");
+        assertEquals("line 1, column 27 ($.defaults.points)", placeOf(defaults + "\"points\": \"x\" } }"), "a string");
+        assertEquals("line 1, column 27 ($.defaults.points)", placeOf(defaults + "\"points\": true } }"), "a word");
+        assertEquals("line 1, column 27 ($.defaults.points)", placeOf(defaults + "\"points\": null } }"), "null");
+        assertEquals("line 1, column 27 ($.defaults.points)", placeOf(defaults + "\"points\": [2] } }"), "a list");
+        assertEquals("line 1, column 30 ($.defaults.min_share)", placeOf(defaults + "\"min_share\": 300 } }"),
+                "a whole number, which the reader reads whole as it looks at it");
+        assertEquals("line 1, column 30 ($.defaults.min_share)", placeOf(defaults + "\"min_share\": -3e5 } }"),
+                "a number it does not");
+        assertEquals("line 1, column 17 ($.defaults.bogus)", placeOf(defaults + "\"bogus\": 1 } }"), "a key");
+        assertEquals("line 1, column 31 ($.defaults.visibility)", placeOf(defaults + "\"visibility\": \"nope\" } }"),
+                "a string read, then found wrong");
+        // What the JSON reader cannot read: at the character it stopped at.
+        assertEquals("line 1, column 29 ($.defaults.points)", placeOf(defaults + "\"points\": 1 \"min_share\": 3 } }"),
+                "the key where a ',' was missing");
+        assertEquals("line 1, column 29 ($.defaults.points)", placeOf(defaults + "\"points\": 1 ] }"), "a ']' in an object");
+        assertEquals("line 1, column 26 ($.defaults.points)", placeOf(defaults + "\"points\":x } }"), "a word without quotes");
+        assertEquals("line 1, column 33 ($)", placeOf(defaults + "\"points\": 1 } } }"), "a third '}'");
+        assertEquals("line 2, column 5 ($.pages[1])", placeOf("{ \"pages\": [ {\"match\": \"1\"}\n    {\"match\": \"2\"} ] }"),
+                "a list's item where a ',' was missing, on the next line");
+        assertEquals("line 1, column 14 ($.defaults): a ':' between a key and its value is missing",
+                bad("{ \"defaults\" 1 }").getMessage().replaceFirst(".*compare.json: ", ""));
     }
 
     private String placeOf(String json) throws Exception {
