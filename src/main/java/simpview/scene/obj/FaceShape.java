@@ -9,7 +9,8 @@ import java.math.BigDecimal;
  * zero or made of rounding errors), and a face whose fan from its first vertex
  * (how SPEC fills a face) covers more or other than its outline: only some
  * faces that are not convex, as the fan from a vertex that sees the whole
- * face is exact.
+ * face is exact (a quad only when it is flat: a twisted one's fan is the
+ * course's own way).
  * Positions are three doubles a vertex; a face is its vertices' indices.
  * Both tests hold under any affine map, so the model's own coordinates tell
  * what the camera's would.
@@ -17,12 +18,13 @@ import java.math.BigDecimal;
 final class FaceShape {
 
     /**
-     * The fewest vertices of a face that the reader warns of as not convex. The course's own dummy.obj holds
-     * ten quads that are not convex (a vertex turned the other way, out of plane by 5 % of their size), drawn
-     * as the course draws them; a star or an L-shape of five vertices or more is a face a student made, and
-     * its fan shows the mistake.
+     * How far out of its plane a quad may be and still be named for its fan, against its edges from the first
+     * vertex: |u . (v x w)| at most this times |u| |v| |w|. The course's own dummy.obj holds ten quads whose
+     * fan is not their outline, twisted out of plane (0.007 of that product), drawn as the course draws them;
+     * a flat dart or arrowhead is a face a student made, and its fan shows the mistake. A quad written with
+     * six decimals, as exporters write them, is flat to well within this.
      */
-    static final int FEWEST_TO_FLAG_CONCAVE = 5;
+    private static final double FLAT_QUAD = 1e-4;
 
     /** How small, against the product of their lengths, a cross product of two edges counts as none. */
     private static final double IN_LINE = 1e-9;
@@ -171,6 +173,33 @@ final class FaceShape {
         double cross = cx * cx + cy * cy + cz * cz;
         double lengths = (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz);
         return cross <= IN_LINE * IN_LINE * lengths;
+    }
+
+    /**
+     * Whether the reader names the face of n vertices for its fan ({@link #fanMisdraws}): a face of five
+     * vertices or more, or a flat quad ({@link #FLAT_QUAD}); a triangle is its own fan.
+     */
+    static boolean namedForFan(double[] p, int[] refs, int n) {
+        return (n >= 5 || n == 4 && flatQuad(p, refs)) && fanMisdraws(p, refs, n);
+    }
+
+    /** Whether the quad refs[0] to refs[3] lies in one plane, to within {@link #FLAT_QUAD}. */
+    static boolean flatQuad(double[] p, int[] refs) {
+        int o = 3 * refs[0];
+        double[] e = new double[9];
+        for (int k = 0; k < 3; k++) {
+            int a = 3 * refs[k + 1];
+            for (int i = 0; i < 3; i++) {
+                e[3 * k + i] = p[a + i] - p[o + i];
+            }
+        }
+        double volume = e[0] * (e[4] * e[8] - e[5] * e[7]) + e[1] * (e[5] * e[6] - e[3] * e[8])
+                + e[2] * (e[3] * e[7] - e[4] * e[6]);
+        double u = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        double v = e[3] * e[3] + e[4] * e[4] + e[5] * e[5];
+        double w = e[6] * e[6] + e[7] * e[7] + e[8] * e[8];
+        double lengths = Math.sqrt(u * v) * Math.sqrt(w);
+        return Math.abs(volume) <= FLAT_QUAD * lengths;
     }
 
     /**

@@ -623,7 +623,7 @@ final class ObjParser {
                 firstInLineStart = line;
             }
         }
-        if (n >= FaceShape.FEWEST_TO_FLAG_CONCAVE && FaceShape.fanMisdraws(vertices.positions, vertexRefs, n)) {
+        if (FaceShape.namedForFan(vertices.positions, vertexRefs, n)) {
             if (concaveFaces++ == 0) {
                 firstConcaveFace = line;
                 firstConcaveSize = n;
