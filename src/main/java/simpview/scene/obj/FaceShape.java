@@ -13,7 +13,7 @@ import java.math.BigDecimal;
  * course's own way).
  * Positions are three doubles a vertex; a face is its vertices' indices.
  * Both tests hold under any affine map, so the model's own coordinates tell
- * what the camera's would.
+ * what the camera's would; a quad's flatness is measured in them.
  */
 final class FaceShape {
 
@@ -180,25 +180,58 @@ final class FaceShape {
      * vertices or more, or a flat quad ({@link #FLAT_QUAD}); a triangle is its own fan.
      */
     static boolean namedForFan(double[] p, int[] refs, int n) {
-        return (n >= 5 || n == 4 && flatQuad(p, refs)) && fanMisdraws(p, refs, n);
+        if (n == 4) {
+            return fanTrianglesDisagree(p, refs) && flatQuad(p, refs) && fanMisdraws(p, refs, n);
+        }
+        return n >= 5 && fanMisdraws(p, refs, n);
+    }
+
+    /**
+     * Whether a quad's two fan triangles, (0, 1, 2) and (0, 2, 3), do not both turn the same way: only then can
+     * its fan misdraw (two that agree make up a flat quad's outline exactly). Cheap, so that most quads are
+     * settled without {@link #fanMisdraws}.
+     */
+    private static boolean fanTrianglesDisagree(double[] p, int[] refs) {
+        int o = 3 * refs[0];
+        int a = 3 * refs[1];
+        int b = 3 * refs[2];
+        int c = 3 * refs[3];
+        double ux = p[a] - p[o];
+        double uy = p[a + 1] - p[o + 1];
+        double uz = p[a + 2] - p[o + 2];
+        double vx = p[b] - p[o];
+        double vy = p[b + 1] - p[o + 1];
+        double vz = p[b + 2] - p[o + 2];
+        double wx = p[c] - p[o];
+        double wy = p[c + 1] - p[o + 1];
+        double wz = p[c + 2] - p[o + 2];
+        double firstX = uy * vz - uz * vy;
+        double firstY = uz * vx - ux * vz;
+        double firstZ = ux * vy - uy * vx;
+        double secondX = vy * wz - vz * wy;
+        double secondY = vz * wx - vx * wz;
+        double secondZ = vx * wy - vy * wx;
+        return !(firstX * secondX + firstY * secondY + firstZ * secondZ > 0);
     }
 
     /** Whether the quad refs[0] to refs[3] lies in one plane, to within {@link #FLAT_QUAD}. */
     static boolean flatQuad(double[] p, int[] refs) {
         int o = 3 * refs[0];
-        double[] e = new double[9];
-        for (int k = 0; k < 3; k++) {
-            int a = 3 * refs[k + 1];
-            for (int i = 0; i < 3; i++) {
-                e[3 * k + i] = p[a + i] - p[o + i];
-            }
-        }
-        double volume = e[0] * (e[4] * e[8] - e[5] * e[7]) + e[1] * (e[5] * e[6] - e[3] * e[8])
-                + e[2] * (e[3] * e[7] - e[4] * e[6]);
-        double u = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-        double v = e[3] * e[3] + e[4] * e[4] + e[5] * e[5];
-        double w = e[6] * e[6] + e[7] * e[7] + e[8] * e[8];
-        double lengths = Math.sqrt(u * v) * Math.sqrt(w);
+        int a = 3 * refs[1];
+        int b = 3 * refs[2];
+        int c = 3 * refs[3];
+        double ux = p[a] - p[o];
+        double uy = p[a + 1] - p[o + 1];
+        double uz = p[a + 2] - p[o + 2];
+        double vx = p[b] - p[o];
+        double vy = p[b + 1] - p[o + 1];
+        double vz = p[b + 2] - p[o + 2];
+        double wx = p[c] - p[o];
+        double wy = p[c + 1] - p[o + 1];
+        double wz = p[c + 2] - p[o + 2];
+        double volume = ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz) + uz * (vx * wy - vy * wx);
+        double lengths = Math.sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz))
+                * Math.sqrt(wx * wx + wy * wy + wz * wz);
         return Math.abs(volume) <= FLAT_QUAD * lengths;
     }
 
