@@ -177,21 +177,23 @@ final class FaceShape {
 
     /**
      * Whether the reader names the face of n vertices for its fan ({@link #fanMisdraws}): a face of five
-     * vertices or more, or a flat quad ({@link #FLAT_QUAD}); a triangle is its own fan.
+     * vertices or more, or a flat quad ({@link #quadNamedForFan}); a triangle is its own fan.
      */
     static boolean namedForFan(double[] p, int[] refs, int n) {
         if (n == 4) {
-            return fanTrianglesDisagree(p, refs) && flatQuad(p, refs) && fanMisdraws(p, refs, n);
+            return quadNamedForFan(p, refs);
         }
         return n >= 5 && fanMisdraws(p, refs, n);
     }
 
     /**
-     * Whether a quad's two fan triangles, (0, 1, 2) and (0, 2, 3), do not both turn the same way: only then can
-     * its fan misdraw (two that agree make up a flat quad's outline exactly). Cheap, so that most quads are
-     * settled without {@link #fanMisdraws}.
+     * Whether the quad refs[0] to refs[3] is named for its fan. With u, v and w its edges from the first vertex,
+     * its fan triangles (0, 1, 2) and (0, 2, 3) have the normals u x v and v x w. When they turn the same way
+     * (a positive dot product) they make up a flat quad's outline exactly: settled at once, as most quads are,
+     * without {@link #fanMisdraws}. Otherwise the quad is named only when it is flat to within
+     * {@link #FLAT_QUAD} (|u . (v x w)|, the volume its edges span) and its fan misdraws.
      */
-    private static boolean fanTrianglesDisagree(double[] p, int[] refs) {
+    private static boolean quadNamedForFan(double[] p, int[] refs) {
         int o = 3 * refs[0];
         int a = 3 * refs[1];
         int b = 3 * refs[2];
@@ -211,28 +213,13 @@ final class FaceShape {
         double secondX = vy * wz - vz * wy;
         double secondY = vz * wx - vx * wz;
         double secondZ = vx * wy - vy * wx;
-        return !(firstX * secondX + firstY * secondY + firstZ * secondZ > 0);
-    }
-
-    /** Whether the quad refs[0] to refs[3] lies in one plane, to within {@link #FLAT_QUAD}. */
-    static boolean flatQuad(double[] p, int[] refs) {
-        int o = 3 * refs[0];
-        int a = 3 * refs[1];
-        int b = 3 * refs[2];
-        int c = 3 * refs[3];
-        double ux = p[a] - p[o];
-        double uy = p[a + 1] - p[o + 1];
-        double uz = p[a + 2] - p[o + 2];
-        double vx = p[b] - p[o];
-        double vy = p[b + 1] - p[o + 1];
-        double vz = p[b + 2] - p[o + 2];
-        double wx = p[c] - p[o];
-        double wy = p[c + 1] - p[o + 1];
-        double wz = p[c + 2] - p[o + 2];
-        double volume = ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz) + uz * (vx * wy - vy * wx);
+        if (firstX * secondX + firstY * secondY + firstZ * secondZ > 0) {
+            return false;
+        }
+        double volume = ux * secondX + uy * secondY + uz * secondZ;
         double lengths = Math.sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz))
                 * Math.sqrt(wx * wx + wy * wy + wz * wz);
-        return Math.abs(volume) <= FLAT_QUAD * lengths;
+        return Math.abs(volume) <= FLAT_QUAD * lengths && fanMisdraws(p, refs, 4);
     }
 
     /**
