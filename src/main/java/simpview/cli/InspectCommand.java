@@ -1,10 +1,8 @@
 package simpview.cli;
 
 import java.io.PrintWriter;
-import java.math.BigInteger;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import java.util.regex.Pattern;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -17,6 +15,7 @@ import simpview.inspect.A1Report;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
 import simpview.inspect.PixelInspector;
+import simpview.inspect.PixelPair;
 import simpview.inspect.PixelReport;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
@@ -43,12 +42,6 @@ import simpview.surface.Rgb;
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {"0:success", "1:scene error", "2:usage error (a pixel outside the panel, too)"})
 final class InspectCommand implements Callable<Integer> {
-
-    /**
-     * A whole number as --at takes it: digits, perhaps a sign. Digits of any script, as every number option
-     * takes them (a Japanese keyboard's full-width ３ is 3).
-     */
-    private static final Pattern WHOLE_NUMBER = Pattern.compile("[+-]?\\p{Nd}+");
 
     static final class What {
         @Option(names = "--page", paramLabel = "N", required = true,
@@ -217,22 +210,14 @@ final class InspectCommand implements Callable<Integer> {
         return ExitCode.OK;
     }
 
-    /** X,Y from --at, inside the panel (or the page). */
+    /** X,Y from --at, inside the panel (or the page), read as the window's Go to pixel reads it. */
     private int[] pixel(int last, String where) {
-        String[] parts = at.split(",", -1);
-        int[] xy = new int[2];
-        usage(parts.length == 2, "--at takes X,Y (two whole numbers, " + where + " coordinates), not '" + at + "'");
-        for (int k = 0; k < 2; k++) {
-            String number = parts[k].strip();
-            usage(WHOLE_NUMBER.matcher(number).matches(), "--at takes X,Y (two whole numbers, " + where
-                    + " coordinates), not '" + at + "'");
-            // A whole number of any size is a place, outside the panel when it is not in it.
-            xy[k] = new BigInteger(number).max(BigInteger.valueOf(-1)).min(BigInteger.valueOf(last + 1)).intValue();
+        try {
+            PixelPair pixel = PixelPair.read(at, where, last);
+            return new int[] {pixel.x(), pixel.y()};
+        } catch (PixelPair.NotAPixel e) {
+            throw new ParameterException(spec.commandLine(), "--at " + e.getMessage());
         }
-        usage(xy[0] >= 0 && xy[0] <= last && xy[1] >= 0 && xy[1] <= last, "--at " + at
-                + " is outside the " + where + ": x and y are 0 to " + last + ", from the " + where
-                + "'s bottom-left pixel, y up");
-        return xy;
     }
 
     private void usage(boolean fine, String message) {

@@ -5,6 +5,7 @@ import java.awt.datatransfer.StringSelection;
 import javax.swing.JFrame;
 import simpview.inspect.HistoryEntry;
 import simpview.inspect.InspectedScene;
+import simpview.inspect.PixelPair;
 import simpview.surface.PageCanvas;
 import simpview.window.instruments.ComparisonLayer;
 import simpview.window.instruments.Inspector;
@@ -211,36 +212,24 @@ final class InspectedPixel {
 
     /**
      * Pins the pixel "x, y" (the panel's coordinates, x right and y up; on
-     * the first assignment's pages the page's), or "(x, y)" as the inspector
-     * writes a pixel, and brings it into view; says why not when the text is
-     * not a pixel.
+     * the first assignment's pages the page's), read as inspect --at reads
+     * it (PixelPair: also "(x, y)" as the inspector writes a pixel, and
+     * "x y"), and brings it into view; says why not when the text is not a
+     * pixel there.
      */
     void goToPixel(String answer) {
         RenderedView shown = onScreen.picture();
-        String text = answer.strip();
-        if (text.length() > 1 && text.startsWith("(") && text.endsWith(")")) {
-            text = text.substring(1, text.length() - 1).strip();
-        }
-        String[] parts = text.split("[,\\s]+");
         boolean pageCoordinates = shown != null && shown.view() instanceof View.OfAssignment1Page;
         int last = pageCoordinates ? PageCanvas.SIZE - 1 : PageCanvas.PANEL - 1;
-        int x;
-        int y;
+        PixelPair pixel;
         try {
-            if (parts.length != 2) {
-                throw new NumberFormatException();
-            }
-            x = Integer.parseInt(parts[0]);
-            y = Integer.parseInt(parts[1]);
-        } catch (NumberFormatException e) {
-            status.say("'" + answer + "' is not a pixel: give x, y, for example 325, 400.");
+            pixel = PixelPair.read(answer, pageCoordinates ? "page" : "panel", last);
+        } catch (PixelPair.NotAPixel e) {
+            status.say(e.getMessage() + ".");
             return;
         }
-        if (x < 0 || y < 0 || x > last || y > last) {
-            status.say("(" + x + ", " + y + ") is outside the " + (pageCoordinates ? "page" : "panel") + ": x and y go "
-                    + "from 0 to " + last + ".");
-            return;
-        }
+        int x = pixel.x();
+        int y = pixel.y();
         int offset = pageCoordinates ? 0 : PageCanvas.MARGIN;
         pinnedX = offset + x;
         pinnedY = offset + last - y;

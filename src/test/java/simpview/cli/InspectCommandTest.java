@@ -293,17 +293,28 @@ class InspectCommandTest {
             assertFalse(run.showsStackTrace(), run.err());
         }
         CliRun outside = CliRun.of("inspect", "--scene", scene.toString(), "--at", "650,10");
-        assertTrue(outside.err().contains("outside the panel: x and y are 0 to 649"), outside.err());
+        assertTrue(outside.err().contains("--at '650,10' is outside the panel: x is 650, and x and y are 0 to 649"),
+                outside.err());
         // A whole number too large for an int is still a place outside the panel, not "not a number".
         for (String far : new String[] {"99999999999,1", "1,-99999999999999999999"}) {
             CliRun run = CliRun.of("inspect", "--scene", scene.toString(), "--at", far);
             assertEquals(2, run.exitCode(), far);
-            assertTrue(run.err().contains("--at " + far + " is outside the panel"), run.err());
+            assertTrue(run.err().contains("--at '" + far + "' is outside the panel"), run.err());
         }
         // Digits of another script are the numbers they are, as in every number option: full-width 3 is 3.
         CliRun wide = CliRun.of("inspect", "--scene", scene.toString(), "--at", "\uFF13,4");
         assertEquals(0, wide.exitCode(), wide.err());
         assertTrue(wide.out().contains("(3, 4)"), wide.out());
+        // The pixel as the inspector writes it, and as the window's Go to pixel takes it, is one too.
+        for (String at : new String[] {"(3, 4)", "3 4"}) {
+            CliRun pair = CliRun.of("inspect", "--scene", scene.toString(), "--at", at);
+            assertEquals(0, pair.exitCode(), pair.err());
+            assertTrue(pair.out().startsWith("pixel (3, 4) of the panel"), pair.out());
+        }
+        CliRun half = CliRun.of("inspect", "--scene", scene.toString(), "--at", "(3, 4");
+        assertEquals(2, half.exitCode(), half.err());
+        assertTrue(half.err().contains("--at '(3, 4' is not a pixel: its '(' is not closed; give x and y, two whole "
+                + "numbers in panel coordinates"), half.err());
     }
 
     @Test

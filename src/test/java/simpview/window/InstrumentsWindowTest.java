@@ -264,8 +264,12 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.onEdt(() -> window().goToPixel(" (3, 4) "));
         assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("Pinned panel pixel (3, 4)"));
         driver.onEdt(() -> window().goToPixel("(3, 4"));
-        assertEquals("'(3, 4' is not a pixel: give x, y, for example 325, 400.",
-                driver.onEdt(() -> window().status().messageText()));
+        assertEquals("'(3, 4' is not a pixel: its '(' is not closed; give x and y, two whole numbers in panel "
+                + "coordinates, for example 325,400 or (325, 400).", driver.onEdt(() -> window().status().messageText()));
+        // read as inspect --at reads it: a number too large for an int is a place outside the panel
+        driver.onEdt(() -> window().goToPixel("99999999999, 1"));
+        assertEquals("'99999999999, 1' is outside the panel: x is 99999999999, and x and y are 0 to 649, from the "
+                + "panel's bottom-left pixel, y up.", driver.onEdt(() -> window().status().messageText()));
         driver.onEdt(() -> window().goToPixel("0, 0"));
         assertTrue(driver.onEdt(() -> window().status().messageText()).startsWith("Pinned panel pixel (0, 0)"));
         driver.onEdt(() -> window().perform(WindowAction.PIN));
