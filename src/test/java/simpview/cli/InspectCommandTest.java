@@ -425,7 +425,8 @@ class InspectCommandTest {
                 "--a1-rule is for the first assignment");
         CliRun off = CliRun.of("inspect", "--assignment", "1", "--page", "1", "--at", "750,10");
         assertEquals(2, off.exitCode());
-        assertTrue(off.err().contains("outside the page: x and y are 0 to 749"), off.err());
+        assertTrue(off.err().contains("--at '750,10' is outside the page: x is 750, and x and y are 0 to 749"),
+                off.err());
         CliRun page = CliRun.of("inspect", "--assignment", "1", "--page", "6", "--at", "10,10");
         assertEquals(2, page.exitCode());
         assertTrue(page.err().contains("--page must be 1 to 5 for the first assignment"), page.err());
