@@ -72,8 +72,9 @@ public abstract sealed class WalkingLineRenderer implements LineRenderer
      * last bit at some steps (-100 at both ends gave -100.00000000000001), and a
      * line at one depth, or of one colour, came out in two shades where the
      * depth cue or a channel falls on a rounding tie (127.5 at z = -100).
+     * Public for the inspector, which works a line's pixel out by it.
      */
-    static double lerp(double a, double b, double s, double t) {
+    public static double lerp(double a, double b, double s, double t) {
         return a == b ? a : s * a + t * b;
     }
 }
