@@ -68,7 +68,8 @@ final class InspectCommand implements Callable<Integer> {
     private Integer assignment;
 
     @Option(names = "--at", paramLabel = "X,Y", required = true,
-            description = "the pixel, in panel coordinates (--assignment 1: page coordinates)")
+            description = "the pixel, in panel coordinates (--assignment 1: page coordinates): X,Y, X Y or "
+                    + "(X, Y) as the report writes a pixel, as the window's Go to pixel (Shift+G) takes it")
     private String at;
 
     @Option(names = "--history", description = "every write attempted at the pixel, in drawing order")
