@@ -253,7 +253,8 @@ final class InspectedPixel {
             int y = y();
             if (x < 0) {
                 status.say("No chain to copy: no pixel is inspected. Point at the picture, or pin a pixel (P, or "
-                        + "Shift+G for its coordinates), then press Ctrl+Shift+C.");
+                        + "Shift+G for its coordinates), then press "
+                        + WindowAction.COPY_CHAIN.keysShown(MenuKey.ofPlatform()) + ".");
                 return;
             }
             int owner = Inspector.ownerAt(shown, x, y);
@@ -278,7 +279,8 @@ final class InspectedPixel {
         if (selected.isEmpty() && x() < 0) {
             // the status line's inspector then holds the zoom alone ("1:1"): no pixel's line to copy
             status.say("Nothing to copy: no pixel is inspected. Point at the picture, or pin a pixel (P, or Shift+G "
-                    + "for its coordinates), then press Ctrl+C; or select text in the inspector panel (I).");
+                    + "for its coordinates), then press " + WindowAction.COPY.keysShown(MenuKey.ofPlatform())
+                    + "; or select text in the inspector panel (I).");
             return;
         }
         String line = selected.isEmpty() ? status.inspectorText() : selected;

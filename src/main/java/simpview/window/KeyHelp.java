@@ -28,12 +28,14 @@ public final class KeyHelp {
             new Row("drop a file", "a .simp: open it (several: the first pages); a picture: compare with it; "
                     + "a folder: check its pictures"));
 
-    static final List<Row> ROWS = rows();
+    /** The rows as the window shows them, its menu key named as its menus name it. */
+    static final List<Row> ROWS = rows(MenuKey.ofPlatform());
 
     private KeyHelp() {
     }
 
-    private static List<Row> rows() {
+    /** The rows with {@code menuKey}'s words for the menus' keys ("Ctrl+O", or "⌘O" on a Mac). */
+    static List<Row> rows(MenuKey menuKey) {
         List<Row> rows = new ArrayList<>();
         rows.add(new Row(null, "Pointer"));
         rows.addAll(GESTURES);
@@ -44,7 +46,7 @@ public final class KeyHelp {
                 rows.add(new Row(null, menu.title() + " menu"));
             }
             if (action.help() != null) {
-                rows.add(new Row(action.keysShown(), action.help()));
+                rows.add(new Row(action.keysShown(menuKey), action.help()));
             }
         }
         return List.copyOf(rows);

@@ -71,7 +71,7 @@ final class OverlayToggles {
             boolean same = overdrawFailures == failures;
             showPicture();
             if (same) {
-                status.say(StatusStrip.HINTS);
+                status.sayHints();
                 return;
             }
             // the other count asked for while one is shown: it takes the place of the one shown
@@ -129,7 +129,7 @@ final class OverlayToggles {
     void toggleBackFaces() {
         if (backFacesShown) {
             showPicture();
-            status.say(StatusStrip.HINTS);
+            status.sayHints();
             return;
         }
         RenderedView view = onScreen.picture();
@@ -166,7 +166,7 @@ final class OverlayToggles {
         if (pageView.skippedShown()) {
             pageView.skipped(null, null);
             legendStrip.show("skipped", null);
-            status.say(StatusStrip.HINTS);
+            status.sayHints();
             return;
         }
         replayForOverlay("Finding the primitives culled and clipped away ...",
@@ -195,7 +195,7 @@ final class OverlayToggles {
         if (pageView.wireShown()) {
             pageView.wire(null);
             legendStrip.show("wire", null);
-            status.say(StatusStrip.HINTS);
+            status.sayHints();
             return;
         }
         showWire();

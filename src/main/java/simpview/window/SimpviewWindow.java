@@ -797,7 +797,7 @@ public final class SimpviewWindow {
         }
         pending = null;
         if (result == null) {
-            status.say(StatusStrip.HINTS);
+            status.sayHints();
             return;
         }
         if (shown != null && !sameView(shown.view(), result.view())) {
@@ -814,7 +814,7 @@ public final class SimpviewWindow {
         status.forgetLastPixel();
         inspected.followPointer();
         inspected.inspect();
-        status.say(result.warnings().isEmpty() ? StatusStrip.HINTS : "Warning: " + String.join("; ", result.warnings()));
+        status.say(result.warnings().isEmpty() ? status.hints() : "Warning: " + String.join("; ", result.warnings()));
         if (coursePage != null && result.warnings().isEmpty()) {
             status.say(coursePage + " · → ← Home End 1-8: its pages · Alt+2: the eight pages");
         }

@@ -30,8 +30,6 @@ import simpview.surface.PageCanvas;
  */
 public final class StatusStrip {
 
-    static final String HINTS = "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · right-drag turn · F fit · Z 1:1 · "
-            + "D depth · P pin · C own colours · ] step · F5 redraw · Ctrl+O open · Ctrl+S save · F1 all keys";
     /** Quick pictures never flash a progress bar. */
     static final int PROGRESS_DELAY_MS = 150;
     private static final String TEXT = "text";
@@ -41,7 +39,9 @@ public final class StatusStrip {
 
     private final CardLayout cards = new CardLayout();
     private final JPanel panel = new JPanel(cards);
-    private final JLabel text = new JLabel(HINTS);
+    /** The key hints, the menus' keys named as the menus name them. */
+    private final String hints = hints(MenuKey.ofPlatform());
+    private final JLabel text = new JLabel(hints);
     private final JLabel inspector = new JLabel(" ");
     private final JLabel working = new JLabel();
     private final JProgressBar bar = new JProgressBar();
@@ -57,7 +57,7 @@ public final class StatusStrip {
     StatusStrip(Runnable onCancel) {
         panel.setPreferredSize(new Dimension(PageCanvas.SIZE, 46));
         panel.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
-        text.setToolTipText(HINTS);
+        text.setToolTipText(hints);
         bar.setStringPainted(true);
         // Keys belong to the page: a focused button would swallow Space.
         cancel.setFocusable(false);
@@ -91,6 +91,16 @@ public final class StatusStrip {
         cards.show(panel, TEXT);
     }
 
+    /**
+     * The key hints the line shows between messages, with {@code menuKey}'s
+     * words for opening and saving: "Ctrl+O open", or "⌘O open" on a Mac.
+     */
+    static String hints(MenuKey menuKey) {
+        return "Click/→ next · ← back · 1–8 · wheel zoom · drag pan · right-drag turn · F fit · Z 1:1 · D depth · "
+                + "P pin · C own colours · ] step · F5 redraw · " + WindowAction.OPEN.keysShown(menuKey) + " open · "
+                + WindowAction.SAVE.keysShown(menuKey) + " save · F1 all keys";
+    }
+
     JPanel component() {
         return panel;
     }
@@ -112,6 +122,16 @@ public final class StatusStrip {
         // a line longer than the window is cut with "...": the whole of it shows on hovering
         text.setToolTipText(message);
         cards.show(panel, TEXT);
+    }
+
+    /** Back to the key hints. */
+    void sayHints() {
+        say(hints);
+    }
+
+    /** The key hints as this line shows them. */
+    String hints() {
+        return hints;
     }
 
     /**

@@ -1,8 +1,5 @@
 package simpview.window;
 
-import java.awt.GraphicsEnvironment;
-import java.awt.Toolkit;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;
@@ -23,7 +20,7 @@ import javax.swing.KeyStroke;
  *
  * <p>Keys are written as {@link KeyStroke#getKeyStroke(String)} reads them;
  * "menu" stands for the platform's menu-shortcut key (Ctrl, or Command on a
- * Mac).
+ * Mac: {@link MenuKey}).
  */
 public enum WindowAction {
 
@@ -245,9 +242,7 @@ public enum WindowAction {
         KeyStroke stroke;
         if (key.startsWith("menu ")) {
             KeyStroke rest = KeyStroke.getKeyStroke(key.substring("menu ".length()));
-            int menu = GraphicsEnvironment.isHeadless() ? InputEvent.CTRL_DOWN_MASK
-                    : Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
-            stroke = KeyStroke.getKeyStroke(rest.getKeyCode(), rest.getModifiers() | menu);
+            stroke = KeyStroke.getKeyStroke(rest.getKeyCode(), rest.getModifiers() | MenuKey.ofPlatform().mask());
         } else {
             stroke = KeyStroke.getKeyStroke(key);
         }
@@ -258,38 +253,30 @@ public enum WindowAction {
     }
 
     /**
-     * Its keys as F1 and the README show them: "Ctrl+Shift+O", "→, Space, Page
+     * Its keys as F1 and the README show them, with {@code menuKey} named as
+     * the menus name it: "Ctrl+Shift+O" (on a Mac "⇧⌘O"), "→, Space, Page
      * Down" (the keypad's copies left out); the pages' row "1 … 8".
      */
-    public String keysShown() {
+    String keysShown(MenuKey menuKey) {
         if (this == PAGE_1) {
             return "1 … 8";
         }
         List<String> shown = new ArrayList<>();
         for (String key : keys) {
             if (!key.startsWith("KP_") && !key.startsWith("NUMPAD")) {
-                shown.add(describe(key));
+                shown.add(describe(key, menuKey));
             }
         }
         return String.join(", ", shown);
     }
 
-    private static String describe(String key) {
+    private static String describe(String key, MenuKey menuKey) {
         if (key.startsWith("typed ")) {
             return key.substring("typed ".length());
         }
-        StringBuilder text = new StringBuilder();
-        String[] words = key.split(" ");
-        for (int k = 0; k < words.length - 1; k++) {
-            text.append(switch (words[k]) {
-                case "menu", "ctrl" -> "Ctrl";
-                case "shift" -> "Shift";
-                case "alt" -> "Alt";
-                default -> throw new IllegalStateException("unknown modifier in " + key);
-            }).append('+');
-        }
-        String last = words[words.length - 1];
-        text.append(switch (last) {
+        List<String> words = List.of(key.split(" "));
+        String last = words.get(words.size() - 1);
+        String shown = switch (last) {
             case "CLOSE_BRACKET" -> "]";
             case "OPEN_BRACKET" -> "[";
             case "BACK_SLASH" -> "\\";
@@ -303,7 +290,7 @@ public enum WindowAction {
             case "ESCAPE" -> "Escape";
             case "BACK_SPACE" -> "Backspace";
             default -> last.length() == 1 ? last : last.charAt(0) + last.substring(1).toLowerCase(Locale.ROOT);
-        });
-        return text.toString();
+        };
+        return menuKey.shown(words.subList(0, words.size() - 1), shown);
     }
 }

@@ -143,7 +143,7 @@ public class InspectorPanelWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> window.overdrawShownMax() == 3, "the overdraw instead of the failures");
         driver.press(KeyEvent.VK_V);
         driver.awaitEdt(() -> window.overdrawShownMax() == -1, "the page again");
-        assertEquals(StatusStrip.HINTS, driver.onEdt(() -> window.status().messageText()), "no word of the overlay left");
+        assertEquals(driver.onEdt(() -> window.status().hints()), driver.onEdt(() -> window.status().messageText()), "no word of the overlay left");
 
         // K: the back faces: only the last triangle, (60, 60) (60, 90) (90, 60), is clockwise.
         driver.press(KeyEvent.VK_K);
