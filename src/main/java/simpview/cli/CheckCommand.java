@@ -27,6 +27,7 @@ import simpview.compare.SubmissionNames;
 import simpview.pages.A1Rule;
 import simpview.pages.Assignment1;
 import simpview.pages.PageContext;
+import simpview.scene.PlainPath;
 import simpview.surface.DrawingThreads;
 
 /**
@@ -230,7 +231,7 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
      * the picture or its scene is not where the row says.
      */
     static String compareCommand(Path dir, Path scene, BatchRow row, String options, String firstOptions) {
-        Path picture = dir.resolve(row.file());
+        Path picture = PlainPath.of(dir.resolve(row.file())); // of the folder ".": page1.png, not ./page1.png
         if (!Files.isRegularFile(picture)) {
             return null;
         }
@@ -239,7 +240,7 @@ public final class CheckCommand implements Callable<Integer>, NamedOutputs.OfCom
         if (first.lookingAt()) {
             what = "--assignment 1 --page " + first.group(1) + firstOptions;
         } else if (scene != null) {
-            Path file = Files.isDirectory(scene) ? scene.resolve(row.target()) : scene;
+            Path file = PlainPath.of(Files.isDirectory(scene) ? scene.resolve(row.target()) : scene);
             if (!Files.isRegularFile(file)) {
                 return null;
             }

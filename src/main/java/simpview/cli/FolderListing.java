@@ -25,6 +25,7 @@ import simpview.compare.Count;
 import simpview.compare.SubmissionNames;
 import simpview.compare.WithoutPictures;
 import simpview.pages.SceneList;
+import simpview.scene.PlainPath;
 
 /**
  * The pictures of a folder (and its subfolders) as a batch takes them, in natural order of their paths
@@ -209,9 +210,9 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
      */
     Optional<String> linkOut(Path picture, Path dir) {
         Path target = outside.get(picture);
-        return target == null ? Optional.empty() : Optional.of(picture + " is a link to " + target + ", which is "
-                + "outside " + dir + ": simpview follows no link out of the folder it grades; put the picture itself "
-                + "in its place");
+        return target == null ? Optional.empty() : Optional.of(PlainPath.of(picture) + " is a link to " + target
+                + ", which is outside " + folderNamed(dir) + ": simpview follows no link out of the folder it grades; "
+                + "put the picture itself in its place");
     }
 
     /** Whether a file's name ends with one of {@code endings} (lower case), letters of either case alike. */
@@ -244,12 +245,21 @@ record FolderListing(List<Path> pictures, int hidden, List<Path> unreadable, Lis
         String why = " (simpview follows no link out of the folder it grades: put what it leads to itself in its place)";
         if (folders.size() == 1) {
             return dir.relativize(folders.get(0).getKey()) + " is a link to " + folders.get(0).getValue()
-                    + ", a folder outside " + dir + ": it was not looked into" + why;
+                    + ", a folder outside " + folderNamed(dir) + ": it was not looked into" + why;
         }
         List<String> named = folders.stream().map(e -> dir.relativize(e.getKey()) + " (to " + e.getValue() + ")")
                 .toList();
-        return Count.of(folders.size(), "link") + " to folders outside " + dir + " were not looked into: "
-                + UsageWords.firstThree(named) + why;
+        return Count.of(folders.size(), "link") + " to folders outside " + folderNamed(dir)
+                + " were not looked into: " + UsageWords.firstThree(named) + why;
+    }
+
+    /**
+     * The folder graded as a note of a link out of it names it: as it was given, without "." parts, or in full when
+     * it was given as "." ("outside ." would name nothing).
+     */
+    private static String folderNamed(Path dir) {
+        Path plain = PlainPath.of(dir);
+        return plain.toString().equals(".") ? dir.toAbsolutePath().normalize().toString() : plain.toString();
     }
 
     /** What the batch says of the hidden pictures it left out, once: "" when there were none. */

@@ -18,6 +18,7 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
 import simpview.scene.FileProblem;
+import simpview.scene.PlainPath;
 
 /**
  * A picture to compare: where its panel is, the panel's pixels (650x650
@@ -52,8 +53,10 @@ public final class Picture {
     }
 
     /** Reads a picture file and finds its panel; every way this can fail is a clear CompareException. */
-    public static Picture read(Path file) throws CompareException {
-        Objects.requireNonNull(file, "file must not be null");
+    public static Picture read(Path named) throws CompareException {
+        Objects.requireNonNull(named, "file must not be null");
+        // named in every message and report without "." parts: a folder "." checked holds page1.png, not ./page1.png
+        Path file = PlainPath.of(named);
         PngCodec.Pixels pixels = readPixels(file);
         String name = file.toString();
         PanelPlace place = PanelFinder.find(pixels.rgb(), pixels.width(), pixels.height(), name);
@@ -83,7 +86,8 @@ public final class Picture {
     }
 
     /** A file's pixels: PNG decoded here, other formats (and rarer PNGs) by ImageIO. */
-    static PngCodec.Pixels readPixels(Path file) throws CompareException {
+    static PngCodec.Pixels readPixels(Path named) throws CompareException {
+        Path file = PlainPath.of(named);
         byte[] bytes = readBytes(file);
         if (bytes.length == 0) {
             throw new CompareException(file + " is empty (0 bytes): no picture was saved in it; save or copy the "

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import simpview.scene.FileProblem;
+import simpview.scene.PlainPath;
 
 /**
  * Scenes named on the command line, as pages in the order given: a folder
@@ -66,7 +67,7 @@ public final class SceneList {
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*.simp")) {
             for (Path f : files) {
                 if (Files.isRegularFile(f)) {
-                    scenes.add(f);
+                    scenes.add(PlainPath.of(f)); // the folder "." lists bad.simp, not ./bad.simp
                 }
             }
         } catch (IOException e) {

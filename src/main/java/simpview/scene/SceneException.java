@@ -68,7 +68,8 @@ public final class SceneException extends Exception {
     private static String format(Path file, int line, int column, String lineText, String problem,
             String includedFrom) {
         StringBuilder sb = new StringBuilder();
-        sb.append(file == null ? "<scene>" : file.toString());
+        // named without "." parts: a scene of the folder "." is bad.simp, not ./bad.simp
+        sb.append(file == null ? "<scene>" : PlainPath.of(file).toString());
         if (line > 0) {
             sb.append(':').append(line);
             if (column > 0) {

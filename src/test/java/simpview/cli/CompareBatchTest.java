@@ -16,6 +16,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -755,5 +756,31 @@ public class CompareBatchTest {
                 dir.resolve("out").toString());
         assertTrue(run.out().contains("no picture of tri.simp in bob was found; bob/tir.png is named like no scene: did "
                 + "you mean tri.png? |"), run.out());
+    }
+
+    /**
+     * check of a folder given as "ann/." (as "." is) named its pictures ann/./page2.png and ./page2.png: by the
+     * folder given, without its "." parts, in the errors and the command to run next.
+     */
+    @Test
+    void aFolderGivenWithDotPartsNamesItsPicturesWithoutThem() throws Exception {
+        Path ann = dir.resolve("ann");
+        png(ann.resolve("page1.png"), paint(page(1), 100, 100, 500, 500, 0xFF00FF));
+        Files.writeString(ann.resolve("page2.png"), "junk");
+        CliRun run = CliRun.of("check", ann + "/.");
+        assertTrue(run.out().contains(" " + ann.resolve("page2.png") + " is not a picture simpview can read"), run.out());
+        assertTrue(run.out().contains("simpview compare " + ann.resolve("page1.png") + " --page 1"), run.out());
+        assertFalse(run.out().contains("/./") || run.err().contains("/./"), run.out() + run.err());
+    }
+
+    /** A link out of the folder "." names the folder in full: "outside ." named nothing. */
+    @Test
+    void aLinkOutOfTheFolderDotNamesTheFolderInFull() {
+        Path link = Path.of(".").resolve("page3.png");
+        FolderListing listing = new FolderListing(List.of(link), 0, List.of(), List.of(),
+                Map.of(link, Path.of("/etc/hostname")));
+        assertEquals("page3.png is a link to /etc/hostname, which is outside " + Path.of("").toAbsolutePath()
+                + ": simpview follows no link out of the folder it grades; put the picture itself in its place",
+                listing.linkOut(link, Path.of(".")).orElseThrow());
     }
 }

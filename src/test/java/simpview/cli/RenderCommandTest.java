@@ -66,6 +66,25 @@ class RenderCommandTest {
         assertFalse(centre(out.resolve("mix-b.png")) == centre(out.resolve("mix2-b.png")), "two scenes, two pictures");
     }
 
+    /**
+     * render --scenes . named a scene that fails ./bad.simp: a folder given with "." parts ("scenes/.", as ".")
+     * names its scenes without them, in the errors and in the contact sheet's "left out"; the good one is written.
+     */
+    @Test
+    void aFolderGivenWithDotPartsNamesItsScenesWithoutThem() throws Exception {
+        scene("scenes/good.simp", -10);
+        Files.writeString(dir.resolve("scenes/bad.simp"), "line (0,0,-10\n");
+        String folder = dir.resolve("scenes") + "/.";
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", folder, "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith("bad.png not written: " + dir.resolve("scenes/bad.simp") + ":1:"), run.err());
+        assertEquals(List.of("good.png"), names(out));
+        CliRun sheet = CliRun.of("render", "--contact-sheet", folder, "--out", dir.resolve("sheet.png").toString());
+        assertTrue(sheet.err().startsWith(dir.resolve("scenes/bad.simp") + " left out: " + dir.resolve("scenes/bad.simp")
+                + ":1:"), sheet.err());
+    }
+
     @Test
     void scenesOfOneNameAsLettersOfEitherCaseAreNamedByTheirFoldersToo() throws Exception {
         Path upper = scene("a3/Cube.simp", -10);

@@ -32,4 +32,13 @@ class SceneExceptionTest {
         assertEquals(line.charAt(50_000), parts[1].charAt(parts[2].indexOf('^')), "the caret under its character");
         assertEquals(4 + 1 + 120 + 1, parts[1].length(), "both ends cut");
     }
+
+    /** render --scenes . named its scenes ./bad.simp: the "." parts are left out, the file is the same. */
+    @Test
+    void theFileIsNamedWithoutItsDotParts() {
+        Path file = Path.of(".").resolve("bad.simp");
+        SceneException e = new SceneException(file, 1, 6, "line (0,0,-10", "expected a number");
+        assertEquals("bad.simp:1:6: expected a number\n    line (0,0,-10\n         ^", e.getMessage());
+        assertEquals(file, e.file(), "the file as it was read");
+    }
 }
