@@ -57,6 +57,10 @@ public final class SceneList {
         if (!named.toString().endsWith(".simp") && Files.isRegularFile(withExtension)) {
             return withExtension;
         }
+        String link = FileProblem.brokenLink(named);
+        if (link != null) { // there, as ls shows it, but leading to no file
+            throw new IllegalArgumentException("no scene " + named + ": it " + link);
+        }
         throw new IllegalArgumentException("no scene " + named + (named.toString().endsWith(".simp") ? ""
                 : " (nor " + withExtension.getFileName() + ")") + " in " + named.toAbsolutePath().getParent());
     }

@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -83,6 +84,30 @@ class RenderCommandTest {
         CliRun sheet = CliRun.of("render", "--contact-sheet", folder, "--out", dir.resolve("sheet.png").toString());
         assertTrue(sheet.err().startsWith(dir.resolve("scenes/bad.simp") + " left out: " + dir.resolve("scenes/bad.simp")
                 + ":1:"), sheet.err());
+    }
+
+    /**
+     * A model or a scene named on the command line that is a loop of symbolic links says so: the model "file not
+     * found", the scene "no scene loop.simp in" its folder, where ls shows the file. Skipped where links cannot be
+     * made.
+     */
+    @Test
+    void aLoopOfSymbolicLinksIsNamedAsOne() throws Exception {
+        try {
+            Files.createSymbolicLink(dir.resolve("self.obj"), Path.of("self.obj"));
+            Files.createSymbolicLink(dir.resolve("loop.simp"), Path.of("loop.simp"));
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            Assumptions.abort("no symbolic links here: " + e);
+        }
+        Path scene = Files.writeString(dir.resolve("model.simp"), "# a lit scene\nobj \"self\"\n");
+        CliRun run = CliRun.of("render", "--scene", scene.toString(), "--out", dir.resolve("model.png").toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertTrue(run.err().startsWith(scene + ":2:5: self.obj is a loop of symbolic links (self.obj → self.obj); "
+                + "looked for " + dir.resolve("self.obj")), run.err());
+        CliRun loop = CliRun.of("render", "--scenes", dir.resolve("loop.simp").toString(), "--out-dir",
+                dir.resolve("out").toString());
+        assertTrue(loop.err().startsWith("simpview: no scene " + dir.resolve("loop.simp") + ": it is a loop of symbolic "
+                + "links (loop.simp → loop.simp)\n"), loop.err());
     }
 
     @Test

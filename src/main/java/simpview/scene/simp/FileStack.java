@@ -277,11 +277,20 @@ final class FileStack implements AutoCloseable {
         if (found == null) {
             reach(places.here());
             reach(places.working());
+            String looked = "; looked for " + places.here().toAbsolutePath().normalize()
+                    + (places.hereIsWorking() ? "" : " and " + places.working().normalize());
+            // a link that leads nowhere is there, as ls shows it: "file not found" would send one looking for a file
+            String link = FileProblem.brokenLink(places.here());
+            if (link != null) {
+                throw from.error(c.argumentIndex, places.fileName() + " " + link + looked);
+            }
+            link = places.hereIsWorking() ? null : FileProblem.brokenLink(places.working());
+            if (link != null) {
+                throw from.error(c.argumentIndex, places.working().normalize() + " " + link + looked);
+            }
             String hint = (name.endsWith(extension) ? " (" + extension + " is added to the name for you)" : "")
                     + places.nearMisses(name) + besideAnIncluder(name, extension, from, c);
-            String here = places.here().toAbsolutePath().normalize().toString();
-            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + "; looked for " + here
-                    + (places.hereIsWorking() ? "" : " and " + places.working().normalize()));
+            throw from.error(c.argumentIndex, "file not found: " + places.fileName() + hint + looked);
         }
         boolean takesOver = !places.hereIsWorking() && found.equals(places.working());
         return new Located(found, takesOver ? places.here() : null);
@@ -445,6 +454,10 @@ final class FileStack implements AutoCloseable {
         } catch (IOException | SecurityException e) {
             reach(candidate);
             reachAlso(alsoWatched);
+            String link = FileProblem.brokenLink(candidate);
+            if (link != null) {
+                throw error.apply(shown + " " + link);
+            }
             if (e instanceof NoSuchFileException) {
                 throw error.apply("file not found: " + shown);
             }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -232,6 +233,42 @@ class FileStackTest {
         SceneFixture scene = new SceneFixture(dir);
         scene.write("s", "file zero");
         assertTrue(scene.failure("s").problem().startsWith("not a regular file"));
+    }
+
+    /** Makes {@code link}, leading to {@code target} as written; the test is skipped where links cannot be made. */
+    private static void link(Path link, String target) {
+        try {
+            Files.createSymbolicLink(link, Path.of(target));
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            Assumptions.abort("no symbolic links here: " + e);
+        }
+    }
+
+    /**
+     * An include and a top file that are a loop of symbolic links, or a link to what does not exist (an obj:
+     * RenderCommandTest):
+     * each is there, as ls shows it, so "file not found" sent one looking for a file; the error says what the
+     * link is, at the command, with its include chain.
+     */
+    @Test
+    void aLinkThatLeadsNowhereIsNamedAsOne() throws Exception {
+        Path parts = Files.createDirectory(dir.resolve("parts"));
+        link(parts.resolve("loop.simp"), "back.simp");
+        link(parts.resolve("back.simp"), "loop.simp");
+        link(parts.resolve("gone.simp"), "nothere.simp");
+        SceneFixture scene = new SceneFixture(dir);
+        scene.write("s", "# top", "file \"parts/car\"");
+        scene.write("parts/car", "file \"loop\"");
+        SceneException e = scene.failure("s");
+        assertEquals(parts.resolve("car.simp") + ":1:6, included from " + dir.resolve("s.simp") + ":2: loop.simp is a "
+                + "loop of symbolic links (loop.simp → back.simp → loop.simp); looked for " + parts.resolve("loop.simp")
+                + " and " + Path.of("loop.simp").toAbsolutePath(), e.getMessage().lines().findFirst().orElseThrow());
+        scene.write("parts/car", "file \"gone\"");
+        assertTrue(scene.failure("s").problem().startsWith("gone.simp is a link to nothere.simp, which does not exist"
+                + "; looked for "), scene.failure("s").problem());
+        SceneException top = new SceneFixture(parts).failure("loop");
+        assertEquals(parts.resolve("loop.simp") + " is a loop of symbolic links (loop.simp → back.simp → loop.simp)",
+                top.problem());
     }
 
     @Test
