@@ -274,7 +274,12 @@ public final class Picture {
 
     private static byte[] readBytes(Path file) throws CompareException {
         if (!Files.exists(file)) {
-            if (Files.isSymbolicLink(file)) { // ls lists it, and a folder's batch takes it: say what it is
+            // ls lists it, and a folder's batch takes it: say what it is, a loop of links or a link to nothing
+            String link = FileProblem.brokenLink(file);
+            if (link != null) {
+                throw new CompareException(file + " " + link + ": put the picture itself in its place");
+            }
+            if (Files.isSymbolicLink(file)) {
                 throw new CompareException(file + " is a link to " + linkTarget(file) + ", which does not exist: "
                         + "put the picture itself in its place");
             }

@@ -219,6 +219,20 @@ class ClassFolderTest {
         assertFalse(check.showsStackTrace(), check.err());
     }
 
+    /** A link that is a loop of links was "a link to page2.png, which does not exist": it is a loop, said so. */
+    @Test
+    void aLoopOfLinksIsARowSayingSo() throws Exception {
+        Path mine = dir.resolve("mine");
+        writePng(mine.resolve("page1.png"), page(1));
+        Files.createSymbolicLink(mine.resolve("page2.png"), Path.of("page2.png"));
+
+        CliRun check = CliRun.of("check", mine.toString(), "--pages", "1-2");
+
+        assertTrue(check.out().contains("page2.png  page 2 (seed 361)  ERROR             " + mine.resolve("page2.png")
+                + " is a loop of symbolic links (page2.png → page2.png): put the picture itself in its place\n"),
+                check.out());
+    }
+
     /**
      * A link to a folder of pictures in the folder (renders -> build/renders) is looked into, as a file manager shows
      * it; a link back up to a folder on the way is no endless walk.
