@@ -22,7 +22,6 @@ import java.util.List;
 import javax.swing.JComponent;
 import simpview.pages.A1Marks;
 import simpview.surface.PageCanvas;
-import simpview.window.instruments.Outlines;
 
 /**
  * The page on screen: the finished image copied at the zoom and place that
@@ -71,18 +70,8 @@ public final class PageView extends JComponent {
     /** The culled and the clipped-away primitives' outlines (image coordinates), or null for none. */
     private transient List<double[]> culled;
     private transient List<double[]> clipped;
-    /**
-     * The wire, and the culled and clipped-away outlines, as last drawn over the view (transparent elsewhere), and
-     * what they were drawn of and where.
-     */
-    private transient BufferedImage wirePicture;
-    private transient BufferedImage skippedPicture;
-    private transient OutlinesDrawn outlinesDrawn;
-
-    /** What the outlines' pictures were drawn of, and at which zoom, pan and size: equal, they are drawn again the same. */
-    private record OutlinesDrawn(List<double[]> wire, List<double[]> culled, List<double[]> clipped, double zoom,
-            double x, double y, int unit, int width, int height) {
-    }
+    /** The wire, and the culled and clipped-away outlines, as last drawn over the view. */
+    private final transient OutlinePictures outlinePictures;
     static final Color CULLED = new Color(255, 160, 0);
     static final Color CLIPPED = new Color(0, 200, 255);
     /** Device pixels a point of the desktop, as last laid out or painted (1.5 at 150 %). */
@@ -92,6 +81,12 @@ public final class PageView extends JComponent {
     private double shiftY;
 
     PageView() {
+        this(OutlinePictures.SLICE_NANOS);
+    }
+
+    /** A view whose outlines are drawn again {@code sliceNanos} at a time (tests take less, to see the slices). */
+    PageView(long sliceNanos) {
+        outlinePictures = new OutlinePictures(this, WIRE, CULLED, CLIPPED, sliceNanos);
         setMinimumSize(new Dimension(100, 100));
         setOpaque(true);
         addComponentListener(new ComponentAdapter() {
@@ -352,80 +347,42 @@ public final class PageView extends JComponent {
 
     /**
      * The outlines over the page, cut to the panel: what lies outside it is not on the page. They are drawn, in
-     * opaque colours, into pictures of the view's size, and those are copied to the screen, the wire's at its
-     * share over the page: drawn straight to the screen in its translucent colour, X11's pipeline took 110-190 ms
-     * each repaint for page-d's 16,026 outlines (and Java2D's own loops, into a picture, 100 times as long as in
-     * an opaque one). The pictures are drawn again only when the outlines, the zoom, the pan or the view's size
-     * changed.
+     * opaque colours, into pictures of the view's size ({@link OutlinePictures}), and those are copied to the
+     * screen, the wire's at its share over the page: drawn straight to the screen in its translucent colour, X11's
+     * pipeline took 110-190 ms each repaint for page-d's 16,026 outlines (and Java2D's own loops, into a picture,
+     * 100 times as long as in an opaque one).
      */
     private void paintWire(Graphics2D graphics) {
         if (wire == null && culled == null) {
-            wirePicture = null;
-            skippedPicture = null;
-            outlinesDrawn = null;
+            outlinePictures.clear();
             return;
         }
+        OutlinePictures.Drawn now = outlinesNow();
+        if (now != null) {
+            outlinePictures.paint(graphics, now, WIRE_OVER_PAGE);
+        }
+    }
+
+    /** What the outlines' pictures are to show now, or null while the view has no size. */
+    private OutlinePictures.Drawn outlinesNow() {
         int width = (int) Math.ceil(getWidth() * scale);
         int height = (int) Math.ceil(getHeight() * scale);
         if (width <= 0 || height <= 0) {
-            return;
-        }
-        OutlinesDrawn now = new OutlinesDrawn(wire, culled, clipped, zoomPan.zoom(), zoomPan.originX(),
-                zoomPan.originY(), zoomPan.unit(), width, height);
-        if (!now.equals(outlinesDrawn)) {
-            wirePicture = drawOutlines(wirePicture, width, height, wire, WIRE, null, null);
-            skippedPicture = drawOutlines(skippedPicture, width, height, culled, CULLED, clipped, CLIPPED);
-            outlinesDrawn = now;
-        }
-        if (wire != null) {
-            Graphics2D g = (Graphics2D) graphics.create();
-            g.setComposite(WIRE_OVER_PAGE);
-            g.drawImage(wirePicture, 0, 0, null);
-            g.dispose();
-        }
-        if (culled != null) {
-            graphics.drawImage(skippedPicture, 0, 0, null);
-        }
-    }
-
-    /**
-     * {@code picture} (or a new one when it is not of the view's size) with only these outlines on it, opaque; null
-     * when there are none to draw.
-     */
-    private BufferedImage drawOutlines(BufferedImage picture, int width, int height, List<double[]> shapes,
-            Color colour, List<double[]> moreShapes, Color moreColour) {
-        if (shapes == null && moreShapes == null) {
             return null;
         }
-        BufferedImage drawn = picture != null && picture.getWidth() == width && picture.getHeight() == height
-                ? picture : new BufferedImage(width, height, BufferedImage.TYPE_INT_ARGB);
-        Graphics2D g = drawn.createGraphics();
-        try {
-            g.setComposite(AlphaComposite.Clear);
-            g.fillRect(0, 0, width, height);
-            g.setComposite(AlphaComposite.SrcOver);
-            double left = zoomPan.screenX(PageCanvas.MARGIN);
-            double top = zoomPan.screenY(PageCanvas.MARGIN);
-            double side = PageCanvas.PANEL * zoomPan.zoom();
-            g.clip(new Rectangle2D.Double(left, top, side, side));
-            // Not antialiased: 1-px lines, a dozen times faster to draw than antialiased ones (Overlays.wireOverFill:
-            // page-d's 16,026 outlines 57 ms antialiased, 4.8 ms not, against 9.9 ms to draw the page).
-            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_OFF);
-            g.setStroke(new BasicStroke(zoomPan.unit()));
-            outlines(g, shapes, colour);
-            outlines(g, moreShapes, moreColour);
-        } finally {
-            g.dispose();
-        }
-        return drawn;
+        return new OutlinePictures.Drawn(wire, culled, clipped, zoomPan.zoom(), zoomPan.originX(), zoomPan.originY(),
+                zoomPan.unit(), width, height);
     }
 
-    private void outlines(Graphics2D g, List<double[]> shapes, Color colour) {
-        if (shapes == null) {
-            return;
-        }
-        g.setColor(colour);
-        g.draw(Outlines.path(shapes, zoomPan::screenX, zoomPan::screenY));
+    /** The outlines' pictures: for the tests. */
+    OutlinePictures outlinePictures() {
+        return outlinePictures;
+    }
+
+    /** Whether the outlines' pictures shown are those of the zoom, pan and size now, none still being drawn. */
+    boolean outlinesFinished() {
+        OutlinePictures.Drawn now = outlinesNow();
+        return now != null && outlinePictures.finished(now);
     }
 
     /**

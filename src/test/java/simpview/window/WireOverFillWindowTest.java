@@ -8,7 +8,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Wire over fill (W) on a scene of tens of thousands of primitives, in the real window: zooming and panning
- * under it keeps the window answering, as a page of the course's size (page-d, 16,026 outlines) must.
+ * under it keeps the window answering, as a page of the course's size (page-d, 16,026 outlines) must, and the
+ * wire is drawn at the zoom it ends at.
  */
 @Tag("timed")
 class WireOverFillWindowTest extends WindowTestCase {
@@ -36,5 +37,6 @@ class WireOverFillWindowTest extends WindowTestCase {
         }
         assertTrue(stall < LargeSceneWindowTest.MAX_STALL_MS + machine, "the EDT stalled for " + stall
                 + " ms drawing " + POLYGONS + " outlines, while a plain thread was at most " + machine + " ms late");
+        driver.awaitEdt(() -> window.pageView().outlinesFinished(), "the wire drawn at the last zoom");
     }
 }
