@@ -63,29 +63,20 @@ class OutlinePicturesTest {
             PageView view = new PageView();
             PageView bare = new PageView();
             view.wire(shapes);
-            assertSameScreen(wireOver(bare, drawnAtOnce(view, shapes)), paint(view), "fit");
+            assertSameScreen(wireOver(bare, drawnAtOnce(view, shapes)), OutlinesOverPageTest.painted(view), "fit");
             for (PageView v : List.of(view, bare)) {
                 v.zoomPan().zoomAbout(300, 400, 3);
             }
-            BufferedImage zoomed = paint(view);
+            BufferedImage zoomed = OutlinesOverPageTest.painted(view);
             assertTrue(view.outlinesFinished(), "3x");
             assertSamePixels(drawnAtOnce(view, shapes), view.outlinePictures().wirePicture(), "3x");
             assertSameScreen(wireOver(bare, drawnAtOnce(view, shapes)), zoomed, "3x");
         });
     }
 
-    private static BufferedImage paint(PageView view) {
-        view.setSize(750, 750);
-        BufferedImage screen = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
-        Graphics2D g = screen.createGraphics();
-        view.paint(g);
-        g.dispose();
-        return screen;
-    }
-
     /** The view without outlines painted, and {@code wire} over it at the wire's share: the screen before slices. */
     private static BufferedImage wireOver(PageView bare, BufferedImage wire) {
-        BufferedImage screen = paint(bare);
+        BufferedImage screen = OutlinesOverPageTest.painted(bare);
         Graphics2D g = screen.createGraphics();
         g.setComposite(AlphaComposite.SrcOver.derive(200 / 255f));
         g.drawImage(wire, 0, 0, null);
@@ -172,7 +163,7 @@ class OutlinePicturesTest {
             PageView view = new PageView(ONE_SLICE);
             PageView bare = new PageView();
             view.wire(shapes);
-            BufferedImage screen = paint(view);
+            BufferedImage screen = OutlinesOverPageTest.painted(view);
             assertTrue(view.outlinesFinished(), "drawn in one slice");
             assertSamePixels(drawnAtOnce(view, shapes), view.outlinePictures().wirePicture(), "fit");
             assertSameScreen(wireOver(bare, drawnAtOnce(view, shapes)), screen, "fit");
@@ -184,7 +175,7 @@ class OutlinePicturesTest {
                 bare.zoomPan().zoomAbout(zoom[1], zoom[2], zoom[0]);
                 for (int pan = 0; pan < 2; pan++) {
                     String where = zoom[0] + "x about (" + zoom[1] + ", " + zoom[2] + ")" + (pan > 0 ? ", panned" : "");
-                    BufferedImage zoomed = paint(view);
+                    BufferedImage zoomed = OutlinesOverPageTest.painted(view);
                     assertTrue(view.outlinesFinished(), where);
                     assertSamePixels(drawnAtOnce(view, shapes), view.outlinePictures().wirePicture(), where);
                     assertSameScreen(wireOver(bare, drawnAtOnce(view, shapes)), zoomed, where);
@@ -223,7 +214,7 @@ class OutlinePicturesTest {
         AtomicBoolean finishedAtOnce = new AtomicBoolean(true);
         SwingUtilities.invokeAndWait(() -> {
             view.wire(shapes);
-            paint(view);
+            OutlinesOverPageTest.painted(view);
             finishedAtOnce.set(view.outlinesFinished());
         });
         assertFalse(finishedAtOnce.get(), "one group a slice: not done in the paint");
@@ -235,11 +226,11 @@ class OutlinePicturesTest {
 
         SwingUtilities.invokeAndWait(() -> {
             view.zoomPan().zoomAbout(300, 300, 3);
-            paint(view);
+            OutlinesOverPageTest.painted(view);
             assertFalse(view.outlinesFinished(), "3x: not done in the paint");
             assertSamePixels(atFit, view.outlinePictures().wirePicture(), "the fit's wire, still shown");
             view.zoomPan().zoomAbout(300, 300, 4);
-            paint(view);
+            OutlinesOverPageTest.painted(view);
         });
         awaitFinished(view);
         BufferedImage atFour = onEdt(() -> drawnAtOnce(view, shapes));

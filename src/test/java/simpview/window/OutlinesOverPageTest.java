@@ -32,7 +32,8 @@ class OutlinesOverPageTest {
         return page;
     }
 
-    private static BufferedImage painted(PageView view) {
+    /** The view painted whole at 750x750, as the screen would show it. */
+    static BufferedImage painted(PageView view) {
         view.setSize(750, 750);
         BufferedImage screen = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = screen.createGraphics();
