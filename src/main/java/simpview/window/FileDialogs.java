@@ -31,6 +31,14 @@ public final class FileDialogs {
      * that is null (at first the course's pages' folder).
      */
     Optional<Path> chooseScene(Path shownSceneFolder) {
+        try {
+            return askForScene(shownSceneFolder);
+        } finally {
+            owner.requestFocus(); // the keys back to the page, which no window manager may give it
+        }
+    }
+
+    private Optional<Path> askForScene(Path shownSceneFolder) {
         JFileChooser chooser = new JFileChooser(shownSceneFolder != null ? shownSceneFolder.toFile() : sceneFolder);
         chooser.setDialogTitle("Open a SIMP scene");
         chooser.setFileFilter(new FileNameExtensionFilter("SIMP scenes (*.simp)", "simp"));
@@ -43,6 +51,14 @@ public final class FileDialogs {
 
     /** Asks where to save the page and writes it; returns the file written. */
     Optional<Path> save(RenderedView view) {
+        try {
+            return askAndSave(view);
+        } finally {
+            owner.requestFocus(); // the keys back to the page, which no window manager may give it
+        }
+    }
+
+    private Optional<Path> askAndSave(RenderedView view) {
         JFileChooser chooser = new JFileChooser(saveFolder);
         chooser.setDialogTitle("Save the page as PNG");
         chooser.setFileFilter(new FileNameExtensionFilter("PNG images (*.png)", "png"));

@@ -263,7 +263,9 @@ public final class ComparisonLayer {
         JFileChooser chooser = new JFileChooser(folder == null ? null : folder.toFile());
         chooser.setDialogTitle("Compare the page with a picture");
         chooser.setFileFilter(new FileNameExtensionFilter("Pictures (*.png, *.jpg, *.gif, *.bmp)", "png", "jpg", "jpeg", "gif", "bmp"));
-        if (chooser.showOpenDialog(owner) == JFileChooser.APPROVE_OPTION) {
+        int chosen = chooser.showOpenDialog(owner);
+        owner.requestFocus(); // the keys back to the page, which no window manager may give it
+        if (chosen == JFileChooser.APPROVE_OPTION) {
             compareWith(chooser.getSelectedFile().toPath());
         }
     }
