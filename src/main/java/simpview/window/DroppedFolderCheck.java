@@ -115,6 +115,9 @@ final class DroppedFolderCheck {
         tableText.setEditable(false);
         tableText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
         tableText.setMargin(new Insets(4, 8, 4, 8)); // the last column clear of the window's edge
+        tableText.getAccessibleContext().setAccessibleName("folder check");
+        tableText.getAccessibleContext().setAccessibleDescription("a row for each picture checked, with its page, "
+                + "whether it passes and how much matches; Escape closes it");
         tableWindow = new JDialog(frame, false);
         tableWindow.setAutoRequestFocus(false);
         tableScroll = new JScrollPane(tableText);

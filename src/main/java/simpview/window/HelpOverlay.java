@@ -11,6 +11,8 @@ import java.awt.event.MouseEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import javax.accessibility.AccessibleContext;
+import javax.accessibility.AccessibleRole;
 import javax.swing.JComponent;
 
 /**
@@ -27,6 +29,9 @@ public final class HelpOverlay extends JComponent {
 
     HelpOverlay() {
         setName("key help");
+        getAccessibleContext().setAccessibleName("keys, menus and gestures");
+        getAccessibleContext().setAccessibleDescription("every key and menu entry with what it does, as the menus "
+                + "list them; F1, Escape or a click hides this");
         setOpaque(false);
         setVisible(false);
         // A click meant to close the help must not step the page behind it, unseen.
@@ -36,6 +41,22 @@ public final class HelpOverlay extends JComponent {
                 setVisible(false);
             }
         });
+    }
+
+    /** A screen reader's view of the help: a JComponent has none of its own. */
+    @Override
+    public AccessibleContext getAccessibleContext() {
+        if (accessibleContext == null) {
+            accessibleContext = new AccessibleJComponent() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public AccessibleRole getAccessibleRole() {
+                    return AccessibleRole.PANEL;
+                }
+            };
+        }
+        return accessibleContext;
     }
 
     @Override

@@ -9,6 +9,8 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import javax.accessibility.AccessibleContext;
+import javax.accessibility.AccessibleRole;
 import javax.swing.JComponent;
 import simpview.window.instruments.Legend;
 
@@ -47,6 +49,32 @@ final class LegendStrip extends JComponent {
         setToolTipText(legends.isEmpty() ? null : words());
         revalidate();
         repaint();
+    }
+
+    /** A screen reader's view of the strip: named "legend", described by the legends in words. */
+    @Override
+    public AccessibleContext getAccessibleContext() {
+        if (accessibleContext == null) {
+            accessibleContext = new AccessibleJComponent() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public String getAccessibleName() {
+                    return accessibleName != null ? accessibleName : "legend";
+                }
+
+                @Override
+                public String getAccessibleDescription() {
+                    return legends.isEmpty() ? "no overlay shown" : words();
+                }
+
+                @Override
+                public AccessibleRole getAccessibleRole() {
+                    return AccessibleRole.LABEL;
+                }
+            };
+        }
+        return accessibleContext;
     }
 
     /** Takes every legend away. */

@@ -19,6 +19,8 @@ import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
+import javax.accessibility.AccessibleContext;
+import javax.accessibility.AccessibleRole;
 import javax.swing.JComponent;
 import simpview.pages.A1Marks;
 import simpview.surface.PageCanvas;
@@ -79,6 +81,8 @@ public final class PageView extends JComponent {
     /** Where this view's (0, 0) lies right of (and below) the device pixel the page is painted from: 0 to 0.5. */
     private double shiftX;
     private double shiftY;
+    /** What the view shows, in words: "page 5/8: …", "scene: lit.simp"; what a screen reader names it. */
+    private String shows = "nothing drawn yet";
 
     PageView() {
         this(OutlinePictures.SLICE_NANOS);
@@ -185,6 +189,43 @@ public final class PageView extends JComponent {
 
     BufferedImage image() {
         return image;
+    }
+
+    /** Names what the view shows, in words ("page 5/8: …", "scene: lit.simp"), for a screen reader. */
+    void describe(String shows) {
+        this.shows = shows;
+    }
+
+    /**
+     * What a screen reader says of the view: its name is what it shows ("page
+     * 5/8: …"), its description the page's and panel's sizes, the zoom, and
+     * the error over it, if any.
+     */
+    @Override
+    public AccessibleContext getAccessibleContext() {
+        if (accessibleContext == null) {
+            accessibleContext = new AccessibleJComponent() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public String getAccessibleName() {
+                    return accessibleName != null ? accessibleName : shows;
+                }
+
+                @Override
+                public String getAccessibleDescription() {
+                    String sizes = PageCanvas.SIZE + " by " + PageCanvas.SIZE + " page, its " + PageCanvas.PANEL
+                            + " by " + PageCanvas.PANEL + " panel, at " + zoomPan.describe();
+                    return error == null || errorHidden ? sizes : sizes + "; " + errorHeading() + " " + error;
+                }
+
+                @Override
+                public AccessibleRole getAccessibleRole() {
+                    return AccessibleRole.CANVAS;
+                }
+            };
+        }
+        return accessibleContext;
     }
 
     /** The error shown over the page, or null. */

@@ -810,6 +810,7 @@ public final class SimpviewWindow {
         String coursePage = pages.coursePageOf(result.view());
         frame.setTitle(coursePage != null ? "simpview — " + coursePage + (result.error() == null ? "" : " — error")
                 : result.title());
+        pageView.describe(frame.getTitle().substring("simpview — ".length()));
         watcher.watch(result.facts().files(), job.versionsAsRead());
         status.forgetLastPixel();
         inspected.followPointer();

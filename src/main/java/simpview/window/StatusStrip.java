@@ -62,6 +62,12 @@ public final class StatusStrip {
         // Keys belong to the page: a focused button would swallow Space.
         cancel.setFocusable(false);
         cancel.addActionListener(e -> onCancel.run());
+        // What a screen reader says of the line's parts: the labels speak their own text.
+        cancel.getAccessibleContext().setAccessibleDescription("stop drawing (Escape); the page on screen stays");
+        bar.getAccessibleContext().setAccessibleName("drawing progress");
+        inspector.getAccessibleContext().setAccessibleDescription("the inspected pixel, and the zoom");
+        text.getAccessibleContext().setAccessibleDescription("the status line: messages, and the keys when none");
+        working.getAccessibleContext().setAccessibleDescription("what is being drawn");
         // One row: what is being drawn at its own width, the bar taking the rest, Cancel at the end. When the
         // row is short of room, the words of what is being drawn give it up (cut with "…"); the bar keeps
         // BAR_LEAST and Cancel its own width, so neither is covered.

@@ -108,6 +108,9 @@ public final class InspectorPanel {
         text.setName("inspector text");
         // Keys belong to the page (a focused text would take the arrows and Ctrl+C): the mouse still selects.
         text.setFocusable(false);
+        text.getAccessibleContext().setAccessibleName("inspector panel");
+        text.getAccessibleContext().setAccessibleDescription("the inspected pixel's writes, its colour explained and "
+                + "its primitive's vertices");
         scroll = new JScrollPane(text, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
                 ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER) {
             private static final long serialVersionUID = 1L;
