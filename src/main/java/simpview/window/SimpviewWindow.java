@@ -808,9 +808,9 @@ public final class SimpviewWindow {
         shown = result;
         overlays.showPicture();
         String coursePage = pages.coursePageOf(result.view());
-        frame.setTitle(coursePage != null ? "simpview — " + coursePage + (result.error() == null ? "" : " — error")
-                : result.title());
-        pageView.describe(frame.getTitle().substring("simpview — ".length()));
+        String shows = coursePage != null ? coursePage + (result.error() == null ? "" : " — error") : result.shows();
+        frame.setTitle(RenderedView.TITLE_START + shows);
+        pageView.describe(shows);
         watcher.watch(result.facts().files(), job.versionsAsRead());
         status.forgetLastPixel();
         inspected.followPointer();

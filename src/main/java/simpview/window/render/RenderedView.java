@@ -25,22 +25,30 @@ public record RenderedView(View view, long seed, A1Rule a1Rule, BufferedImage im
         this(view, seed, a1Rule, image, error, warnings, PageFacts.NONE);
     }
 
+    /** What every window title starts with, before what the window shows. */
+    public static final String TITLE_START = "simpview — ";
+
     /** The window title, e.g. "simpview — page 3/8: Z-buffer — seed 361". */
     public String title() {
+        return TITLE_START + shows();
+    }
+
+    /** What the picture shows, as the window's title names it after {@link #TITLE_START}: "page 3/8: Z-buffer — seed 361". */
+    public String shows() {
         if (view instanceof View.OfPage page) {
-            String title = "simpview — page " + page.number() + "/" + Assignment2.COUNT + ": " + Assignment2.page(page.number()).title();
-            title = Assignment2.page(page.number()).usesSeed() ? title + " — seed " + seed : title;
-            return error == null ? title : title + " — error";
+            String shows = "page " + page.number() + "/" + Assignment2.COUNT + ": " + Assignment2.page(page.number()).title();
+            shows = Assignment2.page(page.number()).usesSeed() ? shows + " — seed " + seed : shows;
+            return error == null ? shows : shows + " — error";
         }
         if (view instanceof View.OfAssignment1Page page) {
             Page shownPage = Assignment1.page(page.number());
-            String title = "simpview — assignment 1, page " + page.number() + "/" + Assignment1.COUNT + ": "
+            String shows = "assignment 1, page " + page.number() + "/" + Assignment1.COUNT + ": "
                     + shownPage.title() + (shownPage.usesSeed() ? " — seed " + seed : "")
                     + (a1Rule == A1Rule.SPEC ? "" : " — " + a1Rule.label());
-            return error == null ? title : title + " — error";
+            return error == null ? shows : shows + " — error";
         }
-        String title = "simpview — scene: " + ((View.OfScene) view).file().getFileName();
-        return error == null ? title : title + " — error";
+        String shows = "scene: " + ((View.OfScene) view).file().getFileName();
+        return error == null ? shows : shows + " — error";
     }
 
     /** A file name to offer when saving, e.g. "page3-seed361.png" or "house.png". */
