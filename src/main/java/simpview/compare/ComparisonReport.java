@@ -152,6 +152,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (bias != null) {
             out.append("note: ").append(bias).append('\n');
         }
+        String gamma = systematic == null ? SrgbGamma.note(comparison.ours(), comparison.theirs(), tolerance) : null;
+        if (gamma != null) {
+            out.append("note: ").append(gamma).append('\n');
+        }
         String background = systematic == null && !passes()
                 ? Background.note(comparison.ours(), comparison.theirs(), tolerance) : null;
         if (background != null) {
