@@ -156,6 +156,10 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (gamma != null) {
             out.append("note: ").append(gamma).append('\n');
         }
+        String cue = systematic == null ? ReversedCue.note(comparison.ours(), comparison.theirs(), tolerance) : null;
+        if (cue != null) {
+            out.append("note: ").append(cue).append('\n');
+        }
         String background = systematic == null && !passes()
                 ? Background.note(comparison.ours(), comparison.theirs(), tolerance) : null;
         if (background != null) {

@@ -79,4 +79,28 @@ class ColourMistakesTest {
         assertFalse(run.out().contains("edges a pixel off"), run.out());
         assertFalse(run.out().contains("top-left rule"), run.out());
     }
+
+    /** Page 7 drawn with its depth cue's near and far colours swapped: near lines dark, far ones bright. */
+    @Test
+    void pageSevenWithItsDepthCueRunTheWrongWayIsToldSo() throws Exception {
+        Path scene = CourseFiles.require("course-simp").resolve("page7.simp");
+        Path picture = dir.resolve("page7.png");
+        CliRun render = CliRun.of("render", "--scene", scene.toString(), "--near-color", "0,0,0", "--far-color",
+                "1,1,1", "--out", picture.toString());
+        assertEquals(0, render.exitCode(), render.err());
+        CliRun run = CliRun.of("compare", picture.toString(), "--page", "7", "--simp-dir", scene.getParent().toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
+        assertTrue(run.out().contains("\nnote: your colours look simpview's turned end for end: of the 176,432 pixels "
+                + "that differ by more than 8/255 and are drawn in both, 100.00 % have yours + simpview's = "
+                + "(255,255,255) within 8/255, as a depth cue run the wrong way gives"), run.out());
+        // page 6 named page 7, white lines on black where simpview's are, is not
+        Path six = dir.resolve("six").resolve("page7.png");
+        Files.createDirectories(six.getParent());
+        CliRun drawn = CliRun.of("render", "--scene", scene.resolveSibling("page6.simp").toString(), "--out",
+                six.toString());
+        assertEquals(0, drawn.exitCode(), drawn.err());
+        String other = CliRun.of("compare", six.toString(), "--page", "7", "--simp-dir",
+                scene.getParent().toString()).out();
+        assertFalse(other.contains("end for end"), other);
+    }
 }
