@@ -27,6 +27,7 @@ import simpview.compare.HeatMap;
 import simpview.compare.HtmlReport;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.OtherPage;
+import simpview.compare.PanelHint;
 import simpview.compare.Percent;
 import simpview.compare.Picture;
 import simpview.compare.PictureFormat;
@@ -366,7 +367,7 @@ public final class CompareCommand implements Callable<Integer>, NamedOutputs.OfC
         ComparisonReport report = judged.report();
         Comparison comparison = report.comparison();
         // a picture that fails and no mistake explains may be another page, its file named for the wrong one
-        OtherPage other = report.passes() || report.systematic() != null || !target.isPage() ? null
+        PanelHint other = report.passes() || report.systematic() != null || !target.isPage() ? null
                 : others.ofEight(target.page(), theirs.panel(), rule);
         PrintWriter out = spec.commandLine().getOut();
         if (rubric != null) {

@@ -6,12 +6,17 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
 import simpview.compare.Comparison;
+import simpview.compare.DepthTestMistake;
 import simpview.compare.OtherPage;
+import simpview.compare.PanelHint;
 import simpview.compare.PanelGridComparison;
+import simpview.compare.Picture;
 import simpview.compare.RubricRule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
 import simpview.pages.PageContext;
+import simpview.pages.PageRenderer;
+import simpview.pages.ZBufferPage;
 import simpview.scene.SceneException;
 
 /**
@@ -21,6 +26,9 @@ import simpview.scene.SceneException;
  * Thread-safe: a batch's pictures are compared on several threads, and the eight pages are drawn on one canvas.
  */
 final class OtherPages {
+
+    /** The page of the eight that tests the z-buffer: six overlapping triangles. */
+    private static final int Z_BUFFER_PAGE = 3;
 
     /** Who draws the eight pages, asked the first time one is needed; null for the first assignment's alone. */
     private final Supplier<OwnPictures> drawer;
@@ -55,9 +63,22 @@ final class OtherPages {
      * The other of the eight pages a picture whose panel is {@code theirs}, failing page {@code named} by
      * {@code rule}, passes as by that rule; null when none does (or several).
      */
-    OtherPage ofEight(int named, int[] theirs, RubricRule rule) {
-        return OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, Comparison.N,
+    PanelHint ofEight(int named, int[] theirs, RubricRule rule) {
+        OtherPage other = OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, Comparison.N,
                 new RubricRule[] {rule}, this::eightPage, k -> "page " + CompareTarget.page(k).label(context));
+        return other != null || named != Z_BUFFER_PAGE ? other : DepthTestMistake.find("page " + CompareTarget
+                .page(named).label(context), theirs, Comparison.N, rule, zBufferPage(ZBufferPage.DepthTest.NONE),
+                zBufferPage(ZBufferPage.DepthTest.FARTHEST));
+    }
+
+    /** The z-buffer page, 3, drawn with its triangles in front of each other as {@code test} has them: its panel. */
+    private int[] zBufferPage(ZBufferPage.DepthTest test) {
+        try {
+            BufferedImage page = new PageRenderer().renderImage(new ZBufferPage(test), context);
+            return Picture.ofPage(page, "page " + Z_BUFFER_PAGE).panel();
+        } catch (SceneException e) {
+            throw new IllegalStateException("page 3 reads no file, yet: " + e.getMessage(), e);
+        }
     }
 
     /**

@@ -203,7 +203,7 @@ final class PictureComparisons {
         double empty = partial && !best.passes() ? emptyShare(label, rule, ours.panel(), Comparison.N) : Double.NaN;
         double score = rule.score(best.comparison(), partial, empty);
         // a failing picture no mistake explains may be another page, its file named for the wrong one
-        OtherPage other = best.passes() || best.systematic() != null || !target.isPage() ? null
+        PanelHint other = best.passes() || best.systematic() != null || !target.isPage() ? null
                 : others.ofEight(target.page(), theirs.panel(), rule);
         if (!diffs.writes(best.passes())) {
             return hinted(BatchRow.compared(relative, label, best, "", rule, score, bestName, empty), other);
@@ -219,7 +219,7 @@ final class PictureComparisons {
     }
 
     /** The row with the other page it is of as its hint, when it is one. */
-    private static BatchRow hinted(BatchRow row, OtherPage other) {
+    private static BatchRow hinted(BatchRow row, PanelHint other) {
         return other == null ? row : row.withHint(other);
     }
 

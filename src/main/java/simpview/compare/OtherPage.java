@@ -57,7 +57,7 @@ public record OtherPage(String page, String named, double shareThere) implements
     }
 
     /** The lowest panel's verdict share when every panel of theirs passes against ours by its rule, else NaN. */
-    private static double passes(int[][] ours, int[][] theirs, int n, RubricRule[] rules) {
+    static double passes(int[][] ours, int[][] theirs, int n, RubricRule[] rules) {
         double lowest = 1;
         for (int k = 0; k < rules.length; k++) {
             // null: so many pixels fail that it cannot pass, told without measuring the rest (exact)

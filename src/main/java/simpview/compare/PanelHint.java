@@ -13,10 +13,11 @@ import java.util.List;
  * own random numbers ({@link RandomValues}), or a line panel whose lines are a pixel short or long
  * ({@link LineEnds}), drawn with floored ends ({@link FlooredEnds}) or otherwise in some octants
  * ({@link OctantLines}), or an antialiased panel of another weighting ({@link AntialiasWeighting}), or a polygon
- * panel filled without the top-left rule ({@link FillRule}).
+ * panel filled without the top-left rule ({@link FillRule}), or the z-buffer page drawn without a depth test or
+ * with it turned round ({@link DepthTestMistake}).
  */
 public sealed interface PanelHint permits SystematicError, SwappedPanel, WholePage, OtherPage, RandomValues,
-        LineEnds, AntialiasWeighting, FlooredEnds, OctantLines, FillRule {
+        LineEnds, AntialiasWeighting, FlooredEnds, OctantLines, FillRule, DepthTestMistake {
 
     /** Briefly, to follow "looks": "upside down", "like simpview's panel 4 (antialiased)". */
     String brief();

@@ -54,6 +54,14 @@ public final class PageRenderer {
         return canvas;
     }
 
+    /** {@code page}, one of the eight or a page drawn as one of them is, as a new image (a copy, safe to keep). */
+    public BufferedImage renderImage(Page page, PageContext context) throws SceneException {
+        Objects.requireNonNull(context, "context must not be null");
+        canvas.clear();
+        page.draw(canvas, context);
+        return canvas.snapshot();
+    }
+
     /** Page n as a new image (a copy, safe to keep). */
     public BufferedImage renderImage(int pageNumber, PageContext context) throws SceneException {
         return render(pageNumber, context).snapshot();

@@ -19,6 +19,29 @@ import simpview.raster.FilledPolygonRenderer;
  */
 public final class ZBufferPage implements Page {
 
+    /**
+     * Which triangle a pixel shows where several cover it: SPEC's, the nearest; or a student's z-buffer that is
+     * left out (each triangle drawn over the last, in drawing order) or whose test is turned round (the farthest).
+     * Drawn so, the page is what such a renderer draws, for compare to tell a picture that is one.
+     */
+    public enum DepthTest {
+        NEAREST,
+        NONE,
+        FARTHEST
+    }
+
+    private final DepthTest test;
+
+    /** The page as SPEC draws it, the nearest triangle in front. */
+    public ZBufferPage() {
+        this(DepthTest.NEAREST);
+    }
+
+    /** The page with its triangles in front of each other as {@code test} has them. */
+    public ZBufferPage(DepthTest test) {
+        this.test = test;
+    }
+
     /** Triangle t's grey, in drawing order; read through {@link #grey}, so nobody can change a page's colours. */
     private static final double[] GREYS = {1, .85, .7, .55, .4, .25};
     public static final double RADIUS = 275;
@@ -48,11 +71,31 @@ public final class ZBufferPage implements Page {
         Provenance provenance = canvas.provenance();
         Vertex[][] triangles = triangles(context.seed());
         for (int t = 0; t < triangles.length; t++) {
+            triangles[t] = inFront(triangles[t], t);
             if (provenance != null) {
                 provenance.begin(t);
             }
             renderer.drawPolygon(triangles[t][0], triangles[t][1], triangles[t][2], target);
         }
+    }
+
+    /**
+     * Triangle t (in drawing order) with its depth moved so that SPEC's z-buffer puts it in front as {@link #test}
+     * would: without a test each later triangle is nearer than the one before; with the test turned round, a depth
+     * z is mirrored to -200 - z, so the farthest is the nearest. Its shape and grey are kept.
+     */
+    private Vertex[] inFront(Vertex[] triangle, int t) {
+        if (test == DepthTest.NEAREST) {
+            return triangle;
+        }
+        double z = test == DepthTest.NONE ? FARTHEST_Z + (NEAREST_Z - FARTHEST_Z) * t / (GREYS.length - 1)
+                : FARTHEST_Z + NEAREST_Z - triangle[0].z();
+        Vertex[] moved = new Vertex[triangle.length];
+        for (int k = 0; k < triangle.length; k++) {
+            Vertex v = triangle[k];
+            moved[k] = new Vertex(v.x(), v.y(), z, v.r(), v.g(), v.b());
+        }
+        return moved;
     }
 
     /** "triangle 3 of 6, grey 0.70, z -57.1234", in drawing order. */
