@@ -152,11 +152,11 @@ public record ComparisonReport(Picture theirs, String against, Comparison compar
         if (bias != null) {
             out.append("note: ").append(bias).append('\n');
         }
-        String gamma = systematic == null ? SrgbGamma.note(comparison.ours(), comparison.theirs(), tolerance) : null;
+        String gamma = systematic == null ? SrgbGamma.note(comparison, tolerance) : null;
         if (gamma != null) {
             out.append("note: ").append(gamma).append('\n');
         }
-        String cue = systematic == null ? ReversedCue.note(comparison.ours(), comparison.theirs(), tolerance) : null;
+        String cue = systematic == null ? ReversedCue.note(comparison, tolerance) : null;
         if (cue != null) {
             out.append("note: ").append(cue).append('\n');
         }

@@ -24,17 +24,22 @@ final class ReversedCue {
     }
 
     /**
-     * The note (after "note: ") on theirs against ours, two panels of 0xRRGGBB pixels, or null when too few pixels
+     * The note (after "note: ") on the comparison's picture against simpview's, or null when too few pixels
      * differ, too few of them are drawn in both, or no one sum explains {@link #MIN_EXPLAINED} of those.
      */
-    static String note(int[] ours, int[] theirs, int tolerance) {
+    static String note(Comparison comparison, int tolerance) {
+        if (1 - comparison.share(tolerance, false) < MIN_DIFFERING) {
+            return null; // counted already: no pass over the pixels
+        }
+        int[] ours = comparison.ours();
+        int[] theirs = comparison.theirs();
         long differing = 0;
         long drawn = 0;
         int[][] sums = new int[3][511];
         for (int i = 0; i < ours.length; i++) {
             int a = ours[i] & 0xFFFFFF;
             int b = theirs[i] & 0xFFFFFF;
-            if (Rasters.distance(a, b) <= tolerance) {
+            if (comparison.distance(i) <= tolerance) {
                 continue;
             }
             differing++;
@@ -59,7 +64,7 @@ final class ReversedCue {
         for (int i = 0; i < ours.length; i++) {
             int a = ours[i] & 0xFFFFFF;
             int b = theirs[i] & 0xFFFFFF;
-            if (a == 0 || b == 0 || Rasters.distance(a, b) <= tolerance) {
+            if (a == 0 || b == 0 || comparison.distance(i) <= tolerance) {
                 continue;
             }
             boolean fits = true;

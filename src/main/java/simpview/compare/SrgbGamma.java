@@ -36,17 +36,22 @@ final class SrgbGamma {
     }
 
     /**
-     * The note (after "note: ") on theirs against ours, two panels of 0xRRGGBB pixels, or null when too few pixels
+     * The note (after "note: ") on the comparison's picture against simpview's, or null when too few pixels
      * differ beyond the tolerance, or neither curve explains {@link #MIN_EXPLAINED} of them.
      */
-    static String note(int[] ours, int[] theirs, int tolerance) {
+    static String note(Comparison comparison, int tolerance) {
+        if (1 - comparison.share(tolerance, false) < MIN_DIFFERING) {
+            return null; // counted already: no pass over the pixels
+        }
+        int[] ours = comparison.ours();
+        int[] theirs = comparison.theirs();
         long differing = 0;
         long encoded = 0;
         long decoded = 0;
         for (int i = 0; i < ours.length; i++) {
             int a = ours[i];
             int b = theirs[i];
-            if (Rasters.distance(a, b) <= tolerance) {
+            if (comparison.distance(i) <= tolerance) {
                 continue;
             }
             differing++;
