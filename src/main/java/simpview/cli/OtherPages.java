@@ -11,6 +11,7 @@ import simpview.compare.OtherPage;
 import simpview.compare.PanelHint;
 import simpview.compare.PanelGridComparison;
 import simpview.compare.Picture;
+import simpview.compare.RandomValues;
 import simpview.compare.RubricRule;
 import simpview.pages.Assignment1;
 import simpview.pages.Assignment2;
@@ -66,9 +67,15 @@ final class OtherPages {
     PanelHint ofEight(int named, int[] theirs, RubricRule rule) {
         OtherPage other = OtherPage.find(named, Assignment2.COUNT, new int[][] {theirs}, Comparison.N,
                 new RubricRule[] {rule}, this::eightPage, k -> "page " + CompareTarget.page(k).label(context));
-        return other != null || named != Z_BUFFER_PAGE ? other : DepthTestMistake.find("page " + CompareTarget
-                .page(named).label(context), theirs, Comparison.N, rule, zBufferPage(ZBufferPage.DepthTest.NONE),
-                zBufferPage(ZBufferPage.DepthTest.FARTHEST));
+        if (other != null || named != Z_BUFFER_PAGE) {
+            return other;
+        }
+        String page = "page " + CompareTarget.page(named).label(context);
+        DepthTestMistake depth = DepthTestMistake.find(page, theirs, Comparison.N, rule,
+                zBufferPage(ZBufferPage.DepthTest.NONE), zBufferPage(ZBufferPage.DepthTest.FARTHEST));
+        int[][] ours = eightPage(named);
+        return depth != null || ours == null ? depth
+                : RandomValues.ofZBufferPage(page, named, context.seed(), ours[0], theirs, rule.tolerance());
     }
 
     /** The z-buffer page, 3, drawn with its triangles in front of each other as {@code test} has them: its panel. */

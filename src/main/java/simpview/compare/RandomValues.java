@@ -1,5 +1,6 @@
 package simpview.compare;
 
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -27,8 +28,10 @@ import simpview.surface.PageCanvas;
  * @param seed the seed simpview drew it with
  * @param what what is not simpview's: "lines", "random triangles", "colours"
  * @param evidence what was measured, in words
+ * @param firstAssignment whether the page is the first assignment's; else one of the eight pages (page 3)
  */
-public record RandomValues(String page, int number, long seed, String what, String evidence) implements PanelHint {
+public record RandomValues(String page, int number, long seed, String what, String evidence, boolean firstAssignment)
+        implements PanelHint {
 
     /** Of the pixels either of panels 1 to 3 lights, at most this share lit in both: other lines. */
     static final double OTHER_LINES = 0.25;
@@ -69,12 +72,12 @@ public record RandomValues(String page, int number, long seed, String what, Stri
                 return null;
             }
             return new RandomValues(page, number, seed, "lines", "of the pixels either picture lights in panels 1 to "
-                    + "3, both light " + Percent.of(most) + " at most");
+                    + "3, both light " + Percent.of(most) + " at most", true);
         }
         double triangles = bothOfEither(ours[3], theirs[3], n, tolerance);
         if (triangles <= OTHER_TRIANGLES && drawsAsMuch(ours[3], theirs[3], tolerance)) {
             return new RandomValues(page, number, seed, "random triangles", "of the pixels either picture fills in "
-                    + "panel 4, both fill " + Percent.of(triangles));
+                    + "panel 4, both fill " + Percent.of(triangles), true);
         }
         if (shown instanceof PolygonTestPage polygons && !polygons.ghost()) {
             double shapes = Math.min(bothOfEither(ours[0], theirs[0], n, tolerance),
@@ -85,7 +88,7 @@ public record RandomValues(String page, int number, long seed, String what, Stri
                     && !orderKept(new int[][] {ours[0], ours[1]}, new int[][] {theirs[0], theirs[1]}, tolerance)) {
                 return new RandomValues(page, number, seed, "colours", "your triangles of panels 1 and 2 fill "
                         + "simpview's pixels, but of the pixels both fill, " + Percent.of(colours) + " at most have "
-                        + "simpview's colour within " + tolerance + "/255");
+                        + "simpview's colour within " + tolerance + "/255", true);
             }
         }
         return null;
@@ -212,6 +215,50 @@ public record RandomValues(String page, int number, long seed, String what, Stri
         return Rasters.distance(rgb, PageCanvas.BACKGROUND) > tolerance;
     }
 
+    /** The least share of the z-buffer page's panel of theirs in simpview's colours, each within the tolerance. */
+    static final double OWN_COLOURS = 0.99;
+    /** Of the pixels either picture draws (not black), at most this share drawn in both in one colour. */
+    static final double SAME_PLACE = 0.75;
+
+    /**
+     * The hint for the z-buffer page of the eight (its six triangles turned and put at depths drawn at random; ours
+     * and theirs its one n x n panel), or null. Its triangles are flat greys, so a picture whose pixels are all of
+     * simpview's colours, but which draws them elsewhere, drew simpview's triangles from other random numbers.
+     */
+    public static RandomValues ofZBufferPage(String page, int number, long seed, int[] ours, int[] theirs,
+            int tolerance) {
+        int[] colours = ours.clone();
+        for (int i = 0; i < colours.length; i++) {
+            colours[i] &= 0xFFFFFF;
+        }
+        colours = Arrays.stream(colours).distinct().toArray();
+        if (colours.length > 16) {
+            return null;
+        }
+        long inColours = 0;
+        long drawn = 0;
+        long same = 0;
+        for (int i = 0; i < theirs.length; i++) {
+            int theirColour = theirs[i];
+            for (int colour : colours) {
+                if (Rasters.distance(colour, theirColour) <= tolerance) {
+                    inColours++;
+                    break;
+                }
+            }
+            if (lit(ours[i], tolerance) || lit(theirColour, tolerance)) {
+                drawn++;
+                same += Rasters.distance(ours[i], theirColour) <= tolerance ? 1 : 0;
+            }
+        }
+        if (inColours < OWN_COLOURS * theirs.length || same > SAME_PLACE * drawn) {
+            return null;
+        }
+        return new RandomValues(page, number, seed, "triangles", "every pixel of yours is one of the "
+                + colours.length + " colours of simpview's panel, but of the pixels either picture draws, both draw "
+                + Percent.of((double) same / drawn) + " in the same colour", false);
+    }
+
     @Override
     public String brief() {
         return "drawn from other random numbers than simpview's seed " + seed;
@@ -221,9 +268,10 @@ public record RandomValues(String page, int number, long seed, String what, Stri
     public String hint(int n) {
         return String.format(Locale.ROOT, "your %s are not simpview's, which it draws at random from seed %d: %s. A "
                 + "page drawn from random numbers of your own cannot match; to compare your renderer, draw simpview's "
-                + "lines and triangles with their colours, which simpview render --assignment 1 --page %d --seed %d "
-                + "--primitives a1-page%d-primitives.txt lists (panel coordinates, y up), and compare again.",
-                what, seed, evidence, number, seed, number);
+                + "lines and triangles with their colours, which simpview render %s--page %d --seed %d "
+                + "--primitives %spage%d-primitives.txt lists (panel coordinates, y up), and compare again.",
+                what, seed, evidence, firstAssignment ? "--assignment 1 " : "", number, seed,
+                firstAssignment ? "a1-" : "", number);
     }
 
     @Override

@@ -106,13 +106,28 @@ class DepthTestHintTest {
                 + "depth test turned round: where triangles overlap, the farthest is in front"), run.out());
     }
 
-    /** Page 3 of another seed passes as neither mistake: its triangles lie elsewhere. */
+    /**
+     * Page 3 of another seed passes as neither mistake: its triangles lie elsewhere, in simpview's greys, and it is
+     * told it was drawn from other random numbers, with the command that lists simpview's.
+     */
     @Test
-    void pageThreeOfAnotherSeedIsToldNoDepthTest() throws Exception {
+    void pageThreeOfAnotherSeedIsToldItsTrianglesAreNotSimpviews() throws Exception {
         Path picture = dir.resolve("seven.png");
         ImageIO.write(new PageRenderer().renderImage(3, PageContext.defaults().withSeed(7)), "png", picture.toFile());
         CliRun run = CliRun.of("compare", picture.toString(), "--page", "3");
         assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.out());
         assertFalse(run.out().contains("depth test"), run.out());
+        assertTrue(run.out().contains("\nhint: your triangles are not simpview's, which it draws at random from seed "
+                + "361: every pixel of yours is one of the 7 colours of simpview's panel, but of the pixels either "
+                + "picture draws, both draw 4.69 % in the same colour. A page drawn from random numbers of your own "
+                + "cannot match; to compare your renderer, draw simpview's lines and triangles with their colours, "
+                + "which simpview render --page 3 --seed 361 --primitives page3-primitives.txt lists"), run.out());
+    }
+
+    /** The painter's-order page is a depth test's mistake, not random numbers: its triangles are where simpview's are. */
+    @Test
+    void trianglesWithoutADepthTestAreNotCalledRandom() throws Exception {
+        CliRun run = CliRun.of("compare", drawn("page3.png", (z, kept) -> true).toString(), "--page", "3");
+        assertFalse(run.out().contains("not simpview's"), run.out());
     }
 }
