@@ -71,17 +71,18 @@ final class OtherPages {
             return other;
         }
         String page = "page " + CompareTarget.page(named).label(context);
+        PageRenderer renderer = new PageRenderer(); // one canvas for both
         DepthTestMistake depth = DepthTestMistake.find(page, theirs, Comparison.N, rule,
-                zBufferPage(ZBufferPage.DepthTest.NONE), zBufferPage(ZBufferPage.DepthTest.FARTHEST));
+                zBufferPage(renderer, ZBufferPage.DepthTest.NONE), zBufferPage(renderer, ZBufferPage.DepthTest.FARTHEST));
         int[][] ours = eightPage(named);
         return depth != null || ours == null ? depth
                 : RandomValues.ofZBufferPage(page, named, context.seed(), ours[0], theirs, rule.tolerance());
     }
 
     /** The z-buffer page, 3, drawn with its triangles in front of each other as {@code test} has them: its panel. */
-    private int[] zBufferPage(ZBufferPage.DepthTest test) {
+    private int[] zBufferPage(PageRenderer renderer, ZBufferPage.DepthTest test) {
         try {
-            BufferedImage page = new PageRenderer().renderImage(new ZBufferPage(test), context);
+            BufferedImage page = renderer.renderImage(new ZBufferPage(test), context);
             return Picture.ofPage(page, "page " + Z_BUFFER_PAGE).panel();
         } catch (SceneException e) {
             throw new IllegalStateException("page 3 reads no file, yet: " + e.getMessage(), e);

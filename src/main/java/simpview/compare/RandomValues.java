@@ -1,6 +1,5 @@
 package simpview.compare;
 
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -227,23 +226,36 @@ public record RandomValues(String page, int number, long seed, String what, Stri
      */
     public static RandomValues ofZBufferPage(String page, int number, long seed, int[] ours, int[] theirs,
             int tolerance) {
-        int[] colours = ours.clone();
-        for (int i = 0; i < colours.length; i++) {
-            colours[i] &= 0xFFFFFF;
-        }
-        colours = Arrays.stream(colours).distinct().toArray();
-        if (colours.length > 16) {
-            return null;
+        int[] colours = new int[17];
+        int count = 0;
+        for (int colour : ours) {
+            colour &= 0xFFFFFF;
+            int k = 0;
+            while (k < count && colours[k] != colour) {
+                k++;
+            }
+            if (k == count) {
+                if (count == colours.length) {
+                    return null; // more colours than flat triangles have
+                }
+                colours[count++] = colour;
+            }
         }
         long inColours = 0;
         long drawn = 0;
         long same = 0;
+        int last = colours[0]; // the colour the pixel before matched: neighbours mostly share one
         for (int i = 0; i < theirs.length; i++) {
             int theirColour = theirs[i];
-            for (int colour : colours) {
-                if (Rasters.distance(colour, theirColour) <= tolerance) {
-                    inColours++;
-                    break;
+            if (Rasters.distance(last, theirColour) <= tolerance) {
+                inColours++;
+            } else {
+                for (int k = 0; k < count; k++) {
+                    if (Rasters.distance(colours[k], theirColour) <= tolerance) {
+                        inColours++;
+                        last = colours[k];
+                        break;
+                    }
                 }
             }
             if (lit(ours[i], tolerance) || lit(theirColour, tolerance)) {
@@ -255,7 +267,7 @@ public record RandomValues(String page, int number, long seed, String what, Stri
             return null;
         }
         return new RandomValues(page, number, seed, "triangles", "every pixel of yours is one of the "
-                + colours.length + " colours of simpview's panel, but of the pixels either picture draws, both draw "
+                + count + " colours of simpview's panel, but of the pixels either picture draws, both draw "
                 + Percent.of((double) same / drawn) + " in the same colour", false);
     }
 
