@@ -292,7 +292,10 @@ final class OutlinePictures {
             return new Rectangle(left, top, right - left, bottom - top).intersection(whole);
         }
 
-        /** Draws outlines for up to {@link #sliceNanos}, at least one group of them. */
+        /**
+         * Draws outlines for up to {@link #sliceNanos}, at least one group of them; a list whose last group is
+         * drawn is done, however long that took (so a few outlines are drawn whole by the first slice).
+         */
         void slice() {
             slices++;
             long until = System.nanoTime() + sliceNanos;
@@ -330,7 +333,9 @@ final class OutlinePictures {
                             }
                             group.clear();
                         }
-                        if (System.nanoTime() - until > 0) {
+                        // a list drawn to its end is done whatever the clock says: a slice that returned
+                        // before taking it off the layers would leave a few outlines waiting for the next
+                        if (next < shapes.size() && System.nanoTime() - until > 0) {
                             return;
                         }
                     }

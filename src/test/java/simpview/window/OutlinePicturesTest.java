@@ -74,6 +74,25 @@ class OutlinePicturesTest {
         });
     }
 
+    /**
+     * A few outlines, one group, are drawn whole by the paint's own slice however long it took: with no time
+     * at all to draw in, the slice that drew them all once left them waiting for a next one, and a paint on a
+     * busy machine (a slice over 8 ms) showed none.
+     */
+    @Test
+    void aFewOutlinesAreDrawnByTheFirstSliceHoweverLongItTakes() throws Throwable {
+        List<double[]> shapes = List.of(new double[] {250, 350, 350, 350, 300, 450},
+                new double[] {300.5, 100, 300.5, 600}, new double[] {100, 400.5, 600, 400.5});
+        DevicePixelsTest.onEdt(() -> {
+            PageView view = new PageView(0);
+            view.wire(shapes);
+            OutlinesOverPageTest.painted(view);
+            assertTrue(view.outlinesFinished(), "drawn by the first slice");
+            assertEquals(1, view.outlinePictures().slicesTaken());
+            assertSamePixels(drawnAtOnce(view, shapes), view.outlinePictures().wirePicture(), "fit");
+        });
+    }
+
     /** The view without outlines painted, and {@code wire} over it at the wire's share: the screen before slices. */
     private static BufferedImage wireOver(PageView bare, BufferedImage wire) {
         BufferedImage screen = OutlinesOverPageTest.painted(bare);
