@@ -3,8 +3,8 @@ package simpview.compare;
 /**
  * A depth cue run the wrong way: near and far swapped, or z's share taken
  * from the wrong end ({@code -z / 200} for {@code (z + 200) / 200}). SPEC's
- * cue writes {@code far + (near - far) * s}; the other way round writes
- * {@code near + (near - far) * -s + ... = near + far - c}, so wherever both
+ * cue writes {@code c = far + (near - far) * s}; the other way round writes
+ * {@code near + (far - near) * s}, which is {@code near + far - c}, so wherever both
  * pictures draw, simpview's colour and yours add up to one sum in each
  * channel, near + far (white on a page of white lines: 255). Every shape is
  * in place, near things dark and far ones bright, and the patches cover the
