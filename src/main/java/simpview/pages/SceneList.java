@@ -36,7 +36,8 @@ public final class SceneList {
         List<Path> scenes = new ArrayList<>();
         for (Path argument : arguments) {
             if (Files.isDirectory(argument)) {
-                List<Path> inFolder = folder(argument);
+                // a link there that leads to no file is a scene asked for: named, and its error said, not passed over
+                List<Path> inFolder = folder(argument, true);
                 if (inFolder.isEmpty()) {
                     throw new IllegalArgumentException("the folder " + argument + " holds no .simp files");
                 }
@@ -67,10 +68,15 @@ public final class SceneList {
 
     /** The .simp files of a folder, in natural name order. */
     public static List<Path> folder(Path dir) {
+        return folder(dir, false);
+    }
+
+    /** The .simp files of a folder, and with {@code brokenLinks} the links named so that lead to no file. */
+    private static List<Path> folder(Path dir, boolean brokenLinks) {
         List<Path> scenes = new ArrayList<>();
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*.simp")) {
             for (Path f : files) {
-                if (Files.isRegularFile(f)) {
+                if (Files.isRegularFile(f) || brokenLinks && Files.isSymbolicLink(f) && !Files.exists(f)) {
                     scenes.add(PlainPath.of(f)); // the folder "." lists bad.simp, not ./bad.simp
                 }
             }

@@ -110,6 +110,29 @@ class RenderCommandTest {
                 + "links (loop.simp → loop.simp)\n"), loop.err());
     }
 
+    /**
+     * A folder of scenes that holds a link named .simp leading to no file renders the others and says of that one
+     * why it is not drawn, with exit 1: it was passed over without a word. Skipped where links cannot be made.
+     */
+    @Test
+    void aFoldersSceneThatIsALoopOfLinksIsNotPassedOverSilently() throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("folder"));
+        try {
+            Files.createSymbolicLink(scenes.resolve("b.simp"), Path.of("c.simp"));
+            Files.createSymbolicLink(scenes.resolve("c.simp"), Path.of("b.simp"));
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            Assumptions.abort("no symbolic links here: " + e);
+        }
+        Files.writeString(scenes.resolve("a.simp"), "polygon (0,0,-10) (50,0,-10) (0,50,-10)\n");
+        Path out = dir.resolve("out");
+        CliRun run = CliRun.of("render", "--scenes", scenes.toString(), "--out-dir", out.toString());
+        assertEquals(ExitCode.SCENE_ERROR, run.exitCode(), run.err());
+        assertEquals(List.of("a.png"), names(out));
+        assertTrue(run.err().contains("b.png not written: " + scenes.resolve("b.simp") + ": "), run.err());
+        assertTrue(run.err().contains("is a loop of symbolic links (b.simp → c.simp → b.simp)"), run.err());
+        assertTrue(run.err().contains("is a loop of symbolic links (c.simp → b.simp → c.simp)"), run.err());
+    }
+
     @Test
     void scenesOfOneNameAsLettersOfEitherCaseAreNamedByTheirFoldersToo() throws Exception {
         Path upper = scene("a3/Cube.simp", -10);
