@@ -4,6 +4,7 @@ import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.Rectangle;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 
 /**
  * The magnifier's detail, drawn over the picture from 8x (eight units, {@link ZoomPan#unit}) on: a line along
@@ -52,12 +53,31 @@ public final class PixelGrid {
         // The dot's place is counted in units too: in device pixels (zoom / 2 - dot / 2), a dot one unit wide at 8x
         // would sit a device pixel left of and above where it sat, and where it sits at 100 %.
         int inset = zoom % unit == 0 ? (zoom / unit / 2 - dots / 2) * unit : zoom / 2 - dot / 2;
+        // The dots are written into a picture of the cells in view, copied over the page at once: a fill call a
+        // dot took 15 ms a paint at 8x in a 1000x900 view on X11 (14,000 dots), 32 ms into a picture of Java2D's
+        // own, and stalled the window at each step to 8x. Each dot lies inside its cell.
+        int width = right - left;
+        int height = bottom - top;
+        if (width <= 0 || height <= 0) {
+            return;
+        }
+        BufferedImage dotsPicture = new BufferedImage(width, height, BufferedImage.TYPE_INT_ARGB);
+        int[] dotPixels = ((DataBufferInt) dotsPicture.getRaster().getDataBuffer()).getData();
+        int onDark = DOT_ON_DARK.getRGB();
+        int onLight = DOT_ON_LIGHT.getRGB();
         for (int j = rows[0]; j < rows[1]; j++) {
+            int y = (int) zoomPan.screenY(j) + inset - top;
             for (int i = cols[0]; i < cols[1]; i++) {
-                g.setColor(luminance(image.getRGB(i, j)) < 128 ? DOT_ON_DARK : DOT_ON_LIGHT);
-                g.fillRect((int) zoomPan.screenX(i) + inset, (int) zoomPan.screenY(j) + inset, dot, dot);
+                int x = (int) zoomPan.screenX(i) + inset - left;
+                int argb = luminance(image.getRGB(i, j)) < 128 ? onDark : onLight;
+                for (int row = y * width + x, end = row + dot * width; row < end; row += width) {
+                    for (int k = row; k < row + dot; k++) {
+                        dotPixels[k] = argb;
+                    }
+                }
             }
         }
+        g.drawImage(dotsPicture, left, top, null);
     }
 
     /** The image columns (or rows) [from, to) that show between screen coordinates lo and hi. */
