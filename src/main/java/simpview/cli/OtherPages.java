@@ -40,6 +40,10 @@ final class OtherPages {
     private final Map<Integer, int[][]> pages = new HashMap<>();
     /** The first assignment's pages, drawn (they read no files). */
     private final Map<Integer, BufferedImage> firstAssignment = new ConcurrentHashMap<>();
+    /** The z-buffer page's panel drawn with each wrong depth test, drawn once (it reads no files). */
+    private final Map<ZBufferPage.DepthTest, int[]> wrongDepthTests = new HashMap<>();
+    /** The one canvas that draws them (under the lock of {@link #wrongDepthTests}); made at the first. */
+    private PageRenderer wrongDepthRenderer;
 
     /** The pages {@code own} draws (its seed, its scene folder, its rule of the first assignment). */
     OtherPages(OwnPictures own) {
@@ -71,21 +75,33 @@ final class OtherPages {
             return other;
         }
         String page = "page " + CompareTarget.page(named).label(context);
-        PageRenderer renderer = new PageRenderer(); // one canvas for both
         DepthTestMistake depth = DepthTestMistake.find(page, theirs, Comparison.N, rule,
-                zBufferPage(renderer, ZBufferPage.DepthTest.NONE), zBufferPage(renderer, ZBufferPage.DepthTest.FARTHEST));
+                zBufferPage(ZBufferPage.DepthTest.NONE), zBufferPage(ZBufferPage.DepthTest.FARTHEST));
         int[][] ours = eightPage(named);
         return depth != null || ours == null ? depth
                 : RandomValues.ofZBufferPage(page, named, context.seed(), ours[0], theirs, rule.tolerance());
     }
 
-    /** The z-buffer page, 3, drawn with its triangles in front of each other as {@code test} has them: its panel. */
-    private int[] zBufferPage(PageRenderer renderer, ZBufferPage.DepthTest test) {
-        try {
-            BufferedImage page = renderer.renderImage(new ZBufferPage(test), context);
-            return Picture.ofPage(page, "page " + Z_BUFFER_PAGE).panel();
-        } catch (SceneException e) {
-            throw new IllegalStateException("page 3 reads no file, yet: " + e.getMessage(), e);
+    /**
+     * The z-buffer page, 3, drawn with its triangles in front of each other as {@code test} has them: its panel,
+     * drawn once for all the pictures that ask (a batch's failing pictures of page 3 drew it again each).
+     */
+    private int[] zBufferPage(ZBufferPage.DepthTest test) {
+        synchronized (wrongDepthTests) {
+            int[] panel = wrongDepthTests.get(test);
+            if (panel == null) {
+                if (wrongDepthRenderer == null) {
+                    wrongDepthRenderer = new PageRenderer();
+                }
+                try {
+                    BufferedImage page = wrongDepthRenderer.renderImage(new ZBufferPage(test), context);
+                    panel = Picture.ofPage(page, "page " + Z_BUFFER_PAGE).panel();
+                } catch (SceneException e) {
+                    throw new IllegalStateException("page 3 reads no file, yet: " + e.getMessage(), e);
+                }
+                wrongDepthTests.put(test, panel);
+            }
+            return panel;
         }
     }
 
