@@ -51,7 +51,7 @@ final class ReversedCue {
                 sums[c][(a >> 8 * c & 0xFF) + (b >> 8 * c & 0xFF)]++;
             }
         }
-        if (differing < MIN_DIFFERING * ours.length || drawn < MIN_DRAWN * differing) {
+        if (drawn < MIN_DRAWN * differing) {
             return null;
         }
         int[] sum = new int[3];

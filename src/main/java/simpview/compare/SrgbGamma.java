@@ -58,9 +58,6 @@ final class SrgbGamma {
             encoded += Rasters.distance(through(a, ENCODED), b) <= tolerance ? 1 : 0;
             decoded += Rasters.distance(through(a, DECODED), b) <= tolerance ? 1 : 0;
         }
-        if (differing < MIN_DIFFERING * ours.length) {
-            return null;
-        }
         boolean encodes = encoded >= decoded;
         long explained = Math.max(encoded, decoded);
         if (explained < MIN_EXPLAINED * differing) {
