@@ -53,13 +53,15 @@ class DepthTestHintTest {
                 }
             }
         }
-        BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        int[] rows = new int[750 * 750];
         for (int y = 0; y < 750; y++) {
             for (int x = 0; x < 750; x++) {
                 boolean in = x >= 50 && x < 700 && y >= 50 && y < 700;
-                page.setRGB(x, y, in ? panel[(y - 50) * N + x - 50] : 0xFFFFFF);
+                rows[y * 750 + x] = in ? panel[(y - 50) * N + x - 50] : 0xFFFFFF;
             }
         }
+        BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
+        page.setRGB(0, 0, 750, 750, rows, 0, 750);
         Path file = dir.resolve(name);
         Files.createDirectories(file.getParent());
         ImageIO.write(page, "png", file.toFile());

@@ -1,11 +1,13 @@
 package simpview.compare;
 
 import java.awt.image.BufferedImage;
+import simpview.testing.Images;
 
 /**
- * The shares computed again for the tests, the plainest way: getRGB per
- * pixel on two panels given by their top-left corners, nested loops over the
- * 3x3 neighbours. Written apart from {@link Comparison}, sharing no code.
+ * The shares computed again for the tests, the plainest way: each panel's
+ * pixels as getRGB gives them, given by their top-left corners, and nested
+ * loops over the 3x3 neighbours. Written apart from {@link Comparison},
+ * sharing no code.
  */
 public final class IndependentShares {
 
@@ -16,12 +18,12 @@ public final class IndependentShares {
 
     /** The share of pixels whose every channel is within {@code tolerance}, without slack. */
     public static double direct(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
+        int[] pa = Images.rgb(a, ax, ay, N, N);
+        int[] pb = Images.rgb(b, bx, by, N, N);
         long count = 0;
-        for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                if (close(a.getRGB(ax + x, ay + y), b.getRGB(bx + x, by + y), tolerance)) {
-                    count++;
-                }
+        for (int i = 0; i < N * N; i++) {
+            if (close(pa[i], pb[i], tolerance)) {
+                count++;
             }
         }
         return count / (double) (N * N);
@@ -29,11 +31,13 @@ public final class IndependentShares {
 
     /** The share with slack: a's colour found near the pixel in b, and b's found near it in a. */
     public static double withSlack(BufferedImage a, int ax, int ay, BufferedImage b, int bx, int by, int tolerance) {
+        int[] pa = Images.rgb(a, ax, ay, N, N);
+        int[] pb = Images.rgb(b, bx, by, N, N);
         long count = 0;
         for (int y = 0; y < N; y++) {
             for (int x = 0; x < N; x++) {
-                boolean aInB = foundNear(a.getRGB(ax + x, ay + y), b, bx, by, x, y, tolerance);
-                boolean bInA = foundNear(b.getRGB(bx + x, by + y), a, ax, ay, x, y, tolerance);
+                boolean aInB = foundNear(pa[y * N + x], pb, x, y, tolerance);
+                boolean bInA = foundNear(pb[y * N + x], pa, x, y, tolerance);
                 if (aInB && bInA) {
                     count++;
                 }
@@ -42,12 +46,12 @@ public final class IndependentShares {
         return count / (double) (N * N);
     }
 
-    private static boolean foundNear(int colour, BufferedImage other, int ox, int oy, int x, int y, int tolerance) {
+    private static boolean foundNear(int colour, int[] other, int x, int y, int tolerance) {
         for (int dy = -1; dy <= 1; dy++) {
             for (int dx = -1; dx <= 1; dx++) {
                 int nx = x + dx;
                 int ny = y + dy;
-                if (nx >= 0 && ny >= 0 && nx < N && ny < N && close(colour, other.getRGB(ox + nx, oy + ny), tolerance)) {
+                if (nx >= 0 && ny >= 0 && nx < N && ny < N && close(colour, other[ny * N + nx], tolerance)) {
                     return true;
                 }
             }

@@ -1,6 +1,7 @@
 package simpview.reference;
 
 import java.awt.image.BufferedImage;
+import simpview.testing.Images;
 
 /**
  * How much of one 650x650 panel agrees with another: a pixel of the first
@@ -17,13 +18,7 @@ final class PanelAgreement {
 
     /** The panel whose top-left pixel is at (left, top) of the image. */
     static int[] panel(BufferedImage image, int left, int top) {
-        int[] panel = new int[N * N];
-        for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                panel[y * N + x] = image.getRGB(left + x, top + y) & 0xFFFFFF;
-            }
-        }
-        return panel;
+        return Images.rgb(image, left, top, N, N);
     }
 
     /** The panel of a 750x750 page. */

@@ -141,17 +141,13 @@ final class RefRaster {
 
     /** The 750x750 page: white margins around the panel (image rows run down). */
     BufferedImage page() {
-        BufferedImage image = new BufferedImage(PAGE, PAGE, BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < PAGE; y++) {
-            for (int x = 0; x < PAGE; x++) {
-                image.setRGB(x, y, 0xFFFFFF);
-            }
-        }
+        int[] rows = new int[PAGE * PAGE];
+        Arrays.fill(rows, 0xFFFFFF);
         for (int y = 0; y < N; y++) {
-            for (int x = 0; x < N; x++) {
-                image.setRGB(MARGIN + x, MARGIN + N - 1 - y, panel[y * N + x]);
-            }
+            System.arraycopy(panel, y * N, rows, (MARGIN + N - 1 - y) * PAGE + MARGIN, N);
         }
+        BufferedImage image = new BufferedImage(PAGE, PAGE, BufferedImage.TYPE_INT_RGB);
+        image.setRGB(0, 0, PAGE, PAGE, rows, 0, PAGE);
         return image;
     }
 }

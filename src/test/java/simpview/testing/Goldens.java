@@ -39,21 +39,20 @@ public final class Goldens {
         BufferedImage golden = read(goldenFile);
         assertEquals(golden.getWidth() + "x" + golden.getHeight(), actual.getWidth() + "x" + actual.getHeight(),
                 "size of " + name);
+        int[] expected = Images.rgb(golden);
+        int[] got = Images.rgb(actual);
         int differing = 0;
-        BufferedImage diff = new BufferedImage(golden.getWidth(), golden.getHeight(), BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < golden.getHeight(); y++) {
-            for (int x = 0; x < golden.getWidth(); x++) {
-                int expected = golden.getRGB(x, y) & 0xFFFFFF;
-                int got = actual.getRGB(x, y) & 0xFFFFFF;
-                if (expected != got) {
-                    differing++;
-                    diff.setRGB(x, y, 0xFF0000);
-                } else {
-                    diff.setRGB(x, y, expected >> 2 & 0x3F3F3F);
-                }
-            }
+        for (int i = 0; i < expected.length; i++) {
+            differing += expected[i] != got[i] ? 1 : 0;
         }
         if (differing > 0) {
+            int w = golden.getWidth();
+            BufferedImage diff = new BufferedImage(w, golden.getHeight(), BufferedImage.TYPE_INT_RGB);
+            int[] marked = new int[expected.length];
+            for (int i = 0; i < expected.length; i++) {
+                marked[i] = expected[i] != got[i] ? 0xFF0000 : expected[i] >> 2 & 0x3F3F3F;
+            }
+            diff.setRGB(0, 0, w, golden.getHeight(), marked, 0, w);
             Path actualFile = writeFailure(name + "-actual", actual);
             Path diffFile = writeFailure(name + "-diff", diff);
             fail(differing + " pixels of " + name + " differ from " + goldenFile

@@ -120,32 +120,31 @@ class OutlinePicturesTest {
     }
 
     private static void assertSamePixels(BufferedImage expected, BufferedImage got, String where) {
+        int[] e = argb(expected);
+        int[] g = argb(got);
         int differing = 0;
         int lit = 0;
-        for (int y = 0; y < expected.getHeight(); y++) {
-            for (int x = 0; x < expected.getWidth(); x++) {
-                if (expected.getRGB(x, y) != got.getRGB(x, y)) {
-                    differing++;
-                }
-                if (expected.getRGB(x, y) != 0) {
-                    lit++;
-                }
-            }
+        for (int i = 0; i < e.length; i++) {
+            differing += e[i] != g[i] ? 1 : 0;
+            lit += e[i] != 0 ? 1 : 0;
         }
         assertTrue(lit > 1000, where + ": the wire shows (" + lit + " pixels)");
         assertEquals(0, differing, where + ": pixels other than the whole wire's drawn at once");
     }
 
     private static void assertSameScreen(BufferedImage expected, BufferedImage got, String where) {
+        int[] e = argb(expected);
+        int[] g = argb(got);
         int differing = 0;
-        for (int y = 0; y < expected.getHeight(); y++) {
-            for (int x = 0; x < expected.getWidth(); x++) {
-                if (expected.getRGB(x, y) != got.getRGB(x, y)) {
-                    differing++;
-                }
-            }
+        for (int i = 0; i < e.length; i++) {
+            differing += e[i] != g[i] ? 1 : 0;
         }
         assertEquals(0, differing, where + ": screen pixels other than under the whole wire drawn at once");
+    }
+
+    /** Every pixel with its alpha, as getRGB gives it, row by row. */
+    private static int[] argb(BufferedImage image) {
+        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
     }
 
     /** The outlines whose box meets the view's part of the panel, grown by the stroke's reach: counted one by one. */
