@@ -349,8 +349,8 @@ class LitScenesTest {
         ScenePipeline.draw(write("c", "ambient 1 1 1", "polygon (-50 -50 -100 2 0 0) (50 -50 -100 2 0 0) (0 50 -100 2 0 0)",
                 "line (-90 90 -100 0 -1 0) (90 90 -100 0 0 0)"), canvas,
                 ScenePipeline.Options.lit(new SceneLibrary()), monitor);
-        assertEquals(List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line)"),
-                warnings);
+        assertEquals(List.of("c.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line): a"
+                + " colour runs from 0 to 1, not 0 to 255 (2 of 255 is 0.008)"), warnings);
         assertEquals(List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
     }
 

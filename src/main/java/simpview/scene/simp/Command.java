@@ -186,6 +186,19 @@ public final class Command {
         return fileName;
     }
 
+    /** The largest colour channel as written, of a line or polygon whose vertices have colours. */
+    double largestColourChannel() {
+        int n = kind.vertices();
+        int stride = count / n;
+        double most = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < n; k++) {
+            for (int c = 0; c < 3; c++) {
+                most = Math.max(most, numbers[stride * k + 3 + c]);
+            }
+        }
+        return most;
+    }
+
     /**
      * Splits a line's or polygon's numbers into points and colours: a point
      * per vertex, each followed by its colour when there are twice as many

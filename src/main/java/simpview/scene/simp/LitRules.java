@@ -319,13 +319,20 @@ final class LitRules implements RuleSet {
         for (int i = from; i < from + 3; i++) {
             double v = c.numbers[i];
             if (v > 1) {
-                String scale = v >= 2 ? ", not 0 to 255 (" + Camera.written(v) + " of 255 is "
-                        + Camera.written(Math.round(v / 255 * 1000) / 1000.0) + ")" : "";
                 firstColourAboveOne = files.place() + ": " + what + " " + Camera.written(v) + " is above 1: a colour"
-                        + " runs from 0 to 1" + scale + "; " + effect + " (this is the first such command)";
+                        + " runs from 0 to 1" + notOf255(v) + "; " + effect + " (this is the first such command)";
                 return;
             }
         }
+    }
+
+    /**
+     * For a colour channel {@code v} above 1: from 2 on, that a colour is not of 0 to 255 and what v of 255
+     * would be (", not 0 to 255 (255 of 255 is 1)"), as a student who wrote bytes needs to hear; else "".
+     */
+    static String notOf255(double v) {
+        return v >= 2 ? ", not 0 to 255 (" + Camera.written(v) + " of 255 is "
+                + Camera.written(Math.round(v / 255 * 1000) / 1000.0) + ")" : "";
     }
 
     /**

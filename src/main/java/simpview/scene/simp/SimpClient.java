@@ -60,6 +60,8 @@ public final class SimpClient {
     private boolean drew;
     /** Where the first colour outside [0, 1] was clamped ("file:line"), or null. */
     private String firstClamped;
+    /** The largest channel written on that line, when it is a line of this scene's own (not a model's), else NaN. */
+    private double firstClampedMost = Double.NaN;
     /** Where the first line or polygon with its vertices' own colours stands, or null. */
     private String firstOwnColours;
     /** A lit command met and ignored ({@link OnLit#IGNORE}): where the first stood, or null. */
@@ -279,6 +281,7 @@ public final class SimpClient {
     private double[] colours(Command c) {
         if (c.clamped && firstClamped == null) {
             firstClamped = files.place();
+            firstClampedMost = c.largestColourChannel();
         }
         if (c.colored && firstOwnColours == null) {
             firstOwnColours = files.place();
@@ -377,7 +380,8 @@ public final class SimpClient {
             w.add(lit.fogUnseen());
         }
         if (firstClamped != null) {
-            w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)");
+            w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)"
+                    + (firstClampedMost >= 2 ? ": a colour runs from 0 to 1" + LitRules.notOf255(firstClampedMost) : ""));
         }
         String nonFinite = rules.firstNonFinite();
         if (nonFinite != null) {

@@ -489,6 +489,30 @@ class ScenePipelineTest {
         assertEquals(List.of(), warnings, "the course's pages are depth-cued by the course's rule: no word of it");
     }
 
+    /**
+     * Colours written as bytes (255 0 0 for red), the common slip of a student who knows colours from paint
+     * programs: the clamp's warning says a colour runs from 0 to 1 and what the largest channel of that line
+     * would be; a channel a little above 1, or below 0, is told of the clamp alone.
+     */
+    @Test
+    void coloursOfZeroTo255AreToldTheyRunFromZeroToOne() throws Exception {
+        PageCanvas canvas = new PageCanvas();
+        draw(write("bytes.simp", "polygon (-60 -50 -50 1 0 0) (60 -50 -50 0 1 0) (0 60 -50 0 0 1)",
+                "polygon (-60 -50 -60 255 0 0) (60 -50 -60 0 128 0) (0 60 -60 0 0 255)",
+                "polygon (-60 -50 -70 300 0 0) (60 -50 -70 0 1 0) (0 60 -70 0 0 1)"), canvas,
+                ScenePipeline.Rules.BY_COMMANDS);
+        assertEquals("bytes.simp:2: colour channels outside 0 to 1 were clamped (this is the first such line): a colour"
+                + " runs from 0 to 1, not 0 to 255 (255 of 255 is 1)", warnings.get(0));
+        for (String[] line : new String[][] {{"(-60 -50 -50 1.5 0 0)", ""}, {"(-60 -50 -50 -3 0 0)", ""},
+                {"(-60 -50 -50 0 2 0)", ": a colour runs from 0 to 1, not 0 to 255 (2 of 255 is 0.008)"}}) {
+            warnings.clear();
+            draw(write("near.simp", "polygon " + line[0] + " (60 -50 -50 0 1 0) (0 60 -50 0 0 1)"), canvas,
+                    ScenePipeline.Rules.BY_COMMANDS);
+            assertEquals("near.simp:1: colour channels outside 0 to 1 were clamped (this is the first such line)"
+                    + line[1], warnings.get(0), line[0]);
+        }
+    }
+
     @Test
     void aMissingSceneNamedWithoutItsExtensionSaysBothWereLookedFor() {
         SceneException e = assertThrows(SceneException.class,
