@@ -383,7 +383,7 @@ class LitScenesTest {
 
     @Test
     void aModelsColourOutsideZeroToOneIsClampedWithTheSameWarning() throws Exception {
-        Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 2 0 0\nv 0 50 -100 1 -1 0\nf 1 2 3\n");
+        Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 255 0 0\nv 0 50 -100 1 -1 0\nf 1 2 3\n");
         for (int drawing = 0; drawing < 2; drawing++) { // the model parsed, then kept and replayed
             List<String> warnings = new ArrayList<>();
             SceneMonitor monitor = keeping(warnings);
@@ -392,9 +392,9 @@ class LitScenesTest {
             Path scene = write("m", "ambient 1 1 1", "obj \"m\"", "obj \"m\"");
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
             ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), monitor);
-            assertEquals(List.of(
-                    "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)",
-                    "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line)"), warnings);
+            String clamped = "m.obj:2: colour channels outside 0 to 1 were clamped (this is the first such line): a"
+                    + " colour runs from 0 to 1, not 0 to 255 (255 of 255 is 1)";
+            assertEquals(List.of(clamped, clamped), warnings);
             assertEquals(List.of(255, 0, 0), list(rgb(canvas, 325, 325)), "red clamped to 1");
         }
         Files.writeString(dir.resolve("m.obj"), "v -50 -50 -100 1 0 0\nv 50 -50 -100 1 0 0\nv 0 50 -100 1 0 0\nf 1 2 3\n");
@@ -407,8 +407,8 @@ class LitScenesTest {
         List<String> first = new ArrayList<>();
         ScenePipeline.draw(write("m", "ambient 1 1 1", "obj \"m\"", "line (0 0 -5 1.5 0 0) (1 1 -5 0 0 0)"),
                 new PageCanvas(), ScenePipeline.Options.lit(new SceneLibrary()), keeping(first));
-        assertEquals(List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line)"),
-                first);
+        assertEquals(List.of("m.obj:1: colour channels outside 0 to 1 were clamped (this is the first such line): a"
+                + " colour runs from 0 to 1, not 0 to 255 (2 of 255 is 0.008)"), first);
     }
 
     /**

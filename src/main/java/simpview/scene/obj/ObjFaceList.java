@@ -106,6 +106,7 @@ final class ObjFaceList {
                 normalRefs == null ? null : Arrays.copyOf(normalRefs, refCount),
                 Arrays.copyOf(lines, faceCount),
                 vertices.firstClampedColour,
+                vertices.firstClampedChannel,
                 warnings);
     }
 }

@@ -33,11 +33,14 @@ public final class ObjModel {
     private final int[] faceLines;
     /** The line of the first vertex with a colour channel outside [0, 1], or 0 ({@link ObjCounts}). */
     private final int firstClampedColour;
+    /** The largest channel of that colour, or NaN ({@link ObjCounts}). */
+    private final double firstClampedChannel;
     /** What reading the file warned of ({@link ObjCounts#warnings}). */
     private final List<String> warnings;
 
     ObjModel(double[] positions, double[] colours, double[] normals,
-            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour, List<String> warnings) {
+            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour, double firstClampedChannel,
+            List<String> warnings) {
         this.positions = positions;
         this.colours = colours;
         this.normals = normals;
@@ -46,6 +49,7 @@ public final class ObjModel {
         this.normalRefs = normalRefs;
         this.faceLines = faceLines;
         this.firstClampedColour = firstClampedColour;
+        this.firstClampedChannel = firstClampedChannel;
         this.warnings = List.copyOf(warnings);
     }
 
@@ -82,7 +86,8 @@ public final class ObjModel {
     }
 
     public ObjCounts counts() {
-        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour, warnings);
+        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour, firstClampedChannel,
+                warnings);
     }
 
     /** The bytes of its arrays, what a cache of models counts. */

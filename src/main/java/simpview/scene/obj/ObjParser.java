@@ -170,7 +170,7 @@ final class ObjParser {
             close();
         }
         return new ObjCounts(vertices.vertexCount, vertices.normalCount, faceCount, vertices.firstClampedColour,
-                warnings());
+                vertices.firstClampedChannel, warnings());
     }
 
     /** What the reading noticed that is worth a warning, each naming the file. */

@@ -20,6 +20,8 @@ final class ObjVertices {
     int normalCount;
     /** The line of the first vertex with a colour channel outside [0, 1], or 0. */
     int firstClampedColour;
+    /** The largest channel of that vertex's colour as written, or NaN. */
+    double firstClampedChannel = Double.NaN;
 
     void addVertex(double x, double y, double z) {
         if (3 * vertexCount == positions.length) {
@@ -39,6 +41,7 @@ final class ObjVertices {
         addVertex(x, y, z);
         if (firstClampedColour == 0 && !(within(r) && within(g) && within(b))) {
             firstClampedColour = line;
+            firstClampedChannel = Math.max(r, Math.max(g, b));
         }
         if (colours == null) {
             colours = new double[positions.length];

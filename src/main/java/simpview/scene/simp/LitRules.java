@@ -42,6 +42,7 @@ final class LitRules implements RuleSet {
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     /** Where the first model colour outside 0 to 1 stands ("dummy.obj:12"), or null. */
     private String firstClampedColour;
+    private double firstClampedChannel = Double.NaN;
     /** The first surface or fog colour with a channel above 1, as the warning names it, or null. */
     private String firstColourAboveOne;
     /** Where the last depth command stands (null before one: no fog yet), and the last fog checked (state.fog()). */
@@ -214,6 +215,7 @@ final class LitRules implements RuleSet {
         files.modelDrawn(file, modelsSeen.asRead(file));
         if (firstClampedColour == null && counts.firstClampedColour() > 0) {
             firstClampedColour = files.shown(file) + ":" + counts.firstClampedColour();
+            firstClampedChannel = counts.firstClampedChannel();
         }
         // the reader names the model by its file name alone (it knows no scene): the scene names it as its files
         String bare = String.valueOf(file.getFileName());
@@ -249,6 +251,11 @@ final class LitRules implements RuleSet {
     @Override
     public String firstClampedColour() {
         return firstClampedColour;
+    }
+
+    @Override
+    public double firstClampedChannel() {
+        return firstClampedChannel;
     }
 
     boolean surface(Command c) throws SceneException {

@@ -76,6 +76,11 @@ sealed interface RuleSet permits DepthCuedRules, LitRules {
         return null;
     }
 
+    /** The largest channel, as written, of the colour {@link #firstClampedColour} names, or NaN. */
+    default double firstClampedChannel() {
+        return Double.NaN;
+    }
+
     /** What the models these rules read warned of, in reading order, each once ("de.obj:1:3: ..."). */
     default List<String> modelWarnings() {
         return List.of();

@@ -60,7 +60,7 @@ public final class SimpClient {
     private boolean drew;
     /** Where the first colour outside [0, 1] was clamped ("file:line"), or null. */
     private String firstClamped;
-    /** The largest channel written on that line, when it is a line of this scene's own (not a model's), else NaN. */
+    /** The largest channel of a colour clamped on that line, as written, or NaN. */
     private double firstClampedMost = Double.NaN;
     /** Where the first line or polygon with its vertices' own colours stands, or null. */
     private String firstOwnColours;
@@ -210,6 +210,7 @@ public final class SimpClient {
         drew = true;
         if (firstClamped == null) {
             firstClamped = rules.firstClampedColour(); // the model's, read by this command
+            firstClampedMost = rules.firstClampedChannel();
         }
         return true;
     }
