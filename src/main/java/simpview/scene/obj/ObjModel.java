@@ -38,9 +38,8 @@ public final class ObjModel {
     /** What reading the file warned of ({@link ObjCounts#warnings}). */
     private final List<String> warnings;
 
-    ObjModel(double[] positions, double[] colours, double[] normals,
-            int[] faceStarts, int[] vertexRefs, int[] normalRefs, int[] faceLines, int firstClampedColour, double firstClampedChannel,
-            List<String> warnings) {
+    ObjModel(double[] positions, double[] colours, double[] normals, int[] faceStarts, int[] vertexRefs,
+            int[] normalRefs, int[] faceLines, int firstClampedColour, double firstClampedChannel, List<String> warnings) {
         this.positions = positions;
         this.colours = colours;
         this.normals = normals;
@@ -86,8 +85,8 @@ public final class ObjModel {
     }
 
     public ObjCounts counts() {
-        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour, firstClampedChannel,
-                warnings);
+        return new ObjCounts(positions.length / 3, normals.length / 3, faceCount(), firstClampedColour,
+                firstClampedChannel, warnings);
     }
 
     /** The bytes of its arrays, what a cache of models counts. */

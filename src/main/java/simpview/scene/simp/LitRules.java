@@ -42,6 +42,7 @@ final class LitRules implements RuleSet {
     private final ObjFilesSeen modelsSeen = new ObjFilesSeen();
     /** Where the first model colour outside 0 to 1 stands ("dummy.obj:12"), or null. */
     private String firstClampedColour;
+    /** The largest channel of that colour, as written, or NaN. */
     private double firstClampedChannel = Double.NaN;
     /** The first surface or fog colour with a channel above 1, as the warning names it, or null. */
     private String firstColourAboveOne;
