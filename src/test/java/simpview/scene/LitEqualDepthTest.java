@@ -17,6 +17,7 @@ import simpview.scene.simp.SceneMonitor;
 import simpview.scene.simp.ScenePipeline;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.testing.Images;
 import simpview.testing.ThreadCounts;
 
 /**
@@ -99,7 +100,7 @@ class LitEqualDepthTest {
         int[] counts = new int[2];
         int m = PageCanvas.MARGIN;
         int n = PageCanvas.PANEL;
-        int[] panel = canvas.image().getRGB(m, m, n, n, null, 0, n);
+        int[] panel = Images.rgb(canvas.image(), m, m, n, n);
         for (int i = 0; i < panel.length; i++) {
             int rgb = panel[i] & 0xFFFFFF;
             boolean red = (rgb & 0xFF0000) != 0;

@@ -3,6 +3,7 @@ package simpview.testing;
 import java.awt.image.BufferedImage;
 import java.awt.image.ColorModel;
 import java.awt.image.ComponentColorModel;
+import java.awt.image.DataBuffer;
 import java.awt.image.DirectColorModel;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -74,6 +75,13 @@ public final class Images {
      */
     public static int[] rgb(BufferedImage image, int left, int top, int w, int h) {
         int[] out = new int[w * h];
+        if (packedRgb(image.getColorModel())) {
+            image.getRaster().getDataElements(left, top, w, h, out);
+            for (int i = 0; i < out.length; i++) {
+                out[i] &= 0xFFFFFF;
+            }
+            return out;
+        }
         if (!samplesAreSrgb(image.getColorModel())) {
             image.getRGB(left, top, w, h, out, 0, w);
             for (int i = 0; i < out.length; i++) {
@@ -87,6 +95,13 @@ public final class Images {
             out[i] = samples[s] << 16 | samples[s + 1] << 8 | samples[s + 2];
         }
         return out;
+    }
+
+    /** Pixels packed in an int as 0x..RRGGBB in sRGB, alpha (if any) not multiplied in: TYPE_INT_RGB and _ARGB. */
+    private static boolean packedRgb(ColorModel model) {
+        return model instanceof DirectColorModel direct && direct.getTransferType() == DataBuffer.TYPE_INT
+                && direct.getRedMask() == 0xFF0000 && direct.getGreenMask() == 0xFF00 && direct.getBlueMask() == 0xFF
+                && direct.getColorSpace().isCS_sRGB() && !direct.isAlphaPremultiplied();
     }
 
     private static boolean samplesAreSrgb(ColorModel model) {
