@@ -143,11 +143,13 @@ public final class ZBuffer {
 
     /**
      * Rows from &lt;= y &lt; to back to the depth {@link #resetByRows} or {@link #resetWhenNeeded} gave: of a
-     * row last reset to that same depth, the run written since; of any other, every entry.
+     * row last reset to that same depth, the run written since; of any other, every entry, the first such
+     * row by a fill and the others as copies of it (as {@link ImageDrawable#fillRect}, for the interpreter and C1).
      */
     public void resetRows(int from, int to) {
         double farthest = resetTo;
         long bits = Double.doubleToLongBits(farthest);
+        int filled = -1; // a row of this call filled whole with farthest, once there is one
         for (int y = from; y < to; y++) {
             int row = y * width;
             if (Double.doubleToLongBits(rowReset[y]) == bits) {
@@ -155,7 +157,12 @@ public final class ZBuffer {
                     Arrays.fill(depth, row + writtenFrom[y], row + writtenTo[y], farthest);
                 }
             } else {
-                Arrays.fill(depth, row, row + width, farthest);
+                if (filled < 0) {
+                    Arrays.fill(depth, row, row + width, farthest);
+                    filled = row;
+                } else {
+                    System.arraycopy(depth, filled, depth, row, width);
+                }
                 rowReset[y] = farthest;
             }
             writtenFrom[y] = width;
