@@ -1,6 +1,7 @@
 package simpview.compare;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.ColorModel;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -58,7 +59,19 @@ public final class PngFiles {
         return name.lastIndexOf('.') > 0 ? file : file.resolveSibling(name + ".png");
     }
 
+    /**
+     * An opaque picture in sRGB (every page, sheet and view simpview saves)
+     * through {@link PngCodec}, as compare's own pictures: 8-bit RGB, its
+     * levels as they are. ImageIO, for any other picture (with alpha, grey, in
+     * another colour space), writes it as its kind: it also costs more,
+     * 25-36 ms against 7-11 for a warm page, 74-90 against 35 for the first
+     * one a process writes (docs/performance-log.md, "Session 45").
+     */
     private static byte[] encode(BufferedImage image) throws IOException {
+        ColorModel model = image.getColorModel();
+        if (!model.hasAlpha() && model.getColorSpace().isCS_sRGB()) {
+            return PngCodec.encode(image.getWidth(), image.getHeight(), Rasters.rgb(image));
+        }
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ImageOutputStream out = new MemoryCacheImageOutputStream(bytes)) {
             if (!ImageIO.write(image, "png", out)) {
