@@ -55,30 +55,28 @@ public final class ContactSheet {
         return sheet;
     }
 
-    /** Half size by averaging each 2x2 block: exact and the same on every machine. */
+    /** Half size by averaging each 2x2 block: exact and the same on every machine. Two rows read at a time. */
     static BufferedImage halved(BufferedImage page) {
         int w = page.getWidth() / 2;
         int h = page.getHeight() / 2;
         BufferedImage small = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] rows = new int[4 * w]; // the block rows 2y and 2y + 1, 2w pixels each
+        int[] out = new int[w];
         for (int y = 0; y < h; y++) {
+            page.getRGB(0, 2 * y, 2 * w, 2, rows, 0, 2 * w);
             for (int x = 0; x < w; x++) {
-                int[] block = page.getRGB(2 * x, 2 * y, 2, 2, null, 0, 2);
-                small.setRGB(x, y, average(block));
+                out[x] = average(rows[2 * x], rows[2 * x + 1], rows[2 * w + 2 * x], rows[2 * w + 2 * x + 1]);
             }
+            small.setRGB(0, y, w, 1, out, 0, w);
         }
         return small;
     }
 
-    private static int average(int[] pixels) {
-        int r = 0;
-        int g = 0;
-        int b = 0;
-        for (int p : pixels) {
-            r += Colors.red(p);
-            g += Colors.green(p);
-            b += Colors.blue(p);
-        }
-        int n = pixels.length;
-        return 0xFF000000 | (r + n / 2) / n << 16 | (g + n / 2) / n << 8 | (b + n / 2) / n;
+    /** The four pixels' mean, each channel rounded half up. */
+    private static int average(int a, int b, int c, int d) {
+        int r = Colors.red(a) + Colors.red(b) + Colors.red(c) + Colors.red(d);
+        int g = Colors.green(a) + Colors.green(b) + Colors.green(c) + Colors.green(d);
+        int bl = Colors.blue(a) + Colors.blue(b) + Colors.blue(c) + Colors.blue(d);
+        return 0xFF000000 | (r + 2) / 4 << 16 | (g + 2) / 4 << 8 | (bl + 2) / 4;
     }
 }

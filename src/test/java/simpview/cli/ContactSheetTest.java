@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.awt.image.BufferedImage;
 import java.util.Collections;
 import java.util.List;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 public class ContactSheetTest {
@@ -35,5 +36,33 @@ public class ContactSheetTest {
         int cell = ContactSheet.TILE + ContactSheet.GAP;
         assertEquals(ContactSheet.GAP + 4 * cell, sheet.getWidth());
         assertEquals(ContactSheet.GAP + 2 * (cell + ContactSheet.LABEL_HEIGHT), sheet.getHeight());
+    }
+
+    /** Every block of a noisy page of odd size (its last row and column left out), against the mean by hand. */
+    @Test
+    void everyBlockOfANoisyPageIsItsFourPixelsMean() {
+        BufferedImage page = new BufferedImage(751, 749, BufferedImage.TYPE_INT_RGB);
+        Random random = new Random(45);
+        for (int y = 0; y < page.getHeight(); y++) {
+            for (int x = 0; x < page.getWidth(); x++) {
+                page.setRGB(x, y, random.nextInt());
+            }
+        }
+        BufferedImage half = ContactSheet.halved(page);
+        assertEquals(375, half.getWidth());
+        assertEquals(374, half.getHeight());
+        for (int y = 0; y < half.getHeight(); y++) {
+            for (int x = 0; x < half.getWidth(); x++) {
+                int want = 0;
+                for (int shift = 16; shift >= 0; shift -= 8) {
+                    int sum = 0;
+                    for (int j = 0; j < 4; j++) {
+                        sum += page.getRGB(2 * x + j % 2, 2 * y + j / 2) >> shift & 0xFF;
+                    }
+                    want = want << 8 | (int) Math.floor(sum / 4.0 + 0.5);
+                }
+                assertEquals(want, half.getRGB(x, y) & 0xFFFFFF, "block (" + x + ", " + y + ")");
+            }
+        }
     }
 }
