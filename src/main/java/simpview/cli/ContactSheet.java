@@ -20,8 +20,13 @@ public final class ContactSheet {
     static final int LABEL_HEIGHT = 28;
     static final int GAP = 12;
 
-    /** One page of the sheet. */
-    record Tile(String label, BufferedImage page) {
+    /** One page of the sheet, kept at the sheet's half size ({@link #of}): a sheet of many scenes holds no page whole. */
+    record Tile(String label, BufferedImage half) {
+
+        /** The tile of a finished page (750x750), halved now: the page may be drawn over after. */
+        static Tile of(String label, BufferedImage page) {
+            return new Tile(label, halved(page));
+        }
     }
 
     private ContactSheet() {
@@ -45,7 +50,7 @@ public final class ContactSheet {
             for (int i = 0; i < tiles.size(); i++) {
                 int x = GAP + (i % COLUMNS) * (TILE + GAP);
                 int y = GAP + (i / COLUMNS) * (cellHeight + GAP);
-                g.drawImage(halved(tiles.get(i).page()), x, y, null);
+                g.drawImage(tiles.get(i).half(), x, y, null);
                 g.setColor(Color.BLACK);
                 g.drawString(tiles.get(i).label(), x + 4, y + TILE + LABEL_HEIGHT - 9);
             }

@@ -462,7 +462,8 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         for (int n = 1; n <= Assignment2.COUNT; n++) {
             try {
                 String seedNote = Assignment2.page(n).usesSeed() ? " — seed " + context.seed() : "";
-                tiles.add(new ContactSheet.Tile(n + "  " + Assignment2.page(n).title() + seedNote, renderer.renderImage(n, context)));
+                tiles.add(ContactSheet.Tile.of(n + "  " + Assignment2.page(n).title() + seedNote,
+                        renderer.renderImage(n, context)));
             } catch (SceneException e) {
                 err().println("page " + n + " left out: " + e.getMessage());
             }
@@ -502,7 +503,7 @@ public final class RenderCommand implements Callable<Integer>, NamedOutputs.OfCo
         for (Path scene : sheet) {
             try {
                 drawing.scene(scene, null, null, false);
-                tiles.add(new ContactSheet.Tile(String.valueOf(scene.getFileName()), drawing.canvas().snapshot()));
+                tiles.add(ContactSheet.Tile.of(String.valueOf(scene.getFileName()), drawing.canvas().image()));
             } catch (SceneException e) {
                 err().println(scene + " left out: " + e.getMessage());
             }

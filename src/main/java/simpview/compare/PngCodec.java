@@ -296,46 +296,64 @@ final class PngCodec {
         return (palette[3 * index] & 0xFF) << 16 | (palette[3 * index + 1] & 0xFF) << 8 | palette[3 * index + 2] & 0xFF;
     }
 
+    /** A picture's rows for {@link #encode(int, int, Rows)}: row y (0 at the top) into {@code into}, width pixels. */
+    interface Rows {
+        /** Row y as 0xRRGGBB (any top byte: only the low 24 bits are written). */
+        void row(int y, int[] into);
+    }
+
+    /** As {@link #encode(int, int, Rows)}, of width x height pixels row by row from the top in {@code rgb}. */
+    static byte[] encode(int width, int height, int[] rgb) {
+        return encode(width, height, (y, into) -> System.arraycopy(rgb, y * width, into, 0, width));
+    }
+
     /**
      * An 8-bit RGB PNG of 0xRRGGBB pixels, every row but the first filtered
      * "Up" (the difference from the row above: pictures of panels repeat a lot
-     * from row to row, so this deflates smaller and faster), at the fastest level.
+     * from row to row, so this deflates smaller and faster), at the fastest
+     * level. The rows are read, filtered and deflated one at a time: beside
+     * the picture, only two rows and the deflated bytes are held.
      */
-    static byte[] encode(int width, int height, int[] rgb) {
-        byte[] raw = new byte[(3 * width + 1) * height];
-        for (int y = 0, o = 0; y < height; y++) {
-            raw[o++] = (byte) (y == 0 ? 0 : 2);
-            for (int x = 0; x < width; x++) {
-                int c = rgb[y * width + x];
-                int up = y == 0 ? 0 : rgb[(y - 1) * width + x];
-                raw[o++] = (byte) ((c >> 16) - (up >> 16));
-                raw[o++] = (byte) ((c >> 8) - (up >> 8));
-                raw[o++] = (byte) (c - up);
-            }
-        }
-        ByteArrayOutputStream out = new ByteArrayOutputStream(raw.length / 4);
-        out.writeBytes(SIGNATURE);
-        ByteBuffer ihdr = ByteBuffer.allocate(13).putInt(width).putInt(height).put((byte) 8).put((byte) 2);
-        chunk(out, "IHDR", ihdr.array());
-        chunk(out, "IDAT", deflate(raw));
-        chunk(out, "IEND", new byte[0]);
-        return out.toByteArray();
-    }
-
-    private static byte[] deflate(byte[] raw) {
+    static byte[] encode(int width, int height, Rows rows) {
+        int[] row = new int[width];
+        int[] up = new int[width]; // the row above, 0 above the first (which then is filtered "None" alike)
+        byte[] filtered = new byte[3 * width + 1];
+        ByteArrayOutputStream idat = new ByteArrayOutputStream();
+        byte[] buffer = new byte[1 << 16];
         Deflater deflater = new Deflater(Deflater.BEST_SPEED);
         try {
-            deflater.setInput(raw);
-            deflater.finish();
-            ByteArrayOutputStream out = new ByteArrayOutputStream(raw.length / 8 + 64);
-            byte[] buffer = new byte[1 << 16];
-            while (!deflater.finished()) {
-                out.write(buffer, 0, deflater.deflate(buffer));
+            for (int y = 0; y < height; y++) {
+                rows.row(y, row);
+                filtered[0] = (byte) (y == 0 ? 0 : 2);
+                for (int x = 0, o = 1; x < width; x++) {
+                    int c = row[x];
+                    int above = up[x];
+                    filtered[o++] = (byte) ((c >> 16) - (above >> 16));
+                    filtered[o++] = (byte) ((c >> 8) - (above >> 8));
+                    filtered[o++] = (byte) (c - above);
+                }
+                deflater.setInput(filtered);
+                while (!deflater.needsInput()) {
+                    idat.write(buffer, 0, deflater.deflate(buffer));
+                }
+                int[] was = up;
+                up = row;
+                row = was;
             }
-            return out.toByteArray();
+            deflater.finish();
+            while (!deflater.finished()) {
+                idat.write(buffer, 0, deflater.deflate(buffer));
+            }
         } finally {
             deflater.end();
         }
+        ByteArrayOutputStream out = new ByteArrayOutputStream(idat.size() + 64);
+        out.writeBytes(SIGNATURE);
+        ByteBuffer ihdr = ByteBuffer.allocate(13).putInt(width).putInt(height).put((byte) 8).put((byte) 2);
+        chunk(out, "IHDR", ihdr.array());
+        chunk(out, "IDAT", idat.toByteArray());
+        chunk(out, "IEND", new byte[0]);
+        return out.toByteArray();
     }
 
     /** One chunk of a PNG file to {@code out}: its length, type, data and CRC (tests write odd files with it too). */

@@ -47,6 +47,21 @@ final class Rasters {
     }
 
     /**
+     * The picture's rows as {@link #rgb} reads them, one at a time, for
+     * {@link PngCodec#encode(int, int, PngCodec.Rows)}: 0xRRGGBB with any top
+     * byte, an int RGB picture's straight from its buffer, any other's by a
+     * getRGB of the row.
+     */
+    static PngCodec.Rows rows(BufferedImage image) {
+        int w = image.getWidth();
+        if (isPlain(image, BufferedImage.TYPE_INT_RGB) || isPlain(image, BufferedImage.TYPE_INT_ARGB)) {
+            int[] data = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+            return (y, into) -> System.arraycopy(data, y * w, into, 0, w);
+        }
+        return (y, into) -> image.getRGB(0, y, w, 1, into, 0, w);
+    }
+
+    /**
      * A picture file's pixels as a viewer shows them. ImageIO gives a grey picture Java's linear grey
      * colour space, and a CMYK JPEG without a profile a CMYK space of its own, and getRGB would take
      * their levels for light and convert them: here a grey level v is (v, v, v) (16-bit levels scaled

@@ -31,7 +31,7 @@ public class ContactSheetTest {
     @Test
     void sheetHasFourColumnsAndAsManyRowsAsNeeded() {
         BufferedImage page = new BufferedImage(750, 750, BufferedImage.TYPE_INT_RGB);
-        List<ContactSheet.Tile> five = Collections.nCopies(5, new ContactSheet.Tile("x", page));
+        List<ContactSheet.Tile> five = Collections.nCopies(5, ContactSheet.Tile.of("x", page));
         BufferedImage sheet = ContactSheet.compose(five);
         int cell = ContactSheet.TILE + ContactSheet.GAP;
         assertEquals(ContactSheet.GAP + 4 * cell, sheet.getWidth());

@@ -69,6 +69,18 @@ class PngFilesTest {
         }
     }
 
+    /** A picture that is part of another (its raster's rows longer than it): its own rows, not its parent's. */
+    @Test
+    void aPartOfAPictureIsItsOwnPixels() throws IOException {
+        BufferedImage part = noise(BufferedImage.TYPE_INT_RGB, 3).getSubimage(5, 4, 21, 13);
+        BufferedImage read = writtenAndRead(part, "part.png");
+        for (int y = 0; y < part.getHeight(); y++) {
+            for (int x = 0; x < part.getWidth(); x++) {
+                assertEquals(part.getRGB(x, y), read.getRGB(x, y), "at (" + x + ", " + y + ")");
+            }
+        }
+    }
+
     @Test
     void aPictureWithAlphaKeepsIt() throws IOException {
         BufferedImage image = noise(BufferedImage.TYPE_INT_ARGB, 7);
