@@ -1,8 +1,5 @@
 package simpview.compare;
 
-import java.util.HashMap;
-import java.util.Map;
-
 /**
  * A background of another colour: where simpview's panel has its most common
  * colour (the colour the panel is cleared to, where nothing is drawn) on a
@@ -70,10 +67,10 @@ final class Background {
 
     /**
      * The most common colour of {@code pixels}; with {@code where}, only of the pixels at which {@code where} has
-     * the colour {@code only}.
+     * the colour {@code only}. Of two as common, the one that got there first in pixel order.
      */
-    private static int mostCommon(int[] pixels, int[] where, int only) {
-        Map<Integer, Integer> counts = new HashMap<>();
+    static int mostCommon(int[] pixels, int[] where, int only) {
+        ColourCounts counts = new ColourCounts();
         int best = 0;
         int bestCount = -1;
         for (int i = 0; i < pixels.length; i++) {
@@ -81,12 +78,66 @@ final class Background {
                 continue;
             }
             int rgb = pixels[i] & 0xFFFFFF;
-            int count = counts.merge(rgb, 1, Integer::sum);
+            int count = counts.add(rgb);
             if (count > bestCount) {
                 best = rgb;
                 bestCount = count;
             }
         }
         return best;
+    }
+
+    /**
+     * How many times each colour was added: open addressing over int arrays,
+     * a colour's slot picked by a multiplicative hash. (A HashMap of Integer
+     * boxed each pixel, and Integer's hash folds each grey 0xVVVVVV to a low
+     * byte of 0, so a page's greys shared a few buckets.)
+     */
+    private static final class ColourCounts {
+        /** A slot's colour with bit 24 set, 0 while the slot is free. */
+        private int[] keys = new int[1 << 12];
+        private int[] counts = new int[1 << 12];
+        private int bits = 12;
+        private int used;
+
+        /** Counts rgb (0xRRGGBB) once more: its count now. */
+        int add(int rgb) {
+            int key = rgb | 1 << 24;
+            int slot = slot(key);
+            if (keys[slot] == 0) {
+                if (2 * (used + 1) > keys.length) {
+                    grow();
+                    slot = slot(key);
+                }
+                keys[slot] = key;
+                used++;
+            }
+            return ++counts[slot];
+        }
+
+        /** The slot holding key, or the free one it would go in. */
+        private int slot(int key) {
+            int mask = keys.length - 1;
+            int slot = key * 0x9E3779B9 >>> 32 - bits;
+            while (keys[slot] != 0 && keys[slot] != key) {
+                slot = slot + 1 & mask;
+            }
+            return slot;
+        }
+
+        private void grow() {
+            int[] oldKeys = keys;
+            int[] oldCounts = counts;
+            bits++;
+            keys = new int[1 << bits];
+            counts = new int[1 << bits];
+            for (int i = 0; i < oldKeys.length; i++) {
+                if (oldKeys[i] != 0) {
+                    int slot = slot(oldKeys[i]);
+                    keys[slot] = oldKeys[i];
+                    counts[slot] = oldCounts[i];
+                }
+            }
+        }
     }
 }
