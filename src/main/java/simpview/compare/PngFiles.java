@@ -63,10 +63,10 @@ public final class PngFiles {
      * An opaque picture in sRGB (every page, sheet and view simpview saves)
      * through {@link PngCodec}, as compare's own pictures: 8-bit RGB, its
      * levels as they are, encoded a row at a time (a sheet of many scenes
-     * needs no second copy of itself). ImageIO, for any other picture (with alpha, grey, in
-     * another colour space), writes it as its kind: it also costs more,
-     * 25-36 ms against 7-11 for a warm page, 74-90 against 35 for the first
-     * one a process writes (docs/performance-log.md, "Session 45").
+     * needs no second copy of itself). ImageIO, for any other picture (with
+     * alpha, grey, in another colour space), writes it as its kind: it also
+     * costs more, 25-36 ms against 7-11 for a warm page, 74-90 against 35 for
+     * the first one a process writes (docs/performance-log.md, "Session 45").
      */
     private static byte[] encode(BufferedImage image) throws IOException {
         ColorModel model = image.getColorModel();
