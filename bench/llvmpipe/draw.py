@@ -195,7 +195,8 @@ def main():
             GL.glDrawArrays(mode, first, count)
         GL.glFinish()
 
-    # Warmed as the simpview side is (LlvmpipeExport): 3 s of redraws, at least 20.
+    # Warmed by 3 s of redraws, at least 20: llvmpipe compiles its shaders at
+    # the first draw. (LlvmpipeExport warms simpview longer, for C2.)
     warm_until = time.perf_counter() + 3
     warmed = 0
     while warmed < 20 or time.perf_counter() < warm_until:

@@ -58,10 +58,14 @@ import simpview.surface.Rgb;
  * redraws of the page on 1 thread (the median and best of 61), and on 2
  * threads taking turns with llvmpipe's (draw.py, started here):
  * {@value #TURNS} turns each, one after the other, of one untimed redraw and
- * {@value #TIMED_IN_A_TURN} timed. Each side is warmed by
- * {@value #WARM_SECONDS} s of redraws (at least 20) first. That is as long
- * as JMH's warm-up, so that the JIT has compiled the drawing before it is
- * timed, as llvmpipe's shaders are compiled before its redraws are.
+ * {@value #TIMED_IN_A_TURN} timed. simpview is warmed at each thread count
+ * by {@value #WARM_SECONDS} s of redraws (at least 20) first, as long as
+ * {@link LitPages}' JMH warm-up, so that C2 has compiled the drawing before
+ * it is timed, as llvmpipe's shaders are compiled before its redraws are
+ * (draw.py warms llvmpipe 3 s: it compiles its shaders at the first draw).
+ * With 3 s here too, as until session 45, simpview's one-thread redraws of
+ * A4 page-f1 came out at 20-28 ms (best 13-25) where JMH and this with 8 s
+ * give 10-13 (best 8.5-8.9): C2 was still compiling.
  *
  * <p>A2's depth cue is the fog of draw.py's shader: the cue's near colour as
  * every vertex's colour, fogged from z = 0 (near) to z = -200 (far) towards
@@ -123,7 +127,7 @@ public final class LlvmpipeExport {
     }
 
     /** How long each thread count is warmed by redraws before it is timed. */
-    private static final int WARM_SECONDS = 3;
+    private static final int WARM_SECONDS = 8;
     /** Turns each side takes, two threads against llvmpipe. */
     private static final int TURNS = 20;
     /** Redraws timed in a turn, after one untimed (draw.py's TIMED_IN_A_TURN). */
