@@ -381,8 +381,9 @@ public final class SimpClient {
             w.add(lit.fogUnseen());
         }
         if (firstClamped != null) {
+            String of255 = LitRules.notOf255(firstClampedMost); // "" unless the channel looks like a byte
             w.add(firstClamped + ": colour channels outside 0 to 1 were clamped (this is the first such line)"
-                    + (firstClampedMost >= 2 ? ": a colour runs from 0 to 1" + LitRules.notOf255(firstClampedMost) : ""));
+                    + (of255.isEmpty() ? "" : ": a colour runs from 0 to 1" + of255));
         }
         String nonFinite = rules.firstNonFinite();
         if (nonFinite != null) {
