@@ -490,6 +490,60 @@ class FragmentStageTest {
         assertSameDrawing(byPixel, atEnd);
     }
 
+    /** Colours of one-colour primitives: in [0, 1], a half byte, outside it, huge, and not finite. */
+    private static final double[] ONE_COLOURS = {0.5, 0, 1, -0.3, 1.7, 1e300, -1e300, Double.NaN,
+        Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
+
+    /**
+     * Spans of one colour ({@link FragmentStage#oneColour}) and phong spans of one kd lit by the ambient term
+     * alone, which are one colour too, long (a batch at a time under fog) and short (pixel by pixel), under no
+     * fog and each of {@link #FOGS}, draw what their pixels drawn one by one draw: colours, depths and owners,
+     * to the bit, whatever the colour or kd, in [0, 1] or not, finite or not.
+     */
+    @Property(tries = 120, seed = "1246001")
+    void spansOfOneColourDrawWhatTheirPixelsDraw(@ForAll long seed) {
+        Random random = new Random(seed);
+        LitState state = ambientScene(random);
+        PointShader frozen = state.frozenShader().get();
+        StageSetup bySpan = StageSetup.make(state, true);
+        StageSetup byPixel = StageSetup.make(state, true);
+        double[] v0 = new double[CHANNELS];
+        double[] dv = new double[CHANNELS];
+        double[] v = new double[CHANNELS];
+        int spans = 1 + random.nextInt(60);
+        for (int s = 0; s < spans; s++) {
+            double[] q = randomSpan(random, v0, dv);
+            for (int c = FragmentLayout.R; c <= FragmentLayout.B; c++) {
+                v0[c] = random.nextBoolean() ? random.nextDouble() : ONE_COLOURS[random.nextInt(ONE_COLOURS.length)];
+                dv[c] = 0;
+            }
+            Fog fog = random.nextInt(4) == 0 ? Fog.NONE : FOGS[random.nextInt(FOGS.length)];
+            boolean lit = random.nextBoolean();
+            int y = 10 + random.nextInt(4);
+            int from = random.nextInt(SIZE + 40) - 30;
+            int to = from + (random.nextBoolean() ? random.nextInt(FragmentStage.SHORT_SPAN) : random.nextInt(SIZE + 10));
+            for (StageSetup stage : new StageSetup[] {bySpan, byPixel}) {
+                if (lit) {
+                    stage.fragments().phong(frozen, fog, true);
+                } else {
+                    stage.fragments().oneColour(fog);
+                }
+                stage.provenance().begin(s);
+            }
+            bySpan.fragments().span(y, from, to, q[0], q[1], v0, dv);
+            for (int x = from; x < to; x++) {
+                int k = x - from;
+                for (int c = 0; c < CHANNELS; c++) {
+                    v[c] = v0[c] + k * dv[c];
+                }
+                byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
+            }
+            bySpan.fragments().primitiveDone();
+            byPixel.fragments().primitiveDone();
+        }
+        assertSameDrawing(byPixel, bySpan);
+    }
+
     /**
      * A phong span of one kd, 0.5, under an ambient light of 1 and lights behind it (which add nothing) is 0.5
      * at every pixel, whose byte is round(127.5) = 128, however its q runs: lit at once or at the end, long or
