@@ -1166,8 +1166,8 @@ public final class FragmentStage implements FragmentSink {
      * A phong span: kept for the end, or a batch at a time, or pixel by pixel when short; true if one was written.
      * A primitive lit by the ambient term alone with one kd is one colour, that kd lit as any point of it is
      * (P and N are not read), and is drawn as a primitive of one colour ({@link #oneColourSpan}): the same bits,
-     * without lighting each pixel. On one thread (session 46, {@code Interleaved}) A3 pageC took 0.72 of its time,
-     * pageF 0.76, pageE and pageG 0.79-0.82, pageH 0.80, tomsPageJ 0.89-0.95 and pageI 0.87-0.92.
+     * without lighting each pixel. On one thread (session 46, {@code Interleaved}) A3 pageC, pageF, pageG and
+     * pageH took 0.73-0.75 of their time, pageE 0.83, pageD 0.89, tomsPageJ 0.88 and pageI 0.92.
      */
     private boolean phongSpan(int y, int from, int end, double q0, double dq, double[] v0, double[] dv) {
         int start = Math.max(from, 0);
