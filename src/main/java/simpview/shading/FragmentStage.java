@@ -1592,7 +1592,8 @@ public final class FragmentStage implements FragmentSink {
         double[] green = t.green;
         double[] blue = t.blue;
         Fog f = fog;
-        boolean inUnit = !one || unit(r) && unit(g) && unit(b); // every colour, fogged or not, in [0, 1] (a lit one is)
+        // Whether every colour, fogged or not, is in [0, 1]: a lit one is.
+        boolean inUnit = !one || unit(r) && unit(g) && unit(b);
         boolean black = !one && t.black;
         if (f.isNone()) {
             if (black) {
@@ -1603,8 +1604,7 @@ public final class FragmentStage implements FragmentSink {
                 Arrays.fill(colours, 0, n, Colors.pack(r, g, b));
                 return;
             }
-        }
-        if (!f.isNone()) {
+        } else {
             double near = f.near();
             double far = f.far();
             double range = near - far;
