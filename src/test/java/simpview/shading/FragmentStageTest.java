@@ -151,6 +151,21 @@ class FragmentStageTest {
         return new double[] {q0, dq};
     }
 
+    /**
+     * The span's pixels from {@code from} to {@code to} drawn one by one through {@link FragmentStage#pixel}, each
+     * pixel's channels v0 + k dv (into v) and q q0 + k dq, k = x - from: what a span's pixels are.
+     */
+    private static void drawByPixels(FragmentStage stage, int y, int from, int to, double q0, double dq, double[] v0,
+            double[] dv, double[] v) {
+        for (int x = from; x < to; x++) {
+            int k = x - from;
+            for (int c = 0; c < CHANNELS; c++) {
+                v[c] = v0[c] + k * dv[c];
+            }
+            stage.pixel(x, y, q0 + k * dq, v);
+        }
+    }
+
     @Property(tries = 150, seed = "1202002")
     void aSpanDrawsWhatItsPixelsDrawOneByOne(@ForAll long seed) {
         Random random = new Random(seed);
@@ -173,13 +188,7 @@ class FragmentStageTest {
             byPixel.provenance().begin(s);
             bySpan.fragments().span(y, from, to, q0, dq, v0, dv);
             bySpan.fragments().primitiveDone(); // each span a primitive of its own: they overlap
-            for (int x = from; x < to; x++) {
-                int k = x - from;
-                for (int c = 0; c < CHANNELS; c++) {
-                    v[c] = v0[c] + k * dv[c];
-                }
-                byPixel.fragments().pixel(x, y, q0 + k * dq, v);
-            }
+            drawByPixels(byPixel.fragments(), y, from, to, q0, dq, v0, dv, v);
             byPixel.fragments().primitiveDone();
         }
         assertSameDrawing(byPixel, bySpan);
@@ -314,14 +323,8 @@ class FragmentStageTest {
                 int to = from + random.nextInt(6);
                 // The same plane at every row: k counts from each span's own from, as a rasterizer's spans do.
                 bySpan.fragments().span(y, from, to, q[0], q[1], v0, dv);
-                for (int x = from; x < to; x++) {
-                    int k = x - from;
-                    for (int c = 0; c < CHANNELS; c++) {
-                        v[c] = v0[c] + k * dv[c];
-                    }
-                    byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
-                    written += x >= 0 && x < SIZE ? 1 : 0;
-                }
+                drawByPixels(byPixel.fragments(), y, from, to, q[0], q[1], v0, dv, v);
+                written += Math.max(0, Math.min(to, SIZE) - Math.max(from, 0));
             }
             if (primitive == 0 && written < FragmentStage.BATCH) {
                 assertArrayEquals(pixels(StageSetup.make(state, true).image()), pixels(bySpan.image()),
@@ -474,13 +477,7 @@ class FragmentStageTest {
             }
             atOnce.fragments().span(y, from, to, q[0], q[1], v0, dv);
             atEnd.fragments().span(y, from, to, q[0], q[1], v0, dv);
-            for (int x = from; x < to; x++) {
-                int k = x - from;
-                for (int c = 0; c < CHANNELS; c++) {
-                    v[c] = v0[c] + k * dv[c];
-                }
-                byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
-            }
+            drawByPixels(byPixel.fragments(), y, from, to, q[0], q[1], v0, dv, v);
             for (StageSetup stage : new StageSetup[] {byPixel, atOnce, atEnd}) {
                 stage.fragments().primitiveDone();
             }
@@ -531,13 +528,7 @@ class FragmentStageTest {
                 stage.provenance().begin(s);
             }
             bySpan.fragments().span(y, from, to, q[0], q[1], v0, dv);
-            for (int x = from; x < to; x++) {
-                int k = x - from;
-                for (int c = 0; c < CHANNELS; c++) {
-                    v[c] = v0[c] + k * dv[c];
-                }
-                byPixel.fragments().pixel(x, y, q[0] + k * q[1], v);
-            }
+            drawByPixels(byPixel.fragments(), y, from, to, q[0], q[1], v0, dv, v);
             bySpan.fragments().primitiveDone();
             byPixel.fragments().primitiveDone();
         }
