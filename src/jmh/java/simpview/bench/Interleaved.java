@@ -13,6 +13,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.SplittableRandom;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Setup;
@@ -33,8 +34,9 @@ import org.openjdk.jmh.annotations.TearDown;
  * and, of three builds or more, none follows itself: in its turn a build's
  * benchmark method is called once untimed, then {@link #TIMED_IN_A_TURN}
  * times timed, the invocation set-ups run untimed before each call. It
- * prints each build's median, 10th percentile and best call, and the
- * medians' ratios to the first build's. (With the order reversed every
+ * prints each build's median, 10th percentile and best call, the
+ * medians' ratios to the first build's, and the ratio taken turn by turn
+ * with a 90 % interval ({@link #pairedRatio}). (With the order reversed every
  * round instead, the first and the last build had every other turn right
  * after one of their own, and the builds between them never: on A4 page-g
  * the second of three ran 2-8 % slower than the others, copies of one build
@@ -70,6 +72,10 @@ public final class Interleaved {
      * are drawn as a benchmark's back-to-back calls are.
      */
     private static final int TIMED_IN_A_TURN = 3;
+
+    /** The bootstrap's resamples of the rotations, and its seed ({@link #pairedRatio}). */
+    private static final int RESAMPLES = 2000;
+    private static final long RESAMPLE_SEED = 47;
 
     private Interleaved() {
     }
@@ -175,14 +181,60 @@ public final class Interleaved {
             if (i == 0) {
                 first = median;
             }
-            System.out.printf(Locale.ROOT, "%-24s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%n",
-                    builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first);
+            String paired = i == 0 ? "" : pairedRatio(samples.get(i), samples.get(0), rounds);
+            System.out.printf(Locale.ROOT, "%-24s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%s%n",
+                    builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first, paired);
         }
         for (LoadedBuild b : builds) {
             for (Method m : b.tearDowns()) {
                 m.invoke(b.state());
             }
         }
+    }
+
+    /**
+     * The build's time against the first build's, turn by turn: in each
+     * rotation both took a turn of {@link #TIMED_IN_A_TURN} calls within
+     * moments of each other, so a burst of the host's load falls on both.
+     * The ratio of their turns' medians, the median of those ratios over the
+     * rotations, and a 90 % interval for it by the bootstrap (the rotations
+     * drawn again with replacement, {@link #RESAMPLES} times, from a fixed
+     * seed). The interval speaks of the host's noise in this process only:
+     * how well the JIT compiled each build varies from process to process,
+     * which only other processes, and a copy of a build, show.
+     */
+    static String pairedRatio(long[] build, long[] first, int calls) {
+        int turns = calls / TIMED_IN_A_TURN;
+        if (turns < 2) {
+            return "";
+        }
+        double[] ratios = new double[turns];
+        for (int t = 0; t < turns; t++) {
+            ratios[t] = (double) turnMedian(build, t) / turnMedian(first, t);
+        }
+        double[] sorted = ratios.clone();
+        Arrays.sort(sorted);
+        double median = sorted[turns / 2];
+        double[] medians = new double[RESAMPLES];
+        double[] drawn = new double[turns];
+        SplittableRandom random = new SplittableRandom(RESAMPLE_SEED);
+        for (int r = 0; r < RESAMPLES; r++) {
+            for (int t = 0; t < turns; t++) {
+                drawn[t] = ratios[random.nextInt(turns)];
+            }
+            Arrays.sort(drawn);
+            medians[r] = drawn[turns / 2];
+        }
+        Arrays.sort(medians);
+        return String.format(Locale.ROOT, "  by turns %.3f [%.3f, %.3f]", median, medians[RESAMPLES / 20],
+                medians[RESAMPLES - 1 - RESAMPLES / 20]);
+    }
+
+    /** The median of one turn's timed calls (turn t holds calls t * TIMED_IN_A_TURN on). */
+    private static long turnMedian(long[] samples, int t) {
+        long[] turn = Arrays.copyOfRange(samples, t * TIMED_IN_A_TURN, (t + 1) * TIMED_IN_A_TURN);
+        Arrays.sort(turn);
+        return turn[TIMED_IN_A_TURN / 2];
     }
 
     private static LoadedBuild load(String dir, String className, String method, String params, String label)
