@@ -196,14 +196,14 @@ public final class Interleaved {
      * The build's time against the first build's, turn by turn: in each
      * rotation both took a turn of {@link #TIMED_IN_A_TURN} calls within
      * moments of each other, so a burst of the host's load falls on both.
-     * The ratio of their turns' medians, the median of those ratios over the
-     * rotations, and a 90 % interval for it by the bootstrap (the rotations
+     * As text: in each rotation the ratio of the two turns' medians, the
+     * median of those ratios, and a 90 % interval for it by the bootstrap (the rotations
      * drawn again with replacement, {@link #RESAMPLES} times, from a fixed
      * seed). The interval speaks of the host's noise in this process only:
      * how well the JIT compiled each build varies from process to process,
      * which only other processes, and a copy of a build, show.
      */
-    static String pairedRatio(long[] build, long[] first, int calls) {
+    private static String pairedRatio(long[] build, long[] first, int calls) {
         int turns = calls / TIMED_IN_A_TURN;
         if (turns < 2) {
             return "";
