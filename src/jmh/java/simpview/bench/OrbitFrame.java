@@ -31,11 +31,15 @@ import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.surface.DrawingThreads;
 import simpview.window.render.DrawSettings;
+import simpview.window.render.SpareImages;
 
 /**
  * One frame of a turning view, as the window's render thread makes it while
  * a right-drag turns a scene: clear, draw the whole scene turned (yaw 30°,
- * pitch 15°), then copy out the image for the EDT. The window draws a drag's
+ * pitch 15°), then hand the image to the EDT, the canvas going on on the image
+ * of the frame before, which the EDT gives back once it shows the next
+ * ({@link PageCanvas#handOff}; until session 48 each frame's image was a new
+ * copy). The window draws a drag's
  * frames without the inspector's record, and the frame after the drag with
  * it: @Param record=true adds the provenance decorator, a fresh
  * {@link PrimitiveLog} and the copies of the depths and the owners. A drag's
@@ -47,7 +51,8 @@ import simpview.window.render.DrawSettings;
  * set-up by one traced drawing). Models are parsed once, in the set-up.
  * Not in it: the window's look through the scene's files for lit commands
  * and for files to watch. @Param turned=false draws the unturned view the
- * same way, and copy=false leaves out the copies, to show what each costs.
+ * same way, and copy=false leaves out the hand-off and the copies, to show
+ * what each costs.
  * Sampled, in ms; the target is 16 ms. Warmed up for 8 s: with two threads
  * a turned frame of a4/page-d took 6.8, 3.6, 3.4, 3.0 ... 2.9 ms in its first
  * ten seconds (both cores draw while C2 compiles), and after 3 s of warm-up
@@ -97,6 +102,10 @@ public class OrbitFrame {
     private PageContext context;
     private Path litFile;
     private boolean findingCentre;
+    /** The images the EDT gave back, as the window's render thread keeps them. */
+    private final SpareImages spares = new SpareImages();
+    /** The image of the frame the EDT shows now: given back once the next frame is handed to it. */
+    private BufferedImage shown;
 
     /** What the window's render job tells the scene: the turn, and a fresh trace per frame. */
     private static final class Turned implements SceneMonitor {
@@ -171,7 +180,12 @@ public class OrbitFrame {
         if (!copy) {
             return null;
         }
-        return new Frame(canvas.snapshot(), settings.keepsDepths() ? canvas.zbuffer().copyDepths() : null,
-                record ? provenance.copyOwners() : null);
+        Frame frame = new Frame(canvas.handOff(spares.take()),
+                settings.keepsDepths() ? canvas.zbuffer().copyDepths() : null, record ? provenance.copyOwners() : null);
+        if (shown != null && !record) {
+            spares.giveBack(shown); // the window gives back a drag's frames alone: a traced one may be kept
+        }
+        shown = frame.image();
+        return frame;
     }
 }

@@ -41,6 +41,7 @@ import simpview.window.instruments.Outlines;
 import simpview.window.render.DrawSettings;
 import simpview.window.render.RenderJob;
 import simpview.window.render.RenderedView;
+import simpview.window.render.SpareImages;
 import simpview.window.render.View;
 
 /**
@@ -76,6 +77,8 @@ public class Overlays {
     private final PageRenderer renderer = new PageRenderer();
     private final PageRenderer windowRenderer = new PageRenderer();
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
+    /** A traced picture's image, which the window keeps and never gives back: each is drawn on a new one. */
+    private final SpareImages nothingGivenBack = new SpareImages();
     private PageContext context;
     private InspectedScene inspected;
     private View view;
@@ -125,7 +128,7 @@ public class Overlays {
     @Benchmark
     public RenderedView windowDraw() {
         return new RenderJob(view, context, DrawSettings.WINDOW).run(windowRenderer, SceneDrawer.SIMP, library,
-                provenance);
+                provenance, nothingGivenBack);
     }
 
     @Benchmark

@@ -27,8 +27,8 @@ public final class ImageDrawable implements Drawable {
         }
     }
 
-    private final BufferedImage image;
-    private final int[] pixels;
+    private BufferedImage image;
+    private int[] pixels;
     private final int width;
     private final int height;
     /** What each owed row is to be: width pixels, kept, not copied. */
@@ -47,20 +47,42 @@ public final class ImageDrawable implements Drawable {
     private boolean owed;
 
     public ImageDrawable(BufferedImage image) {
+        this.image = image;
+        this.pixels = raster(image);
+        this.width = image.getWidth();
+        this.height = image.getHeight();
+    }
+
+    /** The image's pixels, one int each, row after row. */
+    private static int[] raster(BufferedImage image) {
         int type = image.getType();
         if (type != BufferedImage.TYPE_INT_RGB && type != BufferedImage.TYPE_INT_ARGB) {
             throw new IllegalArgumentException("needs an INT_RGB or INT_ARGB image, got type " + type);
         }
-        this.image = image;
-        this.pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
-        this.width = image.getWidth();
-        this.height = image.getHeight();
+        return ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
     }
 
     /** The image, any owed rows made first. */
     public BufferedImage image() {
         settle();
         return image;
+    }
+
+    /**
+     * Writes to {@code next} from now on, and returns the image written to
+     * until now, any owed rows made first: a finished picture handed off
+     * whole instead of copied ({@link PageCanvas#handOff}). {@code next} has
+     * this image's size and type; its pixels stay as they are until written.
+     */
+    public BufferedImage exchange(BufferedImage next) {
+        if (next.getWidth() != width || next.getHeight() != height || next.getType() != image.getType()) {
+            throw new IllegalArgumentException("an image of " + next.getWidth() + "x" + next.getHeight() + ", type "
+                    + next.getType() + ", in place of one of " + width + "x" + height + ", type " + image.getType());
+        }
+        BufferedImage written = image();
+        pixels = raster(next);
+        image = next;
+        return written;
     }
 
     /**

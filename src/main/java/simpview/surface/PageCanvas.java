@@ -36,6 +36,8 @@ public final class PageCanvas {
     private WaitingPixels waiting;
     /** The threads scenes are drawn on this canvas with: the owner's, given to it; one (the caller's) by default. */
     private DrawingThreads threads = DrawingThreads.one();
+    /** True from a {@link #handOff} to the next {@link #clear}: the image is then no page. */
+    private boolean handedOff;
 
     /** A cleared page, drawn on the caller's thread alone until {@link #drawWith} says otherwise. */
     public PageCanvas() {
@@ -73,6 +75,7 @@ public final class PageCanvas {
         if (provenance != null) {
             provenance.reset();
         }
+        handedOff = false;
     }
 
     /**
@@ -126,7 +129,14 @@ public final class PageCanvas {
      * canvas overwrites it; {@link #snapshot} is a copy to keep.
      */
     public BufferedImage image() {
+        checkNotHandedOff();
         return imageDrawable.image();
+    }
+
+    private void checkNotHandedOff() {
+        if (handedOff) {
+            throw new IllegalStateException("the page was handed off: clear the canvas before reading it again");
+        }
     }
 
     /**
@@ -172,12 +182,30 @@ public final class PageCanvas {
                 afterZBuffer(new DepthCueDrawable(near, far, Camera.PARALLEL, panel))));
     }
 
-    /** A copy of the page as it is now: the pixels copied as one array (a window's turning frame makes one each). */
+    /** A copy of the page as it is now: the pixels copied as one array. */
     public BufferedImage snapshot() {
+        checkNotHandedOff();
         BufferedImage copy = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
         int[] from = ((DataBufferInt) image().getRaster().getDataBuffer()).getData();
         int[] to = ((DataBufferInt) copy.getRaster().getDataBuffer()).getData();
         System.arraycopy(from, 0, to, 0, from.length);
         return copy;
+    }
+
+    /**
+     * The page as it is now, handed off whole instead of copied: from now on
+     * the canvas draws on {@code spare}, a page image that no one else holds
+     * any longer (one handed off before and let go of), or on a new one when
+     * it is null. Until the next {@link #clear} the canvas holds no page
+     * ({@link #image} and {@link #snapshot} refuse), and the clear makes
+     * every pixel of it. The window's pictures come this way: a frame of a
+     * turning drag is then 2.25 MB neither made nor copied
+     * (docs/performance-log.md, session 48).
+     */
+    public BufferedImage handOff(BufferedImage spare) {
+        BufferedImage next = spare != null ? spare : new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        BufferedImage page = imageDrawable.exchange(next);
+        handedOff = true;
+        return page;
     }
 }

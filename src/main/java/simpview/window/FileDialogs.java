@@ -3,6 +3,7 @@ package simpview.window;
 import simpview.compare.PngFiles;
 import simpview.window.render.RenderedView;
 
+import java.awt.image.BufferedImage;
 import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -49,20 +50,28 @@ public final class FileDialogs {
         return Optional.of(chooser.getSelectedFile().toPath());
     }
 
-    /** Asks where to save the page and writes it; returns the file written. */
+    /**
+     * Asks where to save the page and writes it; returns the file written. The
+     * page is the one shown when asked: its pixels are copied first, as the
+     * window may give a turning frame's image back to be drawn on while the
+     * dialog is open.
+     */
     Optional<Path> save(RenderedView view) {
+        BufferedImage shown = view.image();
+        BufferedImage page = new BufferedImage(shown.getColorModel(), shown.copyData(null),
+                shown.isAlphaPremultiplied(), null);
         try {
-            return askAndSave(view);
+            return askAndSave(view.suggestedFileName(), page);
         } finally {
             owner.requestFocus(); // the keys back to the page, which no window manager may give it
         }
     }
 
-    private Optional<Path> askAndSave(RenderedView view) {
+    private Optional<Path> askAndSave(String suggestedName, BufferedImage page) {
         JFileChooser chooser = new JFileChooser(saveFolder);
         chooser.setDialogTitle("Save the page as PNG");
         chooser.setFileFilter(new FileNameExtensionFilter("PNG images (*.png)", "png"));
-        chooser.setSelectedFile(new File(saveFolder, view.suggestedFileName()));
+        chooser.setSelectedFile(new File(saveFolder, suggestedName));
         if (chooser.showSaveDialog(owner) != JFileChooser.APPROVE_OPTION) {
             return Optional.empty();
         }
@@ -78,7 +87,7 @@ public final class FileDialogs {
             return Optional.empty();
         }
         try {
-            PngFiles.write(view.image(), file);
+            PngFiles.write(page, file);
             return Optional.of(file);
         } catch (IOException e) {
             JOptionPane.showMessageDialog(owner, e.getMessage(), "Save page", JOptionPane.ERROR_MESSAGE);

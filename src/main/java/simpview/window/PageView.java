@@ -175,7 +175,7 @@ public final class PageView extends JComponent {
 
     /** The same; {@code drewSomething} false when the error came before anything was drawn. */
     public void show(BufferedImage page, String errorMessage, boolean drewSomething) {
-        image = page;
+        showing(page);
         error = errorMessage;
         errorAfterDrawing = drewSomething;
         repaint();
@@ -183,12 +183,27 @@ public final class PageView extends JComponent {
 
     /** Replaces the picture only (e.g. the depth view of the same page); the error stays. */
     void showImage(BufferedImage picture) {
-        image = picture;
+        showing(picture);
         repaint();
     }
 
     BufferedImage image() {
         return image;
+    }
+
+    /**
+     * Shows {@code picture} from now on. The picture below 1:1 is forgotten
+     * when another image is shown, not only when it is asked for again: the
+     * window draws turning frames on images given back, so an image shown
+     * before may come back with another picture in it
+     * ({@link simpview.window.render.BackgroundRenderer#giveBack}).
+     */
+    private void showing(BufferedImage picture) {
+        if (picture != image) {
+            small = null;
+            smallOf = null;
+        }
+        image = picture;
     }
 
     /** Names what the view shows, in words ("page 5/8: …", "scene: lit.simp"), for a screen reader. */

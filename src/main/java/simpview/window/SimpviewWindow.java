@@ -23,6 +23,7 @@ import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
+import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.ThreadLocalRandom;
@@ -70,6 +71,12 @@ public final class SimpviewWindow {
     /** The check of a folder dropped on the window. */
     private final DroppedFolderCheck folders;
     private RenderedView shown;
+    /**
+     * Whether {@link #shown} is a frame of a turning drag (drawn untraced): nothing but this window's
+     * {@code shown} and its page view hold its image, which goes back to the renderer once another picture is
+     * shown ({@link BackgroundRenderer#giveBack}).
+     */
+    private boolean shownIsDragFrame;
     private RenderJob pending;
     /** The orbit moved while a turned frame was being drawn: draw again when it is done. */
     private boolean turnWaiting;
@@ -793,6 +800,9 @@ public final class SimpviewWindow {
 
     private void finished(RenderJob job, RenderedView result) {
         if (job != pending) {
+            if (result != null) {
+                renderer.giveBack(result.image()); // overtaken by a newer request: shown to no one
+            }
             return; // cancelled or overtaken by a newer request
         }
         pending = null;
@@ -805,8 +815,14 @@ public final class SimpviewWindow {
             // new seed, a turn) keeps zoom and pan, to compare before and after.
             pageView.zoomPan().refit();
         }
+        RenderedView before = shown;
+        boolean beforeIsDragFrame = shownIsDragFrame;
         shown = result;
+        shownIsDragFrame = !job.settings().record();
         overlays.showPicture();
+        if (before != null && beforeIsDragFrame) {
+            renderer.giveBack(before.image()); // the page view shows the new picture now
+        }
         String coursePage = pages.coursePageOf(result.view());
         String shows = coursePage != null ? coursePage + (result.error() == null ? "" : " — error") : result.shows();
         frame.setTitle(RenderedView.TITLE_START + shows);
@@ -928,6 +944,11 @@ public final class SimpviewWindow {
     // compare (issue 15)
     ComparisonLayer comparison() {
         return comparison;
+    }
+
+    /** Whether the render thread may draw the next picture on {@code image}: given back and not taken yet. */
+    boolean spareImage(BufferedImage image) {
+        return renderer.holdsSpare(image);
     }
 
     RenderedView shown() {

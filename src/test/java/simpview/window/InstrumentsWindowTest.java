@@ -11,6 +11,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -31,6 +32,7 @@ import java.awt.Component;
 import java.awt.datatransfer.DataFlavor;
 import java.awt.datatransfer.StringSelection;
 import java.awt.event.InputEvent;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Matcher;
@@ -569,6 +571,41 @@ public class InstrumentsWindowTest extends WindowTestCase {
         driver.awaitEdt(() -> !window().busy() && window().shown().facts().owners() != null,
                 "traced again once the drag ended");
         driver.press(KeyEvent.VK_D);
+    }
+
+    /**
+     * A drag's frames are drawn on the images of frames shown before, given back once the next is shown: each
+     * frame is on screen as its image holds it, none is drawn on the image of the frame on screen, and the
+     * images do come back.
+     */
+    @Test
+    void aDragsFramesAreDrawnOnTheImagesOfEarlierFrames() throws Exception {
+        Path scene = litSquare();
+        open();
+        driver.focusByClicking(new View.OfPage(2));
+        driver.onEdt(() -> window().openScene(scene));
+        RenderedView unturned = driver.awaitShown(new View.OfScene(scene));
+        dragTurning(unturned, first -> {
+            Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
+            List<BufferedImage> seen = new ArrayList<>();
+            RenderedView frame = first;
+            for (int k = 5; !containsSame(seen, frame.image()); k++) {
+                assertTrue(k < 25, "no image of an earlier frame came back in " + seen.size() + " frames");
+                assertEquals(0, driver.screenDiffersFrom(frame.image()), "the frame on screen");
+                BufferedImage onScreen = frame.image();
+                assertFalse(driver.onEdt(() -> window().spareImage(onScreen)), "not to be drawn on while shown");
+                seen.add(onScreen);
+                RenderedView last = frame;
+                driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
+                driver.awaitEdt(() -> !window().busy() && window().shown() != last, "another frame of the drag");
+                frame = driver.onEdt(() -> window().shown());
+                assertNotSame(last.image(), frame.image(), "not drawn on the image on screen");
+            }
+        });
+    }
+
+    private static boolean containsSame(List<BufferedImage> images, BufferedImage image) {
+        return images.stream().anyMatch(seen -> seen == image);
     }
 
     @Test

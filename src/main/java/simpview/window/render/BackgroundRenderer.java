@@ -2,6 +2,7 @@ package simpview.window.render;
 
 import simpview.scene.simp.SceneDrawer;
 
+import java.awt.image.BufferedImage;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.BiConsumer;
@@ -15,7 +16,8 @@ import simpview.surface.Provenance;
 /**
  * Draws pictures one at a time on a thread of its own, so the window keeps
  * answering while a large scene is read. Only that thread touches the canvas;
- * the EDT only ever gets copies.
+ * the EDT gets each picture's image once the canvas has let go of it, and
+ * may give it back ({@link #giveBack}) for a later picture to be drawn on.
  */
 public final class BackgroundRenderer {
 
@@ -32,6 +34,8 @@ public final class BackgroundRenderer {
     private final Provenance provenance = new Provenance(PageCanvas.PANEL, PageCanvas.PANEL);
     /** The window's scene files and obj models, kept across redraws while unchanged (thread safe). */
     private final SceneLibrary library = new SceneLibrary();
+    /** The images of pictures the window has let go of, which the next pictures are drawn on (thread safe). */
+    private final SpareImages spares = new SpareImages();
 
     /** Draws on the render thread alone. */
     public BackgroundRenderer(SceneDrawer drawer) {
@@ -48,9 +52,22 @@ public final class BackgroundRenderer {
     /** Runs the job after those before it; {@code done} gets it and its picture (null if cancelled) on the EDT. */
     public void submit(RenderJob job, BiConsumer<RenderJob, RenderedView> done) {
         thread.execute(() -> {
-            RenderedView result = job.run(renderer, drawer, library, provenance);
+            RenderedView result = job.run(renderer, drawer, library, provenance, spares);
             SwingUtilities.invokeLater(() -> done.accept(job, result));
         });
+    }
+
+    /**
+     * {@code image}, a picture's that this renderer drew, is no longer shown
+     * or held on the EDT: a later picture may be drawn on it.
+     */
+    public void giveBack(BufferedImage image) {
+        spares.giveBack(image);
+    }
+
+    /** Whether {@code image} was given back and waits to be drawn on. */
+    public boolean holdsSpare(BufferedImage image) {
+        return spares.holds(image);
     }
 
     /**

@@ -164,12 +164,14 @@ public final class RenderJob implements SceneMonitor {
     }
 
     /**
-     * Draws on the render thread's canvas and returns a copy of the result,
-     * or null when the job was cancelled; the scene files come from, and are
-     * kept in, the render thread's {@code library}.
+     * Draws on the render thread's canvas and returns the result, or null
+     * when the job was cancelled; the scene files come from, and are kept in,
+     * the render thread's {@code library}. The picture's image is the
+     * canvas's own, handed off ({@link PageCanvas#handOff}); the canvas goes
+     * on on an image of {@code spares}, or a new one.
      */
     public RenderedView run(PageRenderer renderer, SceneDrawer drawer, SceneLibrary library,
-            Provenance provenance) {
+            Provenance provenance, SpareImages spares) {
         if (cancelled) {
             return null;
         }
@@ -211,7 +213,8 @@ public final class RenderJob implements SceneMonitor {
                 canvas.provenance() == null || !keepsOwners ? null : canvas.provenance().copyOwners(),
                 primitives(), filesRead(), drewSomething, shownCentre);
         canvas.recordProvenance(null);
-        return new RenderedView(view, seed(), context.a1Rule(), canvas.snapshot(), error, List.copyOf(warnings), facts);
+        return new RenderedView(view, seed(), context.a1Rule(), canvas.handOff(spares.take()), error,
+                List.copyOf(warnings), facts);
     }
 
     /** What each primitive drawn was, in drawing order. */

@@ -13,7 +13,9 @@ import simpview.pages.Page;
  * @param view what was drawn
  * @param seed the seed it was drawn with
  * @param a1Rule the first assignment's rule it was drawn with (its Bresenham panels and fills)
- * @param image a copy of the page, never the canvas being drawn on
+ * @param image the page, handed off by the canvas, which draws on another image from then on; a window gives a
+ *     turning drag's frame back once it shows another ({@link BackgroundRenderer#giveBack}), and a later
+ *     picture is drawn on it
  * @param error the scene error's message, or null; the image then holds what was drawn before it
  * @param warnings what the scene reported that is not an error
  * @param facts depths, who drew what, the files read: what the instruments show

@@ -15,6 +15,7 @@ import simpview.testing.CourseFiles;
 import simpview.window.render.DrawSettings;
 import simpview.window.render.RenderJob;
 import simpview.window.render.RenderedView;
+import simpview.window.render.SpareImages;
 import simpview.window.render.View;
 
 /**
@@ -29,7 +30,7 @@ class ReadmeInstrumentExamplesTest {
         PageContext context = PageContext.defaults().withSimpDir(course);
         RenderJob job = new RenderJob(new View.OfPage(7), context, DrawSettings.WINDOW);
         RenderedView seven = job.run(new PageRenderer(), SceneDrawer.SIMP, new SceneLibrary(),
-                new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
+                new Provenance(PageCanvas.PANEL, PageCanvas.PANEL), new SpareImages());
         String readme = Files.readString(Path.of("README.md"));
         // Panel pixel (325, 400): image pixel (50 + 325, 50 + 649 - 400).
         String line = Inspector.describe(seven, 50 + 325, 50 + 649 - 400);

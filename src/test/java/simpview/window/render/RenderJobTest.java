@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -16,6 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 import simpview.pages.PageContext;
 import simpview.pages.PageRenderer;
 import simpview.scene.simp.SceneLibrary;
+import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 
@@ -31,8 +33,15 @@ public class RenderJobTest {
 
     /** As the render thread draws: its renderer and its library kept from job to job. */
     private RenderedView draw(View view, DrawSettings settings, PageRenderer renderer, SceneLibrary library) {
+        return draw(view, settings, renderer, library, new SpareImages());
+    }
+
+    /** The same, the canvas going on on the images given back to {@code spares}. */
+    private RenderedView draw(View view, DrawSettings settings, PageRenderer renderer, SceneLibrary library,
+            SpareImages spares) {
         RenderJob job = new RenderJob(view, PageContext.defaults().withSimpDir(dir), settings);
-        return job.run(renderer, SceneDrawer.SIMP, library, new Provenance(PageCanvas.PANEL, PageCanvas.PANEL));
+        return job.run(renderer, SceneDrawer.SIMP, library, new Provenance(PageCanvas.PANEL, PageCanvas.PANEL),
+                spares);
     }
 
     private static int[] pixels(RenderedView view) {
@@ -53,6 +62,42 @@ public class RenderJobTest {
         assertEquals(first.facts().files(), again.facts().files());
         assertArrayEquals(pixels(first), pixels(draw(new View.OfPage(5), DrawSettings.WINDOW)),
                 "the same as a picture with a library of its own");
+    }
+
+    /**
+     * The window gives a turning drag's frames back once it shows the next, and later pictures are drawn on
+     * them: a picture drawn on an image that held another is the one drawn on a new canvas, to the pixel (a lit
+     * scene and a depth-cued one, on one thread and on two, traced and not), and a picture not given back is
+     * never drawn on again.
+     */
+    @Test
+    void aPictureDrawnOnAnImageGivenBackIsThePictureDrawnAlone() throws Exception {
+        Path lit = Files.writeString(dir.resolve("lit.simp"), String.join("\n", "ambient 0.3 0.3 0.3",
+                "camera -1 -1 1 1 -1 -100", "light 1 1 1 1 0", "surface 0.9 0.5 0.1", "phong",
+                "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
+                "polygon (-30, -30, -40) (30, 30, -40) (-30, 30, -40)", ""));
+        Path cued = Files.writeString(dir.resolve("cued.simp"),
+                "polygon (-90, -90, -20) (90, -90, -20) (0, 90, -150)\nline (-90, 90, -10) (90, -90, -190)\n");
+        for (int threads : new int[] {1, 2}) {
+            for (DrawSettings settings : List.of(DrawSettings.WINDOW, DrawSettings.WINDOW.withRecord(false))) {
+                try (DrawingThreads drawing = DrawingThreads.of(threads)) {
+                    PageRenderer renderer = new PageRenderer(drawing);
+                    SceneLibrary library = new SceneLibrary();
+                    SpareImages spares = new SpareImages();
+                    RenderedView first = draw(new View.OfScene(lit), settings, renderer, library, spares);
+                    RenderedView cuedAlone = draw(new View.OfScene(cued), settings, renderer, library, spares);
+                    int[] cuedPixels = pixels(cuedAlone);
+                    spares.giveBack(first.image());
+                    // Drawn on the image made after the first hand-off; the canvas then takes the first's back.
+                    draw(new View.OfScene(lit), settings, renderer, library, spares);
+                    RenderedView cuedAgain = draw(new View.OfScene(cued), settings, renderer, library, spares);
+                    String where = threads + " thread(s), " + (settings.record() ? "traced" : "untraced");
+                    assertSame(first.image(), cuedAgain.image(), where + ": drawn on the lit picture's image");
+                    assertArrayEquals(cuedPixels, pixels(cuedAgain), where + ": the same picture");
+                    assertArrayEquals(cuedPixels, pixels(cuedAlone), where + ": not given back, not drawn on");
+                }
+            }
+        }
     }
 
     @Test
