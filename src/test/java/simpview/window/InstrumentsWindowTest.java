@@ -580,11 +580,8 @@ public class InstrumentsWindowTest extends WindowTestCase {
      */
     @Test
     void aDragsFramesAreDrawnOnTheImagesOfEarlierFrames() throws Exception {
-        Path scene = litSquare();
-        open();
-        driver.focusByClicking(new View.OfPage(2));
-        driver.onEdt(() -> window().openScene(scene));
-        RenderedView unturned = driver.awaitShown(new View.OfScene(scene));
+        SimpviewWindow window = openWindowOn(litSquare());
+        RenderedView unturned = driver.onEdt(() -> window.shown());
         dragTurning(unturned, first -> {
             Point centre = driver.onScreen(PageCanvas.SIZE / 2, PageCanvas.SIZE / 2);
             List<BufferedImage> seen = new ArrayList<>();
@@ -593,12 +590,12 @@ public class InstrumentsWindowTest extends WindowTestCase {
                 assertTrue(k < 25, "no image of an earlier frame came back in " + seen.size() + " frames");
                 assertEquals(0, driver.screenDiffersFrom(frame.image()), "the frame on screen");
                 BufferedImage onScreen = frame.image();
-                assertFalse(driver.onEdt(() -> window().spareImage(onScreen)), "not to be drawn on while shown");
+                assertFalse(driver.onEdt(() -> window.spareImage(onScreen)), "not to be drawn on while shown");
                 seen.add(onScreen);
                 RenderedView last = frame;
                 driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);
-                driver.awaitEdt(() -> !window().busy() && window().shown() != last, "another frame of the drag");
-                frame = driver.onEdt(() -> window().shown());
+                driver.awaitEdt(() -> !window.busy() && window.shown() != last, "another frame of the drag");
+                frame = driver.onEdt(() -> window.shown());
                 assertNotSame(last.image(), frame.image(), "not drawn on the image on screen");
             }
         });
