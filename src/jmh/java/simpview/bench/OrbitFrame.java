@@ -39,10 +39,10 @@ import simpview.window.render.SpareImages;
  * pitch 15°), then hand the image to the EDT, the canvas going on on the image
  * of the frame before, which the EDT gives back once it shows the next
  * ({@link PageCanvas#handOff}; until session 48 each frame's image was a new
- * copy). The window draws a drag's
- * frames without the inspector's record, and the frame after the drag with
- * it: @Param record=true adds the provenance decorator, a fresh
- * {@link PrimitiveLog} and the copies of the depths and the owners. A drag's
+ * copy). The window draws a drag's frames without the inspector's record,
+ * and the frame after the drag with it: @Param record=true adds the
+ * provenance decorator, a fresh {@link PrimitiveLog} and the copies of the
+ * depths and the owners. A drag's
  * frames keep their depths only while the depth view is on: @Param
  * depthView=true copies them out too (DrawSettings.keepsDepths). @Param scene:
  * "page7" (depth-cued, turned about the view volume's centre) or a course

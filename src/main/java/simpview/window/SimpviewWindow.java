@@ -947,7 +947,7 @@ public final class SimpviewWindow {
     }
 
     /** Whether the render thread may draw the next picture on {@code image}: given back and not taken yet. */
-    boolean spareImage(BufferedImage image) {
+    boolean mayBeDrawnOn(BufferedImage image) {
         return renderer.holdsSpare(image);
     }
 

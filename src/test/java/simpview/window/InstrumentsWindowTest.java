@@ -590,7 +590,7 @@ public class InstrumentsWindowTest extends WindowTestCase {
                 assertTrue(k < 25, "no image of an earlier frame came back in " + seen.size() + " frames");
                 assertEquals(0, driver.screenDiffersFrom(frame.image()), "the frame on screen");
                 BufferedImage onScreen = frame.image();
-                assertFalse(driver.onEdt(() -> window.spareImage(onScreen)), "not to be drawn on while shown");
+                assertFalse(driver.onEdt(() -> window.mayBeDrawnOn(onScreen)), "not to be drawn on while shown");
                 seen.add(onScreen);
                 RenderedView last = frame;
                 driver.robot().mouseMove(centre.x + 10 * k, centre.y + 2 * k);

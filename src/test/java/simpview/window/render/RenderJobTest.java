@@ -66,12 +66,12 @@ public class RenderJobTest {
 
     /**
      * The window gives a turning drag's frames back once it shows the next, and later pictures are drawn on
-     * them: a picture drawn on an image that held another is the one drawn on a new canvas, to the pixel (a lit
+     * them: a picture drawn on an image that held another is the one drawn on a new image, to the pixel (a lit
      * scene and a depth-cued one, on one thread and on two, traced and not), and a picture not given back is
      * never drawn on again.
      */
     @Test
-    void aPictureDrawnOnAnImageGivenBackIsThePictureDrawnAlone() throws Exception {
+    void aPictureDrawnOnAnImageGivenBackIsThePictureDrawnOnANewOne() throws Exception {
         Path lit = Files.writeString(dir.resolve("lit.simp"), String.join("\n", "ambient 0.3 0.3 0.3",
                 "camera -1 -1 1 1 -1 -100", "light 1 1 1 1 0", "surface 0.9 0.5 0.1", "phong",
                 "polygon (-30, -30, -40) (30, -30, -40) (30, 30, -40)",
@@ -85,8 +85,8 @@ public class RenderJobTest {
                     SceneLibrary library = new SceneLibrary();
                     SpareImages spares = new SpareImages();
                     RenderedView first = draw(new View.OfScene(lit), settings, renderer, library, spares);
-                    RenderedView cuedAlone = draw(new View.OfScene(cued), settings, renderer, library, spares);
-                    int[] cuedPixels = pixels(cuedAlone);
+                    RenderedView cuedOnNew = draw(new View.OfScene(cued), settings, renderer, library, spares);
+                    int[] cuedPixels = pixels(cuedOnNew);
                     spares.giveBack(first.image());
                     // Drawn on the image made after the first hand-off; the canvas then takes the first's back.
                     draw(new View.OfScene(lit), settings, renderer, library, spares);
@@ -94,7 +94,7 @@ public class RenderJobTest {
                     String where = threads + " thread(s), " + (settings.record() ? "traced" : "untraced");
                     assertSame(first.image(), cuedAgain.image(), where + ": drawn on the lit picture's image");
                     assertArrayEquals(cuedPixels, pixels(cuedAgain), where + ": the same picture");
-                    assertArrayEquals(cuedPixels, pixels(cuedAlone), where + ": not given back, not drawn on");
+                    assertArrayEquals(cuedPixels, pixels(cuedOnNew), where + ": not given back, not drawn on");
                 }
             }
         }
