@@ -42,9 +42,9 @@ import simpview.window.render.SpareImages;
  * copy). The window draws a drag's frames without the inspector's record,
  * and the frame after the drag with it: @Param record=true adds the
  * provenance decorator, a fresh {@link PrimitiveLog} and the copies of the
- * depths and the owners. A drag's
- * frames keep their depths only while the depth view is on: @Param
- * depthView=true copies them out too (DrawSettings.keepsDepths). @Param scene:
+ * depths and the owners. A drag's frames keep their depths only while the
+ * depth view is on: @Param depthView=true copies them out too
+ * (DrawSettings.keepsDepths). @Param scene:
  * "page7" (depth-cued, turned about the view volume's centre) or a course
  * page of the third or fourth assignment, as "a3/pageI" or "a4/page-d" (lit: the camera
  * moves about the centre of what the unturned view showed, found in the
