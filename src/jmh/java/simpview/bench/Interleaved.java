@@ -1,12 +1,18 @@
 package simpview.bench;
 
+import java.io.BufferedReader;
 import java.io.File;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.lang.management.ManagementFactory;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -14,6 +20,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.SplittableRandom;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Setup;
@@ -44,11 +53,12 @@ import org.openjdk.jmh.annotations.TearDown;
  *
  * <p>The JIT compiles each build once per process, and how well it does
  * varies from process to process by several per cent with the same code; so
- * run it in a few processes and compare the figures across them (including,
- * once, a build against a copy of itself).
+ * run it in a few processes ({@code --processes N} runs them one after
+ * another and sums them up, {@link #inProcesses}) and compare the figures
+ * across them (including, once, a build against a copy of itself).
  *
  * <p>Run: {@code java -cp <jmh runtime classpath> simpview.bench.Interleaved
- * CLASS METHOD SECONDS PARAMS DIR...}, CLASS a benchmark class as
+ * [--processes N] CLASS METHOD SECONDS PARAMS DIR...}, CLASS a benchmark class as
  * {@code simpview.bench.LitPages}, PARAMS as {@code scene=a3/pageI,threads=1}
  * (or "" for the defaults), each DIR a build's {@code build/classes/java},
  * perhaps followed by parameters of its own that override PARAMS for it
@@ -122,8 +132,12 @@ public final class Interleaved {
     }
 
     public static void main(String[] args) throws Exception {
+        if (args.length >= 2 && args[0].equals("--processes")) {
+            inProcesses(Integer.parseInt(args[1]), Arrays.copyOfRange(args, 2, args.length));
+            return;
+        }
         if (args.length < 5) {
-            System.err.println("usage: Interleaved CLASS METHOD SECONDS PARAMS DIR...");
+            System.err.println("usage: Interleaved [--processes N] CLASS METHOD SECONDS PARAMS DIR...");
             System.exit(2);
         }
         double seconds = Double.parseDouble(args[2]);
@@ -182,6 +196,7 @@ public final class Interleaved {
                 first = median;
             }
             String paired = i == 0 ? "" : pairedRatio(samples.get(i), samples.get(0), rounds);
+            // read back by FIGURES
             System.out.printf(Locale.ROOT, "%-24s calls %d  median %.4f ms  p10 %.4f  best %.4f  median / first's %.3f%s%n",
                     builds.get(i).name(), rounds, median, s[rounds / 10] / 1e6, s[0] / 1e6, median / first, paired);
         }
@@ -190,6 +205,68 @@ public final class Interleaved {
                 m.invoke(b.state());
             }
         }
+    }
+
+    /**
+     * A build's figures as {@link #main} prints them: its name, its median's
+     * ratio to the first build's, and the ratio turn by turn ({@link #pairedRatio}),
+     * which the first build has not.
+     */
+    private static final Pattern FIGURES =
+            Pattern.compile("^(\\S+)\\s+calls \\d+ .* median / first's ([0-9.]+)(?:  by turns ([0-9.]+) \\[)?");
+
+    /**
+     * The same measurement in {@code count} processes, one after another,
+     * each a JVM with this one's options and class path, each printing its
+     * figures as it ends; then, for each build but the first, the median of
+     * its ratios turn by turn over the processes, and each process's. How
+     * well the JIT compiles a build varies from process to process by more
+     * than the host's noise within one (session 48 saw two modes a tenth
+     * apart, the same change faster in three processes of five and slower in
+     * two), so a change is judged over several.
+     */
+    private static void inProcesses(int count, String[] args) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(ManagementFactory.getRuntimeMXBean().getInputArguments());
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add(Interleaved.class.getName());
+        command.addAll(List.of(args));
+        Map<String, List<Double>> byTurns = new LinkedHashMap<>();
+        Map<String, List<Double>> ofMedians = new LinkedHashMap<>();
+        for (int p = 1; p <= count; p++) {
+            System.out.printf(Locale.ROOT, "process %d of %d%n", p, count);
+            Process child = new ProcessBuilder(command).redirectErrorStream(true).start();
+            try (BufferedReader out = new BufferedReader(
+                    new InputStreamReader(child.getInputStream(), StandardCharsets.UTF_8))) {
+                for (String line = out.readLine(); line != null; line = out.readLine()) {
+                    System.out.println(line);
+                    Matcher m = FIGURES.matcher(line);
+                    if (m.find() && m.group(3) != null) {
+                        byTurns.computeIfAbsent(m.group(1), b -> new ArrayList<>()).add(Double.valueOf(m.group(3)));
+                        ofMedians.computeIfAbsent(m.group(1), b -> new ArrayList<>()).add(Double.valueOf(m.group(2)));
+                    }
+                }
+            }
+            if (child.waitFor() != 0) {
+                throw new IllegalStateException("process " + p + " of " + count + " failed: " + command);
+            }
+        }
+        for (Map.Entry<String, List<Double>> b : byTurns.entrySet()) {
+            List<Double> each = b.getValue();
+            System.out.printf(Locale.ROOT, "%-24s over %d processes: by turns %.3f (each %s), median / first's %.3f%n",
+                    b.getKey(), each.size(), medianOf(each), each.stream()
+                            .map(r -> String.format(Locale.ROOT, "%.3f", r)).collect(Collectors.joining(" ")),
+                    medianOf(ofMedians.get(b.getKey())));
+        }
+    }
+
+    /** The median of {@code values}: the middle one, or the mean of the middle two. */
+    private static double medianOf(List<Double> values) {
+        double[] sorted = values.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
     }
 
     /**
