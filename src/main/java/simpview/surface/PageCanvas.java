@@ -196,14 +196,17 @@ public final class PageCanvas {
      * The page as it is now, handed off whole instead of copied: from now on
      * the canvas draws on {@code spare}, a page image that no one else holds
      * any longer (one handed off before and let go of), or on a new one when
-     * it is null. Until the next {@link #clear} the canvas holds no page
+     * it is null or not a page image (750x750, INT_RGB). Until the next
+     * {@link #clear} the canvas holds no page
      * ({@link #image} and {@link #snapshot} refuse), and the clear makes
      * every pixel of it. The window's pictures come this way: a frame of a
      * turning drag is then 2.25 MB neither made nor copied
      * (docs/performance-log.md, session 48).
      */
     public BufferedImage handOff(BufferedImage spare) {
-        BufferedImage next = spare != null ? spare : new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        boolean fits = spare != null && spare.getWidth() == SIZE && spare.getHeight() == SIZE
+                && spare.getType() == BufferedImage.TYPE_INT_RGB;
+        BufferedImage next = fits ? spare : new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
         BufferedImage page = imageDrawable.exchange(next);
         handedOff = true;
         return page;

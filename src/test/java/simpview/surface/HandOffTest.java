@@ -62,15 +62,20 @@ class HandOffTest {
     }
 
     @Test
-    void withNoSpareTheCanvasGoesOnOnANewImage() {
-        PageCanvas canvas = new PageCanvas();
-        BufferedImage page = canvas.handOff(null);
-        canvas.clear();
-        BufferedImage next = canvas.image();
-        assertNotSame(page, next);
-        assertEquals(PageCanvas.SIZE, next.getWidth());
-        assertEquals(PageCanvas.SIZE, next.getHeight());
-        assertEquals(BufferedImage.TYPE_INT_RGB, next.getType());
+    void withNoSpareOrOneThatIsNoPageTheCanvasGoesOnOnANewImage() {
+        BufferedImage argb = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE, BufferedImage.TYPE_INT_ARGB);
+        BufferedImage small = new BufferedImage(PageCanvas.SIZE, PageCanvas.SIZE - 1, BufferedImage.TYPE_INT_RGB);
+        for (BufferedImage spare : Arrays.asList(null, argb, small)) {
+            PageCanvas canvas = new PageCanvas();
+            BufferedImage page = canvas.handOff(spare);
+            canvas.clear();
+            BufferedImage next = canvas.image();
+            assertNotSame(page, next);
+            assertNotSame(spare, next);
+            assertEquals(PageCanvas.SIZE, next.getWidth());
+            assertEquals(PageCanvas.SIZE, next.getHeight());
+            assertEquals(BufferedImage.TYPE_INT_RGB, next.getType());
+        }
     }
 
     @Test
