@@ -1,6 +1,7 @@
 package simpview.stage;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.function.Supplier;
 import simpview.geometry.Camera;
 import simpview.geometry.Clipper;
@@ -100,6 +101,32 @@ public final class LitGeometry implements GeometryStage {
     private Matrix4 objCtm;
     private boolean objWire;
     private Path objFile;
+    /**
+     * A wire model's edges drawn twice: a face's edge that an earlier face of
+     * the same obj command drew already, both faces whole in view (no vertex
+     * outside a plane), is not drawn again, as it would change nothing. Its
+     * ends are the same vertices, projected by the same expressions to the
+     * same bits. The DDA walks an edge the same way whichever end it is given
+     * first (DdaWalk.start orders them), but for an edge whose ends fall on
+     * one pixel, which takes its values from the end given first: so each
+     * pixel of the edge has the z the first drawing gave it, or, on one
+     * pixel, the z of one of its ends, which that pixel had already (a face
+     * drawn whole gives each vertex's pixel the vertex's own values, by the
+     * edge that leaves it, or an earlier face did by that edge). The depth
+     * there is that z or nearer since, and a pixel passes only where its z is
+     * above the depth: none passes. Only while nothing follows the fragments
+     * (no trace, no watch), which would see the second drawing. edgeFaces
+     * holds, for the face at hand's corners, the earlier face with each
+     * corner's edge (ObjFace.edgeFirstFace), and edgesKnown whether it is
+     * known; drawnWhole the faces of this command drawn whole, one bit each
+     * (faces below drawnWholeWords * 64).
+     */
+    private boolean edgesKnown;
+    private long edgesLeftOut;
+    private int faceIndex;
+    private int[] edgeFaces = new int[8];
+    private long[] drawnWhole = new long[0];
+    private int drawnWholeWords;
     private long culled;
     /** The planes every culled primitive lies wholly outside of (see {@link #culledOutside}). */
     private int culledOutside;
@@ -218,6 +245,7 @@ public final class LitGeometry implements GeometryStage {
 
     @Override
     public void polygon(Matrix4 ctm, double[] xyz, double[] rgb, boolean wire) {
+        edgesKnown = false;
         transform(ctm);
         for (int k = 0; k < 3; k++) {
             vertex(k, xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
@@ -232,6 +260,18 @@ public final class LitGeometry implements GeometryStage {
         objCtm = ctm;
         objWire = wire;
         objFile = file;
+        Arrays.fill(drawnWhole, 0, drawnWholeWords, 0);
+        drawnWholeWords = 0;
+    }
+
+    /** How many edges of wire models were not drawn again so far ({@link #edgesKnown}). */
+    public long edgesLeftOut() {
+        return edgesLeftOut;
+    }
+
+    /** Whether the faces of the obj command at hand are to tell which earlier face shares each edge. */
+    public boolean readsEdges() {
+        return objWire && trace == null && raster == fragments;
     }
 
     /** One face of the model begun by {@link #beginObj}: the obj reader's faces come here, in file order. */
@@ -240,6 +280,16 @@ public final class LitGeometry implements GeometryStage {
         sourceLine = f.line();
         int n = f.size();
         room(n);
+        faceIndex = f.index();
+        edgesKnown = faceIndex >= 0 && readsEdges();
+        if (edgesKnown) {
+            if (edgeFaces.length < n) {
+                edgeFaces = new int[2 * n];
+            }
+            for (int k = 0; k < n; k++) {
+                edgeFaces[k] = f.edgeFirstFace(k);
+            }
+        }
         transform(objCtm);
         boolean normalsRead = normalsRead(objWire);
         for (int k = 0; k < n; k++) {
@@ -307,12 +357,14 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         carriedColours(kept, channels);
+        boolean whole = edgesKnown && clipper.cutPlanes() == 0 && kept == n;
         if (record != null && trace == null) {
             // Projected straight into the record's batch: no copy of the vertices.
             double[] into = record.room(kept, channels);
             if (project(clipper.vertices(), kept, channels, into, record.roomAt()) == kept) {
+                long drawnBefore = whole ? edgesDrawnBefore(kept) : 0;
                 record.addInRoom(wire ? LitPrimitives.Kind.OUTLINE : LitPrimitives.Kind.FILL, kept, channels,
-                        recordedLook(wire, channels));
+                        recordedLook(wire, channels), drawnBefore);
             }
             return;
         }
@@ -335,9 +387,36 @@ public final class LitGeometry implements GeometryStage {
             return;
         }
         int stride = FragmentLayout.stride(channels);
+        long drawnBefore = whole ? edgesDrawnBefore(kept) : 0;
         for (int k = 0; k < kept; k++) {
-            lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
+            if (k >= Long.SIZE || (drawnBefore >>> k & 1) == 0) {
+                lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
+            }
         }
+    }
+
+    /**
+     * Of the wire face at hand, of n corners and drawn whole in view: the
+     * edges an earlier face of this obj command drew whole already, one bit
+     * each (edge k from corner k to corner k + 1, the first 64; see
+     * {@link #edgesKnown}); and the face noted as drawn whole.
+     */
+    private long edgesDrawnBefore(int n) {
+        long before = 0;
+        for (int k = 0; k < n && k < Long.SIZE; k++) {
+            int first = edgeFaces[k];
+            if (first >= 0 && first >>> 6 < drawnWholeWords && (drawnWhole[first >>> 6] >>> first & 1) != 0) {
+                before |= 1L << k;
+                edgesLeftOut++;
+            }
+        }
+        int word = faceIndex >>> 6;
+        if (word >= drawnWhole.length) {
+            drawnWhole = Arrays.copyOf(drawnWhole, Math.max(2 * drawnWhole.length, word + 1));
+        }
+        drawnWhole[word] |= 1L << faceIndex;
+        drawnWholeWords = Math.max(drawnWholeWords, word + 1);
+        return before;
     }
 
     /**

@@ -177,10 +177,20 @@ public final class LitPrimitives {
      * off once it is full or covers {@link #MOST_PIXELS}.
      */
     void addInRoom(Kind what, int n, int channelCount, int look) {
+        addInRoom(what, n, channelCount, look, 0);
+    }
+
+    /**
+     * The same for an outline some of whose edges are not drawn: edge k (from
+     * vertex k to k + 1, the last to the first) is left out when bit k of
+     * {@code edgesLeftOut} is set (the first 64 edges; see LitGeometry's
+     * edgesKnown).
+     */
+    void addInRoom(Kind what, int n, int channelCount, int look, long edgesLeftOut) {
         Batch b = batches.filling();
         int at = b.start[b.size];
         b.addInPlace(what, n, channelCount, look, provenance == null ? Provenance.BACKGROUND : provenance.current(),
-                bands);
+                bands, edgesLeftOut);
         boolean heavy = batches.weigh(b.numbers, at + FragmentLayout.X, n, FragmentLayout.stride(channelCount),
                 what == Kind.FILL, what == Kind.OUTLINE);
         if (heavy || batches.full() || b.start[b.size] >= MOST_NUMBERS) {
@@ -221,6 +231,8 @@ public final class LitPrimitives {
         int[] start = new int[1025];
         int[] owner = new int[1024];
         int[] lookOf = new int[1024];
+        /** An outline's edges left out, one bit each ({@link LitPrimitives#addInRoom(Kind, int, int, int, long)}). */
+        long[] leftOut = new long[1024];
         double[] lowY = new double[1024];
         double[] highY = new double[1024];
         double[] numbers = new double[1 << 14];
@@ -284,7 +296,7 @@ public final class LitPrimitives {
         }
 
         /** Records the primitive whose n vertices are in numbers from start[size] (written to its room). */
-        void addInPlace(Kind what, int n, int channelCount, int look, int by, RowBands bands) {
+        void addInPlace(Kind what, int n, int channelCount, int look, int by, RowBands bands, long edgesLeftOut) {
             int stride = FragmentLayout.stride(channelCount);
             int count = n * stride;
             if (size == kind.length) {
@@ -297,6 +309,7 @@ public final class LitPrimitives {
             channels[size] = (byte) channelCount;
             owner[size] = by;
             lookOf[size] = look;
+            leftOut[size] = edgesLeftOut;
             double low = BatchDrawing.lowRow(v, at + FragmentLayout.Y, n, stride, what == Kind.FILL);
             double high = BatchDrawing.highRow(v, at + FragmentLayout.Y, n, stride, what == Kind.FILL);
             lowY[size] = low;
@@ -349,6 +362,7 @@ public final class LitPrimitives {
             owner = Arrays.copyOf(owner, capacity);
             lookOf = Arrays.copyOf(lookOf, capacity);
             lowY = Arrays.copyOf(lowY, capacity);
+            leftOut = Arrays.copyOf(leftOut, capacity);
             highY = Arrays.copyOf(highY, capacity);
         }
     }
@@ -413,9 +427,12 @@ public final class LitPrimitives {
                 }
                 case OUTLINE -> {
                     int stride = FragmentLayout.stride(ch);
+                    long leftOut = b.leftOut[k];
                     for (int i = 0; i < n; i++) {
-                        lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
-                                fragments);
+                        if (i >= Long.SIZE || (leftOut >>> i & 1) == 0) {
+                            lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
+                                    fragments);
+                        }
                     }
                     yield Kind.OUTLINE;
                 }

@@ -33,6 +33,10 @@ public final class ObjFace {
     private int offset;
     private int size;
     private int line;
+    /** The face's index in its kept model, -1 for a face streamed as it is read. */
+    private int index = -1;
+    /** For each corner reference, the earlier face with that corner's edge ({@link #edgeFirstFace}), or null. */
+    private int[] edgeFirstFaces;
 
     public ObjFace() {
     }
@@ -44,6 +48,19 @@ public final class ObjFace {
         this.normals = normals;
         this.vertexRefs = vertexRefs;
         this.normalRefs = normalRefs;
+        this.edgeFirstFaces = null;
+        this.index = -1;
+    }
+
+    /**
+     * After {@link #bind}: for each corner reference r of the bound arrays,
+     * the index of the first face of the model with the edge from that
+     * corner to the next of its face (the last corner's: to the first),
+     * either way round, when that face comes before the corner's own; -1 for
+     * none.
+     */
+    public void bindEdges(int[] edgeFirstFaces) {
+        this.edgeFirstFaces = edgeFirstFaces;
     }
 
     /** The face is refs[offset, offset + size), from line {@code line} of its file. */
@@ -51,6 +68,26 @@ public final class ObjFace {
         this.offset = offset;
         this.size = size;
         this.line = line;
+    }
+
+    /** The same, for face {@code index} of a kept model. */
+    public void select(int offset, int size, int line, int index) {
+        select(offset, size, line);
+        this.index = index;
+    }
+
+    /** The face's index in its kept model, in file order; -1 for a face streamed as it is read. */
+    public int index() {
+        return index;
+    }
+
+    /**
+     * The index of the earlier face of the model that has the edge from
+     * corner k to corner k + 1 (the last corner's: to the first), either way
+     * round; -1 when none has, or when it is not known ({@link #bindEdges}).
+     */
+    public int edgeFirstFace(int k) {
+        return edgeFirstFaces == null ? -1 : edgeFirstFaces[offset + k];
     }
 
     /** The number of vertices, at least 3. */

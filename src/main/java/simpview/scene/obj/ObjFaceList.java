@@ -35,7 +35,8 @@ final class ObjFaceList {
             return;
         }
         boolean normalsNeeded = normalRefs != null || anyNormal;
-        long ints = 2L * (faceCount + 1) + 1 + (normalsNeeded ? 2L : 1L) * (refCount + n);
+        // each reference: its vertex, its normal if any face has one, and the face first with its edge (ObjModel)
+        long ints = 2L * (faceCount + 1) + 1 + (normalsNeeded ? 3L : 2L) * (refCount + n);
         if (vertexBytes + 4 * ints > budget) {
             drop();
             return;

@@ -3,6 +3,7 @@ package simpview.scene.obj;
 import simpview.stage.ObjFace;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import simpview.scene.SceneException;
 
@@ -37,6 +38,8 @@ public final class ObjModel {
     private final double firstClampedChannel;
     /** What reading the file warned of ({@link ObjCounts#warnings}). */
     private final List<String> warnings;
+    /** See {@link #edgeFirstFaces()}: null until a replay asks. */
+    private volatile int[] edgeFirstFaces;
 
     ObjModel(double[] positions, double[] colours, double[] normals, int[] faceStarts, int[] vertexRefs,
             int[] normalRefs, int[] faceLines, int firstClampedColour, double firstClampedChannel, List<String> warnings) {
@@ -70,14 +73,61 @@ public final class ObjModel {
     public void replay(ObjSink sink) throws SceneException {
         ObjFace face = new ObjFace();
         face.bind(positions, colours, normals, vertexRefs, normalRefs);
+        if (sink.readsEdges()) {
+            face.bindEdges(edgeFirstFaces());
+        }
         int faces = faceCount();
         for (int f = 0; f < faces; f++) {
-            face.select(faceStarts[f], faceStarts[f + 1] - faceStarts[f], faceLines[f]);
+            face.select(faceStarts[f], faceStarts[f + 1] - faceStarts[f], faceLines[f], f);
             sink.face(face);
             if ((f + 1) % ObjReader.PROGRESS_LINES == 0) {
                 sink.progress(faceLines[f]);
             }
         }
+    }
+
+    /**
+     * For each corner reference, the first face with the edge from that
+     * corner to the next of its face, either way round, when that face comes
+     * before the corner's own, else -1 ({@link ObjFace#edgeFirstFace}):
+     * worked out at the first replay that asks, and kept. Two threads that
+     * ask at once may both work it out, to the same numbers.
+     */
+    private int[] edgeFirstFaces() {
+        int[] known = edgeFirstFaces;
+        if (known != null) {
+            return known;
+        }
+        int refs = vertexRefs.length;
+        int capacity = Integer.highestOneBit(Math.max(4, 2 * refs)) << 1;
+        long[] keys = new long[capacity];
+        int[] firstFace = new int[capacity];
+        Arrays.fill(keys, -1);
+        int[] first = new int[refs];
+        int faces = faceCount();
+        for (int f = 0; f < faces; f++) {
+            int start = faceStarts[f];
+            int n = faceStarts[f + 1] - start;
+            for (int k = 0; k < n; k++) {
+                int a = vertexRefs[start + k];
+                int b = vertexRefs[start + (k + 1) % n];
+                long key = (long) Math.min(a, b) << 32 | Math.max(a, b);
+                long mixed = key * 0x9E3779B97F4A7C15L;
+                int slot = (int) (mixed ^ mixed >>> 32) & (capacity - 1);
+                while (keys[slot] != -1 && keys[slot] != key) {
+                    slot = (slot + 1) & (capacity - 1);
+                }
+                if (keys[slot] == -1) {
+                    keys[slot] = key;
+                    firstFace[slot] = f;
+                    first[start + k] = -1;
+                } else {
+                    first[start + k] = firstFace[slot] < f ? firstFace[slot] : -1;
+                }
+            }
+        }
+        edgeFirstFaces = first;
+        return first;
     }
 
     public int faceCount() {
@@ -89,10 +139,10 @@ public final class ObjModel {
                 firstClampedChannel, warnings);
     }
 
-    /** The bytes of its arrays, what a cache of models counts. */
+    /** The bytes of its arrays, what a cache of models counts (the edges' faces counted before they are made). */
     public long bytes() {
         long doubles = positions.length + normals.length + (colours == null ? 0 : colours.length);
-        long ints = faceStarts.length + vertexRefs.length + faceLines.length
+        long ints = faceStarts.length + 2L * vertexRefs.length + faceLines.length
                 + (normalRefs == null ? 0 : normalRefs.length);
         return 8 * doubles + 4 * ints;
     }

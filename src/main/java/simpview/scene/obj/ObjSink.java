@@ -18,6 +18,16 @@ public interface ObjSink {
     void face(ObjFace face) throws SceneException;
 
     /**
+     * Whether the sink reads which earlier face shares each edge of a face
+     * ({@link ObjFace#edgeFirstFace}): a kept model then works that out once
+     * and gives it with every replay. A face streamed as it is read knows
+     * none.
+     */
+    default boolean readsEdges() {
+        return false;
+    }
+
+    /**
      * Called now and then (every {@link ObjReader#PROGRESS_LINES} lines read,
      * or as many faces replayed) with the obj line reached, so a sink can show
      * progress or stop a long model by throwing.

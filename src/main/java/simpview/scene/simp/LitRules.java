@@ -194,6 +194,11 @@ final class LitRules implements RuleSet {
             }
 
             @Override
+            public boolean readsEdges() {
+                return geometry.readsEdges();
+            }
+
+            @Override
             public void progress(int line) {
                 monitor.linesRead(files.linesRead() + line);
                 if (monitor.cancelled()) {
