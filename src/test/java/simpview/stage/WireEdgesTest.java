@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.image.DataBufferInt;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Random;
@@ -19,6 +18,8 @@ import simpview.shading.FragmentStages;
 import simpview.shading.LitState;
 import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
+import simpview.testing.DepthBits;
+import simpview.testing.Images;
 
 /**
  * A wire model's edges that two faces share, drawn once (LitGeometry's
@@ -99,13 +100,7 @@ class WireEdgesTest {
             record.flush();
         }
         stages.keep();
-        double[] depths = canvas.zbuffer().copyDepths();
-        long[] bits = new long[depths.length];
-        for (int i = 0; i < depths.length; i++) {
-            bits[i] = Double.doubleToRawLongBits(depths[i]);
-        }
-        int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
-        return new Drawing(pixels, bits, geometry.edgesLeftOut());
+        return new Drawing(Images.rgb(canvas.image()), DepthBits.of(canvas.zbuffer()), geometry.edgesLeftOut());
     }
 
     @Test

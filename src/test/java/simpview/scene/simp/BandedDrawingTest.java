@@ -30,6 +30,7 @@ import simpview.surface.Provenance;
 import simpview.surface.Rgb;
 import simpview.surface.Span;
 import simpview.testing.CourseFiles;
+import simpview.testing.DepthBits;
 import simpview.testing.GoldenCase;
 
 /**
@@ -301,11 +302,6 @@ class BandedDrawingTest {
                 ScenePipeline.Options.byCommands(new SceneLibrary()), monitor);
         assertEquals(c.lit(), drawn.lit(), "drawn by the rules expected");
         int[] pixels = pixels(canvas);
-        double[] z = canvas.zbuffer().copyDepths();
-        long[] depths = new long[z.length];
-        for (int i = 0; i < z.length; i++) {
-            depths[i] = Double.doubleToRawLongBits(z[i]);
-        }
-        return new Drawing(pixels, depths, provenance.copyOwners(), log.size());
+        return new Drawing(pixels, DepthBits.of(canvas.zbuffer()), provenance.copyOwners(), log.size());
     }
 }

@@ -2,7 +2,6 @@ package simpview.scene.simp;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 
-import java.awt.image.DataBufferInt;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,7 +12,9 @@ import simpview.surface.DrawingThreads;
 import simpview.surface.PageCanvas;
 import simpview.surface.Provenance;
 import simpview.testing.CourseFiles;
+import simpview.testing.DepthBits;
 import simpview.testing.GoldenCase;
+import simpview.testing.Images;
 
 /**
  * A wire .obj model drawn again from its kept model, where each edge that
@@ -37,13 +38,7 @@ class WireModelRedrawTest {
         canvas.recordProvenance(owners);
         canvas.clear();
         ScenePipeline.draw(scene, canvas, ScenePipeline.Options.lit(library), SceneMonitor.NONE);
-        double[] depths = canvas.zbuffer().copyDepths();
-        long[] bits = new long[depths.length];
-        for (int i = 0; i < depths.length; i++) {
-            bits[i] = Double.doubleToRawLongBits(depths[i]);
-        }
-        int[] pixels = ((DataBufferInt) canvas.image().getRaster().getDataBuffer()).getData().clone();
-        return new Drawing(pixels, bits, owners.copyOwners());
+        return new Drawing(Images.rgb(canvas.image()), DepthBits.of(canvas.zbuffer()), owners.copyOwners());
     }
 
     @Test
