@@ -153,7 +153,7 @@ public final class LitPrimitives {
      */
     void add(Kind what, double[] v, int n, int channelCount, int look) {
         System.arraycopy(v, 0, room(n, channelCount), roomAt(), n * FragmentLayout.stride(channelCount));
-        addInRoom(what, n, channelCount, look);
+        addInRoom(what, n, channelCount, look, 0);
     }
 
     /**
@@ -174,17 +174,10 @@ public final class LitPrimitives {
     /**
      * Records the primitive whose n vertices were written to the room, as
      * {@link #add} does (which copies them there first), and hands the batch
-     * off once it is full or covers {@link #MOST_PIXELS}.
-     */
-    void addInRoom(Kind what, int n, int channelCount, int look) {
-        addInRoom(what, n, channelCount, look, 0);
-    }
-
-    /**
-     * The same for an outline some of whose edges are not drawn: edge k (from
-     * vertex k to k + 1, the last to the first) is left out when bit k of
-     * {@code edgesLeftOut} is set (the first 64 edges; see LitGeometry's
-     * edgesKnown).
+     * off once it is full or covers {@link #MOST_PIXELS}. An outline's edge k
+     * (from vertex k to k + 1, the last to the first) is left out when bit k
+     * of {@code edgesLeftOut} is set (the first 64 edges; see LitGeometry's
+     * edgesKnown); 0 draws every edge.
      */
     void addInRoom(Kind what, int n, int channelCount, int look, long edgesLeftOut) {
         Batch b = batches.filling();
@@ -231,7 +224,7 @@ public final class LitPrimitives {
         int[] start = new int[1025];
         int[] owner = new int[1024];
         int[] lookOf = new int[1024];
-        /** An outline's edges left out, one bit each ({@link LitPrimitives#addInRoom(Kind, int, int, int, long)}). */
+        /** An outline's edges left out, one bit each ({@link LitPrimitives#addInRoom}). */
         long[] leftOut = new long[1024];
         double[] lowY = new double[1024];
         double[] highY = new double[1024];

@@ -184,9 +184,8 @@ public final class PageCanvas {
 
     /** A copy of the page as it is now: the pixels copied as one array. */
     public BufferedImage snapshot() {
-        checkNotHandedOff();
+        int[] from = ((DataBufferInt) image().getRaster().getDataBuffer()).getData(); // refused when handed off
         BufferedImage copy = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
-        int[] from = ((DataBufferInt) image().getRaster().getDataBuffer()).getData();
         int[] to = ((DataBufferInt) copy.getRaster().getDataBuffer()).getData();
         System.arraycopy(from, 0, to, 0, from.length);
         return copy;
