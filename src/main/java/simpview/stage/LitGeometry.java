@@ -157,6 +157,8 @@ public final class LitGeometry implements GeometryStage {
      */
     private long shadedUnderLights;
     private boolean anyLightReached;
+    /** Polygons whose normals were made ({@link #facesWithNormals}). */
+    private long facesWithNormals;
     /**
      * The unit face normal of the first polygon judged with every light behind it, and whether another such
      * polygon faced against it (normals at more than 90 degrees): lights behind faces that face opposite ways
@@ -264,6 +266,11 @@ public final class LitGeometry implements GeometryStage {
         drawnWholeWords = 0;
     }
 
+    /** How many polygons so far had their normals made: those a light or the trace reads ({@link #normalsRead}). */
+    public long facesWithNormals() {
+        return facesWithNormals;
+    }
+
     /** How many edges of wire models were not drawn again so far ({@link #edgesKnown}). */
     public long edgesLeftOut() {
         return edgesLeftOut;
@@ -336,6 +343,7 @@ public final class LitGeometry implements GeometryStage {
             lookAtFog(n);
         }
         if (normalsRead(wire)) {
+            facesWithNormals++;
             faceNormals(n);
         }
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
@@ -704,11 +712,12 @@ public final class LitGeometry implements GeometryStage {
     }
 
     /**
-     * Whether a polygon's normals are read: a filled one's are lit with; an outline ({@code wire}) is drawn in
-     * its colours, unlit, and only the trace, when one follows, reads its normals.
+     * Whether a polygon's normals are read: the trace, when one follows, reads them all; a filled polygon is lit
+     * with them while there is a light, and under the ambient term alone reads none ({@link LitState#shade},
+     * {@link FragmentStage#channelsRead}); an outline ({@code wire}) is drawn in its colours, unlit.
      */
     private boolean normalsRead(boolean wire) {
-        return !wire || trace != null;
+        return trace != null || !wire && state.lightCount() > 0;
     }
 
     /** True when each of the n vertices has its own normal: then no face normal is made or read. */
