@@ -231,7 +231,7 @@ public final class LitGeometry implements GeometryStage {
             clippedAway(state.camera(), 2);
             skipped(Painter.LINE, false, 2);
         } else {
-            carriedColours(2, FragmentLayout.COLOUR_CHANNELS);
+            carriedColours(2, false);
             int n = project(clipper.vertices(), 2, FragmentLayout.COLOUR_CHANNELS);
             if (n == 2 && (trace == null || traced(Painter.LINE, FragmentLayout.COLOUR_CHANNELS, 2))) {
                 if (record != null) {
@@ -347,6 +347,10 @@ public final class LitGeometry implements GeometryStage {
             faceNormals(n);
         }
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
+        boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
+        if (phong && !normalsRead(false)) {
+            channels = FragmentLayout.COLOUR_CHANNELS; // lit by the ambient term alone: its pixels read z and kd only
+        }
         if (trace != null && trace.wantsSource()) {
             trace.unclipped(cam, 0, CAMERA_STRIDE, n);
             if (!anyOwnNormal(n)) {
@@ -364,7 +368,7 @@ public final class LitGeometry implements GeometryStage {
             skipped(wire ? Painter.WIRE : Painter.FILLED, false, n);
             return;
         }
-        carriedColours(kept, channels);
+        carriedColours(kept, phong);
         boolean whole = edgesKnown && clipper.cutPlanes() == 0 && kept == n;
         if (record != null && trace == null) {
             // Projected straight into the record's batch: no copy of the vertices.
@@ -372,7 +376,7 @@ public final class LitGeometry implements GeometryStage {
             if (project(clipper.vertices(), kept, channels, into, record.roomAt()) == kept) {
                 long drawnBefore = whole ? edgesDrawnBefore(kept) : 0;
                 record.addInRoom(wire ? LitPrimitives.Kind.OUTLINE : LitPrimitives.Kind.FILL, kept, channels,
-                        recordedLook(wire, channels), drawnBefore);
+                        recordedLook(phong), drawnBefore);
             }
             return;
         }
@@ -385,7 +389,7 @@ public final class LitGeometry implements GeometryStage {
         }
         if (record != null) {
             record.add(wire ? LitPrimitives.Kind.OUTLINE : LitPrimitives.Kind.FILL, screen, kept, channels,
-                    recordedLook(wire, channels));
+                    recordedLook(phong));
             return;
         }
         int width = fragments.width();
@@ -492,15 +496,14 @@ public final class LitGeometry implements GeometryStage {
     }
 
     /** How a recorded polygon is shaded: lit at every pixel as the state lights now (phong), or its colours fogged. */
-    private int recordedLook(boolean wire, int channels) {
-        return wire || channels != FragmentLayout.PHONG_CHANNELS ? record.look(state.fog(), null, oneColour)
-                : record.look(state.fog(), state, oneColour);
+    private int recordedLook(boolean phong) {
+        return record.look(state.fog(), phong ? state : null, oneColour);
     }
 
     /**
      * Step 5's end: whether the primitive's n clipped vertices share one
-     * colour, or for a phong polygon ({@code channels} the phong ones) one
-     * kd ({@link #oneColour}), and the fragment stage told so, with how the
+     * colour, or for a {@code phong} polygon one kd ({@link #oneColour}),
+     * and the fragment stage told so, with how the
      * primitive is shaded. A flat polygon always does (each vertex has the
      * lit colour, and the clipper's lerp {@code a + t (b - a)} keeps a value
      * both ends share); a line or outline of the surface colour, a gouraud
@@ -508,7 +511,7 @@ public final class LitGeometry implements GeometryStage {
      * colour does too. A colour that is not a number never equals itself, so
      * it is lerped as before.
      */
-    private void carriedColours(int n, int channels) {
+    private void carriedColours(int n, boolean phong) {
         double[] v = clipper.vertices();
         boolean one = true;
         for (int k = 1; k < n && one; k++) {
@@ -516,7 +519,7 @@ public final class LitGeometry implements GeometryStage {
             one = v[o + CR] == v[CR] && v[o + CG] == v[CG] && v[o + CB] == v[CB];
         }
         oneColour = one && v[CR] == v[CR] && v[CG] == v[CG] && v[CB] == v[CB];
-        if (channels == FragmentLayout.PHONG_CHANNELS) {
+        if (phong) {
             fragments.phong(phongShader(), state.fog(), oneColour);
         } else if (oneColour) {
             fragments.oneColour(state.fog());
