@@ -503,13 +503,13 @@ public final class LitGeometry implements GeometryStage {
     /**
      * Step 5's end: whether the primitive's n clipped vertices share one
      * colour, or for a {@code phong} polygon one kd ({@link #oneColour}),
-     * and the fragment stage told so, with how the
-     * primitive is shaded. A flat polygon always does (each vertex has the
-     * lit colour, and the clipper's lerp {@code a + t (b - a)} keeps a value
-     * both ends share); a line or outline of the surface colour, a gouraud
-     * polygon whose vertices are lit alike, or a phong polygon of the surface
-     * colour does too. A colour that is not a number never equals itself, so
-     * it is lerped as before.
+     * and the fragment stage told so, with how the primitive is shaded (lit
+     * at every pixel, or its colours fogged). A flat polygon always does
+     * (each vertex has the lit colour, and the clipper's lerp
+     * {@code a + t (b - a)} keeps a value both ends share); a line or
+     * outline of the surface colour, a gouraud polygon whose vertices are
+     * lit alike, or a phong polygon of the surface colour does too. A colour
+     * that is not a number never equals itself, so it is lerped as before.
      */
     private void carriedColours(int n, boolean phong) {
         double[] v = clipper.vertices();

@@ -27,11 +27,13 @@ import simpview.testing.Images;
  * A filled polygon's normals are made only when something reads them
  * (LitGeometry's normalsRead): under the ambient term alone none are, in
  * flat, gouraud and phong shading, on one thread and recorded in bands on
- * two. The proof that leaving them out draws the same: a model drawn with
- * its own normals and drawn with other ones (some zero, some long, others
- * turned anywhere) gives the same pixels and depths to the bit under the
- * ambient term alone, and different pixels under a light, where every
- * drawn face has its normals made. The model is a rough terrain of quads and
+ * two, and a phong polygon is recorded with z and kd only. The proof that
+ * leaving them out draws the same: the pixels and depths are to the bit
+ * those drawn while a trace follows (which reads every normal, and keeps P
+ * and N in the record); and a model drawn with its own normals and drawn
+ * with other ones (some zero, one long, the others turned anywhere) gives
+ * the same picture under the ambient term alone, and another under a light,
+ * where every drawn face has its normals made. The model is a rough terrain of quads and
  * triangles from a fixed seed, from behind the eye past the sides of the view
  * to far away, every other face with normals of its own, the rest lit with
  * their face normals.
@@ -93,9 +95,12 @@ class UnlitNormalsTest {
     private record Drawing(int[] pixels, long[] depths, long facesWithNormals) {
     }
 
-    /** The model filled, shaded so, under ambient light and {@code lit}: one light too. */
-    private static Drawing draw(ObjModel model, LitState.ShadingMode shading, boolean lit, DrawingThreads threads)
-            throws SceneException {
+    /**
+     * The model filled, shaded so, under ambient light and {@code lit}: one light too; {@code traced}: with a
+     * trace following that reads every primitive and draws it.
+     */
+    private static Drawing draw(ObjModel model, LitState.ShadingMode shading, boolean lit, boolean traced,
+            DrawingThreads threads) throws SceneException {
         PageCanvas canvas = new PageCanvas();
         canvas.drawWith(threads);
         canvas.clear();
@@ -113,6 +118,19 @@ class UnlitNormalsTest {
         LitPrimitives record = threads.isOne() ? null : new LitPrimitives(threads, canvas.zbuffer(),
                 canvas.owedPanelRows(), canvas.litPanel(), null, canvas.waitingPixels(), stages);
         geometry.recordTo(record);
+        if (traced) {
+            geometry.follow(new PrimitiveTrace() {
+                @Override
+                public void read(int index, Path file, int line, int kind, double[] p, int at, int stride,
+                        int vertices) {
+                }
+
+                @Override
+                public boolean drawing(int index) {
+                    return true;
+                }
+            });
+        }
         geometry.beginObj(Matrix4.rotation(Axis.Y, 7), false, FILE);
         model.replay(new ObjSink() {
             @Override
@@ -128,18 +146,22 @@ class UnlitNormalsTest {
     }
 
     @Test
-    void underTheAmbientTermAloneNoNormalIsMadeAndNoneChangesThePicture() throws Exception {
+    void underTheAmbientTermAloneNoNormalIsMadeAndThePictureIsTheTracedOne() throws Exception {
         ObjModel own = ObjModel.of(FILE, terrain(1));
         ObjModel other = ObjModel.of(FILE, terrain(2));
         for (int threads : new int[] {1, 2}) {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 for (LitState.ShadingMode shading : LitState.ShadingMode.values()) {
                     String what = shading + " on " + threads + " thread(s)";
-                    Drawing first = draw(own, shading, false, drawing);
-                    Drawing second = draw(other, shading, false, drawing);
+                    Drawing first = draw(own, shading, false, false, drawing);
+                    Drawing second = draw(other, shading, false, false, drawing);
+                    Drawing traced = draw(own, shading, false, true, drawing);
                     assertEquals(0, first.facesWithNormals(), what + ": normals made");
                     assertEquals(0, second.facesWithNormals(), what + ": normals made");
+                    assertTrue(traced.facesWithNormals() > CELLS * CELLS / 2, what + ": normals made, traced");
                     assertTrue(Arrays.stream(first.pixels()).distinct().count() > 2, what + ": something drawn");
+                    assertArrayEquals(traced.pixels(), first.pixels(), what + ": the picture, as traced");
+                    assertArrayEquals(traced.depths(), first.depths(), what + ": the depths, as traced");
                     assertArrayEquals(first.pixels(), second.pixels(), what + ": the picture");
                     assertArrayEquals(first.depths(), second.depths(), what + ": the depths, to the bit");
                 }
@@ -155,8 +177,8 @@ class UnlitNormalsTest {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 for (LitState.ShadingMode shading : LitState.ShadingMode.values()) {
                     String what = shading + " on " + threads + " thread(s)";
-                    Drawing first = draw(own, shading, true, drawing);
-                    Drawing second = draw(other, shading, true, drawing);
+                    Drawing first = draw(own, shading, true, false, drawing);
+                    Drawing second = draw(other, shading, true, false, drawing);
                     assertTrue(first.facesWithNormals() > CELLS * CELLS / 2, what + ": normals made "
                             + first.facesWithNormals());
                     assertEquals(first.facesWithNormals(), second.facesWithNormals(), what + ": the same faces");
