@@ -26,7 +26,7 @@ import simpview.surface.DrawingThreads;
  * another under a light, where every drawn face has its normals made. The
  * model is {@link ModelPage}'s rough terrain, from behind the eye past the
  * sides of the view to far away, every other face with normals of its own
- * (some zero, one long, the others turned anywhere), the rest lit with
+ * (one of them zero, one long, the others turned anywhere), the rest lit with
  * their face normals.
  */
 class UnlitNormalsTest {
