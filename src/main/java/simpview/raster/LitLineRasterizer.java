@@ -23,6 +23,22 @@ public final class LitLineRasterizer {
         walk.rows(from, to);
     }
 
+    /**
+     * The outline of the n vertices from v[at] ({@link FragmentLayout#stride}
+     * numbers each), edge k from vertex k to k + 1 and the last back to the
+     * first, each a {@link #draw}; but for edge k under 64 when bit k of
+     * {@code leftOut} is set (0 draws every edge).
+     */
+    public void outline(double[] v, int at, int n, int channels, long leftOut, int width, int height,
+            FragmentSink sink) {
+        int stride = FragmentLayout.stride(channels);
+        for (int k = 0; k < n; k++) {
+            if (k >= Long.SIZE || (leftOut >>> k & 1) == 0) {
+                draw(v, at + k * stride, at + ((k + 1) % n) * stride, channels, width, height, sink);
+            }
+        }
+    }
+
     /** The line from the vertex at v[from] to the vertex at v[to] on a width x height panel. */
     public void draw(double[] v, int from, int to, int channels, int width, int height, FragmentSink sink) {
         if (!walk.start(v[from], v[from + 1], v[to], v[to + 1], width, height)) {

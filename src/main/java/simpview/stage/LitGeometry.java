@@ -342,13 +342,14 @@ public final class LitGeometry implements GeometryStage {
         if (!anyNearerThanFog) {
             lookAtFog(n);
         }
-        if (normalsRead(wire)) {
+        boolean normalsRead = normalsRead(wire);
+        if (normalsRead) {
             facesWithNormals++;
             faceNormals(n);
         }
         int channels = wire ? FragmentLayout.COLOUR_CHANNELS : shade(n);
         boolean phong = channels == FragmentLayout.PHONG_CHANNELS;
-        if (phong && !normalsRead(false)) {
+        if (phong && !normalsRead) {
             channels = FragmentLayout.COLOUR_CHANNELS; // lit by the ambient term alone: its pixels read z and kd only
         }
         if (trace != null && trace.wantsSource()) {
@@ -398,13 +399,7 @@ public final class LitGeometry implements GeometryStage {
             fill.fill(screen, kept, channels, width, height, raster);
             return;
         }
-        int stride = FragmentLayout.stride(channels);
-        long drawnBefore = whole ? edgesDrawnBefore(kept) : 0;
-        for (int k = 0; k < kept; k++) {
-            if (k >= Long.SIZE || (drawnBefore >>> k & 1) == 0) {
-                lines.draw(screen, k * stride, ((k + 1) % kept) * stride, channels, width, height, raster);
-            }
-        }
+        lines.outline(screen, 0, kept, channels, whole ? edgesDrawnBefore(kept) : 0, width, height, raster);
     }
 
     /**

@@ -419,14 +419,7 @@ public final class LitPrimitives {
                     yield Kind.LINE;
                 }
                 case OUTLINE -> {
-                    int stride = FragmentLayout.stride(ch);
-                    long leftOut = b.leftOut[k];
-                    for (int i = 0; i < n; i++) {
-                        if (i >= Long.SIZE || (leftOut >>> i & 1) == 0) {
-                            lines.draw(numbers, at + i * stride, at + ((i + 1) % n) * stride, ch, width, height,
-                                    fragments);
-                        }
-                    }
+                    lines.outline(numbers, at, n, ch, b.leftOut[k], width, height, fragments);
                     yield Kind.OUTLINE;
                 }
             };
