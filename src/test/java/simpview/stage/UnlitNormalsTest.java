@@ -70,47 +70,53 @@ class UnlitNormalsTest {
         return d.geometry().facesWithNormals();
     }
 
-    @Test
-    void underTheAmbientTermAloneNoNormalIsMadeAndThePictureIsTheTracedOne() throws Exception {
-        ObjModel own = terrain(1);
-        ObjModel other = terrain(2);
+    /** What is checked of one shading mode's drawings with some threads ({@code what} names them). */
+    @FunctionalInterface
+    private interface Check {
+        void of(LitState.ShadingMode shading, DrawingThreads threads, String what) throws Exception;
+    }
+
+    /** The check in flat, gouraud and phong shading, on one thread and on two. */
+    private static void everyWay(Check check) throws Exception {
         for (int threads : new int[] {1, 2}) {
             try (DrawingThreads drawing = DrawingThreads.of(threads)) {
                 for (LitState.ShadingMode shading : LitState.ShadingMode.values()) {
-                    String what = shading + " on " + threads + " thread(s)";
-                    ModelPage.Drawing first = draw(own, shading, false, false, drawing);
-                    ModelPage.Drawing second = draw(other, shading, false, false, drawing);
-                    ModelPage.Drawing traced = draw(own, shading, false, true, drawing);
-                    assertEquals(0, normalsMade(first), what + ": normals made");
-                    assertEquals(0, normalsMade(second), what + ": normals made");
-                    assertTrue(normalsMade(traced) > CELLS * CELLS / 2, what + ": normals made, traced");
-                    assertTrue(Arrays.stream(first.pixels()).distinct().count() > 2, what + ": something drawn");
-                    assertArrayEquals(traced.pixels(), first.pixels(), what + ": the picture, as traced");
-                    assertArrayEquals(traced.depths(), first.depths(), what + ": the depths, as traced");
-                    assertArrayEquals(first.pixels(), second.pixels(), what + ": the picture");
-                    assertArrayEquals(first.depths(), second.depths(), what + ": the depths, to the bit");
+                    check.of(shading, drawing, shading + " on " + threads + " thread(s)");
                 }
             }
         }
     }
 
     @Test
+    void underTheAmbientTermAloneNoNormalIsMadeAndThePictureIsTheTracedOne() throws Exception {
+        ObjModel own = terrain(1);
+        ObjModel other = terrain(2);
+        everyWay((shading, drawing, what) -> {
+            ModelPage.Drawing first = draw(own, shading, false, false, drawing);
+            ModelPage.Drawing second = draw(other, shading, false, false, drawing);
+            ModelPage.Drawing traced = draw(own, shading, false, true, drawing);
+            assertEquals(0, normalsMade(first), what + ": normals made");
+            assertEquals(0, normalsMade(second), what + ": normals made");
+            assertTrue(normalsMade(traced) > CELLS * CELLS / 2, what + ": normals made, traced");
+            assertTrue(Arrays.stream(first.pixels()).distinct().count() > 2, what + ": something drawn");
+            assertArrayEquals(traced.pixels(), first.pixels(), what + ": the picture, as traced");
+            assertArrayEquals(traced.depths(), first.depths(), what + ": the depths, as traced");
+            assertArrayEquals(first.pixels(), second.pixels(), what + ": the picture");
+            assertArrayEquals(first.depths(), second.depths(), what + ": the depths, to the bit");
+        });
+    }
+
+    @Test
     void underALightEveryDrawnFaceMakesItsNormalsAndTheyChangeThePicture() throws Exception {
         ObjModel own = terrain(1);
         ObjModel other = terrain(2);
-        for (int threads : new int[] {1, 2}) {
-            try (DrawingThreads drawing = DrawingThreads.of(threads)) {
-                for (LitState.ShadingMode shading : LitState.ShadingMode.values()) {
-                    String what = shading + " on " + threads + " thread(s)";
-                    ModelPage.Drawing first = draw(own, shading, true, false, drawing);
-                    ModelPage.Drawing second = draw(other, shading, true, false, drawing);
-                    assertTrue(normalsMade(first) > CELLS * CELLS / 2, what + ": normals made "
-                            + normalsMade(first));
-                    assertEquals(normalsMade(first), normalsMade(second), what + ": the same faces");
-                    assertArrayEquals(first.depths(), second.depths(), what + ": the depths, to the bit");
-                    assertFalse(Arrays.equals(first.pixels(), second.pixels()), what + ": the normals lit it");
-                }
-            }
-        }
+        everyWay((shading, drawing, what) -> {
+            ModelPage.Drawing first = draw(own, shading, true, false, drawing);
+            ModelPage.Drawing second = draw(other, shading, true, false, drawing);
+            assertTrue(normalsMade(first) > CELLS * CELLS / 2, what + ": normals made " + normalsMade(first));
+            assertEquals(normalsMade(first), normalsMade(second), what + ": the same faces");
+            assertArrayEquals(first.depths(), second.depths(), what + ": the depths, to the bit");
+            assertFalse(Arrays.equals(first.pixels(), second.pixels()), what + ": the normals lit it");
+        });
     }
 }
