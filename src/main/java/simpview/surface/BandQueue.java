@@ -108,8 +108,7 @@ public final class BandQueue {
         this.watch = watch;
         this.drawn = new int[bands];
         this.claimed = new boolean[bands];
-        this.finishSpin = threads.threads() <= Runtime.getRuntime().availableProcessors() ? FINISH_SPIN_NANOS
-                : SPIN_NANOS;
+        this.finishSpin = threads.coreEach() ? FINISH_SPIN_NANOS : SPIN_NANOS;
     }
 
     /**

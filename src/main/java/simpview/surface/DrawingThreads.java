@@ -51,6 +51,16 @@ public final class DrawingThreads implements AutoCloseable {
     private static final long IDLE_SPIN_NANOS = 100_000;
 
     private final int threads;
+    /**
+     * True when each drawing thread had a processor of its own when these
+     * threads were made ({@link #coreEach}). Asked once, not for each
+     * picture: in a container the JVM keeps its processor count 20 ms and
+     * then reads the cgroup's CPU limits again, and on this machine
+     * {@code availableProcessors()} called every 7 ms took a mean of 60 us,
+     * every 30 ms 158 us; each picture's queue asked it before handing in
+     * its first batch (docs/performance-log.md, session 50).
+     */
+    private final boolean coreEach;
     /** The workers; empty for one thread. */
     private final List<Thread> workers = new ArrayList<>();
     /** What the workers are to run, each by one of them. */
@@ -75,6 +85,7 @@ public final class DrawingThreads implements AutoCloseable {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
         this.threads = threads;
+        this.coreEach = threads <= Runtime.getRuntime().availableProcessors();
         for (int w = 1; w < threads; w++) {
             Thread t = new Thread(this::work, "simpview-band-" + w);
             t.setDaemon(true);
@@ -128,6 +139,15 @@ public final class DrawingThreads implements AutoCloseable {
     /** How many threads draw each picture: the caller's and {@code threads() - 1} workers. */
     public int threads() {
         return threads;
+    }
+
+    /**
+     * True when each of these threads had a processor of its own when they
+     * were made: a thread waiting for the others may then spin a while
+     * without taking a core a drawer needs.
+     */
+    public boolean coreEach() {
+        return coreEach;
     }
 
     /** True when there is only the caller's thread: then scenes are drawn as they are read, unrecorded. */

@@ -33,6 +33,19 @@ class DrawingThreadsTest {
         }
     }
 
+    /** Each thread has a processor of its own when there are no more threads than processors, asked once. */
+    @Test
+    void aProcessorEachWhenNoMoreThreadsThanProcessors() {
+        int processors = Runtime.getRuntime().availableProcessors();
+        try (DrawingThreads one = DrawingThreads.one(); DrawingThreads each = DrawingThreads.perProcessor()) {
+            assertTrue(one.coreEach());
+            assertTrue(each.coreEach());
+        }
+        try (DrawingThreads more = DrawingThreads.of(processors + 1)) {
+            assertFalse(more.coreEach(), processors + 1 + " threads on " + processors + " processors");
+        }
+    }
+
     /**
      * The workers are threads of their own, named, each running a task at
      * a time; closing stops them (each found parked or spinning returns) and
