@@ -10,6 +10,7 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.function.IntConsumer;
@@ -229,12 +230,25 @@ final class FileStack implements AutoCloseable {
         return result;
     }
 
-    /** A file name as a command in a file of folder {@code dir} gives it (dir may be null). */
+    /**
+     * A file name as a command in a file of folder {@code dir} gives it (dir may be null). Its equals and
+     * hashCode are written out, as FileStamp's are: a map key looked up at every include.
+     */
     private record Name(Path dir, String name) {
 
         /** The name command c of the file {@code from} gives: how the scene keeps where a file or model name led. */
         static Name of(SimpReader from, Command c) {
             return new Name(from.file().getParent(), c.fileName);
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Name other && Objects.equals(dir, other.dir) && Objects.equals(name, other.name);
+        }
+
+        @Override
+        public int hashCode() {
+            return Objects.hashCode(dir) * 31 + Objects.hashCode(name);
         }
     }
 
