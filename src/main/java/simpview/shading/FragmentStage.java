@@ -206,6 +206,8 @@ public final class FragmentStage implements FragmentSink {
     private boolean keepShortSpans;
     private int waitedShortSpans;
     private int waitedShortPixels;
+    /** Pixels marked as waiting since the waits last ended ({@link #waitingMarks}). */
+    private int marks;
     private PointShader shader;
     /**
      * Whether the primitives at hand have one colour each, in their colour channels as it is: their colour
@@ -392,8 +394,20 @@ public final class FragmentStage implements FragmentSink {
         return waiting != null;
     }
 
+    /**
+     * Pixels of this stage's rows marked as waiting to be shaded since the
+     * waits last ended, a pixel marked again counted again: at most the
+     * work {@link #shadeWaiting} will have, a measure of it that costs an
+     * add a span. Read by another thread only once this one's drawing is
+     * handed back (the band queue's lock).
+     */
+    public int waitingMarks() {
+        return marks;
+    }
+
     /** Ends every wait in this stage's rows, whatever an earlier picture left there: before its first fragment. */
     public void clearWaits() {
+        marks = 0;
         if (waiting != null) {
             waiting.clearRows(rowFrom, rowTo);
         }
@@ -705,6 +719,7 @@ public final class FragmentStage implements FragmentSink {
             if (span == WaitingPixels.NONE) {
                 span = keepSpan(y, from, q0, dq, v0, dv, polygonUnlit());
             }
+            marks += n;
             if (whole) {
                 waiting.waitRun(y, first, first + n, span);
             } else {
@@ -746,6 +761,7 @@ public final class FragmentStage implements FragmentSink {
         }
         waitedShortSpans++;
         waitedShortPixels += passed;
+        marks += passed;
         return true;
     }
 
@@ -816,6 +832,7 @@ public final class FragmentStage implements FragmentSink {
         }
         waitedShortSpans++;
         waitedShortPixels += w.count - before;
+        marks += w.count - before;
         wroteOver(y); // a long span's pixel that waits here may be taken
         return true;
     }

@@ -2,6 +2,7 @@ package simpview.stage;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.IntUnaryOperator;
 import java.util.function.ObjIntConsumer;
 import java.util.function.Supplier;
 import simpview.surface.BandQueue;
@@ -161,6 +162,11 @@ final class BatchDrawing<B extends BatchDrawing.Recorded> {
      */
     static boolean mayTouch(double low, double high, int from, int to) {
         return !(high < from || low >= to);
+    }
+
+    /** Among bands equally far along, the heaviest by {@code weight} drawn first ({@link BandQueue#heavierFirst}). */
+    void heavierFirst(IntUnaryOperator weight) {
+        queue.heavierFirst(weight);
     }
 
     /** The row bands a split batch is drawn in, one drawer each. */

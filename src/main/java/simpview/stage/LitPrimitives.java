@@ -83,6 +83,15 @@ public final class LitPrimitives {
      */
     private final List<LitRasterizers> rasterizers;
     private final DrawingThreads threads;
+    /**
+     * True once the picture's last batch is handed in ({@link #flush}): from
+     * then on the bands with the most waiting pixels to shade are drawn
+     * first. Not before: the reading thread draws bands while it waits for
+     * a free slot, and a long band kept it from reading the next batch
+     * (A4 page-f1 0.987 of its time weighed so from the start, a copy
+     * 0.992; once the last batch was in, 0.974, a copy 0.992; session 50).
+     */
+    private boolean lastHandedIn;
 
     /**
      * Draws on {@code panel} (panel coordinates), depth-tested against
@@ -117,6 +126,7 @@ public final class LitPrimitives {
             panelRows.make(bands.start(b), bands.end(b));
             drawers[b].fragments.clearWaits();
         });
+        batches.heavierFirst(b -> lastHandedIn ? drawers[b].fragments.waitingMarks() : 0);
         panel.settle(); // what the panel owes besides the rows taken (nothing, drawn on a canvas)
         batches.prepareBands();
     }
@@ -198,6 +208,7 @@ public final class LitPrimitives {
     /** Draws what is recorded, band by band, and returns when all is drawn. */
     public void flush() {
         if (shadesLater) {
+            lastHandedIn = true; // before the hand-off, whose lock makes it seen by every claim after
             batches.filling().last = true;
             batches.handOffLast(); // in bands: each band's drawer then shades its rows' waiting pixels
         } else {

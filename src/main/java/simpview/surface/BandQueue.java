@@ -3,6 +3,7 @@ package simpview.surface;
 import java.util.Arrays;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.IntUnaryOperator;
 
 /**
  * Batches of primitives drawn band by band by all the threads, each band's
@@ -24,7 +25,8 @@ import java.util.concurrent.locks.ReentrantLock;
  * each thread first draws its own bands (band b is thread b mod threads's,
  * the caller being thread 0), so that a band's rows stay in one core's
  * cache from batch to batch, and takes another's only when its own are
- * drawn, the least drawn first.
+ * drawn, the least drawn first; among bands equally far along, the lowest,
+ * or the heaviest by what the caller says of them ({@link #heavierFirst}).
  *
  * <p>Used by one thread, the one that fills the batches; the workers are
  * {@link DrawingThreads}'s, started at a picture's first batch and let go
@@ -91,6 +93,8 @@ public final class BandQueue {
     private long since;
     /** How long {@link #finish} spins before it parks: {@link #FINISH_SPIN_NANOS} or {@link #SPIN_NANOS}. */
     private final long finishSpin;
+    /** Each band's work still to come, as {@link #heavierFirst} was given it; 0 for every band by default. */
+    private IntUnaryOperator weight = band -> 0;
 
     /**
      * For a panel drawn in {@code bands} bands (1 or more) by
@@ -109,6 +113,19 @@ public final class BandQueue {
         this.drawn = new int[bands];
         this.claimed = new boolean[bands];
         this.finishSpin = threads.coreEach() ? FINISH_SPIN_NANOS : SPIN_NANOS;
+    }
+
+    /**
+     * Among the bands a thread may take that are equally far along, the one
+     * {@code weight} gives the most is taken first, the lowest of those that
+     * tie (without a weight: the lowest). A picture's last bands then start
+     * with the longest, so that no thread is left at the end with a long
+     * band to draw while the others wait. {@code weight} is asked with the
+     * lock held, on whichever thread claims, of bands no thread is drawing;
+     * set it before the first batch is handed in.
+     */
+    public void heavierFirst(IntUnaryOperator weight) {
+        this.weight = weight;
     }
 
     /**
@@ -296,8 +313,9 @@ public final class BandQueue {
     /**
      * With the lock held: takes a band to draw, for thread {@code home}: one
      * of its own whose next batch is handed in, else another thread's, the
-     * least drawn first. Returns the batch times bands plus the band;
-     * NOTHING when there is nothing to draw now, or a drawer has failed.
+     * least drawn first, then the heaviest ({@link #heavierFirst}). Returns
+     * the batch times bands plus the band; NOTHING when there is nothing to
+     * draw now, or a drawer has failed.
      */
     private int claim(int home) {
         if (failure != null) {
@@ -305,6 +323,7 @@ public final class BandQueue {
         }
         int best = NOTHING;
         boolean bestMine = false;
+        int bestWeight = 0; // of best
         int count = threads.threads();
         for (int b = 0; b < bands; b++) {
             int k = drawn[b];
@@ -315,6 +334,13 @@ public final class BandQueue {
             if (best == NOTHING || (mine && !bestMine) || (mine == bestMine && k < drawn[best])) {
                 best = b;
                 bestMine = mine;
+                bestWeight = weight.applyAsInt(b);
+            } else if (mine == bestMine && k == drawn[best]) {
+                int heavier = weight.applyAsInt(b);
+                if (heavier > bestWeight) {
+                    best = b;
+                    bestWeight = heavier;
+                }
             }
         }
         if (best == NOTHING) {

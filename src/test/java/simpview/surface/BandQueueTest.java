@@ -52,6 +52,35 @@ class BandQueueTest {
         }
     }
 
+    /**
+     * Among bands equally far along, the heaviest first, the lowest of those
+     * that tie; with no weight, the lowest first. On one thread, which
+     * draws each batch whole as it is handed in, every band its own.
+     */
+    @Test
+    void theHeaviestOfEquallyFarAlongIsDrawnFirst() {
+        int[] weights = {1, 5, 3, 5, 0};
+        for (boolean weighed : new boolean[] {true, false}) {
+            try (DrawingThreads one = DrawingThreads.one()) {
+                List<String> order = new ArrayList<>();
+                int[] batchIn = new int[2];
+                BandQueue queue = one.queue(5, 2, (slot, band) -> order.add(batchIn[slot] + "/" + band));
+                if (weighed) {
+                    queue.heavierFirst(band -> weights[band]);
+                }
+                for (int k = 0; k < 2; k++) {
+                    batchIn[queue.slot()] = k;
+                    queue.publish();
+                }
+                queue.finish();
+                List<String> expected = weighed
+                        ? List.of("0/1", "0/3", "0/2", "0/0", "0/4", "1/1", "1/3", "1/2", "1/0", "1/4")
+                        : List.of("0/0", "0/1", "0/2", "0/3", "0/4", "1/0", "1/1", "1/2", "1/3", "1/4");
+                assertEquals(expected, order, weighed ? "weighed" : "unweighed");
+            }
+        }
+    }
+
     @Test
     void everyBandOfEveryBatchIsDrawnOnceInOrderOnNamedThreads() {
         for (int threadCount : new int[] {1, 2, 3, 7}) {
