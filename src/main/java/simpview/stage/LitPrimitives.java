@@ -89,7 +89,8 @@ public final class LitPrimitives {
      * first. Not before: the reading thread draws bands while it waits for
      * a free slot, and a long band kept it from reading the next batch
      * (A4 page-f1 0.987 of its time weighed so from the start, a copy
-     * 0.992; once the last batch was in, 0.974, a copy 0.992; session 50).
+     * 0.992; once the last batch was in, 0.974 and 0.954 in two runs of
+     * three processes, copies 0.992 and 0.994; session 50).
      */
     private boolean lastHandedIn;
 

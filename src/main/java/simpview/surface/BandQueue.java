@@ -336,10 +336,10 @@ public final class BandQueue {
                 bestMine = mine;
                 bestWeight = weight.applyAsInt(b);
             } else if (mine == bestMine && k == drawn[best]) {
-                int heavier = weight.applyAsInt(b);
-                if (heavier > bestWeight) {
+                int its = weight.applyAsInt(b);
+                if (its > bestWeight) {
                     best = b;
-                    bestWeight = heavier;
+                    bestWeight = its;
                 }
             }
         }
