@@ -33,9 +33,11 @@ class FileStampTest {
     @Test
     void aFileStampedTwiceUnchangedIsOneVersion(@TempDir Path dir) throws IOException {
         Path file = Files.writeString(dir.resolve("cube.simp"), "polygon (0,0,0) (1,0,0) (0,1,0)\n");
-        assertEquals(FileStamp.of(file), FileStamp.of(file));
+        FileStamp before = FileStamp.of(file);
+        assertEquals(before, FileStamp.of(file));
         assertEquals(FileStamp.MISSING, FileStamp.of(dir.resolve("none.simp")));
         Files.writeString(file, "polygon (0,0,0) (1,0,0) (0,1,0) (1,1,0)\n");
+        assertNotEquals(before, FileStamp.of(file), "a longer file");
         assertNotEquals(FileStamp.MISSING, FileStamp.of(file));
     }
 }

@@ -33,7 +33,7 @@ class DrawingThreadsTest {
         }
     }
 
-    /** Each thread has a processor of its own when there are no more threads than processors, asked once. */
+    /** Each thread has a processor of its own when there are no more threads than processors. */
     @Test
     void aProcessorEachWhenNoMoreThreadsThanProcessors() {
         int processors = Runtime.getRuntime().availableProcessors();
