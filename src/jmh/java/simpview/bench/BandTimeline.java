@@ -18,7 +18,9 @@ import simpview.surface.PageCanvas;
  * while the other does not get a core (on this 2-core host, a few in 20).
  * The reading thread's "other" is the rest of its time: reading the scene,
  * the geometry stage, recording, and spinning before it parks. A worker's
- * time neither drawing nor parked is spent spinning. The watch's own calls
+ * time neither drawing nor parked is spent spinning. The "end wait" is the
+ * time between the two threads' last bands' ends: how long one waited for
+ * the other at the picture's end. The watch's own calls
  * (a lock and a clock read each) make a picture a little slower than the
  * benchmarks do.
  *
@@ -43,8 +45,8 @@ public final class BandTimeline {
     public static void main(String[] args) throws Exception {
         Path folder = Path.of(args[0]);
         System.out.println("| page | picture | batches | reading thread: drawing | parked | other "
-                + "| worker: drawing | parked |");
-        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|");
+                + "| worker: drawing | parked | end wait |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
         for (int i = 1; i < args.length; i++) {
             Path file = LitPages.sceneFile(folder, args[i]);
             SceneLibrary library = new SceneLibrary();
@@ -61,7 +63,7 @@ public final class BandTimeline {
                 for (long warmUntil = System.nanoTime() + WATCHED_WARM_NANOS; System.nanoTime() - warmUntil < 0;) {
                     LitPages.redraw(canvas, file, library); // the watch's calls compiled too
                 }
-                long[][] columns = new long[7][PICTURES];
+                long[][] columns = new long[8][PICTURES];
                 for (int p = 0; p < PICTURES; p++) {
                     timeline.clear();
                     long start = System.nanoTime();
@@ -74,6 +76,7 @@ public final class BandTimeline {
                     columns[4][p] = picture - timeline.drawing[0] - timeline.parked[0];
                     columns[5][p] = timeline.drawing[1];
                     columns[6][p] = timeline.parked[1];
+                    columns[7][p] = Math.abs(timeline.lastDrawn[0] - timeline.lastDrawn[1]);
                 }
                 two.watchedBy(null);
                 StringBuilder row = new StringBuilder("| ").append(args[i]);
@@ -98,6 +101,8 @@ public final class BandTimeline {
         private final long[] parked = new long[2];
         private final long[] drawingSince = new long[2];
         private final long[] parkedSince = new long[2];
+        /** When each thread last ended a band. */
+        private final long[] lastDrawn = new long[2];
         private int batches;
 
         Timeline(Thread reader) {
@@ -107,6 +112,7 @@ public final class BandTimeline {
         synchronized void clear() {
             Arrays.fill(drawing, 0);
             Arrays.fill(parked, 0);
+            Arrays.fill(lastDrawn, System.nanoTime());
             batches = 0;
         }
 
@@ -127,7 +133,9 @@ public final class BandTimeline {
         @Override
         public synchronized void drawn(int batch, int band) {
             int t = thread();
-            drawing[t] += System.nanoTime() - drawingSince[t];
+            long now = System.nanoTime();
+            drawing[t] += now - drawingSince[t];
+            lastDrawn[t] = now;
         }
 
         @Override
