@@ -712,7 +712,7 @@ public final class FragmentStage implements FragmentSink {
             double[] dv) {
         int span = WaitingPixels.NONE;
         for (int first = start; first < end; first += BATCH) {
-            int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z]);
+            int n = gather(y, from, first, Math.min(first + BATCH, end), q0, dq, v0[Z], dv[Z], false);
             if (n == 0) {
                 continue;
             }
@@ -1455,17 +1455,35 @@ public final class FragmentStage implements FragmentSink {
      * (batchX is not written).
      */
     private int gather(int y, int from, int first, int stop, double q0, double dq, double z0, double dz) {
+        return gather(y, from, first, stop, q0, dq, z0, dz, true);
+    }
+
+    /**
+     * As {@link #gather}, and with {@code all} false only x and z, the depth
+     * test's: for pixels that wait, whose k and 1 / q are worked out again
+     * when they are shaded ({@link #addPiece}).
+     */
+    private int gather(int y, int from, int first, int stop, double q0, double dq, double z0, double dz,
+            boolean all) {
         int m = stop - first;
         double k0 = first - from;
         double[] ks = batchK;
         double[] inv = batchInverse;
         double[] zs = batchZ;
-        for (int j = 0; j < m; j++) {
-            double k = k0 + RAMP[j];
-            double w = 1 / (q0 + k * dq);
-            ks[j] = k;
-            inv[j] = w;
-            zs[j] = (z0 + k * dz) * w;
+        if (all) {
+            for (int j = 0; j < m; j++) {
+                double k = k0 + RAMP[j];
+                double w = 1 / (q0 + k * dq);
+                ks[j] = k;
+                inv[j] = w;
+                zs[j] = (z0 + k * dz) * w;
+            }
+        } else {
+            for (int j = 0; j < m; j++) {
+                double k = k0 + RAMP[j];
+                double w = 1 / (q0 + k * dq);
+                zs[j] = (z0 + k * dz) * w;
+            }
         }
         int at = y * width + first;
         double[] d = depth;
@@ -1487,6 +1505,14 @@ public final class FragmentStage implements FragmentSink {
             batchX[i] = first + i;
         }
         int n = j;
+        if (!all) {
+            for (j++; j < m; j++) {
+                if (nearer(at + j, zs[j])) {
+                    batchX[n++] = first + j;
+                }
+            }
+            return n;
+        }
         for (j++; j < m; j++) {
             double z = zs[j];
             if (nearer(at + j, z)) {
