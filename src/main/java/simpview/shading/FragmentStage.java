@@ -1459,9 +1459,11 @@ public final class FragmentStage implements FragmentSink {
     }
 
     /**
-     * As {@link #gather}, and with {@code all} false only x and z, the depth
-     * test's: for pixels that wait, whose k and 1 / q are worked out again
-     * when they are shaded ({@link #addPiece}).
+     * As {@link #gather}; with {@code all} false, of the pixels that pass
+     * only x is gathered (each z is made, tested and stored as the depth
+     * there, but k, 1 / q and z are not kept): for pixels that wait, whose
+     * k, 1 / q and z are worked out again when they are shaded
+     * ({@link #addPiece}).
      */
     private int gather(int y, int from, int first, int stop, double q0, double dq, double z0, double dz,
             boolean all) {
